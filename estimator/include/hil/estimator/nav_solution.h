@@ -1,0 +1,31 @@
+#pragma once
+/// @file
+/// The estimator's output at one time of validity, and its JSON-lines form (one object per line),
+/// which is navd's stdout contract with the harness:
+///   {"tov_utc_s": 1370851200.000000, "lat_deg": …, "lon_deg": …, "height_m": …,
+///    "vel_enu_mps": [e, n, u], "yaw_deg": …, "mode": "gnss_only", "status": {...}}
+/// `tov_utc_s` is the time of validity as UTC seconds since the Unix epoch; `yaw_deg` is the
+/// heading, degrees clockwise from true north (absent when unknown).
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace hil::estimator {
+
+struct NavSolution {
+  std::int64_t tov_unix_ns = 0;          ///< time of validity, UTC
+  double lat_deg = 0, lon_deg = 0;       ///< WGS-84
+  double height_m = 0;                   ///< ellipsoidal height
+  std::array<double, 3> vel_enu_mps{};   ///< velocity in the local ENU frame
+  std::optional<double> yaw_deg;         ///< heading clockwise from true north
+  std::array<double, 3> pos_std_enu_m{}; ///< 1-sigma position uncertainty, ENU
+  std::string mode;                      ///< filter mode name
+  std::uint32_t status_flags = 0;        ///< health bit field (see the filter's status enum)
+};
+
+/// Formats a solution as one JSON object followed by '\n'.
+std::string ToJsonLine(const NavSolution& s);
+
+}  // namespace hil::estimator

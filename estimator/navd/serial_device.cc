@@ -1,0 +1,68 @@
+#include "serial_device.h"
+
+#include <fcntl.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include <cerrno>
+
+namespace hil::navd {
+namespace {
+
+speed_t SpeedOf(int baud) {
+  switch (baud) {
+    case 4800: return B4800;
+    case 9600: return B9600;
+    case 19200: return B19200;
+    case 38400: return B38400;
+    case 57600: return B57600;
+    case 115200: return B115200;
+    case 230400: return B230400;
+    case 460800: return B460800;
+    case 921600: return B921600;
+    default: return B9600;
+  }
+}
+
+}  // namespace
+
+SerialDevice::~SerialDevice() { Close(); }
+
+void SerialDevice::Close() {
+  if (fd_ >= 0) close(fd_);
+  fd_ = -1;
+}
+
+int SerialDevice::EnsureOpen() {
+  if (fd_ >= 0) return fd_;
+  fd_ = open(path_.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+  if (fd_ < 0) return -1;
+  termios tio{};
+  if (tcgetattr(fd_, &tio) == 0) {
+    cfmakeraw(&tio);
+    tio.c_cflag |= CLOCAL | CREAD;
+    cfsetispeed(&tio, SpeedOf(baud_));
+    cfsetospeed(&tio, SpeedOf(baud_));
+    tcsetattr(fd_, TCSANOW, &tio);
+  }
+  if (opened_once_) ++reopens_;
+  opened_once_ = true;
+  return fd_;
+}
+
+bool SerialDevice::Read(std::string& out) {
+  if (fd_ < 0) return false;
+  char buf[1024];
+  for (;;) {
+    const ssize_t n = read(fd_, buf, sizeof buf);
+    if (n > 0) {
+      out.append(buf, static_cast<std::size_t>(n));
+      continue;
+    }
+    if (n < 0 && (errno == EAGAIN || errno == EINTR)) return true;
+    Close();  // EOF or EIO: the peer went away
+    return false;
+  }
+}
+
+}  // namespace hil::navd

@@ -1,0 +1,36 @@
+#pragma once
+/// @file
+/// navd's serial input: opens a tty or pty in raw mode, reads what is there, and reopens the
+/// device when it goes away (the peer closed it, the USB adapter was unplugged).
+
+#include <cstdint>
+#include <string>
+
+namespace hil::navd {
+
+class SerialDevice {
+ public:
+  SerialDevice(std::string path, int baud) : path_(std::move(path)), baud_(baud) {}
+  ~SerialDevice();
+  SerialDevice(const SerialDevice&) = delete;
+  SerialDevice& operator=(const SerialDevice&) = delete;
+
+  /// Opens the device if it is closed; returns the descriptor, or −1 if it cannot be opened now.
+  int EnsureOpen();
+  /// Reads available bytes into `out` (appending). Returns false when the device closed or failed,
+  /// in which case it is closed and will be reopened by the next EnsureOpen().
+  bool Read(std::string& out);
+  int fd() const { return fd_; }
+  const std::string& path() const { return path_; }
+  std::uint64_t reopen_count() const { return reopens_; }
+
+ private:
+  void Close();
+  std::string path_;
+  int baud_;
+  int fd_ = -1;
+  std::uint64_t reopens_ = 0;
+  bool opened_once_ = false;
+};
+
+}  // namespace hil::navd

@@ -1,0 +1,49 @@
+#pragma once
+/// @file
+/// A pseudo-terminal standing in for a device's serial port. The emulator holds the master side;
+/// the host (estimator, gpsd, a customer's program) opens the slave through a stable symlink such as
+/// `RUN_DIR/ttyGPS`. The slave is put in raw 8N1 mode at the configured baud, but a pty does not pace:
+/// callers write each byte at its UART time themselves (see RealtimePacer).
+///
+/// This and the other transport files are the only ones in firmware_emu that touch descriptors.
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+namespace hil::link {
+
+/// Owner of one pty pair and its symlink; closes both and removes the link on destruction.
+class PtyPort {
+ public:
+  /// Opens a pty pair, sets raw 8N1 at `baud` on the slave and points `symlink_path` at it
+  /// (an existing link there is replaced).
+  /// @throws std::runtime_error naming the path and the system error.
+  PtyPort(const std::string& symlink_path, int baud);
+  ~PtyPort();
+  PtyPort(const PtyPort&) = delete;
+  PtyPort& operator=(const PtyPort&) = delete;
+
+  /// Writes all bytes to the master, waiting while the host's input queue is full.
+  /// Returns false if the pty failed (it never throws in the data path).
+  bool Write(std::string_view bytes);
+  /// Reads whatever the host has written (non-blocking); empty if nothing.
+  std::string ReadAvailable();
+  /// Bytes written by the emulator that the host has not read yet.
+  std::size_t PendingToHost() const;
+
+  const std::string& slave_path() const { return slave_path_; }
+  const std::string& symlink_path() const { return symlink_path_; }
+  int master_fd() const { return master_fd_; }
+
+ private:
+  int master_fd_ = -1;
+  int slave_fd_ = -1;  // kept open so the pty survives the host closing and reopening it
+  std::string slave_path_;
+  std::string symlink_path_;
+};
+
+/// Maps a baud rate to its termios speed constant; returns 0 when the rate has none.
+unsigned BaudToSpeed(int baud);
+
+}  // namespace hil::link

@@ -1,0 +1,117 @@
+#include "hil/firmware_emu/link/pty_port.h"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/ioctl.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+
+namespace hil::link {
+namespace {
+
+std::runtime_error SysError(const std::string& what) {
+  return std::runtime_error(what + ": " + std::strerror(errno));
+}
+
+}  // namespace
+
+unsigned BaudToSpeed(int baud) {
+  switch (baud) {
+    case 1200: return B1200;
+    case 2400: return B2400;
+    case 4800: return B4800;
+    case 9600: return B9600;
+    case 19200: return B19200;
+    case 38400: return B38400;
+    case 57600: return B57600;
+    case 115200: return B115200;
+    case 230400: return B230400;
+    case 460800: return B460800;
+    case 921600: return B921600;
+    default: return 0;
+  }
+}
+
+PtyPort::PtyPort(const std::string& symlink_path, int baud) : symlink_path_(symlink_path) {
+  master_fd_ = posix_openpt(O_RDWR | O_NOCTTY | O_CLOEXEC);
+  if (master_fd_ < 0) throw SysError("cannot open a pty for " + symlink_path);
+  if (grantpt(master_fd_) != 0 || unlockpt(master_fd_) != 0) {
+    close(master_fd_);
+    throw SysError("cannot unlock the pty for " + symlink_path);
+  }
+  char name[128];
+  if (ptsname_r(master_fd_, name, sizeof name) != 0) {
+    close(master_fd_);
+    throw SysError("cannot name the pty for " + symlink_path);
+  }
+  slave_path_ = name;
+  slave_fd_ = open(name, O_RDWR | O_NOCTTY | O_CLOEXEC);
+  if (slave_fd_ < 0) {
+    close(master_fd_);
+    throw SysError("cannot open " + slave_path_);
+  }
+  termios tio{};
+  tcgetattr(slave_fd_, &tio);
+  cfmakeraw(&tio);
+  tio.c_cflag |= CLOCAL | CREAD;
+  tio.c_cflag &= ~static_cast<tcflag_t>(CSTOPB | PARENB);
+  if (const unsigned speed = BaudToSpeed(baud); speed != 0) {
+    cfsetispeed(&tio, speed);
+    cfsetospeed(&tio, speed);
+  }
+  tcsetattr(slave_fd_, TCSANOW, &tio);
+  const int flags = fcntl(master_fd_, F_GETFL);
+  fcntl(master_fd_, F_SETFL, flags | O_NONBLOCK);
+
+  unlink(symlink_path.c_str());
+  if (symlink(slave_path_.c_str(), symlink_path.c_str()) != 0) {
+    close(slave_fd_);
+    close(master_fd_);
+    throw SysError("cannot create the link " + symlink_path + " -> " + slave_path_);
+  }
+}
+
+PtyPort::~PtyPort() {
+  unlink(symlink_path_.c_str());
+  if (slave_fd_ >= 0) close(slave_fd_);
+  if (master_fd_ >= 0) close(master_fd_);
+}
+
+bool PtyPort::Write(std::string_view bytes) {
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = write(master_fd_, bytes.data() + done, bytes.size() - done);
+    if (n > 0) {
+      done += static_cast<std::size_t>(n);
+    } else if (n < 0 && (errno == EAGAIN || errno == EINTR)) {
+      pollfd p{master_fd_, POLLOUT, 0};
+      poll(&p, 1, 50);
+    } else {
+      return false;
+    }
+  }
+  return true;
+}
+
+std::string PtyPort::ReadAvailable() {
+  std::string out;
+  char buf[512];
+  for (;;) {
+    const ssize_t n = read(master_fd_, buf, sizeof buf);
+    if (n <= 0) break;
+    out.append(buf, static_cast<std::size_t>(n));
+  }
+  return out;
+}
+
+std::size_t PtyPort::PendingToHost() const {
+  int n = 0;
+  if (ioctl(slave_fd_, FIONREAD, &n) != 0) return 0;
+  return static_cast<std::size_t>(n);
+}
+
+}  // namespace hil::link

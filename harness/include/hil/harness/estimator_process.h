@@ -1,0 +1,64 @@
+#pragma once
+/// @file
+/// The estimator under test as a child process: started through /bin/sh with its stdout on a pipe
+/// (read line by line, each line stamped with its wall-clock arrival), its stderr into a file in the
+/// run folder. Crashes and silence are observable; Stop() always ends the process (SIGTERM, then
+/// SIGKILL after a grace period).
+
+#include <atomic>
+#include <cstdint>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace hil::harness {
+
+/// One line the estimator wrote, with its CLOCK_MONOTONIC arrival time.
+struct OutputLine {
+  std::string text;
+  std::int64_t wall_ns = 0;
+};
+
+/// How the process ended.
+struct ExitInfo {
+  bool exited = false;       ///< ended by itself (exit or crash) before Stop()
+  int exit_code = -1;        ///< when it exited normally
+  int signal = 0;            ///< the signal that ended it, if any
+  bool killed_by_us = false; ///< needed SIGKILL after SIGTERM
+  std::string Describe() const;
+};
+
+class EstimatorProcess {
+ public:
+  /// Starts `command` with /bin/sh -c; stderr goes to `stderr_path`.
+  /// @throws std::runtime_error if the process cannot be started.
+  EstimatorProcess(const std::string& command, const std::string& stderr_path);
+  ~EstimatorProcess();
+  EstimatorProcess(const EstimatorProcess&) = delete;
+  EstimatorProcess& operator=(const EstimatorProcess&) = delete;
+
+  /// True while the child runs (reaps it if it has ended).
+  bool Running();
+  /// Lines received so far (moves them out).
+  std::vector<OutputLine> TakeLines();
+  /// CLOCK_MONOTONIC time of the last output line (0 if none yet).
+  std::int64_t last_output_wall_ns() const { return last_output_wall_ns_.load(); }
+  /// Stops the process: SIGTERM, then SIGKILL after `grace_s`. Idempotent.
+  ExitInfo Stop(double grace_s = 2.0);
+  int pid() const { return pid_; }
+
+ private:
+  void ReadLoop();
+  void Reap(int status);
+  int pid_ = -1;
+  int stdout_fd_ = -1;
+  std::thread reader_;
+  std::mutex mu_;
+  std::vector<OutputLine> lines_;
+  std::atomic<std::int64_t> last_output_wall_ns_{0};
+  std::optional<ExitInfo> exit_;
+};
+
+}  // namespace hil::harness

@@ -1,0 +1,58 @@
+#pragma once
+/// @file
+/// Evaluation of an estimate against truth: each estimate is compared with the truth at its own
+/// time of validity (never its arrival time), in the local ENU frame of the scenario origin.
+/// The same accuracy metrics are computed for the raw GNSS fixes (the baseline).
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "hil/firmware_emu/sim_time.h"
+#include "hil/truth/truth_integrator.h"
+
+namespace hil::harness {
+
+/// One solution of the estimator under test (or one raw GNSS fix), as read back.
+struct EstimateRecord {
+  Time t_validity{};
+  double lat_deg = 0, lon_deg = 0, height_m = 0;
+  std::optional<Eigen::Vector3d> vel_enu_mps;
+  std::optional<double> yaw_deg;  ///< heading clockwise from north
+  std::int64_t wall_rx_ns = 0;    ///< CLOCK_MONOTONIC arrival (0 when not applicable)
+};
+
+/// The error of one record against truth, ENU.
+struct ErrorSample {
+  Time t{};
+  Eigen::Vector3d err_enu_m = Eigen::Vector3d::Zero();
+  std::optional<double> vel_err_mps;
+  std::optional<double> yaw_err_deg;
+  Eigen::Vector3d truth_enu_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d est_enu_m = Eigen::Vector3d::Zero();
+  double horizontal() const { return err_enu_m.head<2>().norm(); }
+};
+
+/// Accuracy metrics (report.json names).
+struct AccuracyMetrics {
+  std::size_t samples = 0;
+  double horizontal_rmse_m = 0, cep50_m = 0, cep95_m = 0, max_horizontal_error_m = 0;
+  double vertical_rmse_m = 0;
+  std::optional<double> velocity_rmse_mps, heading_rmse_deg;
+};
+
+/// Compares records with truth. `p_BX_B_m` is the lever arm of the point the records refer to
+/// (zero for the estimator's reference point, the antenna's for raw fixes). Records before
+/// `t_from` are skipped (convergence); records after `t_to` too.
+std::vector<ErrorSample> CompareWithTruth(const truth::TruthConfig& truth_config, std::vector<EstimateRecord> records,
+                                          const Eigen::Vector3d& p_BX_B_m, Time t_from, Time t_to);
+
+/// Metrics of a set of errors. Empty input gives samples = 0.
+AccuracyMetrics ComputeAccuracy(const std::vector<ErrorSample>& errors);
+
+/// Empirical percentile (0–100) by linear interpolation of sorted values.
+double Percentile(std::vector<double> values, double pct);
+
+}  // namespace hil::harness

@@ -1,0 +1,57 @@
+#pragma once
+/// @file
+/// What a run leaves behind: report.json (DESIGN.md contract), junit.xml (one test case per
+/// criterion), and CSV files of truth, estimates and raw fixes.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hil/harness/evaluator.h"
+#include "hil/harness/scenario.h"
+
+namespace hil::harness {
+
+struct LatencyStats {
+  double p50_ms = 0, p99_ms = 0, max_ms = 0;
+};
+
+/// A criterion after evaluation.
+struct CriterionResult {
+  std::string name;
+  double threshold = 0;
+  std::optional<double> value;  ///< absent when the metric could not be computed (fails)
+  bool pass = false;
+};
+
+/// Everything report.json holds.
+struct RunReport {
+  std::string scenario;
+  std::string scenario_file;
+  std::uint64_t seed = 0;
+  std::string mode;
+  bool complete = true;            ///< false when the run stopped early
+  std::vector<std::string> problems;  ///< why the run failed besides criteria (crash, silence…)
+  AccuracyMetrics metrics;
+  double output_rate_hz = 0;
+  std::optional<LatencyStats> latency;
+  AccuracyMetrics baselines;
+  std::vector<CriterionResult> criteria;
+  std::string estimator_exit;
+  double wall_time_s = 0, sim_time_s = 0;
+  std::uint64_t gnss_bytes = 0, gnss_messages_dropped = 0;
+  bool pass() const;
+};
+
+/// Evaluates the scenario's criteria against the metrics.
+std::vector<CriterionResult> EvaluateCriteria(const std::vector<Criterion>& criteria, const AccuracyMetrics& metrics,
+                                              const AccuracyMetrics& baselines);
+
+/// Writes report.json. @throws std::runtime_error naming the file on failure.
+void WriteReportJson(const RunReport& report, const std::string& path);
+/// Writes junit.xml. @throws std::runtime_error naming the file on failure.
+void WriteJunitXml(const RunReport& report, const std::string& path);
+/// Writes errors (time, truth and estimate ENU, errors) as CSV.
+void WriteErrorsCsv(const std::vector<ErrorSample>& errors, const std::string& path);
+
+}  // namespace hil::harness

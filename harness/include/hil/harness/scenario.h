@@ -1,0 +1,66 @@
+#pragma once
+/// @file
+/// A scenario: everything one run needs, loaded from a YAML file (format in
+/// vectors/scenarios/README.md) and immutable afterwards. Loading validates every key and value
+/// and reports errors as ScenarioError (file, line, field).
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hil/firmware_emu/gnss/receiver_model.h"
+#include "hil/truth/truth_integrator.h"
+
+namespace hil::harness {
+
+/// An acceptance criterion on one metric of report.json. Passes when value ≤ threshold, where the
+/// threshold is `max`, or `max_ratio_to_baseline` × the same metric of the raw GNSS baseline.
+struct Criterion {
+  std::string name;    ///< e.g. "horizontal_rmse_m <= 1.0"
+  std::string metric;  ///< a key of report.json's metrics (e.g. horizontal_rmse_m)
+  std::optional<double> max;
+  std::optional<double> max_ratio_to_baseline;
+};
+
+/// The GNSS receiver device of a scenario.
+struct GnssDeviceSpec {
+  std::string profile = "neo-5m";
+  int baud = 9600;
+  std::string link = "ttyGPS";    ///< symlink name in the run folder
+  double rate_hz = 1.0;
+  double output_lag_s = 0.1;      ///< epoch to first byte
+  std::size_t tx_buffer_bytes = 1024;
+  gnss::ReceiverModelConfig model;
+};
+
+/// How the estimator under test is started and read.
+struct EstimatorSpec {
+  /// Shell command; {navd}, {run_dir}, {seed} and every link name in braces ({ttyGPS}) are substituted.
+  std::string command = "{navd} --config {run_dir}/navd.conf";
+  std::string output = "json_stdout";
+  std::string navd_mode = "gnss_only";  ///< written into the generated navd.conf
+  double silence_timeout_s = 10.0;      ///< no output for this long fails the run
+};
+
+struct Scenario {
+  std::string file;  ///< where it came from ("<embedded default>" for the default)
+  std::string name;
+  std::string description;
+  std::int64_t start_unix_ns = 0;  ///< UTC of t = 0
+  double duration_s = 60;
+  std::uint64_t seed = 1;
+  truth::TruthConfig truth;
+  GnssDeviceSpec gnss;
+  EstimatorSpec estimator;
+  std::vector<Criterion> criteria;
+};
+
+/// Loads and validates a scenario file. @throws ScenarioError.
+Scenario LoadScenario(const std::string& path);
+/// Loads the embedded default scenario (vectors/scenarios/default.yaml, compiled in).
+Scenario LoadDefaultScenario();
+/// Parses scenario text; `name` stands for the file in messages. @throws ScenarioError.
+Scenario ParseScenario(const std::string& text, const std::string& name);
+
+}  // namespace hil::harness

@@ -1,0 +1,87 @@
+#pragma once
+/// @file
+/// Strict, position-aware reading of YAML documents (scenario files and their includes). Every
+/// error is a ScenarioError naming the file, the 1-based line and the dotted field path
+/// (`devices.gps.baud`), with a suggestion for a misspelt key.
+
+#include <functional>
+#include <initializer_list>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+
+namespace hil::harness {
+
+/// A scenario error: "FILE:LINE: FIELD: MESSAGE". Exit code 2 territory.
+class ScenarioError : public std::runtime_error {
+ public:
+  ScenarioError(std::string file, int line, std::string field, const std::string& message);
+  const std::string& file() const { return file_; }
+  int line() const { return line_; }
+  const std::string& field() const { return field_; }
+
+ private:
+  std::string file_;
+  int line_;
+  std::string field_;
+};
+
+/// A view of one YAML node with the file and field path it came from.
+class YamlReader {
+ public:
+  YamlReader(YAML::Node node, std::string file, std::string path);
+
+  /// Loads a file. @throws ScenarioError for a missing/unreadable file or a YAML syntax error.
+  static YamlReader LoadFile(const std::string& file);
+
+  /// Fails on any key of this mapping that is not in `allowed` (suggesting the closest one).
+  void CheckKeys(std::initializer_list<const char*> allowed) const;
+  void CheckKeys(const std::vector<std::string>& allowed) const;
+  bool Has(const std::string& key) const;
+  /// The child mapping/sequence at `key`. @throws ScenarioError when missing (if required).
+  YamlReader Child(const std::string& key) const;
+  std::optional<YamlReader> OptionalChild(const std::string& key) const;
+  /// Elements of a sequence. @throws ScenarioError when this node is not a sequence.
+  std::vector<YamlReader> Elements() const;
+
+  double Double(const std::string& key) const;
+  double Double(const std::string& key, double fallback) const;
+  /// A number in [lo, hi].
+  double DoubleIn(const std::string& key, double fallback, double lo, double hi) const;
+  std::int64_t Int(const std::string& key, std::int64_t fallback, std::int64_t lo, std::int64_t hi) const;
+  bool Bool(const std::string& key, bool fallback) const;
+  std::string String(const std::string& key) const;
+  std::string String(const std::string& key, const std::string& fallback) const;
+  /// A string that must be one of `choices`.
+  std::string Choice(const std::string& key, const std::string& fallback, std::initializer_list<const char*> choices) const;
+  /// A sequence of exactly `n` numbers.
+  std::vector<double> Doubles(const std::string& key, std::size_t n, std::vector<double> fallback) const;
+
+  /// Throws a ScenarioError located at this node (or at `key` within it).
+  [[noreturn]] void Fail(const std::string& message) const;
+  [[noreturn]] void Fail(const std::string& key, const std::string& message) const;
+
+  const YAML::Node& node() const { return node_; }
+  const std::string& file() const { return file_; }
+  const std::string& path() const { return path_; }
+  int line() const;
+  bool IsMap() const { return node_.IsMap(); }
+  bool IsSequence() const { return node_.IsSequence(); }
+  bool IsScalar() const { return node_.IsScalar(); }
+  std::string Scalar() const;
+
+ private:
+  std::string FieldOf(const std::string& key) const;
+  std::optional<YAML::Node> Get(const std::string& key) const;
+  YAML::Node node_;
+  std::string file_;
+  std::string path_;
+};
+
+/// Edit distance, for "did you mean" suggestions.
+int EditDistance(const std::string& a, const std::string& b);
+
+}  // namespace hil::harness

@@ -1,0 +1,119 @@
+#include "hil/harness/estimator_process.h"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+
+#include "hil/firmware_emu/link/realtime_pacer.h"
+
+namespace hil::harness {
+
+std::string ExitInfo::Describe() const {
+  if (signal != 0) return std::string("ended by signal ") + std::to_string(signal) + " (" + strsignal(signal) + ")";
+  return "exited with code " + std::to_string(exit_code);
+}
+
+EstimatorProcess::EstimatorProcess(const std::string& command, const std::string& stderr_path) {
+  int fds[2];
+  if (pipe2(fds, O_CLOEXEC) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
+  const int err_fd = open(stderr_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (err_fd < 0) {
+    close(fds[0]);
+    close(fds[1]);
+    throw std::runtime_error("cannot write " + stderr_path + ": " + std::strerror(errno));
+  }
+  pid_ = fork();
+  if (pid_ < 0) throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
+  if (pid_ == 0) {
+    setpgid(0, 0);  // own process group, so Stop() reaches the shell's children too
+    dup2(fds[1], STDOUT_FILENO);
+    dup2(err_fd, STDERR_FILENO);
+    const int devnull = open("/dev/null", O_RDONLY);
+    if (devnull >= 0) dup2(devnull, STDIN_FILENO);
+    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  setpgid(pid_, pid_);
+  close(fds[1]);
+  close(err_fd);
+  stdout_fd_ = fds[0];
+  reader_ = std::thread([this] { ReadLoop(); });
+}
+
+EstimatorProcess::~EstimatorProcess() {
+  Stop(0.5);
+  if (reader_.joinable()) reader_.join();
+  if (stdout_fd_ >= 0) close(stdout_fd_);
+}
+
+void EstimatorProcess::ReadLoop() {
+  std::string partial;
+  char buf[4096];
+  for (;;) {
+    const ssize_t n = read(stdout_fd_, buf, sizeof buf);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    const std::int64_t now = link::RealtimePacer::MonotonicNs();
+    partial.append(buf, static_cast<std::size_t>(n));
+    std::size_t pos;
+    std::lock_guard<std::mutex> lock(mu_);
+    while ((pos = partial.find('\n')) != std::string::npos) {
+      lines_.push_back({partial.substr(0, pos), now});
+      partial.erase(0, pos + 1);
+      last_output_wall_ns_ = now;
+    }
+  }
+}
+
+void EstimatorProcess::Reap(int status) {
+  ExitInfo info;
+  info.exited = true;
+  if (WIFEXITED(status)) info.exit_code = WEXITSTATUS(status);
+  if (WIFSIGNALED(status)) info.signal = WTERMSIG(status);
+  exit_ = info;
+}
+
+bool EstimatorProcess::Running() {
+  if (exit_) return false;
+  int status = 0;
+  const pid_t r = waitpid(pid_, &status, WNOHANG);
+  if (r == pid_) {
+    Reap(status);
+    return false;
+  }
+  return true;
+}
+
+std::vector<OutputLine> EstimatorProcess::TakeLines() {
+  std::lock_guard<std::mutex> lock(mu_);
+  std::vector<OutputLine> out;
+  out.swap(lines_);
+  return out;
+}
+
+ExitInfo EstimatorProcess::Stop(double grace_s) {
+  if (!Running()) return *exit_;
+  kill(-pid_, SIGTERM);
+  const std::int64_t deadline = link::RealtimePacer::MonotonicNs() + static_cast<std::int64_t>(grace_s * 1e9);
+  while (link::RealtimePacer::MonotonicNs() < deadline) {
+    if (!Running()) {
+      exit_->exited = false;  // it ended because we asked
+      return *exit_;
+    }
+    usleep(10000);
+  }
+  kill(-pid_, SIGKILL);
+  int status = 0;
+  waitpid(pid_, &status, 0);
+  Reap(status);
+  exit_->exited = false;
+  exit_->killed_by_us = true;
+  return *exit_;
+}
+
+}  // namespace hil::harness

@@ -1,0 +1,36 @@
+#pragma once
+/// @file
+/// Geodesy for the truth: the local tangent frame N (**ENU**) at the scenario origin, and
+/// conversions between it, geodetic WGS-84 coordinates and ECEF, through GeographicLib (an
+/// independent implementation from the estimator's own compact geodesy).
+
+#include <Eigen/Core>
+#include <GeographicLib/LocalCartesian.hpp>
+
+namespace hil::truth {
+
+/// Geodetic WGS-84 coordinates.
+struct Geodetic {
+  double lat_deg = 0, lon_deg = 0, height_m = 0;
+};
+
+/// The ENU frame at an origin.
+class LocalFrame {
+ public:
+  explicit LocalFrame(const Geodetic& origin);
+  /// ENU position (m) → geodetic.
+  Geodetic ToGeodetic(const Eigen::Vector3d& p_N_m) const;
+  /// Geodetic → ENU position (m).
+  Eigen::Vector3d FromGeodetic(const Geodetic& g) const;
+  /// ENU position (m) → ECEF (m).
+  Eigen::Vector3d ToEcef(const Eigen::Vector3d& p_N_m) const;
+  /// Rotation from ENU at the origin to ECEF axes.
+  Eigen::Matrix3d R_EN() const;
+  const Geodetic& origin() const { return origin_; }
+
+ private:
+  Geodetic origin_;
+  GeographicLib::LocalCartesian lc_;
+};
+
+}  // namespace hil::truth

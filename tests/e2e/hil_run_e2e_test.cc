@@ -1,0 +1,99 @@
+// End to end through the real binaries: hil starts navd as a child process, the NEO-5M NMEA
+// stream crosses a real pty, and the run folder holds the reports.
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.h"
+
+namespace hil::test {
+namespace {
+
+TEST(HilRunE2eTest, DefaultScenarioPassesWithHonestMetrics) {
+  TempDir dir("e2e_default");
+  const CommandResult r = RunCommand(BinDir() + "/hil run --out " + dir / "run");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const auto report = nlohmann::json::parse(ReadFile(dir / "run/report.json"));
+  EXPECT_EQ(report["scenario"], "default_straight_line");
+  EXPECT_TRUE(report["pass"].get<bool>());
+  const double est = report["metrics"]["horizontal_rmse_m"].get<double>();
+  const double raw = report["baselines"]["horizontal_rmse_m"].get<double>();
+  // a standalone receiver of the configured grade (0.28 m per axis) and an estimate built from it
+  EXPECT_GT(raw, 0.1);
+  EXPECT_LT(raw, 1.0);
+  EXPECT_GT(est, 0.05);
+  EXPECT_LT(est, 1.0);
+  // every epoch of the 120 s run reached navd through the pty and came back
+  EXPECT_GE(report["metrics"]["samples"].get<int>(), 118);
+  EXPECT_NEAR(report["metrics"]["output_rate_hz"].get<double>(), 1.0, 0.01);
+  for (const char* f : {"junit.xml", "truth.csv", "estimate.csv", "gnss_fixes.csv", "captures/ttyGPS.cap"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir / ("run/" + std::string(f)))) << f;
+  }
+  EXPECT_NE(ReadFile(dir / "run/junit.xml").find("<testcase"), std::string::npos);
+  EXPECT_NE(r.out.find("PASS"), std::string::npos);
+}
+
+TEST(HilRunE2eTest, SameSeedSameBytes) {
+  TempDir dir("e2e_determinism");
+  ASSERT_EQ(RunCommand(BinDir() + "/hil run --out " + dir / "a").exit_code, 0);
+  ASSERT_EQ(RunCommand(BinDir() + "/hil run --out " + dir / "b").exit_code, 0);
+  ASSERT_EQ(RunCommand(BinDir() + "/hil run --seed 2 --out " + dir / "c").exit_code, 0);
+  // the capture's wall-clock column is 0 in virtual mode; the bytes and emulated times must match
+  EXPECT_EQ(ReadFile(dir / "a/captures/ttyGPS.cap"), ReadFile(dir / "b/captures/ttyGPS.cap"));
+  EXPECT_NE(ReadFile(dir / "a/captures/ttyGPS.cap"), ReadFile(dir / "c/captures/ttyGPS.cap"));
+}
+
+TEST(HilRunE2eTest, FailingCriterionExitsOne) {
+  TempDir dir("e2e_fail");
+  WriteFile(dir / "strict.yaml",
+            "name: strict\nduration_s: 20\norigin: {lat_deg: 35.4796096, lon_deg: 50.5979765}\n"
+            "criteria:\n  - {metric: horizontal_rmse_m, max: 0.001}\n");
+  const CommandResult r = RunCommand(BinDir() + "/hil run " + dir / "strict.yaml" + " --out " + dir / "run");
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  const auto report = nlohmann::json::parse(ReadFile(dir / "run/report.json"));
+  EXPECT_FALSE(report["pass"].get<bool>());
+  EXPECT_FALSE(report["criteria"][0]["pass"].get<bool>());
+}
+
+TEST(HilRunE2eTest, CrashingEstimatorFailsTheRun) {
+  TempDir dir("e2e_crash");
+  WriteFile(dir / "s.yaml", "name: crash\nduration_s: 5\norigin: {lat_deg: 35, lon_deg: 50}\n");
+  const CommandResult r =
+      RunCommand(BinDir() + "/hil run " + dir / "s.yaml" + " --out " + dir / "run --estimator 'exit 3'");
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  const auto report = nlohmann::json::parse(ReadFile(dir / "run/report.json"));
+  EXPECT_FALSE(report["complete"].get<bool>());
+  EXPECT_NE(report["problems"][0].get<std::string>().find("exited with code 3"), std::string::npos);
+}
+
+TEST(HilRunE2eTest, BadScenarioExitsTwoNamingFileLineAndField) {
+  TempDir dir("e2e_bad");
+  WriteFile(dir / "bad.yaml", "name: bad\norigin: {lat_deg: 35, lon_deg: 50}\ngnss:\n  baud: 9600\n  rate_hzz: 1\n");
+  CommandResult r = RunCommand(BinDir() + "/hil run " + dir / "bad.yaml" + " --out " + dir / "run");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find(dir / "bad.yaml:5: gnss.rate_hzz: unknown key (did you mean 'rate_hz'?)"), std::string::npos) << r.out;
+
+  WriteFile(dir / "type.yaml", "name: t\norigin: {lat_deg: 35, lon_deg: fifty}\n");
+  r = RunCommand(BinDir() + "/hil run " + dir / "type.yaml");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find("type.yaml:2: origin.lon_deg: expected a number, got 'fifty'"), std::string::npos) << r.out;
+
+  r = RunCommand(BinDir() + "/hil run " + dir / "missing.yaml");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find("missing.yaml"), std::string::npos) << r.out;
+}
+
+TEST(HilRunE2eTest, UnknownOptionAndUnwritableFolderExitTwoWithOneLine) {
+  CommandResult r = RunCommand(BinDir() + "/hil run --frobnicate");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find("frobnicate"), std::string::npos) << r.out;
+  r = RunCommand(BinDir() + "/hil run --out /proc/hil-cannot-write-here");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.out.find("cannot write the output folder /proc/hil-cannot-write-here"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("terminate called"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace hil::test

@@ -1,0 +1,44 @@
+#include "hil/firmware_emu/gnss/gps_time.h"
+
+#include <gtest/gtest.h>
+
+namespace hil::gnss {
+namespace {
+
+TEST(GpsTimeTest, KnownInstants) {
+  // 2013-06-10T08:00:00Z: GPS week 1744, TOW 115216 s (Monday 08:00 + 16 leap seconds)
+  const std::int64_t unix_ns = ParseIsoUtc("2013-06-10T08:00:00Z");
+  EXPECT_EQ(unix_ns, 1370851200LL * 1000000000LL);
+  const GpsTime g = GpsFromUnixNs(unix_ns);
+  EXPECT_EQ(g.week, 1744);
+  EXPECT_EQ(g.tow_ns, (86400LL + 8 * 3600 + 16) * 1000000000LL);
+  EXPECT_EQ(UnixNsFromGps(g), unix_ns);
+}
+
+TEST(GpsTimeTest, LeapSecondsTable) {
+  EXPECT_EQ(LeapSecondsAtUnix(315964800), 0);          // GPS epoch
+  EXPECT_EQ(LeapSecondsAtUnix(1341100799), 15);        // 2012-06-30T23:59:59Z
+  EXPECT_EQ(LeapSecondsAtUnix(1341100800), 16);        // 2012-07-01
+  EXPECT_EQ(LeapSecondsAtUnix(1800000000), 18);        // 2027
+}
+
+TEST(GpsTimeTest, CalendarRoundTripAcrossMidnightAndLeapDay) {
+  for (const char* s : {"2016-02-29T23:59:59.999Z", "2000-01-01T00:00:00Z", "2026-12-31T23:59:59Z"}) {
+    const std::int64_t ns = ParseIsoUtc(s);
+    const UtcTime u = UtcFromUnixNs(ns);
+    EXPECT_EQ(UnixNsFromUtc(u), ns) << s;
+  }
+  const UtcTime u = UtcFromUnixNs(ParseIsoUtc("2016-02-29T23:59:59.5Z") + 500000000);
+  EXPECT_EQ(u.month, 3);
+  EXPECT_EQ(u.day, 1);
+  EXPECT_EQ(u.hour, 0);
+}
+
+TEST(GpsTimeTest, RejectsMalformedTimes) {
+  EXPECT_THROW(ParseIsoUtc("2013-06-10 08:00:00"), std::invalid_argument);
+  EXPECT_THROW(ParseIsoUtc("2013-13-10T08:00:00Z"), std::invalid_argument);
+  EXPECT_THROW(ParseIsoUtc("2013-06-10T08:00:00"), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace hil::gnss
