@@ -70,6 +70,15 @@ int main(int argc, char** argv) {
   auto* est_opt = run->add_option("--estimator", estimator_cmd,
                                   "estimator command ({navd}, {run_dir}, {seed}, {ttyGPS} are substituted)");
 
+  std::string emu_scenario, emu_out;
+  double emu_speed = 1.0;
+  auto* emulate = app.add_subcommand("emulate",
+                                     "Run the device emulators alone in real time; attach gpsd, ubxtool or your own "
+                                     "program to the printed links (e.g. DIR/ttyGPS)");
+  emulate->add_option("SCENARIO", emu_scenario, "scenario file (YAML); omitted: the embedded default scenario");
+  emulate->add_option("--out", emu_out, "run folder holding the links and captures (default: runs/<name>-emulate)");
+  emulate->add_option("--speed", emu_speed, "speed-up factor")->check(CLI::Range(0.01, 1000.0));
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -79,6 +88,27 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  if (emulate->parsed()) {
+    hil::harness::Scenario scenario;
+    try {
+      scenario = emu_scenario.empty() ? hil::harness::LoadDefaultScenario() : hil::harness::LoadScenario(emu_scenario);
+    } catch (const hil::harness::ScenarioError& e) {
+      std::fprintf(stderr, "hil: invalid scenario: %s\n", e.what());
+      return 2;
+    }
+    hil::harness::RunOptions opt;
+    opt.out_dir = emu_out.empty() ? "runs/" + scenario.name + "-emulate" : emu_out;
+    opt.mode = hil::harness::RunMode::kRealtime;
+    opt.speed = emu_speed;
+    opt.emulate_only = true;
+    try {
+      hil::harness::RunScenario(scenario, opt);
+      return 0;
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "hil: %s\n", e.what());
+      return 2;
+    }
+  }
   if (run->parsed()) {
     hil::harness::Scenario scenario;
     try {

@@ -11,12 +11,9 @@
 #include <stdexcept>
 
 #include "hil/firmware_emu/gnss/gps_time.h"
-#include "hil/firmware_emu/gnss/nmea_encoder.h"
-#include "hil/firmware_emu/gnss/receiver_model.h"
-#include "hil/firmware_emu/link/pty_port.h"
 #include "hil/firmware_emu/link/realtime_pacer.h"
-#include "hil/firmware_emu/link/uart_tx_queue.h"
 #include "hil/harness/estimator_process.h"
+#include "hil/harness/device_set.h"
 
 namespace hil::harness {
 namespace {
@@ -25,17 +22,6 @@ namespace fs = std::filesystem;
 
 constexpr double kDrainQuietS = 0.5;   // estimator output quiet this long after the last byte: done
 constexpr double kDrainMaxS = 10.0;
-
-std::string Hex(const std::string& bytes) {
-  static constexpr char kHex[] = "0123456789abcdef";
-  std::string o;
-  o.reserve(bytes.size() * 2);
-  for (unsigned char c : bytes) {
-    o += kHex[c >> 4];
-    o += kHex[c & 15];
-  }
-  return o;
-}
 
 void WriteNavdConfig(const std::string& path, const Scenario& s, const std::string& gnss_device) {
   std::ofstream out(path);
@@ -100,20 +86,19 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
   report.mode = opt.mode == RunMode::kVirtual ? "virtual" : "realtime";
   report.sim_time_s = scenario.duration_s;
 
-  // devices and links
-  const std::string gps_link = dir + "/" + scenario.gnss.link;
-  link::PtyPort gps_port(gps_link, scenario.gnss.baud);
-  link::UartTxQueue gps_uart(scenario.gnss.baud, scenario.gnss.tx_buffer_bytes);
-  gnss::ReceiverModel receiver(scenario.gnss.model, seed * 1000003ULL + 1);
+  // devices and their links
+  DeviceSet set = BuildDevices(scenario, seed, dir);
   truth::TruthIntegrator truth(scenario.truth);
+  const std::string gps_link = dir + "/" + scenario.gnss.link;
 
   WriteNavdConfig(dir + "/navd.conf", scenario, gps_link);
   const std::string command = Substitute(opt.estimator_command.value_or(scenario.estimator.command),
-                                         {{"navd", opt.navd_path}, {"run_dir", dir}, {"seed", std::to_string(seed)},
-                                          {scenario.gnss.link, gps_link}});
-  std::ofstream capture(dir + "/captures/" + scenario.gnss.link + ".cap");
-  capture << "# hil capture v1: link " << scenario.gnss.link << ", baud " << scenario.gnss.baud << "\n"
-          << "# dir t_emu_ns byte_period_ns t_wall_ns hex_bytes\n";
+                                         [&] {
+                                           std::vector<std::pair<std::string, std::string>> vars{
+                                               {"navd", opt.navd_path}, {"run_dir", dir}, {"seed", std::to_string(seed)}};
+                                           vars.insert(vars.end(), set.links.begin(), set.links.end());
+                                           return vars;
+                                         }());
   std::ofstream fixes_csv(dir + "/gnss_fixes.csv");
   fixes_csv << "t_s,lat_deg,lon_deg,height_m,vel_n_mps,vel_e_mps,vel_d_mps,num_sv,hdop\n";
 
@@ -122,21 +107,58 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
     link::RealtimePacer::RequestRealtimeScheduling();
     pacer.emplace(opt.speed);
   }
-  EstimatorProcess estimator(command, dir + "/estimator.stderr");
+  if (opt.emulate_only) {
+    for (const auto& [name, path] : set.links) std::printf("%s %s\n", name.c_str(), path.c_str());
+    std::fflush(stdout);
+  }
+  std::optional<EstimatorProcess> estimator;
+  if (!opt.emulate_only) estimator.emplace(command, dir + "/estimator.stderr");
+  const auto estimator_running = [&] { return estimator && estimator->Running(); };
 
   std::vector<EstimateRecord> fixes;
-  std::vector<double> schedule_err_us;
-  const Duration epoch = PeriodFromHz(scenario.gnss.rate_hz);
   const Time t_end = TimeFromSeconds(scenario.duration_s);
-  Time t_prev{};
-  bool first = true;
-  for (Time t{}; t <= t_end; t += epoch) {
-    const TruthSample ts = truth.Sample(t);
-    const std::int64_t unix_ns = scenario.start_unix_ns + ToNs(t);
-    const gnss::GnssFix fix = receiver.Calc(ts, unix_ns, first ? 0.0 : ToSeconds(t - t_prev));
-    first = false;
-    t_prev = t;
-    if (fix.valid()) {
+  DeviceOutput out;
+  const auto dispatch = [&](std::size_t d) {
+    for (const SerialMessage& m : out.serial) set.endpoints[d].at(static_cast<std::size_t>(m.port))->Queue(m);
+    out.clear();
+    if (!pacer) {
+      for (auto& ep : set.endpoints[d]) ep->WriteAll();
+    }
+  };
+  for (;;) {
+    // the next action in emulated time: a device event or (real time) a byte leaving a UART
+    std::optional<Time> t_event;
+    for (const auto& dev : set.devices) {
+      if (!t_event || dev->next_event_time() < *t_event) t_event = dev->next_event_time();
+    }
+    if (pacer) {
+      std::optional<Time> t_byte;
+      SerialEndpoint* ep_next = nullptr;
+      for (auto& ports : set.endpoints) {
+        for (auto& ep : ports) {
+          const auto tb = ep->next_byte_time();
+          if (tb && (!t_byte || *tb < *t_byte)) {
+            t_byte = tb;
+            ep_next = ep.get();
+          }
+        }
+      }
+      if (ep_next && (*t_byte < *t_event || *t_event > t_end)) {
+        ep_next->WriteNextByte(*pacer);
+        continue;
+      }
+      if (*t_event <= t_end) pacer->SleepUntil(*t_event);
+    }
+    if (*t_event > t_end) break;
+    const TruthSample ts = truth.Sample(*t_event);
+    for (std::size_t d = 0; d < set.devices.size(); ++d) {
+      if (set.devices[d]->next_event_time() != *t_event) continue;
+      set.devices[d]->OnEvent(ts, out);
+      dispatch(d);
+    }
+    for (const auto& source : set.fix_sources) {
+      const gnss::GnssFix& fix = *source();
+      if (fix.t_validity != *t_event || !fix.valid()) continue;
       EstimateRecord r;
       r.t_validity = fix.t_validity;
       r.lat_deg = fix.lat_deg;
@@ -145,47 +167,52 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
       r.vel_enu_mps = Eigen::Vector3d(fix.vel_e_mps, fix.vel_n_mps, -fix.vel_d_mps);
       fixes.push_back(r);
       char line[256];
-      std::snprintf(line, sizeof line, "%.3f,%.9f,%.9f,%.4f,%.4f,%.4f,%.4f,%d,%.2f\n", ToSeconds(t), fix.lat_deg,
-                    fix.lon_deg, fix.height_m, fix.vel_n_mps, fix.vel_e_mps, fix.vel_d_mps, fix.num_sv, fix.hdop);
+      std::snprintf(line, sizeof line, "%.3f,%.9f,%.9f,%.4f,%.4f,%.4f,%.4f,%d,%.2f\n", ToSeconds(fix.t_validity),
+                    fix.lat_deg, fix.lon_deg, fix.height_m, fix.vel_n_mps, fix.vel_e_mps, fix.vel_d_mps, fix.num_sv,
+                    fix.hdop);
       fixes_csv << line;
     }
-    const Time t_ready = t + DurationFromSeconds(scenario.gnss.output_lag_s);
-    for (std::string sentence : {gnss::nmea::EncodeRmc(fix), gnss::nmea::EncodeGga(fix)}) {
-      const auto chunk = gps_uart.Submit(t_ready, std::move(sentence));
-      if (!chunk) continue;
-      std::int64_t wall_first = 0;
-      if (pacer) {
-        for (std::size_t k = 0; k < chunk->bytes.size(); ++k) {
-          const std::int64_t wall = pacer->SleepUntil(chunk->t_byte(k));
-          if (k == 0) wall_first = wall;
-          schedule_err_us.push_back(static_cast<double>(wall - pacer->WallNsOf(chunk->t_byte(k))) * 1e-3);
-          gps_port.Write(std::string_view(chunk->bytes).substr(k, 1));
+    // configuration commands from the host reach the device with their arrival time
+    for (std::size_t d = 0; d < set.devices.size(); ++d) {
+      const Time t_host = pacer ? pacer->SimTimeOfWall(link::RealtimePacer::MonotonicNs()) : *t_event;
+      for (std::size_t p = 0; p < set.endpoints[d].size(); ++p) {
+        if (const std::string rx = set.endpoints[d][p]->PollHost(t_host); !rx.empty()) {
+          set.devices[d]->OnHostBytes(static_cast<int>(p), t_host, rx, out);
+          set.endpoints[d][p]->set_baud(set.devices[d]->baud(static_cast<int>(p)));
+          dispatch(d);
         }
-      } else {
-        gps_port.Write(chunk->bytes);
       }
-      capture << "tx " << ToNs(chunk->t_first) << " " << chunk->byte_period.count() << " " << wall_first << " "
-              << Hex(chunk->bytes) << "\n";
     }
-    if (const std::string rx = gps_port.ReadAvailable(); !rx.empty()) {
-      capture << "rx " << ToNs(t) << " 0 " << link::RealtimePacer::MonotonicNs() << " " << Hex(rx) << "\n";
+    if (!opt.emulate_only && !estimator_running()) break;
+  }
+  if (pacer) {
+    for (auto& ports : set.endpoints) {
+      for (auto& ep : ports) {
+        while (ep->next_byte_time()) ep->WriteNextByte(*pacer);
+      }
     }
-    if (!estimator.Running()) break;
   }
 
   // drain: the host has read every byte and its output has gone quiet
   const std::int64_t drain_deadline = link::RealtimePacer::MonotonicNs() + static_cast<std::int64_t>(kDrainMaxS * 1e9);
-  while (estimator.Running() && gps_port.PendingToHost() > 0 && link::RealtimePacer::MonotonicNs() < drain_deadline) {
+  const auto pending_to_host = [&] {
+    std::size_t n = 0;
+    for (const auto& ports : set.endpoints) {
+      for (const auto& ep : ports) n += ep->PendingToHost();
+    }
+    return n;
+  };
+  while (estimator_running() && pending_to_host() > 0 && link::RealtimePacer::MonotonicNs() < drain_deadline) {
     usleep(5000);
   }
-  while (estimator.Running() && link::RealtimePacer::MonotonicNs() < drain_deadline) {
-    const std::int64_t last = std::max(estimator.last_output_wall_ns(), wall_start);
+  while (estimator_running() && link::RealtimePacer::MonotonicNs() < drain_deadline) {
+    const std::int64_t last = std::max(estimator->last_output_wall_ns(), wall_start);
     if (link::RealtimePacer::MonotonicNs() - last > static_cast<std::int64_t>(kDrainQuietS * 1e9)) break;
     usleep(10000);
   }
-  const bool crashed = !estimator.Running();
-  const ExitInfo exit_info = estimator.Stop();
-  report.estimator_exit = exit_info.Describe();
+  const bool crashed = !opt.emulate_only && !estimator_running();
+  const ExitInfo exit_info = estimator ? estimator->Stop() : ExitInfo{};
+  report.estimator_exit = estimator ? exit_info.Describe() : "none (emulator only)";
   if (crashed) {
     report.problems.push_back("the estimator ended before the scenario did: " + exit_info.Describe() +
                               " (see estimator.stderr)");
@@ -196,12 +223,12 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
   std::vector<EstimateRecord> estimates;
   std::size_t unparsed = 0;
   std::ofstream est_jsonl(dir + "/estimate.jsonl");
-  for (const OutputLine& line : estimator.TakeLines()) {
+  for (const OutputLine& line : estimator ? estimator->TakeLines() : std::vector<OutputLine>{}) {
     est_jsonl << line.text << "\n";
     if (auto r = ParseEstimateLine(line.text, scenario.start_unix_ns, line.wall_ns)) estimates.push_back(*r);
     else ++unparsed;
   }
-  if (estimates.empty()) report.problems.push_back("the estimator produced no solution");
+  if (estimates.empty() && !opt.emulate_only) report.problems.push_back("the estimator produced no solution");
   const std::vector<ErrorSample> est_err = CompareWithTruth(scenario.truth, estimates, Eigen::Vector3d::Zero(), Time{}, t_end);
   const std::vector<ErrorSample> fix_err = CompareWithTruth(scenario.truth, fixes, scenario.gnss.model.p_BA_B_m, Time{}, t_end);
   report.metrics = ComputeAccuracy(est_err);
@@ -215,8 +242,12 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
     report.latency = LatencyStats{Percentile(lat_ms, 50), Percentile(lat_ms, 99), Percentile(lat_ms, 100)};
   }
   report.criteria = EvaluateCriteria(scenario.criteria, report.metrics, report.baselines);
-  report.gnss_bytes = gps_uart.bytes_sent();
-  report.gnss_messages_dropped = gps_uart.messages_dropped();
+  for (const auto& ports : set.endpoints) {
+    for (const auto& ep : ports) {
+      report.gnss_bytes += ep->uart().bytes_sent();
+      report.gnss_messages_dropped += ep->uart().messages_dropped();
+    }
+  }
   report.wall_time_s = static_cast<double>(link::RealtimePacer::MonotonicNs() - wall_start) * 1e-9;
 
   WriteErrorsCsv(est_err, dir + "/estimate.csv");
@@ -238,12 +269,17 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
   if (unparsed > 0) {
     std::fprintf(stderr, "hil: %zu estimator output line(s) were not solutions (kept in estimate.jsonl)\n", unparsed);
   }
-  if (!schedule_err_us.empty()) {
-    std::ofstream sched(dir + "/schedule_error.json");
-    sched << nlohmann::json{{"link", scenario.gnss.link}, {"bytes", schedule_err_us.size()},
-                            {"p50_us", Percentile(schedule_err_us, 50)}, {"p99_us", Percentile(schedule_err_us, 99)},
-                            {"max_us", Percentile(schedule_err_us, 100)}}.dump(2)
-          << "\n";
+  {
+    nlohmann::json sched = nlohmann::json::array();
+    for (const auto& ports : set.endpoints) {
+      for (const auto& ep : ports) {
+        const auto& e = ep->schedule_error_us();
+        if (e.empty()) continue;
+        sched.push_back({{"link", ep->link_name()}, {"bytes", e.size()}, {"p50_us", Percentile(e, 50)},
+                         {"p99_us", Percentile(e, 99)}, {"max_us", Percentile(e, 100)}});
+      }
+    }
+    if (!sched.empty()) std::ofstream(dir + "/schedule_error.json") << sched.dump(2) << "\n";
   }
   WriteReportJson(report, dir + "/report.json");
   WriteJunitXml(report, dir + "/junit.xml");

@@ -31,6 +31,7 @@ struct RunOptions {
   std::optional<std::string> estimator_command;  ///< overrides the scenario's estimator command
   std::string navd_path;                    ///< substituted for {navd}
   bool progress = false;                    ///< live progress line on stderr
+  bool emulate_only = false;                ///< `hil emulate`: no estimator; print the links and run
 };
 
 /// Runs a scenario and writes the run folder. Returns the report (its pass() decides exit 0/1).

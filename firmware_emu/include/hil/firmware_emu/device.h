@@ -1,0 +1,75 @@
+#pragma once
+/// @file
+/// The interface between the scheduler (harness) and every emulated device.
+///
+/// A device is an event source driven by one scheduler that owns the clock (see
+/// harness/include/hil/harness/run.h for the order of operations at each event time):
+///  - the scheduler asks `next_event_time()`, samples the truth there and calls `OnEvent()`;
+///  - the device answers with whole serial messages (each ready at an emulated time; the UART queue
+///    of its port turns them into timed bytes, or drops them) and CAN frames;
+///  - bytes the host writes to a device's serial port reach it through `OnHostBytes()`, stamped
+///    with their emulated arrival time; the device may answer (ACK, polled message) and change its
+///    port settings (baud).
+/// Devices never touch descriptors or the wall clock: the bytes they produce depend only on the
+/// scenario and the seed.
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "hil/firmware_emu/sim_time.h"
+#include "hil/firmware_emu/truth_sample.h"
+
+namespace hil {
+
+/// One whole message for a serial port, ready to enter the UART at `t_ready`.
+struct SerialMessage {
+  Time t_ready{};
+  int port = 0;       ///< the device's serial port index (0 for single-port devices)
+  std::string bytes;  ///< the complete framed message
+  std::string name;   ///< e.g. "NMEA-GGA", "UBX-NAV-SOL" — for diagnostics and drop counting
+};
+
+/// One CAN frame as the device puts it on the bus at `t`.
+struct CanFrame {
+  Time t{};
+  std::uint32_t id = 0;      ///< 11- or 29-bit identifier (without flags)
+  bool extended = true;
+  std::uint8_t len = 0;      ///< data length, 0–8 (classic) or up to 64 (FD)
+  bool fd = false;
+  std::array<std::uint8_t, 64> data{};
+};
+
+/// What a device produced at one event.
+struct DeviceOutput {
+  std::vector<SerialMessage> serial;
+  std::vector<CanFrame> can;
+  void clear() {
+    serial.clear();
+    can.clear();
+  }
+};
+
+/// An emulated device.
+class Device {
+ public:
+  virtual ~Device() = default;
+  /// Short name, e.g. "gps0" or "mcu".
+  virtual const std::string& name() const = 0;
+  /// The next emulated time at which the device needs the truth (monotonic, non-decreasing).
+  virtual Time next_event_time() const = 0;
+  /// Handles the event at `truth.t == next_event_time()` and appends what it sends to `out`.
+  virtual void OnEvent(const TruthSample& truth, DeviceOutput& out) = 0;
+  /// Bytes the host wrote to serial port `port`, arriving at emulated time `t`.
+  virtual void OnHostBytes(int port, Time t, std::string_view bytes, DeviceOutput& out) {
+    (void)port, (void)t, (void)bytes, (void)out;
+  }
+  /// Current line rate of serial port `port` in bit/s (configuration may change it).
+  virtual int baud(int port) const = 0;
+  /// Number of serial ports the device has.
+  virtual int serial_port_count() const { return 1; }
+};
+
+}  // namespace hil

@@ -1,0 +1,21 @@
+#pragma once
+// Internal to the harness: readers of the scenario file's sections, one file per owner
+// (scenario_truth.cc: origin, vehicle, path; scenario_gnss.cc: gnss). Each lists the top-level
+// keys it reads so the root check knows them.
+#include <string>
+#include <vector>
+
+#include "hil/harness/scenario.h"
+#include "hil/harness/yaml_reader.h"
+
+namespace hil::harness {
+
+extern const std::vector<std::string> kTruthSectionKeys;
+/// Reads origin (required), vehicle and path into the truth configuration.
+void ReadTruthSections(const YamlReader& root, truth::TruthConfig& t);
+
+extern const std::vector<std::string> kGnssSectionKeys;
+/// Reads the gnss section (optional).
+void ReadGnssSection(const YamlReader& root, GnssDeviceSpec& g);
+
+}  // namespace hil::harness
