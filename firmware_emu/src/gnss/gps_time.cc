@@ -112,8 +112,9 @@ std::int64_t ParseIsoUtc(const std::string& text) {
   if (pos >= text.size() || text[pos] != 'Z' || pos + 1 != text.size()) {
     throw std::invalid_argument("UTC time must end in 'Z': '" + text + "'");
   }
-  if (u.month < 1 || u.month > 12 || u.day < 1 || u.day > 31 || u.hour > 23 || u.minute > 59 ||
-      u.second > 59) {
+  // GPS time starts in 1980; the upper bound keeps nanoseconds since 1970 inside 64 bits
+  if (u.year < 1980 || u.year > 2200 || u.month < 1 || u.month > 12 || u.day < 1 || u.day > 31 || u.hour > 23 ||
+      u.minute > 59 || u.second > 59) {
     throw std::invalid_argument("UTC time out of range: '" + text + "'");
   }
   return UnixNsFromUtc(u);

@@ -42,3 +42,16 @@ TEST(GpsTimeTest, RejectsMalformedTimes) {
 
 }  // namespace
 }  // namespace hil::gnss
+
+namespace hil::gnss {
+namespace {
+
+// Found by scenario_fuzz: a year before the GPS era overflowed the nanosecond arithmetic.
+TEST(GpsTimeTest, RejectsYearsOutsideTheGpsEra) {
+  EXPECT_THROW(ParseIsoUtc("0013-06-10T08:00:00Z"), std::invalid_argument);
+  EXPECT_THROW(ParseIsoUtc("9999-06-10T08:00:00Z"), std::invalid_argument);
+  EXPECT_NO_THROW(ParseIsoUtc("1980-01-06T00:00:00Z"));
+}
+
+}  // namespace
+}  // namespace hil::gnss
