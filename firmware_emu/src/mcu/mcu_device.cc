@@ -103,6 +103,7 @@ void McuDevice::Boot(Time t_boot) {
   pending_boot_.reset();
   boot_ = t_boot;
   sequence_ = 0;
+  last_pulse_.reset();  // RAM is cleared by a reset
   imu_index_ = 0;
   ScheduleImu();
 }
