@@ -1,5 +1,6 @@
 // The scenario's `mcu:` section (harness/src/scenario_mcu.cc) and the device set it creates.
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 
@@ -88,6 +89,16 @@ void ExpectError(const std::string& mcu_text, const std::string& field, const st
     EXPECT_EQ(e.field(), field) << e.what();
     EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
   }
+}
+
+TEST(ScenarioMcuTest, ExampleScenarioLoads) {
+  const char* src = std::getenv("HIL_SOURCE_DIR");
+  ASSERT_NE(src, nullptr);
+  const Scenario s = LoadScenario(std::string(src) + "/vectors/mcu/seed000_razor_imu.yaml");
+  EXPECT_TRUE(s.mcu.enabled);
+  EXPECT_DOUBLE_EQ(s.mcu.config.imu_rate_hz, 10.0);
+  EXPECT_DOUBLE_EQ(s.mcu.config.mounting.p_BI_B_m.z(), 1.5);
+  EXPECT_TRUE(s.mcu.config.can.enabled);
 }
 
 TEST(ScenarioMcuTest, BadValuesNameTheirField) {
