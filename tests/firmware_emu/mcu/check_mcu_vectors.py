@@ -107,6 +107,47 @@ def check_can(src):
     print(f"mcu_j1939: {len(lines)} CAN frames matched")
 
 
+def load_dbc(path):
+    """Messages of a DBC file: {frame id with bit 31: (name, [(signal, start, length, signed, scale, offset)])}."""
+    messages, current = {}, None
+    bo = re.compile(r"^BO_ (\d+) (\w+): (\d+) (\w+)")
+    sg = re.compile(r"^ SG_ (\w+) : (\d+)\|(\d+)@1([+-]) \(([^,]+),([^)]+)\)")
+    for line in open(path):
+        if m := bo.match(line):
+            current = messages.setdefault(int(m.group(1)), (m.group(2), []))
+        elif (m := sg.match(line)) and current is not None:
+            current[1].append((m.group(1), int(m.group(2)), int(m.group(3)), m.group(4) == "-",
+                               float(m.group(5)), float(m.group(6))))
+    return messages
+
+
+def check_can_with_dbc(src):
+    """Decodes the CAN vector with the DBC's own signal definitions (Intel byte order)."""
+    dbc = load_dbc(f"{src}/vectors/can/hil_imu.dbc")
+    columns = {
+        "ARI": ["PitchRate", "RollRate", "YawRate", "AngularRateLatency"],
+        "ACCS": ["LateralAcceleration", "LongitudinalAcceleration", "VerticalAcceleration", "AccelerationLatency"],
+        "SSI2": ["PitchAngleExtRange", "RollAngleExtRange", "RollPitchLatency"],
+        "HIL_TIME_PULSE": ["PulseTick", "GpsTowSeconds", "GpsWeekMod4096"],
+    }
+    lines = open(f"{src}/vectors/can/mcu_j1939.candump").read().splitlines()
+    rows = expected_rows(f"{src}/vectors/can/mcu_j1939.expected.csv")
+    for line, row in zip(lines, rows):
+        ident, data = line.split()[2].split("#")
+        name, signals = dbc[int(ident, 16) | 0x80000000]
+        raw = int.from_bytes(bytes.fromhex(data), "little")
+        by_name = {}
+        for sig, start, length, signed, scale, offset in signals:
+            v = (raw >> start) & ((1 << length) - 1)
+            if signed and v >> (length - 1):
+                v -= 1 << length
+            by_name[sig] = (v * scale + offset, scale)
+        for k, sig in enumerate(columns[name]):
+            value, scale = by_name[sig]
+            assert abs(value - float(row[3 + k])) <= abs(scale), (line, sig, value, row[3 + k])
+    print(f"mcu_j1939: {len(lines)} CAN frames decoded with hil_imu.dbc and matched")
+
+
 if __name__ == "__main__":
     source = sys.argv[1]
     for vector in ("razor_v13_binary", "razor_v13_faults", "tactical_100hz_binary"):
@@ -114,3 +155,4 @@ if __name__ == "__main__":
     for vector in ("razor_v13_raw", "razor_v13_v19"):
         check_text(source, vector)
     check_can(source)
+    check_can_with_dbc(source)
