@@ -1,6 +1,6 @@
 #pragma once
 // Internal to the harness: readers of the scenario file's sections, one file per owner
-// (scenario_truth.cc: origin, vehicle, path; scenario_gnss.cc: gnss). Each lists the top-level
+// (scenario_truth.cc: origin, vehicle, path; scenario_gnss.cc: gnss; scenario_mcu.cc: mcu). Each lists the top-level
 // keys it reads so the root check knows them.
 #include <string>
 #include <vector>
@@ -17,5 +17,9 @@ void ReadTruthSections(const YamlReader& root, truth::TruthConfig& t);
 extern const std::vector<std::string> kGnssSectionKeys;
 /// Reads the gnss section (optional).
 void ReadGnssSection(const YamlReader& root, GnssDeviceSpec& g);
+
+extern const std::vector<std::string> kMcuSectionKeys;
+/// Reads the mcu section (optional; scenario_mcu.cc). Without it the scenario has no IMU board.
+void ReadMcuSection(const YamlReader& root, McuDeviceSpec& m);
 
 }  // namespace hil::harness

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "hil/firmware_emu/gnss/receiver_model.h"
+#include "hil/firmware_emu/mcu/mcu_config.h"
 #include "hil/truth/truth_integrator.h"
 
 namespace hil::harness {
@@ -34,6 +35,15 @@ struct GnssDeviceSpec {
   gnss::ReceiverModelConfig model;
 };
 
+/// The IMU board's microcontroller of a scenario (section `mcu:`; absent → no IMU board).
+struct McuDeviceSpec {
+  bool enabled = false;            ///< true when the scenario has an `mcu:` section
+  std::string link = "ttyIMU";     ///< symlink name in the run folder
+  std::size_t tx_buffer_bytes = 4096;
+  bool imu_rate_is_default = true;  ///< no imu_rate_hz given: 10 × the GNSS rate
+  mcu::McuConfig config;           ///< start_unix_ns is filled from the scenario's start_utc
+};
+
 /// How the estimator under test is started and read.
 struct EstimatorSpec {
   /// Shell command; {navd}, {run_dir}, {seed} and every link name in braces ({ttyGPS}) are substituted.
@@ -52,6 +62,7 @@ struct Scenario {
   std::uint64_t seed = 1;
   truth::TruthConfig truth;
   GnssDeviceSpec gnss;
+  McuDeviceSpec mcu;
   EstimatorSpec estimator;
   std::vector<Criterion> criteria;
 };

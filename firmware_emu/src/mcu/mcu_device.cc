@@ -1,0 +1,297 @@
+#include "hil/firmware_emu/mcu/mcu_device.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "hil/firmware_emu/gnss/gps_time.h"
+#include "hil/firmware_emu/mcu/imu_kinematics.h"
+#include "hil/firmware_emu/mcu/mcu_frame.h"
+#include "hil/firmware_emu/mcu/razor_text.h"
+
+namespace hil::mcu {
+namespace {
+
+constexpr std::int64_t kNsPerS = 1000000000;
+constexpr Duration kPulseSeenWindow = std::chrono::milliseconds(1500);
+constexpr std::uint8_t kResetCausePowerOn = 0;
+constexpr std::uint8_t kResetCauseExternal = 3;
+
+// splitmix64: independent seeds for the device's random streams
+std::uint64_t DeriveSeed(std::uint64_t seed, std::uint64_t stream) {
+  std::uint64_t z = seed + 0x9E3779B97F4A7C15ULL * (stream + 1);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+  return z ^ (z >> 31);
+}
+
+const McuConfig& Validated(const McuConfig& c) {
+  if (!(c.imu_rate_hz > 0 && c.imu_rate_hz <= 10000)) throw std::invalid_argument("mcu: imu_rate_hz must be in (0, 10000]");
+  if (!(c.mag_rate_hz > 0 && c.mag_rate_hz <= 1000)) throw std::invalid_argument("mcu: mag_rate_hz must be in (0, 1000]");
+  if (std::abs(c.crystal_ppm) > 10000) throw std::invalid_argument("mcu: crystal_ppm out of range");
+  if (c.baud <= 0) throw std::invalid_argument("mcu: baud must be positive");
+  if (c.can.ari_every < 1 || c.can.accs_every < 1 || c.can.ssi2_every < 1)
+    throw std::invalid_argument("mcu: CAN dividers must be >= 1");
+  return c;
+}
+
+TriadSpec GyroSpecFor(const McuConfig& c) {
+  TriadSpec g = c.profile.gyro;
+  // the stock Razor firmware reads each gyro with one analogRead per sample
+  if (c.format != SerialFormat::kBinary) g.counts.oversample = 1;
+  return g;
+}
+
+std::array<int, 3> Ints(const TriadCounts& c, int add = 0) {
+  return {c.counts[0] + add, c.counts[1] + add, c.counts[2] + add};
+}
+
+Eigen::Vector3d Engineering(const TriadCounts& c, double lsb) {
+  return Eigen::Vector3d(c.counts[0], c.counts[1], c.counts[2]) * lsb;
+}
+
+FiguresOfMerit Fom(const TriadCounts& c) {
+  return {static_cast<std::uint8_t>(c.saturated[0] ? 1 : 0), static_cast<std::uint8_t>(c.saturated[1] ? 1 : 0),
+          static_cast<std::uint8_t>(c.saturated[2] ? 1 : 0)};
+}
+
+}  // namespace
+
+McuDevice::McuDevice(const McuConfig& config, std::uint64_t seed)
+    : config_(Validated(config)),
+      timing_rng_(DeriveSeed(seed, 0)),
+      fault_rng_(DeriveSeed(seed, 1)),
+      accel_(config.profile.accel, std::round(1e6 / config.imu_rate_hz) * 1e-6, DeriveSeed(seed, 2)),
+      gyro_(GyroSpecFor(config), std::round(1e6 / config.imu_rate_hz) * 1e-6, DeriveSeed(seed, 3)),
+      mag_(config.profile.mag, 1.0 / config.mag_rate_hz, DeriveSeed(seed, 4)),
+      tick_hz_(kNominalTickHz * (1.0 + config.crystal_ppm * 1e-6)),
+      imu_period_ticks_(static_cast<std::uint32_t>(std::lround(1e6 / config.imu_rate_hz))),
+      mag_period_(DurationFromSeconds(1.0 / (config.mag_rate_hz * (1.0 + config.mag_oscillator_ppm * 1e-6)))) {
+  accel_.SetVibration(config_.vibration, true);
+  gyro_.SetVibration(config_.vibration, false);
+  for (const McuFault& f : config_.faults)
+    if (f.kind == FaultKind::kReset) resets_.push_back(TimeFromSeconds(f.start_s));
+  std::sort(resets_.begin(), resets_.end());
+  jump_applied_.assign(config_.faults.size(), false);
+  // first whole GPS second at or after t = 0
+  const gnss::GpsTime g0 = gnss::GpsFromUnixNs(config_.start_unix_ns);
+  const std::int64_t rem = g0.tow_ns % kNsPerS;
+  next_pps_ = TimeFromNs(rem == 0 ? 0 : kNsPerS - rem);
+  next_mag_ = TimeFromSeconds(config_.first_sample_delay_s);
+  reset_cause_ = kResetCausePowerOn;
+  pending_boot_ = Time{};
+  up_ = false;
+}
+
+std::uint32_t McuDevice::TickAt(Time t) const {
+  const double ticks = std::floor(static_cast<double>(ToNs(t) - ToNs(boot_)) * tick_hz_ * 1e-9);
+  const auto n = static_cast<std::int64_t>(ticks);
+  return static_cast<std::uint32_t>(static_cast<std::uint64_t>(n) & 0xFFFFFFFFULL);
+}
+
+Time McuDevice::next_event_time() const {
+  Time t = next_mag_;
+  if (up_) t = std::min(t, next_imu_);
+  if (config_.time_pulse) t = std::min(t, next_pps_);
+  if (pending_boot_) t = std::min(t, *pending_boot_);
+  if (!resets_.empty()) t = std::min(t, resets_.front());
+  return t;
+}
+
+void McuDevice::Boot(Time t_boot) {
+  up_ = true;
+  pending_boot_.reset();
+  boot_ = t_boot;
+  sequence_ = 0;
+  last_pulse_.reset();  // RAM is cleared by a reset
+  imu_index_ = 0;
+  ScheduleImu();
+}
+
+void McuDevice::ScheduleImu() {
+  const double first_ticks = std::round(config_.first_sample_delay_s * 1e6);
+  const double tick = first_ticks + static_cast<double>(imu_index_) * imu_period_ticks_;
+  const auto offset_ns = static_cast<std::int64_t>(std::llround(tick * 1e9 / tick_hz_));
+  const auto jitter_ns = static_cast<std::int64_t>(std::llround(timing_rng_.Uniform() * config_.jitter_us * 1e3));
+  next_imu_ = boot_ + Duration{offset_ns + jitter_ns};
+}
+
+void McuDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
+  const Time t = truth.t;
+  if (!resets_.empty() && resets_.front() == t) {
+    resets_.erase(resets_.begin());
+    up_ = false;
+    pending_boot_ = t + DurationFromSeconds(config_.reboot_s);
+    reset_cause_ = kResetCauseExternal;
+    ++reset_count_;
+    ++stats_.resets;
+  }
+  if (pending_boot_ && *pending_boot_ == t) {
+    Boot(t);
+    SendStatus(t, out);
+  }
+  if (config_.time_pulse && next_pps_ == t) {
+    if (up_) OnTimePulse(t, out);
+    next_pps_ += std::chrono::seconds(1);
+  }
+  if (up_ && next_imu_ == t) {
+    OnImuSample(truth, out);
+    ++imu_index_;
+    ScheduleImu();
+  }
+  if (next_mag_ == t) {
+    OnMagSample(truth);
+    if (up_ && config_.format == SerialFormat::kBinary) {
+      MagSamplePayload p;
+      p.mag = last_mag_.counts;
+      const std::uint16_t seq = NextSequence(t);
+      SendSerial(t, EncodeMagSample(seq, TickAt(t), p), "MCU-MAG", out);
+    }
+    next_mag_ += mag_period_;
+  }
+}
+
+std::uint16_t McuDevice::NextSequence(Time t) {
+  for (std::size_t i = 0; i < config_.faults.size(); ++i) {
+    const McuFault& f = config_.faults[i];
+    if (f.kind == FaultKind::kSequenceJump && !jump_applied_[i] && TimeFromSeconds(f.start_s) <= t) {
+      sequence_ = static_cast<std::uint16_t>(sequence_ + f.amount);
+      jump_applied_[i] = true;
+    }
+  }
+  return sequence_++;
+}
+
+bool McuDevice::ActiveFault(FaultKind kind, Time t, const McuFault** which) const {
+  for (const McuFault& f : config_.faults) {
+    if (f.kind != kind) continue;
+    const Time a = TimeFromSeconds(f.start_s);
+    if (t >= a && t < a + DurationFromSeconds(f.duration_s)) {
+      if (which) *which = &f;
+      return true;
+    }
+  }
+  return false;
+}
+
+bool McuDevice::Stuck(const char* sensor, Time t) const {
+  for (const McuFault& f : config_.faults) {
+    if (f.kind != FaultKind::kStuckSensor || (f.sensor != "all" && f.sensor != sensor)) continue;
+    const Time a = TimeFromSeconds(f.start_s);
+    if (t >= a && t < a + DurationFromSeconds(f.duration_s)) return true;
+  }
+  return false;
+}
+
+void McuDevice::SendSerial(Time t_sample, std::string bytes, const char* what, DeviceOutput& out) {
+  const McuFault* f = nullptr;
+  if (ActiveFault(FaultKind::kDropFrames, t_sample, &f) && fault_rng_.Uniform() < f->probability) {
+    ++stats_.frames_dropped;
+    return;
+  }
+  if (ActiveFault(FaultKind::kCorruptBytes, t_sample, &f) && fault_rng_.Uniform() < f->probability &&
+      !bytes.empty()) {
+    const auto pos = static_cast<std::size_t>(fault_rng_.Uniform() * static_cast<double>(bytes.size()));
+    const auto flip = static_cast<unsigned char>(1 + static_cast<int>(fault_rng_.Uniform() * 255.0));
+    bytes[pos] = static_cast<char>(static_cast<unsigned char>(bytes[pos]) ^ flip);
+    ++stats_.frames_corrupted;
+  }
+  out.serial.push_back({t_sample + DurationFromSeconds(config_.output_latency_s), 0, std::move(bytes), what});
+}
+
+void McuDevice::OnImuSample(const TruthSample& truth, DeviceOutput& out) {
+  const Time t = truth.t;
+  const double t_s = ToSeconds(t);
+  const double temp = config_.temperature_c + config_.temperature_rate_c_per_h * t_s / 3600.0;
+  const IdealImu ideal = IdealImuFromTruth(truth, config_.mounting, config_.magnetic);
+  TriadCounts a = accel_.Sample(ideal.f_I_mps2, t_s, temp);
+  TriadCounts g = gyro_.Sample(ideal.w_I_radps, t_s, temp);
+  if (have_accel_ && Stuck("accel", t)) a = last_accel_;
+  if (have_gyro_ && Stuck("gyro", t)) g = last_gyro_;
+  last_accel_ = a, last_gyro_ = g;
+  have_accel_ = have_gyro_ = true;
+  ++stats_.imu_samples;
+
+  switch (config_.format) {
+    case SerialFormat::kBinary: {
+      ImuSamplePayload p;
+      p.accel = a.counts;
+      p.gyro = g.counts;
+      const std::uint16_t seq = NextSequence(t);
+      SendSerial(t, EncodeImuSample(seq, TickAt(t), p), "MCU-IMU", out);
+      break;
+    }
+    case SerialFormat::kRazorRaw:
+    case SerialFormat::kRazorV19: {
+      const auto fmt = config_.format == SerialFormat::kRazorRaw ? RazorTextFormat::kRaw : RazorTextFormat::kV19;
+      SendSerial(t, EncodeRazorLine(fmt, Ints(a), Ints(g, gyro_.spec().counts.nominal_zero_count), Ints(last_mag_)),
+                 "RAZOR-TEXT", out);
+      break;
+    }
+  }
+
+  if (!config_.can.enabled) return;
+  const CanOutputConfig& c = config_.can;
+  const Time t_bus = t + DurationFromSeconds(c.latency_s);
+  const Eigen::Vector3d f = Engineering(a, accel_.output_lsb());
+  const Eigen::Vector3d w = Engineering(g, gyro_.output_lsb());
+  if (imu_index_ % static_cast<std::uint64_t>(c.ari_every) == 0)
+    out.can.push_back(EncodeAri(t_bus, c.address, w, Fom(g), c.latency_s));
+  if (imu_index_ % static_cast<std::uint64_t>(c.accs_every) == 0)
+    out.can.push_back(EncodeAccs(t_bus, c.address, f, Fom(a), c.latency_s));
+  if (imu_index_ % static_cast<std::uint64_t>(c.ssi2_every) == 0) {
+    const std::uint8_t fom = (a.saturated[0] || a.saturated[1] || a.saturated[2]) ? 1 : 0;
+    out.can.push_back(EncodeSsi2(t_bus, c.address, f, fom, fom, c.latency_s));
+  }
+}
+
+void McuDevice::OnMagSample(const TruthSample& truth) {
+  const Time t = truth.t;
+  const double t_s = ToSeconds(t);
+  const double temp = config_.temperature_c + config_.temperature_rate_c_per_h * t_s / 3600.0;
+  const IdealImu ideal = IdealImuFromTruth(truth, config_.mounting, config_.magnetic);
+  TriadCounts m = mag_.Sample(ideal.mag_I_uT, t_s, temp);
+  if (have_mag_ && Stuck("mag", t)) m = last_mag_;
+  last_mag_ = m;
+  have_mag_ = true;
+  ++stats_.mag_samples;
+}
+
+void McuDevice::OnTimePulse(Time t, DeviceOutput& out) {
+  const std::uint32_t latched = TickAt(t);
+  const gnss::GpsTime g = gnss::GpsFromUnixNs(config_.start_unix_ns + ToNs(t));
+  const std::int64_t tow_s = (g.tow_ns + kNsPerS / 2) / kNsPerS;
+  last_pulse_ = t;
+  ++stats_.time_pulses;
+  if (config_.format == SerialFormat::kBinary) {
+    TimePulsePayload p;
+    p.gps_week = static_cast<std::uint16_t>(g.week);
+    p.tow_ms = static_cast<std::uint32_t>(tow_s * 1000);
+    p.time_valid = true;
+    const std::uint16_t seq = NextSequence(t);
+    SendSerial(t, EncodeTimePulse(seq, latched, p), "MCU-TIME-PULSE", out);
+    SendStatus(t, out);
+  }
+  if (config_.can.enabled && config_.can.time_pulse) {
+    out.can.push_back(EncodeHilTimePulse(t + DurationFromSeconds(config_.can.latency_s), config_.can.address, latched,
+                                         true, static_cast<std::uint32_t>(tow_s), g.week));
+  }
+}
+
+void McuDevice::SendStatus(Time t, DeviceOutput& out) {
+  if (config_.format != SerialFormat::kBinary) return;
+  StatusPayload p;
+  p.reset_cause = reset_cause_;
+  p.pulse_seen = last_pulse_ && t - *last_pulse_ <= kPulseSeenWindow;
+  p.reset_count = reset_count_;
+  p.imu_period_ticks = imu_period_ticks_;
+  p.accel_scale_mps2_per_lsb = static_cast<float>(accel_.output_lsb());
+  p.gyro_scale_radps_per_lsb = static_cast<float>(gyro_.output_lsb());
+  p.mag_scale_uT_per_lsb = static_cast<float>(mag_.output_lsb());
+  p.profile = static_cast<std::uint8_t>(config_.profile.id);
+  ++stats_.status_frames;
+  const std::uint16_t seq = NextSequence(t);
+  SendSerial(t, EncodeStatus(seq, TickAt(t), p), "MCU-STATUS", out);
+}
+
+}  // namespace hil::mcu
