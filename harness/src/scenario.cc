@@ -42,7 +42,7 @@ std::vector<Criterion> ReadCriteria(const YamlReader& r) {
 
 Scenario FromReader(const YamlReader& root) {
   std::vector<std::string> keys{"name", "description", "start_utc", "duration_s", "seed", "estimator", "criteria"};
-  for (const auto* section : {&kTruthSectionKeys, &kGnssSectionKeys}) keys.insert(keys.end(), section->begin(), section->end());
+  for (const auto* section : {&kTruthSectionKeys, &kGnssSectionKeys, &kCanSectionKeys}) keys.insert(keys.end(), section->begin(), section->end());
   root.CheckKeys(keys);
   Scenario s;
   s.file = root.file();
@@ -57,6 +57,7 @@ Scenario FromReader(const YamlReader& root) {
   s.seed = static_cast<std::uint64_t>(root.Int("seed", 1, 0, INT64_MAX));
   ReadTruthSections(root, s.truth);
   ReadGnssSection(root, s.gnss);
+  ReadCanSection(root, s.can);
   if (auto e = root.OptionalChild("estimator")) ReadEstimator(*e, s.estimator);
   if (auto c = root.OptionalChild("criteria")) s.criteria = ReadCriteria(*c);
   return s;

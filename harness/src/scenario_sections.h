@@ -18,4 +18,8 @@ extern const std::vector<std::string> kGnssSectionKeys;
 /// Reads the gnss section (optional).
 void ReadGnssSection(const YamlReader& root, GnssDeviceSpec& g);
 
+extern const std::vector<std::string> kCanSectionKeys;
+/// Reads the can section (optional; scenario_can.cc).
+void ReadCanSection(const YamlReader& root, CanLinkSpec& c);
+
 }  // namespace hil::harness
