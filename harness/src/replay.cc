@@ -217,6 +217,15 @@ ReplayResult ReplayCaptures(const ReplayOptions& opt) {
       active.erase(active.begin() + pick);
     }
   }
+  // closing a pty discards what its host has not read yet, including bytes still in the kernel's
+  // flip buffer (not counted by FIONREAD): wait until every queue has been empty for 50 ms (≤ 2 s)
+  const std::int64_t drain_deadline = link::RealtimePacer::MonotonicNs() + 2000000000LL;
+  for (int quiet_ms = 0; quiet_ms < 50 && link::RealtimePacer::MonotonicNs() < drain_deadline; quiet_ms += 2) {
+    for (const SerialOut& o : serial) {
+      if (o.port->PendingToHost() > 0) quiet_ms = 0;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
   return result;
 }
 
