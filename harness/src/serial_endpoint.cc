@@ -108,7 +108,7 @@ void SerialEndpoint::WriteAll() {
     r.dir = CaptureDir::kTx;
     r.t_emu_ns = ToNs(c.t_first);
     r.byte_period_ns = c.byte_period.count();
-    r.t_wall_ns = link::RealtimePacer::MonotonicNs();
+    r.t_wall_ns = 0;  // virtual mode: no wall time, so a scenario and seed give an identical capture
     r.name = name;
     r.bytes = c.bytes;
     capture_.Write(r);
