@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "hil/harness/replay.h"
 #include "hil/harness/run.h"
 #include "hil/harness/yaml_reader.h"
 
@@ -56,6 +57,7 @@ int main(int argc, char** argv) {
       "  hil run                              run the embedded default scenario into runs/<name>\n"
       "  hil run my_field.yaml --out out/a    run a scenario file\n"
       "  hil run --mode realtime --seed 7     bytes at their wall-clock UART times\n"
+      "  hil replay runs/x/captures/ttyGPS.cap   replay a capture into runs/replay/ttyGPS\n"
       "Exit codes: 0 every criterion passed, 1 a criterion failed, 2 bad input.");
 
   std::string scenario_path, out_dir, mode = "virtual", estimator_cmd;
@@ -79,6 +81,19 @@ int main(int argc, char** argv) {
   emulate->add_option("--out", emu_out, "run folder holding the links and captures (default: runs/<name>-emulate)");
   emulate->add_option("--speed", emu_speed, "speed-up factor")->check(CLI::Range(0.01, 1000.0));
 
+  // hil replay (links): captures back into ptys / onto CAN at their recorded byte times
+  hil::harness::ReplayOptions replay_opt;
+  replay_opt.out_dir = "runs/replay";
+  auto* replay = app.add_subcommand("replay",
+                                    "Play captures (RUN/captures/*.cap, candump -l logs) back at their recorded "
+                                    "timing: serial bytes into ptys OUT/<link>, CAN frames onto an interface");
+  replay->add_option("CAPTURE", replay_opt.captures, "capture files and candump logs, played together")->required();
+  replay->add_option("--out", replay_opt.out_dir, "folder for the pty links and the re-capture (default runs/replay)");
+  replay->add_option("--speed", replay_opt.speed, "speed-up factor")->check(CLI::Range(0.01, 1000.0));
+  replay->add_option("--delay", replay_opt.start_delay_s, "seconds between creating the links and the first byte (default 1)")
+      ->check(CLI::Range(0.0, 3600.0));
+  replay->add_option("--can-iface", replay_opt.can_iface, "play every CAN source onto this interface (default: as recorded)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -88,6 +103,22 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  if (replay->parsed()) {
+    replay_opt.on_links = [](const std::vector<std::pair<std::string, std::string>>& links) {
+      for (const auto& [name, path] : links) std::printf("%s %s\n", name.c_str(), path.c_str());
+      std::fflush(stdout);
+    };
+    try {
+      const hil::harness::ReplayResult r = hil::harness::ReplayCaptures(replay_opt);
+      std::printf("replayed %llu bytes and %llu CAN frames (%llu refused); re-capture in %s/captures\n",
+                  static_cast<unsigned long long>(r.bytes), static_cast<unsigned long long>(r.frames),
+                  static_cast<unsigned long long>(r.frames_failed), replay_opt.out_dir.c_str());
+      return r.frames_failed == 0 ? 0 : 1;
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "hil: %s\n", e.what());
+      return 2;
+    }
+  }
   if (emulate->parsed()) {
     hil::harness::Scenario scenario;
     try {

@@ -12,6 +12,7 @@
 
 #include "hil/firmware_emu/gnss/gps_time.h"
 #include "hil/firmware_emu/link/realtime_pacer.h"
+#include "hil/harness/can_endpoint.h"
 #include "hil/harness/estimator_process.h"
 #include "hil/harness/device_set.h"
 
@@ -90,6 +91,9 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
   DeviceSet set = BuildDevices(scenario, seed, dir);
   truth::TruthIntegrator truth(scenario.truth);
   const std::string gps_link = dir + "/" + scenario.gnss.link;
+  // CAN link: devices' frames go to the scenario's SocketCAN interface (CanEndpoint)
+  std::optional<CanEndpoint> can_bus;
+  if (!scenario.can.interface.empty()) can_bus.emplace(scenario.can.interface, dir + "/captures", scenario.start_unix_ns, scenario.can.fd);
 
   WriteNavdConfig(dir + "/navd.conf", scenario, gps_link);
   const std::string command = Substitute(opt.estimator_command.value_or(scenario.estimator.command),
@@ -120,6 +124,10 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
   DeviceOutput out;
   const auto dispatch = [&](std::size_t d) {
     for (const SerialMessage& m : out.serial) set.endpoints[d].at(static_cast<std::size_t>(m.port))->Queue(m);
+    if (can_bus) {  // CAN link
+      for (const CanFrame& f : out.can) can_bus->Queue(f);
+      if (!pacer) can_bus->SendAll();
+    }
     out.clear();
     if (!pacer) {
       for (auto& ep : set.endpoints[d]) ep->WriteAll();
@@ -142,6 +150,11 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
             ep_next = ep.get();
           }
         }
+      }
+      if (const auto t_frame = can_bus ? can_bus->next_frame_time() : std::nullopt;  // CAN link
+          t_frame && (!t_byte || *t_frame <= *t_byte) && (*t_frame < *t_event || *t_event > t_end)) {
+        can_bus->SendNext(*pacer);
+        continue;
       }
       if (ep_next && (*t_byte < *t_event || *t_event > t_end)) {
         ep_next->WriteNextByte(*pacer);
@@ -183,6 +196,7 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
         }
       }
     }
+    if (can_bus) can_bus->PollBus(*t_event);  // CAN link: capture what others put on the bus
     if (!opt.emulate_only && !estimator_running()) break;
   }
   if (pacer) {
@@ -191,6 +205,7 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
         while (ep->next_byte_time()) ep->WriteNextByte(*pacer);
       }
     }
+    while (can_bus && can_bus->next_frame_time()) can_bus->SendNext(*pacer);  // CAN link
   }
 
   // drain: the host has read every byte and its output has gone quiet
@@ -278,6 +293,11 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
         sched.push_back({{"link", ep->link_name()}, {"bytes", e.size()}, {"p50_us", Percentile(e, 50)},
                          {"p99_us", Percentile(e, 99)}, {"max_us", Percentile(e, 100)}});
       }
+    }
+    if (can_bus && !can_bus->schedule_error_us().empty()) {  // CAN link
+      const auto& e = can_bus->schedule_error_us();
+      sched.push_back({{"link", can_bus->iface()}, {"frames", e.size()}, {"p50_us", Percentile(e, 50)},
+                       {"p99_us", Percentile(e, 99)}, {"max_us", Percentile(e, 100)}});
     }
     if (!sched.empty()) std::ofstream(dir + "/schedule_error.json") << sched.dump(2) << "\n";
   }

@@ -42,7 +42,9 @@ std::vector<Criterion> ReadCriteria(const YamlReader& r) {
 
 Scenario FromReader(const YamlReader& root) {
   std::vector<std::string> keys{"name", "description", "start_utc", "duration_s", "seed", "estimator", "criteria"};
-  for (const auto* section : {&kTruthSectionKeys, &kGnssSectionKeys, &kMcuSectionKeys}) keys.insert(keys.end(), section->begin(), section->end());
+  for (const auto* section : {&kTruthSectionKeys, &kGnssSectionKeys, &kMcuSectionKeys, &kCanSectionKeys}) {
+    keys.insert(keys.end(), section->begin(), section->end());
+  }
   root.CheckKeys(keys);
   Scenario s;
   s.file = root.file();
@@ -61,6 +63,7 @@ Scenario FromReader(const YamlReader& root) {
   s.mcu.config.start_unix_ns = s.start_unix_ns;
   // seed 000: the IMU runs 10 times as fast as the GPS
   if (s.mcu.imu_rate_is_default) s.mcu.config.imu_rate_hz = 10.0 * s.gnss.rate_hz;
+  ReadCanSection(root, s.can);
   if (auto e = root.OptionalChild("estimator")) ReadEstimator(*e, s.estimator);
   if (auto c = root.OptionalChild("criteria")) s.criteria = ReadCriteria(*c);
   return s;

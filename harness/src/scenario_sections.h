@@ -21,5 +21,8 @@ void ReadGnssSection(const YamlReader& root, GnssDeviceSpec& g);
 extern const std::vector<std::string> kMcuSectionKeys;
 /// Reads the mcu section (optional; scenario_mcu.cc). Without it the scenario has no IMU board.
 void ReadMcuSection(const YamlReader& root, McuDeviceSpec& m);
+extern const std::vector<std::string> kCanSectionKeys;
+/// Reads the can section (optional; scenario_can.cc).
+void ReadCanSection(const YamlReader& root, CanLinkSpec& c);
 
 }  // namespace hil::harness

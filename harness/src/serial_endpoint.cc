@@ -2,71 +2,130 @@
 
 #include <stdexcept>
 
+#include "hil/firmware_emu/link/pty_port.h"
+#include "hil/firmware_emu/link/tty_port.h"
+
 namespace hil::harness {
 namespace {
 
-std::string Hex(std::string_view bytes) {
-  static constexpr char kHex[] = "0123456789abcdef";
-  std::string o;
-  o.reserve(bytes.size() * 2);
-  for (unsigned char c : bytes) {
-    o += kHex[c >> 4];
-    o += kHex[c & 15];
-  }
-  return o;
+std::unique_ptr<link::SerialPort> OpenPort(const std::string& link_name, const std::string& link_path, int baud) {
+  if (link::IsDevicePath(link_name)) return std::make_unique<link::TtyPort>(link_name, baud);
+  return std::make_unique<link::PtyPort>(link_path, baud);
+}
+
+CaptureHeader SerialHeader(const std::string& link_name, int baud) {
+  CaptureHeader h;
+  h.link = link_name;
+  h.kind = "serial";
+  h.baud = baud;
+  return h;
 }
 
 }  // namespace
 
+std::string CaptureFileName(const std::string& link_name) {
+  const std::size_t slash = link_name.rfind('/');
+  return (slash == std::string::npos ? link_name : link_name.substr(slash + 1)) + ".cap";
+}
+
 SerialEndpoint::SerialEndpoint(std::string link_name, const std::string& link_path, int baud,
                                std::size_t tx_buffer_bytes, const std::string& capture_path)
-    : link_name_(std::move(link_name)), pty_(link_path, baud), uart_(baud, tx_buffer_bytes), capture_(capture_path) {
-  if (!capture_) throw std::runtime_error("cannot write " + capture_path);
-  capture_ << "# hil capture v1: link " << link_name_ << ", baud " << baud << "\n"
-           << "# dir t_emu_ns byte_period_ns t_wall_ns name hex_bytes\n";
+    : link_name_(std::move(link_name)),
+      port_(OpenPort(link_name_, link_path, baud)),
+      uart_(baud, tx_buffer_bytes),
+      capture_(capture_path, SerialHeader(link_name_, baud)) {}
+
+SerialEndpoint::~SerialEndpoint() {
+  if (pending_offset_ > 0) FinishChunk();
+  for (const auto& [chunk, name] : pending_) {
+    CaptureRecord r;
+    r.dir = CaptureDir::kTx;
+    r.t_emu_ns = ToNs(chunk.t_first);
+    r.byte_period_ns = chunk.byte_period.count();
+    r.name = name;
+    r.bytes = chunk.bytes;
+    capture_.Write(r);
+  }
 }
 
 void SerialEndpoint::Queue(const SerialMessage& msg) {
   auto chunk = uart_.Submit(msg.t_ready, msg.bytes);
   if (!chunk) {
-    capture_ << "drop " << ToNs(msg.t_ready) << " 0 0 " << msg.name << " " << Hex(msg.bytes) << "\n";
+    CaptureRecord r;
+    r.dir = CaptureDir::kDrop;
+    r.t_emu_ns = ToNs(msg.t_ready);
+    r.name = msg.name;
+    r.bytes = msg.bytes;
+    capture_.Write(r);
     return;
   }
-  capture_ << "tx " << ToNs(chunk->t_first) << " " << chunk->byte_period.count() << " 0 " << msg.name << " "
-           << Hex(chunk->bytes) << "\n";
-  pending_.push_back(std::move(*chunk));
+  pending_.emplace_back(std::move(*chunk), msg.name.empty() ? "-" : msg.name);
 }
 
 std::optional<Time> SerialEndpoint::next_byte_time() const {
   if (pending_.empty()) return std::nullopt;
-  return pending_.front().t_byte(pending_offset_);
+  return pending_.front().first.t_byte(pending_offset_);
+}
+
+void SerialEndpoint::FinishChunk() {
+  // a partly written chunk (end of run) keeps only the bytes that left
+  current_.bytes.resize(current_.wall_offsets_ns.size());
+  capture_.Write(current_);
+  current_ = CaptureRecord{};
 }
 
 void SerialEndpoint::WriteNextByte(const link::RealtimePacer& pacer) {
   if (pending_.empty()) return;
-  const link::TimedChunk& c = pending_.front();
+  const auto& [c, name] = pending_.front();
   const Time t = c.t_byte(pending_offset_);
-  const std::int64_t wall = pacer.SleepUntil(t);
-  pty_.Write(std::string_view(c.bytes).substr(pending_offset_, 1));
-  schedule_error_us_.push_back(static_cast<double>(wall - pacer.WallNsOf(t)) * 1e-3);
+  const std::int64_t scheduled = pacer.WallNsOf(t);
+  pacer.SleepUntil(t);
+  port_->Write(std::string_view(c.bytes).substr(pending_offset_, 1));
+  const std::int64_t wall = link::RealtimePacer::MonotonicNs();
+  schedule_error_us_.push_back(static_cast<double>(wall - scheduled) * 1e-3);
+  if (pending_offset_ == 0) {
+    current_ = CaptureRecord{};
+    current_.dir = CaptureDir::kTx;
+    current_.t_emu_ns = ToNs(c.t_first);
+    current_.byte_period_ns = c.byte_period.count();
+    current_.t_wall_ns = wall;
+    current_.name = name;
+    current_.bytes = c.bytes;
+  }
+  current_.wall_offsets_ns.push_back(wall - current_.t_wall_ns);
   if (++pending_offset_ == c.bytes.size()) {
+    FinishChunk();
     pending_.pop_front();
     pending_offset_ = 0;
   }
 }
 
 void SerialEndpoint::WriteAll() {
-  for (const link::TimedChunk& c : pending_) {
-    pty_.Write(std::string_view(c.bytes).substr(pending_offset_));
+  for (const auto& [c, name] : pending_) {
+    port_->Write(std::string_view(c.bytes).substr(pending_offset_));
     pending_offset_ = 0;
+    CaptureRecord r;
+    r.dir = CaptureDir::kTx;
+    r.t_emu_ns = ToNs(c.t_first);
+    r.byte_period_ns = c.byte_period.count();
+    r.t_wall_ns = 0;  // virtual mode: no wall time, so a scenario and seed give an identical capture
+    r.name = name;
+    r.bytes = c.bytes;
+    capture_.Write(r);
   }
   pending_.clear();
 }
 
 std::string SerialEndpoint::PollHost(Time t_now) {
-  std::string rx = pty_.ReadAvailable();
+  std::string rx = port_->ReadAvailable();
   if (!rx.empty()) {
-    capture_ << "rx " << ToNs(t_now) << " 0 " << link::RealtimePacer::MonotonicNs() << " host " << Hex(rx) << "\n";
+    CaptureRecord r;
+    r.dir = CaptureDir::kRx;
+    r.t_emu_ns = ToNs(t_now);
+    r.t_wall_ns = link::RealtimePacer::MonotonicNs();
+    r.name = "host";
+    r.bytes = rx;
+    capture_.Write(r);
   }
   return rx;
 }

@@ -1,5 +1,7 @@
 #include "hil/firmware_emu/link/pty_port.h"
 
+#include "hil/firmware_emu/link/tty_port.h"
+
 #include <fcntl.h>
 #include <poll.h>
 #include <sys/ioctl.h>
@@ -54,16 +56,7 @@ PtyPort::PtyPort(const std::string& symlink_path, int baud) : symlink_path_(syml
     close(master_fd_);
     throw SysError("cannot open " + slave_path_);
   }
-  termios tio{};
-  tcgetattr(slave_fd_, &tio);
-  cfmakeraw(&tio);
-  tio.c_cflag |= CLOCAL | CREAD;
-  tio.c_cflag &= ~static_cast<tcflag_t>(CSTOPB | PARENB);
-  if (const unsigned speed = BaudToSpeed(baud); speed != 0) {
-    cfsetispeed(&tio, speed);
-    cfsetospeed(&tio, speed);
-  }
-  tcsetattr(slave_fd_, TCSANOW, &tio);
+  SetRaw8N1(slave_fd_, baud);
   const int flags = fcntl(master_fd_, F_GETFL);
   fcntl(master_fd_, F_SETFL, flags | O_NONBLOCK);
 

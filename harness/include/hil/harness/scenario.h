@@ -53,6 +53,13 @@ struct EstimatorSpec {
   double silence_timeout_s = 10.0;      ///< no output for this long fails the run
 };
 
+/// The CAN bus of a scenario (links helper): devices' CAN frames go out on this SocketCAN
+/// interface, captured in captures/<interface>.candump and .cap. No interface: no CAN link.
+struct CanLinkSpec {
+  std::string interface;  ///< e.g. vcan0; empty when the scenario has no `can` section
+  bool fd = false;        ///< open the socket for CAN FD frames
+};
+
 struct Scenario {
   std::string file;  ///< where it came from ("<embedded default>" for the default)
   std::string name;
@@ -63,6 +70,7 @@ struct Scenario {
   truth::TruthConfig truth;
   GnssDeviceSpec gnss;
   McuDeviceSpec mcu;
+  CanLinkSpec can;
   EstimatorSpec estimator;
   std::vector<Criterion> criteria;
 };

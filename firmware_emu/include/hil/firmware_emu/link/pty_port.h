@@ -11,27 +11,32 @@
 #include <string>
 #include <string_view>
 
+#include "hil/firmware_emu/link/serial_port.h"
+
 namespace hil::link {
 
 /// Owner of one pty pair and its symlink; closes both and removes the link on destruction.
-class PtyPort {
+/// The emulator keeps the slave open too, so the host may close and reopen the port (gpsd does on
+/// reconnect) without the master seeing a hangup; bytes written meanwhile wait for the next reader.
+class PtyPort final : public SerialPort {
  public:
   /// Opens a pty pair, sets raw 8N1 at `baud` on the slave and points `symlink_path` at it
   /// (an existing link there is replaced).
   /// @throws std::runtime_error naming the path and the system error.
   PtyPort(const std::string& symlink_path, int baud);
-  ~PtyPort();
+  ~PtyPort() override;
   PtyPort(const PtyPort&) = delete;
   PtyPort& operator=(const PtyPort&) = delete;
 
   /// Writes all bytes to the master, waiting while the host's input queue is full.
   /// Returns false if the pty failed (it never throws in the data path).
-  bool Write(std::string_view bytes);
+  bool Write(std::string_view bytes) override;
   /// Reads whatever the host has written (non-blocking); empty if nothing.
-  std::string ReadAvailable();
+  std::string ReadAvailable() override;
   /// Bytes written by the emulator that the host has not read yet.
-  std::size_t PendingToHost() const;
+  std::size_t PendingToHost() const override;
 
+  const std::string& path() const override { return symlink_path_; }
   const std::string& slave_path() const { return slave_path_; }
   const std::string& symlink_path() const { return symlink_path_; }
   int master_fd() const { return master_fd_; }

@@ -1,0 +1,35 @@
+#pragma once
+/// @file
+/// The byte pipe between an emulated device and the host: a pty the emulator creates (PtyPort) or
+/// a real serial device it opens (TtyPort). Neither paces; the link writes each byte at its time.
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <string_view>
+
+namespace hil::link {
+
+class SerialPort {
+ public:
+  virtual ~SerialPort() = default;
+  /// Writes all bytes, waiting while the line's output queue is full. False if the port failed
+  /// (never throws in the data path).
+  virtual bool Write(std::string_view bytes) = 0;
+  /// Bytes the host (or the real device) has sent, without blocking; empty if none.
+  virtual std::string ReadAvailable() = 0;
+  /// Bytes written that have not left yet (pty: not read by the host; tty: not transmitted).
+  virtual std::size_t PendingToHost() const = 0;
+  /// The path the host opens (a pty's symlink) or the device path.
+  virtual const std::string& path() const = 0;
+};
+
+/// Opens the port a scenario link names: an absolute path under /dev is an existing serial device
+/// (TtyPort); anything else is a pty whose symlink is made at `run_dir/link` (PtyPort).
+/// @throws std::runtime_error naming the path.
+std::unique_ptr<SerialPort> OpenSerialLink(const std::string& run_dir, const std::string& link, int baud);
+
+/// True when `link` names a real device (an absolute /dev path) rather than a pty in the run folder.
+bool IsDevicePath(const std::string& link);
+
+}  // namespace hil::link

@@ -1,0 +1,28 @@
+#include "hil/firmware_emu/link/can_wire_frame.h"
+
+#include <algorithm>
+
+namespace hil::link {
+
+CanWireFrame FromDeviceFrame(const CanFrame& f) {
+  CanWireFrame w;
+  w.id = f.id & (f.extended ? 0x1FFFFFFFU : 0x7FFU);
+  w.extended = f.extended;
+  w.fd = f.fd;
+  w.len = std::min<std::uint8_t>(f.len, f.fd ? 64 : 8);
+  std::copy_n(f.data.begin(), w.len, w.data.begin());
+  return w;
+}
+
+CanFrame ToDeviceFrame(const CanWireFrame& w, Time t) {
+  CanFrame f;
+  f.t = t;
+  f.id = w.id;
+  f.extended = w.extended;
+  f.fd = w.fd;
+  f.len = w.rtr ? 0 : w.len;
+  std::copy_n(w.data.begin(), f.len, f.data.begin());
+  return f;
+}
+
+}  // namespace hil::link

@@ -1,0 +1,95 @@
+#pragma once
+/// @file
+/// The capture format of a run: every byte and frame of one link, both directions, with emulated
+/// and wall-clock times (documented in vectors/captures/README.md). One text file per link,
+/// `RUN_DIR/captures/<link>.cap`:
+///
+///     # hil capture v2
+///     # link ttyGPS serial 9600
+///     # columns: dir t_emu_ns byte_period_ns t_wall_ns name data [wall_offsets_ns]
+///     tx 100000000 1042 5193820011 NMEA-GGA 2447504747412c... 0,1061,2075,...
+///
+/// dir: tx (device → host bytes), rx (host → device bytes), drop (a message the UART dropped whole),
+/// ftx (CAN frame the harness put on the bus), frx (CAN frame read from the bus).
+/// t_emu_ns: emulated time of the first byte's start bit (or of the frame). byte_period_ns: time
+/// between byte starts (0 for rx, drop and frames); byte k is at t_emu_ns + k·byte_period_ns.
+/// t_wall_ns: CLOCK_MONOTONIC when the first byte was written (or the frame sent, or rx bytes read)
+/// in a real-time run; 0 in virtual mode (nothing is paced there, and a scenario and seed then give a
+/// byte-identical capture) and for bytes never written. data: lower-case hex bytes, or for frames the can-utils frame string
+/// (`09F80180#8868111FBFA49103`). wall_offsets_ns (real-time runs): comma-separated wall time of each
+/// byte minus t_wall_ns. Lines starting with '#' are comments; v1 files (no offsets) read the same.
+
+#include <cstdint>
+#include <fstream>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "hil/firmware_emu/link/can_wire_frame.h"
+#include "hil/firmware_emu/sim_time.h"
+
+namespace hil::harness {
+
+enum class CaptureDir { kTx, kRx, kDrop, kFrameTx, kFrameRx };
+
+/// One line of a capture.
+struct CaptureRecord {
+  CaptureDir dir = CaptureDir::kTx;
+  std::int64_t t_emu_ns = 0;
+  std::int64_t byte_period_ns = 0;
+  std::int64_t t_wall_ns = 0;
+  std::string name = "-";
+  std::string bytes;         ///< tx, rx, drop: the raw bytes
+  link::CanWireFrame frame;  ///< ftx, frx
+  std::vector<std::int64_t> wall_offsets_ns;  ///< per byte, when known
+
+  bool is_frame() const { return dir == CaptureDir::kFrameTx || dir == CaptureDir::kFrameRx; }
+  /// Emulated start time of byte k.
+  Time t_byte(std::size_t k) const {
+    return TimeFromNs(t_emu_ns + byte_period_ns * static_cast<std::int64_t>(k));
+  }
+  bool operator==(const CaptureRecord&) const = default;
+};
+
+/// What the header says about the link.
+struct CaptureHeader {
+  int version = 2;
+  std::string link;      ///< link name, e.g. ttyGPS or can0
+  std::string kind;      ///< "serial" or "can"
+  int baud = 0;          ///< serial: line rate
+  std::string iface;     ///< can: the interface the frames went to
+  std::int64_t start_unix_ns = 0;  ///< UTC of emulated t = 0, when known (0 otherwise)
+};
+
+struct Capture {
+  CaptureHeader header;
+  std::vector<CaptureRecord> records;
+  std::size_t unreadable_lines = 0;
+};
+
+std::string_view CaptureDirName(CaptureDir d);
+/// One capture line without the newline.
+std::string FormatCaptureLine(const CaptureRecord& r);
+/// Parses a record line; nothing for comments and lines that do not parse.
+std::optional<CaptureRecord> ParseCaptureLine(std::string_view line);
+
+/// Writes one link's capture, line by line (flushed, so a crashed run keeps what it had).
+class CaptureWriter {
+ public:
+  /// @throws std::runtime_error naming the path.
+  CaptureWriter(const std::string& path, const CaptureHeader& header);
+  void Write(const CaptureRecord& r);
+
+ private:
+  std::ofstream out_;
+};
+
+/// Reads a capture (v1 or v2). @throws std::runtime_error naming the path when unreadable.
+Capture ReadCapture(const std::string& path);
+
+/// Lower-case hex of raw bytes, and back (nothing on odd length or a non-hex digit).
+std::string ToHex(std::string_view bytes);
+std::optional<std::string> FromHex(std::string_view hex);
+
+}  // namespace hil::harness
