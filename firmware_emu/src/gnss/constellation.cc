@@ -79,6 +79,7 @@ std::vector<SatelliteView> Constellation::Sky(double gps_s, double lat_deg, doub
     out.push_back(s);
   }
   if (cond.sbas_enabled) {
+    std::vector<SatelliteView> geo;
     for (const auto& [svid, lon] : sbas_) {
       const Eigen::Vector3d p_e(kGeoRadius_m * std::cos(lon * kDeg), kGeoRadius_m * std::sin(lon * kDeg), 0.0);
       SatelliteView s;
@@ -87,8 +88,11 @@ std::vector<SatelliteView> Constellation::Sky(double gps_s, double lat_deg, doub
       LookAngles(p_e, rx_e, r_en, s.elev_deg, s.azim_deg);
       if (s.elev_deg < 10.0) continue;  // SBAS signals are weak near the horizon
       s.cno_dbhz = static_cast<int>(std::lround(31.0 + 8.0 * std::sin(s.elev_deg * kDeg)));
-      out.push_back(s);
+      geo.push_back(s);
     }
+    // the receiver searches only maxSBAS of them: the highest
+    std::sort(geo.begin(), geo.end(), [](const auto& a, const auto& b) { return a.elev_deg > b.elev_deg; });
+    for (std::size_t i = 0; i < geo.size() && static_cast<int>(i) < cond.max_sbas; ++i) out.push_back(geo[i]);
   }
   // channel assignment: highest elevation first, GPS before SBAS
   std::vector<SatelliteView*> order;

@@ -95,6 +95,7 @@ void Neo5mDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
   SkyConditions cond;
   cond.elevation_mask_deg = cfg.min_elevation_deg();
   cond.sbas_enabled = cfg.sbas_enabled();
+  cond.max_sbas = cfg.sbas[2];
   ErrorInputs in;
   for (const GnssFault& f : config_.faults) {
     if (t_s < f.start_s || t_s >= f.end_s) continue;
@@ -133,7 +134,7 @@ void Neo5mDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
   GnssFix fix = model_.Calc(truth, unix_ns, dt_s, in);
   fix.fix_type = e.status.fix_type;
   e.sbas_corrections = false;
-  if (cfg.sbas_used_for_corrections()) {
+  if (config_.sbas_corrections && cfg.sbas_used_for_corrections()) {
     for (const auto& s : e.sats) e.sbas_corrections = e.sbas_corrections || (s.sbas && s.tracked);
   }
   if (profile_.rtk) fix.quality = rtk_float ? FixQuality::kRtkFloat : FixQuality::kRtkFixed;

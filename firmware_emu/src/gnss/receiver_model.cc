@@ -16,18 +16,19 @@ constexpr double kBurstCorrelationTime_s = 2.0;
 ReceiverModel::ReceiverModel(const ReceiverModelConfig& config, std::uint64_t seed, std::uint64_t common_seed)
     : config_(config), rng_(seed), common_rng_(common_seed != 0 ? common_seed : seed + 1) {}
 
-void ReceiverModel::Advance(Eigen::Vector3d& state, std::mt19937_64& rng, double phi, bool first) {
+void ReceiverModel::Advance(Eigen::Vector3d& state, std::mt19937_64& rng, std::normal_distribution<double>& normal,
+                            double phi, bool first) {
   const double q = std::sqrt(1.0 - phi * phi);
-  for (int i = 0; i < 3; ++i) state[i] = first ? normal_(rng) : phi * state[i] + q * normal_(rng);
+  for (int i = 0; i < 3; ++i) state[i] = first ? normal(rng) : phi * state[i] + q * normal(rng);
 }
 
 GnssFix ReceiverModel::Calc(const TruthSample& truth, std::int64_t unix_ns, double dt_s, const ErrorInputs& in) {
   // unit-variance processes; the draw sequence is the same whatever the inputs
   const bool first = !started_;
   started_ = true;
-  Advance(common_, common_rng_, std::exp(-dt_s / config_.correlation_time_s), first);
-  Advance(own_, rng_, std::exp(-dt_s / config_.correlation_time_s), first);
-  Advance(burst_, rng_, std::exp(-dt_s / kBurstCorrelationTime_s), first);
+  Advance(common_, common_rng_, common_normal_, std::exp(-dt_s / config_.correlation_time_s), first);
+  Advance(own_, rng_, normal_, std::exp(-dt_s / config_.correlation_time_s), first);
+  Advance(burst_, rng_, normal_, std::exp(-dt_s / kBurstCorrelationTime_s), first);
   const double c = std::clamp(config_.common_fraction, 0.0, 1.0);
   const Eigen::Vector3d unit = std::sqrt(c) * common_ + std::sqrt(1.0 - c) * own_;
   const Eigen::Vector3d sigma(config_.horizontal_sigma_m * in.h_scale, config_.horizontal_sigma_m * in.h_scale,

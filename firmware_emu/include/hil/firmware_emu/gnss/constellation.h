@@ -50,6 +50,7 @@ struct SkyConditions {
   double blocked_below_deg = 0.0;     ///< scripted obstruction: nothing below this is received
   bool sky_blocked = false;           ///< scripted outage: nothing is received
   bool sbas_enabled = true;           ///< CFG-SBAS mode bit 0
+  int max_sbas = 3;                   ///< CFG-SBAS maxSBAS: SBAS satellites searched
   int max_channels = 16;              ///< tracking channels (u-blox 5: 16 for GPS/SBAS, UNVERIFIED)
 };
 

@@ -58,6 +58,10 @@ struct Neo5mConfig {
   StartKind start = StartKind::kHot;
   std::vector<GnssFault> faults;
   std::uint64_t common_seed = 0;  ///< error stream shared by all receivers of the scenario
+  /// Whether the SBAS satellites in view broadcast corrections valid at the site (then, with
+  /// CFG-SBAS usage diffCorr, fixes are differential: GGA quality 2, mode D). Off by default, as
+  /// in the real u-blox 5 captures (SBAS tracked, quality 1).
+  bool sbas_corrections = false;
 };
 
 class Neo5mDevice final : public Device {

@@ -70,10 +70,13 @@ class ReceiverModel {
   const ReceiverModelConfig& config() const { return config_; }
 
  private:
-  void Advance(Eigen::Vector3d& state, std::mt19937_64& rng, double phi, bool first);
+  void Advance(Eigen::Vector3d& state, std::mt19937_64& rng, std::normal_distribution<double>& normal, double phi,
+               bool first);
   ReceiverModelConfig config_;
   std::mt19937_64 rng_, common_rng_;
-  std::normal_distribution<double> normal_{0.0, 1.0};
+  // one distribution per engine: a normal distribution caches its second variate, so sharing one
+  // between the engines would leak the common stream into this receiver's own stream
+  std::normal_distribution<double> normal_{0.0, 1.0}, common_normal_{0.0, 1.0};
   Eigen::Vector3d own_ = Eigen::Vector3d::Zero(), common_ = Eigen::Vector3d::Zero(), burst_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d err_N_m_ = Eigen::Vector3d::Zero();
   bool started_ = false;
