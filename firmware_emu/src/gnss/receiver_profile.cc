@@ -18,7 +18,7 @@ ReceiverProfile ProfileByName(const std::string& name) {
                 "ANTSTATUS=OK"};
     p.sw_version = "6.02 (36023)";
     p.hw_version = "00040005";
-    p.version_extensions = {"ROM BASE 5.00 (28483) Jun  6 2008 14:45:11"};
+    p.version_extensions = {"ROM BASE 5.00 (28483)"};  // 30 characters at most
     return p;
   }
   if (name == "rtk") {
