@@ -60,7 +60,9 @@ TEST(ConstellationTest, GeometryChangesWithTimeAndPlaceAndRepeatsAfterASiderealD
     EXPECT_GE(s.elev_deg, 0.0);
     EXPECT_GE(s.azim_deg, 0.0);
     EXPECT_LT(s.azim_deg, 360.0);
-    if (s.tracked) EXPECT_GT(s.cno_dbhz, 25);
+    if (s.tracked) {
+      EXPECT_GT(s.cno_dbhz, 25);
+    }
   }
 }
 
@@ -73,7 +75,9 @@ TEST(ConstellationTest, BlockedSkyAndMaskRemoveSatellites) {
   SkyConditions high;
   high.elevation_mask_deg = 30;
   for (const auto& s : c.Sky(t0, 35.48, 50.60, 1312, high)) {
-    if (s.used) EXPECT_GE(s.elev_deg, 30.0);
+    if (s.used) {
+      EXPECT_GE(s.elev_deg, 30.0);
+    }
   }
 }
 

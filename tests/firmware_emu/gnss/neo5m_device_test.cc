@@ -139,9 +139,15 @@ TEST(Neo5mDeviceTest, OutageDropsTheFixAndReacquires) {
   h.RunUntil(30);
   for (const auto& f : h.fixes) {
     const double t = ToSeconds(f.t_validity);
-    if (t >= 10 && t < 20) EXPECT_FALSE(f.valid()) << t;
-    if (t >= 2 && t < 10) EXPECT_TRUE(f.valid()) << t;
-    if (t >= 21) EXPECT_TRUE(f.valid()) << t;  // re-acquisition 1 s
+    if (t >= 10 && t < 20) {
+      EXPECT_FALSE(f.valid()) << t;
+    }
+    if (t >= 2 && t < 10) {
+      EXPECT_TRUE(f.valid()) << t;
+    }
+    if (t >= 21) {
+      EXPECT_TRUE(f.valid()) << t;  // re-acquisition 1 s
+    }
   }
   EXPECT_FALSE(h.fixes[20].valid());
 }
@@ -154,7 +160,9 @@ TEST(Neo5mDeviceTest, ObstructionLeavesFewerSatellitesAndWorseDop) {
   const GnssFix& open = h.fixes[5];
   const GnssFix& blocked = h.fixes[15];
   EXPECT_LT(blocked.num_sv, open.num_sv);
-  if (blocked.valid()) EXPECT_GT(blocked.hdop, open.hdop);
+  if (blocked.valid()) {
+    EXPECT_GT(blocked.hdop, open.hdop);
+  }
 }
 
 TEST(Neo5mDeviceTest, StepGlitchMovesThePosition) {
@@ -211,7 +219,7 @@ TEST(Neo5mDeviceTest, CfgRateRaisesTheEpochRate) {
   h.Host(ubx::Frame(0x06, 0x08, std::vector<std::uint8_t>{0xFA, 0x00, 0x01, 0x00, 0x01, 0x00}));
   const std::size_t before = h.fixes.size();
   h.RunUntil(4);
-  EXPECT_EQ(h.fixes.size() - before, 8u);  // 3.0, 3.25, ... 4.75? no: 2.25 … 4.0
+  EXPECT_EQ(h.fixes.size() - before, 8u);  // 2.25, 2.5, … 4.0
   EXPECT_EQ(ToNs(h.fixes[before + 1].t_validity) - ToNs(h.fixes[before].t_validity), 250000000);
 }
 

@@ -126,7 +126,7 @@ TEST_F(CfgSessionTest, MessagesOfLaterGenerationsAreRefused) {
 }
 
 TEST_F(CfgSessionTest, PollsOfSbasTpNmeaAnswerWithMessageThenAck) {
-  for (std::uint8_t id : {0x16, 0x07, 0x17}) {
+  for (std::uint8_t id : {std::uint8_t{0x16}, std::uint8_t{0x07}, std::uint8_t{0x17}}) {
     const auto r = Send(id, {});
     ASSERT_EQ(r.size(), 2u);
     EXPECT_EQ(static_cast<std::uint8_t>(r[0].bytes[3]), id);
