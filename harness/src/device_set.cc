@@ -1,6 +1,6 @@
 #include "hil/harness/device_set.h"
 
-#include "hil/firmware_emu/gnss/nmea_receiver_device.h"
+#include "hil/firmware_emu/gnss/neo5m_device.h"
 #include "hil/firmware_emu/mcu/mcu_device.h"
 
 namespace hil::harness {
@@ -9,24 +9,37 @@ namespace {
 // Seeds of independent random streams derived from the run's seed.
 constexpr std::uint64_t kSeedStride = 1000003ULL;
 enum SeedStream : std::uint64_t { kGnssStream = 1, kMcuStream = 2 };
+constexpr std::uint64_t kGnssCommonOffset = 0x5151;  // the error part shared by all receivers
+constexpr std::uint64_t kReceiverStride = 7919;       // each receiver's own part
 
+// One Neo5mDevice per receiver of the gnss section, each on its own pty (ttyGPS, ttyGPS1, ...).
 void AddGnss(const Scenario& s, std::uint64_t seed, const std::string& dir, DeviceSet& set) {
-  gnss::NmeaReceiverConfig cfg;
-  cfg.baud = s.gnss.baud;
-  cfg.rate_hz = s.gnss.rate_hz;
-  cfg.output_lag = DurationFromSeconds(s.gnss.output_lag_s);
-  cfg.start_unix_ns = s.start_unix_ns;
-  cfg.model = s.gnss.model;
-  auto dev = std::make_unique<gnss::NmeaReceiverDevice>(cfg, seed * kSeedStride + kGnssStream);
-  const gnss::NmeaReceiverDevice* raw = dev.get();
-  set.fix_sources.push_back([raw] { return &raw->last_fix(); });
-  const std::string path = dir + "/" + s.gnss.link;
-  std::vector<std::unique_ptr<SerialEndpoint>> ports;
-  ports.push_back(std::make_unique<SerialEndpoint>(s.gnss.link, path, s.gnss.baud, s.gnss.tx_buffer_bytes,
-                                                   dir + "/captures/" + s.gnss.link + ".cap"));
-  set.links.emplace_back(s.gnss.link, path);
-  set.devices.push_back(std::move(dev));
-  set.endpoints.push_back(std::move(ports));
+  const std::uint64_t base = seed * kSeedStride + kGnssStream;
+  for (std::size_t i = 0; i < s.gnss.receivers.size(); ++i) {
+    const GnssReceiverSpec& rx = s.gnss.receivers[i];
+    gnss::Neo5mConfig cfg;
+    cfg.name = "gps" + std::to_string(i);
+    cfg.profile = s.gnss.profile;
+    cfg.baud = s.gnss.baud;
+    cfg.rate_hz = s.gnss.rate_hz;
+    cfg.output_lag = DurationFromSeconds(s.gnss.output_lag_s);
+    cfg.start_unix_ns = s.start_unix_ns;
+    cfg.model = s.gnss.model;
+    cfg.model->p_BA_B_m = rx.p_BA_B_m;
+    cfg.start = s.gnss.start;
+    cfg.faults = s.gnss.faults;
+    cfg.common_seed = base + kGnssCommonOffset;
+    auto dev = std::make_unique<gnss::Neo5mDevice>(cfg, base + kReceiverStride * i);
+    const gnss::Neo5mDevice* raw = dev.get();
+    set.fix_sources.push_back([raw] { return &raw->last_fix(); });
+    const std::string path = dir + "/" + rx.link;
+    std::vector<std::unique_ptr<SerialEndpoint>> ports;
+    ports.push_back(std::make_unique<SerialEndpoint>(rx.link, path, dev->baud(0), s.gnss.tx_buffer_bytes,
+                                                     dir + "/captures/" + rx.link + ".cap"));
+    set.links.emplace_back(rx.link, path);
+    set.devices.push_back(std::move(dev));
+    set.endpoints.push_back(std::move(ports));
+  }
 }
 
 // The IMU board's microcontroller, when the scenario has an `mcu:` section: one serial link

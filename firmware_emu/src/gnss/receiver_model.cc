@@ -1,31 +1,39 @@
 #include "hil/firmware_emu/gnss/receiver_model.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+
+#include "hil/firmware_emu/gnss/geodesy.h"
 
 namespace hil::gnss {
 namespace {
 
-constexpr double kWgs84A_m = 6378137.0;
-constexpr double kWgs84E2 = 6.69437999014e-3;
+constexpr double kBurstCorrelationTime_s = 2.0;
 
 }  // namespace
 
-ReceiverModel::ReceiverModel(const ReceiverModelConfig& config, std::uint64_t seed)
-    : config_(config), rng_(seed) {}
+ReceiverModel::ReceiverModel(const ReceiverModelConfig& config, std::uint64_t seed, std::uint64_t common_seed)
+    : config_(config), rng_(seed), common_rng_(common_seed != 0 ? common_seed : seed + 1) {}
 
-GnssFix ReceiverModel::Calc(const TruthSample& truth, std::int64_t unix_ns, double dt_s) {
-  const Eigen::Vector3d sigma(config_.horizontal_sigma_m, config_.horizontal_sigma_m,
-                              config_.vertical_sigma_m);
-  if (!started_) {
-    // stationary start: draw from the steady-state distribution
-    for (int i = 0; i < 3; ++i) err_N_m_[i] = sigma[i] * normal_(rng_);
-    started_ = true;
-  } else {
-    const double phi = std::exp(-dt_s / config_.correlation_time_s);
-    const double q = std::sqrt(1.0 - phi * phi);
-    for (int i = 0; i < 3; ++i) err_N_m_[i] = phi * err_N_m_[i] + q * sigma[i] * normal_(rng_);
-  }
+void ReceiverModel::Advance(Eigen::Vector3d& state, std::mt19937_64& rng, std::normal_distribution<double>& normal,
+                            double phi, bool first) {
+  const double q = std::sqrt(1.0 - phi * phi);
+  for (int i = 0; i < 3; ++i) state[i] = first ? normal(rng) : phi * state[i] + q * normal(rng);
+}
+
+GnssFix ReceiverModel::Calc(const TruthSample& truth, std::int64_t unix_ns, double dt_s, const ErrorInputs& in) {
+  // unit-variance processes; the draw sequence is the same whatever the inputs
+  const bool first = !started_;
+  started_ = true;
+  Advance(common_, common_rng_, common_normal_, std::exp(-dt_s / config_.correlation_time_s), first);
+  Advance(own_, rng_, normal_, std::exp(-dt_s / config_.correlation_time_s), first);
+  Advance(burst_, rng_, normal_, std::exp(-dt_s / kBurstCorrelationTime_s), first);
+  const double c = std::clamp(config_.common_fraction, 0.0, 1.0);
+  const Eigen::Vector3d unit = std::sqrt(c) * common_ + std::sqrt(1.0 - c) * own_;
+  const Eigen::Vector3d sigma(config_.horizontal_sigma_m * in.h_scale, config_.horizontal_sigma_m * in.h_scale,
+                              config_.vertical_sigma_m * in.v_scale);
+  err_N_m_ = sigma.cwiseProduct(unit) + in.multipath_sigma_m * burst_ + in.offset_N_m;
 
   // antenna position and velocity (lever arm rotated into ENU, plus ω × r)
   const Eigen::Matrix3d R_NB = truth.q_NB.toRotationMatrix();
@@ -36,7 +44,7 @@ GnssFix ReceiverModel::Calc(const TruthSample& truth, std::int64_t unix_ns, doub
   const double lat = truth.lat_deg * std::numbers::pi / 180.0;
   const double s = std::sin(lat);
   const double w = std::sqrt(1.0 - kWgs84E2 * s * s);
-  const double rn = kWgs84A_m / w;                          // prime vertical radius
+  const double rn = kWgs84A_m / w;                               // prime vertical radius
   const double rm = kWgs84A_m * (1.0 - kWgs84E2) / (w * w * w);  // meridian radius
   const Eigen::Vector3d d_N = p_BA_N + err_N_m_;
 
@@ -49,16 +57,18 @@ GnssFix ReceiverModel::Calc(const TruthSample& truth, std::int64_t unix_ns, doub
   fix.lon_deg = truth.lon_deg + d_N.x() / ((rn + truth.height_m) * std::cos(lat)) * 180.0 / std::numbers::pi;
   fix.height_m = truth.height_m + d_N.z();
   fix.geoid_separation_m = config_.geoid_separation_m;
-  fix.vel_e_mps = v_A_N.x() + config_.velocity_sigma_mps * normal_(rng_);
-  fix.vel_n_mps = v_A_N.y() + config_.velocity_sigma_mps * normal_(rng_);
-  fix.vel_d_mps = -v_A_N.z() + config_.velocity_sigma_mps * normal_(rng_);
-  fix.h_acc_m = config_.horizontal_sigma_m * std::numbers::sqrt2;
-  fix.v_acc_m = config_.vertical_sigma_m;
-  fix.s_acc_mps = config_.velocity_sigma_mps * std::numbers::sqrt2;
-  fix.num_sv = config_.num_sv;
-  fix.hdop = config_.hdop;
-  fix.vdop = config_.vdop;
-  fix.pdop = config_.pdop;
+  const double sv = config_.velocity_sigma_mps * in.h_scale;
+  fix.vel_e_mps = v_A_N.x() + sv * normal_(rng_);
+  fix.vel_n_mps = v_A_N.y() + sv * normal_(rng_);
+  fix.vel_d_mps = -v_A_N.z() + sv * normal_(rng_);
+  const double h_sig = std::hypot(sigma.x(), sigma.y());
+  const double burst_h = in.multipath_sigma_m * std::numbers::sqrt2;
+  fix.h_acc_m = std::hypot(h_sig, burst_h);
+  fix.v_acc_m = std::hypot(sigma.z(), in.multipath_sigma_m);
+  fix.p_acc_m = std::hypot(fix.h_acc_m, fix.v_acc_m);
+  fix.s_acc_mps = sv * std::sqrt(3.0);
+  const double gs = fix.ground_speed_mps();
+  fix.heading_acc_deg = gs > 1e-3 ? std::min(180.0, std::atan2(sv * std::numbers::sqrt2, gs) * 180.0 / std::numbers::pi) : 180.0;
   return fix;
 }
 

@@ -76,17 +76,29 @@ PtyPort::~PtyPort() {
 
 bool PtyPort::Write(std::string_view bytes) {
   std::size_t done = 0;
+  int waited_ms = 0;
   while (done < bytes.size()) {
     const ssize_t n = write(master_fd_, bytes.data() + done, bytes.size() - done);
     if (n > 0) {
       done += static_cast<std::size_t>(n);
+      waited_ms = 0;
     } else if (n < 0 && (errno == EAGAIN || errno == EINTR)) {
+      // The host's input queue is full. Wait for it to read (back-pressure keeps virtual runs
+      // lossless), but a host that does not read this port at all must not stall the run: like a
+      // UART with no listener, the bytes are then lost, and counted.
+      if (stalled_ || waited_ms >= kStallTimeoutMs) {
+        stalled_ = true;
+        bytes_dropped_unread_ += bytes.size() - done;
+        return true;
+      }
       pollfd p{master_fd_, POLLOUT, 0};
       poll(&p, 1, 50);
+      waited_ms += 50;
     } else {
       return false;
     }
   }
+  stalled_ = false;
   return true;
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "hil/firmware_emu/gnss/neo5m_device.h"
 #include "hil/firmware_emu/gnss/receiver_model.h"
 #include "hil/firmware_emu/mcu/mcu_config.h"
 #include "hil/truth/truth_integrator.h"
@@ -24,15 +25,27 @@ struct Criterion {
   std::optional<double> max_ratio_to_baseline;
 };
 
-/// The GNSS receiver device of a scenario.
+/// One receiver of the scenario's GNSS section: its link and its antenna position.
+struct GnssReceiverSpec {
+  std::string link = "ttyGPS";                          ///< symlink name in the run folder
+  Eigen::Vector3d p_BA_B_m = Eigen::Vector3d::Zero();   ///< antenna lever arm (body FLU)
+};
+
+/// The GNSS receiver device(s) of a scenario (section `gnss`, read by scenario_gnss.cc). All
+/// receivers share the profile, settings, faults and error grade; each has its own link and
+/// antenna and its own error part beside the common one. `link` and `model.p_BA_B_m` are those of
+/// the first receiver.
 struct GnssDeviceSpec {
   std::string profile = "neo-5m";
   int baud = 9600;
-  std::string link = "ttyGPS";    ///< symlink name in the run folder
+  std::string link = "ttyGPS";    ///< symlink name in the run folder (first receiver)
   double rate_hz = 1.0;
   double output_lag_s = 0.1;      ///< epoch to first byte
   std::size_t tx_buffer_bytes = 1024;
   gnss::ReceiverModelConfig model;
+  gnss::StartKind start = gnss::StartKind::kHot;
+  std::vector<gnss::GnssFault> faults;
+  std::vector<GnssReceiverSpec> receivers;  ///< at least one after loading
 };
 
 /// The IMU board's microcontroller of a scenario (section `mcu:`; absent → no IMU board).

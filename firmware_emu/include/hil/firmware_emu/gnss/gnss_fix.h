@@ -27,7 +27,10 @@ struct GnssFix {
   double geoid_separation_m = 0;    ///< geoid above ellipsoid (N); MSL altitude = height − N
   double vel_n_mps = 0, vel_e_mps = 0, vel_d_mps = 0;  ///< NED velocity as UBX reports it
   double h_acc_m = 0, v_acc_m = 0, s_acc_mps = 0;      ///< 1-sigma accuracy estimates
+  double p_acc_m = 0;                                   ///< 3D position accuracy estimate
+  double heading_acc_deg = 180.0;                       ///< course accuracy estimate
   double hdop = 99.99, vdop = 99.99, pdop = 99.99;
+  double gdop = 99.99, tdop = 99.99, ndop = 99.99, edop = 99.99;
   int num_sv = 0;                   ///< satellites used
   double ground_speed_mps() const;  ///< horizontal speed
   double course_deg() const;        ///< course over ground, degrees clockwise from true north

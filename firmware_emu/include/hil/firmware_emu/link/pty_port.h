@@ -8,6 +8,7 @@
 /// This and the other transport files are the only ones in firmware_emu that touch descriptors.
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -28,9 +29,14 @@ class PtyPort final : public SerialPort {
   PtyPort(const PtyPort&) = delete;
   PtyPort& operator=(const PtyPort&) = delete;
 
-  /// Writes all bytes to the master, waiting while the host's input queue is full.
+  /// Writes all bytes to the master, waiting while the host's input queue is full. A host that
+  /// reads nothing for kStallTimeoutMs marks the port stalled: from then on bytes that do not fit
+  /// are dropped at once (counted in bytes_dropped_unread()) until a write goes through whole.
   /// Returns false if the pty failed (it never throws in the data path).
   bool Write(std::string_view bytes) override;
+  /// Bytes lost because the host did not read this port.
+  std::uint64_t bytes_dropped_unread() const { return bytes_dropped_unread_; }
+  static constexpr int kStallTimeoutMs = 1000;
   /// Reads whatever the host has written (non-blocking); empty if nothing.
   std::string ReadAvailable() override;
   /// Bytes written by the emulator that the host has not read yet.
@@ -46,6 +52,8 @@ class PtyPort final : public SerialPort {
   int slave_fd_ = -1;  // kept open so the pty survives the host closing and reopening it
   std::string slave_path_;
   std::string symlink_path_;
+  bool stalled_ = false;
+  std::uint64_t bytes_dropped_unread_ = 0;
 };
 
 /// Maps a baud rate to its termios speed constant; returns 0 when the rate has none.

@@ -1,0 +1,77 @@
+#pragma once
+/// @file
+/// @system
+/// name: Constellation (synthetic GPS + SBAS sky for the receiver emulator)
+/// input: GPS time (s since the GPS epoch) and the antenna's geodetic position
+/// output: the satellites in view with elevation, azimuth, C/N0, channel, tracked/used flags;
+///         DOPs of the used set
+/// rate: on demand (each navigation epoch)
+/// @endsystem
+///
+/// The GPS part is a nominal Walker-like constellation: 30 satellites on circular orbits
+/// (semi-major axis 26 559.7 km, inclination 55°, 6 planes 60° apart, 5 slots each with a phase
+/// offset between planes), rotating under the Earth so that elevations and azimuths change with
+/// date, time and place as a real sky does (repeat ≈ one sidereal day). It is not the broadcast
+/// almanac of any date. SBAS satellites are geostationary at the longitudes of the real systems
+/// (EGNOS, WAAS, MSAS, GAGAN; approximate). C/N0 grows with elevation (≈ 34–46 dBHz), with a fixed
+/// per-satellite offset and a slow deterministic ripple.
+
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace hil::gnss {
+
+/// One satellite as the receiver sees it at an epoch.
+struct SatelliteView {
+  int svid = 0;               ///< UBX numbering: GPS 1–32, SBAS 120–158
+  bool sbas = false;
+  double elev_deg = 0, azim_deg = 0;
+  int cno_dbhz = 0;           ///< 0 when not tracked
+  int channel = 255;          ///< 0–15 when assigned to a channel, 255 otherwise
+  bool tracked = false;       ///< code (and carrier) lock
+  bool used = false;          ///< in the navigation solution
+  bool orbit_known = true;    ///< elevation/azimuth known (almanac or ephemeris)
+  int quality = 0;            ///< UBX qualityInd 0–7
+  double pr_res_m = 0;        ///< pseudorange residual (used satellites)
+  int nmea_id() const { return sbas ? svid - 87 : svid; }  ///< NMEA numbering (SBAS 120 → 33)
+};
+
+/// Dilutions of precision of a satellite geometry.
+struct Dops {
+  double gdop = 99.99, pdop = 99.99, tdop = 99.99, vdop = 99.99, hdop = 99.99, ndop = 99.99, edop = 99.99;
+  bool valid = false;  ///< false with fewer than 4 satellites
+};
+
+/// What limits the sky at an epoch (receiver settings and scripted faults).
+struct SkyConditions {
+  double elevation_mask_deg = 5.0;    ///< CFG-NAV5 minElev: satellites below are not used
+  double blocked_below_deg = 0.0;     ///< scripted obstruction: nothing below this is received
+  bool sky_blocked = false;           ///< scripted outage: nothing is received
+  bool sbas_enabled = true;           ///< CFG-SBAS mode bit 0
+  int max_sbas = 3;                   ///< CFG-SBAS maxSBAS: SBAS satellites searched
+  int max_channels = 16;              ///< tracking channels (u-blox 5: 16 for GPS/SBAS, UNVERIFIED)
+};
+
+class Constellation {
+ public:
+  explicit Constellation(std::uint64_t seed);
+  /// The sky at GPS time `gps_s` (seconds since 1980-01-06) over the antenna, sorted by svid.
+  std::vector<SatelliteView> Sky(double gps_s, double lat_deg, double lon_deg, double height_m,
+                                 const SkyConditions& cond) const;
+
+ private:
+  struct Orbit {
+    int svid;
+    double raan0_rad, anomaly0_rad;
+    int cno_offset;
+  };
+  std::vector<Orbit> gps_;
+  std::vector<std::pair<int, double>> sbas_;  // svid, longitude deg
+};
+
+/// DOPs of the used satellites (ENU geometry, clock as the fourth unknown).
+Dops ComputeDops(const std::vector<SatelliteView>& sats);
+
+}  // namespace hil::gnss
