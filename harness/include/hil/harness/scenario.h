@@ -10,18 +10,24 @@
 #include <vector>
 
 #include "hil/firmware_emu/gnss/receiver_model.h"
+#include "hil/harness/fault_timeline.h"
 #include "hil/truth/truth_integrator.h"
 
 namespace hil::harness {
 
 /// An acceptance criterion on one metric of report.json. Passes when value ≤ threshold, where the
-/// threshold is `max`, or `max_ratio_to_baseline` × the same metric of the raw GNSS baseline.
+/// threshold is `max`, or `max_ratio_to_baseline` × the same metric of the raw GNSS baseline; or,
+/// with `min`, when value ≥ min (e.g. output_rate_hz).
 struct Criterion {
   std::string name;    ///< e.g. "horizontal_rmse_m <= 1.0"
-  std::string metric;  ///< a key of report.json's metrics (e.g. horizontal_rmse_m)
+  std::string metric;  ///< a key of report.json's metrics (e.g. horizontal_rmse_m); see kCriterionMetrics
   std::optional<double> max;
+  std::optional<double> min;
   std::optional<double> max_ratio_to_baseline;
 };
+
+/// The metric names a criterion may use.
+extern const std::vector<std::string> kCriterionMetrics;
 
 /// The GNSS receiver device of a scenario.
 struct GnssDeviceSpec {
@@ -36,8 +42,12 @@ struct GnssDeviceSpec {
 
 /// How the estimator under test is started and read.
 struct EstimatorSpec {
-  /// Shell command; {navd}, {run_dir}, {seed} and every link name in braces ({ttyGPS}) are substituted.
+  /// Shell command; {navd}, {run_dir}, {seed} and every link name in braces ({ttyGPS}, {ttyNAV})
+  /// are substituted.
   std::string command = "{navd} --config {run_dir}/navd.conf";
+  /// How its solutions are read: json_stdout (navd's JSON lines), gpsd_json (gpsd TPV objects on
+  /// stdout, e.g. from `gpspipe -w`), nmea_stdout (GGA/RMC on stdout), nmea_pty (GGA/RMC written
+  /// into the pty RUN_DIR/ttyNAV, substituted as {ttyNAV}).
   std::string output = "json_stdout";
   std::string navd_mode = "gnss_only";  ///< written into the generated navd.conf
   double silence_timeout_s = 10.0;      ///< no output for this long fails the run
@@ -54,10 +64,20 @@ struct Scenario {
   GnssDeviceSpec gnss;
   EstimatorSpec estimator;
   std::vector<Criterion> criteria;
+  FaultTimeline faults;
+  /// Seconds after the end of an outage within which the horizontal error must return below
+  /// `reconverged_error_m` (reconvergence time is measured against this).
+  double reconverged_error_m = 1.0;
+  /// Solutions before this time are not evaluated (initial convergence).
+  double evaluate_from_s = 0.0;
 };
 
-/// Loads and validates a scenario file. @throws ScenarioError.
+/// Loads and validates a scenario file; `include:` files are looked up beside it, then in
+/// ScenarioLibraryDirs(). @throws ScenarioError.
 Scenario LoadScenario(const std::string& path);
+/// Where included scenario pieces live: $HIL_SCENARIO_LIB (colon-separated) and the source tree's
+/// vectors/scenarios/lib.
+std::vector<std::string> ScenarioLibraryDirs();
 /// Loads the embedded default scenario (vectors/scenarios/default.yaml, compiled in).
 Scenario LoadDefaultScenario();
 /// Parses scenario text; `name` stands for the file in messages. @throws ScenarioError.
