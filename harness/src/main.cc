@@ -170,9 +170,11 @@ void AddValidate(CLI::App& app, ValidateArgs& a) {
   a.cmd = app.add_subcommand("validate",
                              "Check a device's stream for conformance: framing, checksums, message set and rates "
                              "against the profile, epoch timing, sequence gaps. Exit 0 conforms, 1 does not, 2 bad input");
-  a.cmd->add_option("--protocol", a.protocol, "ubx, nmea, neo5m (NMEA and UBX against the u-blox 5 profile) or can")
+  a.cmd->add_option("--protocol", a.protocol,
+                    "ubx, nmea, neo5m (NMEA and UBX against the u-blox 5 profile), mcu (MCU frame protocol v1) or can "
+                    "(candump -l log)")
       ->required()
-      ->check(CLI::IsMember({"ubx", "nmea", "neo5m", "can"}));
+      ->check(CLI::IsMember({"ubx", "nmea", "neo5m", "mcu", "can"}));
   a.cmd->add_option("SOURCE", a.source,
                     "a hil capture (captures/*.cap), a raw log (gpsd .log), a candump -l log, or a serial device "
                     "(e.g. /dev/ttyUSB0, RUN_DIR/ttyGPS)")
@@ -191,6 +193,8 @@ int Validate(const ValidateArgs& a) {
     if (a.protocol == "can") {
       const hil::harness::ByteStream s = hil::harness::ReadByteSource(a.source, a.listen_s, a.baud);
       rep = hil::harness::ValidateCanLog(s.bytes);
+    } else if (a.protocol == "mcu") {
+      rep = hil::harness::ValidateMcuStream(hil::harness::ReadByteSource(a.source, a.listen_s, a.baud));
     } else {
       const ValidateProtocol p = a.protocol == "ubx"    ? ValidateProtocol::kUbx
                                  : a.protocol == "nmea" ? ValidateProtocol::kNmea

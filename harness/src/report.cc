@@ -192,8 +192,8 @@ void WriteJunitXml(const RunReport& r, const std::string& path) {
     out << "    <testcase classname=\"" << XmlEscape(r.scenario) << "\" name=\"" << XmlEscape(c.name) << "\">";
     if (!c.pass) {
       char msg[256];
-      if (c.value) std::snprintf(msg, sizeof msg, "value %.6g exceeds threshold %.6g", *c.value, c.threshold);
-      else std::snprintf(msg, sizeof msg, "metric could not be computed (no estimates)");
+      if (c.value) std::snprintf(msg, sizeof msg, "value %.6g fails the threshold %.6g", *c.value, c.threshold);
+      else std::snprintf(msg, sizeof msg, "metric could not be computed (no estimates, or not measured in this mode)");
       out << "<failure message=\"" << XmlEscape(msg) << "\"/>";
     }
     out << "</testcase>\n";

@@ -41,6 +41,12 @@ std::size_t PendingToHost(const DeviceSet& set) {
   return n;
 }
 
+std::string Secs(double s) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%g", s);
+  return b;
+}
+
 std::string Seconds(Time t) {
   char b[32];
   std::snprintf(b, sizeof b, "%.1f", ToSeconds(t));
@@ -137,7 +143,7 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
     if (!estimator_running()) return false;
     if (pacer) {
       if (silent_for_ns() > silence_ns) {
-        hang = "no output for " + std::to_string(silence_s) + " s";
+        hang = "no output for " + Secs(silence_s) + " s";
         return false;
       }
       return true;
@@ -153,7 +159,7 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
       pending = now_pending;
       if (Now() - last_progress > silence_ns && silent_for_ns() > silence_ns) {
         hang = "it stopped reading its input and is silent (" + std::to_string(pending) + " bytes unread for " +
-               std::to_string(silence_s) + " s)";
+               Secs(silence_s) + " s)";
         return false;
       }
     }
@@ -178,7 +184,7 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
       const std::int64_t quiet_ns = Now() - std::max(collector.last_output_wall_ns(), drain_start);
       if (collector.last_output_wall_ns() > 0 && quiet_ns > static_cast<std::int64_t>(kDrainQuietS * 1e9)) break;
       if (quiet_ns > silence_ns) {
-        if (collector.records().empty()) hang = "no output for " + std::to_string(silence_s) + " s";
+        if (collector.records().empty()) hang = "no output for " + Secs(silence_s) + " s";
         break;
       }
       usleep(10000);

@@ -1,4 +1,5 @@
 // hil validate: the conformance report (JSON and a terminal summary).
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -60,14 +61,26 @@ std::string ValidationSummary(const ValidationReport& r, std::size_t max_finding
     std::snprintf(buf, sizeof buf, "  %-16s %6zu  %.3f Hz\n", name.c_str(), st.count, st.rate_hz);
     s += buf;
   }
-  std::size_t shown = 0;
+  // identical findings are listed once, with their count and first offset
+  std::vector<std::pair<const ValidationFinding*, std::size_t>> groups;
   for (const auto& f : r.findings) {
+    auto it = std::find_if(groups.begin(), groups.end(), [&](const auto& g) {
+      return g.first->check == f.check && g.first->message == f.message && g.first->error == f.error;
+    });
+    if (it == groups.end()) groups.emplace_back(&f, 1);
+    else ++it->second;
+  }
+  std::size_t shown = 0;
+  for (const auto& [f, count] : groups) {
     if (shown++ == max_findings) {
-      s += "  … " + std::to_string(r.findings.size() - max_findings) + " more (see the JSON report)\n";
+      s += "  … " + std::to_string(groups.size() - max_findings) + " more kinds (see the JSON report)\n";
       break;
     }
-    std::snprintf(buf, sizeof buf, "  %s [%s]%s %s\n", f.error ? "ERROR" : "warn ", f.check.c_str(),
-                  f.offset >= 0 ? (" @" + std::to_string(f.offset)).c_str() : "", f.message.c_str());
+    const std::string times = count > 1 ? " (x" + std::to_string(count) + ", first @" + std::to_string(f->offset) + ")"
+                              : f->offset >= 0 ? " (@" + std::to_string(f->offset) + ")"
+                                               : "";
+    std::snprintf(buf, sizeof buf, "  %s [%s] %s%s\n", f->error ? "ERROR" : "warn ", f->check.c_str(), f->message.c_str(),
+                  times.c_str());
     s += buf;
   }
   std::snprintf(buf, sizeof buf, "%s: %zu error(s), %zu warning(s)\n", r.conforms() ? "CONFORMS" : "DOES NOT CONFORM",

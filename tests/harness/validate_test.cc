@@ -262,3 +262,106 @@ TEST(ValidateTest, CanLogs) {
 
 }  // namespace
 }  // namespace hil::harness
+
+namespace hil::harness {
+namespace {
+
+std::string Hex(const std::string& spaced) {
+  std::string out;
+  std::istringstream in(spaced);
+  for (std::string h; in >> h;) out += static_cast<char>(std::stoi(h, nullptr, 16));
+  return out;
+}
+
+std::uint16_t Crc(const std::string& b, std::size_t from, std::size_t to) {
+  std::uint16_t crc = 0xFFFF;
+  for (std::size_t i = from; i < to; ++i) {
+    crc = static_cast<std::uint16_t>(crc ^ (static_cast<unsigned char>(b[i]) << 8));
+    for (int k = 0; k < 8; ++k) crc = static_cast<std::uint16_t>(crc & 0x8000 ? (crc << 1) ^ 0x1021 : crc << 1);
+  }
+  return crc;
+}
+
+std::string Le(std::uint32_t v, int n) {
+  std::string s;
+  for (int i = 0; i < n; ++i) s += static_cast<char>((v >> (8 * i)) & 0xFF);
+  return s;
+}
+
+std::string McuFrame(int type, std::uint16_t seq, std::uint32_t tick, const std::string& payload) {
+  std::string f = std::string("\xA5\x5A\x01", 3) + static_cast<char>(type) + static_cast<char>(payload.size()) + Le(seq, 2) +
+                  Le(tick, 4) + payload;
+  return f + Le(Crc(f, 2, f.size()), 2);
+}
+
+std::string Status(std::uint16_t reset_count) {
+  return std::string(1, '\x03') + std::string(1, '\x00') + Le(reset_count, 2) + Le(1000000, 4) + Le(100000, 4) +
+         std::string(14, '\0');
+}
+
+// 3 s of a 10 Hz IMU with 1 Hz time pulses (tick rate 1 MHz + 50 ppm), from sequence `seq0`
+std::string McuStream(std::uint16_t& seq, std::uint16_t reset_count) {
+  std::string s = McuFrame(4, seq++, 0, Status(reset_count));
+  for (int k = 0; k < 30; ++k) {
+    const auto tick = static_cast<std::uint32_t>(k * 100005);
+    s += McuFrame(1, seq++, tick + 10, std::string(12, '\x01'));
+    if (k % 10 == 0) s += McuFrame(3, seq++, tick, Le(1744, 2) + Le(86400000u + static_cast<std::uint32_t>(k / 10) * 1000u, 4) + '\x01');
+  }
+  return s;
+}
+
+TEST(ValidateMcuTest, TheSpecWorkedExamplesConform) {
+  ByteStream s;
+  s.bytes = Hex("A5 5A 01 01 0C 02 01 4E 61 BC 00 03 00 FB FF 00 01 FE FF 01 00 F0 FF A4 70");
+  ValidationReport r = ValidateMcuStream(s);
+  EXPECT_EQ(r.frames, 1u);
+  EXPECT_EQ(r.bad_frames, 0u) << ValidationSummary(r);
+  s.bytes = Hex("A5 5A 01 03 07 07 00 40 42 0F 00 D0 06 00 5C 26 05 01 20 C6") +
+            Hex("A5 5A 01 02 06 08 00 90 05 10 00 2C 01 CE FF A8 FD A6 58");
+  r = ValidateMcuStream(s);
+  EXPECT_TRUE(r.conforms()) << ValidationSummary(r);
+  EXPECT_EQ(r.frames, 2u);
+}
+
+TEST(ValidateMcuTest, RatesResetsGapsAndCorruption) {
+  std::uint16_t seq = 0;
+  ByteStream s;
+  s.bytes = McuStream(seq, 0);
+  ValidationReport r = ValidateMcuStream(s);
+  EXPECT_TRUE(r.conforms()) << ValidationSummary(r);
+  EXPECT_NEAR(r.messages.at("IMU_SAMPLE").rate_hz, 1e6 / 100005, 1e-6);
+  // a reset: sequence and tick restart with a higher reset count
+  seq = 0;
+  s.bytes += McuStream(seq, 1);
+  r = ValidateMcuStream(s);
+  EXPECT_TRUE(r.conforms()) << ValidationSummary(r);
+  // a restart without a reset count increase, a lost frame, a flipped bit
+  std::uint16_t seq2 = 0;
+  std::string bad = McuStream(seq2, 0);
+  seq2 = 0;
+  bad += McuStream(seq2, 0);
+  s.bytes = bad;
+  EXPECT_TRUE(HasFinding(ValidateMcuStream(s), "reset", true));
+  seq2 = 0;
+  std::string stream = McuStream(seq2, 0);
+  const std::size_t imu = stream.find(std::string("\xA5\x5A\x01\x01", 4), 100);
+  stream.erase(imu, 25);
+  s.bytes = stream;
+  r = ValidateMcuStream(s);
+  EXPECT_TRUE(HasFinding(r, "sequence_gap", true)) << ValidationSummary(r);
+  EXPECT_EQ(r.garbage_bytes, 0u);
+  seq2 = 0;
+  stream = McuStream(seq2, 0);
+  stream[imu + 14] = static_cast<char>(stream[imu + 14] ^ 0x20);
+  s.bytes = stream;
+  EXPECT_TRUE(HasFinding(ValidateMcuStream(s), "checksum", true));
+  // an IMU rate far from the STATUS period (every other sample lost, sequence intact)
+  seq2 = 0;
+  std::string slow = McuFrame(4, seq2++, 0, Status(0));
+  for (int k = 0; k < 20; ++k) slow += McuFrame(1, seq2++, static_cast<std::uint32_t>(k * 200000), std::string(12, '\0'));
+  s.bytes = slow;
+  EXPECT_TRUE(HasFinding(ValidateMcuStream(s), "rate", true));
+}
+
+}  // namespace
+}  // namespace hil::harness

@@ -12,6 +12,7 @@
 ///  - neo5m: both, against the u-blox 5 (NEO-5M) profile: GP talker, the default NMEA epoch
 ///           RMC, VTG, GGA, GSA, GSV…, GLL in that order, only messages a u-blox 5 has, epoch
 ///           rate ≤ 4 Hz, bytes per epoch within the line time at the given baud, epoch timing;
+///  - mcu:   the MCU frame protocol v1 (ValidateMcuStream);
 ///  - can:   `candump -l` log lines (format, identifiers, lengths), monotonic timestamps, per-ID
 ///           rates and NMEA 2000 fast-packet sequence continuity.
 /// Errors make a stream non-conforming; warnings (gaps at capture boundaries, a partial epoch) are
@@ -64,6 +65,10 @@ struct ValidationReport {
 
 /// Validates a byte stream. `baud` bounds the bytes per epoch for neo5m (0: not checked).
 ValidationReport ValidateStream(ValidateProtocol protocol, const ByteStream& stream, int baud);
+
+/// Validates an MCU frame protocol v1 stream (vectors/mcu/mcu_frame_protocol.md): framing, CRC,
+/// sequence gaps (resets allowed), per-type tick monotonicity, IMU rate against STATUS, time pulses.
+ValidationReport ValidateMcuStream(const ByteStream& stream);
 
 /// Validates a candump -l log file's text.
 ValidationReport ValidateCanLog(const std::string& text);
