@@ -47,9 +47,11 @@ void PrintSummary(const hil::harness::RunReport& r, const std::string& dir) {
               fmt(r.baselines, r.baselines.horizontal_rmse_m).c_str(), fmt(r.baselines, r.baselines.cep95_m).c_str(),
               fmt(r.baselines, r.baselines.max_horizontal_error_m).c_str(), r.baselines.samples);
   for (const auto& o : r.outages) {
-    std::printf("outage     %.1f-%.1f s: max horizontal error %.2f m, reconverged %s\n", o.start_s, o.end_s,
-                o.max_horizontal_error_m,
-                o.reconvergence_time_s ? (std::to_string(*o.reconvergence_time_s) + " s after").c_str() : "never");
+    char reconv[64] = "never";
+    if (o.reconvergence_time_s) std::snprintf(reconv, sizeof reconv, "%.1f s after", *o.reconvergence_time_s);
+    std::printf("outage     %.1f-%.1f s: max horizontal error %s, reconverged %s\n", o.start_s, o.end_s,
+                o.samples ? (std::to_string(o.max_horizontal_error_m).substr(0, 5) + " m").c_str() : "n/a (no solutions)",
+                reconv);
   }
   for (const auto& c : r.criteria) {
     std::printf("  [%s] %s (value %s)\n", c.pass ? "PASS" : "FAIL", c.name.c_str(),
