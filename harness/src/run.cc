@@ -113,18 +113,22 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
 
   std::ofstream fixes_csv(dir + "/gnss_fixes.csv");
   fixes_csv << "t_s,lat_deg,lon_deg,height_m,vel_n_mps,vel_e_mps,vel_d_mps,num_sv,hdop\n";
-  std::optional<link::RealtimePacer> pacer;
-  if (opt.mode == RunMode::kRealtime) {
-    link::RealtimePacer::RequestRealtimeScheduling();
-    pacer.emplace(opt.speed);
-  }
   if (opt.emulate_only) {
     for (const auto& [name, path] : set.links) std::printf("%s %s\n", name.c_str(), path.c_str());
     std::fflush(stdout);
   }
   std::optional<EstimatorProcess> estimator;
-  if (!opt.emulate_only) estimator.emplace(command, dir + "/estimator.stderr");
+  if (!opt.emulate_only) {
+    estimator.emplace(command, dir + "/estimator.stderr");
+    // time for the program to open its devices (gpsd flushes a tty's input when it opens it)
+    if (scenario.estimator.startup_s > 0) usleep(static_cast<useconds_t>(scenario.estimator.startup_s * 1e6));
+  }
   const std::int64_t estimator_start = Now();
+  std::optional<link::RealtimePacer> pacer;
+  if (opt.mode == RunMode::kRealtime) {
+    link::RealtimePacer::RequestRealtimeScheduling();
+    pacer.emplace(opt.speed);
+  }
   EstimateCollector collector(MakeEstimateReader(scenario.estimator.output, scenario.start_unix_ns),
                               estimator ? &*estimator : nullptr, nav_pty.get(),
                               dir + (nav_pty ? "/estimate.nmea" : "/estimate.jsonl"));

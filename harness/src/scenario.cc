@@ -24,11 +24,12 @@ const std::vector<std::string> kCriterionMetrics{
 namespace {
 
 void ReadEstimator(const YamlReader& r, EstimatorSpec& e) {
-  r.CheckKeys({"command", "output", "navd_mode", "silence_timeout_s"});
+  r.CheckKeys({"command", "output", "navd_mode", "silence_timeout_s", "startup_s"});
   e.command = r.String("command", e.command);
   e.output = r.Choice("output", e.output, {"json_stdout", "gpsd_json", "nmea_stdout", "nmea_pty"});
   e.navd_mode = r.Choice("navd_mode", e.navd_mode, {"gnss_only"});
   e.silence_timeout_s = r.DoubleIn("silence_timeout_s", e.silence_timeout_s, 0.5, 3600);
+  e.startup_s = r.DoubleIn("startup_s", e.startup_s, 0, 60);
 }
 
 std::vector<Criterion> ReadCriteria(const YamlReader& r) {

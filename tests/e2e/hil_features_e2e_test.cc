@@ -126,6 +126,21 @@ TEST(HilRunEstimatorE2eTest, NmeaOutputOnStdoutAndOnAPty) {
   }
 }
 
+TEST(HilRunEstimatorE2eTest, GpsdIsAnEstimatorUnderTest) {
+  // gpsd reads the emulated receiver; its TPV reports are the solutions (gpsd moves dates before
+  // its build's GPS week window by 1024 weeks, so this scenario lives in 2025)
+  TempDir dir("e2e_gpsd");
+  const std::string port = std::to_string(20000 + ::getpid() % 20000);
+  WriteFile(dir / "s.yaml", "name: gpsd\nduration_s: 15\nstart_utc: \"2025-06-10T08:00:00Z\"\n" + kOrigin +
+                                "estimator:\n  command: \"gpsd -N -n -b -S " + port + " -F {run_dir}/gpsd.sock {ttyGPS} & "
+                                "sleep 0.5; exec gpspipe -w localhost:" + port + "\"\n  output: gpsd_json\n  startup_s: 1\n"
+                                "criteria:\n  - {metric: horizontal_rmse_m, max_ratio_to_baseline: 1.01}\n");
+  const CommandResult r = RunCommand(Hil() + " run " + dir / "s.yaml" + " --out " + dir / "run");
+  EXPECT_EQ(r.exit_code, 0) << r.out << ReadFile(dir / "run/estimator.stderr");
+  const auto report = nlohmann::json::parse(ReadFile(dir / "run/report.json"));
+  EXPECT_GE(report["metrics"]["samples"].get<int>(), 15);
+}
+
 TEST(HilRunFaultsE2eTest, OutagesAreEvaluatedAndByteCorruptionReachesTheCapture) {
   TempDir dir("e2e_faults");
   WriteFile(dir / "s.yaml", "name: faults\nduration_s: 40\n" + kOrigin +

@@ -51,6 +51,7 @@ struct EstimatorSpec {
   std::string output = "json_stdout";
   std::string navd_mode = "gnss_only";  ///< written into the generated navd.conf
   double silence_timeout_s = 10.0;      ///< no output for this long fails the run
+  double startup_s = 0.0;               ///< wall time given to the program to open its devices before t = 0
 };
 
 struct Scenario {
