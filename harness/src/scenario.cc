@@ -26,7 +26,7 @@ namespace {
 void ReadEstimator(const YamlReader& r, EstimatorSpec& e) {
   r.CheckKeys({"command", "output", "navd_mode", "silence_timeout_s", "startup_s"});
   e.command = r.String("command", e.command);
-  e.output = r.Choice("output", e.output, {"json_stdout", "gpsd_json", "nmea_stdout", "nmea_pty"});
+  e.output = r.Choice("output", e.output, {"json_stdout", "gpsd_json", "nmea_stdout", "nmea_pty", "n2k_candump"});
   e.navd_mode = r.Choice("navd_mode", e.navd_mode, {"gnss_only"});
   e.silence_timeout_s = r.DoubleIn("silence_timeout_s", e.silence_timeout_s, 0.5, 3600);
   e.startup_s = r.DoubleIn("startup_s", e.startup_s, 0, 60);

@@ -169,3 +169,53 @@ TEST_F(IncludeTest, TheProjectLibraryIsSearched) {
 
 }  // namespace
 }  // namespace hil::harness
+
+namespace hil::harness {
+namespace {
+
+TEST(EstimateReaderTest, Nmea2000GnssPositionFastPacketsFromCandumpLines) {
+  // PGN 129029 payload: SID, date, time, lat, lon, altitude (+ 12 bytes of the rest, zero)
+  const std::int64_t t_ns = kStart + 7'500'000'000LL;
+  const auto days = static_cast<std::uint64_t>(t_ns / 86'400'000'000'000LL);
+  const auto tod = static_cast<std::uint64_t>((t_ns % 86'400'000'000'000LL) / 100'000LL);
+  std::string payload(1, '\x05');
+  const auto put = [&](std::uint64_t v, int n) {
+    for (int i = 0; i < n; ++i) payload += static_cast<char>((v >> (8 * i)) & 0xFF);
+  };
+  put(days, 2);
+  put(tod, 4);
+  put(static_cast<std::uint64_t>(static_cast<std::int64_t>(35.4796096e16)), 8);
+  put(static_cast<std::uint64_t>(static_cast<std::int64_t>(50.5979765e16)), 8);
+  put(static_cast<std::uint64_t>(static_cast<std::int64_t>(1312.25e6)), 8);
+  payload += std::string(43 - payload.size(), '\0');
+  // fast packet frames: [seq|0, len, 6 bytes], then [seq|k, 7 bytes]
+  std::vector<std::string> frames;
+  frames.push_back(std::string{static_cast<char>(3 << 5), static_cast<char>(payload.size())} + payload.substr(0, 6));
+  for (std::size_t i = 6, k = 1; i < payload.size(); i += 7, ++k) {
+    std::string f(1, static_cast<char>((3 << 5) | static_cast<int>(k)));
+    f += payload.substr(i, 7);
+    f.resize(8, '\xFF');
+    frames.push_back(f);
+  }
+  auto r = MakeEstimateReader("n2k_candump", kStart);
+  std::optional<EstimateRecord> e;
+  for (const auto& f : frames) {
+    std::string line = "(1749542407.500000) vcan0 0DF80517#";
+    for (unsigned char c : f) {
+      char h[3];
+      std::snprintf(h, sizeof h, "%02X", c);
+      line += h;
+    }
+    EXPECT_FALSE(e) << "a solution only after the last frame";
+    e = r->Line(line, 9);
+  }
+  ASSERT_TRUE(e);
+  EXPECT_EQ(ToNs(e->t_validity), 7'500'000'000LL);
+  EXPECT_NEAR(e->lat_deg, 35.4796096, 1e-12);
+  EXPECT_NEAR(e->lon_deg, 50.5979765, 1e-12);
+  EXPECT_NEAR(e->height_m, 1312.25, 1e-9);
+  EXPECT_FALSE(r->Line("(1749542407.500000) vcan0 09F80117#A0B3F2150AB5A61E", 1)) << "129025 is not read";
+}
+
+}  // namespace
+}  // namespace hil::harness

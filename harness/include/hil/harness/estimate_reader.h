@@ -7,7 +7,9 @@
 ///  - gpsd_json: gpsd TPV objects ({"class":"TPV","time":ISO,"lat","lon","altHAE"|"alt",
 ///    "track","speed","climb","epx","epy","epv"}), e.g. from `gpspipe -w`; other classes skipped;
 ///  - nmea_stdout / nmea_pty: NMEA 0183 GGA (position, time of day) and RMC (speed, course); the
-///    date comes from the scenario start (the solution closest to it), as GGA carries none.
+///    date comes from the scenario start (the solution closest to it), as GGA carries none;
+///  - n2k_candump: NMEA 2000 PGN 129029 fast packets as `candump -L`/`-l` lines on stdout (e.g.
+///    `navd … & exec candump -L vcan0`); date, time, latitude, longitude, altitude.
 
 #include <cstdint>
 #include <memory>

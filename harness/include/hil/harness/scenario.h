@@ -47,7 +47,8 @@ struct EstimatorSpec {
   std::string command = "{navd} --config {run_dir}/navd.conf";
   /// How its solutions are read: json_stdout (navd's JSON lines), gpsd_json (gpsd TPV objects on
   /// stdout, e.g. from `gpspipe -w`), nmea_stdout (GGA/RMC on stdout), nmea_pty (GGA/RMC written
-  /// into the pty RUN_DIR/ttyNAV, substituted as {ttyNAV}).
+  /// into the pty RUN_DIR/ttyNAV, substituted as {ttyNAV}), n2k_candump (NMEA 2000 PGN 129029
+  /// as candump -L lines on stdout).
   std::string output = "json_stdout";
   std::string navd_mode = "gnss_only";  ///< written into the generated navd.conf
   double silence_timeout_s = 10.0;      ///< no output for this long fails the run
