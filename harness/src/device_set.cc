@@ -62,6 +62,10 @@ void AddMcu(const Scenario& s, std::uint64_t seed, const std::string& dir, Devic
 
 DeviceSet BuildDevices(const Scenario& scenario, std::uint64_t seed, const std::string& run_dir) {
   DeviceSet set;
+  if (!scenario.can.interface.empty()) {
+    set.can = std::make_unique<CanEndpoint>(scenario.can.interface, run_dir + "/captures", scenario.start_unix_ns,
+                                            scenario.can.fd);
+  }
   AddGnss(scenario, seed, run_dir, set);
   AddMcu(scenario, seed, run_dir, set);
   return set;

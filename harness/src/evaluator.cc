@@ -41,6 +41,9 @@ std::vector<ErrorSample> CompareWithTruth(const truth::TruthConfig& truth_config
       double d = std::fmod(*r.yaw_deg - yaw_true + 540.0, 360.0) - 180.0;
       e.yaw_err_deg = d;
     }
+    if (r.pos_std_enu_m && (r.pos_std_enu_m->array() > 0).all()) {
+      e.nees = (e.err_enu_m.array() / r.pos_std_enu_m->array()).square().sum();
+    }
     out.push_back(e);
   }
   return out;
@@ -75,6 +78,25 @@ AccuracyMetrics ComputeAccuracy(const std::vector<ErrorSample>& errors) {
   m.cep95_m = Percentile(h, 95);
   if (nvel) m.velocity_rmse_mps = std::sqrt(svel / static_cast<double>(nvel));
   if (nyaw) m.heading_rmse_deg = std::sqrt(syaw / static_cast<double>(nyaw));
+  std::vector<double> xte;
+  double sxte = 0, snees = 0;
+  std::size_t nnees = 0;
+  for (const ErrorSample& e : errors) {
+    if (e.xte_m) {
+      xte.push_back(std::abs(*e.xte_m));
+      sxte += *e.xte_m * *e.xte_m;
+    }
+    if (e.nees) {
+      snees += *e.nees;
+      ++nnees;
+    }
+  }
+  if (!xte.empty()) {
+    m.cross_track_rmse_m = std::sqrt(sxte / static_cast<double>(xte.size()));
+    m.cross_track_p95_m = Percentile(xte, 95);
+    m.cross_track_max_m = Percentile(xte, 100);
+  }
+  if (nnees) m.nees_mean = snees / static_cast<double>(nnees);
   return m;
 }
 

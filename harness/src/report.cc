@@ -1,5 +1,6 @@
 #include "hil/harness/report.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -7,18 +8,6 @@
 
 namespace hil::harness {
 namespace {
-
-std::optional<double> MetricValue(const AccuracyMetrics& m, const std::string& name) {
-  if (m.samples == 0) return std::nullopt;
-  if (name == "horizontal_rmse_m") return m.horizontal_rmse_m;
-  if (name == "cep50_m") return m.cep50_m;
-  if (name == "cep95_m") return m.cep95_m;
-  if (name == "max_horizontal_error_m") return m.max_horizontal_error_m;
-  if (name == "vertical_rmse_m") return m.vertical_rmse_m;
-  if (name == "velocity_rmse_mps") return m.velocity_rmse_mps;
-  if (name == "heading_rmse_deg") return m.heading_rmse_deg;
-  return std::nullopt;
-}
 
 nlohmann::json OptionalJson(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
 
@@ -32,6 +21,9 @@ nlohmann::json AccuracyJson(const AccuracyMetrics& m) {
   j["vertical_rmse_m"] = m.samples ? nlohmann::json(m.vertical_rmse_m) : nlohmann::json(nullptr);
   j["velocity_rmse_mps"] = OptionalJson(m.velocity_rmse_mps);
   j["heading_rmse_deg"] = OptionalJson(m.heading_rmse_deg);
+  j["cross_track_rmse_m"] = OptionalJson(m.cross_track_rmse_m);
+  j["cross_track_p95_m"] = OptionalJson(m.cross_track_p95_m);
+  j["cross_track_max_m"] = OptionalJson(m.cross_track_max_m);
   return j;
 }
 
@@ -65,24 +57,73 @@ bool RunReport::pass() const {
   return true;
 }
 
-std::vector<CriterionResult> EvaluateCriteria(const std::vector<Criterion>& criteria, const AccuracyMetrics& metrics,
-                                              const AccuracyMetrics& baselines) {
+MetricTable AccuracyTable(const AccuracyMetrics& m) {
+  MetricTable t;
+  const auto v = [&](double x) { return m.samples ? std::optional<double>(x) : std::nullopt; };
+  t["horizontal_rmse_m"] = v(m.horizontal_rmse_m);
+  t["cep50_m"] = v(m.cep50_m);
+  t["cep95_m"] = v(m.cep95_m);
+  t["max_horizontal_error_m"] = v(m.max_horizontal_error_m);
+  t["vertical_rmse_m"] = v(m.vertical_rmse_m);
+  t["velocity_rmse_mps"] = m.velocity_rmse_mps;
+  t["heading_rmse_deg"] = m.heading_rmse_deg;
+  t["cross_track_rmse_m"] = m.cross_track_rmse_m;
+  t["cross_track_p95_m"] = m.cross_track_p95_m;
+  t["cross_track_max_m"] = m.cross_track_max_m;
+  t["nees_mean"] = m.nees_mean;
+  return t;
+}
+
+MetricTable RunMetricTable(const RunReport& r) {
+  MetricTable t = AccuracyTable(r.metrics);
+  t["output_rate_hz"] = r.metrics.samples >= 2 ? std::optional<double>(r.output_rate_hz) : std::nullopt;
+  t["solutions_missing_fraction"] =
+      r.metrics.samples >= 2 ? std::optional<double>(r.timing.missing_fraction) : std::nullopt;
+  t["latency_p99_ms"] = r.latency ? std::optional<double>(r.latency->p99_ms) : std::nullopt;
+  t["jitter_p99_ms"] = r.timing.jitter_p99_ms;
+  std::optional<double> worst, reconv;
+  bool never_reconverged = false;
+  for (const auto& o : r.outages) {
+    if (o.samples > 0) worst = std::max(worst.value_or(0.0), o.max_horizontal_error_m);
+    if (o.reconvergence_time_s) reconv = std::max(reconv.value_or(0.0), *o.reconvergence_time_s);
+    else never_reconverged = true;
+  }
+  t["outage_max_horizontal_error_m"] = worst;
+  t["reconvergence_time_s"] = never_reconverged ? std::nullopt : reconv;
+  return t;
+}
+
+std::vector<CriterionResult> EvaluateCriteria(const std::vector<Criterion>& criteria, const MetricTable& metrics,
+                                              const MetricTable& baselines) {
+  const auto lookup = [](const MetricTable& t, const std::string& k) {
+    const auto it = t.find(k);
+    return it == t.end() ? std::nullopt : it->second;
+  };
   std::vector<CriterionResult> out;
   for (const Criterion& c : criteria) {
     CriterionResult r;
     r.name = c.name;
-    r.value = MetricValue(metrics, c.metric);
+    r.value = lookup(metrics, c.metric);
     if (c.max) {
       r.threshold = *c.max;
+      r.pass = r.value && *r.value <= r.threshold;
+    } else if (c.min) {
+      r.threshold = *c.min;
+      r.pass = r.value && *r.value >= r.threshold;
     } else {
-      const auto base = MetricValue(baselines, c.metric);
+      const auto base = lookup(baselines, c.metric);
       r.threshold = base ? *base * *c.max_ratio_to_baseline : 0.0;
       if (!base) r.value.reset();
+      r.pass = r.value && *r.value <= r.threshold;
     }
-    r.pass = r.value && *r.value <= r.threshold;
     out.push_back(r);
   }
   return out;
+}
+
+std::vector<CriterionResult> EvaluateCriteria(const std::vector<Criterion>& criteria, const AccuracyMetrics& metrics,
+                                              const AccuracyMetrics& baselines) {
+  return EvaluateCriteria(criteria, AccuracyTable(metrics), AccuracyTable(baselines));
 }
 
 void WriteReportJson(const RunReport& r, const std::string& path) {
@@ -96,19 +137,41 @@ void WriteReportJson(const RunReport& r, const std::string& path) {
   j["problems"] = r.problems;
   nlohmann::json m = AccuracyJson(r.metrics);
   m["output_rate_hz"] = r.output_rate_hz;
+  m["solutions_missing_fraction"] = r.timing.missing_fraction;
+  m["nees_mean"] = OptionalJson(r.metrics.nees_mean);
+  if (r.timing.jitter_p99_ms) {
+    m["jitter_ms"] = {{"p50", *r.timing.jitter_p50_ms}, {"p99", *r.timing.jitter_p99_ms}, {"max", *r.timing.jitter_max_ms}};
+  } else {
+    m["jitter_ms"] = nullptr;
+  }
   if (r.latency) {
     m["latency_ms"] = {{"p50", r.latency->p50_ms}, {"p99", r.latency->p99_ms}, {"max", r.latency->max_ms}};
   } else {
     m["latency_ms"] = nullptr;  // measured in real-time mode only
   }
   m["outages"] = nlohmann::json::array();
+  for (const auto& o : r.outages) {
+    nlohmann::json growth = nlohmann::json::array();
+    for (const auto& [h, e] : o.growth) growth.push_back({{"t_since_start_s", h}, {"horizontal_error_m", e}});
+    m["outages"].push_back({{"start_s", o.start_s},
+                            {"end_s", o.end_s},
+                            {"samples", o.samples},
+                            {"max_horizontal_error_m", o.samples ? nlohmann::json(o.max_horizontal_error_m) : nlohmann::json(nullptr)},
+                            {"reconvergence_time_s", OptionalJson(o.reconvergence_time_s)},
+                            {"error_growth", growth}});
+  }
   j["metrics"] = m;
   j["baselines"] = AccuracyJson(r.baselines);
   j["criteria"] = nlohmann::json::array();
   for (const auto& c : r.criteria) {
     j["criteria"].push_back({{"name", c.name}, {"threshold", c.threshold}, {"value", OptionalJson(c.value)}, {"pass", c.pass}});
   }
+  j["estimator"] = {{"command", r.estimator_command}, {"output", r.estimator_output}, {"exit", r.estimator_exit}};
   j["estimator_exit"] = r.estimator_exit;
+  j["speed"] = r.speed;
+  j["faults"] = nlohmann::json::array();
+  for (const auto& [kind, when] : r.faults) j["faults"].push_back({{"kind", kind}, {"when", when}});
+  j["fault_effects"] = {{"messages_dropped", r.fault_messages_dropped}, {"bytes_corrupted", r.fault_bytes_corrupted}};
   j["wall_time_s"] = r.wall_time_s;
   j["sim_time_s"] = r.sim_time_s;
   j["links"] = {{"gnss_bytes", r.gnss_bytes}, {"gnss_messages_dropped", r.gnss_messages_dropped}};
@@ -129,8 +192,8 @@ void WriteJunitXml(const RunReport& r, const std::string& path) {
     out << "    <testcase classname=\"" << XmlEscape(r.scenario) << "\" name=\"" << XmlEscape(c.name) << "\">";
     if (!c.pass) {
       char msg[256];
-      if (c.value) std::snprintf(msg, sizeof msg, "value %.6g exceeds threshold %.6g", *c.value, c.threshold);
-      else std::snprintf(msg, sizeof msg, "metric could not be computed (no estimates)");
+      if (c.value) std::snprintf(msg, sizeof msg, "value %.6g fails the threshold %.6g", *c.value, c.threshold);
+      else std::snprintf(msg, sizeof msg, "metric could not be computed (no estimates, or not measured in this mode)");
       out << "<failure message=\"" << XmlEscape(msg) << "\"/>";
     }
     out << "</testcase>\n";

@@ -1,6 +1,11 @@
 #include "hil/harness/scenario.h"
 
+#include <algorithm>
+
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "hil/firmware_emu/gnss/gps_time.h"
 #include "hil/harness/yaml_reader.h"
@@ -10,29 +15,43 @@ namespace hil::harness {
 
 extern const char* const kDefaultScenarioYaml;  // generated from vectors/scenarios/default.yaml
 
+const std::vector<std::string> kCriterionMetrics{
+    "horizontal_rmse_m", "cep50_m", "cep95_m", "max_horizontal_error_m", "vertical_rmse_m", "velocity_rmse_mps",
+    "heading_rmse_deg", "cross_track_rmse_m", "cross_track_p95_m", "cross_track_max_m", "output_rate_hz",
+    "latency_p99_ms", "jitter_p99_ms", "outage_max_horizontal_error_m", "reconvergence_time_s", "nees_mean",
+    "solutions_missing_fraction"};
+
 namespace {
 
 void ReadEstimator(const YamlReader& r, EstimatorSpec& e) {
-  r.CheckKeys({"command", "output", "navd_mode", "silence_timeout_s"});
+  r.CheckKeys({"command", "output", "navd_mode", "silence_timeout_s", "startup_s"});
   e.command = r.String("command", e.command);
-  e.output = r.Choice("output", e.output, {"json_stdout"});
+  e.output = r.Choice("output", e.output, {"json_stdout", "gpsd_json", "nmea_stdout", "nmea_pty", "n2k_candump"});
   e.navd_mode = r.Choice("navd_mode", e.navd_mode, {"gnss_only"});
   e.silence_timeout_s = r.DoubleIn("silence_timeout_s", e.silence_timeout_s, 0.5, 3600);
+  e.startup_s = r.DoubleIn("startup_s", e.startup_s, 0, 60);
 }
 
 std::vector<Criterion> ReadCriteria(const YamlReader& r) {
   std::vector<Criterion> out;
   for (const YamlReader& c : r.Elements()) {
-    c.CheckKeys({"metric", "max", "max_ratio_to_baseline", "name"});
+    c.CheckKeys({"metric", "max", "min", "max_ratio_to_baseline", "name"});
     Criterion k;
-    k.metric = c.Choice("metric", "", {"horizontal_rmse_m", "cep50_m", "cep95_m", "max_horizontal_error_m",
-                                       "vertical_rmse_m", "velocity_rmse_mps", "heading_rmse_deg"});
+    k.metric = c.String("metric");
+    if (std::find(kCriterionMetrics.begin(), kCriterionMetrics.end(), k.metric) == kCriterionMetrics.end()) {
+      std::string msg = "unknown metric '" + k.metric + "' (one of:";
+      for (const auto& m : kCriterionMetrics) msg += " " + m;
+      c.Fail("metric", msg + ")");
+    }
     if (c.Has("max")) k.max = c.DoubleIn("max", 0, 0, 1e9);
+    if (c.Has("min")) k.min = c.DoubleIn("min", 0, 0, 1e9);
     if (c.Has("max_ratio_to_baseline")) k.max_ratio_to_baseline = c.DoubleIn("max_ratio_to_baseline", 0, 0, 1e3);
-    if (!k.max && !k.max_ratio_to_baseline) c.Fail("a criterion needs 'max' or 'max_ratio_to_baseline'");
-    if (k.max && k.max_ratio_to_baseline) c.Fail("give 'max' or 'max_ratio_to_baseline', not both");
+    const int given = (k.max ? 1 : 0) + (k.min ? 1 : 0) + (k.max_ratio_to_baseline ? 1 : 0);
+    if (given == 0) c.Fail("a criterion needs 'max', 'min' or 'max_ratio_to_baseline'");
+    if (given > 1) c.Fail("give one of 'max', 'min' or 'max_ratio_to_baseline'");
     char buf[128];
     if (k.max) std::snprintf(buf, sizeof buf, "%s <= %g", k.metric.c_str(), *k.max);
+    else if (k.min) std::snprintf(buf, sizeof buf, "%s >= %g", k.metric.c_str(), *k.min);
     else std::snprintf(buf, sizeof buf, "%s <= %g x baseline", k.metric.c_str(), *k.max_ratio_to_baseline);
     k.name = c.String("name", buf);
     out.push_back(k);
@@ -41,7 +60,8 @@ std::vector<Criterion> ReadCriteria(const YamlReader& r) {
 }
 
 Scenario FromReader(const YamlReader& root) {
-  std::vector<std::string> keys{"name", "description", "start_utc", "duration_s", "seed", "estimator", "criteria"};
+  std::vector<std::string> keys{"name",     "description", "start_utc", "duration_s", "seed",      "estimator",
+                                "criteria", "faults",      "include",   "evaluation"};
   for (const auto* section : {&kTruthSectionKeys, &kGnssSectionKeys, &kMcuSectionKeys, &kCanSectionKeys}) {
     keys.insert(keys.end(), section->begin(), section->end());
   }
@@ -66,12 +86,34 @@ Scenario FromReader(const YamlReader& root) {
   ReadCanSection(root, s.can);
   if (auto e = root.OptionalChild("estimator")) ReadEstimator(*e, s.estimator);
   if (auto c = root.OptionalChild("criteria")) s.criteria = ReadCriteria(*c);
+  if (auto f = root.OptionalChild("faults")) s.faults = ReadFaultTimeline(*f, s.duration_s);
+  if (auto ev = root.OptionalChild("evaluation")) {
+    ev->CheckKeys({"from_s", "reconverged_error_m"});
+    s.evaluate_from_s = ev->DoubleIn("from_s", 0, 0, s.duration_s);
+    s.reconverged_error_m = ev->DoubleIn("reconverged_error_m", s.reconverged_error_m, 0.001, 1e4);
+  }
   return s;
 }
 
 }  // namespace
 
-Scenario LoadScenario(const std::string& path) { return FromReader(YamlReader::LoadFile(path)); }
+std::vector<std::string> ScenarioLibraryDirs() {
+  std::vector<std::string> dirs;
+  if (const char* env = std::getenv("HIL_SCENARIO_LIB")) {
+    std::stringstream ss(env);
+    for (std::string d; std::getline(ss, d, ':');) {
+      if (!d.empty()) dirs.push_back(d);
+    }
+  }
+  dirs.emplace_back(HIL_SCENARIO_LIB_DIR);
+  return dirs;
+}
+
+Scenario LoadScenario(const std::string& path) {
+  YamlReader root = YamlReader::LoadFile(path);
+  root.ResolveIncludes(std::filesystem::path(path).parent_path().string(), ScenarioLibraryDirs());
+  return FromReader(root);
+}
 
 Scenario ParseScenario(const std::string& text, const std::string& name) {
   YAML::Node root;
@@ -81,7 +123,9 @@ Scenario ParseScenario(const std::string& text, const std::string& name) {
     throw ScenarioError(name, e.mark.line + 1, "", "YAML syntax error: " + e.msg);
   }
   if (!root.IsMap()) throw ScenarioError(name, 1, "", "the document must be a mapping of keys");
-  return FromReader(YamlReader(root, name, ""));
+  YamlReader reader(root, name, "");
+  reader.ResolveIncludes(".", ScenarioLibraryDirs());
+  return FromReader(reader);
 }
 
 Scenario LoadDefaultScenario() { return ParseScenario(kDefaultScenarioYaml, "<embedded default scenario>"); }

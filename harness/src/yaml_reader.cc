@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 
 namespace hil::harness {
@@ -40,6 +41,62 @@ YamlReader YamlReader::LoadFile(const std::string& file) {
   }
 }
 
+const std::string& YamlReader::FileOf(const std::string& key) const {
+  const auto it = key_file_.find(key);
+  return it == key_file_.end() ? file_ : it->second;
+}
+
+void YamlReader::ResolveIncludes(const std::string& base_dir, const std::vector<std::string>& lib_dirs, int depth) {
+  namespace fs = std::filesystem;
+  const auto inc = Get("include");
+  if (!inc) return;
+  if (depth > 8) Fail("include", "includes nested more than 8 deep (a cycle?)");
+  std::vector<std::string> names;
+  if (inc->IsScalar()) {
+    names.push_back(inc->Scalar());
+  } else if (inc->IsSequence()) {
+    for (const auto& el : *inc) {
+      if (!el.IsScalar()) throw ScenarioError(file_, el.Mark().line + 1, FieldOf("include"), "expected a file name");
+      names.push_back(el.Scalar());
+    }
+  } else {
+    Fail("include", "expected a file name or a list of file names");
+  }
+  std::map<std::string, std::string> added;  // key -> the include that added it
+  for (const std::string& name : names) {
+    std::vector<fs::path> candidates{fs::path(base_dir) / name};
+    for (const auto& d : lib_dirs) candidates.push_back(fs::path(d) / name);
+    std::string found;
+    for (const auto& c : candidates) {
+      std::error_code ec;
+      if (fs::is_regular_file(c, ec)) {
+        found = c.lexically_normal().string();
+        break;
+      }
+    }
+    if (found.empty()) {
+      std::string where = base_dir;
+      for (const auto& d : lib_dirs) where += ", " + d;
+      Fail("include", "cannot find included file '" + name + "' (looked in " + where + ")");
+    }
+    YamlReader sub = LoadFile(found);
+    sub.ResolveIncludes(fs::path(found).parent_path().string(), lib_dirs, depth + 1);
+    for (const auto& kv : sub.node_) {
+      const std::string key = kv.first.Scalar();
+      if (key == "include" || Has(key)) {
+        if (added.count(key)) {
+          throw ScenarioError(found, kv.first.Mark().line + 1, key,
+                              "also defined by the included file " + added[key] + " (give it in the scenario itself)");
+        }
+        continue;  // the including document wins
+      }
+      node_[key] = kv.second;
+      key_file_[key] = sub.FileOf(key);
+      added[key] = found;
+    }
+  }
+}
+
 int YamlReader::line() const { return node_.Mark().line + 1; }
 
 std::string YamlReader::FieldOf(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
@@ -49,7 +106,7 @@ void YamlReader::Fail(const std::string& message) const { throw ScenarioError(fi
 void YamlReader::Fail(const std::string& key, const std::string& message) const {
   const auto n = Get(key);
   const int ln = n ? n->Mark().line + 1 : line();
-  throw ScenarioError(file_, ln, FieldOf(key), message);
+  throw ScenarioError(n ? FileOf(key) : file_, ln, FieldOf(key), message);
 }
 
 std::optional<YAML::Node> YamlReader::Get(const std::string& key) const {
@@ -85,7 +142,7 @@ void YamlReader::CheckKeys(const std::vector<std::string>& allowed) const {
       for (const auto& a : allowed) msg += " " + a;
       msg += ")";
     }
-    throw ScenarioError(file_, kv.first.Mark().line + 1, FieldOf(key), msg);
+    throw ScenarioError(FileOf(key), kv.first.Mark().line + 1, FieldOf(key), msg);
   }
 }
 
@@ -94,13 +151,13 @@ bool YamlReader::Has(const std::string& key) const { return Get(key).has_value()
 YamlReader YamlReader::Child(const std::string& key) const {
   const auto n = Get(key);
   if (!n) Fail("missing required key '" + key + "'");
-  return YamlReader(*n, file_, FieldOf(key));
+  return YamlReader(*n, FileOf(key), FieldOf(key));
 }
 
 std::optional<YamlReader> YamlReader::OptionalChild(const std::string& key) const {
   const auto n = Get(key);
   if (!n || n->IsNull()) return std::nullopt;
-  return YamlReader(*n, file_, FieldOf(key));
+  return YamlReader(*n, FileOf(key), FieldOf(key));
 }
 
 std::vector<YamlReader> YamlReader::Elements() const {
@@ -203,7 +260,7 @@ std::vector<double> YamlReader::Doubles(const std::string& key, std::size_t n, s
     try {
       out.push_back(el.as<double>());
     } catch (const YAML::Exception&) {
-      throw ScenarioError(file_, el.Mark().line + 1, FieldOf(key), "expected a number, got '" + el.Scalar() + "'");
+      throw ScenarioError(FileOf(key), el.Mark().line + 1, FieldOf(key), "expected a number, got '" + el.Scalar() + "'");
     }
   }
   return out;

@@ -23,7 +23,7 @@ TEST(EvaluatorTest, KnownOffsetGivesKnownMetrics) {
     const TruthSample s = truth.Sample(TimeFromSeconds(k));
     // 3 m east, 4 m north of the truth: 5 m horizontal error everywhere
     const auto g = truth.frame().ToGeodetic(s.p_NB_N_m + Eigen::Vector3d(3, 4, -1));
-    recs.push_back({TimeFromSeconds(k), g.lat_deg, g.lon_deg, g.height_m, std::nullopt, std::nullopt, 0});
+    recs.push_back({TimeFromSeconds(k), g.lat_deg, g.lon_deg, g.height_m, std::nullopt, std::nullopt, std::nullopt, 0});
   }
   const auto errs = CompareWithTruth(cfg, recs, Eigen::Vector3d::Zero(), Time{}, TimeFromSeconds(100));
   const AccuracyMetrics m = ComputeAccuracy(errs);
@@ -38,8 +38,8 @@ TEST(EvaluatorTest, CriteriaAgainstAbsoluteAndBaselineThresholds) {
   est.samples = base.samples = 5;
   est.horizontal_rmse_m = 0.22;
   base.horizontal_rmse_m = 0.40;
-  Criterion abs{"abs", "horizontal_rmse_m", 0.2, std::nullopt};
-  Criterion rel{"rel", "horizontal_rmse_m", std::nullopt, 0.6};
+  Criterion abs{"abs", "horizontal_rmse_m", 0.2, std::nullopt, std::nullopt};
+  Criterion rel{"rel", "horizontal_rmse_m", std::nullopt, std::nullopt, 0.6};
   const auto r = EvaluateCriteria({abs, rel}, est, base);
   EXPECT_FALSE(r[0].pass);
   EXPECT_TRUE(r[1].pass);

@@ -12,6 +12,7 @@
 
 #include "hil/firmware_emu/device.h"
 #include "hil/firmware_emu/gnss/gnss_fix.h"
+#include "hil/harness/can_endpoint.h"
 #include "hil/harness/scenario.h"
 #include "hil/harness/serial_endpoint.h"
 
@@ -25,9 +26,12 @@ struct DeviceSet {
   std::vector<std::function<const gnss::GnssFix*()>> fix_sources;
   /// {link name, path} for substitution into the estimator command ({ttyGPS} → RUN_DIR/ttyGPS).
   std::vector<std::pair<std::string, std::string>> links;
+  /// The CAN bus (scenario section `can`); null when the scenario has none. Every device's
+  /// DeviceOutput::can frames go out on it.
+  std::unique_ptr<CanEndpoint> can;
 };
 
-/// Creates the devices and their ptys (symlinks and captures in `run_dir`).
+/// Creates the devices, their ptys (symlinks and captures in `run_dir`) and the CAN bus.
 /// @throws std::runtime_error when a link cannot be created.
 DeviceSet BuildDevices(const Scenario& scenario, std::uint64_t seed, const std::string& run_dir);
 

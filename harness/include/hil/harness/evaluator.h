@@ -21,6 +21,7 @@ struct EstimateRecord {
   double lat_deg = 0, lon_deg = 0, height_m = 0;
   std::optional<Eigen::Vector3d> vel_enu_mps;
   std::optional<double> yaw_deg;  ///< heading clockwise from north
+  std::optional<Eigen::Vector3d> pos_std_enu_m;  ///< reported 1-sigma position uncertainty (for NEES)
   std::int64_t wall_rx_ns = 0;    ///< CLOCK_MONOTONIC arrival (0 when not applicable)
 };
 
@@ -32,6 +33,11 @@ struct ErrorSample {
   std::optional<double> yaw_err_deg;
   Eigen::Vector3d truth_enu_m = Eigen::Vector3d::Zero();
   Eigen::Vector3d est_enu_m = Eigen::Vector3d::Zero();
+  /// Cross-track error: signed distance of the estimate from the planned path minus that of the
+  /// truth (see cross_track.h); set by AddCrossTrack.
+  std::optional<double> xte_m;
+  /// Normalised estimation error squared with the reported diagonal covariance (3 DOF).
+  std::optional<double> nees;
   double horizontal() const { return err_enu_m.head<2>().norm(); }
 };
 
@@ -41,6 +47,8 @@ struct AccuracyMetrics {
   double horizontal_rmse_m = 0, cep50_m = 0, cep95_m = 0, max_horizontal_error_m = 0;
   double vertical_rmse_m = 0;
   std::optional<double> velocity_rmse_mps, heading_rmse_deg;
+  std::optional<double> cross_track_rmse_m, cross_track_p95_m, cross_track_max_m;  ///< |xte| statistics
+  std::optional<double> nees_mean;  ///< mean NEES (≈3 for a consistent 3-D position covariance)
 };
 
 /// Compares records with truth. `p_BX_B_m` is the lever arm of the point the records refer to

@@ -3,11 +3,13 @@
 /// What a run leaves behind: report.json (DESIGN.md contract), junit.xml (one test case per
 /// criterion), and CSV files of truth, estimates and raw fixes.
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "hil/harness/evaluator.h"
+#include "hil/harness/outage_metrics.h"
 #include "hil/harness/scenario.h"
 
 namespace hil::harness {
@@ -34,16 +36,28 @@ struct RunReport {
   std::vector<std::string> problems;  ///< why the run failed besides criteria (crash, silence…)
   AccuracyMetrics metrics;
   double output_rate_hz = 0;
+  OutputTiming timing;
   std::optional<LatencyStats> latency;
+  std::vector<OutageMetrics> outages;
   AccuracyMetrics baselines;
   std::vector<CriterionResult> criteria;
-  std::string estimator_exit;
-  double wall_time_s = 0, sim_time_s = 0;
+  std::string estimator_command, estimator_output, estimator_exit;
+  double wall_time_s = 0, sim_time_s = 0, speed = 1.0;
   std::uint64_t gnss_bytes = 0, gnss_messages_dropped = 0;
+  std::uint64_t fault_messages_dropped = 0, fault_bytes_corrupted = 0;
+  std::vector<std::pair<std::string, std::string>> faults;  ///< {kind, "start–end s"} for the report
   bool pass() const;
 };
 
+/// Metric name → value (absent when not computable), the names criteria use (kCriterionMetrics).
+using MetricTable = std::map<std::string, std::optional<double>>;
+MetricTable AccuracyTable(const AccuracyMetrics& m);
+/// Every criterion metric of a run (accuracy, timing, outages, consistency).
+MetricTable RunMetricTable(const RunReport& r);
+
 /// Evaluates the scenario's criteria against the metrics.
+std::vector<CriterionResult> EvaluateCriteria(const std::vector<Criterion>& criteria, const MetricTable& metrics,
+                                              const MetricTable& baselines);
 std::vector<CriterionResult> EvaluateCriteria(const std::vector<Criterion>& criteria, const AccuracyMetrics& metrics,
                                               const AccuracyMetrics& baselines);
 

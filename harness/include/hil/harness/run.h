@@ -10,7 +10,11 @@
 ///   3. the link delivers the bytes: in virtual mode at once (the bytes keep their emulated times
 ///      in the capture), in real-time/scaled mode each byte at its wall-clock UART time;
 ///   4. bytes from the host are read and logged with their times.
-/// The bytes produced depend only on the scenario and the seed, never on the mode.
+/// The bytes produced depend only on the scenario and the seed, never on the mode (scheduler.h).
+///
+/// The estimator under test is watched throughout: it ending early is a crash; no output for
+/// the silence timeout (or, in virtual mode, not reading its input for that long) is a hang;
+/// both fail the run, and the process group is always stopped at the end.
 
 #include <cstdint>
 #include <optional>
@@ -27,12 +31,17 @@ struct RunOptions {
   std::string out_dir;                      ///< run folder (created)
   std::optional<std::uint64_t> seed;        ///< overrides the scenario's seed
   RunMode mode = RunMode::kVirtual;
-  double speed = 1.0;                       ///< real-time speed-up (realtime mode only)
+  double speed = 1.0;                       ///< real-time speed-up (realtime mode; ≠ 1 is "scaled")
   std::optional<std::string> estimator_command;  ///< overrides the scenario's estimator command
   std::string navd_path;                    ///< substituted for {navd}
   bool progress = false;                    ///< live progress line on stderr
   bool emulate_only = false;                ///< `hil emulate`: no estimator; print the links and run
+  std::optional<double> silence_timeout_s;  ///< overrides the scenario's estimator.silence_timeout_s
+  bool html = true;                         ///< write report.html and plots/
 };
+
+/// "virtual", "realtime" or "scaled" (real time with a speed-up other than 1).
+std::string ModeName(RunMode mode, double speed);
 
 /// Runs a scenario and writes the run folder. Returns the report (its pass() decides exit 0/1).
 /// @throws std::runtime_error for setup failures (unwritable folder, estimator cannot start).

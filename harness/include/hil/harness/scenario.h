@@ -12,18 +12,24 @@
 #include "hil/firmware_emu/gnss/neo5m_device.h"
 #include "hil/firmware_emu/gnss/receiver_model.h"
 #include "hil/firmware_emu/mcu/mcu_config.h"
+#include "hil/harness/fault_timeline.h"
 #include "hil/truth/truth_integrator.h"
 
 namespace hil::harness {
 
 /// An acceptance criterion on one metric of report.json. Passes when value ≤ threshold, where the
-/// threshold is `max`, or `max_ratio_to_baseline` × the same metric of the raw GNSS baseline.
+/// threshold is `max`, or `max_ratio_to_baseline` × the same metric of the raw GNSS baseline; or,
+/// with `min`, when value ≥ min (e.g. output_rate_hz).
 struct Criterion {
   std::string name;    ///< e.g. "horizontal_rmse_m <= 1.0"
-  std::string metric;  ///< a key of report.json's metrics (e.g. horizontal_rmse_m)
+  std::string metric;  ///< a key of report.json's metrics (e.g. horizontal_rmse_m); see kCriterionMetrics
   std::optional<double> max;
+  std::optional<double> min;
   std::optional<double> max_ratio_to_baseline;
 };
+
+/// The metric names a criterion may use.
+extern const std::vector<std::string> kCriterionMetrics;
 
 /// One receiver of the scenario's GNSS section: its link and its antenna position.
 struct GnssReceiverSpec {
@@ -59,11 +65,17 @@ struct McuDeviceSpec {
 
 /// How the estimator under test is started and read.
 struct EstimatorSpec {
-  /// Shell command; {navd}, {run_dir}, {seed} and every link name in braces ({ttyGPS}) are substituted.
+  /// Shell command; {navd}, {run_dir}, {seed} and every link name in braces ({ttyGPS}, {ttyNAV})
+  /// are substituted.
   std::string command = "{navd} --config {run_dir}/navd.conf";
+  /// How its solutions are read: json_stdout (navd's JSON lines), gpsd_json (gpsd TPV objects on
+  /// stdout, e.g. from `gpspipe -w`), nmea_stdout (GGA/RMC on stdout), nmea_pty (GGA/RMC written
+  /// into the pty RUN_DIR/ttyNAV, substituted as {ttyNAV}), n2k_candump (NMEA 2000 PGN 129029
+  /// as candump -L lines on stdout).
   std::string output = "json_stdout";
   std::string navd_mode = "gnss_only";  ///< written into the generated navd.conf
   double silence_timeout_s = 10.0;      ///< no output for this long fails the run
+  double startup_s = 0.0;               ///< wall time given to the program to open its devices before t = 0
 };
 
 /// The CAN bus of a scenario (links helper): devices' CAN frames go out on this SocketCAN
@@ -86,10 +98,20 @@ struct Scenario {
   CanLinkSpec can;
   EstimatorSpec estimator;
   std::vector<Criterion> criteria;
+  FaultTimeline faults;
+  /// Seconds after the end of an outage within which the horizontal error must return below
+  /// `reconverged_error_m` (reconvergence time is measured against this).
+  double reconverged_error_m = 1.0;
+  /// Solutions before this time are not evaluated (initial convergence).
+  double evaluate_from_s = 0.0;
 };
 
-/// Loads and validates a scenario file. @throws ScenarioError.
+/// Loads and validates a scenario file; `include:` files are looked up beside it, then in
+/// ScenarioLibraryDirs(). @throws ScenarioError.
 Scenario LoadScenario(const std::string& path);
+/// Where included scenario pieces live: $HIL_SCENARIO_LIB (colon-separated) and the source tree's
+/// vectors/scenarios/lib.
+std::vector<std::string> ScenarioLibraryDirs();
 /// Loads the embedded default scenario (vectors/scenarios/default.yaml, compiled in).
 Scenario LoadDefaultScenario();
 /// Parses scenario text; `name` stands for the file in messages. @throws ScenarioError.

@@ -6,6 +6,7 @@
 
 #include <functional>
 #include <initializer_list>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -36,6 +37,13 @@ class YamlReader {
 
   /// Loads a file. @throws ScenarioError for a missing/unreadable file or a YAML syntax error.
   static YamlReader LoadFile(const std::string& file);
+
+  /// Resolves `include: [a.yaml, vehicles/tractor.yaml]` in a root mapping: each named file is
+  /// looked up beside `base_dir`, then in each of `lib_dirs` (e.g. vectors/scenarios/lib); its
+  /// top-level keys are added where this document does not define them (the document wins), and
+  /// errors in them name the included file. Included files may include others (depth ≤ 8).
+  /// @throws ScenarioError for a missing include, a cycle or a key two includes both define.
+  void ResolveIncludes(const std::string& base_dir, const std::vector<std::string>& lib_dirs, int depth = 0);
 
   /// Fails on any key of this mapping that is not in `allowed` (suggesting the closest one).
   void CheckKeys(std::initializer_list<const char*> allowed) const;
@@ -76,7 +84,9 @@ class YamlReader {
  private:
   std::string FieldOf(const std::string& key) const;
   std::optional<YAML::Node> Get(const std::string& key) const;
+  const std::string& FileOf(const std::string& key) const;
   YAML::Node node_;
+  std::map<std::string, std::string> key_file_;  // top-level keys that came from an included file
   std::string file_;
   std::string path_;
 };

@@ -1,0 +1,46 @@
+#pragma once
+/// @file
+/// Collects the estimator's output during a run, from its stdout or from the pty it writes NMEA
+/// into (RUN_DIR/ttyNAV), keeps every raw line (estimate.jsonl / estimate.nmea) and the time of
+/// the last output, and parses solutions with the scenario's EstimateReader.
+
+#include <cstdint>
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hil/firmware_emu/link/pty_port.h"
+#include "hil/harness/estimate_reader.h"
+#include "hil/harness/estimator_process.h"
+
+namespace hil::harness {
+
+class EstimateCollector {
+ public:
+  /// `nav_pty` (may be null): the pty the estimator writes its solutions into.
+  EstimateCollector(std::unique_ptr<EstimateReader> reader, EstimatorProcess* process, link::PtyPort* nav_pty,
+                    const std::string& raw_path);
+
+  /// Takes what arrived since the last call.
+  void Poll();
+  /// CLOCK_MONOTONIC time of the last output line (0: none yet).
+  std::int64_t last_output_wall_ns() const;
+  const std::vector<EstimateRecord>& records() const { return records_; }
+  std::size_t lines() const { return lines_; }
+  std::size_t unparsed_lines() const { return unparsed_; }
+
+ private:
+  void Consume(const std::string& line, std::int64_t wall_ns);
+  std::unique_ptr<EstimateReader> reader_;
+  EstimatorProcess* process_;
+  link::PtyPort* nav_pty_;
+  std::ofstream raw_;
+  std::string pty_partial_;
+  std::int64_t pty_last_ns_ = 0;
+  std::vector<EstimateRecord> records_;
+  std::size_t lines_ = 0, unparsed_ = 0;
+};
+
+}  // namespace hil::harness

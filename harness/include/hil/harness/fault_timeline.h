@@ -1,0 +1,59 @@
+#pragma once
+/// @file
+/// The scenario's global fault timeline (`faults:` in the scenario file): what goes wrong, when.
+///
+///   faults:
+///     - {kind: gnss_outage, start_s: 40, end_s: 55}
+///     - {kind: gnss_glitch, start_s: 70, end_s: 72, north_m: 8, east_m: -3}
+///     - {kind: byte_corruption, start_s: 10, end_s: 20, probability: 0.001, link: ttyGPS}
+///     - {kind: frame_drop, start_s: 30, end_s: 35, probability: 0.5}
+///     - {kind: mcu_reset, start_s: 90}
+///     - {kind: baud_mismatch, start_s: 100, end_s: 110, baud: 4800, link: ttyGPS}
+///
+/// Who applies what: the GNSS device model applies gnss_outage and gnss_glitch, the MCU model
+/// mcu_reset, the link layer baud_mismatch; the scheduler applies byte_corruption and frame_drop to
+/// whole serial messages (ApplyByteFaults in byte_faults.h). The evaluator reads the outages.
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hil/firmware_emu/sim_time.h"
+
+namespace hil::harness {
+
+class YamlReader;
+
+enum class FaultKind { kGnssOutage, kGnssGlitch, kByteCorruption, kFrameDrop, kMcuReset, kBaudMismatch };
+
+/// The scenario-file name of a kind ("gnss_outage", …).
+const char* FaultKindName(FaultKind kind);
+
+/// One fault, active on [start, end) (an instantaneous fault such as mcu_reset has end == start).
+struct Fault {
+  FaultKind kind = FaultKind::kGnssOutage;
+  Time start{};
+  Time end{};
+  std::string link;                      ///< the link it applies to ("" = every link); byte faults, baud
+  std::map<std::string, double> params;  ///< kind-specific numbers (probability, north_m, baud, …)
+  /// A parameter, or `fallback` when the scenario did not give it.
+  double Param(const std::string& key, double fallback) const;
+  bool ActiveAt(Time t) const { return t >= start && t < end; }
+};
+
+struct FaultTimeline {
+  std::vector<Fault> faults;  ///< in file order
+  /// Faults of one kind, sorted by start time.
+  std::vector<Fault> OfKind(FaultKind kind) const;
+  /// The first fault of `kind` active at `t` on `link` (or on every link), if any.
+  std::optional<Fault> ActiveAt(FaultKind kind, Time t, const std::string& link = "") const;
+  bool empty() const { return faults.empty(); }
+};
+
+/// Reads the `faults` list. Each element is checked: known kind, the keys that kind takes,
+/// 0 ≤ start_s < end_s ≤ duration_s (end_s omitted only for mcu_reset), parameter ranges.
+/// @throws ScenarioError naming file, line and field.
+FaultTimeline ReadFaultTimeline(const YamlReader& list, double duration_s);
+
+}  // namespace hil::harness

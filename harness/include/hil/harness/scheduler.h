@@ -1,0 +1,52 @@
+#pragma once
+/// @file
+/// The one scheduler that owns the clock of a run (order of operations in run.h). It advances
+/// emulated time from device event to device event; in real-time/scaled mode it also writes each
+/// byte at its wall-clock UART time. Byte faults of the timeline are applied to whole messages
+/// before they enter a UART queue, so the bytes depend only on the scenario and the seed.
+
+#include <functional>
+#include <optional>
+#include <ostream>
+#include <vector>
+
+#include "hil/firmware_emu/link/realtime_pacer.h"
+#include "hil/harness/byte_faults.h"
+#include "hil/harness/device_set.h"
+#include "hil/harness/evaluator.h"
+#include "hil/harness/scenario.h"
+
+namespace hil::harness {
+
+class Scheduler {
+ public:
+  /// `pacer` null: virtual mode. `fixes_csv` receives one line per raw GNSS fix.
+  Scheduler(const Scenario& scenario, DeviceSet& devices, ByteFaultInjector& faults, const link::RealtimePacer* pacer,
+            std::ostream& fixes_csv);
+
+  /// Runs from t = 0 to the scenario's end. After every event, `keep_going(t)` decides whether
+  /// to continue (false stops the run early, e.g. when the estimator died).
+  void Run(const std::function<bool(Time)>& keep_going);
+
+  /// Writes the bytes still queued (real time) at their UART times.
+  void Flush();
+
+  /// The raw GNSS fixes seen so far (the baseline).
+  const std::vector<EstimateRecord>& fixes() const { return fixes_; }
+  /// Frames others put on the CAN bus during the run (the estimator's NMEA 2000 output).
+  const std::vector<CanFrame>& bus_frames() const { return bus_frames_; }
+
+ private:
+  void Dispatch(std::size_t device, DeviceOutput& out);
+  void RecordFixes(Time t);
+
+  const Scenario& scenario_;
+  DeviceSet& set_;
+  ByteFaultInjector& faults_;
+  const link::RealtimePacer* pacer_;
+  std::ostream& fixes_csv_;
+  std::vector<EstimateRecord> fixes_;
+  std::vector<CanFrame> bus_frames_;
+};
+
+}  // namespace hil::harness

@@ -1,0 +1,37 @@
+#pragma once
+/// @file
+/// `hil suite DIR`: every scenario file (*.yaml, *.yml) directly in DIR, each run by a child
+/// `hil run` into OUT/<scenario file stem>[-seed<N>], `jobs` at a time, optionally `repeat` times
+/// with seeds seed, seed+1, … (the scenario's own seed when none is given). The results go into
+/// OUT/summary.json and one OUT/junit.xml (a testsuite per run, a testcase per criterion).
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace hil::harness {
+
+struct SuiteOptions {
+  std::string dir;                       ///< folder of scenario files
+  std::string out_dir;                   ///< suite output folder
+  std::string hil_exe;                   ///< the hil binary the runs use
+  int jobs = 2;
+  int repeat = 1;
+  std::optional<std::uint64_t> seed;     ///< first seed of the repeats
+  std::vector<std::string> run_args;     ///< passed to every `hil run` (e.g. --estimator CMD)
+};
+
+struct SuiteResult {
+  std::size_t runs = 0, passed = 0, failed = 0, invalid = 0;
+  /// 0 every run passed, 1 a run failed, 2 bad input (no scenarios, an invalid scenario).
+  int exit_code() const { return invalid > 0 || runs == 0 ? 2 : failed > 0 ? 1 : 0; }
+};
+
+/// Runs the suite. @throws std::runtime_error when DIR cannot be read or OUT cannot be written.
+SuiteResult RunSuite(const SuiteOptions& options);
+
+/// The scenario files of a folder, sorted by name.
+std::vector<std::string> SuiteScenarios(const std::string& dir);
+
+}  // namespace hil::harness

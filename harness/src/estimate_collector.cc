@@ -1,0 +1,50 @@
+#include "hil/harness/estimate_collector.h"
+
+#include <algorithm>
+
+#include "hil/firmware_emu/link/realtime_pacer.h"
+
+namespace hil::harness {
+
+EstimateCollector::EstimateCollector(std::unique_ptr<EstimateReader> reader, EstimatorProcess* process,
+                                     link::PtyPort* nav_pty, const std::string& raw_path)
+    : reader_(std::move(reader)), process_(process), nav_pty_(nav_pty), raw_(raw_path) {}
+
+void EstimateCollector::Consume(const std::string& line, std::int64_t wall_ns) {
+  raw_ << line << "\n";
+  ++lines_;
+  if (auto r = reader_->Line(line, wall_ns)) records_.push_back(*r);
+  else ++unparsed_;
+}
+
+void EstimateCollector::Poll() {
+  if (process_) {
+    for (const OutputLine& l : process_->TakeLines()) {
+      // with a pty output, stdout is only kept (diagnostics), never parsed as solutions
+      if (nav_pty_) raw_ << "# stdout: " << l.text << "\n";
+      else Consume(l.text, l.wall_ns);
+    }
+  }
+  if (nav_pty_) {
+    const std::string rx = nav_pty_->ReadAvailable();
+    if (!rx.empty()) {
+      const std::int64_t now = link::RealtimePacer::MonotonicNs();
+      pty_last_ns_ = now;
+      pty_partial_ += rx;
+      std::size_t pos;
+      while ((pos = pty_partial_.find('\n')) != std::string::npos) {
+        std::string line = pty_partial_.substr(0, pos);
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        pty_partial_.erase(0, pos + 1);
+        if (!line.empty()) Consume(line, now);
+      }
+    }
+  }
+}
+
+std::int64_t EstimateCollector::last_output_wall_ns() const {
+  const std::int64_t from_process = process_ && !nav_pty_ ? process_->last_output_wall_ns() : 0;
+  return std::max(from_process, pty_last_ns_);
+}
+
+}  // namespace hil::harness

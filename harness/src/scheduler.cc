@@ -1,0 +1,120 @@
+#include "hil/harness/scheduler.h"
+
+#include <cstdio>
+
+#include "hil/truth/truth_integrator.h"
+
+namespace hil::harness {
+
+Scheduler::Scheduler(const Scenario& scenario, DeviceSet& devices, ByteFaultInjector& faults,
+                     const link::RealtimePacer* pacer, std::ostream& fixes_csv)
+    : scenario_(scenario), set_(devices), faults_(faults), pacer_(pacer), fixes_csv_(fixes_csv) {}
+
+void Scheduler::Dispatch(std::size_t d, DeviceOutput& out) {
+  for (SerialMessage& m : out.serial) {
+    SerialEndpoint& ep = *set_.endpoints[d].at(static_cast<std::size_t>(m.port));
+    if (faults_.Apply(m, ep.link_name())) ep.Queue(m);
+  }
+  if (set_.can) {
+    for (const CanFrame& f : out.can) set_.can->Queue(f);
+  }
+  out.clear();
+  if (!pacer_) {
+    for (auto& ep : set_.endpoints[d]) ep->WriteAll();
+    if (set_.can) set_.can->SendAll();
+  }
+}
+
+void Scheduler::RecordFixes(Time t) {
+  for (const auto& source : set_.fix_sources) {
+    const gnss::GnssFix& fix = *source();
+    if (fix.t_validity != t || !fix.valid()) continue;
+    EstimateRecord r;
+    r.t_validity = fix.t_validity;
+    r.lat_deg = fix.lat_deg;
+    r.lon_deg = fix.lon_deg;
+    r.height_m = fix.height_m;
+    r.vel_enu_mps = Eigen::Vector3d(fix.vel_e_mps, fix.vel_n_mps, -fix.vel_d_mps);
+    fixes_.push_back(r);
+    char line[256];
+    std::snprintf(line, sizeof line, "%.3f,%.9f,%.9f,%.4f,%.4f,%.4f,%.4f,%d,%.2f\n", ToSeconds(fix.t_validity),
+                  fix.lat_deg, fix.lon_deg, fix.height_m, fix.vel_n_mps, fix.vel_e_mps, fix.vel_d_mps, fix.num_sv,
+                  fix.hdop);
+    fixes_csv_ << line;
+  }
+}
+
+void Scheduler::Run(const std::function<bool(Time)>& keep_going) {
+  truth::TruthIntegrator truth(scenario_.truth);
+  const Time t_end = TimeFromSeconds(scenario_.duration_s);
+  DeviceOutput out;
+  for (;;) {
+    // the next action in emulated time: a device event or (real time) a byte leaving a UART
+    std::optional<Time> t_event;
+    for (const auto& dev : set_.devices) {
+      if (!t_event || dev->next_event_time() < *t_event) t_event = dev->next_event_time();
+    }
+    if (!t_event) break;
+    if (pacer_) {
+      std::optional<Time> t_byte;
+      SerialEndpoint* ep_next = nullptr;
+      for (auto& ports : set_.endpoints) {
+        for (auto& ep : ports) {
+          const auto tb = ep->next_byte_time();
+          if (tb && (!t_byte || *tb < *t_byte)) {
+            t_byte = tb;
+            ep_next = ep.get();
+          }
+        }
+      }
+      const std::optional<Time> t_frame = set_.can ? set_.can->next_frame_time() : std::nullopt;
+      if (t_frame && (!t_byte || *t_frame <= *t_byte) && (*t_frame < *t_event || *t_event > t_end)) {
+        set_.can->SendNext(*pacer_);
+        continue;
+      }
+      if (ep_next && (*t_byte < *t_event || *t_event > t_end)) {
+        ep_next->WriteNextByte(*pacer_);
+        continue;
+      }
+      if (*t_event <= t_end) pacer_->SleepUntil(*t_event);
+    }
+    if (*t_event > t_end) break;
+    const TruthSample ts = truth.Sample(*t_event);
+    for (std::size_t d = 0; d < set_.devices.size(); ++d) {
+      if (set_.devices[d]->next_event_time() != *t_event) continue;
+      set_.devices[d]->OnEvent(ts, out);
+      Dispatch(d, out);
+    }
+    RecordFixes(*t_event);
+    // configuration commands from the host reach the device with their arrival time
+    for (std::size_t d = 0; d < set_.devices.size(); ++d) {
+      const Time t_host = pacer_ ? pacer_->SimTimeOfWall(link::RealtimePacer::MonotonicNs()) : *t_event;
+      for (std::size_t p = 0; p < set_.endpoints[d].size(); ++p) {
+        if (const std::string rx = set_.endpoints[d][p]->PollHost(t_host); !rx.empty()) {
+          set_.devices[d]->OnHostBytes(static_cast<int>(p), t_host, rx, out);
+          set_.endpoints[d][p]->set_baud(set_.devices[d]->baud(static_cast<int>(p)));
+          Dispatch(d, out);
+        }
+      }
+    }
+    if (set_.can) {
+      const Time t_bus = pacer_ ? pacer_->SimTimeOfWall(link::RealtimePacer::MonotonicNs()) : *t_event;
+      for (const CanFrame& f : set_.can->PollBus(t_bus)) bus_frames_.push_back(f);
+    }
+    if (!keep_going(*t_event)) break;
+  }
+}
+
+void Scheduler::Flush() {
+  if (!pacer_) return;
+  for (auto& ports : set_.endpoints) {
+    for (auto& ep : ports) {
+      while (ep->next_byte_time()) ep->WriteNextByte(*pacer_);
+    }
+  }
+  if (set_.can) {
+    while (set_.can->next_frame_time()) set_.can->SendNext(*pacer_);
+  }
+}
+
+}  // namespace hil::harness
