@@ -31,8 +31,9 @@ NavdConfig NavdConfig::FromFile(const ConfigFile& f) {
     } else if (e.section == "time" && e.key == "leap_seconds") {
       c.leap_seconds = ToInt(f, e, 0, 60);
     } else if (e.section == "filter" && e.key == "mode") {
-      if (e.value == "gnss_only") c.mode = NavMode::kGnssOnly;
-      else throw ConfigError(f.name(), e.line, field, "unknown mode '" + e.value + "' (known: gnss_only)");
+      const auto m = NavModeFromName(e.value.c_str());
+      if (!m) throw ConfigError(f.name(), e.line, field, "unknown mode '" + e.value + "' (known: ekf, planar2d, gnss_only, imu_only, multi_gnss)");
+      c.mode = *m;
     } else if (e.section == "output" && e.key == "json") {
       c.json_path = e.value;
     } else {

@@ -7,11 +7,9 @@
 #include <string>
 
 #include "hil/estimator/config_file.h"
+#include "hil/estimator/navigator.h"
 
 namespace hil::estimator {
-
-/// Filter mode.
-enum class NavMode { kGnssOnly };
 
 struct NavdConfig {
   // [input]
