@@ -25,7 +25,10 @@ void Propagate(const EarthModel& earth, const Eigen::Vector3d& dth, const Eigen:
   }
   // velocity: specific force resolved with the attitude at the start, rotation and sculling terms
   const Eigen::Matrix3d C_old = s.q_NB.toRotationMatrix();
-  const Eigen::Vector3d dv_N = C_old * (dv + 0.5 * dth.cross(dv) + sculling);
+  // (I − ½[ζ×]) accounts for N turning with the Earth over the interval, ζ = ω_IE·dt
+  const Eigen::Vector3d zeta = earth.w_IE_N_radps * dt;
+  const Eigen::Vector3d dv_rot = C_old * (dv + 0.5 * dth.cross(dv) + sculling);
+  const Eigen::Vector3d dv_N = dv_rot - 0.5 * zeta.cross(dv_rot);
   Eigen::Vector3d accel_N = earth.g_N_mps2;
   if (earth.coriolis) accel_N -= 2.0 * earth.w_IE_N_radps.cross(s.v_N_mps);
   const Eigen::Vector3d v_old = s.v_N_mps;

@@ -4,7 +4,7 @@
 /// in the local tangent frame N (ENU, Earth-fixed, origin fixed), with a quaternion attitude update.
 ///
 ///   q_NB(k+1) = Exp_N(−ω_IE·dt) ⊗ q_NB(k) ⊗ Exp_B(Δθ + coning)
-///   v(k+1)    = v(k) + C_NB(k)·(Δv + ½Δθ×Δv + sculling) + (g_N − 2ω_IE×v)·dt
+///   v(k+1)    = v(k) + (I − ½[ζ×])·C_NB(k)·(Δv + ½Δθ×Δv + sculling) + (g_N − 2ω_IE×v)·dt, ζ = ω_IE·dt
 ///   p(k+1)    = p(k) + ½(v(k) + v(k+1))·dt
 /// Coning and sculling use the previous interval's increments (two-sample, linear-rate assumption).
 /// The flat tangent frame is exact for an Earth-fixed frame apart from gravity's direction, which
