@@ -175,14 +175,23 @@ int main(int argc, char** argv) {
       if (o.t != last_emitted) emit(o);
     }
   });
+  const std::int64_t period_ns = static_cast<std::int64_t>(std::llround(1e9 / cfg.output_rate_hz));
   est::drivers::McuImuAdapter mcu_adapter;
   est::drivers::McuFrameDecoder mcu([&](const est::drivers::McuFrame& f) {
-    if (const auto s = mcu_adapter.Add(f)) nav.Push(*s);
+    const auto s = mcu_adapter.Add(f);
+    if (!s) return;
+    nav.Push(*s);
+    if (!imu_mode) return;
+    // each sample as it is decoded: run the filter to the horizon, one solution per output period
+    nav.Update();
+    if (!nav.aligned()) return;
+    if (last_emitted >= 0 && s->t / period_ns == last_emitted / period_ns) return;
+    const est::NavOutput o = nav.Output();
+    if (o.valid) emit(o);
   });
 
   hil::navd::SerialDevice gnss(cfg.gnss_device, cfg.gnss_baud);
   hil::navd::SerialDevice imu(cfg.imu_device, cfg.imu_baud);
-  const std::int64_t period_ns = static_cast<std::int64_t>(std::llround(1e9 / cfg.output_rate_hz));
   std::string buf;
   while (!g_stop) {
     pollfd p[2];
@@ -205,14 +214,6 @@ int main(int argc, char** argv) {
       if (devs[i] == &gnss) nmea.Feed(buf);
       else mcu.Feed(buf);
       if (!alive) usleep(100000);
-    }
-    if (imu_mode) {
-      nav.Update();
-      if (nav.aligned()) {
-        const est::NavOutput o = nav.Output();
-        // one solution per output period, on the IMU time grid
-        if (o.valid && (last_emitted < 0 || o.t / period_ns != last_emitted / period_ns)) emit(o);
-      }
     }
   }
   const auto& st = nmea.stats();

@@ -57,15 +57,15 @@ std::string FormatNmea0183(const NavOutput& o, std::int64_t utc_ns) {
   CivilFromDays(days, y, m, d);
   const std::string lat = LatLon(o.position.lat_deg, true), lon = LatLon(o.position.lon_deg, false);
   char buf[256];
-  // GGA: the ellipsoidal height as altitude with a zero geoid separation (the filter has no geoid)
-  std::snprintf(buf, sizeof buf, "GNGGA,%s,%s,%s,%d,08,1.0,%.3f,M,0.0,M,,", time, lat.c_str(), lon.c_str(), o.valid ? 1 : 0,
-                o.position.height_m);
-  std::string out = NmeaSentence(buf);
   const double speed_kn = o.v_N_mps.head<2>().norm() / 0.514444;
   double course = std::atan2(o.v_N_mps.x(), o.v_N_mps.y()) * 180.0 / M_PI;
   if (course < 0) course += 360.0;
   std::snprintf(buf, sizeof buf, "GNRMC,%s,%c,%s,%s,%.3f,%.2f,%02d%02d%02d,,,%c", time, o.valid ? 'A' : 'V', lat.c_str(),
                 lon.c_str(), speed_kn, course, d, m, y % 100, o.valid ? 'A' : 'N');
+  std::string out = NmeaSentence(buf);
+  // GGA: the ellipsoidal height as altitude with a zero geoid separation (the filter has no geoid)
+  std::snprintf(buf, sizeof buf, "GNGGA,%s,%s,%s,%d,08,1.0,%.3f,M,0.0,M,,", time, lat.c_str(), lon.c_str(), o.valid ? 1 : 0,
+                o.position.height_m);
   out += NmeaSentence(buf);
   if (o.has_attitude) {
     const Eigen::Vector3d x = o.q_NB * Eigen::Vector3d::UnitX();

@@ -1,7 +1,7 @@
 #pragma once
 /// @file
-/// NMEA 0183 sentences of the fused solution: GGA (position, quality), RMC (position, speed,
-/// course, date) and HDT (true heading), each with its checksum and CR LF. Talker "GN".
+/// NMEA 0183 sentences of the fused solution, in u-blox order: RMC (position, speed, course, date),
+/// GGA (position, quality) and HDT (true heading), each with its checksum and CR LF. Talker "GN".
 
 #include <cstdint>
 #include <string>
