@@ -16,6 +16,8 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <memory>
+#include <stdexcept>
 #include <numbers>
 #include <string>
 
@@ -28,6 +30,7 @@
 #include "hil/estimator/navd_config.h"
 #include "hil/estimator/navigator.h"
 #include "hil/estimator/outputs/nmea0183_writer.h"
+#include "can_output.h"
 #include "serial_device.h"
 
 namespace {
@@ -51,7 +54,8 @@ void PrintUsage() {
       "                  accel_noise, gyro_noise, accel_bias_rw, gyro_bias_rw, init_accel_bias_std,\n"
       "                  init_gyro_bias_std, gnss_error_tau_s, gnss_error_std_m, nhc_std_mps,\n"
       "                  gate_sigma, fusion_horizon_s, use_gnss_velocity\n"
-      "                  [output] json, rate_hz, nmea_device\n"
+      "                  [output] json, rate_hz, nmea_device, can_interface, can_log,\n"
+      "                  can_source_address, can_rate_hz\n"
       "  --help          this text\n"
       "examples:\n"
       "  navd --config /etc/navd.conf\n"
@@ -144,6 +148,14 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
+  std::unique_ptr<hil::navd::CanOutput> can;
+  try {
+    can = std::make_unique<hil::navd::CanOutput>(cfg.can_interface, cfg.can_log,
+                                                 static_cast<std::uint8_t>(cfg.can_source_address), cfg.can_rate_hz);
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "navd: [output] %s\n", e.what());
+    return 2;
+  }
   struct sigaction sa {};
   sa.sa_handler = OnSignal;
   sigaction(SIGTERM, &sa, nullptr);
@@ -163,6 +175,7 @@ int main(int argc, char** argv) {
       const std::string s = est::outputs::FormatNmea0183(o, est::UnixNsFromGpsNs(o.t, cfg.leap_seconds));
       if (write(nmea_fd, s.data(), s.size()) != static_cast<ssize_t>(s.size())) ++nmea_write_errors;
     }
+    can->Publish(o, est::UnixNsFromGpsNs(o.t, cfg.leap_seconds));
     last_emitted = o.t;
   };
 
@@ -222,7 +235,7 @@ int main(int argc, char** argv) {
   std::fprintf(stderr,
                "navd: stopped; nmea ok=%llu bad_checksum=%llu malformed=%llu unsupported=%llu garbage_bytes=%llu "
                "reopens=%llu; mcu frames=%llu bad_crc=%llu gaps=%llu; imu=%llu late_gnss=%llu fused=%llu "
-               "rejected=%llu resets=%llu nmea_write_errors=%llu\n",
+               "rejected=%llu resets=%llu nmea_write_errors=%llu can_frames=%llu can_errors=%llu\n",
                static_cast<unsigned long long>(st.sentences_ok), static_cast<unsigned long long>(st.bad_checksum),
                static_cast<unsigned long long>(st.malformed), static_cast<unsigned long long>(st.unsupported),
                static_cast<unsigned long long>(st.garbage_bytes), static_cast<unsigned long long>(gnss.reopen_count()),
@@ -230,7 +243,8 @@ int main(int argc, char** argv) {
                static_cast<unsigned long long>(mcu.stats().sequence_gaps), static_cast<unsigned long long>(ns.imu_samples),
                static_cast<unsigned long long>(ns.gnss_late), static_cast<unsigned long long>(ns.gnss_fused),
                static_cast<unsigned long long>(ns.gnss_rejected), static_cast<unsigned long long>(ns.gnss_resets),
-               static_cast<unsigned long long>(nmea_write_errors));
+               static_cast<unsigned long long>(nmea_write_errors), static_cast<unsigned long long>(can->frames_sent()),
+               static_cast<unsigned long long>(can->send_errors()));
   if (out != stdout) std::fclose(out);
   if (nmea_fd >= 0) close(nmea_fd);
   return 0;

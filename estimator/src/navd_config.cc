@@ -98,6 +98,10 @@ NavdConfig NavdConfig::FromFile(const ConfigFile& f) {
     } else if (s == "output" && k == "json") c.json_path = e.value;
     else if (s == "output" && k == "rate_hz") c.output_rate_hz = ToDouble(f, e, 0.1, 1000.0);
     else if (s == "output" && k == "nmea_device") c.nmea_device = e.value;
+    else if (s == "output" && k == "can_interface") c.can_interface = e.value;
+    else if (s == "output" && k == "can_log") c.can_log = e.value;
+    else if (s == "output" && k == "can_source_address") c.can_source_address = ToInt(f, e, 0, 251);
+    else if (s == "output" && k == "can_rate_hz") c.can_rate_hz = ToDouble(f, e, 0.1, 100.0);
     else throw ConfigError(f.name(), e.line, Field(e), "unknown key");
   }
   const bool needs_imu = c.nav.mode == NavMode::kEkf || c.nav.mode == NavMode::kPlanar2d || c.nav.mode == NavMode::kImuOnly;

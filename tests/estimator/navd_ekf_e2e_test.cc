@@ -61,7 +61,8 @@ TEST(NavdEkfE2eTest, FusesMcuImuAndNmeaIntoEkfSolutions) {
   ASSERT_EQ(mkfifo(imu.c_str(), 0600), 0);
   std::ofstream(conf) << "[input]\ngnss_device = " << gnss << "\nimu_device = " << imu
                       << "\n[filter]\nmode = ekf\nnhc_std_mps = 0.05\nfusion_horizon_s = 0.2\n[output]\njson = " << out
-                      << "\nrate_hz = 10\n";
+                      << "\nrate_hz = 10\ncan_log = " << (dir / "can.log").string() << "\nnmea_device = "
+                      << (dir / "nmea.txt").string() << "\n";
   const pid_t pid = fork();
   if (pid == 0) {
     execl((std::string(bin) + "/navd").c_str(), "navd", "--config", conf.c_str(), static_cast<char*>(nullptr));
@@ -136,6 +137,20 @@ TEST(NavdEkfE2eTest, FusesMcuImuAndNmeaIntoEkfSolutions) {
   const Eigen::Vector3d p_last = frame.ToLocal({48.0, last_lon, 500.0});
   EXPECT_NEAR(p_last.x(), 39.8, 0.5);  // the last solution ~0.2 s (fusion horizon) before the end
   EXPECT_GT(last_lon, first_lon);
+  // and the same solutions as NMEA 2000 frames (candump -l) and NMEA 0183 sentences
+  std::ifstream can_log(dir / "can.log");
+  int rapid = 0, fast = 0;
+  for (std::string line; std::getline(can_log, line);) {
+    if (line.find(" can0 09F80180#") != std::string::npos) ++rapid;
+    if (line.find(" can0 0DF80580#") != std::string::npos) ++fast;
+  }
+  EXPECT_GT(rapid, 300);
+  EXPECT_EQ(fast % 7, 0);
+  EXPECT_GT(fast, 7 * 30);
+  std::ifstream nmea_out(dir / "nmea.txt");
+  int gga = 0;
+  for (std::string line; std::getline(nmea_out, line);) gga += line.rfind("$GNGGA,", 0) == 0;
+  EXPECT_EQ(gga, lines);
   std::filesystem::remove_all(dir);
 }
 

@@ -26,6 +26,10 @@ struct NavdConfig {
   std::string json_path = "-";   ///< JSON lines: "-" for stdout, or a file path
   double output_rate_hz = 10.0;  ///< IMU modes: solution rate (GNSS-only modes: one per fix)
   std::string nmea_device;       ///< NMEA 0183 output (GGA, RMC, HDT) to this file/pty; empty = off
+  std::string can_interface;     ///< NMEA 2000 output on this SocketCAN interface; empty = off
+  std::string can_log;           ///< NMEA 2000 frames as `candump -l` lines to this file; empty = off
+  int can_source_address = 0x80; ///< NMEA 2000 source address
+  double can_rate_hz = 10.0;     ///< 129025/129026/127250/127257 rate (129029 at 1 Hz)
 
   /// NavMode shortcut.
   NavMode mode() const { return nav.mode; }
