@@ -84,7 +84,7 @@ TEST(NavigatorScenarioTest, Seed000FusedRmseBeatsRawGnss) {
   EXPECT_GT(raw, 0.25);  // the raw errors are NEO-5M-like, not trivially small
 }
 
-TEST(NavigatorScenarioTest, Seed000PlanarModeIsWorseThanEkf) {
+TEST(NavigatorScenarioTest, Seed000PlanarModeTracksThePath) {
   const Eigen::Vector3d lever(0.84, 0.0, 0.6);
   NavigatorParams p = Seed000Params(lever);
   p.mode = NavMode::kPlanar2d;
@@ -93,7 +93,9 @@ TEST(NavigatorScenarioTest, Seed000PlanarModeIsWorseThanEkf) {
   sim.run_for(600.0);
   std::printf("seed000 planar2d: fused RMSE %.3f m, raw %.3f m\n", sim.score().Rmse(60.0), sim.score().RawRmse(60.0));
   EXPECT_TRUE(nav.aligned());
-  EXPECT_LT(sim.score().Rmse(60.0), 3.0);  // it tracks, but without the error model it cannot beat 0.6×
+  // the paper's planar filter, kept for comparison: it tracks but, without bias or GNSS-error
+  // states, does not beat the raw fixes here (measured 1.0 m vs 0.43 m raw)
+  EXPECT_LT(sim.score().Rmse(60.0), 3.0);
 }
 
 /// Tactical-lite MEMS: ARW 0.1 °/√h, bias instability 0.5 °/h (τ 100 s), VRW 0.03 m/s/√h, accel bias
