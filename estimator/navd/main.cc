@@ -26,6 +26,7 @@
 #include "hil/estimator/drivers/mcu_imu_adapter.h"
 #include "hil/estimator/drivers/nmea_decoder.h"
 #include "hil/estimator/drivers/nmea_epoch.h"
+#include "hil/estimator/drivers/ubx_decoder.h"
 #include "hil/estimator/nav_solution.h"
 #include "hil/estimator/navd_config.h"
 #include "hil/estimator/navigator.h"
@@ -48,7 +49,8 @@ void PrintUsage() {
       "  status) to [output] json, and NMEA 0183 (GGA, RMC, HDT) to [output] nmea_device.\n"
       "options:\n"
       "  --config FILE   configuration (INI; every key is documented in navd.conf.example):\n"
-      "                  [input] gnss_device, gnss_baud, imu_device, imu_baud, imu_format\n"
+      "                  [input] gnss_device, gnss_baud, gnss_protocol (nmea|ubx), imu_device,\n"
+      "                  imu_baud, imu_format\n"
       "                  [time] leap_seconds\n"
       "                  [filter] mode (ekf|planar2d|gnss_only|imu_only|multi_gnss), lever_arm_m,\n"
       "                  accel_noise, gyro_noise, accel_bias_rw, gyro_bias_rw, init_accel_bias_std,\n"
@@ -190,6 +192,17 @@ int main(int argc, char** argv) {
     }
   });
   const std::int64_t period_ns = static_cast<std::int64_t>(std::llround(1e9 / cfg.output_rate_hz));
+  est::drivers::UbxEpochAssembler ubx_epochs;
+  est::drivers::UbxDecoder ubx([&](const est::drivers::UbxMessage& msg) {
+    const auto g = ubx_epochs.Add(msg);
+    if (!g) return;
+    nav.Push(*g);
+    if (!imu_mode) {
+      const est::NavOutput o = nav.Output();
+      if (o.t != last_emitted) emit(o);
+    }
+  });
+  const bool gnss_ubx = cfg.gnss_protocol == "ubx";
   est::drivers::McuImuAdapter mcu_adapter;
   est::drivers::McuFrameDecoder mcu([&](const est::drivers::McuFrame& f) {
     const auto s = mcu_adapter.Add(f);
@@ -225,7 +238,8 @@ int main(int argc, char** argv) {
       if (!(p[i].revents & (POLLIN | POLLHUP | POLLERR))) continue;
       buf.clear();
       const bool alive = devs[i]->Read(buf);
-      if (devs[i] == &gnss) nmea.Feed(buf);
+      if (devs[i] == &gnss && gnss_ubx) ubx.Feed(buf);
+      else if (devs[i] == &gnss) nmea.Feed(buf);
       else mcu.Feed(buf);
       if (!alive) usleep(100000);
     }
@@ -235,7 +249,7 @@ int main(int argc, char** argv) {
   std::fprintf(stderr,
                "navd: stopped; nmea ok=%llu bad_checksum=%llu malformed=%llu unsupported=%llu garbage_bytes=%llu "
                "reopens=%llu; mcu frames=%llu bad_crc=%llu gaps=%llu; imu=%llu late_gnss=%llu fused=%llu "
-               "rejected=%llu resets=%llu nmea_write_errors=%llu can_frames=%llu can_errors=%llu\n",
+               "rejected=%llu resets=%llu ubx ok=%llu bad_checksum=%llu nmea_write_errors=%llu can_frames=%llu can_errors=%llu\n",
                static_cast<unsigned long long>(st.sentences_ok), static_cast<unsigned long long>(st.bad_checksum),
                static_cast<unsigned long long>(st.malformed), static_cast<unsigned long long>(st.unsupported),
                static_cast<unsigned long long>(st.garbage_bytes), static_cast<unsigned long long>(gnss.reopen_count()),
@@ -243,6 +257,7 @@ int main(int argc, char** argv) {
                static_cast<unsigned long long>(mcu.stats().sequence_gaps), static_cast<unsigned long long>(ns.imu_samples),
                static_cast<unsigned long long>(ns.gnss_late), static_cast<unsigned long long>(ns.gnss_fused),
                static_cast<unsigned long long>(ns.gnss_rejected), static_cast<unsigned long long>(ns.gnss_resets),
+               static_cast<unsigned long long>(ubx.stats().frames_ok), static_cast<unsigned long long>(ubx.stats().bad_checksum),
                static_cast<unsigned long long>(nmea_write_errors), static_cast<unsigned long long>(can->frames_sent()),
                static_cast<unsigned long long>(can->send_errors()));
   if (out != stdout) std::fclose(out);

@@ -68,7 +68,10 @@ NavdConfig NavdConfig::FromFile(const ConfigFile& f) {
     EkfParams& ekf = c.nav.ekf;
     if (s == "input" && k == "gnss_device") c.gnss_device = e.value;
     else if (s == "input" && k == "gnss_baud") c.gnss_baud = ToInt(f, e, 1200, 921600);
-    else if (s == "input" && k == "imu_device") c.imu_device = e.value;
+    else if (s == "input" && k == "gnss_protocol") {
+      if (e.value != "nmea" && e.value != "ubx") throw ConfigError(f.name(), e.line, Field(e), "unknown protocol '" + e.value + "' (known: nmea, ubx)");
+      c.gnss_protocol = e.value;
+    } else if (s == "input" && k == "imu_device") c.imu_device = e.value;
     else if (s == "input" && k == "imu_baud") c.imu_baud = ToInt(f, e, 1200, 921600);
     else if (s == "input" && k == "imu_format") {
       if (e.value != "mcu") throw ConfigError(f.name(), e.line, Field(e), "unknown IMU format '" + e.value + "' (known: mcu)");

@@ -15,6 +15,7 @@ struct NavdConfig {
   // [input]
   std::string gnss_device;       ///< serial device of the GNSS receiver (NMEA); empty = none
   int gnss_baud = 9600;
+  std::string gnss_protocol = "nmea";  ///< nmea (GGA + RMC) or ubx (NAV-POSLLH/VELNED/SOL)
   std::string imu_device;        ///< serial device of the IMU microcontroller; empty = none
   int imu_baud = 57600;
   std::string imu_format = "mcu";///< mcu (binary frame protocol v1)
