@@ -44,7 +44,7 @@ void PrintUsage() {
   std::printf(
       "usage: navd --config FILE\n"
       "  The production GNSS/INS estimator daemon. Reads the devices named in FILE (GNSS receiver:\n"
-      "  NMEA 0183; IMU microcontroller: binary frame protocol v1), runs the estimator, and writes\n"
+      "  NMEA 0183 or UBX; IMU microcontroller: binary frame protocol v1), runs the estimator, and writes\n"
       "  one JSON object per solution (time of validity, position, velocity, attitude, covariance,\n"
       "  status) to [output] json, and NMEA 0183 (GGA, RMC, HDT) to [output] nmea_device.\n"
       "options:\n"
