@@ -1,42 +1,108 @@
 // navd — the production GNSS/INS estimator daemon.
 //
-// Reads its devices (see navd.conf.example), feeds the estimator, and writes the solution as JSON
-// lines. Runs until SIGTERM/SIGINT; survives devices that close and reopen.
+// A thin poll loop: reads its devices (see navd.conf.example), decodes them with the tolerant
+// drivers, pushes the samples into the transport-free Navigator, and writes the solution as JSON
+// lines (and NMEA 0183 when configured). Runs until SIGTERM/SIGINT; survives devices that close
+// and reopen.
 
+#include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <memory>
+#include <stdexcept>
 #include <numbers>
 #include <string>
 
 #include "hil/estimator/config_file.h"
+#include "hil/estimator/drivers/mcu_frame_decoder.h"
+#include "hil/estimator/drivers/mcu_imu_adapter.h"
 #include "hil/estimator/drivers/nmea_decoder.h"
 #include "hil/estimator/drivers/nmea_epoch.h"
+#include "hil/estimator/drivers/ubx_decoder.h"
 #include "hil/estimator/nav_solution.h"
 #include "hil/estimator/navd_config.h"
+#include "hil/estimator/navigator.h"
+#include "hil/estimator/outputs/nmea0183_writer.h"
+#include "can_output.h"
 #include "serial_device.h"
 
 namespace {
 
+namespace est = hil::estimator;
 volatile std::sig_atomic_t g_stop = 0;
 void OnSignal(int) { g_stop = 1; }
 
 void PrintUsage() {
   std::printf(
       "usage: navd --config FILE\n"
-      "  The production GNSS/INS estimator daemon. Reads the devices named in FILE and writes one\n"
-      "  JSON object per solution (time of validity, position, velocity, status) to [output] json.\n"
+      "  The production GNSS/INS estimator daemon. Reads the devices named in FILE (GNSS receiver:\n"
+      "  NMEA 0183 or UBX; IMU microcontroller: binary frame protocol v1), runs the estimator, and writes\n"
+      "  one JSON object per solution (time of validity, position, velocity, attitude, covariance,\n"
+      "  status) to [output] json, and NMEA 0183 (GGA, RMC, HDT) to [output] nmea_device.\n"
       "options:\n"
-      "  --config FILE   configuration (INI: [input] gnss_device, gnss_baud; [time] leap_seconds;\n"
-      "                  [filter] mode; [output] json)\n"
+      "  --config FILE   configuration (INI; every key is documented in navd.conf.example):\n"
+      "                  [input] gnss_device, gnss_baud, gnss_protocol (nmea|ubx), imu_device,\n"
+      "                  imu_baud, imu_format\n"
+      "                  [time] leap_seconds\n"
+      "                  [filter] mode (ekf|planar2d|gnss_only|imu_only|multi_gnss), lever_arm_m,\n"
+      "                  accel_noise, gyro_noise, accel_bias_rw, gyro_bias_rw, init_accel_bias_std,\n"
+      "                  init_gyro_bias_std, gnss_error_tau_s, gnss_error_std_m, nhc_std_mps,\n"
+      "                  gate_sigma, fusion_horizon_s, use_gnss_velocity\n"
+      "                  [output] json, rate_hz, nmea_device, can_interface, can_log,\n"
+      "                  can_source_address, can_rate_hz\n"
       "  --help          this text\n"
-      "example:\n"
-      "  navd --config /etc/navd.conf\n");
+      "examples:\n"
+      "  navd --config /etc/navd.conf\n"
+      "  navd --config navd.conf > solution.jsonl\n");
+}
+
+est::GnssSample ToGnssSample(const est::drivers::NmeaMeasurement& m, int leap_s) {
+  est::GnssSample g;
+  g.t = est::GpsNsFromUnixNs(m.tov_unix_ns, leap_s);
+  g.position = {m.lat_deg, m.lon_deg, m.height_m};
+  const double sigma = m.hdop.value_or(5.0) * 2.5 / std::numbers::sqrt2;  // UERE ≈ 2.5 m
+  g.pos_std_enu_m = {sigma, sigma, 2.0 * sigma};
+  g.fix_quality = m.quality;
+  g.num_sv = m.num_sv;
+  if (m.speed_mps && m.course_deg) {
+    const double c = *m.course_deg * std::numbers::pi / 180.0;
+    g.vel_enu_mps = {*m.speed_mps * std::sin(c), *m.speed_mps * std::cos(c), 0.0};
+    g.has_velocity = true;
+  }
+  return g;
+}
+
+est::NavSolution ToSolution(const est::NavOutput& o, const est::Navigator& nav, int leap_s) {
+  est::NavSolution s;
+  s.tov_unix_ns = est::UnixNsFromGpsNs(o.t, leap_s);
+  s.lat_deg = o.position.lat_deg;
+  s.lon_deg = o.position.lon_deg;
+  s.height_m = o.position.height_m;
+  s.vel_enu_mps = {o.v_N_mps.x(), o.v_N_mps.y(), o.v_N_mps.z()};
+  s.pos_std_enu_m = {o.pos_std_enu_m.x(), o.pos_std_enu_m.y(), o.pos_std_enu_m.z()};
+  if (o.has_attitude) {
+    const Eigen::Vector3d x = o.q_NB * Eigen::Vector3d::UnitX(), y = o.q_NB * Eigen::Vector3d::UnitY();
+    s.yaw_deg = std::fmod(90.0 - std::atan2(x.y(), x.x()) * 180.0 / std::numbers::pi + 360.0, 360.0);
+    const est::NavMode m = nav.params().mode;
+    if (m == est::NavMode::kEkf || m == est::NavMode::kImuOnly) {
+      s.pitch_deg = std::asin(std::clamp(x.z(), -1.0, 1.0)) * 180.0 / std::numbers::pi;
+      s.roll_deg = -std::asin(std::clamp(y.z(), -1.0, 1.0)) * 180.0 / std::numbers::pi;
+      s.vel_std_enu_mps = std::array<double, 3>{o.vel_std_enu_mps.x(), o.vel_std_enu_mps.y(), o.vel_std_enu_mps.z()};
+      s.nis_pos = nav.stats().last_nis_pos;
+      s.mean_nis_pos = nav.stats().mean_nis_pos;
+    }
+  }
+  s.mode = est::NavModeName(nav.params().mode);
+  s.status_flags = o.status;
+  return s;
 }
 
 }  // namespace
@@ -60,10 +126,10 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "navd: --config FILE is required (see navd --help)\n");
     return 2;
   }
-  hil::estimator::NavdConfig cfg;
+  est::NavdConfig cfg;
   try {
-    cfg = hil::estimator::NavdConfig::FromFile(hil::estimator::ConfigFile::Load(config_path));
-  } catch (const hil::estimator::ConfigError& e) {
+    cfg = est::NavdConfig::FromFile(est::ConfigFile::Load(config_path));
+  } catch (const est::ConfigError& e) {
     std::fprintf(stderr, "navd: %s\n", e.what());
     return 2;
   }
@@ -76,56 +142,125 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
+  int nmea_fd = -1;
+  if (!cfg.nmea_device.empty()) {
+    nmea_fd = open(cfg.nmea_device.c_str(), O_WRONLY | O_NOCTTY | O_NONBLOCK | O_CREAT | O_APPEND, 0644);
+    if (nmea_fd < 0) {
+      std::fprintf(stderr, "navd: cannot open [output] nmea_device %s: %s\n", cfg.nmea_device.c_str(), std::strerror(errno));
+      return 2;
+    }
+  }
+  std::unique_ptr<hil::navd::CanOutput> can;
+  try {
+    can = std::make_unique<hil::navd::CanOutput>(cfg.can_interface, cfg.can_log,
+                                                 static_cast<std::uint8_t>(cfg.can_source_address), cfg.can_rate_hz);
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "navd: [output] %s\n", e.what());
+    return 2;
+  }
   struct sigaction sa {};
   sa.sa_handler = OnSignal;
   sigaction(SIGTERM, &sa, nullptr);
   sigaction(SIGINT, &sa, nullptr);
   signal(SIGPIPE, SIG_IGN);
 
-  hil::estimator::drivers::NmeaEpochAssembler assembler;
-  hil::estimator::drivers::NmeaDecoder decoder([&](const hil::estimator::drivers::NmeaFix& fix) {
-    const auto m = assembler.Add(fix);
-    if (!m) return;
-    hil::estimator::NavSolution s;
-    s.tov_unix_ns = m->tov_unix_ns;
-    s.lat_deg = m->lat_deg;
-    s.lon_deg = m->lon_deg;
-    s.height_m = m->height_m;
-    if (m->speed_mps) {
-      const double course = m->course_deg.value_or(0.0) * std::numbers::pi / 180.0;
-      s.vel_enu_mps = {*m->speed_mps * std::sin(course), *m->speed_mps * std::cos(course), 0.0};
-      if (m->course_deg) s.yaw_deg = *m->course_deg;
-    }
-    const double sigma = m->hdop.value_or(5.0) * 2.5 / std::numbers::sqrt2;  // UERE ≈ 2.5 m
-    s.pos_std_enu_m = {sigma, sigma, 2.0 * sigma};
-    s.mode = "gnss_only";
-    const std::string line = hil::estimator::ToJsonLine(s);
+  est::Navigator nav(cfg.nav);
+  const bool imu_mode = cfg.mode() == est::NavMode::kEkf || cfg.mode() == est::NavMode::kPlanar2d ||
+                        cfg.mode() == est::NavMode::kImuOnly;
+  std::uint64_t nmea_write_errors = 0;
+  est::GpsNs last_emitted = -1;
+  const auto emit = [&](const est::NavOutput& o) {
+    const std::string line = est::ToJsonLine(ToSolution(o, nav, cfg.leap_seconds));
     std::fwrite(line.data(), 1, line.size(), out);
     std::fflush(out);
+    if (nmea_fd >= 0) {
+      const std::string s = est::outputs::FormatNmea0183(o, est::UnixNsFromGpsNs(o.t, cfg.leap_seconds));
+      if (write(nmea_fd, s.data(), s.size()) != static_cast<ssize_t>(s.size())) ++nmea_write_errors;
+    }
+    can->Publish(o, est::UnixNsFromGpsNs(o.t, cfg.leap_seconds));
+    last_emitted = o.t;
+  };
+
+  est::drivers::NmeaEpochAssembler assembler;
+  est::drivers::NmeaDecoder nmea([&](const est::drivers::NmeaFix& fix) {
+    const auto m = assembler.Add(fix);
+    if (!m) return;
+    nav.Push(ToGnssSample(*m, cfg.leap_seconds));
+    if (!imu_mode) {
+      const est::NavOutput o = nav.Output();
+      if (o.t != last_emitted) emit(o);
+    }
+  });
+  const std::int64_t period_ns = static_cast<std::int64_t>(std::llround(1e9 / cfg.output_rate_hz));
+  est::drivers::UbxEpochAssembler ubx_epochs;
+  est::drivers::UbxDecoder ubx([&](const est::drivers::UbxMessage& msg) {
+    const auto g = ubx_epochs.Add(msg);
+    if (!g) return;
+    nav.Push(*g);
+    if (!imu_mode) {
+      const est::NavOutput o = nav.Output();
+      if (o.t != last_emitted) emit(o);
+    }
+  });
+  const bool gnss_ubx = cfg.gnss_protocol == "ubx";
+  est::drivers::McuImuAdapter mcu_adapter;
+  est::drivers::McuFrameDecoder mcu([&](const est::drivers::McuFrame& f) {
+    const auto s = mcu_adapter.Add(f);
+    if (!s) return;
+    nav.Push(*s);
+    if (!imu_mode) return;
+    // each sample as it is decoded: run the filter to the horizon, one solution per output period
+    nav.Update();
+    if (!nav.aligned()) return;
+    if (last_emitted >= 0 && s->t / period_ns == last_emitted / period_ns) return;
+    const est::NavOutput o = nav.Output();
+    if (o.valid) emit(o);
   });
 
   hil::navd::SerialDevice gnss(cfg.gnss_device, cfg.gnss_baud);
+  hil::navd::SerialDevice imu(cfg.imu_device, cfg.imu_baud);
   std::string buf;
   while (!g_stop) {
-    if (gnss.EnsureOpen() < 0) {
+    pollfd p[2];
+    nfds_t n = 0;
+    hil::navd::SerialDevice* devs[2];
+    for (hil::navd::SerialDevice* d : {&gnss, &imu}) {
+      if (d->path().empty() || d->EnsureOpen() < 0) continue;
+      p[n] = {d->fd(), POLLIN, 0};
+      devs[n++] = d;
+    }
+    if (n == 0) {
       usleep(100000);
       continue;
     }
-    pollfd p{gnss.fd(), POLLIN, 0};
-    const int r = poll(&p, 1, 200);
-    if (r <= 0) continue;
-    buf.clear();
-    const bool alive = gnss.Read(buf);
-    decoder.Feed(buf);
-    if (!alive) usleep(100000);
+    if (poll(p, n, 200) <= 0) continue;
+    for (nfds_t i = 0; i < n; ++i) {
+      if (!(p[i].revents & (POLLIN | POLLHUP | POLLERR))) continue;
+      buf.clear();
+      const bool alive = devs[i]->Read(buf);
+      if (devs[i] == &gnss && gnss_ubx) ubx.Feed(buf);
+      else if (devs[i] == &gnss) nmea.Feed(buf);
+      else mcu.Feed(buf);
+      if (!alive) usleep(100000);
+    }
   }
-  const auto& st = decoder.stats();
+  const auto& st = nmea.stats();
+  const auto& ns = nav.stats();
   std::fprintf(stderr,
                "navd: stopped; nmea ok=%llu bad_checksum=%llu malformed=%llu unsupported=%llu garbage_bytes=%llu "
-               "reopens=%llu\n",
+               "reopens=%llu; mcu frames=%llu bad_crc=%llu gaps=%llu; imu=%llu late_gnss=%llu fused=%llu "
+               "rejected=%llu resets=%llu ubx ok=%llu bad_checksum=%llu nmea_write_errors=%llu can_frames=%llu can_errors=%llu\n",
                static_cast<unsigned long long>(st.sentences_ok), static_cast<unsigned long long>(st.bad_checksum),
                static_cast<unsigned long long>(st.malformed), static_cast<unsigned long long>(st.unsupported),
-               static_cast<unsigned long long>(st.garbage_bytes), static_cast<unsigned long long>(gnss.reopen_count()));
+               static_cast<unsigned long long>(st.garbage_bytes), static_cast<unsigned long long>(gnss.reopen_count()),
+               static_cast<unsigned long long>(mcu.stats().frames_ok), static_cast<unsigned long long>(mcu.stats().bad_crc),
+               static_cast<unsigned long long>(mcu.stats().sequence_gaps), static_cast<unsigned long long>(ns.imu_samples),
+               static_cast<unsigned long long>(ns.gnss_late), static_cast<unsigned long long>(ns.gnss_fused),
+               static_cast<unsigned long long>(ns.gnss_rejected), static_cast<unsigned long long>(ns.gnss_resets),
+               static_cast<unsigned long long>(ubx.stats().frames_ok), static_cast<unsigned long long>(ubx.stats().bad_checksum),
+               static_cast<unsigned long long>(nmea_write_errors), static_cast<unsigned long long>(can->frames_sent()),
+               static_cast<unsigned long long>(can->send_errors()));
   if (out != stdout) std::fclose(out);
+  if (nmea_fd >= 0) close(nmea_fd);
   return 0;
 }

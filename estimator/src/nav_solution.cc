@@ -18,6 +18,23 @@ std::string ToJsonLine(const NavSolution& s) {
     n = std::snprintf(buf, sizeof buf, ",\"yaw_deg\":%.4f", *s.yaw_deg);
     out.append(buf, static_cast<std::size_t>(n));
   }
+  if (s.roll_deg && s.pitch_deg) {
+    n = std::snprintf(buf, sizeof buf, ",\"roll_deg\":%.4f,\"pitch_deg\":%.4f", *s.roll_deg, *s.pitch_deg);
+    out.append(buf, static_cast<std::size_t>(n));
+  }
+  if (s.vel_std_enu_mps) {
+    const auto& v = *s.vel_std_enu_mps;
+    n = std::snprintf(buf, sizeof buf, ",\"vel_std_enu_mps\":[%.4f,%.4f,%.4f]", v[0], v[1], v[2]);
+    out.append(buf, static_cast<std::size_t>(n));
+  }
+  if (s.nis_pos) {
+    n = std::snprintf(buf, sizeof buf, ",\"nis_pos\":%.3f", *s.nis_pos);
+    out.append(buf, static_cast<std::size_t>(n));
+  }
+  if (s.mean_nis_pos) {
+    n = std::snprintf(buf, sizeof buf, ",\"mean_nis_pos\":%.3f", *s.mean_nis_pos);
+    out.append(buf, static_cast<std::size_t>(n));
+  }
   n = std::snprintf(buf, sizeof buf, ",\"mode\":\"%s\",\"status\":%u}\n", s.mode.c_str(), s.status_flags);
   out.append(buf, static_cast<std::size_t>(n));
   return out;

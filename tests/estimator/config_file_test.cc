@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <string>
+
 #include "hil/estimator/navd_config.h"
 
 namespace hil::estimator {
@@ -32,6 +35,38 @@ TEST(ConfigFileTest, ErrorsNameFileLineAndKey) {
   }
   EXPECT_THROW(ConfigFile::Parse("[input\n", "x"), ConfigError);
   EXPECT_THROW(ConfigFile::Load("/nonexistent/navd.conf"), ConfigError);
+}
+
+
+TEST(ConfigFileTest, ReferenceExampleIsValidAndComplete) {
+  const char* src = std::getenv("HIL_SOURCE_DIR");
+  ASSERT_NE(src, nullptr);
+  const NavdConfig c = NavdConfig::FromFile(ConfigFile::Load(std::string(src) + "/estimator/navd/navd.conf.example"));
+  EXPECT_EQ(c.mode(), NavMode::kEkf);
+  EXPECT_EQ(c.imu_device, "/dev/ttyIMU");
+  EXPECT_DOUBLE_EQ(c.nav.ekf.lever_arm_B_m.x(), 0.84);
+  EXPECT_DOUBLE_EQ(c.nav.ekf.gnss_error_tau_s, 4.5);
+  EXPECT_EQ(c.nav.fusion_horizon_ns, 300'000'000);
+  EXPECT_TRUE(c.nmea_device.empty());
+}
+
+TEST(ConfigFileTest, FilterSchemaErrorsAreClear) {
+  const auto err = [](const std::string& text) {
+    try {
+      NavdConfig::FromFile(ConfigFile::Parse(text, "n.conf"));
+    } catch (const ConfigError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(NavdConfig::FromFile(ConfigFile::Parse("[filter]\nmode = gnss_only\n", "n.conf")).mode(), NavMode::kGnssOnly);
+  EXPECT_EQ(err("[filter]\nmode = kalman\n"),
+            "n.conf:2: [filter] mode: unknown mode 'kalman' (known: ekf, planar2d, gnss_only, imu_only, multi_gnss)");
+  EXPECT_EQ(err("[filter]\nmode = ekf\n"), "n.conf:2: [filter] mode: mode ekf needs [input] imu_device");
+  EXPECT_EQ(err("[filter]\nlever_arm_m = 1, 2\n"),
+            "n.conf:2: [filter] lever_arm_m: expected three comma-separated numbers 'x, y, z', got '1, 2'");
+  EXPECT_EQ(err("[filter]\nnhc_std_mps = -1\n"), "n.conf:2: [filter] nhc_std_mps: value -1 out of range [0, 10]");
+  EXPECT_EQ(err("[input]\nimu_format = razor\n"), "n.conf:2: [input] imu_format: unknown IMU format 'razor' (known: mcu)");
 }
 
 }  // namespace

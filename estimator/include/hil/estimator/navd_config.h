@@ -7,23 +7,33 @@
 #include <string>
 
 #include "hil/estimator/config_file.h"
+#include "hil/estimator/navigator.h"
 
 namespace hil::estimator {
 
-/// Filter mode.
-enum class NavMode { kGnssOnly };
-
 struct NavdConfig {
   // [input]
-  std::string gnss_device;       ///< serial device of the GNSS receiver (NMEA/UBX); empty = none
+  std::string gnss_device;       ///< serial device of the GNSS receiver (NMEA); empty = none
   int gnss_baud = 9600;
+  std::string gnss_protocol = "nmea";  ///< nmea (GGA + RMC) or ubx (NAV-POSLLH/VELNED/SOL)
+  std::string imu_device;        ///< serial device of the IMU microcontroller; empty = none
+  int imu_baud = 57600;
+  std::string imu_format = "mcu";///< mcu (binary frame protocol v1)
   // [time]
   int leap_seconds = 18;         ///< GPS − UTC until the receiver reports it
-  // [filter]
-  NavMode mode = NavMode::kGnssOnly;
+  // [filter]: mode and the estimator parameters (navigator.h, error_state_ekf.h)
+  NavigatorParams nav;
   // [output]
   std::string json_path = "-";   ///< JSON lines: "-" for stdout, or a file path
+  double output_rate_hz = 10.0;  ///< IMU modes: solution rate (GNSS-only modes: one per fix)
+  std::string nmea_device;       ///< NMEA 0183 output (GGA, RMC, HDT) to this file/pty; empty = off
+  std::string can_interface;     ///< NMEA 2000 output on this SocketCAN interface; empty = off
+  std::string can_log;           ///< NMEA 2000 frames as `candump -l` lines to this file; empty = off
+  int can_source_address = 0x80; ///< NMEA 2000 source address
+  double can_rate_hz = 10.0;     ///< 129025/129026/127250/127257 rate (129029 at 1 Hz)
 
+  /// NavMode shortcut.
+  NavMode mode() const { return nav.mode; }
   /// Validates a parsed file. @throws ConfigError naming file, line and key.
   static NavdConfig FromFile(const ConfigFile& file);
 };

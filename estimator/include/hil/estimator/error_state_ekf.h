@@ -1,0 +1,147 @@
+#pragma once
+/// @file
+/// @system
+/// name: ErrorStateEkf (loosely coupled GNSS/INS, closed loop)
+/// input: bias-compensated IMU increments (predict, IMU rate); GNSS antenna position and velocity,
+///        non-holonomic pseudo-measurements, heading (updates)
+/// output: nominal NavState, biases, covariance, NIS of the last update, status flags
+/// @endsystem
+///
+/// Error state (kNumStates = 18, fixed-size):
+///   δp (N, m) | δv (N, m/s) | φ (attitude error in N, rad; C_true = Exp(φ)·Ĉ) | δb_a (B, m/s²) |
+///   δb_g (B, rad/s) | e_gnss (N, m: first-order Gauss–Markov GNSS position error, optional)
+/// The first 15 are the classic INS error states (paper 004); the three augmented states model the
+/// time-correlated error of a standalone receiver (NEO-5M class, τ of seconds) so it is not mistaken
+/// for vehicle motion. With gnss_error_tau_s = 0 they are frozen at zero (a plain 15-state filter).
+/// Continuous error dynamics (ENU, Earth-fixed tangent frame):
+///   δṗ = δv;  δv̇ = −[(Ĉf̂)×]φ − Ĉδb_a − 2[ω_IE×]δv;  φ̇ = −[ω_IE×]φ − Ĉδb_g;
+///   δḃ = w (random walk);  ė = −e/τ + w.
+/// Φ = I + F·dt per IMU interval; Joseph-form updates; every update is χ²-gated on its NIS.
+/// The filter never throws or aborts on input; non-finite inputs are counted and rejected.
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <Eigen/Cholesky>
+#include <cstdint>
+
+#include "hil/estimator/mechanization.h"
+
+namespace hil::estimator {
+
+/// State-vector layout.
+namespace ekf_index {
+inline constexpr int kPos = 0;
+inline constexpr int kVel = 3;
+inline constexpr int kAtt = 6;
+inline constexpr int kAccelBias = 9;
+inline constexpr int kGyroBias = 12;
+inline constexpr int kGnssError = 15;
+inline constexpr int kNumStates = 18;
+}  // namespace ekf_index
+
+using EkfVector = Eigen::Matrix<double, ekf_index::kNumStates, 1>;
+using EkfMatrix = Eigen::Matrix<double, ekf_index::kNumStates, ekf_index::kNumStates>;
+
+/// Filter parameters (constant for a run). Noise densities are continuous-time.
+struct EkfParams {
+  double accel_noise_mps2_rthz = 0.02;        ///< velocity random walk (m/s/√s)
+  double gyro_noise_radps_rthz = 2e-4;        ///< angle random walk (rad/√s)
+  double accel_bias_rw_mps3_rthz = 1e-4;      ///< accelerometer bias random walk
+  double gyro_bias_rw_radps2_rthz = 1e-6;     ///< gyro bias random walk
+  double init_pos_std_m = 1.0;
+  double init_vel_std_mps = 0.2;
+  double init_roll_pitch_std_rad = 0.03;
+  double init_yaw_std_rad = 0.2;
+  double init_accel_bias_std_mps2 = 0.05;
+  double init_gyro_bias_std_radps = 0.005;
+  Eigen::Vector3d lever_arm_B_m = Eigen::Vector3d::Zero();  ///< GNSS antenna in the body frame
+  double gnss_error_tau_s = 0.0;              ///< correlated GNSS position error τ (0 = off)
+  double gnss_error_std_m = 0.0;              ///< its steady-state σ per axis
+  double gnss_pos_std_floor_m = 0.005;        ///< lower bound on the white GNSS position σ
+  double gnss_vel_std_floor_mps = 0.01;
+  double nhc_std_mps = 0.0;                   ///< non-holonomic constraint σ (0 = off)
+  double gate_sigma = 5.0;                    ///< per-update χ² gate: NIS ≤ gate² · dof
+};
+
+/// Health and status bit field.
+enum EkfStatus : std::uint32_t {
+  kStatusAligned = 1u << 0,
+  kStatusGnssFused = 1u << 1,          ///< the last GNSS update passed the gate
+  kStatusGnssRejected = 1u << 2,       ///< the last GNSS update was rejected
+  kStatusDeadReckoning = 1u << 3,      ///< no GNSS fused for longer than the outage threshold
+  kStatusReset = 1u << 4,              ///< position/velocity reset to GNSS after a long rejection
+  kStatusBadInput = 1u << 5,           ///< a non-finite or out-of-range input was dropped
+  kStatusCovarianceRepaired = 1u << 6, ///< a covariance diagonal was clamped
+};
+
+/// Result of one measurement update.
+struct UpdateResult {
+  bool accepted = false;
+  double nis = 0;   ///< innovationᵀ S⁻¹ innovation
+  int dof = 0;
+};
+
+/// The error-state EKF. No allocation after construction.
+class ErrorStateEkf {
+ public:
+  ErrorStateEkf() = default;
+  explicit ErrorStateEkf(const EkfParams& params, const EarthModel& earth) : params_(params), earth_(earth) {}
+
+  /// Sets the nominal state and the initial covariance from the parameters.
+  void Initialize(const NavState& state);
+  /// One IMU interval of raw increments (biases are removed here).
+  void Predict(const Eigen::Vector3d& delta_angle_B_rad, const Eigen::Vector3d& delta_velocity_B_mps, double dt_s);
+  /// GNSS antenna position in N with per-axis σ.
+  UpdateResult UpdatePosition(const Eigen::Vector3d& p_antenna_N_m, const Eigen::Vector3d& std_m);
+  /// GNSS antenna velocity in N with per-axis σ.
+  UpdateResult UpdateVelocity(const Eigen::Vector3d& v_antenna_N_mps, const Eigen::Vector3d& std_mps);
+  /// Non-holonomic constraint: body lateral and vertical velocity are zero (ground vehicle).
+  UpdateResult UpdateNonHolonomic();
+  /// Heading (yaw of body x, radians counter-clockwise from east) with σ.
+  UpdateResult UpdateYaw(double yaw_enu_rad, double std_rad);
+  /// Resets position/velocity to a measurement after a long rejection (keeps attitude and biases).
+  void ResetPositionVelocity(const Eigen::Vector3d& p_N_m, const Eigen::Vector3d& v_N_mps, double pos_std_m,
+                             double vel_std_mps);
+
+  /// Antenna position predicted from the nominal state.
+  Eigen::Vector3d AntennaPosition() const;
+  /// Antenna velocity predicted from the nominal state (lever-arm rotation included).
+  Eigen::Vector3d AntennaVelocity() const;
+
+  /// Measurement Jacobians (public so tests can check them against finite differences).
+  Eigen::Matrix<double, 3, ekf_index::kNumStates> PositionJacobian() const;
+  Eigen::Matrix<double, 3, ekf_index::kNumStates> VelocityJacobian() const;
+  Eigen::Matrix<double, 2, ekf_index::kNumStates> NonHolonomicJacobian() const;
+  /// Applies an error-state vector to the nominal state (closed-loop correction).
+  void InjectError(const EkfVector& dx);
+
+  const NavState& state() const { return state_; }
+  NavState& mutable_state() { return state_; }
+  const EkfMatrix& covariance() const { return P_; }
+  const Eigen::Vector3d& accel_bias() const { return ba_; }
+  const Eigen::Vector3d& gyro_bias() const { return bg_; }
+  const Eigen::Vector3d& gnss_error() const { return e_gnss_; }
+  const Eigen::Vector3d& last_gyro_rate_B() const { return w_B_; }
+  const EkfParams& params() const { return params_; }
+  std::uint32_t repairs() const { return repairs_; }
+
+ private:
+  template <int M>
+  UpdateResult Update(const Eigen::Matrix<double, M, 1>& innovation,
+                      const Eigen::Matrix<double, M, ekf_index::kNumStates>& H,
+                      const Eigen::Matrix<double, M, M>& R);
+  void Symmetrize();
+
+  EkfParams params_;
+  EarthModel earth_;
+  NavState state_;
+  MechanizationMemory memory_;
+  Eigen::Vector3d ba_ = Eigen::Vector3d::Zero(), bg_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d e_gnss_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d w_B_ = Eigen::Vector3d::Zero();   // last compensated angular rate
+  Eigen::Vector3d f_N_ = Eigen::Vector3d::Zero();   // last specific force in N
+  EkfMatrix P_ = EkfMatrix::Identity();
+  std::uint32_t repairs_ = 0;
+};
+
+}  // namespace hil::estimator

@@ -1,0 +1,136 @@
+#pragma once
+/// @file
+/// @system
+/// name: Navigator (the transport-free estimator core)
+/// input: Push(ImuSample) at IMU rate, Push(GnssSample) at GNSS rate (late, out of order, any mix),
+///        Push(HeadingSample) (compass); all on GPS time from the drivers
+/// output: Output() — the solution at the newest IMU time (output predictor); covariance(),
+///         status(), stats()
+/// @endsystem
+///
+/// Delay handling: a fusion horizon. The filter runs `fusion_horizon_ns` behind the newest IMU
+/// sample, so a GNSS fix that arrives up to that late is still fused at its own time of validity
+/// (the IMU interval that contains it is split there). Output() re-propagates the filter state
+/// through the IMU samples still waiting in the buffer (the output predictor). Samples older than
+/// the filter time are counted as late and dropped; IMU samples out of order are dropped.
+/// Alignment: levelling from the mean specific force, heading from the GNSS course once the speed
+/// exceeds `align_min_speed_mps`, or from the compass. Fixed-size buffers, no allocation.
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <optional>
+
+#include "hil/estimator/error_state_ekf.h"
+#include "hil/estimator/geodesy.h"
+#include "hil/estimator/planar_filter.h"
+#include "hil/estimator/ring_buffer.h"
+#include "hil/estimator/samples.h"
+
+namespace hil::estimator {
+
+/// Filter mode (navd's [filter] mode).
+enum class NavMode {
+  kEkf,        ///< error-state GNSS/INS EKF (the product)
+  kPlanar2d,   ///< seed 000's planar Kalman filter
+  kGnssOnly,   ///< the GNSS fix, passed through
+  kImuOnly,    ///< dead reckoning after alignment (no GNSS updates)
+  kMultiGnss,  ///< seed 000's three receivers: centroid position and heading from their geometry
+};
+/// Mode name as used in the configuration and the JSON output.
+const char* NavModeName(NavMode m);
+/// Mode from its name; nullopt when unknown.
+std::optional<NavMode> NavModeFromName(const char* name);
+
+struct NavigatorParams {
+  NavMode mode = NavMode::kEkf;
+  EkfParams ekf;
+  PlanarFilterParams planar;
+  std::int64_t fusion_horizon_ns = 250'000'000;  ///< largest GNSS delay that is still fused in time
+  double align_min_speed_mps = 0.2;              ///< GNSS course trusted for heading above this
+  double nhc_period_s = 0.1;                     ///< non-holonomic update period (if enabled)
+  double outage_flag_s = 1.5;                    ///< dead-reckoning flag after this long without GNSS
+  double reset_after_rejected_s = 5.0;           ///< reset to GNSS after rejections for this long
+  bool use_gnss_velocity = true;
+  /// Multi-receiver mode: antenna positions in the body frame (seed 000: three on a 3 m circle).
+  Eigen::Matrix<double, 3, 3> multi_antenna_B_m = Eigen::Matrix<double, 3, 3>::Zero();  ///< columns
+};
+
+/// Counters a host reports as health.
+struct NavigatorStats {
+  std::uint64_t imu_samples = 0, imu_out_of_order = 0, imu_overflow = 0, imu_gaps = 0;
+  std::uint64_t gnss_samples = 0, gnss_late = 0, gnss_fused = 0, gnss_rejected = 0, gnss_resets = 0;
+  std::uint64_t bad_input = 0;
+  double last_nis_pos = 0, last_nis_vel = 0;
+  double mean_nis_pos = 0;   ///< running mean of accepted position NIS (≈ 3 when consistent)
+  std::uint64_t nis_count = 0;
+};
+
+/// The solution at one time of validity.
+struct NavOutput {
+  GpsNs t = 0;
+  bool valid = false;
+  Lla position;                                        ///< body reference point
+  Eigen::Vector3d p_N_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d v_N_mps = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond q_NB = Eigen::Quaterniond::Identity();
+  bool has_attitude = false;
+  Eigen::Vector3d pos_std_enu_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d vel_std_enu_mps = Eigen::Vector3d::Zero();
+  Eigen::Vector3d att_std_rad = Eigen::Vector3d::Zero();
+  Eigen::Vector3d accel_bias_B = Eigen::Vector3d::Zero(), gyro_bias_B = Eigen::Vector3d::Zero();
+  std::uint32_t status = 0;
+};
+
+class Navigator {
+ public:
+  explicit Navigator(const NavigatorParams& params);
+
+  void Push(const ImuSample& s);
+  void Push(const GnssSample& s);
+  void Push(const HeadingSample& s);
+  /// Runs the filter up to the fusion horizon.
+  void Update();
+  /// The solution at the newest input time (IMU modes: output predictor).
+  NavOutput Output() const;
+
+  const EkfMatrix& covariance() const { return ekf_.covariance(); }
+  const ErrorStateEkf& ekf() const { return ekf_; }
+  std::uint32_t status() const { return status_; }
+  const NavigatorStats& stats() const { return stats_; }
+  bool aligned() const { return aligned_; }
+  const LocalTangentFrame& frame() const { return frame_; }
+  const NavigatorParams& params() const { return params_; }
+  /// Filter (delayed) time.
+  GpsNs filter_time() const { return filter_t_; }
+
+ private:
+  void ProcessImu(const ImuSample& s);
+  void ProcessGnss(const GnssSample& g);
+  void TryAlign(const GnssSample& g);
+  void EnsureFrame(const Lla& origin);
+  void GnssOnlyFix(const GnssSample& g);
+  void MultiGnssFix(const GnssSample& g);
+
+  NavigatorParams params_;
+  ErrorStateEkf ekf_;
+  PlanarFilter planar_;
+  LocalTangentFrame frame_;
+  bool frame_set_ = false;
+  bool aligned_ = false;
+  RingBuffer<ImuSample, 512> imu_;
+  RingBuffer<GnssSample, 32> gnss_;
+  std::optional<HeadingSample> heading_;
+  GpsNs newest_imu_t_ = 0, filter_t_ = 0, last_gnss_fused_t_ = 0, first_rejected_t_ = -1;
+  GpsNs last_nhc_t_ = 0;
+  bool have_imu_ = false;
+  Eigen::Vector3d mean_f_B_ = Eigen::Vector3d::Zero();
+  double mean_f_weight_ = 0;
+  std::uint32_t status_ = 0;
+  NavigatorStats stats_;
+  // GNSS-only and multi-receiver modes: the last fix
+  NavOutput direct_;
+  GnssSample multi_[3];
+  bool multi_have_[3] = {false, false, false};
+};
+
+}  // namespace hil::estimator

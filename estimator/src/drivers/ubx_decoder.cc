@@ -1,0 +1,195 @@
+#include "hil/estimator/drivers/ubx_decoder.h"
+
+#include <cmath>
+#include <cstring>
+
+namespace hil::estimator::drivers {
+namespace {
+
+std::uint8_t U1(const char* p) { return static_cast<std::uint8_t>(*p); }
+std::uint16_t U2(const char* p) { return static_cast<std::uint16_t>(U1(p) | (U1(p + 1) << 8)); }
+std::uint32_t U4(const char* p) {
+  return static_cast<std::uint32_t>(U1(p)) | (static_cast<std::uint32_t>(U1(p + 1)) << 8) |
+         (static_cast<std::uint32_t>(U1(p + 2)) << 16) | (static_cast<std::uint32_t>(U1(p + 3)) << 24);
+}
+std::int32_t I4(const char* p) { return static_cast<std::int32_t>(U4(p)); }
+
+void Fletcher(const char* p, std::size_t n, std::uint8_t& a, std::uint8_t& b) {
+  a = b = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    a = static_cast<std::uint8_t>(a + U1(p + i));
+    b = static_cast<std::uint8_t>(b + a);
+  }
+}
+
+/// Decoder table: class, id, payload length, field decoder.
+struct Entry {
+  std::uint8_t cls, id;
+  std::size_t len;
+  void (*decode)(const char* p, UbxMessage& m);
+};
+
+constexpr Entry kTable[] = {
+    {0x01, 0x02, 28,
+     [](const char* p, UbxMessage& m) {
+       m.itow_ms = U4(p);
+       m.lon_deg = I4(p + 4) * 1e-7;
+       m.lat_deg = I4(p + 8) * 1e-7;
+       m.height_m = I4(p + 12) * 1e-3;
+       m.h_acc_m = U4(p + 20) * 1e-3;
+       m.v_acc_m = U4(p + 24) * 1e-3;
+     }},
+    {0x01, 0x06, 52,
+     [](const char* p, UbxMessage& m) {
+       m.itow_ms = U4(p);
+       m.ftow_ns = I4(p + 4);
+       m.week = static_cast<std::int16_t>(U2(p + 8));
+       m.gps_fix = U1(p + 10);
+       m.flags = U1(p + 11);
+       m.num_sv = U1(p + 47);
+     }},
+    {0x01, 0x12, 36,
+     [](const char* p, UbxMessage& m) {
+       m.itow_ms = U4(p);
+       m.vel_n_mps = I4(p + 4) * 0.01;
+       m.vel_e_mps = I4(p + 8) * 0.01;
+       m.vel_d_mps = I4(p + 12) * 0.01;
+       m.s_acc_mps = U4(p + 28) * 0.01;
+     }},
+    {0x01, 0x20, 16,
+     [](const char* p, UbxMessage& m) {
+       m.itow_ms = U4(p);
+       m.ftow_ns = I4(p + 4);
+       m.week = static_cast<std::int16_t>(U2(p + 8));
+       m.leap_s = static_cast<std::int8_t>(U1(p + 10));
+       m.flags = U1(p + 11);
+     }},
+    {0x01, 0x21, 20, [](const char* p, UbxMessage& m) { m.itow_ms = U4(p); }},
+    {0x05, 0x01, 2, [](const char* p, UbxMessage& m) { m.ack_cls = U1(p), m.ack_id = U1(p + 1); }},
+    {0x05, 0x00, 2, [](const char* p, UbxMessage& m) { m.ack_cls = U1(p), m.ack_id = U1(p + 1); }},
+};
+
+}  // namespace
+
+std::size_t UbxDecoder::Encode(std::uint8_t cls, std::uint8_t id, std::string_view payload, char* out, std::size_t cap) {
+  const std::size_t n = payload.size() + 8;
+  if (n > cap || payload.size() > 0xFFFF) return 0;
+  out[0] = static_cast<char>(0xB5);
+  out[1] = 0x62;
+  out[2] = static_cast<char>(cls);
+  out[3] = static_cast<char>(id);
+  out[4] = static_cast<char>(payload.size() & 0xFF);
+  out[5] = static_cast<char>(payload.size() >> 8);
+  std::memcpy(out + 6, payload.data(), payload.size());
+  std::uint8_t a, b;
+  Fletcher(out + 2, payload.size() + 4, a, b);
+  out[n - 2] = static_cast<char>(a);
+  out[n - 1] = static_cast<char>(b);
+  return n;
+}
+
+void UbxDecoder::Feed(std::string_view bytes) {
+  for (char c : bytes) {
+    buf_[len_++] = c;
+    Scan();
+  }
+}
+
+void UbxDecoder::Scan() {
+  for (;;) {
+    std::size_t i = 0;
+    while (i < len_ && !(U1(&buf_[i]) == 0xB5 && (i + 1 == len_ || U1(&buf_[i + 1]) == 0x62))) ++i;
+    if (i > 0) {
+      stats_.garbage_bytes += i;
+      std::memmove(buf_.data(), buf_.data() + i, len_ - i);
+      len_ -= i;
+    }
+    if (len_ < 6) return;
+    const std::size_t n = U2(&buf_[4]);
+    if (n > kMaxPayload) {
+      ++stats_.overlong;
+      std::memmove(buf_.data(), buf_.data() + 1, --len_);
+      continue;
+    }
+    if (len_ < n + 8) return;
+    std::uint8_t a, b;
+    Fletcher(&buf_[2], n + 4, a, b);
+    if (a != U1(&buf_[n + 6]) || b != U1(&buf_[n + 7])) {
+      ++stats_.bad_checksum;
+      std::memmove(buf_.data(), buf_.data() + 1, --len_);
+      continue;
+    }
+    Dispatch(buf_.data(), n);
+    std::memmove(buf_.data(), buf_.data() + n + 8, len_ - n - 8);
+    len_ -= n + 8;
+  }
+}
+
+void UbxDecoder::Dispatch(const char* f, std::size_t n) {
+  ++stats_.frames_ok;
+  UbxMessage m;
+  m.cls = U1(f + 2);
+  m.id = U1(f + 3);
+  for (const Entry& e : kTable) {
+    if (e.cls != m.cls || e.id != m.id) continue;
+    if (n < e.len) {
+      ++stats_.unsupported;
+      return;
+    }
+    e.decode(f + 6, m);
+    if (m.cls == 0x05) ++(m.id == 0x01 ? stats_.acks : stats_.naks);
+    if (handler_) handler_(m);
+    return;
+  }
+  ++stats_.unsupported;
+}
+
+std::optional<GnssSample> UbxEpochAssembler::Add(const UbxMessage& m) {
+  if (m.cls != 0x01) return std::nullopt;
+  if (m.id == 0x20) {
+    if (m.flags & 0x02) week_ = m.week;
+    if (m.flags & 0x04) leap_s_ = m.leap_s;
+    return std::nullopt;
+  }
+  if (m.id != 0x02 && m.id != 0x06 && m.id != 0x12) return std::nullopt;
+  std::optional<GnssSample> out;
+  if ((have_pos_ || have_vel_ || have_sol_) && m.itow_ms != itow_) {
+    out = Flush();
+  }
+  itow_ = m.itow_ms;
+  if (m.id == 0x02) pos_ = m, have_pos_ = true;
+  if (m.id == 0x12) vel_ = m, have_vel_ = true;
+  if (m.id == 0x06) {
+    sol_ = m;
+    have_sol_ = true;
+    if (m.flags & 0x04) week_ = m.week;
+  }
+  if (have_pos_ && have_vel_ && have_sol_) out = Flush();
+  return out;
+}
+
+std::optional<GnssSample> UbxEpochAssembler::Flush() {
+  std::optional<GnssSample> out;
+  const bool fix_ok = !have_sol_ || ((sol_.flags & 0x01) && (sol_.gps_fix == 2 || sol_.gps_fix == 3));
+  if (have_pos_ && week_ >= 0 && fix_ok) {
+    GnssSample g;
+    g.t = static_cast<GpsNs>(week_) * 604800LL * kNsPerSecond + static_cast<GpsNs>(itow_) * 1'000'000LL +
+          (have_sol_ ? sol_.ftow_ns : 0);
+    g.position = {pos_.lat_deg, pos_.lon_deg, pos_.height_m};
+    const double h = std::max(pos_.h_acc_m, 0.01) / std::sqrt(2.0);
+    g.pos_std_enu_m = {h, h, std::max(pos_.v_acc_m, 0.01)};
+    if (have_vel_) {
+      g.has_velocity = true;
+      g.vel_enu_mps = {vel_.vel_e_mps, vel_.vel_n_mps, -vel_.vel_d_mps};
+      const double s = std::max(vel_.s_acc_mps, 0.01);
+      g.vel_std_enu_mps = {s, s, s};
+    }
+    g.num_sv = have_sol_ ? sol_.num_sv : 0;
+    g.fix_quality = have_sol_ && (sol_.flags & 0x02) ? 2 : 1;
+    out = g;
+  }
+  have_pos_ = have_vel_ = have_sol_ = false;
+  return out;
+}
+
+}  // namespace hil::estimator::drivers

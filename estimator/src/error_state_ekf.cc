@@ -1,0 +1,199 @@
+#include "hil/estimator/error_state_ekf.h"
+
+#include <cmath>
+
+namespace hil::estimator {
+
+using namespace ekf_index;
+
+namespace {
+bool AllFinite(const Eigen::Vector3d& v) { return v.allFinite(); }
+}  // namespace
+
+void ErrorStateEkf::Initialize(const NavState& s) {
+  state_ = s;
+  memory_ = {};
+  ba_.setZero();
+  bg_.setZero();
+  e_gnss_.setZero();
+  P_.setZero();
+  const auto& p = params_;
+  P_.block<3, 3>(kPos, kPos).diagonal().setConstant(p.init_pos_std_m * p.init_pos_std_m);
+  P_.block<3, 3>(kVel, kVel).diagonal().setConstant(p.init_vel_std_mps * p.init_vel_std_mps);
+  P_(kAtt, kAtt) = P_(kAtt + 1, kAtt + 1) = p.init_roll_pitch_std_rad * p.init_roll_pitch_std_rad;
+  P_(kAtt + 2, kAtt + 2) = p.init_yaw_std_rad * p.init_yaw_std_rad;
+  P_.block<3, 3>(kAccelBias, kAccelBias).diagonal().setConstant(p.init_accel_bias_std_mps2 * p.init_accel_bias_std_mps2);
+  P_.block<3, 3>(kGyroBias, kGyroBias).diagonal().setConstant(p.init_gyro_bias_std_radps * p.init_gyro_bias_std_radps);
+  if (p.gnss_error_tau_s > 0) {
+    P_.block<3, 3>(kGnssError, kGnssError).diagonal().setConstant(p.gnss_error_std_m * p.gnss_error_std_m);
+  }
+}
+
+void ErrorStateEkf::Predict(const Eigen::Vector3d& dth_raw, const Eigen::Vector3d& dv_raw, double dt) {
+  if (!(dt > 0) || dt > 1.0 || !AllFinite(dth_raw) || !AllFinite(dv_raw)) return;
+  const Eigen::Vector3d dth = dth_raw - bg_ * dt;
+  const Eigen::Vector3d dv = dv_raw - ba_ * dt;
+  const Eigen::Matrix3d C = state_.q_NB.toRotationMatrix();
+  w_B_ = dth / dt;
+  f_N_ = C * dv / dt;
+  Propagate(earth_, dth, dv, dt, memory_, state_);
+
+  // error-state transition Φ = I + F·dt (only the non-zero blocks are touched)
+  EkfMatrix Phi = EkfMatrix::Identity();
+  const Eigen::Matrix3d W = Skew(earth_.w_IE_N_radps);
+  Phi.block<3, 3>(kPos, kVel) = Eigen::Matrix3d::Identity() * dt;
+  Phi.block<3, 3>(kVel, kVel) -= 2.0 * W * dt;
+  Phi.block<3, 3>(kVel, kAtt) = -Skew(f_N_) * dt;
+  Phi.block<3, 3>(kVel, kAccelBias) = -C * dt;
+  Phi.block<3, 3>(kAtt, kAtt) -= W * dt;
+  Phi.block<3, 3>(kAtt, kGyroBias) = -C * dt;
+  const auto& p = params_;
+  double gm_decay = 1.0, gm_q = 0.0;
+  if (p.gnss_error_tau_s > 0) {
+    gm_decay = std::exp(-dt / p.gnss_error_tau_s);
+    gm_q = p.gnss_error_std_m * p.gnss_error_std_m * (1.0 - gm_decay * gm_decay);
+    Phi.block<3, 3>(kGnssError, kGnssError).diagonal().setConstant(gm_decay);
+  }
+  P_ = Phi * P_ * Phi.transpose();
+  // process noise: isotropic densities are invariant under the rotation C
+  P_.block<3, 3>(kVel, kVel).diagonal().array() += p.accel_noise_mps2_rthz * p.accel_noise_mps2_rthz * dt;
+  P_.block<3, 3>(kAtt, kAtt).diagonal().array() += p.gyro_noise_radps_rthz * p.gyro_noise_radps_rthz * dt;
+  P_.block<3, 3>(kAccelBias, kAccelBias).diagonal().array() += p.accel_bias_rw_mps3_rthz * p.accel_bias_rw_mps3_rthz * dt;
+  P_.block<3, 3>(kGyroBias, kGyroBias).diagonal().array() += p.gyro_bias_rw_radps2_rthz * p.gyro_bias_rw_radps2_rthz * dt;
+  if (p.gnss_error_tau_s > 0) P_.block<3, 3>(kGnssError, kGnssError).diagonal().array() += gm_q;
+  e_gnss_ *= gm_decay;
+  Symmetrize();
+}
+
+Eigen::Vector3d ErrorStateEkf::AntennaPosition() const {
+  return state_.p_N_m + state_.q_NB * params_.lever_arm_B_m;
+}
+
+Eigen::Vector3d ErrorStateEkf::AntennaVelocity() const {
+  return state_.v_N_mps + state_.q_NB * w_B_.cross(params_.lever_arm_B_m);
+}
+
+Eigen::Matrix<double, 3, kNumStates> ErrorStateEkf::PositionJacobian() const {
+  Eigen::Matrix<double, 3, kNumStates> H = Eigen::Matrix<double, 3, kNumStates>::Zero();
+  H.block<3, 3>(0, kPos).setIdentity();
+  H.block<3, 3>(0, kAtt) = -Skew(state_.q_NB * params_.lever_arm_B_m);
+  if (params_.gnss_error_tau_s > 0) H.block<3, 3>(0, kGnssError).setIdentity();
+  return H;
+}
+
+Eigen::Matrix<double, 3, kNumStates> ErrorStateEkf::VelocityJacobian() const {
+  Eigen::Matrix<double, 3, kNumStates> H = Eigen::Matrix<double, 3, kNumStates>::Zero();
+  const Eigen::Matrix3d C = state_.q_NB.toRotationMatrix();
+  H.block<3, 3>(0, kVel).setIdentity();
+  H.block<3, 3>(0, kAtt) = -Skew(C * w_B_.cross(params_.lever_arm_B_m));
+  H.block<3, 3>(0, kGyroBias) = C * Skew(params_.lever_arm_B_m);
+  return H;
+}
+
+Eigen::Matrix<double, 2, kNumStates> ErrorStateEkf::NonHolonomicJacobian() const {
+  const Eigen::Matrix3d Ct = state_.q_NB.toRotationMatrix().transpose();
+  Eigen::Matrix<double, 3, kNumStates> H = Eigen::Matrix<double, 3, kNumStates>::Zero();
+  H.block<3, 3>(0, kVel) = Ct;
+  H.block<3, 3>(0, kAtt) = Ct * Skew(state_.v_N_mps);
+  return H.bottomRows<2>();
+}
+
+UpdateResult ErrorStateEkf::UpdatePosition(const Eigen::Vector3d& z, const Eigen::Vector3d& std_m) {
+  if (!AllFinite(z) || !AllFinite(std_m)) return {};
+  const Eigen::Vector3d pred = AntennaPosition() + (params_.gnss_error_tau_s > 0 ? e_gnss_ : Eigen::Vector3d::Zero());
+  Eigen::Matrix3d R = Eigen::Matrix3d::Zero();
+  for (int i = 0; i < 3; ++i) R(i, i) = std::pow(std::max(std_m[i], params_.gnss_pos_std_floor_m), 2);
+  return Update<3>(z - pred, PositionJacobian(), R);
+}
+
+UpdateResult ErrorStateEkf::UpdateVelocity(const Eigen::Vector3d& z, const Eigen::Vector3d& std_mps) {
+  if (!AllFinite(z) || !AllFinite(std_mps)) return {};
+  Eigen::Matrix3d R = Eigen::Matrix3d::Zero();
+  for (int i = 0; i < 3; ++i) R(i, i) = std::pow(std::max(std_mps[i], params_.gnss_vel_std_floor_mps), 2);
+  return Update<3>(z - AntennaVelocity(), VelocityJacobian(), R);
+}
+
+UpdateResult ErrorStateEkf::UpdateNonHolonomic() {
+  if (!(params_.nhc_std_mps > 0)) return {};
+  const Eigen::Vector3d v_B = state_.q_NB.conjugate() * state_.v_N_mps;
+  const Eigen::Vector2d innovation(-v_B.y(), -v_B.z());
+  const Eigen::Matrix2d R = Eigen::Matrix2d::Identity() * params_.nhc_std_mps * params_.nhc_std_mps;
+  return Update<2>(innovation, NonHolonomicJacobian(), R);
+}
+
+UpdateResult ErrorStateEkf::UpdateYaw(double yaw_enu_rad, double std_rad) {
+  if (!std::isfinite(yaw_enu_rad) || !(std_rad > 0)) return {};
+  const Eigen::Vector3d x_N = state_.q_NB * Eigen::Vector3d::UnitX();
+  const double yaw = std::atan2(x_N.y(), x_N.x());
+  double d = std::remainder(yaw_enu_rad - yaw, 2.0 * M_PI);
+  Eigen::Matrix<double, 1, kNumStates> H = Eigen::Matrix<double, 1, kNumStates>::Zero();
+  // small rotation φ about N changes the yaw by φ_z (level approximation, exact for level attitude)
+  H(0, kAtt + 2) = 1.0;
+  Eigen::Matrix<double, 1, 1> innovation;
+  innovation << d;
+  Eigen::Matrix<double, 1, 1> R;
+  R << std_rad * std_rad;
+  return Update<1>(innovation, H, R);
+}
+
+template <int M>
+UpdateResult ErrorStateEkf::Update(const Eigen::Matrix<double, M, 1>& y, const Eigen::Matrix<double, M, kNumStates>& H,
+                                   const Eigen::Matrix<double, M, M>& R) {
+  UpdateResult r;
+  r.dof = M;
+  const Eigen::Matrix<double, kNumStates, M> PHt = P_ * H.transpose();
+  const Eigen::Matrix<double, M, M> S = H * PHt + R;
+  const Eigen::LDLT<Eigen::Matrix<double, M, M>> ldlt(S);
+  if (ldlt.info() != Eigen::Success || !y.allFinite()) return r;
+  r.nis = y.dot(ldlt.solve(y));
+  if (!std::isfinite(r.nis) || r.nis > params_.gate_sigma * params_.gate_sigma * M) return r;
+  const Eigen::Matrix<double, M, M> S_inv = ldlt.solve(Eigen::Matrix<double, M, M>::Identity());
+  const Eigen::Matrix<double, kNumStates, M> K = PHt * S_inv;
+  const EkfVector dx = K * y;
+  // Joseph form keeps P symmetric positive semi-definite
+  const EkfMatrix IKH = EkfMatrix::Identity() - K * H;
+  P_ = IKH * P_ * IKH.transpose() + K * R * K.transpose();
+  Symmetrize();
+  InjectError(dx);
+  r.accepted = true;
+  return r;
+}
+
+void ErrorStateEkf::InjectError(const EkfVector& dx) {
+  state_.p_N_m += dx.segment<3>(kPos);
+  state_.v_N_mps += dx.segment<3>(kVel);
+  state_.q_NB = (QuatFromRotationVector(dx.segment<3>(kAtt)) * state_.q_NB).normalized();
+  ba_ += dx.segment<3>(kAccelBias);
+  bg_ += dx.segment<3>(kGyroBias);
+  if (params_.gnss_error_tau_s > 0) e_gnss_ += dx.segment<3>(kGnssError);
+}
+
+void ErrorStateEkf::ResetPositionVelocity(const Eigen::Vector3d& p, const Eigen::Vector3d& v, double pos_std,
+                                          double vel_std) {
+  state_.p_N_m = p - state_.q_NB * params_.lever_arm_B_m;
+  state_.v_N_mps = v;
+  e_gnss_.setZero();
+  P_.block<6, kNumStates>(kPos, 0).setZero();
+  P_.block<kNumStates, 6>(0, kPos).setZero();
+  P_.block<3, 3>(kPos, kPos).diagonal().setConstant(pos_std * pos_std);
+  P_.block<3, 3>(kVel, kVel).diagonal().setConstant(vel_std * vel_std);
+  if (params_.gnss_error_tau_s > 0) {
+    P_.block<3, kNumStates>(kGnssError, 0).setZero();
+    P_.block<kNumStates, 3>(0, kGnssError).setZero();
+    P_.block<3, 3>(kGnssError, kGnssError).diagonal().setConstant(params_.gnss_error_std_m * params_.gnss_error_std_m);
+  }
+}
+
+void ErrorStateEkf::Symmetrize() {
+  P_ = 0.5 * (P_ + P_.transpose()).eval();
+  for (int i = 0; i < kNumStates; ++i) {
+    if (!(P_(i, i) >= 0) || !std::isfinite(P_(i, i))) {
+      P_.row(i).setZero();
+      P_.col(i).setZero();
+      P_(i, i) = 1e-6;
+      ++repairs_;
+    }
+  }
+}
+
+}  // namespace hil::estimator

@@ -1,0 +1,58 @@
+#include "hil/estimator/geodesy.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace hil::estimator {
+namespace {
+constexpr double kDeg = std::numbers::pi / 180.0;
+}  // namespace
+
+Eigen::Vector3d EcefFromLla(const Lla& g) {
+  const double lat = g.lat_deg * kDeg, lon = g.lon_deg * kDeg;
+  const double s = std::sin(lat), c = std::cos(lat);
+  const double n = kWgs84A_m / std::sqrt(1.0 - kWgs84E2 * s * s);
+  return {(n + g.height_m) * c * std::cos(lon), (n + g.height_m) * c * std::sin(lon),
+          (n * (1.0 - kWgs84E2) + g.height_m) * s};
+}
+
+Lla LlaFromEcef(const Eigen::Vector3d& p) {
+  const double r_xy = std::hypot(p.x(), p.y());
+  double lat = std::atan2(p.z(), r_xy * (1.0 - kWgs84E2));
+  double h = 0;
+  // fixed-point iteration on latitude and height
+  for (int i = 0; i < 6; ++i) {
+    const double s = std::sin(lat);
+    const double n = kWgs84A_m / std::sqrt(1.0 - kWgs84E2 * s * s);
+    h = std::abs(std::cos(lat)) > 1e-9 ? r_xy / std::cos(lat) - n : std::abs(p.z()) - n * (1.0 - kWgs84E2);
+    lat = std::atan2(p.z(), r_xy * (1.0 - kWgs84E2 * n / (n + h)));
+  }
+  return {lat / kDeg, std::atan2(p.y(), p.x()) / kDeg, h};
+}
+
+double NormalGravity(double lat_deg, double height_m) {
+  // Somigliana's formula on WGS-84, then the free-air gradient
+  const double s2 = std::pow(std::sin(lat_deg * kDeg), 2);
+  const double g0 = 9.7803253359 * (1.0 + 0.00193185265241 * s2) / std::sqrt(1.0 - kWgs84E2 * s2);
+  return g0 - 3.086e-6 * height_m;
+}
+
+LocalTangentFrame::LocalTangentFrame(const Lla& origin) : origin_(origin), p_E0_m_(EcefFromLla(origin)) {
+  const double lat = origin.lat_deg * kDeg, lon = origin.lon_deg * kDeg;
+  const double sl = std::sin(lat), cl = std::cos(lat), so = std::sin(lon), co = std::cos(lon);
+  // columns: east, north, up expressed in ECEF
+  R_EN_ << -so, -sl * co, cl * co,
+            co, -sl * so, cl * so,
+           0.0, cl, sl;
+}
+
+Eigen::Vector3d LocalTangentFrame::ToLocal(const Lla& g) const { return R_EN_.transpose() * (EcefFromLla(g) - p_E0_m_); }
+
+Lla LocalTangentFrame::ToLla(const Eigen::Vector3d& p_N_m) const { return LlaFromEcef(p_E0_m_ + R_EN_ * p_N_m); }
+
+Eigen::Vector3d LocalTangentFrame::w_IE_N() const {
+  const double lat = origin_.lat_deg * kDeg;
+  return {0.0, kEarthRate_radps * std::cos(lat), kEarthRate_radps * std::sin(lat)};
+}
+
+}  // namespace hil::estimator

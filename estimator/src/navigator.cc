@@ -1,0 +1,338 @@
+#include "hil/estimator/navigator.h"
+
+#include <cmath>
+#include <cstring>
+
+namespace hil::estimator {
+
+namespace {
+constexpr double kNsToS = 1e-9;
+
+ImuSample ScaledPart(const ImuSample& s, GpsNs t_end, double fraction) {
+  ImuSample p = s;
+  p.t = t_end;
+  p.dt_s = s.dt_s * fraction;
+  p.delta_angle_B_rad = s.delta_angle_B_rad * fraction;
+  p.delta_velocity_B_mps = s.delta_velocity_B_mps * fraction;
+  return p;
+}
+}  // namespace
+
+const char* NavModeName(NavMode m) {
+  switch (m) {
+    case NavMode::kEkf: return "ekf";
+    case NavMode::kPlanar2d: return "planar2d";
+    case NavMode::kGnssOnly: return "gnss_only";
+    case NavMode::kImuOnly: return "imu_only";
+    case NavMode::kMultiGnss: return "multi_gnss";
+  }
+  return "?";
+}
+
+std::optional<NavMode> NavModeFromName(const char* name) {
+  for (NavMode m : {NavMode::kEkf, NavMode::kPlanar2d, NavMode::kGnssOnly, NavMode::kImuOnly, NavMode::kMultiGnss}) {
+    if (std::strcmp(name, NavModeName(m)) == 0) return m;
+  }
+  return std::nullopt;
+}
+
+Navigator::Navigator(const NavigatorParams& params) : params_(params), planar_(params.planar) {}
+
+void Navigator::EnsureFrame(const Lla& origin) {
+  if (frame_set_) return;
+  frame_ = LocalTangentFrame(origin);
+  frame_set_ = true;
+  EarthModel earth;
+  earth.g_N_mps2 = Eigen::Vector3d(0, 0, -NormalGravity(origin.lat_deg, origin.height_m));
+  earth.w_IE_N_radps = frame_.w_IE_N();
+  ekf_ = ErrorStateEkf(params_.ekf, earth);
+}
+
+void Navigator::Push(const ImuSample& s) {
+  if (!(s.dt_s > 0) || s.dt_s > 1.0 || !s.delta_angle_B_rad.allFinite() || !s.delta_velocity_B_mps.allFinite()) {
+    ++stats_.bad_input;
+    status_ |= kStatusBadInput;
+    return;
+  }
+  if (have_imu_ && s.t <= newest_imu_t_) {
+    ++stats_.imu_out_of_order;
+    return;
+  }
+  if (have_imu_ && s.t - newest_imu_t_ > static_cast<GpsNs>(1.5 * s.dt_s * 1e9)) ++stats_.imu_gaps;
+  ++stats_.imu_samples;
+  if (!imu_.Push(s)) ++stats_.imu_overflow;
+  newest_imu_t_ = s.t;
+  have_imu_ = true;
+}
+
+void Navigator::Push(const GnssSample& g) {
+  if (!std::isfinite(g.position.lat_deg) || !std::isfinite(g.position.lon_deg) || !std::isfinite(g.position.height_m) ||
+      std::abs(g.position.lat_deg) > 90.0 || !g.pos_std_enu_m.allFinite()) {
+    ++stats_.bad_input;
+    status_ |= kStatusBadInput;
+    return;
+  }
+  ++stats_.gnss_samples;
+  const bool imu_mode = params_.mode == NavMode::kEkf || params_.mode == NavMode::kImuOnly ||
+                        params_.mode == NavMode::kPlanar2d;
+  if (!imu_mode) {
+    if (params_.mode == NavMode::kMultiGnss) MultiGnssFix(g);
+    else GnssOnlyFix(g);
+    return;
+  }
+  if (aligned_ && g.t < filter_t_) {
+    ++stats_.gnss_late;
+    return;
+  }
+  // keep the buffer in time order (fixes may arrive out of order within the horizon)
+  gnss_.Push(g);
+  for (std::size_t i = gnss_.size() - 1; i > 0 && gnss_[i].t < gnss_[i - 1].t; --i) std::swap(gnss_[i], gnss_[i - 1]);
+}
+
+void Navigator::Push(const HeadingSample& h) {
+  if (!std::isfinite(h.yaw_deg)) {
+    ++stats_.bad_input;
+    return;
+  }
+  heading_ = h;
+}
+
+void Navigator::Update() {
+  const bool imu_mode = params_.mode == NavMode::kEkf || params_.mode == NavMode::kImuOnly ||
+                        params_.mode == NavMode::kPlanar2d;
+  if (!imu_mode) return;
+  const GpsNs horizon_t = newest_imu_t_ - params_.fusion_horizon_ns;
+  while (!imu_.empty() && imu_.front().t <= horizon_t) {
+    ImuSample s = imu_.front();
+    imu_.PopFront();
+    bool consumed = false;
+    // fuse every fix due up to the end of this interval at its own time, splitting the interval there
+    while (!gnss_.empty() && gnss_.front().t <= s.t) {
+      const GnssSample g = gnss_.front();
+      gnss_.PopFront();
+      if (aligned_ && !consumed && g.t > filter_t_) {
+        const GpsNs start = std::max(s.t - static_cast<GpsNs>(s.dt_s * 1e9), filter_t_);
+        const double frac = static_cast<double>(g.t - start) / static_cast<double>(s.t - start);
+        if (frac >= 1.0 - 1e-9) {
+          ProcessImu(s);
+          consumed = true;
+        } else if (frac > 0) {
+          ProcessImu(ScaledPart(s, g.t, frac));
+          s = ScaledPart(s, s.t, 1.0 - frac);
+        }
+      }
+      ProcessGnss(g);
+    }
+    if (!consumed) ProcessImu(s);
+  }
+}
+
+void Navigator::ProcessImu(const ImuSample& s) {
+  if (!aligned_) {
+    // running mean of the specific force for levelling (time constant ≈ 1 s)
+    const Eigen::Vector3d f = s.delta_velocity_B_mps / s.dt_s;
+    const double w = std::min(1.0, s.dt_s / 1.0);
+    mean_f_B_ = mean_f_weight_ == 0 ? f : Eigen::Vector3d((1 - w) * mean_f_B_ + w * f);
+    mean_f_weight_ += s.dt_s;
+    filter_t_ = s.t;
+    return;
+  }
+  if (s.t <= filter_t_) return;
+  if (params_.mode == NavMode::kPlanar2d) {
+    const Eigen::Vector3d f = s.delta_velocity_B_mps / s.dt_s;
+    // remove gravity's projection on the horizontal axes using the levelled mean at alignment
+    planar_.Predict(f.x() - mean_f_B_.x(), f.y() - mean_f_B_.y(), s.delta_angle_B_rad.z() / s.dt_s, s.dt_s);
+    filter_t_ = s.t;
+    return;
+  }
+  ekf_.Predict(s.delta_angle_B_rad, s.delta_velocity_B_mps, s.dt_s);
+  filter_t_ = s.t;
+  if (params_.mode == NavMode::kEkf && params_.ekf.nhc_std_mps > 0 &&
+      static_cast<double>(filter_t_ - last_nhc_t_) * kNsToS >= params_.nhc_period_s - 1e-6) {
+    ekf_.UpdateNonHolonomic();
+    last_nhc_t_ = filter_t_;
+  }
+  if (static_cast<double>(filter_t_ - last_gnss_fused_t_) * kNsToS > params_.outage_flag_s) {
+    status_ |= kStatusDeadReckoning;
+  }
+}
+
+void Navigator::TryAlign(const GnssSample& g) {
+  EnsureFrame(g.position);
+  if (mean_f_weight_ < 0.2) return;  // need some IMU data to level
+  double yaw = 0;
+  const double speed = g.vel_enu_mps.head<2>().norm();
+  if (heading_) {
+    yaw = (90.0 - heading_->yaw_deg) * M_PI / 180.0;
+  } else if (g.has_velocity && speed >= params_.align_min_speed_mps) {
+    yaw = std::atan2(g.vel_enu_mps.y(), g.vel_enu_mps.x());
+  } else {
+    return;
+  }
+  // level: rotate the mean specific force onto the N up axis, then apply the heading
+  const Eigen::Quaterniond q_level = Eigen::Quaterniond::FromTwoVectors(mean_f_B_.normalized(), Eigen::Vector3d::UnitZ());
+  const Eigen::Vector3d x_lev = q_level * Eigen::Vector3d::UnitX();
+  const double yaw_lev = std::atan2(x_lev.y(), x_lev.x());
+  NavState st;
+  st.q_NB = (Eigen::AngleAxisd(yaw - yaw_lev, Eigen::Vector3d::UnitZ()) * q_level).normalized();
+  const Eigen::Vector3d p_ant = frame_.ToLocal(g.position);
+  st.p_N_m = p_ant - st.q_NB * params_.ekf.lever_arm_B_m;
+  st.v_N_mps = g.has_velocity ? g.vel_enu_mps : Eigen::Vector3d::Zero();
+  ekf_.Initialize(st);
+  planar_.Initialize(p_ant.head<2>(), st.v_N_mps.head<2>(), yaw, g.pos_std_enu_m.head<2>().norm() / std::sqrt(2.0));
+  aligned_ = true;
+  status_ |= kStatusAligned;
+  filter_t_ = g.t;
+  last_gnss_fused_t_ = g.t;
+  last_nhc_t_ = g.t;
+}
+
+void Navigator::ProcessGnss(const GnssSample& g) {
+  if (!aligned_) {
+    TryAlign(g);
+    return;
+  }
+  if (g.fix_quality <= 0) return;
+  if (params_.mode == NavMode::kImuOnly) return;
+  const Eigen::Vector3d p = frame_.ToLocal(g.position);
+  if (params_.mode == NavMode::kPlanar2d) {
+    planar_.UpdatePosition(p.head<2>(), g.pos_std_enu_m.head<2>().norm() / std::sqrt(2.0));
+    if (g.has_velocity && params_.use_gnss_velocity) planar_.UpdateVelocity(g.vel_enu_mps.head<2>(), g.vel_std_enu_mps.x());
+    last_gnss_fused_t_ = g.t;
+    status_ = (status_ | kStatusGnssFused) & ~kStatusDeadReckoning;
+    return;
+  }
+  const UpdateResult rp = ekf_.UpdatePosition(p, g.pos_std_enu_m);
+  stats_.last_nis_pos = rp.nis;
+  if (rp.accepted) {
+    ++stats_.gnss_fused;
+    ++stats_.nis_count;
+    stats_.mean_nis_pos += (rp.nis - stats_.mean_nis_pos) / static_cast<double>(stats_.nis_count);
+    last_gnss_fused_t_ = g.t;
+    first_rejected_t_ = -1;
+    status_ = (status_ | kStatusGnssFused) & ~(kStatusGnssRejected | kStatusDeadReckoning | kStatusReset);
+    if (g.has_velocity && params_.use_gnss_velocity) {
+      const UpdateResult rv = ekf_.UpdateVelocity(g.vel_enu_mps, g.vel_std_enu_mps);
+      stats_.last_nis_vel = rv.nis;
+    }
+    return;
+  }
+  ++stats_.gnss_rejected;
+  status_ = (status_ | kStatusGnssRejected) & ~kStatusGnssFused;
+  if (first_rejected_t_ < 0) first_rejected_t_ = g.t;
+  // recovery: a long run of rejections means the filter, not the receiver, is wrong
+  if (static_cast<double>(g.t - first_rejected_t_) * kNsToS >= params_.reset_after_rejected_s) {
+    const double ps = g.pos_std_enu_m.maxCoeff();
+    ekf_.ResetPositionVelocity(p, g.has_velocity ? g.vel_enu_mps : ekf_.state().v_N_mps, ps, g.has_velocity ? 0.5 : 2.0);
+    ++stats_.gnss_resets;
+    first_rejected_t_ = -1;
+    last_gnss_fused_t_ = g.t;
+    status_ |= kStatusReset;
+  }
+}
+
+void Navigator::GnssOnlyFix(const GnssSample& g) {
+  EnsureFrame(g.position);
+  direct_.t = g.t;
+  direct_.valid = g.fix_quality > 0;
+  direct_.position = g.position;
+  direct_.p_N_m = frame_.ToLocal(g.position);
+  direct_.v_N_mps = g.vel_enu_mps;
+  direct_.pos_std_enu_m = g.pos_std_enu_m;
+  direct_.vel_std_enu_mps = g.vel_std_enu_mps;
+  direct_.has_attitude = false;
+  if (g.has_velocity && g.vel_enu_mps.head<2>().norm() >= params_.align_min_speed_mps) {
+    direct_.q_NB = Eigen::AngleAxisd(std::atan2(g.vel_enu_mps.y(), g.vel_enu_mps.x()), Eigen::Vector3d::UnitZ());
+    direct_.has_attitude = true;
+  }
+  direct_.status = kStatusGnssFused;
+}
+
+void Navigator::MultiGnssFix(const GnssSample& g) {
+  if (g.antenna < 0 || g.antenna > 2) {
+    ++stats_.bad_input;
+    return;
+  }
+  EnsureFrame(g.position);
+  multi_[g.antenna] = g;
+  multi_have_[g.antenna] = true;
+  for (int i = 0; i < 3; ++i) {
+    if (!multi_have_[i] || std::llabs(multi_[i].t - g.t) > 1'000'000) return;
+  }
+  // centroid of the antennas minus the body-frame centroid; heading by a 2-D Procrustes fit
+  Eigen::Vector3d p[3];
+  Eigen::Vector3d c_N = Eigen::Vector3d::Zero(), c_B = Eigen::Vector3d::Zero();
+  for (int i = 0; i < 3; ++i) {
+    p[i] = frame_.ToLocal(multi_[i].position);
+    c_N += p[i] / 3.0;
+    c_B += params_.multi_antenna_B_m.col(i) / 3.0;
+  }
+  double sxx = 0, sxy = 0;
+  for (int i = 0; i < 3; ++i) {
+    const Eigen::Vector2d a = (params_.multi_antenna_B_m.col(i) - c_B).head<2>();
+    const Eigen::Vector2d b = (p[i] - c_N).head<2>();
+    sxx += a.dot(b);
+    sxy += a.x() * b.y() - a.y() * b.x();
+  }
+  const double yaw = std::atan2(sxy, sxx);
+  const Eigen::Quaterniond q(Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()));
+  direct_.t = g.t;
+  direct_.valid = true;
+  direct_.p_N_m = c_N - q * c_B;
+  direct_.position = frame_.ToLla(direct_.p_N_m);
+  direct_.v_N_mps.setZero();
+  for (int i = 0; i < 3; ++i) direct_.v_N_mps += multi_[i].vel_enu_mps / 3.0;
+  direct_.pos_std_enu_m = g.pos_std_enu_m / std::sqrt(3.0);
+  direct_.q_NB = q;
+  direct_.has_attitude = true;
+  direct_.status = kStatusGnssFused;
+  for (bool& h : multi_have_) h = false;
+}
+
+NavOutput Navigator::Output() const {
+  if (params_.mode == NavMode::kGnssOnly || params_.mode == NavMode::kMultiGnss) return direct_;
+  NavOutput o;
+  o.status = status_ | (ekf_.repairs() > 0 ? kStatusCovarianceRepaired : 0u);
+  if (!aligned_) return o;
+  o.valid = true;
+  o.t = filter_t_;
+  if (params_.mode == NavMode::kPlanar2d) {
+    o.p_N_m << planar_.position(), 0.0;
+    o.v_N_mps << planar_.velocity(), 0.0;
+    o.q_NB = Eigen::AngleAxisd(planar_.yaw_rad(), Eigen::Vector3d::UnitZ());
+    o.has_attitude = true;
+    o.pos_std_enu_m << std::sqrt(planar_.covariance()(0, 0)), std::sqrt(planar_.covariance()(1, 1)), 0.0;
+    o.vel_std_enu_mps << std::sqrt(planar_.covariance()(2, 2)), std::sqrt(planar_.covariance()(3, 3)), 0.0;
+    o.position = frame_.ToLla(o.p_N_m);
+    return o;
+  }
+  // output predictor: the delayed filter state carried through the IMU samples not yet fused
+  NavState st = ekf_.state();
+  MechanizationMemory mem;
+  EarthModel earth;
+  earth.g_N_mps2 = Eigen::Vector3d(0, 0, -NormalGravity(frame_.origin().lat_deg, frame_.origin().height_m));
+  earth.w_IE_N_radps = frame_.w_IE_N();
+  for (std::size_t i = 0; i < imu_.size(); ++i) {
+    const ImuSample& s = imu_[i];
+    if (s.t <= o.t) continue;
+    Propagate(earth, s.delta_angle_B_rad - ekf_.gyro_bias() * s.dt_s, s.delta_velocity_B_mps - ekf_.accel_bias() * s.dt_s,
+              s.dt_s, mem, st);
+    o.t = s.t;
+  }
+  o.p_N_m = st.p_N_m;
+  o.v_N_mps = st.v_N_mps;
+  o.q_NB = st.q_NB;
+  o.has_attitude = true;
+  o.position = frame_.ToLla(st.p_N_m);
+  const EkfMatrix& P = ekf_.covariance();
+  for (int i = 0; i < 3; ++i) {
+    o.pos_std_enu_m[i] = std::sqrt(P(ekf_index::kPos + i, ekf_index::kPos + i));
+    o.vel_std_enu_mps[i] = std::sqrt(P(ekf_index::kVel + i, ekf_index::kVel + i));
+    o.att_std_rad[i] = std::sqrt(P(ekf_index::kAtt + i, ekf_index::kAtt + i));
+  }
+  o.accel_bias_B = ekf_.accel_bias();
+  o.gyro_bias_B = ekf_.gyro_bias();
+  return o;
+}
+
+}  // namespace hil::estimator

@@ -1,0 +1,106 @@
+#include "hil/estimator/drivers/ubx_decoder.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace hil::estimator::drivers {
+namespace {
+
+void Le(std::string& s, std::uint64_t v, int n) {
+  for (int i = 0; i < n; ++i) s.push_back(static_cast<char>((v >> (8 * i)) & 0xFF));
+}
+std::string Frame(std::uint8_t cls, std::uint8_t id, const std::string& payload) {
+  char buf[256];
+  const std::size_t n = UbxDecoder::Encode(cls, id, payload, buf, sizeof buf);
+  return std::string(buf, n);
+}
+std::string PosLlh(std::uint32_t itow) {
+  std::string p;
+  Le(p, itow, 4);
+  Le(p, static_cast<std::uint32_t>(505979765), 4);  // lon 50.5979765
+  Le(p, static_cast<std::uint32_t>(354796096), 4);  // lat 35.4796096
+  Le(p, 1301250, 4);                                // height 1301.25 m
+  Le(p, 1280000, 4);
+  Le(p, 2500, 4);                                   // hAcc 2.5 m
+  Le(p, 4000, 4);
+  return Frame(0x01, 0x02, p);
+}
+std::string VelNed(std::uint32_t itow) {
+  std::string p;
+  Le(p, itow, 4);
+  Le(p, 30, 4);                                         // N 0.30
+  Le(p, static_cast<std::uint32_t>(-40), 4);            // E −0.40
+  Le(p, 5, 4);                                          // D 0.05
+  Le(p, 50, 4);
+  Le(p, 50, 4);
+  Le(p, 0, 4);
+  Le(p, 20, 4);                                         // sAcc 0.20
+  Le(p, 0, 4);
+  return Frame(0x01, 0x12, p);
+}
+std::string Sol(std::uint32_t itow, std::uint8_t fix, std::uint8_t flags) {
+  std::string p;
+  Le(p, itow, 4);
+  Le(p, static_cast<std::uint32_t>(-1500), 4);  // fTOW −1.5 µs
+  Le(p, 1744, 2);
+  p.push_back(static_cast<char>(fix));
+  p.push_back(static_cast<char>(flags));
+  p.append(35, '\0');
+  p.push_back(7);  // numSV
+  p.append(4, '\0');
+  return Frame(0x01, 0x06, p);
+}
+
+TEST(UbxDecoderTest, EncodeMatchesReferenceCfgMsgFrame) {
+  // CFG-MSG NAV-SOL rate 1, as listed in ublox5.md §1
+  EXPECT_EQ(Frame(0x06, 0x01, std::string("\x01\x06\x01", 3)), std::string("\xB5\x62\x06\x01\x03\x00\x01\x06\x01\x12\x4F", 11));
+}
+
+TEST(UbxDecoderTest, AssemblesAnEpochFromMixedSplitStream) {
+  // GIVEN SOL, NMEA text, a corrupted POSLLH, garbage, VELNED then the good POSLLH, one byte per read
+  std::string bad = PosLlh(86400000);
+  bad[10] ^= 0x01;
+  const std::string stream = Sol(86400000, 3, 0x0D) + "$GPGGA,foo*00\r\n" + bad + "\x01\xB5\x02" + VelNed(86400000) +
+                             PosLlh(86400000);
+  UbxEpochAssembler asm_;
+  std::vector<GnssSample> out;
+  UbxDecoder d([&](const UbxMessage& m) {
+    if (auto g = asm_.Add(m)) out.push_back(*g);
+  });
+  for (char c : stream) d.Feed(std::string_view(&c, 1));
+  // THEN one fix on GPS time with position, accuracy and NED→ENU velocity
+  EXPECT_EQ(d.stats().bad_checksum, 1u);
+  EXPECT_EQ(d.stats().frames_ok, 3u);
+  ASSERT_EQ(out.size(), 1u);
+  const GnssSample& g = out[0];
+  EXPECT_EQ(g.t, 1744LL * 604800LL * kNsPerSecond + 86400LL * kNsPerSecond - 1500);
+  EXPECT_NEAR(g.position.lat_deg, 35.4796096, 1e-9);
+  EXPECT_NEAR(g.position.lon_deg, 50.5979765, 1e-9);
+  EXPECT_NEAR(g.position.height_m, 1301.25, 1e-9);
+  EXPECT_NEAR(g.pos_std_enu_m.x(), 2.5 / std::sqrt(2.0), 1e-9);
+  ASSERT_TRUE(g.has_velocity);
+  EXPECT_NEAR(g.vel_enu_mps.x(), -0.40, 1e-12);
+  EXPECT_NEAR(g.vel_enu_mps.y(), 0.30, 1e-12);
+  EXPECT_NEAR(g.vel_enu_mps.z(), -0.05, 1e-12);
+  EXPECT_EQ(g.num_sv, 7);
+}
+
+TEST(UbxDecoderTest, NoFixIsNotReportedAndIncompleteEpochFlushesOnNextItow) {
+  UbxEpochAssembler a;
+  UbxMessage m;
+  std::vector<GnssSample> out;
+  UbxDecoder d([&](const UbxMessage& msg) {
+    if (auto g = a.Add(msg)) out.push_back(*g);
+  });
+  d.Feed(Sol(1000, 0, 0x0C) + PosLlh(1000) + VelNed(1000));  // no fix
+  d.Feed(Sol(2000, 3, 0x0D) + PosLlh(2000));                   // no VELNED this epoch
+  EXPECT_TRUE(out.empty());
+  d.Feed(PosLlh(3000));  // the next epoch flushes the previous one without velocity
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_FALSE(out[0].has_velocity);
+}
+
+}  // namespace
+}  // namespace hil::estimator::drivers

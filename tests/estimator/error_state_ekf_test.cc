@@ -1,0 +1,97 @@
+// Measurement models of the error-state EKF against finite differences of the measurement
+// functions, and gating/consistency behaviour of the update.
+#include "hil/estimator/error_state_ekf.h"
+
+#include <gtest/gtest.h>
+
+namespace hil::estimator {
+namespace {
+
+using namespace ekf_index;
+
+class ErrorStateEkfTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    EkfParams p;
+    p.lever_arm_B_m = Eigen::Vector3d(0.8, -0.3, 1.5);
+    p.gnss_error_tau_s = 5.0;
+    p.gnss_error_std_m = 0.3;
+    p.nhc_std_mps = 0.05;
+    ekf_ = ErrorStateEkf(p, EarthModel{});
+    NavState s;
+    s.p_N_m = Eigen::Vector3d(10, -4, 2);
+    s.v_N_mps = Eigen::Vector3d(1.2, 0.4, -0.1);
+    s.q_NB = Eigen::AngleAxisd(0.6, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(0.05, Eigen::Vector3d::UnitY()) *
+             Eigen::AngleAxisd(-0.03, Eigen::Vector3d::UnitX());
+    ekf_.Initialize(s);
+    // one interval so the filter has an angular rate (for the lever-arm velocity)
+    raw_w_ = Eigen::Vector3d(0.02, -0.01, 0.3);
+    ekf_.Predict(raw_w_ * 0.01, Eigen::Vector3d(0.1, 0.0, 9.81) * 0.01, 0.01);
+  }
+  // measurement functions of the nominal state, written out independently of the filter
+  static Eigen::Vector3d Pos(const ErrorStateEkf& e) {
+    return e.state().p_N_m + e.state().q_NB * e.params().lever_arm_B_m + e.gnss_error();
+  }
+  Eigen::Vector3d Vel(const ErrorStateEkf& e) const {
+    const Eigen::Vector3d w = raw_w_ - e.gyro_bias();  // the rate the filter used, re-derived from the bias
+    return e.state().v_N_mps + e.state().q_NB * w.cross(e.params().lever_arm_B_m);
+  }
+  static Eigen::Vector2d Nhc(const ErrorStateEkf& e) {
+    return (e.state().q_NB.conjugate() * e.state().v_N_mps).tail<2>();
+  }
+  template <int M, typename F>
+  Eigen::Matrix<double, M, kNumStates> Numeric(F h) const {
+    Eigen::Matrix<double, M, kNumStates> J;
+    const double eps = 1e-6;
+    for (int i = 0; i < kNumStates; ++i) {
+      ErrorStateEkf plus = ekf_, minus = ekf_;
+      EkfVector dx = EkfVector::Zero();
+      dx[i] = eps;
+      plus.InjectError(dx);
+      minus.InjectError(-dx);
+      J.col(i) = (h(plus) - h(minus)) / (2 * eps);
+    }
+    return J;
+  }
+  ErrorStateEkf ekf_;
+  Eigen::Vector3d raw_w_;
+};
+
+TEST_F(ErrorStateEkfTest, PositionJacobianMatchesFiniteDifferences) {
+  const auto J = Numeric<3>([](const ErrorStateEkf& e) { return Pos(e); });
+  EXPECT_LT((J - ekf_.PositionJacobian()).cwiseAbs().maxCoeff(), 1e-6) << J << "\n\n" << ekf_.PositionJacobian();
+}
+
+TEST_F(ErrorStateEkfTest, VelocityJacobianMatchesFiniteDifferences) {
+  // the gyro rate seen by the lever arm is held at the sample's (bias-corrected) value
+  const Eigen::Vector3d expected_rate = raw_w_ - ekf_.gyro_bias();
+  ASSERT_LT((ekf_.last_gyro_rate_B() - expected_rate).norm(), 1e-9);
+  const auto J = Numeric<3>([this](const ErrorStateEkf& e) { return Vel(e); });
+  EXPECT_LT((J - ekf_.VelocityJacobian()).cwiseAbs().maxCoeff(), 1e-6) << J << "\n\n" << ekf_.VelocityJacobian();
+}
+
+TEST_F(ErrorStateEkfTest, NonHolonomicJacobianMatchesFiniteDifferences) {
+  const auto J = Numeric<2>([](const ErrorStateEkf& e) { return Nhc(e); });
+  EXPECT_LT((J - ekf_.NonHolonomicJacobian()).cwiseAbs().maxCoeff(), 1e-6);
+}
+
+TEST_F(ErrorStateEkfTest, GateRejectsAnOutlierAndAcceptsAConsistentFix) {
+  const Eigen::Vector3d p = Pos(ekf_);
+  const UpdateResult bad = ekf_.UpdatePosition(p + Eigen::Vector3d(50, 0, 0), Eigen::Vector3d::Constant(0.1));
+  EXPECT_FALSE(bad.accepted);
+  EXPECT_GT(bad.nis, 25.0 * 3);
+  const UpdateResult good = ekf_.UpdatePosition(p + Eigen::Vector3d(0.2, -0.1, 0.1), Eigen::Vector3d::Constant(0.1));
+  EXPECT_TRUE(good.accepted);
+  EXPECT_LT((Pos(ekf_) - (p + Eigen::Vector3d(0.2, -0.1, 0.1))).norm(), 0.2);
+}
+
+TEST_F(ErrorStateEkfTest, NonFiniteInputsAreIgnored) {
+  const NavState before = ekf_.state();
+  ekf_.Predict(Eigen::Vector3d::Constant(std::nan("")), Eigen::Vector3d::Zero(), 0.01);
+  EXPECT_FALSE(ekf_.UpdatePosition(Eigen::Vector3d::Constant(INFINITY), Eigen::Vector3d::Ones()).accepted);
+  EXPECT_EQ(ekf_.state().p_N_m, before.p_N_m);
+  EXPECT_TRUE(ekf_.covariance().allFinite());
+}
+
+}  // namespace
+}  // namespace hil::estimator
