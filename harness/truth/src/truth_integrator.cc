@@ -209,7 +209,8 @@ struct TruthIntegrator::Impl {
     const double dx = c_yaw * r.x() + s_yaw * r.y(), dy = -s_yaw * r.x() + c_yaw * r.y();
     const double curvature = 2 * dy / std::max(dx * dx + dy * dy, 1e-6);
     // speed: the segment's, limited to stop at the next stop vertex
-    const double to_stop = s_stop - s_now;
+    // distance to the stop, less what the speed lag will still cover
+    const double to_stop = s_stop - s_now - s[kV] * p.speed_lag_s;
     out.v_cmd = std::min(SegmentSpeed(k, t), std::max(c->guidance.creep_speed_mps,
                                                       std::sqrt(2 * c->guidance.stop_decel_mps2 * std::max(to_stop, 0.0))));
     if (diff_drive) {
