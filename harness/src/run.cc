@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -254,15 +255,24 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
   WriteErrorsCsv(fix_err, dir + "/gnss_fixes_errors.csv");
   {
     std::ofstream truth_csv(dir + "/truth.csv");
-    truth_csv << "t_s,lat_deg,lon_deg,height_m,e_m,n_m,u_m,v_e_mps,v_n_mps,v_u_mps,yaw_deg,speed_mps\n";
+    truth_csv << "t_s,lat_deg,lon_deg,height_m,e_m,n_m,u_m,v_e_mps,v_n_mps,v_u_mps,yaw_deg,speed_mps,"
+                 "roll_deg,pitch_deg,w_x_radps,w_y_radps,w_z_radps,f_x_mps2,f_y_mps2,f_z_mps2,steer_deg,cross_track_m\n";
     truth::TruthIntegrator t2(scenario.truth);
-    char line[320];
+    char line[640];
     for (Time t{}; t <= t_end; t += std::chrono::milliseconds(100)) {
       const TruthSample s = t2.Sample(t);
-      const Eigen::Vector3d fwd = s.q_NB.toRotationMatrix().col(0);
-      std::snprintf(line, sizeof line, "%.3f,%.10f,%.10f,%.4f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.5f,%.6f\n", ToSeconds(t),
-                    s.lat_deg, s.lon_deg, s.height_m, s.p_NB_N_m.x(), s.p_NB_N_m.y(), s.p_NB_N_m.z(), s.v_NB_N_mps.x(),
-                    s.v_NB_N_mps.y(), s.v_NB_N_mps.z(), std::atan2(fwd.x(), fwd.y()) * 180.0 / M_PI, s.speed_mps);
+      const Eigen::Matrix3d R = s.q_NB.toRotationMatrix();
+      const Eigen::Vector3d fwd = R.col(0);
+      // roll and pitch of the body (z-y-x Euler angles of FLU in ENU)
+      const double pitch_deg = -std::asin(std::clamp(R(2, 0), -1.0, 1.0)) * 180.0 / M_PI;
+      const double roll_deg = std::atan2(R(2, 1), R(2, 2)) * 180.0 / M_PI;
+      std::snprintf(line, sizeof line,
+                    "%.3f,%.10f,%.10f,%.4f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.5f,%.6f,%.5f,%.5f,%.8f,%.8f,%.8f,%.6f,%.6f,%.6f,"
+                    "%.4f,%.6f\n",
+                    ToSeconds(t), s.lat_deg, s.lon_deg, s.height_m, s.p_NB_N_m.x(), s.p_NB_N_m.y(), s.p_NB_N_m.z(),
+                    s.v_NB_N_mps.x(), s.v_NB_N_mps.y(), s.v_NB_N_mps.z(), std::atan2(fwd.x(), fwd.y()) * 180.0 / M_PI,
+                    s.speed_mps, roll_deg, pitch_deg, s.w_IB_B_radps.x(), s.w_IB_B_radps.y(), s.w_IB_B_radps.z(),
+                    s.f_B_mps2.x(), s.f_B_mps2.y(), s.f_B_mps2.z(), s.steer_rad * 180.0 / M_PI, s.cross_track_m);
       truth_csv << line;
     }
   }
