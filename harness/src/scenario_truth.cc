@@ -92,7 +92,8 @@ void ReadPath(const YamlReader& r, truth::TruthConfig& t) {
       r.Choice("type", "line", {"line", "ab_line", "waypoints", "rectangle", "boustrophedon", "circle"});
   std::vector<std::string> keys{"type", "speed_kmh", "speed_mps", "speed_profile", "start_enu_m", "heading_deg"};
   const auto allow = [&keys](std::initializer_list<const char*> more) { keys.insert(keys.end(), more.begin(), more.end()); };
-  if (type == "line") allow({"steer_deg"});
+  const bool diff_drive = t.vehicle.model == truth::VehicleParams::Model::kDiffDrive;
+  if (type == "line") allow({diff_drive ? "yaw_rate_dps" : "steer_deg"});
   if (type == "ab_line") allow({"a_enu_m", "b_enu_m"});
   if (type == "waypoints") allow({"points"});
   if (type == "rectangle") allow({"corner_enu_m", "width_m", "height_m", "side_heading_deg", "clockwise", "laps"});
@@ -119,7 +120,8 @@ void ReadPath(const YamlReader& r, truth::TruthConfig& t) {
   if (r.Has("start_enu_m")) t.start_p_N_m = Point(r, "start_enu_m", {0, 0});
   if (r.Has("heading_deg")) t.heading_deg = r.DoubleIn("heading_deg", 0, -360, 360);
   if (type == "line") {
-    t.steer_deg = r.DoubleIn("steer_deg", 0, -t.vehicle.max_steer_deg, t.vehicle.max_steer_deg);
+    if (diff_drive) t.yaw_rate_dps = r.DoubleIn("yaw_rate_dps", 0, -t.vehicle.max_yaw_rate_dps, t.vehicle.max_yaw_rate_dps);
+    else t.steer_deg = r.DoubleIn("steer_deg", 0, -t.vehicle.max_steer_deg, t.vehicle.max_steer_deg);
     return;
   }
   truth::GuidanceConfig& g = t.guidance;

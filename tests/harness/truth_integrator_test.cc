@@ -61,6 +61,25 @@ TEST(TruthIntegratorTest, ConstantSteeringGivesCircleOfRadiusLOverTanDelta) {
   }
 }
 
+TEST(TruthIntegratorTest, DiffDriveTurnsInPlaceAtConstantYawRate) {
+  TruthConfig c;
+  c.origin = {35, 50, 0};
+  c.vehicle = VehicleParams::DiffDrive();
+  c.speed_mps = 0;
+  c.yaw_rate_dps = 30;
+  c.start_p_N_m = Eigen::Vector2d(3, 4);
+  c.earth_rotation = false;
+  TruthIntegrator truth(c);
+  const TruthSample s = truth.Sample(TimeFromSeconds(7));
+  EXPECT_EQ(s.p_NB_N_m.head<2>(), Eigen::Vector2d(3, 4));
+  EXPECT_NEAR(s.w_NB_B_radps.z(), 30 * kDeg, 1e-12);
+  EXPECT_NEAR(s.wheel_speed_right_mps, 30 * kDeg * c.vehicle.track_m / 2, 1e-12);
+  EXPECT_NEAR(s.wheel_speed_left_mps, -30 * kDeg * c.vehicle.track_m / 2, 1e-12);
+  // heading north at t = 0, turning left 30°/s: 210° of turn by t = 7 s
+  const Eigen::Vector3d fwd = s.q_NB * Eigen::Vector3d::UnitX();
+  EXPECT_NEAR(std::atan2(fwd.y(), fwd.x()), (90 + 210 - 360) * kDeg, 1e-8);
+}
+
 TEST(TruthIntegratorTest, StationaryOnSlopeFeelsGravityAlongTheSlopeNormalTilt) {
   TruthConfig c;
   c.origin = {35, 50, 0};

@@ -1,4 +1,5 @@
 #include "hil/truth/path.h"
+#include "hil/truth/terrain.h"
 
 #include <gtest/gtest.h>
 
@@ -74,6 +75,42 @@ TEST(TruthPathTest, CircleVerticesLieOnTheCircle) {
   EXPECT_TRUE(p.vertices().front().p_N_m.isApprox(Eigen::Vector2d(1, -3)));
   // counter-clockwise from the south point: heading east first
   EXPECT_GT(p.direction(0).x(), 0.99);
+}
+
+TEST(TruthTerrainTest, PlaneRisesAlongItsUphillHeading) {
+  TerrainConfig c;
+  c.type = TerrainConfig::Type::kPlane;
+  c.slope_deg = 5;
+  c.uphill_heading_deg = 90;  // east
+  c.height_m = 1;
+  const Terrain t(c);
+  EXPECT_NEAR(t.Height({10, 3}), 1 + 10 * std::tan(5 * 3.14159265358979 / 180), 1e-12);
+  EXPECT_NEAR(t.Gradient({0, 0}).y(), 0, 1e-15);
+}
+
+TEST(TruthTerrainTest, RoughGroundGradientAndJetsAreExactDerivatives) {
+  TerrainConfig c;
+  c.type = TerrainConfig::Type::kRough;
+  c.amplitude_m = 0.1;
+  c.seed = 42;
+  const Terrain t(c);
+  ASSERT_EQ(t.waves().size(), 8u);
+  const double h = 1e-5;
+  for (const Eigen::Vector2d& p : {Eigen::Vector2d(0.3, -2), Eigen::Vector2d(17, 5.5)}) {
+    const Eigen::Vector2d g = t.Gradient(p);
+    EXPECT_NEAR(g.x(), (t.Height(p + Eigen::Vector2d(h, 0)) - t.Height(p - Eigen::Vector2d(h, 0))) / (2 * h), 1e-8);
+    EXPECT_NEAR(g.y(), (t.Height(p + Eigen::Vector2d(0, h)) - t.Height(p - Eigen::Vector2d(0, h))) / (2 * h), 1e-8);
+    // along e(t) = p.x + 0.7 t + 0.1 t², n(t) = p.y − 0.4 t: dz/dt = ∇z · (0.7, −0.4)
+    Jet2 z, ze, zn;
+    t.Evaluate(Jet2(p.x(), 0.7, 0.2), Jet2(p.y(), -0.4, 0), z, ze, zn);
+    EXPECT_NEAR(z.d, g.dot(Eigen::Vector2d(0.7, -0.4)), 1e-12);
+    const auto z_at = [&](double s) { return t.Height({p.x() + 0.7 * s + 0.1 * s * s, p.y() - 0.4 * s}); };
+    EXPECT_NEAR(z.dd, (z_at(1e-4) - 2 * z_at(0) + z_at(-1e-4)) / 1e-8, 1e-5);
+  }
+  // the same seed gives the same ground
+  EXPECT_EQ(Terrain(c).Height({3, 4}), t.Height({3, 4}));
+  c.seed = 43;
+  EXPECT_NE(Terrain(c).Height({3, 4}), t.Height({3, 4}));
 }
 
 }  // namespace

@@ -85,6 +85,8 @@ TEST(TruthScenarioTest, DiffDriveWaypointsWithStopsAndSpeeds) {
   ASSERT_TRUE(s.truth.path);
   EXPECT_DOUBLE_EQ(s.truth.path->vertices()[1].stop_s, 5);
   EXPECT_DOUBLE_EQ(*s.truth.path->vertices()[1].speed_mps, 0.3);
+  const Scenario spin = ParseScenario(Doc("vehicle: {model: diff_drive}\npath: {type: line, speed_mps: 0, yaw_rate_dps: 20}\n"), "s.yaml");
+  EXPECT_DOUBLE_EQ(spin.truth.yaw_rate_dps, 20);
 }
 
 TEST(TruthScenarioTest, AbLineCircleAndSpeedProfileLoad) {
@@ -117,6 +119,7 @@ TEST(TruthScenarioTest, BadValuesNameFileLineAndField) {
   ExpectError(Doc("vibration:\n  components:\n    - {heave_accel_mps2: 1}\n"), 5, "vibration.components[0]",
               "frequency_hz");
   ExpectError(Doc("truth: {rtol: 0.1}\n"), 3, "truth.rtol", "out of range");
+  ExpectError(Doc("vehicle: {model: diff_drive}\npath: {type: line, steer_deg: 3}\n"), 4, "path.steer_deg", "unknown key");
 }
 
 }  // namespace

@@ -179,7 +179,7 @@ struct TruthIntegrator::Impl {
     switch (mode.phase) {
       case Mode::Phase::kOpenLoop:
         out.v_cmd = NominalSpeed(t);
-        out.u_cmd = diff_drive ? out.v_cmd * std::tan(c->steer_deg * kDeg) / p.wheelbase_m : c->steer_deg * kDeg;
+        out.u_cmd = diff_drive ? c->yaw_rate_dps * kDeg : c->steer_deg * kDeg;
         return out;
       case Mode::Phase::kDone:
         return {0, diff_drive ? 0 : last.u_cmd};

@@ -80,9 +80,9 @@ struct BoustrophedonSpec {
 };
 /// @throws std::invalid_argument when row_spacing < 2 × turn_radius.
 Path MakeBoustrophedon(const BoustrophedonSpec& spec);
-/// A circle of `radius_m` about `centre`, starting at the point at `start_heading_deg` from the
-/// centre... travelling counter-clockwise (left) or clockwise, `laps` times, as a polygon with
-/// `points_per_lap` vertices.
+/// A circle of `radius_m` about `centre`, starting at the point that lies at bearing
+/// `start_bearing_deg` (clockwise from north) from the centre, travelling counter-clockwise (left
+/// turn) or clockwise, `laps` times, as a polygon with `points_per_lap` vertices.
 Path MakeCircle(const Eigen::Vector2d& centre, double radius_m, double start_bearing_deg, bool counter_clockwise,
                 int laps, int points_per_lap);
 

@@ -74,7 +74,8 @@ struct TruthConfig {
   VehicleParams vehicle;
   /// The planned path, followed by pure pursuit. Without one the vehicle drives open loop from
   /// the start point at `heading_deg` with the constant steering angle `steer_deg` (a line, or a
-  /// circle of radius L / tan δ).
+  /// circle of radius L / tan δ) or, for diff_drive, the constant yaw rate `yaw_rate_dps` (with
+  /// zero speed: turning in place).
   std::optional<Path> path;
   GuidanceConfig guidance;
   /// Start point (ENU, m); default: the origin, or the path's first vertex.
@@ -83,7 +84,8 @@ struct TruthConfig {
   std::optional<double> heading_deg;
   double speed_mps = 0.4444444444444444;  ///< nominal commanded forward speed
   std::vector<SpeedStep> speed_profile;   ///< if given, replaces speed_mps from each step's time on
-  double steer_deg = 0;                   ///< open loop: constant front-wheel angle, left positive
+  double steer_deg = 0;                   ///< open loop, bicycle: constant front-wheel angle, left positive
+  double yaw_rate_dps = 0;                ///< open loop, diff_drive: constant commanded yaw rate, left positive
   bool start_at_speed = true;             ///< start moving at the commanded speed
   TerrainConfig terrain;
   VibrationConfig vibration;
