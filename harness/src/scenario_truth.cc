@@ -19,8 +19,9 @@ void ReadOrigin(const YamlReader& r, truth::TruthConfig& t) {
 }
 
 void ReadVehicle(const YamlReader& r, truth::TruthConfig& t) {
-  r.CheckKeys({"model", "wheelbase_m", "track_m", "max_steer_deg", "max_steer_rate_dps", "steer_lag_s", "speed_lag_s",
-               "yaw_rate_lag_s", "max_yaw_rate_dps", "slip_gain_rad_per_mps2"});
+  r.CheckKeys({"model", "wheelbase_m", "track_m", "max_steer_deg", "max_steer_rate_dps",
+               "steer_lag_s", "speed_lag_s", "yaw_rate_lag_s", "max_yaw_rate_dps",
+               "slip_gain_rad_per_mps2"});
   const std::string model = r.Choice("model", "bicycle", {"bicycle", "tractor", "diff_drive"});
   truth::VehicleParams p = model == "tractor"      ? truth::VehicleParams::Tractor()
                            : model == "diff_drive" ? truth::VehicleParams::DiffDrive()
@@ -55,8 +56,10 @@ Eigen::Vector2d Point(const YamlReader& r, const std::string& key, Eigen::Vector
 }
 
 double Speed(const YamlReader& r, double fallback) {
-  if (r.Has("speed_kmh") && r.Has("speed_mps")) r.Fail("speed_mps", "give speed_kmh or speed_mps, not both");
-  return r.Has("speed_kmh") ? r.DoubleIn("speed_kmh", 0, 0, 100) * kKmhToMps : r.DoubleIn("speed_mps", fallback, 0, 30);
+  if (r.Has("speed_kmh") && r.Has("speed_mps"))
+    r.Fail("speed_mps", "give speed_kmh or speed_mps, not both");
+  return r.Has("speed_kmh") ? r.DoubleIn("speed_kmh", 0, 0, 100) * kKmhToMps
+                            : r.DoubleIn("speed_mps", fallback, 0, 30);
 }
 
 std::vector<truth::PathVertex> ReadWaypoints(const YamlReader& list) {
@@ -65,7 +68,8 @@ std::vector<truth::PathVertex> ReadWaypoints(const YamlReader& list) {
     truth::PathVertex v;
     if (w.IsSequence()) {
       const YAML::Node& n = w.node();
-      if (n.size() != 2) w.Fail("a waypoint is [east_m, north_m] or {enu_m: [e, n], speed_mps, stop_s}");
+      if (n.size() != 2)
+        w.Fail("a waypoint is [east_m, north_m] or {enu_m: [e, n], speed_mps, stop_s}");
       try {
         v.p_N_m = {n[0].as<double>(), n[1].as<double>()};
       } catch (const YAML::Exception&) {
@@ -82,24 +86,33 @@ std::vector<truth::PathVertex> ReadWaypoints(const YamlReader& list) {
   }
   if (out.size() < 2) list.Fail("a path needs at least 2 waypoints");
   for (std::size_t i = 0; i + 1 < out.size(); ++i) {
-    if ((out[i + 1].p_N_m - out[i].p_N_m).norm() < 1e-3) list.Elements()[i + 1].Fail("repeats the previous waypoint");
+    if ((out[i + 1].p_N_m - out[i].p_N_m).norm() < 1e-3)
+      list.Elements()[i + 1].Fail("repeats the previous waypoint");
   }
   return out;
 }
 
 void ReadPath(const YamlReader& r, truth::TruthConfig& t) {
-  const std::string type =
-      r.Choice("type", "line", {"line", "ab_line", "waypoints", "rectangle", "boustrophedon", "circle"});
-  std::vector<std::string> keys{"type", "speed_kmh", "speed_mps", "speed_profile", "start_enu_m", "heading_deg"};
-  const auto allow = [&keys](std::initializer_list<const char*> more) { keys.insert(keys.end(), more.begin(), more.end()); };
+  const std::string type = r.Choice(
+      "type", "line", {"line", "ab_line", "waypoints", "rectangle", "boustrophedon", "circle"});
+  std::vector<std::string> keys{"type",          "speed_kmh",   "speed_mps",
+                                "speed_profile", "start_enu_m", "heading_deg"};
+  const auto allow = [&keys](std::initializer_list<const char*> more) {
+    keys.insert(keys.end(), more.begin(), more.end());
+  };
   const bool diff_drive = t.vehicle.model == truth::VehicleParams::Model::kDiffDrive;
   if (type == "line") allow({diff_drive ? "yaw_rate_dps" : "steer_deg"});
   if (type == "ab_line") allow({"a_enu_m", "b_enu_m"});
   if (type == "waypoints") allow({"points"});
-  if (type == "rectangle") allow({"corner_enu_m", "width_m", "height_m", "side_heading_deg", "clockwise", "laps"});
-  if (type == "boustrophedon") allow({"row_start_enu_m", "row_heading_deg", "row_length_m", "row_spacing_m", "rows", "turn_radius_m", "first_turn", "turn_speed_mps"});
-  if (type == "circle") allow({"centre_enu_m", "radius_m", "start_bearing_deg", "direction", "laps"});
-  if (type != "line") allow({"lookahead_m", "guidance_rate_hz", "stop_decel_mps2", "turn_in_place_deg"});
+  if (type == "rectangle")
+    allow({"corner_enu_m", "width_m", "height_m", "side_heading_deg", "clockwise", "laps"});
+  if (type == "boustrophedon")
+    allow({"row_start_enu_m", "row_heading_deg", "row_length_m", "row_spacing_m", "rows",
+           "turn_radius_m", "first_turn", "turn_speed_mps"});
+  if (type == "circle")
+    allow({"centre_enu_m", "radius_m", "start_bearing_deg", "direction", "laps"});
+  if (type != "line")
+    allow({"lookahead_m", "guidance_rate_hz", "stop_decel_mps2", "turn_in_place_deg"});
   r.CheckKeys(keys);
 
   t.speed_mps = Speed(r, t.speed_mps);
@@ -112,7 +125,8 @@ void ReadPath(const YamlReader& r, truth::TruthConfig& t) {
       if (!step.Has("t_s")) step.Fail("missing required key 't_s'");
       if (s.t_s <= last) step.Fail("t_s", "speed profile times must increase");
       last = s.t_s;
-      if (!step.Has("speed_mps") && !step.Has("speed_kmh")) step.Fail("missing 'speed_mps' or 'speed_kmh'");
+      if (!step.Has("speed_mps") && !step.Has("speed_kmh"))
+        step.Fail("missing 'speed_mps' or 'speed_kmh'");
       s.speed_mps = Speed(step, 0);
       t.speed_profile.push_back(s);
     }
@@ -120,8 +134,11 @@ void ReadPath(const YamlReader& r, truth::TruthConfig& t) {
   if (r.Has("start_enu_m")) t.start_p_N_m = Point(r, "start_enu_m", {0, 0});
   if (r.Has("heading_deg")) t.heading_deg = r.DoubleIn("heading_deg", 0, -360, 360);
   if (type == "line") {
-    if (diff_drive) t.yaw_rate_dps = r.DoubleIn("yaw_rate_dps", 0, -t.vehicle.max_yaw_rate_dps, t.vehicle.max_yaw_rate_dps);
-    else t.steer_deg = r.DoubleIn("steer_deg", 0, -t.vehicle.max_steer_deg, t.vehicle.max_steer_deg);
+    if (diff_drive)
+      t.yaw_rate_dps =
+          r.DoubleIn("yaw_rate_dps", 0, -t.vehicle.max_yaw_rate_dps, t.vehicle.max_yaw_rate_dps);
+    else
+      t.steer_deg = r.DoubleIn("steer_deg", 0, -t.vehicle.max_steer_deg, t.vehicle.max_steer_deg);
     return;
   }
   truth::GuidanceConfig& g = t.guidance;
@@ -131,7 +148,8 @@ void ReadPath(const YamlReader& r, truth::TruthConfig& t) {
   g.turn_in_place_deg = r.DoubleIn("turn_in_place_deg", g.turn_in_place_deg, 1, 180);
   try {
     if (type == "ab_line") {
-      if (!r.Has("a_enu_m") || !r.Has("b_enu_m")) r.Fail("an ab_line needs 'a_enu_m' and 'b_enu_m'");
+      if (!r.Has("a_enu_m") || !r.Has("b_enu_m"))
+        r.Fail("an ab_line needs 'a_enu_m' and 'b_enu_m'");
       const Eigen::Vector2d a = Point(r, "a_enu_m", {0, 0}), b = Point(r, "b_enu_m", {0, 0});
       if ((b - a).norm() < 0.1) r.Fail("b_enu_m", "A and B must be at least 0.1 m apart");
       t.path = truth::MakeAbLine(a, b, 1e5);
@@ -139,9 +157,10 @@ void ReadPath(const YamlReader& r, truth::TruthConfig& t) {
       t.path = truth::Path(ReadWaypoints(r.Child("points")));
     } else if (type == "rectangle") {
       // seed 003: 15 × 15 m from A(−7, −7), clockwise
-      t.path = truth::MakeRectangle(Point(r, "corner_enu_m", {-7, -7}), r.DoubleIn("width_m", 15, 0.5, 1e5),
-                                    r.DoubleIn("height_m", 15, 0.5, 1e5), r.DoubleIn("side_heading_deg", 0, -360, 360),
-                                    r.Bool("clockwise", true), static_cast<int>(r.Int("laps", 1, 1, 1000)));
+      t.path = truth::MakeRectangle(
+          Point(r, "corner_enu_m", {-7, -7}), r.DoubleIn("width_m", 15, 0.5, 1e5),
+          r.DoubleIn("height_m", 15, 0.5, 1e5), r.DoubleIn("side_heading_deg", 0, -360, 360),
+          r.Bool("clockwise", true), static_cast<int>(r.Int("laps", 1, 1, 1000)));
     } else if (type == "boustrophedon") {
       truth::BoustrophedonSpec b;
       b.start_p_N_m = Point(r, "row_start_enu_m", {0, 0});
@@ -152,21 +171,25 @@ void ReadPath(const YamlReader& r, truth::TruthConfig& t) {
       const double r_min = t.vehicle.model == truth::VehicleParams::Model::kDiffDrive
                                ? 0.0
                                : t.vehicle.wheelbase_m / std::tan(t.vehicle.max_steer_deg * kDeg);
-      b.turn_radius_m = r.DoubleIn("turn_radius_m", std::max(r_min * 1.05, b.row_spacing_m / 2 * 0.999), 0.1, 1000);
+      b.turn_radius_m = r.DoubleIn("turn_radius_m",
+                                   std::max(r_min * 1.05, b.row_spacing_m / 2 * 0.999), 0.1, 1000);
       if (b.turn_radius_m < r_min) {
-        r.Fail("turn_radius_m", "below the vehicle's minimum turning radius " + std::to_string(r_min) + " m");
+        r.Fail("turn_radius_m",
+               "below the vehicle's minimum turning radius " + std::to_string(r_min) + " m");
       }
       if (b.row_spacing_m < 2 * b.turn_radius_m) {
-        r.Fail("row_spacing_m", "row spacing must be at least twice the turn radius (" + std::to_string(b.turn_radius_m) + " m)");
+        r.Fail("row_spacing_m", "row spacing must be at least twice the turn radius (" +
+                                    std::to_string(b.turn_radius_m) + " m)");
       }
       b.first_turn_right = r.Choice("first_turn", "right", {"right", "left"}) == "right";
       if (r.Has("turn_speed_mps")) b.turn_speed_mps = r.DoubleIn("turn_speed_mps", 0, 0.05, 30);
       t.path = truth::MakeBoustrophedon(b);
     } else if (type == "circle") {
-      t.path = truth::MakeCircle(Point(r, "centre_enu_m", {0, 0}), r.DoubleIn("radius_m", 5, 0.2, 1e5),
-                                 r.DoubleIn("start_bearing_deg", 180, -360, 360),
-                                 r.Choice("direction", "left", {"left", "right"}) == "left",
-                                 static_cast<int>(r.Int("laps", 1, 1, 1000)), 180);
+      t.path =
+          truth::MakeCircle(Point(r, "centre_enu_m", {0, 0}), r.DoubleIn("radius_m", 5, 0.2, 1e5),
+                            r.DoubleIn("start_bearing_deg", 180, -360, 360),
+                            r.Choice("direction", "left", {"left", "right"}) == "left",
+                            static_cast<int>(r.Int("laps", 1, 1, 1000)), 180);
     }
   } catch (const std::invalid_argument& e) {
     r.Fail(e.what());
@@ -178,11 +201,11 @@ void ReadTerrain(const YamlReader& r, truth::TruthConfig& t) {
   if (type == "flat") r.CheckKeys({"type", "height_m"});
   if (type == "plane") r.CheckKeys({"type", "height_m", "slope_deg", "uphill_heading_deg"});
   if (type == "rough") {
-    r.CheckKeys({"type", "height_m", "slope_deg", "uphill_heading_deg", "amplitude_m", "min_wavelength_m",
-                 "max_wavelength_m", "waves", "seed"});
+    r.CheckKeys({"type", "height_m", "slope_deg", "uphill_heading_deg", "amplitude_m",
+                 "min_wavelength_m", "max_wavelength_m", "waves", "seed"});
   }
   truth::TerrainConfig& c = t.terrain;
-  c.type = type == "flat" ? truth::TerrainConfig::Type::kFlat
+  c.type = type == "flat"    ? truth::TerrainConfig::Type::kFlat
            : type == "plane" ? truth::TerrainConfig::Type::kPlane
                              : truth::TerrainConfig::Type::kRough;
   c.height_m = r.DoubleIn("height_m", 0, -1000, 1000);
@@ -191,7 +214,8 @@ void ReadTerrain(const YamlReader& r, truth::TruthConfig& t) {
   c.amplitude_m = r.DoubleIn("amplitude_m", c.amplitude_m, 0, 2);
   c.min_wavelength_m = r.DoubleIn("min_wavelength_m", c.min_wavelength_m, 0.5, 1000);
   c.max_wavelength_m = r.DoubleIn("max_wavelength_m", c.max_wavelength_m, 0.5, 1000);
-  if (c.max_wavelength_m < c.min_wavelength_m) r.Fail("max_wavelength_m", "must not be below min_wavelength_m");
+  if (c.max_wavelength_m < c.min_wavelength_m)
+    r.Fail("max_wavelength_m", "must not be below min_wavelength_m");
   c.waves = static_cast<int>(r.Int("waves", c.waves, 1, 64));
   c.seed = static_cast<std::uint64_t>(r.Int("seed", 1, 0, INT64_MAX));
 }
@@ -199,7 +223,8 @@ void ReadTerrain(const YamlReader& r, truth::TruthConfig& t) {
 void ReadVibration(const YamlReader& r, truth::TruthConfig& t) {
   r.CheckKeys({"components"});
   for (const YamlReader& e : r.Child("components").Elements()) {
-    e.CheckKeys({"frequency_hz", "heave_accel_mps2", "roll_rate_dps", "pitch_rate_dps", "phase_deg"});
+    e.CheckKeys(
+        {"frequency_hz", "heave_accel_mps2", "roll_rate_dps", "pitch_rate_dps", "phase_deg"});
     truth::VibrationComponent v;
     if (!e.Has("frequency_hz")) e.Fail("missing required key 'frequency_hz'");
     v.frequency_hz = e.DoubleIn("frequency_hz", 25, 0.1, 200);
@@ -222,7 +247,8 @@ void ReadTruthOptions(const YamlReader& r, truth::TruthConfig& t) {
 
 }  // namespace
 
-const std::vector<std::string> kTruthSectionKeys{"origin", "vehicle", "path", "terrain", "vibration", "truth"};
+const std::vector<std::string> kTruthSectionKeys{"origin",  "vehicle",   "path",
+                                                 "terrain", "vibration", "truth"};
 
 void ReadTruthSections(const YamlReader& root, truth::TruthConfig& t) {
   ReadOrigin(root.Child("origin"), t);

@@ -1,8 +1,8 @@
 // Cost of the truth: per 100 Hz sample over seed 004's 1800 s tractor field run (boustrophedon,
 // rough ground, 50 Hz pure-pursuit guidance), and per sample of an open-loop line.
-#include <benchmark/benchmark.h>
-
 #include <chrono>
+
+#include <benchmark/benchmark.h>
 
 #include "truth_test_scenarios.h"
 
@@ -16,14 +16,16 @@ void RunScenario(benchmark::State& state, const TruthConfig& c, double duration_
   for (auto _ : state) {
     const auto t0 = std::chrono::steady_clock::now();
     TruthIntegrator truth(c);
-    for (std::int64_t k = 0; k <= n; ++k) benchmark::DoNotOptimize(truth.Sample(TimeFromNs(k * 10'000'000LL)));
+    for (std::int64_t k = 0; k <= n; ++k)
+      benchmark::DoNotOptimize(truth.Sample(TimeFromNs(k * 10'000'000LL)));
     steps = truth.steps();
     reinits = truth.reinits();
     roots = truth.root_events();
     seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
   state.SetItemsProcessed(state.iterations() * (n + 1));
-  state.counters["us_per_sample"] = seconds * 1e6 / static_cast<double>(state.iterations() * (n + 1));
+  state.counters["us_per_sample"] =
+      seconds * 1e6 / static_cast<double>(state.iterations() * (n + 1));
   state.counters["cvode_steps"] = static_cast<double>(steps);
   state.counters["reinits"] = static_cast<double>(reinits);
   state.counters["vertex_events"] = static_cast<double>(roots);

@@ -1,12 +1,13 @@
 // Self-consistency of the truth: its own body rates and specific forces, integrated by an
 // independent strapdown, reproduce its trajectory; and it is converged in the CVODE tolerance.
-#include <gtest/gtest.h>
-
-#include <Eigen/Geometry>
 #include <cmath>
 #include <cstdio>
 
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
 #include "hil/truth/truth_integrator.h"
+
 #include "truth_test_scenarios.h"
 
 namespace hil::truth {
@@ -23,8 +24,8 @@ struct NavRate {
 };
 
 // ṗ = v, v̇ = R f + g(p) − 2Ω×v, q̇ = ½ q ⊗ (ω_IB − Rᵀ Ω)
-NavRate Rates(const LocalFrame& frame, const Eigen::Vector3d& w_IE_N, const Nav& x, const Eigen::Vector3d& f_B,
-              const Eigen::Vector3d& w_IB_B) {
+NavRate Rates(const LocalFrame& frame, const Eigen::Vector3d& w_IE_N, const Nav& x,
+              const Eigen::Vector3d& f_B, const Eigen::Vector3d& w_IB_B) {
   const Eigen::Matrix3d R = x.q.toRotationMatrix();
   NavRate r;
   r.p_dot = x.v;
@@ -39,8 +40,8 @@ Nav Add(const Nav& x, const NavRate& r, double h) {
   Nav y;
   y.p = x.p + h * r.p_dot;
   y.v = x.v + h * r.v_dot;
-  y.q = Eigen::Quaterniond(x.q.w() + h * r.q_dot[0], x.q.x() + h * r.q_dot[1], x.q.y() + h * r.q_dot[2],
-                           x.q.z() + h * r.q_dot[3]);
+  y.q = Eigen::Quaterniond(x.q.w() + h * r.q_dot[0], x.q.x() + h * r.q_dot[1],
+                           x.q.y() + h * r.q_dot[2], x.q.z() + h * r.q_dot[3]);
   return y;
 }
 
@@ -78,8 +79,9 @@ TEST(TruthConsistencyTest, StrapdownOfOwnImuTruthAt1kHzStaysWithin1mmOver60s) {
     pitch_span = std::max(pitch_span, std::abs(std::asin(R(2, 0))));
     yaw_rate_max = std::max(yaw_rate_max, std::abs(e.w_NB_B_radps.z()));
   }
-  std::printf("strapdown vs truth over 60 s: max position error %.3g m, max attitude error %.3g rad\n", max_err,
-              max_att);
+  std::printf(
+      "strapdown vs truth over 60 s: max position error %.3g m, max attitude error %.3g rad\n",
+      max_err, max_att);
   std::printf("scenario: max |roll| %.2f deg, max |pitch| %.2f deg, max |yaw rate| %.1f deg/s\n",
               roll_span * 57.29578, pitch_span * 57.29578, yaw_rate_max * 57.29578);
   // THEN the strapdown follows the truth to well below a millimetre
@@ -105,9 +107,11 @@ TEST(TruthConsistencyTest, TruthAtRtolAndRtolOver100DiffersByLessThan0p1mm) {
     max_diff = std::max(max_diff, (sa.p_NB_N_m - sb.p_NB_N_m).norm());
     max_f_diff = std::max(max_f_diff, (sa.f_B_mps2 - sb.f_B_mps2).norm());
   }
-  std::printf("rtol %.0e vs %.0e over 120 s: max position difference %.3g m, max specific-force difference %.3g m/s^2 "
-              "(steps %ld vs %ld)\n",
-              coarse.rtol, fine.rtol, max_diff, max_f_diff, a.steps(), b.steps());
+  std::printf(
+      "rtol %.0e vs %.0e over 120 s: max position difference %.3g m, max specific-force difference "
+      "%.3g m/s^2 "
+      "(steps %ld vs %ld)\n",
+      coarse.rtol, fine.rtol, max_diff, max_f_diff, a.steps(), b.steps());
   EXPECT_LT(max_diff, 1e-4);
 }
 

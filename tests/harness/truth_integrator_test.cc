@@ -1,9 +1,9 @@
 #include "hil/truth/truth_integrator.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numbers>
+
+#include <gtest/gtest.h>
 
 #include "truth_test_scenarios.h"
 
@@ -52,7 +52,8 @@ TEST(TruthIntegratorTest, ConstantSteeringGivesCircleOfRadiusLOverTanDelta) {
     // centripetal specific force v²/R to the left (body +y), yaw rate v/R
     const Eigen::Vector3d a_N = s.q_NB * s.f_B_mps2 + s.gravity_N_mps2;
     EXPECT_NEAR(a_N.norm(), 1.0 / R, 1e-7);
-    EXPECT_NEAR(a_N.head<2>().normalized().dot((centre - s.p_NB_N_m.head<2>()).normalized()), 1, 1e-9);
+    EXPECT_NEAR(a_N.head<2>().normalized().dot((centre - s.p_NB_N_m.head<2>()).normalized()), 1,
+                1e-9);
     EXPECT_NEAR(s.f_B_mps2.y(), 1.0 / R, 1e-5);  // plus gravity's tilt (3.6e-7 rad at 2.3 m)
     EXPECT_NEAR(s.w_NB_B_radps.z(), 1.0 / R, 1e-9);
     EXPECT_NEAR(s.steer_rad, 20 * kDeg, 1e-12);
@@ -134,9 +135,11 @@ TEST(TruthIntegratorTest, GeodeticEcefAndLocalPositionsAgree) {
   TruthConfig c = testing::RoughTurningConfig();
   TruthIntegrator truth(c);
   const TruthSample s = truth.Sample(TimeFromSeconds(12.345));
-  EXPECT_LT((truth.frame().FromGeodetic({s.lat_deg, s.lon_deg, s.height_m}) - s.p_NB_N_m).norm(), 1e-6);
+  EXPECT_LT((truth.frame().FromGeodetic({s.lat_deg, s.lon_deg, s.height_m}) - s.p_NB_N_m).norm(),
+            1e-6);
   EXPECT_LT((truth.frame().FromEcef(s.p_EB_E_m) - s.p_NB_N_m).norm(), 1e-6);
-  EXPECT_NEAR(s.p_NB_N_m.z(), truth.terrain().Height(s.p_NB_N_m.head<2>()), 1e-4);  // + vibration heave
+  EXPECT_NEAR(s.p_NB_N_m.z(), truth.terrain().Height(s.p_NB_N_m.head<2>()),
+              1e-4);  // + vibration heave
 }
 
 TEST(TruthIntegratorTest, EarlierRequestRestartsDeterministically) {
@@ -152,18 +155,23 @@ TEST(TruthIntegratorTest, EarlierRequestRestartsDeterministically) {
 TEST(TruthIntegratorTest, SamplesDoNotDependOnWhichOtherTimesAreSampled) {
   // the step sequence is independent of the sensor schedule: 10 Hz and 100 Hz + 7 Hz sampling give
   // bit-identical values at common times
-  const TruthConfig c = testing::RoughTurningConfig();
-  TruthIntegrator slow(c), fast(c);
-  std::int64_t ns_fast = 0;
-  for (std::int64_t k = 0; k <= 300; ++k) {
-    const std::int64_t ns = k * 100'000'000LL;
-    while (ns_fast < ns) {
-      fast.Sample(TimeFromNs(ns_fast));
-      ns_fast += ns_fast % 3 == 0 ? 10'000'000LL : 142'857'143LL / 11;
+  TruthConfig open_loop;
+  open_loop.origin = {35, 50, 0};
+  open_loop.steer_deg = 3;
+  open_loop.terrain.type = TerrainConfig::Type::kRough;
+  for (const TruthConfig& c : {testing::RoughTurningConfig(), open_loop}) {
+    TruthIntegrator slow(c), fast(c);
+    std::int64_t ns_fast = 0;
+    for (std::int64_t k = 0; k <= 300; ++k) {
+      const std::int64_t ns = k * 100'000'000LL;
+      while (ns_fast < ns) {
+        fast.Sample(TimeFromNs(ns_fast));
+        ns_fast += ns_fast % 3 == 0 ? 10'000'000LL : 142'857'143LL / 11;
+      }
+      const TruthSample a = slow.Sample(TimeFromNs(ns)), b = fast.Sample(TimeFromNs(ns));
+      ASSERT_EQ(a.p_NB_N_m, b.p_NB_N_m) << "t=" << ns;
+      ASSERT_EQ(a.w_IB_B_radps, b.w_IB_B_radps) << "t=" << ns;
     }
-    const TruthSample a = slow.Sample(TimeFromNs(ns)), b = fast.Sample(TimeFromNs(ns));
-    ASSERT_EQ(a.p_NB_N_m, b.p_NB_N_m) << "t=" << ns;
-    ASSERT_EQ(a.w_IB_B_radps, b.w_IB_B_radps) << "t=" << ns;
   }
 }
 
@@ -180,7 +188,8 @@ TEST(TruthIntegratorTest, VelocityAccelerationAndRatesAreDerivativesOfPoseAndVel
     const Eigen::AngleAxisd d(m.q_NB.conjugate() * b.q_NB * (a.q_NB.conjugate() * m.q_NB));
     const Eigen::Vector3d w_fd = d.angle() * d.axis() / (2 * h);
     EXPECT_LT((w_fd - m.w_NB_B_radps).norm(), 1e-4) << t;
-    EXPECT_LT(((b.w_NB_B_radps - a.w_NB_B_radps) / (2 * h) - m.alpha_NB_B_radps2).norm(), 1e-2) << t;
+    EXPECT_LT(((b.w_NB_B_radps - a.w_NB_B_radps) / (2 * h) - m.alpha_NB_B_radps2).norm(), 1e-2)
+        << t;
   }
 }
 
@@ -230,7 +239,9 @@ TEST(TruthIntegratorTest, FollowsSeed003RectangleClockwiseWithPurePursuit) {
   EXPECT_LT(max_corner, 1.0);
   // at the end it stops
   EXPECT_NEAR(truth.Sample(TimeFromSeconds(150)).speed_mps, 0, 1e-6);
-  EXPECT_LT((truth.Sample(TimeFromSeconds(150)).p_NB_N_m.head<2>() - Eigen::Vector2d(-7, -7)).norm(), 0.5);
+  EXPECT_LT(
+      (truth.Sample(TimeFromSeconds(150)).p_NB_N_m.head<2>() - Eigen::Vector2d(-7, -7)).norm(),
+      0.5);
 }
 
 TEST(TruthIntegratorTest, StopsAtAWaypointForItsStopTimeThenContinues) {
@@ -296,7 +307,8 @@ TEST(TruthIntegratorTest, TractorFollowsBoustrophedonRowsAndHeadlandTurns) {
   for (double t = 0; t <= t_end; t += 0.2) {
     const TruthSample s = truth.Sample(TimeFromSeconds(t));
     max_any = std::max(max_any, std::abs(s.cross_track_m));
-    if (s.p_NB_N_m.y() > 10 && s.p_NB_N_m.y() < 30) max_row = std::max(max_row, std::abs(s.cross_track_m));
+    if (s.p_NB_N_m.y() > 10 && s.p_NB_N_m.y() < 30)
+      max_row = std::max(max_row, std::abs(s.cross_track_m));
   }
   EXPECT_LT(max_row, 0.02);
   EXPECT_LT(max_any, 0.5);

@@ -1,10 +1,10 @@
-#include "hil/truth/path.h"
-#include "hil/truth/terrain.h"
+#include <cmath>
+#include <stdexcept>
 
 #include <gtest/gtest.h>
 
-#include <cmath>
-#include <stdexcept>
+#include "hil/truth/path.h"
+#include "hil/truth/terrain.h"
 
 namespace hil::truth {
 namespace {
@@ -71,7 +71,8 @@ TEST(TruthPathTest, BoustrophedonRowsAreParallelSpacedAndJoinedByTangentTurns) {
 
 TEST(TruthPathTest, CircleVerticesLieOnTheCircle) {
   const Path p = MakeCircle({1, 2}, 5, 180, true, 2, 90);
-  for (const auto& v : p.vertices()) EXPECT_NEAR((v.p_N_m - Eigen::Vector2d(1, 2)).norm(), 5, 1e-12);
+  for (const auto& v : p.vertices())
+    EXPECT_NEAR((v.p_N_m - Eigen::Vector2d(1, 2)).norm(), 5, 1e-12);
   EXPECT_TRUE(p.vertices().front().p_N_m.isApprox(Eigen::Vector2d(1, -3)));
   // counter-clockwise from the south point: heading east first
   EXPECT_GT(p.direction(0).x(), 0.99);
@@ -98,13 +99,21 @@ TEST(TruthTerrainTest, RoughGroundGradientAndJetsAreExactDerivatives) {
   const double h = 1e-5;
   for (const Eigen::Vector2d& p : {Eigen::Vector2d(0.3, -2), Eigen::Vector2d(17, 5.5)}) {
     const Eigen::Vector2d g = t.Gradient(p);
-    EXPECT_NEAR(g.x(), (t.Height(p + Eigen::Vector2d(h, 0)) - t.Height(p - Eigen::Vector2d(h, 0))) / (2 * h), 1e-8);
-    EXPECT_NEAR(g.y(), (t.Height(p + Eigen::Vector2d(0, h)) - t.Height(p - Eigen::Vector2d(0, h))) / (2 * h), 1e-8);
+    EXPECT_NEAR(
+        g.x(),
+        (t.Height(p + Eigen::Vector2d(h, 0)) - t.Height(p - Eigen::Vector2d(h, 0))) / (2 * h),
+        1e-8);
+    EXPECT_NEAR(
+        g.y(),
+        (t.Height(p + Eigen::Vector2d(0, h)) - t.Height(p - Eigen::Vector2d(0, h))) / (2 * h),
+        1e-8);
     // along e(t) = p.x + 0.7 t + 0.1 t², n(t) = p.y − 0.4 t: dz/dt = ∇z · (0.7, −0.4)
     Jet2 z, ze, zn;
     t.Evaluate(Jet2(p.x(), 0.7, 0.2), Jet2(p.y(), -0.4, 0), z, ze, zn);
     EXPECT_NEAR(z.d, g.dot(Eigen::Vector2d(0.7, -0.4)), 1e-12);
-    const auto z_at = [&](double s) { return t.Height({p.x() + 0.7 * s + 0.1 * s * s, p.y() - 0.4 * s}); };
+    const auto z_at = [&](double s) {
+      return t.Height({p.x() + 0.7 * s + 0.1 * s * s, p.y() - 0.4 * s});
+    };
     EXPECT_NEAR(z.dd, (z_at(1e-4) - 2 * z_at(0) + z_at(-1e-4)) / 1e-8, 1e-5);
   }
   // the same seed gives the same ground

@@ -1,11 +1,11 @@
 // The seed scenarios' truth end to end from their YAML files: the vehicle follows the planned
 // path, and the figures (cross-track statistics, attitude ranges) are printed for the report.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "hil/harness/scenario.h"
 
@@ -26,15 +26,17 @@ Stats Drive(const Scenario& s, double rate_hz) {
     st.mean_abs_xt += std::abs(ts.cross_track_m) / static_cast<double>(n + 1);
     st.max_abs_xt = std::max(st.max_abs_xt, std::abs(ts.cross_track_m));
     const Eigen::Matrix3d R = ts.q_NB.toRotationMatrix();
-    st.max_roll_deg = std::max(st.max_roll_deg, std::abs(std::atan2(R(2, 1), R(2, 2))) * 180 / M_PI);
+    st.max_roll_deg =
+        std::max(st.max_roll_deg, std::abs(std::atan2(R(2, 1), R(2, 2))) * 180 / M_PI);
     st.max_pitch_deg = std::max(st.max_pitch_deg, std::abs(std::asin(R(2, 0))) * 180 / M_PI);
     st.max_f_horizontal = std::max(st.max_f_horizontal, ts.f_B_mps2.head<2>().norm());
     st.last = ts;
   }
-  std::printf("%s: |cross-track| mean %.3f m, max %.3f m; max |roll| %.2f deg, max |pitch| %.2f deg, "
-              "max horizontal specific force %.2f m/s^2; end at (%.2f, %.2f) m\n",
-              s.name.c_str(), st.mean_abs_xt, st.max_abs_xt, st.max_roll_deg, st.max_pitch_deg, st.max_f_horizontal,
-              st.last.p_NB_N_m.x(), st.last.p_NB_N_m.y());
+  std::printf(
+      "%s: |cross-track| mean %.3f m, max %.3f m; max |roll| %.2f deg, max |pitch| %.2f deg, "
+      "max horizontal specific force %.2f m/s^2; end at (%.2f, %.2f) m\n",
+      s.name.c_str(), st.mean_abs_xt, st.max_abs_xt, st.max_roll_deg, st.max_pitch_deg,
+      st.max_f_horizontal, st.last.p_NB_N_m.x(), st.last.p_NB_N_m.y());
   return st;
 }
 

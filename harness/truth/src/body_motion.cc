@@ -38,8 +38,8 @@ Eigen::Vector3d VeeOfSkewPart(const Eigen::Matrix3d& m) {
 
 }  // namespace
 
-BodyMotion CalcBodyMotion(const Terrain& terrain, const VibrationConfig& vibration, const HorizontalJets& h,
-                          double t_s) {
+BodyMotion CalcBodyMotion(const Terrain& terrain, const VibrationConfig& vibration,
+                          const HorizontalJets& h, double t_s) {
   Jet2 z, ze, zn;
   terrain.Evaluate(h.e_m, h.n_m, z, ze, zn);
   const Jet2 c = cos(h.yaw_rad), s = sin(h.yaw_rad);

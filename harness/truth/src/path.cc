@@ -26,7 +26,9 @@ Path::Path(std::vector<PathVertex> vertices) : v_(std::move(vertices)) {
   for (std::size_t i = 0; i + 1 < v_.size(); ++i) {
     const Eigen::Vector2d d = v_[i + 1].p_N_m - v_[i].p_N_m;
     const double len = d.norm();
-    if (!(len > 1e-6)) throw std::invalid_argument("path vertices " + std::to_string(i) + " and " + std::to_string(i + 1) + " coincide");
+    if (!(len > 1e-6))
+      throw std::invalid_argument("path vertices " + std::to_string(i) + " and " +
+                                  std::to_string(i + 1) + " coincide");
     u_.push_back(d / len);
     s_.push_back(s_.back() + len);
   }
@@ -71,7 +73,9 @@ PathProjection Path::Project(const Eigen::Vector2d& p) const {
   return best;
 }
 
-double CrossTrackError(const Path& path, const Eigen::Vector3d& p_N_m) { return path.Project(p_N_m.head<2>()).cross_track_m; }
+double CrossTrackError(const Path& path, const Eigen::Vector3d& p_N_m) {
+  return path.Project(p_N_m.head<2>()).cross_track_m;
+}
 
 Path MakeAbLine(const Eigen::Vector2d& a, const Eigen::Vector2d& b, double extend_m) {
   const Eigen::Vector2d u = (b - a).normalized();
@@ -80,12 +84,13 @@ Path MakeAbLine(const Eigen::Vector2d& a, const Eigen::Vector2d& b, double exten
   return Path(std::move(v));
 }
 
-Path MakeRectangle(const Eigen::Vector2d& start, double width_m, double height_m, double heading_deg, bool clockwise,
-                   int laps) {
+Path MakeRectangle(const Eigen::Vector2d& start, double width_m, double height_m,
+                   double heading_deg, bool clockwise, int laps) {
   const Eigen::Vector2d u = DirectionOfHeading(heading_deg);
-  const Eigen::Vector2d side = clockwise ? Eigen::Vector2d(u.y(), -u.x()) : Eigen::Vector2d(-u.y(), u.x());
-  const Eigen::Vector2d corners[4] = {start, start + height_m * u, start + height_m * u + width_m * side,
-                                      start + width_m * side};
+  const Eigen::Vector2d side =
+      clockwise ? Eigen::Vector2d(u.y(), -u.x()) : Eigen::Vector2d(-u.y(), u.x());
+  const Eigen::Vector2d corners[4] = {
+      start, start + height_m * u, start + height_m * u + width_m * side, start + width_m * side};
   std::vector<PathVertex> v{{start, {}, 0}};
   for (int lap = 0; lap < laps; ++lap) {
     for (int k = 1; k <= 4; ++k) v.push_back({corners[k % 4], {}, 0});
@@ -100,18 +105,21 @@ Path MakeBoustrophedon(const BoustrophedonSpec& b) {
   std::vector<PathVertex> v;
   const Eigen::Vector2d u0 = DirectionOfHeading(b.heading_deg);
   // the side the next row lies on
-  const Eigen::Vector2d side = b.first_turn_right ? Eigen::Vector2d(u0.y(), -u0.x()) : Eigen::Vector2d(-u0.y(), u0.x());
+  const Eigen::Vector2d side =
+      b.first_turn_right ? Eigen::Vector2d(u0.y(), -u0.x()) : Eigen::Vector2d(-u0.y(), u0.x());
   const int arc_points = std::max(2, static_cast<int>(std::ceil(90.0 / b.arc_step_deg)));
   for (int row = 0; row < b.rows; ++row) {
     const Eigen::Vector2d u = row % 2 == 0 ? u0 : Eigen::Vector2d(-u0);
-    const Eigen::Vector2d a = b.start_p_N_m + static_cast<double>(row) * b.row_spacing_m * side +
-                              (row % 2 == 0 ? Eigen::Vector2d::Zero() : Eigen::Vector2d(b.row_length_m * u0));
+    const Eigen::Vector2d a =
+        b.start_p_N_m + static_cast<double>(row) * b.row_spacing_m * side +
+        (row % 2 == 0 ? Eigen::Vector2d::Zero() : Eigen::Vector2d(b.row_length_m * u0));
     const Eigen::Vector2d e = a + b.row_length_m * u;
     if (row == 0) v.push_back({a, {}, 0});
     v.push_back({e, b.turn_speed_mps, 0});
     if (row + 1 == b.rows) break;
     // headland turn towards `side`: quarter arc, straight across, quarter arc
-    const double turn_sign = (u.x() * side.y() - u.y() * side.x()) > 0 ? 1.0 : -1.0;  // +1: left turn
+    const double turn_sign =
+        (u.x() * side.y() - u.y() * side.x()) > 0 ? 1.0 : -1.0;  // +1: left turn
     const double r = b.turn_radius_m;
     const Eigen::Vector2d c1 = e + r * side;
     for (int k = 1; k <= arc_points; ++k) {
@@ -124,14 +132,15 @@ Path MakeBoustrophedon(const BoustrophedonSpec& b) {
     const Eigen::Vector2d c2 = p2 - r * u;
     for (int k = 1; k <= arc_points; ++k) {
       const double ang = turn_sign * (std::numbers::pi / 2) * k / arc_points;
-      v.push_back({c2 + Rotate(r * u, ang), k == arc_points ? std::optional<double>{} : b.turn_speed_mps, 0});
+      v.push_back({c2 + Rotate(r * u, ang),
+                   k == arc_points ? std::optional<double>{} : b.turn_speed_mps, 0});
     }
   }
   return Path(std::move(v));
 }
 
-Path MakeCircle(const Eigen::Vector2d& centre, double radius_m, double start_bearing_deg, bool counter_clockwise,
-                int laps, int points_per_lap) {
+Path MakeCircle(const Eigen::Vector2d& centre, double radius_m, double start_bearing_deg,
+                bool counter_clockwise, int laps, int points_per_lap) {
   std::vector<PathVertex> v;
   const Eigen::Vector2d r0 = radius_m * DirectionOfHeading(start_bearing_deg);
   const double sign = counter_clockwise ? 1.0 : -1.0;

@@ -1,16 +1,16 @@
 #include "hil/truth/truth_integrator.h"
 
-#include <cvode/cvode.h>
-#include <nvector/nvector_serial.h>
-#include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
-
-#include <GeographicLib/Geocentric.hpp>
-#include <GeographicLib/NormalGravity.hpp>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 #include <string>
+
+#include <GeographicLib/Geocentric.hpp>
+#include <GeographicLib/NormalGravity.hpp>
+#include <cvode/cvode.h>
+#include <nvector/nvector_serial.h>
+#include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
 #include "hil/truth/body_motion.h"
 
@@ -20,6 +20,7 @@ namespace {
 constexpr double kEarthRate_radps = 7.2921150e-5;
 constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kFreeRunHorizon_s = 1e4;  // tout for CVODE when no event is scheduled
 enum StateIndex { kE = 0, kN = 1, kYaw = 2, kV = 3, kU = 4, kStateSize = 5 };
 
 double WrapPi(double a) { return std::remainder(a, 2 * std::numbers::pi); }
@@ -44,8 +45,10 @@ struct Mode {
 
 namespace {
 /// Geodetic coordinates of an ECEF point and the normal gravity there, expressed in N.
-Eigen::Vector3d GeodeticAndGravity(const LocalFrame& frame, const Eigen::Vector3d& p_E, Geodetic& g) {
-  GeographicLib::Geocentric::WGS84().Reverse(p_E.x(), p_E.y(), p_E.z(), g.lat_deg, g.lon_deg, g.height_m);
+Eigen::Vector3d GeodeticAndGravity(const LocalFrame& frame, const Eigen::Vector3d& p_E,
+                                   Geodetic& g) {
+  GeographicLib::Geocentric::WGS84().Reverse(p_E.x(), p_E.y(), p_E.z(), g.lat_deg, g.lon_deg,
+                                             g.height_m);
   Eigen::Vector3d g_E;
   GeographicLib::NormalGravity::WGS84().U(p_E.x(), p_E.y(), p_E.z(), g_E.x(), g_E.y(), g_E.z());
   return frame.R_EN().transpose() * g_E;
@@ -82,10 +85,11 @@ struct TruthIntegrator::Impl {
   // the integration's own view of time
   Inputs in;
   Mode mode;
-  double t_cur = 0;         // integrated up to here (a root/stop time or the last step's end)
-  double t_lo = 0;          // dense output valid from here
-  bool fresh = true;        // no step since the last (re)initialisation: y holds the state at t_cur
-  bool pending = false;     // an event at t_cur has not been handled
+  double t_cur = 0;      // integrated up to here (a root/stop time or the last step's end)
+  double t_lo = 0;       // dense output valid from here
+  double t_init = 0;     // time of the last (re)initialisation
+  bool fresh = true;     // no step since the last (re)initialisation: y holds the state at t_cur
+  bool pending = false;  // an event at t_cur has not been handled
   bool pending_root = false;
   std::int64_t next_tick = 1;  // index of the next guidance update
   double last_request = 0;
@@ -112,7 +116,9 @@ struct TruthIntegrator::Impl {
   }
 
   /// Slip angle of the velocity.
-  double Slip(const double* s) const { return -c->vehicle.slip_gain_rad_per_mps2 * s[kV] * YawRate(s); }
+  double Slip(const double* s) const {
+    return -c->vehicle.slip_gain_rad_per_mps2 * s[kV] * YawRate(s);
+  }
 
   void Derivs(const double* s, const Inputs& u, double* d) const {
     const VehicleParams& p = c->vehicle;
@@ -203,7 +209,9 @@ struct TruthIntegrator::Impl {
     const std::size_t j = next_stop[k];
     const double s_stop = path.s_at_vertex(j);
     const Eigen::Vector2d target =
-        s_la <= s_stop ? path.PointAt(s_la) : Eigen::Vector2d(path.vertices()[j].p_N_m + (s_la - s_stop) * path.direction(j - 1));
+        s_la <= s_stop
+            ? path.PointAt(s_la)
+            : Eigen::Vector2d(path.vertices()[j].p_N_m + (s_la - s_stop) * path.direction(j - 1));
     const double c_yaw = std::cos(s[kYaw]), s_yaw = std::sin(s[kYaw]);
     const Eigen::Vector2d r = target - pos;
     const double dx = c_yaw * r.x() + s_yaw * r.y(), dy = -s_yaw * r.x() + c_yaw * r.y();
@@ -211,8 +219,10 @@ struct TruthIntegrator::Impl {
     // speed: the segment's, limited to stop at the next stop vertex
     // distance to the stop, less what the speed lag will still cover
     const double to_stop = s_stop - s_now - s[kV] * p.speed_lag_s;
-    out.v_cmd = std::min(SegmentSpeed(k, t), std::max(c->guidance.creep_speed_mps,
-                                                      std::sqrt(2 * c->guidance.stop_decel_mps2 * std::max(to_stop, 0.0))));
+    out.v_cmd =
+        std::min(SegmentSpeed(k, t),
+                 std::max(c->guidance.creep_speed_mps,
+                          std::sqrt(2 * c->guidance.stop_decel_mps2 * std::max(to_stop, 0.0))));
     if (diff_drive) {
       const double w_max = p.max_yaw_rate_dps * kDeg;
       out.u_cmd = std::clamp(out.v_cmd * curvature, -w_max, w_max);
@@ -244,17 +254,20 @@ struct TruthIntegrator::Impl {
     }
     // a vertex whose switching line is already behind (a short segment cut by the follower)
     // would never give a root: pass it now
-    while (root && mode.phase == Mode::Phase::kFollow && SwitchFunction(s) >= 0) Transition(t, s, true);
+    while (root && mode.phase == Mode::Phase::kFollow && SwitchFunction(s) >= 0)
+      Transition(t, s, true);
     if (mode.phase == Mode::Phase::kStopped && t >= mode.resume_t) {
       mode.resume_t = kInf;
-      mode.phase = stop_vertex[mode.segment] && diff_drive && TurnAngle(mode.segment) > c->guidance.turn_in_place_deg * kDeg
+      mode.phase = stop_vertex[mode.segment] && diff_drive &&
+                           TurnAngle(mode.segment) > c->guidance.turn_in_place_deg * kDeg
                        ? Mode::Phase::kTurnInPlace
                        : Mode::Phase::kFollow;
     }
     if (mode.phase == Mode::Phase::kTurnInPlace) {
       const Eigen::Vector2d& u = path->direction(mode.segment);
       const double err = WrapPi(std::atan2(u.y(), u.x()) - s[kYaw]);
-      if (std::abs(err) < c->guidance.turn_in_place_done_deg * kDeg) mode.phase = Mode::Phase::kFollow;
+      if (std::abs(err) < c->guidance.turn_in_place_done_deg * kDeg)
+        mode.phase = Mode::Phase::kFollow;
     }
   }
 
@@ -279,7 +292,9 @@ struct TruthIntegrator::Impl {
   // ---- integration -------------------------------------------------------------------------
 
   void Check(int flag, const char* what) const {
-    if (flag < 0) throw std::runtime_error(std::string("CVODE ") + what + " failed with flag " + std::to_string(flag) + " (" + CVodeGetReturnFlagName(flag) + ")");
+    if (flag < 0)
+      throw std::runtime_error(std::string("CVODE ") + what + " failed with flag " +
+                               std::to_string(flag) + " (" + CVodeGetReturnFlagName(flag) + ")");
   }
 
   void Setup() {
@@ -293,12 +308,15 @@ struct TruthIntegrator::Impl {
       stop_vertex.assign(nv, false);
       stop_vertex[nv - 1] = true;
       for (std::size_t v = 1; v + 1 < nv; ++v) {
-        stop_vertex[v] = path.vertices()[v].stop_s > 0 || (diff_drive && TurnAngle(v) > c->guidance.turn_in_place_deg * kDeg);
+        stop_vertex[v] = path.vertices()[v].stop_s > 0 ||
+                         (diff_drive && TurnAngle(v) > c->guidance.turn_in_place_deg * kDeg);
       }
       next_stop.assign(nv - 1, nv - 1);
       for (std::size_t i = nv - 1; i-- > 0;) {
-        if (stop_vertex[i + 1] || i + 2 >= nv) next_stop[i] = i + 1;
-        else next_stop[i] = next_stop[i + 1];
+        if (stop_vertex[i + 1] || i + 2 >= nv)
+          next_stop[i] = i + 1;
+        else
+          next_stop[i] = next_stop[i + 1];
       }
       switch_n.resize(nv - 1);
       for (std::size_t i = 0; i + 1 < nv; ++i) {
@@ -321,9 +339,11 @@ struct TruthIntegrator::Impl {
     atol = N_VNew_Serial(kStateSize, ctx);
     double* s = N_VGetArrayPointer(y);
     const Path* path = c->path ? &*c->path : nullptr;
-    const Eigen::Vector2d start = c->start_p_N_m.value_or(path ? path->vertices().front().p_N_m : Eigen::Vector2d::Zero());
+    const Eigen::Vector2d start =
+        c->start_p_N_m.value_or(path ? path->vertices().front().p_N_m : Eigen::Vector2d::Zero());
     const Eigen::Vector2d u0 = path ? path->direction(0) : Eigen::Vector2d(0, 1);
-    const double yaw0 = c->heading_deg ? (90.0 - *c->heading_deg) * kDeg : std::atan2(u0.y(), u0.x());
+    const double yaw0 =
+        c->heading_deg ? (90.0 - *c->heading_deg) * kDeg : std::atan2(u0.y(), u0.x());
     mode = Mode{};
     mode.phase = path ? Mode::Phase::kFollow : Mode::Phase::kOpenLoop;
     s[kE] = start.x();
@@ -356,7 +376,7 @@ struct TruthIntegrator::Impl {
       Check(CVodeSetRootDirection(cvode, &dir), "CVodeSetRootDirection");
       Check(CVodeSetNoInactiveRootWarn(cvode), "CVodeSetNoInactiveRootWarn");
     }
-    t_cur = t_lo = 0;
+    t_cur = t_lo = t_init = 0;
     fresh = true;
     pending = pending_root = false;
     next_tick = 1;
@@ -380,6 +400,7 @@ struct TruthIntegrator::Impl {
       CVodeGetNumSteps(cvode, &n);
       steps_before += n;
       Check(CVodeReInit(cvode, t_cur, y), "CVodeReInit");
+      t_init = t_cur;
       ++reinits;
       fresh = true;
       t_lo = t_cur;
@@ -394,7 +415,11 @@ struct TruthIntegrator::Impl {
       if (pending && ts >= t_cur) HandleEvent();
       if (ts <= t_cur) return;
       double t_ret = 0;
-      const int flag = CVode(cvode, kInf == NextTimeEvent() ? ts + 1.0 : NextTimeEvent(), y, &t_ret, CV_ONE_STEP);
+      // tout only bounds CVODE's first step after a (re)initialisation; it must not depend on the
+      // request, or the step sequence (and so the samples) would depend on the sensor schedule
+      const double t_event = NextTimeEvent();
+      const int flag = CVode(cvode, t_event < kInf ? t_event : t_init + kFreeRunHorizon_s, y,
+                             &t_ret, CV_ONE_STEP);
       Check(flag, "CVode");
       fresh = false;
       double hu = 0;
@@ -426,9 +451,14 @@ struct TruthIntegrator::Impl {
 };
 
 TruthIntegrator::TruthIntegrator(const TruthConfig& config)
-    : config_(config), frame_(config.origin), terrain_(config.terrain), impl_(std::make_unique<Impl>()) {
-  if (config_.path && config_.guidance.rate_hz <= 0) throw std::invalid_argument("guidance rate must be positive");
-  if (config_.path && config_.guidance.lookahead_m <= 0) throw std::invalid_argument("look-ahead must be positive");
+    : config_(config),
+      frame_(config.origin),
+      terrain_(config.terrain),
+      impl_(std::make_unique<Impl>()) {
+  if (config_.path && config_.guidance.rate_hz <= 0)
+    throw std::invalid_argument("guidance rate must be positive");
+  if (config_.path && config_.guidance.lookahead_m <= 0)
+    throw std::invalid_argument("look-ahead must be positive");
   impl_->c = &config_;
   impl_->terrain = &terrain_;
   impl_->frame = &frame_;
@@ -484,7 +514,8 @@ TruthSample TruthIntegrator::Sample(Time t) {
   out.w_NB_B_radps = b.w_NB_B_radps;
   out.alpha_NB_B_radps2 = b.alpha_NB_B_radps2;
   const Eigen::Matrix3d R_BN = b.R_NB.transpose();
-  // specific force in an Earth-fixed frame: a + 2Ω×v − g (normal gravity includes the centrifugal term)
+  // specific force in an Earth-fixed frame: a + 2Ω×v − g (normal gravity includes the centrifugal
+  // term)
   out.f_B_mps2 = R_BN * (b.a_NB_N_mps2 + 2 * m.w_IE_N.cross(b.v_NB_N_mps) - out.gravity_N_mps2);
   out.w_IB_B_radps = b.w_NB_B_radps + R_BN * m.w_IE_N;
   out.speed_mps = s[kV];

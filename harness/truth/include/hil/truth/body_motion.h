@@ -28,7 +28,7 @@ struct BodyMotion {
 };
 
 /// Computes the body motion at time t_s (for the vibration phase).
-BodyMotion CalcBodyMotion(const Terrain& terrain, const VibrationConfig& vibration, const HorizontalJets& h,
-                          double t_s);
+BodyMotion CalcBodyMotion(const Terrain& terrain, const VibrationConfig& vibration,
+                          const HorizontalJets& h, double t_s);
 
 }  // namespace hil::truth

@@ -24,13 +24,17 @@ struct Jet2 {
 constexpr Jet2 operator+(Jet2 a, Jet2 b) { return {a.v + b.v, a.d + b.d, a.dd + b.dd}; }
 constexpr Jet2 operator-(Jet2 a, Jet2 b) { return {a.v - b.v, a.d - b.d, a.dd - b.dd}; }
 constexpr Jet2 operator-(Jet2 a) { return {-a.v, -a.d, -a.dd}; }
-constexpr Jet2 operator*(Jet2 a, Jet2 b) { return {a.v * b.v, a.d * b.v + a.v * b.d, a.dd * b.v + 2 * a.d * b.d + a.v * b.dd}; }
+constexpr Jet2 operator*(Jet2 a, Jet2 b) {
+  return {a.v * b.v, a.d * b.v + a.v * b.d, a.dd * b.v + 2 * a.d * b.d + a.v * b.dd};
+}
 constexpr Jet2 operator*(double s, Jet2 a) { return {s * a.v, s * a.d, s * a.dd}; }
 constexpr Jet2 operator*(Jet2 a, double s) { return s * a; }
 inline Jet2& operator+=(Jet2& a, Jet2 b) { return a = a + b; }
 
 /// f(x) for a jet x, given f, f′, f″ at x.v (chain rule to second order).
-constexpr Jet2 Chain(Jet2 x, double f, double f1, double f2) { return {f, f1 * x.d, f2 * x.d * x.d + f1 * x.dd}; }
+constexpr Jet2 Chain(Jet2 x, double f, double f1, double f2) {
+  return {f, f1 * x.d, f2 * x.d * x.d + f1 * x.dd};
+}
 
 inline Jet2 sin(Jet2 x) {
   const double s = std::sin(x.v), c = std::cos(x.v);

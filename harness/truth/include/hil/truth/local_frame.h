@@ -23,9 +23,13 @@ class LocalFrame {
   /// Geodetic → ENU position (m).
   Eigen::Vector3d FromGeodetic(const Geodetic& g) const;
   /// ENU position (m) → ECEF (m).
-  Eigen::Vector3d ToEcef(const Eigen::Vector3d& p_N_m) const { return p_E_origin_m_ + R_EN_ * p_N_m; }
+  Eigen::Vector3d ToEcef(const Eigen::Vector3d& p_N_m) const {
+    return p_E_origin_m_ + R_EN_ * p_N_m;
+  }
   /// ECEF (m) → ENU position (m).
-  Eigen::Vector3d FromEcef(const Eigen::Vector3d& p_E_m) const { return R_EN_.transpose() * (p_E_m - p_E_origin_m_); }
+  Eigen::Vector3d FromEcef(const Eigen::Vector3d& p_E_m) const {
+    return R_EN_.transpose() * (p_E_m - p_E_origin_m_);
+  }
   /// Rotation from ENU at the origin to ECEF axes.
   const Eigen::Matrix3d& R_EN() const { return R_EN_; }
   const Geodetic& origin() const { return origin_; }

@@ -13,9 +13,9 @@ namespace hil::truth {
 
 /// One vertex of a planned path.
 struct PathVertex {
-  Eigen::Vector2d p_N_m{0, 0};          ///< ENU position (m)
-  std::optional<double> speed_mps;      ///< speed on the segment that starts here (default: nominal)
-  double stop_s = 0;                    ///< stop at this vertex for this long (0: drive through)
+  Eigen::Vector2d p_N_m{0, 0};      ///< ENU position (m)
+  std::optional<double> speed_mps;  ///< speed on the segment that starts here (default: nominal)
+  double stop_s = 0;                ///< stop at this vertex for this long (0: drive through)
 };
 
 /// Where a point is relative to a path.
@@ -49,8 +49,8 @@ class Path {
 
  private:
   std::vector<PathVertex> v_;
-  std::vector<double> s_;            // arc length at each vertex
-  std::vector<Eigen::Vector2d> u_;   // unit direction of each segment
+  std::vector<double> s_;           // arc length at each vertex
+  std::vector<Eigen::Vector2d> u_;  // unit direction of each segment
 };
 
 /// Cross-track error (m, left of the path positive) of an ENU point against a path.
@@ -63,8 +63,8 @@ Eigen::Vector2d DirectionOfHeading(double heading_deg);
 Path MakeAbLine(const Eigen::Vector2d& a, const Eigen::Vector2d& b, double extend_m);
 /// A w × h rectangle from its corner `start` along `heading_deg`, turning clockwise (right) or
 /// counter-clockwise, repeated `laps` times and closed at the start.
-Path MakeRectangle(const Eigen::Vector2d& start, double width_m, double height_m, double heading_deg,
-                   bool clockwise, int laps);
+Path MakeRectangle(const Eigen::Vector2d& start, double width_m, double height_m,
+                   double heading_deg, bool clockwise, int laps);
 
 /// The boustrophedon (back-and-forth) field pattern.
 struct BoustrophedonSpec {
@@ -73,7 +73,7 @@ struct BoustrophedonSpec {
   double row_length_m = 100;
   double row_spacing_m = 7.5;
   int rows = 4;
-  double turn_radius_m = 3.5;         ///< headland turns: quarter arc, straight, quarter arc
+  double turn_radius_m = 3.5;  ///< headland turns: quarter arc, straight, quarter arc
   bool first_turn_right = true;
   std::optional<double> turn_speed_mps;  ///< speed through the headland turns
   double arc_step_deg = 5;               ///< polyline resolution of the arcs
@@ -83,7 +83,7 @@ Path MakeBoustrophedon(const BoustrophedonSpec& spec);
 /// A circle of `radius_m` about `centre`, starting at the point that lies at bearing
 /// `start_bearing_deg` (clockwise from north) from the centre, travelling counter-clockwise (left
 /// turn) or clockwise, `laps` times, as a polygon with `points_per_lap` vertices.
-Path MakeCircle(const Eigen::Vector2d& centre, double radius_m, double start_bearing_deg, bool counter_clockwise,
-                int laps, int points_per_lap);
+Path MakeCircle(const Eigen::Vector2d& centre, double radius_m, double start_bearing_deg,
+                bool counter_clockwise, int laps, int points_per_lap);
 
 }  // namespace hil::truth

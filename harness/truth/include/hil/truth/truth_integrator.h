@@ -51,14 +51,14 @@ namespace hil::truth {
 
 /// The pure-pursuit path follower and its speed logic.
 struct GuidanceConfig {
-  double lookahead_m = 2.0;          ///< pure-pursuit look-ahead distance along the path
-  double rate_hz = 50;               ///< guidance update rate
-  double stop_decel_mps2 = 0.3;      ///< speed limit before a stop: √(2·a·distance)
-  double creep_speed_mps = 0.05;     ///< lowest commanded speed while approaching a stop
+  double lookahead_m = 2.0;       ///< pure-pursuit look-ahead distance along the path
+  double rate_hz = 50;            ///< guidance update rate
+  double stop_decel_mps2 = 0.3;   ///< speed limit before a stop: √(2·a·distance)
+  double creep_speed_mps = 0.05;  ///< lowest commanded speed while approaching a stop
   /// diff_drive: vertices where the path turns by more than this are taken by stopping and
   /// turning in place to the next segment's heading.
   double turn_in_place_deg = 30;
-  double turn_in_place_done_deg = 1;  ///< heading error that ends a turn in place
+  double turn_in_place_done_deg = 1;   ///< heading error that ends a turn in place
   double turn_heading_gain_per_s = 2;  ///< ω_cmd = gain · heading error (saturated) while turning
 };
 
@@ -70,7 +70,7 @@ struct SpeedStep {
 
 /// What the truth integrator needs to know; constant for a run.
 struct TruthConfig {
-  Geodetic origin;                 ///< scenario origin (ENU frame origin)
+  Geodetic origin;  ///< scenario origin (ENU frame origin)
   VehicleParams vehicle;
   /// The planned path, followed by pure pursuit. Without one the vehicle drives open loop from
   /// the start point at `heading_deg` with the constant steering angle `steer_deg` (a line, or a
@@ -84,15 +84,16 @@ struct TruthConfig {
   std::optional<double> heading_deg;
   double speed_mps = 0.4444444444444444;  ///< nominal commanded forward speed
   std::vector<SpeedStep> speed_profile;   ///< if given, replaces speed_mps from each step's time on
-  double steer_deg = 0;                   ///< open loop, bicycle: constant front-wheel angle, left positive
-  double yaw_rate_dps = 0;                ///< open loop, diff_drive: constant commanded yaw rate, left positive
-  bool start_at_speed = true;             ///< start moving at the commanded speed
+  double steer_deg = 0;     ///< open loop, bicycle: constant front-wheel angle, left positive
+  double yaw_rate_dps = 0;  ///< open loop, diff_drive: constant commanded yaw rate, left positive
+  bool start_at_speed = true;  ///< start moving at the commanded speed
   TerrainConfig terrain;
   VibrationConfig vibration;
-  bool earth_rotation = true;  ///< include Earth rate in the gyro truth and Coriolis in the specific force
-  double rtol = 1e-10;         ///< CVODE relative tolerance
-  double atol_m = 1e-9;        ///< CVODE absolute tolerance on positions (m); angles get atol_m/10 rad
-  double max_step_s = 0.5;     ///< CVODE maximum step
+  bool earth_rotation =
+      true;             ///< include Earth rate in the gyro truth and Coriolis in the specific force
+  double rtol = 1e-10;  ///< CVODE relative tolerance
+  double atol_m = 1e-9;     ///< CVODE absolute tolerance on positions (m); angles get atol_m/10 rad
+  double max_step_s = 0.5;  ///< CVODE maximum step
 };
 
 class TruthIntegrator {

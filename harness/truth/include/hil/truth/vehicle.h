@@ -21,15 +21,15 @@ namespace hil::truth {
 struct VehicleParams {
   enum class Model { kBicycle, kDiffDrive };
   Model model = Model::kBicycle;
-  double wheelbase_m = 0.84;           ///< bicycle: axle distance L
-  double track_m = 0.55;               ///< distance between left and right wheels
-  double max_steer_deg = 32;           ///< bicycle: |δ| limit
-  double max_steer_rate_dps = 30;      ///< bicycle: steering rate limit r
-  double steer_lag_s = 0.2;            ///< bicycle: steering lag τ_δ
-  double speed_lag_s = 0.5;            ///< speed lag τ_v (both models)
-  double yaw_rate_lag_s = 0.2;         ///< diff_drive: yaw-rate lag τ_ω
-  double max_yaw_rate_dps = 45;        ///< diff_drive: |ω_cmd| limit
-  double slip_gain_rad_per_mps2 = 0;   ///< lateral slip k_slip (0: no slip)
+  double wheelbase_m = 0.84;          ///< bicycle: axle distance L
+  double track_m = 0.55;              ///< distance between left and right wheels
+  double max_steer_deg = 32;          ///< bicycle: |δ| limit
+  double max_steer_rate_dps = 30;     ///< bicycle: steering rate limit r
+  double steer_lag_s = 0.2;           ///< bicycle: steering lag τ_δ
+  double speed_lag_s = 0.5;           ///< speed lag τ_v (both models)
+  double yaw_rate_lag_s = 0.2;        ///< diff_drive: yaw-rate lag τ_ω
+  double max_yaw_rate_dps = 45;       ///< diff_drive: |ω_cmd| limit
+  double slip_gain_rad_per_mps2 = 0;  ///< lateral slip k_slip (0: no slip)
 
   /// Seed 003's greenhouse platform: front-wheel steered, wheelbase 0.84 m, track 0.55 m, ±32°.
   static VehicleParams GreenhousePlatform();
@@ -44,9 +44,9 @@ struct VehicleParams {
 /// sinusoid in time, so that the accelerometer and gyro truths see its exact derivatives.
 struct VibrationComponent {
   double frequency_hz = 25;
-  double heave_m = 0;     ///< displacement amplitude along body z
-  double roll_rad = 0;    ///< roll angle amplitude
-  double pitch_rad = 0;   ///< pitch angle amplitude
+  double heave_m = 0;    ///< displacement amplitude along body z
+  double roll_rad = 0;   ///< roll angle amplitude
+  double pitch_rad = 0;  ///< pitch angle amplitude
   double phase_rad = 0;
 };
 
