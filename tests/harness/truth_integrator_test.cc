@@ -81,6 +81,50 @@ TEST(TruthIntegratorTest, DiffDriveTurnsInPlaceAtConstantYawRate) {
   EXPECT_NEAR(std::atan2(fwd.y(), fwd.x()), (90 + 210 - 360) * kDeg, 1e-8);
 }
 
+TEST(TruthIntegratorTest, LateralSlipSwingsTheVelocityToTheOutsideOfTheTurn) {
+  TruthConfig c;
+  c.origin = {35, 50, 0};
+  c.speed_mps = 2;
+  c.steer_deg = 15;
+  c.vehicle.slip_gain_rad_per_mps2 = 0.02;
+  c.earth_rotation = false;
+  TruthIntegrator truth(c);
+  const TruthSample s = truth.Sample(TimeFromSeconds(4));
+  const double yaw_rate = 2 * std::tan(15 * kDeg) / c.vehicle.wheelbase_m;
+  const Eigen::Vector3d v_B = s.q_NB.conjugate() * s.v_NB_N_mps;
+  // β = −k v ψ̇: in a left turn the velocity points to the right of the body x axis
+  EXPECT_NEAR(std::atan2(v_B.y(), v_B.x()), -0.02 * 2 * yaw_rate, 1e-9);
+  EXPECT_NEAR(s.w_NB_B_radps.z(), yaw_rate, 1e-9);
+  // steady state: still a circle, with acceleration v ψ̇ perpendicular to the velocity
+  EXPECT_NEAR(s.a_NB_N_mps2.norm(), 2 * yaw_rate, 1e-7);
+  EXPECT_NEAR(s.a_NB_N_mps2.dot(s.v_NB_N_mps), 0, 1e-7);
+}
+
+TEST(TruthIntegratorTest, EngineVibrationShowsInTheAccelerometerAndGyroTruth) {
+  TruthConfig c;
+  c.origin = {35.4796096, 50.5979765, 1312};
+  c.speed_mps = 0;
+  c.earth_rotation = false;
+  VibrationComponent v;
+  v.frequency_hz = 25;
+  const double w = 2 * std::numbers::pi * 25;
+  v.heave_m = 0.5 / (w * w);  // 0.5 m/s² peak
+  v.roll_rad = 2 * kDeg / w;  // 2 °/s peak
+  c.vibration.components.push_back(v);
+  TruthIntegrator truth(c);
+  double f_lo = 1e9, f_hi = -1e9, w_hi = 0;
+  for (int k = 0; k < 1000; ++k) {
+    const TruthSample s = truth.Sample(TimeFromNs(k * 1'000'000LL + 100'000));
+    const double g = s.gravity_N_mps2.norm();
+    f_lo = std::min(f_lo, s.f_B_mps2.z() - g);
+    f_hi = std::max(f_hi, s.f_B_mps2.z() - g);
+    w_hi = std::max(w_hi, std::abs(s.w_IB_B_radps.x()));
+  }
+  EXPECT_NEAR(f_hi, 0.5, 0.01);
+  EXPECT_NEAR(f_lo, -0.5, 0.01);
+  EXPECT_NEAR(w_hi, 2 * kDeg, 1e-3 * kDeg);
+}
+
 TEST(TruthIntegratorTest, StationaryOnSlopeFeelsGravityAlongTheSlopeNormalTilt) {
   TruthConfig c;
   c.origin = {35, 50, 0};
