@@ -3,6 +3,12 @@
 #include <cmath>
 
 namespace hil::estimator {
+namespace {
+
+constexpr double kMeanEarthRadius_m = 6371000.0;
+
+}  // namespace
+
 
 Eigen::Quaterniond QuatFromRotationVector(const Eigen::Vector3d& phi) {
   const double a = phi.norm();
@@ -29,7 +35,12 @@ void Propagate(const EarthModel& earth, const Eigen::Vector3d& dth, const Eigen:
   const Eigen::Vector3d zeta = earth.w_IE_N_radps * dt;
   const Eigen::Vector3d dv_rot = C_old * (dv + 0.5 * dth.cross(dv) + sculling);
   const Eigen::Vector3d dv_N = dv_rot - 0.5 * zeta.cross(dv_rot);
-  Eigen::Vector3d accel_N = earth.g_N_mps2;
+  // gravity at the vehicle, not at the origin: in a tangent-plane frame the plumb line tilts by
+  // p/R away from the origin and the magnitude falls by 2h/R (free-air gradient)
+  const Eigen::Vector3d p_mid = s.p_N_m + 0.5 * s.v_N_mps * dt;
+  const double g = -earth.g_N_mps2.z();
+  Eigen::Vector3d accel_N =
+      earth.g_N_mps2 + Eigen::Vector3d(-g * p_mid.x(), -g * p_mid.y(), 2.0 * g * p_mid.z()) / kMeanEarthRadius_m;
   if (earth.coriolis) accel_N -= 2.0 * earth.w_IE_N_radps.cross(s.v_N_mps);
   const Eigen::Vector3d v_old = s.v_N_mps;
   s.v_N_mps = v_old + dv_N + accel_N * dt;

@@ -32,22 +32,29 @@ double PlannedPath::CrossTrack(const Eigen::Vector2d& p) const {
 }
 
 PlannedPath PlannedPathOf(const truth::TruthConfig& c, double duration_s) {
-  const double psi = c.heading_deg * M_PI / 180.0;  // clockwise from north
+  if (c.path) {
+    // a path-following scenario: the planned path is the followed polyline itself
+    std::vector<Eigen::Vector2d> v;
+    for (const truth::PathVertex& pv : c.path->vertices()) v.push_back(pv.p_N_m);
+    return PlannedPath(std::move(v));
+  }
+  const Eigen::Vector2d start = c.start_p_N_m.value_or(Eigen::Vector2d::Zero());
+  const double psi = c.heading_deg.value_or(0.0) * M_PI / 180.0;  // clockwise from north
   const Eigen::Vector2d dir(std::sin(psi), std::cos(psi));
   const double length_m = std::max(1.0, c.speed_mps * duration_s * 1.2 + 10.0);
   std::vector<Eigen::Vector2d> v;
   if (std::abs(c.steer_deg) < 1e-9) {
-    v = {c.start_p_N_m - 10.0 * dir, c.start_p_N_m + length_m * dir};
+    v = {start - 10.0 * dir, start + length_m * dir};
     return PlannedPath(std::move(v));
   }
   // constant steering: a circle of radius R, turning left for positive steer
-  const double radius_m = c.wheelbase_m / std::tan(std::abs(c.steer_deg) * M_PI / 180.0);
+  const double radius_m = c.vehicle.wheelbase_m / std::tan(std::abs(c.steer_deg) * M_PI / 180.0);
   const double side = c.steer_deg > 0 ? 1.0 : -1.0;
   const Eigen::Vector2d left(-dir.y(), dir.x());
-  const Eigen::Vector2d centre = c.start_p_N_m + side * radius_m * left;
+  const Eigen::Vector2d centre = start + side * radius_m * left;
   const double sweep = std::min(2.0 * M_PI, length_m / radius_m);
   const int n = std::max(16, static_cast<int>(sweep / 0.002));  // chord error ≤ R·2e-6·… negligible
-  const Eigen::Vector2d r0 = c.start_p_N_m - centre;
+  const Eigen::Vector2d r0 = start - centre;
   for (int i = 0; i <= n; ++i) {
     const double a = side * sweep * i / n;
     v.emplace_back(centre + Eigen::Vector2d(r0.x() * std::cos(a) - r0.y() * std::sin(a),

@@ -1,5 +1,6 @@
 #include "hil/harness/run_outputs.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -26,16 +27,25 @@ void WriteTruthCsv(const Scenario& s, const std::string& path, std::vector<doubl
                    std::vector<Eigen::Vector2d>& en_m) {
   std::ofstream truth_csv(path);
   if (!truth_csv) throw std::runtime_error("cannot write " + path);
-  truth_csv << "t_s,lat_deg,lon_deg,height_m,e_m,n_m,u_m,v_e_mps,v_n_mps,v_u_mps,yaw_deg,speed_mps\n";
+  truth_csv << "t_s,lat_deg,lon_deg,height_m,e_m,n_m,u_m,v_e_mps,v_n_mps,v_u_mps,yaw_deg,speed_mps,"
+               "roll_deg,pitch_deg,w_x_radps,w_y_radps,w_z_radps,f_x_mps2,f_y_mps2,f_z_mps2,steer_deg,cross_track_m\n";
   truth::TruthIntegrator truth(s.truth);
   const Time t_end = TimeFromSeconds(s.duration_s);
-  char line[320];
+  char line[640];
   for (Time t{}; t <= t_end; t += std::chrono::milliseconds(100)) {
     const TruthSample x = truth.Sample(t);
-    const Eigen::Vector3d fwd = x.q_NB.toRotationMatrix().col(0);
-    std::snprintf(line, sizeof line, "%.3f,%.10f,%.10f,%.4f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.5f,%.6f\n", ToSeconds(t),
-                  x.lat_deg, x.lon_deg, x.height_m, x.p_NB_N_m.x(), x.p_NB_N_m.y(), x.p_NB_N_m.z(), x.v_NB_N_mps.x(),
-                  x.v_NB_N_mps.y(), x.v_NB_N_mps.z(), std::atan2(fwd.x(), fwd.y()) * 180.0 / M_PI, x.speed_mps);
+    const Eigen::Matrix3d R = x.q_NB.toRotationMatrix();
+    const Eigen::Vector3d fwd = R.col(0);
+    // roll and pitch of the body (z-y-x Euler angles of FLU in ENU)
+    const double pitch_deg = -std::asin(std::clamp(R(2, 0), -1.0, 1.0)) * 180.0 / M_PI;
+    const double roll_deg = std::atan2(R(2, 1), R(2, 2)) * 180.0 / M_PI;
+    std::snprintf(line, sizeof line,
+                  "%.3f,%.10f,%.10f,%.4f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.5f,%.6f,%.5f,%.5f,%.8f,%.8f,%.8f,%.6f,%.6f,%.6f,"
+                  "%.4f,%.6f\n",
+                  ToSeconds(t), x.lat_deg, x.lon_deg, x.height_m, x.p_NB_N_m.x(), x.p_NB_N_m.y(), x.p_NB_N_m.z(),
+                  x.v_NB_N_mps.x(), x.v_NB_N_mps.y(), x.v_NB_N_mps.z(), std::atan2(fwd.x(), fwd.y()) * 180.0 / M_PI,
+                  x.speed_mps, roll_deg, pitch_deg, x.w_IB_B_radps.x(), x.w_IB_B_radps.y(), x.w_IB_B_radps.z(),
+                  x.f_B_mps2.x(), x.f_B_mps2.y(), x.f_B_mps2.z(), x.steer_rad * 180.0 / M_PI, x.cross_track_m);
     truth_csv << line;
     t_s.push_back(ToSeconds(t));
     en_m.emplace_back(x.p_NB_N_m.x(), x.p_NB_N_m.y());

@@ -129,7 +129,7 @@ TEST(NavigatorScenarioTest, Seed004OutagesStayUnderElevenCentimetres) {
   t.origin = {31.0, 121.4, 10.0};
   t.heading_deg = 75.0;
   t.speed_mps = 1.0;
-  t.wheelbase_m = 2.4;
+  t.vehicle.wheelbase_m = 2.4;
   const Eigen::Vector3d lever(1.2, 0.0, 2.2);
   NavigatorParams p;
   p.ekf.lever_arm_B_m = lever;

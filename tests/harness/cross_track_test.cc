@@ -34,7 +34,7 @@ TEST(CrossTrackTest, PlannedPathOfTheScenario) {
   const PlannedPath line = PlannedPathOf(c, 60);
   EXPECT_NEAR(line.CrossTrack({40, 21.5}), 1.5, 1e-9);
   c.steer_deg = 10;  // left circle of radius L / tan(10°)
-  const double radius = c.wheelbase_m / std::tan(10 * M_PI / 180);
+  const double radius = c.vehicle.wheelbase_m / std::tan(10 * M_PI / 180);
   const PlannedPath circle = PlannedPathOf(c, 600);
   // the centre lies left (north) of an eastbound start; a point on the radius through the start
   // moved 0.5 m towards the centre is 0.5 m left of the path

@@ -135,10 +135,10 @@ class IncludeTest : public ::testing::Test {
 TEST_F(IncludeTest, IncludedPiecesAreMergedAndTheScenarioWins) {
   Write("s.yaml", "name: s\ninclude: [lib/vehicles/tractor.yaml]\norigin: {lat_deg: 35, lon_deg: 50}\n");
   const Scenario s = LoadScenario(Path("s.yaml"));
-  EXPECT_DOUBLE_EQ(s.truth.wheelbase_m, 2.7);
-  EXPECT_DOUBLE_EQ(s.truth.speed_lag_s, 1.5);
+  EXPECT_DOUBLE_EQ(s.truth.vehicle.wheelbase_m, 2.7);
+  EXPECT_DOUBLE_EQ(s.truth.vehicle.speed_lag_s, 1.5);
   Write("own.yaml", "name: s\ninclude: lib/vehicles/tractor.yaml\nvehicle: {wheelbase_m: 1.1}\norigin: {lat_deg: 35, lon_deg: 50}\n");
-  EXPECT_DOUBLE_EQ(LoadScenario(Path("own.yaml")).truth.wheelbase_m, 1.1);
+  EXPECT_DOUBLE_EQ(LoadScenario(Path("own.yaml")).truth.vehicle.wheelbase_m, 1.1);
 }
 
 TEST_F(IncludeTest, ErrorsNameTheIncludedFile) {
@@ -164,7 +164,7 @@ TEST_F(IncludeTest, ErrorsNameTheIncludedFile) {
 
 TEST_F(IncludeTest, TheProjectLibraryIsSearched) {
   Write("s.yaml", "name: s\ninclude: [vehicles/small_robot.yaml]\norigin: {lat_deg: 35, lon_deg: 50}\n");
-  EXPECT_DOUBLE_EQ(LoadScenario(Path("s.yaml")).truth.wheelbase_m, 0.84);
+  EXPECT_DOUBLE_EQ(LoadScenario(Path("s.yaml")).truth.vehicle.wheelbase_m, 0.84);
 }
 
 }  // namespace

@@ -39,13 +39,19 @@ struct TruthSample {
   Eigen::Vector3d w_IB_B_radps = Eigen::Vector3d::Zero();  ///< inertial angular rate (gyro truth)
   Eigen::Vector3d alpha_NB_B_radps2 = Eigen::Vector3d::Zero();  ///< angular acceleration
   /// Specific force at the reference point in B (what an ideal accelerometer there measures):
-  /// f = R_BN (a − g_N), gravity included, so it reads +g on z when level and at rest.
+  /// f = R_BN (a + 2 Ω_IE × v − g), gravity included (normal gravity, which contains the
+  /// centrifugal term), the Coriolis term only when the truth models Earth rotation; it reads +g
+  /// on z when level and at rest.
   Eigen::Vector3d f_B_mps2 = Eigen::Vector3d::Zero();
   Eigen::Vector3d gravity_N_mps2{0, 0, -kStandardGravity_mps2};  ///< local gravity vector
-  double speed_mps = 0;          ///< forward speed of the reference point
+  double speed_mps = 0;          ///< horizontal forward speed of the reference point (the model's v)
   double steer_rad = 0;          ///< front-wheel steering angle (bicycle models), left positive
+  /// Rear (bicycle) or drive (differential) wheel ground speeds: v ∓ ψ̇ · track / 2.
   double wheel_speed_left_mps = 0, wheel_speed_right_mps = 0;
   double cross_track_m = 0;      ///< signed distance to the planned path, left positive
+  double along_track_m = 0;      ///< arc length of the nearest planned-path point from its start
+  double speed_cmd_mps = 0;      ///< forward speed commanded by the guidance (held between updates)
+  double steer_cmd_rad = 0;      ///< steering angle commanded by the guidance (bicycle models)
 };
 
 }  // namespace hil

@@ -14,7 +14,7 @@ struct Geodetic {
   double lat_deg = 0, lon_deg = 0, height_m = 0;
 };
 
-/// The ENU frame at an origin.
+/// The ENU frame at an origin. N is fixed to the Earth: p_E = p_E(origin) + R_EN · p_N.
 class LocalFrame {
  public:
   explicit LocalFrame(const Geodetic& origin);
@@ -23,14 +23,22 @@ class LocalFrame {
   /// Geodetic → ENU position (m).
   Eigen::Vector3d FromGeodetic(const Geodetic& g) const;
   /// ENU position (m) → ECEF (m).
-  Eigen::Vector3d ToEcef(const Eigen::Vector3d& p_N_m) const;
+  Eigen::Vector3d ToEcef(const Eigen::Vector3d& p_N_m) const {
+    return p_E_origin_m_ + R_EN_ * p_N_m;
+  }
+  /// ECEF (m) → ENU position (m).
+  Eigen::Vector3d FromEcef(const Eigen::Vector3d& p_E_m) const {
+    return R_EN_.transpose() * (p_E_m - p_E_origin_m_);
+  }
   /// Rotation from ENU at the origin to ECEF axes.
-  Eigen::Matrix3d R_EN() const;
+  const Eigen::Matrix3d& R_EN() const { return R_EN_; }
   const Geodetic& origin() const { return origin_; }
 
  private:
   Geodetic origin_;
   GeographicLib::LocalCartesian lc_;
+  Eigen::Matrix3d R_EN_;
+  Eigen::Vector3d p_E_origin_m_;
 };
 
 }  // namespace hil::truth

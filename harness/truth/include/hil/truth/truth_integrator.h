@@ -2,61 +2,132 @@
 /// @file
 /// @system
 /// name: TruthIntegrator (ground-truth vehicle motion, SUNDIALS CVODE)
-/// input: TruthConfig (vehicle, path, origin) — constant for a run
+/// input: TruthConfig (origin, vehicle, path and guidance, terrain, vibration) — constant for a run
 /// output: TruthSample at any requested time, from CVODE's dense output (CVodeGetDky)
 /// @endsystem
 ///
-/// The continuous state is integrated with CVODE (Adams–Moulton with the fixed-point nonlinear
-/// solver, non-stiff) in free one-step mode; samples at exact sensor times are read from the
-/// interpolating polynomial, so the step sequence does not depend on which sensors sample it.
-/// Requests must come in non-decreasing time order; a request before the last one restarts the
-/// integration from t = 0 (deterministically).
+/// **Continuous state** (integrated by CVODE, Adams–Moulton with the fixed-point nonlinear solver,
+/// non-stiff, free one-step mode): y = [e, n, ψ, v, u] with u = δ (steering angle, bicycle
+/// models) or ω (yaw rate, differential drive); the equations are in vehicle.h. The 3-D motion
+/// (terrain, vibration) is a closed-form function of y, its derivatives and t (body_motion.h), so
+/// position, velocity, acceleration, attitude, angular rate and specific force are consistent by
+/// construction.
 ///
-/// Kinematic bicycle model on flat ground, reference point at the rear axle:
-///   ė = v cos ψ,  ṅ = v sin ψ,  ψ̇ = v tan δ / L,  v̇ = (v_cmd − v) / τ_v
-/// with ψ the yaw of the body x axis counter-clockwise from east.
+/// **Guidance** (pure pursuit along the planned path, on truth, open loop w.r.t. the estimator) is
+/// a discrete controller: it computes the commands (v_cmd, δ_cmd or ω_cmd) at a fixed rate
+/// (GuidanceConfig::rate_hz, 50 Hz by default) and holds them in between. The right-hand side is
+/// therefore smooth between guidance updates (the actuator lags and the tanh rate limit are
+/// smooth), and each update that changes a command is an input discontinuity: CVODE is stopped
+/// there (CVodeSetStopTime) and re-initialised (CVodeReInit). This was chosen over continuous
+/// guidance inside the RHS because pure pursuit on a polyline is only piecewise smooth in the
+/// state (its look-ahead point jumps between segments), because real guidance controllers are
+/// discrete, and because the per-update cost is bounded and measured (truth_bench).
+/// Updates that leave the commands unchanged (open-loop lines, a parked vehicle) do not restart
+/// the integrator.
+///
+/// **Events** by root finding (CVodeRootInit): passing each path vertex (the bisector of the
+/// two segments, or the perpendicular at a stop vertex) switches the active segment, starts a
+/// stop, a turn in place (differential drive, sharp corners) or ends the path. Time events
+/// (guidance updates, the end of a stop, steps of a speed profile) use the stop time.
+///
+/// **Sampling**: requests must come in non-decreasing time order; each is read from the
+/// interpolating polynomial of the last step (CVodeGetDky), so the step sequence does not depend
+/// on which sensors sample the truth. Commands are right-continuous: a sample exactly at a
+/// guidance update sees the new commands. A request before the dense-output window of the last
+/// step restarts the integration from t = 0 (deterministically: the same sample results).
 
+#include <limits>
 #include <memory>
+#include <optional>
+#include <vector>
 
 #include "hil/firmware_emu/truth_sample.h"
 #include "hil/truth/local_frame.h"
+#include "hil/truth/path.h"
+#include "hil/truth/terrain.h"
+#include "hil/truth/vehicle.h"
 
 namespace hil::truth {
 
+/// The pure-pursuit path follower and its speed logic.
+struct GuidanceConfig {
+  double lookahead_m = 2.0;       ///< pure-pursuit look-ahead distance along the path
+  double rate_hz = 50;            ///< guidance update rate
+  double stop_decel_mps2 = 0.3;   ///< speed limit before a stop: √(2·a·distance)
+  double creep_speed_mps = 0.05;  ///< lowest commanded speed while approaching a stop
+  /// diff_drive: vertices where the path turns by more than this are taken by stopping and
+  /// turning in place to the next segment's heading.
+  double turn_in_place_deg = 30;
+  double turn_in_place_done_deg = 1;   ///< heading error that ends a turn in place
+  double turn_heading_gain_per_s = 2;  ///< ω_cmd = gain · heading error (saturated) while turning
+};
+
+/// A step of the nominal speed: from `t_s` on, the vehicle is commanded to `speed_mps`.
+struct SpeedStep {
+  double t_s = 0;
+  double speed_mps = 0;
+};
+
 /// What the truth integrator needs to know; constant for a run.
 struct TruthConfig {
-  Geodetic origin;                        ///< scenario origin (ENU frame origin)
-  Eigen::Vector2d start_p_N_m{0, 0};      ///< start point in ENU (m)
-  double heading_deg = 0;                 ///< initial course, degrees clockwise from north
-  double speed_mps = 0.4444444444444444;  ///< commanded forward speed
-  double steer_deg = 0;                   ///< constant front-wheel steering angle, left positive
-  double wheelbase_m = 0.84;
-  double speed_lag_s = 0.5;               ///< first-order speed actuator lag
-  bool start_at_speed = true;             ///< start moving at the commanded speed
-  bool earth_rotation = true;             ///< include Earth rate in the gyro truth (w_IB_B)
-  double rtol = 1e-10;                    ///< CVODE relative tolerance
-  double atol_m = 1e-9;                   ///< CVODE absolute tolerance
+  Geodetic origin;  ///< scenario origin (ENU frame origin)
+  VehicleParams vehicle;
+  /// The planned path, followed by pure pursuit. Without one the vehicle drives open loop from
+  /// the start point at `heading_deg` with the constant steering angle `steer_deg` (a line, or a
+  /// circle of radius L / tan δ) or, for diff_drive, the constant yaw rate `yaw_rate_dps` (with
+  /// zero speed: turning in place).
+  std::optional<Path> path;
+  GuidanceConfig guidance;
+  /// Start point (ENU, m); default: the origin, or the path's first vertex.
+  std::optional<Eigen::Vector2d> start_p_N_m;
+  /// Initial heading, degrees clockwise from north; default 0, or the first segment's direction.
+  std::optional<double> heading_deg;
+  double speed_mps = 0.4444444444444444;  ///< nominal commanded forward speed
+  std::vector<SpeedStep> speed_profile;   ///< if given, replaces speed_mps from each step's time on
+  double steer_deg = 0;     ///< open loop, bicycle: constant front-wheel angle, left positive
+  double yaw_rate_dps = 0;  ///< open loop, diff_drive: constant commanded yaw rate, left positive
+  bool start_at_speed = true;  ///< start moving at the commanded speed
+  TerrainConfig terrain;
+  VibrationConfig vibration;
+  bool earth_rotation =
+      true;             ///< include Earth rate in the gyro truth and Coriolis in the specific force
+  double rtol = 1e-10;  ///< CVODE relative tolerance
+  double atol_m = 1e-9;     ///< CVODE absolute tolerance on positions (m); angles get atol_m/10 rad
+  double max_step_s = 0.5;  ///< CVODE maximum step
 };
 
 class TruthIntegrator {
  public:
+  /// @throws std::invalid_argument for an inconsistent configuration.
   explicit TruthIntegrator(const TruthConfig& config);
   ~TruthIntegrator();
   TruthIntegrator(const TruthIntegrator&) = delete;
   TruthIntegrator& operator=(const TruthIntegrator&) = delete;
 
-  /// The truth at time t (see the class comment for ordering).
-  /// @throws std::runtime_error if CVODE fails (names the CVODE flag).
+  /// The truth at time t (see the file comment for ordering).
+  /// @throws std::runtime_error if CVODE fails (names the CVODE call and flag).
   TruthSample Sample(Time t);
   const LocalFrame& frame() const { return frame_; }
-  /// CVODE internal steps taken so far (for benchmarks).
+  const Terrain& terrain() const { return terrain_; }
+  const TruthConfig& config() const { return config_; }
+  /// CVODE internal steps taken so far, over all re-initialisations (for benchmarks).
   long steps() const;
+  /// Re-initialisations (input discontinuities) so far.
+  long reinits() const;
+  /// Root-finding events (vertex passages) so far.
+  long root_events() const;
 
  private:
   struct Impl;
   TruthConfig config_;
   LocalFrame frame_;
+  Terrain terrain_;
   std::unique_ptr<Impl> impl_;
 };
+
+/// Normal gravity (WGS-84, gravitation plus centrifugal) at an ENU point, expressed in N (m/s²).
+Eigen::Vector3d GravityAt(const LocalFrame& frame, const Eigen::Vector3d& p_N_m);
+/// Earth's rotation rate relative to inertial space, expressed in N (rad/s).
+Eigen::Vector3d EarthRateIn(const LocalFrame& frame);
 
 }  // namespace hil::truth

@@ -1,0 +1,58 @@
+#pragma once
+/// @file
+/// Vehicle models of the truth and their parameter sets.
+///
+/// Horizontal kinematics of the reference point (rear-axle centre for the bicycle models, the
+/// wheel-axle centre for differential drive), ψ the yaw of the body x axis counter-clockwise from
+/// east, v the horizontal speed, β a lateral slip angle of the velocity:
+///   ė = v cos(ψ + β),  ṅ = v sin(ψ + β),  v̇ = (v_cmd − v) / τ_v
+/// - bicycle / tractor (front-wheel steered): ψ̇ = v tan δ / L, and the steering angle δ follows
+///   its command through a first-order lag τ_δ with a smooth rate limit r:
+///     δ̇ = r · tanh((δ_cmd − δ) / (τ_δ r)),   |δ_cmd| ≤ δ_max
+/// - diff_drive: ψ̇ = ω, ω̇ = (ω_cmd − ω) / τ_ω; wheel speeds v ∓ ω·track/2 (turns in place).
+/// Slip (optional): β = −k_slip · v · ψ̇, the velocity swinging to the outside of a turn in
+/// proportion to the lateral acceleration.
+
+#include <vector>
+
+namespace hil::truth {
+
+/// Parameters of a vehicle model; constant for a run.
+struct VehicleParams {
+  enum class Model { kBicycle, kDiffDrive };
+  Model model = Model::kBicycle;
+  double wheelbase_m = 0.84;          ///< bicycle: axle distance L
+  double track_m = 0.55;              ///< distance between left and right wheels
+  double max_steer_deg = 32;          ///< bicycle: |δ| limit
+  double max_steer_rate_dps = 30;     ///< bicycle: steering rate limit r
+  double steer_lag_s = 0.2;           ///< bicycle: steering lag τ_δ
+  double speed_lag_s = 0.5;           ///< speed lag τ_v (both models)
+  double yaw_rate_lag_s = 0.2;        ///< diff_drive: yaw-rate lag τ_ω
+  double max_yaw_rate_dps = 45;       ///< diff_drive: |ω_cmd| limit
+  double slip_gain_rad_per_mps2 = 0;  ///< lateral slip k_slip (0: no slip)
+
+  /// Seed 003's greenhouse platform: front-wheel steered, wheelbase 0.84 m, track 0.55 m, ±32°.
+  static VehicleParams GreenhousePlatform();
+  /// A mid-size tractor for seed 004 (Dongfanghong LX704 class): wheelbase 2.3 m, track 1.6 m,
+  /// ±35° steering at up to 20°/s.
+  static VehicleParams Tractor();
+  /// Seed 001's greenhouse transport vehicle: differential drive, track 0.5 m.
+  static VehicleParams DiffDrive();
+};
+
+/// One component of engine vibration, added to the body's pose about the reference point as a
+/// sinusoid in time, so that the accelerometer and gyro truths see its exact derivatives.
+struct VibrationComponent {
+  double frequency_hz = 25;
+  double heave_m = 0;    ///< displacement amplitude along body z
+  double roll_rad = 0;   ///< roll angle amplitude
+  double pitch_rad = 0;  ///< pitch angle amplitude
+  double phase_rad = 0;
+};
+
+/// Engine vibration: a sum of sinusoids (empty = none).
+struct VibrationConfig {
+  std::vector<VibrationComponent> components;
+};
+
+}  // namespace hil::truth
