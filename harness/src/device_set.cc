@@ -28,6 +28,21 @@ void AddGnss(const Scenario& s, std::uint64_t seed, const std::string& dir, Devi
     cfg.model->p_BA_B_m = rx.p_BA_B_m;
     cfg.start = s.gnss.start;
     cfg.faults = s.gnss.faults;
+    // the scenario's global fault timeline: outages and glitches reach every receiver
+    for (const Fault& f : s.faults.faults) {
+      gnss::GnssFault g;
+      g.start_s = ToSeconds(f.start);
+      g.end_s = ToSeconds(f.end);
+      if (f.kind == FaultKind::kGnssOutage) {
+        g.kind = gnss::GnssFault::Kind::kOutage;
+      } else if (f.kind == FaultKind::kGnssGlitch) {
+        g.kind = gnss::GnssFault::Kind::kStep;
+        g.offset_N_m = Eigen::Vector3d(f.Param("east_m", 0), f.Param("north_m", 0), f.Param("up_m", 0));
+      } else {
+        continue;
+      }
+      cfg.faults.push_back(g);
+    }
     cfg.common_seed = base + kGnssCommonOffset;
     auto dev = std::make_unique<gnss::Neo5mDevice>(cfg, base + kReceiverStride * i);
     const gnss::Neo5mDevice* raw = dev.get();

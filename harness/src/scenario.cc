@@ -24,10 +24,19 @@ const std::vector<std::string> kCriterionMetrics{
 namespace {
 
 void ReadEstimator(const YamlReader& r, EstimatorSpec& e) {
-  r.CheckKeys({"command", "output", "navd_mode", "silence_timeout_s", "startup_s"});
+  r.CheckKeys({"command", "output", "navd_mode", "navd_filter", "silence_timeout_s", "startup_s"});
   e.command = r.String("command", e.command);
   e.output = r.Choice("output", e.output, {"json_stdout", "gpsd_json", "nmea_stdout", "nmea_pty", "n2k_candump"});
-  e.navd_mode = r.Choice("navd_mode", e.navd_mode, {"gnss_only"});
+  e.navd_mode = r.Choice("navd_mode", e.navd_mode, {"gnss_only", "ekf", "planar2d", "imu_only"});
+  if (auto f = r.OptionalChild("navd_filter")) {
+    if (!f->IsMap()) f->Fail("expected a mapping of navd [filter] keys to values");
+    for (const auto& kv : f->node()) {
+      const std::string key = kv.first.Scalar();
+      if (key.empty() || key.find_first_of(" =[]#\n") != std::string::npos) f->Fail(key, "not a navd key");
+      if (!kv.second.IsScalar()) f->Fail(key, "expected a single value (navd lists are comma-separated strings)");
+      e.navd_filter.emplace_back(key, kv.second.Scalar());
+    }
+  }
   e.silence_timeout_s = r.DoubleIn("silence_timeout_s", e.silence_timeout_s, 0.5, 3600);
   e.startup_s = r.DoubleIn("startup_s", e.startup_s, 0, 60);
 }

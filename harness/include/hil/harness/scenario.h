@@ -74,6 +74,9 @@ struct EstimatorSpec {
   /// as candump -L lines on stdout).
   std::string output = "json_stdout";
   std::string navd_mode = "gnss_only";  ///< written into the generated navd.conf
+  /// Further navd.conf `[filter]` keys (noise grades, gates, …), written as given; navd validates
+  /// them and names the bad key (a rejected key fails the run with navd's message).
+  std::vector<std::pair<std::string, std::string>> navd_filter;
   double silence_timeout_s = 10.0;      ///< no output for this long fails the run
   double startup_s = 0.0;               ///< wall time given to the program to open its devices before t = 0
 };
