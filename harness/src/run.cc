@@ -214,9 +214,16 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
   const std::vector<EstimateRecord>& estimates = collector.records();
   if (estimates.empty() && !opt.emulate_only) report.problems.push_back("the estimator produced no solution");
   const Time t_end = TimeFromSeconds(scenario.duration_s), t_from = TimeFromSeconds(scenario.evaluate_from_s);
-  // an estimator fusing the IMU board reports the board's position (navd's body origin is the IMU)
-  const bool estimate_at_imu = scenario.mcu.enabled && scenario.estimator.navd_mode != "gnss_only";
-  const Eigen::Vector3d p_BX_B_m = estimate_at_imu ? scenario.mcu.config.mounting.p_BI_B_m : Eigen::Vector3d::Zero();
+  // the point the estimate describes: navd fusing the IMU board reports the board (its body origin is
+  // the IMU); a GNSS-only navd reports the antenna
+  std::string point = scenario.estimator.reference_point;
+  if (point == "auto") {
+    const bool navd = scenario.estimator.command.find("{navd}") != std::string::npos && !opt.estimator_command;
+    point = !navd ? "body" : scenario.estimator.navd_mode == "gnss_only" ? "antenna" : scenario.mcu.enabled ? "imu" : "body";
+  }
+  const Eigen::Vector3d p_BX_B_m = point == "antenna" ? scenario.gnss.model.p_BA_B_m
+                                   : point == "imu"   ? scenario.mcu.config.mounting.p_BI_B_m
+                                                      : Eigen::Vector3d::Zero();
   std::vector<ErrorSample> est_err = CompareWithTruth(scenario.truth, estimates, p_BX_B_m, t_from, t_end);
   std::vector<ErrorSample> fix_err =
       CompareWithTruth(scenario.truth, scheduler.fixes(), scenario.gnss.model.p_BA_B_m, t_from, t_end);

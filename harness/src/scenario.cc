@@ -24,7 +24,8 @@ const std::vector<std::string> kCriterionMetrics{
 namespace {
 
 void ReadEstimator(const YamlReader& r, EstimatorSpec& e) {
-  r.CheckKeys({"command", "output", "navd_mode", "navd_filter", "silence_timeout_s", "startup_s"});
+  r.CheckKeys({"command", "output", "navd_mode", "navd_filter", "reference_point", "silence_timeout_s", "startup_s"});
+  e.reference_point = r.Choice("reference_point", e.reference_point, {"auto", "body", "antenna", "imu"});
   e.command = r.String("command", e.command);
   e.output = r.Choice("output", e.output, {"json_stdout", "gpsd_json", "nmea_stdout", "nmea_pty", "n2k_candump"});
   e.navd_mode = r.Choice("navd_mode", e.navd_mode, {"gnss_only", "ekf", "planar2d", "imu_only"});

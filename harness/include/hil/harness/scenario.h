@@ -77,6 +77,10 @@ struct EstimatorSpec {
   /// Further navd.conf `[filter]` keys (noise grades, gates, …), written as given; navd validates
   /// them and names the bad key (a rejected key fails the run with navd's message).
   std::vector<std::pair<std::string, std::string>> navd_filter;
+  /// The point of the vehicle the estimate describes: "body" (the reference point), "antenna"
+  /// (the first receiver's antenna), "imu" (the IMU board), or "auto": antenna for a GNSS-only
+  /// navd, the IMU for navd fusing the board, the body otherwise.
+  std::string reference_point = "auto";
   double silence_timeout_s = 10.0;      ///< no output for this long fails the run
   double startup_s = 0.0;               ///< wall time given to the program to open its devices before t = 0
 };
