@@ -27,8 +27,17 @@ nlohmann::json AccuracyJson(const AccuracyMetrics& m) {
   return j;
 }
 
+std::ofstream OpenOut(const std::string& path) {
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error("cannot write " + path);
+  return out;
+}
+
+}  // namespace
+
 std::string XmlEscape(const std::string& s) {
   std::string o;
+  o.reserve(s.size());
   for (char c : s) {
     switch (c) {
       case '<': o += "&lt;"; break;
@@ -40,14 +49,6 @@ std::string XmlEscape(const std::string& s) {
   }
   return o;
 }
-
-std::ofstream OpenOut(const std::string& path) {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error("cannot write " + path);
-  return out;
-}
-
-}  // namespace
 
 bool RunReport::pass() const {
   if (!complete || !problems.empty()) return false;

@@ -16,20 +16,6 @@ constexpr const char* kTruthColor = "#222222";
 constexpr const char* kEstimateColor = "#1f77b4";
 constexpr const char* kGnssColor = "#d62728";
 
-std::string Esc(const std::string& s) {
-  std::string o;
-  for (char c : s) {
-    switch (c) {
-      case '<': o += "&lt;"; break;
-      case '>': o += "&gt;"; break;
-      case '&': o += "&amp;"; break;
-      case '"': o += "&quot;"; break;
-      default: o += c;
-    }
-  }
-  return o;
-}
-
 std::string Fmt(const std::optional<double>& v, const char* unit = "") {
   if (!v) return "n/a";
   char b[64];
@@ -142,26 +128,26 @@ std::vector<std::string> WritePlots(const RunReport& r, const ReportSeries& s, c
 void WriteReportHtml(const RunReport& r, const ReportSeries& s, const std::string& dir) {
   const std::vector<std::string> plots = WritePlots(r, s, dir);
   std::string h;
-  h += "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>hil run: " + Esc(r.scenario) +
+  h += "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>hil run: " + XmlEscape(r.scenario) +
        "</title>\n<style>body{font-family:sans-serif;max-width:1000px;margin:2em auto;color:#222}"
        "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #ccc;padding:4px 10px;text-align:left}"
        ".pass{color:#176317;font-weight:bold}.fail{color:#b00020;font-weight:bold}img{max-width:100%;"
        "border:1px solid #ddd;margin:0.5em 0}</style></head><body>\n";
-  h += "<h1>" + Esc(r.scenario) + ": <span class=\"" + (r.pass() ? "pass\">PASS" : "fail\">FAIL") + "</span></h1>\n";
+  h += "<h1>" + XmlEscape(r.scenario) + ": <span class=\"" + (r.pass() ? "pass\">PASS" : "fail\">FAIL") + "</span></h1>\n";
   char buf[512];
   std::snprintf(buf, sizeof buf, "<p>Scenario file %s, seed %llu, %s mode (speed %.2fx), %.1f s simulated in %.2f s.</p>\n",
-                Esc(r.scenario_file).c_str(), static_cast<unsigned long long>(r.seed), r.mode.c_str(), r.speed,
+                XmlEscape(r.scenario_file).c_str(), static_cast<unsigned long long>(r.seed), r.mode.c_str(), r.speed,
                 r.sim_time_s, r.wall_time_s);
   h += buf;
-  h += "<p>Estimator: <code>" + Esc(r.estimator_command) + "</code> (output " + Esc(r.estimator_output) + ", " +
-       Esc(r.estimator_exit) + ").</p>\n";
+  h += "<p>Estimator: <code>" + XmlEscape(r.estimator_command) + "</code> (output " + XmlEscape(r.estimator_output) + ", " +
+       XmlEscape(r.estimator_exit) + ").</p>\n";
   h += "<h2>Verdict</h2>\n<table><tr><th>criterion</th><th>threshold</th><th>value</th><th>result</th></tr>\n";
   for (const auto& c : r.criteria) {
     std::snprintf(buf, sizeof buf, "%.4g", c.threshold);
-    h += "<tr><td>" + Esc(c.name) + "</td><td>" + buf + "</td><td>" + Fmt(c.value) + "</td><td class=\"" +
+    h += "<tr><td>" + XmlEscape(c.name) + "</td><td>" + buf + "</td><td>" + Fmt(c.value) + "</td><td class=\"" +
          (c.pass ? "pass\">PASS" : "fail\">FAIL") + "</td></tr>\n";
   }
-  for (const auto& p : r.problems) h += "<tr><td colspan=\"3\">" + Esc(p) + "</td><td class=\"fail\">FAIL</td></tr>\n";
+  for (const auto& p : r.problems) h += "<tr><td colspan=\"3\">" + XmlEscape(p) + "</td><td class=\"fail\">FAIL</td></tr>\n";
   h += "</table>\n";
   h += "<h2>Accuracy against truth</h2>\n<table><tr><th>metric</th><th>estimate</th><th>raw GNSS</th></tr>\n";
   const MetricTable est = AccuracyTable(r.metrics), raw = AccuracyTable(r.baselines);
@@ -208,7 +194,7 @@ void WriteReportHtml(const RunReport& r, const ReportSeries& s, const std::strin
   }
   if (!r.faults.empty()) {
     h += "<h2>Fault timeline</h2>\n<ul>\n";
-    for (const auto& [kind, when] : r.faults) h += "<li>" + Esc(kind) + ": " + Esc(when) + "</li>\n";
+    for (const auto& [kind, when] : r.faults) h += "<li>" + XmlEscape(kind) + ": " + XmlEscape(when) + "</li>\n";
     std::snprintf(buf, sizeof buf, "</ul><p>Injected: %llu messages dropped, %llu bytes corrupted.</p>\n",
                   static_cast<unsigned long long>(r.fault_messages_dropped),
                   static_cast<unsigned long long>(r.fault_bytes_corrupted));

@@ -1,4 +1,5 @@
 #include "hil/harness/suite.h"
+#include "hil/harness/report.h"
 
 #include <fcntl.h>
 #include <sys/wait.h>
@@ -28,20 +29,6 @@ struct Case {
   std::int64_t started_ns = 0;
   nlohmann::json report;
 };
-
-std::string XmlEscape(const std::string& s) {
-  std::string o;
-  for (char c : s) {
-    switch (c) {
-      case '<': o += "&lt;"; break;
-      case '>': o += "&gt;"; break;
-      case '&': o += "&amp;"; break;
-      case '"': o += "&quot;"; break;
-      default: o += c;
-    }
-  }
-  return o;
-}
 
 pid_t Start(const SuiteOptions& opt, const Case& c) {
   std::vector<std::string> args{opt.hil_exe, "run", c.scenario, "--out", c.out};

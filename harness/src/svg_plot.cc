@@ -1,4 +1,5 @@
 #include "hil/harness/svg_plot.h"
+#include "hil/harness/report.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,20 +9,6 @@
 
 namespace hil::harness {
 namespace {
-
-std::string Esc(const std::string& s) {
-  std::string o;
-  for (char c : s) {
-    switch (c) {
-      case '<': o += "&lt;"; break;
-      case '>': o += "&gt;"; break;
-      case '&': o += "&amp;"; break;
-      case '"': o += "&quot;"; break;
-      default: o += c;
-    }
-  }
-  return o;
-}
 
 std::string Num(double v) {
   char b[32];
@@ -90,12 +77,12 @@ std::string RenderSvg(const PlotChart& c) {
   o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << c.width_px << "\" height=\"" << c.height_px
     << "\" viewBox=\"0 0 " << c.width_px << " " << c.height_px << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
   o << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  o << "<text x=\"" << Num(W / 2) << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">" << Esc(c.title) << "</text>\n";
+  o << "<text x=\"" << Num(W / 2) << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">" << XmlEscape(c.title) << "</text>\n";
   o << "<defs><clipPath id=\"plot\"><rect x=\"" << Num(ml) << "\" y=\"" << Num(mt) << "\" width=\"" << Num(pw)
     << "\" height=\"" << Num(ph) << "\"/></clipPath></defs>\n";
   for (const auto& b : c.bands) {
     o << "<rect x=\"" << Num(X(b.x0)) << "\" y=\"" << Num(mt) << "\" width=\"" << Num(X(b.x1) - X(b.x0))
-      << "\" height=\"" << Num(ph) << "\" fill=\"#f4b183\" fill-opacity=\"0.35\"><title>" << Esc(b.label)
+      << "\" height=\"" << Num(ph) << "\" fill=\"#f4b183\" fill-opacity=\"0.35\"><title>" << XmlEscape(b.label)
       << "</title></rect>\n";
   }
   const auto xt = NiceTicks(x0, x1, 8), yt = NiceTicks(y0, y1, 6);
@@ -113,9 +100,9 @@ std::string RenderSvg(const PlotChart& c) {
   o << "<rect x=\"" << Num(ml) << "\" y=\"" << Num(mt) << "\" width=\"" << Num(pw) << "\" height=\"" << Num(ph)
     << "\" fill=\"none\" stroke=\"#444\"/>\n";
   o << "<text x=\"" << Num(ml + pw / 2) << "\" y=\"" << Num(mt + ph + 34) << "\" text-anchor=\"middle\">"
-    << Esc(c.x_label) << "</text>\n";
+    << XmlEscape(c.x_label) << "</text>\n";
   o << "<text transform=\"translate(16," << Num(mt + ph / 2) << ") rotate(-90)\" text-anchor=\"middle\">"
-    << Esc(c.y_label) << "</text>\n";
+    << XmlEscape(c.y_label) << "</text>\n";
   if (empty) {
     o << "<text x=\"" << Num(ml + pw / 2) << "\" y=\"" << Num(mt + ph / 2) << "\" text-anchor=\"middle\" fill=\"#888\">no data</text>\n";
   }
@@ -149,7 +136,7 @@ std::string RenderSvg(const PlotChart& c) {
   for (std::size_t i = 0; i < c.series.size(); ++i) {
     const double lx = ml + static_cast<double>(i % 3) * (pw / 3), ly = mt + ph + 52 + static_cast<double>(i / 3) * 18;
     o << "<rect x=\"" << Num(lx) << "\" y=\"" << Num(ly - 9) << "\" width=\"14\" height=\"10\" fill=\""
-      << c.series[i].color << "\"/><text x=\"" << Num(lx + 20) << "\" y=\"" << Num(ly) << "\">" << Esc(c.series[i].label)
+      << c.series[i].color << "\"/><text x=\"" << Num(lx + 20) << "\" y=\"" << Num(ly) << "\">" << XmlEscape(c.series[i].label)
       << "</text>\n";
   }
   if (!c.bands.empty()) {

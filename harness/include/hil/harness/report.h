@@ -55,6 +55,9 @@ MetricTable AccuracyTable(const AccuracyMetrics& m);
 /// Every criterion metric of a run (accuracy, timing, outages, consistency).
 MetricTable RunMetricTable(const RunReport& r);
 
+/// Escapes text for XML and HTML (attributes and content): < > & ".
+std::string XmlEscape(const std::string& s);
+
 /// Evaluates the scenario's criteria against the metrics.
 std::vector<CriterionResult> EvaluateCriteria(const std::vector<Criterion>& criteria, const MetricTable& metrics,
                                               const MetricTable& baselines);
