@@ -71,3 +71,21 @@ TEST(ConfigFileTest, FilterSchemaErrorsAreClear) {
 
 }  // namespace
 }  // namespace hil::estimator
+
+namespace hil::estimator {
+namespace {
+
+TEST(ConfigFileTest, NmeaUereSetsTheAccuracyOfNmeaFixes) {
+  EXPECT_DOUBLE_EQ(NavdConfig{}.nmea_uere_m, 2.5);
+  const NavdConfig c = NavdConfig::FromFile(ConfigFile::Parse("[filter]\nnmea_uere_m = 0.5\n", "n.conf"));
+  EXPECT_DOUBLE_EQ(c.nmea_uere_m, 0.5);
+  try {
+    NavdConfig::FromFile(ConfigFile::Parse("[filter]\nnmea_uere_m = 0\n", "n.conf"));
+    FAIL() << "a zero UERE must be refused";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("n.conf:2: [filter] nmea_uere_m"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace hil::estimator

@@ -16,6 +16,9 @@ struct NavdConfig {
   std::string gnss_device;       ///< serial device of the GNSS receiver (NMEA); empty = none
   int gnss_baud = 9600;
   std::string gnss_protocol = "nmea";  ///< nmea (GGA + RMC) or ubx (NAV-POSLLH/VELNED/SOL)
+  /// NMEA carries no accuracy estimate: a fix's horizontal 1σ per axis is HDOP × nmea_uere_m / √2
+  /// (vertical twice that). UBX input uses the receiver's own hAcc/vAcc instead.
+  double nmea_uere_m = 2.5;
   std::string imu_device;        ///< serial device of the IMU microcontroller; empty = none
   int imu_baud = 57600;
   std::string imu_format = "mcu";///< mcu (binary frame protocol v1)
