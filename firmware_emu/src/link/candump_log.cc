@@ -150,9 +150,12 @@ std::optional<CandumpRecord> ParseCandumpLine(std::string_view line) {
   CandumpRecord r;
   std::int64_t sec = 0, frac_ns = 0;
   if (dot == 1) return std::nullopt;
+  // nanoseconds since 1970 fit 64 bits until 2262: longer second counts are not timestamps
+  constexpr std::int64_t kMaxSeconds = 9'000'000'000LL;
   for (std::size_t i = 1; i < dot; ++i) {
     if (line[i] < '0' || line[i] > '9' || i > 19) return std::nullopt;
     sec = sec * 10 + (line[i] - '0');
+    if (sec > kMaxSeconds) return std::nullopt;
   }
   std::int64_t scale = 100000000;  // first fraction digit is 10^8 ns
   for (std::size_t i = dot + 1; i < close; ++i) {

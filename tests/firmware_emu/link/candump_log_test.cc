@@ -169,3 +169,17 @@ TEST(CandumpLogTest, DeviceFramesConvertBothWays) {
 
 }  // namespace
 }  // namespace hil::link
+
+namespace hil::link {
+namespace {
+
+// Found by candump_line_fuzz: a timestamp of 15 digits overflowed the nanosecond arithmetic.
+TEST(CandumpLogTest, RejectsTimestampsBeyondTheNanosecondRange) {
+  EXPECT_FALSE(ParseCandumpLine("(137085120851200.311015) vcan0 0CF02DE2#137DE97C3880C002"));
+  const auto ok = ParseCandumpLine("(1370851200.311015) vcan0 0CF02DE2#137DE97C3880C002");
+  ASSERT_TRUE(ok);
+  EXPECT_EQ(ok->t_unix_ns, 1370851200311015000LL);
+}
+
+}  // namespace
+}  // namespace hil::link
