@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <stdexcept>
 
 #include "hil/firmware_emu/link/pty_port.h"
@@ -34,12 +35,30 @@ constexpr const char* kNavLink = "ttyNAV";         // pty the estimator writes N
 std::int64_t Now() { return link::RealtimePacer::MonotonicNs(); }
 double SecondsSince(std::int64_t t0) { return static_cast<double>(Now() - t0) * 1e-9; }
 
-std::size_t PendingToHost(const DeviceSet& set) {
+// Bytes the estimator has not read yet, on the links it reads (`host_links`; empty: all links).
+// Links it does not read (e.g. the second and third receiver for a single-receiver estimator) must
+// neither pace the run nor look like a hang.
+std::size_t PendingToHost(const DeviceSet& set, const std::set<std::string>& host_links) {
   std::size_t n = 0;
   for (const auto& ports : set.endpoints) {
-    for (const auto& ep : ports) n += ep->PendingToHost();
+    for (const auto& ep : ports) {
+      if (host_links.empty() || host_links.count(ep->link_name())) n += ep->PendingToHost();
+    }
   }
   return n;
+}
+
+// The links the estimator reads: those named in its command ({ttyGPS}) or, for navd, in navd.conf.
+std::set<std::string> HostLinks(const Scenario& s, const std::string& raw_command, const DeviceSet& set) {
+  std::set<std::string> used;
+  for (const auto& [name, path] : set.links) {
+    if (raw_command.find("{" + name + "}") != std::string::npos) used.insert(name);
+  }
+  if (raw_command.find("{navd}") != std::string::npos) {
+    used.insert(s.gnss.link);
+    if (s.mcu.enabled && s.estimator.navd_mode != "gnss_only") used.insert(s.mcu.link);
+  }
+  return used;
 }
 
 std::string Secs(double s) {
@@ -109,7 +128,9 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
     nav_pty = std::make_unique<link::PtyPort>(dir + "/" + kNavLink, 115200);
     vars.emplace_back(kNavLink, dir + "/" + kNavLink);
   }
-  const std::string command = Substitute(opt.estimator_command.value_or(scenario.estimator.command), vars);
+  const std::string raw_command = opt.estimator_command.value_or(scenario.estimator.command);
+  const std::string command = Substitute(raw_command, vars);
+  const std::set<std::string> host_links = HostLinks(scenario, raw_command, set);
   report.estimator_command = opt.emulate_only ? "" : command;
 
   std::ofstream fixes_csv(dir + "/gnss_fixes.csv");
@@ -154,12 +175,12 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
       return true;
     }
     // virtual mode: the host paces the run; waiting while it has unread input bounds the pty buffer
-    std::size_t pending = PendingToHost(set);
+    std::size_t pending = PendingToHost(set, host_links);
     std::int64_t last_progress = Now();
     while (pending > kBackpressureBytes && estimator_running()) {
       usleep(1000);
       collector.Poll();
-      const std::size_t now_pending = PendingToHost(set);
+      const std::size_t now_pending = PendingToHost(set, host_links);
       if (now_pending < pending) last_progress = Now();
       pending = now_pending;
       if (Now() - last_progress > silence_ns && silent_for_ns() > silence_ns) {
@@ -175,11 +196,11 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
   // ---- drain: the host reads every byte and its output goes quiet ----
   if (!hang && estimator_running()) {
     std::int64_t last_progress = Now();
-    std::size_t pending = PendingToHost(set);
+    std::size_t pending = PendingToHost(set, host_links);
     while (estimator_running() && pending > 0 && Now() - last_progress < silence_ns) {
       usleep(5000);
       collector.Poll();
-      const std::size_t p = PendingToHost(set);
+      const std::size_t p = PendingToHost(set, host_links);
       if (p < pending) last_progress = Now();
       pending = p;
     }

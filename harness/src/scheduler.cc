@@ -26,9 +26,12 @@ void Scheduler::Dispatch(std::size_t d, DeviceOutput& out) {
 }
 
 void Scheduler::RecordFixes(Time t) {
-  for (const auto& source : set_.fix_sources) {
-    const gnss::GnssFix& fix = *source();
-    if (fix.t_validity != t || !fix.valid()) continue;
+  // the raw-GNSS baseline is one receiver, the first (its antenna is the scenario's antenna lever
+  // arm); further receivers of a multi-antenna scenario feed the estimator, not the baseline
+  if (set_.fix_sources.empty()) return;
+  {
+    const gnss::GnssFix& fix = *set_.fix_sources.front()();
+    if (fix.t_validity != t || !fix.valid()) return;
     EstimateRecord r;
     r.t_validity = fix.t_validity;
     r.lat_deg = fix.lat_deg;

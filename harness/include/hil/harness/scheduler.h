@@ -31,7 +31,7 @@ class Scheduler {
   /// Writes the bytes still queued (real time) at their UART times.
   void Flush();
 
-  /// The raw GNSS fixes seen so far (the baseline).
+  /// The raw GNSS fixes of the first receiver seen so far (the baseline).
   const std::vector<EstimateRecord>& fixes() const { return fixes_; }
   /// Frames others put on the CAN bus during the run (the estimator's NMEA 2000 output).
   const std::vector<CanFrame>& bus_frames() const { return bus_frames_; }
