@@ -48,6 +48,7 @@ std::optional<double> ParseAngle(std::string_view value, std::string_view hemi, 
   const auto min = ToDouble(value.substr(deg_digits));
   if (!deg || !min || *min >= 60.0 || *min < 0) return std::nullopt;
   double d = *deg + *min / 60.0;
+  if (d > (deg_digits == 2 ? 90.0 : 180.0)) return std::nullopt;  // ddd = 999: not a place on Earth
   const char h = hemi[0];
   if (h == 'S' || h == 'W') d = -d;
   else if (h != 'N' && h != 'E') return std::nullopt;

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -88,6 +89,26 @@ TEST(NmeaDecoderTest, RealUblox5CapturesDecodeWithoutChecksumErrors) {
   std::size_t valid = 0;
   for (const auto& f : fixes) valid += f.valid ? 1 : 0;
   EXPECT_GT(valid, 0u);
+}
+
+}  // namespace
+}  // namespace hil::estimator::drivers
+
+namespace hil::estimator::drivers {
+namespace {
+
+// Found by nmea_decoder_fuzz: "99959.000,E" decoded as a longitude of 999.98°.
+TEST(NmeaDecoderTest, RejectsCoordinatesOffTheEarth) {
+  NmeaDecoderStats st;
+  const std::string body = "GPGGA,191434.00,5200.17079,N,99959.00000,E,1,07,1.45,20.8,M,46.1,M,,";
+  std::uint8_t sum = 0;
+  for (char c : body) sum ^= static_cast<std::uint8_t>(c);
+  char tail[8];
+  std::snprintf(tail, sizeof tail, "*%02X", sum);
+  const auto fix = NmeaDecoder::ParseSentence("$" + body + tail, &st);
+  ASSERT_TRUE(fix);
+  EXPECT_FALSE(fix->lon_deg.has_value());
+  EXPECT_FALSE(fix->valid);
 }
 
 }  // namespace
