@@ -11,6 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "hil/firmware_emu/link/pty_port.h"
 #include "hil/firmware_emu/link/realtime_pacer.h"
 #include "hil/harness/capture_format.h"
 #include "hil/harness/validate.h"
@@ -44,26 +45,13 @@ ByteStream ReadCapture(const std::string& text, const std::string& source) {
   return s;
 }
 
-speed_t BaudConstant(int baud) {
-  switch (baud) {
-    case 4800: return B4800;
-    case 9600: return B9600;
-    case 19200: return B19200;
-    case 38400: return B38400;
-    case 57600: return B57600;
-    case 115200: return B115200;
-    case 230400: return B230400;
-    default: return B0;
-  }
-}
-
 ByteStream ListenSerial(const std::string& source, double listen_s, int baud) {
   const int fd = open(source.c_str(), O_RDONLY | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
   if (fd < 0) throw std::runtime_error("cannot open " + source + ": " + std::strerror(errno));
   termios tio{};
   if (tcgetattr(fd, &tio) == 0) {
     cfmakeraw(&tio);
-    if (const speed_t b = BaudConstant(baud); b != B0) cfsetspeed(&tio, b);
+    if (const unsigned b = link::BaudToSpeed(baud); b != 0) cfsetspeed(&tio, b);
     tcsetattr(fd, TCSANOW, &tio);
   }
   ByteStream s;
