@@ -16,6 +16,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <memory>
 #include <stdexcept>
 #include <numbers>
@@ -32,6 +33,7 @@
 #include "hil/estimator/navigator.h"
 #include "hil/estimator/outputs/nmea0183_writer.h"
 #include "can_output.h"
+#include "receiver_setup.h"
 #include "serial_device.h"
 
 namespace {
@@ -49,7 +51,8 @@ void PrintUsage() {
       "  status) to [output] json, and NMEA 0183 (GGA, RMC, HDT) to [output] nmea_device.\n"
       "options:\n"
       "  --config FILE   configuration (INI; every key is documented in navd.conf.example):\n"
-      "                  [input] gnss_device, gnss_baud, gnss_protocol (nmea|ubx), imu_device,\n"
+      "                  [input] gnss_device, gnss_baud, gnss_protocol (nmea|ubx), gnss_configure,\n"
+      "                  gnss_rate_hz, imu_device,\n"
       "                  imu_baud, imu_format\n"
       "                  [time] leap_seconds\n"
       "                  [filter] mode (ekf|planar2d|gnss_only|imu_only|multi_gnss), lever_arm_m,\n"
@@ -193,7 +196,11 @@ int main(int argc, char** argv) {
   });
   const std::int64_t period_ns = static_cast<std::int64_t>(std::llround(1e9 / cfg.output_rate_hz));
   est::drivers::UbxEpochAssembler ubx_epochs;
+  hil::navd::ReceiverSetup receiver_setup(cfg);
+  const bool gnss_ubx = cfg.gnss_protocol == "ubx";
   est::drivers::UbxDecoder ubx([&](const est::drivers::UbxMessage& msg) {
+    receiver_setup.OnMessage(msg);
+    if (!gnss_ubx) return;
     const auto g = ubx_epochs.Add(msg);
     if (!g) return;
     nav.Push(*g);
@@ -202,7 +209,6 @@ int main(int argc, char** argv) {
       if (o.t != last_emitted) emit(o);
     }
   });
-  const bool gnss_ubx = cfg.gnss_protocol == "ubx";
   est::drivers::McuImuAdapter mcu_adapter;
   est::drivers::McuFrameDecoder mcu([&](const est::drivers::McuFrame& f) {
     const auto s = mcu_adapter.Add(f);
@@ -221,6 +227,11 @@ int main(int argc, char** argv) {
   hil::navd::SerialDevice imu(cfg.imu_device, cfg.imu_baud);
   std::string buf;
   while (!g_stop) {
+    if (gnss.EnsureOpen() >= 0) {
+      timespec now{};
+      clock_gettime(CLOCK_MONOTONIC, &now);
+      receiver_setup.Service(gnss, static_cast<std::int64_t>(now.tv_sec) * 1'000'000'000 + now.tv_nsec);
+    }
     pollfd p[2];
     nfds_t n = 0;
     hil::navd::SerialDevice* devs[2];
@@ -239,7 +250,10 @@ int main(int argc, char** argv) {
       buf.clear();
       const bool alive = devs[i]->Read(buf);
       if (devs[i] == &gnss && gnss_ubx) ubx.Feed(buf);
-      else if (devs[i] == &gnss) nmea.Feed(buf);
+      else if (devs[i] == &gnss) {
+        if (receiver_setup.active()) ubx.Feed(buf);  // the ACKs of the start-up configuration
+        nmea.Feed(buf);
+      }
       else mcu.Feed(buf);
       if (!alive) usleep(100000);
     }
