@@ -21,7 +21,7 @@ void ReadOrigin(const YamlReader& r, truth::TruthConfig& t) {
 void ReadVehicle(const YamlReader& r, truth::TruthConfig& t) {
   r.CheckKeys({"model", "wheelbase_m", "track_m", "max_steer_deg", "max_steer_rate_dps",
                "steer_lag_s", "speed_lag_s", "yaw_rate_lag_s", "max_yaw_rate_dps",
-               "slip_gain_rad_per_mps2"});
+               "slip_gain_rad_per_mps2", "speed_variation"});
   const std::string model = r.Choice("model", "bicycle", {"bicycle", "tractor", "diff_drive"});
   truth::VehicleParams p = model == "tractor"      ? truth::VehicleParams::Tractor()
                            : model == "diff_drive" ? truth::VehicleParams::DiffDrive()
@@ -44,6 +44,12 @@ void ReadVehicle(const YamlReader& r, truth::TruthConfig& t) {
   p.yaw_rate_lag_s = r.DoubleIn("yaw_rate_lag_s", p.yaw_rate_lag_s, 0.01, 10);
   p.max_yaw_rate_dps = r.DoubleIn("max_yaw_rate_dps", p.max_yaw_rate_dps, 1, 360);
   p.slip_gain_rad_per_mps2 = r.DoubleIn("slip_gain_rad_per_mps2", p.slip_gain_rad_per_mps2, 0, 0.2);
+  if (auto sv = r.OptionalChild("speed_variation")) {
+    sv->CheckKeys({"std_percent", "correlation_time_s", "seed"});
+    p.speed_variation_std = sv->DoubleIn("std_percent", 0, 0, 50) / 100.0;
+    p.speed_variation_tau_s = sv->DoubleIn("correlation_time_s", p.speed_variation_tau_s, 0.1, 3600);
+    p.speed_variation_seed = static_cast<std::uint64_t>(sv->Int("seed", 1, 0, INT64_MAX));
+  }
   t.vehicle = p;
 }
 

@@ -34,6 +34,42 @@ TEST(TruthIntegratorTest, StraightLineAtConstantSpeedHasZeroBodyRate) {
   }
 }
 
+TEST(TruthIntegratorTest, SpeedVariationIsARepeatableGaussMarkovAroundTheCommand) {
+  SpeedVariation a(0.03, 5.0, 11), b(0.03, 5.0, 11), other(0.03, 5.0, 12);
+  // the same function of time whatever the order of evaluation
+  const double late = a.Factor(500.05);
+  EXPECT_DOUBLE_EQ(b.Factor(3.3), a.Factor(3.3));
+  EXPECT_DOUBLE_EQ(b.Factor(500.05), late);
+  EXPECT_NE(other.Factor(3.3), a.Factor(3.3));
+  EXPECT_DOUBLE_EQ(SpeedVariation(0, 5, 1).Factor(10), 1.0);
+  // statistics over 20 000 s: standard deviation 3 % and lag correlation exp(-1) at one tau
+  double sum = 0, sum2 = 0, lag = 0;
+  const int n = 200000;
+  for (int i = 0; i < n; ++i) {
+    const double x = a.Factor(i * 0.1) - 1, y = a.Factor(i * 0.1 + 5.0) - 1;
+    sum += x, sum2 += x * x, lag += x * y;
+  }
+  const double var = sum2 / n - (sum / n) * (sum / n);
+  EXPECT_NEAR(std::sqrt(var), 0.03, 0.003);
+  EXPECT_NEAR(lag / n / var, std::exp(-1.0), 0.05);
+  // in the vehicle: the speed follows the varied command, the mean stays the commanded speed
+  TruthConfig c;
+  c.origin = {35.4796096, 50.5979765, 1300};
+  c.heading_deg = 90;
+  c.speed_mps = 1.0;
+  c.vehicle.speed_variation_std = 0.05;
+  TruthIntegrator truth(c);
+  double vmin = 10, vmax = 0;
+  for (int k = 1; k <= 600; ++k) {
+    const double v = truth.Sample(TimeFromSeconds(k * 0.5)).speed_mps;
+    vmin = std::min(vmin, v), vmax = std::max(vmax, v);
+  }
+  EXPECT_LT(vmin, 0.97);
+  EXPECT_GT(vmax, 1.03);
+  const double e = truth.Sample(TimeFromSeconds(300)).p_NB_N_m.x();
+  EXPECT_NEAR(e / 300.0, 1.0, 0.05) << "travelled at about the commanded speed";
+}
+
 TEST(TruthIntegratorTest, ConstantSteeringGivesCircleOfRadiusLOverTanDelta) {
   TruthConfig c;
   c.origin = {35, 50, 0};

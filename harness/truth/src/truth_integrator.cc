@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -69,6 +70,7 @@ struct TruthIntegrator::Impl {
   const Terrain* terrain = nullptr;
   const LocalFrame* frame = nullptr;
   bool diff_drive = false;
+  mutable std::optional<SpeedVariation> speed_variation;  // grows its grid as time advances
   std::vector<bool> stop_vertex;          // vehicle stops at (or turns in place at) this vertex
   std::vector<std::size_t> next_stop;     // first stop vertex after segment i's start
   std::vector<Eigen::Vector2d> switch_n;  // normal of segment i's switching line through vertex i+1
@@ -184,7 +186,7 @@ struct TruthIntegrator::Impl {
     Inputs out;
     switch (mode.phase) {
       case Mode::Phase::kOpenLoop:
-        out.v_cmd = NominalSpeed(t);
+        out.v_cmd = NominalSpeed(t) * speed_variation->Factor(t);
         out.u_cmd = diff_drive ? c->yaw_rate_dps * kDeg : c->steer_deg * kDeg;
         return out;
       case Mode::Phase::kDone:
@@ -220,7 +222,7 @@ struct TruthIntegrator::Impl {
     // distance to the stop, less what the speed lag will still cover
     const double to_stop = s_stop - s_now - s[kV] * p.speed_lag_s;
     out.v_cmd =
-        std::min(SegmentSpeed(k, t),
+        std::min(SegmentSpeed(k, t) * speed_variation->Factor(t),
                  std::max(c->guidance.creep_speed_mps,
                           std::sqrt(2 * c->guidance.stop_decel_mps2 * std::max(to_stop, 0.0))));
     if (diff_drive) {
@@ -300,6 +302,8 @@ struct TruthIntegrator::Impl {
   void Setup() {
     const VehicleParams& p = c->vehicle;
     diff_drive = p.model == VehicleParams::Model::kDiffDrive;
+    speed_variation.emplace(p.speed_variation_std, p.speed_variation_tau_s, p.speed_variation_seed);
+    if (p.speed_variation_std > 0) tick_s = 1.0 / c->guidance.rate_hz;  // open loop too: the speed varies
     w_IE_N = c->earth_rotation ? EarthRateIn(*frame) : Eigen::Vector3d::Zero();
     if (c->path) {
       const Path& path = *c->path;

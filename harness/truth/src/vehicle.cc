@@ -1,5 +1,8 @@
 #include "hil/truth/vehicle.h"
 
+#include <cmath>
+#include <random>
+
 namespace hil::truth {
 
 VehicleParams VehicleParams::GreenhousePlatform() { return VehicleParams{}; }
@@ -23,6 +26,33 @@ VehicleParams VehicleParams::DiffDrive() {
   p.yaw_rate_lag_s = 0.2;
   p.max_yaw_rate_dps = 45;
   return p;
+}
+
+namespace {
+constexpr double kSpeedGridS = 0.1;
+}  // namespace
+
+SpeedVariation::SpeedVariation(double std, double tau_s, std::uint64_t seed)
+    : std_(std), phi_(tau_s > 0 ? std::exp(-kSpeedGridS / tau_s) : 0.0), state_(seed) {}
+
+double SpeedVariation::Factor(double t_s) {
+  if (std_ <= 0) return 1.0;
+  const double pos = std::max(t_s, 0.0) / kSpeedGridS;
+  const auto i = static_cast<std::size_t>(pos);
+  if (x_.size() < i + 2) {
+    std::mt19937_64 rng(state_);
+    std::normal_distribution<double> normal(0.0, 1.0);
+    // one engine for the whole grid, re-seeded from the stored state each time the grid grows:
+    // draw the next values from a stream indexed by grid position (seed + index)
+    while (x_.size() < i + 2) {
+      rng.seed(state_ + x_.size());
+      const double w = normal(rng);
+      normal.reset();
+      x_.push_back(x_.empty() ? std_ * w : phi_ * x_.back() + std_ * std::sqrt(1 - phi_ * phi_) * w);
+    }
+  }
+  const double f = pos - static_cast<double>(i);
+  return 1.0 + (1 - f) * x_[i] + f * x_[i + 1];
 }
 
 }  // namespace hil::truth

@@ -13,6 +13,7 @@
 /// Slip (optional): β = −k_slip · v · ψ̇, the velocity swinging to the outside of a turn in
 /// proportion to the lateral acceleration.
 
+#include <cstdint>
 #include <vector>
 
 namespace hil::truth {
@@ -30,6 +31,13 @@ struct VehicleParams {
   double yaw_rate_lag_s = 0.2;        ///< diff_drive: yaw-rate lag τ_ω
   double max_yaw_rate_dps = 45;       ///< diff_drive: |ω_cmd| limit
   double slip_gain_rad_per_mps2 = 0;  ///< lateral slip k_slip (0: no slip)
+  /// Speed variation of a real drive (governor droop, wheel slip on soil, load): the commanded
+  /// speed is multiplied by 1 + x(t), x a first-order Gauss–Markov process of this standard
+  /// deviation (a fraction, 0: an exactly constant speed) and correlation time, drawn on a 0.1 s
+  /// grid from `speed_variation_seed` and interpolated linearly (a deterministic function of t).
+  double speed_variation_std = 0;
+  double speed_variation_tau_s = 5.0;
+  std::uint64_t speed_variation_seed = 1;
 
   /// Seed 003's greenhouse platform: front-wheel steered, wheelbase 0.84 m, track 0.55 m, ±32°.
   static VehicleParams GreenhousePlatform();
@@ -38,6 +46,21 @@ struct VehicleParams {
   static VehicleParams Tractor();
   /// Seed 001's greenhouse transport vehicle: differential drive, track 0.5 m.
   static VehicleParams DiffDrive();
+};
+
+/// The speed variation of VehicleParams: factor(t) = 1 + x(t), x a first-order Gauss–Markov
+/// process on a 0.1 s grid (exact discretisation, seeded), linearly interpolated. The same
+/// parameters give the same function of time, however the integrator steps.
+class SpeedVariation {
+ public:
+  SpeedVariation(double std, double tau_s, std::uint64_t seed);
+  /// 1 + x(t) for t ≥ 0 (1 for a zero standard deviation). Extends the grid as needed.
+  double Factor(double t_s);
+
+ private:
+  double std_, phi_;
+  std::uint64_t state_;
+  std::vector<double> x_;
 };
 
 /// One component of engine vibration, added to the body's pose about the reference point as a
