@@ -88,12 +88,16 @@ bool WaitForFile(const std::string& path, double timeout_s) {
 }
 
 // No process is left in the estimator's process group (its id is the estimator's pid).
+// (A process killed at the very end may stay a zombie for a moment until its new parent reaps it.)
 void ExpectNoOrphans(const nlohmann::json& report) {
   const int pgid = report["estimator"]["pid"].get<int>();
   ASSERT_GT(pgid, 0);
-  errno = 0;
-  EXPECT_EQ(kill(-pgid, 0), -1) << "processes of the estimator's group " << pgid << " are still running";
-  EXPECT_EQ(errno, ESRCH);
+  bool gone = false;
+  for (int i = 0; i < 40 && !gone; ++i) {
+    gone = kill(-pgid, 0) == -1 && errno == ESRCH;
+    if (!gone) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  EXPECT_TRUE(gone) << "processes of the estimator's group " << pgid << " are still running";
 }
 
 nlohmann::json Report(const std::string& run_dir) {
@@ -153,7 +157,9 @@ TEST(HilRobustnessE2eTest, AnEstimatorKilledMidRunIsReportedAndItsGroupStopped) 
   EXPECT_FALSE(r["complete"].get<bool>());
   EXPECT_NE(r["incomplete_reason"].get<std::string>().find("ended before the scenario did"), std::string::npos)
       << r["incomplete_reason"];
-  EXPECT_NE(r["estimator_exit"].get<std::string>().find("signal 9"), std::string::npos) << r["estimator_exit"];
+  // navd runs under the shell of the command: the shell reports its child's SIGKILL as code 137
+  const std::string exit = r["estimator_exit"].get<std::string>();
+  EXPECT_TRUE(exit.find("signal 9") != std::string::npos || exit.find("code 137") != std::string::npos) << exit;
   ExpectNoOrphans(r);
   EXPECT_GT(r["metrics"]["samples"].get<int>(), 3);
 }
