@@ -1,6 +1,5 @@
 #include "hil/harness/run.h"
 
-#include <sched.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -34,10 +33,7 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr double kDrainQuietS = 0.5;               // estimator output quiet this long after the last byte: done
-// virtual mode: before the next event the host must have read what it was sent (lockstep), so that
-// what it sees depends on the scenario and not on how fast it was scheduled: a host left behind by
-// kilobytes reads seconds of one link before the other (IMU far ahead of the GNSS fixes)
-constexpr std::size_t kBackpressureBytes = 0;
+constexpr std::size_t kBackpressureBytes = 2048;   // virtual mode: wait while the host has this much unread
 constexpr const char* kNavLink = "ttyNAV";         // pty the estimator writes NMEA into (output nmea_pty)
 
 std::int64_t Now() { return link::RealtimePacer::MonotonicNs(); }
@@ -209,9 +205,8 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
     // virtual mode: the host paces the run; waiting while it has unread input bounds the pty buffer
     std::size_t pending = PendingToHost(set, host_links);
     std::int64_t last_progress = Now();
-    for (int spin = 0; pending > kBackpressureBytes && estimator_running(); ++spin) {
-      if (spin < 50) sched_yield();  // the host normally reads within microseconds
-      else usleep(spin < 200 ? 100 : 1000);
+    while (pending > kBackpressureBytes && estimator_running()) {
+      usleep(1000);
       collector.Poll();
       if (interrupted()) return false;
       const std::size_t now_pending = PendingToHost(set, host_links);
