@@ -5,6 +5,7 @@ namespace hil::harness {
 const char* FaultUnit(FaultKind kind) {
   switch (kind) {
     case FaultKind::kGnssOutage: return "epochs without a fix";
+    case FaultKind::kGnssDataGap: return "epochs not sent";
     case FaultKind::kGnssGlitch: return "epochs with the offset";
     case FaultKind::kByteCorruption: return "bits flipped";
     case FaultKind::kFrameDrop: return "messages dropped";

@@ -43,6 +43,8 @@ void Scheduler::RecordFixes(Time t) {
     if (recorder_) {
       const auto outage = recorder_->Active(FaultKind::kGnssOutage, t);
       if (outage && !fix.valid()) recorder_->Note(*outage, t);
+      const auto gap = recorder_->Active(FaultKind::kGnssDataGap, t);
+      if (gap) recorder_->Note(*gap, t);  // the receiver computed this epoch but sent nothing
       const auto glitch = recorder_->Active(FaultKind::kGnssGlitch, t);
       if (glitch && fix.valid()) recorder_->Note(*glitch, t);
     }

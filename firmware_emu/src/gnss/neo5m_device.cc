@@ -98,6 +98,7 @@ void Neo5mDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
   cond.max_sbas = cfg.sbas[2];
   ErrorInputs in;
   overload_ = false;
+  bool data_gap = false;
   for (const GnssFault& f : config_.faults) {
     if (t_s < f.start_s || t_s >= f.end_s) continue;
     switch (f.kind) {
@@ -106,6 +107,7 @@ void Neo5mDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
       case GnssFault::Kind::kStep: in.offset_N_m += f.offset_N_m; break;
       case GnssFault::Kind::kMultipath: in.multipath_sigma_m = std::hypot(in.multipath_sigma_m, f.sigma_m); break;
       case GnssFault::Kind::kOverload: overload_ = true; break;
+      case GnssFault::Kind::kDataGap: data_gap = true; break;
     }
   }
   const double gps_s = static_cast<double>(e.gps.week) * 604800.0 + e.gps.tow_s();
@@ -170,7 +172,7 @@ void Neo5mDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
   e.f_acc_psps = valid ? 500.0 : 1.0e5;
   last_epoch_ = e;
   ++epoch_count_;
-  EmitEpoch(t + config_.output_lag, out);
+  if (!data_gap) EmitEpoch(t + config_.output_lag, out);
 }
 
 void Neo5mDevice::EmitEpoch(Time t_ready, DeviceOutput& out) {

@@ -4,6 +4,7 @@
 ///
 ///   faults:
 ///     - {kind: gnss_outage, start_s: 40, end_s: 55}
+///     - {kind: gnss_data_gap, start_s: 60, end_s: 65}
 ///     - {kind: gnss_glitch, start_s: 70, end_s: 72, north_m: 8, east_m: -3}
 ///     - {kind: byte_corruption, start_s: 10, end_s: 20, probability: 0.001, link: ttyGPS}
 ///     - {kind: frame_drop, start_s: 30, end_s: 35, probability: 0.5}
@@ -18,7 +19,7 @@
 /// mcu_reset takes an optional end_s: the MCU is silent from start_s to end_s (its reboot time;
 /// without end_s the mcu section's reboot time). byte_corruption takes either `probability` (per
 /// byte: one random bit flipped) or `bit_error_rate` (every bit flipped independently).
-/// Who applies what: the GNSS device model applies gnss_outage, gnss_glitch and gnss_overload (its
+/// Who applies what: the GNSS device model applies gnss_outage, gnss_data_gap, gnss_glitch and gnss_overload (its
 /// UART transmit buffer then overflows and drops whole messages), the MCU model mcu_reset; the
 /// scheduler applies byte_corruption, frame_drop, frame_duplicate, frame_truncate and baud_mismatch
 /// (what the host's UART receives) to whole serial messages and can_reorder to CAN frames
@@ -38,6 +39,7 @@ class YamlReader;
 
 enum class FaultKind {
   kGnssOutage,
+  kGnssDataGap,
   kGnssGlitch,
   kByteCorruption,
   kFrameDrop,
