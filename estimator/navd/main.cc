@@ -30,6 +30,7 @@
 #include "hil/estimator/drivers/ubx_decoder.h"
 #include "hil/estimator/nav_solution.h"
 #include "hil/estimator/navd_config.h"
+#include "hil/estimator/navd_health.h"
 #include "hil/estimator/navigator.h"
 #include "hil/estimator/outputs/nmea0183_writer.h"
 #include "can_output.h"
@@ -172,8 +173,10 @@ int main(int argc, char** argv) {
                         cfg.mode() == est::NavMode::kImuOnly;
   std::uint64_t nmea_write_errors = 0;
   est::GpsNs last_emitted = -1;
+  est::NavdHealth health;  // fault detection: counters and flags in every JSON line
   const auto emit = [&](const est::NavOutput& o) {
-    const std::string line = est::ToJsonLine(ToSolution(o, nav, cfg.leap_seconds));
+    std::string line = est::ToJsonLine(ToSolution(o, nav, cfg.leap_seconds));
+    health.AppendTo(line, o.t);
     std::fwrite(line.data(), 1, line.size(), out);
     std::fflush(out);
     if (nmea_fd >= 0) {
@@ -188,7 +191,9 @@ int main(int argc, char** argv) {
   est::drivers::NmeaDecoder nmea([&](const est::drivers::NmeaFix& fix) {
     const auto m = assembler.Add(fix);
     if (!m) return;
-    nav.Push(ToGnssSample(*m, cfg.leap_seconds, cfg.nmea_uere_m));
+    const est::GnssSample g = ToGnssSample(*m, cfg.leap_seconds, cfg.nmea_uere_m);
+    health.OnGnss(g);
+    nav.Push(g);
     if (!imu_mode) {
       const est::NavOutput o = nav.Output();
       if (o.t != last_emitted) emit(o);
@@ -203,6 +208,7 @@ int main(int argc, char** argv) {
     if (!gnss_ubx) return;
     const auto g = ubx_epochs.Add(msg);
     if (!g) return;
+    health.OnGnss(*g);
     nav.Push(*g);
     if (!imu_mode) {
       const est::NavOutput o = nav.Output();
@@ -211,6 +217,7 @@ int main(int argc, char** argv) {
   });
   est::drivers::McuImuAdapter mcu_adapter;
   est::drivers::McuFrameDecoder mcu([&](const est::drivers::McuFrame& f) {
+    health.OnMcuFrame(f);
     const auto s = mcu_adapter.Add(f);
     if (!s) return;
     nav.Push(*s);
@@ -223,6 +230,7 @@ int main(int argc, char** argv) {
     if (o.valid) emit(o);
   });
 
+  health.set_sources({&nmea.stats(), &ubx.stats(), &mcu.stats(), &mcu_adapter.stats(), &nav.stats()});
   hil::navd::SerialDevice gnss(cfg.gnss_device, cfg.gnss_baud);
   hil::navd::SerialDevice imu(cfg.imu_device, cfg.imu_baud);
   std::string buf;

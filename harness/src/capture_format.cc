@@ -1,5 +1,7 @@
 #include "hil/harness/capture_format.h"
 
+#include "hil/harness/run_guard.h"
+
 #include <charconv>
 #include <sstream>
 #include <stdexcept>
@@ -120,7 +122,7 @@ std::optional<CaptureRecord> ParseCaptureLine(std::string_view line) {
   return r;
 }
 
-CaptureWriter::CaptureWriter(const std::string& path, const CaptureHeader& h) : out_(path) {
+CaptureWriter::CaptureWriter(const std::string& path, const CaptureHeader& h) : out_(path), path_(path) {
   if (!out_) throw std::runtime_error("cannot write the capture " + path);
   out_ << "# hil capture v2\n# link " << h.link << ' ' << h.kind << ' ';
   if (h.kind == "can") out_ << h.iface;
@@ -135,6 +137,7 @@ CaptureWriter::CaptureWriter(const std::string& path, const CaptureHeader& h) : 
 void CaptureWriter::Write(const CaptureRecord& r) {
   out_ << FormatCaptureLine(r) << '\n';
   out_.flush();
+  if (!out_) NoteWriteFailure(path_);
 }
 
 Capture ReadCapture(const std::string& path) {

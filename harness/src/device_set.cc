@@ -40,6 +40,8 @@ void AddGnss(const Scenario& s, std::uint64_t seed, const std::string& dir, Devi
       } else if (f.kind == FaultKind::kGnssGlitch) {
         g.kind = gnss::GnssFault::Kind::kStep;
         g.offset_N_m = Eigen::Vector3d(f.Param("east_m", 0), f.Param("north_m", 0), f.Param("up_m", 0));
+      } else if (f.kind == FaultKind::kGnssOverload) {
+        g.kind = gnss::GnssFault::Kind::kOverload;
       } else {
         continue;
       }
@@ -65,6 +67,14 @@ void AddMcu(const Scenario& s, std::uint64_t seed, const std::string& dir, Devic
   if (!s.mcu.enabled) return;
   mcu::McuConfig cfg = s.mcu.config;
   cfg.start_unix_ns = s.start_unix_ns;
+  // the scenario's global fault timeline: an mcu_reset keeps the MCU silent until its end_s
+  for (const Fault& f : s.faults.OfKind(FaultKind::kMcuReset)) {
+    mcu::McuFault r;
+    r.kind = mcu::FaultKind::kReset;
+    r.start_s = ToSeconds(f.start);
+    r.duration_s = ToSeconds(f.end - f.start);
+    cfg.faults.push_back(r);
+  }
   auto dev = std::make_unique<mcu::McuDevice>(cfg, seed * kSeedStride + kMcuStream);
   const std::string path = dir + "/" + s.mcu.link;
   std::vector<std::unique_ptr<SerialEndpoint>> ports;

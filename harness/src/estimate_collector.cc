@@ -3,15 +3,19 @@
 #include <algorithm>
 
 #include "hil/firmware_emu/link/realtime_pacer.h"
+#include "hil/harness/run_guard.h"
 
 namespace hil::harness {
 
 EstimateCollector::EstimateCollector(std::unique_ptr<EstimateReader> reader, EstimatorProcess* process,
                                      link::PtyPort* nav_pty, const std::string& raw_path)
-    : reader_(std::move(reader)), process_(process), nav_pty_(nav_pty), raw_(raw_path) {}
+    : reader_(std::move(reader)), process_(process), nav_pty_(nav_pty), raw_(raw_path), raw_path_(raw_path) {}
 
 void EstimateCollector::Consume(const std::string& line, std::int64_t wall_ns) {
   raw_ << line << "\n";
+  raw_.flush();  // everything captured so far survives an interrupted run
+  if (!raw_) NoteWriteFailure(raw_path_);
+  if (observer_) observer_(line);
   ++lines_;
   if (auto r = reader_->Line(line, wall_ns)) records_.push_back(*r);
   else ++unparsed_;

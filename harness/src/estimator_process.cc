@@ -96,23 +96,29 @@ std::vector<OutputLine> EstimatorProcess::TakeLines() {
   return out;
 }
 
+bool EstimatorProcess::GroupAlive() const { return pid_ > 0 && kill(-pid_, 0) == 0; }
+
 ExitInfo EstimatorProcess::Stop(double grace_s) {
-  if (!Running()) return *exit_;
+  // the whole process group, even when its leader has already ended: whatever the estimator started
+  // (a helper, a shell's children) must not outlive the run, nor keep its stdout pipe open
+  const bool was_running = Running();
+  if (!was_running && !GroupAlive()) return *exit_;
   kill(-pid_, SIGTERM);
   const std::int64_t deadline = link::RealtimePacer::MonotonicNs() + static_cast<std::int64_t>(grace_s * 1e9);
   while (link::RealtimePacer::MonotonicNs() < deadline) {
-    if (!Running()) {
-      exit_->exited = false;  // it ended because we asked
-      return *exit_;
-    }
+    const bool leader = Running();
+    if (!leader && !GroupAlive()) break;
     usleep(10000);
   }
-  kill(-pid_, SIGKILL);
-  int status = 0;
-  waitpid(pid_, &status, 0);
-  Reap(status);
-  exit_->exited = false;
-  exit_->killed_by_us = true;
+  const bool leader_left = Running();
+  if (leader_left || GroupAlive()) kill(-pid_, SIGKILL);
+  if (leader_left) {
+    int status = 0;
+    waitpid(pid_, &status, 0);
+    Reap(status);
+    exit_->killed_by_us = true;
+  }
+  if (was_running) exit_->exited = false;  // it ended because we asked
   return *exit_;
 }
 

@@ -28,10 +28,15 @@ const std::vector<KindSpec>& Kinds() {
       {FaultKind::kGnssDataGap, "gnss_data_gap", false, false, {}},
       {FaultKind::kGnssGlitch, "gnss_glitch", false, false,
        {{"north_m", -1e4, 1e4, 0}, {"east_m", -1e4, 1e4, 0}, {"up_m", -1e4, 1e4, 0}}},
-      {FaultKind::kByteCorruption, "byte_corruption", false, true, {{"probability", 0, 1, 1e-3}}},
+      {FaultKind::kByteCorruption, "byte_corruption", false, true,
+       {{"probability", 0, 1, 1e-3}, {"bit_error_rate", 0, 0.5, 0}}},
       {FaultKind::kFrameDrop, "frame_drop", false, true, {{"probability", 0, 1, 1}}},
       {FaultKind::kMcuReset, "mcu_reset", true, false, {}},
       {FaultKind::kBaudMismatch, "baud_mismatch", false, true, {{"baud", 300, 921600, 4800}}},
+      {FaultKind::kFrameDuplicate, "frame_duplicate", false, true, {{"probability", 0, 1, 1}}},
+      {FaultKind::kFrameTruncate, "frame_truncate", false, true, {{"probability", 0, 1, 1}}},
+      {FaultKind::kCanReorder, "can_reorder", false, false, {{"probability", 0, 1, 1}}},
+      {FaultKind::kGnssOverload, "gnss_overload", false, false, {}},
   };
   return kinds;
 }

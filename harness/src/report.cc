@@ -91,6 +91,7 @@ MetricTable RunMetricTable(const RunReport& r) {
   }
   t["outage_max_horizontal_error_m"] = worst;
   t["reconvergence_time_s"] = never_reconverged ? std::nullopt : reconv;
+  AddFaultMetrics(t, r.fault_injections, r.estimator_health);
   return t;
 }
 
@@ -167,11 +168,15 @@ void WriteReportJson(const RunReport& r, const std::string& path) {
   for (const auto& c : r.criteria) {
     j["criteria"].push_back({{"name", c.name}, {"threshold", c.threshold}, {"value", OptionalJson(c.value)}, {"pass", c.pass}});
   }
-  j["estimator"] = {{"command", r.estimator_command}, {"output", r.estimator_output}, {"exit", r.estimator_exit}};
+  j["estimator"] = {{"command", r.estimator_command}, {"output", r.estimator_output}, {"exit", r.estimator_exit},
+                    {"pid", r.estimator_pid}};
   j["estimator_exit"] = r.estimator_exit;
   j["speed"] = r.speed;
   j["faults"] = nlohmann::json::array();
   for (const auto& [kind, when] : r.faults) j["faults"].push_back({{"kind", kind}, {"when", when}});
+  j["fault_injections"] = FaultInjectionsJson(r.fault_injections);
+  j["estimator_health"] = EstimatorHealthJson(r.estimator_health);
+  if (!r.incomplete_reason.empty()) j["incomplete_reason"] = r.incomplete_reason;
   j["fault_effects"] = {{"messages_dropped", r.fault_messages_dropped}, {"bytes_corrupted", r.fault_bytes_corrupted}};
   j["wall_time_s"] = r.wall_time_s;
   j["sim_time_s"] = r.sim_time_s;

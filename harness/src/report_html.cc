@@ -200,6 +200,27 @@ void WriteReportHtml(const RunReport& r, const ReportSeries& s, const std::strin
                   static_cast<unsigned long long>(r.fault_messages_dropped),
                   static_cast<unsigned long long>(r.fault_bytes_corrupted));
     h += buf;
+    h += "<table><tr><th>fault</th><th>link</th><th>window s</th><th>injected</th><th>first–last s</th>"
+         "<th>recovery</th></tr>\n";
+    for (const FaultInjection& f : r.fault_injections) {
+      std::snprintf(buf, sizeof buf, "<tr><td>%s</td><td>%s</td><td>%.1f–%.1f</td><td>%llu %s</td><td>%s</td><td>%s</td></tr>\n",
+                    XmlEscape(f.kind).c_str(), f.link.empty() ? "all" : XmlEscape(f.link).c_str(), f.start_s, f.end_s,
+                    static_cast<unsigned long long>(f.count), XmlEscape(f.unit).c_str(),
+                    f.times_s.empty() ? "–" : (Fmt(f.times_s.front(), "") + "–" + Fmt(f.times_s.back(), "")).c_str(),
+                    Fmt(f.recovery_time_s, " s").c_str());
+      h += buf;
+    }
+    h += "</table>\n";
+  }
+  if (r.estimator_health.present) {
+    h += "<h2>Estimator health (navd)</h2>\n<p>Flags raised:";
+    for (const std::string& f : r.estimator_health.flags_seen) h += " " + XmlEscape(f);
+    if (r.estimator_health.flags_seen.empty()) h += " none";
+    h += "</p>\n<p>Counters:";
+    for (const auto& [k, v] : r.estimator_health.counters) {
+      if (v != 0) h += " " + XmlEscape(k) + "=" + std::to_string(static_cast<long long>(v));
+    }
+    h += "</p>\n";
   }
   h += "<h2>Plots</h2>\n";
   for (const auto& p : plots) h += "<p><img src=\"" + p + "\" alt=\"" + p + "\"></p>\n";

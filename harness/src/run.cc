@@ -5,13 +5,16 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <csignal>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <set>
 #include <stdexcept>
 
 #include "hil/firmware_emu/link/pty_port.h"
 #include "hil/firmware_emu/link/realtime_pacer.h"
+#include "hil/firmware_emu/mcu/mcu_device.h"
 #include "hil/harness/byte_faults.h"
 #include "hil/harness/cross_track.h"
 #include "hil/harness/device_set.h"
@@ -20,6 +23,7 @@
 #include "hil/harness/outage_metrics.h"
 #include "hil/harness/progress.h"
 #include "hil/harness/report_html.h"
+#include "hil/harness/run_guard.h"
 #include "hil/harness/run_outputs.h"
 #include "hil/harness/scheduler.h"
 
@@ -93,6 +97,8 @@ std::string Substitute(const std::string& text, const std::vector<std::pair<std:
 
 RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
   const std::int64_t wall_start = Now();
+  const InterruptGuard interrupt_guard;  // Ctrl-C / SIGTERM: stop the estimator, write an incomplete report
+  ClearWriteFailures();
   std::error_code ec;
   fs::create_directories(opt.out_dir, ec);
   if (ec || access(opt.out_dir.c_str(), W_OK) != 0) {
@@ -116,6 +122,8 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
     report.faults.emplace_back(FaultKindName(f.kind), Seconds(f.start) + "-" + Seconds(f.end) + " s" +
                                                           (f.link.empty() ? "" : " on " + f.link));
   }
+
+  FaultRecorder fault_recorder(scenario.faults);
 
   // ---- devices, links and the estimator under test ----
   DeviceSet set = BuildDevices(scenario, seed, dir);
@@ -142,6 +150,7 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
   std::optional<EstimatorProcess> estimator;
   if (!opt.emulate_only) {
     estimator.emplace(command, dir + "/estimator.stderr");
+    report.estimator_pid = estimator->pid();
     // time for the program to open its devices (gpsd flushes a tty's input when it opens it)
     if (scenario.estimator.startup_s > 0) usleep(static_cast<useconds_t>(scenario.estimator.startup_s * 1e6));
   }
@@ -154,16 +163,35 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
   EstimateCollector collector(MakeEstimateReader(scenario.estimator.output, scenario.start_unix_ns),
                               estimator ? &*estimator : nullptr, nav_pty.get(),
                               dir + (nav_pty ? "/estimate.nmea" : "/estimate.jsonl"));
+  EstimatorHealth health;
+  collector.set_line_observer([&](const std::string& line) { health.AddLine(line); });
   const auto estimator_running = [&] { return estimator && estimator->Running(); };
+  // why the run must stop early besides the estimator's own failure: a signal, the run folder
+  std::optional<std::string> stop_reason;
+  Time t_now{};
+  const auto interrupted = [&] {
+    if (stop_reason) return true;
+    if (const int sig = InterruptGuard::received()) {
+      stop_reason = std::string("interrupted by ") + (sig == SIGINT ? "SIGINT" : sig == SIGTERM ? "SIGTERM" : "SIGHUP") +
+                    " at t = " + Seconds(t_now) + " s of " + Secs(scenario.duration_s) + " s";
+    } else if (const auto file = FirstWriteFailure()) {
+      stop_reason = "cannot write " + *file + " (disk full, file size limit or folder removed) at t = " +
+                    Seconds(t_now) + " s";
+    }
+    return stop_reason.has_value();
+  };
   const auto silent_for_ns = [&] { return Now() - std::max(collector.last_output_wall_ns(), estimator_start); };
 
   // ---- the run ----
-  ByteFaultInjector byte_faults(scenario.faults, seed);
+  ByteFaultInjector byte_faults(scenario.faults, seed, &fault_recorder);
   ProgressLine progress(opt.progress);
   Scheduler scheduler(scenario, set, byte_faults, pacer ? &*pacer : nullptr, fixes_csv);
+  scheduler.set_recorder(&fault_recorder);
   std::optional<std::string> hang;
-  scheduler.Run([&](Time t) {
+  const auto run_step = [&](Time t) {
+    t_now = t;
     collector.Poll();
+    if (interrupted()) return false;
     progress.Update(ToSeconds(t), scenario.duration_s, collector.records().size());
     if (opt.emulate_only) return true;
     if (!estimator_running()) return false;
@@ -180,6 +208,7 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
     while (pending > kBackpressureBytes && estimator_running()) {
       usleep(1000);
       collector.Poll();
+      if (interrupted()) return false;
       const std::size_t now_pending = PendingToHost(set, host_links);
       if (now_pending < pending) last_progress = Now();
       pending = now_pending;
@@ -188,16 +217,34 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
                Secs(silence_s) + " s)";
         return false;
       }
+      if (Now() - last_progress > silence_ns) {
+        // still talking but no longer reading: the port was closed by the peer (or is ignored)
+        std::string links;
+        for (const auto& ports : set.endpoints) {
+          for (const auto& ep : ports) {
+            if (ep->PendingToHost() > 0 && host_links.count(ep->link_name())) links += " " + ep->link_name();
+          }
+        }
+        stop_reason = "the estimator stopped reading" + links + " at t = " + Seconds(t) + " s (" +
+                      std::to_string(pending) + " bytes unread for " + Secs(silence_s) +
+                      " s): the port was closed by the peer or is no longer read";
+        return false;
+      }
     }
     return estimator_running();
-  });
-  if (!hang) scheduler.Flush();
+  };
+  try {
+    scheduler.Run(run_step);
+  } catch (const std::exception& e) {
+    stop_reason = std::string("the run failed at t = ") + Seconds(t_now) + " s: " + e.what();
+  }
+  if (!hang && !interrupted()) scheduler.Flush();
 
   // ---- drain: the host reads every byte and its output goes quiet ----
-  if (!hang && estimator_running()) {
+  if (!hang && !stop_reason && estimator_running()) {
     std::int64_t last_progress = Now();
     std::size_t pending = PendingToHost(set, host_links);
-    while (estimator_running() && pending > 0 && Now() - last_progress < silence_ns) {
+    while (estimator_running() && pending > 0 && Now() - last_progress < silence_ns && !interrupted()) {
       usleep(5000);
       collector.Poll();
       const std::size_t p = PendingToHost(set, host_links);
@@ -205,7 +252,7 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
       pending = p;
     }
     const std::int64_t drain_start = Now();
-    while (estimator_running()) {
+    while (estimator_running() && !interrupted()) {
       collector.Poll();
       const std::int64_t quiet_ns = Now() - std::max(collector.last_output_wall_ns(), drain_start);
       if (collector.last_output_wall_ns() > 0 && quiet_ns > static_cast<std::int64_t>(kDrainQuietS * 1e9)) break;
@@ -217,7 +264,7 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
     }
   }
   progress.Finish();
-  const bool crashed = !opt.emulate_only && !hang && !estimator_running();
+  const bool crashed = !opt.emulate_only && !hang && !stop_reason && !estimator_running();
   const ExitInfo exit_info = estimator ? estimator->Stop() : ExitInfo{};
   collector.Poll();
   report.estimator_exit = estimator ? exit_info.Describe() : "none (emulator only)";
@@ -230,6 +277,13 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
     report.problems.push_back("the estimator hung: " + *hang + "; it was stopped (" + exit_info.Describe() + ")");
     report.complete = false;
   }
+  if (stop_reason) {
+    report.problems.push_back("the run stopped early: " + *stop_reason + "; the estimator was stopped (" +
+                              exit_info.Describe() + ")");
+    report.complete = false;
+    std::fprintf(stderr, "hil: %s; the estimator was stopped, the report is marked incomplete\n", stop_reason->c_str());
+  }
+  if (!report.complete && !report.problems.empty()) report.incomplete_reason = report.problems.front();
 
   // ---- evaluation ----
   const std::vector<EstimateRecord>& estimates = collector.records();
@@ -267,13 +321,28 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
     report.latency = LatencyStats{Percentile(series.latency_ms, 50), Percentile(series.latency_ms, 99),
                                   Percentile(series.latency_ms, 100)};
   }
-  report.criteria = EvaluateCriteria(scenario.criteria, RunMetricTable(report), AccuracyTable(report.baselines));
   for (const auto& ports : set.endpoints) {
     for (const auto& ep : ports) {
       report.gnss_bytes += ep->uart().bytes_sent();
       report.gnss_messages_dropped += ep->uart().messages_dropped();
     }
   }
+  // MCU resets happen in the MCU model: the k-th scripted reset took place when the model counted k
+  std::uint64_t mcu_resets = 0;
+  for (const auto& dev : set.devices) {
+    if (const auto* m = dynamic_cast<const mcu::McuDevice*>(dev.get())) mcu_resets += m->stats().resets;
+  }
+  for (std::size_t i = 0; i < scenario.faults.faults.size(); ++i) {
+    const Fault& f = scenario.faults.faults[i];
+    if (f.kind == FaultKind::kMcuReset && mcu_resets > 0) {
+      fault_recorder.Note(i, f.start);
+      --mcu_resets;
+    }
+  }
+  report.fault_injections = fault_recorder.records();
+  ComputeRecoveryTimes(report.fault_injections, est_err, scenario.reconverged_error_m);
+  report.estimator_health = health;
+  report.criteria = EvaluateCriteria(scenario.criteria, RunMetricTable(report), AccuracyTable(report.baselines));
   report.fault_messages_dropped = byte_faults.messages_dropped();
   report.fault_bytes_corrupted = byte_faults.bytes_corrupted();
   report.wall_time_s = SecondsSince(wall_start);
@@ -282,18 +351,27 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
                  collector.unparsed_lines(), nav_pty ? "estimate.nmea" : "estimate.jsonl");
   }
 
-  // ---- the run folder ----
-  WriteErrorsCsv(est_err, dir + "/estimate.csv");
-  WriteErrorsCsv(fix_err, dir + "/gnss_fixes_errors.csv");
-  WriteTruthCsv(scenario, dir + "/truth.csv", series.truth_t_s, series.truth_en_m);
-  WriteScheduleErrors(set, dir + "/schedule_error.json");
-  WriteReportJson(report, dir + "/report.json");
-  WriteJunitXml(report, dir + "/junit.xml");
+  // ---- the run folder: report.json last, and written even when another file cannot be ----
+  const auto attempt = [&](const std::function<void()>& write) {
+    try {
+      write();
+    } catch (const std::exception& e) {
+      report.problems.push_back(std::string("the run folder is incomplete: ") + e.what());
+      report.complete = false;
+      if (report.incomplete_reason.empty()) report.incomplete_reason = report.problems.back();
+    }
+  };
+  attempt([&] { WriteErrorsCsv(est_err, dir + "/estimate.csv"); });
+  attempt([&] { WriteErrorsCsv(fix_err, dir + "/gnss_fixes_errors.csv"); });
+  attempt([&] { WriteTruthCsv(scenario, dir + "/truth.csv", series.truth_t_s, series.truth_en_m); });
+  attempt([&] { WriteScheduleErrors(set, dir + "/schedule_error.json"); });
   if (opt.html) {
     series.estimate_errors = std::move(est_err);
     series.fix_errors = std::move(fix_err);
-    WriteReportHtml(report, series, dir);
+    attempt([&] { WriteReportHtml(report, series, dir); });
   }
+  attempt([&] { WriteJunitXml(report, dir + "/junit.xml"); });
+  WriteReportJson(report, dir + "/report.json");
   return report;
 }
 

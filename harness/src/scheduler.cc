@@ -18,11 +18,19 @@ Scheduler::Scheduler(const Scenario& scenario, DeviceSet& devices, ByteFaultInje
     : scenario_(scenario), set_(devices), faults_(faults), pacer_(pacer), fixes_csv_(fixes_csv) {}
 
 void Scheduler::Dispatch(std::size_t d, DeviceOutput& out) {
+  std::vector<SerialMessage> carried;
   for (SerialMessage& m : out.serial) {
     SerialEndpoint& ep = *set_.endpoints[d].at(static_cast<std::size_t>(m.port));
-    if (faults_.Apply(m, ep.link_name())) ep.Queue(m);
+    carried.clear();
+    faults_.Process(m, ep.link_name(), ep.uart().baud(), carried);
+    for (const SerialMessage& c : carried) {
+      if (ep.Queue(c) || !recorder_) continue;
+      // the receiver's transmit buffer overflowed: count it against an active output overload
+      if (const auto i = recorder_->Active(FaultKind::kGnssOverload, c.t_ready)) recorder_->Note(*i, c.t_ready);
+    }
   }
   if (set_.can) {
+    faults_.ProcessCan(out.can);
     for (const CanFrame& f : out.can) set_.can->Queue(f);
   }
   out.clear();
@@ -54,7 +62,16 @@ void Scheduler::RecordFixes(Time t) {
   if (set_.fix_sources.empty()) return;
   {
     const gnss::GnssFix& fix = *set_.fix_sources.front()();
-    if (fix.t_validity != t || !fix.valid()) return;
+    if (fix.t_validity != t) return;
+    if (recorder_) {
+      const auto outage = recorder_->Active(FaultKind::kGnssOutage, t);
+      if (outage && !fix.valid()) recorder_->Note(*outage, t);
+      const auto gap = recorder_->Active(FaultKind::kGnssDataGap, t);
+      if (gap) recorder_->Note(*gap, t);  // the receiver computed this epoch but sent nothing
+      const auto glitch = recorder_->Active(FaultKind::kGnssGlitch, t);
+      if (glitch && fix.valid()) recorder_->Note(*glitch, t);
+    }
+    if (!fix.valid()) return;
     EstimateRecord r;
     r.t_validity = fix.t_validity;
     r.lat_deg = fix.lat_deg;

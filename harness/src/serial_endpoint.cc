@@ -48,7 +48,7 @@ SerialEndpoint::~SerialEndpoint() {
   }
 }
 
-void SerialEndpoint::Queue(const SerialMessage& msg) {
+bool SerialEndpoint::Queue(const SerialMessage& msg) {
   auto chunk = uart_.Submit(msg.t_ready, msg.bytes);
   if (!chunk) {
     CaptureRecord r;
@@ -57,9 +57,10 @@ void SerialEndpoint::Queue(const SerialMessage& msg) {
     r.name = msg.name;
     r.bytes = msg.bytes;
     capture_.Write(r);
-    return;
+    return false;
   }
   pending_.emplace_back(std::move(*chunk), msg.name.empty() ? "-" : msg.name);
+  return true;
 }
 
 std::optional<Time> SerialEndpoint::next_byte_time() const {

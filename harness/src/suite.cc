@@ -171,6 +171,10 @@ SuiteResult RunSuite(const SuiteOptions& opt) {
       r["seed"] = c.report.value("seed", 0);
       r["metrics"] = c.report.value("metrics", nlohmann::json::object());
       r["criteria"] = c.report.value("criteria", nlohmann::json::array());
+      r["complete"] = c.report.value("complete", true);
+      // the fault campaign: what each fault injected and how navd saw it (fault_report.h)
+      if (c.report.contains("fault_injections")) r["fault_injections"] = c.report["fault_injections"];
+      if (c.report.contains("estimator_health")) r["estimator_health"] = c.report["estimator_health"];
     } else {
       r["error"] = Tail(c.log);
     }

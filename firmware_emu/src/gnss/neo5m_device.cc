@@ -97,6 +97,7 @@ void Neo5mDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
   cond.sbas_enabled = cfg.sbas_enabled();
   cond.max_sbas = cfg.sbas[2];
   ErrorInputs in;
+  overload_ = false;
   bool data_gap = false;
   for (const GnssFault& f : config_.faults) {
     if (t_s < f.start_s || t_s >= f.end_s) continue;
@@ -105,6 +106,7 @@ void Neo5mDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
       case GnssFault::Kind::kObstruction: cond.blocked_below_deg = std::max(cond.blocked_below_deg, f.elevation_deg); break;
       case GnssFault::Kind::kStep: in.offset_N_m += f.offset_N_m; break;
       case GnssFault::Kind::kMultipath: in.multipath_sigma_m = std::hypot(in.multipath_sigma_m, f.sigma_m); break;
+      case GnssFault::Kind::kOverload: overload_ = true; break;
       case GnssFault::Kind::kDataGap: data_gap = true; break;
     }
   }
@@ -176,7 +178,9 @@ void Neo5mDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
 void Neo5mDevice::EmitEpoch(Time t_ready, DeviceOutput& out) {
   const ubx::ReceiverSettings& cfg = session_.current();
   const NavEpoch& e = last_epoch_;
+  if (overload_) ++overloaded_epochs_;
   const auto due = [&](std::uint8_t cls, std::uint8_t id) {
+    if (overload_) return true;  // everything, every epoch
     const int r = cfg.Rate(cls, id);
     return r > 0 && (epoch_count_ - 1) % static_cast<std::uint64_t>(r) == 0;
   };

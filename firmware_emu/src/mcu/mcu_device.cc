@@ -70,7 +70,10 @@ McuDevice::McuDevice(const McuConfig& config, std::uint64_t seed)
   accel_.SetVibration(config_.vibration, true);
   gyro_.SetVibration(config_.vibration, false);
   for (const McuFault& f : config_.faults)
-    if (f.kind == FaultKind::kReset) resets_.push_back(TimeFromSeconds(f.start_s));
+    if (f.kind == FaultKind::kReset) {
+      resets_.emplace_back(TimeFromSeconds(f.start_s),
+                           DurationFromSeconds(f.duration_s > 0 ? f.duration_s : config_.reboot_s));
+    }
   std::sort(resets_.begin(), resets_.end());
   jump_applied_.assign(config_.faults.size(), false);
   // first whole GPS second at or after t = 0
@@ -94,7 +97,7 @@ Time McuDevice::next_event_time() const {
   if (up_) t = std::min(t, next_imu_);
   if (config_.time_pulse) t = std::min(t, next_pps_);
   if (pending_boot_) t = std::min(t, *pending_boot_);
-  if (!resets_.empty()) t = std::min(t, resets_.front());
+  if (!resets_.empty()) t = std::min(t, resets_.front().first);
   return t;
 }
 
@@ -118,10 +121,10 @@ void McuDevice::ScheduleImu() {
 
 void McuDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
   const Time t = truth.t;
-  if (!resets_.empty() && resets_.front() == t) {
+  if (!resets_.empty() && resets_.front().first == t) {
+    pending_boot_ = t + resets_.front().second;
     resets_.erase(resets_.begin());
     up_ = false;
-    pending_boot_ = t + DurationFromSeconds(config_.reboot_s);
     reset_cause_ = kResetCauseExternal;
     ++reset_count_;
     ++stats_.resets;

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -173,6 +175,37 @@ TEST(Neo5mDeviceTest, StepGlitchMovesThePosition) {
   h.RunUntil(12);
   const double dlat_m = (h.fixes[11].lat_deg - h.fixes[9].lat_deg) * 111000.0;
   EXPECT_NEAR(dlat_m, 50.0, 3.0);
+}
+
+TEST(Neo5mDeviceTest, OverloadOutputsMoreThanTheBaudCarriesAndOnlyWhileActive) {
+  Neo5mConfig c = Config();
+  c.faults.push_back({GnssFault::Kind::kOverload, 10, 20});
+  Harness h(c);
+  const auto per_epoch = [&](double from_s, double to_s) {
+    std::size_t bytes = 0, epochs = 0;
+    std::set<std::string> names;
+    for (const auto& m : h.RunUntil(to_s)) {
+      const double t = ToSeconds(m.t_ready);
+      if (t < from_s) continue;
+      bytes += m.bytes.size();
+      names.insert(m.name);
+    }
+    epochs = static_cast<std::size_t>(to_s - from_s);
+    return std::make_pair(bytes / epochs, names);
+  };
+  auto [normal, normal_names] = per_epoch(0, 9);
+  normal_names.erase("NMEA-TXT");  // the power-up banner
+  const auto [overload, overload_names] = per_epoch(10, 19);
+  const auto [after, after_names] = per_epoch(21, 29);
+  // 9600 baud 8N1 carries 960 bytes per second
+  EXPECT_LT(normal, 960u);
+  EXPECT_GT(overload, 960u) << "the overloaded output exceeds the line";
+  EXPECT_EQ(overload_names.count("UBX-NAV-SOL"), 1u);
+  EXPECT_EQ(overload_names.count("NMEA-ZDA"), 1u);
+  EXPECT_NEAR(static_cast<double>(after), static_cast<double>(normal), 0.1 * static_cast<double>(normal))
+      << "back to the configured output after the fault";
+  EXPECT_EQ(after_names, normal_names);
+  EXPECT_EQ(h.dev.overloaded_epochs(), 10u);
 }
 
 TEST(Neo5mDeviceTest, CfgMsgEnablesUbxNavMessagesAfterTheAck) {

@@ -139,6 +139,27 @@ TEST(McuDeviceTest, ResetRestartsTickAndSequence) {
   EXPECT_EQ(dev.stats().resets, 1u);
 }
 
+TEST(McuDeviceTest, AResetWithADurationStaysSilentThatLong) {
+  // the scenario's global mcu_reset {start_s, end_s}: a brown-out of end - start seconds
+  McuConfig c = BaseConfig();
+  c.faults.push_back({FaultKind::kReset, 2.05, 1.5, 1, 1, "all"});
+  McuDevice dev(c, 4);
+  const auto frames = Frames(test::RunDevice(dev, TimeFromSeconds(5.0)));
+  std::size_t boot = 0;
+  double last_before = 0;
+  for (std::size_t i = 1; i < frames.size(); ++i) {
+    const double t = ToSeconds(frames[i].t_ready);
+    EXPECT_FALSE(t > 2.0506 && t < 3.55) << "frame while the MCU is down at " << t;
+    if (t < 2.06) last_before = t;
+    if (frames[i].frame.sequence == 0 && boot == 0) boot = i;
+  }
+  ASSERT_GT(boot, 0u);
+  EXPECT_NEAR(ToSeconds(frames[boot].t_ready), 3.55, 0.001) << "boot STATUS right after the silent gap";
+  EXPECT_GT(last_before, 1.9);
+  EXPECT_LT(frames[boot].frame.tick, 10u);
+  EXPECT_EQ(dev.stats().resets, 1u);
+}
+
 TEST(McuDeviceTest, DroppedFramesLeaveASequenceGap) {
   McuConfig c = BaseConfig();
   c.faults.push_back({FaultKind::kDropFrames, 1.0, 0.5, 1.0, 1, "all"});

@@ -79,10 +79,12 @@ class CaptureWriter {
  public:
   /// @throws std::runtime_error naming the path.
   CaptureWriter(const std::string& path, const CaptureHeader& header);
+  /// Writes one record; a failed write (disk full, file size limit) is noted (run_guard.h).
   void Write(const CaptureRecord& r);
 
  private:
   std::ofstream out_;
+  std::string path_;
 };
 
 /// Reads a capture (v1 or v2). @throws std::runtime_error naming the path when unreadable.

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -30,6 +31,8 @@ class EstimateCollector {
   const std::vector<EstimateRecord>& records() const { return records_; }
   std::size_t lines() const { return lines_; }
   std::size_t unparsed_lines() const { return unparsed_; }
+  /// Called with every raw line as it arrives (e.g. to read navd's health object).
+  void set_line_observer(std::function<void(const std::string&)> f) { observer_ = std::move(f); }
 
  private:
   void Consume(const std::string& line, std::int64_t wall_ns);
@@ -41,6 +44,8 @@ class EstimateCollector {
   std::int64_t pty_last_ns_ = 0;
   std::vector<EstimateRecord> records_;
   std::size_t lines_ = 0, unparsed_ = 0;
+  std::string raw_path_;
+  std::function<void(const std::string&)> observer_;
 };
 
 }  // namespace hil::harness

@@ -45,12 +45,14 @@ class EstimatorProcess {
   std::vector<OutputLine> TakeLines();
   /// CLOCK_MONOTONIC time of the last output line (0 if none yet).
   std::int64_t last_output_wall_ns() const { return last_output_wall_ns_.load(); }
-  /// Stops the process: SIGTERM, then SIGKILL after `grace_s`. Idempotent.
+  /// Stops the process and every process of its group (also when the estimator itself has already
+  /// ended): SIGTERM, then SIGKILL after `grace_s`. Idempotent.
   ExitInfo Stop(double grace_s = 2.0);
   int pid() const { return pid_; }
 
  private:
   void ReadLoop();
+  bool GroupAlive() const;
   void Reap(int status);
   int pid_ = -1;
   int stdout_fd_ = -1;

@@ -4,15 +4,27 @@
 ///
 ///   faults:
 ///     - {kind: gnss_outage, start_s: 40, end_s: 55}
+///     - {kind: gnss_data_gap, start_s: 60, end_s: 65}
 ///     - {kind: gnss_glitch, start_s: 70, end_s: 72, north_m: 8, east_m: -3}
 ///     - {kind: byte_corruption, start_s: 10, end_s: 20, probability: 0.001, link: ttyGPS}
 ///     - {kind: frame_drop, start_s: 30, end_s: 35, probability: 0.5}
 ///     - {kind: mcu_reset, start_s: 90}
 ///     - {kind: baud_mismatch, start_s: 100, end_s: 110, baud: 4800, link: ttyGPS}
+///     - {kind: byte_corruption, start_s: 10, end_s: 20, bit_error_rate: 1e-4, link: ttyGPS}
+///     - {kind: frame_duplicate, start_s: 30, end_s: 35, probability: 0.2, link: ttyIMU}
+///     - {kind: frame_truncate, start_s: 30, end_s: 35, probability: 0.2, link: ttyGPS}
+///     - {kind: can_reorder, start_s: 30, end_s: 35, probability: 0.5}
+///     - {kind: gnss_overload, start_s: 40, end_s: 60}
 ///
-/// Who applies what: the GNSS device model applies gnss_outage and gnss_glitch, the MCU model
-/// mcu_reset, the link layer baud_mismatch; the scheduler applies byte_corruption and frame_drop to
-/// whole serial messages (ApplyByteFaults in byte_faults.h). The evaluator reads the outages.
+/// mcu_reset takes an optional end_s: the MCU is silent from start_s to end_s (its reboot time;
+/// without end_s the mcu section's reboot time). byte_corruption takes either `probability` (per
+/// byte: one random bit flipped) or `bit_error_rate` (every bit flipped independently).
+/// Who applies what: the GNSS device model applies gnss_outage, gnss_data_gap, gnss_glitch and gnss_overload (its
+/// UART transmit buffer then overflows and drops whole messages), the MCU model mcu_reset; the
+/// scheduler applies byte_corruption, frame_drop, frame_duplicate, frame_truncate and baud_mismatch
+/// (what the host's UART receives) to whole serial messages and can_reorder to CAN frames
+/// (ByteFaultInjector in byte_faults.h). Every injection is counted per fault (fault_record.h).
+/// The evaluator reads the outages and each fault's recovery time.
 
 #include <map>
 #include <optional>
@@ -25,7 +37,19 @@ namespace hil::harness {
 
 class YamlReader;
 
-enum class FaultKind { kGnssOutage, kGnssDataGap, kGnssGlitch, kByteCorruption, kFrameDrop, kMcuReset, kBaudMismatch };
+enum class FaultKind {
+  kGnssOutage,
+  kGnssDataGap,
+  kGnssGlitch,
+  kByteCorruption,
+  kFrameDrop,
+  kMcuReset,
+  kBaudMismatch,
+  kFrameDuplicate,  ///< a serial message sent twice (with `probability`)
+  kFrameTruncate,   ///< a serial message cut short at a random byte (with `probability`)
+  kCanReorder,      ///< two consecutive CAN frames of one device swap places (with `probability`)
+  kGnssOverload,    ///< the receiver outputs every message it knows: more bytes than its baud carries
+};
 
 /// The scenario-file name of a kind ("gnss_outage", …).
 const char* FaultKindName(FaultKind kind);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "hil/harness/evaluator.h"
+#include "hil/harness/fault_report.h"
 #include "hil/harness/outage_metrics.h"
 #include "hil/harness/scenario.h"
 
@@ -42,10 +43,14 @@ struct RunReport {
   AccuracyMetrics baselines;
   std::vector<CriterionResult> criteria;
   std::string estimator_command, estimator_output, estimator_exit;
+  int estimator_pid = 0;  ///< process (and process group) id of the estimator, 0 when none
   double wall_time_s = 0, sim_time_s = 0, speed = 1.0;
   std::uint64_t gnss_bytes = 0, gnss_messages_dropped = 0;
   std::uint64_t fault_messages_dropped = 0, fault_bytes_corrupted = 0;
   std::vector<std::pair<std::string, std::string>> faults;  ///< {kind, "start–end s"} for the report
+  std::vector<FaultInjection> fault_injections;  ///< per fault: what was injected, recovery (fault_report.h)
+  EstimatorHealth estimator_health;              ///< navd's detections (fault_report.h)
+  std::string incomplete_reason;  ///< why the run stopped early (signal, output folder, link), if it did
   bool pass() const;
 };
 

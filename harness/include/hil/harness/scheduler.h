@@ -14,6 +14,7 @@
 #include "hil/harness/byte_faults.h"
 #include "hil/harness/device_set.h"
 #include "hil/harness/evaluator.h"
+#include "hil/harness/fault_record.h"
 #include "hil/harness/scenario.h"
 
 namespace hil::harness {
@@ -23,6 +24,10 @@ class Scheduler {
   /// `pacer` null: virtual mode. `fixes_csv` receives one line per raw GNSS fix.
   Scheduler(const Scenario& scenario, DeviceSet& devices, ByteFaultInjector& faults, const link::RealtimePacer* pacer,
             std::ostream& fixes_csv);
+
+  /// Where the faults of the timeline applied here are counted (GNSS epochs in an outage or a
+  /// glitch, receiver messages lost to its transmit buffer in an output overload).
+  void set_recorder(FaultRecorder* recorder) { recorder_ = recorder; }
 
   /// Runs from t = 0 to the scenario's end. After every event, `keep_going(t)` decides whether
   /// to continue (false stops the run early, e.g. when the estimator died).
@@ -48,6 +53,7 @@ class Scheduler {
   ByteFaultInjector& faults_;
   const link::RealtimePacer* pacer_;
   std::ostream& fixes_csv_;
+  FaultRecorder* recorder_ = nullptr;
   std::vector<EstimateRecord> fixes_;
   std::vector<CanFrame> bus_frames_;
 };

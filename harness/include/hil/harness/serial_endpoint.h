@@ -36,8 +36,9 @@ class SerialEndpoint {
   SerialEndpoint& operator=(const SerialEndpoint&) = delete;
 
   /// Queues one message in the UART (or records its drop). Its bytes wait in this endpoint until
-  /// written by WriteAll() (virtual mode) or WriteNextByte() (real time).
-  void Queue(const SerialMessage& msg);
+  /// written by WriteAll() (virtual mode) or WriteNextByte() (real time). Returns false when the
+  /// transmit buffer had no room (the message was dropped).
+  bool Queue(const SerialMessage& msg);
   /// Emulated time of the next byte waiting to be written, if any.
   std::optional<Time> next_byte_time() const;
   /// Writes the next waiting byte at its UART wall time and records the schedule error.

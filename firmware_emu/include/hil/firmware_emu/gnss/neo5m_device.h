@@ -19,7 +19,10 @@
 /// fix), `step` (position offset `offset_m` ENU while active), `multipath` (extra correlated
 /// error of `sigma_m` per axis while active), `data_gap` (the receiver keeps tracking and its fix
 /// keeps its quality, but none of its periodic output reaches the link: the GNSS data removed from a
-/// recorded run, as paper 004 injected its outages).
+/// recorded run, as paper 004 injected its outages), `overload` (every NMEA sentence and UBX NAV
+/// message the receiver knows is output each epoch, as after a careless CFG-MSG: at 9600 baud more
+/// bytes than the line carries, so the transmit buffer — the UART queue of the port — overflows and
+/// drops whole messages; `overloaded_epochs()` counts the epochs).
 
 #include <cstdint>
 #include <optional>
@@ -41,7 +44,7 @@ namespace hil::gnss {
 
 /// One scripted receiver fault, active for start_s ≤ t < end_s (scenario seconds).
 struct GnssFault {
-  enum class Kind { kOutage, kObstruction, kStep, kMultipath, kDataGap } kind = Kind::kOutage;
+  enum class Kind { kOutage, kObstruction, kStep, kMultipath, kDataGap, kOverload } kind = Kind::kOutage;
   double start_s = 0, end_s = 0;
   double elevation_deg = 30.0;                             ///< obstruction
   Eigen::Vector3d offset_N_m = Eigen::Vector3d::Zero();    ///< step (ENU)
@@ -80,6 +83,8 @@ class Neo5mDevice final : public Device {
   const NavEpoch& last_epoch() const { return last_epoch_; }
   const ubx::ReceiverSettings& settings() const { return session_.current(); }
   const ReceiverProfile& profile() const { return profile_; }
+  /// Epochs output under an `overload` fault.
+  std::uint64_t overloaded_epochs() const { return overloaded_epochs_; }
 
  private:
   Duration Period() const;
@@ -108,6 +113,8 @@ class Neo5mDevice final : public Device {
   bool had_fix_last_ = false;
   double clk_bias_ns_ = 0, clk_drift_nsps_ = 0;
   NavEpoch last_epoch_;
+  bool overload_ = false;  // an overload fault is active at this epoch
+  std::uint64_t overloaded_epochs_ = 0;
 };
 
 }  // namespace hil::gnss

@@ -26,7 +26,8 @@ enum class FaultKind {
   kSequenceJump,   ///< at `start`, the sequence counter advances by `amount` extra
   kCorruptBytes,   ///< with `probability` per frame, one byte is flipped (the CRC then fails)
   kStuckSensor,    ///< `sensor` repeats its last counts during [start, start + duration)
-  kReset,          ///< at `start` the MCU resets: silent for `reboot_s`, then tick and sequence restart
+  kReset,          ///< at `start` the MCU resets: silent for `duration_s` (when > 0; else the config's
+                   ///< `reboot_s`), then tick and sequence restart
 };
 
 /// One entry of the firmware fault timeline.

@@ -15,6 +15,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -74,7 +75,7 @@ class McuDevice final : public Device {
   std::optional<Time> pending_boot_;
   std::uint64_t imu_index_ = 0;
   Time next_imu_{}, next_mag_{}, next_pps_{};
-  std::vector<Time> resets_;          ///< pending reset times (ascending)
+  std::vector<std::pair<Time, Duration>> resets_;  ///< pending resets: time, silent gap (ascending)
   std::vector<bool> jump_applied_;
   std::uint16_t sequence_ = 0;
   std::uint16_t reset_count_ = 0;

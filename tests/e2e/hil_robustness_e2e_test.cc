@@ -1,0 +1,213 @@
+// The harness itself under trouble, through the real hil binary: Ctrl-C (SIGINT) and SIGTERM to hil,
+// the estimator killed mid-run, the port closed by the peer, an output folder that fills up
+// (RLIMIT_FSIZE: the tests run as root, so permissions cannot make a folder unwritable) and one that
+// cannot be created. Each must give a clear message, stop every process of the estimator's process
+// group (no orphans), and leave report.json marked "complete": false with what was captured so far.
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+
+#include <cerrno>
+#include <chrono>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "cli_runner.h"
+
+namespace hil::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string Hil() { return BinDir() + "/hil"; }
+
+// A GNSS-only navd scenario on the seed 000 origin; `extra` adds keys.
+std::string Scenario(double duration_s, const std::string& extra = "") {
+  return "name: robust\nduration_s: " + std::to_string(duration_s) +
+         "\nseed: 5\norigin: {lat_deg: 35.4796096, lon_deg: 50.5979765, height_m: 1312.0}\n"
+         "path: {type: line, heading_deg: 30.0, speed_kmh: 1.6}\n"
+         "estimator: {navd_mode: gnss_only, silence_timeout_s: 3}\n" +
+         extra;
+}
+
+struct Child {
+  pid_t pid = -1;
+  int status = 0;
+};
+
+// Starts hil with `args` (stdout+stderr into `log`), optionally with a file size limit.
+Child StartHil(const std::vector<std::string>& args, const std::string& log, rlim_t fsize_limit = RLIM_INFINITY) {
+  Child c;
+  c.pid = fork();
+  if (c.pid == 0) {
+    const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    dup2(fd, STDOUT_FILENO);
+    dup2(fd, STDERR_FILENO);
+    if (fsize_limit != RLIM_INFINITY) {
+      rlimit r{fsize_limit, fsize_limit};
+      setrlimit(RLIMIT_FSIZE, &r);
+    }
+    std::vector<std::string> a{Hil()};
+    a.insert(a.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for (auto& s : a) argv.push_back(s.data());
+    argv.push_back(nullptr);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  return c;
+}
+
+// Waits for the child up to `timeout_s`; kills it and fails when it does not end.
+int WaitExit(Child& c, double timeout_s) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+  while (std::chrono::steady_clock::now() < deadline) {
+    const pid_t r = waitpid(c.pid, &c.status, WNOHANG);
+    if (r == c.pid) return WIFEXITED(c.status) ? WEXITSTATUS(c.status) : 128 + WTERMSIG(c.status);
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  kill(c.pid, SIGKILL);
+  waitpid(c.pid, &c.status, 0);
+  ADD_FAILURE() << "hil did not end within " << timeout_s << " s";
+  return -1;
+}
+
+// Waits until `path` exists (e.g. the estimator's pid file).
+bool WaitForFile(const std::string& path, double timeout_s) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+  while (std::chrono::steady_clock::now() < deadline) {
+    if (fs::exists(path) && fs::file_size(path) > 0) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  return false;
+}
+
+// No process is left in the estimator's process group (its id is the estimator's pid).
+// (A process killed at the very end may stay a zombie for a moment until its new parent reaps it.)
+void ExpectNoOrphans(const nlohmann::json& report) {
+  const int pgid = report["estimator"]["pid"].get<int>();
+  ASSERT_GT(pgid, 0);
+  bool gone = false;
+  for (int i = 0; i < 40 && !gone; ++i) {
+    gone = kill(-pgid, 0) == -1 && errno == ESRCH;
+    if (!gone) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  EXPECT_TRUE(gone) << "processes of the estimator's group " << pgid << " are still running";
+}
+
+nlohmann::json Report(const std::string& run_dir) {
+  const std::string text = ReadFile(run_dir + "/report.json");
+  EXPECT_FALSE(text.empty()) << "no report.json in " << run_dir;
+  return text.empty() ? nlohmann::json::object() : nlohmann::json::parse(text);
+}
+
+// An estimator that writes its pid, starts a background helper in its process group (which must
+// not survive the run) and runs navd.
+std::string EstimatorWithHelper() {
+  return "sh -c 'echo $$ > {run_dir}/est.pid; sleep 600 & exec {navd} --config {run_dir}/navd.conf'";
+}
+
+TEST(HilRobustnessE2eTest, SigintAndSigtermStopTheRunAndLeaveAnIncompleteReport) {
+  for (const int sig : {SIGINT, SIGTERM}) {
+    TempDir dir("e2e_sig" + std::to_string(sig));
+    WriteFile(dir / "s.yaml", Scenario(120));
+    const std::string run = dir / "run";
+    Child c = StartHil({"run", dir / "s.yaml", "--out", run, "--mode", "scaled", "--speed", "10", "--estimator",
+                        EstimatorWithHelper()},
+                       dir / "log");
+    ASSERT_TRUE(WaitForFile(run + "/est.pid", 20));
+    std::this_thread::sleep_for(std::chrono::seconds(3));  // 30 s of the scenario
+    kill(c.pid, sig);
+    const int code = WaitExit(c, 30);
+    const std::string log = ReadFile(dir / "log");
+    EXPECT_EQ(code, 1) << log;
+    const std::string name = sig == SIGINT ? "SIGINT" : "SIGTERM";
+    EXPECT_NE(log.find("interrupted by " + name), std::string::npos) << log;
+    const nlohmann::json r = Report(run);
+    EXPECT_FALSE(r["complete"].get<bool>());
+    EXPECT_FALSE(r["pass"].get<bool>());
+    EXPECT_NE(r["incomplete_reason"].get<std::string>().find("interrupted by " + name), std::string::npos);
+    ExpectNoOrphans(r);
+    // everything captured so far is on disk: some seconds of receiver bytes and navd solutions
+    EXPECT_GT(fs::file_size(run + "/captures/ttyGPS.cap"), 2000u);
+    EXPECT_GT(r["metrics"]["samples"].get<int>(), 5);
+    EXPECT_FALSE(ReadFile(run + "/estimate.jsonl").empty());
+  }
+}
+
+TEST(HilRobustnessE2eTest, AnEstimatorKilledMidRunIsReportedAndItsGroupStopped) {
+  TempDir dir("e2e_kill");
+  WriteFile(dir / "s.yaml", Scenario(120));
+  const std::string run = dir / "run";
+  Child c = StartHil({"run", dir / "s.yaml", "--out", run, "--mode", "scaled", "--speed", "10", "--estimator",
+                      EstimatorWithHelper()},
+                     dir / "log");
+  ASSERT_TRUE(WaitForFile(run + "/est.pid", 20));
+  std::this_thread::sleep_for(std::chrono::seconds(2));
+  const int pid = std::stoi(ReadFile(run + "/est.pid"));
+  ASSERT_EQ(kill(pid, SIGKILL), 0);
+  const int code = WaitExit(c, 30);
+  EXPECT_EQ(code, 1) << ReadFile(dir / "log");
+  const nlohmann::json r = Report(run);
+  EXPECT_FALSE(r["complete"].get<bool>());
+  EXPECT_NE(r["incomplete_reason"].get<std::string>().find("ended before the scenario did"), std::string::npos)
+      << r["incomplete_reason"];
+  // navd runs under the shell of the command: the shell reports its child's SIGKILL as code 137
+  const std::string exit = r["estimator_exit"].get<std::string>();
+  EXPECT_TRUE(exit.find("signal 9") != std::string::npos || exit.find("code 137") != std::string::npos) << exit;
+  ExpectNoOrphans(r);
+  EXPECT_GT(r["metrics"]["samples"].get<int>(), 3);
+}
+
+TEST(HilRobustnessE2eTest, APortClosedByThePeerStopsTheRunInsteadOfStallingIt) {
+  TempDir dir("e2e_closed");
+  WriteFile(dir / "s.yaml", Scenario(600));
+  const std::string run = dir / "run";
+  // reads 3 kB of ttyGPS, closes it, and keeps talking (so it is neither silent nor dead)
+  const std::string est =
+      "sh -c 'echo $$ > {run_dir}/est.pid; head -c 3000 {ttyGPS} > /dev/null; "
+      "while true; do echo \"{}\"; sleep 0.1; done'";
+  Child c = StartHil({"run", dir / "s.yaml", "--out", run, "--estimator", est, "--silence-timeout", "2"}, dir / "log");
+  const int code = WaitExit(c, 60);
+  const std::string log = ReadFile(dir / "log");
+  EXPECT_EQ(code, 1) << log;
+  EXPECT_NE(log.find("stopped reading ttyGPS"), std::string::npos) << log;
+  EXPECT_NE(log.find("closed by the peer"), std::string::npos) << log;
+  const nlohmann::json r = Report(run);
+  EXPECT_FALSE(r["complete"].get<bool>());
+  ExpectNoOrphans(r);
+}
+
+TEST(HilRobustnessE2eTest, AFullOutputFolderStopsTheRunWithTheFileNamed) {
+  TempDir dir("e2e_full");
+  // with the IMU board the captures grow by several kB per second; 64 kB per file is reached early
+  WriteFile(dir / "s.yaml", Scenario(300, "mcu: {profile: razor-v13, link: ttyIMU}\n"));
+  const std::string run = dir / "run";
+  Child c = StartHil({"run", dir / "s.yaml", "--out", run, "--estimator", EstimatorWithHelper()}, dir / "log", 64 * 1024);
+  const int code = WaitExit(c, 60);
+  const std::string log = ReadFile(dir / "log");
+  EXPECT_EQ(code, 1) << log;
+  EXPECT_NE(log.find("cannot write " + run + "/captures/"), std::string::npos) << log;
+  const nlohmann::json r = Report(run);
+  EXPECT_FALSE(r["complete"].get<bool>());
+  EXPECT_NE(r["incomplete_reason"].get<std::string>().find("file size limit"), std::string::npos);
+  ExpectNoOrphans(r);
+  EXPECT_GT(fs::file_size(run + "/captures/ttyIMU.cap"), 60u * 1024u);
+}
+
+TEST(HilRobustnessE2eTest, AnOutputFolderThatCannotBeCreatedIsAClearError) {
+  TempDir dir("e2e_nodir");
+  WriteFile(dir / "s.yaml", Scenario(10));
+  WriteFile(dir / "file", "x");
+  const CommandResult r = RunCommand(Hil() + " run " + dir / "s.yaml" + " --out " + dir / "file/run");
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.out.find("cannot write the output folder " + dir / "file/run"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace hil::test

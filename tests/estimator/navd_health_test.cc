@@ -1,0 +1,106 @@
+// navd's fault detection (navd_health.h): MCU resets from a tick and sequence restart, IMU gaps,
+// duplicated frames, GNSS gaps and outages, and the health object appended to a JSON line.
+#include "hil/estimator/navd_health.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace hil::estimator {
+namespace {
+
+using drivers::McuFrame;
+
+McuFrame Imu(std::uint16_t seq, std::uint32_t tick) {
+  McuFrame f;
+  f.type = McuFrame::Type::kImu;
+  f.sequence = seq;
+  f.tick = tick;
+  return f;
+}
+
+GnssSample Fix(double t_s, int quality = 1) {
+  GnssSample g;
+  g.t = static_cast<GpsNs>(t_s * 1e9);
+  g.fix_quality = quality;
+  return g;
+}
+
+GpsNs Ns(double t_s) { return static_cast<GpsNs>(t_s * 1e9); }
+
+TEST(NavdHealthTest, DetectsAnMcuResetFromTheTickAndSequenceRestartingTogether) {
+  NavdHealth h;
+  std::uint16_t seq = 0;
+  std::uint32_t tick = 10000;
+  for (int k = 0; k < 500; ++k) h.OnMcuFrame(Imu(seq++, tick += 100000));
+  EXPECT_EQ(h.counters().mcu_resets, 0u);
+  EXPECT_EQ(h.counters().imu_gaps, 0u);
+  // reset: silent, then boot STATUS with sequence 0 at tick ~0, then samples
+  McuFrame status;
+  status.type = McuFrame::Type::kStatus;
+  status.sequence = 0;
+  status.tick = 5;
+  status.nominal_imu_period_ticks = 100000;
+  h.OnMcuFrame(status);
+  seq = 1;
+  tick = 10000;
+  for (int k = 0; k < 10; ++k) h.OnMcuFrame(Imu(seq++, tick += 100000));
+  EXPECT_EQ(h.counters().mcu_resets, 1u);
+  EXPECT_EQ(h.counters().imu_gaps, 0u) << "the restart is a reset, not a gap";
+  const std::string f = h.Field(Ns(100));
+  EXPECT_NE(f.find("\"mcu_reset\""), std::string::npos) << f;
+  EXPECT_NE(f.find("\"mcu_resets\":1"), std::string::npos) << f;
+  // a sequence wrap with the tick running on is no reset
+  NavdHealth w;
+  w.OnMcuFrame(Imu(65534, 300000000));
+  w.OnMcuFrame(Imu(65535, 300100000));
+  w.OnMcuFrame(Imu(0, 300200000));
+  EXPECT_EQ(w.counters().mcu_resets, 0u);
+}
+
+TEST(NavdHealthTest, CountsImuGapsAndRepeatedFrames) {
+  NavdHealth h;
+  h.OnMcuFrame(Imu(1, 100000));
+  h.OnMcuFrame(Imu(2, 200000));
+  h.OnMcuFrame(Imu(2, 200000));  // duplicate
+  h.OnMcuFrame(Imu(3, 300000));
+  h.OnMcuFrame(Imu(8, 800000));  // 5 periods later
+  EXPECT_EQ(h.counters().imu_repeated_frames, 1u);
+  EXPECT_EQ(h.counters().imu_gaps, 1u);
+}
+
+TEST(NavdHealthTest, FlagsAGnssOutageAndCountsTheGapWhenFixesReturn) {
+  NavdHealth h;
+  for (int k = 0; k < 10; ++k) h.OnGnss(Fix(k));
+  EXPECT_EQ(h.Field(Ns(9.5)).find("\"gnss_outage\""), std::string::npos);
+  for (int k = 10; k < 20; ++k) h.OnGnss(Fix(k, 0));  // no fix for 10 s
+  EXPECT_EQ(h.Field(Ns(12.4)).find("\"gnss_outage\""), std::string::npos) << "a fix may take 3.5 s to reach the filter";
+  EXPECT_NE(h.Field(Ns(19.5)).find("\"gnss_outage\""), std::string::npos);
+  EXPECT_TRUE(h.gnss_outage());
+  h.OnGnss(Fix(20));
+  h.OnGnss(Fix(20));  // the same epoch again
+  const std::string f = h.Field(Ns(20.1));
+  EXPECT_EQ(f.find("\"flags\":[\"gnss_outage\""), std::string::npos) << f;
+  EXPECT_EQ(h.counters().gnss_outages, 1u);
+  EXPECT_EQ(h.counters().gnss_no_fix_epochs, 10u);
+  EXPECT_EQ(h.counters().gnss_gaps, 1u);
+  EXPECT_EQ(h.counters().gnss_repeated_epochs, 1u);
+}
+
+TEST(NavdHealthTest, AppendsTheHealthObjectInsideTheJsonLine) {
+  drivers::NmeaDecoderStats nmea;
+  nmea.bad_checksum = 4;
+  NavdHealth h({&nmea, nullptr, nullptr, nullptr, nullptr});
+  std::string line = "{\"tov_utc_s\":1.0,\"status\":0}\n";
+  h.AppendTo(line, Ns(1));
+  EXPECT_EQ(line.rfind("{\"tov_utc_s\":1.0,\"status\":0,\"health\":{\"flags\":[\"gnss_link_errors\"],", 0), 0u) << line;
+  EXPECT_NE(line.find("\"gnss_checksum_errors\":4"), std::string::npos);
+  EXPECT_EQ(line.substr(line.size() - 3), "}}\n");
+  // the link-error flag holds for 5 s after the last new error
+  std::string later = "{}";
+  h.AppendTo(later, Ns(7));
+  EXPECT_EQ(later.find("gnss_link_errors"), std::string::npos) << later;
+}
+
+}  // namespace
+}  // namespace hil::estimator
