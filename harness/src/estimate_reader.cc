@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "hil/firmware_emu/gnss/gps_time.h"
+#include "hil/harness/n2k_fast_packet.h"
 #include "hil/harness/nmea_sentence.h"
 
 namespace hil::harness {
@@ -160,23 +161,11 @@ class N2kCandumpReader final : public EstimateReader {
     } catch (const std::exception&) {
       return std::nullopt;
     }
-    const std::uint32_t pf = (id >> 16) & 0xFF, pgn = ((id >> 24) & 0x3) << 16 | pf << 8 | (pf >= 240 ? (id >> 8) & 0xFF : 0);
+    const std::uint32_t pgn = N2kPgnFromId(id);
     if (pgn != 129029) return std::nullopt;
-    Packet& p = packets_[id & 0xFF];
-    const auto b0 = static_cast<unsigned char>(data[0]);
-    if ((b0 & 0x1F) == 0) {
-      if (data.size() < 2) return std::nullopt;
-      p = Packet{b0 >> 5, 1, static_cast<unsigned char>(data[1]), data.substr(2)};
-    } else if (p.expected_len == 0 || (b0 >> 5) != p.seq || (b0 & 0x1F) != p.next) {
-      p = Packet{};
-      return std::nullopt;
-    } else {
-      p.bytes += data.substr(1);
-      ++p.next;
-    }
-    if (p.expected_len < 31 || p.bytes.size() < p.expected_len) return std::nullopt;
-    const std::string b = p.bytes;
-    p = Packet{};
+    const auto payload = fast_packets_.Add(N2kSourceFromId(id), pgn, data);
+    if (!payload || payload->size() < 31) return std::nullopt;
+    const std::string& b = *payload;
     const auto u = [&](std::size_t i, int n) {
       std::uint64_t v = 0;
       for (int k = n - 1; k >= 0; --k) v = (v << 8) | static_cast<unsigned char>(b[i + static_cast<std::size_t>(k)]);
@@ -195,13 +184,8 @@ class N2kCandumpReader final : public EstimateReader {
   }
 
  private:
-  struct Packet {
-    int seq = -1, next = 0;
-    std::size_t expected_len = 0;
-    std::string bytes;
-  };
   std::int64_t start_;
-  std::map<std::uint32_t, Packet> packets_;
+  N2kFastPacketAssembler fast_packets_;
 };
 
 }  // namespace
