@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "hil/firmware_emu/gnss/gps_time.h"
-#include "hil/harness/n2k_fast_packet.h"
+#include "hil/harness/n2k_bus_reader.h"
 #include "hil/harness/nmea_sentence.h"
 
 namespace hil::harness {
@@ -140,13 +140,10 @@ class NmeaReader final : public EstimateReader {
   std::optional<double> last_rmc_tod_, rmc_speed_mps_, rmc_course_deg_;
 };
 
-// NMEA 2000 PGN 129029 (GNSS Position Data) from candump -l/-L lines on stdout, fast packets
-// reassembled per source address. Fields used (little-endian): SID u8; date u16 days since
-// 1970-01-01; time u32 ×1e-4 s since midnight; latitude i64 ×1e-16 deg; longitude i64 ×1e-16 deg;
-// altitude i64 ×1e-6 m (ellipsoidal).
+// NMEA 2000 from candump -l/-L lines on stdout, decoded frame by frame (n2k_bus_reader.h).
 class N2kCandumpReader final : public EstimateReader {
  public:
-  explicit N2kCandumpReader(std::int64_t start) : start_(start) {}
+  explicit N2kCandumpReader(std::int64_t start) : bus_(start) {}
   std::optional<EstimateRecord> Line(const std::string& text, std::int64_t wall_ns) override {
     const std::size_t hash = text.find('#');
     const std::size_t sp = text.rfind(' ', hash);
@@ -161,31 +158,18 @@ class N2kCandumpReader final : public EstimateReader {
     } catch (const std::exception&) {
       return std::nullopt;
     }
-    const std::uint32_t pgn = N2kPgnFromId(id);
-    if (pgn != 129029) return std::nullopt;
-    const auto payload = fast_packets_.Add(N2kSourceFromId(id), pgn, data);
-    if (!payload || payload->size() < 31) return std::nullopt;
-    const std::string& b = *payload;
-    const auto u = [&](std::size_t i, int n) {
-      std::uint64_t v = 0;
-      for (int k = n - 1; k >= 0; --k) v = (v << 8) | static_cast<unsigned char>(b[i + static_cast<std::size_t>(k)]);
-      return v;
-    };
-    const std::uint64_t days = u(1, 2), tod = u(3, 4);
-    if (days == 0xFFFF || tod == 0xFFFFFFFF) return std::nullopt;
-    EstimateRecord r;
-    const std::int64_t t_ns = static_cast<std::int64_t>(days) * kDayNs + static_cast<std::int64_t>(tod) * 100000LL;
-    r.t_validity = TimeFromNs(t_ns - start_);
-    r.lat_deg = static_cast<double>(static_cast<std::int64_t>(u(7, 8))) * 1e-16;
-    r.lon_deg = static_cast<double>(static_cast<std::int64_t>(u(15, 8))) * 1e-16;
-    r.height_m = static_cast<double>(static_cast<std::int64_t>(u(23, 8))) * 1e-6;
-    r.wall_rx_ns = wall_ns;
-    return r;
+    return bus_.Frame(id, data, wall_ns);
   }
 
  private:
-  std::int64_t start_;
-  N2kFastPacketAssembler fast_packets_;
+  N2kBusReader bus_;
+};
+
+// n2k_socketcan: the solutions come from the bus (EstimateCollector::AttachBus); stdout lines are
+// diagnostics only.
+class NoLinesReader final : public EstimateReader {
+ public:
+  std::optional<EstimateRecord> Line(const std::string&, std::int64_t) override { return std::nullopt; }
 };
 
 }  // namespace
@@ -195,6 +179,7 @@ std::unique_ptr<EstimateReader> MakeEstimateReader(const std::string& output, st
   if (output == "gpsd_json") return std::make_unique<GpsdJsonReader>(start_unix_ns);
   if (output == "nmea_stdout" || output == "nmea_pty") return std::make_unique<NmeaReader>(start_unix_ns);
   if (output == "n2k_candump") return std::make_unique<N2kCandumpReader>(start_unix_ns);
+  if (output == "n2k_socketcan") return std::make_unique<NoLinesReader>();
   throw std::invalid_argument("unknown estimator output format '" + output + "'");
 }
 

@@ -13,6 +13,7 @@
 #include "hil/firmware_emu/link/pty_port.h"
 #include "hil/firmware_emu/link/realtime_pacer.h"
 #include "hil/harness/byte_faults.h"
+#include "hil/harness/can_run.h"
 #include "hil/harness/cross_track.h"
 #include "hil/harness/device_set.h"
 #include "hil/harness/estimate_collector.h"
@@ -56,7 +57,7 @@ std::set<std::string> HostLinks(const Scenario& s, const std::string& raw_comman
   }
   if (raw_command.find("{navd}") != std::string::npos) {
     used.insert(s.gnss.link);
-    if (s.mcu.enabled && s.estimator.navd_mode != "gnss_only") used.insert(s.mcu.link);
+    if (s.mcu.enabled && s.estimator.navd_mode != "gnss_only" && !s.can.imu_to_estimator) used.insert(s.mcu.link);
   }
   return used;
 }
@@ -98,6 +99,7 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
   if (ec || access(opt.out_dir.c_str(), W_OK) != 0) {
     throw std::runtime_error("cannot write the output folder " + opt.out_dir + (ec ? ": " + ec.message() : ""));
   }
+  CheckCanRunMode(scenario, opt);
   const std::string dir = fs::absolute(opt.out_dir).string();
   fs::create_directories(dir + "/captures");
   const std::uint64_t seed = opt.seed.value_or(scenario.seed);
@@ -161,6 +163,9 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
   ByteFaultInjector byte_faults(scenario.faults, seed);
   ProgressLine progress(opt.progress);
   Scheduler scheduler(scenario, set, byte_faults, pacer ? &*pacer : nullptr, fixes_csv);
+  if (scenario.estimator.output == "n2k_socketcan") {
+    collector.AttachBus([&]() -> const std::vector<CanFrame>& { return scheduler.PollBus(); }, scenario.start_unix_ns);
+  }
   std::optional<std::string> hang;
   scheduler.Run([&](Time t) {
     collector.Poll();
@@ -274,6 +279,7 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
       report.gnss_messages_dropped += ep->uart().messages_dropped();
     }
   }
+  if (set.can) AddCanBusReport(*set.can, collector.bus_frames_per_pgn(), report);
   report.fault_messages_dropped = byte_faults.messages_dropped();
   report.fault_bytes_corrupted = byte_faults.bytes_corrupted();
   report.wall_time_s = SecondsSince(wall_start);

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "hil/harness/can_bus_report.h"
 #include "hil/harness/evaluator.h"
 #include "hil/harness/outage_metrics.h"
 #include "hil/harness/scenario.h"
@@ -46,6 +47,7 @@ struct RunReport {
   std::uint64_t gnss_bytes = 0, gnss_messages_dropped = 0;
   std::uint64_t fault_messages_dropped = 0, fault_bytes_corrupted = 0;
   std::vector<std::pair<std::string, std::string>> faults;  ///< {kind, "start–end s"} for the report
+  std::optional<CanBusReport> can;  ///< the scenario's CAN bus (can_run.h), when it has one
   bool pass() const;
 };
 
