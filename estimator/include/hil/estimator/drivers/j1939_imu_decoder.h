@@ -91,7 +91,7 @@ struct J1939ImuDecoderConfig {
   std::uint8_t source_address = 0xE2;   ///< the MCU's J1939 source address
   bool any_source = false;              ///< accept every source address
   double max_gap_s = 0.5;               ///< a longer gap between samples restarts the integration
-  double pair_window_s = 0.02;          ///< ARI and ACCS of one sample arrive within this
+  double pair_window_s = 0.05;          ///< ARI and ACCS of one sample arrive within this (< the IMU period)
   double default_latency_s = 0.001;     ///< pulse latency until an IMU frame tells it
 };
 
