@@ -51,7 +51,7 @@ void FeedText(std::string_view text, J1939ImuDecoder& dec, std::uint64_t& fed) {
       if (line[i] == '.') frac = true;
       else if (line[i] >= '0' && line[i] <= '9') (frac ? usec : sec) = ((frac ? usec : sec) % 100000000000LL) * 10 + (line[i] - '0');
     }
-    f.rx_ns = sec * 1000000000LL + (usec % 1000000) * 1000;
+    f.rx_ns = (sec % 4000000000LL) * 1000000000LL + (usec % 1000000) * 1000;  // candump seconds, kept in range
     std::uint32_t id = 0;
     for (std::size_t i = sp + 1; i < hash; ++i) id = (id << 4) | static_cast<std::uint32_t>(Hex(line[i]) & 0xF);
     f.id = id;

@@ -11,6 +11,7 @@ constexpr double kOffsetGain = 0.5;   // share of a reference's residual taken i
 constexpr double kMinRate = 0.01, kMaxRate = 100.0;
 constexpr double kAlpha = 0.2, kBeta = 0.02;  // sample tracker gains (β ≤ α²/(2−α): no overshoot)
 constexpr double kMaxResidualPeriods = 0.3;
+constexpr double kMaxAbsNs = 4e18;    // ±126 years around the GPS epoch
 
 }  // namespace
 
@@ -55,7 +56,9 @@ void ArrivalClock::AddReference(std::int64_t host_ns, GpsNs gps) {
 
 std::optional<GpsNs> ArrivalClock::ToGps(std::int64_t host_ns) const {
   if (since_restart_ < 2) return std::nullopt;  // the rate needs two references
-  return gps_anchor_ + static_cast<GpsNs>(std::llround(static_cast<double>(host_ns - host_anchor_ns_) * rate_));
+  const double t = static_cast<double>(gps_anchor_) + static_cast<double>(host_ns - host_anchor_ns_) * rate_;
+  if (!(std::abs(t) < kMaxAbsNs)) return std::nullopt;  // no plausible time (centuries away)
+  return static_cast<GpsNs>(std::llround(t));
 }
 
 void ArrivalClock::Reset() {
