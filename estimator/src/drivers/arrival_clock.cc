@@ -56,9 +56,12 @@ void ArrivalClock::AddReference(std::int64_t host_ns, GpsNs gps) {
 
 std::optional<GpsNs> ArrivalClock::ToGps(std::int64_t host_ns) const {
   if (since_restart_ < 2) return std::nullopt;  // the rate needs two references
-  const double t = static_cast<double>(gps_anchor_) + static_cast<double>(host_ns - host_anchor_ns_) * rate_;
-  if (!(std::abs(t) < kMaxAbsNs)) return std::nullopt;  // no plausible time (centuries away)
-  return static_cast<GpsNs>(std::llround(t));
+  // the offset in double, the anchor kept in integer ns (a double holds 1e18 ns only to 128 ns)
+  const double offset = static_cast<double>(host_ns - host_anchor_ns_) * rate_;
+  if (!(std::abs(offset) < kMaxAbsNs) || std::abs(static_cast<double>(gps_anchor_)) >= kMaxAbsNs) {
+    return std::nullopt;  // no plausible time (centuries away)
+  }
+  return gps_anchor_ + static_cast<GpsNs>(std::llround(offset));
 }
 
 void ArrivalClock::Reset() {
