@@ -85,7 +85,10 @@ void CanImuInput::ReadAll(const std::function<void(const estimator::ImuSample&)>
     const ssize_t n = recvmsg(sock_, &msg, MSG_DONTWAIT);
     if (n < 0) {
       if (errno == EINTR) continue;
-      if (errno != EAGAIN && errno != EWOULDBLOCK) ++read_errors_;
+      if (errno != EAGAIN && errno != EWOULDBLOCK) {
+        ++read_errors_;
+        usleep(10000);  // e.g. the interface went down: poll() keeps reporting it, do not spin
+      }
       return;
     }
     if (n != static_cast<ssize_t>(sizeof k)) {

@@ -56,7 +56,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (got) std::abort();  // complete before the last frame
     got = a.Add(0x80, kPgn, Frame(seq, index, body));
     // noise on the bus between the frames: another source, another PGN of the same source
-    if (a.Add(0x81, kPgn, Frame(seq + 1, index, "noise")) && index == 0 && len > 5) std::abort();
+    (void)a.Add(0x81, kPgn, Frame(seq + 1, index, "noise"));
     (void)a.Add(0x80, kOtherPgn, Frame(seq, index + 1, "other"));
   }
   if (!got || *got != payload) std::abort();
