@@ -54,7 +54,8 @@ TEST(N2kFastPacketTest, InterleavedSourcesAndLostFrames) {
   // a lost frame: the message is dropped, counted, and the next one is read again
   N2kFastPacketAssembler b;
   for (int i = 0; i < 7; ++i) {
-    if (i != 3) EXPECT_FALSE(b.Add(0x80, 129029, Bytes(m1.frames[static_cast<std::size_t>(i)])));
+    if (i == 3) continue;
+    EXPECT_FALSE(b.Add(0x80, 129029, Bytes(m1.frames[static_cast<std::size_t>(i)])));
   }
   EXPECT_EQ(b.stats().out_of_turn, 3u);  // frames 4, 5, 6
   std::optional<std::string> again;

@@ -13,7 +13,9 @@ namespace hil::harness {
 namespace {
 
 TEST(ValidateCanLiveTest, InterfaceNamesAreNotFiles) {
-  if (std::filesystem::exists("/sys/class/net/lo")) EXPECT_TRUE(IsNetworkInterface("lo"));
+  if (std::filesystem::exists("/sys/class/net/lo")) {
+    EXPECT_TRUE(IsNetworkInterface("lo"));
+  }
   EXPECT_FALSE(IsNetworkInterface("nosuchif9"));
   EXPECT_FALSE(IsNetworkInterface("/sys/class/net/lo"));
   EXPECT_FALSE(IsNetworkInterface(""));
