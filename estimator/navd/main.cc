@@ -8,6 +8,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -25,6 +26,8 @@
 #include "hil/estimator/config_file.h"
 #include "hil/estimator/drivers/mcu_frame_decoder.h"
 #include "hil/estimator/drivers/mcu_imu_adapter.h"
+#include "hil/estimator/drivers/razor_imu_adapter.h"
+#include "hil/estimator/drivers/razor_text_decoder.h"
 #include "hil/estimator/drivers/nmea_decoder.h"
 #include "hil/estimator/drivers/nmea_epoch.h"
 #include "hil/estimator/drivers/ubx_decoder.h"
@@ -33,6 +36,7 @@
 #include "hil/estimator/navd_health.h"
 #include "hil/estimator/navigator.h"
 #include "hil/estimator/outputs/nmea0183_writer.h"
+#include "can_imu_input.h"
 #include "can_output.h"
 #include "receiver_setup.h"
 #include "serial_device.h"
@@ -41,6 +45,11 @@ namespace {
 
 namespace est = hil::estimator;
 volatile std::sig_atomic_t g_stop = 0;
+std::int64_t MonotonicNs() {
+  timespec ts{};
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return static_cast<std::int64_t>(ts.tv_sec) * 1000000000LL + ts.tv_nsec;
+}
 void OnSignal(int) { g_stop = 1; }
 
 void PrintUsage() {
@@ -53,8 +62,8 @@ void PrintUsage() {
       "options:\n"
       "  --config FILE   configuration (INI; every key is documented in navd.conf.example):\n"
       "                  [input] gnss_device, gnss_baud, gnss_protocol (nmea|ubx), gnss_configure,\n"
-      "                  gnss_rate_hz, imu_device,\n"
-      "                  imu_baud, imu_format\n"
+      "                  gnss_rate_hz, imu_device, imu_baud, imu_format (mcu|razor_text)\n"
+      "                  [imu] source (serial|can), can_interface, source_address, razor_gnss_latency_s\n"
       "                  [time] leap_seconds\n"
       "                  [filter] mode (ekf|planar2d|gnss_only|imu_only|multi_gnss), lever_arm_m,\n"
       "                  accel_noise, gyro_noise, accel_bias_rw, gyro_bias_rw, init_accel_bias_std,\n"
@@ -187,12 +196,17 @@ int main(int argc, char** argv) {
     last_emitted = o.t;
   };
 
+  // the Razor text lines carry no time: stamped on arrival, mapped through the GNSS fixes' arrivals
+  const bool razor_text = !cfg.imu.from_can() && cfg.imu_format == "razor_text";
+  std::int64_t gnss_read_ns = 0, imu_read_ns = 0;
+  est::drivers::RazorImuAdapter razor_adapter;
   est::drivers::NmeaEpochAssembler assembler;
   est::drivers::NmeaDecoder nmea([&](const est::drivers::NmeaFix& fix) {
     const auto m = assembler.Add(fix);
     if (!m) return;
     const est::GnssSample g = ToGnssSample(*m, cfg.leap_seconds, cfg.nmea_uere_m);
     health.OnGnss(g);
+    if (razor_text) razor_adapter.AddGnssArrival(gnss_read_ns, g.t, cfg.imu.razor_gnss_latency_s);
     nav.Push(g);
     if (!imu_mode) {
       const est::NavOutput o = nav.Output();
@@ -209,6 +223,7 @@ int main(int argc, char** argv) {
     const auto g = ubx_epochs.Add(msg);
     if (!g) return;
     health.OnGnss(*g);
+    if (razor_text) razor_adapter.AddGnssArrival(gnss_read_ns, g->t, cfg.imu.razor_gnss_latency_s);
     nav.Push(*g);
     if (!imu_mode) {
       const est::NavOutput o = nav.Output();
@@ -216,37 +231,53 @@ int main(int argc, char** argv) {
     }
   });
   est::drivers::McuImuAdapter mcu_adapter;
-  est::drivers::McuFrameDecoder mcu([&](const est::drivers::McuFrame& f) {
-    health.OnMcuFrame(f);
-    const auto s = mcu_adapter.Add(f);
-    if (!s) return;
-    nav.Push(*s);
+  const auto on_imu = [&](const est::ImuSample& s) {
+    nav.Push(s);
     if (!imu_mode) return;
     // each sample as it is decoded: run the filter to the horizon, one solution per output period
     nav.Update();
     if (!nav.aligned()) return;
-    if (last_emitted >= 0 && s->t / period_ns == last_emitted / period_ns) return;
+    if (last_emitted >= 0 && s.t / period_ns == last_emitted / period_ns) return;
     const est::NavOutput o = nav.Output();
     if (o.valid) emit(o);
+  };
+  est::drivers::McuFrameDecoder mcu([&](const est::drivers::McuFrame& f) {
+    health.OnMcuFrame(f);
+    if (const auto s = mcu_adapter.Add(f)) on_imu(*s);
   });
+  est::drivers::RazorTextDecoder razor([&](const est::drivers::RazorTextSample& line) {
+    if (const auto s = razor_adapter.Add(line, imu_read_ns)) on_imu(*s);
+  });
+  std::unique_ptr<hil::navd::CanImuInput> can_imu;
+  if (cfg.imu.from_can()) {
+    est::drivers::J1939ImuDecoderConfig jc;
+    jc.any_source = cfg.imu.source_address < 0;
+    jc.source_address = static_cast<std::uint8_t>(cfg.imu.source_address < 0 ? 0 : cfg.imu.source_address);
+    try {
+      can_imu = std::make_unique<hil::navd::CanImuInput>(cfg.imu.can_interface, jc);
+    } catch (const std::runtime_error& e) {
+      std::fprintf(stderr, "navd: %s\n", e.what());
+      return 2;
+    }
+  }
 
   health.set_sources({&nmea.stats(), &ubx.stats(), &mcu.stats(), &mcu_adapter.stats(), &nav.stats()});
   hil::navd::SerialDevice gnss(cfg.gnss_device, cfg.gnss_baud);
   hil::navd::SerialDevice imu(cfg.imu_device, cfg.imu_baud);
   std::string buf;
   while (!g_stop) {
-    if (gnss.EnsureOpen() >= 0) {
-      timespec now{};
-      clock_gettime(CLOCK_MONOTONIC, &now);
-      receiver_setup.Service(gnss, static_cast<std::int64_t>(now.tv_sec) * 1'000'000'000 + now.tv_nsec);
-    }
-    pollfd p[2];
+    if (gnss.EnsureOpen() >= 0) receiver_setup.Service(gnss, MonotonicNs());
+    pollfd p[3];
     nfds_t n = 0;
-    hil::navd::SerialDevice* devs[2];
+    hil::navd::SerialDevice* devs[3];
     for (hil::navd::SerialDevice* d : {&gnss, &imu}) {
       if (d->path().empty() || d->EnsureOpen() < 0) continue;
       p[n] = {d->fd(), POLLIN, 0};
       devs[n++] = d;
+    }
+    if (can_imu) {
+      p[n] = {can_imu->fd(), POLLIN, 0};
+      devs[n++] = nullptr;
     }
     if (n == 0) {
       usleep(100000);
@@ -255,14 +286,22 @@ int main(int argc, char** argv) {
     if (poll(p, n, 200) <= 0) continue;
     for (nfds_t i = 0; i < n; ++i) {
       if (!(p[i].revents & (POLLIN | POLLHUP | POLLERR))) continue;
+      if (!devs[i]) {
+        can_imu->ReadAll(on_imu);
+        continue;
+      }
       buf.clear();
       const bool alive = devs[i]->Read(buf);
+      (devs[i] == &gnss ? gnss_read_ns : imu_read_ns) = MonotonicNs();
       if (devs[i] == &gnss && gnss_ubx) ubx.Feed(buf);
       else if (devs[i] == &gnss) {
         if (receiver_setup.active()) ubx.Feed(buf);  // the ACKs of the start-up configuration
         nmea.Feed(buf);
+      } else if (razor_text) {
+        razor.Feed(buf);
       }
-      else mcu.Feed(buf);
+      else
+        mcu.Feed(buf);
       if (!alive) usleep(100000);
     }
   }
@@ -282,6 +321,16 @@ int main(int argc, char** argv) {
                static_cast<unsigned long long>(ubx.stats().frames_ok), static_cast<unsigned long long>(ubx.stats().bad_checksum),
                static_cast<unsigned long long>(nmea_write_errors), static_cast<unsigned long long>(can->frames_sent()),
                static_cast<unsigned long long>(can->send_errors()));
+  if (razor_text) {
+    std::fprintf(stderr, "navd: razor_text lines=%llu bad_lines=%llu garbage_bytes=%llu imu=%llu no_time=%llu gaps=%llu\n",
+                 static_cast<unsigned long long>(razor.stats().lines_ok),
+                 static_cast<unsigned long long>(razor.stats().bad_lines),
+                 static_cast<unsigned long long>(razor.stats().garbage_bytes),
+                 static_cast<unsigned long long>(razor_adapter.stats().imu_out),
+                 static_cast<unsigned long long>(razor_adapter.stats().imu_no_time),
+                 static_cast<unsigned long long>(razor_adapter.stats().imu_gap));
+  }
+  if (can_imu) hil::navd::PrintCanImuStats(*can_imu, stderr);
   if (out != stdout) std::fclose(out);
   if (nmea_fd >= 0) close(nmea_fd);
   return 0;

@@ -79,7 +79,8 @@ NavdConfig NavdConfig::FromFile(const ConfigFile& f) {
     else if (s == "input" && k == "imu_device") c.imu_device = e.value;
     else if (s == "input" && k == "imu_baud") c.imu_baud = ToInt(f, e, 1200, 921600);
     else if (s == "input" && k == "imu_format") {
-      if (e.value != "mcu") throw ConfigError(f.name(), e.line, Field(e), "unknown IMU format '" + e.value + "' (known: mcu)");
+      if (e.value != "mcu" && e.value != "razor_text")
+        throw ConfigError(f.name(), e.line, Field(e), "unknown IMU format '" + e.value + "' (known: mcu, razor_text)");
       c.imu_format = e.value;
     } else if (s == "time" && k == "leap_seconds") c.leap_seconds = ToInt(f, e, 0, 60);
     else if (s == "filter" && k == "mode") {
@@ -110,10 +111,12 @@ NavdConfig NavdConfig::FromFile(const ConfigFile& f) {
     else if (s == "output" && k == "can_log") c.can_log = e.value;
     else if (s == "output" && k == "can_source_address") c.can_source_address = ToInt(f, e, 0, 251);
     else if (s == "output" && k == "can_rate_hz") c.can_rate_hz = ToDouble(f, e, 0.1, 100.0);
+    else if (s == "imu") ReadNavdImuKey(f, e, c.imu);
     else throw ConfigError(f.name(), e.line, Field(e), "unknown key");
   }
   const bool needs_imu = c.nav.mode == NavMode::kEkf || c.nav.mode == NavMode::kPlanar2d || c.nav.mode == NavMode::kImuOnly;
-  if (needs_imu && c.imu_device.empty()) {
+  ValidateNavdImu(f, c.imu, c.imu_device, c.imu_format);
+  if (needs_imu && c.imu_device.empty() && !c.imu.from_can()) {
     throw ConfigError(f.name(), mode_line, "[filter] mode",
                       std::string("mode ") + NavModeName(c.nav.mode) + " needs [input] imu_device");
   }

@@ -21,7 +21,27 @@ void EstimateCollector::Consume(const std::string& line, std::int64_t wall_ns) {
   else ++unparsed_;
 }
 
+void EstimateCollector::AttachBus(std::function<const std::vector<CanFrame>&()> poll_bus, std::int64_t start_unix_ns) {
+  poll_bus_ = std::move(poll_bus);
+  bus_reader_ = std::make_unique<N2kBusReader>(start_unix_ns);
+}
+
+std::map<std::uint32_t, std::uint64_t> EstimateCollector::bus_frames_per_pgn() const {
+  return bus_reader_ ? bus_reader_->frames_per_pgn() : std::map<std::uint32_t, std::uint64_t>{};
+}
+
 void EstimateCollector::Poll() {
+  if (poll_bus_) {
+    const std::vector<CanFrame>& frames = poll_bus_();
+    const std::int64_t now = link::RealtimePacer::MonotonicNs();
+    for (; bus_seen_ < frames.size(); ++bus_seen_) {
+      const CanFrame& f = frames[bus_seen_];
+      if (!f.extended) continue;
+      bus_last_ns_ = now;
+      const std::string_view data(reinterpret_cast<const char*>(f.data.data()), std::min<std::size_t>(f.len, 8));
+      if (auto r = bus_reader_->Frame(f.id, data, now)) records_.push_back(*r);
+    }
+  }
   if (process_) {
     for (const OutputLine& l : process_->TakeLines()) {
       // with a pty output, stdout is only kept (diagnostics), never parsed as solutions
@@ -48,7 +68,7 @@ void EstimateCollector::Poll() {
 
 std::int64_t EstimateCollector::last_output_wall_ns() const {
   const std::int64_t from_process = process_ && !nav_pty_ ? process_->last_output_wall_ns() : 0;
-  return std::max(from_process, pty_last_ns_);
+  return std::max({from_process, pty_last_ns_, bus_last_ns_});
 }
 
 }  // namespace hil::harness

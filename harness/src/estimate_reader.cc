@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "hil/firmware_emu/gnss/gps_time.h"
+#include "hil/harness/n2k_bus_reader.h"
 #include "hil/harness/nmea_sentence.h"
 
 namespace hil::harness {
@@ -139,13 +140,10 @@ class NmeaReader final : public EstimateReader {
   std::optional<double> last_rmc_tod_, rmc_speed_mps_, rmc_course_deg_;
 };
 
-// NMEA 2000 PGN 129029 (GNSS Position Data) from candump -l/-L lines on stdout, fast packets
-// reassembled per source address. Fields used (little-endian): SID u8; date u16 days since
-// 1970-01-01; time u32 ×1e-4 s since midnight; latitude i64 ×1e-16 deg; longitude i64 ×1e-16 deg;
-// altitude i64 ×1e-6 m (ellipsoidal).
+// NMEA 2000 from candump -l/-L lines on stdout, decoded frame by frame (n2k_bus_reader.h).
 class N2kCandumpReader final : public EstimateReader {
  public:
-  explicit N2kCandumpReader(std::int64_t start) : start_(start) {}
+  explicit N2kCandumpReader(std::int64_t start) : bus_(start) {}
   std::optional<EstimateRecord> Line(const std::string& text, std::int64_t wall_ns) override {
     const std::size_t hash = text.find('#');
     const std::size_t sp = text.rfind(' ', hash);
@@ -160,48 +158,18 @@ class N2kCandumpReader final : public EstimateReader {
     } catch (const std::exception&) {
       return std::nullopt;
     }
-    const std::uint32_t pf = (id >> 16) & 0xFF, pgn = ((id >> 24) & 0x3) << 16 | pf << 8 | (pf >= 240 ? (id >> 8) & 0xFF : 0);
-    if (pgn != 129029) return std::nullopt;
-    Packet& p = packets_[id & 0xFF];
-    const auto b0 = static_cast<unsigned char>(data[0]);
-    if ((b0 & 0x1F) == 0) {
-      if (data.size() < 2) return std::nullopt;
-      p = Packet{b0 >> 5, 1, static_cast<unsigned char>(data[1]), data.substr(2)};
-    } else if (p.expected_len == 0 || (b0 >> 5) != p.seq || (b0 & 0x1F) != p.next) {
-      p = Packet{};
-      return std::nullopt;
-    } else {
-      p.bytes += data.substr(1);
-      ++p.next;
-    }
-    if (p.expected_len < 31 || p.bytes.size() < p.expected_len) return std::nullopt;
-    const std::string b = p.bytes;
-    p = Packet{};
-    const auto u = [&](std::size_t i, int n) {
-      std::uint64_t v = 0;
-      for (int k = n - 1; k >= 0; --k) v = (v << 8) | static_cast<unsigned char>(b[i + static_cast<std::size_t>(k)]);
-      return v;
-    };
-    const std::uint64_t days = u(1, 2), tod = u(3, 4);
-    if (days == 0xFFFF || tod == 0xFFFFFFFF) return std::nullopt;
-    EstimateRecord r;
-    const std::int64_t t_ns = static_cast<std::int64_t>(days) * kDayNs + static_cast<std::int64_t>(tod) * 100000LL;
-    r.t_validity = TimeFromNs(t_ns - start_);
-    r.lat_deg = static_cast<double>(static_cast<std::int64_t>(u(7, 8))) * 1e-16;
-    r.lon_deg = static_cast<double>(static_cast<std::int64_t>(u(15, 8))) * 1e-16;
-    r.height_m = static_cast<double>(static_cast<std::int64_t>(u(23, 8))) * 1e-6;
-    r.wall_rx_ns = wall_ns;
-    return r;
+    return bus_.Frame(id, data, wall_ns);
   }
 
  private:
-  struct Packet {
-    int seq = -1, next = 0;
-    std::size_t expected_len = 0;
-    std::string bytes;
-  };
-  std::int64_t start_;
-  std::map<std::uint32_t, Packet> packets_;
+  N2kBusReader bus_;
+};
+
+// n2k_socketcan: the solutions come from the bus (EstimateCollector::AttachBus); stdout lines are
+// diagnostics only.
+class NoLinesReader final : public EstimateReader {
+ public:
+  std::optional<EstimateRecord> Line(const std::string&, std::int64_t) override { return std::nullopt; }
 };
 
 }  // namespace
@@ -211,6 +179,7 @@ std::unique_ptr<EstimateReader> MakeEstimateReader(const std::string& output, st
   if (output == "gpsd_json") return std::make_unique<GpsdJsonReader>(start_unix_ns);
   if (output == "nmea_stdout" || output == "nmea_pty") return std::make_unique<NmeaReader>(start_unix_ns);
   if (output == "n2k_candump") return std::make_unique<N2kCandumpReader>(start_unix_ns);
+  if (output == "n2k_socketcan") return std::make_unique<NoLinesReader>();
   throw std::invalid_argument("unknown estimator output format '" + output + "'");
 }
 

@@ -11,6 +11,7 @@
 #include "hil/harness/run.h"
 #include "hil/harness/suite.h"
 #include "hil/harness/validate.h"
+#include "hil/harness/validate_can_live.h"
 #include "hil/harness/yaml_reader.h"
 
 namespace {
@@ -175,7 +176,7 @@ void AddValidate(CLI::App& app, ValidateArgs& a) {
                              "against the profile, epoch timing, sequence gaps. Exit 0 conforms, 1 does not, 2 bad input");
   a.cmd->add_option("--protocol", a.protocol,
                     "ubx, nmea, neo5m (NMEA and UBX against the u-blox 5 profile), mcu (MCU frame protocol v1) or can "
-                    "(candump -l log)")
+                    "(candump -l log, or a live interface such as vcan0)")
       ->required()
       ->check(CLI::IsMember({"ubx", "nmea", "neo5m", "mcu", "can"}));
   a.cmd->add_option("SOURCE", a.source,
@@ -184,7 +185,7 @@ void AddValidate(CLI::App& app, ValidateArgs& a) {
       ->required();
   a.cmd->add_option("--baud", a.baud, "line rate of a serial device, and the neo5m per-epoch byte budget")
       ->check(CLI::Range(300, 921600));
-  a.cmd->add_option("--listen", a.listen_s, "seconds to listen to a serial device")->check(CLI::Range(0.1, 86400.0));
+  a.cmd->add_option("--listen", a.listen_s, "seconds to listen to a serial device or CAN interface")->check(CLI::Range(0.1, 86400.0));
   a.cmd->add_option("--report", a.report, "write the conformance report as JSON to this file");
   a.cmd->add_flag("--quiet", a.quiet, "print only the verdict line");
 }
@@ -193,7 +194,9 @@ int Validate(const ValidateArgs& a) {
   using hil::harness::ValidateProtocol;
   hil::harness::ValidationReport rep;
   try {
-    if (a.protocol == "can") {
+    if (a.protocol == "can" && hil::harness::IsNetworkInterface(a.source)) {
+      rep = hil::harness::ValidateCanInterface(a.source, a.listen_s);
+    } else if (a.protocol == "can") {
       const hil::harness::ByteStream s = hil::harness::ReadByteSource(a.source, a.listen_s, a.baud);
       rep = hil::harness::ValidateCanLog(s.bytes);
     } else if (a.protocol == "mcu") {

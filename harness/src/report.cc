@@ -181,6 +181,7 @@ void WriteReportJson(const RunReport& r, const std::string& path) {
   j["wall_time_s"] = r.wall_time_s;
   j["sim_time_s"] = r.sim_time_s;
   j["links"] = {{"gnss_bytes", r.gnss_bytes}, {"gnss_messages_dropped", r.gnss_messages_dropped}};
+  if (r.can) j["can"] = CanBusJson(*r.can);
   auto out = OpenOut(path);
   out << j.dump(2) << "\n";
   if (!out) throw std::runtime_error("cannot write " + path);

@@ -16,6 +16,7 @@
 #include "hil/firmware_emu/link/realtime_pacer.h"
 #include "hil/firmware_emu/mcu/mcu_device.h"
 #include "hil/harness/byte_faults.h"
+#include "hil/harness/can_run.h"
 #include "hil/harness/cross_track.h"
 #include "hil/harness/device_set.h"
 #include "hil/harness/estimate_collector.h"
@@ -60,7 +61,7 @@ std::set<std::string> HostLinks(const Scenario& s, const std::string& raw_comman
   }
   if (raw_command.find("{navd}") != std::string::npos) {
     used.insert(s.gnss.link);
-    if (s.mcu.enabled && s.estimator.navd_mode != "gnss_only") used.insert(s.mcu.link);
+    if (s.mcu.enabled && s.estimator.navd_mode != "gnss_only" && !s.can.imu_to_estimator) used.insert(s.mcu.link);
   }
   return used;
 }
@@ -104,6 +105,7 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
   if (ec || access(opt.out_dir.c_str(), W_OK) != 0) {
     throw std::runtime_error("cannot write the output folder " + opt.out_dir + (ec ? ": " + ec.message() : ""));
   }
+  CheckCanRunMode(scenario, opt);
   const std::string dir = fs::absolute(opt.out_dir).string();
   fs::create_directories(dir + "/captures");
   const std::uint64_t seed = opt.seed.value_or(scenario.seed);
@@ -187,6 +189,9 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
   ProgressLine progress(opt.progress);
   Scheduler scheduler(scenario, set, byte_faults, pacer ? &*pacer : nullptr, fixes_csv);
   scheduler.set_recorder(&fault_recorder);
+  if (scenario.estimator.output == "n2k_socketcan") {
+    collector.AttachBus([&]() -> const std::vector<CanFrame>& { return scheduler.PollBus(); }, scenario.start_unix_ns);
+  }
   std::optional<std::string> hang;
   const auto run_step = [&](Time t) {
     t_now = t;
@@ -327,6 +332,7 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
       report.gnss_messages_dropped += ep->uart().messages_dropped();
     }
   }
+  if (set.can) AddCanBusReport(*set.can, collector.bus_frames_per_pgn(), report);
   // MCU resets happen in the MCU model: the k-th scripted reset took place when the model counted k
   std::uint64_t mcu_resets = 0;
   for (const auto& dev : set.devices) {

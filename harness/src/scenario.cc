@@ -45,7 +45,8 @@ void ReadEstimator(const YamlReader& r, EstimatorSpec& e) {
                "startup_s"});
   e.reference_point = r.Choice("reference_point", e.reference_point, {"auto", "body", "antenna", "imu"});
   e.command = r.String("command", e.command);
-  e.output = r.Choice("output", e.output, {"json_stdout", "gpsd_json", "nmea_stdout", "nmea_pty", "n2k_candump"});
+  e.output = r.Choice("output", e.output, {"json_stdout", "gpsd_json", "nmea_stdout", "nmea_pty", "n2k_candump",
+                                                  "n2k_socketcan"});
   e.navd_mode = r.Choice("navd_mode", e.navd_mode, {"gnss_only", "ekf", "planar2d", "imu_only"});
   if (auto f = r.OptionalChild("navd_filter")) e.navd_filter = ReadNavdKeys(*f, "filter");
   if (auto f = r.OptionalChild("navd_input")) {
@@ -109,6 +110,7 @@ Scenario FromReader(const YamlReader& root) {
   if (s.mcu.imu_rate_is_default) s.mcu.config.imu_rate_hz = 10.0 * s.gnss.rate_hz;
   ReadCanSection(root, s.can);
   if (auto e = root.OptionalChild("estimator")) ReadEstimator(*e, s.estimator);
+  CheckCanUse(root, s);
   if (auto c = root.OptionalChild("criteria")) s.criteria = ReadCriteria(*c);
   if (auto f = root.OptionalChild("faults")) s.faults = ReadFaultTimeline(*f, s.duration_s);
   if (auto ev = root.OptionalChild("evaluation")) {

@@ -24,5 +24,8 @@ void ReadMcuSection(const YamlReader& root, McuDeviceSpec& m);
 extern const std::vector<std::string> kCanSectionKeys;
 /// Reads the can section (optional; scenario_can.cc).
 void ReadCanSection(const YamlReader& root, CanLinkSpec& c);
+/// Checks what needs the bus (IMU to the estimator over CAN, output n2k_socketcan) once every
+/// section is read (scenario_can.cc).
+void CheckCanUse(const YamlReader& root, const Scenario& s);
 
 }  // namespace hil::harness

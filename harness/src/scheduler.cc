@@ -138,12 +138,18 @@ void Scheduler::Run(const std::function<bool(Time)>& keep_going) {
     RecordFixes(*t_event);
     // configuration commands from the host reach the device with their arrival time
     PollHosts(*t_event, out);
-    if (set_.can) {
-      const Time t_bus = pacer_ ? pacer_->SimTimeOfWall(link::RealtimePacer::MonotonicNs()) : *t_event;
-      for (const CanFrame& f : set_.can->PollBus(t_bus)) bus_frames_.push_back(f);
-    }
+    t_last_event_ = *t_event;
+    PollBus();
     if (!keep_going(*t_event)) break;
   }
+}
+
+const std::vector<CanFrame>& Scheduler::PollBus() {
+  if (set_.can) {
+    const Time t_bus = pacer_ ? pacer_->SimTimeOfWall(link::RealtimePacer::MonotonicNs()) : t_last_event_;
+    for (const CanFrame& f : set_.can->PollBus(t_bus)) bus_frames_.push_back(f);
+  }
+  return bus_frames_;
 }
 
 void Scheduler::Flush() {

@@ -86,7 +86,7 @@ TEST(ConfigFileTest, FilterSchemaErrorsAreClear) {
   EXPECT_EQ(err("[filter]\nlever_arm_m = 1, 2\n"),
             "n.conf:2: [filter] lever_arm_m: expected three comma-separated numbers 'x, y, z', got '1, 2'");
   EXPECT_EQ(err("[filter]\nnhc_std_mps = -1\n"), "n.conf:2: [filter] nhc_std_mps: value -1 out of range [0, 10]");
-  EXPECT_EQ(err("[input]\nimu_format = razor\n"), "n.conf:2: [input] imu_format: unknown IMU format 'razor' (known: mcu)");
+  EXPECT_EQ(err("[input]\nimu_format = razor\n"), "n.conf:2: [input] imu_format: unknown IMU format 'razor' (known: mcu, razor_text)");
 }
 
 }  // namespace

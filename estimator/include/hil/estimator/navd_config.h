@@ -7,6 +7,7 @@
 #include <string>
 
 #include "hil/estimator/config_file.h"
+#include "hil/estimator/navd_imu_config.h"
 #include "hil/estimator/navigator.h"
 
 namespace hil::estimator {
@@ -26,7 +27,9 @@ struct NavdConfig {
   double gnss_rate_hz = 0;       ///< with gnss_configure: CFG-RATE to this rate; 0 leaves the rate
   std::string imu_device;        ///< serial device of the IMU microcontroller; empty = none
   int imu_baud = 57600;
-  std::string imu_format = "mcu";///< mcu (binary frame protocol v1)
+  std::string imu_format = "mcu";///< mcu (binary frame protocol v1) or razor_text (Razor v13 stock lines)
+  // [imu]: serial or CAN (navd_imu_config.h)
+  NavdImuConfig imu;
   // [time]
   int leap_seconds = 18;         ///< GPS − UTC until the receiver reports it
   // [filter]: mode and the estimator parameters (navigator.h, error_state_ekf.h)

@@ -13,7 +13,9 @@
 #include <vector>
 
 #include "hil/firmware_emu/link/pty_port.h"
+#include "hil/firmware_emu/device.h"
 #include "hil/harness/estimate_reader.h"
+#include "hil/harness/n2k_bus_reader.h"
 #include "hil/harness/estimator_process.h"
 
 namespace hil::harness {
@@ -24,8 +26,13 @@ class EstimateCollector {
   EstimateCollector(std::unique_ptr<EstimateReader> reader, EstimatorProcess* process, link::PtyPort* nav_pty,
                     const std::string& raw_path);
 
+  /// Output n2k_socketcan: `poll_bus` polls the CAN bus and returns every frame others put on it so
+  /// far (the scheduler's list); Poll() decodes the new ones (N2kBusReader) into records.
+  void AttachBus(std::function<const std::vector<CanFrame>&()> poll_bus, std::int64_t start_unix_ns);
   /// Takes what arrived since the last call.
   void Poll();
+  /// Output n2k_socketcan: frames seen per PGN (empty otherwise).
+  std::map<std::uint32_t, std::uint64_t> bus_frames_per_pgn() const;
   /// CLOCK_MONOTONIC time of the last output line (0: none yet).
   std::int64_t last_output_wall_ns() const;
   const std::vector<EstimateRecord>& records() const { return records_; }
@@ -46,6 +53,10 @@ class EstimateCollector {
   std::size_t lines_ = 0, unparsed_ = 0;
   std::string raw_path_;
   std::function<void(const std::string&)> observer_;
+  std::function<const std::vector<CanFrame>&()> poll_bus_;
+  std::unique_ptr<N2kBusReader> bus_reader_;
+  std::size_t bus_seen_ = 0;
+  std::int64_t bus_last_ns_ = 0;
 };
 
 }  // namespace hil::harness

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "hil/harness/can_bus_report.h"
 #include "hil/harness/evaluator.h"
 #include "hil/harness/fault_report.h"
 #include "hil/harness/outage_metrics.h"
@@ -51,6 +52,7 @@ struct RunReport {
   std::vector<FaultInjection> fault_injections;  ///< per fault: what was injected, recovery (fault_report.h)
   EstimatorHealth estimator_health;              ///< navd's detections (fault_report.h)
   std::string incomplete_reason;  ///< why the run stopped early (signal, output folder, link), if it did
+  std::optional<CanBusReport> can;  ///< the scenario's CAN bus (can_run.h), when it has one
   bool pass() const;
 };
 

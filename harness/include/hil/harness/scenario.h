@@ -71,7 +71,9 @@ struct EstimatorSpec {
   /// How its solutions are read: json_stdout (navd's JSON lines), gpsd_json (gpsd TPV objects on
   /// stdout, e.g. from `gpspipe -w`), nmea_stdout (GGA/RMC on stdout), nmea_pty (GGA/RMC written
   /// into the pty RUN_DIR/ttyNAV, substituted as {ttyNAV}), n2k_candump (NMEA 2000 PGN 129029
-  /// as candump -L lines on stdout).
+  /// as candump -L lines on stdout), n2k_socketcan (navd's NMEA 2000 frames read back from the
+  /// scenario's CAN bus: 129029 position and time, with 129026 velocity and 127250 heading of the
+  /// same SID).
   std::string output = "json_stdout";
   std::string navd_mode = "gnss_only";  ///< written into the generated navd.conf
   /// Further navd.conf `[filter]` keys (noise grades, gates, …), written as given; navd validates
@@ -93,6 +95,9 @@ struct EstimatorSpec {
 struct CanLinkSpec {
   std::string interface;  ///< e.g. vcan0; empty when the scenario has no `can` section
   bool fd = false;        ///< open the socket for CAN FD frames
+  /// navd reads the IMU from the MCU's J1939 frames on this bus (navd.conf `[imu] source = can`)
+  /// instead of its serial link. Needs `mcu.can.enabled` and a real-time or scaled run.
+  bool imu_to_estimator = false;
 };
 
 struct Scenario {

@@ -40,6 +40,8 @@ class Scheduler {
   const std::vector<EstimateRecord>& fixes() const { return fixes_; }
   /// Frames others put on the CAN bus during the run (the estimator's NMEA 2000 output).
   const std::vector<CanFrame>& bus_frames() const { return bus_frames_; }
+  /// Reads what others put on the bus now (also during the drain after Run) and returns them all.
+  const std::vector<CanFrame>& PollBus();
 
  private:
   void Dispatch(std::size_t device, DeviceOutput& out);
@@ -56,6 +58,7 @@ class Scheduler {
   FaultRecorder* recorder_ = nullptr;
   std::vector<EstimateRecord> fixes_;
   std::vector<CanFrame> bus_frames_;
+  Time t_last_event_{};
 };
 
 }  // namespace hil::harness

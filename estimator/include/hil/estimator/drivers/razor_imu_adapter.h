@@ -1,0 +1,45 @@
+#pragma once
+/// @file
+/// Turns decoded Razor v13 text lines into IMU samples on GPS time. The stock lines carry no time
+/// (razor_text_formats.md), so each line is stamped with its host arrival time, mapped onto GPS
+/// time through the arrivals of the GNSS fixes (each taken to arrive a configured latency after
+/// its time of validity; an `ArrivalClock`), and smoothed over the periodic stream. Samples before
+/// the map exists, or across a gap longer than `max_gap_s`, are counted and dropped. This is the
+/// best a host can do with the stock firmware; the binary protocol or CAN (time pulse) are exact.
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <optional>
+
+#include "hil/estimator/drivers/arrival_clock.h"
+#include "hil/estimator/drivers/razor_text_decoder.h"
+#include "hil/estimator/samples.h"
+
+namespace hil::estimator::drivers {
+
+struct RazorAdapterStats {
+  std::uint64_t imu_out = 0, imu_no_time = 0, imu_gap = 0, gnss_references = 0;
+};
+
+class RazorImuAdapter {
+ public:
+  explicit RazorImuAdapter(RazorScales scales = {}, double max_gap_s = 0.5) : scales_(scales), timer_(max_gap_s), max_gap_s_(max_gap_s) {}
+  /// A GNSS fix with time of validity `tov` whose last byte arrived at `host_ns`, `latency_s` after `tov`.
+  void AddGnssArrival(std::int64_t host_ns, GpsNs tov, double latency_s);
+  /// One line received at `host_ns`; an IMU sample when it completes an interval.
+  std::optional<ImuSample> Add(const RazorTextSample& line, std::int64_t host_ns);
+  const RazorAdapterStats& stats() const { return stats_; }
+  const ArrivalClock& clock() const { return clock_; }
+
+ private:
+  RazorScales scales_;
+  ArrivalClock clock_;
+  PeriodicSampleTimer timer_;
+  double max_gap_s_;
+  bool have_prev_ = false;
+  GpsNs prev_t_ = 0;
+  Eigen::Vector3d prev_w_ = Eigen::Vector3d::Zero(), prev_f_ = Eigen::Vector3d::Zero();
+  RazorAdapterStats stats_;
+};
+
+}  // namespace hil::estimator::drivers
