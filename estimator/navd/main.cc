@@ -16,10 +16,13 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <numbers>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "hil/estimator/config_file.h"
 #include "hil/estimator/drivers/mcu_frame_decoder.h"
@@ -32,6 +35,7 @@
 #include "hil/estimator/navigator.h"
 #include "hil/estimator/outputs/nmea0183_writer.h"
 #include "can_output.h"
+#include "gnss_receivers.h"
 #include "serial_device.h"
 
 namespace {
@@ -49,35 +53,19 @@ void PrintUsage() {
       "  status) to [output] json, and NMEA 0183 (GGA, RMC, HDT) to [output] nmea_device.\n"
       "options:\n"
       "  --config FILE   configuration (INI; every key is documented in navd.conf.example):\n"
-      "                  [input] gnss_device, gnss_baud, gnss_protocol (nmea|ubx), imu_device,\n"
-      "                  imu_baud, imu_format\n"
+      "                  [input] gnss_device, gnss_device_1 … (multi_gnss), gnss_baud, gnss_protocol\n"
+      "                  (nmea|ubx), imu_device, imu_baud, imu_format\n"
       "                  [time] leap_seconds\n"
       "                  [filter] mode (ekf|planar2d|gnss_only|imu_only|multi_gnss), lever_arm_m,\n"
       "                  accel_noise, gyro_noise, accel_bias_rw, gyro_bias_rw, init_accel_bias_std,\n"
       "                  init_gyro_bias_std, gnss_error_tau_s, gnss_error_std_m, nhc_std_mps,\n"
-      "                  gate_sigma, fusion_horizon_s, use_gnss_velocity\n"
+      "                  gate_sigma, fusion_horizon_s, use_gnss_velocity, antenna_0_m … (multi_gnss)\n"
       "                  [output] json, rate_hz, nmea_device, can_interface, can_log,\n"
       "                  can_source_address, can_rate_hz\n"
       "  --help          this text\n"
       "examples:\n"
       "  navd --config /etc/navd.conf\n"
       "  navd --config navd.conf > solution.jsonl\n");
-}
-
-est::GnssSample ToGnssSample(const est::drivers::NmeaMeasurement& m, int leap_s, double uere_m) {
-  est::GnssSample g;
-  g.t = est::GpsNsFromUnixNs(m.tov_unix_ns, leap_s);
-  g.position = {m.lat_deg, m.lon_deg, m.height_m};
-  const double sigma = m.hdop.value_or(5.0) * uere_m / std::numbers::sqrt2;
-  g.pos_std_enu_m = {sigma, sigma, 2.0 * sigma};
-  g.fix_quality = m.quality;
-  g.num_sv = m.num_sv;
-  if (m.speed_mps && m.course_deg) {
-    const double c = *m.course_deg * std::numbers::pi / 180.0;
-    g.vel_enu_mps = {*m.speed_mps * std::sin(c), *m.speed_mps * std::cos(c), 0.0};
-    g.has_velocity = true;
-  }
-  return g;
 }
 
 est::NavSolution ToSolution(const est::NavOutput& o, const est::Navigator& nav, int leap_s) {
@@ -181,28 +169,14 @@ int main(int argc, char** argv) {
     last_emitted = o.t;
   };
 
-  est::drivers::NmeaEpochAssembler assembler;
-  est::drivers::NmeaDecoder nmea([&](const est::drivers::NmeaFix& fix) {
-    const auto m = assembler.Add(fix);
-    if (!m) return;
-    nav.Push(ToGnssSample(*m, cfg.leap_seconds, cfg.nmea_uere_m));
-    if (!imu_mode) {
-      const est::NavOutput o = nav.Output();
-      if (o.t != last_emitted) emit(o);
-    }
+  // GNSS receivers (one, or several in multi_gnss mode): one solution per fix in GNSS-only modes
+  hil::navd::GnssReceivers receivers(cfg, [&](const est::GnssSample& g) {
+    nav.Push(g);
+    if (imu_mode) return;
+    const est::NavOutput o = nav.Output();
+    if (o.valid && o.t != last_emitted) emit(o);
   });
   const std::int64_t period_ns = static_cast<std::int64_t>(std::llround(1e9 / cfg.output_rate_hz));
-  est::drivers::UbxEpochAssembler ubx_epochs;
-  est::drivers::UbxDecoder ubx([&](const est::drivers::UbxMessage& msg) {
-    const auto g = ubx_epochs.Add(msg);
-    if (!g) return;
-    nav.Push(*g);
-    if (!imu_mode) {
-      const est::NavOutput o = nav.Output();
-      if (o.t != last_emitted) emit(o);
-    }
-  });
-  const bool gnss_ubx = cfg.gnss_protocol == "ubx";
   est::drivers::McuImuAdapter mcu_adapter;
   est::drivers::McuFrameDecoder mcu([&](const est::drivers::McuFrame& f) {
     const auto s = mcu_adapter.Add(f);
@@ -217,34 +191,40 @@ int main(int argc, char** argv) {
     if (o.valid) emit(o);
   });
 
-  hil::navd::SerialDevice gnss(cfg.gnss_device, cfg.gnss_baud);
+  // every input device with what its bytes are fed to
   hil::navd::SerialDevice imu(cfg.imu_device, cfg.imu_baud);
+  std::vector<std::pair<hil::navd::SerialDevice*, std::function<void(const std::string&)>>> inputs;
+  for (std::size_t i = 0; i < receivers.size(); ++i) {
+    inputs.emplace_back(&receivers.device(i), [&receivers, i](const std::string& b) { receivers.Feed(i, b); });
+  }
+  inputs.emplace_back(&imu, [&mcu](const std::string& b) { mcu.Feed(b); });
+  std::vector<pollfd> p;
+  std::vector<std::size_t> polled;
   std::string buf;
   while (!g_stop) {
-    pollfd p[2];
-    nfds_t n = 0;
-    hil::navd::SerialDevice* devs[2];
-    for (hil::navd::SerialDevice* d : {&gnss, &imu}) {
+    p.clear();
+    polled.clear();
+    for (std::size_t k = 0; k < inputs.size(); ++k) {
+      hil::navd::SerialDevice* d = inputs[k].first;
       if (d->path().empty() || d->EnsureOpen() < 0) continue;
-      p[n] = {d->fd(), POLLIN, 0};
-      devs[n++] = d;
+      p.push_back({d->fd(), POLLIN, 0});
+      polled.push_back(k);
     }
-    if (n == 0) {
+    if (p.empty()) {
       usleep(100000);
       continue;
     }
-    if (poll(p, n, 200) <= 0) continue;
-    for (nfds_t i = 0; i < n; ++i) {
+    if (poll(p.data(), p.size(), 200) <= 0) continue;
+    for (std::size_t i = 0; i < p.size(); ++i) {
       if (!(p[i].revents & (POLLIN | POLLHUP | POLLERR))) continue;
       buf.clear();
-      const bool alive = devs[i]->Read(buf);
-      if (devs[i] == &gnss && gnss_ubx) ubx.Feed(buf);
-      else if (devs[i] == &gnss) nmea.Feed(buf);
-      else mcu.Feed(buf);
+      const bool alive = inputs[polled[i]].first->Read(buf);
+      inputs[polled[i]].second(buf);
       if (!alive) usleep(100000);
     }
   }
-  const auto& st = nmea.stats();
+  const auto st = receivers.nmea_stats();
+  const auto ubx_st = receivers.ubx_stats();
   const auto& ns = nav.stats();
   std::fprintf(stderr,
                "navd: stopped; nmea ok=%llu bad_checksum=%llu malformed=%llu unsupported=%llu garbage_bytes=%llu "
@@ -252,12 +232,12 @@ int main(int argc, char** argv) {
                "rejected=%llu resets=%llu ubx ok=%llu bad_checksum=%llu nmea_write_errors=%llu can_frames=%llu can_errors=%llu\n",
                static_cast<unsigned long long>(st.sentences_ok), static_cast<unsigned long long>(st.bad_checksum),
                static_cast<unsigned long long>(st.malformed), static_cast<unsigned long long>(st.unsupported),
-               static_cast<unsigned long long>(st.garbage_bytes), static_cast<unsigned long long>(gnss.reopen_count()),
+               static_cast<unsigned long long>(st.garbage_bytes), static_cast<unsigned long long>(receivers.reopens()),
                static_cast<unsigned long long>(mcu.stats().frames_ok), static_cast<unsigned long long>(mcu.stats().bad_crc),
                static_cast<unsigned long long>(mcu.stats().sequence_gaps), static_cast<unsigned long long>(ns.imu_samples),
                static_cast<unsigned long long>(ns.gnss_late), static_cast<unsigned long long>(ns.gnss_fused),
                static_cast<unsigned long long>(ns.gnss_rejected), static_cast<unsigned long long>(ns.gnss_resets),
-               static_cast<unsigned long long>(ubx.stats().frames_ok), static_cast<unsigned long long>(ubx.stats().bad_checksum),
+               static_cast<unsigned long long>(ubx_st.frames_ok), static_cast<unsigned long long>(ubx_st.bad_checksum),
                static_cast<unsigned long long>(nmea_write_errors), static_cast<unsigned long long>(can->frames_sent()),
                static_cast<unsigned long long>(can->send_errors()));
   if (out != stdout) std::fclose(out);

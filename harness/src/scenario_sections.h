@@ -25,4 +25,11 @@ extern const std::vector<std::string> kCanSectionKeys;
 /// Reads the can section (optional; scenario_can.cc).
 void ReadCanSection(const YamlReader& root, CanLinkSpec& c);
 
+extern const std::vector<std::string> kSuiteSectionKeys;
+/// Reads `paper:` into s.paper and checks `short:` (scenario_suite.cc); `top_level_keys` are the
+/// keys a `short:` section may replace (all but name, include, paper and short).
+void ReadSuiteSections(const YamlReader& root, const std::vector<std::string>& top_level_keys, Scenario& s);
+/// Replaces the root's top-level keys by those of its `short:` section (nothing without one).
+void ApplyShortForm(YamlReader& root);
+
 }  // namespace hil::harness
