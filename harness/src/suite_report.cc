@@ -11,7 +11,8 @@ namespace {
 
 using nlohmann::json;
 
-// A metric's value in a readable unit: lengths in cm (the papers' unit), others as they are.
+// A metric's value in a readable unit: lengths in cm (the papers' unit; m from 10 m, km from 1 km),
+// others as they are.
 std::string Fmt(const std::string& metric, const json& v) {
   if (!v.is_number()) return "n/a";
   const double x = v.get<double>();
@@ -20,7 +21,9 @@ std::string Fmt(const std::string& metric, const json& v) {
     const std::string suf(s);
     return metric.size() >= suf.size() && metric.compare(metric.size() - suf.size(), suf.size(), suf) == 0;
   };
-  if (ends("_m")) std::snprintf(b, sizeof b, "%.1f cm", x * 100.0);
+  if (ends("_m") && std::abs(x) >= 1000.0) std::snprintf(b, sizeof b, "%.1f km", x / 1000.0);
+  else if (ends("_m") && std::abs(x) >= 10.0) std::snprintf(b, sizeof b, "%.1f m", x);
+  else if (ends("_m")) std::snprintf(b, sizeof b, "%.1f cm", x * 100.0);
   else if (ends("_deg")) std::snprintf(b, sizeof b, "%.2f°", x);
   else if (ends("_s")) std::snprintf(b, sizeof b, "%.1f s", x);
   else std::snprintf(b, sizeof b, "%.3g", x);

@@ -45,6 +45,8 @@ TEST(SuiteShortE2eTest, ReportPutsPapersBesideOursAndPaper000Passes) {
     EXPECT_EQ(files.count(s["scenario_file"].get<std::string>()), 1u) << s["scenario_file"];
     EXPECT_EQ(s["runs"].get<int>(), 2) << s["scenario"];
     EXPECT_FALSE(s.contains("error")) << s["scenario"] << ": " << s.value("error", "");
+    // the papers' scenarios: every criterion computed in every seed (a missing value is a broken run)
+    if (s["scenario"].get<std::string>().rfind("seed00", 0) != 0) continue;
     for (const auto& c : s["criteria"]) {
       EXPECT_EQ(c["value"]["n"].get<int>(), 2) << s["scenario"] << ": " << c["name"] << " could not be computed";
     }
