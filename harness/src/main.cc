@@ -239,8 +239,8 @@ struct SuiteArgs {
 
 void AddSuite(CLI::App& app, SuiteArgs& a) {
   a.cmd = app.add_subcommand("suite",
-                             "Run every scenario of a folder (in parallel, optionally repeated with different seeds) "
-                             "into one summary.json and junit.xml; exit 0 when all pass");
+                             "Run every scenario of a folder (in parallel, optionally with several seeds) into one "
+                             "report.md (the papers' figures beside ours), summary.json and junit.xml; exit 0 when all pass");
   a.cmd->add_option("DIR", a.dir, "folder of scenario files (*.yaml)")->required();
   a.cmd->add_option("--out", a.out, "suite folder (default: runs/suite-<DIR name>)");
   a.cmd->add_option("-j,--jobs", a.jobs, "scenarios run at the same time")->check(CLI::Range(1, 64));
@@ -248,7 +248,7 @@ void AddSuite(CLI::App& app, SuiteArgs& a) {
       ->check(CLI::Range(1, 1000));
   a.cmd->add_flag("--short", a.short_form,
                   "each scenario's quick form (its `short:` section: shorter runs, for CI); scenarios without one run whole");
-  a.seed_opt = a.cmd->add_option("--seed", a.seed, "first seed (default: each scenario's own, or 1 with --repeat)");
+  a.seed_opt = a.cmd->add_option("--seed", a.seed, "first seed (default: each scenario's own, or 1 with --seeds)");
   a.est_opt = a.cmd->add_option("--estimator", a.estimator, "estimator command for every run");
   a.mode_opt = a.cmd->add_option("--mode", a.mode, "run mode for every run")->check(CLI::IsMember({"virtual", "realtime", "scaled"}));
   a.speed_opt = a.cmd->add_option("--speed", a.speed, "speed-up factor for realtime/scaled runs")->check(CLI::Range(0.01, 1000.0));
