@@ -26,7 +26,9 @@ TEST(ScenarioFilesTest, EveryScenarioLoadsFullAndShort) {
       try {
         const Scenario s = LoadScenario(f, short_form);
         EXPECT_EQ(s.short_form, short_form && s.has_short_form) << f;
-        if (s.short_form) EXPECT_LT(s.duration_s, LoadScenario(f).duration_s) << f << ": a short form should be shorter";
+        if (s.short_form) {
+          EXPECT_LT(s.duration_s, LoadScenario(f).duration_s) << f << ": a short form should be shorter";
+        }
       } catch (const ScenarioError& e) {
         ADD_FAILURE() << (short_form ? "short form: " : "") << e.what();
       }
