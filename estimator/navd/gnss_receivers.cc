@@ -26,6 +26,7 @@ est::GnssSample ToGnssSample(const est::drivers::NmeaMeasurement& m, int leap_s,
 GnssReceivers::Receiver::Receiver(const std::string& path, int baud, int index, const est::NavdConfig& cfg,
                                   const Handler& h)
     : device(path, baud),
+      setup(cfg),
       nmea([this, index, leap = cfg.leap_seconds, uere = cfg.nmea_uere_m, h](const est::drivers::NmeaFix& fix) {
         const auto m = nmea_epochs.Add(fix);
         if (!m) return;
@@ -33,7 +34,9 @@ GnssReceivers::Receiver::Receiver(const std::string& path, int baud, int index, 
         g.antenna = index;
         h(g);
       }),
-      ubx([this, index, h](const est::drivers::UbxMessage& msg) {
+      ubx([this, index, h, ubx_input = cfg.gnss_protocol == "ubx"](const est::drivers::UbxMessage& msg) {
+        setup.OnMessage(msg);
+        if (!ubx_input) return;
         auto g = ubx_epochs.Add(msg);
         if (!g) return;
         g->antenna = index;
@@ -48,8 +51,19 @@ GnssReceivers::GnssReceivers(const est::NavdConfig& cfg, Handler handler) : ubx_
 }
 
 void GnssReceivers::Feed(std::size_t i, const std::string& bytes) {
-  if (ubx_) rx_[i]->ubx.Feed(bytes);
-  else rx_[i]->nmea.Feed(bytes);
+  Receiver& r = *rx_[i];
+  if (ubx_) {
+    r.ubx.Feed(bytes);
+    return;
+  }
+  if (r.setup.active()) r.ubx.Feed(bytes);  // the ACKs of the start-up configuration
+  r.nmea.Feed(bytes);
+}
+
+void GnssReceivers::Service(std::int64_t now_ns) {
+  for (auto& r : rx_) {
+    if (r->device.EnsureOpen() >= 0) r->setup.Service(r->device, now_ns);
+  }
 }
 
 est::drivers::NmeaDecoderStats GnssReceivers::nmea_stats() const {

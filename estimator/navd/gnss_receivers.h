@@ -3,7 +3,8 @@
 /// navd's GNSS input: one or several receivers ([input] gnss_device, gnss_device_1 …), each on its
 /// own serial device with its own decoder (NMEA GGA + RMC, or UBX) and epoch assembler. Every
 /// decoded fix becomes a GnssSample tagged with its receiver index (GnssSample::antenna), on the
-/// filter's GPS time base, and goes to the handler.
+/// filter's GPS time base, and goes to the handler. With `[input] gnss_configure` each receiver is
+/// configured at start-up (and after its port reopens) by its own ReceiverSetup.
 
 #include <cstddef>
 #include <functional>
@@ -16,6 +17,7 @@
 #include "hil/estimator/drivers/ubx_decoder.h"
 #include "hil/estimator/navd_config.h"
 #include "hil/estimator/samples.h"
+#include "receiver_setup.h"
 #include "serial_device.h"
 
 namespace hil::navd {
@@ -35,6 +37,8 @@ class GnssReceivers {
   SerialDevice& device(std::size_t i) { return rx_[i]->device; }
   /// Bytes read from receiver i's device.
   void Feed(std::size_t i, const std::string& bytes);
+  /// Sends the start-up configuration commands that are due on every open device.
+  void Service(std::int64_t now_ns);
 
   /// Counters summed over the receivers.
   estimator::drivers::NmeaDecoderStats nmea_stats() const;
@@ -45,6 +49,7 @@ class GnssReceivers {
   struct Receiver {
     Receiver(const std::string& path, int baud, int index, const estimator::NavdConfig& cfg, const Handler& h);
     SerialDevice device;
+    ReceiverSetup setup;
     estimator::drivers::NmeaEpochAssembler nmea_epochs;
     estimator::drivers::NmeaDecoder nmea;
     estimator::drivers::UbxEpochAssembler ubx_epochs;

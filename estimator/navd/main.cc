@@ -16,6 +16,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <functional>
 #include <memory>
 #include <stdexcept>
@@ -54,7 +55,7 @@ void PrintUsage() {
       "options:\n"
       "  --config FILE   configuration (INI; every key is documented in navd.conf.example):\n"
       "                  [input] gnss_device, gnss_device_1 … (multi_gnss), gnss_baud, gnss_protocol\n"
-      "                  (nmea|ubx), imu_device, imu_baud, imu_format\n"
+      "                  (nmea|ubx), gnss_configure, gnss_rate_hz, imu_device, imu_baud, imu_format\n"
       "                  [time] leap_seconds\n"
       "                  [filter] mode (ekf|planar2d|gnss_only|imu_only|multi_gnss), lever_arm_m,\n"
       "                  accel_noise, gyro_noise, accel_bias_rw, gyro_bias_rw, init_accel_bias_std,\n"
@@ -202,6 +203,9 @@ int main(int argc, char** argv) {
   std::vector<std::size_t> polled;
   std::string buf;
   while (!g_stop) {
+    timespec now{};
+    clock_gettime(CLOCK_MONOTONIC, &now);
+    receivers.Service(static_cast<std::int64_t>(now.tv_sec) * 1'000'000'000 + now.tv_nsec);  // start-up CFG
     p.clear();
     polled.clear();
     for (std::size_t k = 0; k < inputs.size(); ++k) {

@@ -71,7 +71,11 @@ NavdConfig NavdConfig::FromFile(const ConfigFile& f) {
     else if (s == "input" && k == "gnss_protocol") {
       if (e.value != "nmea" && e.value != "ubx") throw ConfigError(f.name(), e.line, Field(e), "unknown protocol '" + e.value + "' (known: nmea, ubx)");
       c.gnss_protocol = e.value;
-    } else if (s == "filter" && k == "nmea_uere_m") c.nmea_uere_m = ToDouble(f, e, 0.005, 100.0);
+    } else if (s == "input" && k == "gnss_configure") {
+      if (e.value != "true" && e.value != "false") throw ConfigError(f.name(), e.line, Field(e), "expected true or false");
+      c.gnss_configure = e.value == "true";
+    } else if (s == "input" && k == "gnss_rate_hz") c.gnss_rate_hz = ToDouble(f, e, 0.0, 10.0);
+    else if (s == "filter" && k == "nmea_uere_m") c.nmea_uere_m = ToDouble(f, e, 0.005, 100.0);
     else if (s == "input" && k == "imu_device") c.imu_device = e.value;
     else if (s == "input" && k == "imu_baud") c.imu_baud = ToInt(f, e, 1200, 921600);
     else if (s == "input" && k == "imu_format") {

@@ -28,13 +28,15 @@ void AddGnss(const Scenario& s, std::uint64_t seed, const std::string& dir, Devi
     cfg.model->p_BA_B_m = rx.p_BA_B_m;
     cfg.start = s.gnss.start;
     cfg.faults = s.gnss.faults;
-    // the scenario's global fault timeline: outages and glitches reach every receiver
+    // the scenario's global fault timeline: outages, data gaps and glitches reach every receiver
     for (const Fault& f : s.faults.faults) {
       gnss::GnssFault g;
       g.start_s = ToSeconds(f.start);
       g.end_s = ToSeconds(f.end);
       if (f.kind == FaultKind::kGnssOutage) {
         g.kind = gnss::GnssFault::Kind::kOutage;
+      } else if (f.kind == FaultKind::kGnssDataGap) {
+        g.kind = gnss::GnssFault::Kind::kDataGap;
       } else if (f.kind == FaultKind::kGnssGlitch) {
         g.kind = gnss::GnssFault::Kind::kStep;
         g.offset_N_m = Eigen::Vector3d(f.Param("east_m", 0), f.Param("north_m", 0), f.Param("up_m", 0));

@@ -25,6 +25,7 @@ struct KindSpec {
 const std::vector<KindSpec>& Kinds() {
   static const std::vector<KindSpec> kinds{
       {FaultKind::kGnssOutage, "gnss_outage", false, false, {}},
+      {FaultKind::kGnssDataGap, "gnss_data_gap", false, false, {}},
       {FaultKind::kGnssGlitch, "gnss_glitch", false, false,
        {{"north_m", -1e4, 1e4, 0}, {"east_m", -1e4, 1e4, 0}, {"up_m", -1e4, 1e4, 0}}},
       {FaultKind::kByteCorruption, "byte_corruption", false, true, {{"probability", 0, 1, 1e-3}}},

@@ -13,7 +13,10 @@ constexpr double kHorizonsS[] = {1, 2, 5, 10, 20, 30, 60};
 
 std::vector<OutageMetrics> ComputeOutages(const std::vector<ErrorSample>& errors, const FaultTimeline& faults,
                                           double reconverged_error_m) {
-  const std::vector<Fault> outages = faults.OfKind(FaultKind::kGnssOutage);
+  // a data gap is an outage for the estimator: no GNSS reaches it
+  std::vector<Fault> outages = faults.OfKind(FaultKind::kGnssOutage);
+  for (const Fault& f : faults.OfKind(FaultKind::kGnssDataGap)) outages.push_back(f);
+  std::stable_sort(outages.begin(), outages.end(), [](const Fault& a, const Fault& b) { return a.start < b.start; });
   std::vector<OutageMetrics> out;
   for (std::size_t k = 0; k < outages.size(); ++k) {
     const Fault& f = outages[k];

@@ -103,6 +103,7 @@ std::vector<std::string> WritePlots(const RunReport& r, const ReportSeries& s, c
     c.x_label = "latency (ms)";
     c.y_label = "solutions";
     c.y_from_zero = true;
+    c.empty_note = "no data: latency is measured in real-time and scaled runs (--mode realtime|scaled)";
     if (!s.latency_ms.empty()) {
       const auto [lo_it, hi_it] = std::minmax_element(s.latency_ms.begin(), s.latency_ms.end());
       const double lo = *lo_it, hi = std::max(*hi_it, lo + 1e-3);

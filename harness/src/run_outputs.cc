@@ -43,6 +43,7 @@ void WriteNavdConfig(const std::string& path, const Scenario& s, const std::stri
     out << "imu_device = " << (dir / s.mcu.link).string() << "\nimu_baud = " << s.mcu.config.baud
         << "\nimu_format = mcu\n";
   }
+  for (const auto& [key, value] : s.estimator.navd_input) out << key << " = " << value << "\n";
   out << "\n[time]\nleap_seconds = " << gnss::LeapSecondsAtUnix(s.start_unix_ns / 1000000000LL) << "\n\n"
       << "[filter]\nmode = " << s.estimator.navd_mode << "\n";
   // navd's body origin is the IMU: the antenna relative to the board

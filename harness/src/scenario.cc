@@ -24,20 +24,33 @@ const std::vector<std::string> kCriterionMetrics{
 
 namespace {
 
+// A mapping of navd.conf keys of one section to scalar values, in file order.
+std::vector<std::pair<std::string, std::string>> ReadNavdKeys(const YamlReader& f, const char* section,
+                                                              const std::vector<std::string>& reserved = {}) {
+  if (!f.IsMap()) f.Fail(std::string("expected a mapping of navd [") + section + "] keys to values");
+  std::vector<std::pair<std::string, std::string>> keys;
+  for (const auto& kv : f.node()) {
+    const std::string key = kv.first.Scalar();
+    if (key.empty() || key.find_first_of(" =[]#\n") != std::string::npos) f.Fail(key, "not a navd key");
+    for (const auto& r : reserved) {
+      if (key == r) f.Fail(key, "set by hil from the scenario's devices");
+    }
+    if (!kv.second.IsScalar()) f.Fail(key, "expected a single value (navd lists are comma-separated strings)");
+    keys.emplace_back(key, kv.second.Scalar());
+  }
+  return keys;
+}
+
 void ReadEstimator(const YamlReader& r, EstimatorSpec& e) {
-  r.CheckKeys({"command", "output", "navd_mode", "navd_filter", "reference_point", "silence_timeout_s", "startup_s"});
+  r.CheckKeys({"command", "output", "navd_mode", "navd_filter", "navd_input", "reference_point", "silence_timeout_s",
+               "startup_s"});
   e.reference_point = r.Choice("reference_point", e.reference_point, {"auto", "body", "antenna", "imu"});
   e.command = r.String("command", e.command);
   e.output = r.Choice("output", e.output, {"json_stdout", "gpsd_json", "nmea_stdout", "nmea_pty", "n2k_candump"});
   e.navd_mode = r.Choice("navd_mode", e.navd_mode, {"gnss_only", "ekf", "planar2d", "imu_only", "multi_gnss"});
-  if (auto f = r.OptionalChild("navd_filter")) {
-    if (!f->IsMap()) f->Fail("expected a mapping of navd [filter] keys to values");
-    for (const auto& kv : f->node()) {
-      const std::string key = kv.first.Scalar();
-      if (key.empty() || key.find_first_of(" =[]#\n") != std::string::npos) f->Fail(key, "not a navd key");
-      if (!kv.second.IsScalar()) f->Fail(key, "expected a single value (navd lists are comma-separated strings)");
-      e.navd_filter.emplace_back(key, kv.second.Scalar());
-    }
+  if (auto f = r.OptionalChild("navd_filter")) e.navd_filter = ReadNavdKeys(*f, "filter");
+  if (auto f = r.OptionalChild("navd_input")) {
+    e.navd_input = ReadNavdKeys(*f, "input", {"gnss_device", "gnss_baud", "imu_device", "imu_baud", "imu_format"});
   }
   e.silence_timeout_s = r.DoubleIn("silence_timeout_s", e.silence_timeout_s, 0.5, 3600);
   e.startup_s = r.DoubleIn("startup_s", e.startup_s, 0, 60);

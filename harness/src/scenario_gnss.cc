@@ -20,6 +20,7 @@
 //     - {kind: obstruction, start_s: 60, end_s: 70, elevation_deg: 40}
 //     - {kind: step, start_s: 80, end_s: 90, offset_m: [2, 0, 0]}     # ENU
 //     - {kind: multipath, start_s: 100, end_s: 110, sigma_m: 3}
+//     - {kind: data_gap, start_s: 120, end_s: 130}   # output removed, receiver keeps its fix
 #include <cmath>
 #include <numbers>
 
@@ -31,11 +32,12 @@ namespace {
 gnss::GnssFault ReadFault(const YamlReader& f) {
   f.CheckKeys({"kind", "start_s", "end_s", "elevation_deg", "offset_m", "sigma_m"});
   gnss::GnssFault g;
-  const std::string kind = f.Choice("kind", "outage", {"outage", "obstruction", "step", "multipath"});
+  const std::string kind = f.Choice("kind", "outage", {"outage", "obstruction", "step", "multipath", "data_gap"});
   g.kind = kind == "outage" ? gnss::GnssFault::Kind::kOutage
            : kind == "obstruction" ? gnss::GnssFault::Kind::kObstruction
            : kind == "step" ? gnss::GnssFault::Kind::kStep
-                            : gnss::GnssFault::Kind::kMultipath;
+           : kind == "multipath" ? gnss::GnssFault::Kind::kMultipath
+                                 : gnss::GnssFault::Kind::kDataGap;
   g.start_s = f.DoubleIn("start_s", 0, 0, 1e7);
   g.end_s = f.DoubleIn("end_s", g.start_s, 0, 1e7);
   if (g.end_s <= g.start_s) f.Fail("end_s", "must be after start_s");

@@ -1,10 +1,17 @@
 #include "hil/harness/scheduler.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "hil/truth/truth_integrator.h"
 
 namespace hil::harness {
+namespace {
+
+/// In real time, how long the scheduler sleeps at most before it looks for host bytes again.
+constexpr Duration kHostPollPeriod = std::chrono::milliseconds(1);
+
+}  // namespace
 
 Scheduler::Scheduler(const Scenario& scenario, DeviceSet& devices, ByteFaultInjector& faults,
                      const link::RealtimePacer* pacer, std::ostream& fixes_csv)
@@ -23,6 +30,22 @@ void Scheduler::Dispatch(std::size_t d, DeviceOutput& out) {
     for (auto& ep : set_.endpoints[d]) ep->WriteAll();
     if (set_.can) set_.can->SendAll();
   }
+}
+
+bool Scheduler::PollHosts(Time t_host, DeviceOutput& out) {
+  bool replied = false;
+  for (std::size_t d = 0; d < set_.devices.size(); ++d) {
+    const Time t_rx = pacer_ ? pacer_->SimTimeOfWall(link::RealtimePacer::MonotonicNs()) : t_host;
+    for (std::size_t p = 0; p < set_.endpoints[d].size(); ++p) {
+      if (const std::string rx = set_.endpoints[d][p]->PollHost(t_rx); !rx.empty()) {
+        set_.devices[d]->OnHostBytes(static_cast<int>(p), t_rx, rx, out);
+        set_.endpoints[d][p]->set_baud(set_.devices[d]->baud(static_cast<int>(p)));
+        replied = replied || !out.serial.empty() || !out.can.empty();
+        Dispatch(d, out);
+      }
+    }
+  }
+  return replied;
 }
 
 void Scheduler::RecordFixes(Time t) {
@@ -77,9 +100,16 @@ void Scheduler::Run(const std::function<bool(Time)>& keep_going) {
       }
       if (ep_next && (*t_byte < *t_event || *t_event > t_end)) {
         ep_next->WriteNextByte(*pacer_);
+        PollHosts(*t_byte, out);  // a host's command arrives while the device talks
         continue;
       }
-      if (*t_event <= t_end) pacer_->SleepUntil(*t_event);
+      if (*t_event <= t_end) {
+        // idle until the next event, but a host command is read when it arrives (within ~1 ms),
+        // not at the next event: the device may answer in between
+        const Time t_wake = std::min(*t_event, pacer_->SimTimeOfWall(link::RealtimePacer::MonotonicNs()) + kHostPollPeriod);
+        pacer_->SleepUntil(t_wake);
+        if (PollHosts(t_wake, out) || t_wake < *t_event) continue;
+      }
     }
     if (*t_event > t_end) break;
     const TruthSample ts = truth.Sample(*t_event);
@@ -90,16 +120,7 @@ void Scheduler::Run(const std::function<bool(Time)>& keep_going) {
     }
     RecordFixes(*t_event);
     // configuration commands from the host reach the device with their arrival time
-    for (std::size_t d = 0; d < set_.devices.size(); ++d) {
-      const Time t_host = pacer_ ? pacer_->SimTimeOfWall(link::RealtimePacer::MonotonicNs()) : *t_event;
-      for (std::size_t p = 0; p < set_.endpoints[d].size(); ++p) {
-        if (const std::string rx = set_.endpoints[d][p]->PollHost(t_host); !rx.empty()) {
-          set_.devices[d]->OnHostBytes(static_cast<int>(p), t_host, rx, out);
-          set_.endpoints[d][p]->set_baud(set_.devices[d]->baud(static_cast<int>(p)));
-          Dispatch(d, out);
-        }
-      }
-    }
+    PollHosts(*t_event, out);
     if (set_.can) {
       const Time t_bus = pacer_ ? pacer_->SimTimeOfWall(link::RealtimePacer::MonotonicNs()) : *t_event;
       for (const CanFrame& f : set_.can->PollBus(t_bus)) bus_frames_.push_back(f);

@@ -104,7 +104,8 @@ std::string RenderSvg(const PlotChart& c) {
   o << "<text transform=\"translate(16," << Num(mt + ph / 2) << ") rotate(-90)\" text-anchor=\"middle\">"
     << XmlEscape(c.y_label) << "</text>\n";
   if (empty) {
-    o << "<text x=\"" << Num(ml + pw / 2) << "\" y=\"" << Num(mt + ph / 2) << "\" text-anchor=\"middle\" fill=\"#888\">no data</text>\n";
+    o << "<text x=\"" << Num(ml + pw / 2) << "\" y=\"" << Num(mt + ph / 2) << "\" text-anchor=\"middle\" fill=\"#888\">"
+      << XmlEscape(c.empty_note) << "</text>\n";
   }
   o << "<g clip-path=\"url(#plot)\">\n";
   for (const auto& s : c.series) {

@@ -148,6 +148,44 @@ TEST(HilRunEstimatorE2eTest, GpsdIsAnEstimatorUnderTest) {
   EXPECT_GE(report["metrics"]["samples"].get<int>(), 15);
 }
 
+TEST(HilRunEstimatorE2eTest, NavdConfiguresAStockReceiverWithUbxCfg) {
+  // the emulated NEO-5M starts with its default NMEA output; navd switches it to UBX navigation at
+  // 4 Hz with CFG commands over the pty and waits for each ACK, as a production driver does. A
+  // command/answer session depends on the host's reaction time, so it runs on the wall clock (scaled
+  // ×2): a virtual run would see the host answer only when it catches up with the emulation
+  TempDir dir("e2e_cfg");
+  WriteFile(dir / "s.yaml", "name: cfg\nduration_s: 20\n" + kOrigin +
+                                "estimator:\n  navd_input: {gnss_protocol: ubx, gnss_configure: true, gnss_rate_hz: 4}\n"
+                                "criteria:\n  - {metric: output_rate_hz, min: 3.9}\n");
+  const CommandResult r = RunCommand(Hil() + " run " + dir / "s.yaml" + " --mode scaled --speed 2 --out " + dir / "run");
+  const std::string stderr_text = ReadFile(dir / "run/estimator.stderr");
+  EXPECT_EQ(r.exit_code, 0) << r.out << stderr_text;
+  EXPECT_NE(stderr_text.find("11 commands: 11 acked, 0 refused, 0 unanswered"), std::string::npos) << stderr_text;
+  EXPECT_NE(ReadFile(dir / "run/navd.conf").find("gnss_configure = true"), std::string::npos);
+  // the capture holds both directions: navd's commands, the receiver's ACKs, then UBX only
+  const std::string cap = ReadFile(dir / "run/captures/ttyGPS.cap");
+  std::istringstream in(cap);
+  std::string line;
+  int rx = 0, acks = 0, posllh_late = 0, nmea_late = 0;
+  while (std::getline(in, line)) {
+    std::istringstream f(line);
+    std::string dir_field, t_emu, period, wall, name;
+    f >> dir_field >> t_emu >> period >> wall >> name;
+    if (dir_field == "rx") ++rx;
+    if (dir_field != "tx") continue;
+    const bool late = std::stoll(t_emu) > 10'000'000'000LL;
+    acks += name == "UBX-ACK-ACK" ? 1 : 0;
+    posllh_late += late && name == "UBX-NAV-POSLLH" ? 1 : 0;
+    nmea_late += late && name.rfind("NMEA-", 0) == 0 ? 1 : 0;
+  }
+  EXPECT_GE(rx, 1) << "host-to-receiver bytes are captured";
+  EXPECT_EQ(acks, 11);
+  EXPECT_NEAR(posllh_late, 40, 1) << "NAV-POSLLH at 4 Hz in the last 10 s";
+  EXPECT_EQ(nmea_late, 0) << "NMEA switched off";
+  const auto report = nlohmann::json::parse(ReadFile(dir / "run/report.json"));
+  EXPECT_NEAR(report["metrics"]["output_rate_hz"].get<double>(), 4.0, 0.1);
+}
+
 TEST(HilRunFaultsE2eTest, OutagesAreEvaluatedAndByteCorruptionReachesTheCapture) {
   TempDir dir("e2e_faults");
   WriteFile(dir / "s.yaml", "name: faults\nduration_s: 40\n" + kOrigin +

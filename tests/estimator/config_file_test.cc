@@ -50,6 +50,26 @@ TEST(ConfigFileTest, ReferenceExampleIsValidAndComplete) {
   EXPECT_TRUE(c.nmea_device.empty());
 }
 
+TEST(ConfigFileTest, ReceiverConfigurationKeys) {
+  const NavdConfig on = NavdConfig::FromFile(
+      ConfigFile::Parse("[input]\ngnss_protocol = ubx\ngnss_configure = true\ngnss_rate_hz = 4\n", "n.conf"));
+  EXPECT_TRUE(on.gnss_configure);
+  EXPECT_DOUBLE_EQ(on.gnss_rate_hz, 4.0);
+  EXPECT_FALSE(NavdConfig::FromFile(ConfigFile::Parse("[input]\n", "n.conf")).gnss_configure) << "off by default";
+  try {
+    NavdConfig::FromFile(ConfigFile::Parse("[input]\ngnss_configure = yes\n", "n.conf"));
+    ADD_FAILURE() << "accepted 'yes'";
+  } catch (const ConfigError& e) {
+    EXPECT_STREQ(e.what(), "n.conf:2: [input] gnss_configure: expected true or false");
+  }
+  try {
+    NavdConfig::FromFile(ConfigFile::Parse("[input]\ngnss_rate_hz = 50\n", "n.conf"));
+    ADD_FAILURE() << "accepted 50 Hz";
+  } catch (const ConfigError& e) {
+    EXPECT_STREQ(e.what(), "n.conf:2: [input] gnss_rate_hz: value 50 out of range [0, 10]");
+  }
+}
+
 TEST(ConfigFileTest, FilterSchemaErrorsAreClear) {
   const auto err = [](const std::string& text) {
     try {

@@ -78,6 +78,27 @@ TEST(OutageMetricsTest, GrowthMaximumAndReconvergence) {
   EXPECT_FALSE(never[0].reconvergence_time_s);
 }
 
+TEST(OutageMetricsTest, DataGapsCountAsOutagesInTimeOrder) {
+  FaultTimeline f;
+  Fault gap;
+  gap.kind = FaultKind::kGnssDataGap;
+  gap.start = TimeFromSeconds(5);
+  gap.end = TimeFromSeconds(8);
+  Fault outage;
+  outage.kind = FaultKind::kGnssOutage;
+  outage.start = TimeFromSeconds(20);
+  outage.end = TimeFromSeconds(25);
+  f.faults = {outage, gap};
+  std::vector<ErrorSample> errors;
+  for (int t = 0; t <= 30; ++t) errors.push_back(Err(t, t >= 5 && t <= 8 ? 0.5 : 0.1));
+  const auto m = ComputeOutages(errors, f, 1.0);
+  ASSERT_EQ(m.size(), 2u);
+  EXPECT_DOUBLE_EQ(m[0].start_s, 5.0);
+  EXPECT_NEAR(m[0].max_horizontal_error_m, 0.5, 1e-12);
+  EXPECT_DOUBLE_EQ(m[1].start_s, 20.0);
+  EXPECT_NEAR(m[1].max_horizontal_error_m, 0.1, 1e-12);
+}
+
 TEST(OutageMetricsTest, OutputRateAndMissingSolutions) {
   std::vector<EstimateRecord> r;
   for (int i = 0; i < 100; ++i) {

@@ -97,6 +97,7 @@ void Neo5mDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
   cond.sbas_enabled = cfg.sbas_enabled();
   cond.max_sbas = cfg.sbas[2];
   ErrorInputs in;
+  bool data_gap = false;
   for (const GnssFault& f : config_.faults) {
     if (t_s < f.start_s || t_s >= f.end_s) continue;
     switch (f.kind) {
@@ -104,6 +105,7 @@ void Neo5mDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
       case GnssFault::Kind::kObstruction: cond.blocked_below_deg = std::max(cond.blocked_below_deg, f.elevation_deg); break;
       case GnssFault::Kind::kStep: in.offset_N_m += f.offset_N_m; break;
       case GnssFault::Kind::kMultipath: in.multipath_sigma_m = std::hypot(in.multipath_sigma_m, f.sigma_m); break;
+      case GnssFault::Kind::kDataGap: data_gap = true; break;
     }
   }
   const double gps_s = static_cast<double>(e.gps.week) * 604800.0 + e.gps.tow_s();
@@ -168,7 +170,7 @@ void Neo5mDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
   e.f_acc_psps = valid ? 500.0 : 1.0e5;
   last_epoch_ = e;
   ++epoch_count_;
-  EmitEpoch(t + config_.output_lag, out);
+  if (!data_gap) EmitEpoch(t + config_.output_lag, out);
 }
 
 void Neo5mDevice::EmitEpoch(Time t_ready, DeviceOutput& out) {

@@ -332,5 +332,22 @@ TEST(Neo5mDeviceTest, RtkProfileIsTenHertzFloatThenFixed) {
   EXPECT_LT(std::abs(f.lat_deg - 35.4796096) * 110950.0, 0.05);
 }
 
+TEST(Neo5mDeviceTest, DataGapSilencesTheOutputButKeepsTheRtkFix) {
+  Neo5mConfig c = Config();
+  c.profile = "rtk";
+  c.faults.push_back({GnssFault::Kind::kDataGap, 40, 50});
+  Harness h(c);
+  const auto out = h.RunUntil(60);
+  std::vector<std::string> gga;
+  for (const auto& m : out) {
+    const double t = ToSeconds(m.t_ready);
+    EXPECT_FALSE(t > 40.2 && t < 50.0) << m.name << " sent at " << t << " s inside the data gap";
+    if (m.name == "NMEA-GGA" && t > 50.0 && t < 50.2) gga.push_back(m.bytes);
+  }
+  ASSERT_EQ(gga.size(), 1u) << "the first epoch after the gap is sent";
+  EXPECT_NE(gga[0].find(",4,"), std::string::npos) << "still RTK fixed, no re-acquisition: " << gga[0];
+  for (const auto& f : h.fixes) EXPECT_TRUE(ToSeconds(f.t_validity) < 6 || f.valid()) << "the receiver keeps its fix";
+}
+
 }  // namespace
 }  // namespace hil::gnss

@@ -21,6 +21,11 @@ struct NavdConfig {
   /// NMEA carries no accuracy estimate: a fix's horizontal 1σ per axis is HDOP × nmea_uere_m / √2
   /// (vertical twice that). UBX input uses the receiver's own hAcc/vAcc instead.
   double nmea_uere_m = 2.5;
+  /// Configure the receiver at start-up with UBX CFG commands, each waiting for its ACK (and again
+  /// after the port reopens): ubx → NAV-POSLLH/VELNED/SOL/TIMEGPS on, NMEA off; nmea → GGA and RMC
+  /// only. Off by default (the receiver's saved configuration is used as it is).
+  bool gnss_configure = false;
+  double gnss_rate_hz = 0;       ///< with gnss_configure: CFG-RATE to this rate; 0 leaves the rate
   std::string imu_device;        ///< serial device of the IMU microcontroller; empty = none
   int imu_baud = 57600;
   std::string imu_format = "mcu";///< mcu (binary frame protocol v1)

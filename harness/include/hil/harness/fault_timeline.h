@@ -25,7 +25,7 @@ namespace hil::harness {
 
 class YamlReader;
 
-enum class FaultKind { kGnssOutage, kGnssGlitch, kByteCorruption, kFrameDrop, kMcuReset, kBaudMismatch };
+enum class FaultKind { kGnssOutage, kGnssDataGap, kGnssGlitch, kByteCorruption, kFrameDrop, kMcuReset, kBaudMismatch };
 
 /// The scenario-file name of a kind ("gnss_outage", …).
 const char* FaultKindName(FaultKind kind);

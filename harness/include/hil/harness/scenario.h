@@ -88,6 +88,9 @@ struct EstimatorSpec {
   /// Further navd.conf `[filter]` keys (noise grades, gates, …), written as given; navd validates
   /// them and names the bad key (a rejected key fails the run with navd's message).
   std::vector<std::pair<std::string, std::string>> navd_filter;
+  /// Further navd.conf `[input]` keys (gnss_protocol, gnss_configure, gnss_rate_hz, …); the device
+  /// paths and bauds are hil's, from the scenario's devices.
+  std::vector<std::pair<std::string, std::string>> navd_input;
   /// The point of the vehicle the estimate describes: "body" (the reference point), "antenna"
   /// (the first receiver's antenna), "imu" (the IMU board), or "auto": antenna for a GNSS-only
   /// navd, the IMU for navd fusing the board, the body otherwise.

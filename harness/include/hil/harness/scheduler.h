@@ -39,6 +39,9 @@ class Scheduler {
  private:
   void Dispatch(std::size_t device, DeviceOutput& out);
   void RecordFixes(Time t);
+  /// Hands the bytes hosts wrote since the last call to their devices, at `t_host` (virtual) or at
+  /// their wall arrival time (real time). Returns true when a device queued a reply.
+  bool PollHosts(Time t_host, DeviceOutput& out);
 
   const Scenario& scenario_;
   DeviceSet& set_;

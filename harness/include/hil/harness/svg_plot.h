@@ -29,10 +29,11 @@ struct PlotChart {
   std::vector<PlotBand> bands;   ///< shaded vertical intervals
   bool equal_aspect = false;     ///< same metres per pixel on both axes
   bool y_from_zero = false;      ///< y axis starts at 0
+  std::string empty_note = "no data";  ///< the note an empty chart shows in its frame
   int width_px = 760, height_px = 420;
 };
 
-/// Renders the chart as an SVG document. An empty chart renders its frame and a "no data" note.
+/// Renders the chart as an SVG document. An empty chart renders its frame and its `empty_note`.
 std::string RenderSvg(const PlotChart& chart);
 
 /// "Nice" tick positions (1, 2, 5 × 10^k steps) covering [lo, hi].

@@ -17,7 +17,9 @@
 /// with kind `outage` (sky blocked: no satellites, no fix, re-acquisition afterwards),
 /// `obstruction` (nothing received below `elevation_deg`: fewer satellites, worse DOP, 2D or no
 /// fix), `step` (position offset `offset_m` ENU while active), `multipath` (extra correlated
-/// error of `sigma_m` per axis while active).
+/// error of `sigma_m` per axis while active), `data_gap` (the receiver keeps tracking and its fix
+/// keeps its quality, but none of its periodic output reaches the link: the GNSS data removed from a
+/// recorded run, as paper 004 injected its outages).
 
 #include <cstdint>
 #include <optional>
@@ -39,7 +41,7 @@ namespace hil::gnss {
 
 /// One scripted receiver fault, active for start_s ≤ t < end_s (scenario seconds).
 struct GnssFault {
-  enum class Kind { kOutage, kObstruction, kStep, kMultipath } kind = Kind::kOutage;
+  enum class Kind { kOutage, kObstruction, kStep, kMultipath, kDataGap } kind = Kind::kOutage;
   double start_s = 0, end_s = 0;
   double elevation_deg = 30.0;                             ///< obstruction
   Eigen::Vector3d offset_N_m = Eigen::Vector3d::Zero();    ///< step (ENU)
