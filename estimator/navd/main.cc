@@ -18,10 +18,13 @@
 #include <cstdio>
 #include <cstring>
 #include <ctime>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <numbers>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "hil/estimator/config_file.h"
 #include "hil/estimator/drivers/mcu_frame_decoder.h"
@@ -38,7 +41,7 @@
 #include "hil/estimator/outputs/nmea0183_writer.h"
 #include "can_imu_input.h"
 #include "can_output.h"
-#include "receiver_setup.h"
+#include "gnss_receivers.h"
 #include "serial_device.h"
 
 namespace {
@@ -61,36 +64,21 @@ void PrintUsage() {
       "  status) to [output] json, and NMEA 0183 (GGA, RMC, HDT) to [output] nmea_device.\n"
       "options:\n"
       "  --config FILE   configuration (INI; every key is documented in navd.conf.example):\n"
-      "                  [input] gnss_device, gnss_baud, gnss_protocol (nmea|ubx), gnss_configure,\n"
-      "                  gnss_rate_hz, imu_device, imu_baud, imu_format (mcu|razor_text)\n"
+      "                  [input] gnss_device, gnss_device_1 … (multi_gnss), gnss_baud, gnss_protocol\n"
+      "                  (nmea|ubx), gnss_configure, gnss_rate_hz, imu_device, imu_baud, imu_format\n"
+      "                  (mcu|razor_text)\n"
       "                  [imu] source (serial|can), can_interface, source_address, razor_gnss_latency_s\n"
       "                  [time] leap_seconds\n"
       "                  [filter] mode (ekf|planar2d|gnss_only|imu_only|multi_gnss), lever_arm_m,\n"
       "                  accel_noise, gyro_noise, accel_bias_rw, gyro_bias_rw, init_accel_bias_std,\n"
       "                  init_gyro_bias_std, gnss_error_tau_s, gnss_error_std_m, nhc_std_mps,\n"
-      "                  gate_sigma, fusion_horizon_s, use_gnss_velocity\n"
+      "                  gate_sigma, fusion_horizon_s, use_gnss_velocity, antenna_0_m … (multi_gnss)\n"
       "                  [output] json, rate_hz, nmea_device, can_interface, can_log,\n"
       "                  can_source_address, can_rate_hz\n"
       "  --help          this text\n"
       "examples:\n"
       "  navd --config /etc/navd.conf\n"
       "  navd --config navd.conf > solution.jsonl\n");
-}
-
-est::GnssSample ToGnssSample(const est::drivers::NmeaMeasurement& m, int leap_s, double uere_m) {
-  est::GnssSample g;
-  g.t = est::GpsNsFromUnixNs(m.tov_unix_ns, leap_s);
-  g.position = {m.lat_deg, m.lon_deg, m.height_m};
-  const double sigma = m.hdop.value_or(5.0) * uere_m / std::numbers::sqrt2;
-  g.pos_std_enu_m = {sigma, sigma, 2.0 * sigma};
-  g.fix_quality = m.quality;
-  g.num_sv = m.num_sv;
-  if (m.speed_mps && m.course_deg) {
-    const double c = *m.course_deg * std::numbers::pi / 180.0;
-    g.vel_enu_mps = {*m.speed_mps * std::sin(c), *m.speed_mps * std::cos(c), 0.0};
-    g.has_velocity = true;
-  }
-  return g;
 }
 
 est::NavSolution ToSolution(const est::NavOutput& o, const est::Navigator& nav, int leap_s) {
@@ -200,36 +188,16 @@ int main(int argc, char** argv) {
   const bool razor_text = !cfg.imu.from_can() && cfg.imu_format == "razor_text";
   std::int64_t gnss_read_ns = 0, imu_read_ns = 0;
   est::drivers::RazorImuAdapter razor_adapter;
-  est::drivers::NmeaEpochAssembler assembler;
-  est::drivers::NmeaDecoder nmea([&](const est::drivers::NmeaFix& fix) {
-    const auto m = assembler.Add(fix);
-    if (!m) return;
-    const est::GnssSample g = ToGnssSample(*m, cfg.leap_seconds, cfg.nmea_uere_m);
+  // GNSS receivers (one, or several in multi_gnss mode): one solution per fix in GNSS-only modes
+  hil::navd::GnssReceivers receivers(cfg, [&](const est::GnssSample& g) {
     health.OnGnss(g);
     if (razor_text) razor_adapter.AddGnssArrival(gnss_read_ns, g.t, cfg.imu.razor_gnss_latency_s);
     nav.Push(g);
-    if (!imu_mode) {
-      const est::NavOutput o = nav.Output();
-      if (o.t != last_emitted) emit(o);
-    }
+    if (imu_mode) return;
+    const est::NavOutput o = nav.Output();
+    if (o.valid && o.t != last_emitted) emit(o);
   });
   const std::int64_t period_ns = static_cast<std::int64_t>(std::llround(1e9 / cfg.output_rate_hz));
-  est::drivers::UbxEpochAssembler ubx_epochs;
-  hil::navd::ReceiverSetup receiver_setup(cfg);
-  const bool gnss_ubx = cfg.gnss_protocol == "ubx";
-  est::drivers::UbxDecoder ubx([&](const est::drivers::UbxMessage& msg) {
-    receiver_setup.OnMessage(msg);
-    if (!gnss_ubx) return;
-    const auto g = ubx_epochs.Add(msg);
-    if (!g) return;
-    health.OnGnss(*g);
-    if (razor_text) razor_adapter.AddGnssArrival(gnss_read_ns, g->t, cfg.imu.razor_gnss_latency_s);
-    nav.Push(*g);
-    if (!imu_mode) {
-      const est::NavOutput o = nav.Output();
-      if (o.t != last_emitted) emit(o);
-    }
-  });
   est::drivers::McuImuAdapter mcu_adapter;
   const auto on_imu = [&](const est::ImuSample& s) {
     nav.Push(s);
@@ -261,51 +229,58 @@ int main(int argc, char** argv) {
     }
   }
 
-  health.set_sources({&nmea.stats(), &ubx.stats(), &mcu.stats(), &mcu_adapter.stats(), &nav.stats()});
-  hil::navd::SerialDevice gnss(cfg.gnss_device, cfg.gnss_baud);
+  health.set_sources({&receivers.nmea_totals(), &receivers.ubx_totals(), &mcu.stats(), &mcu_adapter.stats(),
+                      &nav.stats()});
+  // every input device with what its bytes are fed to
   hil::navd::SerialDevice imu(cfg.imu_device, cfg.imu_baud);
+  std::vector<std::pair<hil::navd::SerialDevice*, std::function<void(const std::string&)>>> inputs;
+  for (std::size_t i = 0; i < receivers.size(); ++i) {
+    inputs.emplace_back(&receivers.device(i), [&, i](const std::string& b) {
+      gnss_read_ns = MonotonicNs();
+      receivers.Feed(i, b);
+    });
+  }
+  inputs.emplace_back(&imu, [&](const std::string& b) {
+    imu_read_ns = MonotonicNs();
+    if (razor_text) razor.Feed(b);
+    else mcu.Feed(b);
+  });
+  std::vector<pollfd> p;
+  std::vector<std::size_t> polled;
   std::string buf;
   while (!g_stop) {
-    if (gnss.EnsureOpen() >= 0) receiver_setup.Service(gnss, MonotonicNs());
-    pollfd p[3];
-    nfds_t n = 0;
-    hil::navd::SerialDevice* devs[3];
-    for (hil::navd::SerialDevice* d : {&gnss, &imu}) {
+    receivers.Service(MonotonicNs());  // start-up CFG
+    p.clear();
+    polled.clear();
+    for (std::size_t k = 0; k < inputs.size(); ++k) {
+      hil::navd::SerialDevice* d = inputs[k].first;
       if (d->path().empty() || d->EnsureOpen() < 0) continue;
-      p[n] = {d->fd(), POLLIN, 0};
-      devs[n++] = d;
+      p.push_back({d->fd(), POLLIN, 0});
+      polled.push_back(k);
     }
     if (can_imu) {
-      p[n] = {can_imu->fd(), POLLIN, 0};
-      devs[n++] = nullptr;
+      p.push_back({can_imu->fd(), POLLIN, 0});
+      polled.push_back(inputs.size());  // past the serial inputs: the CAN socket
     }
-    if (n == 0) {
+    if (p.empty()) {
       usleep(100000);
       continue;
     }
-    if (poll(p, n, 200) <= 0) continue;
-    for (nfds_t i = 0; i < n; ++i) {
+    if (poll(p.data(), p.size(), 200) <= 0) continue;
+    for (std::size_t i = 0; i < p.size(); ++i) {
       if (!(p[i].revents & (POLLIN | POLLHUP | POLLERR))) continue;
-      if (!devs[i]) {
+      if (polled[i] == inputs.size()) {
         can_imu->ReadAll(on_imu);
         continue;
       }
       buf.clear();
-      const bool alive = devs[i]->Read(buf);
-      (devs[i] == &gnss ? gnss_read_ns : imu_read_ns) = MonotonicNs();
-      if (devs[i] == &gnss && gnss_ubx) ubx.Feed(buf);
-      else if (devs[i] == &gnss) {
-        if (receiver_setup.active()) ubx.Feed(buf);  // the ACKs of the start-up configuration
-        nmea.Feed(buf);
-      } else if (razor_text) {
-        razor.Feed(buf);
-      }
-      else
-        mcu.Feed(buf);
+      const bool alive = inputs[polled[i]].first->Read(buf);
+      inputs[polled[i]].second(buf);
       if (!alive) usleep(100000);
     }
   }
-  const auto& st = nmea.stats();
+  const auto st = receivers.nmea_stats();
+  const auto ubx_st = receivers.ubx_stats();
   const auto& ns = nav.stats();
   std::fprintf(stderr,
                "navd: stopped; nmea ok=%llu bad_checksum=%llu malformed=%llu unsupported=%llu garbage_bytes=%llu "
@@ -313,12 +288,12 @@ int main(int argc, char** argv) {
                "rejected=%llu resets=%llu ubx ok=%llu bad_checksum=%llu nmea_write_errors=%llu can_frames=%llu can_errors=%llu\n",
                static_cast<unsigned long long>(st.sentences_ok), static_cast<unsigned long long>(st.bad_checksum),
                static_cast<unsigned long long>(st.malformed), static_cast<unsigned long long>(st.unsupported),
-               static_cast<unsigned long long>(st.garbage_bytes), static_cast<unsigned long long>(gnss.reopen_count()),
+               static_cast<unsigned long long>(st.garbage_bytes), static_cast<unsigned long long>(receivers.reopens()),
                static_cast<unsigned long long>(mcu.stats().frames_ok), static_cast<unsigned long long>(mcu.stats().bad_crc),
                static_cast<unsigned long long>(mcu.stats().sequence_gaps), static_cast<unsigned long long>(ns.imu_samples),
                static_cast<unsigned long long>(ns.gnss_late), static_cast<unsigned long long>(ns.gnss_fused),
                static_cast<unsigned long long>(ns.gnss_rejected), static_cast<unsigned long long>(ns.gnss_resets),
-               static_cast<unsigned long long>(ubx.stats().frames_ok), static_cast<unsigned long long>(ubx.stats().bad_checksum),
+               static_cast<unsigned long long>(ubx_st.frames_ok), static_cast<unsigned long long>(ubx_st.bad_checksum),
                static_cast<unsigned long long>(nmea_write_errors), static_cast<unsigned long long>(can->frames_sent()),
                static_cast<unsigned long long>(can->send_errors()));
   if (razor_text) {

@@ -112,6 +112,7 @@ NavdConfig NavdConfig::FromFile(const ConfigFile& f) {
     else if (s == "output" && k == "can_source_address") c.can_source_address = ToInt(f, e, 0, 251);
     else if (s == "output" && k == "can_rate_hz") c.can_rate_hz = ToDouble(f, e, 0.1, 100.0);
     else if (s == "imu") ReadNavdImuKey(f, e, c.imu);
+    else if (c.gnss_receivers.Read(f, e)) continue;  // gnss_device_N, antenna_N_m
     else throw ConfigError(f.name(), e.line, Field(e), "unknown key");
   }
   const bool needs_imu = c.nav.mode == NavMode::kEkf || c.nav.mode == NavMode::kPlanar2d || c.nav.mode == NavMode::kImuOnly;
@@ -120,6 +121,7 @@ NavdConfig NavdConfig::FromFile(const ConfigFile& f) {
     throw ConfigError(f.name(), mode_line, "[filter] mode",
                       std::string("mode ") + NavModeName(c.nav.mode) + " needs [input] imu_device");
   }
+  c.gnss_receivers.Validate(f, c.gnss_device, mode_line, c.nav);
   if (c.nav.ekf.gnss_error_tau_s > 0 && c.nav.ekf.gnss_error_std_m <= 0) {
     throw ConfigError(f.name(), 0, "[filter] gnss_error_std_m", "must be > 0 when gnss_error_tau_s is set");
   }

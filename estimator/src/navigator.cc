@@ -1,5 +1,6 @@
 #include "hil/estimator/navigator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -249,26 +250,40 @@ void Navigator::GnssOnlyFix(const GnssSample& g) {
 }
 
 void Navigator::MultiGnssFix(const GnssSample& g) {
-  if (g.antenna < 0 || g.antenna > 2) {
+  const int n = std::clamp(params_.multi_antenna_count, 1, kMaxGnssAntennas);
+  if (g.antenna < 0 || g.antenna >= n) {
     ++stats_.bad_input;
     return;
   }
   EnsureFrame(g.position);
-  multi_[g.antenna] = g;
-  multi_have_[g.antenna] = true;
-  for (int i = 0; i < 3; ++i) {
-    if (!multi_have_[i] || std::llabs(multi_[i].t - g.t) > 1'000'000) return;
+  // keep the receiver's fix; an epoch is complete when every receiver has a fix of that time
+  // (within 1 ms). Completing it drops every older fix: epochs are combined in time order.
+  multi_[g.antenna].Push(g);
+  GnssSample epoch[kMaxGnssAntennas];
+  for (int i = 0; i < n; ++i) {
+    bool found = false;
+    for (std::size_t k = 0; k < multi_[i].size() && !found; ++k) {
+      if (std::llabs(multi_[i][k].t - g.t) <= 1'000'000) {
+        epoch[i] = multi_[i][k];
+        found = true;
+      }
+    }
+    if (!found) return;
+  }
+  for (int i = 0; i < n; ++i) {
+    while (!multi_[i].empty() && multi_[i].front().t <= g.t + 1'000'000) multi_[i].PopFront();
   }
   // centroid of the antennas minus the body-frame centroid; heading by a 2-D Procrustes fit
-  Eigen::Vector3d p[3];
+  const double w = 1.0 / n;
+  Eigen::Vector3d p[kMaxGnssAntennas];
   Eigen::Vector3d c_N = Eigen::Vector3d::Zero(), c_B = Eigen::Vector3d::Zero();
-  for (int i = 0; i < 3; ++i) {
-    p[i] = frame_.ToLocal(multi_[i].position);
-    c_N += p[i] / 3.0;
-    c_B += params_.multi_antenna_B_m.col(i) / 3.0;
+  for (int i = 0; i < n; ++i) {
+    p[i] = frame_.ToLocal(epoch[i].position);
+    c_N += p[i] * w;
+    c_B += params_.multi_antenna_B_m.col(i) * w;
   }
   double sxx = 0, sxy = 0;
-  for (int i = 0; i < 3; ++i) {
+  for (int i = 0; i < n; ++i) {
     const Eigen::Vector2d a = (params_.multi_antenna_B_m.col(i) - c_B).head<2>();
     const Eigen::Vector2d b = (p[i] - c_N).head<2>();
     sxx += a.dot(b);
@@ -281,12 +296,11 @@ void Navigator::MultiGnssFix(const GnssSample& g) {
   direct_.p_N_m = c_N - q * c_B;
   direct_.position = frame_.ToLla(direct_.p_N_m);
   direct_.v_N_mps.setZero();
-  for (int i = 0; i < 3; ++i) direct_.v_N_mps += multi_[i].vel_enu_mps / 3.0;
-  direct_.pos_std_enu_m = g.pos_std_enu_m / std::sqrt(3.0);
+  for (int i = 0; i < n; ++i) direct_.v_N_mps += epoch[i].vel_enu_mps * w;
+  direct_.pos_std_enu_m = g.pos_std_enu_m * std::sqrt(w);
   direct_.q_NB = q;
   direct_.has_attitude = true;
   direct_.status = kStatusGnssFused;
-  for (bool& h : multi_have_) h = false;
 }
 
 NavOutput Navigator::Output() const {

@@ -63,9 +63,9 @@ void PrintSummary(const hil::harness::RunReport& r, const std::string& dir) {
   std::printf("%s  report: %s/report.html\n", r.pass() ? "PASS" : "FAIL", dir.c_str());
 }
 
-std::optional<hil::harness::Scenario> LoadOrReport(const std::string& path) {
+std::optional<hil::harness::Scenario> LoadOrReport(const std::string& path, bool short_form = false) {
   try {
-    return path.empty() ? hil::harness::LoadDefaultScenario() : hil::harness::LoadScenario(path);
+    return path.empty() ? hil::harness::LoadDefaultScenario() : hil::harness::LoadScenario(path, short_form);
   } catch (const hil::harness::ScenarioError& e) {
     std::fprintf(stderr, "hil: invalid scenario: %s\n", e.what());
     return std::nullopt;
@@ -79,7 +79,7 @@ struct RunArgs {
   std::uint64_t seed = 0;
   double speed = 1.0, silence_timeout_s = 0;
   CLI::Option *seed_opt = nullptr, *est_opt = nullptr, *speed_opt = nullptr, *silence_opt = nullptr;
-  bool no_html = false;
+  bool no_html = false, short_form = false;
 };
 
 void AddRun(CLI::App& app, RunArgs& a) {
@@ -98,10 +98,11 @@ void AddRun(CLI::App& app, RunArgs& a) {
                                     "seconds without estimator output that count as a hang (overrides the scenario)")
                       ->check(CLI::Range(0.1, 3600.0));
   a.cmd->add_flag("--no-html", a.no_html, "skip report.html and the plots");
+  a.cmd->add_flag("--short", a.short_form, "the scenario's quick form: its `short:` keys replace the top-level ones");
 }
 
 int Run(const RunArgs& a) {
-  const auto scenario = LoadOrReport(a.scenario);
+  const auto scenario = LoadOrReport(a.scenario, a.short_form);
   if (!scenario) return kExitBadInput;
   if (a.mode == "scaled" && !*a.speed_opt) {
     std::fprintf(stderr, "hil: --mode scaled needs --speed (see hil run --help)\n");
@@ -235,18 +236,22 @@ struct SuiteArgs {
   int jobs = 2, repeat = 1;
   std::uint64_t seed = 1;
   double speed = 1.0;
+  bool short_form = false;
   CLI::Option *seed_opt = nullptr, *est_opt = nullptr, *mode_opt = nullptr, *speed_opt = nullptr;
 };
 
 void AddSuite(CLI::App& app, SuiteArgs& a) {
   a.cmd = app.add_subcommand("suite",
-                             "Run every scenario of a folder (in parallel, optionally repeated with different seeds) "
-                             "into one summary.json and junit.xml; exit 0 when all pass");
+                             "Run every scenario of a folder (in parallel, optionally with several seeds) into one "
+                             "report.md (the papers' figures beside ours), summary.json and junit.xml; exit 0 when all pass");
   a.cmd->add_option("DIR", a.dir, "folder of scenario files (*.yaml)")->required();
   a.cmd->add_option("--out", a.out, "suite folder (default: runs/suite-<DIR name>)");
   a.cmd->add_option("-j,--jobs", a.jobs, "scenarios run at the same time")->check(CLI::Range(1, 64));
-  a.cmd->add_option("--repeat", a.repeat, "runs of each scenario, with seeds SEED, SEED+1, …")->check(CLI::Range(1, 1000));
-  a.seed_opt = a.cmd->add_option("--seed", a.seed, "first seed (default: each scenario's own, or 1 with --repeat)");
+  a.cmd->add_option("--seeds,--repeat", a.repeat, "runs of each scenario, with seeds SEED, SEED+1, … (mean and spread in the report)")
+      ->check(CLI::Range(1, 1000));
+  a.cmd->add_flag("--short", a.short_form,
+                  "each scenario's quick form (its `short:` section: shorter runs, for CI); scenarios without one run whole");
+  a.seed_opt = a.cmd->add_option("--seed", a.seed, "first seed (default: each scenario's own, or 1 with --seeds)");
   a.est_opt = a.cmd->add_option("--estimator", a.estimator, "estimator command for every run");
   a.mode_opt = a.cmd->add_option("--mode", a.mode, "run mode for every run")->check(CLI::IsMember({"virtual", "realtime", "scaled"}));
   a.speed_opt = a.cmd->add_option("--speed", a.speed, "speed-up factor for realtime/scaled runs")->check(CLI::Range(0.01, 1000.0));
@@ -255,7 +260,7 @@ void AddSuite(CLI::App& app, SuiteArgs& a) {
 int Suite(const SuiteArgs& a) {
   hil::harness::SuiteOptions opt;
   opt.dir = a.dir;
-  opt.out_dir = a.out.empty() ? "runs/suite-" + fs::path(a.dir).filename().string() : a.out;
+  opt.out_dir = a.out.empty() ? "runs/suite-" + fs::path(a.dir).lexically_normal().filename().string() : a.out;
   opt.hil_exe = SelfExecutable();
   opt.jobs = a.jobs;
   opt.repeat = a.repeat;
@@ -263,6 +268,7 @@ int Suite(const SuiteArgs& a) {
   if (*a.est_opt) opt.run_args.insert(opt.run_args.end(), {"--estimator", a.estimator});
   if (*a.mode_opt) opt.run_args.insert(opt.run_args.end(), {"--mode", a.mode});
   if (*a.speed_opt) opt.run_args.insert(opt.run_args.end(), {"--speed", std::to_string(a.speed)});
+  opt.short_form = a.short_form;
   opt.run_args.emplace_back("--no-html");
   try {
     if (hil::harness::SuiteScenarios(a.dir).empty()) {
@@ -270,7 +276,7 @@ int Suite(const SuiteArgs& a) {
       return kExitBadInput;
     }
     const hil::harness::SuiteResult r = hil::harness::RunSuite(opt);
-    std::printf("%s  %zu run(s): %zu passed, %zu failed, %zu invalid  summary: %s/summary.json\n",
+    std::printf("%s  %zu run(s): %zu passed, %zu failed, %zu invalid  report: %s/report.md, summary.json, junit.xml\n",
                 r.exit_code() == 0 ? "PASS" : "FAIL", r.runs, r.passed, r.failed, r.invalid, opt.out_dir.c_str());
     return r.exit_code();
   } catch (const std::exception& e) {
@@ -290,7 +296,7 @@ int main(int argc, char** argv) {
       "  hil run my_field.yaml --out out/a        run a scenario file\n"
       "  hil run --mode scaled --speed 10         bytes at their UART times, 10x faster than real time\n"
       "  hil validate --protocol neo5m runs/x/captures/ttyGPS.cap\n"
-      "  hil suite vectors/scenarios -j 2 --repeat 3\n"
+      "  hil suite vectors/scenarios -j 2 --seeds 3     papers' figures beside ours: runs/suite-scenarios/report.md\n"
       "  hil replay runs/x/captures/ttyGPS.cap      replay a capture into runs/replay/ttyGPS\n"
       "Exit codes: 0 every criterion passed (validate: conforms), 1 one failed, 2 bad input.");
   RunArgs run;

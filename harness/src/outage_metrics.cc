@@ -28,6 +28,7 @@ std::vector<OutageMetrics> ComputeOutages(const std::vector<ErrorSample>& errors
       if (e.t < f.start || e.t > f.end) continue;
       ++m.samples;
       m.max_horizontal_error_m = std::max(m.max_horizontal_error_m, e.horizontal());
+      m.max_abs_error_enu_m = m.max_abs_error_enu_m.cwiseMax(e.err_enu_m.cwiseAbs());
     }
     for (const double h : kHorizonsS) {
       if (h > m.end_s - m.start_s) break;

@@ -83,13 +83,20 @@ MetricTable RunMetricTable(const RunReport& r) {
   t["latency_p99_ms"] = r.latency ? std::optional<double>(r.latency->p99_ms) : std::nullopt;
   t["jitter_p99_ms"] = r.timing.jitter_p99_ms;
   std::optional<double> worst, reconv;
+  std::optional<Eigen::Vector3d> worst_enu;
   bool never_reconverged = false;
   for (const auto& o : r.outages) {
     if (o.samples > 0) worst = std::max(worst.value_or(0.0), o.max_horizontal_error_m);
+    if (o.samples > 0) worst_enu = worst_enu.value_or(Eigen::Vector3d::Zero()).cwiseMax(o.max_abs_error_enu_m);
     if (o.reconvergence_time_s) reconv = std::max(reconv.value_or(0.0), *o.reconvergence_time_s);
     else never_reconverged = true;
   }
   t["outage_max_horizontal_error_m"] = worst;
+  const auto axis = [&](int i) { return worst_enu ? std::optional<double>((*worst_enu)[i]) : std::nullopt; };
+  t["outage_max_east_error_m"] = axis(0);
+  t["outage_max_north_error_m"] = axis(1);
+  t["outage_max_up_error_m"] = axis(2);
+  t["outage_max_enu_error_m"] = worst_enu ? std::optional<double>(worst_enu->maxCoeff()) : std::nullopt;
   t["reconvergence_time_s"] = never_reconverged ? std::nullopt : reconv;
   AddFaultMetrics(t, r.fault_injections, r.estimator_health);
   return t;
@@ -159,11 +166,19 @@ void WriteReportJson(const RunReport& r, const std::string& path) {
                             {"end_s", o.end_s},
                             {"samples", o.samples},
                             {"max_horizontal_error_m", o.samples ? nlohmann::json(o.max_horizontal_error_m) : nlohmann::json(nullptr)},
+                            {"max_east_error_m", o.samples ? nlohmann::json(o.max_abs_error_enu_m.x()) : nlohmann::json(nullptr)},
+                            {"max_north_error_m", o.samples ? nlohmann::json(o.max_abs_error_enu_m.y()) : nlohmann::json(nullptr)},
+                            {"max_up_error_m", o.samples ? nlohmann::json(o.max_abs_error_enu_m.z()) : nlohmann::json(nullptr)},
                             {"reconvergence_time_s", OptionalJson(o.reconvergence_time_s)},
                             {"error_growth", growth}});
   }
   j["metrics"] = m;
   j["baselines"] = AccuracyJson(r.baselines);
+  // every criterion metric by name (null when it cannot be computed), for suites and reference figures
+  j["metric_table"] = nlohmann::json::object();
+  for (const auto& [name, value] : RunMetricTable(r)) j["metric_table"][name] = OptionalJson(value);
+  j["baseline_table"] = nlohmann::json::object();
+  for (const auto& [name, value] : AccuracyTable(r.baselines)) j["baseline_table"][name] = OptionalJson(value);
   j["criteria"] = nlohmann::json::array();
   for (const auto& c : r.criteria) {
     j["criteria"].push_back({{"name", c.name}, {"threshold", c.threshold}, {"value", OptionalJson(c.value)}, {"pass", c.pass}});

@@ -61,6 +61,9 @@ std::set<std::string> HostLinks(const Scenario& s, const std::string& raw_comman
   }
   if (raw_command.find("{navd}") != std::string::npos) {
     used.insert(s.gnss.link);
+    if (s.estimator.navd_mode == "multi_gnss") {
+      for (const auto& rx : s.gnss.receivers) used.insert(rx.link);  // navd reads every receiver
+    }
     if (s.mcu.enabled && s.estimator.navd_mode != "gnss_only" && !s.can.imu_to_estimator) used.insert(s.mcu.link);
   }
   return used;
@@ -299,7 +302,8 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
   std::string point = scenario.estimator.reference_point;
   if (point == "auto") {
     const bool navd = scenario.estimator.command.find("{navd}") != std::string::npos && !opt.estimator_command;
-    point = !navd ? "body" : scenario.estimator.navd_mode == "gnss_only" ? "antenna" : scenario.mcu.enabled ? "imu" : "body";
+    const std::string& m = scenario.estimator.navd_mode;
+    point = !navd || m == "multi_gnss" ? "body" : m == "gnss_only" ? "antenna" : scenario.mcu.enabled ? "imu" : "body";
   }
   const Eigen::Vector3d p_BX_B_m = point == "antenna" ? scenario.gnss.model.p_BA_B_m
                                    : point == "imu"   ? scenario.mcu.config.mounting.p_BI_B_m

@@ -13,6 +13,23 @@
 #include "hil/truth/truth_integrator.h"
 
 namespace hil::harness {
+namespace {
+
+// multi_gnss: every receiver's link ([input] gnss_device_N) and antenna relative to the body origin
+// ([filter] antenna_N_m), appended to the [filter] section.
+void WriteNavdReceivers(std::ostream& out, const Scenario& s, const std::string& gnss_device) {
+  const std::filesystem::path dir = std::filesystem::path(gnss_device).parent_path();
+  for (std::size_t i = 0; i < s.gnss.receivers.size(); ++i) {
+    const Eigen::Vector3d& a = s.gnss.receivers[i].p_BA_B_m;
+    out << "antenna_" << i << "_m = " << a.x() << ", " << a.y() << ", " << a.z() << "\n";
+  }
+  out << "\n[input]\n";
+  for (std::size_t i = 1; i < s.gnss.receivers.size(); ++i) {
+    out << "gnss_device_" << i << " = " << (dir / s.gnss.receivers[i].link).string() << "\n";
+  }
+}
+
+}  // namespace
 
 void WriteNavdConfig(const std::string& path, const Scenario& s, const std::string& gnss_device) {
   std::ofstream out(path);
@@ -37,6 +54,7 @@ void WriteNavdConfig(const std::string& path, const Scenario& s, const std::stri
   const Eigen::Vector3d lever = s.gnss.model.p_BA_B_m - s.mcu.config.mounting.p_BI_B_m;
   if (imu) out << "lever_arm_m = " << lever.x() << ", " << lever.y() << ", " << lever.z() << "\n";
   for (const auto& [key, value] : s.estimator.navd_filter) out << key << " = " << value << "\n";
+  if (s.estimator.navd_mode == "multi_gnss") WriteNavdReceivers(out, s, gnss_device);
   // n2k_socketcan: the solution is read from navd's NMEA 2000 frames on the bus (JSON kept in a file)
   if (s.estimator.output == "n2k_socketcan") {
     const std::filesystem::path dir = std::filesystem::path(gnss_device).parent_path();

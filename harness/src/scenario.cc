@@ -19,7 +19,8 @@ const std::vector<std::string> kCriterionMetrics{
     "horizontal_rmse_m", "cep50_m", "cep95_m", "max_horizontal_error_m", "vertical_rmse_m", "velocity_rmse_mps",
     "heading_rmse_deg", "cross_track_rmse_m", "cross_track_p95_m", "cross_track_max_m", "output_rate_hz",
     "latency_p99_ms", "jitter_p99_ms", "outage_max_horizontal_error_m", "reconvergence_time_s", "nees_mean",
-    "solutions_missing_fraction", "fault_recovery_time_s", "fault_injections_min"};
+    "solutions_missing_fraction", "fault_recovery_time_s", "fault_injections_min", "outage_max_east_error_m",
+    "outage_max_north_error_m", "outage_max_up_error_m", "outage_max_enu_error_m"};
 
 namespace {
 
@@ -47,7 +48,7 @@ void ReadEstimator(const YamlReader& r, EstimatorSpec& e) {
   e.command = r.String("command", e.command);
   e.output = r.Choice("output", e.output, {"json_stdout", "gpsd_json", "nmea_stdout", "nmea_pty", "n2k_candump",
                                                   "n2k_socketcan"});
-  e.navd_mode = r.Choice("navd_mode", e.navd_mode, {"gnss_only", "ekf", "planar2d", "imu_only"});
+  e.navd_mode = r.Choice("navd_mode", e.navd_mode, {"gnss_only", "ekf", "planar2d", "imu_only", "multi_gnss"});
   if (auto f = r.OptionalChild("navd_filter")) e.navd_filter = ReadNavdKeys(*f, "filter");
   if (auto f = r.OptionalChild("navd_input")) {
     e.navd_input = ReadNavdKeys(*f, "input", {"gnss_device", "gnss_baud", "imu_device", "imu_baud", "imu_format"});
@@ -87,7 +88,7 @@ std::vector<Criterion> ReadCriteria(const YamlReader& r) {
 Scenario FromReader(const YamlReader& root) {
   std::vector<std::string> keys{"name",     "description", "start_utc", "duration_s", "seed",      "estimator",
                                 "criteria", "faults",      "include",   "evaluation"};
-  for (const auto* section : {&kTruthSectionKeys, &kGnssSectionKeys, &kMcuSectionKeys, &kCanSectionKeys}) {
+  for (const auto* section : {&kTruthSectionKeys, &kGnssSectionKeys, &kMcuSectionKeys, &kCanSectionKeys, &kSuiteSectionKeys}) {
     keys.insert(keys.end(), section->begin(), section->end());
   }
   root.CheckKeys(keys);
@@ -109,6 +110,7 @@ Scenario FromReader(const YamlReader& root) {
   // seed 000: the IMU runs 10 times as fast as the GPS
   if (s.mcu.imu_rate_is_default) s.mcu.config.imu_rate_hz = 10.0 * s.gnss.rate_hz;
   ReadCanSection(root, s.can);
+  ReadSuiteSections(root, keys, s);
   if (auto e = root.OptionalChild("estimator")) ReadEstimator(*e, s.estimator);
   CheckCanUse(root, s);
   if (auto c = root.OptionalChild("criteria")) s.criteria = ReadCriteria(*c);
@@ -135,10 +137,13 @@ std::vector<std::string> ScenarioLibraryDirs() {
   return dirs;
 }
 
-Scenario LoadScenario(const std::string& path) {
+Scenario LoadScenario(const std::string& path, bool short_form) {
   YamlReader root = YamlReader::LoadFile(path);
+  if (short_form) ApplyShortForm(root);  // before the includes: a replaced key is the document's own
   root.ResolveIncludes(std::filesystem::path(path).parent_path().string(), ScenarioLibraryDirs());
-  return FromReader(root);
+  Scenario s = FromReader(root);
+  s.short_form = short_form && s.has_short_form;
+  return s;
 }
 
 Scenario ParseScenario(const std::string& text, const std::string& name) {

@@ -28,4 +28,11 @@ void ReadCanSection(const YamlReader& root, CanLinkSpec& c);
 /// section is read (scenario_can.cc).
 void CheckCanUse(const YamlReader& root, const Scenario& s);
 
+extern const std::vector<std::string> kSuiteSectionKeys;
+/// Reads `paper:` into s.paper and checks `short:` (scenario_suite.cc); `top_level_keys` are the
+/// keys a `short:` section may replace (all but name, include, paper and short).
+void ReadSuiteSections(const YamlReader& root, const std::vector<std::string>& top_level_keys, Scenario& s);
+/// Replaces the root's top-level keys by those of its `short:` section (nothing without one).
+void ApplyShortForm(YamlReader& root);
+
 }  // namespace hil::harness

@@ -1,5 +1,7 @@
 #include "hil/harness/suite.h"
 #include "hil/harness/report.h"
+#include "hil/harness/suite_report.h"
+#include "hil/harness/yaml_reader.h"
 
 #include <fcntl.h>
 #include <sys/wait.h>
@@ -33,6 +35,7 @@ struct Case {
 pid_t Start(const SuiteOptions& opt, const Case& c) {
   std::vector<std::string> args{opt.hil_exe, "run", c.scenario, "--out", c.out};
   if (c.seed) args.insert(args.end(), {"--seed", std::to_string(*c.seed)});
+  if (opt.short_form) args.emplace_back("--short");
   args.insert(args.end(), opt.run_args.begin(), opt.run_args.end());
   const pid_t pid = fork();
   if (pid < 0) throw std::runtime_error("fork failed");
@@ -114,6 +117,18 @@ SuiteResult RunSuite(const SuiteOptions& opt) {
   std::error_code ec;
   fs::create_directories(opt.out_dir, ec);
   if (ec || access(opt.out_dir.c_str(), W_OK) != 0) throw std::runtime_error("cannot write the output folder " + opt.out_dir);
+  const std::int64_t suite_start_ns = link::RealtimePacer::MonotonicNs();
+  std::vector<SuiteScenarioInfo> infos;
+  for (const auto& f : files) {
+    SuiteScenarioInfo info;
+    info.file = f;
+    try {
+      info.scenario = LoadScenario(f, opt.short_form);
+    } catch (const ScenarioError& e) {
+      info.error = e.what();
+    }
+    infos.push_back(std::move(info));
+  }
   std::vector<Case> cases;
   for (const auto& f : files) {
     for (int i = 0; i < std::max(1, opt.repeat); ++i) {
@@ -175,6 +190,10 @@ SuiteResult RunSuite(const SuiteOptions& opt) {
       // the fault campaign: what each fault injected and how navd saw it (fault_report.h)
       if (c.report.contains("fault_injections")) r["fault_injections"] = c.report["fault_injections"];
       if (c.report.contains("estimator_health")) r["estimator_health"] = c.report["estimator_health"];
+      r["metric_table"] = c.report.value("metric_table", nlohmann::json::object());
+      r["baseline_table"] = c.report.value("baseline_table", nlohmann::json::object());
+      r["outages"] = r["metrics"].value("outages", nlohmann::json::array());
+      r["problems"] = c.report.value("problems", nlohmann::json::array());
     } else {
       r["error"] = Tail(c.log);
     }
@@ -184,7 +203,15 @@ SuiteResult RunSuite(const SuiteOptions& opt) {
   summary["failed"] = result.failed;
   summary["invalid"] = result.invalid;
   summary["pass"] = result.exit_code() == 0;
+  summary["short_form"] = opt.short_form;
+  summary["seeds"] = std::max(1, opt.repeat);
+  summary["jobs"] = opt.jobs;
+  summary["wall_time_s"] = static_cast<double>(link::RealtimePacer::MonotonicNs() - suite_start_ns) * 1e-9;
+  summary["scenarios"] = SummariseScenarios(infos, summary["runs"]);
   std::ofstream(opt.out_dir + "/summary.json") << summary.dump(2) << "\n";
+  std::ofstream md(opt.out_dir + "/report.md");
+  if (!md) throw std::runtime_error("cannot write " + opt.out_dir + "/report.md");
+  md << SuiteMarkdown(summary);
   WriteSuiteJunit(cases, opt.out_dir + "/junit.xml");
   return result;
 }

@@ -8,6 +8,7 @@
 
 #include "hil/estimator/config_file.h"
 #include "hil/estimator/navd_imu_config.h"
+#include "hil/estimator/navd_gnss_receivers.h"
 #include "hil/estimator/navigator.h"
 
 namespace hil::estimator {
@@ -15,6 +16,7 @@ namespace hil::estimator {
 struct NavdConfig {
   // [input]
   std::string gnss_device;       ///< serial device of the GNSS receiver (NMEA); empty = none
+  GnssReceiversConfig gnss_receivers;  ///< gnss_device_1 … and the antennas (multi_gnss)
   int gnss_baud = 9600;
   std::string gnss_protocol = "nmea";  ///< nmea (GGA + RMC) or ubx (NAV-POSLLH/VELNED/SOL)
   /// NMEA carries no accuracy estimate: a fix's horizontal 1σ per axis is HDOP × nmea_uere_m / √2
@@ -43,6 +45,8 @@ struct NavdConfig {
   int can_source_address = 0x80; ///< NMEA 2000 source address
   double can_rate_hz = 10.0;     ///< 129025/129026/127250/127257 rate (129029 at 1 Hz)
 
+  /// Every GNSS receiver's device, receiver 0 (gnss_device) first.
+  std::vector<std::string> GnssDevices() const { return gnss_receivers.Devices(gnss_device); }
   /// NavMode shortcut.
   NavMode mode() const { return nav.mode; }
   /// Validates a parsed file. @throws ConfigError naming file, line and key.

@@ -34,12 +34,15 @@ enum class NavMode {
   kPlanar2d,   ///< seed 000's planar Kalman filter
   kGnssOnly,   ///< the GNSS fix, passed through
   kImuOnly,    ///< dead reckoning after alignment (no GNSS updates)
-  kMultiGnss,  ///< seed 000's three receivers: centroid position and heading from their geometry
+  kMultiGnss,  ///< several receivers (seed 000: three): centroid position and heading from their geometry
 };
 /// Mode name as used in the configuration and the JSON output.
 const char* NavModeName(NavMode m);
 /// Mode from its name; nullopt when unknown.
 std::optional<NavMode> NavModeFromName(const char* name);
+
+/// Receivers the multi-receiver mode combines at most.
+inline constexpr int kMaxGnssAntennas = 4;
 
 struct NavigatorParams {
   NavMode mode = NavMode::kEkf;
@@ -51,8 +54,11 @@ struct NavigatorParams {
   double outage_flag_s = 1.5;                    ///< dead-reckoning flag after this long without GNSS
   double reset_after_rejected_s = 5.0;           ///< reset to GNSS after rejections for this long
   bool use_gnss_velocity = true;
-  /// Multi-receiver mode: antenna positions in the body frame (seed 000: three on a 3 m circle).
-  Eigen::Matrix<double, 3, 3> multi_antenna_B_m = Eigen::Matrix<double, 3, 3>::Zero();  ///< columns
+  /// Multi-receiver mode: antenna positions in the body frame, one column per receiver
+  /// (GnssSample::antenna); the first `multi_antenna_count` columns are used (seed 000: three on a
+  /// 3 m circle). At least two antennas with distinct horizontal positions give a heading.
+  Eigen::Matrix<double, 3, kMaxGnssAntennas> multi_antenna_B_m = Eigen::Matrix<double, 3, kMaxGnssAntennas>::Zero();
+  int multi_antenna_count = 3;
 };
 
 /// Counters a host reports as health.
@@ -129,8 +135,9 @@ class Navigator {
   NavigatorStats stats_;
   // GNSS-only and multi-receiver modes: the last fix
   NavOutput direct_;
-  GnssSample multi_[3];
-  bool multi_have_[3] = {false, false, false};
+  // multi-receiver mode: each receiver's fixes not yet combined (receivers' streams may arrive in
+  // bursts of many epochs, one receiver after the other)
+  RingBuffer<GnssSample, 64> multi_[kMaxGnssAntennas];
 };
 
 }  // namespace hil::estimator

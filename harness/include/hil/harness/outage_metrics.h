@@ -15,6 +15,9 @@ struct OutageMetrics {
   double start_s = 0, end_s = 0;
   std::size_t samples = 0;              ///< solutions inside the outage
   double max_horizontal_error_m = 0;    ///< over solutions valid in [start, end]
+  /// Largest |error| along each local axis (east, north, up) over the same solutions (paper 004
+  /// states its outage result per axis).
+  Eigen::Vector3d max_abs_error_enu_m = Eigen::Vector3d::Zero();
   /// Horizontal error against time since the outage start: (horizon s, error m) at 1, 2, 5, 10,
   /// 20, 30, 60 s where the outage lasts that long (the latest solution at or before the horizon).
   std::vector<std::pair<double, double>> growth;

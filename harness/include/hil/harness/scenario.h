@@ -28,6 +28,17 @@ struct Criterion {
   std::optional<double> max_ratio_to_baseline;
 };
 
+/// A published reference figure (section `paper:`, scenario_suite.cc): a suite report puts the
+/// run's value of `metric` beside it. Any user can add their own reference figures this way.
+struct PaperFigure {
+  std::string source;              ///< the publication and where in it (e.g. "paper 000, table of methods")
+  std::string metric;              ///< a criterion metric (kCriterionMetrics), compared in its unit
+  std::optional<double> value;     ///< the figure; absent for a qualitative finding
+  std::string relation = "about";  ///< about (a measured value), below (an upper bound), above (a lower bound)
+  std::string finding;             ///< the result in words ("diverges"), required without a value
+  std::string note;                ///< free text (conditions, how it maps onto this scenario)
+};
+
 /// The metric names a criterion may use.
 extern const std::vector<std::string> kCriterionMetrics;
 
@@ -119,11 +130,17 @@ struct Scenario {
   double reconverged_error_m = 1.0;
   /// Solutions before this time are not evaluated (initial convergence).
   double evaluate_from_s = 0.0;
+  /// Reference figures from publications (section `paper:`), for suite reports.
+  std::vector<PaperFigure> paper;
+  /// The file has a `short:` section (a quicker form for CI, see LoadScenario), and it was applied.
+  bool has_short_form = false, short_form = false;
 };
 
 /// Loads and validates a scenario file; `include:` files are looked up beside it, then in
-/// ScenarioLibraryDirs(). @throws ScenarioError.
-Scenario LoadScenario(const std::string& path);
+/// ScenarioLibraryDirs(). With `short_form`, the keys of the file's `short:` section (if any)
+/// replace the top-level keys of the same name first (`hil run --short`, `hil suite --short`).
+/// @throws ScenarioError.
+Scenario LoadScenario(const std::string& path, bool short_form = false);
 /// Where included scenario pieces live: $HIL_SCENARIO_LIB (colon-separated) and the source tree's
 /// vectors/scenarios/lib.
 std::vector<std::string> ScenarioLibraryDirs();

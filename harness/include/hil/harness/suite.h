@@ -3,7 +3,9 @@
 /// `hil suite DIR`: every scenario file (*.yaml, *.yml) directly in DIR, each run by a child
 /// `hil run` into OUT/<scenario file stem>[-seed<N>], `jobs` at a time, optionally `repeat` times
 /// with seeds seed, seed+1, … (the scenario's own seed when none is given). The results go into
-/// OUT/summary.json and one OUT/junit.xml (a testsuite per run, a testcase per criterion).
+/// OUT/summary.json, one OUT/junit.xml (a testsuite per run, a testcase per criterion) and
+/// OUT/report.md, which puts each scenario's figures (mean and spread over the seeds) beside the
+/// reference figures of its `paper:` section (suite_report.h).
 
 #include <cstdint>
 #include <optional>
@@ -20,6 +22,7 @@ struct SuiteOptions {
   int repeat = 1;
   std::optional<std::uint64_t> seed;     ///< first seed of the repeats
   std::vector<std::string> run_args;     ///< passed to every `hil run` (e.g. --estimator CMD)
+  bool short_form = false;               ///< each scenario's `short:` form (`hil run --short`)
 };
 
 struct SuiteResult {

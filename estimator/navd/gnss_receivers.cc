@@ -1,0 +1,97 @@
+#include "gnss_receivers.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace hil::navd {
+
+namespace est = hil::estimator;
+
+est::GnssSample ToGnssSample(const est::drivers::NmeaMeasurement& m, int leap_s, double uere_m) {
+  est::GnssSample g;
+  g.t = est::GpsNsFromUnixNs(m.tov_unix_ns, leap_s);
+  g.position = {m.lat_deg, m.lon_deg, m.height_m};
+  const double sigma = m.hdop.value_or(5.0) * uere_m / std::numbers::sqrt2;
+  g.pos_std_enu_m = {sigma, sigma, 2.0 * sigma};
+  g.fix_quality = m.quality;
+  g.num_sv = m.num_sv;
+  if (m.speed_mps && m.course_deg) {
+    const double c = *m.course_deg * std::numbers::pi / 180.0;
+    g.vel_enu_mps = {*m.speed_mps * std::sin(c), *m.speed_mps * std::cos(c), 0.0};
+    g.has_velocity = true;
+  }
+  return g;
+}
+
+GnssReceivers::Receiver::Receiver(const std::string& path, int baud, int index, const est::NavdConfig& cfg,
+                                  const Handler& h)
+    : device(path, baud),
+      setup(cfg),
+      nmea([this, index, leap = cfg.leap_seconds, uere = cfg.nmea_uere_m, h](const est::drivers::NmeaFix& fix) {
+        const auto m = nmea_epochs.Add(fix);
+        if (!m) return;
+        est::GnssSample g = ToGnssSample(*m, leap, uere);
+        g.antenna = index;
+        h(g);
+      }),
+      ubx([this, index, h, ubx_input = cfg.gnss_protocol == "ubx"](const est::drivers::UbxMessage& msg) {
+        setup.OnMessage(msg);
+        if (!ubx_input) return;
+        auto g = ubx_epochs.Add(msg);
+        if (!g) return;
+        g->antenna = index;
+        h(*g);
+      }) {}
+
+GnssReceivers::GnssReceivers(const est::NavdConfig& cfg, Handler handler) : ubx_(cfg.gnss_protocol == "ubx") {
+  const std::vector<std::string> devices = cfg.GnssDevices();
+  for (std::size_t i = 0; i < devices.size(); ++i) {
+    rx_.push_back(std::make_unique<Receiver>(devices[i], cfg.gnss_baud, static_cast<int>(i), cfg, handler));
+  }
+}
+
+void GnssReceivers::Feed(std::size_t i, const std::string& bytes) {
+  Receiver& r = *rx_[i];
+  if (ubx_) {
+    r.ubx.Feed(bytes);
+  } else {
+    if (r.setup.active()) r.ubx.Feed(bytes);  // the ACKs of the start-up configuration
+    r.nmea.Feed(bytes);
+  }
+  nmea_totals_ = nmea_stats();
+  ubx_totals_ = ubx_stats();
+}
+
+void GnssReceivers::Service(std::int64_t now_ns) {
+  for (auto& r : rx_) {
+    if (r->device.EnsureOpen() >= 0) r->setup.Service(r->device, now_ns);
+  }
+}
+
+est::drivers::NmeaDecoderStats GnssReceivers::nmea_stats() const {
+  est::drivers::NmeaDecoderStats s;
+  for (const auto& r : rx_) {
+    const auto& x = r->nmea.stats();
+    s.sentences_ok += x.sentences_ok, s.bad_checksum += x.bad_checksum, s.malformed += x.malformed;
+    s.unsupported += x.unsupported, s.overlong += x.overlong, s.garbage_bytes += x.garbage_bytes;
+  }
+  return s;
+}
+
+est::drivers::UbxDecoderStats GnssReceivers::ubx_stats() const {
+  est::drivers::UbxDecoderStats s;
+  for (const auto& r : rx_) {
+    const auto& x = r->ubx.stats();
+    s.frames_ok += x.frames_ok, s.bad_checksum += x.bad_checksum, s.overlong += x.overlong;
+    s.unsupported += x.unsupported, s.garbage_bytes += x.garbage_bytes, s.acks += x.acks, s.naks += x.naks;
+  }
+  return s;
+}
+
+std::uint64_t GnssReceivers::reopens() const {
+  std::uint64_t n = 0;
+  for (const auto& r : rx_) n += r->device.reopen_count();
+  return n;
+}
+
+}  // namespace hil::navd
