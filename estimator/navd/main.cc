@@ -64,11 +64,11 @@ void PrintUsage() {
       "  navd --config navd.conf > solution.jsonl\n");
 }
 
-est::GnssSample ToGnssSample(const est::drivers::NmeaMeasurement& m, int leap_s, double uere_m) {
+est::GnssSample ToGnssSample(const est::drivers::NmeaMeasurement& m, int leap_s, const est::NmeaAccuracy& acc) {
   est::GnssSample g;
   g.t = est::GpsNsFromUnixNs(m.tov_unix_ns, leap_s);
   g.position = {m.lat_deg, m.lon_deg, m.height_m};
-  const double sigma = m.hdop.value_or(5.0) * uere_m / std::numbers::sqrt2;
+  const double sigma = est::NmeaHorizontalStd(acc, m.quality, m.hdop);
   g.pos_std_enu_m = {sigma, sigma, 2.0 * sigma};
   g.fix_quality = m.quality;
   g.num_sv = m.num_sv;
@@ -185,7 +185,7 @@ int main(int argc, char** argv) {
   est::drivers::NmeaDecoder nmea([&](const est::drivers::NmeaFix& fix) {
     const auto m = assembler.Add(fix);
     if (!m) return;
-    nav.Push(ToGnssSample(*m, cfg.leap_seconds, cfg.nmea_uere_m));
+    nav.Push(ToGnssSample(*m, cfg.leap_seconds, cfg.nmea_accuracy()));
     if (!imu_mode) {
       const est::NavOutput o = nav.Output();
       if (o.t != last_emitted) emit(o);

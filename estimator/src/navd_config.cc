@@ -62,7 +62,7 @@ Eigen::Vector3d ToVector3(const ConfigFile& f, const ConfigEntry& e, double limi
 NavdConfig NavdConfig::FromFile(const ConfigFile& f) {
   NavdConfig c;
   c.nav.mode = NavMode::kGnssOnly;  // the default without an IMU
-  int mode_line = 0;
+  int mode_line = 0, latency_line = 0;
   for (const ConfigEntry& e : f.entries()) {
     const std::string s = e.section, k = e.key;
     EkfParams& ekf = c.nav.ekf;
@@ -72,6 +72,8 @@ NavdConfig NavdConfig::FromFile(const ConfigFile& f) {
       if (e.value != "nmea" && e.value != "ubx") throw ConfigError(f.name(), e.line, Field(e), "unknown protocol '" + e.value + "' (known: nmea, ubx)");
       c.gnss_protocol = e.value;
     } else if (s == "filter" && k == "nmea_uere_m") c.nmea_uere_m = ToDouble(f, e, 0.005, 100.0);
+    else if (s == "filter" && k == "nmea_rtk_fixed_std_m") c.nmea_rtk_fixed_std_m = ToDouble(f, e, 0.001, 10.0);
+    else if (s == "filter" && k == "nmea_rtk_float_std_m") c.nmea_rtk_float_std_m = ToDouble(f, e, 0.001, 100.0);
     else if (s == "input" && k == "imu_device") c.imu_device = e.value;
     else if (s == "input" && k == "imu_baud") c.imu_baud = ToInt(f, e, 1200, 921600);
     else if (s == "input" && k == "imu_format") {
@@ -96,7 +98,10 @@ NavdConfig NavdConfig::FromFile(const ConfigFile& f) {
     else if (s == "filter" && k == "gate_sigma") ekf.gate_sigma = ToDouble(f, e, 1.0, 1000.0);
     else if (s == "filter" && k == "fusion_horizon_s")
       c.nav.fusion_horizon_ns = static_cast<std::int64_t>(ToDouble(f, e, 0.0, 2.0) * 1e9);
-    else if (s == "filter" && k == "use_gnss_velocity") {
+    else if (s == "filter" && k == "gnss_max_latency_s") {
+      c.nav.gnss_max_latency_ns = static_cast<std::int64_t>(ToDouble(f, e, 0.0, 5.0) * 1e9);
+      latency_line = e.line;
+    } else if (s == "filter" && k == "use_gnss_velocity") {
       if (e.value != "true" && e.value != "false") throw ConfigError(f.name(), e.line, Field(e), "expected true or false");
       c.nav.use_gnss_velocity = e.value == "true";
     } else if (s == "output" && k == "json") c.json_path = e.value;
@@ -115,6 +120,10 @@ NavdConfig NavdConfig::FromFile(const ConfigFile& f) {
   }
   if (c.nav.ekf.gnss_error_tau_s > 0 && c.nav.ekf.gnss_error_std_m <= 0) {
     throw ConfigError(f.name(), 0, "[filter] gnss_error_std_m", "must be > 0 when gnss_error_tau_s is set");
+  }
+  if (latency_line > 0 && c.nav.gnss_max_latency_ns < c.nav.fusion_horizon_ns) {
+    throw ConfigError(f.name(), latency_line, "[filter] gnss_max_latency_s",
+                      "must be at least fusion_horizon_s (the filter never runs closer than the horizon)");
   }
   return c;
 }

@@ -1,5 +1,6 @@
 #include "hil/estimator/navigator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -73,6 +74,11 @@ void Navigator::Push(const GnssSample& g) {
     return;
   }
   ++stats_.gnss_samples;
+  if (g.t > newest_gnss_t_) {
+    // the fix period, for the wait on the next epoch (clamped to 20 Hz .. 0.5 Hz)
+    if (newest_gnss_t_ >= 0) gnss_period_ns_ = std::clamp<GpsNs>(g.t - newest_gnss_t_, 50'000'000, 2'000'000'000);
+    newest_gnss_t_ = g.t;
+  }
   const bool imu_mode = params_.mode == NavMode::kEkf || params_.mode == NavMode::kImuOnly ||
                         params_.mode == NavMode::kPlanar2d;
   if (!imu_mode) {
@@ -101,7 +107,12 @@ void Navigator::Update() {
   const bool imu_mode = params_.mode == NavMode::kEkf || params_.mode == NavMode::kImuOnly ||
                         params_.mode == NavMode::kPlanar2d;
   if (!imu_mode) return;
-  const GpsNs horizon_t = newest_imu_t_ - params_.fusion_horizon_ns;
+  GpsNs horizon_t = newest_imu_t_ - params_.fusion_horizon_ns;
+  if (params_.gnss_max_latency_ns > params_.fusion_horizon_ns && gnss_period_ns_ > 0) {
+    // hold at the next expected GNSS epoch until it arrives or the wait runs out
+    const GpsNs expected_t = newest_gnss_t_ + gnss_period_ns_;
+    horizon_t = std::min(horizon_t, std::max(expected_t, newest_imu_t_ - params_.gnss_max_latency_ns));
+  }
   while (!imu_.empty() && imu_.front().t <= horizon_t) {
     ImuSample s = imu_.front();
     imu_.PopFront();

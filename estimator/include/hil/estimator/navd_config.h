@@ -8,6 +8,7 @@
 
 #include "hil/estimator/config_file.h"
 #include "hil/estimator/navigator.h"
+#include "hil/estimator/nmea_accuracy.h"
 
 namespace hil::estimator {
 
@@ -17,8 +18,13 @@ struct NavdConfig {
   int gnss_baud = 9600;
   std::string gnss_protocol = "nmea";  ///< nmea (GGA + RMC) or ubx (NAV-POSLLH/VELNED/SOL)
   /// NMEA carries no accuracy estimate: a fix's horizontal 1σ per axis is HDOP × nmea_uere_m / √2
-  /// (vertical twice that). UBX input uses the receiver's own hAcc/vAcc instead.
+  /// (vertical twice that), or the configured RTK fixed/float 1σ (nmea_accuracy.h). UBX input uses
+  /// the receiver's own hAcc/vAcc instead.
   double nmea_uere_m = 2.5;
+  double nmea_rtk_fixed_std_m = 0.0;  ///< [filter] 1σ per horizontal axis of RTK fixed fixes (0: UERE)
+  double nmea_rtk_float_std_m = 0.0;  ///< [filter] 1σ per horizontal axis of RTK float fixes (0: UERE)
+  /// The NMEA accuracy settings together.
+  NmeaAccuracy nmea_accuracy() const { return {nmea_uere_m, nmea_rtk_fixed_std_m, nmea_rtk_float_std_m}; }
   std::string imu_device;        ///< serial device of the IMU microcontroller; empty = none
   int imu_baud = 57600;
   std::string imu_format = "mcu";///< mcu (binary frame protocol v1)
