@@ -55,7 +55,9 @@ void PrintUsage() {
       "                  [filter] mode (ekf|planar2d|gnss_only|imu_only|multi_gnss), lever_arm_m,\n"
       "                  accel_noise, gyro_noise, accel_bias_rw, gyro_bias_rw, init_accel_bias_std,\n"
       "                  init_gyro_bias_std, gnss_error_tau_s, gnss_error_std_m, nhc_std_mps,\n"
-      "                  gate_sigma, fusion_horizon_s, use_gnss_velocity\n"
+      "                  gate_sigma, fusion_horizon_s, use_gnss_velocity, gnss_max_latency_s,\n"
+      "                  nmea_uere_m, nmea_rtk_fixed_std_m, nmea_rtk_float_std_m, nmea_velocity_std_mps,\n"
+      "                  gnss_float_error_tau_s, gnss_float_error_std_m\n"
       "                  [output] json, rate_hz, nmea_device, can_interface, can_log,\n"
       "                  can_source_address, can_rate_hz\n"
       "  --help          this text\n"
@@ -76,6 +78,7 @@ est::GnssSample ToGnssSample(const est::drivers::NmeaMeasurement& m, int leap_s,
     const double c = *m.course_deg * std::numbers::pi / 180.0;
     g.vel_enu_mps = {*m.speed_mps * std::sin(c), *m.speed_mps * std::cos(c), 0.0};
     g.has_velocity = true;
+    g.vel_std_enu_mps = {acc.velocity_std_mps, acc.velocity_std_mps, 2.0 * acc.velocity_std_mps};
   }
   return g;
 }

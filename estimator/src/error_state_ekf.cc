@@ -16,6 +16,8 @@ void ErrorStateEkf::Initialize(const NavState& s) {
   ba_.setZero();
   bg_.setZero();
   e_gnss_.setZero();
+  gm_tau_s_ = params_.gnss_error_tau_s;
+  gm_std_m_ = params_.gnss_error_std_m;
   P_.setZero();
   const auto& p = params_;
   P_.block<3, 3>(kPos, kPos).diagonal().setConstant(p.init_pos_std_m * p.init_pos_std_m);
@@ -50,8 +52,8 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& dth_raw, const Eigen::Vector3
   const auto& p = params_;
   double gm_decay = 1.0, gm_q = 0.0;
   if (p.gnss_error_tau_s > 0) {
-    gm_decay = std::exp(-dt / p.gnss_error_tau_s);
-    gm_q = p.gnss_error_std_m * p.gnss_error_std_m * (1.0 - gm_decay * gm_decay);
+    gm_decay = std::exp(-dt / gm_tau_s_);
+    gm_q = gm_std_m_ * gm_std_m_ * (1.0 - gm_decay * gm_decay);
     Phi.block<3, 3>(kGnssError, kGnssError).diagonal().setConstant(gm_decay);
   }
   P_ = Phi * P_ * Phi.transpose();
@@ -168,6 +170,23 @@ void ErrorStateEkf::InjectError(const EkfVector& dx) {
   if (params_.gnss_error_tau_s > 0) e_gnss_ += dx.segment<3>(kGnssError);
 }
 
+void ErrorStateEkf::SetGnssErrorModel(double tau_s, double std_m) {
+  if (!(params_.gnss_error_tau_s > 0) || !(tau_s > 0) || !(std_m >= 0) || !std::isfinite(tau_s) || !std::isfinite(std_m)) return;
+  if (tau_s == gm_tau_s_ && std_m == gm_std_m_) return;
+  if (std_m > gm_std_m_) {
+    // a new error source appears on top of the old one
+    P_.block<3, 3>(kGnssError, kGnssError).diagonal().array() += std_m * std_m - gm_std_m_ * gm_std_m_;
+  } else {
+    // the old error is gone: the state restarts, independent of everything else
+    e_gnss_.setZero();
+    P_.block<3, kNumStates>(kGnssError, 0).setZero();
+    P_.block<kNumStates, 3>(0, kGnssError).setZero();
+    P_.block<3, 3>(kGnssError, kGnssError).diagonal().setConstant(std_m * std_m);
+  }
+  gm_tau_s_ = tau_s;
+  gm_std_m_ = std_m;
+}
+
 void ErrorStateEkf::ResetPositionVelocity(const Eigen::Vector3d& p, const Eigen::Vector3d& v, double pos_std,
                                           double vel_std) {
   state_.p_N_m = p - state_.q_NB * params_.lever_arm_B_m;
@@ -180,7 +199,7 @@ void ErrorStateEkf::ResetPositionVelocity(const Eigen::Vector3d& p, const Eigen:
   if (params_.gnss_error_tau_s > 0) {
     P_.block<3, kNumStates>(kGnssError, 0).setZero();
     P_.block<kNumStates, 3>(0, kGnssError).setZero();
-    P_.block<3, 3>(kGnssError, kGnssError).diagonal().setConstant(params_.gnss_error_std_m * params_.gnss_error_std_m);
+    P_.block<3, 3>(kGnssError, kGnssError).diagonal().setConstant(gm_std_m_ * gm_std_m_);
   }
 }
 

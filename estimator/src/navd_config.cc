@@ -74,6 +74,7 @@ NavdConfig NavdConfig::FromFile(const ConfigFile& f) {
     } else if (s == "filter" && k == "nmea_uere_m") c.nmea_uere_m = ToDouble(f, e, 0.005, 100.0);
     else if (s == "filter" && k == "nmea_rtk_fixed_std_m") c.nmea_rtk_fixed_std_m = ToDouble(f, e, 0.001, 10.0);
     else if (s == "filter" && k == "nmea_rtk_float_std_m") c.nmea_rtk_float_std_m = ToDouble(f, e, 0.001, 100.0);
+    else if (s == "filter" && k == "nmea_velocity_std_mps") c.nmea_velocity_std_mps = ToDouble(f, e, 0.001, 10.0);
     else if (s == "input" && k == "imu_device") c.imu_device = e.value;
     else if (s == "input" && k == "imu_baud") c.imu_baud = ToInt(f, e, 1200, 921600);
     else if (s == "input" && k == "imu_format") {
@@ -94,6 +95,8 @@ NavdConfig NavdConfig::FromFile(const ConfigFile& f) {
     else if (s == "filter" && k == "init_gyro_bias_std") ekf.init_gyro_bias_std_radps = ToDouble(f, e, 0.0, 1.0);
     else if (s == "filter" && k == "gnss_error_tau_s") ekf.gnss_error_tau_s = ToDouble(f, e, 0.0, 3600.0);
     else if (s == "filter" && k == "gnss_error_std_m") ekf.gnss_error_std_m = ToDouble(f, e, 0.0, 100.0);
+    else if (s == "filter" && k == "gnss_float_error_tau_s") ekf.gnss_float_error_tau_s = ToDouble(f, e, 0.0, 3600.0);
+    else if (s == "filter" && k == "gnss_float_error_std_m") ekf.gnss_float_error_std_m = ToDouble(f, e, 0.0, 100.0);
     else if (s == "filter" && k == "nhc_std_mps") ekf.nhc_std_mps = ToDouble(f, e, 0.0, 10.0);
     else if (s == "filter" && k == "gate_sigma") ekf.gate_sigma = ToDouble(f, e, 1.0, 1000.0);
     else if (s == "filter" && k == "fusion_horizon_s")
@@ -120,6 +123,11 @@ NavdConfig NavdConfig::FromFile(const ConfigFile& f) {
   }
   if (c.nav.ekf.gnss_error_tau_s > 0 && c.nav.ekf.gnss_error_std_m <= 0) {
     throw ConfigError(f.name(), 0, "[filter] gnss_error_std_m", "must be > 0 when gnss_error_tau_s is set");
+  }
+  if ((c.nav.ekf.gnss_float_error_tau_s > 0) != (c.nav.ekf.gnss_float_error_std_m > 0) ||
+      (c.nav.ekf.gnss_float_error_tau_s > 0 && !(c.nav.ekf.gnss_error_tau_s > 0))) {
+    throw ConfigError(f.name(), 0, "[filter] gnss_float_error_tau_s",
+                      "gnss_float_error_tau_s and gnss_float_error_std_m go together, and need gnss_error_tau_s > 0");
   }
   if (latency_line > 0 && c.nav.gnss_max_latency_ns < c.nav.fusion_horizon_ns) {
     throw ConfigError(f.name(), latency_line, "[filter] gnss_max_latency_s",

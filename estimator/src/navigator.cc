@@ -213,6 +213,12 @@ void Navigator::ProcessGnss(const GnssSample& g) {
     status_ = (status_ | kStatusGnssFused) & ~kStatusDeadReckoning;
     return;
   }
+  if (params_.ekf.gnss_float_error_tau_s > 0 && params_.ekf.gnss_float_error_std_m > 0) {
+    // RTK float and fixed solutions carry different correlated errors (GGA quality 5 = float)
+    const bool is_float = g.fix_quality == 5;
+    ekf_.SetGnssErrorModel(is_float ? params_.ekf.gnss_float_error_tau_s : params_.ekf.gnss_error_tau_s,
+                           is_float ? params_.ekf.gnss_float_error_std_m : params_.ekf.gnss_error_std_m);
+  }
   const UpdateResult rp = ekf_.UpdatePosition(p, g.pos_std_enu_m);
   stats_.last_nis_pos = rp.nis;
   if (rp.accepted) {

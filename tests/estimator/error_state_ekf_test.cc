@@ -93,5 +93,43 @@ TEST_F(ErrorStateEkfTest, NonFiniteInputsAreIgnored) {
   EXPECT_TRUE(ekf_.covariance().allFinite());
 }
 
+TEST_F(ErrorStateEkfTest, GnssErrorModelSwitchAddsOrRestartsTheCorrelatedError) {
+  // GIVEN a filter whose correlated GNSS error state has been observed (cross-covariances built up)
+  const Eigen::Vector3d p = Pos(ekf_);
+  ASSERT_TRUE(ekf_.UpdatePosition(p + Eigen::Vector3d(0.05, -0.02, 0.0), Eigen::Vector3d::Constant(0.05)).accepted);
+  const EkfMatrix before = ekf_.covariance();
+  ASSERT_GT(before.block<3, 3>(kPos, kGnssError).cwiseAbs().maxCoeff(), 1e-4);
+  // WHEN the receiver drops to RTK float (a larger, independent error appears)
+  ekf_.SetGnssErrorModel(2.0, 0.5);
+  const EkfMatrix wider = ekf_.covariance();
+  // THEN its variance grows by σ_new² − σ_old² and nothing else changes
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(wider(kGnssError + i, kGnssError + i) - before(kGnssError + i, kGnssError + i), 0.25 - 0.09, 1e-12);
+  }
+  EXPECT_LT((wider.block<kGnssError, kGnssError>(0, 0) - before.block<kGnssError, kGnssError>(0, 0)).cwiseAbs().maxCoeff(), 1e-15);
+  EXPECT_LT((wider.block<kGnssError, 3>(0, kGnssError) - before.block<kGnssError, 3>(0, kGnssError)).cwiseAbs().maxCoeff(), 1e-15);
+  // WHEN it fixes again (the float error is gone): the state restarts at zero, uncorrelated, at the new σ
+  ekf_.SetGnssErrorModel(30.0, 0.01);
+  const EkfMatrix fixed = ekf_.covariance();
+  EXPECT_EQ(ekf_.gnss_error(), Eigen::Vector3d::Zero());
+  EXPECT_EQ(fixed.block<kGnssError, 3>(0, kGnssError), (Eigen::Matrix<double, kGnssError, 3>::Zero()));
+  EXPECT_NEAR(fixed(kGnssError, kGnssError), 1e-4, 1e-15);
+  // AND the process uses the new model: the variance stays at the stationary σ² of the new process
+  for (int k = 0; k < 100; ++k) ekf_.Predict(Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, 9.81) * 0.01, 0.01);
+  EXPECT_NEAR(ekf_.covariance()(kGnssError, kGnssError), 1e-4, 1e-9);
+  // AND an unchanged model is a no-op
+  const EkfMatrix same = ekf_.covariance();
+  ekf_.SetGnssErrorModel(30.0, 0.01);
+  EXPECT_EQ(ekf_.covariance(), same);
+}
+
+TEST(ErrorStateEkfGnssModelTest, SwitchIsIgnoredWithoutCorrelatedStates) {
+  ErrorStateEkf ekf(EkfParams{}, EarthModel{});  // gnss_error_tau_s = 0: plain 15-state filter
+  ekf.Initialize(NavState{});
+  const EkfMatrix before = ekf.covariance();
+  ekf.SetGnssErrorModel(2.0, 0.5);
+  EXPECT_EQ(ekf.covariance(), before);
+}
+
 }  // namespace
 }  // namespace hil::estimator

@@ -57,6 +57,10 @@ struct EkfParams {
   Eigen::Vector3d lever_arm_B_m = Eigen::Vector3d::Zero();  ///< GNSS antenna in the body frame
   double gnss_error_tau_s = 0.0;              ///< correlated GNSS position error τ (0 = off)
   double gnss_error_std_m = 0.0;              ///< its steady-state σ per axis
+  /// RTK float solutions (GGA quality 5): their own correlated error (decimetres, seconds); the
+  /// filter switches to this model while fixes are float (0 = same model as fixed fixes).
+  double gnss_float_error_tau_s = 0.0;
+  double gnss_float_error_std_m = 0.0;
   double gnss_pos_std_floor_m = 0.005;        ///< lower bound on the white GNSS position σ
   double gnss_vel_std_floor_mps = 0.01;
   double nhc_std_mps = 0.0;                   ///< non-holonomic constraint σ (0 = off)
@@ -99,6 +103,11 @@ class ErrorStateEkf {
   UpdateResult UpdateNonHolonomic();
   /// Heading (yaw of body x, radians counter-clockwise from east) with σ.
   UpdateResult UpdateYaw(double yaw_enu_rad, double std_rad);
+  /// Switches the correlated GNSS error model (the receiver changed its solution type, e.g. RTK
+  /// fixed ↔ float). A larger σ adds the new, independent error's variance; a smaller σ means the
+  /// old error is gone (ambiguities fixed): the state restarts at zero with the new σ. No effect
+  /// when the augmented states are off (gnss_error_tau_s = 0) or the model is unchanged.
+  void SetGnssErrorModel(double tau_s, double std_m);
   /// Resets position/velocity to a measurement after a long rejection (keeps attitude and biases).
   void ResetPositionVelocity(const Eigen::Vector3d& p_N_m, const Eigen::Vector3d& v_N_mps, double pos_std_m,
                              double vel_std_mps);
@@ -138,6 +147,7 @@ class ErrorStateEkf {
   MechanizationMemory memory_;
   Eigen::Vector3d ba_ = Eigen::Vector3d::Zero(), bg_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d e_gnss_ = Eigen::Vector3d::Zero();
+  double gm_tau_s_ = 0.0, gm_std_m_ = 0.0;  // current correlated GNSS error model
   Eigen::Vector3d w_B_ = Eigen::Vector3d::Zero();   // last compensated angular rate
   Eigen::Vector3d f_N_ = Eigen::Vector3d::Zero();   // last specific force in N
   EkfMatrix P_ = EkfMatrix::Identity();

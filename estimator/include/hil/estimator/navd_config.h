@@ -23,8 +23,11 @@ struct NavdConfig {
   double nmea_uere_m = 2.5;
   double nmea_rtk_fixed_std_m = 0.0;  ///< [filter] 1σ per horizontal axis of RTK fixed fixes (0: UERE)
   double nmea_rtk_float_std_m = 0.0;  ///< [filter] 1σ per horizontal axis of RTK float fixes (0: UERE)
+  double nmea_velocity_std_mps = 0.2; ///< [filter] 1σ per horizontal axis of the RMC velocity
   /// The NMEA accuracy settings together.
-  NmeaAccuracy nmea_accuracy() const { return {nmea_uere_m, nmea_rtk_fixed_std_m, nmea_rtk_float_std_m}; }
+  NmeaAccuracy nmea_accuracy() const {
+    return {nmea_uere_m, nmea_rtk_fixed_std_m, nmea_rtk_float_std_m, nmea_velocity_std_mps};
+  }
   std::string imu_device;        ///< serial device of the IMU microcontroller; empty = none
   int imu_baud = 57600;
   std::string imu_format = "mcu";///< mcu (binary frame protocol v1)

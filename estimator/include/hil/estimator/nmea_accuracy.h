@@ -4,7 +4,9 @@
 /// quality, so the 1σ is configured: by default HDOP × UERE / √2 per horizontal axis; an RTK
 /// rover's fixed (quality 4) and float (quality 5) solutions have their own configured 1σ,
 /// because their error does not scale with a pseudorange UERE (a fixed solution is centimetres
-/// whatever the HDOP, a float one decimetres). Vertical 1σ is twice the horizontal.
+/// whatever the HDOP, a float one decimetres). Vertical 1σ is twice the horizontal. RMC's speed
+/// and course give the horizontal velocity with the configured 1σ; its vertical (not in RMC) is 0
+/// with twice that 1σ.
 
 #include <optional>
 
@@ -15,6 +17,7 @@ struct NmeaAccuracy {
   double uere_m = 2.5;            ///< user equivalent range error (GPS, DGPS fixes)
   double rtk_fixed_std_m = 0.0;   ///< horizontal 1σ per axis of an RTK fixed fix (0: use UERE)
   double rtk_float_std_m = 0.0;   ///< horizontal 1σ per axis of an RTK float fix (0: use UERE)
+  double velocity_std_mps = 0.2;  ///< horizontal 1σ per axis of the RMC speed/course velocity
 };
 
 /// GGA fix quality values used here.
