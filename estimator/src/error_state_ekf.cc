@@ -18,6 +18,9 @@ void ErrorStateEkf::Initialize(const NavState& s) {
   e_gnss_.setZero();
   gm_tau_s_ = params_.gnss_error_tau_s;
   gm_std_m_ = params_.gnss_error_std_m;
+  gm_up_ratio_ = params_.gnss_error_vertical_std_m > 0 && params_.gnss_error_std_m > 0
+                     ? params_.gnss_error_vertical_std_m / params_.gnss_error_std_m
+                     : 1.0;
   P_.setZero();
   const auto& p = params_;
   P_.block<3, 3>(kPos, kPos).diagonal().setConstant(p.init_pos_std_m * p.init_pos_std_m);
@@ -27,7 +30,7 @@ void ErrorStateEkf::Initialize(const NavState& s) {
   P_.block<3, 3>(kAccelBias, kAccelBias).diagonal().setConstant(p.init_accel_bias_std_mps2 * p.init_accel_bias_std_mps2);
   P_.block<3, 3>(kGyroBias, kGyroBias).diagonal().setConstant(p.init_gyro_bias_std_radps * p.init_gyro_bias_std_radps);
   if (p.gnss_error_tau_s > 0) {
-    P_.block<3, 3>(kGnssError, kGnssError).diagonal().setConstant(p.gnss_error_std_m * p.gnss_error_std_m);
+    P_.block<3, 3>(kGnssError, kGnssError).diagonal() = GnssErrorVariance(gm_std_m_);
   }
 }
 
@@ -50,10 +53,11 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& dth_raw, const Eigen::Vector3
   Phi.block<3, 3>(kAtt, kAtt) -= W * dt;
   Phi.block<3, 3>(kAtt, kGyroBias) = -C * dt;
   const auto& p = params_;
-  double gm_decay = 1.0, gm_q = 0.0;
+  double gm_decay = 1.0;
+  Eigen::Vector3d gm_q = Eigen::Vector3d::Zero();
   if (p.gnss_error_tau_s > 0) {
     gm_decay = std::exp(-dt / gm_tau_s_);
-    gm_q = gm_std_m_ * gm_std_m_ * (1.0 - gm_decay * gm_decay);
+    gm_q = GnssErrorVariance(gm_std_m_) * (1.0 - gm_decay * gm_decay);
     Phi.block<3, 3>(kGnssError, kGnssError).diagonal().setConstant(gm_decay);
   }
   P_ = Phi * P_ * Phi.transpose();
@@ -62,7 +66,7 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& dth_raw, const Eigen::Vector3
   P_.block<3, 3>(kAtt, kAtt).diagonal().array() += p.gyro_noise_radps_rthz * p.gyro_noise_radps_rthz * dt;
   P_.block<3, 3>(kAccelBias, kAccelBias).diagonal().array() += p.accel_bias_rw_mps3_rthz * p.accel_bias_rw_mps3_rthz * dt;
   P_.block<3, 3>(kGyroBias, kGyroBias).diagonal().array() += p.gyro_bias_rw_radps2_rthz * p.gyro_bias_rw_radps2_rthz * dt;
-  if (p.gnss_error_tau_s > 0) P_.block<3, 3>(kGnssError, kGnssError).diagonal().array() += gm_q;
+  if (p.gnss_error_tau_s > 0) P_.block<3, 3>(kGnssError, kGnssError).diagonal() += gm_q;
   e_gnss_ *= gm_decay;
   Symmetrize();
 }
@@ -170,18 +174,23 @@ void ErrorStateEkf::InjectError(const EkfVector& dx) {
   if (params_.gnss_error_tau_s > 0) e_gnss_ += dx.segment<3>(kGnssError);
 }
 
+Eigen::Vector3d ErrorStateEkf::GnssErrorVariance(double horizontal_std_m) const {
+  const double up = horizontal_std_m * gm_up_ratio_;
+  return Eigen::Vector3d(horizontal_std_m * horizontal_std_m, horizontal_std_m * horizontal_std_m, up * up);
+}
+
 void ErrorStateEkf::SetGnssErrorModel(double tau_s, double std_m) {
   if (!(params_.gnss_error_tau_s > 0) || !(tau_s > 0) || !(std_m >= 0) || !std::isfinite(tau_s) || !std::isfinite(std_m)) return;
   if (tau_s == gm_tau_s_ && std_m == gm_std_m_) return;
   if (std_m > gm_std_m_) {
     // a new error source appears on top of the old one
-    P_.block<3, 3>(kGnssError, kGnssError).diagonal().array() += std_m * std_m - gm_std_m_ * gm_std_m_;
+    P_.block<3, 3>(kGnssError, kGnssError).diagonal() += GnssErrorVariance(std_m) - GnssErrorVariance(gm_std_m_);
   } else {
     // the old error is gone: the state restarts, independent of everything else
     e_gnss_.setZero();
     P_.block<3, kNumStates>(kGnssError, 0).setZero();
     P_.block<kNumStates, 3>(0, kGnssError).setZero();
-    P_.block<3, 3>(kGnssError, kGnssError).diagonal().setConstant(std_m * std_m);
+    P_.block<3, 3>(kGnssError, kGnssError).diagonal() = GnssErrorVariance(std_m);
   }
   gm_tau_s_ = tau_s;
   gm_std_m_ = std_m;
@@ -199,7 +208,7 @@ void ErrorStateEkf::ResetPositionVelocity(const Eigen::Vector3d& p, const Eigen:
   if (params_.gnss_error_tau_s > 0) {
     P_.block<3, kNumStates>(kGnssError, 0).setZero();
     P_.block<kNumStates, 3>(0, kGnssError).setZero();
-    P_.block<3, 3>(kGnssError, kGnssError).diagonal().setConstant(gm_std_m_ * gm_std_m_);
+    P_.block<3, 3>(kGnssError, kGnssError).diagonal() = GnssErrorVariance(gm_std_m_);
   }
 }
 

@@ -95,6 +95,7 @@ NavdConfig NavdConfig::FromFile(const ConfigFile& f) {
     else if (s == "filter" && k == "init_gyro_bias_std") ekf.init_gyro_bias_std_radps = ToDouble(f, e, 0.0, 1.0);
     else if (s == "filter" && k == "gnss_error_tau_s") ekf.gnss_error_tau_s = ToDouble(f, e, 0.0, 3600.0);
     else if (s == "filter" && k == "gnss_error_std_m") ekf.gnss_error_std_m = ToDouble(f, e, 0.0, 100.0);
+    else if (s == "filter" && k == "gnss_error_vertical_std_m") ekf.gnss_error_vertical_std_m = ToDouble(f, e, 0.0, 100.0);
     else if (s == "filter" && k == "gnss_float_error_tau_s") ekf.gnss_float_error_tau_s = ToDouble(f, e, 0.0, 3600.0);
     else if (s == "filter" && k == "gnss_float_error_std_m") ekf.gnss_float_error_std_m = ToDouble(f, e, 0.0, 100.0);
     else if (s == "filter" && k == "nhc_std_mps") ekf.nhc_std_mps = ToDouble(f, e, 0.0, 10.0);

@@ -101,7 +101,7 @@ TEST(NavigatorTest, WaitsForADueFixUpToTheMaximumLatency) {
     // GIVEN an aligned filter with fixes at 1 Hz, fused on time
     WaitRig rig(wait ? 2'500'000'000 : 0);
     for (int k = 0; k < 3; ++k) {
-      rig.ImuUntil(kT0 + k * 1'000'000'000LL + 300'000'000);
+      rig.ImuUntil(kT0 + k * 1'000'000'000LL + 100'000'000);
       rig.Fix(kT0 + k * 1'000'000'000LL);
     }
     ASSERT_TRUE(rig.nav.aligned());
@@ -112,14 +112,16 @@ TEST(NavigatorTest, WaitsForADueFixUpToTheMaximumLatency) {
     rig.ImuUntil(kT0 + 4'600'000'000LL);
     // THEN with a 2.5 s wait the filter held at the due epoch and fuses it; with no wait it is late
     EXPECT_EQ(rig.nav.stats().gnss_late, wait ? 0u : 1u);
-    if (wait) EXPECT_GE(rig.nav.filter_time(), kT0 + 3'000'000'000LL);
+    if (wait) {
+      EXPECT_GE(rig.nav.filter_time(), kT0 + 3'000'000'000LL);
+    }
     // AND the output always reports the newest IMU time (the output predictor)
     EXPECT_EQ(rig.nav.Output().t, kT0 + 4'600'000'000LL);
   }
   // AND without fixes (an outage) the waiting filter runs the maximum latency behind, no further
   WaitRig rig(2'500'000'000);
   for (int k = 0; k < 3; ++k) {
-    rig.ImuUntil(kT0 + k * 1'000'000'000LL + 300'000'000);
+    rig.ImuUntil(kT0 + k * 1'000'000'000LL + 100'000'000);
     rig.Fix(kT0 + k * 1'000'000'000LL);
   }
   rig.ImuUntil(kT0 + 20'000'000'000LL);

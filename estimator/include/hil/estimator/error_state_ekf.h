@@ -15,7 +15,7 @@
 /// for vehicle motion. With gnss_error_tau_s = 0 they are frozen at zero (a plain 15-state filter).
 /// Continuous error dynamics (ENU, Earth-fixed tangent frame):
 ///   δṗ = δv;  δv̇ = −[(Ĉf̂)×]φ − Ĉδb_a − 2[ω_IE×]δv;  φ̇ = −[ω_IE×]φ − Ĉδb_g;
-///   δḃ = w (random walk);  ė = −e/τ + w.
+///   δḃ = w (random walk);  ė = −e/τ + w (σ per axis: horizontal, horizontal, vertical).
 /// Φ = I + F·dt per IMU interval; Joseph-form updates; every update is χ²-gated on its NIS.
 /// The filter never throws or aborts on input; non-finite inputs are counted and rejected.
 
@@ -56,7 +56,9 @@ struct EkfParams {
   double init_gyro_bias_std_radps = 0.005;
   Eigen::Vector3d lever_arm_B_m = Eigen::Vector3d::Zero();  ///< GNSS antenna in the body frame
   double gnss_error_tau_s = 0.0;              ///< correlated GNSS position error τ (0 = off)
-  double gnss_error_std_m = 0.0;              ///< its steady-state σ per axis
+  double gnss_error_std_m = 0.0;              ///< its steady-state σ per horizontal axis (and up, unless:)
+  /// σ of the up component (0: gnss_error_std_m); the float model keeps the same up/horizontal ratio
+  double gnss_error_vertical_std_m = 0.0;
   /// RTK float solutions (GGA quality 5): their own correlated error (decimetres, seconds); the
   /// filter switches to this model while fixes are float (0 = same model as fixed fixes).
   double gnss_float_error_tau_s = 0.0;
@@ -140,6 +142,8 @@ class ErrorStateEkf {
                       const Eigen::Matrix<double, M, ekf_index::kNumStates>& H,
                       const Eigen::Matrix<double, M, M>& R);
   void Symmetrize();
+  /// Stationary variances (E, N, U) of the correlated GNSS error for a horizontal σ.
+  Eigen::Vector3d GnssErrorVariance(double horizontal_std_m) const;
 
   EkfParams params_;
   EarthModel earth_;
@@ -147,7 +151,8 @@ class ErrorStateEkf {
   MechanizationMemory memory_;
   Eigen::Vector3d ba_ = Eigen::Vector3d::Zero(), bg_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d e_gnss_ = Eigen::Vector3d::Zero();
-  double gm_tau_s_ = 0.0, gm_std_m_ = 0.0;  // current correlated GNSS error model
+  double gm_tau_s_ = 0.0, gm_std_m_ = 0.0;  // current correlated GNSS error model (horizontal σ)
+  double gm_up_ratio_ = 1.0;                // up σ / horizontal σ
   Eigen::Vector3d w_B_ = Eigen::Vector3d::Zero();   // last compensated angular rate
   Eigen::Vector3d f_N_ = Eigen::Vector3d::Zero();   // last specific force in N
   EkfMatrix P_ = EkfMatrix::Identity();
