@@ -16,6 +16,7 @@ void ErrorStateEkf::Initialize(const NavState& s) {
   ba_.setZero();
   bg_.setZero();
   e_gnss_.setZero();
+  set_speed_ = (s.q_NB.conjugate() * s.v_N_mps).x();
   gm_tau_s_ = params_.gnss_error_tau_s;
   gm_std_m_ = params_.gnss_error_std_m;
   gm_up_ratio_ = params_.gnss_error_vertical_std_m > 0 && params_.gnss_error_std_m > 0
@@ -32,6 +33,7 @@ void ErrorStateEkf::Initialize(const NavState& s) {
   if (p.gnss_error_tau_s > 0) {
     P_.block<3, 3>(kGnssError, kGnssError).diagonal() = GnssErrorVariance(gm_std_m_);
   }
+  if (p.speed_rw_mps_rthz > 0) P_(kSpeed, kSpeed) = p.init_vel_std_mps * p.init_vel_std_mps;
 }
 
 void ErrorStateEkf::Predict(const Eigen::Vector3d& dth_raw, const Eigen::Vector3d& dv_raw, double dt) {
@@ -67,6 +69,7 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& dth_raw, const Eigen::Vector3
   P_.block<3, 3>(kAccelBias, kAccelBias).diagonal().array() += p.accel_bias_rw_mps3_rthz * p.accel_bias_rw_mps3_rthz * dt;
   P_.block<3, 3>(kGyroBias, kGyroBias).diagonal().array() += p.gyro_bias_rw_radps2_rthz * p.gyro_bias_rw_radps2_rthz * dt;
   if (p.gnss_error_tau_s > 0) P_.block<3, 3>(kGnssError, kGnssError).diagonal() += gm_q;
+  if (p.speed_rw_mps_rthz > 0) P_(kSpeed, kSpeed) += p.speed_rw_mps_rthz * p.speed_rw_mps_rthz * dt;
   e_gnss_ *= gm_decay;
   Symmetrize();
 }
@@ -127,6 +130,34 @@ UpdateResult ErrorStateEkf::UpdateNonHolonomic() {
   return Update<2>(innovation, NonHolonomicJacobian(), R);
 }
 
+Eigen::Matrix<double, 1, kNumStates> ErrorStateEkf::SpeedModelJacobian() const {
+  // forward body speed x_Bᵀ Ĉᵀ v minus the set speed; attitude part as in the NHC rows
+  const Eigen::Matrix3d Ct = state_.q_NB.toRotationMatrix().transpose();
+  Eigen::Matrix<double, 1, kNumStates> H = Eigen::Matrix<double, 1, kNumStates>::Zero();
+  H.block<1, 3>(0, kVel) = Ct.row(0);
+  H.block<1, 3>(0, kAtt) = (Ct * Skew(state_.v_N_mps)).row(0);
+  H(0, kSpeed) = -1.0;
+  return H;
+}
+
+UpdateResult ErrorStateEkf::UpdateSpeedModel() {
+  if (!(params_.speed_rw_mps_rthz > 0)) return {};
+  const double forward = (state_.q_NB.conjugate() * state_.v_N_mps).x();
+  Eigen::Matrix<double, 1, 1> innovation;
+  innovation << set_speed_ - forward;
+  Eigen::Matrix<double, 1, 1> R;
+  R << params_.speed_dev_std_mps * params_.speed_dev_std_mps;
+  return Update<1>(innovation, SpeedModelJacobian(), R);
+}
+
+void ErrorStateEkf::ResetSetSpeed(double std_mps) {
+  if (!(params_.speed_rw_mps_rthz > 0)) return;
+  set_speed_ = (state_.q_NB.conjugate() * state_.v_N_mps).x();
+  P_.row(kSpeed).setZero();
+  P_.col(kSpeed).setZero();
+  P_(kSpeed, kSpeed) = std_mps * std_mps;
+}
+
 UpdateResult ErrorStateEkf::UpdateYaw(double yaw_enu_rad, double std_rad) {
   if (!std::isfinite(yaw_enu_rad) || !(std_rad > 0)) return {};
   const Eigen::Vector3d x_N = state_.q_NB * Eigen::Vector3d::UnitX();
@@ -172,6 +203,7 @@ void ErrorStateEkf::InjectError(const EkfVector& dx) {
   ba_ += dx.segment<3>(kAccelBias);
   bg_ += dx.segment<3>(kGyroBias);
   if (params_.gnss_error_tau_s > 0) e_gnss_ += dx.segment<3>(kGnssError);
+  if (params_.speed_rw_mps_rthz > 0) set_speed_ += dx[kSpeed];
 }
 
 Eigen::Vector3d ErrorStateEkf::GnssErrorVariance(double horizontal_std_m) const {

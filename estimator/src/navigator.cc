@@ -158,9 +158,10 @@ void Navigator::ProcessImu(const ImuSample& s) {
   }
   ekf_.Predict(s.delta_angle_B_rad, s.delta_velocity_B_mps, s.dt_s);
   filter_t_ = s.t;
-  if (params_.mode == NavMode::kEkf && params_.ekf.nhc_std_mps > 0 &&
+  if (params_.mode == NavMode::kEkf && (params_.ekf.nhc_std_mps > 0 || params_.ekf.speed_rw_mps_rthz > 0) &&
       static_cast<double>(filter_t_ - last_nhc_t_) * kNsToS >= params_.nhc_period_s - 1e-6) {
     ekf_.UpdateNonHolonomic();
+    ekf_.UpdateSpeedModel();
     last_nhc_t_ = filter_t_;
   }
   if (static_cast<double>(filter_t_ - last_gnss_fused_t_) * kNsToS > params_.outage_flag_s) {
@@ -241,6 +242,7 @@ void Navigator::ProcessGnss(const GnssSample& g) {
   if (static_cast<double>(g.t - first_rejected_t_) * kNsToS >= params_.reset_after_rejected_s) {
     const double ps = g.pos_std_enu_m.maxCoeff();
     ekf_.ResetPositionVelocity(p, g.has_velocity ? g.vel_enu_mps : ekf_.state().v_N_mps, ps, g.has_velocity ? 0.5 : 2.0);
+    ekf_.ResetSetSpeed(g.has_velocity ? 0.5 : 2.0);
     ++stats_.gnss_resets;
     first_rejected_t_ = -1;
     last_gnss_fused_t_ = g.t;
