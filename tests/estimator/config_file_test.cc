@@ -122,6 +122,10 @@ TEST(ConfigFileTest, RtkNmeaAccuracyFloatModelAndGnssWait) {
             std::string::npos);
   EXPECT_NE(err("[filter]\nnmea_rtk_fixed_std_m = 0\n").find("n.conf:2: [filter] nmea_rtk_fixed_std_m"), std::string::npos);
   EXPECT_NE(err("[filter]\ngnss_max_latency_s = 9\n").find("out of range"), std::string::npos);
+  const NavdConfig sp = NavdConfig::FromFile(ConfigFile::Parse("[filter]\nspeed_rw = 0.0005\nspeed_dev_std_mps = 0.02\n", "n.conf"));
+  EXPECT_DOUBLE_EQ(sp.nav.ekf.speed_rw_mps_rthz, 0.0005);
+  EXPECT_DOUBLE_EQ(sp.nav.ekf.speed_dev_std_mps, 0.02);
+  EXPECT_NE(err("[filter]\nspeed_dev_std_mps = 0\n").find("n.conf:2: [filter] speed_dev_std_mps"), std::string::npos);
 }
 
 }  // namespace
