@@ -22,9 +22,10 @@
 
 namespace hil::navd {
 
-/// A decoded NMEA epoch as a filter sample: horizontal 1σ per axis = HDOP × uere / √2 (vertical
-/// twice that), velocity from RMC speed and course.
-estimator::GnssSample ToGnssSample(const estimator::drivers::NmeaMeasurement& m, int leap_s, double uere_m);
+/// A decoded NMEA epoch as a filter sample: horizontal 1σ per axis from the fix quality and HDOP
+/// (nmea_accuracy.h; vertical twice that), velocity from RMC speed and course with the configured 1σ.
+estimator::GnssSample ToGnssSample(const estimator::drivers::NmeaMeasurement& m, int leap_s,
+                                   const estimator::NmeaAccuracy& acc);
 
 class GnssReceivers {
  public:

@@ -52,17 +52,19 @@ int SerialDevice::EnsureOpen() {
 
 bool SerialDevice::Read(std::string& out) {
   if (fd_ < 0) return false;
-  char buf[1024];
-  for (;;) {
-    const ssize_t n = read(fd_, buf, sizeof buf);
+  char buf[kMaxReadBytes];
+  for (std::size_t total = 0; total < kMaxReadBytes;) {
+    const ssize_t n = read(fd_, buf, kMaxReadBytes - total);
     if (n > 0) {
       out.append(buf, static_cast<std::size_t>(n));
+      total += static_cast<std::size_t>(n);
       continue;
     }
     if (n < 0 && (errno == EAGAIN || errno == EINTR)) return true;
     Close();  // EOF or EIO: the peer went away
     return false;
   }
+  return true;  // more may be waiting: poll() reports it again at once
 }
 
 }  // namespace hil::navd

@@ -3,6 +3,7 @@
 /// navd's serial input: opens a tty or pty in raw mode, reads what is there, and reopens the
 /// device when it goes away (the peer closed it, the USB adapter was unplugged).
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 
@@ -17,9 +18,14 @@ class SerialDevice {
 
   /// Opens the device if it is closed; returns the descriptor, or −1 if it cannot be opened now.
   int EnsureOpen();
-  /// Reads available bytes into `out` (appending). Returns false when the device closed or failed,
+  /// Reads available bytes into `out` (appending), at most kMaxReadBytes per call so that after a
+  /// stall (the host was busy, the kernel queued seconds of input on every device) the devices are
+  /// served in turns and their streams stay interleaved in time: reading one device's whole
+  /// backlog first would run the IMU seconds ahead of GNSS fixes still queued on the other
+  /// device, which then arrive too late to fuse. Returns false when the device closed or failed,
   /// in which case it is closed and will be reopened by the next EnsureOpen().
   bool Read(std::string& out);
+  static constexpr std::size_t kMaxReadBytes = 512;
   int fd() const { return fd_; }
   const std::string& path() const { return path_; }
   std::uint64_t reopen_count() const { return reopens_; }

@@ -16,6 +16,12 @@ void ErrorStateEkf::Initialize(const NavState& s) {
   ba_.setZero();
   bg_.setZero();
   e_gnss_.setZero();
+  set_speed_ = (s.q_NB.conjugate() * s.v_N_mps).x();
+  gm_tau_s_ = params_.gnss_error_tau_s;
+  gm_std_m_ = params_.gnss_error_std_m;
+  gm_up_ratio_ = params_.gnss_error_vertical_std_m > 0 && params_.gnss_error_std_m > 0
+                     ? params_.gnss_error_vertical_std_m / params_.gnss_error_std_m
+                     : 1.0;
   P_.setZero();
   const auto& p = params_;
   P_.block<3, 3>(kPos, kPos).diagonal().setConstant(p.init_pos_std_m * p.init_pos_std_m);
@@ -25,8 +31,9 @@ void ErrorStateEkf::Initialize(const NavState& s) {
   P_.block<3, 3>(kAccelBias, kAccelBias).diagonal().setConstant(p.init_accel_bias_std_mps2 * p.init_accel_bias_std_mps2);
   P_.block<3, 3>(kGyroBias, kGyroBias).diagonal().setConstant(p.init_gyro_bias_std_radps * p.init_gyro_bias_std_radps);
   if (p.gnss_error_tau_s > 0) {
-    P_.block<3, 3>(kGnssError, kGnssError).diagonal().setConstant(p.gnss_error_std_m * p.gnss_error_std_m);
+    P_.block<3, 3>(kGnssError, kGnssError).diagonal() = GnssErrorVariance(gm_std_m_);
   }
+  if (p.speed_rw_mps_rthz > 0) P_(kSpeed, kSpeed) = p.init_vel_std_mps * p.init_vel_std_mps;
 }
 
 void ErrorStateEkf::Predict(const Eigen::Vector3d& dth_raw, const Eigen::Vector3d& dv_raw, double dt) {
@@ -48,10 +55,11 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& dth_raw, const Eigen::Vector3
   Phi.block<3, 3>(kAtt, kAtt) -= W * dt;
   Phi.block<3, 3>(kAtt, kGyroBias) = -C * dt;
   const auto& p = params_;
-  double gm_decay = 1.0, gm_q = 0.0;
+  double gm_decay = 1.0;
+  Eigen::Vector3d gm_q = Eigen::Vector3d::Zero();
   if (p.gnss_error_tau_s > 0) {
-    gm_decay = std::exp(-dt / p.gnss_error_tau_s);
-    gm_q = p.gnss_error_std_m * p.gnss_error_std_m * (1.0 - gm_decay * gm_decay);
+    gm_decay = std::exp(-dt / gm_tau_s_);
+    gm_q = GnssErrorVariance(gm_std_m_) * (1.0 - gm_decay * gm_decay);
     Phi.block<3, 3>(kGnssError, kGnssError).diagonal().setConstant(gm_decay);
   }
   P_ = Phi * P_ * Phi.transpose();
@@ -60,7 +68,8 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& dth_raw, const Eigen::Vector3
   P_.block<3, 3>(kAtt, kAtt).diagonal().array() += p.gyro_noise_radps_rthz * p.gyro_noise_radps_rthz * dt;
   P_.block<3, 3>(kAccelBias, kAccelBias).diagonal().array() += p.accel_bias_rw_mps3_rthz * p.accel_bias_rw_mps3_rthz * dt;
   P_.block<3, 3>(kGyroBias, kGyroBias).diagonal().array() += p.gyro_bias_rw_radps2_rthz * p.gyro_bias_rw_radps2_rthz * dt;
-  if (p.gnss_error_tau_s > 0) P_.block<3, 3>(kGnssError, kGnssError).diagonal().array() += gm_q;
+  if (p.gnss_error_tau_s > 0) P_.block<3, 3>(kGnssError, kGnssError).diagonal() += gm_q;
+  if (p.speed_rw_mps_rthz > 0) P_(kSpeed, kSpeed) += p.speed_rw_mps_rthz * p.speed_rw_mps_rthz * dt;
   e_gnss_ *= gm_decay;
   Symmetrize();
 }
@@ -121,6 +130,34 @@ UpdateResult ErrorStateEkf::UpdateNonHolonomic() {
   return Update<2>(innovation, NonHolonomicJacobian(), R);
 }
 
+Eigen::Matrix<double, 1, kNumStates> ErrorStateEkf::SpeedModelJacobian() const {
+  // forward body speed x_Bᵀ Ĉᵀ v minus the set speed; attitude part as in the NHC rows
+  const Eigen::Matrix3d Ct = state_.q_NB.toRotationMatrix().transpose();
+  Eigen::Matrix<double, 1, kNumStates> H = Eigen::Matrix<double, 1, kNumStates>::Zero();
+  H.block<1, 3>(0, kVel) = Ct.row(0);
+  H.block<1, 3>(0, kAtt) = (Ct * Skew(state_.v_N_mps)).row(0);
+  H(0, kSpeed) = -1.0;
+  return H;
+}
+
+UpdateResult ErrorStateEkf::UpdateSpeedModel() {
+  if (!(params_.speed_rw_mps_rthz > 0)) return {};
+  const double forward = (state_.q_NB.conjugate() * state_.v_N_mps).x();
+  Eigen::Matrix<double, 1, 1> innovation;
+  innovation << set_speed_ - forward;
+  Eigen::Matrix<double, 1, 1> R;
+  R << params_.speed_dev_std_mps * params_.speed_dev_std_mps;
+  return Update<1>(innovation, SpeedModelJacobian(), R);
+}
+
+void ErrorStateEkf::ResetSetSpeed(double std_mps) {
+  if (!(params_.speed_rw_mps_rthz > 0)) return;
+  set_speed_ = (state_.q_NB.conjugate() * state_.v_N_mps).x();
+  P_.row(kSpeed).setZero();
+  P_.col(kSpeed).setZero();
+  P_(kSpeed, kSpeed) = std_mps * std_mps;
+}
+
 UpdateResult ErrorStateEkf::UpdateYaw(double yaw_enu_rad, double std_rad) {
   if (!std::isfinite(yaw_enu_rad) || !(std_rad > 0)) return {};
   const Eigen::Vector3d x_N = state_.q_NB * Eigen::Vector3d::UnitX();
@@ -166,6 +203,29 @@ void ErrorStateEkf::InjectError(const EkfVector& dx) {
   ba_ += dx.segment<3>(kAccelBias);
   bg_ += dx.segment<3>(kGyroBias);
   if (params_.gnss_error_tau_s > 0) e_gnss_ += dx.segment<3>(kGnssError);
+  if (params_.speed_rw_mps_rthz > 0) set_speed_ += dx[kSpeed];
+}
+
+Eigen::Vector3d ErrorStateEkf::GnssErrorVariance(double horizontal_std_m) const {
+  const double up = horizontal_std_m * gm_up_ratio_;
+  return Eigen::Vector3d(horizontal_std_m * horizontal_std_m, horizontal_std_m * horizontal_std_m, up * up);
+}
+
+void ErrorStateEkf::SetGnssErrorModel(double tau_s, double std_m) {
+  if (!(params_.gnss_error_tau_s > 0) || !(tau_s > 0) || !(std_m >= 0) || !std::isfinite(tau_s) || !std::isfinite(std_m)) return;
+  if (tau_s == gm_tau_s_ && std_m == gm_std_m_) return;
+  if (std_m > gm_std_m_) {
+    // a new error source appears on top of the old one
+    P_.block<3, 3>(kGnssError, kGnssError).diagonal() += GnssErrorVariance(std_m) - GnssErrorVariance(gm_std_m_);
+  } else {
+    // the old error is gone: the state restarts, independent of everything else
+    e_gnss_.setZero();
+    P_.block<3, kNumStates>(kGnssError, 0).setZero();
+    P_.block<kNumStates, 3>(0, kGnssError).setZero();
+    P_.block<3, 3>(kGnssError, kGnssError).diagonal() = GnssErrorVariance(std_m);
+  }
+  gm_tau_s_ = tau_s;
+  gm_std_m_ = std_m;
 }
 
 void ErrorStateEkf::ResetPositionVelocity(const Eigen::Vector3d& p, const Eigen::Vector3d& v, double pos_std,
@@ -180,7 +240,7 @@ void ErrorStateEkf::ResetPositionVelocity(const Eigen::Vector3d& p, const Eigen:
   if (params_.gnss_error_tau_s > 0) {
     P_.block<3, kNumStates>(kGnssError, 0).setZero();
     P_.block<kNumStates, 3>(0, kGnssError).setZero();
-    P_.block<3, 3>(kGnssError, kGnssError).diagonal().setConstant(params_.gnss_error_std_m * params_.gnss_error_std_m);
+    P_.block<3, 3>(kGnssError, kGnssError).diagonal() = GnssErrorVariance(gm_std_m_);
   }
 }
 

@@ -62,7 +62,7 @@ Eigen::Vector3d ToVector3(const ConfigFile& f, const ConfigEntry& e, double limi
 NavdConfig NavdConfig::FromFile(const ConfigFile& f) {
   NavdConfig c;
   c.nav.mode = NavMode::kGnssOnly;  // the default without an IMU
-  int mode_line = 0;
+  int mode_line = 0, latency_line = 0;
   for (const ConfigEntry& e : f.entries()) {
     const std::string s = e.section, k = e.key;
     EkfParams& ekf = c.nav.ekf;
@@ -76,6 +76,9 @@ NavdConfig NavdConfig::FromFile(const ConfigFile& f) {
       c.gnss_configure = e.value == "true";
     } else if (s == "input" && k == "gnss_rate_hz") c.gnss_rate_hz = ToDouble(f, e, 0.0, 10.0);
     else if (s == "filter" && k == "nmea_uere_m") c.nmea_uere_m = ToDouble(f, e, 0.005, 100.0);
+    else if (s == "filter" && k == "nmea_rtk_fixed_std_m") c.nmea_rtk_fixed_std_m = ToDouble(f, e, 0.001, 10.0);
+    else if (s == "filter" && k == "nmea_rtk_float_std_m") c.nmea_rtk_float_std_m = ToDouble(f, e, 0.001, 100.0);
+    else if (s == "filter" && k == "nmea_velocity_std_mps") c.nmea_velocity_std_mps = ToDouble(f, e, 0.001, 10.0);
     else if (s == "input" && k == "imu_device") c.imu_device = e.value;
     else if (s == "input" && k == "imu_baud") c.imu_baud = ToInt(f, e, 1200, 921600);
     else if (s == "input" && k == "imu_format") {
@@ -97,11 +100,19 @@ NavdConfig NavdConfig::FromFile(const ConfigFile& f) {
     else if (s == "filter" && k == "init_gyro_bias_std") ekf.init_gyro_bias_std_radps = ToDouble(f, e, 0.0, 1.0);
     else if (s == "filter" && k == "gnss_error_tau_s") ekf.gnss_error_tau_s = ToDouble(f, e, 0.0, 3600.0);
     else if (s == "filter" && k == "gnss_error_std_m") ekf.gnss_error_std_m = ToDouble(f, e, 0.0, 100.0);
+    else if (s == "filter" && k == "gnss_error_vertical_std_m") ekf.gnss_error_vertical_std_m = ToDouble(f, e, 0.0, 100.0);
+    else if (s == "filter" && k == "gnss_float_error_tau_s") ekf.gnss_float_error_tau_s = ToDouble(f, e, 0.0, 3600.0);
+    else if (s == "filter" && k == "gnss_float_error_std_m") ekf.gnss_float_error_std_m = ToDouble(f, e, 0.0, 100.0);
     else if (s == "filter" && k == "nhc_std_mps") ekf.nhc_std_mps = ToDouble(f, e, 0.0, 10.0);
+    else if (s == "filter" && k == "speed_rw") ekf.speed_rw_mps_rthz = ToDouble(f, e, 0.0, 10.0);
+    else if (s == "filter" && k == "speed_dev_std_mps") ekf.speed_dev_std_mps = ToDouble(f, e, 0.001, 10.0);
     else if (s == "filter" && k == "gate_sigma") ekf.gate_sigma = ToDouble(f, e, 1.0, 1000.0);
     else if (s == "filter" && k == "fusion_horizon_s")
       c.nav.fusion_horizon_ns = static_cast<std::int64_t>(ToDouble(f, e, 0.0, 2.0) * 1e9);
-    else if (s == "filter" && k == "use_gnss_velocity") {
+    else if (s == "filter" && k == "gnss_max_latency_s") {
+      c.nav.gnss_max_latency_ns = static_cast<std::int64_t>(ToDouble(f, e, 0.0, 5.0) * 1e9);
+      latency_line = e.line;
+    } else if (s == "filter" && k == "use_gnss_velocity") {
       if (e.value != "true" && e.value != "false") throw ConfigError(f.name(), e.line, Field(e), "expected true or false");
       c.nav.use_gnss_velocity = e.value == "true";
     } else if (s == "output" && k == "json") c.json_path = e.value;
@@ -124,6 +135,15 @@ NavdConfig NavdConfig::FromFile(const ConfigFile& f) {
   c.gnss_receivers.Validate(f, c.gnss_device, mode_line, c.nav);
   if (c.nav.ekf.gnss_error_tau_s > 0 && c.nav.ekf.gnss_error_std_m <= 0) {
     throw ConfigError(f.name(), 0, "[filter] gnss_error_std_m", "must be > 0 when gnss_error_tau_s is set");
+  }
+  if ((c.nav.ekf.gnss_float_error_tau_s > 0) != (c.nav.ekf.gnss_float_error_std_m > 0) ||
+      (c.nav.ekf.gnss_float_error_tau_s > 0 && !(c.nav.ekf.gnss_error_tau_s > 0))) {
+    throw ConfigError(f.name(), 0, "[filter] gnss_float_error_tau_s",
+                      "gnss_float_error_tau_s and gnss_float_error_std_m go together, and need gnss_error_tau_s > 0");
+  }
+  if (latency_line > 0 && c.nav.gnss_max_latency_ns < c.nav.fusion_horizon_ns) {
+    throw ConfigError(f.name(), latency_line, "[filter] gnss_max_latency_s",
+                      "must be at least fusion_horizon_s (the filter never runs closer than the horizon)");
   }
   return c;
 }

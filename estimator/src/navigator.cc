@@ -74,6 +74,11 @@ void Navigator::Push(const GnssSample& g) {
     return;
   }
   ++stats_.gnss_samples;
+  if (g.t > newest_gnss_t_) {
+    // the fix period, for the wait on the next epoch (clamped to 20 Hz .. 0.5 Hz)
+    if (newest_gnss_t_ >= 0) gnss_period_ns_ = std::clamp<GpsNs>(g.t - newest_gnss_t_, 50'000'000, 2'000'000'000);
+    newest_gnss_t_ = g.t;
+  }
   const bool imu_mode = params_.mode == NavMode::kEkf || params_.mode == NavMode::kImuOnly ||
                         params_.mode == NavMode::kPlanar2d;
   if (!imu_mode) {
@@ -102,7 +107,12 @@ void Navigator::Update() {
   const bool imu_mode = params_.mode == NavMode::kEkf || params_.mode == NavMode::kImuOnly ||
                         params_.mode == NavMode::kPlanar2d;
   if (!imu_mode) return;
-  const GpsNs horizon_t = newest_imu_t_ - params_.fusion_horizon_ns;
+  GpsNs horizon_t = newest_imu_t_ - params_.fusion_horizon_ns;
+  if (params_.gnss_max_latency_ns > params_.fusion_horizon_ns && gnss_period_ns_ > 0) {
+    // hold at the next expected GNSS epoch until it arrives or the wait runs out
+    const GpsNs expected_t = newest_gnss_t_ + gnss_period_ns_;
+    horizon_t = std::min(horizon_t, std::max(expected_t, newest_imu_t_ - params_.gnss_max_latency_ns));
+  }
   while (!imu_.empty() && imu_.front().t <= horizon_t) {
     ImuSample s = imu_.front();
     imu_.PopFront();
@@ -148,9 +158,10 @@ void Navigator::ProcessImu(const ImuSample& s) {
   }
   ekf_.Predict(s.delta_angle_B_rad, s.delta_velocity_B_mps, s.dt_s);
   filter_t_ = s.t;
-  if (params_.mode == NavMode::kEkf && params_.ekf.nhc_std_mps > 0 &&
+  if (params_.mode == NavMode::kEkf && (params_.ekf.nhc_std_mps > 0 || params_.ekf.speed_rw_mps_rthz > 0) &&
       static_cast<double>(filter_t_ - last_nhc_t_) * kNsToS >= params_.nhc_period_s - 1e-6) {
     ekf_.UpdateNonHolonomic();
+    ekf_.UpdateSpeedModel();
     last_nhc_t_ = filter_t_;
   }
   if (static_cast<double>(filter_t_ - last_gnss_fused_t_) * kNsToS > params_.outage_flag_s) {
@@ -203,6 +214,12 @@ void Navigator::ProcessGnss(const GnssSample& g) {
     status_ = (status_ | kStatusGnssFused) & ~kStatusDeadReckoning;
     return;
   }
+  if (params_.ekf.gnss_float_error_tau_s > 0 && params_.ekf.gnss_float_error_std_m > 0) {
+    // RTK float and fixed solutions carry different correlated errors (GGA quality 5 = float)
+    const bool is_float = g.fix_quality == 5;
+    ekf_.SetGnssErrorModel(is_float ? params_.ekf.gnss_float_error_tau_s : params_.ekf.gnss_error_tau_s,
+                           is_float ? params_.ekf.gnss_float_error_std_m : params_.ekf.gnss_error_std_m);
+  }
   const UpdateResult rp = ekf_.UpdatePosition(p, g.pos_std_enu_m);
   stats_.last_nis_pos = rp.nis;
   if (rp.accepted) {
@@ -225,6 +242,7 @@ void Navigator::ProcessGnss(const GnssSample& g) {
   if (static_cast<double>(g.t - first_rejected_t_) * kNsToS >= params_.reset_after_rejected_s) {
     const double ps = g.pos_std_enu_m.maxCoeff();
     ekf_.ResetPositionVelocity(p, g.has_velocity ? g.vel_enu_mps : ekf_.state().v_N_mps, ps, g.has_velocity ? 0.5 : 2.0);
+    ekf_.ResetSetSpeed(g.has_velocity ? 0.5 : 2.0);
     ++stats_.gnss_resets;
     first_rejected_t_ = -1;
     last_gnss_fused_t_ = g.t;

@@ -35,19 +35,29 @@ namespace fs = std::filesystem;
 
 constexpr double kDrainQuietS = 0.5;               // estimator output quiet this long after the last byte: done
 constexpr std::size_t kBackpressureBytes = 2048;   // virtual mode: wait while the host has this much unread
+// ... or this much on any one link: with only the total bounded, a host that reads its links in turns
+// leaves the backlog on the link with the most bytes per emulated second (NMEA at 1 Hz: ~600 B/s),
+// which then reaches it seconds of emulated time after the other links' bytes: no real UART does that
+constexpr std::size_t kLinkBackpressureBytes = 256;
 constexpr const char* kNavLink = "ttyNAV";         // pty the estimator writes NMEA into (output nmea_pty)
 
 std::int64_t Now() { return link::RealtimePacer::MonotonicNs(); }
 double SecondsSince(std::int64_t t0) { return static_cast<double>(Now() - t0) * 1e-9; }
 
 // Bytes the estimator has not read yet, on the links it reads (`host_links`; empty: all links).
+// With `max_link` set, the most on any one such link goes there.
 // Links it does not read (e.g. the second and third receiver for a single-receiver estimator) must
 // neither pace the run nor look like a hang.
-std::size_t PendingToHost(const DeviceSet& set, const std::set<std::string>& host_links) {
+std::size_t PendingToHost(const DeviceSet& set, const std::set<std::string>& host_links,
+                          std::size_t* max_link = nullptr) {
   std::size_t n = 0;
+  if (max_link) *max_link = 0;
   for (const auto& ports : set.endpoints) {
     for (const auto& ep : ports) {
-      if (host_links.empty() || host_links.count(ep->link_name())) n += ep->PendingToHost();
+      if (!host_links.empty() && !host_links.count(ep->link_name())) continue;
+      const std::size_t p = ep->PendingToHost();
+      n += p;
+      if (max_link && p > *max_link) *max_link = p;
     }
   }
   return n;
@@ -211,13 +221,14 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
       return true;
     }
     // virtual mode: the host paces the run; waiting while it has unread input bounds the pty buffer
-    std::size_t pending = PendingToHost(set, host_links);
+    std::size_t link_pending = 0;
+    std::size_t pending = PendingToHost(set, host_links, &link_pending);
     std::int64_t last_progress = Now();
-    while (pending > kBackpressureBytes && estimator_running()) {
-      usleep(1000);
+    while ((pending > kBackpressureBytes || link_pending > kLinkBackpressureBytes) && estimator_running()) {
+      usleep(link_pending > kLinkBackpressureBytes && pending <= kBackpressureBytes ? 100 : 1000);
       collector.Poll();
       if (interrupted()) return false;
-      const std::size_t now_pending = PendingToHost(set, host_links);
+      const std::size_t now_pending = PendingToHost(set, host_links, &link_pending);
       if (now_pending < pending) last_progress = Now();
       pending = now_pending;
       if (Now() - last_progress > silence_ns && silent_for_ns() > silence_ns) {

@@ -1,5 +1,7 @@
 #include "hil/harness/serial_endpoint.h"
 
+#include <sched.h>
+
 #include <stdexcept>
 
 #include "hil/firmware_emu/link/pty_port.h"
@@ -7,6 +9,8 @@
 
 namespace hil::harness {
 namespace {
+
+constexpr std::int64_t kHandoverTimeoutNs = 50'000'000;  // virtual mode: longest wait for the kernel hand-over
 
 std::unique_ptr<link::SerialPort> OpenPort(const std::string& link_name, const std::string& link_path, int baud) {
   if (link::IsDevicePath(link_name)) return std::make_unique<link::TtyPort>(link_name, baud);
@@ -103,7 +107,19 @@ void SerialEndpoint::WriteNextByte(const link::RealtimePacer& pacer) {
 
 void SerialEndpoint::WriteAll() {
   for (const auto& [c, name] : pending_) {
+    const std::size_t queued_before = handover_wait_ ? port_->PendingToHost() : 0;
     port_->Write(std::string_view(c.bytes).substr(pending_offset_));
+    if (handover_wait_) {
+      // the bytes reached the host's input queue (it grew) or the host read meanwhile (it changed)
+      const std::int64_t give_up = link::RealtimePacer::MonotonicNs() + kHandoverTimeoutNs;
+      while (port_->PendingToHost() == queued_before) {
+        if (link::RealtimePacer::MonotonicNs() > give_up) {
+          handover_wait_ = false;
+          break;
+        }
+        sched_yield();
+      }
+    }
     pending_offset_ = 0;
     CaptureRecord r;
     r.dir = CaptureDir::kTx;

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <string>
 
@@ -105,6 +106,46 @@ TEST(ConfigFileTest, NmeaUereSetsTheAccuracyOfNmeaFixes) {
   } catch (const ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("n.conf:2: [filter] nmea_uere_m"), std::string::npos) << e.what();
   }
+}
+
+
+TEST(ConfigFileTest, RtkNmeaAccuracyFloatModelAndGnssWait) {
+  const NavdConfig c = NavdConfig::FromFile(ConfigFile::Parse(
+      "[filter]\nnmea_uere_m = 0.5\nnmea_rtk_fixed_std_m = 0.008\nnmea_rtk_float_std_m = 0.2\n"
+      "nmea_velocity_std_mps = 0.1\ngnss_error_tau_s = 30\ngnss_error_std_m = 0.008\n"
+      "gnss_float_error_tau_s = 5\ngnss_float_error_std_m = 0.2\nfusion_horizon_s = 0.25\ngnss_max_latency_s = 2.5\n",
+      "n.conf"));
+  EXPECT_DOUBLE_EQ(NmeaHorizontalStd(c.nmea_accuracy(), kGgaQualityRtkFixed, 0.9), 0.008);
+  EXPECT_DOUBLE_EQ(NmeaHorizontalStd(c.nmea_accuracy(), kGgaQualityRtkFloat, 0.9), 0.2);
+  EXPECT_NEAR(NmeaHorizontalStd(c.nmea_accuracy(), 1, 1.2), 1.2 * 0.5 / std::sqrt(2.0), 1e-12);
+  EXPECT_NEAR(NmeaHorizontalStd(c.nmea_accuracy(), 1, std::nullopt), 5.0 * 0.5 / std::sqrt(2.0), 1e-12);
+  EXPECT_DOUBLE_EQ(c.nmea_accuracy().velocity_std_mps, 0.1);
+  EXPECT_DOUBLE_EQ(c.nav.ekf.gnss_float_error_tau_s, 5.0);
+  EXPECT_DOUBLE_EQ(c.nav.ekf.gnss_float_error_std_m, 0.2);
+  EXPECT_EQ(c.nav.gnss_max_latency_ns, 2'500'000'000);
+  // without RTK settings a quality-4 fix falls back to HDOP × UERE
+  EXPECT_NEAR(NmeaHorizontalStd(NmeaAccuracy{}, kGgaQualityRtkFixed, 1.0), 2.5 / std::sqrt(2.0), 1e-12);
+  const auto err = [](const std::string& text) {
+    try {
+      NavdConfig::FromFile(ConfigFile::Parse(text, "n.conf"));
+    } catch (const ConfigError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(err("[filter]\nfusion_horizon_s = 0.5\ngnss_max_latency_s = 0.3\n").find("n.conf:3: [filter] gnss_max_latency_s"),
+            std::string::npos);
+  EXPECT_NE(err("[filter]\ngnss_error_tau_s = 30\ngnss_error_std_m = 0.01\ngnss_float_error_tau_s = 5\n").find(
+                "gnss_float_error_std_m"),
+            std::string::npos);
+  EXPECT_NE(err("[filter]\ngnss_float_error_tau_s = 5\ngnss_float_error_std_m = 0.2\n").find("gnss_error_tau_s"),
+            std::string::npos);
+  EXPECT_NE(err("[filter]\nnmea_rtk_fixed_std_m = 0\n").find("n.conf:2: [filter] nmea_rtk_fixed_std_m"), std::string::npos);
+  EXPECT_NE(err("[filter]\ngnss_max_latency_s = 9\n").find("out of range"), std::string::npos);
+  const NavdConfig sp = NavdConfig::FromFile(ConfigFile::Parse("[filter]\nspeed_rw = 0.0005\nspeed_dev_std_mps = 0.02\n", "n.conf"));
+  EXPECT_DOUBLE_EQ(sp.nav.ekf.speed_rw_mps_rthz, 0.0005);
+  EXPECT_DOUBLE_EQ(sp.nav.ekf.speed_dev_std_mps, 0.02);
+  EXPECT_NE(err("[filter]\nspeed_dev_std_mps = 0\n").find("n.conf:2: [filter] speed_dev_std_mps"), std::string::npos);
 }
 
 }  // namespace

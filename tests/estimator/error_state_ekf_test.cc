@@ -17,6 +17,7 @@ class ErrorStateEkfTest : public ::testing::Test {
     p.gnss_error_tau_s = 5.0;
     p.gnss_error_std_m = 0.3;
     p.nhc_std_mps = 0.05;
+    p.speed_rw_mps_rthz = 0.001;
     ekf_ = ErrorStateEkf(p, EarthModel{});
     NavState s;
     s.p_N_m = Eigen::Vector3d(10, -4, 2);
@@ -35,6 +36,9 @@ class ErrorStateEkfTest : public ::testing::Test {
   Eigen::Vector3d Vel(const ErrorStateEkf& e) const {
     const Eigen::Vector3d w = raw_w_ - e.gyro_bias();  // the rate the filter used, re-derived from the bias
     return e.state().v_N_mps + e.state().q_NB * w.cross(e.params().lever_arm_B_m);
+  }
+  static double Speed(const ErrorStateEkf& e) {
+    return (e.state().q_NB.conjugate() * e.state().v_N_mps).x() - e.set_speed_mps();
   }
   static Eigen::Vector2d Nhc(const ErrorStateEkf& e) {
     return (e.state().q_NB.conjugate() * e.state().v_N_mps).tail<2>();
@@ -75,6 +79,25 @@ TEST_F(ErrorStateEkfTest, NonHolonomicJacobianMatchesFiniteDifferences) {
   EXPECT_LT((J - ekf_.NonHolonomicJacobian()).cwiseAbs().maxCoeff(), 1e-6);
 }
 
+TEST_F(ErrorStateEkfTest, SpeedModelJacobianMatchesFiniteDifferences) {
+  const auto J = Numeric<1>([](const ErrorStateEkf& e) { return Eigen::Matrix<double, 1, 1>(Speed(e)); });
+  EXPECT_LT((J - ekf_.SpeedModelJacobian()).cwiseAbs().maxCoeff(), 1e-6) << J << "\n\n" << ekf_.SpeedModelJacobian();
+}
+
+TEST_F(ErrorStateEkfTest, SpeedModelPullsTheForwardSpeedToTheSetSpeed) {
+  // GIVEN the set speed started at the current forward speed, then a forward-speed error of 0.1 m/s
+  ekf_.ResetSetSpeed(0.01);
+  const double set = ekf_.set_speed_mps();
+  ekf_.mutable_state().v_N_mps += ekf_.state().q_NB * Eigen::Vector3d(0.1, 0, 0);
+  // WHEN the speed model is applied
+  const UpdateResult r = ekf_.UpdateSpeedModel();
+  // THEN it is accepted and moves the forward speed most of the way back (set speed σ 0.01 < velocity σ)
+  EXPECT_TRUE(r.accepted);
+  EXPECT_EQ(r.dof, 1);
+  EXPECT_LT(std::abs(Speed(ekf_)), 0.03);
+  EXPECT_LT(std::abs(ekf_.set_speed_mps() - set), 0.03);
+}
+
 TEST_F(ErrorStateEkfTest, GateRejectsAnOutlierAndAcceptsAConsistentFix) {
   const Eigen::Vector3d p = Pos(ekf_);
   const UpdateResult bad = ekf_.UpdatePosition(p + Eigen::Vector3d(50, 0, 0), Eigen::Vector3d::Constant(0.1));
@@ -91,6 +114,48 @@ TEST_F(ErrorStateEkfTest, NonFiniteInputsAreIgnored) {
   EXPECT_FALSE(ekf_.UpdatePosition(Eigen::Vector3d::Constant(INFINITY), Eigen::Vector3d::Ones()).accepted);
   EXPECT_EQ(ekf_.state().p_N_m, before.p_N_m);
   EXPECT_TRUE(ekf_.covariance().allFinite());
+}
+
+TEST_F(ErrorStateEkfTest, GnssErrorModelSwitchAddsOrRestartsTheCorrelatedError) {
+  // GIVEN a filter whose correlated GNSS error state has been observed (cross-covariances built up)
+  const Eigen::Vector3d p = Pos(ekf_);
+  ASSERT_TRUE(ekf_.UpdatePosition(p + Eigen::Vector3d(0.05, -0.02, 0.0), Eigen::Vector3d::Constant(0.05)).accepted);
+  const EkfMatrix before = ekf_.covariance();
+  const double cross_before = before.block<3, 3>(kPos, kGnssError).cwiseAbs().maxCoeff();
+  ASSERT_GT(cross_before, 1e-4);
+  // WHEN the receiver drops to RTK float (a larger, independent error appears)
+  ekf_.SetGnssErrorModel(2.0, 0.5);
+  const EkfMatrix wider = ekf_.covariance();
+  // THEN its variance grows by σ_new² − σ_old² and nothing else changes
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(wider(kGnssError + i, kGnssError + i) - before(kGnssError + i, kGnssError + i), 0.25 - 0.09, 1e-12);
+  }
+  const double other_change = (wider.topLeftCorner<kGnssError, kGnssError>() - before.topLeftCorner<kGnssError, kGnssError>()).cwiseAbs().maxCoeff();
+  const double cross_change = (wider.block<kGnssError, 3>(0, kGnssError) - before.block<kGnssError, 3>(0, kGnssError)).cwiseAbs().maxCoeff();
+  EXPECT_LT(other_change, 1e-15);
+  EXPECT_LT(cross_change, 1e-15);
+  // WHEN it fixes again (the float error is gone): the state restarts at zero, uncorrelated, at the new σ
+  ekf_.SetGnssErrorModel(30.0, 0.01);
+  const EkfMatrix fixed = ekf_.covariance();
+  EXPECT_EQ(ekf_.gnss_error(), Eigen::Vector3d::Zero());
+  const double cross_fixed = fixed.block<kGnssError, 3>(0, kGnssError).cwiseAbs().maxCoeff();
+  EXPECT_EQ(cross_fixed, 0.0);
+  EXPECT_NEAR(fixed(kGnssError, kGnssError), 1e-4, 1e-15);
+  // AND the process uses the new model: the variance stays at the stationary σ² of the new process
+  for (int k = 0; k < 100; ++k) ekf_.Predict(Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, 9.81) * 0.01, 0.01);
+  EXPECT_NEAR(ekf_.covariance()(kGnssError, kGnssError), 1e-4, 1e-9);
+  // AND an unchanged model is a no-op
+  const EkfMatrix same = ekf_.covariance();
+  ekf_.SetGnssErrorModel(30.0, 0.01);
+  EXPECT_EQ(ekf_.covariance(), same);
+}
+
+TEST(ErrorStateEkfGnssModelTest, SwitchIsIgnoredWithoutCorrelatedStates) {
+  ErrorStateEkf ekf(EkfParams{}, EarthModel{});  // gnss_error_tau_s = 0: plain 15-state filter
+  ekf.Initialize(NavState{});
+  const EkfMatrix before = ekf.covariance();
+  ekf.SetGnssErrorModel(2.0, 0.5);
+  EXPECT_EQ(ekf.covariance(), before);
 }
 
 }  // namespace

@@ -61,5 +61,72 @@ TEST(NavigatorTest, CountsOutOfOrderImuAndRejectsBadInput) {
   EXPECT_FALSE(nav.aligned());
 }
 
+
+// An aligned EKF navigator driven at 100 Hz, level and still but for a GNSS course of 1 m/s north.
+struct WaitRig {
+  explicit WaitRig(std::int64_t max_latency_ns) : nav(Params(max_latency_ns)) {}
+  static NavigatorParams Params(std::int64_t max_latency_ns) {
+    NavigatorParams p;
+    p.mode = NavMode::kEkf;
+    p.fusion_horizon_ns = 200'000'000;
+    p.gnss_max_latency_ns = max_latency_ns;
+    return p;
+  }
+  void ImuUntil(GpsNs t_end) {
+    for (; t_imu < t_end; t_imu += 10'000'000) {
+      ImuSample s;
+      s.t = t_imu + 10'000'000;
+      s.dt_s = 0.01;
+      s.delta_velocity_B_mps = Eigen::Vector3d(0, 0, 9.80) * 0.01;
+      nav.Push(s);
+      nav.Update();
+    }
+  }
+  void Fix(GpsNs t) {
+    GnssSample g;
+    g.t = t;
+    g.position = frame.ToLla(Eigen::Vector3d(0, 1e-9 * static_cast<double>(t - kT0), 0));
+    g.pos_std_enu_m.setConstant(0.1);
+    g.has_velocity = true;
+    g.vel_enu_mps = Eigen::Vector3d(0, 1, 0);
+    nav.Push(g);
+  }
+  Navigator nav;
+  LocalTangentFrame frame{Lla{45.0, 10.0, 100.0}};
+  GpsNs t_imu = kT0;
+};
+
+TEST(NavigatorTest, WaitsForADueFixUpToTheMaximumLatency) {
+  for (const bool wait : {true, false}) {
+    // GIVEN an aligned filter with fixes at 1 Hz, fused on time
+    WaitRig rig(wait ? 2'500'000'000 : 0);
+    for (int k = 0; k < 3; ++k) {
+      rig.ImuUntil(kT0 + k * 1'000'000'000LL + 100'000'000);
+      rig.Fix(kT0 + k * 1'000'000'000LL);
+    }
+    ASSERT_TRUE(rig.nav.aligned());
+    ASSERT_EQ(rig.nav.stats().gnss_late, 0u);
+    // WHEN the next fix (due at 3 s) reaches the host 1.5 s after its epoch (a slow link, a busy host)
+    rig.ImuUntil(kT0 + 4'500'000'000LL);
+    rig.Fix(kT0 + 3'000'000'000LL);
+    rig.ImuUntil(kT0 + 4'600'000'000LL);
+    // THEN with a 2.5 s wait the filter held at the due epoch and fuses it; with no wait it is late
+    EXPECT_EQ(rig.nav.stats().gnss_late, wait ? 0u : 1u);
+    if (wait) {
+      EXPECT_GE(rig.nav.filter_time(), kT0 + 3'000'000'000LL);
+    }
+    // AND the output always reports the newest IMU time (the output predictor)
+    EXPECT_EQ(rig.nav.Output().t, kT0 + 4'600'000'000LL);
+  }
+  // AND without fixes (an outage) the waiting filter runs the maximum latency behind, no further
+  WaitRig rig(2'500'000'000);
+  for (int k = 0; k < 3; ++k) {
+    rig.ImuUntil(kT0 + k * 1'000'000'000LL + 100'000'000);
+    rig.Fix(kT0 + k * 1'000'000'000LL);
+  }
+  rig.ImuUntil(kT0 + 20'000'000'000LL);
+  EXPECT_NEAR(static_cast<double>(kT0 + 20'000'000'000LL - rig.nav.filter_time()) * 1e-9, 2.5, 0.011);
+}
+
 }  // namespace
 }  // namespace hil::estimator

@@ -7,15 +7,22 @@
 /// output: nominal NavState, biases, covariance, NIS of the last update, status flags
 /// @endsystem
 ///
-/// Error state (kNumStates = 18, fixed-size):
+/// Error state (kNumStates = 19, fixed-size):
 ///   δp (N, m) | δv (N, m/s) | φ (attitude error in N, rad; C_true = Exp(φ)·Ĉ) | δb_a (B, m/s²) |
-///   δb_g (B, rad/s) | e_gnss (N, m: first-order Gauss–Markov GNSS position error, optional)
+///   δb_g (B, rad/s) | e_gnss (N, m: first-order Gauss–Markov GNSS position error, optional) |
+///   δs (m/s: the vehicle's set speed, a slow random walk, optional)
+/// The speed state is the vehicle model of a ground vehicle that holds its speed (cruise control,
+/// constant throttle): the forward body velocity stays within `speed_dev_std_mps` of a set speed
+/// that itself wanders as a random walk of `speed_rw_mps_rthz`. It gives the along-track velocity a
+/// memory of tens of seconds, which a low-cost accelerometer (whose tilt drifts with the gyro
+/// noise) cannot give, so the correlated GNSS error can be averaged over that long. Off (frozen,
+/// zero covariance) when speed_rw_mps_rthz = 0.
 /// The first 15 are the classic INS error states (paper 004); the three augmented states model the
 /// time-correlated error of a standalone receiver (NEO-5M class, τ of seconds) so it is not mistaken
 /// for vehicle motion. With gnss_error_tau_s = 0 they are frozen at zero (a plain 15-state filter).
 /// Continuous error dynamics (ENU, Earth-fixed tangent frame):
 ///   δṗ = δv;  δv̇ = −[(Ĉf̂)×]φ − Ĉδb_a − 2[ω_IE×]δv;  φ̇ = −[ω_IE×]φ − Ĉδb_g;
-///   δḃ = w (random walk);  ė = −e/τ + w.
+///   δḃ = w (random walk);  ė = −e/τ + w (σ per axis: horizontal, horizontal, vertical).
 /// Φ = I + F·dt per IMU interval; Joseph-form updates; every update is χ²-gated on its NIS.
 /// The filter never throws or aborts on input; non-finite inputs are counted and rejected.
 
@@ -36,7 +43,8 @@ inline constexpr int kAtt = 6;
 inline constexpr int kAccelBias = 9;
 inline constexpr int kGyroBias = 12;
 inline constexpr int kGnssError = 15;
-inline constexpr int kNumStates = 18;
+inline constexpr int kSpeed = 18;
+inline constexpr int kNumStates = 19;
 }  // namespace ekf_index
 
 using EkfVector = Eigen::Matrix<double, ekf_index::kNumStates, 1>;
@@ -56,10 +64,18 @@ struct EkfParams {
   double init_gyro_bias_std_radps = 0.005;
   Eigen::Vector3d lever_arm_B_m = Eigen::Vector3d::Zero();  ///< GNSS antenna in the body frame
   double gnss_error_tau_s = 0.0;              ///< correlated GNSS position error τ (0 = off)
-  double gnss_error_std_m = 0.0;              ///< its steady-state σ per axis
+  double gnss_error_std_m = 0.0;              ///< its steady-state σ per horizontal axis (and up, unless:)
+  /// σ of the up component (0: gnss_error_std_m); the float model keeps the same up/horizontal ratio
+  double gnss_error_vertical_std_m = 0.0;
+  /// RTK float solutions (GGA quality 5): their own correlated error (decimetres, seconds); the
+  /// filter switches to this model while fixes are float (0 = same model as fixed fixes).
+  double gnss_float_error_tau_s = 0.0;
+  double gnss_float_error_std_m = 0.0;
   double gnss_pos_std_floor_m = 0.005;        ///< lower bound on the white GNSS position σ
   double gnss_vel_std_floor_mps = 0.01;
   double nhc_std_mps = 0.0;                   ///< non-holonomic constraint σ (0 = off)
+  double speed_rw_mps_rthz = 0.0;             ///< set-speed random walk, m/s/√s (0 = speed model off)
+  double speed_dev_std_mps = 0.05;            ///< forward speed's deviation from the set speed (1σ)
   double gate_sigma = 5.0;                    ///< per-update χ² gate: NIS ≤ gate² · dof
 };
 
@@ -97,8 +113,17 @@ class ErrorStateEkf {
   UpdateResult UpdateVelocity(const Eigen::Vector3d& v_antenna_N_mps, const Eigen::Vector3d& std_mps);
   /// Non-holonomic constraint: body lateral and vertical velocity are zero (ground vehicle).
   UpdateResult UpdateNonHolonomic();
+  /// Speed model: the forward body velocity equals the set speed (within speed_dev_std_mps).
+  UpdateResult UpdateSpeedModel();
+  /// Starts the set speed at the current forward body velocity (alignment, after a reset).
+  void ResetSetSpeed(double std_mps);
   /// Heading (yaw of body x, radians counter-clockwise from east) with σ.
   UpdateResult UpdateYaw(double yaw_enu_rad, double std_rad);
+  /// Switches the correlated GNSS error model (the receiver changed its solution type, e.g. RTK
+  /// fixed ↔ float). A larger σ adds the new, independent error's variance; a smaller σ means the
+  /// old error is gone (ambiguities fixed): the state restarts at zero with the new σ. No effect
+  /// when the augmented states are off (gnss_error_tau_s = 0) or the model is unchanged.
+  void SetGnssErrorModel(double tau_s, double std_m);
   /// Resets position/velocity to a measurement after a long rejection (keeps attitude and biases).
   void ResetPositionVelocity(const Eigen::Vector3d& p_N_m, const Eigen::Vector3d& v_N_mps, double pos_std_m,
                              double vel_std_mps);
@@ -112,6 +137,7 @@ class ErrorStateEkf {
   Eigen::Matrix<double, 3, ekf_index::kNumStates> PositionJacobian() const;
   Eigen::Matrix<double, 3, ekf_index::kNumStates> VelocityJacobian() const;
   Eigen::Matrix<double, 2, ekf_index::kNumStates> NonHolonomicJacobian() const;
+  Eigen::Matrix<double, 1, ekf_index::kNumStates> SpeedModelJacobian() const;
   /// Applies an error-state vector to the nominal state (closed-loop correction).
   void InjectError(const EkfVector& dx);
 
@@ -121,6 +147,7 @@ class ErrorStateEkf {
   const Eigen::Vector3d& accel_bias() const { return ba_; }
   const Eigen::Vector3d& gyro_bias() const { return bg_; }
   const Eigen::Vector3d& gnss_error() const { return e_gnss_; }
+  double set_speed_mps() const { return set_speed_; }
   const Eigen::Vector3d& last_gyro_rate_B() const { return w_B_; }
   const EkfParams& params() const { return params_; }
   std::uint32_t repairs() const { return repairs_; }
@@ -131,6 +158,8 @@ class ErrorStateEkf {
                       const Eigen::Matrix<double, M, ekf_index::kNumStates>& H,
                       const Eigen::Matrix<double, M, M>& R);
   void Symmetrize();
+  /// Stationary variances (E, N, U) of the correlated GNSS error for a horizontal σ.
+  Eigen::Vector3d GnssErrorVariance(double horizontal_std_m) const;
 
   EkfParams params_;
   EarthModel earth_;
@@ -138,6 +167,9 @@ class ErrorStateEkf {
   MechanizationMemory memory_;
   Eigen::Vector3d ba_ = Eigen::Vector3d::Zero(), bg_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d e_gnss_ = Eigen::Vector3d::Zero();
+  double gm_tau_s_ = 0.0, gm_std_m_ = 0.0;  // current correlated GNSS error model (horizontal σ)
+  double gm_up_ratio_ = 1.0;                // up σ / horizontal σ
+  double set_speed_ = 0.0;                  // speed model: the vehicle's set speed (m/s)
   Eigen::Vector3d w_B_ = Eigen::Vector3d::Zero();   // last compensated angular rate
   Eigen::Vector3d f_N_ = Eigen::Vector3d::Zero();   // last specific force in N
   EkfMatrix P_ = EkfMatrix::Identity();

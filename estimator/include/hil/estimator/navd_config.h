@@ -10,6 +10,7 @@
 #include "hil/estimator/navd_imu_config.h"
 #include "hil/estimator/navd_gnss_receivers.h"
 #include "hil/estimator/navigator.h"
+#include "hil/estimator/nmea_accuracy.h"
 
 namespace hil::estimator {
 
@@ -20,13 +21,21 @@ struct NavdConfig {
   int gnss_baud = 9600;
   std::string gnss_protocol = "nmea";  ///< nmea (GGA + RMC) or ubx (NAV-POSLLH/VELNED/SOL)
   /// NMEA carries no accuracy estimate: a fix's horizontal 1σ per axis is HDOP × nmea_uere_m / √2
-  /// (vertical twice that). UBX input uses the receiver's own hAcc/vAcc instead.
+  /// (vertical twice that), or the configured RTK fixed/float 1σ (nmea_accuracy.h). UBX input uses
+  /// the receiver's own hAcc/vAcc instead.
   double nmea_uere_m = 2.5;
   /// Configure the receiver at start-up with UBX CFG commands, each waiting for its ACK (and again
   /// after the port reopens): ubx → NAV-POSLLH/VELNED/SOL/TIMEGPS on, NMEA off; nmea → GGA and RMC
   /// only. Off by default (the receiver's saved configuration is used as it is).
   bool gnss_configure = false;
   double gnss_rate_hz = 0;       ///< with gnss_configure: CFG-RATE to this rate; 0 leaves the rate
+  double nmea_rtk_fixed_std_m = 0.0;  ///< [filter] 1σ per horizontal axis of RTK fixed fixes (0: UERE)
+  double nmea_rtk_float_std_m = 0.0;  ///< [filter] 1σ per horizontal axis of RTK float fixes (0: UERE)
+  double nmea_velocity_std_mps = 0.2; ///< [filter] 1σ per horizontal axis of the RMC velocity
+  /// The NMEA accuracy settings together.
+  NmeaAccuracy nmea_accuracy() const {
+    return {nmea_uere_m, nmea_rtk_fixed_std_m, nmea_rtk_float_std_m, nmea_velocity_std_mps};
+  }
   std::string imu_device;        ///< serial device of the IMU microcontroller; empty = none
   int imu_baud = 57600;
   std::string imu_format = "mcu";///< mcu (binary frame protocol v1) or razor_text (Razor v13 stock lines)

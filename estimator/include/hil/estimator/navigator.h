@@ -13,6 +13,13 @@
 /// (the IMU interval that contains it is split there). Output() re-propagates the filter state
 /// through the IMU samples still waiting in the buffer (the output predictor). Samples older than
 /// the filter time are counted as late and dropped; IMU samples out of order are dropped.
+/// Waiting for GNSS: with `gnss_max_latency_ns` above the horizon, the filter also holds at the
+/// time of the next expected GNSS epoch (last fix time + the measured fix period) until that fix
+/// arrives or the newest IMU sample is `gnss_max_latency_ns` past it. A slow serial link (NMEA at
+/// 9600 baud completes GGA ≈ 0.3 s after the epoch) or a host that reads its devices unevenly
+/// then costs no fixes, while the filter runs only `fusion_horizon_ns` behind when fixes are on
+/// time. During a GNSS outage the filter runs `gnss_max_latency_ns` behind (the output predictor
+/// still reports the newest IMU time).
 /// Alignment: levelling from the mean specific force, heading from the GNSS course once the speed
 /// exceeds `align_min_speed_mps`, or from the compass. Fixed-size buffers, no allocation.
 
@@ -49,6 +56,8 @@ struct NavigatorParams {
   EkfParams ekf;
   PlanarFilterParams planar;
   std::int64_t fusion_horizon_ns = 250'000'000;  ///< largest GNSS delay that is still fused in time
+  /// Longest wait for an expected GNSS epoch (≤ the filter's IMU buffer; 0 or ≤ the horizon: off).
+  std::int64_t gnss_max_latency_ns = 0;
   double align_min_speed_mps = 0.2;              ///< GNSS course trusted for heading above this
   double nhc_period_s = 0.1;                     ///< non-holonomic update period (if enabled)
   double outage_flag_s = 1.5;                    ///< dead-reckoning flag after this long without GNSS
@@ -123,11 +132,12 @@ class Navigator {
   LocalTangentFrame frame_;
   bool frame_set_ = false;
   bool aligned_ = false;
-  RingBuffer<ImuSample, 512> imu_;
+  RingBuffer<ImuSample, 1024> imu_;   // 10 s at 100 Hz: covers the longest GNSS wait
   RingBuffer<GnssSample, 32> gnss_;
   std::optional<HeadingSample> heading_;
   GpsNs newest_imu_t_ = 0, filter_t_ = 0, last_gnss_fused_t_ = 0, first_rejected_t_ = -1;
   GpsNs last_nhc_t_ = 0;
+  GpsNs newest_gnss_t_ = -1, gnss_period_ns_ = 0;  // GNSS stream timing (for the wait)
   bool have_imu_ = false;
   Eigen::Vector3d mean_f_B_ = Eigen::Vector3d::Zero();
   double mean_f_weight_ = 0;
