@@ -105,7 +105,7 @@ TEST(ScenarioCanTest, VirtualModeIsRefusedForAnImuOnCan) {
 TEST(ScenarioCanTest, ShippedCanScenarioLoads) {
   const char* src = std::getenv("HIL_SOURCE_DIR");
   ASSERT_NE(src, nullptr);
-  const Scenario s = LoadScenario(std::string(src) + "/vectors/scenarios/can_imu.yaml");
+  const Scenario s = LoadScenario(std::string(src) + "/vectors/scenarios/vcan/can_imu.yaml");
   EXPECT_TRUE(s.can.imu_to_estimator);
   EXPECT_EQ(s.can.interface, "vcan0");
   EXPECT_TRUE(s.mcu.config.can.enabled);
