@@ -192,7 +192,7 @@ void J1939ImuDecoder::OnPulse(const HilTimePulseMessage& p, std::int64_t rx_ns) 
     ++stats_.mcu_resets;
     mcu_clock_.Reset();
     timer_.Reset();
-    have_prev_ = false;
+    increments_.Restart();
   }
   have_tick_ = true;
   last_tick_ = p.tick;
@@ -212,29 +212,14 @@ std::optional<ImuSample> J1939ImuDecoder::OnPair(const AriMessage& ari, const Ac
   const auto measured = arrival_.ToGps(rx_ns - static_cast<std::int64_t>(std::llround(ari.latency_s * 1e9)));
   if (!measured) {
     ++stats_.imu_no_time;
-    have_prev_ = false;
+    increments_.Restart();
     return std::nullopt;
   }
   const GpsNs t = timer_.Add(*measured);
-  std::optional<ImuSample> out;
-  if (have_prev_) {
-    const double dt = static_cast<double>(t - prev_t_) * 1e-9;
-    if (dt > 0 && dt <= config_.max_gap_s) {
-      ImuSample s;
-      s.t = t;
-      s.dt_s = dt;
-      s.delta_angle_B_rad = 0.5 * (prev_w_ + w) * dt;
-      s.delta_velocity_B_mps = 0.5 * (prev_f_ + f) * dt;
-      out = s;
-      ++stats_.imu_out;
-    } else {
-      ++stats_.imu_gap;
-    }
-  }
-  have_prev_ = true;
-  prev_t_ = t;
-  prev_w_ = w;
-  prev_f_ = f;
+  const std::uint64_t gaps_before = increments_.gaps();
+  auto out = increments_.Add(t, w, f);
+  if (out) ++stats_.imu_out;
+  if (increments_.gaps() != gaps_before) ++stats_.imu_gap;
   return out;
 }
 

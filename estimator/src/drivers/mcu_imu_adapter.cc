@@ -7,7 +7,7 @@ std::optional<ImuSample> McuImuAdapter::Add(const McuFrame& f) {
     case McuFrame::Type::kStatus:
       if (f.sequence == 0 && stats_.pulses > 0) {
         clock_.Reset();
-        have_prev_ = false;
+        increments_.Restart();
         ++stats_.resets;
       }
       accel_scale_ = f.accel_scale_mps2_per_lsb;
@@ -39,28 +39,14 @@ std::optional<ImuSample> McuImuAdapter::Add(const McuFrame& f) {
   const auto t = clock_.ToGps(tick);
   if (!t) {
     ++stats_.imu_no_time;
-    have_prev_ = false;
+    increments_.Restart();
     return std::nullopt;
   }
-  std::optional<ImuSample> out;
-  if (have_prev_) {
-    const double dt = static_cast<double>(tick - prev_tick_) / clock_.rate_hz();
-    if (dt > 0 && dt <= max_gap_s_) {
-      ImuSample s;
-      s.t = *t;
-      s.dt_s = dt;
-      s.delta_angle_B_rad = 0.5 * (prev_w_ + w) * dt;
-      s.delta_velocity_B_mps = 0.5 * (prev_f_ + a) * dt;
-      out = s;
-      ++stats_.imu_out;
-    } else {
-      ++stats_.imu_gap;
-    }
-  }
-  have_prev_ = true;
+  const std::uint64_t gaps_before = increments_.gaps();
+  auto out = increments_.Add(*t, w, a, static_cast<double>(tick - prev_tick_) / clock_.rate_hz());
   prev_tick_ = tick;
-  prev_w_ = w;
-  prev_f_ = a;
+  if (out) ++stats_.imu_out;
+  if (increments_.gaps() != gaps_before) ++stats_.imu_gap;
   return out;
 }
 

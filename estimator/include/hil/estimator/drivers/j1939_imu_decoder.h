@@ -21,6 +21,7 @@
 
 #include "hil/estimator/clock_sync.h"
 #include "hil/estimator/drivers/arrival_clock.h"
+#include "hil/estimator/drivers/imu_increments.h"
 #include "hil/estimator/samples.h"
 
 namespace hil::estimator::drivers {
@@ -106,7 +107,7 @@ struct J1939ImuStats {
 
 class J1939ImuDecoder {
  public:
-  explicit J1939ImuDecoder(J1939ImuDecoderConfig config = {}) : config_(config), timer_(config.max_gap_s) {}
+  explicit J1939ImuDecoder(J1939ImuDecoderConfig config = {}) : config_(config), timer_(config.max_gap_s), increments_(config.max_gap_s) {}
   /// Consumes one frame; returns an IMU sample when the frame completes one.
   std::optional<ImuSample> Add(const CanRxFrame& frame);
   const J1939ImuStats& stats() const { return stats_; }
@@ -134,9 +135,7 @@ class J1939ImuDecoder {
   std::optional<AriMessage> pending_ari_;
   std::int64_t pending_ari_rx_ns_ = 0;
   std::optional<Ssi2Message> last_slope_;
-  bool have_prev_ = false;
-  GpsNs prev_t_ = 0;
-  Eigen::Vector3d prev_w_ = Eigen::Vector3d::Zero(), prev_f_ = Eigen::Vector3d::Zero();
+  ImuIncrements increments_;
 };
 
 }  // namespace hil::estimator::drivers

@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "hil/estimator/clock_sync.h"
+#include "hil/estimator/drivers/imu_increments.h"
 #include "hil/estimator/drivers/mcu_frame_decoder.h"
 #include "hil/estimator/samples.h"
 
@@ -23,7 +24,7 @@ struct McuAdapterStats {
 
 class McuImuAdapter {
  public:
-  explicit McuImuAdapter(double max_gap_s = 0.5) : max_gap_s_(max_gap_s) {}
+  explicit McuImuAdapter(double max_gap_s = 0.5) : increments_(max_gap_s) {}
   /// Consumes one frame; returns an IMU sample when the frame completes one.
   std::optional<ImuSample> Add(const McuFrame& frame);
   const ClockSync& clock() const { return clock_; }
@@ -31,11 +32,9 @@ class McuImuAdapter {
 
  private:
   ClockSync clock_;
-  double max_gap_s_;
+  ImuIncrements increments_;
   float accel_scale_ = 0, gyro_scale_ = 0;
-  bool have_prev_ = false;
-  std::int64_t prev_tick_ = 0;
-  Eigen::Vector3d prev_w_ = Eigen::Vector3d::Zero(), prev_f_ = Eigen::Vector3d::Zero();
+  std::int64_t prev_tick_ = 0;  ///< the interval by the MCU's own clock
   McuAdapterStats stats_;
 };
 

@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "hil/estimator/drivers/arrival_clock.h"
+#include "hil/estimator/drivers/imu_increments.h"
 #include "hil/estimator/drivers/razor_text_decoder.h"
 #include "hil/estimator/samples.h"
 
@@ -23,7 +24,7 @@ struct RazorAdapterStats {
 
 class RazorImuAdapter {
  public:
-  explicit RazorImuAdapter(RazorScales scales = {}, double max_gap_s = 0.5) : scales_(scales), timer_(max_gap_s), max_gap_s_(max_gap_s) {}
+  explicit RazorImuAdapter(RazorScales scales = {}, double max_gap_s = 0.5) : scales_(scales), timer_(max_gap_s), increments_(max_gap_s) {}
   /// A GNSS fix with time of validity `tov` whose last byte arrived at `host_ns`, `latency_s` after `tov`.
   void AddGnssArrival(std::int64_t host_ns, GpsNs tov, double latency_s);
   /// One line received at `host_ns`; an IMU sample when it completes an interval.
@@ -35,10 +36,7 @@ class RazorImuAdapter {
   RazorScales scales_;
   ArrivalClock clock_;
   PeriodicSampleTimer timer_;
-  double max_gap_s_;
-  bool have_prev_ = false;
-  GpsNs prev_t_ = 0;
-  Eigen::Vector3d prev_w_ = Eigen::Vector3d::Zero(), prev_f_ = Eigen::Vector3d::Zero();
+  ImuIncrements increments_;
   RazorAdapterStats stats_;
 };
 
