@@ -244,7 +244,9 @@ std::string SuiteMarkdown(const json& summary) {
     const int code = r.value("exit_code", -1);
     std::snprintf(line, sizeof line, "%.1f s", r.value("wall_time_s", 0.0));
     md += "| " + Cell(std::filesystem::path(r.value("run_dir", "")).filename().string()) + " | " +
-          (r["seed"].is_number() ? std::to_string(r["seed"].get<std::uint64_t>()) : std::string("-")) + " | " +
+          (r.contains("seed") && r.at("seed").is_number() ? std::to_string(r.at("seed").get<std::uint64_t>())
+                                                            : std::string("-")) +
+          " | " +
           (code == 0 ? "PASS" : code == 1 ? "FAIL" : "ERROR (" + std::to_string(code) + ")") + " | " + line + " |\n";
   }
   return md;
