@@ -15,6 +15,7 @@ est::GnssSample ToGnssSample(const est::drivers::NmeaMeasurement& m, int leap_s,
   g.pos_std_enu_m = {sigma, sigma, 2.0 * sigma};
   g.fix_quality = m.quality;
   g.num_sv = m.num_sv;
+  g.hdop = m.hdop.value_or(0.0);
   if (m.speed_mps && m.course_deg) {
     const double c = *m.course_deg * std::numbers::pi / 180.0;
     g.vel_enu_mps = {*m.speed_mps * std::sin(c), *m.speed_mps * std::cos(c), 0.0};

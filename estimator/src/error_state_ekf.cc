@@ -211,10 +211,16 @@ Eigen::Vector3d ErrorStateEkf::GnssErrorVariance(double horizontal_std_m) const 
   return Eigen::Vector3d(horizontal_std_m * horizontal_std_m, horizontal_std_m * horizontal_std_m, up * up);
 }
 
-void ErrorStateEkf::SetGnssErrorModel(double tau_s, double std_m) {
-  if (!(params_.gnss_error_tau_s > 0) || !(tau_s > 0) || !(std_m >= 0) || !std::isfinite(tau_s) || !std::isfinite(std_m)) return;
+void ErrorStateEkf::SetGnssErrorModel(double tau_s, double std_m, bool new_source) {
+  if (!(params_.gnss_error_tau_s > 0) || !(tau_s > 0) || !(std_m > 0) || !std::isfinite(tau_s) || !std::isfinite(std_m)) return;
   if (tau_s == gm_tau_s_ && std_m == gm_std_m_) return;
-  if (std_m > gm_std_m_) {
+  if (!new_source && gm_std_m_ > 0) {
+    // the same process at another scale: e' = r·e, so P's rows and columns of e scale by r
+    const double r = std_m / gm_std_m_;
+    e_gnss_ *= r;
+    P_.block<3, kNumStates>(kGnssError, 0) *= r;
+    P_.block<kNumStates, 3>(0, kGnssError) *= r;
+  } else if (std_m > gm_std_m_) {
     // a new error source appears on top of the old one
     P_.block<3, 3>(kGnssError, kGnssError).diagonal() += GnssErrorVariance(std_m) - GnssErrorVariance(gm_std_m_);
   } else {

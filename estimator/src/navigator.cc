@@ -214,11 +214,15 @@ void Navigator::ProcessGnss(const GnssSample& g) {
     status_ = (status_ | kStatusGnssFused) & ~kStatusDeadReckoning;
     return;
   }
-  if (params_.ekf.gnss_float_error_tau_s > 0 && params_.ekf.gnss_float_error_std_m > 0) {
-    // RTK float and fixed solutions carry different correlated errors (GGA quality 5 = float)
-    const bool is_float = g.fix_quality == 5;
-    ekf_.SetGnssErrorModel(is_float ? params_.ekf.gnss_float_error_tau_s : params_.ekf.gnss_error_tau_s,
-                           is_float ? params_.ekf.gnss_float_error_std_m : params_.ekf.gnss_error_std_m);
+  if (params_.ekf.gnss_error_tau_s > 0) {
+    // RTK float and fixed solutions carry different correlated errors (GGA quality 5 = float);
+    // the receiver's own error scales with its HDOP when the fix reports one
+    const auto& e = params_.ekf;
+    const bool is_float = e.gnss_float_error_tau_s > 0 && e.gnss_float_error_std_m > 0 && g.fix_quality == 5;
+    const double dop = g.hdop > 0 ? std::clamp(g.hdop, 0.5, 20.0) : 1.0;
+    ekf_.SetGnssErrorModel(is_float ? e.gnss_float_error_tau_s : e.gnss_error_tau_s,
+                           is_float ? e.gnss_float_error_std_m : e.gnss_error_std_m * dop, is_float != gnss_float_);
+    gnss_float_ = is_float;
   }
   const UpdateResult rp = ekf_.UpdatePosition(p, g.pos_std_enu_m);
   stats_.last_nis_pos = rp.nis;

@@ -124,7 +124,7 @@ TEST_F(ErrorStateEkfTest, GnssErrorModelSwitchAddsOrRestartsTheCorrelatedError) 
   const double cross_before = before.block<3, 3>(kPos, kGnssError).cwiseAbs().maxCoeff();
   ASSERT_GT(cross_before, 1e-4);
   // WHEN the receiver drops to RTK float (a larger, independent error appears)
-  ekf_.SetGnssErrorModel(2.0, 0.5);
+  ekf_.SetGnssErrorModel(2.0, 0.5, true);
   const EkfMatrix wider = ekf_.covariance();
   // THEN its variance grows by σ_new² − σ_old² and nothing else changes
   for (int i = 0; i < 3; ++i) {
@@ -135,7 +135,7 @@ TEST_F(ErrorStateEkfTest, GnssErrorModelSwitchAddsOrRestartsTheCorrelatedError) 
   EXPECT_LT(other_change, 1e-15);
   EXPECT_LT(cross_change, 1e-15);
   // WHEN it fixes again (the float error is gone): the state restarts at zero, uncorrelated, at the new σ
-  ekf_.SetGnssErrorModel(30.0, 0.01);
+  ekf_.SetGnssErrorModel(30.0, 0.01, true);
   const EkfMatrix fixed = ekf_.covariance();
   EXPECT_EQ(ekf_.gnss_error(), Eigen::Vector3d::Zero());
   const double cross_fixed = fixed.block<kGnssError, 3>(0, kGnssError).cwiseAbs().maxCoeff();
@@ -146,15 +146,42 @@ TEST_F(ErrorStateEkfTest, GnssErrorModelSwitchAddsOrRestartsTheCorrelatedError) 
   EXPECT_NEAR(ekf_.covariance()(kGnssError, kGnssError), 1e-4, 1e-9);
   // AND an unchanged model is a no-op
   const EkfMatrix same = ekf_.covariance();
-  ekf_.SetGnssErrorModel(30.0, 0.01);
+  ekf_.SetGnssErrorModel(30.0, 0.01, true);
   EXPECT_EQ(ekf_.covariance(), same);
+}
+
+TEST_F(ErrorStateEkfTest, GnssErrorScaleChangeRescalesTheSameProcess) {
+  // GIVEN a filter whose correlated GNSS error has an estimate and cross-covariances
+  const Eigen::Vector3d p = Pos(ekf_);
+  ASSERT_TRUE(ekf_.UpdatePosition(p + Eigen::Vector3d(0.05, -0.02, 0.0), Eigen::Vector3d::Constant(0.05)).accepted);
+  const EkfMatrix before = ekf_.covariance();
+  const Eigen::Vector3d e_before = ekf_.gnss_error();
+  ASSERT_GT(e_before.norm(), 1e-4);
+  const double sigma = ekf_.params().gnss_error_std_m;
+  // WHEN the receiver's HDOP doubles (same error process, twice the scale)
+  ekf_.SetGnssErrorModel(ekf_.params().gnss_error_tau_s, 2.0 * sigma, false);
+  const EkfMatrix after = ekf_.covariance();
+  // THEN the estimate doubles, its variance quadruples, its cross-covariances double, the rest stays
+  EXPECT_TRUE(ekf_.gnss_error().isApprox(2.0 * e_before, 1e-12));
+  const Eigen::Matrix3d var_before = before.block<3, 3>(kGnssError, kGnssError);
+  const Eigen::Matrix3d var_after = after.block<3, 3>(kGnssError, kGnssError);
+  EXPECT_TRUE(var_after.isApprox(4.0 * var_before, 1e-12));
+  const Eigen::Matrix<double, kGnssError, 3> cross_before = before.block<kGnssError, 3>(0, kGnssError);
+  const Eigen::Matrix<double, kGnssError, 3> cross_after = after.block<kGnssError, 3>(0, kGnssError);
+  EXPECT_TRUE(cross_after.isApprox(2.0 * cross_before, 1e-12));
+  const Eigen::Matrix<double, kGnssError, kGnssError> rest_before = before.topLeftCorner<kGnssError, kGnssError>();
+  const Eigen::Matrix<double, kGnssError, kGnssError> rest_after = after.topLeftCorner<kGnssError, kGnssError>();
+  EXPECT_EQ(rest_after, rest_before);
+  // AND the process noise follows the new scale: the variance settles at (2σ)² per horizontal axis
+  for (int k = 0; k < 20000; ++k) ekf_.Predict(Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, 9.81) * 0.01, 0.01);
+  EXPECT_NEAR(ekf_.covariance()(kGnssError, kGnssError), 4.0 * sigma * sigma, 0.01 * 4.0 * sigma * sigma);
 }
 
 TEST(ErrorStateEkfGnssModelTest, SwitchIsIgnoredWithoutCorrelatedStates) {
   ErrorStateEkf ekf(EkfParams{}, EarthModel{});  // gnss_error_tau_s = 0: plain 15-state filter
   ekf.Initialize(NavState{});
   const EkfMatrix before = ekf.covariance();
-  ekf.SetGnssErrorModel(2.0, 0.5);
+  ekf.SetGnssErrorModel(2.0, 0.5, true);
   EXPECT_EQ(ekf.covariance(), before);
 }
 

@@ -64,7 +64,9 @@ struct EkfParams {
   double init_gyro_bias_std_radps = 0.005;
   Eigen::Vector3d lever_arm_B_m = Eigen::Vector3d::Zero();  ///< GNSS antenna in the body frame
   double gnss_error_tau_s = 0.0;              ///< correlated GNSS position error τ (0 = off)
-  double gnss_error_std_m = 0.0;              ///< its steady-state σ per horizontal axis (and up, unless:)
+  /// its steady-state σ per horizontal axis (and up, unless:) at HDOP 1; fixes that report their
+  /// HDOP scale it (SetGnssErrorModel), as a receiver's error scales with its geometry
+  double gnss_error_std_m = 0.0;
   /// σ of the up component (0: gnss_error_std_m); the float model keeps the same up/horizontal ratio
   double gnss_error_vertical_std_m = 0.0;
   /// RTK float solutions (GGA quality 5): their own correlated error (decimetres, seconds); the
@@ -119,11 +121,14 @@ class ErrorStateEkf {
   void ResetSetSpeed(double std_mps);
   /// Heading (yaw of body x, radians counter-clockwise from east) with σ.
   UpdateResult UpdateYaw(double yaw_enu_rad, double std_rad);
-  /// Switches the correlated GNSS error model (the receiver changed its solution type, e.g. RTK
-  /// fixed ↔ float). A larger σ adds the new, independent error's variance; a smaller σ means the
-  /// old error is gone (ambiguities fixed): the state restarts at zero with the new σ. No effect
-  /// when the augmented states are off (gnss_error_tau_s = 0) or the model is unchanged.
-  void SetGnssErrorModel(double tau_s, double std_m);
+  /// Sets the correlated GNSS error model before a fix. `new_source`: the receiver changed its
+  /// solution type (e.g. RTK fixed ↔ float): a larger σ adds the new, independent error's
+  /// variance; a smaller σ means the old error is gone (ambiguities fixed), so the state restarts
+  /// at zero with the new σ. Otherwise the same error process only changed its scale (the
+  /// receiver's HDOP changed): the error is σ times a unit Gauss–Markov process, so the state and
+  /// its covariance rows are rescaled by the ratio of the σ. No effect when the augmented states
+  /// are off (gnss_error_tau_s = 0) or the model is unchanged.
+  void SetGnssErrorModel(double tau_s, double std_m, bool new_source);
   /// Resets position/velocity to a measurement after a long rejection (keeps attitude and biases).
   void ResetPositionVelocity(const Eigen::Vector3d& p_N_m, const Eigen::Vector3d& v_N_mps, double pos_std_m,
                              double vel_std_mps);

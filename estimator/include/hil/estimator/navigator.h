@@ -137,6 +137,7 @@ class Navigator {
   std::optional<HeadingSample> heading_;
   GpsNs newest_imu_t_ = 0, filter_t_ = 0, last_gnss_fused_t_ = 0, first_rejected_t_ = -1;
   GpsNs last_nhc_t_ = 0;
+  bool gnss_float_ = false;  // the correlated GNSS error model in use is the RTK float one
   GpsNs newest_gnss_t_ = -1, gnss_period_ns_ = 0;  // GNSS stream timing (for the wait)
   bool have_imu_ = false;
   Eigen::Vector3d mean_f_B_ = Eigen::Vector3d::Zero();

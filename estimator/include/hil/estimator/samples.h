@@ -30,6 +30,7 @@ struct GnssSample {
   Eigen::Vector3d vel_std_enu_mps{0.2, 0.2, 0.4};
   int num_sv = 0;
   int fix_quality = 1;                                           ///< 0 none, 1 GPS, 2 DGPS, 4/5 RTK
+  double hdop = 0;                                               ///< receiver's HDOP (0: not reported)
   int antenna = 0;                                               ///< receiver index (multi-receiver)
 };
 
