@@ -75,7 +75,7 @@ void PrintUsage() {
       "                  gate_sigma, fusion_horizon_s, use_gnss_velocity, gnss_max_latency_s,\n"
       "                  nmea_uere_m, nmea_rtk_fixed_std_m, nmea_rtk_float_std_m, nmea_velocity_std_mps,\n"
       "                  gnss_float_error_tau_s, gnss_float_error_std_m, gnss_error_vertical_std_m,\n"
-      "                  speed_rw, speed_dev_std_mps, antenna_0_m … (multi_gnss)\n"
+      "                  speed_rw, speed_dev_std_mps, speed_dev_tau_s, antenna_0_m … (multi_gnss)\n"
       "                  [output] json, rate_hz, nmea_device, can_interface, can_log,\n"
       "                  can_source_address, can_rate_hz\n"
       "  --help          this text\n"

@@ -8,6 +8,7 @@ using namespace ekf_index;
 
 namespace {
 bool AllFinite(const Eigen::Vector3d& v) { return v.allFinite(); }
+bool SpeedDevState(const EkfParams& p) { return p.speed_rw_mps_rthz > 0 && p.speed_dev_tau_s > 0; }
 }  // namespace
 
 void ErrorStateEkf::Initialize(const NavState& s) {
@@ -17,6 +18,7 @@ void ErrorStateEkf::Initialize(const NavState& s) {
   bg_.setZero();
   e_gnss_.setZero();
   set_speed_ = (s.q_NB.conjugate() * s.v_N_mps).x();
+  speed_dev_ = 0.0;
   gm_tau_s_ = params_.gnss_error_tau_s;
   gm_std_m_ = params_.gnss_error_std_m;
   gm_up_ratio_ = params_.gnss_error_vertical_std_m > 0 && params_.gnss_error_std_m > 0
@@ -34,6 +36,7 @@ void ErrorStateEkf::Initialize(const NavState& s) {
     P_.block<3, 3>(kGnssError, kGnssError).diagonal() = GnssErrorVariance(gm_std_m_);
   }
   if (p.speed_rw_mps_rthz > 0) P_(kSpeed, kSpeed) = p.init_vel_std_mps * p.init_vel_std_mps;
+  if (SpeedDevState(p)) P_(kSpeedDev, kSpeedDev) = p.speed_dev_std_mps * p.speed_dev_std_mps;
 }
 
 void ErrorStateEkf::Predict(const Eigen::Vector3d& dth_raw, const Eigen::Vector3d& dv_raw, double dt) {
@@ -62,6 +65,11 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& dth_raw, const Eigen::Vector3
     gm_q = GnssErrorVariance(gm_std_m_) * (1.0 - gm_decay * gm_decay);
     Phi.block<3, 3>(kGnssError, kGnssError).diagonal().setConstant(gm_decay);
   }
+  double dev_decay = 1.0;
+  if (SpeedDevState(p)) {
+    dev_decay = std::exp(-dt / p.speed_dev_tau_s);
+    Phi(kSpeedDev, kSpeedDev) = dev_decay;
+  }
   P_ = Phi * P_ * Phi.transpose();
   // process noise: isotropic densities are invariant under the rotation C
   P_.block<3, 3>(kVel, kVel).diagonal().array() += p.accel_noise_mps2_rthz * p.accel_noise_mps2_rthz * dt;
@@ -70,7 +78,9 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& dth_raw, const Eigen::Vector3
   P_.block<3, 3>(kGyroBias, kGyroBias).diagonal().array() += p.gyro_bias_rw_radps2_rthz * p.gyro_bias_rw_radps2_rthz * dt;
   if (p.gnss_error_tau_s > 0) P_.block<3, 3>(kGnssError, kGnssError).diagonal() += gm_q;
   if (p.speed_rw_mps_rthz > 0) P_(kSpeed, kSpeed) += p.speed_rw_mps_rthz * p.speed_rw_mps_rthz * dt;
+  if (SpeedDevState(p)) P_(kSpeedDev, kSpeedDev) += p.speed_dev_std_mps * p.speed_dev_std_mps * (1.0 - dev_decay * dev_decay);
   e_gnss_ *= gm_decay;
+  speed_dev_ *= dev_decay;
   Symmetrize();
 }
 
@@ -137,6 +147,7 @@ Eigen::Matrix<double, 1, kNumStates> ErrorStateEkf::SpeedModelJacobian() const {
   H.block<1, 3>(0, kVel) = Ct.row(0);
   H.block<1, 3>(0, kAtt) = (Ct * Skew(state_.v_N_mps)).row(0);
   H(0, kSpeed) = -1.0;
+  if (SpeedDevState(params_)) H(0, kSpeedDev) = -1.0;
   return H;
 }
 
@@ -144,9 +155,11 @@ UpdateResult ErrorStateEkf::UpdateSpeedModel() {
   if (!(params_.speed_rw_mps_rthz > 0)) return {};
   const double forward = (state_.q_NB.conjugate() * state_.v_N_mps).x();
   Eigen::Matrix<double, 1, 1> innovation;
-  innovation << set_speed_ - forward;
+  innovation << set_speed_ + speed_dev_ - forward;
+  // with a deviation state the pseudo-measurement only carries what the state does not: a tenth of σ
+  const double r = SpeedDevState(params_) ? 0.1 * params_.speed_dev_std_mps : params_.speed_dev_std_mps;
   Eigen::Matrix<double, 1, 1> R;
-  R << params_.speed_dev_std_mps * params_.speed_dev_std_mps;
+  R << r * r;
   return Update<1>(innovation, SpeedModelJacobian(), R);
 }
 
@@ -156,6 +169,12 @@ void ErrorStateEkf::ResetSetSpeed(double std_mps) {
   P_.row(kSpeed).setZero();
   P_.col(kSpeed).setZero();
   P_(kSpeed, kSpeed) = std_mps * std_mps;
+  if (SpeedDevState(params_)) {
+    speed_dev_ = 0.0;
+    P_.row(kSpeedDev).setZero();
+    P_.col(kSpeedDev).setZero();
+    P_(kSpeedDev, kSpeedDev) = params_.speed_dev_std_mps * params_.speed_dev_std_mps;
+  }
 }
 
 UpdateResult ErrorStateEkf::UpdateYaw(double yaw_enu_rad, double std_rad) {
@@ -204,6 +223,7 @@ void ErrorStateEkf::InjectError(const EkfVector& dx) {
   bg_ += dx.segment<3>(kGyroBias);
   if (params_.gnss_error_tau_s > 0) e_gnss_ += dx.segment<3>(kGnssError);
   if (params_.speed_rw_mps_rthz > 0) set_speed_ += dx[kSpeed];
+  if (SpeedDevState(params_)) speed_dev_ += dx[kSpeedDev];
 }
 
 Eigen::Vector3d ErrorStateEkf::GnssErrorVariance(double horizontal_std_m) const {

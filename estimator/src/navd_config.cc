@@ -106,6 +106,7 @@ NavdConfig NavdConfig::FromFile(const ConfigFile& f) {
     else if (s == "filter" && k == "nhc_std_mps") ekf.nhc_std_mps = ToDouble(f, e, 0.0, 10.0);
     else if (s == "filter" && k == "speed_rw") ekf.speed_rw_mps_rthz = ToDouble(f, e, 0.0, 10.0);
     else if (s == "filter" && k == "speed_dev_std_mps") ekf.speed_dev_std_mps = ToDouble(f, e, 0.001, 10.0);
+    else if (s == "filter" && k == "speed_dev_tau_s") ekf.speed_dev_tau_s = ToDouble(f, e, 0.0, 3600.0);
     else if (s == "filter" && k == "gate_sigma") ekf.gate_sigma = ToDouble(f, e, 1.0, 1000.0);
     else if (s == "filter" && k == "fusion_horizon_s")
       c.nav.fusion_horizon_ns = static_cast<std::int64_t>(ToDouble(f, e, 0.0, 2.0) * 1e9);

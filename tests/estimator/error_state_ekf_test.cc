@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace hil::estimator {
 namespace {
 
@@ -114,6 +116,77 @@ TEST_F(ErrorStateEkfTest, NonFiniteInputsAreIgnored) {
   EXPECT_FALSE(ekf_.UpdatePosition(Eigen::Vector3d::Constant(INFINITY), Eigen::Vector3d::Ones()).accepted);
   EXPECT_EQ(ekf_.state().p_N_m, before.p_N_m);
   EXPECT_TRUE(ekf_.covariance().allFinite());
+}
+
+// The speed model with a deviation state (speed_dev_tau_s > 0): forward speed = set speed + d, d a
+// first-order Gauss–Markov process.
+class ErrorStateEkfSpeedDevTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    EkfParams p;
+    p.speed_rw_mps_rthz = 0.0005;
+    p.speed_dev_std_mps = 0.02;
+    p.speed_dev_tau_s = 5.0;
+    ekf_ = ErrorStateEkf(p, EarthModel{});
+    NavState s;
+    s.v_N_mps = Eigen::Vector3d(0.3, 0.9, 0.0);
+    s.q_NB = Eigen::AngleAxisd(1.1, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(0.02, Eigen::Vector3d::UnitY());
+    ekf_.Initialize(s);
+  }
+  double P(int i) const { return ekf_.covariance()(i, i); }
+  static double Residual(const ErrorStateEkf& e) {
+    return (e.state().q_NB.conjugate() * e.state().v_N_mps).x() - e.set_speed_mps() - e.speed_deviation_mps();
+  }
+  ErrorStateEkf ekf_;
+};
+
+TEST_F(ErrorStateEkfSpeedDevTest, JacobianMatchesFiniteDifferences) {
+  Eigen::Matrix<double, 1, kNumStates> J;
+  const double eps = 1e-6;
+  for (int i = 0; i < kNumStates; ++i) {
+    ErrorStateEkf plus = ekf_, minus = ekf_;
+    EkfVector dx = EkfVector::Zero();
+    dx[i] = eps;
+    plus.InjectError(dx);
+    minus.InjectError(-dx);
+    J(0, i) = (Residual(plus) - Residual(minus)) / (2 * eps);
+  }
+  EXPECT_LT((J - ekf_.SpeedModelJacobian()).cwiseAbs().maxCoeff(), 1e-6) << J << "\n\n" << ekf_.SpeedModelJacobian();
+  EXPECT_DOUBLE_EQ(ekf_.SpeedModelJacobian()(0, kSpeedDev), -1.0);
+}
+
+TEST_F(ErrorStateEkfSpeedDevTest, DeviationDecaysAndItsVarianceIsStationary) {
+  // GIVEN a deviation of 0.02 m/s
+  EkfVector dx = EkfVector::Zero();
+  dx[kSpeedDev] = 0.02;
+  ekf_.InjectError(dx);
+  EXPECT_NEAR(P(kSpeedDev), 0.02 * 0.02, 1e-15);  // starts at its stationary variance
+  // WHEN 10 s (two correlation times) pass without measurements
+  for (int k = 0; k < 1000; ++k) ekf_.Predict(Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, 9.81) * 0.01, 0.01);
+  // THEN it has decayed by e^-2 and its variance stayed at σ²
+  EXPECT_NEAR(ekf_.speed_deviation_mps(), 0.02 * std::exp(-2.0), 1e-12);
+  EXPECT_NEAR(P(kSpeedDev), 0.02 * 0.02, 1e-9);
+}
+
+TEST_F(ErrorStateEkfSpeedDevTest, ASpeedChangeGoesToTheDeviationNotTheSetSpeed) {
+  // GIVEN a vehicle heading along its velocity, a converged set speed (σ 2 mm/s) and a forward speed
+  // 0.02 m/s above it, held by velocity fixes
+  NavState aligned;
+  aligned.v_N_mps = Eigen::Vector3d(0.3, 0.9, 0.0);
+  aligned.q_NB = Eigen::AngleAxisd(std::atan2(0.9, 0.3), Eigen::Vector3d::UnitZ());
+  ekf_.Initialize(aligned);
+  ekf_.ResetSetSpeed(0.002);
+  const double set = ekf_.set_speed_mps();
+  const Eigen::Vector3d v = ekf_.state().v_N_mps + ekf_.state().q_NB * Eigen::Vector3d(0.02, 0, 0);
+  for (int k = 0; k < 200; ++k) {  // 2 s at 100 Hz
+    ekf_.Predict(Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, 9.81) * 0.01, 0.01);
+    ekf_.UpdateVelocity(v, Eigen::Vector3d::Constant(0.005));
+    ekf_.UpdateSpeedModel();
+  }
+  // THEN the deviation explains the difference and the set speed barely moves
+  EXPECT_NEAR(ekf_.speed_deviation_mps(), 0.02, 0.004);
+  EXPECT_LT(std::abs(ekf_.set_speed_mps() - set), 0.002);
+  EXPECT_LT(std::abs(Residual(ekf_)), 0.003);
 }
 
 TEST_F(ErrorStateEkfTest, GnssErrorModelSwitchAddsOrRestartsTheCorrelatedError) {

@@ -7,16 +7,22 @@
 /// output: nominal NavState, biases, covariance, NIS of the last update, status flags
 /// @endsystem
 ///
-/// Error state (kNumStates = 19, fixed-size):
+/// Error state (kNumStates = 20, fixed-size):
 ///   δp (N, m) | δv (N, m/s) | φ (attitude error in N, rad; C_true = Exp(φ)·Ĉ) | δb_a (B, m/s²) |
 ///   δb_g (B, rad/s) | e_gnss (N, m: first-order Gauss–Markov GNSS position error, optional) |
-///   δs (m/s: the vehicle's set speed, a slow random walk, optional)
+///   δs (m/s: the vehicle's set speed, a slow random walk, optional) |
+///   δd (m/s: the forward speed's deviation from the set speed, Gauss–Markov, optional)
 /// The speed state is the vehicle model of a ground vehicle that holds its speed (cruise control,
 /// constant throttle): the forward body velocity stays within `speed_dev_std_mps` of a set speed
 /// that itself wanders as a random walk of `speed_rw_mps_rthz`. It gives the along-track velocity a
 /// memory of tens of seconds, which a low-cost accelerometer (whose tilt drifts with the gyro
 /// noise) cannot give, so the correlated GNSS error can be averaged over that long. Off (frozen,
 /// zero covariance) when speed_rw_mps_rthz = 0.
+/// With speed_dev_tau_s > 0 the deviation is a state of its own: a first-order Gauss–Markov process
+/// of σ speed_dev_std_mps and correlation time speed_dev_tau_s (a governor's droop and wheel slip
+/// wander over seconds), and the pseudo-measurement is "forward speed = s + d" with a small noise
+/// (a tenth of that σ). Without it (τ = 0) the deviation is white at every update, which over-trusts
+/// the set speed when the real speed wanders over seconds.
 /// The first 15 are the classic INS error states (paper 004); the three augmented states model the
 /// time-correlated error of a standalone receiver (NEO-5M class, τ of seconds) so it is not mistaken
 /// for vehicle motion. With gnss_error_tau_s = 0 they are frozen at zero (a plain 15-state filter).
@@ -44,7 +50,8 @@ inline constexpr int kAccelBias = 9;
 inline constexpr int kGyroBias = 12;
 inline constexpr int kGnssError = 15;
 inline constexpr int kSpeed = 18;
-inline constexpr int kNumStates = 19;
+inline constexpr int kSpeedDev = 19;
+inline constexpr int kNumStates = 20;
 }  // namespace ekf_index
 
 using EkfVector = Eigen::Matrix<double, ekf_index::kNumStates, 1>;
@@ -78,6 +85,7 @@ struct EkfParams {
   double nhc_std_mps = 0.0;                   ///< non-holonomic constraint σ (0 = off)
   double speed_rw_mps_rthz = 0.0;             ///< set-speed random walk, m/s/√s (0 = speed model off)
   double speed_dev_std_mps = 0.05;            ///< forward speed's deviation from the set speed (1σ)
+  double speed_dev_tau_s = 0.0;               ///< its correlation time (0: white, no state of its own)
   double gate_sigma = 5.0;                    ///< per-update χ² gate: NIS ≤ gate² · dof
 };
 
@@ -153,6 +161,7 @@ class ErrorStateEkf {
   const Eigen::Vector3d& gyro_bias() const { return bg_; }
   const Eigen::Vector3d& gnss_error() const { return e_gnss_; }
   double set_speed_mps() const { return set_speed_; }
+  double speed_deviation_mps() const { return speed_dev_; }
   const Eigen::Vector3d& last_gyro_rate_B() const { return w_B_; }
   const EkfParams& params() const { return params_; }
   std::uint32_t repairs() const { return repairs_; }
@@ -175,6 +184,7 @@ class ErrorStateEkf {
   double gm_tau_s_ = 0.0, gm_std_m_ = 0.0;  // current correlated GNSS error model (horizontal σ)
   double gm_up_ratio_ = 1.0;                // up σ / horizontal σ
   double set_speed_ = 0.0;                  // speed model: the vehicle's set speed (m/s)
+  double speed_dev_ = 0.0;                  // speed model: forward speed minus set speed (m/s)
   Eigen::Vector3d w_B_ = Eigen::Vector3d::Zero();   // last compensated angular rate
   Eigen::Vector3d f_N_ = Eigen::Vector3d::Zero();   // last specific force in N
   EkfMatrix P_ = EkfMatrix::Identity();
