@@ -21,7 +21,7 @@
 /// With speed_dev_tau_s > 0 the deviation is a state of its own: a first-order Gauss–Markov process
 /// of σ speed_dev_std_mps and correlation time speed_dev_tau_s (a governor's droop and wheel slip
 /// wander over seconds), and the pseudo-measurement is "forward speed = s + d" with a small noise
-/// (a tenth of that σ). Without it (τ = 0) the deviation is white at every update, which over-trusts
+/// (half that σ). Without it (τ = 0) the deviation is white at every update, which over-trusts
 /// the set speed when the real speed wanders over seconds.
 /// The first 15 are the classic INS error states (paper 004); the three augmented states model the
 /// time-correlated error of a standalone receiver (NEO-5M class, τ of seconds) so it is not mistaken
