@@ -112,7 +112,16 @@ TEST(NavdEkfE2eTest, FusesMcuImuAndNmeaIntoEkfSolutions) {
       ASSERT_GT(write(ifd, imu_bytes.data() + i * imu_chunk, std::min(imu_chunk, imu_bytes.size() - i * imu_chunk)), 0);
     }
   }
-  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  // navd has worked through the streams when its output stops growing (a slow machine or a
+  // sanitizer build takes longer than the writes: wait for it rather than a fixed time)
+  std::uintmax_t size = 0;
+  for (int idle_ms = 0, waited_ms = 0; idle_ms < 1500 && waited_ms < 45000; waited_ms += 100) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    std::error_code ec;
+    const std::uintmax_t now = std::filesystem::file_size(out, ec);
+    idle_ms = (!ec && now == size && now > 0) ? idle_ms + 100 : 0;
+    if (!ec) size = now;
+  }
   kill(pid, SIGTERM);
   int status = 0;
   waitpid(pid, &status, 0);
