@@ -35,7 +35,12 @@ void Scheduler::Dispatch(std::size_t d, DeviceOutput& out) {
   }
   out.clear();
   if (!pacer_) {
-    for (auto& ep : set_.endpoints[d]) ep->WriteAll();
+    for (auto& ep : set_.endpoints[d]) {
+      const std::size_t n = ep->queued_bytes();
+      if (n == 0) continue;
+      if (!write_refused_ && before_write_ && !before_write_(*ep, n)) write_refused_ = true;
+      if (!write_refused_) ep->WriteAll();
+    }
     if (set_.can) set_.can->SendAll();
   }
 }
@@ -140,7 +145,7 @@ void Scheduler::Run(const std::function<bool(Time)>& keep_going) {
     PollHosts(*t_event, out);
     t_last_event_ = *t_event;
     PollBus();
-    if (!keep_going(*t_event)) break;
+    if (write_refused_ || !keep_going(*t_event)) break;
   }
 }
 

@@ -46,7 +46,9 @@ class EstimatorProcess {
   /// CLOCK_MONOTONIC time of the last output line (0 if none yet).
   std::int64_t last_output_wall_ns() const { return last_output_wall_ns_.load(); }
   /// Stops the process and every process of its group (also when the estimator itself has already
-  /// ended): SIGTERM, then SIGKILL after `grace_s`. Idempotent.
+  /// ended): SIGTERM, then SIGKILL after `grace_s`. Idempotent. Returns once the lines it wrote
+  /// before it ended have been read from its stdout (or, with the pipe held open by a process
+  /// that left the group, after a short wait).
   ExitInfo Stop(double grace_s = 2.0);
   int pid() const { return pid_; }
 
@@ -60,6 +62,7 @@ class EstimatorProcess {
   std::mutex mu_;
   std::vector<OutputLine> lines_;
   std::atomic<std::int64_t> last_output_wall_ns_{0};
+  std::atomic<bool> stdout_closed_{false};  // the reader saw end of file
   std::optional<ExitInfo> exit_;
 };
 

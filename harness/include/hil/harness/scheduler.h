@@ -29,6 +29,10 @@ class Scheduler {
   /// glitch, receiver messages lost to its transmit buffer in an output overload).
   void set_recorder(FaultRecorder* recorder) { recorder_ = recorder; }
 
+  /// Virtual mode: called before the bytes queued on a serial endpoint are written, with their
+  /// count (VirtualGate::BeforeWrite). False stops the run: those bytes and later ones stay unsent.
+  void set_before_write(std::function<bool(const SerialEndpoint&, std::size_t)> f) { before_write_ = std::move(f); }
+
   /// Runs from t = 0 to the scenario's end. After every event, `keep_going(t)` decides whether
   /// to continue (false stops the run early, e.g. when the estimator died).
   void Run(const std::function<bool(Time)>& keep_going);
@@ -59,6 +63,8 @@ class Scheduler {
   std::vector<EstimateRecord> fixes_;
   std::vector<CanFrame> bus_frames_;
   Time t_last_event_{};
+  std::function<bool(const SerialEndpoint&, std::size_t)> before_write_;
+  bool write_refused_ = false;  // before_write_ said stop
 };
 
 }  // namespace hil::harness

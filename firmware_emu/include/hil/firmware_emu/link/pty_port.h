@@ -39,7 +39,10 @@ class PtyPort final : public SerialPort {
   static constexpr int kStallTimeoutMs = 1000;
   /// Reads whatever the host has written (non-blocking); empty if nothing.
   std::string ReadAvailable() override;
-  /// Bytes written by the emulator that the host has not read yet.
+  /// Bytes written by the emulator that the host has not read yet. A pty hands written bytes to
+  /// the reader's line discipline later, from a kernel work item; when the line discipline is empty
+  /// this first waits for that hand-over, so 0 means exactly "the host has read every byte".
+  /// (With bytes already waiting there, bytes still in the hand-over are not counted.)
   std::size_t PendingToHost() const override;
 
   const std::string& path() const override { return symlink_path_; }
