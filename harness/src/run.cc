@@ -225,11 +225,34 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
       return false;
     };
     gate.emplace(read_by_host, kLinkBacklogBytes, on_wait);
-    scheduler.set_before_write([&](const SerialEndpoint& ep, std::size_t n) { return gate->BeforeWrite(ep, n); });
+    scheduler.set_gate(&*gate);
   }
+  // the truth for the evaluation, sampled on a thread of its own as the run goes (truth_table.h)
+  const Time t_end = TimeFromSeconds(scenario.duration_s), t_from = TimeFromSeconds(scenario.evaluate_from_s);
+  TruthTableBuilder truth_builder(scenario.truth);
+  truth_builder.Ask(TruthCsvTimes(scenario));
+  std::size_t estimates_asked = 0, fixes_asked = 0;
+  const auto ask_truth = [&] {
+    const std::vector<EstimateRecord>& est = collector.records();
+    const std::vector<EstimateRecord>& fixes = scheduler.fixes();
+    if (est.size() > estimates_asked) {
+      truth_builder.Ask(RecordTimes({est.begin() + static_cast<std::ptrdiff_t>(estimates_asked), est.end()}, t_from, t_end));
+      estimates_asked = est.size();
+    }
+    if (fixes.size() > fixes_asked) {
+      truth_builder.Ask(RecordTimes({fixes.begin() + static_cast<std::ptrdiff_t>(fixes_asked), fixes.end()}, t_from, t_end));
+      fixes_asked = fixes.size();
+    }
+  };
   const auto run_step = [&](Time t) {
     t_now = t;
     collector.Poll();
+    ask_truth();
+    // an estimator's solutions come in time order, about as late as its input: what lies a
+    // second behind both will not be asked for any more (a straggler only costs Finish a pass)
+    if (!collector.records().empty()) {
+      truth_builder.Advance(std::min(collector.records().back().t_validity, t) - std::chrono::seconds(1));
+    }
     if (interrupted()) return false;
     progress.Update(ToSeconds(t), scenario.duration_s, collector.records().size());
     if (opt.emulate_only) return true;
@@ -329,7 +352,6 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
   // ---- evaluation ----
   const std::vector<EstimateRecord>& estimates = collector.records();
   if (estimates.empty() && !opt.emulate_only) report.problems.push_back("the estimator produced no solution");
-  const Time t_end = TimeFromSeconds(scenario.duration_s), t_from = TimeFromSeconds(scenario.evaluate_from_s);
   // the point the estimate describes: navd fusing the IMU board reports the board (its body origin is
   // the IMU); a GNSS-only navd reports the antenna
   std::string point = scenario.estimator.reference_point;
@@ -341,12 +363,8 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
   const Eigen::Vector3d p_BX_B_m = point == "antenna" ? scenario.gnss.model.p_BA_B_m
                                    : point == "imu"   ? scenario.mcu.config.mounting.p_BI_B_m
                                                       : Eigen::Vector3d::Zero();
-  // one pass of the truth integrator for the estimates, the raw fixes and truth.csv
-  std::vector<Time> truth_times = RecordTimes(estimates, t_from, t_end);
-  for (const std::vector<Time>& more : {RecordTimes(scheduler.fixes(), t_from, t_end), TruthCsvTimes(scenario)}) {
-    truth_times.insert(truth_times.end(), more.begin(), more.end());
-  }
-  const TruthTable truth_table(scenario.truth, std::move(truth_times));
+  ask_truth();
+  const TruthTable truth_table = truth_builder.Finish();
   std::vector<ErrorSample> est_err = CompareWithTruth(truth_table, estimates, p_BX_B_m, t_from, t_end);
   std::vector<ErrorSample> fix_err =
       CompareWithTruth(truth_table, scheduler.fixes(), scenario.gnss.model.p_BA_B_m, t_from, t_end);

@@ -1,5 +1,6 @@
 #include "hil/harness/serial_endpoint.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "hil/firmware_emu/link/pty_port.h"
@@ -101,16 +102,18 @@ void SerialEndpoint::WriteNextByte(const link::RealtimePacer& pacer) {
   }
 }
 
-void SerialEndpoint::WriteAll() {
-  if (pending_.empty()) return;
-  // one write for every waiting chunk: the host reads a byte stream, the chunking is not its business
+void SerialEndpoint::WriteChunks(std::size_t chunks) {
+  chunks = std::min(chunks, pending_.size());
+  if (chunks == 0) return;
+  // one write for the chunks: the host reads a byte stream, the chunking is not its business
   write_buffer_.clear();
-  for (const auto& chunk : pending_) {
-    write_buffer_.append(chunk.first.bytes, pending_offset_, std::string::npos);
+  for (std::size_t i = 0; i < chunks; ++i) {
+    write_buffer_.append(pending_[i].first.bytes, pending_offset_, std::string::npos);
     pending_offset_ = 0;
   }
   port_->Write(write_buffer_);
-  for (const auto& [c, name] : pending_) {
+  for (std::size_t i = 0; i < chunks; ++i) {
+    const auto& [c, name] = pending_.front();
     CaptureRecord r;
     r.dir = CaptureDir::kTx;
     r.t_emu_ns = ToNs(c.t_first);
@@ -119,8 +122,8 @@ void SerialEndpoint::WriteAll() {
     r.name = name;
     r.bytes = c.bytes;
     capture_.Write(r);
+    pending_.pop_front();
   }
-  pending_.clear();
 }
 
 std::size_t SerialEndpoint::queued_bytes() const {

@@ -83,10 +83,49 @@ bool VirtualGate::BeforeWrite(const SerialEndpoint& ep, std::size_t bytes) {
   return true;
 }
 
+bool VirtualGate::TryWrite(const SerialEndpoint& ep, std::size_t bytes) {
+  Link* self = Find(ep);
+  if (!self) return true;
+  if (Refresh(self, nullptr) != 0) return false;
+  if (self->unread_bound + bytes > max_backlog_) {
+    Refresh(nullptr, self);
+    if (self->unread_bound != 0 && self->unread_bound + bytes > max_backlog_) return false;
+  }
+  self->unread_bound += bytes;
+  return true;
+}
+
 bool VirtualGate::WaitAllRead() {
   return Wait([&] { return Refresh(nullptr, nullptr) == 0; }, nullptr, nullptr);
 }
 
 std::size_t VirtualGate::Unread() { return Refresh(nullptr, nullptr, true); }
+
+void VirtualWriteQueue::Add(SerialEndpoint& ep, std::size_t bytes) {
+  if (!fifo_.empty() && fifo_.back().ep == &ep) {
+    ++fifo_.back().chunks;
+    fifo_.back().bytes += bytes;
+  } else {
+    fifo_.push_back({&ep, 1, bytes});
+  }
+  deferred_ += bytes;
+}
+
+bool VirtualWriteQueue::Pump(bool all) {
+  while (!fifo_.empty()) {
+    const Batch b = fifo_.front();
+    if (gate_) {
+      if (all || deferred_ > max_deferred_) {
+        if (!gate_->BeforeWrite(*b.ep, b.bytes)) return false;
+      } else if (!gate_->TryWrite(*b.ep, b.bytes)) {
+        break;
+      }
+    }
+    b.ep->WriteChunks(b.chunks);
+    deferred_ -= b.bytes;
+    fifo_.pop_front();
+  }
+  return true;
+}
 
 }  // namespace hil::harness

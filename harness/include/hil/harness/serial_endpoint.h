@@ -44,12 +44,16 @@ class SerialEndpoint {
   /// Writes the next waiting byte at its UART wall time and records the schedule error.
   void WriteNextByte(const link::RealtimePacer& pacer);
   /// Writes every waiting byte at once, in one write (virtual mode). The order in which the host
-  /// sees several links is kept by VirtualGate, before this is called.
-  void WriteAll();
+  /// sees several links is kept by VirtualGate / VirtualWriteQueue, before this is called.
+  void WriteAll() { WriteChunks(pending_.size()); }
+  /// Writes the first `chunks` waiting chunks in one write (virtual mode).
+  void WriteChunks(std::size_t chunks);
   /// Bytes waiting to be written.
   std::size_t queued_bytes() const;
   /// Writes out the capture's buffer (a failed write is noted, run_guard.h).
   void FlushCapture() { capture_.Flush(); }
+  /// poll() shows host bytes on this descriptor (-1: none to poll, call PollHost anyway).
+  int host_input_fd() const { return port_->host_input_fd(); }
   /// Reads host bytes (non-blocking), captures them with emulated time `t_now`, returns them.
   std::string PollHost(Time t_now);
   void set_baud(int baud) { uart_.set_baud(baud); }

@@ -15,6 +15,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <vector>
 
@@ -34,6 +35,8 @@ class VirtualGate {
   /// and `ep`'s backlog leaves room. Links the host does not read pass at once. False: the wait
   /// was given up (the run stops).
   bool BeforeWrite(const SerialEndpoint& ep, std::size_t bytes);
+  /// BeforeWrite without the wait: true (and the bytes counted) when they may go now.
+  bool TryWrite(const SerialEndpoint& ep, std::size_t bytes);
   /// Waits until the host has read every byte of every link it reads.
   bool WaitAllRead();
   /// Bytes not yet read on the host links (exact when 0), for the drain and hang reports.
@@ -53,6 +56,34 @@ class VirtualGate {
   std::vector<Link> links_;
   std::size_t max_backlog_;
   WaitStep on_wait_;
+};
+
+/// Virtual mode's writes: every chunk queued on a serial endpoint, in emulated-time order across
+/// links. The head of the queue goes out as soon as the gate lets it through without waiting, and
+/// consecutive chunks of one link go out in one write; so while the host keeps up the run never
+/// waits for it. When more than `max_deferred_bytes` wait here, Pump waits for the host.
+/// Without a gate (no estimator to pace) every chunk is written at once.
+class VirtualWriteQueue {
+ public:
+  VirtualWriteQueue(VirtualGate* gate, std::size_t max_deferred_bytes)
+      : gate_(gate), max_deferred_(max_deferred_bytes) {}
+  /// One chunk of `bytes` bytes was queued on `ep` (SerialEndpoint::Queue returned true).
+  void Add(SerialEndpoint& ep, std::size_t bytes);
+  /// Writes what may go; with `all`, waits for the host until everything is written. False: the
+  /// gate gave up a wait (the run stops; the rest stays unsent).
+  bool Pump(bool all);
+  std::size_t deferred_bytes() const { return deferred_; }
+
+ private:
+  struct Batch {
+    SerialEndpoint* ep;
+    std::size_t chunks;
+    std::size_t bytes;
+  };
+  VirtualGate* gate_;
+  std::size_t max_deferred_;
+  std::deque<Batch> fifo_;
+  std::size_t deferred_ = 0;
 };
 
 }  // namespace hil::harness

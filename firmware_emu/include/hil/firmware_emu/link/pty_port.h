@@ -49,6 +49,7 @@ class PtyPort final : public SerialPort {
   const std::string& slave_path() const { return slave_path_; }
   const std::string& symlink_path() const { return symlink_path_; }
   int master_fd() const { return master_fd_; }
+  int host_input_fd() const override { return master_fd_; }
 
  private:
   int master_fd_ = -1;
