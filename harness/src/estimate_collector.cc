@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <nlohmann/json.hpp>
+
 #include "hil/firmware_emu/link/realtime_pacer.h"
 #include "hil/harness/run_guard.h"
 
@@ -15,9 +17,17 @@ void EstimateCollector::Consume(const std::string& line, std::int64_t wall_ns) {
   raw_ << line << "\n";
   raw_.flush();  // everything captured so far survives an interrupted run
   if (!raw_) NoteWriteFailure(raw_path_);
-  if (observer_) observer_(line);
   ++lines_;
-  if (auto r = reader_->Line(line, wall_ns)) records_.push_back(*r);
+  std::optional<EstimateRecord> r;
+  if (json_observer_ && reader_->reads_json()) {
+    const nlohmann::json j = nlohmann::json::parse(line, nullptr, false);  // once for both
+    json_observer_(j);
+    r = reader_->JsonLine(j, wall_ns);
+  } else {
+    if (observer_) observer_(line);
+    r = reader_->Line(line, wall_ns);
+  }
+  if (r) records_.push_back(*r);
   else ++unparsed_;
 }
 

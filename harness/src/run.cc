@@ -12,6 +12,8 @@
 #include <set>
 #include <stdexcept>
 
+#include <nlohmann/json.hpp>
+
 #include "hil/firmware_emu/link/pty_port.h"
 #include "hil/firmware_emu/link/realtime_pacer.h"
 #include "hil/firmware_emu/mcu/mcu_device.h"
@@ -166,6 +168,7 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
                               dir + (nav_pty ? "/estimate.nmea" : "/estimate.jsonl"));
   EstimatorHealth health;
   collector.set_line_observer([&](const std::string& line) { health.AddLine(line); });
+  collector.set_json_observer([&](const nlohmann::json& line) { health.AddJson(line); });
   const auto estimator_running = [&] { return estimator && estimator->Running(); };
   // why the run must stop early besides the estimator's own failure: a signal, the run folder
   std::optional<std::string> stop_reason;
