@@ -9,6 +9,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include <nlohmann/json.hpp>
+
 #include "hil/firmware_emu/link/realtime_pacer.h"
 #include "hil/harness/process_group.h"
 
@@ -60,6 +62,7 @@ EstimatorProcess::~EstimatorProcess() {
 void EstimatorProcess::ReadLoop() {
   std::string partial;
   char buf[4096];
+  std::vector<OutputLine> got;
   for (;;) {
     const ssize_t n = read(stdout_fd_, buf, sizeof buf);
     if (n < 0 && errno == EINTR) continue;
@@ -69,13 +72,20 @@ void EstimatorProcess::ReadLoop() {
     }
     const std::int64_t now = link::RealtimePacer::MonotonicNs();
     partial.append(buf, static_cast<std::size_t>(n));
+    got.clear();
     std::size_t pos;
-    std::lock_guard<std::mutex> lock(mu_);
     while ((pos = partial.find('\n')) != std::string::npos) {
-      lines_.push_back({partial.substr(0, pos), now});
+      OutputLine l{partial.substr(0, pos), now, nullptr};
       partial.erase(0, pos + 1);
-      last_output_wall_ns_ = now;
+      if (parse_json_ && !l.text.empty() && l.text.front() == '{') {
+        l.json = std::make_shared<const nlohmann::json>(nlohmann::json::parse(l.text, nullptr, false));
+      }
+      got.push_back(std::move(l));
     }
+    if (got.empty()) continue;
+    std::lock_guard<std::mutex> lock(mu_);
+    for (OutputLine& l : got) lines_.push_back(std::move(l));
+    last_output_wall_ns_ = now;
   }
 }
 

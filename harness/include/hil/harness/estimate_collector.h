@@ -47,7 +47,8 @@ class EstimateCollector {
   void set_json_observer(std::function<void(const nlohmann::json&)> f) { json_observer_ = std::move(f); }
 
  private:
-  void Consume(const std::string& line, std::int64_t wall_ns);
+  /// `parsed`: the line already parsed as JSON (EstimatorProcess's reader thread), or null.
+  void Consume(const std::string& line, std::int64_t wall_ns, const nlohmann::json* parsed = nullptr);
   std::unique_ptr<EstimateReader> reader_;
   EstimatorProcess* process_;
   link::PtyPort* nav_pty_;
