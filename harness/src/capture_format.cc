@@ -135,10 +135,18 @@ CaptureWriter::CaptureWriter(const std::string& path, const CaptureHeader& h) : 
 }
 
 void CaptureWriter::Write(const CaptureRecord& r) {
+  // buffered (no flush per record: a 100 Hz link would cost a write per message); a failed write
+  // shows when the buffer goes out
   out_ << FormatCaptureLine(r) << '\n';
+  if (!out_) NoteWriteFailure(path_);
+}
+
+void CaptureWriter::Flush() {
   out_.flush();
   if (!out_) NoteWriteFailure(path_);
 }
+
+CaptureWriter::~CaptureWriter() { Flush(); }
 
 Capture ReadCapture(const std::string& path) {
   std::ifstream in(path);

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <nlohmann/json.hpp>
+
 #include "hil/firmware_emu/link/realtime_pacer.h"
 #include "hil/harness/run_guard.h"
 
@@ -9,15 +11,28 @@ namespace hil::harness {
 
 EstimateCollector::EstimateCollector(std::unique_ptr<EstimateReader> reader, EstimatorProcess* process,
                                      link::PtyPort* nav_pty, const std::string& raw_path)
-    : reader_(std::move(reader)), process_(process), nav_pty_(nav_pty), raw_(raw_path), raw_path_(raw_path) {}
+    : reader_(std::move(reader)), process_(process), nav_pty_(nav_pty), raw_(raw_path), raw_path_(raw_path) {
+  // JSON solutions on stdout: decoded on the process's reader thread (pty output is not its)
+  if (process_ && !nav_pty_ && reader_->reads_json()) process_->set_parse_json(true);
+}
 
-void EstimateCollector::Consume(const std::string& line, std::int64_t wall_ns) {
+void EstimateCollector::Consume(const std::string& line, std::int64_t wall_ns, const nlohmann::json* parsed) {
   raw_ << line << "\n";
   raw_.flush();  // everything captured so far survives an interrupted run
   if (!raw_) NoteWriteFailure(raw_path_);
-  if (observer_) observer_(line);
   ++lines_;
-  if (auto r = reader_->Line(line, wall_ns)) records_.push_back(*r);
+  std::optional<EstimateRecord> r;
+  if (json_observer_ && reader_->reads_json()) {
+    // parsed once for both, on the process's reader thread when it could
+    const nlohmann::json j = parsed ? nlohmann::json() : nlohmann::json::parse(line, nullptr, false);
+    const nlohmann::json& doc = parsed ? *parsed : j;
+    json_observer_(doc);
+    r = reader_->JsonLine(doc, wall_ns);
+  } else {
+    if (observer_) observer_(line);
+    r = reader_->Line(line, wall_ns);
+  }
+  if (r) records_.push_back(*r);
   else ++unparsed_;
 }
 
@@ -46,7 +61,7 @@ void EstimateCollector::Poll() {
     for (const OutputLine& l : process_->TakeLines()) {
       // with a pty output, stdout is only kept (diagnostics), never parsed as solutions
       if (nav_pty_) raw_ << "# stdout: " << l.text << "\n";
-      else Consume(l.text, l.wall_ns);
+      else Consume(l.text, l.wall_ns, l.json.get());
     }
   }
   if (nav_pty_) {

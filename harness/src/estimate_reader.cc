@@ -33,7 +33,10 @@ class JsonLinesReader final : public EstimateReader {
  public:
   explicit JsonLinesReader(std::int64_t start) : start_(start) {}
   std::optional<EstimateRecord> Line(const std::string& text, std::int64_t wall_ns) override {
-    const auto j = nlohmann::json::parse(text, nullptr, false);
+    return JsonLine(nlohmann::json::parse(text, nullptr, false), wall_ns);
+  }
+  bool reads_json() const override { return true; }
+  std::optional<EstimateRecord> JsonLine(const nlohmann::json& j, std::int64_t wall_ns) override {
     if (j.is_discarded() || !j.is_object()) return std::nullopt;
     for (const char* k : {"tov_utc_s", "lat_deg", "lon_deg"}) {
       if (!j.contains(k) || !j[k].is_number()) return std::nullopt;
@@ -58,7 +61,10 @@ class GpsdJsonReader final : public EstimateReader {
  public:
   explicit GpsdJsonReader(std::int64_t start) : start_(start) {}
   std::optional<EstimateRecord> Line(const std::string& text, std::int64_t wall_ns) override {
-    const auto j = nlohmann::json::parse(text, nullptr, false);
+    return JsonLine(nlohmann::json::parse(text, nullptr, false), wall_ns);
+  }
+  bool reads_json() const override { return true; }
+  std::optional<EstimateRecord> JsonLine(const nlohmann::json& j, std::int64_t wall_ns) override {
     if (j.is_discarded() || !j.is_object() || j.value("class", "") != "TPV") return std::nullopt;
     if (!j.contains("time") || !j["time"].is_string() || !j.contains("lat") || !j.contains("lon")) return std::nullopt;
     if (j.value("mode", 0) < 2) return std::nullopt;

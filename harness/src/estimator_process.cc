@@ -9,9 +9,17 @@
 #include <cstring>
 #include <stdexcept>
 
+#include <nlohmann/json.hpp>
+
 #include "hil/firmware_emu/link/realtime_pacer.h"
+#include "hil/harness/process_group.h"
 
 namespace hil::harness {
+namespace {
+
+constexpr std::int64_t kStdoutEndWaitNs = 200'000'000;  // longest wait for the stdout pipe's end after Stop
+
+}  // namespace
 
 std::string ExitInfo::Describe() const {
   if (signal != 0) return std::string("ended by signal ") + std::to_string(signal) + " (" + strsignal(signal) + ")";
@@ -54,19 +62,30 @@ EstimatorProcess::~EstimatorProcess() {
 void EstimatorProcess::ReadLoop() {
   std::string partial;
   char buf[4096];
+  std::vector<OutputLine> got;
   for (;;) {
     const ssize_t n = read(stdout_fd_, buf, sizeof buf);
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;
+    if (n <= 0) {
+      stdout_closed_ = true;
+      break;
+    }
     const std::int64_t now = link::RealtimePacer::MonotonicNs();
     partial.append(buf, static_cast<std::size_t>(n));
+    got.clear();
     std::size_t pos;
-    std::lock_guard<std::mutex> lock(mu_);
     while ((pos = partial.find('\n')) != std::string::npos) {
-      lines_.push_back({partial.substr(0, pos), now});
+      OutputLine l{partial.substr(0, pos), now, nullptr};
       partial.erase(0, pos + 1);
-      last_output_wall_ns_ = now;
+      if (parse_json_ && !l.text.empty() && l.text.front() == '{') {
+        l.json = std::make_shared<const nlohmann::json>(nlohmann::json::parse(l.text, nullptr, false));
+      }
+      got.push_back(std::move(l));
     }
+    if (got.empty()) continue;
+    std::lock_guard<std::mutex> lock(mu_);
+    for (OutputLine& l : got) lines_.push_back(std::move(l));
+    last_output_wall_ns_ = now;
   }
 }
 
@@ -96,7 +115,11 @@ std::vector<OutputLine> EstimatorProcess::TakeLines() {
   return out;
 }
 
-bool EstimatorProcess::GroupAlive() const { return pid_ > 0 && kill(-pid_, 0) == 0; }
+// A zombie of the group (the shell's child, reparented to an init that may reap it seconds later)
+// is not alive: it holds no file (not the stdout pipe) and runs no code.
+bool EstimatorProcess::GroupAlive() const {
+  return pid_ > 0 && kill(-pid_, 0) == 0 && !LiveGroupMembers(pid_).empty();
+}
 
 ExitInfo EstimatorProcess::Stop(double grace_s) {
   // the whole process group, even when its leader has already ended: whatever the estimator started
@@ -108,7 +131,7 @@ ExitInfo EstimatorProcess::Stop(double grace_s) {
   while (link::RealtimePacer::MonotonicNs() < deadline) {
     const bool leader = Running();
     if (!leader && !GroupAlive()) break;
-    usleep(10000);
+    usleep(1000);
   }
   const bool leader_left = Running();
   if (leader_left || GroupAlive()) kill(-pid_, SIGKILL);
@@ -119,6 +142,9 @@ ExitInfo EstimatorProcess::Stop(double grace_s) {
     exit_->killed_by_us = true;
   }
   if (was_running) exit_->exited = false;  // it ended because we asked
+  // its last lines: the reader thread reads the pipe to its end once no process holds it
+  const std::int64_t eof_deadline = link::RealtimePacer::MonotonicNs() + kStdoutEndWaitNs;
+  while (!stdout_closed_ && link::RealtimePacer::MonotonicNs() < eof_deadline) usleep(200);
   return *exit_;
 }
 

@@ -10,7 +10,10 @@ const std::vector<std::string> kNavdFlags{"gnss_outage", "gnss_link_errors", "im
 
 void EstimatorHealth::AddLine(const std::string& line) {
   if (line.find("\"health\"") == std::string::npos) return;
-  const nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
+  AddJson(nlohmann::json::parse(line, nullptr, false));
+}
+
+void EstimatorHealth::AddJson(const nlohmann::json& j) {
   if (j.is_discarded() || !j.is_object() || !j.contains("health") || !j["health"].is_object()) return;
   present = true;
   for (const auto& [key, value] : j["health"].items()) {

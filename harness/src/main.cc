@@ -40,8 +40,9 @@ void PrintSummary(const hil::harness::RunReport& r, const std::string& dir) {
     std::snprintf(b, sizeof b, "%.3f m", v);
     return std::string(b);
   };
-  std::printf("scenario   %s (seed %llu, %s mode, %.0f s simulated in %.2f s)\n", r.scenario.c_str(),
-              static_cast<unsigned long long>(r.seed), r.mode.c_str(), r.sim_time_s, r.wall_time_s);
+  std::printf("scenario   %s (seed %llu, %s mode, %.0f s simulated in %.2f s, %.0fx real time)\n", r.scenario.c_str(),
+              static_cast<unsigned long long>(r.seed), r.mode.c_str(), r.sim_time_s, r.wall_time_s,
+              r.wall_time_s > 0 ? r.sim_time_s / r.wall_time_s : 0.0);
   std::printf("estimate   horizontal RMSE %s, CEP95 %s, max %s (%zu solutions, %.2f Hz)\n",
               fmt(r.metrics, r.metrics.horizontal_rmse_m).c_str(), fmt(r.metrics, r.metrics.cep95_m).c_str(),
               fmt(r.metrics, r.metrics.max_horizontal_error_m).c_str(), r.metrics.samples, r.output_rate_hz);

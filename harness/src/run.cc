@@ -12,6 +12,8 @@
 #include <set>
 #include <stdexcept>
 
+#include <nlohmann/json.hpp>
+
 #include "hil/firmware_emu/link/pty_port.h"
 #include "hil/firmware_emu/link/realtime_pacer.h"
 #include "hil/firmware_emu/mcu/mcu_device.h"
@@ -22,11 +24,14 @@
 #include "hil/harness/estimate_collector.h"
 #include "hil/harness/estimator_process.h"
 #include "hil/harness/outage_metrics.h"
+#include "hil/harness/process_group.h"
 #include "hil/harness/progress.h"
 #include "hil/harness/report_html.h"
 #include "hil/harness/run_guard.h"
 #include "hil/harness/run_outputs.h"
 #include "hil/harness/scheduler.h"
+#include "hil/harness/truth_table.h"
+#include "hil/harness/virtual_gate.h"
 
 namespace hil::harness {
 namespace {
@@ -34,34 +39,17 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr double kDrainQuietS = 0.5;               // estimator output quiet this long after the last byte: done
-constexpr std::size_t kBackpressureBytes = 2048;   // virtual mode: wait while the host has this much unread
-// ... or this much on any one link: with only the total bounded, a host that reads its links in turns
-// leaves the backlog on the link with the most bytes per emulated second (NMEA at 1 Hz: ~600 B/s),
-// which then reaches it seconds of emulated time after the other links' bytes: no real UART does that
-constexpr std::size_t kLinkBackpressureBytes = 256;
+// virtual mode: the most bytes one link may hold unread by the host (the order across links is
+// VirtualGate's: before one link's bytes, the others are read to the last byte)
+constexpr std::size_t kLinkBacklogBytes = 2048;
+// virtual mode's drain: the estimator's whole process group asleep, with nothing left to read,
+// in this many consecutive checks this far apart, has finished its output
+constexpr int kIdleChecks = 3;
+constexpr useconds_t kIdleCheckUs = 1000;
 constexpr const char* kNavLink = "ttyNAV";         // pty the estimator writes NMEA into (output nmea_pty)
 
 std::int64_t Now() { return link::RealtimePacer::MonotonicNs(); }
 double SecondsSince(std::int64_t t0) { return static_cast<double>(Now() - t0) * 1e-9; }
-
-// Bytes the estimator has not read yet, on the links it reads (`host_links`; empty: all links).
-// With `max_link` set, the most on any one such link goes there.
-// Links it does not read (e.g. the second and third receiver for a single-receiver estimator) must
-// neither pace the run nor look like a hang.
-std::size_t PendingToHost(const DeviceSet& set, const std::set<std::string>& host_links,
-                          std::size_t* max_link = nullptr) {
-  std::size_t n = 0;
-  if (max_link) *max_link = 0;
-  for (const auto& ports : set.endpoints) {
-    for (const auto& ep : ports) {
-      if (!host_links.empty() && !host_links.count(ep->link_name())) continue;
-      const std::size_t p = ep->PendingToHost();
-      n += p;
-      if (max_link && p > *max_link) *max_link = p;
-    }
-  }
-  return n;
-}
 
 // The links the estimator reads: those named in its command ({ttyGPS}) or, for navd, in navd.conf.
 std::set<std::string> HostLinks(const Scenario& s, const std::string& raw_command, const DeviceSet& set) {
@@ -180,6 +168,7 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
                               dir + (nav_pty ? "/estimate.nmea" : "/estimate.jsonl"));
   EstimatorHealth health;
   collector.set_line_observer([&](const std::string& line) { health.AddLine(line); });
+  collector.set_json_observer([&](const nlohmann::json& line) { health.AddJson(line); });
   const auto estimator_running = [&] { return estimator && estimator->Running(); };
   // why the run must stop early besides the estimator's own failure: a signal, the run folder
   std::optional<std::string> stop_reason;
@@ -206,51 +195,82 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
     collector.AttachBus([&]() -> const std::vector<CanFrame>& { return scheduler.PollBus(); }, scenario.start_unix_ns);
   }
   std::optional<std::string> hang;
-  const auto run_step = [&](Time t) {
-    t_now = t;
-    collector.Poll();
-    if (interrupted()) return false;
-    progress.Update(ToSeconds(t), scenario.duration_s, collector.records().size());
-    if (opt.emulate_only) return true;
-    if (!estimator_running()) return false;
-    if (pacer) {
-      if (silent_for_ns() > silence_ns) {
-        hang = "no output for " + Secs(silence_s) + " s";
-        return false;
+  // virtual mode: the host sees its links' bytes in emulated-time order (virtual_gate.h); a wait
+  // that sees no byte read for the silence timeout ends the run as a hang or a closed port
+  std::optional<VirtualGate> gate;
+  if (!pacer && !opt.emulate_only) {
+    std::vector<SerialEndpoint*> read_by_host;
+    for (const auto& ports : set.endpoints) {
+      for (const auto& ep : ports) {
+        if (host_links.empty() || host_links.count(ep->link_name())) read_by_host.push_back(ep.get());
       }
-      return true;
     }
-    // virtual mode: the host paces the run; waiting while it has unread input bounds the pty buffer
-    std::size_t link_pending = 0;
-    std::size_t pending = PendingToHost(set, host_links, &link_pending);
-    std::int64_t last_progress = Now();
-    while ((pending > kBackpressureBytes || link_pending > kLinkBackpressureBytes) && estimator_running()) {
-      usleep(link_pending > kLinkBackpressureBytes && pending <= kBackpressureBytes ? 100 : 1000);
+    const auto on_wait = [&, read_by_host, wait_unread = std::size_t{0}, wait_progress_ns = std::int64_t{0}](
+                             std::size_t unread, bool new_wait) mutable {
+      if (new_wait || unread < wait_unread) wait_progress_ns = Now();
+      wait_unread = unread;
       collector.Poll();
-      if (interrupted()) return false;
-      const std::size_t now_pending = PendingToHost(set, host_links, &link_pending);
-      if (now_pending < pending) last_progress = Now();
-      pending = now_pending;
-      if (Now() - last_progress > silence_ns && silent_for_ns() > silence_ns) {
-        hang = "it stopped reading its input and is silent (" + std::to_string(pending) + " bytes unread for " +
+      if (interrupted() || !estimator_running()) return false;
+      if (Now() - wait_progress_ns <= silence_ns) return true;
+      if (silent_for_ns() > silence_ns) {
+        hang = "it stopped reading its input and is silent (" + std::to_string(unread) + " bytes unread for " +
                Secs(silence_s) + " s)";
         return false;
       }
-      if (Now() - last_progress > silence_ns) {
-        // still talking but no longer reading: the port was closed by the peer (or is ignored)
-        std::string links;
-        for (const auto& ports : set.endpoints) {
-          for (const auto& ep : ports) {
-            if (ep->PendingToHost() > 0 && host_links.count(ep->link_name())) links += " " + ep->link_name();
-          }
-        }
-        stop_reason = "the estimator stopped reading" + links + " at t = " + Seconds(t) + " s (" +
-                      std::to_string(pending) + " bytes unread for " + Secs(silence_s) +
-                      " s): the port was closed by the peer or is no longer read";
-        return false;
+      // still talking but no longer reading: the port was closed by the peer (or is ignored)
+      std::string links;
+      for (const SerialEndpoint* ep : read_by_host) {
+        if (ep->PendingToHost() > 0) links += " " + ep->link_name();
       }
+      stop_reason = "the estimator stopped reading" + links + " at t = " + Seconds(t_now) + " s (" +
+                    std::to_string(unread) + " bytes unread for " + Secs(silence_s) +
+                    " s): the port was closed by the peer or is no longer read";
+      return false;
+    };
+    gate.emplace(read_by_host, kLinkBacklogBytes, on_wait);
+    scheduler.set_gate(&*gate);
+  }
+  // the truth for the evaluation, sampled on a thread of its own as the run goes (truth_table.h)
+  const Time t_end = TimeFromSeconds(scenario.duration_s), t_from = TimeFromSeconds(scenario.evaluate_from_s);
+  TruthTableBuilder truth_builder(scenario.truth);
+  truth_builder.Ask(TruthCsvTimes(scenario));
+  std::size_t estimates_asked = 0, fixes_asked = 0;
+  const auto ask_truth = [&] {
+    const std::vector<EstimateRecord>& est = collector.records();
+    const std::vector<EstimateRecord>& fixes = scheduler.fixes();
+    if (est.size() > estimates_asked) {
+      truth_builder.Ask(RecordTimes({est.begin() + static_cast<std::ptrdiff_t>(estimates_asked), est.end()}, t_from, t_end));
+      estimates_asked = est.size();
     }
-    return estimator_running();
+    if (fixes.size() > fixes_asked) {
+      truth_builder.Ask(RecordTimes({fixes.begin() + static_cast<std::ptrdiff_t>(fixes_asked), fixes.end()}, t_from, t_end));
+      fixes_asked = fixes.size();
+    }
+  };
+  std::int64_t running_checked_ns = 0;
+  const auto run_step = [&](Time t) {
+    t_now = t;
+    collector.Poll();
+    ask_truth();
+    // an estimator's solutions come in time order, about as late as its input: what lies a
+    // second behind both will not be asked for any more (a straggler only costs Finish a pass)
+    if (!collector.records().empty()) {
+      truth_builder.Advance(std::min(collector.records().back().t_validity, t) - std::chrono::seconds(1));
+    }
+    if (interrupted()) return false;
+    progress.Update(ToSeconds(t), scenario.duration_s, collector.records().size());
+    if (opt.emulate_only) return true;
+    // whether the estimator still runs: a wait4() per event costs more than the event in virtual
+    // mode, so at most once per millisecond of wall time
+    if (const std::int64_t now = Now(); now - running_checked_ns >= 1'000'000) {
+      running_checked_ns = now;
+      if (!estimator_running()) return false;
+    }
+    if (pacer && silent_for_ns() > silence_ns) {
+      hang = "no output for " + Secs(silence_s) + " s";
+      return false;
+    }
+    return !hang && !stop_reason;
   };
   try {
     scheduler.Run(run_step);
@@ -258,28 +278,62 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
     stop_reason = std::string("the run failed at t = ") + Seconds(t_now) + " s: " + e.what();
   }
   if (!hang && !interrupted()) scheduler.Flush();
+  for (const auto& ports : set.endpoints) {
+    for (const auto& ep : ports) ep->FlushCapture();
+  }
+  interrupted();  // a capture that could not be written stops the run here at the latest
 
-  // ---- drain: the host reads every byte and its output goes quiet ----
+  // ---- drain: the host reads every byte and its output is complete ----
   if (!hang && !stop_reason && estimator_running()) {
-    std::int64_t last_progress = Now();
-    std::size_t pending = PendingToHost(set, host_links);
-    while (estimator_running() && pending > 0 && Now() - last_progress < silence_ns && !interrupted()) {
-      usleep(5000);
-      collector.Poll();
-      const std::size_t p = PendingToHost(set, host_links);
-      if (p < pending) last_progress = Now();
-      pending = p;
+    if (gate) {
+      gate->WaitAllRead();  // gives up (hang, closed port, interrupt) through its wait step
+    } else {
+      const auto unread = [&] {  // on the links the estimator reads (none named: all)
+        std::size_t n = 0;
+        for (const auto& ports : set.endpoints) {
+          for (const auto& ep : ports) {
+            if (host_links.empty() || host_links.count(ep->link_name())) n += ep->PendingToHost();
+          }
+        }
+        return n;
+      };
+      std::int64_t last_progress = Now();
+      std::size_t pending = unread();
+      while (estimator_running() && pending > 0 && Now() - last_progress < silence_ns && !interrupted()) {
+        usleep(5000);
+        collector.Poll();
+        const std::size_t p = unread();
+        if (p < pending) last_progress = Now();
+        pending = p;
+      }
     }
+  }
+  if (!hang && !stop_reason && estimator_running()) {
+    // Output complete: in virtual mode, when every process of the estimator's group has slept
+    // through a few checks with all its input read (it waits for input that will not come);
+    // otherwise (real time, or /proc cannot tell) when its output has been quiet for kDrainQuietS.
     const std::int64_t drain_start = Now();
+    GroupActivity before;
+    std::int64_t output_before = -1;
+    int idle_checks = 0;
     while (estimator_running() && !interrupted()) {
       collector.Poll();
-      const std::int64_t quiet_ns = Now() - std::max(collector.last_output_wall_ns(), drain_start);
-      if (collector.last_output_wall_ns() > 0 && quiet_ns > static_cast<std::int64_t>(kDrainQuietS * 1e9)) break;
+      const std::int64_t last_output = collector.last_output_wall_ns();
+      if (gate && last_output > 0) {
+        const GroupActivity now = ReadGroupActivity(estimator->pid());
+        const bool idle = SleptThroughout(before, now) && last_output == output_before && gate->Unread() == 0;
+        idle_checks = idle ? idle_checks + 1 : 0;
+        before = now;
+        output_before = last_output;
+        if (idle_checks >= kIdleChecks) break;
+      }
+      const std::int64_t quiet_ns = Now() - std::max(last_output, drain_start);
+      if (last_output > 0 && quiet_ns > static_cast<std::int64_t>(kDrainQuietS * 1e9)) break;
       if (quiet_ns > silence_ns) {
         if (collector.records().empty()) hang = "no output for " + Secs(silence_s) + " s";
         break;
       }
-      usleep(10000);
+      usleep(gate ? kIdleCheckUs : 10000);
     }
   }
   progress.Finish();
@@ -307,7 +361,6 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
   // ---- evaluation ----
   const std::vector<EstimateRecord>& estimates = collector.records();
   if (estimates.empty() && !opt.emulate_only) report.problems.push_back("the estimator produced no solution");
-  const Time t_end = TimeFromSeconds(scenario.duration_s), t_from = TimeFromSeconds(scenario.evaluate_from_s);
   // the point the estimate describes: navd fusing the IMU board reports the board (its body origin is
   // the IMU); a GNSS-only navd reports the antenna
   std::string point = scenario.estimator.reference_point;
@@ -319,9 +372,11 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
   const Eigen::Vector3d p_BX_B_m = point == "antenna" ? scenario.gnss.model.p_BA_B_m
                                    : point == "imu"   ? scenario.mcu.config.mounting.p_BI_B_m
                                                       : Eigen::Vector3d::Zero();
-  std::vector<ErrorSample> est_err = CompareWithTruth(scenario.truth, estimates, p_BX_B_m, t_from, t_end);
+  ask_truth();
+  const TruthTable truth_table = truth_builder.Finish();
+  std::vector<ErrorSample> est_err = CompareWithTruth(truth_table, estimates, p_BX_B_m, t_from, t_end);
   std::vector<ErrorSample> fix_err =
-      CompareWithTruth(scenario.truth, scheduler.fixes(), scenario.gnss.model.p_BA_B_m, t_from, t_end);
+      CompareWithTruth(truth_table, scheduler.fixes(), scenario.gnss.model.p_BA_B_m, t_from, t_end);
   const PlannedPath path = PlannedPathOf(scenario.truth, scenario.duration_s);
   AddCrossTrack(est_err, path);
   AddCrossTrack(fix_err, path);
@@ -384,7 +439,7 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
   };
   attempt([&] { WriteErrorsCsv(est_err, dir + "/estimate.csv"); });
   attempt([&] { WriteErrorsCsv(fix_err, dir + "/gnss_fixes_errors.csv"); });
-  attempt([&] { WriteTruthCsv(scenario, dir + "/truth.csv", series.truth_t_s, series.truth_en_m); });
+  attempt([&] { WriteTruthCsv(truth_table, scenario, dir + "/truth.csv", series.truth_t_s, series.truth_en_m); });
   attempt([&] { WriteScheduleErrors(set, dir + "/schedule_error.json"); });
   if (opt.html) {
     series.estimate_errors = std::move(est_err);

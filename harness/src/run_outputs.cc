@@ -65,17 +65,27 @@ void WriteNavdConfig(const std::string& path, const Scenario& s, const std::stri
   }
 }
 
+std::vector<Time> TruthCsvTimes(const Scenario& s) {
+  std::vector<Time> t;
+  const Time t_end = TimeFromSeconds(s.duration_s);
+  for (Time ti{}; ti <= t_end; ti += std::chrono::milliseconds(100)) t.push_back(ti);
+  return t;
+}
+
 void WriteTruthCsv(const Scenario& s, const std::string& path, std::vector<double>& t_s,
+                   std::vector<Eigen::Vector2d>& en_m) {
+  WriteTruthCsv(TruthTable(s.truth, TruthCsvTimes(s)), s, path, t_s, en_m);
+}
+
+void WriteTruthCsv(const TruthTable& truth, const Scenario& s, const std::string& path, std::vector<double>& t_s,
                    std::vector<Eigen::Vector2d>& en_m) {
   std::ofstream truth_csv(path);
   if (!truth_csv) throw std::runtime_error("cannot write " + path);
   truth_csv << "t_s,lat_deg,lon_deg,height_m,e_m,n_m,u_m,v_e_mps,v_n_mps,v_u_mps,yaw_deg,speed_mps,"
                "roll_deg,pitch_deg,w_x_radps,w_y_radps,w_z_radps,f_x_mps2,f_y_mps2,f_z_mps2,steer_deg,cross_track_m\n";
-  truth::TruthIntegrator truth(s.truth);
-  const Time t_end = TimeFromSeconds(s.duration_s);
   char line[640];
-  for (Time t{}; t <= t_end; t += std::chrono::milliseconds(100)) {
-    const TruthSample x = truth.Sample(t);
+  for (const Time t : TruthCsvTimes(s)) {
+    const TruthSample& x = truth.At(t);
     const Eigen::Matrix3d R = x.q_NB.toRotationMatrix();
     const Eigen::Vector3d fwd = R.col(0);
     // roll and pitch of the body (z-y-x Euler angles of FLU in ENU)

@@ -1,5 +1,7 @@
 #include "hil/harness/scheduler.h"
 
+#include <poll.h>
+
 #include <algorithm>
 #include <cstdio>
 
@@ -24,7 +26,11 @@ void Scheduler::Dispatch(std::size_t d, DeviceOutput& out) {
     carried.clear();
     faults_.Process(m, ep.link_name(), ep.uart().baud(), carried);
     for (const SerialMessage& c : carried) {
-      if (ep.Queue(c) || !recorder_) continue;
+      if (ep.Queue(c)) {
+        if (!pacer_) writes_.Add(ep, c.bytes.size());
+        continue;
+      }
+      if (!recorder_) continue;
       // the receiver's transmit buffer overflowed: count it against an active output overload
       if (const auto i = recorder_->Active(FaultKind::kGnssOverload, c.t_ready)) recorder_->Note(*i, c.t_ready);
     }
@@ -35,16 +41,27 @@ void Scheduler::Dispatch(std::size_t d, DeviceOutput& out) {
   }
   out.clear();
   if (!pacer_) {
-    for (auto& ep : set_.endpoints[d]) ep->WriteAll();
+    if (!write_refused_ && !writes_.Pump(false)) write_refused_ = true;
     if (set_.can) set_.can->SendAll();
   }
 }
 
 bool Scheduler::PollHosts(Time t_host, DeviceOutput& out) {
+  // one poll() for every port instead of a read() each: hosts rarely write
+  if (host_fds_.empty()) {
+    for (const auto& ports : set_.endpoints) {
+      for (const auto& ep : ports) host_fds_.push_back({ep->host_input_fd(), POLLIN, 0});
+    }
+  }
+  for (pollfd& p : host_fds_) p.revents = 0;
+  poll(host_fds_.data(), host_fds_.size(), 0);
   bool replied = false;
+  std::size_t k = 0;
   for (std::size_t d = 0; d < set_.devices.size(); ++d) {
     const Time t_rx = pacer_ ? pacer_->SimTimeOfWall(link::RealtimePacer::MonotonicNs()) : t_host;
     for (std::size_t p = 0; p < set_.endpoints[d].size(); ++p) {
+      const pollfd& pf = host_fds_[k++];
+      if (pf.fd >= 0 && pf.revents == 0) continue;  // nothing from this host (errors and hang-ups are read)
       if (const std::string rx = set_.endpoints[d][p]->PollHost(t_rx); !rx.empty()) {
         set_.devices[d]->OnHostBytes(static_cast<int>(p), t_rx, rx, out);
         set_.endpoints[d][p]->set_baud(set_.devices[d]->baud(static_cast<int>(p)));
@@ -53,6 +70,8 @@ bool Scheduler::PollHosts(Time t_host, DeviceOutput& out) {
       }
     }
   }
+  // virtual mode: a reply goes to the host now, not after what the run may hold back
+  if (!pacer_ && replied && !write_refused_ && !writes_.Pump(true)) write_refused_ = true;
   return replied;
 }
 
@@ -140,7 +159,7 @@ void Scheduler::Run(const std::function<bool(Time)>& keep_going) {
     PollHosts(*t_event, out);
     t_last_event_ = *t_event;
     PollBus();
-    if (!keep_going(*t_event)) break;
+    if (write_refused_ || !keep_going(*t_event)) break;
   }
 }
 
@@ -153,7 +172,10 @@ const std::vector<CanFrame>& Scheduler::PollBus() {
 }
 
 void Scheduler::Flush() {
-  if (!pacer_) return;
+  if (!pacer_) {
+    if (!write_refused_ && !writes_.Pump(true)) write_refused_ = true;
+    return;
+  }
   for (auto& ports : set_.endpoints) {
     for (auto& ep : ports) {
       while (ep->next_byte_time()) ep->WriteNextByte(*pacer_);

@@ -1,7 +1,6 @@
 #include "hil/harness/serial_endpoint.h"
 
-#include <sched.h>
-
+#include <algorithm>
 #include <stdexcept>
 
 #include "hil/firmware_emu/link/pty_port.h"
@@ -9,8 +8,6 @@
 
 namespace hil::harness {
 namespace {
-
-constexpr std::int64_t kHandoverTimeoutNs = 50'000'000;  // virtual mode: longest wait for the kernel hand-over
 
 std::unique_ptr<link::SerialPort> OpenPort(const std::string& link_name, const std::string& link_path, int baud) {
   if (link::IsDevicePath(link_name)) return std::make_unique<link::TtyPort>(link_name, baud);
@@ -105,22 +102,18 @@ void SerialEndpoint::WriteNextByte(const link::RealtimePacer& pacer) {
   }
 }
 
-void SerialEndpoint::WriteAll() {
-  for (const auto& [c, name] : pending_) {
-    const std::size_t queued_before = handover_wait_ ? port_->PendingToHost() : 0;
-    port_->Write(std::string_view(c.bytes).substr(pending_offset_));
-    if (handover_wait_) {
-      // the bytes reached the host's input queue (it grew) or the host read meanwhile (it changed)
-      const std::int64_t give_up = link::RealtimePacer::MonotonicNs() + kHandoverTimeoutNs;
-      while (port_->PendingToHost() == queued_before) {
-        if (link::RealtimePacer::MonotonicNs() > give_up) {
-          handover_wait_ = false;
-          break;
-        }
-        sched_yield();
-      }
-    }
+void SerialEndpoint::WriteChunks(std::size_t chunks) {
+  chunks = std::min(chunks, pending_.size());
+  if (chunks == 0) return;
+  // one write for the chunks: the host reads a byte stream, the chunking is not its business
+  write_buffer_.clear();
+  for (std::size_t i = 0; i < chunks; ++i) {
+    write_buffer_.append(pending_[i].first.bytes, pending_offset_, std::string::npos);
     pending_offset_ = 0;
+  }
+  port_->Write(write_buffer_);
+  for (std::size_t i = 0; i < chunks; ++i) {
+    const auto& [c, name] = pending_.front();
     CaptureRecord r;
     r.dir = CaptureDir::kTx;
     r.t_emu_ns = ToNs(c.t_first);
@@ -129,8 +122,14 @@ void SerialEndpoint::WriteAll() {
     r.name = name;
     r.bytes = c.bytes;
     capture_.Write(r);
+    pending_.pop_front();
   }
-  pending_.clear();
+}
+
+std::size_t SerialEndpoint::queued_bytes() const {
+  std::size_t n = 0;
+  for (const auto& [c, name] : pending_) n += c.bytes.size();
+  return n - pending_offset_;
 }
 
 std::string SerialEndpoint::PollHost(Time t_now) {

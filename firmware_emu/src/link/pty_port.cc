@@ -116,6 +116,12 @@ std::string PtyPort::ReadAvailable() {
 std::size_t PtyPort::PendingToHost() const {
   int n = 0;
   if (ioctl(slave_fd_, FIONREAD, &n) != 0) return 0;
+  if (n > 0) return static_cast<std::size_t>(n);  // unread bytes wait: the hand-over does not matter
+  // poll() on the slave side runs the pending hand-over (flush_to_ldisc) when its line discipline
+  // has no input, so bytes in flight show in FIONREAD now instead of looking read
+  pollfd p{slave_fd_, POLLIN, 0};
+  poll(&p, 1, 0);
+  if (ioctl(slave_fd_, FIONREAD, &n) != 0) return 0;
   return static_cast<std::size_t>(n);
 }
 

@@ -79,8 +79,15 @@ class CaptureWriter {
  public:
   /// @throws std::runtime_error naming the path.
   CaptureWriter(const std::string& path, const CaptureHeader& header);
-  /// Writes one record; a failed write (disk full, file size limit) is noted (run_guard.h).
+  /// Flushes what is buffered.
+  ~CaptureWriter();
+  CaptureWriter(const CaptureWriter&) = delete;
+  CaptureWriter& operator=(const CaptureWriter&) = delete;
+  /// Writes one record (buffered: it reaches the file with the next few kB or at Flush()); a
+  /// failed write (disk full, file size limit) is noted (run_guard.h) when the buffer goes out.
   void Write(const CaptureRecord& r);
+  /// Writes out what is buffered.
+  void Flush();
 
  private:
   std::ofstream out_;

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "hil/firmware_emu/link/pty_port.h"
 #include "hil/firmware_emu/device.h"
 #include "hil/harness/estimate_reader.h"
@@ -40,9 +42,13 @@ class EstimateCollector {
   std::size_t unparsed_lines() const { return unparsed_; }
   /// Called with every raw line as it arrives (e.g. to read navd's health object).
   void set_line_observer(std::function<void(const std::string&)> f) { observer_ = std::move(f); }
+  /// For a JSON output format, the observer of each line parsed (parsed once for both the reader
+  /// and the observer); then set_line_observer's observer is not called for those lines.
+  void set_json_observer(std::function<void(const nlohmann::json&)> f) { json_observer_ = std::move(f); }
 
  private:
-  void Consume(const std::string& line, std::int64_t wall_ns);
+  /// `parsed`: the line already parsed as JSON (EstimatorProcess's reader thread), or null.
+  void Consume(const std::string& line, std::int64_t wall_ns, const nlohmann::json* parsed = nullptr);
   std::unique_ptr<EstimateReader> reader_;
   EstimatorProcess* process_;
   link::PtyPort* nav_pty_;
@@ -53,6 +59,7 @@ class EstimateCollector {
   std::size_t lines_ = 0, unparsed_ = 0;
   std::string raw_path_;
   std::function<void(const std::string&)> observer_;
+  std::function<void(const nlohmann::json&)> json_observer_;
   std::function<const std::vector<CanFrame>&()> poll_bus_;
   std::unique_ptr<N2kBusReader> bus_reader_;
   std::size_t bus_seen_ = 0;

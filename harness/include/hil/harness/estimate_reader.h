@@ -16,6 +16,8 @@
 #include <optional>
 #include <string>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "hil/harness/evaluator.h"
 
 namespace hil::harness {
@@ -25,6 +27,12 @@ class EstimateReader {
   virtual ~EstimateReader() = default;
   /// One output line and its CLOCK_MONOTONIC arrival; a record when the line is a solution.
   virtual std::optional<EstimateRecord> Line(const std::string& text, std::int64_t wall_ns) = 0;
+  /// True for the JSON formats: Line() parses the text, and JsonLine() takes it parsed.
+  virtual bool reads_json() const { return false; }
+  /// Line() for a line already parsed (the parse result, possibly discarded).
+  virtual std::optional<EstimateRecord> JsonLine(const nlohmann::json& /*line*/, std::int64_t /*wall_ns*/) {
+    return std::nullopt;
+  }
 };
 
 /// The reader for an output format name. @throws std::invalid_argument for an unknown name.

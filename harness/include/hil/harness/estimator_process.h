@@ -7,11 +7,14 @@
 
 #include <atomic>
 #include <cstdint>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
 #include <thread>
 #include <vector>
+
+#include <nlohmann/json_fwd.hpp>
 
 namespace hil::harness {
 
@@ -19,6 +22,9 @@ namespace hil::harness {
 struct OutputLine {
   std::string text;
   std::int64_t wall_ns = 0;
+  /// With set_parse_json(true), a line that starts with '{' parsed on the reader thread (possibly
+  /// discarded as invalid); otherwise null.
+  std::shared_ptr<const nlohmann::json> json;
 };
 
 /// How the process ended.
@@ -46,9 +52,14 @@ class EstimatorProcess {
   /// CLOCK_MONOTONIC time of the last output line (0 if none yet).
   std::int64_t last_output_wall_ns() const { return last_output_wall_ns_.load(); }
   /// Stops the process and every process of its group (also when the estimator itself has already
-  /// ended): SIGTERM, then SIGKILL after `grace_s`. Idempotent.
+  /// ended): SIGTERM, then SIGKILL after `grace_s`. Idempotent. Returns once the lines it wrote
+  /// before it ended have been read from its stdout (or, with the pipe held open by a process
+  /// that left the group, after a short wait).
   ExitInfo Stop(double grace_s = 2.0);
   int pid() const { return pid_; }
+  /// Parse JSON lines on the reader thread (see OutputLine::json): the output of a fast
+  /// estimator is then decoded beside the run, not in its thread.
+  void set_parse_json(bool on) { parse_json_ = on; }
 
  private:
   void ReadLoop();
@@ -60,6 +71,8 @@ class EstimatorProcess {
   std::mutex mu_;
   std::vector<OutputLine> lines_;
   std::atomic<std::int64_t> last_output_wall_ns_{0};
+  std::atomic<bool> stdout_closed_{false};  // the reader saw end of file
+  std::atomic<bool> parse_json_{false};
   std::optional<ExitInfo> exit_;
 };
 

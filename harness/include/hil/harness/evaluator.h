@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 
 #include "hil/firmware_emu/sim_time.h"
+#include "hil/harness/truth_table.h"
 #include "hil/truth/truth_integrator.h"
 
 namespace hil::harness {
@@ -56,6 +57,11 @@ struct AccuracyMetrics {
 /// `t_from` are skipped (convergence); records after `t_to` too.
 std::vector<ErrorSample> CompareWithTruth(const truth::TruthConfig& truth_config, std::vector<EstimateRecord> records,
                                           const Eigen::Vector3d& p_BX_B_m, Time t_from, Time t_to);
+/// The same with the truth from a table that holds every time RecordTimes(records, …) gives.
+std::vector<ErrorSample> CompareWithTruth(const TruthTable& truth, std::vector<EstimateRecord> records,
+                                          const Eigen::Vector3d& p_BX_B_m, Time t_from, Time t_to);
+/// The times CompareWithTruth needs the truth at for `records`.
+std::vector<Time> RecordTimes(const std::vector<EstimateRecord>& records, Time t_from, Time t_to);
 
 /// Metrics of a set of errors. Empty input gives samples = 0.
 AccuracyMetrics ComputeAccuracy(const std::vector<ErrorSample>& errors);

@@ -32,6 +32,8 @@ struct EstimatorHealth {
   std::set<std::string> flags_seen;
   /// Takes one output line of the estimator (lines without a health object are ignored).
   void AddLine(const std::string& line);
+  /// The same for a line already parsed (a JSON object; anything else is ignored).
+  void AddJson(const nlohmann::json& line);
 };
 
 /// The flags navd knows (navd.flag.<name> is 0 for these when never raised).

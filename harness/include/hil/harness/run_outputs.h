@@ -9,6 +9,7 @@
 
 #include "hil/harness/device_set.h"
 #include "hil/harness/scenario.h"
+#include "hil/harness/truth_table.h"
 
 namespace hil::harness {
 
@@ -18,6 +19,11 @@ void WriteNavdConfig(const std::string& path, const Scenario& s, const std::stri
 /// Truth at 10 Hz as CSV; returns the horizontal track (t, east, north) for the plots.
 void WriteTruthCsv(const Scenario& s, const std::string& path, std::vector<double>& t_s,
                    std::vector<Eigen::Vector2d>& en_m);
+/// The same from a table that holds the times TruthCsvTimes(s) gives.
+void WriteTruthCsv(const TruthTable& truth, const Scenario& s, const std::string& path, std::vector<double>& t_s,
+                   std::vector<Eigen::Vector2d>& en_m);
+/// The times of truth.csv: every 100 ms from 0 to the scenario's end.
+std::vector<Time> TruthCsvTimes(const Scenario& s);
 
 /// Real-time schedule error per link (p50/p99/max µs); nothing in virtual mode.
 void WriteScheduleErrors(const DeviceSet& set, const std::string& path);

@@ -5,6 +5,8 @@
 /// byte at its wall-clock UART time. Byte faults of the timeline are applied to whole messages
 /// before they enter a UART queue, so the bytes depend only on the scenario and the seed.
 
+#include <poll.h>
+
 #include <functional>
 #include <optional>
 #include <ostream>
@@ -16,6 +18,7 @@
 #include "hil/harness/evaluator.h"
 #include "hil/harness/fault_record.h"
 #include "hil/harness/scenario.h"
+#include "hil/harness/virtual_gate.h"
 
 namespace hil::harness {
 
@@ -28,6 +31,11 @@ class Scheduler {
   /// Where the faults of the timeline applied here are counted (GNSS epochs in an outage or a
   /// glitch, receiver messages lost to its transmit buffer in an output overload).
   void set_recorder(FaultRecorder* recorder) { recorder_ = recorder; }
+
+  /// Virtual mode: the gate that keeps the host's links in order (virtual_gate.h); without one
+  /// bytes are written as they are made. When the gate gives up a wait the run stops and the bytes
+  /// not yet written stay unsent.
+  void set_gate(VirtualGate* gate) { writes_ = VirtualWriteQueue(gate, kMaxDeferredBytes); }
 
   /// Runs from t = 0 to the scenario's end. After every event, `keep_going(t)` decides whether
   /// to continue (false stops the run early, e.g. when the estimator died).
@@ -59,6 +67,10 @@ class Scheduler {
   std::vector<EstimateRecord> fixes_;
   std::vector<CanFrame> bus_frames_;
   Time t_last_event_{};
+  static constexpr std::size_t kMaxDeferredBytes = 8192;  // virtual mode: bytes the run may hold back
+  VirtualWriteQueue writes_{nullptr, kMaxDeferredBytes};
+  bool write_refused_ = false;  // the gate gave up a wait
+  std::vector<pollfd> host_fds_;  // one per serial endpoint, in device and port order
 };
 
 }  // namespace hil::harness

@@ -43,13 +43,17 @@ class SerialEndpoint {
   std::optional<Time> next_byte_time() const;
   /// Writes the next waiting byte at its UART wall time and records the schedule error.
   void WriteNextByte(const link::RealtimePacer& pacer);
-  /// Writes every waiting byte at once (virtual mode), then waits (briefly) until the kernel has
-  /// handed them to the host's input queue: a pty moves written bytes to the reader through a
-  /// deferred kernel work item, which on a loaded machine can run milliseconds late, i.e.
-  /// seconds of emulated time in virtual mode, and the run's back-pressure (PendingToHost)
-  /// cannot see bytes still in flight. Without this wait one link's bytes can reach the host
-  /// seconds (of emulated time) after another link's bytes written later; no real UART does that.
-  void WriteAll();
+  /// Writes every waiting byte at once, in one write (virtual mode). The order in which the host
+  /// sees several links is kept by VirtualGate / VirtualWriteQueue, before this is called.
+  void WriteAll() { WriteChunks(pending_.size()); }
+  /// Writes the first `chunks` waiting chunks in one write (virtual mode).
+  void WriteChunks(std::size_t chunks);
+  /// Bytes waiting to be written.
+  std::size_t queued_bytes() const;
+  /// Writes out the capture's buffer (a failed write is noted, run_guard.h).
+  void FlushCapture() { capture_.Flush(); }
+  /// poll() shows host bytes on this descriptor (-1: none to poll, call PollHost anyway).
+  int host_input_fd() const { return port_->host_input_fd(); }
   /// Reads host bytes (non-blocking), captures them with emulated time `t_now`, returns them.
   std::string PollHost(Time t_now);
   void set_baud(int baud) { uart_.set_baud(baud); }
@@ -71,7 +75,7 @@ class SerialEndpoint {
   std::size_t pending_offset_ = 0;  // bytes of pending_.front() already written
   CaptureRecord current_;           // capture line of the chunk being written in real time
   std::vector<double> schedule_error_us_;
-  bool handover_wait_ = true;       // off once a host leaves this port unread (the wait timed out)
+  std::string write_buffer_;        // virtual mode: the waiting chunks joined for one write
 };
 
 /// The capture file name of a link: `<link>.cap`, with a device path reduced to its base name

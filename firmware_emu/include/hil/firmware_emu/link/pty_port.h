@@ -39,13 +39,17 @@ class PtyPort final : public SerialPort {
   static constexpr int kStallTimeoutMs = 1000;
   /// Reads whatever the host has written (non-blocking); empty if nothing.
   std::string ReadAvailable() override;
-  /// Bytes written by the emulator that the host has not read yet.
+  /// Bytes written by the emulator that the host has not read yet. A pty hands written bytes to
+  /// the reader's line discipline later, from a kernel work item; when the line discipline is empty
+  /// this first waits for that hand-over, so 0 means exactly "the host has read every byte".
+  /// (With bytes already waiting there, bytes still in the hand-over are not counted.)
   std::size_t PendingToHost() const override;
 
   const std::string& path() const override { return symlink_path_; }
   const std::string& slave_path() const { return slave_path_; }
   const std::string& symlink_path() const { return symlink_path_; }
   int master_fd() const { return master_fd_; }
+  int host_input_fd() const override { return master_fd_; }
 
  private:
   int master_fd_ = -1;

@@ -20,6 +20,8 @@ class SerialPort {
   virtual std::string ReadAvailable() = 0;
   /// Bytes written that have not left yet (pty: not read by the host; tty: not transmitted).
   virtual std::size_t PendingToHost() const = 0;
+  /// A descriptor that poll() reports readable (POLLIN) when ReadAvailable() has bytes, or -1.
+  virtual int host_input_fd() const { return -1; }
   /// The path the host opens (a pty's symlink) or the device path.
   virtual const std::string& path() const = 0;
 };

@@ -24,6 +24,7 @@ class TtyPort final : public SerialPort {
   std::size_t PendingToHost() const override;
   const std::string& path() const override { return path_; }
   int fd() const { return fd_; }
+  int host_input_fd() const override { return fd_; }
   /// How often the device was reopened after failing.
   int reopen_count() const { return reopens_; }
 

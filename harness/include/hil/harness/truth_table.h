@@ -1,0 +1,79 @@
+#pragma once
+/// @file
+/// The truth at a set of times, from one pass of the truth integrator. The evaluation needs the
+/// truth at every estimate, at every raw fix and on the 10 Hz grid of truth.csv; integrating a
+/// long scenario once instead of once per use saves most of the evaluation's time. A sample from
+/// the table is the one a fresh TruthIntegrator gives at that time, bit for bit: the integrator's
+/// steps do not depend on which times are sampled (truth_integrator.h).
+
+#include <condition_variable>
+#include <functional>
+#include <mutex>
+#include <queue>
+#include <thread>
+#include <vector>
+
+#include "hil/firmware_emu/sim_time.h"
+#include "hil/firmware_emu/truth_sample.h"
+#include "hil/truth/local_frame.h"
+#include "hil/truth/truth_integrator.h"
+
+namespace hil::harness {
+
+class TruthTable {
+ public:
+  /// Samples the truth at `times` (any order, repeats allowed; negative times are left out).
+  TruthTable(const truth::TruthConfig& config, std::vector<Time> times);
+  /// A table of samples already taken (`times` sorted and unique, one sample each).
+  TruthTable(const truth::TruthConfig& config, std::vector<Time> times, std::vector<TruthSample> samples);
+  /// The sample at `t`, one of the times given. @throws std::out_of_range otherwise.
+  const TruthSample& At(Time t) const;
+  bool Has(Time t) const;
+  /// The scenario's local frame (ENU at the origin).
+  const truth::LocalFrame& frame() const { return frame_; }
+
+ private:
+  std::vector<Time> times_;  // sorted, unique
+  std::vector<TruthSample> samples_;
+  truth::LocalFrame frame_;
+};
+
+/// Builds a TruthTable during the run, on a thread of its own: the times asked for (estimates
+/// and fixes as they come, the truth.csv grid) are sampled in time order as far as
+/// `Advance(watermark)` allows, so the evaluation after the run finds most of the truth ready
+/// instead of integrating the whole scenario again. Times asked for behind what the thread has
+/// already passed are sampled by Finish() in a second pass.
+class TruthTableBuilder {
+ public:
+  explicit TruthTableBuilder(const truth::TruthConfig& config);
+  ~TruthTableBuilder();
+  TruthTableBuilder(const TruthTableBuilder&) = delete;
+  TruthTableBuilder& operator=(const TruthTableBuilder&) = delete;
+
+  /// Asks for the truth at `times` (negative times are left out).
+  void Ask(const std::vector<Time>& times);
+  /// No time before `t` will be asked for any more (except stragglers, see the class comment).
+  void Advance(Time t);
+  /// Samples everything asked for and returns the table.
+  TruthTable Finish();
+
+ private:
+  void Work();
+
+  const truth::TruthConfig& config_;
+  std::mutex mu_;
+  std::condition_variable cv_;
+  std::priority_queue<Time, std::vector<Time>, std::greater<>> asked_;  // not yet taken by the thread
+  std::vector<Time> late_;      // asked behind the thread's position
+  Time watermark_{};
+  bool has_watermark_ = false;
+  Time notified_watermark_{};   // the thread is woken for every second of watermark, not every event
+  bool finishing_ = false;
+  Time position_{};             // the latest time the thread has sampled (or taken)
+  bool started_ = false;
+  std::vector<Time> done_times_;  // thread-owned until joined
+  std::vector<TruthSample> done_samples_;
+  std::thread worker_;
+};
+
+}  // namespace hil::harness
