@@ -18,7 +18,7 @@ void EstimateCollector::Consume(const std::string& line, std::int64_t wall_ns) {
   if (observer_) observer_(line);
   ++lines_;
   if (auto r = reader_->Line(line, wall_ns)) records_.push_back(*r);
-  else ++unparsed_;
+  else if (reader_->SolutionsInLines()) ++unparsed_;
 }
 
 void EstimateCollector::AttachBus(std::function<const std::vector<CanFrame>&()> poll_bus, std::int64_t start_unix_ns) {

@@ -6,10 +6,12 @@
 # Usage: fault_can_reorder_check.sh RUN_DIR   (busybox sh; prints the figures, exits 1 on any failure)
 r=${1:?usage: fault_can_reorder_check.sh RUN_DIR}
 fail() { echo "fault_can_reorder_check: FAIL: $*"; exit 1; }
-# the first value of "KEY": in report.json (metric_table keys are unique)
-val() { sed -n "s/.*\"$1\": *\([0-9][0-9.e+-]*\).*/\1/p" "$r/report.json" | head -n 1; }
+# a value of report.json's metric_table (keys are sorted: baselines and baseline_table come first)
+val() { sed -n '/^  "metric_table"/,/^  }/p' "$r/report.json" | sed -n "s/.*\"$1\": *\([0-9][0-9.e+-]*\).*/\1/p" | head -n 1; }
 [ -f "$r/report.json" ] || fail "no $r/report.json"
-swapped=$(awk '/"kind": "can_reorder"/ {k = 1} k && /"count"/ {gsub(/[^0-9]/, "", $2); print $2; exit}' "$r/report.json")
+# the scenario's only fault: the first "count" of fault_injections (its keys are sorted)
+swapped=$(awk '/^  "fault_injections"/ {f = 1} f && /"count"/ {gsub(/[^0-9]/, "", $2); print $2; exit}' "$r/report.json")
+grep -q '"kind": "can_reorder"' "$r/report.json" || fail "no can_reorder in fault_injections"
 unpaired=$(val navd.imu_can_unpaired)
 flag=$(val navd.flag.imu_link_errors)
 recovery=$(val fault_recovery_time_s)

@@ -25,6 +25,9 @@ class EstimateReader {
   virtual ~EstimateReader() = default;
   /// One output line and its CLOCK_MONOTONIC arrival; a record when the line is a solution.
   virtual std::optional<EstimateRecord> Line(const std::string& text, std::int64_t wall_ns) = 0;
+  /// False when the solutions come from elsewhere (n2k_socketcan: the bus) and every line is a
+  /// diagnostic, so a line that is no solution is not worth a warning.
+  virtual bool SolutionsInLines() const { return true; }
 };
 
 /// The reader for an output format name. @throws std::invalid_argument for an unknown name.
