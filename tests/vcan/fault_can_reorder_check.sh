@@ -23,7 +23,7 @@ navd_unpaired=$(echo "$line" | sed -n 's/.* unpaired=\([0-9]*\) .*/\1/p')
 echo "fault_can_reorder: pairs_swapped=$swapped navd_health_unpaired=$unpaired navd_exit_unpaired=$navd_unpaired" \
      "imu_link_errors_flag=$flag recovery_s=$recovery rmse_m=$rmse max_error_m=$maxerr output_rate_hz=$rate"
 echo "navd: $line"
-grep -q '"pass": true' "$r/report.json" || { sed -n '/"criteria"/,/\]/p' "$r/report.json"; fail "the report did not pass"; }
+grep -q '^  "pass": true' "$r/report.json" || { sed -n '/"criteria"/,/\]/p' "$r/report.json"; fail "the report did not pass"; }
 [ "${swapped:-0}" -gt 0 ] || fail "no CAN frame pair was swapped"
 [ -n "$unpaired" ] || fail "navd's health object has no imu_can_unpaired"
 [ "${unpaired%.*}" -gt 0 ] || fail "navd counted no unpaired frame"
