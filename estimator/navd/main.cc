@@ -233,7 +233,7 @@ int main(int argc, char** argv) {
   }
 
   health.set_sources({&receivers.nmea_totals(), &receivers.ubx_totals(), &mcu.stats(), &mcu_adapter.stats(),
-                      &nav.stats()});
+                      &nav.stats(), can_imu ? &can_imu->decoder().stats() : nullptr});
   // every input device with what its bytes are fed to
   hil::navd::SerialDevice imu(cfg.imu_device, cfg.imu_baud);
   std::vector<std::pair<hil::navd::SerialDevice*, std::function<void(const std::string&)>>> inputs;

@@ -78,9 +78,10 @@ std::uint64_t NavdHealth::GnssLinkErrors() const {
 }
 
 std::uint64_t NavdHealth::ImuLinkErrors() const {
-  if (!src_.mcu) return 0;
-  return src_.mcu->bad_crc + src_.mcu->bad_header + src_.mcu->garbage_bytes + src_.mcu->sequence_gaps +
-         c_.imu_repeated_frames;
+  std::uint64_t n = c_.imu_repeated_frames;
+  if (src_.mcu) n += src_.mcu->bad_crc + src_.mcu->bad_header + src_.mcu->garbage_bytes + src_.mcu->sequence_gaps;
+  if (src_.j1939) n += src_.j1939->unpaired + src_.j1939->bad_length + src_.j1939->out_of_order;
+  return n;
 }
 
 bool NavdHealth::Rose(Recent& r, std::uint64_t value, GpsNs t) {
@@ -134,6 +135,10 @@ std::string NavdHealth::Field(GpsNs t) {
   Add(s, "mcu_resets", c_.mcu_resets);
   const auto* a = src_.mcu_adapter;
   Add(s, "imu_samples_dropped", a ? a->imu_gap + a->imu_no_time + a->imu_no_scale : 0);
+  const auto* j = src_.j1939;
+  Add(s, "imu_can_unpaired", j ? j->unpaired : 0);
+  Add(s, "imu_can_bad_length", j ? j->bad_length : 0);
+  Add(s, "imu_can_out_of_order", j ? j->out_of_order : 0);
   s += "}";
   return s;
 }

@@ -33,7 +33,7 @@ void EstimateCollector::Consume(const std::string& line, std::int64_t wall_ns, c
     r = reader_->Line(line, wall_ns);
   }
   if (r) records_.push_back(*r);
-  else ++unparsed_;
+  else if (reader_->SolutionsInLines()) ++unparsed_;
 }
 
 void EstimateCollector::AttachBus(std::function<const std::vector<CanFrame>&()> poll_bus, std::int64_t start_unix_ns) {

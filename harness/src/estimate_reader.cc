@@ -171,11 +171,12 @@ class N2kCandumpReader final : public EstimateReader {
   N2kBusReader bus_;
 };
 
-// n2k_socketcan: the solutions come from the bus (EstimateCollector::AttachBus); stdout lines are
-// diagnostics only.
+// n2k_socketcan: the solutions come from the bus (EstimateCollector::AttachBus); stdout lines (navd's
+// JSON with its health object) are diagnostics only.
 class NoLinesReader final : public EstimateReader {
  public:
   std::optional<EstimateRecord> Line(const std::string&, std::int64_t) override { return std::nullopt; }
+  bool SolutionsInLines() const override { return false; }
 };
 
 }  // namespace

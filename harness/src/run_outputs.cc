@@ -55,11 +55,10 @@ void WriteNavdConfig(const std::string& path, const Scenario& s, const std::stri
   if (imu) out << "lever_arm_m = " << lever.x() << ", " << lever.y() << ", " << lever.z() << "\n";
   for (const auto& [key, value] : s.estimator.navd_filter) out << key << " = " << value << "\n";
   if (s.estimator.navd_mode == "multi_gnss") WriteNavdReceivers(out, s, gnss_device);
-  // n2k_socketcan: the solution is read from navd's NMEA 2000 frames on the bus (JSON kept in a file)
+  // n2k_socketcan: the solution is read from navd's NMEA 2000 frames on the bus; its JSON lines stay
+  // on stdout (not scored: estimate.jsonl) so the harness still reads navd's health object
   if (s.estimator.output == "n2k_socketcan") {
-    const std::filesystem::path dir = std::filesystem::path(gnss_device).parent_path();
-    out << "\n[output]\njson = " << (dir / "navd_solution.jsonl").string() << "\ncan_interface = " << s.can.interface
-        << "\n";
+    out << "\n[output]\njson = -\ncan_interface = " << s.can.interface << "\n";
   } else {
     out << "\n[output]\njson = -\n";
   }

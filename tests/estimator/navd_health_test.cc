@@ -1,5 +1,6 @@
 // navd's fault detection (navd_health.h): MCU resets from a tick and sequence restart, IMU gaps,
-// duplicated frames, GNSS gaps and outages, and the health object appended to a JSON line.
+// duplicated frames, GNSS gaps and outages, the J1939 IMU decoder's errors (CAN), and the health
+// object appended to a JSON line.
 #include "hil/estimator/navd_health.h"
 
 #include <gtest/gtest.h>
@@ -100,6 +101,56 @@ TEST(NavdHealthTest, AppendsTheHealthObjectInsideTheJsonLine) {
   std::string later = "{}";
   h.AppendTo(later, Ns(7));
   EXPECT_EQ(later.find("gnss_link_errors"), std::string::npos) << later;
+}
+
+// A J1939 frame of the IMU (source 0xE2, priority 3) with 8 zero data bytes (valid values).
+drivers::CanRxFrame J1939(std::uint32_t pgn, double rx_s) {
+  drivers::CanRxFrame f;
+  f.id = (3u << 26) | (pgn << 8) | 0xE2u;
+  f.len = 8;
+  f.rx_ns = static_cast<std::int64_t>(rx_s * 1e9);
+  return f;
+}
+
+TEST(NavdHealthTest, ReportsTheJ1939DecodersUnpairedFramesAndRaisesTheImuLinkFlag) {
+  drivers::J1939ImuDecoder can;
+  NavdHealth h({nullptr, nullptr, nullptr, nullptr, nullptr, &can.stats()});
+  // in order: ARI then ACCS of each sample, 10 ms apart
+  for (int k = 0; k < 5; ++k) {
+    can.Add(J1939(drivers::kPgnAri, 0.1 * k));
+    can.Add(J1939(drivers::kPgnAccs, 0.1 * k + 0.0002));
+  }
+  std::string clean = h.Field(Ns(1));
+  EXPECT_NE(clean.find("\"imu_can_unpaired\":0"), std::string::npos) << clean;
+  EXPECT_EQ(clean.find("imu_link_errors"), std::string::npos) << clean;
+  // one pair swapped on the bus (the harness's can_reorder): the ACCS comes without its ARI, and
+  // the ARI that follows it is left without an ACCS when the next sample's ARI arrives
+  can.Add(J1939(drivers::kPgnAccs, 0.5));
+  can.Add(J1939(drivers::kPgnAri, 0.5002));
+  can.Add(J1939(drivers::kPgnAri, 0.6));
+  can.Add(J1939(drivers::kPgnAccs, 0.6002));
+  EXPECT_EQ(can.stats().unpaired, 2u);
+  const std::string f = h.Field(Ns(2));
+  EXPECT_NE(f.find("\"imu_can_unpaired\":2"), std::string::npos) << f;
+  EXPECT_NE(f.find("\"imu_link_errors\""), std::string::npos) << f;
+  // a short frame and a receive time going back count too, and keep the flag up
+  drivers::CanRxFrame short_frame = J1939(drivers::kPgnAri, 0.7);
+  short_frame.len = 6;
+  can.Add(short_frame);
+  can.Add(J1939(drivers::kPgnSsi2, 0.55));  // received before the last frame
+  const std::string g = h.Field(Ns(6.5));
+  EXPECT_NE(g.find("\"imu_can_bad_length\":1"), std::string::npos) << g;
+  EXPECT_NE(g.find("\"imu_can_out_of_order\":1"), std::string::npos) << g;
+  EXPECT_NE(g.find("\"imu_link_errors\""), std::string::npos) << g;
+  // and the flag falls 5 s after the last new error
+  EXPECT_EQ(h.Field(Ns(12)).find("imu_link_errors"), std::string::npos);
+}
+
+TEST(NavdHealthTest, WithoutACanImuTheCanCountersAreZero) {
+  NavdHealth h;
+  const std::string f = h.Field(Ns(1));
+  EXPECT_NE(f.find("\"imu_can_unpaired\":0,\"imu_can_bad_length\":0,\"imu_can_out_of_order\":0}"), std::string::npos)
+      << f;
 }
 
 }  // namespace

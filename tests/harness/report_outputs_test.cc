@@ -33,6 +33,15 @@ TEST(EstimateReaderTest, NavdJsonLines) {
   EXPECT_FALSE(r->Line(R"({"lat_deg":1})", 1));
 }
 
+// n2k_socketcan: the solutions come from the bus; navd's JSON lines on stdout are read for its
+// health only, never as solutions, and are not "unparsed" output
+TEST(EstimateReaderTest, N2kSocketcanTakesNoSolutionFromLines) {
+  auto r = MakeEstimateReader("n2k_socketcan", kStart);
+  EXPECT_FALSE(r->Line(R"({"tov_utc_s":1370851202.5,"lat_deg":35.5,"lon_deg":50.6,"height_m":1312.5,"status":0})", 1));
+  EXPECT_FALSE(r->SolutionsInLines());
+  EXPECT_TRUE(MakeEstimateReader("json_stdout", kStart)->SolutionsInLines());
+}
+
 TEST(EstimateReaderTest, GpsdTpvObjects) {
   auto r = MakeEstimateReader("gpsd_json", kStart);
   const auto e = r->Line(

@@ -82,7 +82,7 @@ TEST(ScenarioCanTest, GeneratedNavdConfigReadsTheImuFromCan) {
   EXPECT_TRUE(c.imu_device.empty());
   EXPECT_EQ(c.mode(), estimator::NavMode::kEkf);
   EXPECT_EQ(c.can_interface, "vcan0");            // NMEA 2000 back onto the bus
-  EXPECT_EQ(c.json_path, dir + "/navd_solution.jsonl");  // stdout stays free
+  EXPECT_EQ(c.json_path, "-");  // JSON on stdout: the harness reads its health object
 }
 
 TEST(ScenarioCanTest, VirtualModeIsRefusedForAnImuOnCan) {
@@ -110,6 +110,24 @@ TEST(ScenarioCanTest, ShippedCanScenarioLoads) {
   EXPECT_EQ(s.can.interface, "vcan0");
   EXPECT_TRUE(s.mcu.config.can.enabled);
   EXPECT_EQ(s.mcu.config.can.address.source_address, 0xE2);
+}
+
+// the fault campaign's CAN scenario: can_imu.yaml's chain (included) with a can_reorder fault and
+// criteria on navd's CAN counter
+TEST(ScenarioCanTest, ShippedCanReorderFaultScenarioLoads) {
+  const char* src = std::getenv("HIL_SOURCE_DIR");
+  ASSERT_NE(src, nullptr);
+  const Scenario s = LoadScenario(std::string(src) + "/vectors/scenarios/vcan/fault_can_reorder.yaml");
+  EXPECT_EQ(s.name, "fault_can_reorder");
+  EXPECT_TRUE(s.can.imu_to_estimator);           // from can_imu.yaml
+  EXPECT_EQ(s.estimator.output, "n2k_socketcan");
+  ASSERT_EQ(s.faults.faults.size(), 1u);
+  EXPECT_EQ(s.faults.faults[0].kind, FaultKind::kCanReorder);
+  EXPECT_GT(s.faults.faults[0].Param("probability", 0), 0.0);
+  EXPECT_LT(ToSeconds(s.faults.faults[0].end), s.duration_s);
+  bool unpaired = false;
+  for (const Criterion& c : s.criteria) unpaired = unpaired || c.metric == "navd.imu_can_unpaired";
+  EXPECT_TRUE(unpaired);
 }
 
 }  // namespace

@@ -7,7 +7,7 @@ r=${1:?usage: can_e2e_check.sh RUN_DIR}
 fail() { echo "can_e2e_check: FAIL: $*"; exit 1; }
 num() { sed -n "s/.*\"$1\": *\([0-9][0-9]*\).*/\1/p" "$r/report.json" | head -n 1; }
 [ -f "$r/report.json" ] || fail "no $r/report.json"
-grep -q '"pass": true' "$r/report.json" || { cat "$r/report.json"; fail "the report did not pass"; }
+grep -q '^  "pass": true' "$r/report.json" || { cat "$r/report.json"; fail "the report did not pass"; }
 sent=$(num frames_sent); received=$(num frames_received); lost=$(num lost); pos=$(num 129029)
 # the estimate's RMSE: the first horizontal_rmse_m after "metrics" (report.json, indented by 2)
 rmse=$(awk '/^  "metrics"/ {m = 1} m && /"horizontal_rmse_m"/ {gsub(/[^0-9.e-]/, "", $2); print $2; exit}' "$r/report.json")

@@ -23,15 +23,21 @@
 ///   imu_gaps               IMU frames more than 2.5 sample periods (MCU ticks) after the previous one
 ///   mcu_resets             MCU resets seen: the tick and the sequence restarted together
 ///   imu_samples_dropped    IMU samples the adapter could not use (no time mapping, no scale, gap)
+///   imu_can_unpaired       J1939 IMU ([imu] source = can): an ARI without its ACCS or an ACCS
+///                          without its ARI (reordered, lost or late frames; the sample is lost)
+///   imu_can_bad_length     J1939 IMU frames shorter than 8 data bytes
+///   imu_can_out_of_order   J1939 IMU frames whose receive time went back
 /// Flags (current state at the solution's time of validity):
 ///   gnss_outage            no fix for more than max(3.5 s, 3 receiver periods + 0.5 s)
-///   gnss_link_errors, imu_link_errors   decoder errors on that link in the last 5 s
+///   gnss_link_errors, imu_link_errors   decoder errors on that link in the last 5 s (for the
+///                          IMU: MCU frame errors, sequence gaps, repeats, and the imu_can_* counters)
 ///   gnss_rejected          a fix refused by the gate in the last 5 s
 ///   imu_gap, mcu_reset     one in the last 5 s
 
 #include <cstdint>
 #include <string>
 
+#include "hil/estimator/drivers/j1939_imu_decoder.h"
 #include "hil/estimator/drivers/mcu_frame_decoder.h"
 #include "hil/estimator/drivers/mcu_imu_adapter.h"
 #include "hil/estimator/drivers/nmea_decoder.h"
@@ -48,6 +54,7 @@ struct HealthSources {
   const drivers::McuDecoderStats* mcu = nullptr;
   const drivers::McuAdapterStats* mcu_adapter = nullptr;
   const NavigatorStats* nav = nullptr;
+  const drivers::J1939ImuStats* j1939 = nullptr;  ///< the IMU's J1939 decoder ([imu] source = can)
 };
 
 class NavdHealth {

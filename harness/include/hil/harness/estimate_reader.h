@@ -33,6 +33,9 @@ class EstimateReader {
   virtual std::optional<EstimateRecord> JsonLine(const nlohmann::json& /*line*/, std::int64_t /*wall_ns*/) {
     return std::nullopt;
   }
+  /// False when the solutions come from elsewhere (n2k_socketcan: the bus) and every line is a
+  /// diagnostic, so a line that is no solution is not worth a warning.
+  virtual bool SolutionsInLines() const { return true; }
 };
 
 /// The reader for an output format name. @throws std::invalid_argument for an unknown name.
