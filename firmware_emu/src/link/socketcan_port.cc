@@ -89,6 +89,10 @@ SocketCanPort::SocketCanPort(const std::string& ifname, const Options& options) 
     const can_err_mask_t mask = CAN_ERR_MASK;
     setsockopt(fd_, SOL_CAN_RAW, CAN_RAW_ERR_FILTER, &mask, sizeof mask);
   }
+  if (options.receive_buffer_bytes > 0 &&
+      setsockopt(fd_, SOL_SOCKET, SO_RCVBUFFORCE, &options.receive_buffer_bytes, sizeof options.receive_buffer_bytes) < 0) {
+    setsockopt(fd_, SOL_SOCKET, SO_RCVBUF, &options.receive_buffer_bytes, sizeof options.receive_buffer_bytes);
+  }
   setsockopt(fd_, SOL_SOCKET, SO_TIMESTAMPNS, &on, sizeof on);
   setsockopt(fd_, SOL_SOCKET, SO_RXQ_OVFL, &on, sizeof on);
 

@@ -47,6 +47,10 @@ class SocketCanPort {
     bool receive_own_frames = false;   ///< also receive what this socket sends (CAN_RAW_RECV_OWN_MSGS)
     bool loopback = true;              ///< other sockets on this host see our frames (CAN_RAW_LOOPBACK)
     bool error_frames = true;          ///< subscribe to every error class
+    /// receive queue size (SO_RCVBUFFORCE when privileged, else SO_RCVBUF up to the system limit):
+    /// the kernel's default (~200 kB, a few thousand frames) overflows when the reader is held up
+    /// for a moment while a sender bursts, e.g. canplayer replaying at 1 ms gaps on a loaded machine
+    int receive_buffer_bytes = 4 << 20;
   };
 
   /// Opens and binds a raw socket on `ifname`.
