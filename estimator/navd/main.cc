@@ -196,7 +196,8 @@ int main(int argc, char** argv) {
     health.OnGnss(g);
     if (razor_text) razor_adapter.AddGnssArrival(gnss_read_ns, g.t, cfg.imu.razor_gnss_latency_s);
     nav.Push(g);
-    if (imu_mode) return;
+    if (imu_mode && !nav.ImuLost()) return;
+    // GNSS-only modes, and IMU modes whose IMU fell silent: one solution per fix
     const est::NavOutput o = nav.Output();
     if (o.valid && o.t != last_emitted) emit(o);
   });

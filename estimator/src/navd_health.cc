@@ -111,6 +111,7 @@ std::string NavdHealth::Field(GpsNs t) {
   flag(Rose(rejected_, src_.nav ? src_.nav->gnss_rejected : 0, t), "gnss_rejected");
   flag(Rose(imu_gap_, c_.imu_gaps, t), "imu_gap");
   flag(Rose(mcu_reset_, c_.mcu_resets, t), "mcu_reset");
+  flag(src_.nav != nullptr && src_.nav->imu_lost, "imu_lost");
 
   std::string s = ",\"health\":{\"flags\":[" + flags + "]";
   const auto* n = src_.nmea;
@@ -135,6 +136,7 @@ std::string NavdHealth::Field(GpsNs t) {
   Add(s, "mcu_resets", c_.mcu_resets);
   const auto* a = src_.mcu_adapter;
   Add(s, "imu_samples_dropped", a ? a->imu_gap + a->imu_no_time + a->imu_no_scale : 0);
+  Add(s, "imu_losses", src_.nav ? src_.nav->imu_losses : 0);
   const auto* j = src_.j1939;
   Add(s, "imu_can_unpaired", j ? j->unpaired : 0);
   Add(s, "imu_can_bad_length", j ? j->bad_length : 0);

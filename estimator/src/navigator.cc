@@ -60,10 +60,20 @@ void Navigator::Push(const ImuSample& s) {
     return;
   }
   if (have_imu_ && s.t - newest_imu_t_ > static_cast<GpsNs>(1.5 * s.dt_s * 1e9)) ++stats_.imu_gaps;
+  if (have_imu_ && aligned_ && static_cast<double>(s.t - newest_imu_t_) * kNsToS > params_.imu_timeout_s) {
+    // back after a loss: nothing can carry the filter through the gap. Drop what is buffered from
+    // before it, restart the filter just before this sample and its position at the next fix.
+    while (!imu_.empty()) imu_.PopFront();
+    while (!gnss_.empty() && gnss_.front().t < s.t) gnss_.PopFront();
+    filter_t_ = std::max(filter_t_, s.t - static_cast<GpsNs>(s.dt_s * 1e9));
+    restart_at_next_fix_ = true;
+  }
   ++stats_.imu_samples;
   if (!imu_.Push(s)) ++stats_.imu_overflow;
   newest_imu_t_ = s.t;
   have_imu_ = true;
+  fixes_since_imu_ = 0;
+  imu_lost_ = stats_.imu_lost = ImuLost();
 }
 
 void Navigator::Push(const GnssSample& g) {
@@ -74,11 +84,20 @@ void Navigator::Push(const GnssSample& g) {
     return;
   }
   ++stats_.gnss_samples;
+  const bool fallback_mode = params_.mode == NavMode::kEkf || params_.mode == NavMode::kPlanar2d;
+  if (fallback_mode && g.fix_quality > 0) {
+    GnssOnlyFix(g);
+    ++fixes_since_imu_;
+  }  // the fallback solution while the IMU is lost
   if (g.t > newest_gnss_t_) {
     // the fix period, for the wait on the next epoch (clamped to 20 Hz .. 0.5 Hz)
     if (newest_gnss_t_ >= 0) gnss_period_ns_ = std::clamp<GpsNs>(g.t - newest_gnss_t_, 50'000'000, 2'000'000'000);
     newest_gnss_t_ = g.t;
   }
+  const bool lost = ImuLost();
+  if (lost && !imu_lost_) ++stats_.imu_losses;
+  imu_lost_ = lost;
+  stats_.imu_lost = lost;
   const bool imu_mode = params_.mode == NavMode::kEkf || params_.mode == NavMode::kImuOnly ||
                         params_.mode == NavMode::kPlanar2d;
   if (!imu_mode) {
@@ -207,6 +226,17 @@ void Navigator::ProcessGnss(const GnssSample& g) {
   if (g.fix_quality <= 0) return;
   if (params_.mode == NavMode::kImuOnly) return;
   const Eigen::Vector3d p = frame_.ToLocal(g.position);
+  if (restart_at_next_fix_ && params_.mode == NavMode::kEkf) {
+    restart_at_next_fix_ = false;
+    ekf_.ResetPositionVelocity(p, g.has_velocity ? g.vel_enu_mps : ekf_.state().v_N_mps, g.pos_std_enu_m.maxCoeff(),
+                               g.has_velocity ? 0.5 : 2.0);
+    ekf_.ResetSetSpeed(g.has_velocity ? 0.5 : 2.0);
+    ++stats_.gnss_resets;
+    last_gnss_fused_t_ = g.t;
+    first_rejected_t_ = -1;
+    status_ |= kStatusReset;
+    return;
+  }
   if (params_.mode == NavMode::kPlanar2d) {
     planar_.UpdatePosition(p.head<2>(), g.pos_std_enu_m.head<2>().norm() / std::sqrt(2.0));
     if (g.has_velocity && params_.use_gnss_velocity) planar_.UpdateVelocity(g.vel_enu_mps.head<2>(), g.vel_std_enu_mps.x());
@@ -325,8 +355,21 @@ void Navigator::MultiGnssFix(const GnssSample& g) {
   direct_.status = kStatusGnssFused;
 }
 
+bool Navigator::ImuLost() const {
+  // not in imu_only: a dead-reckoning comparison never shows a fix
+  const bool fallback_mode = params_.mode == NavMode::kEkf || params_.mode == NavMode::kPlanar2d;
+  constexpr int kFixesBeforeImuLost = 4;
+  return fallback_mode && have_imu_ && aligned_ && newest_gnss_t_ >= 0 && fixes_since_imu_ >= kFixesBeforeImuLost &&
+         static_cast<double>(newest_gnss_t_ - newest_imu_t_) * kNsToS > params_.imu_timeout_s;
+}
+
 NavOutput Navigator::Output() const {
   if (params_.mode == NavMode::kGnssOnly || params_.mode == NavMode::kMultiGnss) return direct_;
+  if (ImuLost() && direct_.valid) {
+    NavOutput o = direct_;
+    o.status = (status_ | kStatusImuLost) & ~kStatusGnssFused;
+    return o;
+  }
   NavOutput o;
   o.status = status_ | (ekf_.repairs() > 0 ? kStatusCovarianceRepaired : 0u);
   if (!aligned_) return o;

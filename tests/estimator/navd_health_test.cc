@@ -153,5 +153,20 @@ TEST(NavdHealthTest, WithoutACanImuTheCanCountersAreZero) {
       << f;
 }
 
+TEST(NavdHealthTest, FlagsTheImuLostWhileTheNavigatorSaysSo) {
+  NavigatorStats nav;
+  NavdHealth h(HealthSources{nullptr, nullptr, nullptr, nullptr, &nav});
+  EXPECT_EQ(h.Field(Ns(1)).find("imu_lost"), std::string::npos);
+  nav.imu_lost = true;
+  nav.imu_losses = 1;
+  const std::string lost = h.Field(Ns(2));
+  EXPECT_NE(lost.find("\"flags\":[\"imu_lost\"]"), std::string::npos) << lost;
+  EXPECT_NE(lost.find("\"imu_losses\":1"), std::string::npos) << lost;
+  nav.imu_lost = false;
+  const std::string back = h.Field(Ns(3));
+  EXPECT_EQ(back.find("\"imu_lost\""), std::string::npos) << back;
+  EXPECT_NE(back.find("\"imu_losses\":1"), std::string::npos) << back;
+}
+
 }  // namespace
 }  // namespace hil::estimator

@@ -128,5 +128,67 @@ TEST(NavigatorTest, WaitsForADueFixUpToTheMaximumLatency) {
   EXPECT_NEAR(static_cast<double>(kT0 + 20'000'000'000LL - rig.nav.filter_time()) * 1e-9, 2.5, 0.011);
 }
 
+TEST(NavigatorTest, FallsBackToTheFixesWhileTheImuIsSilentAndRestartsAfter) {
+  // GIVEN an aligned EKF on a level vehicle driving east at 1 m/s (IMU 100 Hz, GNSS 1 Hz)
+  NavigatorParams p;
+  p.mode = NavMode::kEkf;
+  Navigator nav(p);
+  const Lla origin{48.0, 11.0, 500.0};
+  const LocalTangentFrame frame(origin);
+  const double g0 = NormalGravity(origin.lat_deg, origin.height_m);
+  const auto fix = [&](GpsNs t) {
+    GnssSample g;
+    g.t = t;
+    g.position = frame.ToLla(Eigen::Vector3d(static_cast<double>(t - kT0) * 1e-9, 0, 0));
+    g.pos_std_enu_m = Eigen::Vector3d(0.3, 0.3, 0.6);
+    g.has_velocity = true;
+    g.vel_enu_mps = Eigen::Vector3d(1, 0, 0);
+    g.vel_std_enu_mps = Eigen::Vector3d::Constant(0.05);
+    nav.Push(g);
+  };
+  const auto imu = [&](GpsNs t) {
+    ImuSample s;
+    s.t = t;
+    s.dt_s = 0.01;
+    s.delta_velocity_B_mps = Eigen::Vector3d(0, 0, g0 * 0.01);
+    nav.Push(s);
+    nav.Update();
+  };
+  constexpr GpsNs kMs = 1'000'000;
+  for (GpsNs t = kT0 + 10 * kMs; t <= kT0 + 10'000 * kMs; t += 10 * kMs) {
+    imu(t);
+    if ((t - kT0) % (1000 * kMs) == 0) fix(t);
+  }
+  ASSERT_TRUE(nav.aligned());
+  EXPECT_FALSE(nav.ImuLost());
+  // WHEN the IMU falls silent for 6 s while the fixes keep coming
+  for (int k = 11; k <= 16; ++k) {
+    fix(kT0 + k * 1000 * kMs);
+    // THEN from the 4th fix after the last IMU sample (the one at 10 s counts) the solution is the
+    // fix, flagged
+    EXPECT_EQ(nav.ImuLost(), k >= 13) << "fix at " << k << " s";
+  }
+  const NavOutput lost = nav.Output();
+  ASSERT_TRUE(lost.valid);
+  EXPECT_EQ(lost.t, kT0 + 16'000 * kMs);
+  EXPECT_TRUE(lost.status & kStatusImuLost);
+  EXPECT_NEAR(frame.ToLocal(lost.position).x(), 16.0, 1e-6);
+  EXPECT_EQ(nav.stats().imu_losses, 1u);
+  EXPECT_TRUE(nav.stats().imu_lost);
+  // WHEN the IMU comes back: the filter restarts at the next fix and tracks the vehicle again
+  const std::uint64_t resets = nav.stats().gnss_resets;
+  for (GpsNs t = kT0 + 16'010 * kMs; t <= kT0 + 22'000 * kMs; t += 10 * kMs) {
+    imu(t);
+    if ((t - kT0) % (1000 * kMs) == 0) fix(t);
+  }
+  EXPECT_FALSE(nav.ImuLost());
+  EXPECT_EQ(nav.stats().gnss_resets, resets + 1);
+  const NavOutput back = nav.Output();
+  ASSERT_TRUE(back.valid);
+  EXPECT_FALSE(back.status & kStatusImuLost);
+  EXPECT_EQ(back.t, kT0 + 22'000 * kMs);
+  EXPECT_LT((frame.ToLocal(back.position) - Eigen::Vector3d(22.0, 0, 0)).head<2>().norm(), 0.3);
+}
+
 }  // namespace
 }  // namespace hil::estimator

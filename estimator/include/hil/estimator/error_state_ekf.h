@@ -98,6 +98,7 @@ enum EkfStatus : std::uint32_t {
   kStatusReset = 1u << 4,              ///< position/velocity reset to GNSS after a long rejection
   kStatusBadInput = 1u << 5,           ///< a non-finite or out-of-range input was dropped
   kStatusCovarianceRepaired = 1u << 6, ///< a covariance diagonal was clamped
+  kStatusImuLost = 1u << 7,            ///< the IMU fell silent while fixes arrive: the solution is the fix
 };
 
 /// Result of one measurement update.

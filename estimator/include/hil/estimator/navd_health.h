@@ -23,6 +23,7 @@
 ///   imu_gaps               IMU frames more than 2.5 sample periods (MCU ticks) after the previous one
 ///   mcu_resets             MCU resets seen: the tick and the sequence restarted together
 ///   imu_samples_dropped    IMU samples the adapter could not use (no time mapping, no scale, gap)
+///   imu_losses             times the IMU fell silent while fixes kept coming (solutions = fixes)
 ///   imu_can_unpaired       J1939 IMU ([imu] source = can): an ARI without its ACCS or an ACCS
 ///                          without its ARI (reordered, lost or late frames; the sample is lost)
 ///   imu_can_bad_length     J1939 IMU frames shorter than 8 data bytes
@@ -33,6 +34,7 @@
 ///                          IMU: MCU frame errors, sequence gaps, repeats, and the imu_can_* counters)
 ///   gnss_rejected          a fix refused by the gate in the last 5 s
 ///   imu_gap, mcu_reset     one in the last 5 s
+///   imu_lost               the IMU is silent: the solution is the GNSS fix (Navigator::ImuLost)
 
 #include <cstdint>
 #include <string>

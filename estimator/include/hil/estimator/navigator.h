@@ -22,6 +22,12 @@
 /// still reports the newest IMU time).
 /// Alignment: levelling from the mean specific force, heading from the GNSS course once the speed
 /// exceeds `align_min_speed_mps`, or from the compass. Fixed-size buffers, no allocation.
+/// IMU loss: when the IMU has been silent for `imu_timeout_s` of GNSS time while fixes keep coming
+/// (a dead sensor, a cut cable or bus) and at least 4 fixes arrived since the last IMU sample (a
+/// host that reads its links in bursts can see GNSS time run ahead for a moment without any loss),
+/// Output() is the newest fix itself, flagged kStatusImuLost,
+/// so a host keeps producing solutions; when samples return after such a gap, the filter restarts
+/// its position and velocity at the next fix (its state could not be propagated through the gap).
 
 #include <Eigen/Core>
 #include <cstdint>
@@ -62,6 +68,7 @@ struct NavigatorParams {
   double nhc_period_s = 0.1;                     ///< non-holonomic update period (if enabled)
   double outage_flag_s = 1.5;                    ///< dead-reckoning flag after this long without GNSS
   double reset_after_rejected_s = 5.0;           ///< reset to GNSS after rejections for this long
+  double imu_timeout_s = 1.0;                    ///< IMU modes: fall back to the fixes after this silence
   bool use_gnss_velocity = true;
   /// Multi-receiver mode: antenna positions in the body frame, one column per receiver
   /// (GnssSample::antenna); the first `multi_antenna_count` columns are used (seed 000: three on a
@@ -74,6 +81,8 @@ struct NavigatorParams {
 struct NavigatorStats {
   std::uint64_t imu_samples = 0, imu_out_of_order = 0, imu_overflow = 0, imu_gaps = 0;
   std::uint64_t gnss_samples = 0, gnss_late = 0, gnss_fused = 0, gnss_rejected = 0, gnss_resets = 0;
+  std::uint64_t imu_losses = 0;   ///< times the IMU fell silent while fixes kept coming (ImuLost())
+  bool imu_lost = false;          ///< ImuLost() after the newest input
   std::uint64_t bad_input = 0;
   double last_nis_pos = 0, last_nis_vel = 0;
   double mean_nis_pos = 0;   ///< running mean of accepted position NIS (≈ 3 when consistent)
@@ -117,6 +126,8 @@ class Navigator {
   const NavigatorParams& params() const { return params_; }
   /// Filter (delayed) time.
   GpsNs filter_time() const { return filter_t_; }
+  /// IMU modes: the IMU has been silent for imu_timeout_s of GNSS time while fixes arrive.
+  bool ImuLost() const;
 
  private:
   void ProcessImu(const ImuSample& s);
@@ -138,6 +149,9 @@ class Navigator {
   GpsNs newest_imu_t_ = 0, filter_t_ = 0, last_gnss_fused_t_ = 0, first_rejected_t_ = -1;
   GpsNs last_nhc_t_ = 0;
   bool gnss_float_ = false;  // the correlated GNSS error model in use is the RTK float one
+  bool imu_lost_ = false;            // ImuLost() at the last fix (counts the losses)
+  bool restart_at_next_fix_ = false; // IMU samples resumed after a loss
+  int fixes_since_imu_ = 0;          // fixes pushed since the last IMU sample
   GpsNs newest_gnss_t_ = -1, gnss_period_ns_ = 0;  // GNSS stream timing (for the wait)
   bool have_imu_ = false;
   Eigen::Vector3d mean_f_B_ = Eigen::Vector3d::Zero();
