@@ -365,7 +365,8 @@ bool Navigator::ImuLost() const {
 
 NavOutput Navigator::Output() const {
   if (params_.mode == NavMode::kGnssOnly || params_.mode == NavMode::kMultiGnss) return direct_;
-  if (ImuLost() && direct_.valid) {
+  // while the IMU is lost, and after it returns until the filter has restarted at a fix
+  if ((ImuLost() || restart_at_next_fix_) && direct_.valid) {
     NavOutput o = direct_;
     o.status = (status_ | kStatusImuLost) & ~kStatusGnssFused;
     return o;

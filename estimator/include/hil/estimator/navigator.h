@@ -27,7 +27,8 @@
 /// host that reads its links in bursts can see GNSS time run ahead for a moment without any loss),
 /// Output() is the newest fix itself, flagged kStatusImuLost,
 /// so a host keeps producing solutions; when samples return after such a gap, the filter restarts
-/// its position and velocity at the next fix (its state could not be propagated through the gap).
+/// its position and velocity at the next fix (its state could not be propagated through the gap),
+/// and until then Output() stays the fix.
 
 #include <Eigen/Core>
 #include <cstdint>
