@@ -11,6 +11,22 @@ namespace {
 
 using namespace ekf_index;
 
+// Central differences of a measurement function h(filter) over the injected error state.
+template <int M, typename F>
+Eigen::Matrix<double, M, kNumStates> NumericJacobian(const ErrorStateEkf& at, F h) {
+  Eigen::Matrix<double, M, kNumStates> J;
+  const double eps = 1e-6;
+  for (int i = 0; i < kNumStates; ++i) {
+    ErrorStateEkf plus = at, minus = at;
+    EkfVector dx = EkfVector::Zero();
+    dx[i] = eps;
+    plus.InjectError(dx);
+    minus.InjectError(-dx);
+    J.col(i) = (h(plus) - h(minus)) / (2 * eps);
+  }
+  return J;
+}
+
 class ErrorStateEkfTest : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -47,17 +63,7 @@ class ErrorStateEkfTest : public ::testing::Test {
   }
   template <int M, typename F>
   Eigen::Matrix<double, M, kNumStates> Numeric(F h) const {
-    Eigen::Matrix<double, M, kNumStates> J;
-    const double eps = 1e-6;
-    for (int i = 0; i < kNumStates; ++i) {
-      ErrorStateEkf plus = ekf_, minus = ekf_;
-      EkfVector dx = EkfVector::Zero();
-      dx[i] = eps;
-      plus.InjectError(dx);
-      minus.InjectError(-dx);
-      J.col(i) = (h(plus) - h(minus)) / (2 * eps);
-    }
-    return J;
+    return NumericJacobian<M>(ekf_, h);
   }
   ErrorStateEkf ekf_;
   Eigen::Vector3d raw_w_;
@@ -141,16 +147,7 @@ class ErrorStateEkfSpeedDevTest : public ::testing::Test {
 };
 
 TEST_F(ErrorStateEkfSpeedDevTest, JacobianMatchesFiniteDifferences) {
-  Eigen::Matrix<double, 1, kNumStates> J;
-  const double eps = 1e-6;
-  for (int i = 0; i < kNumStates; ++i) {
-    ErrorStateEkf plus = ekf_, minus = ekf_;
-    EkfVector dx = EkfVector::Zero();
-    dx[i] = eps;
-    plus.InjectError(dx);
-    minus.InjectError(-dx);
-    J(0, i) = (Residual(plus) - Residual(minus)) / (2 * eps);
-  }
+  const auto J = NumericJacobian<1>(ekf_, [](const ErrorStateEkf& e) { return Eigen::Matrix<double, 1, 1>(Residual(e)); });
   EXPECT_LT((J - ekf_.SpeedModelJacobian()).cwiseAbs().maxCoeff(), 1e-6) << J << "\n\n" << ekf_.SpeedModelJacobian();
   EXPECT_DOUBLE_EQ(ekf_.SpeedModelJacobian()(0, kSpeedDev), -1.0);
 }
