@@ -73,7 +73,7 @@ void Navigator::Push(const ImuSample& s) {
   newest_imu_t_ = s.t;
   have_imu_ = true;
   fixes_since_imu_ = 0;
-  imu_lost_ = stats_.imu_lost = ImuLost();
+  stats_.imu_lost = false;  // a sample just came
 }
 
 void Navigator::Push(const GnssSample& g) {
@@ -84,8 +84,7 @@ void Navigator::Push(const GnssSample& g) {
     return;
   }
   ++stats_.gnss_samples;
-  const bool fallback_mode = params_.mode == NavMode::kEkf || params_.mode == NavMode::kPlanar2d;
-  if (fallback_mode && g.fix_quality > 0) {
+  if (FallsBackToFixes() && g.fix_quality > 0) {
     GnssOnlyFix(g);
     ++fixes_since_imu_;
   }  // the fallback solution while the IMU is lost
@@ -95,12 +94,9 @@ void Navigator::Push(const GnssSample& g) {
     newest_gnss_t_ = g.t;
   }
   const bool lost = ImuLost();
-  if (lost && !imu_lost_) ++stats_.imu_losses;
-  imu_lost_ = lost;
+  if (lost && !stats_.imu_lost) ++stats_.imu_losses;
   stats_.imu_lost = lost;
-  const bool imu_mode = params_.mode == NavMode::kEkf || params_.mode == NavMode::kImuOnly ||
-                        params_.mode == NavMode::kPlanar2d;
-  if (!imu_mode) {
+  if (!UsesImu()) {
     if (params_.mode == NavMode::kMultiGnss) MultiGnssFix(g);
     else GnssOnlyFix(g);
     return;
@@ -123,9 +119,7 @@ void Navigator::Push(const HeadingSample& h) {
 }
 
 void Navigator::Update() {
-  const bool imu_mode = params_.mode == NavMode::kEkf || params_.mode == NavMode::kImuOnly ||
-                        params_.mode == NavMode::kPlanar2d;
-  if (!imu_mode) return;
+  if (!UsesImu()) return;
   GpsNs horizon_t = newest_imu_t_ - params_.fusion_horizon_ns;
   if (params_.gnss_max_latency_ns > params_.fusion_horizon_ns && gnss_period_ns_ > 0) {
     // hold at the next expected GNSS epoch until it arrives or the wait runs out
@@ -228,13 +222,7 @@ void Navigator::ProcessGnss(const GnssSample& g) {
   const Eigen::Vector3d p = frame_.ToLocal(g.position);
   if (restart_at_next_fix_ && params_.mode == NavMode::kEkf) {
     restart_at_next_fix_ = false;
-    ekf_.ResetPositionVelocity(p, g.has_velocity ? g.vel_enu_mps : ekf_.state().v_N_mps, g.pos_std_enu_m.maxCoeff(),
-                               g.has_velocity ? 0.5 : 2.0);
-    ekf_.ResetSetSpeed(g.has_velocity ? 0.5 : 2.0);
-    ++stats_.gnss_resets;
-    last_gnss_fused_t_ = g.t;
-    first_rejected_t_ = -1;
-    status_ |= kStatusReset;
+    ResetToFix(g, p);
     return;
   }
   if (params_.mode == NavMode::kPlanar2d) {
@@ -273,15 +261,18 @@ void Navigator::ProcessGnss(const GnssSample& g) {
   status_ = (status_ | kStatusGnssRejected) & ~kStatusGnssFused;
   if (first_rejected_t_ < 0) first_rejected_t_ = g.t;
   // recovery: a long run of rejections means the filter, not the receiver, is wrong
-  if (static_cast<double>(g.t - first_rejected_t_) * kNsToS >= params_.reset_after_rejected_s) {
-    const double ps = g.pos_std_enu_m.maxCoeff();
-    ekf_.ResetPositionVelocity(p, g.has_velocity ? g.vel_enu_mps : ekf_.state().v_N_mps, ps, g.has_velocity ? 0.5 : 2.0);
-    ekf_.ResetSetSpeed(g.has_velocity ? 0.5 : 2.0);
-    ++stats_.gnss_resets;
-    first_rejected_t_ = -1;
-    last_gnss_fused_t_ = g.t;
-    status_ |= kStatusReset;
-  }
+  if (static_cast<double>(g.t - first_rejected_t_) * kNsToS >= params_.reset_after_rejected_s) ResetToFix(g, p);
+}
+
+void Navigator::ResetToFix(const GnssSample& g, const Eigen::Vector3d& p_antenna_N_m) {
+  const double vel_std = g.has_velocity ? 0.5 : 2.0;
+  ekf_.ResetPositionVelocity(p_antenna_N_m, g.has_velocity ? g.vel_enu_mps : ekf_.state().v_N_mps,
+                             g.pos_std_enu_m.maxCoeff(), vel_std);
+  ekf_.ResetSetSpeed(vel_std);
+  ++stats_.gnss_resets;
+  first_rejected_t_ = -1;
+  last_gnss_fused_t_ = g.t;
+  status_ |= kStatusReset;
 }
 
 void Navigator::GnssOnlyFix(const GnssSample& g) {
@@ -355,11 +346,16 @@ void Navigator::MultiGnssFix(const GnssSample& g) {
   direct_.status = kStatusGnssFused;
 }
 
+bool Navigator::UsesImu() const {
+  return params_.mode == NavMode::kEkf || params_.mode == NavMode::kImuOnly || params_.mode == NavMode::kPlanar2d;
+}
+
+// not in imu_only: a dead-reckoning comparison never shows a fix
+bool Navigator::FallsBackToFixes() const { return params_.mode == NavMode::kEkf || params_.mode == NavMode::kPlanar2d; }
+
 bool Navigator::ImuLost() const {
-  // not in imu_only: a dead-reckoning comparison never shows a fix
-  const bool fallback_mode = params_.mode == NavMode::kEkf || params_.mode == NavMode::kPlanar2d;
   constexpr int kFixesBeforeImuLost = 4;
-  return fallback_mode && have_imu_ && aligned_ && newest_gnss_t_ >= 0 && fixes_since_imu_ >= kFixesBeforeImuLost &&
+  return FallsBackToFixes() && have_imu_ && aligned_ && newest_gnss_t_ >= 0 && fixes_since_imu_ >= kFixesBeforeImuLost &&
          static_cast<double>(newest_gnss_t_ - newest_imu_t_) * kNsToS > params_.imu_timeout_s;
 }
 

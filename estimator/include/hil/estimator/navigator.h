@@ -136,6 +136,10 @@ class Navigator {
   void TryAlign(const GnssSample& g);
   void EnsureFrame(const Lla& origin);
   void GnssOnlyFix(const GnssSample& g);
+  /// Restarts the EKF's position and velocity at a fix (long rejection, or after an IMU loss).
+  void ResetToFix(const GnssSample& g, const Eigen::Vector3d& p_antenna_N_m);
+  bool UsesImu() const;           ///< modes that run on IMU samples (ekf, planar2d, imu_only)
+  bool FallsBackToFixes() const;  ///< modes whose solution becomes the fix when the IMU is lost
   void MultiGnssFix(const GnssSample& g);
 
   NavigatorParams params_;
@@ -150,7 +154,6 @@ class Navigator {
   GpsNs newest_imu_t_ = 0, filter_t_ = 0, last_gnss_fused_t_ = 0, first_rejected_t_ = -1;
   GpsNs last_nhc_t_ = 0;
   bool gnss_float_ = false;  // the correlated GNSS error model in use is the RTK float one
-  bool imu_lost_ = false;            // ImuLost() at the last fix (counts the losses)
   bool restart_at_next_fix_ = false; // IMU samples resumed after a loss
   int fixes_since_imu_ = 0;          // fixes pushed since the last IMU sample
   GpsNs newest_gnss_t_ = -1, gnss_period_ns_ = 0;  // GNSS stream timing (for the wait)
