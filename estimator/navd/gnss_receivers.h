@@ -15,7 +15,7 @@
 #include "hil/estimator/drivers/nmea_decoder.h"
 #include "hil/estimator/drivers/nmea_epoch.h"
 #include "hil/estimator/drivers/ubx_decoder.h"
-#include "hil/estimator/navd_config.h"
+#include "hil/estimator/navd/navd_config.h"
 #include "hil/estimator/samples.h"
 #include "receiver_setup.h"
 #include "serial_device.h"

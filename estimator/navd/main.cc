@@ -26,7 +26,7 @@
 #include <utility>
 #include <vector>
 
-#include "hil/estimator/config_file.h"
+#include "hil/estimator/navd/config_file.h"
 #include "hil/estimator/drivers/mcu_frame_decoder.h"
 #include "hil/estimator/drivers/mcu_imu_adapter.h"
 #include "hil/estimator/drivers/razor_imu_adapter.h"
@@ -34,9 +34,9 @@
 #include "hil/estimator/drivers/nmea_decoder.h"
 #include "hil/estimator/drivers/nmea_epoch.h"
 #include "hil/estimator/drivers/ubx_decoder.h"
-#include "hil/estimator/nav_solution.h"
-#include "hil/estimator/navd_config.h"
-#include "hil/estimator/navd_health.h"
+#include "hil/estimator/navd/nav_solution.h"
+#include "hil/estimator/navd/navd_config.h"
+#include "hil/estimator/navd/navd_health.h"
 #include "hil/estimator/navigator.h"
 #include "hil/estimator/outputs/nmea0183_writer.h"
 #include "can_imu_input.h"

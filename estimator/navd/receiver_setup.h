@@ -9,7 +9,7 @@
 #include <string_view>
 
 #include "hil/estimator/drivers/ubx_configurator.h"
-#include "hil/estimator/navd_config.h"
+#include "hil/estimator/navd/navd_config.h"
 #include "serial_device.h"
 
 namespace hil::navd {

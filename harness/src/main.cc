@@ -7,12 +7,12 @@
 #include <filesystem>
 #include <iostream>
 
-#include "hil/harness/replay.h"
-#include "hil/harness/run.h"
-#include "hil/harness/suite.h"
-#include "hil/harness/validate.h"
-#include "hil/harness/validate_can_live.h"
-#include "hil/harness/yaml_reader.h"
+#include "hil/harness/replay/replay.h"
+#include "hil/harness/run/run.h"
+#include "hil/harness/suite/suite.h"
+#include "hil/harness/validate/validate.h"
+#include "hil/harness/validate/validate_can_live.h"
+#include "hil/harness/scenario/yaml_reader.h"
 
 namespace {
 

@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "hil/harness/capture_format.h"
+#include "hil/harness/links/capture_format.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view line(reinterpret_cast<const char*>(data), size);

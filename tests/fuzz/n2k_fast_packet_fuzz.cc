@@ -15,7 +15,7 @@
 #include <string_view>
 
 #include "hil/estimator/outputs/n2k_encoder.h"
-#include "hil/harness/n2k_fast_packet.h"
+#include "hil/harness/dut/n2k_fast_packet.h"
 
 namespace {
 

@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <string>
 
-#include "hil/estimator/config_file.h"
-#include "hil/estimator/navd_config.h"
+#include "hil/estimator/navd/config_file.h"
+#include "hil/estimator/navd/navd_config.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

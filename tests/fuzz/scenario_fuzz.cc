@@ -5,8 +5,8 @@
 #include <cstdlib>
 #include <string>
 
-#include "hil/harness/scenario.h"
-#include "hil/harness/yaml_reader.h"
+#include "hil/harness/scenario/scenario.h"
+#include "hil/harness/scenario/yaml_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

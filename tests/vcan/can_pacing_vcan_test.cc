@@ -12,9 +12,9 @@
 #include <thread>
 
 #include "hil/firmware_emu/link/candump_log.h"
-#include "hil/harness/can_endpoint.h"
-#include "hil/harness/capture_format.h"
-#include "hil/harness/replay.h"
+#include "hil/harness/links/can_endpoint.h"
+#include "hil/harness/links/capture_format.h"
+#include "hil/harness/replay/replay.h"
 #include "vcan_test_util.h"
 
 namespace hil::harness {

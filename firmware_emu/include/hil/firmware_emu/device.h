@@ -3,7 +3,7 @@
 /// The interface between the scheduler (harness) and every emulated device.
 ///
 /// A device is an event source driven by one scheduler that owns the clock (see
-/// harness/include/hil/harness/run.h for the order of operations at each event time):
+/// harness/include/hil/harness/run/run.h for the order of operations at each event time):
 ///  - the scheduler asks `next_event_time()`, samples the truth there and calls `OnEvent()`;
 ///  - the device answers with whole serial messages (each ready at an emulated time; the UART queue
 ///    of its port turns them into timed bytes, or drops them) and CAN frames;

@@ -2,7 +2,7 @@
 /// @file
 /// Configuration of the emulated IMU-board microcontroller (immutable after construction): its
 /// sensors, clock, sampling, serial format, CAN output and firmware faults. The harness fills it
-/// from the scenario's `mcu:` section (harness/src/scenario_mcu.cc).
+/// from the scenario's `mcu:` section (harness/src/scenario/scenario_mcu.cc).
 
 #include <cstdint>
 #include <string>

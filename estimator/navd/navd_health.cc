@@ -1,0 +1,155 @@
+#include "hil/estimator/navd/navd_health.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace hil::estimator {
+namespace {
+
+constexpr GpsNs kRecentNs = 5'000'000'000LL;
+// a fix reaches the filter up to ~2.2 s after its time of validity at 9600 baud (the epoch is
+// complete only when the next one starts), so "no fix" is judged with margin beyond that
+constexpr GpsNs kMinOutageNs = 3'500'000'000LL;
+constexpr std::uint32_t kResetTickWindow = 60'000'000;  // a restarted 1 MHz tick is below one minute
+constexpr std::uint16_t kResetSeqWindow = 64;           // a restarted sequence is small
+
+void Add(std::string& s, const char* key, std::uint64_t v) {
+  char b[96];
+  std::snprintf(b, sizeof b, ",\"%s\":%llu", key, static_cast<unsigned long long>(v));
+  s += b;
+}
+
+}  // namespace
+
+void NavdHealth::OnGnss(const GnssSample& g) {
+  ++c_.gnss_epochs;
+  if (last_gnss_t_ >= 0) {
+    if (g.t <= last_gnss_t_) {
+      ++c_.gnss_repeated_epochs;
+      return;
+    }
+    const GpsNs dt = g.t - last_gnss_t_;
+    if (gnss_period_ns_ == 0 || dt < gnss_period_ns_) gnss_period_ns_ = dt;
+  }
+  last_gnss_t_ = g.t;
+  if (g.fix_quality <= 0) {
+    ++c_.gnss_no_fix_epochs;
+    return;
+  }
+  if (last_fix_t_ >= 0 && gnss_period_ns_ > 0 && (g.t - last_fix_t_) * 2 > gnss_period_ns_ * 3) ++c_.gnss_gaps;
+  last_fix_t_ = g.t;
+}
+
+void NavdHealth::OnMcuFrame(const drivers::McuFrame& f) {
+  if (f.type == drivers::McuFrame::Type::kStatus && f.nominal_imu_period_ticks > 0) {
+    imu_period_ticks_ = f.nominal_imu_period_ticks;
+  }
+  if (have_frame_) {
+    if (f.sequence == last_seq_ && f.tick == last_tick_) {
+      ++c_.imu_repeated_frames;
+      return;
+    }
+    // a reset restarts both the tick (near zero, below the last one) and the sequence
+    if (f.tick < last_tick_ && f.tick < kResetTickWindow && f.sequence < last_seq_ && f.sequence < kResetSeqWindow) {
+      ++c_.mcu_resets;
+      have_imu_tick_ = false;
+    }
+  }
+  have_frame_ = true;
+  last_seq_ = f.sequence;
+  last_tick_ = f.tick;
+  if (f.type != drivers::McuFrame::Type::kImu) return;
+  if (have_imu_tick_) {
+    const std::uint32_t dt = f.tick - last_imu_tick_;  // modulo 2^32: wraps are fine
+    if (dt > 0 && dt < 0x80000000u) {
+      if (imu_period_ticks_ == 0) imu_period_ticks_ = dt;
+      if (static_cast<std::uint64_t>(dt) * 2 > static_cast<std::uint64_t>(imu_period_ticks_) * 5) ++c_.imu_gaps;
+    }
+  }
+  have_imu_tick_ = true;
+  last_imu_tick_ = f.tick;
+}
+
+std::uint64_t NavdHealth::GnssLinkErrors() const {
+  std::uint64_t n = 0;
+  if (src_.nmea) n += src_.nmea->bad_checksum + src_.nmea->malformed + src_.nmea->overlong + src_.nmea->garbage_bytes;
+  if (src_.ubx) n += src_.ubx->bad_checksum + src_.ubx->overlong + src_.ubx->garbage_bytes;
+  return n;
+}
+
+std::uint64_t NavdHealth::ImuLinkErrors() const {
+  std::uint64_t n = c_.imu_repeated_frames;
+  if (src_.mcu) n += src_.mcu->bad_crc + src_.mcu->bad_header + src_.mcu->garbage_bytes + src_.mcu->sequence_gaps;
+  if (src_.j1939) n += src_.j1939->unpaired + src_.j1939->bad_length + src_.j1939->out_of_order;
+  return n;
+}
+
+bool NavdHealth::Rose(Recent& r, std::uint64_t value, GpsNs t) {
+  if (value > r.seen) r.last_rise = t;
+  r.seen = value;
+  return r.last_rise >= 0 && t - r.last_rise <= kRecentNs;
+}
+
+std::string NavdHealth::Field(GpsNs t) {
+  // outage: no fix for longer than a few receiver periods (judged at the solution's time)
+  const GpsNs limit = std::max(kMinOutageNs, 3 * gnss_period_ns_ + GpsNs{500'000'000});
+  const GpsNs since = last_fix_t_ >= 0 ? t - last_fix_t_ : (last_gnss_t_ >= 0 ? t - last_gnss_t_ : 0);
+  const bool outage = (last_fix_t_ >= 0 || last_gnss_t_ >= 0) && since > limit;
+  if (outage && !outage_) ++c_.gnss_outages;
+  outage_ = outage;
+
+  std::string flags;
+  const auto flag = [&](bool on, const char* name) {
+    if (!on) return;
+    flags += flags.empty() ? "\"" : ",\"";
+    flags += name;
+    flags += "\"";
+  };
+  flag(outage_, "gnss_outage");
+  flag(Rose(gnss_errors_, GnssLinkErrors(), t), "gnss_link_errors");
+  flag(Rose(imu_errors_, ImuLinkErrors(), t), "imu_link_errors");
+  flag(Rose(rejected_, src_.nav ? src_.nav->gnss_rejected : 0, t), "gnss_rejected");
+  flag(Rose(imu_gap_, c_.imu_gaps, t), "imu_gap");
+  flag(Rose(mcu_reset_, c_.mcu_resets, t), "mcu_reset");
+  flag(src_.nav != nullptr && src_.nav->imu_lost, "imu_lost");
+
+  std::string s = ",\"health\":{\"flags\":[" + flags + "]";
+  const auto* n = src_.nmea;
+  const auto* u = src_.ubx;
+  Add(s, "gnss_checksum_errors", (n ? n->bad_checksum : 0) + (u ? u->bad_checksum : 0));
+  Add(s, "gnss_malformed", (n ? n->malformed + n->overlong : 0) + (u ? u->overlong : 0));
+  Add(s, "gnss_garbage_bytes", (n ? n->garbage_bytes : 0) + (u ? u->garbage_bytes : 0));
+  Add(s, "gnss_epochs", c_.gnss_epochs);
+  Add(s, "gnss_no_fix_epochs", c_.gnss_no_fix_epochs);
+  Add(s, "gnss_repeated_epochs", c_.gnss_repeated_epochs);
+  Add(s, "gnss_gaps", c_.gnss_gaps);
+  Add(s, "gnss_outages", c_.gnss_outages);
+  Add(s, "gnss_rejected", src_.nav ? src_.nav->gnss_rejected : 0);
+  Add(s, "gnss_late", src_.nav ? src_.nav->gnss_late : 0);
+  Add(s, "gnss_resets", src_.nav ? src_.nav->gnss_resets : 0);
+  Add(s, "imu_crc_errors", src_.mcu ? src_.mcu->bad_crc : 0);
+  Add(s, "imu_bad_headers", src_.mcu ? src_.mcu->bad_header : 0);
+  Add(s, "imu_garbage_bytes", src_.mcu ? src_.mcu->garbage_bytes : 0);
+  Add(s, "imu_sequence_gaps", src_.mcu ? src_.mcu->sequence_gaps : 0);
+  Add(s, "imu_repeated_frames", c_.imu_repeated_frames);
+  Add(s, "imu_gaps", c_.imu_gaps);
+  Add(s, "mcu_resets", c_.mcu_resets);
+  const auto* a = src_.mcu_adapter;
+  Add(s, "imu_samples_dropped", a ? a->imu_gap + a->imu_no_time + a->imu_no_scale : 0);
+  Add(s, "imu_losses", src_.nav ? src_.nav->imu_losses : 0);
+  const auto* j = src_.j1939;
+  Add(s, "imu_can_unpaired", j ? j->unpaired : 0);
+  Add(s, "imu_can_bad_length", j ? j->bad_length : 0);
+  Add(s, "imu_can_out_of_order", j ? j->out_of_order : 0);
+  s += "}";
+  return s;
+}
+
+void NavdHealth::AppendTo(std::string& line, GpsNs t) {
+  std::size_t end = line.size();
+  while (end > 0 && (line[end - 1] == '\n' || line[end - 1] == '\r')) --end;
+  if (end == 0 || line[end - 1] != '}') return;
+  line.insert(end - 1, Field(t));
+}
+
+}  // namespace hil::estimator

@@ -1,0 +1,69 @@
+#pragma once
+/// @file
+/// Collects the estimator's output during a run, from its stdout or from the pty it writes NMEA
+/// into (RUN_DIR/ttyNAV), keeps every raw line (estimate.jsonl / estimate.nmea) and the time of
+/// the last output, and parses solutions with the scenario's EstimateReader.
+
+#include <cstdint>
+#include <fstream>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "hil/firmware_emu/link/pty_port.h"
+#include "hil/firmware_emu/device.h"
+#include "hil/harness/dut/estimate_reader.h"
+#include "hil/harness/dut/n2k_bus_reader.h"
+#include "hil/harness/dut/estimator_process.h"
+
+namespace hil::harness {
+
+class EstimateCollector {
+ public:
+  /// `nav_pty` (may be null): the pty the estimator writes its solutions into.
+  EstimateCollector(std::unique_ptr<EstimateReader> reader, EstimatorProcess* process, link::PtyPort* nav_pty,
+                    const std::string& raw_path);
+
+  /// Output n2k_socketcan: `poll_bus` polls the CAN bus and returns every frame others put on it so
+  /// far (the scheduler's list); Poll() decodes the new ones (N2kBusReader) into records.
+  void AttachBus(std::function<const std::vector<CanFrame>&()> poll_bus, std::int64_t start_unix_ns);
+  /// Takes what arrived since the last call.
+  void Poll();
+  /// Output n2k_socketcan: frames seen per PGN (empty otherwise).
+  std::map<std::uint32_t, std::uint64_t> bus_frames_per_pgn() const;
+  /// CLOCK_MONOTONIC time of the last output line (0: none yet).
+  std::int64_t last_output_wall_ns() const;
+  const std::vector<EstimateRecord>& records() const { return records_; }
+  std::size_t lines() const { return lines_; }
+  std::size_t unparsed_lines() const { return unparsed_; }
+  /// Called with every raw line as it arrives (e.g. to read navd's health object).
+  void set_line_observer(std::function<void(const std::string&)> f) { observer_ = std::move(f); }
+  /// For a JSON output format, the observer of each line parsed (parsed once for both the reader
+  /// and the observer); then set_line_observer's observer is not called for those lines.
+  void set_json_observer(std::function<void(const nlohmann::json&)> f) { json_observer_ = std::move(f); }
+
+ private:
+  /// `parsed`: the line already parsed as JSON (EstimatorProcess's reader thread), or null.
+  void Consume(const std::string& line, std::int64_t wall_ns, const nlohmann::json* parsed = nullptr);
+  std::unique_ptr<EstimateReader> reader_;
+  EstimatorProcess* process_;
+  link::PtyPort* nav_pty_;
+  std::ofstream raw_;
+  std::string pty_partial_;
+  std::int64_t pty_last_ns_ = 0;
+  std::vector<EstimateRecord> records_;
+  std::size_t lines_ = 0, unparsed_ = 0;
+  std::string raw_path_;
+  std::function<void(const std::string&)> observer_;
+  std::function<void(const nlohmann::json&)> json_observer_;
+  std::function<const std::vector<CanFrame>&()> poll_bus_;
+  std::unique_ptr<N2kBusReader> bus_reader_;
+  std::size_t bus_seen_ = 0;
+  std::int64_t bus_last_ns_ = 0;
+};
+
+}  // namespace hil::harness

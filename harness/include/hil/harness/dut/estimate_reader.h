@@ -1,0 +1,44 @@
+#pragma once
+/// @file
+/// Adapters that turn the estimator's output lines into EstimateRecords, one per output format
+/// (EstimatorSpec::output):
+///  - json_stdout: navd's JSON lines ({"tov_utc_s", "lat_deg", "lon_deg", "height_m",
+///    "vel_enu_mps", "yaw_deg", "pos_std_enu_m"});
+///  - gpsd_json: gpsd TPV objects ({"class":"TPV","time":ISO,"lat","lon","altHAE"|"alt",
+///    "track","speed","climb","epx","epy","epv"}), e.g. from `gpspipe -w`; other classes skipped;
+///  - nmea_stdout / nmea_pty: NMEA 0183 GGA (position, time of day) and RMC (speed, course); the
+///    date comes from the scenario start (the solution closest to it), as GGA carries none;
+///  - n2k_candump: NMEA 2000 PGN 129029 fast packets as `candump -L`/`-l` lines on stdout (e.g.
+///    `navd … & exec candump -L vcan0`); date, time, latitude, longitude, altitude.
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "hil/harness/eval/evaluator.h"
+
+namespace hil::harness {
+
+class EstimateReader {
+ public:
+  virtual ~EstimateReader() = default;
+  /// One output line and its CLOCK_MONOTONIC arrival; a record when the line is a solution.
+  virtual std::optional<EstimateRecord> Line(const std::string& text, std::int64_t wall_ns) = 0;
+  /// True for the JSON formats: Line() parses the text, and JsonLine() takes it parsed.
+  virtual bool reads_json() const { return false; }
+  /// Line() for a line already parsed (the parse result, possibly discarded).
+  virtual std::optional<EstimateRecord> JsonLine(const nlohmann::json& /*line*/, std::int64_t /*wall_ns*/) {
+    return std::nullopt;
+  }
+  /// False when the solutions come from elsewhere (n2k_socketcan: the bus) and every line is a
+  /// diagnostic, so a line that is no solution is not worth a warning.
+  virtual bool SolutionsInLines() const { return true; }
+};
+
+/// The reader for an output format name. @throws std::invalid_argument for an unknown name.
+std::unique_ptr<EstimateReader> MakeEstimateReader(const std::string& output, std::int64_t start_unix_ns);
+
+}  // namespace hil::harness

@@ -1,0 +1,72 @@
+#pragma once
+/// @file
+/// Evaluation of an estimate against truth: each estimate is compared with the truth at its own
+/// time of validity (never its arrival time), in the local ENU frame of the scenario origin.
+/// The same accuracy metrics are computed for the raw GNSS fixes (the baseline).
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "hil/firmware_emu/sim_time.h"
+#include "hil/harness/run/truth_table.h"
+#include "hil/truth/truth_integrator.h"
+
+namespace hil::harness {
+
+/// One solution of the estimator under test (or one raw GNSS fix), as read back.
+struct EstimateRecord {
+  Time t_validity{};
+  double lat_deg = 0, lon_deg = 0, height_m = 0;
+  std::optional<Eigen::Vector3d> vel_enu_mps;
+  std::optional<double> yaw_deg;  ///< heading clockwise from north
+  std::optional<Eigen::Vector3d> pos_std_enu_m;  ///< reported 1-sigma position uncertainty (for NEES)
+  std::int64_t wall_rx_ns = 0;    ///< CLOCK_MONOTONIC arrival (0 when not applicable)
+};
+
+/// The error of one record against truth, ENU.
+struct ErrorSample {
+  Time t{};
+  Eigen::Vector3d err_enu_m = Eigen::Vector3d::Zero();
+  std::optional<double> vel_err_mps;
+  std::optional<double> yaw_err_deg;
+  Eigen::Vector3d truth_enu_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d est_enu_m = Eigen::Vector3d::Zero();
+  /// Cross-track error: signed distance of the estimate from the planned path minus that of the
+  /// truth (see cross_track.h); set by AddCrossTrack.
+  std::optional<double> xte_m;
+  /// Normalised estimation error squared with the reported diagonal covariance (3 DOF).
+  std::optional<double> nees;
+  double horizontal() const { return err_enu_m.head<2>().norm(); }
+};
+
+/// Accuracy metrics (report.json names).
+struct AccuracyMetrics {
+  std::size_t samples = 0;
+  double horizontal_rmse_m = 0, cep50_m = 0, cep95_m = 0, max_horizontal_error_m = 0;
+  double vertical_rmse_m = 0;
+  std::optional<double> velocity_rmse_mps, heading_rmse_deg;
+  std::optional<double> cross_track_rmse_m, cross_track_p95_m, cross_track_max_m;  ///< |xte| statistics
+  std::optional<double> nees_mean;  ///< mean NEES (≈3 for a consistent 3-D position covariance)
+};
+
+/// Compares records with truth. `p_BX_B_m` is the lever arm of the point the records refer to
+/// (zero for the estimator's reference point, the antenna's for raw fixes). Records before
+/// `t_from` are skipped (convergence); records after `t_to` too.
+std::vector<ErrorSample> CompareWithTruth(const truth::TruthConfig& truth_config, std::vector<EstimateRecord> records,
+                                          const Eigen::Vector3d& p_BX_B_m, Time t_from, Time t_to);
+/// The same with the truth from a table that holds every time RecordTimes(records, …) gives.
+std::vector<ErrorSample> CompareWithTruth(const TruthTable& truth, std::vector<EstimateRecord> records,
+                                          const Eigen::Vector3d& p_BX_B_m, Time t_from, Time t_to);
+/// The times CompareWithTruth needs the truth at for `records`.
+std::vector<Time> RecordTimes(const std::vector<EstimateRecord>& records, Time t_from, Time t_to);
+
+/// Metrics of a set of errors. Empty input gives samples = 0.
+AccuracyMetrics ComputeAccuracy(const std::vector<ErrorSample>& errors);
+
+/// Empirical percentile (0–100) by linear interpolation of sorted values.
+double Percentile(std::vector<double> values, double pct);
+
+}  // namespace hil::harness

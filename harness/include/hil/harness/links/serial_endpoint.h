@@ -1,0 +1,85 @@
+#pragma once
+/// @file
+/// One serial port of an emulated device as the run sees it: the device's UART transmit queue, the
+/// port the host opens (a pty behind a symlink in the run folder, or a real tty device), and the
+/// capture of every byte both ways (capture_format.h).
+/// Virtual mode writes bytes at once; real-time mode writes each byte at its UART wall time and
+/// records its schedule error and its wall time in the capture.
+
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hil/firmware_emu/device.h"
+#include "hil/firmware_emu/link/realtime_pacer.h"
+#include "hil/firmware_emu/link/serial_port.h"
+#include "hil/firmware_emu/link/uart_tx_queue.h"
+#include "hil/harness/links/capture_format.h"
+
+namespace hil::harness {
+
+class SerialEndpoint {
+ public:
+  /// @param link_name the scenario's link: a plain name (a pty at `link_path`) or an absolute /dev
+  ///        path (that real serial device is opened and `link_path` is ignored)
+  /// @param link_path symlink for the host side, e.g. RUN_DIR/ttyGPS
+  /// @param capture_path capture file for this link (see CaptureFileName)
+  /// @throws std::runtime_error when the port or the capture cannot be opened.
+  SerialEndpoint(std::string link_name, const std::string& link_path, int baud, std::size_t tx_buffer_bytes,
+                 const std::string& capture_path);
+  /// Writes the bytes still queued (never sent) into the capture with t_wall_ns = 0.
+  ~SerialEndpoint();
+  SerialEndpoint(const SerialEndpoint&) = delete;
+  SerialEndpoint& operator=(const SerialEndpoint&) = delete;
+
+  /// Queues one message in the UART (or records its drop). Its bytes wait in this endpoint until
+  /// written by WriteAll() (virtual mode) or WriteNextByte() (real time). Returns false when the
+  /// transmit buffer had no room (the message was dropped).
+  bool Queue(const SerialMessage& msg);
+  /// Emulated time of the next byte waiting to be written, if any.
+  std::optional<Time> next_byte_time() const;
+  /// Writes the next waiting byte at its UART wall time and records the schedule error.
+  void WriteNextByte(const link::RealtimePacer& pacer);
+  /// Writes every waiting byte at once, in one write (virtual mode). The order in which the host
+  /// sees several links is kept by VirtualGate / VirtualWriteQueue, before this is called.
+  void WriteAll() { WriteChunks(pending_.size()); }
+  /// Writes the first `chunks` waiting chunks in one write (virtual mode).
+  void WriteChunks(std::size_t chunks);
+  /// Bytes waiting to be written.
+  std::size_t queued_bytes() const;
+  /// Writes out the capture's buffer (a failed write is noted, run_guard.h).
+  void FlushCapture() { capture_.Flush(); }
+  /// poll() shows host bytes on this descriptor (-1: none to poll, call PollHost anyway).
+  int host_input_fd() const { return port_->host_input_fd(); }
+  /// Reads host bytes (non-blocking), captures them with emulated time `t_now`, returns them.
+  std::string PollHost(Time t_now);
+  void set_baud(int baud) { uart_.set_baud(baud); }
+  std::size_t PendingToHost() const { return port_->PendingToHost(); }
+  const link::UartTxQueue& uart() const { return uart_; }
+  const std::string& link_name() const { return link_name_; }
+  const std::string& link_path() const { return port_->path(); }
+  /// Schedule errors (µs) of bytes written in real time: wall time written − scheduled wall time.
+  const std::vector<double>& schedule_error_us() const { return schedule_error_us_; }
+
+ private:
+  void FinishChunk();
+
+  std::string link_name_;
+  std::unique_ptr<link::SerialPort> port_;
+  link::UartTxQueue uart_;
+  CaptureWriter capture_;
+  std::deque<std::pair<link::TimedChunk, std::string>> pending_;  // chunk, message name
+  std::size_t pending_offset_ = 0;  // bytes of pending_.front() already written
+  CaptureRecord current_;           // capture line of the chunk being written in real time
+  std::vector<double> schedule_error_us_;
+  std::string write_buffer_;        // virtual mode: the waiting chunks joined for one write
+};
+
+/// The capture file name of a link: `<link>.cap`, with a device path reduced to its base name
+/// (`/dev/ttyUSB0` → `ttyUSB0.cap`).
+std::string CaptureFileName(const std::string& link_name);
+
+}  // namespace hil::harness

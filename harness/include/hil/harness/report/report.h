@@ -1,0 +1,81 @@
+#pragma once
+/// @file
+/// What a run leaves behind: report.json (DESIGN.md contract), junit.xml (one test case per
+/// criterion), and CSV files of truth, estimates and raw fixes.
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hil/harness/links/can_bus_report.h"
+#include "hil/harness/eval/evaluator.h"
+#include "hil/harness/faults/fault_report.h"
+#include "hil/harness/eval/outage_metrics.h"
+#include "hil/harness/scenario/scenario.h"
+
+namespace hil::harness {
+
+struct LatencyStats {
+  double p50_ms = 0, p99_ms = 0, max_ms = 0;
+};
+
+/// A criterion after evaluation.
+struct CriterionResult {
+  std::string name;
+  double threshold = 0;
+  std::optional<double> value;  ///< absent when the metric could not be computed (fails)
+  bool pass = false;
+};
+
+/// Everything report.json holds.
+struct RunReport {
+  std::string scenario;
+  std::string scenario_file;
+  std::uint64_t seed = 0;
+  std::string mode;
+  bool complete = true;            ///< false when the run stopped early
+  std::vector<std::string> problems;  ///< why the run failed besides criteria (crash, silence…)
+  AccuracyMetrics metrics;
+  double output_rate_hz = 0;
+  OutputTiming timing;
+  std::optional<LatencyStats> latency;
+  std::vector<OutageMetrics> outages;
+  AccuracyMetrics baselines;
+  std::vector<CriterionResult> criteria;
+  std::string estimator_command, estimator_output, estimator_exit;
+  int estimator_pid = 0;  ///< process (and process group) id of the estimator, 0 when none
+  double wall_time_s = 0, sim_time_s = 0, speed = 1.0;
+  std::uint64_t gnss_bytes = 0, gnss_messages_dropped = 0;
+  std::uint64_t fault_messages_dropped = 0, fault_bytes_corrupted = 0;
+  std::vector<std::pair<std::string, std::string>> faults;  ///< {kind, "start–end s"} for the report
+  std::vector<FaultInjection> fault_injections;  ///< per fault: what was injected, recovery (fault_report.h)
+  EstimatorHealth estimator_health;              ///< navd's detections (fault_report.h)
+  std::string incomplete_reason;  ///< why the run stopped early (signal, output folder, link), if it did
+  std::optional<CanBusReport> can;  ///< the scenario's CAN bus (can_run.h), when it has one
+  bool pass() const;
+};
+
+/// Metric name → value (absent when not computable), the names criteria use (kCriterionMetrics).
+using MetricTable = std::map<std::string, std::optional<double>>;
+MetricTable AccuracyTable(const AccuracyMetrics& m);
+/// Every criterion metric of a run (accuracy, timing, outages, consistency).
+MetricTable RunMetricTable(const RunReport& r);
+
+/// Escapes text for XML and HTML (attributes and content): < > & ".
+std::string XmlEscape(const std::string& s);
+
+/// Evaluates the scenario's criteria against the metrics.
+std::vector<CriterionResult> EvaluateCriteria(const std::vector<Criterion>& criteria, const MetricTable& metrics,
+                                              const MetricTable& baselines);
+std::vector<CriterionResult> EvaluateCriteria(const std::vector<Criterion>& criteria, const AccuracyMetrics& metrics,
+                                              const AccuracyMetrics& baselines);
+
+/// Writes report.json. @throws std::runtime_error naming the file on failure.
+void WriteReportJson(const RunReport& report, const std::string& path);
+/// Writes junit.xml. @throws std::runtime_error naming the file on failure.
+void WriteJunitXml(const RunReport& report, const std::string& path);
+/// Writes errors (time, truth and estimate ENU, errors) as CSV.
+void WriteErrorsCsv(const std::vector<ErrorSample>& errors, const std::string& path);
+
+}  // namespace hil::harness

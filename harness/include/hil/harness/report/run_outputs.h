@@ -1,0 +1,31 @@
+#pragma once
+/// @file
+/// Files of the run folder besides the reports: navd.conf, truth.csv, schedule_error.json.
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "hil/harness/run/device_set.h"
+#include "hil/harness/scenario/scenario.h"
+#include "hil/harness/run/truth_table.h"
+
+namespace hil::harness {
+
+/// The navd configuration for this scenario (input device, leap seconds, mode, JSON output).
+void WriteNavdConfig(const std::string& path, const Scenario& s, const std::string& gnss_device);
+
+/// Truth at 10 Hz as CSV; returns the horizontal track (t, east, north) for the plots.
+void WriteTruthCsv(const Scenario& s, const std::string& path, std::vector<double>& t_s,
+                   std::vector<Eigen::Vector2d>& en_m);
+/// The same from a table that holds the times TruthCsvTimes(s) gives.
+void WriteTruthCsv(const TruthTable& truth, const Scenario& s, const std::string& path, std::vector<double>& t_s,
+                   std::vector<Eigen::Vector2d>& en_m);
+/// The times of truth.csv: every 100 ms from 0 to the scenario's end.
+std::vector<Time> TruthCsvTimes(const Scenario& s);
+
+/// Real-time schedule error per link (p50/p99/max µs); nothing in virtual mode.
+void WriteScheduleErrors(const DeviceSet& set, const std::string& path);
+
+}  // namespace hil::harness

@@ -1,0 +1,38 @@
+#pragma once
+/// @file
+/// The emulated devices of a scenario and the links they talk through, built from the scenario.
+/// One place decides which device classes a scenario's sections create; the scheduler in run.cc
+/// drives whatever is here through the Device interface.
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "hil/firmware_emu/device.h"
+#include "hil/firmware_emu/gnss/gnss_fix.h"
+#include "hil/harness/links/can_endpoint.h"
+#include "hil/harness/scenario/scenario.h"
+#include "hil/harness/links/serial_endpoint.h"
+
+namespace hil::harness {
+
+struct DeviceSet {
+  std::vector<std::unique_ptr<Device>> devices;
+  /// endpoints[i][p] is serial port p of devices[i]
+  std::vector<std::vector<std::unique_ptr<SerialEndpoint>>> endpoints;
+  /// Latest fix of each GNSS receiver (the raw-fix baseline reads these after each event).
+  std::vector<std::function<const gnss::GnssFix*()>> fix_sources;
+  /// {link name, path} for substitution into the estimator command ({ttyGPS} → RUN_DIR/ttyGPS).
+  std::vector<std::pair<std::string, std::string>> links;
+  /// The CAN bus (scenario section `can`); null when the scenario has none. Every device's
+  /// DeviceOutput::can frames go out on it.
+  std::unique_ptr<CanEndpoint> can;
+};
+
+/// Creates the devices, their ptys (symlinks and captures in `run_dir`) and the CAN bus.
+/// @throws std::runtime_error when a link cannot be created.
+DeviceSet BuildDevices(const Scenario& scenario, std::uint64_t seed, const std::string& run_dir);
+
+}  // namespace hil::harness

@@ -1,0 +1,53 @@
+#pragma once
+/// @file
+/// One run of a scenario end to end: truth → device emulators → links → the estimator under test
+/// → evaluation → reports in the run folder.
+///
+/// Scheduling (one scheduler owns the clock). At each event time tₛ, in order:
+///   1. emulators sample the truth x(tₛ) (CVODE dense output) and produce whole messages;
+///   2. each message enters its device's UART queue, which gives every byte its emulated time
+///      (or drops the message whole when the transmit buffer is full);
+///   3. the link delivers the bytes: in virtual mode at once (the bytes keep their emulated times
+///      in the capture), in real-time/scaled mode each byte at its wall-clock UART time;
+///   4. bytes from the host are read and logged with their times.
+/// The bytes produced depend only on the scenario and the seed, never on the mode (scheduler.h).
+///
+/// The estimator under test is watched throughout: it ending early is a crash; no output for
+/// the silence timeout (or, in virtual mode, not reading its input for that long) is a hang;
+/// both fail the run, and the process group is always stopped at the end.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "hil/harness/report/report.h"
+#include "hil/harness/scenario/scenario.h"
+
+namespace hil::harness {
+
+enum class RunMode { kVirtual, kRealtime };
+
+struct RunOptions {
+  std::string out_dir;                      ///< run folder (created)
+  std::optional<std::uint64_t> seed;        ///< overrides the scenario's seed
+  RunMode mode = RunMode::kVirtual;
+  double speed = 1.0;                       ///< real-time speed-up (realtime mode; ≠ 1 is "scaled")
+  std::optional<std::string> estimator_command;  ///< overrides the scenario's estimator command
+  std::string navd_path;                    ///< substituted for {navd}
+  bool progress = false;                    ///< live progress line on stderr
+  bool emulate_only = false;                ///< `hil emulate`: no estimator; print the links and run
+  std::optional<double> silence_timeout_s;  ///< overrides the scenario's estimator.silence_timeout_s
+  bool html = true;                         ///< write report.html and plots/
+};
+
+/// "virtual", "realtime" or "scaled" (real time with a speed-up other than 1).
+std::string ModeName(RunMode mode, double speed);
+
+/// Runs a scenario and writes the run folder. Returns the report (its pass() decides exit 0/1).
+/// @throws std::runtime_error for setup failures (unwritable folder, estimator cannot start).
+RunReport RunScenario(const Scenario& scenario, const RunOptions& options);
+
+/// Replaces every "{key}" in `text` whose key is in the map.
+std::string Substitute(const std::string& text, const std::vector<std::pair<std::string, std::string>>& vars);
+
+}  // namespace hil::harness

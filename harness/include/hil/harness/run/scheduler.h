@@ -1,0 +1,76 @@
+#pragma once
+/// @file
+/// The one scheduler that owns the clock of a run (order of operations in run.h). It advances
+/// emulated time from device event to device event; in real-time/scaled mode it also writes each
+/// byte at its wall-clock UART time. Byte faults of the timeline are applied to whole messages
+/// before they enter a UART queue, so the bytes depend only on the scenario and the seed.
+
+#include <poll.h>
+
+#include <functional>
+#include <optional>
+#include <ostream>
+#include <vector>
+
+#include "hil/firmware_emu/link/realtime_pacer.h"
+#include "hil/harness/faults/byte_faults.h"
+#include "hil/harness/run/device_set.h"
+#include "hil/harness/eval/evaluator.h"
+#include "hil/harness/faults/fault_record.h"
+#include "hil/harness/scenario/scenario.h"
+#include "hil/harness/run/virtual_gate.h"
+
+namespace hil::harness {
+
+class Scheduler {
+ public:
+  /// `pacer` null: virtual mode. `fixes_csv` receives one line per raw GNSS fix.
+  Scheduler(const Scenario& scenario, DeviceSet& devices, ByteFaultInjector& faults, const link::RealtimePacer* pacer,
+            std::ostream& fixes_csv);
+
+  /// Where the faults of the timeline applied here are counted (GNSS epochs in an outage or a
+  /// glitch, receiver messages lost to its transmit buffer in an output overload).
+  void set_recorder(FaultRecorder* recorder) { recorder_ = recorder; }
+
+  /// Virtual mode: the gate that keeps the host's links in order (virtual_gate.h); without one
+  /// bytes are written as they are made. When the gate gives up a wait the run stops and the bytes
+  /// not yet written stay unsent.
+  void set_gate(VirtualGate* gate) { writes_ = VirtualWriteQueue(gate, kMaxDeferredBytes); }
+
+  /// Runs from t = 0 to the scenario's end. After every event, `keep_going(t)` decides whether
+  /// to continue (false stops the run early, e.g. when the estimator died).
+  void Run(const std::function<bool(Time)>& keep_going);
+
+  /// Writes the bytes still queued (real time) at their UART times.
+  void Flush();
+
+  /// The raw GNSS fixes of the first receiver seen so far (the baseline).
+  const std::vector<EstimateRecord>& fixes() const { return fixes_; }
+  /// Frames others put on the CAN bus during the run (the estimator's NMEA 2000 output).
+  const std::vector<CanFrame>& bus_frames() const { return bus_frames_; }
+  /// Reads what others put on the bus now (also during the drain after Run) and returns them all.
+  const std::vector<CanFrame>& PollBus();
+
+ private:
+  void Dispatch(std::size_t device, DeviceOutput& out);
+  void RecordFixes(Time t);
+  /// Hands the bytes hosts wrote since the last call to their devices, at `t_host` (virtual) or at
+  /// their wall arrival time (real time). Returns true when a device queued a reply.
+  bool PollHosts(Time t_host, DeviceOutput& out);
+
+  const Scenario& scenario_;
+  DeviceSet& set_;
+  ByteFaultInjector& faults_;
+  const link::RealtimePacer* pacer_;
+  std::ostream& fixes_csv_;
+  FaultRecorder* recorder_ = nullptr;
+  std::vector<EstimateRecord> fixes_;
+  std::vector<CanFrame> bus_frames_;
+  Time t_last_event_{};
+  static constexpr std::size_t kMaxDeferredBytes = 8192;  // virtual mode: bytes the run may hold back
+  VirtualWriteQueue writes_{nullptr, kMaxDeferredBytes};
+  bool write_refused_ = false;  // the gate gave up a wait
+  std::vector<pollfd> host_fds_;  // one per serial endpoint, in device and port order
+};
+
+}  // namespace hil::harness

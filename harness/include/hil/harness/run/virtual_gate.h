@@ -1,0 +1,89 @@
+#pragma once
+/// @file
+/// Virtual mode's pacing of the host: the order in which the estimator under test sees its links'
+/// bytes is the order of emulated time, whatever the machine's load.
+///
+/// Before bytes go to one link the estimator reads, it has read every byte already written to its
+/// other links (exactly: SerialPort::PendingToHost() is 0 on them, bytes still in the kernel's pty
+/// hand-over included). So a host that decodes what it reads as it reads it sees the same sequence
+/// of messages across its links in every run: an IMU frame written before a GNSS sentence is read
+/// before it, never after. Runs of bytes on one link wait only for that link's backlog to fall
+/// below `max_link_backlog_bytes` (which bounds the pty buffer, not the order).
+///
+/// While it waits, `on_wait` is called (it polls the estimator's output and decides when a host
+/// that no longer reads has hung); returning false gives up the wait and the run.
+
+#include <cstddef>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <vector>
+
+#include "hil/harness/links/serial_endpoint.h"
+
+namespace hil::harness {
+
+class VirtualGate {
+ public:
+  /// Called on every wait step with the bytes still unread on the links waited for and whether
+  /// this step starts a new wait. Returns false to abandon the wait.
+  using WaitStep = std::function<bool(std::size_t unread, bool new_wait)>;
+
+  VirtualGate(std::vector<SerialEndpoint*> host_links, std::size_t max_link_backlog_bytes, WaitStep on_wait);
+
+  /// Before `bytes` bytes are written to `ep`: waits until the host has read the other host links
+  /// and `ep`'s backlog leaves room. Links the host does not read pass at once. False: the wait
+  /// was given up (the run stops).
+  bool BeforeWrite(const SerialEndpoint& ep, std::size_t bytes);
+  /// BeforeWrite without the wait: true (and the bytes counted) when they may go now.
+  bool TryWrite(const SerialEndpoint& ep, std::size_t bytes);
+  /// Waits until the host has read every byte of every link it reads.
+  bool WaitAllRead();
+  /// Bytes not yet read on the host links (exact when 0), for the drain and hang reports.
+  std::size_t Unread();
+
+ private:
+  struct Link {
+    const SerialEndpoint* ep;
+    std::size_t unread_bound;  // ≥ the bytes unread: last PendingToHost() plus the bytes written since
+  };
+  Link* Find(const SerialEndpoint& ep);
+  /// Unread bytes on the links selected (refreshing their bounds); `except` is skipped, and a
+  /// link known to be read (bound 0) is not asked again unless `ask_all`.
+  std::size_t Refresh(const Link* except, const Link* only, bool ask_all = false);
+  bool Wait(const std::function<bool()>& done, const Link* except, const Link* only);
+
+  std::vector<Link> links_;
+  std::size_t max_backlog_;
+  WaitStep on_wait_;
+};
+
+/// Virtual mode's writes: every chunk queued on a serial endpoint, in emulated-time order across
+/// links. The head of the queue goes out as soon as the gate lets it through without waiting, and
+/// consecutive chunks of one link go out in one write; so while the host keeps up the run never
+/// waits for it. When more than `max_deferred_bytes` wait here, Pump waits for the host.
+/// Without a gate (no estimator to pace) every chunk is written at once.
+class VirtualWriteQueue {
+ public:
+  VirtualWriteQueue(VirtualGate* gate, std::size_t max_deferred_bytes)
+      : gate_(gate), max_deferred_(max_deferred_bytes) {}
+  /// One chunk of `bytes` bytes was queued on `ep` (SerialEndpoint::Queue returned true).
+  void Add(SerialEndpoint& ep, std::size_t bytes);
+  /// Writes what may go; with `all`, waits for the host until everything is written. False: the
+  /// gate gave up a wait (the run stops; the rest stays unsent).
+  bool Pump(bool all);
+  std::size_t deferred_bytes() const { return deferred_; }
+
+ private:
+  struct Batch {
+    SerialEndpoint* ep;
+    std::size_t chunks;
+    std::size_t bytes;
+  };
+  VirtualGate* gate_;
+  std::size_t max_deferred_;
+  std::deque<Batch> fifo_;
+  std::size_t deferred_ = 0;
+};
+
+}  // namespace hil::harness

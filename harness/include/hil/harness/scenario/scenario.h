@@ -1,0 +1,152 @@
+#pragma once
+/// @file
+/// A scenario: everything one run needs, loaded from a YAML file (format in
+/// vectors/scenarios/README.md) and immutable afterwards. Loading validates every key and value
+/// and reports errors as ScenarioError (file, line, field).
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hil/firmware_emu/gnss/neo5m_device.h"
+#include "hil/firmware_emu/gnss/receiver_model.h"
+#include "hil/firmware_emu/mcu/mcu_config.h"
+#include "hil/harness/faults/fault_timeline.h"
+#include "hil/truth/truth_integrator.h"
+
+namespace hil::harness {
+
+/// An acceptance criterion on one metric of report.json. Passes when value ≤ threshold, where the
+/// threshold is `max`, or `max_ratio_to_baseline` × the same metric of the raw GNSS baseline; or,
+/// with `min`, when value ≥ min (e.g. output_rate_hz).
+struct Criterion {
+  std::string name;    ///< e.g. "horizontal_rmse_m <= 1.0"
+  std::string metric;  ///< a key of report.json's metrics (e.g. horizontal_rmse_m); see kCriterionMetrics
+  std::optional<double> max;
+  std::optional<double> min;
+  std::optional<double> max_ratio_to_baseline;
+};
+
+/// A published reference figure (section `paper:`, scenario_suite.cc): a suite report puts the
+/// run's value of `metric` beside it. Any user can add their own reference figures this way.
+struct PaperFigure {
+  std::string source;              ///< the publication and where in it (e.g. "paper 000, table of methods")
+  std::string metric;              ///< a criterion metric (kCriterionMetrics), compared in its unit
+  std::optional<double> value;     ///< the figure; absent for a qualitative finding
+  std::string relation = "about";  ///< about (a measured value), below (an upper bound), above (a lower bound)
+  std::string finding;             ///< the result in words ("diverges"), required without a value
+  std::string note;                ///< free text (conditions, how it maps onto this scenario)
+};
+
+/// The metric names a criterion may use.
+extern const std::vector<std::string> kCriterionMetrics;
+
+/// One receiver of the scenario's GNSS section: its link and its antenna position.
+struct GnssReceiverSpec {
+  std::string link = "ttyGPS";                          ///< symlink name in the run folder
+  Eigen::Vector3d p_BA_B_m = Eigen::Vector3d::Zero();   ///< antenna lever arm (body FLU)
+};
+
+/// The GNSS receiver device(s) of a scenario (section `gnss`, read by scenario_gnss.cc). All
+/// receivers share the profile, settings, faults and error grade; each has its own link and
+/// antenna and its own error part beside the common one. `link` and `model.p_BA_B_m` are those of
+/// the first receiver.
+struct GnssDeviceSpec {
+  std::string profile = "neo-5m";
+  int baud = 9600;
+  std::string link = "ttyGPS";    ///< symlink name in the run folder (first receiver)
+  double rate_hz = 1.0;
+  double output_lag_s = 0.1;      ///< epoch to first byte
+  std::size_t tx_buffer_bytes = 1024;
+  gnss::ReceiverModelConfig model;
+  gnss::StartKind start = gnss::StartKind::kHot;
+  std::vector<gnss::GnssFault> faults;
+  std::vector<GnssReceiverSpec> receivers;  ///< at least one after loading
+};
+
+/// The IMU board's microcontroller of a scenario (section `mcu:`; absent → no IMU board).
+struct McuDeviceSpec {
+  bool enabled = false;            ///< true when the scenario has an `mcu:` section
+  std::string link = "ttyIMU";     ///< symlink name in the run folder
+  std::size_t tx_buffer_bytes = 4096;
+  bool imu_rate_is_default = true;  ///< no imu_rate_hz given: 10 × the GNSS rate
+  mcu::McuConfig config;           ///< start_unix_ns is filled from the scenario's start_utc
+};
+
+/// How the estimator under test is started and read.
+struct EstimatorSpec {
+  /// Shell command; {navd}, {run_dir}, {seed} and every link name in braces ({ttyGPS}, {ttyNAV})
+  /// are substituted.
+  std::string command = "{navd} --config {run_dir}/navd.conf";
+  /// How its solutions are read: json_stdout (navd's JSON lines), gpsd_json (gpsd TPV objects on
+  /// stdout, e.g. from `gpspipe -w`), nmea_stdout (GGA/RMC on stdout), nmea_pty (GGA/RMC written
+  /// into the pty RUN_DIR/ttyNAV, substituted as {ttyNAV}), n2k_candump (NMEA 2000 PGN 129029
+  /// as candump -L lines on stdout), n2k_socketcan (navd's NMEA 2000 frames read back from the
+  /// scenario's CAN bus: 129029 position and time, with 129026 velocity and 127250 heading of the
+  /// same SID).
+  std::string output = "json_stdout";
+  std::string navd_mode = "gnss_only";  ///< written into the generated navd.conf
+  /// Further navd.conf `[filter]` keys (noise grades, gates, …), written as given; navd validates
+  /// them and names the bad key (a rejected key fails the run with navd's message).
+  std::vector<std::pair<std::string, std::string>> navd_filter;
+  /// Further navd.conf `[input]` keys (gnss_protocol, gnss_configure, gnss_rate_hz, …); the device
+  /// paths and bauds are hil's, from the scenario's devices.
+  std::vector<std::pair<std::string, std::string>> navd_input;
+  /// The point of the vehicle the estimate describes: "body" (the reference point), "antenna"
+  /// (the first receiver's antenna), "imu" (the IMU board), or "auto": antenna for a GNSS-only
+  /// navd, the IMU for navd fusing the board, the body otherwise.
+  std::string reference_point = "auto";
+  double silence_timeout_s = 10.0;      ///< no output for this long fails the run
+  double startup_s = 0.0;               ///< wall time given to the program to open its devices before t = 0
+};
+
+/// The CAN bus of a scenario (links helper): devices' CAN frames go out on this SocketCAN
+/// interface, captured in captures/<interface>.candump and .cap. No interface: no CAN link.
+struct CanLinkSpec {
+  std::string interface;  ///< e.g. vcan0; empty when the scenario has no `can` section
+  bool fd = false;        ///< open the socket for CAN FD frames
+  /// navd reads the IMU from the MCU's J1939 frames on this bus (navd.conf `[imu] source = can`)
+  /// instead of its serial link. Needs `mcu.can.enabled` and a real-time or scaled run.
+  bool imu_to_estimator = false;
+};
+
+struct Scenario {
+  std::string file;  ///< where it came from ("<embedded default>" for the default)
+  std::string name;
+  std::string description;
+  std::int64_t start_unix_ns = 0;  ///< UTC of t = 0
+  double duration_s = 60;
+  std::uint64_t seed = 1;
+  truth::TruthConfig truth;
+  GnssDeviceSpec gnss;
+  McuDeviceSpec mcu;
+  CanLinkSpec can;
+  EstimatorSpec estimator;
+  std::vector<Criterion> criteria;
+  FaultTimeline faults;
+  /// Seconds after the end of an outage within which the horizontal error must return below
+  /// `reconverged_error_m` (reconvergence time is measured against this).
+  double reconverged_error_m = 1.0;
+  /// Solutions before this time are not evaluated (initial convergence).
+  double evaluate_from_s = 0.0;
+  /// Reference figures from publications (section `paper:`), for suite reports.
+  std::vector<PaperFigure> paper;
+  /// The file has a `short:` section (a quicker form for CI, see LoadScenario), and it was applied.
+  bool has_short_form = false, short_form = false;
+};
+
+/// Loads and validates a scenario file; `include:` files are looked up beside it, then in
+/// ScenarioLibraryDirs(). With `short_form`, the keys of the file's `short:` section (if any)
+/// replace the top-level keys of the same name first (`hil run --short`, `hil suite --short`).
+/// @throws ScenarioError.
+Scenario LoadScenario(const std::string& path, bool short_form = false);
+/// Where included scenario pieces live: $HIL_SCENARIO_LIB (colon-separated) and the source tree's
+/// vectors/scenarios/lib.
+std::vector<std::string> ScenarioLibraryDirs();
+/// Loads the embedded default scenario (vectors/scenarios/default.yaml, compiled in).
+Scenario LoadDefaultScenario();
+/// Parses scenario text; `name` stands for the file in messages. @throws ScenarioError.
+Scenario ParseScenario(const std::string& text, const std::string& name);
+
+}  // namespace hil::harness

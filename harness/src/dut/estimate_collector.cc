@@ -1,0 +1,89 @@
+#include "hil/harness/dut/estimate_collector.h"
+
+#include <algorithm>
+
+#include <nlohmann/json.hpp>
+
+#include "hil/firmware_emu/link/realtime_pacer.h"
+#include "hil/harness/run/run_guard.h"
+
+namespace hil::harness {
+
+EstimateCollector::EstimateCollector(std::unique_ptr<EstimateReader> reader, EstimatorProcess* process,
+                                     link::PtyPort* nav_pty, const std::string& raw_path)
+    : reader_(std::move(reader)), process_(process), nav_pty_(nav_pty), raw_(raw_path), raw_path_(raw_path) {
+  // JSON solutions on stdout: decoded on the process's reader thread (pty output is not its)
+  if (process_ && !nav_pty_ && reader_->reads_json()) process_->set_parse_json(true);
+}
+
+void EstimateCollector::Consume(const std::string& line, std::int64_t wall_ns, const nlohmann::json* parsed) {
+  raw_ << line << "\n";
+  raw_.flush();  // everything captured so far survives an interrupted run
+  if (!raw_) NoteWriteFailure(raw_path_);
+  ++lines_;
+  std::optional<EstimateRecord> r;
+  if (json_observer_ && reader_->reads_json()) {
+    // parsed once for both, on the process's reader thread when it could
+    const nlohmann::json j = parsed ? nlohmann::json() : nlohmann::json::parse(line, nullptr, false);
+    const nlohmann::json& doc = parsed ? *parsed : j;
+    json_observer_(doc);
+    r = reader_->JsonLine(doc, wall_ns);
+  } else {
+    if (observer_) observer_(line);
+    r = reader_->Line(line, wall_ns);
+  }
+  if (r) records_.push_back(*r);
+  else if (reader_->SolutionsInLines()) ++unparsed_;
+}
+
+void EstimateCollector::AttachBus(std::function<const std::vector<CanFrame>&()> poll_bus, std::int64_t start_unix_ns) {
+  poll_bus_ = std::move(poll_bus);
+  bus_reader_ = std::make_unique<N2kBusReader>(start_unix_ns);
+}
+
+std::map<std::uint32_t, std::uint64_t> EstimateCollector::bus_frames_per_pgn() const {
+  return bus_reader_ ? bus_reader_->frames_per_pgn() : std::map<std::uint32_t, std::uint64_t>{};
+}
+
+void EstimateCollector::Poll() {
+  if (poll_bus_) {
+    const std::vector<CanFrame>& frames = poll_bus_();
+    const std::int64_t now = link::RealtimePacer::MonotonicNs();
+    for (; bus_seen_ < frames.size(); ++bus_seen_) {
+      const CanFrame& f = frames[bus_seen_];
+      if (!f.extended) continue;
+      bus_last_ns_ = now;
+      const std::string_view data(reinterpret_cast<const char*>(f.data.data()), std::min<std::size_t>(f.len, 8));
+      if (auto r = bus_reader_->Frame(f.id, data, now)) records_.push_back(*r);
+    }
+  }
+  if (process_) {
+    for (const OutputLine& l : process_->TakeLines()) {
+      // with a pty output, stdout is only kept (diagnostics), never parsed as solutions
+      if (nav_pty_) raw_ << "# stdout: " << l.text << "\n";
+      else Consume(l.text, l.wall_ns, l.json.get());
+    }
+  }
+  if (nav_pty_) {
+    const std::string rx = nav_pty_->ReadAvailable();
+    if (!rx.empty()) {
+      const std::int64_t now = link::RealtimePacer::MonotonicNs();
+      pty_last_ns_ = now;
+      pty_partial_ += rx;
+      std::size_t pos;
+      while ((pos = pty_partial_.find('\n')) != std::string::npos) {
+        std::string line = pty_partial_.substr(0, pos);
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        pty_partial_.erase(0, pos + 1);
+        if (!line.empty()) Consume(line, now);
+      }
+    }
+  }
+}
+
+std::int64_t EstimateCollector::last_output_wall_ns() const {
+  const std::int64_t from_process = process_ && !nav_pty_ ? process_->last_output_wall_ns() : 0;
+  return std::max({from_process, pty_last_ns_, bus_last_ns_});
+}
+
+}  // namespace hil::harness

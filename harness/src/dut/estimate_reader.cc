@@ -1,0 +1,193 @@
+#include "hil/harness/dut/estimate_reader.h"
+
+#include <cmath>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+#include "hil/firmware_emu/gnss/gps_time.h"
+#include "hil/harness/dut/n2k_bus_reader.h"
+#include "hil/harness/dut/nmea_sentence.h"
+
+namespace hil::harness {
+namespace {
+
+constexpr double kKnotToMps = 1852.0 / 3600.0;
+constexpr std::int64_t kDayNs = 86400LL * 1000000000LL;
+
+Time FromUnixSeconds(double unix_s, std::int64_t start_unix_ns) {
+  const auto sec = static_cast<std::int64_t>(std::floor(unix_s));
+  const auto ns = static_cast<std::int64_t>(std::llround((unix_s - static_cast<double>(sec)) * 1e6)) * 1000;
+  return TimeFromNs(sec * 1000000000LL + ns - start_unix_ns);
+}
+
+std::optional<Eigen::Vector3d> Vec3(const nlohmann::json& j, const char* key) {
+  if (!j.contains(key) || !j[key].is_array() || j[key].size() != 3) return std::nullopt;
+  for (const auto& v : j[key]) {
+    if (!v.is_number()) return std::nullopt;
+  }
+  return Eigen::Vector3d(j[key][0].get<double>(), j[key][1].get<double>(), j[key][2].get<double>());
+}
+
+class JsonLinesReader final : public EstimateReader {
+ public:
+  explicit JsonLinesReader(std::int64_t start) : start_(start) {}
+  std::optional<EstimateRecord> Line(const std::string& text, std::int64_t wall_ns) override {
+    return JsonLine(nlohmann::json::parse(text, nullptr, false), wall_ns);
+  }
+  bool reads_json() const override { return true; }
+  std::optional<EstimateRecord> JsonLine(const nlohmann::json& j, std::int64_t wall_ns) override {
+    if (j.is_discarded() || !j.is_object()) return std::nullopt;
+    for (const char* k : {"tov_utc_s", "lat_deg", "lon_deg"}) {
+      if (!j.contains(k) || !j[k].is_number()) return std::nullopt;
+    }
+    EstimateRecord r;
+    r.t_validity = FromUnixSeconds(j["tov_utc_s"].get<double>(), start_);
+    r.lat_deg = j["lat_deg"].get<double>();
+    r.lon_deg = j["lon_deg"].get<double>();
+    if (j.contains("height_m") && j["height_m"].is_number()) r.height_m = j["height_m"].get<double>();
+    r.vel_enu_mps = Vec3(j, "vel_enu_mps");
+    r.pos_std_enu_m = Vec3(j, "pos_std_enu_m");
+    if (j.contains("yaw_deg") && j["yaw_deg"].is_number()) r.yaw_deg = j["yaw_deg"].get<double>();
+    r.wall_rx_ns = wall_ns;
+    return r;
+  }
+
+ private:
+  std::int64_t start_;
+};
+
+class GpsdJsonReader final : public EstimateReader {
+ public:
+  explicit GpsdJsonReader(std::int64_t start) : start_(start) {}
+  std::optional<EstimateRecord> Line(const std::string& text, std::int64_t wall_ns) override {
+    return JsonLine(nlohmann::json::parse(text, nullptr, false), wall_ns);
+  }
+  bool reads_json() const override { return true; }
+  std::optional<EstimateRecord> JsonLine(const nlohmann::json& j, std::int64_t wall_ns) override {
+    if (j.is_discarded() || !j.is_object() || j.value("class", "") != "TPV") return std::nullopt;
+    if (!j.contains("time") || !j["time"].is_string() || !j.contains("lat") || !j.contains("lon")) return std::nullopt;
+    if (j.value("mode", 0) < 2) return std::nullopt;
+    EstimateRecord r;
+    try {
+      r.t_validity = TimeFromNs(gnss::ParseIsoUtc(j["time"].get<std::string>()) - start_);
+    } catch (const std::invalid_argument&) {
+      return std::nullopt;
+    }
+    r.lat_deg = j["lat"].get<double>();
+    r.lon_deg = j["lon"].get<double>();
+    if (j.contains("altHAE") && j["altHAE"].is_number()) r.height_m = j["altHAE"].get<double>();
+    else if (j.contains("alt") && j["alt"].is_number()) r.height_m = j["alt"].get<double>();
+    if (j.contains("track") && j["track"].is_number()) {
+      r.yaw_deg = j["track"].get<double>();
+      if (j.contains("speed") && j["speed"].is_number()) {
+        const double v = j["speed"].get<double>(), psi = *r.yaw_deg * M_PI / 180.0;
+        const double climb = j.contains("climb") && j["climb"].is_number() ? j["climb"].get<double>() : 0.0;
+        r.vel_enu_mps = Eigen::Vector3d(v * std::sin(psi), v * std::cos(psi), climb);
+      }
+    }
+    if (j.contains("epx") && j.contains("epy") && j.contains("epv") && j["epx"].is_number() && j["epy"].is_number() &&
+        j["epv"].is_number()) {
+      // gpsd's epx/epy/epv are 95 % confidence half-widths; 1-sigma ≈ value / 1.96
+      r.pos_std_enu_m = Eigen::Vector3d(j["epx"].get<double>(), j["epy"].get<double>(), j["epv"].get<double>()) / 1.96;
+    }
+    r.wall_rx_ns = wall_ns;
+    return r;
+  }
+
+ private:
+  std::int64_t start_;
+};
+
+class NmeaReader final : public EstimateReader {
+ public:
+  explicit NmeaReader(std::int64_t start) : start_(start) {}
+  std::optional<EstimateRecord> Line(const std::string& text, std::int64_t wall_ns) override {
+    const NmeaParse p = ParseNmeaSentence(text);
+    if (!p.sentence) return std::nullopt;
+    const NmeaSentence& s = *p.sentence;
+    const auto& f = s.fields;
+    if (s.type() == "RMC" && f.size() >= 8 && f[1] == "A") {
+      last_rmc_tod_ = NmeaTimeOfDay(f[0]);
+      char* end = nullptr;
+      const double kn = std::strtod(f[6].c_str(), &end);
+      rmc_speed_mps_ = end != f[6].c_str() ? std::optional<double>(kn * kKnotToMps) : std::nullopt;
+      const double course = std::strtod(f[7].c_str(), &end);
+      rmc_course_deg_ = end != f[7].c_str() ? std::optional<double>(course) : std::nullopt;
+      return std::nullopt;
+    }
+    if (s.type() != "GGA" || f.size() < 11 || f[5].empty() || f[5] == "0") return std::nullopt;
+    const auto tod = NmeaTimeOfDay(f[0]);
+    const auto lat = NmeaDegrees(f[1], f[2]);
+    const auto lon = NmeaDegrees(f[3], f[4]);
+    if (!tod || !lat || !lon) return std::nullopt;
+    EstimateRecord r;
+    // the day: the one that puts this time of day closest to the scenario start
+    const std::int64_t day0 = start_ - ((start_ % kDayNs) + kDayNs) % kDayNs;
+    std::int64_t t_ns = day0 + static_cast<std::int64_t>(std::llround(*tod * 1e9));
+    if (t_ns < start_ - kDayNs / 2) t_ns += kDayNs;
+    r.t_validity = TimeFromNs(t_ns - start_);
+    r.lat_deg = *lat;
+    r.lon_deg = *lon;
+    const double msl = std::atof(f[8].c_str());
+    const double sep = f.size() > 10 ? std::atof(f[10].c_str()) : 0.0;
+    r.height_m = msl + sep;
+    if (last_rmc_tod_ && std::abs(*last_rmc_tod_ - *tod) < 1e-3 && rmc_speed_mps_ && rmc_course_deg_) {
+      const double psi = *rmc_course_deg_ * M_PI / 180.0;
+      r.vel_enu_mps = Eigen::Vector3d(*rmc_speed_mps_ * std::sin(psi), *rmc_speed_mps_ * std::cos(psi), 0.0);
+      r.yaw_deg = *rmc_course_deg_;
+    }
+    r.wall_rx_ns = wall_ns;
+    return r;
+  }
+
+ private:
+  std::int64_t start_;
+  std::optional<double> last_rmc_tod_, rmc_speed_mps_, rmc_course_deg_;
+};
+
+// NMEA 2000 from candump -l/-L lines on stdout, decoded frame by frame (n2k_bus_reader.h).
+class N2kCandumpReader final : public EstimateReader {
+ public:
+  explicit N2kCandumpReader(std::int64_t start) : bus_(start) {}
+  std::optional<EstimateRecord> Line(const std::string& text, std::int64_t wall_ns) override {
+    const std::size_t hash = text.find('#');
+    const std::size_t sp = text.rfind(' ', hash);
+    if (hash == std::string::npos || sp == std::string::npos || hash - sp - 1 != 8) return std::nullopt;
+    std::uint32_t id = 0;
+    std::string data;
+    try {
+      id = static_cast<std::uint32_t>(std::stoul(text.substr(sp + 1, 8), nullptr, 16));
+      const std::string hex = text.substr(hash + 1);
+      if (hex.size() % 2 != 0 || hex.empty()) return std::nullopt;
+      for (std::size_t i = 0; i < hex.size(); i += 2) data += static_cast<char>(std::stoi(hex.substr(i, 2), nullptr, 16));
+    } catch (const std::exception&) {
+      return std::nullopt;
+    }
+    return bus_.Frame(id, data, wall_ns);
+  }
+
+ private:
+  N2kBusReader bus_;
+};
+
+// n2k_socketcan: the solutions come from the bus (EstimateCollector::AttachBus); stdout lines (navd's
+// JSON with its health object) are diagnostics only.
+class NoLinesReader final : public EstimateReader {
+ public:
+  std::optional<EstimateRecord> Line(const std::string&, std::int64_t) override { return std::nullopt; }
+  bool SolutionsInLines() const override { return false; }
+};
+
+}  // namespace
+
+std::unique_ptr<EstimateReader> MakeEstimateReader(const std::string& output, std::int64_t start_unix_ns) {
+  if (output == "json_stdout") return std::make_unique<JsonLinesReader>(start_unix_ns);
+  if (output == "gpsd_json") return std::make_unique<GpsdJsonReader>(start_unix_ns);
+  if (output == "nmea_stdout" || output == "nmea_pty") return std::make_unique<NmeaReader>(start_unix_ns);
+  if (output == "n2k_candump") return std::make_unique<N2kCandumpReader>(start_unix_ns);
+  if (output == "n2k_socketcan") return std::make_unique<NoLinesReader>();
+  throw std::invalid_argument("unknown estimator output format '" + output + "'");
+}
+
+}  // namespace hil::harness

@@ -1,0 +1,151 @@
+#include "hil/harness/dut/estimator_process.h"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "hil/firmware_emu/link/realtime_pacer.h"
+#include "hil/harness/dut/process_group.h"
+
+namespace hil::harness {
+namespace {
+
+constexpr std::int64_t kStdoutEndWaitNs = 200'000'000;  // longest wait for the stdout pipe's end after Stop
+
+}  // namespace
+
+std::string ExitInfo::Describe() const {
+  if (signal != 0) return std::string("ended by signal ") + std::to_string(signal) + " (" + strsignal(signal) + ")";
+  return "exited with code " + std::to_string(exit_code);
+}
+
+EstimatorProcess::EstimatorProcess(const std::string& command, const std::string& stderr_path) {
+  int fds[2];
+  if (pipe2(fds, O_CLOEXEC) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
+  const int err_fd = open(stderr_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (err_fd < 0) {
+    close(fds[0]);
+    close(fds[1]);
+    throw std::runtime_error("cannot write " + stderr_path + ": " + std::strerror(errno));
+  }
+  pid_ = fork();
+  if (pid_ < 0) throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
+  if (pid_ == 0) {
+    setpgid(0, 0);  // own process group, so Stop() reaches the shell's children too
+    dup2(fds[1], STDOUT_FILENO);
+    dup2(err_fd, STDERR_FILENO);
+    const int devnull = open("/dev/null", O_RDONLY);
+    if (devnull >= 0) dup2(devnull, STDIN_FILENO);
+    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  setpgid(pid_, pid_);
+  close(fds[1]);
+  close(err_fd);
+  stdout_fd_ = fds[0];
+  reader_ = std::thread([this] { ReadLoop(); });
+}
+
+EstimatorProcess::~EstimatorProcess() {
+  Stop(0.5);
+  if (reader_.joinable()) reader_.join();
+  if (stdout_fd_ >= 0) close(stdout_fd_);
+}
+
+void EstimatorProcess::ReadLoop() {
+  std::string partial;
+  char buf[4096];
+  std::vector<OutputLine> got;
+  for (;;) {
+    const ssize_t n = read(stdout_fd_, buf, sizeof buf);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      stdout_closed_ = true;
+      break;
+    }
+    const std::int64_t now = link::RealtimePacer::MonotonicNs();
+    partial.append(buf, static_cast<std::size_t>(n));
+    got.clear();
+    std::size_t pos;
+    while ((pos = partial.find('\n')) != std::string::npos) {
+      OutputLine l{partial.substr(0, pos), now, nullptr};
+      partial.erase(0, pos + 1);
+      if (parse_json_ && !l.text.empty() && l.text.front() == '{') {
+        l.json = std::make_shared<const nlohmann::json>(nlohmann::json::parse(l.text, nullptr, false));
+      }
+      got.push_back(std::move(l));
+    }
+    if (got.empty()) continue;
+    std::lock_guard<std::mutex> lock(mu_);
+    for (OutputLine& l : got) lines_.push_back(std::move(l));
+    last_output_wall_ns_ = now;
+  }
+}
+
+void EstimatorProcess::Reap(int status) {
+  ExitInfo info;
+  info.exited = true;
+  if (WIFEXITED(status)) info.exit_code = WEXITSTATUS(status);
+  if (WIFSIGNALED(status)) info.signal = WTERMSIG(status);
+  exit_ = info;
+}
+
+bool EstimatorProcess::Running() {
+  if (exit_) return false;
+  int status = 0;
+  const pid_t r = waitpid(pid_, &status, WNOHANG);
+  if (r == pid_) {
+    Reap(status);
+    return false;
+  }
+  return true;
+}
+
+std::vector<OutputLine> EstimatorProcess::TakeLines() {
+  std::lock_guard<std::mutex> lock(mu_);
+  std::vector<OutputLine> out;
+  out.swap(lines_);
+  return out;
+}
+
+// A zombie of the group (the shell's child, reparented to an init that may reap it seconds later)
+// is not alive: it holds no file (not the stdout pipe) and runs no code.
+bool EstimatorProcess::GroupAlive() const {
+  return pid_ > 0 && kill(-pid_, 0) == 0 && !LiveGroupMembers(pid_).empty();
+}
+
+ExitInfo EstimatorProcess::Stop(double grace_s) {
+  // the whole process group, even when its leader has already ended: whatever the estimator started
+  // (a helper, a shell's children) must not outlive the run, nor keep its stdout pipe open
+  const bool was_running = Running();
+  if (!was_running && !GroupAlive()) return *exit_;
+  kill(-pid_, SIGTERM);
+  const std::int64_t deadline = link::RealtimePacer::MonotonicNs() + static_cast<std::int64_t>(grace_s * 1e9);
+  while (link::RealtimePacer::MonotonicNs() < deadline) {
+    const bool leader = Running();
+    if (!leader && !GroupAlive()) break;
+    usleep(1000);
+  }
+  const bool leader_left = Running();
+  if (leader_left || GroupAlive()) kill(-pid_, SIGKILL);
+  if (leader_left) {
+    int status = 0;
+    waitpid(pid_, &status, 0);
+    Reap(status);
+    exit_->killed_by_us = true;
+  }
+  if (was_running) exit_->exited = false;  // it ended because we asked
+  // its last lines: the reader thread reads the pipe to its end once no process holds it
+  const std::int64_t eof_deadline = link::RealtimePacer::MonotonicNs() + kStdoutEndWaitNs;
+  while (!stdout_closed_ && link::RealtimePacer::MonotonicNs() < eof_deadline) usleep(200);
+  return *exit_;
+}
+
+}  // namespace hil::harness

@@ -1,0 +1,190 @@
+#include "hil/harness/links/capture_format.h"
+
+#include "hil/harness/run/run_guard.h"
+
+#include <charconv>
+#include <sstream>
+#include <stdexcept>
+
+#include "hil/firmware_emu/link/candump_log.h"
+
+namespace hil::harness {
+namespace {
+
+constexpr std::string_view kDirNames[] = {"tx", "rx", "drop", "ftx", "frx"};
+
+std::optional<std::int64_t> ToInt(std::string_view s) {
+  std::int64_t v = 0;
+  const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc{} || p != s.data() + s.size()) return std::nullopt;
+  return v;
+}
+
+std::vector<std::string_view> Fields(std::string_view line) {
+  std::vector<std::string_view> f;
+  while (!line.empty()) {
+    const std::size_t a = line.find_first_not_of(' ');
+    if (a == std::string_view::npos) break;
+    line.remove_prefix(a);
+    const std::size_t b = line.find(' ');
+    f.push_back(line.substr(0, b));
+    line = b == std::string_view::npos ? std::string_view{} : line.substr(b);
+  }
+  return f;
+}
+
+}  // namespace
+
+std::string_view CaptureDirName(CaptureDir d) { return kDirNames[static_cast<int>(d)]; }
+
+std::string ToHex(std::string_view bytes) {
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string o;
+  o.reserve(bytes.size() * 2);
+  for (unsigned char c : bytes) {
+    o += kHex[c >> 4];
+    o += kHex[c & 15];
+  }
+  return o;
+}
+
+std::optional<std::string> FromHex(std::string_view hex) {
+  if (hex.size() % 2 != 0) return std::nullopt;
+  const auto nib = [](char c) -> int {
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    return -1;
+  };
+  std::string out(hex.size() / 2, '\0');
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const int hi = nib(hex[2 * i]), lo = nib(hex[2 * i + 1]);
+    if (hi < 0 || lo < 0) return std::nullopt;
+    out[i] = static_cast<char>(hi << 4 | lo);
+  }
+  return out;
+}
+
+std::string FormatCaptureLine(const CaptureRecord& r) {
+  std::string o(CaptureDirName(r.dir));
+  o += ' ' + std::to_string(r.t_emu_ns) + ' ' + std::to_string(r.byte_period_ns) + ' ' + std::to_string(r.t_wall_ns) +
+       ' ' + (r.name.empty() ? std::string("-") : r.name) + ' ';
+  o += r.is_frame() ? link::FormatCanFrameText(r.frame) : (r.bytes.empty() ? std::string("-") : ToHex(r.bytes));
+  if (!r.wall_offsets_ns.empty()) {
+    o += ' ';
+    for (std::size_t k = 0; k < r.wall_offsets_ns.size(); ++k) {
+      if (k) o += ',';
+      o += std::to_string(r.wall_offsets_ns[k]);
+    }
+  }
+  return o;
+}
+
+std::optional<CaptureRecord> ParseCaptureLine(std::string_view line) {
+  while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.remove_suffix(1);
+  if (line.empty() || line.front() == '#') return std::nullopt;
+  const auto f = Fields(line);
+  if (f.size() != 6 && f.size() != 7) return std::nullopt;
+  CaptureRecord r;
+  bool known = false;
+  for (int d = 0; d < 5; ++d) {
+    if (f[0] == kDirNames[d]) {
+      r.dir = static_cast<CaptureDir>(d);
+      known = true;
+    }
+  }
+  const auto t = ToInt(f[1]), period = ToInt(f[2]), wall = ToInt(f[3]);
+  if (!known || !t || !period || !wall) return std::nullopt;
+  r.t_emu_ns = *t;
+  r.byte_period_ns = *period;
+  r.t_wall_ns = *wall;
+  r.name = std::string(f[4]);
+  if (r.is_frame()) {
+    const auto frame = link::ParseCanFrameText(f[5]);
+    if (!frame) return std::nullopt;
+    r.frame = *frame;
+  } else if (f[5] != "-") {
+    auto bytes = FromHex(f[5]);
+    if (!bytes) return std::nullopt;
+    r.bytes = std::move(*bytes);
+  }
+  if (f.size() == 7) {
+    std::string_view rest = f[6];
+    while (!rest.empty()) {
+      const std::size_t comma = rest.find(',');
+      const auto v = ToInt(rest.substr(0, comma));
+      if (!v) return std::nullopt;
+      r.wall_offsets_ns.push_back(*v);
+      rest = comma == std::string_view::npos ? std::string_view{} : rest.substr(comma + 1);
+    }
+    if (!r.is_frame() && r.wall_offsets_ns.size() != r.bytes.size()) return std::nullopt;
+  }
+  return r;
+}
+
+CaptureWriter::CaptureWriter(const std::string& path, const CaptureHeader& h) : out_(path), path_(path) {
+  if (!out_) throw std::runtime_error("cannot write the capture " + path);
+  out_ << "# hil capture v2\n# link " << h.link << ' ' << h.kind << ' ';
+  if (h.kind == "can") out_ << h.iface;
+  else out_ << h.baud;
+  out_ << "\n";
+  if (h.start_unix_ns != 0) out_ << "# start_unix_ns " << h.start_unix_ns << "\n";
+  out_ << "# columns: dir t_emu_ns byte_period_ns t_wall_ns name data [wall_offsets_ns]"
+          " (format: vectors/captures/README.md)\n";
+  out_.flush();
+}
+
+void CaptureWriter::Write(const CaptureRecord& r) {
+  // buffered (no flush per record: a 100 Hz link would cost a write per message); a failed write
+  // shows when the buffer goes out
+  out_ << FormatCaptureLine(r) << '\n';
+  if (!out_) NoteWriteFailure(path_);
+}
+
+void CaptureWriter::Flush() {
+  out_.flush();
+  if (!out_) NoteWriteFailure(path_);
+}
+
+CaptureWriter::~CaptureWriter() { Flush(); }
+
+Capture ReadCapture(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read the capture " + path);
+  Capture c;
+  c.header.version = 0;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    if (line.front() == '#') {
+      std::istringstream h(line.substr(1));
+      std::string word;
+      h >> word;
+      if (word == "hil") {
+        std::string cap, v;
+        h >> cap >> v;  // "capture v2" or "capture v1:" followed by "link NAME, baud N"
+        if (v.size() >= 2 && v[0] == 'v') c.header.version = v[1] - '0';
+        if (c.header.version == 1) {
+          std::string link_word, name, baud_word;
+          h >> link_word >> name >> baud_word >> c.header.baud;
+          if (!name.empty() && name.back() == ',') name.pop_back();
+          c.header.link = name;
+          c.header.kind = "serial";
+        }
+      } else if (word == "link") {
+        h >> c.header.link >> c.header.kind;
+        if (c.header.kind == "can") h >> c.header.iface;
+        else h >> c.header.baud;
+      } else if (word == "start_unix_ns") {
+        h >> c.header.start_unix_ns;
+      }
+      continue;
+    }
+    if (auto r = ParseCaptureLine(line)) c.records.push_back(std::move(*r));
+    else ++c.unreadable_lines;
+  }
+  if (c.header.version == 0) throw std::runtime_error(path + " is not a hil capture (no '# hil capture' header)");
+  return c;
+}
+
+}  // namespace hil::harness

@@ -1,0 +1,149 @@
+#include "hil/harness/links/serial_endpoint.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "hil/firmware_emu/link/pty_port.h"
+#include "hil/firmware_emu/link/tty_port.h"
+
+namespace hil::harness {
+namespace {
+
+std::unique_ptr<link::SerialPort> OpenPort(const std::string& link_name, const std::string& link_path, int baud) {
+  if (link::IsDevicePath(link_name)) return std::make_unique<link::TtyPort>(link_name, baud);
+  return std::make_unique<link::PtyPort>(link_path, baud);
+}
+
+CaptureHeader SerialHeader(const std::string& link_name, int baud) {
+  CaptureHeader h;
+  h.link = link_name;
+  h.kind = "serial";
+  h.baud = baud;
+  return h;
+}
+
+}  // namespace
+
+std::string CaptureFileName(const std::string& link_name) {
+  const std::size_t slash = link_name.rfind('/');
+  return (slash == std::string::npos ? link_name : link_name.substr(slash + 1)) + ".cap";
+}
+
+SerialEndpoint::SerialEndpoint(std::string link_name, const std::string& link_path, int baud,
+                               std::size_t tx_buffer_bytes, const std::string& capture_path)
+    : link_name_(std::move(link_name)),
+      port_(OpenPort(link_name_, link_path, baud)),
+      uart_(baud, tx_buffer_bytes),
+      capture_(capture_path, SerialHeader(link_name_, baud)) {}
+
+SerialEndpoint::~SerialEndpoint() {
+  if (pending_offset_ > 0) FinishChunk();
+  for (const auto& [chunk, name] : pending_) {
+    CaptureRecord r;
+    r.dir = CaptureDir::kTx;
+    r.t_emu_ns = ToNs(chunk.t_first);
+    r.byte_period_ns = chunk.byte_period.count();
+    r.name = name;
+    r.bytes = chunk.bytes;
+    capture_.Write(r);
+  }
+}
+
+bool SerialEndpoint::Queue(const SerialMessage& msg) {
+  auto chunk = uart_.Submit(msg.t_ready, msg.bytes);
+  if (!chunk) {
+    CaptureRecord r;
+    r.dir = CaptureDir::kDrop;
+    r.t_emu_ns = ToNs(msg.t_ready);
+    r.name = msg.name;
+    r.bytes = msg.bytes;
+    capture_.Write(r);
+    return false;
+  }
+  pending_.emplace_back(std::move(*chunk), msg.name.empty() ? "-" : msg.name);
+  return true;
+}
+
+std::optional<Time> SerialEndpoint::next_byte_time() const {
+  if (pending_.empty()) return std::nullopt;
+  return pending_.front().first.t_byte(pending_offset_);
+}
+
+void SerialEndpoint::FinishChunk() {
+  // a partly written chunk (end of run) keeps only the bytes that left
+  current_.bytes.resize(current_.wall_offsets_ns.size());
+  capture_.Write(current_);
+  current_ = CaptureRecord{};
+}
+
+void SerialEndpoint::WriteNextByte(const link::RealtimePacer& pacer) {
+  if (pending_.empty()) return;
+  const auto& [c, name] = pending_.front();
+  const Time t = c.t_byte(pending_offset_);
+  const std::int64_t scheduled = pacer.WallNsOf(t);
+  pacer.SleepUntil(t);
+  port_->Write(std::string_view(c.bytes).substr(pending_offset_, 1));
+  const std::int64_t wall = link::RealtimePacer::MonotonicNs();
+  schedule_error_us_.push_back(static_cast<double>(wall - scheduled) * 1e-3);
+  if (pending_offset_ == 0) {
+    current_ = CaptureRecord{};
+    current_.dir = CaptureDir::kTx;
+    current_.t_emu_ns = ToNs(c.t_first);
+    current_.byte_period_ns = c.byte_period.count();
+    current_.t_wall_ns = wall;
+    current_.name = name;
+    current_.bytes = c.bytes;
+  }
+  current_.wall_offsets_ns.push_back(wall - current_.t_wall_ns);
+  if (++pending_offset_ == c.bytes.size()) {
+    FinishChunk();
+    pending_.pop_front();
+    pending_offset_ = 0;
+  }
+}
+
+void SerialEndpoint::WriteChunks(std::size_t chunks) {
+  chunks = std::min(chunks, pending_.size());
+  if (chunks == 0) return;
+  // one write for the chunks: the host reads a byte stream, the chunking is not its business
+  write_buffer_.clear();
+  for (std::size_t i = 0; i < chunks; ++i) {
+    write_buffer_.append(pending_[i].first.bytes, pending_offset_, std::string::npos);
+    pending_offset_ = 0;
+  }
+  port_->Write(write_buffer_);
+  for (std::size_t i = 0; i < chunks; ++i) {
+    const auto& [c, name] = pending_.front();
+    CaptureRecord r;
+    r.dir = CaptureDir::kTx;
+    r.t_emu_ns = ToNs(c.t_first);
+    r.byte_period_ns = c.byte_period.count();
+    r.t_wall_ns = 0;  // virtual mode: no wall time, so a scenario and seed give an identical capture
+    r.name = name;
+    r.bytes = c.bytes;
+    capture_.Write(r);
+    pending_.pop_front();
+  }
+}
+
+std::size_t SerialEndpoint::queued_bytes() const {
+  std::size_t n = 0;
+  for (const auto& [c, name] : pending_) n += c.bytes.size();
+  return n - pending_offset_;
+}
+
+std::string SerialEndpoint::PollHost(Time t_now) {
+  std::string rx = port_->ReadAvailable();
+  if (!rx.empty()) {
+    CaptureRecord r;
+    r.dir = CaptureDir::kRx;
+    r.t_emu_ns = ToNs(t_now);
+    r.t_wall_ns = link::RealtimePacer::MonotonicNs();
+    r.name = "host";
+    r.bytes = rx;
+    capture_.Write(r);
+  }
+  return rx;
+}
+
+}  // namespace hil::harness

@@ -1,0 +1,101 @@
+#include "hil/harness/run/device_set.h"
+
+#include "hil/firmware_emu/gnss/neo5m_device.h"
+#include "hil/firmware_emu/mcu/mcu_device.h"
+
+namespace hil::harness {
+namespace {
+
+// Seeds of independent random streams derived from the run's seed.
+constexpr std::uint64_t kSeedStride = 1000003ULL;
+enum SeedStream : std::uint64_t { kGnssStream = 1, kMcuStream = 2 };
+constexpr std::uint64_t kGnssCommonOffset = 0x5151;  // the error part shared by all receivers
+constexpr std::uint64_t kReceiverStride = 7919;       // each receiver's own part
+
+// One Neo5mDevice per receiver of the gnss section, each on its own pty (ttyGPS, ttyGPS1, ...).
+void AddGnss(const Scenario& s, std::uint64_t seed, const std::string& dir, DeviceSet& set) {
+  const std::uint64_t base = seed * kSeedStride + kGnssStream;
+  for (std::size_t i = 0; i < s.gnss.receivers.size(); ++i) {
+    const GnssReceiverSpec& rx = s.gnss.receivers[i];
+    gnss::Neo5mConfig cfg;
+    cfg.name = "gps" + std::to_string(i);
+    cfg.profile = s.gnss.profile;
+    cfg.baud = s.gnss.baud;
+    cfg.rate_hz = s.gnss.rate_hz;
+    cfg.output_lag = DurationFromSeconds(s.gnss.output_lag_s);
+    cfg.start_unix_ns = s.start_unix_ns;
+    cfg.model = s.gnss.model;
+    cfg.model->p_BA_B_m = rx.p_BA_B_m;
+    cfg.start = s.gnss.start;
+    cfg.faults = s.gnss.faults;
+    // the scenario's global fault timeline: outages, data gaps and glitches reach every receiver
+    for (const Fault& f : s.faults.faults) {
+      gnss::GnssFault g;
+      g.start_s = ToSeconds(f.start);
+      g.end_s = ToSeconds(f.end);
+      if (f.kind == FaultKind::kGnssOutage) {
+        g.kind = gnss::GnssFault::Kind::kOutage;
+      } else if (f.kind == FaultKind::kGnssDataGap) {
+        g.kind = gnss::GnssFault::Kind::kDataGap;
+      } else if (f.kind == FaultKind::kGnssGlitch) {
+        g.kind = gnss::GnssFault::Kind::kStep;
+        g.offset_N_m = Eigen::Vector3d(f.Param("east_m", 0), f.Param("north_m", 0), f.Param("up_m", 0));
+      } else if (f.kind == FaultKind::kGnssOverload) {
+        g.kind = gnss::GnssFault::Kind::kOverload;
+      } else {
+        continue;
+      }
+      cfg.faults.push_back(g);
+    }
+    cfg.common_seed = base + kGnssCommonOffset;
+    auto dev = std::make_unique<gnss::Neo5mDevice>(cfg, base + kReceiverStride * i);
+    const gnss::Neo5mDevice* raw = dev.get();
+    set.fix_sources.push_back([raw] { return &raw->last_fix(); });
+    const std::string path = dir + "/" + rx.link;
+    std::vector<std::unique_ptr<SerialEndpoint>> ports;
+    ports.push_back(std::make_unique<SerialEndpoint>(rx.link, path, dev->baud(0), s.gnss.tx_buffer_bytes,
+                                                     dir + "/captures/" + rx.link + ".cap"));
+    set.links.emplace_back(rx.link, path);
+    set.devices.push_back(std::move(dev));
+    set.endpoints.push_back(std::move(ports));
+  }
+}
+
+// The IMU board's microcontroller, when the scenario has an `mcu:` section: one serial link
+// (RUN_DIR/<link>, e.g. ttyIMU); its CAN frames leave through DeviceOutput::can.
+void AddMcu(const Scenario& s, std::uint64_t seed, const std::string& dir, DeviceSet& set) {
+  if (!s.mcu.enabled) return;
+  mcu::McuConfig cfg = s.mcu.config;
+  cfg.start_unix_ns = s.start_unix_ns;
+  // the scenario's global fault timeline: an mcu_reset keeps the MCU silent until its end_s
+  for (const Fault& f : s.faults.OfKind(FaultKind::kMcuReset)) {
+    mcu::McuFault r;
+    r.kind = mcu::FaultKind::kReset;
+    r.start_s = ToSeconds(f.start);
+    r.duration_s = ToSeconds(f.end - f.start);
+    cfg.faults.push_back(r);
+  }
+  auto dev = std::make_unique<mcu::McuDevice>(cfg, seed * kSeedStride + kMcuStream);
+  const std::string path = dir + "/" + s.mcu.link;
+  std::vector<std::unique_ptr<SerialEndpoint>> ports;
+  ports.push_back(std::make_unique<SerialEndpoint>(s.mcu.link, path, cfg.baud, s.mcu.tx_buffer_bytes,
+                                                   dir + "/captures/" + s.mcu.link + ".cap"));
+  set.links.emplace_back(s.mcu.link, path);
+  set.devices.push_back(std::move(dev));
+  set.endpoints.push_back(std::move(ports));
+}
+
+}  // namespace
+
+DeviceSet BuildDevices(const Scenario& scenario, std::uint64_t seed, const std::string& run_dir) {
+  DeviceSet set;
+  if (!scenario.can.interface.empty()) {
+    set.can = std::make_unique<CanEndpoint>(scenario.can.interface, run_dir + "/captures", scenario.start_unix_ns,
+                                            scenario.can.fd);
+  }
+  AddGnss(scenario, seed, run_dir, set);
+  AddMcu(scenario, seed, run_dir, set);
+  return set;
+}
+
+}  // namespace hil::harness

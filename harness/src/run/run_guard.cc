@@ -1,0 +1,60 @@
+#include "hil/harness/run/run_guard.h"
+
+#include <signal.h>
+
+#include <atomic>
+#include <csignal>
+#include <mutex>
+
+namespace hil::harness {
+namespace {
+
+volatile std::sig_atomic_t g_signal = 0;
+constexpr int kCaught[] = {SIGINT, SIGTERM, SIGHUP};
+constexpr int kIgnored[] = {SIGPIPE, SIGXFSZ};
+struct sigaction g_old[sizeof kCaught / sizeof kCaught[0] + sizeof kIgnored / sizeof kIgnored[0]];
+
+void OnSignal(int sig) { g_signal = sig; }
+
+std::mutex g_mu;
+std::optional<std::string> g_write_failure;
+
+}  // namespace
+
+InterruptGuard::InterruptGuard() {
+  g_signal = 0;
+  std::size_t k = 0;
+  struct sigaction sa {};
+  sa.sa_handler = OnSignal;
+  sigemptyset(&sa.sa_mask);
+  for (int s : kCaught) sigaction(s, &sa, &g_old[k++]);
+  struct sigaction ign {};
+  ign.sa_handler = SIG_IGN;
+  sigemptyset(&ign.sa_mask);
+  for (int s : kIgnored) sigaction(s, &ign, &g_old[k++]);
+}
+
+InterruptGuard::~InterruptGuard() {
+  std::size_t k = 0;
+  for (int s : kCaught) sigaction(s, &g_old[k++], nullptr);
+  for (int s : kIgnored) sigaction(s, &g_old[k++], nullptr);
+}
+
+int InterruptGuard::received() { return g_signal; }
+
+void NoteWriteFailure(const std::string& path) {
+  std::lock_guard<std::mutex> lock(g_mu);
+  if (!g_write_failure) g_write_failure = path;
+}
+
+std::optional<std::string> FirstWriteFailure() {
+  std::lock_guard<std::mutex> lock(g_mu);
+  return g_write_failure;
+}
+
+void ClearWriteFailures() {
+  std::lock_guard<std::mutex> lock(g_mu);
+  g_write_failure.reset();
+}
+
+}  // namespace hil::harness

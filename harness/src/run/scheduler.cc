@@ -1,0 +1,189 @@
+#include "hil/harness/run/scheduler.h"
+
+#include <poll.h>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "hil/truth/truth_integrator.h"
+
+namespace hil::harness {
+namespace {
+
+/// In real time, how long the scheduler sleeps at most before it looks for host bytes again.
+constexpr Duration kHostPollPeriod = std::chrono::milliseconds(1);
+
+}  // namespace
+
+Scheduler::Scheduler(const Scenario& scenario, DeviceSet& devices, ByteFaultInjector& faults,
+                     const link::RealtimePacer* pacer, std::ostream& fixes_csv)
+    : scenario_(scenario), set_(devices), faults_(faults), pacer_(pacer), fixes_csv_(fixes_csv) {}
+
+void Scheduler::Dispatch(std::size_t d, DeviceOutput& out) {
+  std::vector<SerialMessage> carried;
+  for (SerialMessage& m : out.serial) {
+    SerialEndpoint& ep = *set_.endpoints[d].at(static_cast<std::size_t>(m.port));
+    carried.clear();
+    faults_.Process(m, ep.link_name(), ep.uart().baud(), carried);
+    for (const SerialMessage& c : carried) {
+      if (ep.Queue(c)) {
+        if (!pacer_) writes_.Add(ep, c.bytes.size());
+        continue;
+      }
+      if (!recorder_) continue;
+      // the receiver's transmit buffer overflowed: count it against an active output overload
+      if (const auto i = recorder_->Active(FaultKind::kGnssOverload, c.t_ready)) recorder_->Note(*i, c.t_ready);
+    }
+  }
+  if (set_.can) {
+    faults_.ProcessCan(out.can);
+    for (const CanFrame& f : out.can) set_.can->Queue(f);
+  }
+  out.clear();
+  if (!pacer_) {
+    if (!write_refused_ && !writes_.Pump(false)) write_refused_ = true;
+    if (set_.can) set_.can->SendAll();
+  }
+}
+
+bool Scheduler::PollHosts(Time t_host, DeviceOutput& out) {
+  // one poll() for every port instead of a read() each: hosts rarely write
+  if (host_fds_.empty()) {
+    for (const auto& ports : set_.endpoints) {
+      for (const auto& ep : ports) host_fds_.push_back({ep->host_input_fd(), POLLIN, 0});
+    }
+  }
+  for (pollfd& p : host_fds_) p.revents = 0;
+  poll(host_fds_.data(), host_fds_.size(), 0);
+  bool replied = false;
+  std::size_t k = 0;
+  for (std::size_t d = 0; d < set_.devices.size(); ++d) {
+    const Time t_rx = pacer_ ? pacer_->SimTimeOfWall(link::RealtimePacer::MonotonicNs()) : t_host;
+    for (std::size_t p = 0; p < set_.endpoints[d].size(); ++p) {
+      const pollfd& pf = host_fds_[k++];
+      if (pf.fd >= 0 && pf.revents == 0) continue;  // nothing from this host (errors and hang-ups are read)
+      if (const std::string rx = set_.endpoints[d][p]->PollHost(t_rx); !rx.empty()) {
+        set_.devices[d]->OnHostBytes(static_cast<int>(p), t_rx, rx, out);
+        set_.endpoints[d][p]->set_baud(set_.devices[d]->baud(static_cast<int>(p)));
+        replied = replied || !out.serial.empty() || !out.can.empty();
+        Dispatch(d, out);
+      }
+    }
+  }
+  // virtual mode: a reply goes to the host now, not after what the run may hold back
+  if (!pacer_ && replied && !write_refused_ && !writes_.Pump(true)) write_refused_ = true;
+  return replied;
+}
+
+void Scheduler::RecordFixes(Time t) {
+  // the raw-GNSS baseline is one receiver, the first (its antenna is the scenario's antenna lever
+  // arm); further receivers of a multi-antenna scenario feed the estimator, not the baseline
+  if (set_.fix_sources.empty()) return;
+  {
+    const gnss::GnssFix& fix = *set_.fix_sources.front()();
+    if (fix.t_validity != t) return;
+    if (recorder_) {
+      const auto outage = recorder_->Active(FaultKind::kGnssOutage, t);
+      if (outage && !fix.valid()) recorder_->Note(*outage, t);
+      const auto gap = recorder_->Active(FaultKind::kGnssDataGap, t);
+      if (gap) recorder_->Note(*gap, t);  // the receiver computed this epoch but sent nothing
+      const auto glitch = recorder_->Active(FaultKind::kGnssGlitch, t);
+      if (glitch && fix.valid()) recorder_->Note(*glitch, t);
+    }
+    if (!fix.valid()) return;
+    EstimateRecord r;
+    r.t_validity = fix.t_validity;
+    r.lat_deg = fix.lat_deg;
+    r.lon_deg = fix.lon_deg;
+    r.height_m = fix.height_m;
+    r.vel_enu_mps = Eigen::Vector3d(fix.vel_e_mps, fix.vel_n_mps, -fix.vel_d_mps);
+    fixes_.push_back(r);
+    char line[256];
+    std::snprintf(line, sizeof line, "%.3f,%.9f,%.9f,%.4f,%.4f,%.4f,%.4f,%d,%.2f\n", ToSeconds(fix.t_validity),
+                  fix.lat_deg, fix.lon_deg, fix.height_m, fix.vel_n_mps, fix.vel_e_mps, fix.vel_d_mps, fix.num_sv,
+                  fix.hdop);
+    fixes_csv_ << line;
+  }
+}
+
+void Scheduler::Run(const std::function<bool(Time)>& keep_going) {
+  truth::TruthIntegrator truth(scenario_.truth);
+  const Time t_end = TimeFromSeconds(scenario_.duration_s);
+  DeviceOutput out;
+  for (;;) {
+    // the next action in emulated time: a device event or (real time) a byte leaving a UART
+    std::optional<Time> t_event;
+    for (const auto& dev : set_.devices) {
+      if (!t_event || dev->next_event_time() < *t_event) t_event = dev->next_event_time();
+    }
+    if (!t_event) break;
+    if (pacer_) {
+      std::optional<Time> t_byte;
+      SerialEndpoint* ep_next = nullptr;
+      for (auto& ports : set_.endpoints) {
+        for (auto& ep : ports) {
+          const auto tb = ep->next_byte_time();
+          if (tb && (!t_byte || *tb < *t_byte)) {
+            t_byte = tb;
+            ep_next = ep.get();
+          }
+        }
+      }
+      const std::optional<Time> t_frame = set_.can ? set_.can->next_frame_time() : std::nullopt;
+      if (t_frame && (!t_byte || *t_frame <= *t_byte) && (*t_frame < *t_event || *t_event > t_end)) {
+        set_.can->SendNext(*pacer_);
+        continue;
+      }
+      if (ep_next && (*t_byte < *t_event || *t_event > t_end)) {
+        ep_next->WriteNextByte(*pacer_);
+        PollHosts(*t_byte, out);  // a host's command arrives while the device talks
+        continue;
+      }
+      if (*t_event <= t_end) {
+        // idle until the next event, but a host command is read when it arrives (within ~1 ms),
+        // not at the next event: the device may answer in between
+        const Time t_wake = std::min(*t_event, pacer_->SimTimeOfWall(link::RealtimePacer::MonotonicNs()) + kHostPollPeriod);
+        pacer_->SleepUntil(t_wake);
+        if (PollHosts(t_wake, out) || t_wake < *t_event) continue;
+      }
+    }
+    if (*t_event > t_end) break;
+    const TruthSample ts = truth.Sample(*t_event);
+    for (std::size_t d = 0; d < set_.devices.size(); ++d) {
+      if (set_.devices[d]->next_event_time() != *t_event) continue;
+      set_.devices[d]->OnEvent(ts, out);
+      Dispatch(d, out);
+    }
+    RecordFixes(*t_event);
+    // configuration commands from the host reach the device with their arrival time
+    PollHosts(*t_event, out);
+    t_last_event_ = *t_event;
+    PollBus();
+    if (write_refused_ || !keep_going(*t_event)) break;
+  }
+}
+
+const std::vector<CanFrame>& Scheduler::PollBus() {
+  if (set_.can) {
+    const Time t_bus = pacer_ ? pacer_->SimTimeOfWall(link::RealtimePacer::MonotonicNs()) : t_last_event_;
+    for (const CanFrame& f : set_.can->PollBus(t_bus)) bus_frames_.push_back(f);
+  }
+  return bus_frames_;
+}
+
+void Scheduler::Flush() {
+  if (!pacer_) {
+    if (!write_refused_ && !writes_.Pump(true)) write_refused_ = true;
+    return;
+  }
+  for (auto& ports : set_.endpoints) {
+    for (auto& ep : ports) {
+      while (ep->next_byte_time()) ep->WriteNextByte(*pacer_);
+    }
+  }
+  if (set_.can) {
+    while (set_.can->next_frame_time()) set_.can->SendNext(*pacer_);
+  }
+}
+
+}  // namespace hil::harness

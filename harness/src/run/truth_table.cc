@@ -1,0 +1,128 @@
+#include "hil/harness/run/truth_table.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace hil::harness {
+
+TruthTable::TruthTable(const truth::TruthConfig& config, std::vector<Time> times)
+    : times_(std::move(times)), frame_(config.origin) {
+  std::erase_if(times_, [](Time t) { return t < Time{}; });
+  std::sort(times_.begin(), times_.end());
+  times_.erase(std::unique(times_.begin(), times_.end()), times_.end());
+  samples_.reserve(times_.size());
+  truth::TruthIntegrator truth(config);
+  for (const Time t : times_) samples_.push_back(truth.Sample(t));
+}
+
+TruthTable::TruthTable(const truth::TruthConfig& config, std::vector<Time> times, std::vector<TruthSample> samples)
+    : times_(std::move(times)), samples_(std::move(samples)), frame_(config.origin) {}
+
+bool TruthTable::Has(Time t) const { return std::binary_search(times_.begin(), times_.end(), t); }
+
+const TruthSample& TruthTable::At(Time t) const {
+  const auto it = std::lower_bound(times_.begin(), times_.end(), t);
+  if (it == times_.end() || *it != t) throw std::out_of_range("truth table: no sample at the time asked");
+  return samples_[static_cast<std::size_t>(it - times_.begin())];
+}
+
+TruthTableBuilder::TruthTableBuilder(const truth::TruthConfig& config)
+    : config_(config), worker_([this] { Work(); }) {}
+
+TruthTableBuilder::~TruthTableBuilder() {
+  {
+    std::lock_guard<std::mutex> lock(mu_);
+    finishing_ = true;
+  }
+  cv_.notify_all();
+  if (worker_.joinable()) worker_.join();
+}
+
+void TruthTableBuilder::Ask(const std::vector<Time>& times) {
+  std::lock_guard<std::mutex> lock(mu_);
+  for (const Time t : times) {
+    if (t < Time{}) continue;
+    if (started_ && t < position_) late_.push_back(t);
+    else asked_.push(t);
+  }
+}
+
+void TruthTableBuilder::Advance(Time t) {
+  {
+    std::lock_guard<std::mutex> lock(mu_);
+    if (has_watermark_ && t <= watermark_) return;
+    watermark_ = t;
+    has_watermark_ = true;
+    if (t - notified_watermark_ < std::chrono::seconds(1)) return;
+    notified_watermark_ = t;
+  }
+  cv_.notify_one();
+}
+
+void TruthTableBuilder::Work() {
+  truth::TruthIntegrator truth(config_);
+  std::vector<Time> batch;
+  for (;;) {
+    batch.clear();
+    {
+      std::unique_lock<std::mutex> lock(mu_);
+      cv_.wait(lock, [&] {
+        return finishing_ || (has_watermark_ && !asked_.empty() && asked_.top() <= watermark_);
+      });
+      // take what the watermark allows (everything when finishing), in time order
+      while (!asked_.empty() && (finishing_ || asked_.top() <= watermark_)) {
+        batch.push_back(asked_.top());
+        asked_.pop();
+      }
+      if (!batch.empty()) {
+        started_ = true;
+        position_ = batch.back();
+      }
+      if (batch.empty() && finishing_) return;
+    }
+    for (const Time t : batch) {
+      if (!done_times_.empty() && done_times_.back() == t) continue;
+      done_times_.push_back(t);
+      done_samples_.push_back(truth.Sample(t));
+    }
+  }
+}
+
+TruthTable TruthTableBuilder::Finish() {
+  {
+    std::lock_guard<std::mutex> lock(mu_);
+    finishing_ = true;
+  }
+  cv_.notify_all();
+  if (worker_.joinable()) worker_.join();
+  std::vector<Time> times = std::move(done_times_);
+  std::vector<TruthSample> samples = std::move(done_samples_);
+  // stragglers (asked behind the thread): one more pass for them, merged in time order
+  std::erase_if(late_, [&](Time t) { return std::binary_search(times.begin(), times.end(), t); });
+  if (!late_.empty()) {
+    const TruthTable extra(config_, late_);
+    std::vector<Time> all_t;
+    std::vector<TruthSample> all_s;
+    std::size_t i = 0, j = 0;
+    const std::vector<Time> extra_t = [&] {
+      std::vector<Time> v = late_;
+      std::sort(v.begin(), v.end());
+      v.erase(std::unique(v.begin(), v.end()), v.end());
+      return v;
+    }();
+    while (i < times.size() || j < extra_t.size()) {
+      if (j == extra_t.size() || (i < times.size() && times[i] < extra_t[j])) {
+        all_t.push_back(times[i]);
+        all_s.push_back(samples[i++]);
+      } else {
+        all_t.push_back(extra_t[j]);
+        all_s.push_back(extra.At(extra_t[j++]));
+      }
+    }
+    times = std::move(all_t);
+    samples = std::move(all_s);
+  }
+  return TruthTable(config_, std::move(times), std::move(samples));
+}
+
+}  // namespace hil::harness

@@ -1,0 +1,131 @@
+#include "hil/harness/run/virtual_gate.h"
+
+#include <sched.h>
+#include <sys/prctl.h>
+#include <time.h>
+
+#include <algorithm>
+
+namespace hil::harness {
+namespace {
+
+// A wait first yields the CPU a few times (the host, woken by the bytes, usually reads them
+// within tens of microseconds), then sleeps in short steps that grow to 1 ms for a host that is
+// busy or descheduled on a loaded machine.
+constexpr int kYieldSteps = 16;
+constexpr long kFirstSleepNs = 20'000;
+constexpr long kLongestSleepNs = 1'000'000;
+
+void SleepNs(long ns) {
+  timespec ts{0, ns};
+  nanosleep(&ts, nullptr);
+}
+
+}  // namespace
+
+VirtualGate::VirtualGate(std::vector<SerialEndpoint*> host_links, std::size_t max_link_backlog_bytes, WaitStep on_wait)
+    : max_backlog_(max_link_backlog_bytes), on_wait_(std::move(on_wait)) {
+  for (const SerialEndpoint* ep : host_links) links_.push_back({ep, 0});
+  // short sleeps mean short sleeps: the default timer slack (50 µs) would stretch every step
+  prctl(PR_SET_TIMERSLACK, 1000UL, 0UL, 0UL, 0UL);
+}
+
+VirtualGate::Link* VirtualGate::Find(const SerialEndpoint& ep) {
+  for (Link& l : links_) {
+    if (l.ep == &ep) return &l;
+  }
+  return nullptr;
+}
+
+std::size_t VirtualGate::Refresh(const Link* except, const Link* only, bool ask_all) {
+  std::size_t unread = 0;
+  for (Link& l : links_) {
+    if (&l == except || (only && &l != only) || (l.unread_bound == 0 && !ask_all)) continue;
+    l.unread_bound = l.ep->PendingToHost();
+    unread += l.unread_bound;
+  }
+  return unread;
+}
+
+bool VirtualGate::Wait(const std::function<bool()>& done, const Link* except, const Link* only) {
+  long sleep_ns = kFirstSleepNs;
+  for (int step = 0;; ++step) {
+    if (done()) return true;
+    std::size_t unread = 0;
+    for (const Link& l : links_) {
+      if (&l != except && (!only || &l == only)) unread += l.unread_bound;
+    }
+    if (!on_wait_(unread, step == 0)) return false;
+    if (step < kYieldSteps) {
+      sched_yield();
+    } else {
+      SleepNs(sleep_ns);
+      sleep_ns = std::min(sleep_ns * 2, kLongestSleepNs);
+    }
+  }
+}
+
+bool VirtualGate::BeforeWrite(const SerialEndpoint& ep, std::size_t bytes) {
+  Link* self = Find(ep);
+  if (!self) return true;  // a link the host does not read: no order to keep
+  // every other link read to its last byte
+  const bool others_read = Wait([&] { return Refresh(self, nullptr) == 0; }, self, nullptr);
+  if (!others_read) return false;
+  // this link's backlog below the bound (a message longer than the bound waits for an empty link)
+  if (self->unread_bound + bytes > max_backlog_) {
+    const auto room = [&] {
+      Refresh(nullptr, self);
+      return self->unread_bound == 0 || self->unread_bound + bytes <= max_backlog_;
+    };
+    if (!Wait(room, nullptr, self)) return false;
+  }
+  self->unread_bound += bytes;
+  return true;
+}
+
+bool VirtualGate::TryWrite(const SerialEndpoint& ep, std::size_t bytes) {
+  Link* self = Find(ep);
+  if (!self) return true;
+  if (Refresh(self, nullptr) != 0) return false;
+  if (self->unread_bound + bytes > max_backlog_) {
+    Refresh(nullptr, self);
+    if (self->unread_bound != 0 && self->unread_bound + bytes > max_backlog_) return false;
+  }
+  self->unread_bound += bytes;
+  return true;
+}
+
+bool VirtualGate::WaitAllRead() {
+  return Wait([&] { return Refresh(nullptr, nullptr) == 0; }, nullptr, nullptr);
+}
+
+std::size_t VirtualGate::Unread() { return Refresh(nullptr, nullptr, true); }
+
+void VirtualWriteQueue::Add(SerialEndpoint& ep, std::size_t bytes) {
+  if (!fifo_.empty() && fifo_.back().ep == &ep) {
+    ++fifo_.back().chunks;
+    fifo_.back().bytes += bytes;
+  } else {
+    fifo_.push_back({&ep, 1, bytes});
+  }
+  deferred_ += bytes;
+}
+
+bool VirtualWriteQueue::Pump(bool all) {
+  while (!fifo_.empty()) {
+    const Batch b = fifo_.front();
+    if (gate_) {
+      if (all || deferred_ > max_deferred_) {
+        if (!gate_->BeforeWrite(*b.ep, b.bytes)) return false;
+      } else if (!gate_->TryWrite(*b.ep, b.bytes)) {
+        break;
+      }
+    }
+    b.ep->WriteChunks(b.chunks);
+    deferred_ -= b.bytes;
+    fifo_.pop_front();
+  }
+  return true;
+}
+
+}  // namespace hil::harness

@@ -1,0 +1,164 @@
+#include "hil/harness/scenario/scenario.h"
+
+#include <algorithm>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "hil/firmware_emu/gnss/gps_time.h"
+#include "hil/harness/scenario/yaml_reader.h"
+#include "scenario_sections.h"
+
+namespace hil::harness {
+
+extern const char* const kDefaultScenarioYaml;  // generated from vectors/scenarios/default.yaml
+
+const std::vector<std::string> kCriterionMetrics{
+    "horizontal_rmse_m", "cep50_m", "cep95_m", "max_horizontal_error_m", "vertical_rmse_m", "velocity_rmse_mps",
+    "heading_rmse_deg", "cross_track_rmse_m", "cross_track_p95_m", "cross_track_max_m", "output_rate_hz",
+    "latency_p99_ms", "jitter_p99_ms", "outage_max_horizontal_error_m", "reconvergence_time_s", "nees_mean",
+    "solutions_missing_fraction", "fault_recovery_time_s", "fault_injections_min", "outage_max_east_error_m",
+    "outage_max_north_error_m", "outage_max_up_error_m", "outage_max_enu_error_m"};
+
+namespace {
+
+// A mapping of navd.conf keys of one section to scalar values, in file order.
+std::vector<std::pair<std::string, std::string>> ReadNavdKeys(const YamlReader& f, const char* section,
+                                                              const std::vector<std::string>& reserved = {}) {
+  if (!f.IsMap()) f.Fail(std::string("expected a mapping of navd [") + section + "] keys to values");
+  std::vector<std::pair<std::string, std::string>> keys;
+  for (const auto& kv : f.node()) {
+    const std::string key = kv.first.Scalar();
+    if (key.empty() || key.find_first_of(" =[]#\n") != std::string::npos) f.Fail(key, "not a navd key");
+    for (const auto& r : reserved) {
+      if (key == r) f.Fail(key, "set by hil from the scenario's devices");
+    }
+    if (!kv.second.IsScalar()) f.Fail(key, "expected a single value (navd lists are comma-separated strings)");
+    keys.emplace_back(key, kv.second.Scalar());
+  }
+  return keys;
+}
+
+void ReadEstimator(const YamlReader& r, EstimatorSpec& e) {
+  r.CheckKeys({"command", "output", "navd_mode", "navd_filter", "navd_input", "reference_point", "silence_timeout_s",
+               "startup_s"});
+  e.reference_point = r.Choice("reference_point", e.reference_point, {"auto", "body", "antenna", "imu"});
+  e.command = r.String("command", e.command);
+  e.output = r.Choice("output", e.output, {"json_stdout", "gpsd_json", "nmea_stdout", "nmea_pty", "n2k_candump",
+                                                  "n2k_socketcan"});
+  e.navd_mode = r.Choice("navd_mode", e.navd_mode, {"gnss_only", "ekf", "planar2d", "imu_only", "multi_gnss"});
+  if (auto f = r.OptionalChild("navd_filter")) e.navd_filter = ReadNavdKeys(*f, "filter");
+  if (auto f = r.OptionalChild("navd_input")) {
+    e.navd_input = ReadNavdKeys(*f, "input", {"gnss_device", "gnss_baud", "imu_device", "imu_baud", "imu_format"});
+  }
+  e.silence_timeout_s = r.DoubleIn("silence_timeout_s", e.silence_timeout_s, 0.5, 3600);
+  e.startup_s = r.DoubleIn("startup_s", e.startup_s, 0, 60);
+}
+
+std::vector<Criterion> ReadCriteria(const YamlReader& r) {
+  std::vector<Criterion> out;
+  for (const YamlReader& c : r.Elements()) {
+    c.CheckKeys({"metric", "max", "min", "max_ratio_to_baseline", "name"});
+    Criterion k;
+    k.metric = c.String("metric");
+    if (std::find(kCriterionMetrics.begin(), kCriterionMetrics.end(), k.metric) == kCriterionMetrics.end() &&
+        k.metric.rfind("navd.", 0) != 0) {  // navd.<health counter>, navd.flag.<flag> (fault_report.h)
+      std::string msg = "unknown metric '" + k.metric + "' (one of:";
+      for (const auto& m : kCriterionMetrics) msg += " " + m;
+      c.Fail("metric", msg + ")");
+    }
+    if (c.Has("max")) k.max = c.DoubleIn("max", 0, 0, 1e9);
+    if (c.Has("min")) k.min = c.DoubleIn("min", 0, 0, 1e9);
+    if (c.Has("max_ratio_to_baseline")) k.max_ratio_to_baseline = c.DoubleIn("max_ratio_to_baseline", 0, 0, 1e3);
+    const int given = (k.max ? 1 : 0) + (k.min ? 1 : 0) + (k.max_ratio_to_baseline ? 1 : 0);
+    if (given == 0) c.Fail("a criterion needs 'max', 'min' or 'max_ratio_to_baseline'");
+    if (given > 1) c.Fail("give one of 'max', 'min' or 'max_ratio_to_baseline'");
+    char buf[128];
+    if (k.max) std::snprintf(buf, sizeof buf, "%s <= %g", k.metric.c_str(), *k.max);
+    else if (k.min) std::snprintf(buf, sizeof buf, "%s >= %g", k.metric.c_str(), *k.min);
+    else std::snprintf(buf, sizeof buf, "%s <= %g x baseline", k.metric.c_str(), *k.max_ratio_to_baseline);
+    k.name = c.String("name", buf);
+    out.push_back(k);
+  }
+  return out;
+}
+
+Scenario FromReader(const YamlReader& root) {
+  std::vector<std::string> keys{"name",     "description", "start_utc", "duration_s", "seed",      "estimator",
+                                "criteria", "faults",      "include",   "evaluation"};
+  for (const auto* section : {&kTruthSectionKeys, &kGnssSectionKeys, &kMcuSectionKeys, &kCanSectionKeys, &kSuiteSectionKeys}) {
+    keys.insert(keys.end(), section->begin(), section->end());
+  }
+  root.CheckKeys(keys);
+  Scenario s;
+  s.file = root.file();
+  s.name = root.String("name");
+  s.description = root.String("description", "");
+  try {
+    s.start_unix_ns = gnss::ParseIsoUtc(root.String("start_utc", "2013-06-10T08:00:00Z"));
+  } catch (const std::invalid_argument& e) {
+    root.Fail("start_utc", e.what());
+  }
+  s.duration_s = root.DoubleIn("duration_s", s.duration_s, 1, 7 * 86400);
+  s.seed = static_cast<std::uint64_t>(root.Int("seed", 1, 0, INT64_MAX));
+  ReadTruthSections(root, s.truth);
+  ReadGnssSection(root, s.gnss);
+  ReadMcuSection(root, s.mcu);
+  s.mcu.config.start_unix_ns = s.start_unix_ns;
+  // seed 000: the IMU runs 10 times as fast as the GPS
+  if (s.mcu.imu_rate_is_default) s.mcu.config.imu_rate_hz = 10.0 * s.gnss.rate_hz;
+  ReadCanSection(root, s.can);
+  ReadSuiteSections(root, keys, s);
+  if (auto e = root.OptionalChild("estimator")) ReadEstimator(*e, s.estimator);
+  CheckCanUse(root, s);
+  if (auto c = root.OptionalChild("criteria")) s.criteria = ReadCriteria(*c);
+  if (auto f = root.OptionalChild("faults")) s.faults = ReadFaultTimeline(*f, s.duration_s);
+  if (auto ev = root.OptionalChild("evaluation")) {
+    ev->CheckKeys({"from_s", "reconverged_error_m"});
+    s.evaluate_from_s = ev->DoubleIn("from_s", 0, 0, s.duration_s);
+    s.reconverged_error_m = ev->DoubleIn("reconverged_error_m", s.reconverged_error_m, 0.001, 1e4);
+  }
+  return s;
+}
+
+}  // namespace
+
+std::vector<std::string> ScenarioLibraryDirs() {
+  std::vector<std::string> dirs;
+  if (const char* env = std::getenv("HIL_SCENARIO_LIB")) {
+    std::stringstream ss(env);
+    for (std::string d; std::getline(ss, d, ':');) {
+      if (!d.empty()) dirs.push_back(d);
+    }
+  }
+  dirs.emplace_back(HIL_SCENARIO_LIB_DIR);
+  return dirs;
+}
+
+Scenario LoadScenario(const std::string& path, bool short_form) {
+  YamlReader root = YamlReader::LoadFile(path);
+  if (short_form) ApplyShortForm(root);  // before the includes: a replaced key is the document's own
+  root.ResolveIncludes(std::filesystem::path(path).parent_path().string(), ScenarioLibraryDirs());
+  Scenario s = FromReader(root);
+  s.short_form = short_form && s.has_short_form;
+  return s;
+}
+
+Scenario ParseScenario(const std::string& text, const std::string& name) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    throw ScenarioError(name, e.mark.line + 1, "", "YAML syntax error: " + e.msg);
+  }
+  if (!root.IsMap()) throw ScenarioError(name, 1, "", "the document must be a mapping of keys");
+  YamlReader reader(root, name, "");
+  reader.ResolveIncludes(".", ScenarioLibraryDirs());
+  return FromReader(reader);
+}
+
+Scenario LoadDefaultScenario() { return ParseScenario(kDefaultScenarioYaml, "<embedded default scenario>"); }
+
+}  // namespace hil::harness

@@ -1,0 +1,38 @@
+#pragma once
+// Internal to the harness: readers of the scenario file's sections, one file per owner
+// (scenario_truth.cc: origin, vehicle, path; scenario_gnss.cc: gnss; scenario_mcu.cc: mcu). Each lists the top-level
+// keys it reads so the root check knows them.
+#include <string>
+#include <vector>
+
+#include "hil/harness/scenario/scenario.h"
+#include "hil/harness/scenario/yaml_reader.h"
+
+namespace hil::harness {
+
+extern const std::vector<std::string> kTruthSectionKeys;
+/// Reads origin (required), vehicle and path into the truth configuration.
+void ReadTruthSections(const YamlReader& root, truth::TruthConfig& t);
+
+extern const std::vector<std::string> kGnssSectionKeys;
+/// Reads the gnss section (optional).
+void ReadGnssSection(const YamlReader& root, GnssDeviceSpec& g);
+
+extern const std::vector<std::string> kMcuSectionKeys;
+/// Reads the mcu section (optional; scenario_mcu.cc). Without it the scenario has no IMU board.
+void ReadMcuSection(const YamlReader& root, McuDeviceSpec& m);
+extern const std::vector<std::string> kCanSectionKeys;
+/// Reads the can section (optional; scenario_can.cc).
+void ReadCanSection(const YamlReader& root, CanLinkSpec& c);
+/// Checks what needs the bus (IMU to the estimator over CAN, output n2k_socketcan) once every
+/// section is read (scenario_can.cc).
+void CheckCanUse(const YamlReader& root, const Scenario& s);
+
+extern const std::vector<std::string> kSuiteSectionKeys;
+/// Reads `paper:` into s.paper and checks `short:` (scenario_suite.cc); `top_level_keys` are the
+/// keys a `short:` section may replace (all but name, include, paper and short).
+void ReadSuiteSections(const YamlReader& root, const std::vector<std::string>& top_level_keys, Scenario& s);
+/// Replaces the root's top-level keys by those of its `short:` section (nothing without one).
+void ApplyShortForm(YamlReader& root);
+
+}  // namespace hil::harness

@@ -1,0 +1,72 @@
+// Every scenario of vectors/scenarios loads in its full and its short form, and the acceptance
+// scenarios carry the papers' reference figures the suite report shows.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+
+#include "hil/harness/scenario/scenario.h"
+#include "hil/harness/suite/suite.h"
+#include "hil/harness/scenario/yaml_reader.h"
+
+namespace hil::harness {
+namespace {
+
+std::string Dir() {
+  const char* src = std::getenv("HIL_SOURCE_DIR");
+  return std::string(src ? src : ".") + "/vectors/scenarios";
+}
+
+TEST(ScenarioFilesTest, EveryScenarioLoadsFullAndShort) {
+  const auto files = SuiteScenarios(Dir());
+  ASSERT_GE(files.size(), 9u);
+  for (const auto& f : files) {
+    for (const bool short_form : {false, true}) {
+      try {
+        const Scenario s = LoadScenario(f, short_form);
+        EXPECT_EQ(s.short_form, short_form && s.has_short_form) << f;
+        if (s.short_form) {
+          EXPECT_LT(s.duration_s, LoadScenario(f).duration_s) << f << ": a short form should be shorter";
+        }
+      } catch (const ScenarioError& e) {
+        ADD_FAILURE() << (short_form ? "short form: " : "") << e.what();
+      }
+    }
+  }
+}
+
+TEST(ScenarioFilesTest, PapersFiguresComeFromTheScenarioFiles) {
+  // paper 000's four methods and paper 004's outage bound
+  const std::map<std::string, std::pair<std::string, double>> expected{
+      {"seed000_gps_only", {"horizontal_rmse_m", 0.391}},
+      {"seed000_three_gps", {"horizontal_rmse_m", 0.313}},
+      {"seed000_gps_imu", {"horizontal_rmse_m", 0.234}},
+      {"seed004_outages", {"outage_max_enu_error_m", 0.11}},
+  };
+  for (const auto& [name, figure] : expected) {
+    const Scenario s = LoadScenario(Dir() + "/" + name + ".yaml");
+    ASSERT_FALSE(s.paper.empty()) << name;
+    EXPECT_EQ(s.paper[0].metric, figure.first) << name;
+    ASSERT_TRUE(s.paper[0].value) << name;
+    EXPECT_DOUBLE_EQ(*s.paper[0].value, figure.second) << name;
+    EXPECT_FALSE(s.criteria.empty()) << name;
+  }
+  const Scenario imu = LoadScenario(Dir() + "/seed000_imu_only.yaml");
+  ASSERT_FALSE(imu.paper.empty());
+  EXPECT_NE(imu.paper[0].finding.find("diverges"), std::string::npos);
+  // three receivers: navd reads all three, 5.2 m apart
+  const Scenario three = LoadScenario(Dir() + "/seed000_three_gps.yaml");
+  EXPECT_EQ(three.estimator.navd_mode, "multi_gnss");
+  ASSERT_EQ(three.gnss.receivers.size(), 3u);
+  EXPECT_NEAR((three.gnss.receivers[0].p_BA_B_m - three.gnss.receivers[1].p_BA_B_m).norm(), 5.196, 1e-3);
+  // every variant justifies its thresholds with criteria
+  for (const auto& f : SuiteScenarios(Dir())) {
+    if (std::filesystem::path(f).filename().string().rfind("variant_", 0) == 0) {
+      EXPECT_FALSE(LoadScenario(f).criteria.empty()) << f;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace hil::harness
