@@ -1,17 +1,18 @@
 #include "can_imu_input.h"
 
 #include <fcntl.h>
-#include <linux/can.h>
-#include <linux/can/raw.h>
-#include <net/if.h>
-#include <sys/ioctl.h>
-#include <sys/socket.h>
 #include <time.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
+
+#include <linux/can.h>
+#include <linux/can/raw.h>
+#include <net/if.h>
+#include <sys/ioctl.h>
+#include <sys/socket.h>
 
 #ifndef SO_RXQ_OVFL
 #define SO_RXQ_OVFL 40
@@ -36,7 +37,8 @@ CanImuInput::CanImuInput(const std::string& interface, const drv::J1939ImuDecode
     : iface_(interface), decoder_(config) {
   sock_ = socket(PF_CAN, SOCK_RAW | SOCK_CLOEXEC | SOCK_NONBLOCK, CAN_RAW);
   if (sock_ < 0) {
-    throw std::runtime_error("[imu] cannot open a CAN socket for " + interface + ": " + std::strerror(errno) +
+    throw std::runtime_error("[imu] cannot open a CAN socket for " + interface + ": " +
+                             std::strerror(errno) +
                              (errno == EAFNOSUPPORT ? " (this kernel has no SocketCAN)" : ""));
   }
   const auto fail = [&](const std::string& what) {
@@ -55,17 +57,20 @@ CanImuInput::CanImuInput(const std::string& interface, const drv::J1939ImuDecode
     filters[i].can_id = (pgns[i] << 8) | CAN_EFF_FLAG;
     filters[i].can_mask = (0x3FFFFu << 8) | CAN_EFF_FLAG | CAN_RTR_FLAG;
   }
-  if (setsockopt(sock_, SOL_CAN_RAW, CAN_RAW_FILTER, filters, sizeof filters) < 0) throw fail("cannot filter CAN on");
+  if (setsockopt(sock_, SOL_CAN_RAW, CAN_RAW_FILTER, filters, sizeof filters) < 0)
+    throw fail("cannot filter CAN on");
   const int on = 1;
   setsockopt(sock_, SOL_SOCKET, SO_TIMESTAMPNS, &on, sizeof on);
   setsockopt(sock_, SOL_SOCKET, SO_RXQ_OVFL, &on, sizeof on);
   // a larger receive queue: the privileged call may exceed rmem_max, the plain one is capped by it
-  if (setsockopt(sock_, SOL_SOCKET, SO_RCVBUFFORCE, &kReceiveBufferBytes, sizeof kReceiveBufferBytes) < 0)
+  if (setsockopt(sock_, SOL_SOCKET, SO_RCVBUFFORCE, &kReceiveBufferBytes,
+                 sizeof kReceiveBufferBytes) < 0)
     setsockopt(sock_, SOL_SOCKET, SO_RCVBUF, &kReceiveBufferBytes, sizeof kReceiveBufferBytes);
   sockaddr_can addr{};
   addr.can_family = AF_CAN;
   addr.can_ifindex = ifr.ifr_ifindex;
-  if (bind(sock_, reinterpret_cast<sockaddr*>(&addr), sizeof addr) < 0) throw fail("cannot bind CAN interface");
+  if (bind(sock_, reinterpret_cast<sockaddr*>(&addr), sizeof addr) < 0)
+    throw fail("cannot bind CAN interface");
 }
 
 CanImuInput::~CanImuInput() {
@@ -76,7 +81,8 @@ void CanImuInput::ReadAll(const std::function<void(const estimator::ImuSample&)>
   for (;;) {
     can_frame k{};
     iovec iov{&k, sizeof k};
-    alignas(cmsghdr) char control[CMSG_SPACE(sizeof(timespec)) + CMSG_SPACE(sizeof(std::uint32_t)) + 64];
+    alignas(cmsghdr) char
+        control[CMSG_SPACE(sizeof(timespec)) + CMSG_SPACE(sizeof(std::uint32_t)) + 64];
     msghdr msg{};
     msg.msg_iov = &iov;
     msg.msg_iovlen = 1;
@@ -106,7 +112,8 @@ void CanImuInput::ReadAll(const std::function<void(const estimator::ImuSample&)>
       } else if (c->cmsg_type == SO_RXQ_OVFL) {
         std::uint32_t total = 0;
         std::memcpy(&total, CMSG_DATA(c), sizeof total);
-        if (total > last_drop_total_) drops_ += total - last_drop_total_;  // the kernel's running total
+        if (total > last_drop_total_)
+          drops_ += total - last_drop_total_;  // the kernel's running total
         last_drop_total_ = total;
       }
     }
@@ -124,12 +131,15 @@ void PrintCanImuStats(const CanImuInput& in, std::FILE* to) {
   const auto& st = in.decoder().stats();
   const auto u = [](std::uint64_t v) { return static_cast<unsigned long long>(v); };
   std::fprintf(to,
-               "navd: can_imu %s frames=%llu drops=%llu read_errors=%llu ari=%llu accs=%llu ssi2=%llu pulses=%llu "
-               "imu=%llu no_time=%llu gaps=%llu unpaired=%llu other_source=%llu unknown_pgn=%llu bad_length=%llu "
+               "navd: can_imu %s frames=%llu drops=%llu read_errors=%llu ari=%llu accs=%llu "
+               "ssi2=%llu pulses=%llu "
+               "imu=%llu no_time=%llu gaps=%llu unpaired=%llu other_source=%llu unknown_pgn=%llu "
+               "bad_length=%llu "
                "not_available=%llu mcu_resets=%llu clock_jumps=%llu host_rate=%.6f mcu_ppm=%.1f\n",
-               in.interface().c_str(), u(in.frames_read()), u(in.drops()), u(in.read_errors()), u(st.ari), u(st.accs),
-               u(st.ssi2), u(st.pulses), u(st.imu_out), u(st.imu_no_time), u(st.imu_gap), u(st.unpaired),
-               u(st.other_source), u(st.unknown_pgn), u(st.bad_length), u(st.not_available), u(st.mcu_resets),
+               in.interface().c_str(), u(in.frames_read()), u(in.drops()), u(in.read_errors()),
+               u(st.ari), u(st.accs), u(st.ssi2), u(st.pulses), u(st.imu_out), u(st.imu_no_time),
+               u(st.imu_gap), u(st.unpaired), u(st.other_source), u(st.unknown_pgn),
+               u(st.bad_length), u(st.not_available), u(st.mcu_resets),
                u(in.decoder().arrival_clock().jumps()), in.decoder().arrival_clock().rate(),
                in.decoder().mcu_clock().offset_ppm());
 }

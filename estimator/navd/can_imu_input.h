@@ -18,7 +18,8 @@ namespace hil::navd {
 class CanImuInput {
  public:
   /// Opens and binds the socket. @throws std::runtime_error naming the interface.
-  CanImuInput(const std::string& interface, const estimator::drivers::J1939ImuDecoderConfig& config);
+  CanImuInput(const std::string& interface,
+              const estimator::drivers::J1939ImuDecoderConfig& config);
   ~CanImuInput();
   CanImuInput(const CanImuInput&) = delete;
   CanImuInput& operator=(const CanImuInput&) = delete;

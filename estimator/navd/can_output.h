@@ -17,7 +17,8 @@ class CanOutput {
  public:
   /// Opens the outputs; `interface` or `log_path` may be empty. @throws std::runtime_error naming
   /// the interface or file when it cannot be opened.
-  CanOutput(const std::string& interface, const std::string& log_path, std::uint8_t source_address, double rapid_rate_hz);
+  CanOutput(const std::string& interface, const std::string& log_path, std::uint8_t source_address,
+            double rapid_rate_hz);
   ~CanOutput();
   CanOutput(const CanOutput&) = delete;
   CanOutput& operator=(const CanOutput&) = delete;

@@ -15,8 +15,10 @@ std::string Trim(const std::string& s) {
 
 }  // namespace
 
-ConfigError::ConfigError(const std::string& file, int line, const std::string& field, const std::string& message)
-    : std::runtime_error(file + ":" + std::to_string(line) + ": " + (field.empty() ? "" : field + ": ") + message) {}
+ConfigError::ConfigError(const std::string& file, int line, const std::string& field,
+                         const std::string& message)
+    : std::runtime_error(file + ":" + std::to_string(line) + ": " +
+                         (field.empty() ? "" : field + ": ") + message) {}
 
 ConfigFile ConfigFile::Load(const std::string& path) {
   std::ifstream in(path);
@@ -38,12 +40,14 @@ ConfigFile ConfigFile::Parse(const std::string& text, const std::string& name) {
     const std::string line = Trim(hash == std::string::npos ? raw : raw.substr(0, hash));
     if (line.empty()) continue;
     if (line.front() == '[') {
-      if (line.back() != ']' || line.size() < 3) throw ConfigError(name, line_no, "", "malformed section header '" + line + "'");
+      if (line.back() != ']' || line.size() < 3)
+        throw ConfigError(name, line_no, "", "malformed section header '" + line + "'");
       section = Trim(line.substr(1, line.size() - 2));
       continue;
     }
     const auto eq = line.find('=');
-    if (eq == std::string::npos) throw ConfigError(name, line_no, "", "expected 'key = value', got '" + line + "'");
+    if (eq == std::string::npos)
+      throw ConfigError(name, line_no, "", "expected 'key = value', got '" + line + "'");
     ConfigEntry e{section, Trim(line.substr(0, eq)), Trim(line.substr(eq + 1)), line_no};
     if (e.key.empty()) throw ConfigError(name, line_no, "", "empty key");
     cf.entries_.push_back(std::move(e));

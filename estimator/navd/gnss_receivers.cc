@@ -7,7 +7,8 @@ namespace hil::navd {
 
 namespace est = hil::estimator;
 
-est::GnssSample ToGnssSample(const est::drivers::NmeaMeasurement& m, int leap_s, const est::NmeaAccuracy& acc) {
+est::GnssSample ToGnssSample(const est::drivers::NmeaMeasurement& m, int leap_s,
+                             const est::NmeaAccuracy& acc) {
   est::GnssSample g;
   g.t = est::GpsNsFromUnixNs(m.tov_unix_ns, leap_s);
   g.position = {m.lat_deg, m.lon_deg, m.height_m};
@@ -25,18 +26,20 @@ est::GnssSample ToGnssSample(const est::drivers::NmeaMeasurement& m, int leap_s,
   return g;
 }
 
-GnssReceivers::Receiver::Receiver(const std::string& path, int baud, int index, const est::NavdConfig& cfg,
-                                  const Handler& h)
+GnssReceivers::Receiver::Receiver(const std::string& path, int baud, int index,
+                                  const est::NavdConfig& cfg, const Handler& h)
     : device(path, baud),
       setup(cfg),
-      nmea([this, index, leap = cfg.leap_seconds, acc = cfg.nmea_accuracy(), h](const est::drivers::NmeaFix& fix) {
+      nmea([this, index, leap = cfg.leap_seconds, acc = cfg.nmea_accuracy(),
+            h](const est::drivers::NmeaFix& fix) {
         const auto m = nmea_epochs.Add(fix);
         if (!m) return;
         est::GnssSample g = ToGnssSample(*m, leap, acc);
         g.antenna = index;
         h(g);
       }),
-      ubx([this, index, h, ubx_input = cfg.gnss_protocol == "ubx"](const est::drivers::UbxMessage& msg) {
+      ubx([this, index, h,
+           ubx_input = cfg.gnss_protocol == "ubx"](const est::drivers::UbxMessage& msg) {
         setup.OnMessage(msg);
         if (!ubx_input) return;
         auto g = ubx_epochs.Add(msg);
@@ -45,10 +48,12 @@ GnssReceivers::Receiver::Receiver(const std::string& path, int baud, int index, 
         h(*g);
       }) {}
 
-GnssReceivers::GnssReceivers(const est::NavdConfig& cfg, Handler handler) : ubx_(cfg.gnss_protocol == "ubx") {
+GnssReceivers::GnssReceivers(const est::NavdConfig& cfg, Handler handler)
+    : ubx_(cfg.gnss_protocol == "ubx") {
   const std::vector<std::string> devices = cfg.GnssDevices();
   for (std::size_t i = 0; i < devices.size(); ++i) {
-    rx_.push_back(std::make_unique<Receiver>(devices[i], cfg.gnss_baud, static_cast<int>(i), cfg, handler));
+    rx_.push_back(
+        std::make_unique<Receiver>(devices[i], cfg.gnss_baud, static_cast<int>(i), cfg, handler));
   }
 }
 
@@ -85,7 +90,8 @@ est::drivers::UbxDecoderStats GnssReceivers::ubx_stats() const {
   for (const auto& r : rx_) {
     const auto& x = r->ubx.stats();
     s.frames_ok += x.frames_ok, s.bad_checksum += x.bad_checksum, s.overlong += x.overlong;
-    s.unsupported += x.unsupported, s.garbage_bytes += x.garbage_bytes, s.acks += x.acks, s.naks += x.naks;
+    s.unsupported += x.unsupported, s.garbage_bytes += x.garbage_bytes, s.acks += x.acks,
+        s.naks += x.naks;
   }
   return s;
 }

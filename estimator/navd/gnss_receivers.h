@@ -17,13 +17,15 @@
 #include "hil/estimator/drivers/ubx_decoder.h"
 #include "hil/estimator/navd/navd_config.h"
 #include "hil/estimator/samples.h"
+
 #include "receiver_setup.h"
 #include "serial_device.h"
 
 namespace hil::navd {
 
 /// A decoded NMEA epoch as a filter sample: horizontal 1σ per axis from the fix quality and HDOP
-/// (nmea_accuracy.h; vertical twice that), velocity from RMC speed and course with the configured 1σ.
+/// (nmea_accuracy.h; vertical twice that), velocity from RMC speed and course with the configured
+/// 1σ.
 estimator::GnssSample ToGnssSample(const estimator::drivers::NmeaMeasurement& m, int leap_s,
                                    const estimator::NmeaAccuracy& acc);
 
@@ -51,7 +53,8 @@ class GnssReceivers {
 
  private:
   struct Receiver {
-    Receiver(const std::string& path, int baud, int index, const estimator::NavdConfig& cfg, const Handler& h);
+    Receiver(const std::string& path, int baud, int index, const estimator::NavdConfig& cfg,
+             const Handler& h);
     SerialDevice device;
     ReceiverSetup setup;
     estimator::drivers::NmeaEpochAssembler nmea_epochs;

@@ -11,8 +11,8 @@
 #include <time.h>
 #include <unistd.h>
 
-#include <cerrno>
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -20,25 +20,26 @@
 #include <ctime>
 #include <functional>
 #include <memory>
-#include <stdexcept>
 #include <numbers>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "hil/estimator/navd/config_file.h"
 #include "hil/estimator/drivers/mcu_frame_decoder.h"
 #include "hil/estimator/drivers/mcu_imu_adapter.h"
-#include "hil/estimator/drivers/razor_imu_adapter.h"
-#include "hil/estimator/drivers/razor_text_decoder.h"
 #include "hil/estimator/drivers/nmea_decoder.h"
 #include "hil/estimator/drivers/nmea_epoch.h"
+#include "hil/estimator/drivers/razor_imu_adapter.h"
+#include "hil/estimator/drivers/razor_text_decoder.h"
 #include "hil/estimator/drivers/ubx_decoder.h"
+#include "hil/estimator/navd/config_file.h"
 #include "hil/estimator/navd/nav_solution.h"
 #include "hil/estimator/navd/navd_config.h"
 #include "hil/estimator/navd/navd_health.h"
 #include "hil/estimator/navigator.h"
 #include "hil/estimator/outputs/nmea0183_writer.h"
+
 #include "can_imu_input.h"
 #include "can_output.h"
 #include "gnss_receivers.h"
@@ -58,23 +59,32 @@ void OnSignal(int) { g_stop = 1; }
 void PrintUsage() {
   std::printf(
       "usage: navd --config FILE\n"
-      "  The production GNSS/INS estimator daemon. Reads the devices named in FILE (GNSS receiver:\n"
-      "  NMEA 0183 or UBX; IMU microcontroller: binary frame protocol v1), runs the estimator, and writes\n"
-      "  one JSON object per solution (time of validity, position, velocity, attitude, covariance,\n"
+      "  The production GNSS/INS estimator daemon. Reads the devices named in FILE (GNSS "
+      "receiver:\n"
+      "  NMEA 0183 or UBX; IMU microcontroller: binary frame protocol v1), runs the estimator, and "
+      "writes\n"
+      "  one JSON object per solution (time of validity, position, velocity, attitude, "
+      "covariance,\n"
       "  status) to [output] json, and NMEA 0183 (GGA, RMC, HDT) to [output] nmea_device.\n"
       "options:\n"
       "  --config FILE   configuration (INI; every key is documented in navd.conf.example):\n"
-      "                  [input] gnss_device, gnss_device_1 … (multi_gnss), gnss_baud, gnss_protocol\n"
-      "                  (nmea|ubx), gnss_configure, gnss_rate_hz, imu_device, imu_baud, imu_format\n"
+      "                  [input] gnss_device, gnss_device_1 … (multi_gnss), gnss_baud, "
+      "gnss_protocol\n"
+      "                  (nmea|ubx), gnss_configure, gnss_rate_hz, imu_device, imu_baud, "
+      "imu_format\n"
       "                  (mcu|razor_text)\n"
-      "                  [imu] source (serial|can), can_interface, source_address, razor_gnss_latency_s\n"
+      "                  [imu] source (serial|can), can_interface, source_address, "
+      "razor_gnss_latency_s\n"
       "                  [time] leap_seconds\n"
       "                  [filter] mode (ekf|planar2d|gnss_only|imu_only|multi_gnss), lever_arm_m,\n"
-      "                  accel_noise, gyro_noise, accel_bias_rw, gyro_bias_rw, init_accel_bias_std,\n"
+      "                  accel_noise, gyro_noise, accel_bias_rw, gyro_bias_rw, "
+      "init_accel_bias_std,\n"
       "                  init_gyro_bias_std, gnss_error_tau_s, gnss_error_std_m, nhc_std_mps,\n"
       "                  gate_sigma, fusion_horizon_s, use_gnss_velocity, gnss_max_latency_s,\n"
-      "                  nmea_uere_m, nmea_rtk_fixed_std_m, nmea_rtk_float_std_m, nmea_velocity_std_mps,\n"
-      "                  gnss_float_error_tau_s, gnss_float_error_std_m, gnss_error_vertical_std_m,\n"
+      "                  nmea_uere_m, nmea_rtk_fixed_std_m, nmea_rtk_float_std_m, "
+      "nmea_velocity_std_mps,\n"
+      "                  gnss_float_error_tau_s, gnss_float_error_std_m, "
+      "gnss_error_vertical_std_m,\n"
       "                  speed_rw, speed_dev_std_mps, speed_dev_tau_s, antenna_0_m … (multi_gnss)\n"
       "                  [output] json, rate_hz, nmea_device, can_interface, can_log,\n"
       "                  can_source_address, can_rate_hz\n"
@@ -93,13 +103,16 @@ est::NavSolution ToSolution(const est::NavOutput& o, const est::Navigator& nav, 
   s.vel_enu_mps = {o.v_N_mps.x(), o.v_N_mps.y(), o.v_N_mps.z()};
   s.pos_std_enu_m = {o.pos_std_enu_m.x(), o.pos_std_enu_m.y(), o.pos_std_enu_m.z()};
   if (o.has_attitude) {
-    const Eigen::Vector3d x = o.q_NB * Eigen::Vector3d::UnitX(), y = o.q_NB * Eigen::Vector3d::UnitY();
-    s.yaw_deg = std::fmod(90.0 - std::atan2(x.y(), x.x()) * 180.0 / std::numbers::pi + 360.0, 360.0);
+    const Eigen::Vector3d x = o.q_NB * Eigen::Vector3d::UnitX(),
+                          y = o.q_NB * Eigen::Vector3d::UnitY();
+    s.yaw_deg =
+        std::fmod(90.0 - std::atan2(x.y(), x.x()) * 180.0 / std::numbers::pi + 360.0, 360.0);
     const est::NavMode m = nav.params().mode;
     if (m == est::NavMode::kEkf || m == est::NavMode::kImuOnly) {
       s.pitch_deg = std::asin(std::clamp(x.z(), -1.0, 1.0)) * 180.0 / std::numbers::pi;
       s.roll_deg = -std::asin(std::clamp(y.z(), -1.0, 1.0)) * 180.0 / std::numbers::pi;
-      s.vel_std_enu_mps = std::array<double, 3>{o.vel_std_enu_mps.x(), o.vel_std_enu_mps.y(), o.vel_std_enu_mps.z()};
+      s.vel_std_enu_mps = std::array<double, 3>{o.vel_std_enu_mps.x(), o.vel_std_enu_mps.y(),
+                                                o.vel_std_enu_mps.z()};
       s.nis_pos = nav.stats().last_nis_pos;
       s.mean_nis_pos = nav.stats().mean_nis_pos;
     }
@@ -142,22 +155,26 @@ int main(int argc, char** argv) {
   if (cfg.json_path != "-") {
     out = std::fopen(cfg.json_path.c_str(), "w");
     if (!out) {
-      std::fprintf(stderr, "navd: cannot write %s: %s\n", cfg.json_path.c_str(), std::strerror(errno));
+      std::fprintf(stderr, "navd: cannot write %s: %s\n", cfg.json_path.c_str(),
+                   std::strerror(errno));
       return 2;
     }
   }
   int nmea_fd = -1;
   if (!cfg.nmea_device.empty()) {
-    nmea_fd = open(cfg.nmea_device.c_str(), O_WRONLY | O_NOCTTY | O_NONBLOCK | O_CREAT | O_APPEND, 0644);
+    nmea_fd =
+        open(cfg.nmea_device.c_str(), O_WRONLY | O_NOCTTY | O_NONBLOCK | O_CREAT | O_APPEND, 0644);
     if (nmea_fd < 0) {
-      std::fprintf(stderr, "navd: cannot open [output] nmea_device %s: %s\n", cfg.nmea_device.c_str(), std::strerror(errno));
+      std::fprintf(stderr, "navd: cannot open [output] nmea_device %s: %s\n",
+                   cfg.nmea_device.c_str(), std::strerror(errno));
       return 2;
     }
   }
   std::unique_ptr<hil::navd::CanOutput> can;
   try {
     can = std::make_unique<hil::navd::CanOutput>(cfg.can_interface, cfg.can_log,
-                                                 static_cast<std::uint8_t>(cfg.can_source_address), cfg.can_rate_hz);
+                                                 static_cast<std::uint8_t>(cfg.can_source_address),
+                                                 cfg.can_rate_hz);
   } catch (const std::runtime_error& e) {
     std::fprintf(stderr, "navd: [output] %s\n", e.what());
     return 2;
@@ -180,7 +197,8 @@ int main(int argc, char** argv) {
     std::fwrite(line.data(), 1, line.size(), out);
     std::fflush(out);
     if (nmea_fd >= 0) {
-      const std::string s = est::outputs::FormatNmea0183(o, est::UnixNsFromGpsNs(o.t, cfg.leap_seconds));
+      const std::string s =
+          est::outputs::FormatNmea0183(o, est::UnixNsFromGpsNs(o.t, cfg.leap_seconds));
       if (write(nmea_fd, s.data(), s.size()) != static_cast<ssize_t>(s.size())) ++nmea_write_errors;
     }
     can->Publish(o, est::UnixNsFromGpsNs(o.t, cfg.leap_seconds));
@@ -211,7 +229,8 @@ int main(int argc, char** argv) {
     if (!nav.aligned()) return;
     if (last_emitted >= 0 && s.t / period_ns == last_emitted / period_ns) return;
     const est::NavOutput o = nav.Output();
-    if (o.valid && o.t != last_emitted) emit(o);  // (a fix stands in for the filter after an IMU loss)
+    if (o.valid && o.t != last_emitted)
+      emit(o);  // (a fix stands in for the filter after an IMU loss)
   };
   est::drivers::McuFrameDecoder mcu([&](const est::drivers::McuFrame& f) {
     health.OnMcuFrame(f);
@@ -224,7 +243,8 @@ int main(int argc, char** argv) {
   if (cfg.imu.from_can()) {
     est::drivers::J1939ImuDecoderConfig jc;
     jc.any_source = cfg.imu.source_address < 0;
-    jc.source_address = static_cast<std::uint8_t>(cfg.imu.source_address < 0 ? 0 : cfg.imu.source_address);
+    jc.source_address =
+        static_cast<std::uint8_t>(cfg.imu.source_address < 0 ? 0 : cfg.imu.source_address);
     try {
       can_imu = std::make_unique<hil::navd::CanImuInput>(cfg.imu.can_interface, jc);
     } catch (const std::runtime_error& e) {
@@ -233,8 +253,9 @@ int main(int argc, char** argv) {
     }
   }
 
-  health.set_sources({&receivers.nmea_totals(), &receivers.ubx_totals(), &mcu.stats(), &mcu_adapter.stats(),
-                      &nav.stats(), can_imu ? &can_imu->decoder().stats() : nullptr});
+  health.set_sources({&receivers.nmea_totals(), &receivers.ubx_totals(), &mcu.stats(),
+                      &mcu_adapter.stats(), &nav.stats(),
+                      can_imu ? &can_imu->decoder().stats() : nullptr});
   // every input device with what its bytes are fed to
   hil::navd::SerialDevice imu(cfg.imu_device, cfg.imu_baud);
   std::vector<std::pair<hil::navd::SerialDevice*, std::function<void(const std::string&)>>> inputs;
@@ -246,8 +267,10 @@ int main(int argc, char** argv) {
   }
   inputs.emplace_back(&imu, [&](const std::string& b) {
     imu_read_ns = MonotonicNs();
-    if (razor_text) razor.Feed(b);
-    else mcu.Feed(b);
+    if (razor_text)
+      razor.Feed(b);
+    else
+      mcu.Feed(b);
   });
   std::vector<pollfd> p;
   std::vector<std::size_t> polled;
@@ -286,22 +309,35 @@ int main(int argc, char** argv) {
   const auto st = receivers.nmea_stats();
   const auto ubx_st = receivers.ubx_stats();
   const auto& ns = nav.stats();
-  std::fprintf(stderr,
-               "navd: stopped; nmea ok=%llu bad_checksum=%llu malformed=%llu unsupported=%llu garbage_bytes=%llu "
-               "reopens=%llu; mcu frames=%llu bad_crc=%llu gaps=%llu; imu=%llu late_gnss=%llu fused=%llu "
-               "rejected=%llu resets=%llu ubx ok=%llu bad_checksum=%llu nmea_write_errors=%llu can_frames=%llu can_errors=%llu\n",
-               static_cast<unsigned long long>(st.sentences_ok), static_cast<unsigned long long>(st.bad_checksum),
-               static_cast<unsigned long long>(st.malformed), static_cast<unsigned long long>(st.unsupported),
-               static_cast<unsigned long long>(st.garbage_bytes), static_cast<unsigned long long>(receivers.reopens()),
-               static_cast<unsigned long long>(mcu.stats().frames_ok), static_cast<unsigned long long>(mcu.stats().bad_crc),
-               static_cast<unsigned long long>(mcu.stats().sequence_gaps), static_cast<unsigned long long>(ns.imu_samples),
-               static_cast<unsigned long long>(ns.gnss_late), static_cast<unsigned long long>(ns.gnss_fused),
-               static_cast<unsigned long long>(ns.gnss_rejected), static_cast<unsigned long long>(ns.gnss_resets),
-               static_cast<unsigned long long>(ubx_st.frames_ok), static_cast<unsigned long long>(ubx_st.bad_checksum),
-               static_cast<unsigned long long>(nmea_write_errors), static_cast<unsigned long long>(can->frames_sent()),
-               static_cast<unsigned long long>(can->send_errors()));
+  std::fprintf(
+      stderr,
+      "navd: stopped; nmea ok=%llu bad_checksum=%llu malformed=%llu unsupported=%llu "
+      "garbage_bytes=%llu "
+      "reopens=%llu; mcu frames=%llu bad_crc=%llu gaps=%llu; imu=%llu late_gnss=%llu fused=%llu "
+      "rejected=%llu resets=%llu ubx ok=%llu bad_checksum=%llu nmea_write_errors=%llu "
+      "can_frames=%llu can_errors=%llu\n",
+      static_cast<unsigned long long>(st.sentences_ok),
+      static_cast<unsigned long long>(st.bad_checksum),
+      static_cast<unsigned long long>(st.malformed),
+      static_cast<unsigned long long>(st.unsupported),
+      static_cast<unsigned long long>(st.garbage_bytes),
+      static_cast<unsigned long long>(receivers.reopens()),
+      static_cast<unsigned long long>(mcu.stats().frames_ok),
+      static_cast<unsigned long long>(mcu.stats().bad_crc),
+      static_cast<unsigned long long>(mcu.stats().sequence_gaps),
+      static_cast<unsigned long long>(ns.imu_samples),
+      static_cast<unsigned long long>(ns.gnss_late), static_cast<unsigned long long>(ns.gnss_fused),
+      static_cast<unsigned long long>(ns.gnss_rejected),
+      static_cast<unsigned long long>(ns.gnss_resets),
+      static_cast<unsigned long long>(ubx_st.frames_ok),
+      static_cast<unsigned long long>(ubx_st.bad_checksum),
+      static_cast<unsigned long long>(nmea_write_errors),
+      static_cast<unsigned long long>(can->frames_sent()),
+      static_cast<unsigned long long>(can->send_errors()));
   if (razor_text) {
-    std::fprintf(stderr, "navd: razor_text lines=%llu bad_lines=%llu garbage_bytes=%llu imu=%llu no_time=%llu gaps=%llu\n",
+    std::fprintf(stderr,
+                 "navd: razor_text lines=%llu bad_lines=%llu garbage_bytes=%llu imu=%llu "
+                 "no_time=%llu gaps=%llu\n",
                  static_cast<unsigned long long>(razor.stats().lines_ok),
                  static_cast<unsigned long long>(razor.stats().bad_lines),
                  static_cast<unsigned long long>(razor.stats().garbage_bytes),

@@ -8,18 +8,20 @@ std::string ToJsonLine(const NavSolution& s) {
   char buf[768];
   const long long sec = s.tov_unix_ns / 1000000000LL;
   const long long nsec = s.tov_unix_ns % 1000000000LL;
-  int n = std::snprintf(buf, sizeof buf,
-                        "{\"tov_utc_s\":%lld.%09lld,\"lat_deg\":%.10f,\"lon_deg\":%.10f,\"height_m\":%.4f,"
-                        "\"vel_enu_mps\":[%.4f,%.4f,%.4f],\"pos_std_enu_m\":[%.4f,%.4f,%.4f]",
-                        sec, nsec, s.lat_deg, s.lon_deg, s.height_m, s.vel_enu_mps[0], s.vel_enu_mps[1],
-                        s.vel_enu_mps[2], s.pos_std_enu_m[0], s.pos_std_enu_m[1], s.pos_std_enu_m[2]);
+  int n = std::snprintf(
+      buf, sizeof buf,
+      "{\"tov_utc_s\":%lld.%09lld,\"lat_deg\":%.10f,\"lon_deg\":%.10f,\"height_m\":%.4f,"
+      "\"vel_enu_mps\":[%.4f,%.4f,%.4f],\"pos_std_enu_m\":[%.4f,%.4f,%.4f]",
+      sec, nsec, s.lat_deg, s.lon_deg, s.height_m, s.vel_enu_mps[0], s.vel_enu_mps[1],
+      s.vel_enu_mps[2], s.pos_std_enu_m[0], s.pos_std_enu_m[1], s.pos_std_enu_m[2]);
   std::string out(buf, static_cast<std::size_t>(n));
   if (s.yaw_deg) {
     n = std::snprintf(buf, sizeof buf, ",\"yaw_deg\":%.4f", *s.yaw_deg);
     out.append(buf, static_cast<std::size_t>(n));
   }
   if (s.roll_deg && s.pitch_deg) {
-    n = std::snprintf(buf, sizeof buf, ",\"roll_deg\":%.4f,\"pitch_deg\":%.4f", *s.roll_deg, *s.pitch_deg);
+    n = std::snprintf(buf, sizeof buf, ",\"roll_deg\":%.4f,\"pitch_deg\":%.4f", *s.roll_deg,
+                      *s.pitch_deg);
     out.append(buf, static_cast<std::size_t>(n));
   }
   if (s.vel_std_enu_mps) {
@@ -35,7 +37,8 @@ std::string ToJsonLine(const NavSolution& s) {
     n = std::snprintf(buf, sizeof buf, ",\"mean_nis_pos\":%.3f", *s.mean_nis_pos);
     out.append(buf, static_cast<std::size_t>(n));
   }
-  n = std::snprintf(buf, sizeof buf, ",\"mode\":\"%s\",\"status\":%u}\n", s.mode.c_str(), s.status_flags);
+  n = std::snprintf(buf, sizeof buf, ",\"mode\":\"%s\",\"status\":%u}\n", s.mode.c_str(),
+                    s.status_flags);
   out.append(buf, static_cast<std::size_t>(n));
   return out;
 }

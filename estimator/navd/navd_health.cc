@@ -10,8 +10,9 @@ constexpr GpsNs kRecentNs = 5'000'000'000LL;
 // a fix reaches the filter up to ~2.2 s after its time of validity at 9600 baud (the epoch is
 // complete only when the next one starts), so "no fix" is judged with margin beyond that
 constexpr GpsNs kMinOutageNs = 3'500'000'000LL;
-constexpr std::uint32_t kResetTickWindow = 60'000'000;  // a restarted 1 MHz tick is below one minute
-constexpr std::uint16_t kResetSeqWindow = 64;           // a restarted sequence is small
+constexpr std::uint32_t kResetTickWindow =
+    60'000'000;                                // a restarted 1 MHz tick is below one minute
+constexpr std::uint16_t kResetSeqWindow = 64;  // a restarted sequence is small
 
 void Add(std::string& s, const char* key, std::uint64_t v) {
   char b[96];
@@ -36,7 +37,8 @@ void NavdHealth::OnGnss(const GnssSample& g) {
     ++c_.gnss_no_fix_epochs;
     return;
   }
-  if (last_fix_t_ >= 0 && gnss_period_ns_ > 0 && (g.t - last_fix_t_) * 2 > gnss_period_ns_ * 3) ++c_.gnss_gaps;
+  if (last_fix_t_ >= 0 && gnss_period_ns_ > 0 && (g.t - last_fix_t_) * 2 > gnss_period_ns_ * 3)
+    ++c_.gnss_gaps;
   last_fix_t_ = g.t;
 }
 
@@ -50,7 +52,8 @@ void NavdHealth::OnMcuFrame(const drivers::McuFrame& f) {
       return;
     }
     // a reset restarts both the tick (near zero, below the last one) and the sequence
-    if (f.tick < last_tick_ && f.tick < kResetTickWindow && f.sequence < last_seq_ && f.sequence < kResetSeqWindow) {
+    if (f.tick < last_tick_ && f.tick < kResetTickWindow && f.sequence < last_seq_ &&
+        f.sequence < kResetSeqWindow) {
       ++c_.mcu_resets;
       have_imu_tick_ = false;
     }
@@ -63,7 +66,8 @@ void NavdHealth::OnMcuFrame(const drivers::McuFrame& f) {
     const std::uint32_t dt = f.tick - last_imu_tick_;  // modulo 2^32: wraps are fine
     if (dt > 0 && dt < 0x80000000u) {
       if (imu_period_ticks_ == 0) imu_period_ticks_ = dt;
-      if (static_cast<std::uint64_t>(dt) * 2 > static_cast<std::uint64_t>(imu_period_ticks_) * 5) ++c_.imu_gaps;
+      if (static_cast<std::uint64_t>(dt) * 2 > static_cast<std::uint64_t>(imu_period_ticks_) * 5)
+        ++c_.imu_gaps;
     }
   }
   have_imu_tick_ = true;
@@ -72,14 +76,18 @@ void NavdHealth::OnMcuFrame(const drivers::McuFrame& f) {
 
 std::uint64_t NavdHealth::GnssLinkErrors() const {
   std::uint64_t n = 0;
-  if (src_.nmea) n += src_.nmea->bad_checksum + src_.nmea->malformed + src_.nmea->overlong + src_.nmea->garbage_bytes;
+  if (src_.nmea)
+    n += src_.nmea->bad_checksum + src_.nmea->malformed + src_.nmea->overlong +
+         src_.nmea->garbage_bytes;
   if (src_.ubx) n += src_.ubx->bad_checksum + src_.ubx->overlong + src_.ubx->garbage_bytes;
   return n;
 }
 
 std::uint64_t NavdHealth::ImuLinkErrors() const {
   std::uint64_t n = c_.imu_repeated_frames;
-  if (src_.mcu) n += src_.mcu->bad_crc + src_.mcu->bad_header + src_.mcu->garbage_bytes + src_.mcu->sequence_gaps;
+  if (src_.mcu)
+    n += src_.mcu->bad_crc + src_.mcu->bad_header + src_.mcu->garbage_bytes +
+         src_.mcu->sequence_gaps;
   if (src_.j1939) n += src_.j1939->unpaired + src_.j1939->bad_length + src_.j1939->out_of_order;
   return n;
 }
@@ -93,7 +101,8 @@ bool NavdHealth::Rose(Recent& r, std::uint64_t value, GpsNs t) {
 std::string NavdHealth::Field(GpsNs t) {
   // outage: no fix for longer than a few receiver periods (judged at the solution's time)
   const GpsNs limit = std::max(kMinOutageNs, 3 * gnss_period_ns_ + GpsNs{500'000'000});
-  const GpsNs since = last_fix_t_ >= 0 ? t - last_fix_t_ : (last_gnss_t_ >= 0 ? t - last_gnss_t_ : 0);
+  const GpsNs since =
+      last_fix_t_ >= 0 ? t - last_fix_t_ : (last_gnss_t_ >= 0 ? t - last_gnss_t_ : 0);
   const bool outage = (last_fix_t_ >= 0 || last_gnss_t_ >= 0) && since > limit;
   if (outage && !outage_) ++c_.gnss_outages;
   outage_ = outage;

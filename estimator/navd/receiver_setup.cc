@@ -12,8 +12,8 @@ ReceiverSetup::ReceiverSetup(const estimator::NavdConfig& cfg) {
   want.rate_hz = cfg.gnss_rate_hz;
   const bool ubx = cfg.gnss_protocol == "ubx";
   want.ubx_navigation = ubx;
-  want.nmea_off = ubx;         // a UBX host needs no NMEA: the baud goes to the NAV messages
-  want.nmea_minimal = !ubx;    // an NMEA host needs GGA and RMC only
+  want.nmea_off = ubx;       // a UBX host needs no NMEA: the baud goes to the NAV messages
+  want.nmea_minimal = !ubx;  // an NMEA host needs GGA and RMC only
   conf_.emplace(estimator::drivers::UbxSetupCommands(want));
 }
 
@@ -25,10 +25,12 @@ void ReceiverSetup::Service(SerialDevice& dev, std::int64_t now_ns) {
     reported_ = false;
   }
   if (auto bytes = conf_->Poll(now_ns)) {
-    if (write(dev.fd(), bytes->data(), bytes->size()) != static_cast<ssize_t>(bytes->size())) ++write_errors_;
+    if (write(dev.fd(), bytes->data(), bytes->size()) != static_cast<ssize_t>(bytes->size()))
+      ++write_errors_;
   }
   if (conf_->done() && !reported_) {
-    std::fprintf(stderr, "navd: receiver configuration on %s: %s\n", dev.path().c_str(), conf_->Summary().c_str());
+    std::fprintf(stderr, "navd: receiver configuration on %s: %s\n", dev.path().c_str(),
+                 conf_->Summary().c_str());
     reported_ = true;
   }
 }

@@ -10,6 +10,7 @@
 
 #include "hil/estimator/drivers/ubx_configurator.h"
 #include "hil/estimator/navd/navd_config.h"
+
 #include "serial_device.h"
 
 namespace hil::navd {

@@ -30,8 +30,12 @@ void ErrorStateEkf::Initialize(const NavState& s) {
   P_.block<3, 3>(kVel, kVel).diagonal().setConstant(p.init_vel_std_mps * p.init_vel_std_mps);
   P_(kAtt, kAtt) = P_(kAtt + 1, kAtt + 1) = p.init_roll_pitch_std_rad * p.init_roll_pitch_std_rad;
   P_(kAtt + 2, kAtt + 2) = p.init_yaw_std_rad * p.init_yaw_std_rad;
-  P_.block<3, 3>(kAccelBias, kAccelBias).diagonal().setConstant(p.init_accel_bias_std_mps2 * p.init_accel_bias_std_mps2);
-  P_.block<3, 3>(kGyroBias, kGyroBias).diagonal().setConstant(p.init_gyro_bias_std_radps * p.init_gyro_bias_std_radps);
+  P_.block<3, 3>(kAccelBias, kAccelBias)
+      .diagonal()
+      .setConstant(p.init_accel_bias_std_mps2 * p.init_accel_bias_std_mps2);
+  P_.block<3, 3>(kGyroBias, kGyroBias)
+      .diagonal()
+      .setConstant(p.init_gyro_bias_std_radps * p.init_gyro_bias_std_radps);
   if (p.gnss_error_tau_s > 0) {
     P_.block<3, 3>(kGnssError, kGnssError).diagonal() = GnssErrorVariance(gm_std_m_);
   }
@@ -39,7 +43,8 @@ void ErrorStateEkf::Initialize(const NavState& s) {
   if (SpeedDevState(p)) P_(kSpeedDev, kSpeedDev) = p.speed_dev_std_mps * p.speed_dev_std_mps;
 }
 
-void ErrorStateEkf::Predict(const Eigen::Vector3d& dth_raw, const Eigen::Vector3d& dv_raw, double dt) {
+void ErrorStateEkf::Predict(const Eigen::Vector3d& dth_raw, const Eigen::Vector3d& dv_raw,
+                            double dt) {
   if (!(dt > 0) || dt > 1.0 || !AllFinite(dth_raw) || !AllFinite(dv_raw)) return;
   const Eigen::Vector3d dth = dth_raw - bg_ * dt;
   const Eigen::Vector3d dv = dv_raw - ba_ * dt;
@@ -72,13 +77,19 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& dth_raw, const Eigen::Vector3
   }
   P_ = Phi * P_ * Phi.transpose();
   // process noise: isotropic densities are invariant under the rotation C
-  P_.block<3, 3>(kVel, kVel).diagonal().array() += p.accel_noise_mps2_rthz * p.accel_noise_mps2_rthz * dt;
-  P_.block<3, 3>(kAtt, kAtt).diagonal().array() += p.gyro_noise_radps_rthz * p.gyro_noise_radps_rthz * dt;
-  P_.block<3, 3>(kAccelBias, kAccelBias).diagonal().array() += p.accel_bias_rw_mps3_rthz * p.accel_bias_rw_mps3_rthz * dt;
-  P_.block<3, 3>(kGyroBias, kGyroBias).diagonal().array() += p.gyro_bias_rw_radps2_rthz * p.gyro_bias_rw_radps2_rthz * dt;
+  P_.block<3, 3>(kVel, kVel).diagonal().array() +=
+      p.accel_noise_mps2_rthz * p.accel_noise_mps2_rthz * dt;
+  P_.block<3, 3>(kAtt, kAtt).diagonal().array() +=
+      p.gyro_noise_radps_rthz * p.gyro_noise_radps_rthz * dt;
+  P_.block<3, 3>(kAccelBias, kAccelBias).diagonal().array() +=
+      p.accel_bias_rw_mps3_rthz * p.accel_bias_rw_mps3_rthz * dt;
+  P_.block<3, 3>(kGyroBias, kGyroBias).diagonal().array() +=
+      p.gyro_bias_rw_radps2_rthz * p.gyro_bias_rw_radps2_rthz * dt;
   if (p.gnss_error_tau_s > 0) P_.block<3, 3>(kGnssError, kGnssError).diagonal() += gm_q;
   if (p.speed_rw_mps_rthz > 0) P_(kSpeed, kSpeed) += p.speed_rw_mps_rthz * p.speed_rw_mps_rthz * dt;
-  if (SpeedDevState(p)) P_(kSpeedDev, kSpeedDev) += p.speed_dev_std_mps * p.speed_dev_std_mps * (1.0 - dev_decay * dev_decay);
+  if (SpeedDevState(p))
+    P_(kSpeedDev, kSpeedDev) +=
+        p.speed_dev_std_mps * p.speed_dev_std_mps * (1.0 - dev_decay * dev_decay);
   e_gnss_ *= gm_decay;
   speed_dev_ *= dev_decay;
   Symmetrize();
@@ -119,16 +130,20 @@ Eigen::Matrix<double, 2, kNumStates> ErrorStateEkf::NonHolonomicJacobian() const
 
 UpdateResult ErrorStateEkf::UpdatePosition(const Eigen::Vector3d& z, const Eigen::Vector3d& std_m) {
   if (!AllFinite(z) || !AllFinite(std_m)) return {};
-  const Eigen::Vector3d pred = AntennaPosition() + (params_.gnss_error_tau_s > 0 ? e_gnss_ : Eigen::Vector3d::Zero());
+  const Eigen::Vector3d pred =
+      AntennaPosition() + (params_.gnss_error_tau_s > 0 ? e_gnss_ : Eigen::Vector3d::Zero());
   Eigen::Matrix3d R = Eigen::Matrix3d::Zero();
-  for (int i = 0; i < 3; ++i) R(i, i) = std::pow(std::max(std_m[i], params_.gnss_pos_std_floor_m), 2);
+  for (int i = 0; i < 3; ++i)
+    R(i, i) = std::pow(std::max(std_m[i], params_.gnss_pos_std_floor_m), 2);
   return Update<3>(z - pred, PositionJacobian(), R);
 }
 
-UpdateResult ErrorStateEkf::UpdateVelocity(const Eigen::Vector3d& z, const Eigen::Vector3d& std_mps) {
+UpdateResult ErrorStateEkf::UpdateVelocity(const Eigen::Vector3d& z,
+                                           const Eigen::Vector3d& std_mps) {
   if (!AllFinite(z) || !AllFinite(std_mps)) return {};
   Eigen::Matrix3d R = Eigen::Matrix3d::Zero();
-  for (int i = 0; i < 3; ++i) R(i, i) = std::pow(std::max(std_mps[i], params_.gnss_vel_std_floor_mps), 2);
+  for (int i = 0; i < 3; ++i)
+    R(i, i) = std::pow(std::max(std_mps[i], params_.gnss_vel_std_floor_mps), 2);
   return Update<3>(z - AntennaVelocity(), VelocityJacobian(), R);
 }
 
@@ -158,7 +173,8 @@ UpdateResult ErrorStateEkf::UpdateSpeedModel() {
   innovation << set_speed_ + speed_dev_ - forward;
   // with a deviation state the pseudo-measurement carries what the state does not: half its σ (a
   // tenth made the attitude terms of H overconfident on the Razor rig: seed000 diverged to metres)
-  const double r = SpeedDevState(params_) ? 0.5 * params_.speed_dev_std_mps : params_.speed_dev_std_mps;
+  const double r =
+      SpeedDevState(params_) ? 0.5 * params_.speed_dev_std_mps : params_.speed_dev_std_mps;
   Eigen::Matrix<double, 1, 1> R;
   R << r * r;
   return Update<1>(innovation, SpeedModelJacobian(), R);
@@ -194,7 +210,8 @@ UpdateResult ErrorStateEkf::UpdateYaw(double yaw_enu_rad, double std_rad) {
 }
 
 template <int M>
-UpdateResult ErrorStateEkf::Update(const Eigen::Matrix<double, M, 1>& y, const Eigen::Matrix<double, M, kNumStates>& H,
+UpdateResult ErrorStateEkf::Update(const Eigen::Matrix<double, M, 1>& y,
+                                   const Eigen::Matrix<double, M, kNumStates>& H,
                                    const Eigen::Matrix<double, M, M>& R) {
   UpdateResult r;
   r.dof = M;
@@ -229,11 +246,14 @@ void ErrorStateEkf::InjectError(const EkfVector& dx) {
 
 Eigen::Vector3d ErrorStateEkf::GnssErrorVariance(double horizontal_std_m) const {
   const double up = horizontal_std_m * gm_up_ratio_;
-  return Eigen::Vector3d(horizontal_std_m * horizontal_std_m, horizontal_std_m * horizontal_std_m, up * up);
+  return Eigen::Vector3d(horizontal_std_m * horizontal_std_m, horizontal_std_m * horizontal_std_m,
+                         up * up);
 }
 
 void ErrorStateEkf::SetGnssErrorModel(double tau_s, double std_m, bool new_source) {
-  if (!(params_.gnss_error_tau_s > 0) || !(tau_s > 0) || !(std_m > 0) || !std::isfinite(tau_s) || !std::isfinite(std_m)) return;
+  if (!(params_.gnss_error_tau_s > 0) || !(tau_s > 0) || !(std_m > 0) || !std::isfinite(tau_s) ||
+      !std::isfinite(std_m))
+    return;
   if (tau_s == gm_tau_s_ && std_m == gm_std_m_) return;
   if (!new_source && gm_std_m_ > 0) {
     // the same process at another scale: e' = r·e, so P's rows and columns of e scale by r
@@ -243,7 +263,8 @@ void ErrorStateEkf::SetGnssErrorModel(double tau_s, double std_m, bool new_sourc
     P_.block<kNumStates, 3>(0, kGnssError) *= r;
   } else if (std_m > gm_std_m_) {
     // a new error source appears on top of the old one
-    P_.block<3, 3>(kGnssError, kGnssError).diagonal() += GnssErrorVariance(std_m) - GnssErrorVariance(gm_std_m_);
+    P_.block<3, 3>(kGnssError, kGnssError).diagonal() +=
+        GnssErrorVariance(std_m) - GnssErrorVariance(gm_std_m_);
   } else {
     // the old error is gone: the state restarts, independent of everything else
     e_gnss_.setZero();
@@ -255,8 +276,8 @@ void ErrorStateEkf::SetGnssErrorModel(double tau_s, double std_m, bool new_sourc
   gm_std_m_ = std_m;
 }
 
-void ErrorStateEkf::ResetPositionVelocity(const Eigen::Vector3d& p, const Eigen::Vector3d& v, double pos_std,
-                                          double vel_std) {
+void ErrorStateEkf::ResetPositionVelocity(const Eigen::Vector3d& p, const Eigen::Vector3d& v,
+                                          double pos_std, double vel_std) {
   state_.p_N_m = p - state_.q_NB * params_.lever_arm_B_m;
   state_.v_N_mps = v;
   e_gnss_.setZero();

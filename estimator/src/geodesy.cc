@@ -24,7 +24,8 @@ Lla LlaFromEcef(const Eigen::Vector3d& p) {
   for (int i = 0; i < 6; ++i) {
     const double s = std::sin(lat);
     const double n = kWgs84A_m / std::sqrt(1.0 - kWgs84E2 * s * s);
-    h = std::abs(std::cos(lat)) > 1e-9 ? r_xy / std::cos(lat) - n : std::abs(p.z()) - n * (1.0 - kWgs84E2);
+    h = std::abs(std::cos(lat)) > 1e-9 ? r_xy / std::cos(lat) - n
+                                       : std::abs(p.z()) - n * (1.0 - kWgs84E2);
     lat = std::atan2(p.z(), r_xy * (1.0 - kWgs84E2 * n / (n + h)));
   }
   return {lat / kDeg, std::atan2(p.y(), p.x()) / kDeg, h};
@@ -37,18 +38,21 @@ double NormalGravity(double lat_deg, double height_m) {
   return g0 - 3.086e-6 * height_m;
 }
 
-LocalTangentFrame::LocalTangentFrame(const Lla& origin) : origin_(origin), p_E0_m_(EcefFromLla(origin)) {
+LocalTangentFrame::LocalTangentFrame(const Lla& origin)
+    : origin_(origin), p_E0_m_(EcefFromLla(origin)) {
   const double lat = origin.lat_deg * kDeg, lon = origin.lon_deg * kDeg;
   const double sl = std::sin(lat), cl = std::cos(lat), so = std::sin(lon), co = std::cos(lon);
   // columns: east, north, up expressed in ECEF
-  R_EN_ << -so, -sl * co, cl * co,
-            co, -sl * so, cl * so,
-           0.0, cl, sl;
+  R_EN_ << -so, -sl * co, cl * co, co, -sl * so, cl * so, 0.0, cl, sl;
 }
 
-Eigen::Vector3d LocalTangentFrame::ToLocal(const Lla& g) const { return R_EN_.transpose() * (EcefFromLla(g) - p_E0_m_); }
+Eigen::Vector3d LocalTangentFrame::ToLocal(const Lla& g) const {
+  return R_EN_.transpose() * (EcefFromLla(g) - p_E0_m_);
+}
 
-Lla LocalTangentFrame::ToLla(const Eigen::Vector3d& p_N_m) const { return LlaFromEcef(p_E0_m_ + R_EN_ * p_N_m); }
+Lla LocalTangentFrame::ToLla(const Eigen::Vector3d& p_N_m) const {
+  return LlaFromEcef(p_E0_m_ + R_EN_ * p_N_m);
+}
 
 Eigen::Vector3d LocalTangentFrame::w_IE_N() const {
   const double lat = origin_.lat_deg * kDeg;

@@ -21,17 +21,23 @@ ImuSample ScaledPart(const ImuSample& s, GpsNs t_end, double fraction) {
 
 const char* NavModeName(NavMode m) {
   switch (m) {
-    case NavMode::kEkf: return "ekf";
-    case NavMode::kPlanar2d: return "planar2d";
-    case NavMode::kGnssOnly: return "gnss_only";
-    case NavMode::kImuOnly: return "imu_only";
-    case NavMode::kMultiGnss: return "multi_gnss";
+    case NavMode::kEkf:
+      return "ekf";
+    case NavMode::kPlanar2d:
+      return "planar2d";
+    case NavMode::kGnssOnly:
+      return "gnss_only";
+    case NavMode::kImuOnly:
+      return "imu_only";
+    case NavMode::kMultiGnss:
+      return "multi_gnss";
   }
   return "?";
 }
 
 std::optional<NavMode> NavModeFromName(const char* name) {
-  for (NavMode m : {NavMode::kEkf, NavMode::kPlanar2d, NavMode::kGnssOnly, NavMode::kImuOnly, NavMode::kMultiGnss}) {
+  for (NavMode m : {NavMode::kEkf, NavMode::kPlanar2d, NavMode::kGnssOnly, NavMode::kImuOnly,
+                    NavMode::kMultiGnss}) {
     if (std::strcmp(name, NavModeName(m)) == 0) return m;
   }
   return std::nullopt;
@@ -50,7 +56,8 @@ void Navigator::EnsureFrame(const Lla& origin) {
 }
 
 void Navigator::Push(const ImuSample& s) {
-  if (!(s.dt_s > 0) || s.dt_s > 1.0 || !s.delta_angle_B_rad.allFinite() || !s.delta_velocity_B_mps.allFinite()) {
+  if (!(s.dt_s > 0) || s.dt_s > 1.0 || !s.delta_angle_B_rad.allFinite() ||
+      !s.delta_velocity_B_mps.allFinite()) {
     ++stats_.bad_input;
     status_ |= kStatusBadInput;
     return;
@@ -60,7 +67,8 @@ void Navigator::Push(const ImuSample& s) {
     return;
   }
   if (have_imu_ && s.t - newest_imu_t_ > static_cast<GpsNs>(1.5 * s.dt_s * 1e9)) ++stats_.imu_gaps;
-  if (have_imu_ && aligned_ && static_cast<double>(s.t - newest_imu_t_) * kNsToS > params_.imu_timeout_s) {
+  if (have_imu_ && aligned_ &&
+      static_cast<double>(s.t - newest_imu_t_) * kNsToS > params_.imu_timeout_s) {
     // back after a loss: nothing can carry the filter through the gap. Drop what is buffered from
     // before it, restart the filter just before this sample and its position at the next fix.
     while (!imu_.empty()) imu_.PopFront();
@@ -77,8 +85,9 @@ void Navigator::Push(const ImuSample& s) {
 }
 
 void Navigator::Push(const GnssSample& g) {
-  if (!std::isfinite(g.position.lat_deg) || !std::isfinite(g.position.lon_deg) || !std::isfinite(g.position.height_m) ||
-      std::abs(g.position.lat_deg) > 90.0 || !g.pos_std_enu_m.allFinite()) {
+  if (!std::isfinite(g.position.lat_deg) || !std::isfinite(g.position.lon_deg) ||
+      !std::isfinite(g.position.height_m) || std::abs(g.position.lat_deg) > 90.0 ||
+      !g.pos_std_enu_m.allFinite()) {
     ++stats_.bad_input;
     status_ |= kStatusBadInput;
     return;
@@ -90,15 +99,18 @@ void Navigator::Push(const GnssSample& g) {
   }  // the fallback solution while the IMU is lost
   if (g.t > newest_gnss_t_) {
     // the fix period, for the wait on the next epoch (clamped to 20 Hz .. 0.5 Hz)
-    if (newest_gnss_t_ >= 0) gnss_period_ns_ = std::clamp<GpsNs>(g.t - newest_gnss_t_, 50'000'000, 2'000'000'000);
+    if (newest_gnss_t_ >= 0)
+      gnss_period_ns_ = std::clamp<GpsNs>(g.t - newest_gnss_t_, 50'000'000, 2'000'000'000);
     newest_gnss_t_ = g.t;
   }
   const bool lost = ImuLost();
   if (lost && !stats_.imu_lost) ++stats_.imu_losses;
   stats_.imu_lost = lost;
   if (!UsesImu()) {
-    if (params_.mode == NavMode::kMultiGnss) MultiGnssFix(g);
-    else GnssOnlyFix(g);
+    if (params_.mode == NavMode::kMultiGnss)
+      MultiGnssFix(g);
+    else
+      GnssOnlyFix(g);
     return;
   }
   if (aligned_ && g.t < filter_t_) {
@@ -107,7 +119,8 @@ void Navigator::Push(const GnssSample& g) {
   }
   // keep the buffer in time order (fixes may arrive out of order within the horizon)
   gnss_.Push(g);
-  for (std::size_t i = gnss_.size() - 1; i > 0 && gnss_[i].t < gnss_[i - 1].t; --i) std::swap(gnss_[i], gnss_[i - 1]);
+  for (std::size_t i = gnss_.size() - 1; i > 0 && gnss_[i].t < gnss_[i - 1].t; --i)
+    std::swap(gnss_[i], gnss_[i - 1]);
 }
 
 void Navigator::Push(const HeadingSample& h) {
@@ -124,13 +137,15 @@ void Navigator::Update() {
   if (params_.gnss_max_latency_ns > params_.fusion_horizon_ns && gnss_period_ns_ > 0) {
     // hold at the next expected GNSS epoch until it arrives or the wait runs out
     const GpsNs expected_t = newest_gnss_t_ + gnss_period_ns_;
-    horizon_t = std::min(horizon_t, std::max(expected_t, newest_imu_t_ - params_.gnss_max_latency_ns));
+    horizon_t =
+        std::min(horizon_t, std::max(expected_t, newest_imu_t_ - params_.gnss_max_latency_ns));
   }
   while (!imu_.empty() && imu_.front().t <= horizon_t) {
     ImuSample s = imu_.front();
     imu_.PopFront();
     bool consumed = false;
-    // fuse every fix due up to the end of this interval at its own time, splitting the interval there
+    // fuse every fix due up to the end of this interval at its own time, splitting the interval
+    // there
     while (!gnss_.empty() && gnss_.front().t <= s.t) {
       const GnssSample g = gnss_.front();
       gnss_.PopFront();
@@ -165,13 +180,15 @@ void Navigator::ProcessImu(const ImuSample& s) {
   if (params_.mode == NavMode::kPlanar2d) {
     const Eigen::Vector3d f = s.delta_velocity_B_mps / s.dt_s;
     // remove gravity's projection on the horizontal axes using the levelled mean at alignment
-    planar_.Predict(f.x() - mean_f_B_.x(), f.y() - mean_f_B_.y(), s.delta_angle_B_rad.z() / s.dt_s, s.dt_s);
+    planar_.Predict(f.x() - mean_f_B_.x(), f.y() - mean_f_B_.y(), s.delta_angle_B_rad.z() / s.dt_s,
+                    s.dt_s);
     filter_t_ = s.t;
     return;
   }
   ekf_.Predict(s.delta_angle_B_rad, s.delta_velocity_B_mps, s.dt_s);
   filter_t_ = s.t;
-  if (params_.mode == NavMode::kEkf && (params_.ekf.nhc_std_mps > 0 || params_.ekf.speed_rw_mps_rthz > 0) &&
+  if (params_.mode == NavMode::kEkf &&
+      (params_.ekf.nhc_std_mps > 0 || params_.ekf.speed_rw_mps_rthz > 0) &&
       static_cast<double>(filter_t_ - last_nhc_t_) * kNsToS >= params_.nhc_period_s - 1e-6) {
     ekf_.UpdateNonHolonomic();
     ekf_.UpdateSpeedModel();
@@ -195,7 +212,8 @@ void Navigator::TryAlign(const GnssSample& g) {
     return;
   }
   // level: rotate the mean specific force onto the N up axis, then apply the heading
-  const Eigen::Quaterniond q_level = Eigen::Quaterniond::FromTwoVectors(mean_f_B_.normalized(), Eigen::Vector3d::UnitZ());
+  const Eigen::Quaterniond q_level =
+      Eigen::Quaterniond::FromTwoVectors(mean_f_B_.normalized(), Eigen::Vector3d::UnitZ());
   const Eigen::Vector3d x_lev = q_level * Eigen::Vector3d::UnitX();
   const double yaw_lev = std::atan2(x_lev.y(), x_lev.x());
   NavState st;
@@ -204,7 +222,8 @@ void Navigator::TryAlign(const GnssSample& g) {
   st.p_N_m = p_ant - st.q_NB * params_.ekf.lever_arm_B_m;
   st.v_N_mps = g.has_velocity ? g.vel_enu_mps : Eigen::Vector3d::Zero();
   ekf_.Initialize(st);
-  planar_.Initialize(p_ant.head<2>(), st.v_N_mps.head<2>(), yaw, g.pos_std_enu_m.head<2>().norm() / std::sqrt(2.0));
+  planar_.Initialize(p_ant.head<2>(), st.v_N_mps.head<2>(), yaw,
+                     g.pos_std_enu_m.head<2>().norm() / std::sqrt(2.0));
   aligned_ = true;
   status_ |= kStatusAligned;
   filter_t_ = g.t;
@@ -227,7 +246,8 @@ void Navigator::ProcessGnss(const GnssSample& g) {
   }
   if (params_.mode == NavMode::kPlanar2d) {
     planar_.UpdatePosition(p.head<2>(), g.pos_std_enu_m.head<2>().norm() / std::sqrt(2.0));
-    if (g.has_velocity && params_.use_gnss_velocity) planar_.UpdateVelocity(g.vel_enu_mps.head<2>(), g.vel_std_enu_mps.x());
+    if (g.has_velocity && params_.use_gnss_velocity)
+      planar_.UpdateVelocity(g.vel_enu_mps.head<2>(), g.vel_std_enu_mps.x());
     last_gnss_fused_t_ = g.t;
     status_ = (status_ | kStatusGnssFused) & ~kStatusDeadReckoning;
     return;
@@ -236,10 +256,12 @@ void Navigator::ProcessGnss(const GnssSample& g) {
     // RTK float and fixed solutions carry different correlated errors (GGA quality 5 = float);
     // the receiver's own error scales with its HDOP when the fix reports one
     const auto& e = params_.ekf;
-    const bool is_float = e.gnss_float_error_tau_s > 0 && e.gnss_float_error_std_m > 0 && g.fix_quality == 5;
+    const bool is_float =
+        e.gnss_float_error_tau_s > 0 && e.gnss_float_error_std_m > 0 && g.fix_quality == 5;
     const double dop = g.hdop > 0 ? std::clamp(g.hdop, 0.5, 20.0) : 1.0;
     ekf_.SetGnssErrorModel(is_float ? e.gnss_float_error_tau_s : e.gnss_error_tau_s,
-                           is_float ? e.gnss_float_error_std_m : e.gnss_error_std_m * dop, is_float != gnss_float_);
+                           is_float ? e.gnss_float_error_std_m : e.gnss_error_std_m * dop,
+                           is_float != gnss_float_);
     gnss_float_ = is_float;
   }
   const UpdateResult rp = ekf_.UpdatePosition(p, g.pos_std_enu_m);
@@ -250,7 +272,8 @@ void Navigator::ProcessGnss(const GnssSample& g) {
     stats_.mean_nis_pos += (rp.nis - stats_.mean_nis_pos) / static_cast<double>(stats_.nis_count);
     last_gnss_fused_t_ = g.t;
     first_rejected_t_ = -1;
-    status_ = (status_ | kStatusGnssFused) & ~(kStatusGnssRejected | kStatusDeadReckoning | kStatusReset);
+    status_ =
+        (status_ | kStatusGnssFused) & ~(kStatusGnssRejected | kStatusDeadReckoning | kStatusReset);
     if (g.has_velocity && params_.use_gnss_velocity) {
       const UpdateResult rv = ekf_.UpdateVelocity(g.vel_enu_mps, g.vel_std_enu_mps);
       stats_.last_nis_vel = rv.nis;
@@ -261,7 +284,8 @@ void Navigator::ProcessGnss(const GnssSample& g) {
   status_ = (status_ | kStatusGnssRejected) & ~kStatusGnssFused;
   if (first_rejected_t_ < 0) first_rejected_t_ = g.t;
   // recovery: a long run of rejections means the filter, not the receiver, is wrong
-  if (static_cast<double>(g.t - first_rejected_t_) * kNsToS >= params_.reset_after_rejected_s) ResetToFix(g, p);
+  if (static_cast<double>(g.t - first_rejected_t_) * kNsToS >= params_.reset_after_rejected_s)
+    ResetToFix(g, p);
 }
 
 void Navigator::ResetToFix(const GnssSample& g, const Eigen::Vector3d& p_antenna_N_m) {
@@ -286,7 +310,8 @@ void Navigator::GnssOnlyFix(const GnssSample& g) {
   direct_.vel_std_enu_mps = g.vel_std_enu_mps;
   direct_.has_attitude = false;
   if (g.has_velocity && g.vel_enu_mps.head<2>().norm() >= params_.align_min_speed_mps) {
-    direct_.q_NB = Eigen::AngleAxisd(std::atan2(g.vel_enu_mps.y(), g.vel_enu_mps.x()), Eigen::Vector3d::UnitZ());
+    direct_.q_NB = Eigen::AngleAxisd(std::atan2(g.vel_enu_mps.y(), g.vel_enu_mps.x()),
+                                     Eigen::Vector3d::UnitZ());
     direct_.has_attitude = true;
   }
   direct_.status = kStatusGnssFused;
@@ -347,15 +372,19 @@ void Navigator::MultiGnssFix(const GnssSample& g) {
 }
 
 bool Navigator::UsesImu() const {
-  return params_.mode == NavMode::kEkf || params_.mode == NavMode::kImuOnly || params_.mode == NavMode::kPlanar2d;
+  return params_.mode == NavMode::kEkf || params_.mode == NavMode::kImuOnly ||
+         params_.mode == NavMode::kPlanar2d;
 }
 
 // not in imu_only: a dead-reckoning comparison never shows a fix
-bool Navigator::FallsBackToFixes() const { return params_.mode == NavMode::kEkf || params_.mode == NavMode::kPlanar2d; }
+bool Navigator::FallsBackToFixes() const {
+  return params_.mode == NavMode::kEkf || params_.mode == NavMode::kPlanar2d;
+}
 
 bool Navigator::ImuLost() const {
   constexpr int kFixesBeforeImuLost = 4;
-  return FallsBackToFixes() && have_imu_ && aligned_ && newest_gnss_t_ >= 0 && fixes_since_imu_ >= kFixesBeforeImuLost &&
+  return FallsBackToFixes() && have_imu_ && aligned_ && newest_gnss_t_ >= 0 &&
+         fixes_since_imu_ >= kFixesBeforeImuLost &&
          static_cast<double>(newest_gnss_t_ - newest_imu_t_) * kNsToS > params_.imu_timeout_s;
 }
 
@@ -377,8 +406,10 @@ NavOutput Navigator::Output() const {
     o.v_N_mps << planar_.velocity(), 0.0;
     o.q_NB = Eigen::AngleAxisd(planar_.yaw_rad(), Eigen::Vector3d::UnitZ());
     o.has_attitude = true;
-    o.pos_std_enu_m << std::sqrt(planar_.covariance()(0, 0)), std::sqrt(planar_.covariance()(1, 1)), 0.0;
-    o.vel_std_enu_mps << std::sqrt(planar_.covariance()(2, 2)), std::sqrt(planar_.covariance()(3, 3)), 0.0;
+    o.pos_std_enu_m << std::sqrt(planar_.covariance()(0, 0)), std::sqrt(planar_.covariance()(1, 1)),
+        0.0;
+    o.vel_std_enu_mps << std::sqrt(planar_.covariance()(2, 2)),
+        std::sqrt(planar_.covariance()(3, 3)), 0.0;
     o.position = frame_.ToLla(o.p_N_m);
     return o;
   }
@@ -386,13 +417,14 @@ NavOutput Navigator::Output() const {
   NavState st = ekf_.state();
   MechanizationMemory mem;
   EarthModel earth;
-  earth.g_N_mps2 = Eigen::Vector3d(0, 0, -NormalGravity(frame_.origin().lat_deg, frame_.origin().height_m));
+  earth.g_N_mps2 =
+      Eigen::Vector3d(0, 0, -NormalGravity(frame_.origin().lat_deg, frame_.origin().height_m));
   earth.w_IE_N_radps = frame_.w_IE_N();
   for (std::size_t i = 0; i < imu_.size(); ++i) {
     const ImuSample& s = imu_[i];
     if (s.t <= o.t) continue;
-    Propagate(earth, s.delta_angle_B_rad - ekf_.gyro_bias() * s.dt_s, s.delta_velocity_B_mps - ekf_.accel_bias() * s.dt_s,
-              s.dt_s, mem, st);
+    Propagate(earth, s.delta_angle_B_rad - ekf_.gyro_bias() * s.dt_s,
+              s.delta_velocity_B_mps - ekf_.accel_bias() * s.dt_s, s.dt_s, mem, st);
     o.t = s.t;
   }
   o.p_N_m = st.p_N_m;

@@ -4,7 +4,8 @@
 
 namespace hil::estimator {
 
-void PlanarFilter::Initialize(const Eigen::Vector2d& p, const Eigen::Vector2d& v, double yaw, double pos_std) {
+void PlanarFilter::Initialize(const Eigen::Vector2d& p, const Eigen::Vector2d& v, double yaw,
+                              double pos_std) {
   x_ << p, v;
   yaw_ = yaw;
   P_.setZero();
@@ -12,11 +13,12 @@ void PlanarFilter::Initialize(const Eigen::Vector2d& p, const Eigen::Vector2d& v
 }
 
 void PlanarFilter::Predict(double a_fwd, double a_left, double yaw_rate, double dt) {
-  if (!(dt > 0) || !std::isfinite(a_fwd) || !std::isfinite(a_left) || !std::isfinite(yaw_rate)) return;
+  if (!(dt > 0) || !std::isfinite(a_fwd) || !std::isfinite(a_left) || !std::isfinite(yaw_rate))
+    return;
   yaw_ += yaw_rate * dt;
   const double c = std::cos(yaw_), s = std::sin(yaw_);
-  // body acceleration rotated to the navigation frame; the paper's rotation term [[0,−θ̇],[θ̇,0]]·v is
-  // already contained in what a body-fixed accelerometer measures (the centripetal acceleration)
+  // body acceleration rotated to the navigation frame; the paper's rotation term [[0,−θ̇],[θ̇,0]]·v
+  // is already contained in what a body-fixed accelerometer measures (the centripetal acceleration)
   const Eigen::Vector2d a_N(c * a_fwd - s * a_left, s * a_fwd + c * a_left);
   Eigen::Matrix4d A = Eigen::Matrix4d::Identity();
   A(0, 2) = A(1, 3) = dt;
@@ -41,7 +43,8 @@ void PlanarFilter::UpdateVelocity(const Eigen::Vector2d& z, double std_mps) {
   if (!z.allFinite() || !(std_mps > 0)) return;
   Eigen::Matrix<double, 2, 4> C = Eigen::Matrix<double, 2, 4>::Zero();
   C(0, 2) = C(1, 3) = 1;
-  const Eigen::Matrix2d S = C * P_ * C.transpose() + Eigen::Matrix2d::Identity() * std_mps * std_mps;
+  const Eigen::Matrix2d S =
+      C * P_ * C.transpose() + Eigen::Matrix2d::Identity() * std_mps * std_mps;
   const Eigen::Matrix<double, 4, 2> K = P_ * C.transpose() * S.inverse();
   x_ += K * (z - C * x_);
   P_ = (Eigen::Matrix4d::Identity() - K * C) * P_;

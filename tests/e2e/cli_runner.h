@@ -1,7 +1,5 @@
 #pragma once
 // Test helper: runs a command line through /bin/sh and collects its exit code and output.
-#include <sys/wait.h>
-
 #include <array>
 #include <cstdio>
 #include <cstdlib>
@@ -9,6 +7,8 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include <sys/wait.h>
 
 namespace hil::test {
 
@@ -43,7 +43,8 @@ inline std::string SourceDir() {
 class TempDir {
  public:
   explicit TempDir(const std::string& tag) {
-    path_ = std::filesystem::temp_directory_path() / ("hil_" + tag + "_" + std::to_string(::getpid()));
+    path_ =
+        std::filesystem::temp_directory_path() / ("hil_" + tag + "_" + std::to_string(::getpid()));
     std::filesystem::remove_all(path_);
     std::filesystem::create_directories(path_);
   }
@@ -55,7 +56,9 @@ class TempDir {
   std::filesystem::path path_;
 };
 
-inline void WriteFile(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+inline void WriteFile(const std::string& path, const std::string& text) {
+  std::ofstream(path) << text;
+}
 
 inline std::string ReadFile(const std::string& path) {
   std::ifstream in(path);

@@ -3,20 +3,23 @@
 #include <dirent.h>
 #include <unistd.h>
 
-#include <gtest/gtest.h>
-
-#include <nlohmann/json.hpp>
 #include <regex>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "cli_runner.h"
 
 namespace hil::test {
 namespace {
 
-const std::string kOrigin = "origin: {lat_deg: 35.4796096, lon_deg: 50.5979765, height_m: 1312.0}\n";
+const std::string kOrigin =
+    "origin: {lat_deg: 35.4796096, lon_deg: 50.5979765, height_m: 1312.0}\n";
 
 std::string Hil() { return BinDir() + "/hil"; }
-std::string Vector(const std::string& name) { return SourceDir() + "/../shared/vectors/gpsd-ublox5/" + name; }
+std::string Vector(const std::string& name) {
+  return SourceDir() + "/../shared/vectors/gpsd-ublox5/" + name;
+}
 
 // the device's bytes and their emulated times; rx lines (host to device) carry wall times
 // The emulated part of a capture's tx/drop lines: kind, emulated time, byte period, name, bytes.
@@ -53,8 +56,8 @@ TEST(HilValidateE2eTest, RealReceiverCapturesConformAndBrokenOnesDoNot) {
     EXPECT_EQ(r.exit_code, 0) << log << "\n" << r.out;
     EXPECT_NE(r.out.find("CONFORMS"), std::string::npos);
   }
-  CommandResult r = RunCommand(Hil() + " validate --protocol ubx " + Vector("navisys-gr701w.log") + " --report " +
-                               dir / "ubx.json");
+  CommandResult r = RunCommand(Hil() + " validate --protocol ubx " + Vector("navisys-gr701w.log") +
+                               " --report " + dir / "ubx.json");
   EXPECT_EQ(r.exit_code, 0) << r.out;
   const auto rep = nlohmann::json::parse(ReadFile(dir / "ubx.json"));
   EXPECT_TRUE(rep["conforms"].get<bool>());
@@ -89,7 +92,8 @@ TEST(HilRunModesE2eTest, BytesIdenticalInVirtualScaledAndRealtimeModes) {
   const auto sc = nlohmann::json::parse(ReadFile(dir / "sc/report.json"));
   EXPECT_EQ(sc["mode"], "scaled");
   EXPECT_TRUE(sc["metrics"]["latency_ms"].is_object()) << "latency is measured in scaled mode";
-  EXPECT_TRUE(nlohmann::json::parse(ReadFile(dir / "v/report.json"))["metrics"]["latency_ms"].is_null());
+  EXPECT_TRUE(
+      nlohmann::json::parse(ReadFile(dir / "v/report.json"))["metrics"]["latency_ms"].is_null());
   // scaled needs a speed
   EXPECT_EQ(RunCommand(Hil() + " run " + s + " --mode scaled --out " + dir / "x").exit_code, 2);
 }
@@ -99,14 +103,17 @@ TEST(HilRunEstimatorE2eTest, HungEstimatorIsDetectedReportedAndStopped) {
   WriteFile(dir / "s.yaml", "name: hang\nduration_s: 200\n" + kOrigin);
   for (const char* mode : {"virtual", "scaled --speed 50"}) {
     const std::string out = dir / (std::string("run_") + mode[0]);
-    const CommandResult r = RunCommand(Hil() + " run " + dir / "s.yaml" + " --mode " + mode + " --out " + out +
-                                       " --estimator 'exec sleep 987' --silence-timeout 1");
+    const CommandResult r =
+        RunCommand(Hil() + " run " + dir / "s.yaml" + " --mode " + mode + " --out " + out +
+                   " --estimator 'exec sleep 987' --silence-timeout 1");
     EXPECT_EQ(r.exit_code, 1) << mode << "\n" << r.out;
     const auto report = nlohmann::json::parse(ReadFile(out + "/report.json"));
     EXPECT_FALSE(report["pass"].get<bool>());
     EXPECT_FALSE(report["complete"].get<bool>());
     ASSERT_FALSE(report["problems"].empty());
-    EXPECT_NE(report["problems"][0].get<std::string>().find("the estimator hung"), std::string::npos) << r.out;
+    EXPECT_NE(report["problems"][0].get<std::string>().find("the estimator hung"),
+              std::string::npos)
+        << r.out;
     EXPECT_LT(report["wall_time_s"].get<double>(), 30.0) << "detected in about the silence timeout";
     EXPECT_FALSE(ProcessWithArgsExists("sleep", "987")) << "the estimator is always stopped";
   }
@@ -115,20 +122,24 @@ TEST(HilRunEstimatorE2eTest, HungEstimatorIsDetectedReportedAndStopped) {
 TEST(HilRunEstimatorE2eTest, NmeaOutputOnStdoutAndOnAPty) {
   TempDir dir("e2e_nmea_out");
   // `cat` of the receiver's own NMEA is an "estimator" whose solutions are the raw fixes
-  WriteFile(dir / "stdout.yaml", "name: nmea_stdout\nduration_s: 20\n" + kOrigin +
-                                     "estimator: {command: 'cat {ttyGPS}', output: nmea_stdout}\n"
-                                     "criteria:\n  - {metric: horizontal_rmse_m, max_ratio_to_baseline: 1.01}\n");
-  WriteFile(dir / "pty.yaml", "name: nmea_pty\nduration_s: 20\n" + kOrigin +
-                                  "estimator: {command: 'cat {ttyGPS} > {ttyNAV}', output: nmea_pty}\n"
-                                  "criteria:\n  - {metric: output_rate_hz, min: 0.99}\n");
+  WriteFile(dir / "stdout.yaml",
+            "name: nmea_stdout\nduration_s: 20\n" + kOrigin +
+                "estimator: {command: 'cat {ttyGPS}', output: nmea_stdout}\n"
+                "criteria:\n  - {metric: horizontal_rmse_m, max_ratio_to_baseline: 1.01}\n");
+  WriteFile(dir / "pty.yaml",
+            "name: nmea_pty\nduration_s: 20\n" + kOrigin +
+                "estimator: {command: 'cat {ttyGPS} > {ttyNAV}', output: nmea_pty}\n"
+                "criteria:\n  - {metric: output_rate_hz, min: 0.99}\n");
   for (const char* s : {"stdout", "pty"}) {
-    const CommandResult r = RunCommand(Hil() + " run " + dir / (std::string(s) + ".yaml") + " --out " + dir / s);
+    const CommandResult r =
+        RunCommand(Hil() + " run " + dir / (std::string(s) + ".yaml") + " --out " + dir / s);
     EXPECT_EQ(r.exit_code, 0) << s << "\n" << r.out;
     const auto report = nlohmann::json::parse(ReadFile(dir / (std::string(s) + "/report.json")));
     EXPECT_GE(report["metrics"]["samples"].get<int>(), 20) << s;
-    // the same fixes, rounded to NMEA's 1e-5 arc-minute (≤ 1 cm): the RMSE agrees to a few millimetres
-    EXPECT_NEAR(report["metrics"]["horizontal_rmse_m"].get<double>(), report["baselines"]["horizontal_rmse_m"].get<double>(),
-                5e-3)
+    // the same fixes, rounded to NMEA's 1e-5 arc-minute (≤ 1 cm): the RMSE agrees to a few
+    // millimetres
+    EXPECT_NEAR(report["metrics"]["horizontal_rmse_m"].get<double>(),
+                report["baselines"]["horizontal_rmse_m"].get<double>(), 5e-3)
         << s << ": the solutions are the fixes (NMEA rounding only)";
   }
 }
@@ -138,10 +149,14 @@ TEST(HilRunEstimatorE2eTest, GpsdIsAnEstimatorUnderTest) {
   // its build's GPS week window by 1024 weeks, so this scenario lives in 2025)
   TempDir dir("e2e_gpsd");
   const std::string port = std::to_string(20000 + ::getpid() % 20000);
-  WriteFile(dir / "s.yaml", "name: gpsd\nduration_s: 15\nstart_utc: \"2025-06-10T08:00:00Z\"\n" + kOrigin +
-                                "estimator:\n  command: \"gpsd -N -n -b -S " + port + " -F {run_dir}/gpsd.sock {ttyGPS} & "
-                                "sleep 0.5; exec gpspipe -w localhost:" + port + "\"\n  output: gpsd_json\n  startup_s: 1\n"
-                                "criteria:\n  - {metric: horizontal_rmse_m, max_ratio_to_baseline: 1.01}\n");
+  WriteFile(dir / "s.yaml",
+            "name: gpsd\nduration_s: 15\nstart_utc: \"2025-06-10T08:00:00Z\"\n" + kOrigin +
+                "estimator:\n  command: \"gpsd -N -n -b -S " + port +
+                " -F {run_dir}/gpsd.sock {ttyGPS} & "
+                "sleep 0.5; exec gpspipe -w localhost:" +
+                port +
+                "\"\n  output: gpsd_json\n  startup_s: 1\n"
+                "criteria:\n  - {metric: horizontal_rmse_m, max_ratio_to_baseline: 1.01}\n");
   const CommandResult r = RunCommand(Hil() + " run " + dir / "s.yaml" + " --out " + dir / "run");
   EXPECT_EQ(r.exit_code, 0) << r.out << ReadFile(dir / "run/estimator.stderr");
   const auto report = nlohmann::json::parse(ReadFile(dir / "run/report.json"));
@@ -151,16 +166,20 @@ TEST(HilRunEstimatorE2eTest, GpsdIsAnEstimatorUnderTest) {
 TEST(HilRunEstimatorE2eTest, NavdConfiguresAStockReceiverWithUbxCfg) {
   // the emulated NEO-5M starts with its default NMEA output; navd switches it to UBX navigation at
   // 4 Hz with CFG commands over the pty and waits for each ACK, as a production driver does. A
-  // command/answer session depends on the host's reaction time, so it runs on the wall clock (scaled
-  // ×2): a virtual run would see the host answer only when it catches up with the emulation
+  // command/answer session depends on the host's reaction time, so it runs on the wall clock
+  // (scaled ×2): a virtual run would see the host answer only when it catches up with the emulation
   TempDir dir("e2e_cfg");
-  WriteFile(dir / "s.yaml", "name: cfg\nduration_s: 20\n" + kOrigin +
-                                "estimator:\n  navd_input: {gnss_protocol: ubx, gnss_configure: true, gnss_rate_hz: 4}\n"
-                                "criteria:\n  - {metric: output_rate_hz, min: 3.9}\n");
-  const CommandResult r = RunCommand(Hil() + " run " + dir / "s.yaml" + " --mode scaled --speed 2 --out " + dir / "run");
+  WriteFile(
+      dir / "s.yaml",
+      "name: cfg\nduration_s: 20\n" + kOrigin +
+          "estimator:\n  navd_input: {gnss_protocol: ubx, gnss_configure: true, gnss_rate_hz: 4}\n"
+          "criteria:\n  - {metric: output_rate_hz, min: 3.9}\n");
+  const CommandResult r = RunCommand(Hil() + " run " + dir / "s.yaml" +
+                                     " --mode scaled --speed 2 --out " + dir / "run");
   const std::string stderr_text = ReadFile(dir / "run/estimator.stderr");
   EXPECT_EQ(r.exit_code, 0) << r.out << stderr_text;
-  EXPECT_NE(stderr_text.find("11 commands: 11 acked, 0 refused, 0 unanswered"), std::string::npos) << stderr_text;
+  EXPECT_NE(stderr_text.find("11 commands: 11 acked, 0 refused, 0 unanswered"), std::string::npos)
+      << stderr_text;
   EXPECT_NE(ReadFile(dir / "run/navd.conf").find("gnss_configure = true"), std::string::npos);
   // the capture holds both directions: navd's commands, the receiver's ACKs, then UBX only
   const std::string cap = ReadFile(dir / "run/captures/ttyGPS.cap");
@@ -191,7 +210,8 @@ TEST(HilRunFaultsE2eTest, OutagesAreEvaluatedAndByteCorruptionReachesTheCapture)
   WriteFile(dir / "s.yaml", "name: faults\nduration_s: 40\n" + kOrigin +
                                 "faults:\n"
                                 "  - {kind: gnss_outage, start_s: 10, end_s: 15}\n"
-                                "  - {kind: byte_corruption, start_s: 20, end_s: 30, probability: 0.002, link: ttyGPS}\n");
+                                "  - {kind: byte_corruption, start_s: 20, end_s: 30, probability: "
+                                "0.002, link: ttyGPS}\n");
   const CommandResult r = RunCommand(Hil() + " run " + dir / "s.yaml" + " --out " + dir / "run");
   ASSERT_NE(r.exit_code, 2) << r.out;
   const auto report = nlohmann::json::parse(ReadFile(dir / "run/report.json"));
@@ -203,7 +223,8 @@ TEST(HilRunFaultsE2eTest, OutagesAreEvaluatedAndByteCorruptionReachesTheCapture)
   EXPECT_TRUE(outages[0].contains("reconvergence_time_s"));
   EXPECT_GT(report["fault_effects"]["bytes_corrupted"].get<int>(), 0);
   // the corrupted bytes are what the link carried: the capture no longer conforms
-  const CommandResult v = RunCommand(Hil() + " validate --protocol nmea " + dir / "run/captures/ttyGPS.cap");
+  const CommandResult v =
+      RunCommand(Hil() + " validate --protocol nmea " + dir / "run/captures/ttyGPS.cap");
   EXPECT_EQ(v.exit_code, 1) << v.out;
   EXPECT_NE(v.out.find("checksum"), std::string::npos) << v.out;
   EXPECT_NE(ReadFile(dir / "run/report.html").find("GNSS outages"), std::string::npos);
@@ -218,7 +239,8 @@ TEST(HilReportE2eTest, ReportHtmlWithItsPlotImages) {
   ASSERT_FALSE(html.empty());
   const std::regex img("<img src=\"([^\"]+)\"");
   std::size_t images = 0;
-  for (auto it = std::sregex_iterator(html.begin(), html.end(), img); it != std::sregex_iterator(); ++it) {
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), img); it != std::sregex_iterator();
+       ++it) {
     const std::string svg = ReadFile(dir / ("run/" + (*it)[1].str()));
     EXPECT_EQ(svg.rfind("<svg", 0), 0u) << (*it)[1];
     EXPECT_NE(svg.find("</svg>"), std::string::npos);
@@ -236,9 +258,11 @@ TEST(HilSuiteE2eTest, SuiteRunsEveryScenarioIntoOneSummary) {
   std::filesystem::create_directories(dir / "empty");
   WriteFile(dir / "mixed/a_pass.yaml", "name: a_pass\nduration_s: 8\n" + kOrigin);
   WriteFile(dir / "mixed/b_fail.yaml",
-            "name: b_fail\nduration_s: 8\n" + kOrigin + "criteria:\n  - {metric: horizontal_rmse_m, max: 0.0001}\n");
+            "name: b_fail\nduration_s: 8\n" + kOrigin +
+                "criteria:\n  - {metric: horizontal_rmse_m, max: 0.0001}\n");
   WriteFile(dir / "good/a.yaml", "name: a\nduration_s: 8\n" + kOrigin);
-  CommandResult r = RunCommand(Hil() + " suite " + dir / "mixed" + " -j 2 --out " + dir / "out_mixed");
+  CommandResult r =
+      RunCommand(Hil() + " suite " + dir / "mixed" + " -j 2 --out " + dir / "out_mixed");
   EXPECT_EQ(r.exit_code, 1) << r.out;
   auto summary = nlohmann::json::parse(ReadFile(dir / "out_mixed/summary.json"));
   EXPECT_EQ(summary["runs"].size(), 2u);
@@ -248,14 +272,17 @@ TEST(HilSuiteE2eTest, SuiteRunsEveryScenarioIntoOneSummary) {
   EXPECT_NE(junit.find("<testsuite name=\"a_pass\""), std::string::npos) << junit;
   EXPECT_NE(junit.find("<failure"), std::string::npos);
 
-  r = RunCommand(Hil() + " suite " + dir / "good" + " --repeat 3 --seed 11 -j 2 --out " + dir / "out_good");
+  r = RunCommand(Hil() + " suite " + dir / "good" + " --repeat 3 --seed 11 -j 2 --out " +
+                 dir / "out_good");
   EXPECT_EQ(r.exit_code, 0) << r.out;
   summary = nlohmann::json::parse(ReadFile(dir / "out_good/summary.json"));
   ASSERT_EQ(summary["runs"].size(), 3u);
-  for (int i = 0; i < 3; ++i) EXPECT_EQ(summary["runs"][static_cast<std::size_t>(i)]["seed"].get<int>(), 11 + i);
+  for (int i = 0; i < 3; ++i)
+    EXPECT_EQ(summary["runs"][static_cast<std::size_t>(i)]["seed"].get<int>(), 11 + i);
   EXPECT_TRUE(std::filesystem::exists(dir / "out_good/a-seed13/report.json"));
 
-  EXPECT_EQ(RunCommand(Hil() + " suite " + dir / "empty" + " --out " + dir / "out_empty").exit_code, 2);
+  EXPECT_EQ(RunCommand(Hil() + " suite " + dir / "empty" + " --out " + dir / "out_empty").exit_code,
+            2);
   EXPECT_EQ(RunCommand(Hil() + " suite " + dir / "nowhere").exit_code, 2);
 }
 

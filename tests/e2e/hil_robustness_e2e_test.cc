@@ -1,21 +1,22 @@
-// The harness itself under trouble, through the real hil binary: Ctrl-C (SIGINT) and SIGTERM to hil,
-// the estimator killed mid-run, the port closed by the peer, an output folder that fills up
-// (RLIMIT_FSIZE: the tests run as root, so permissions cannot make a folder unwritable) and one that
-// cannot be created. Each must give a clear message, stop every process of the estimator's process
-// group (no orphans), and leave report.json marked "complete": false with what was captured so far.
+// The harness itself under trouble, through the real hil binary: Ctrl-C (SIGINT) and SIGTERM to
+// hil, the estimator killed mid-run, the port closed by the peer, an output folder that fills up
+// (RLIMIT_FSIZE: the tests run as root, so permissions cannot make a folder unwritable) and one
+// that cannot be created. Each must give a clear message, stop every process of the estimator's
+// process group (no orphans), and leave report.json marked "complete": false with what was captured
+// so far.
 #include <fcntl.h>
 #include <signal.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
 #include <unistd.h>
-
-#include <gtest/gtest.h>
 
 #include <cerrno>
 #include <chrono>
 #include <filesystem>
-#include <nlohmann/json.hpp>
 #include <thread>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <sys/resource.h>
+#include <sys/wait.h>
 
 #include "cli_runner.h"
 
@@ -41,7 +42,8 @@ struct Child {
 };
 
 // Starts hil with `args` (stdout+stderr into `log`), optionally with a file size limit.
-Child StartHil(const std::vector<std::string>& args, const std::string& log, rlim_t fsize_limit = RLIM_INFINITY) {
+Child StartHil(const std::vector<std::string>& args, const std::string& log,
+               rlim_t fsize_limit = RLIM_INFINITY) {
   Child c;
   c.pid = fork();
   if (c.pid == 0) {
@@ -109,7 +111,8 @@ nlohmann::json Report(const std::string& run_dir) {
 // An estimator that writes its pid, starts a background helper in its process group (which must
 // not survive the run) and runs navd.
 std::string EstimatorWithHelper() {
-  return "sh -c 'echo $$ > {run_dir}/est.pid; sleep 600 & exec {navd} --config {run_dir}/navd.conf'";
+  return "sh -c 'echo $$ > {run_dir}/est.pid; sleep 600 & exec {navd} --config "
+         "{run_dir}/navd.conf'";
 }
 
 TEST(HilRobustnessE2eTest, SigintAndSigtermStopTheRunAndLeaveAnIncompleteReport) {
@@ -117,8 +120,8 @@ TEST(HilRobustnessE2eTest, SigintAndSigtermStopTheRunAndLeaveAnIncompleteReport)
     TempDir dir("e2e_sig" + std::to_string(sig));
     WriteFile(dir / "s.yaml", Scenario(120));
     const std::string run = dir / "run";
-    Child c = StartHil({"run", dir / "s.yaml", "--out", run, "--mode", "scaled", "--speed", "10", "--estimator",
-                        EstimatorWithHelper()},
+    Child c = StartHil({"run", dir / "s.yaml", "--out", run, "--mode", "scaled", "--speed", "10",
+                        "--estimator", EstimatorWithHelper()},
                        dir / "log");
     ASSERT_TRUE(WaitForFile(run + "/est.pid", 20));
     std::this_thread::sleep_for(std::chrono::seconds(3));  // 30 s of the scenario
@@ -131,7 +134,8 @@ TEST(HilRobustnessE2eTest, SigintAndSigtermStopTheRunAndLeaveAnIncompleteReport)
     const nlohmann::json r = Report(run);
     EXPECT_FALSE(r["complete"].get<bool>());
     EXPECT_FALSE(r["pass"].get<bool>());
-    EXPECT_NE(r["incomplete_reason"].get<std::string>().find("interrupted by " + name), std::string::npos);
+    EXPECT_NE(r["incomplete_reason"].get<std::string>().find("interrupted by " + name),
+              std::string::npos);
     ExpectNoOrphans(r);
     // everything captured so far is on disk: some seconds of receiver bytes and navd solutions
     EXPECT_GT(fs::file_size(run + "/captures/ttyGPS.cap"), 2000u);
@@ -144,8 +148,8 @@ TEST(HilRobustnessE2eTest, AnEstimatorKilledMidRunIsReportedAndItsGroupStopped) 
   TempDir dir("e2e_kill");
   WriteFile(dir / "s.yaml", Scenario(120));
   const std::string run = dir / "run";
-  Child c = StartHil({"run", dir / "s.yaml", "--out", run, "--mode", "scaled", "--speed", "10", "--estimator",
-                      EstimatorWithHelper()},
+  Child c = StartHil({"run", dir / "s.yaml", "--out", run, "--mode", "scaled", "--speed", "10",
+                      "--estimator", EstimatorWithHelper()},
                      dir / "log");
   ASSERT_TRUE(WaitForFile(run + "/est.pid", 20));
   std::this_thread::sleep_for(std::chrono::seconds(2));
@@ -155,11 +159,14 @@ TEST(HilRobustnessE2eTest, AnEstimatorKilledMidRunIsReportedAndItsGroupStopped) 
   EXPECT_EQ(code, 1) << ReadFile(dir / "log");
   const nlohmann::json r = Report(run);
   EXPECT_FALSE(r["complete"].get<bool>());
-  EXPECT_NE(r["incomplete_reason"].get<std::string>().find("ended before the scenario did"), std::string::npos)
+  EXPECT_NE(r["incomplete_reason"].get<std::string>().find("ended before the scenario did"),
+            std::string::npos)
       << r["incomplete_reason"];
   // navd runs under the shell of the command: the shell reports its child's SIGKILL as code 137
   const std::string exit = r["estimator_exit"].get<std::string>();
-  EXPECT_TRUE(exit.find("signal 9") != std::string::npos || exit.find("code 137") != std::string::npos) << exit;
+  EXPECT_TRUE(exit.find("signal 9") != std::string::npos ||
+              exit.find("code 137") != std::string::npos)
+      << exit;
   ExpectNoOrphans(r);
   EXPECT_GT(r["metrics"]["samples"].get<int>(), 3);
 }
@@ -172,7 +179,9 @@ TEST(HilRobustnessE2eTest, APortClosedByThePeerStopsTheRunInsteadOfStallingIt) {
   const std::string est =
       "sh -c 'echo $$ > {run_dir}/est.pid; head -c 3000 {ttyGPS} > /dev/null; "
       "while true; do echo \"{}\"; sleep 0.1; done'";
-  Child c = StartHil({"run", dir / "s.yaml", "--out", run, "--estimator", est, "--silence-timeout", "2"}, dir / "log");
+  Child c =
+      StartHil({"run", dir / "s.yaml", "--out", run, "--estimator", est, "--silence-timeout", "2"},
+               dir / "log");
   const int code = WaitExit(c, 60);
   const std::string log = ReadFile(dir / "log");
   EXPECT_EQ(code, 1) << log;
@@ -188,7 +197,8 @@ TEST(HilRobustnessE2eTest, AFullOutputFolderStopsTheRunWithTheFileNamed) {
   // with the IMU board the captures grow by several kB per second; 64 kB per file is reached early
   WriteFile(dir / "s.yaml", Scenario(300, "mcu: {profile: razor-v13, link: ttyIMU}\n"));
   const std::string run = dir / "run";
-  Child c = StartHil({"run", dir / "s.yaml", "--out", run, "--estimator", EstimatorWithHelper()}, dir / "log", 64 * 1024);
+  Child c = StartHil({"run", dir / "s.yaml", "--out", run, "--estimator", EstimatorWithHelper()},
+                     dir / "log", 64 * 1024);
   const int code = WaitExit(c, 60);
   const std::string log = ReadFile(dir / "log");
   EXPECT_EQ(code, 1) << log;
@@ -204,9 +214,11 @@ TEST(HilRobustnessE2eTest, AnOutputFolderThatCannotBeCreatedIsAClearError) {
   TempDir dir("e2e_nodir");
   WriteFile(dir / "s.yaml", Scenario(10));
   WriteFile(dir / "file", "x");
-  const CommandResult r = RunCommand(Hil() + " run " + dir / "s.yaml" + " --out " + dir / "file/run");
+  const CommandResult r =
+      RunCommand(Hil() + " run " + dir / "s.yaml" + " --out " + dir / "file/run");
   EXPECT_EQ(r.exit_code, 2) << r.out;
-  EXPECT_NE(r.out.find("cannot write the output folder " + dir / "file/run"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("cannot write the output folder " + dir / "file/run"), std::string::npos)
+      << r.out;
 }
 
 }  // namespace

@@ -3,7 +3,6 @@
 #include <unistd.h>
 
 #include <gtest/gtest.h>
-
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.h"
@@ -28,7 +27,8 @@ TEST(HilRunE2eTest, DefaultScenarioPassesWithHonestMetrics) {
   // every epoch of the 120 s run reached navd through the pty and came back
   EXPECT_GE(report["metrics"]["samples"].get<int>(), 118);
   EXPECT_NEAR(report["metrics"]["output_rate_hz"].get<double>(), 1.0, 0.01);
-  for (const char* f : {"junit.xml", "truth.csv", "estimate.csv", "gnss_fixes.csv", "captures/ttyGPS.cap"}) {
+  for (const char* f :
+       {"junit.xml", "truth.csv", "estimate.csv", "gnss_fixes.csv", "captures/ttyGPS.cap"}) {
     EXPECT_TRUE(std::filesystem::exists(dir / ("run/" + std::string(f)))) << f;
   }
   EXPECT_NE(ReadFile(dir / "run/junit.xml").find("<testcase"), std::string::npos);
@@ -50,7 +50,8 @@ TEST(HilRunE2eTest, FailingCriterionExitsOne) {
   WriteFile(dir / "strict.yaml",
             "name: strict\nduration_s: 20\norigin: {lat_deg: 35.4796096, lon_deg: 50.5979765}\n"
             "criteria:\n  - {metric: horizontal_rmse_m, max: 0.001}\n");
-  const CommandResult r = RunCommand(BinDir() + "/hil run " + dir / "strict.yaml" + " --out " + dir / "run");
+  const CommandResult r =
+      RunCommand(BinDir() + "/hil run " + dir / "strict.yaml" + " --out " + dir / "run");
   EXPECT_EQ(r.exit_code, 1) << r.out;
   const auto report = nlohmann::json::parse(ReadFile(dir / "run/report.json"));
   EXPECT_FALSE(report["pass"].get<bool>());
@@ -60,8 +61,8 @@ TEST(HilRunE2eTest, FailingCriterionExitsOne) {
 TEST(HilRunE2eTest, CrashingEstimatorFailsTheRun) {
   TempDir dir("e2e_crash");
   WriteFile(dir / "s.yaml", "name: crash\nduration_s: 5\norigin: {lat_deg: 35, lon_deg: 50}\n");
-  const CommandResult r =
-      RunCommand(BinDir() + "/hil run " + dir / "s.yaml" + " --out " + dir / "run --estimator 'exit 3'");
+  const CommandResult r = RunCommand(BinDir() + "/hil run " + dir / "s.yaml" + " --out " +
+                                     dir / "run --estimator 'exit 3'");
   EXPECT_EQ(r.exit_code, 1) << r.out;
   const auto report = nlohmann::json::parse(ReadFile(dir / "run/report.json"));
   EXPECT_FALSE(report["complete"].get<bool>());
@@ -70,15 +71,20 @@ TEST(HilRunE2eTest, CrashingEstimatorFailsTheRun) {
 
 TEST(HilRunE2eTest, BadScenarioExitsTwoNamingFileLineAndField) {
   TempDir dir("e2e_bad");
-  WriteFile(dir / "bad.yaml", "name: bad\norigin: {lat_deg: 35, lon_deg: 50}\ngnss:\n  baud: 9600\n  rate_hzz: 1\n");
+  WriteFile(dir / "bad.yaml",
+            "name: bad\norigin: {lat_deg: 35, lon_deg: 50}\ngnss:\n  baud: 9600\n  rate_hzz: 1\n");
   CommandResult r = RunCommand(BinDir() + "/hil run " + dir / "bad.yaml" + " --out " + dir / "run");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.out.find(dir / "bad.yaml:5: gnss.rate_hzz: unknown key (did you mean 'rate_hz'?)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(dir / "bad.yaml:5: gnss.rate_hzz: unknown key (did you mean 'rate_hz'?)"),
+            std::string::npos)
+      << r.out;
 
   WriteFile(dir / "type.yaml", "name: t\norigin: {lat_deg: 35, lon_deg: fifty}\n");
   r = RunCommand(BinDir() + "/hil run " + dir / "type.yaml");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.out.find("type.yaml:2: origin.lon_deg: expected a number, got 'fifty'"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("type.yaml:2: origin.lon_deg: expected a number, got 'fifty'"),
+            std::string::npos)
+      << r.out;
 
   r = RunCommand(BinDir() + "/hil run " + dir / "missing.yaml");
   EXPECT_EQ(r.exit_code, 2);
@@ -91,7 +97,9 @@ TEST(HilRunE2eTest, UnknownOptionAndUnwritableFolderExitTwoWithOneLine) {
   EXPECT_NE(r.out.find("frobnicate"), std::string::npos) << r.out;
   r = RunCommand(BinDir() + "/hil run --out /proc/hil-cannot-write-here");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.out.find("cannot write the output folder /proc/hil-cannot-write-here"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("cannot write the output folder /proc/hil-cannot-write-here"),
+            std::string::npos)
+      << r.out;
   EXPECT_EQ(r.out.find("terminate called"), std::string::npos) << r.out;
 }
 

@@ -5,15 +5,14 @@
 // frames at 100 Hz) and a GNSS data gap, where the EKF's output depends on the moment a fix is read
 // relative to the IMU stream. The second run shares the machine with a busy process.
 #include <signal.h>
-#include <sys/wait.h>
 #include <unistd.h>
-
-#include <gtest/gtest.h>
 
 #include <sstream>
 #include <string>
 
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <sys/wait.h>
 
 #include "cli_runner.h"
 
@@ -28,9 +27,11 @@ std::string FirstDifference(const std::string& a, const std::string& b) {
   std::istringstream ia(a), ib(b);
   std::string la, lb;
   for (int n = 1;; ++n) {
-    const bool more_a = static_cast<bool>(std::getline(ia, la)), more_b = static_cast<bool>(std::getline(ib, lb));
+    const bool more_a = static_cast<bool>(std::getline(ia, la)),
+               more_b = static_cast<bool>(std::getline(ib, lb));
     if (!more_a || !more_b || la != lb) {
-      return "line " + std::to_string(n) + ":\n  " + (more_a ? la : "<end>") + "\n  " + (more_b ? lb : "<end>");
+      return "line " + std::to_string(n) + ":\n  " + (more_a ? la : "<end>") + "\n  " +
+             (more_b ? lb : "<end>");
     }
   }
 }
@@ -63,8 +64,11 @@ TEST(VirtualDeterminismE2eTest, TwoLinksGiveByteIdenticalSolutionsUnderLoad) {
   const std::string a = ReadFile(dir / "a/estimate.jsonl");
   ASSERT_GT(std::count(a.begin(), a.end(), '\n'), 500) << "10 Hz solutions for most of the 60 s";
   EXPECT_EQ(FirstDifference(a, ReadFile(dir / "b/estimate.jsonl")), "");
-  for (const char* f : {"captures/ttyGPS.cap", "captures/ttyIMU.cap", "estimate.csv", "truth.csv"}) {
-    EXPECT_EQ(FirstDifference(ReadFile(dir / ("a/" + std::string(f))), ReadFile(dir / ("b/" + std::string(f)))), "")
+  for (const char* f :
+       {"captures/ttyGPS.cap", "captures/ttyIMU.cap", "estimate.csv", "truth.csv"}) {
+    EXPECT_EQ(FirstDifference(ReadFile(dir / ("a/" + std::string(f))),
+                              ReadFile(dir / ("b/" + std::string(f)))),
+              "")
         << f;
   }
   const auto ra = nlohmann::json::parse(ReadFile(dir / "a/report.json"));
@@ -72,7 +76,8 @@ TEST(VirtualDeterminismE2eTest, TwoLinksGiveByteIdenticalSolutionsUnderLoad) {
   EXPECT_EQ(ra["metrics"], rb["metrics"]);
   EXPECT_EQ(ra["estimator_health"], rb["estimator_health"]);
   // navd fused the fixes in time (none late) in both runs
-  EXPECT_EQ(ra["estimator_health"]["counters"].value("gnss_late", -1.0), 0.0) << ra["estimator_health"].dump();
+  EXPECT_EQ(ra["estimator_health"]["counters"].value("gnss_late", -1.0), 0.0)
+      << ra["estimator_health"].dump();
 }
 
 }  // namespace

@@ -1,10 +1,10 @@
 // Google Benchmark of the estimator core: one IMU predict, one GNSS update, and the whole seed-004
 // run (1800 s, 100 Hz IMU, 10 Hz GNSS) through the Navigator, inputs generated beforehand so only
 // the estimator is timed.
-#include <benchmark/benchmark.h>
-
 #include <random>
 #include <vector>
+
+#include <benchmark/benchmark.h>
 
 #include "hil/estimator/navigator.h"
 
@@ -38,7 +38,8 @@ void BM_GnssPositionVelocityUpdate(benchmark::State& state) {
   ErrorStateEkf e = MakeEkf();
   for (auto _ : state) {
     state.PauseTiming();
-    e.Predict(Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, 0.0981), 0.01);  // keep P from collapsing
+    e.Predict(Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, 0.0981),
+              0.01);  // keep P from collapsing
     const Eigen::Vector3d p = e.AntennaPosition() + Eigen::Vector3d(0.01, -0.01, 0.0);
     const Eigen::Vector3d v = e.AntennaVelocity();
     state.ResumeTiming();
@@ -88,9 +89,11 @@ void BM_Seed004WholeRun(benchmark::State& state) {
     }
     benchmark::DoNotOptimize(nav.Output());
   }
-  state.counters["imu_samples_per_s"] = benchmark::Counter(static_cast<double>(imu.size()) * static_cast<double>(state.iterations()),
-                                                           benchmark::Counter::kIsRate);
-  state.counters["realtime_factor"] = benchmark::Counter(1800.0 * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["imu_samples_per_s"] =
+      benchmark::Counter(static_cast<double>(imu.size()) * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate);
+  state.counters["realtime_factor"] = benchmark::Counter(
+      1800.0 * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_Seed004WholeRun)->Unit(benchmark::kMillisecond)->Iterations(1);
 

@@ -2,9 +2,9 @@
 // functions, and gating/consistency behaviour of the update.
 #include "hil/estimator/error_state_ekf.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+
+#include <gtest/gtest.h>
 
 namespace hil::estimator {
 namespace {
@@ -40,7 +40,8 @@ class ErrorStateEkfTest : public ::testing::Test {
     NavState s;
     s.p_N_m = Eigen::Vector3d(10, -4, 2);
     s.v_N_mps = Eigen::Vector3d(1.2, 0.4, -0.1);
-    s.q_NB = Eigen::AngleAxisd(0.6, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(0.05, Eigen::Vector3d::UnitY()) *
+    s.q_NB = Eigen::AngleAxisd(0.6, Eigen::Vector3d::UnitZ()) *
+             Eigen::AngleAxisd(0.05, Eigen::Vector3d::UnitY()) *
              Eigen::AngleAxisd(-0.03, Eigen::Vector3d::UnitX());
     ekf_.Initialize(s);
     // one interval so the filter has an angular rate (for the lever-arm velocity)
@@ -52,7 +53,8 @@ class ErrorStateEkfTest : public ::testing::Test {
     return e.state().p_N_m + e.state().q_NB * e.params().lever_arm_B_m + e.gnss_error();
   }
   Eigen::Vector3d Vel(const ErrorStateEkf& e) const {
-    const Eigen::Vector3d w = raw_w_ - e.gyro_bias();  // the rate the filter used, re-derived from the bias
+    const Eigen::Vector3d w =
+        raw_w_ - e.gyro_bias();  // the rate the filter used, re-derived from the bias
     return e.state().v_N_mps + e.state().q_NB * w.cross(e.params().lever_arm_B_m);
   }
   static double Speed(const ErrorStateEkf& e) {
@@ -71,7 +73,8 @@ class ErrorStateEkfTest : public ::testing::Test {
 
 TEST_F(ErrorStateEkfTest, PositionJacobianMatchesFiniteDifferences) {
   const auto J = Numeric<3>([](const ErrorStateEkf& e) { return Pos(e); });
-  EXPECT_LT((J - ekf_.PositionJacobian()).cwiseAbs().maxCoeff(), 1e-6) << J << "\n\n" << ekf_.PositionJacobian();
+  EXPECT_LT((J - ekf_.PositionJacobian()).cwiseAbs().maxCoeff(), 1e-6) << J << "\n\n"
+                                                                       << ekf_.PositionJacobian();
 }
 
 TEST_F(ErrorStateEkfTest, VelocityJacobianMatchesFiniteDifferences) {
@@ -79,7 +82,8 @@ TEST_F(ErrorStateEkfTest, VelocityJacobianMatchesFiniteDifferences) {
   const Eigen::Vector3d expected_rate = raw_w_ - ekf_.gyro_bias();
   ASSERT_LT((ekf_.last_gyro_rate_B() - expected_rate).norm(), 1e-9);
   const auto J = Numeric<3>([this](const ErrorStateEkf& e) { return Vel(e); });
-  EXPECT_LT((J - ekf_.VelocityJacobian()).cwiseAbs().maxCoeff(), 1e-6) << J << "\n\n" << ekf_.VelocityJacobian();
+  EXPECT_LT((J - ekf_.VelocityJacobian()).cwiseAbs().maxCoeff(), 1e-6) << J << "\n\n"
+                                                                       << ekf_.VelocityJacobian();
 }
 
 TEST_F(ErrorStateEkfTest, NonHolonomicJacobianMatchesFiniteDifferences) {
@@ -88,8 +92,11 @@ TEST_F(ErrorStateEkfTest, NonHolonomicJacobianMatchesFiniteDifferences) {
 }
 
 TEST_F(ErrorStateEkfTest, SpeedModelJacobianMatchesFiniteDifferences) {
-  const auto J = Numeric<1>([](const ErrorStateEkf& e) { return Eigen::Matrix<double, 1, 1>(Speed(e)); });
-  EXPECT_LT((J - ekf_.SpeedModelJacobian()).cwiseAbs().maxCoeff(), 1e-6) << J << "\n\n" << ekf_.SpeedModelJacobian();
+  const auto J =
+      Numeric<1>([](const ErrorStateEkf& e) { return Eigen::Matrix<double, 1, 1>(Speed(e)); });
+  EXPECT_LT((J - ekf_.SpeedModelJacobian()).cwiseAbs().maxCoeff(), 1e-6)
+      << J << "\n\n"
+      << ekf_.SpeedModelJacobian();
 }
 
 TEST_F(ErrorStateEkfTest, SpeedModelPullsTheForwardSpeedToTheSetSpeed) {
@@ -99,7 +106,8 @@ TEST_F(ErrorStateEkfTest, SpeedModelPullsTheForwardSpeedToTheSetSpeed) {
   ekf_.mutable_state().v_N_mps += ekf_.state().q_NB * Eigen::Vector3d(0.1, 0, 0);
   // WHEN the speed model is applied
   const UpdateResult r = ekf_.UpdateSpeedModel();
-  // THEN it is accepted and moves the forward speed most of the way back (set speed σ 0.01 < velocity σ)
+  // THEN it is accepted and moves the forward speed most of the way back (set speed σ 0.01 <
+  // velocity σ)
   EXPECT_TRUE(r.accepted);
   EXPECT_EQ(r.dof, 1);
   EXPECT_LT(std::abs(Speed(ekf_)), 0.03);
@@ -108,10 +116,12 @@ TEST_F(ErrorStateEkfTest, SpeedModelPullsTheForwardSpeedToTheSetSpeed) {
 
 TEST_F(ErrorStateEkfTest, GateRejectsAnOutlierAndAcceptsAConsistentFix) {
   const Eigen::Vector3d p = Pos(ekf_);
-  const UpdateResult bad = ekf_.UpdatePosition(p + Eigen::Vector3d(50, 0, 0), Eigen::Vector3d::Constant(0.1));
+  const UpdateResult bad =
+      ekf_.UpdatePosition(p + Eigen::Vector3d(50, 0, 0), Eigen::Vector3d::Constant(0.1));
   EXPECT_FALSE(bad.accepted);
   EXPECT_GT(bad.nis, 25.0 * 3);
-  const UpdateResult good = ekf_.UpdatePosition(p + Eigen::Vector3d(0.2, -0.1, 0.1), Eigen::Vector3d::Constant(0.1));
+  const UpdateResult good =
+      ekf_.UpdatePosition(p + Eigen::Vector3d(0.2, -0.1, 0.1), Eigen::Vector3d::Constant(0.1));
   EXPECT_TRUE(good.accepted);
   EXPECT_LT((Pos(ekf_) - (p + Eigen::Vector3d(0.2, -0.1, 0.1))).norm(), 0.2);
 }
@@ -119,7 +129,8 @@ TEST_F(ErrorStateEkfTest, GateRejectsAnOutlierAndAcceptsAConsistentFix) {
 TEST_F(ErrorStateEkfTest, NonFiniteInputsAreIgnored) {
   const NavState before = ekf_.state();
   ekf_.Predict(Eigen::Vector3d::Constant(std::nan("")), Eigen::Vector3d::Zero(), 0.01);
-  EXPECT_FALSE(ekf_.UpdatePosition(Eigen::Vector3d::Constant(INFINITY), Eigen::Vector3d::Ones()).accepted);
+  EXPECT_FALSE(
+      ekf_.UpdatePosition(Eigen::Vector3d::Constant(INFINITY), Eigen::Vector3d::Ones()).accepted);
   EXPECT_EQ(ekf_.state().p_N_m, before.p_N_m);
   EXPECT_TRUE(ekf_.covariance().allFinite());
 }
@@ -136,19 +147,24 @@ class ErrorStateEkfSpeedDevTest : public ::testing::Test {
     ekf_ = ErrorStateEkf(p, EarthModel{});
     NavState s;
     s.v_N_mps = Eigen::Vector3d(0.3, 0.9, 0.0);
-    s.q_NB = Eigen::AngleAxisd(1.1, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(0.02, Eigen::Vector3d::UnitY());
+    s.q_NB = Eigen::AngleAxisd(1.1, Eigen::Vector3d::UnitZ()) *
+             Eigen::AngleAxisd(0.02, Eigen::Vector3d::UnitY());
     ekf_.Initialize(s);
   }
   double P(int i) const { return ekf_.covariance()(i, i); }
   static double Residual(const ErrorStateEkf& e) {
-    return (e.state().q_NB.conjugate() * e.state().v_N_mps).x() - e.set_speed_mps() - e.speed_deviation_mps();
+    return (e.state().q_NB.conjugate() * e.state().v_N_mps).x() - e.set_speed_mps() -
+           e.speed_deviation_mps();
   }
   ErrorStateEkf ekf_;
 };
 
 TEST_F(ErrorStateEkfSpeedDevTest, JacobianMatchesFiniteDifferences) {
-  const auto J = NumericJacobian<1>(ekf_, [](const ErrorStateEkf& e) { return Eigen::Matrix<double, 1, 1>(Residual(e)); });
-  EXPECT_LT((J - ekf_.SpeedModelJacobian()).cwiseAbs().maxCoeff(), 1e-6) << J << "\n\n" << ekf_.SpeedModelJacobian();
+  const auto J = NumericJacobian<1>(
+      ekf_, [](const ErrorStateEkf& e) { return Eigen::Matrix<double, 1, 1>(Residual(e)); });
+  EXPECT_LT((J - ekf_.SpeedModelJacobian()).cwiseAbs().maxCoeff(), 1e-6)
+      << J << "\n\n"
+      << ekf_.SpeedModelJacobian();
   EXPECT_DOUBLE_EQ(ekf_.SpeedModelJacobian()(0, kSpeedDev), -1.0);
 }
 
@@ -159,15 +175,16 @@ TEST_F(ErrorStateEkfSpeedDevTest, DeviationDecaysAndItsVarianceIsStationary) {
   ekf_.InjectError(dx);
   EXPECT_NEAR(P(kSpeedDev), 0.02 * 0.02, 1e-15);  // starts at its stationary variance
   // WHEN 10 s (two correlation times) pass without measurements
-  for (int k = 0; k < 1000; ++k) ekf_.Predict(Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, 9.81) * 0.01, 0.01);
+  for (int k = 0; k < 1000; ++k)
+    ekf_.Predict(Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, 9.81) * 0.01, 0.01);
   // THEN it has decayed by e^-2 and its variance stayed at σ²
   EXPECT_NEAR(ekf_.speed_deviation_mps(), 0.02 * std::exp(-2.0), 1e-12);
   EXPECT_NEAR(P(kSpeedDev), 0.02 * 0.02, 1e-9);
 }
 
 TEST_F(ErrorStateEkfSpeedDevTest, ASpeedChangeGoesToTheDeviationNotTheSetSpeed) {
-  // GIVEN a vehicle heading along its velocity, a converged set speed (σ 2 mm/s) and a forward speed
-  // 0.02 m/s above it, held by velocity fixes
+  // GIVEN a vehicle heading along its velocity, a converged set speed (σ 2 mm/s) and a forward
+  // speed 0.02 m/s above it, held by velocity fixes
   NavState aligned;
   aligned.v_N_mps = Eigen::Vector3d(0.3, 0.9, 0.0);
   aligned.q_NB = Eigen::AngleAxisd(std::atan2(0.9, 0.3), Eigen::Vector3d::UnitZ());
@@ -189,7 +206,9 @@ TEST_F(ErrorStateEkfSpeedDevTest, ASpeedChangeGoesToTheDeviationNotTheSetSpeed) 
 TEST_F(ErrorStateEkfTest, GnssErrorModelSwitchAddsOrRestartsTheCorrelatedError) {
   // GIVEN a filter whose correlated GNSS error state has been observed (cross-covariances built up)
   const Eigen::Vector3d p = Pos(ekf_);
-  ASSERT_TRUE(ekf_.UpdatePosition(p + Eigen::Vector3d(0.05, -0.02, 0.0), Eigen::Vector3d::Constant(0.05)).accepted);
+  ASSERT_TRUE(
+      ekf_.UpdatePosition(p + Eigen::Vector3d(0.05, -0.02, 0.0), Eigen::Vector3d::Constant(0.05))
+          .accepted);
   const EkfMatrix before = ekf_.covariance();
   const double cross_before = before.block<3, 3>(kPos, kGnssError).cwiseAbs().maxCoeff();
   ASSERT_GT(cross_before, 1e-4);
@@ -198,13 +217,21 @@ TEST_F(ErrorStateEkfTest, GnssErrorModelSwitchAddsOrRestartsTheCorrelatedError) 
   const EkfMatrix wider = ekf_.covariance();
   // THEN its variance grows by σ_new² − σ_old² and nothing else changes
   for (int i = 0; i < 3; ++i) {
-    EXPECT_NEAR(wider(kGnssError + i, kGnssError + i) - before(kGnssError + i, kGnssError + i), 0.25 - 0.09, 1e-12);
+    EXPECT_NEAR(wider(kGnssError + i, kGnssError + i) - before(kGnssError + i, kGnssError + i),
+                0.25 - 0.09, 1e-12);
   }
-  const double other_change = (wider.topLeftCorner<kGnssError, kGnssError>() - before.topLeftCorner<kGnssError, kGnssError>()).cwiseAbs().maxCoeff();
-  const double cross_change = (wider.block<kGnssError, 3>(0, kGnssError) - before.block<kGnssError, 3>(0, kGnssError)).cwiseAbs().maxCoeff();
+  const double other_change = (wider.topLeftCorner<kGnssError, kGnssError>() -
+                               before.topLeftCorner<kGnssError, kGnssError>())
+                                  .cwiseAbs()
+                                  .maxCoeff();
+  const double cross_change =
+      (wider.block<kGnssError, 3>(0, kGnssError) - before.block<kGnssError, 3>(0, kGnssError))
+          .cwiseAbs()
+          .maxCoeff();
   EXPECT_LT(other_change, 1e-15);
   EXPECT_LT(cross_change, 1e-15);
-  // WHEN it fixes again (the float error is gone): the state restarts at zero, uncorrelated, at the new σ
+  // WHEN it fixes again (the float error is gone): the state restarts at zero, uncorrelated, at the
+  // new σ
   ekf_.SetGnssErrorModel(30.0, 0.01, true);
   const EkfMatrix fixed = ekf_.covariance();
   EXPECT_EQ(ekf_.gnss_error(), Eigen::Vector3d::Zero());
@@ -212,7 +239,8 @@ TEST_F(ErrorStateEkfTest, GnssErrorModelSwitchAddsOrRestartsTheCorrelatedError) 
   EXPECT_EQ(cross_fixed, 0.0);
   EXPECT_NEAR(fixed(kGnssError, kGnssError), 1e-4, 1e-15);
   // AND the process uses the new model: the variance stays at the stationary σ² of the new process
-  for (int k = 0; k < 100; ++k) ekf_.Predict(Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, 9.81) * 0.01, 0.01);
+  for (int k = 0; k < 100; ++k)
+    ekf_.Predict(Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, 9.81) * 0.01, 0.01);
   EXPECT_NEAR(ekf_.covariance()(kGnssError, kGnssError), 1e-4, 1e-9);
   // AND an unchanged model is a no-op
   const EkfMatrix same = ekf_.covariance();
@@ -223,7 +251,9 @@ TEST_F(ErrorStateEkfTest, GnssErrorModelSwitchAddsOrRestartsTheCorrelatedError) 
 TEST_F(ErrorStateEkfTest, GnssErrorScaleChangeRescalesTheSameProcess) {
   // GIVEN a filter whose correlated GNSS error has an estimate and cross-covariances
   const Eigen::Vector3d p = Pos(ekf_);
-  ASSERT_TRUE(ekf_.UpdatePosition(p + Eigen::Vector3d(0.05, -0.02, 0.0), Eigen::Vector3d::Constant(0.05)).accepted);
+  ASSERT_TRUE(
+      ekf_.UpdatePosition(p + Eigen::Vector3d(0.05, -0.02, 0.0), Eigen::Vector3d::Constant(0.05))
+          .accepted);
   const EkfMatrix before = ekf_.covariance();
   const Eigen::Vector3d e_before = ekf_.gnss_error();
   ASSERT_GT(e_before.norm(), 1e-4);
@@ -231,20 +261,27 @@ TEST_F(ErrorStateEkfTest, GnssErrorScaleChangeRescalesTheSameProcess) {
   // WHEN the receiver's HDOP doubles (same error process, twice the scale)
   ekf_.SetGnssErrorModel(ekf_.params().gnss_error_tau_s, 2.0 * sigma, false);
   const EkfMatrix after = ekf_.covariance();
-  // THEN the estimate doubles, its variance quadruples, its cross-covariances double, the rest stays
+  // THEN the estimate doubles, its variance quadruples, its cross-covariances double, the rest
+  // stays
   EXPECT_TRUE(ekf_.gnss_error().isApprox(2.0 * e_before, 1e-12));
   const Eigen::Matrix3d var_before = before.block<3, 3>(kGnssError, kGnssError);
   const Eigen::Matrix3d var_after = after.block<3, 3>(kGnssError, kGnssError);
   EXPECT_TRUE(var_after.isApprox(4.0 * var_before, 1e-12));
-  const Eigen::Matrix<double, kGnssError, 3> cross_before = before.block<kGnssError, 3>(0, kGnssError);
-  const Eigen::Matrix<double, kGnssError, 3> cross_after = after.block<kGnssError, 3>(0, kGnssError);
+  const Eigen::Matrix<double, kGnssError, 3> cross_before =
+      before.block<kGnssError, 3>(0, kGnssError);
+  const Eigen::Matrix<double, kGnssError, 3> cross_after =
+      after.block<kGnssError, 3>(0, kGnssError);
   EXPECT_TRUE(cross_after.isApprox(2.0 * cross_before, 1e-12));
-  const Eigen::Matrix<double, kGnssError, kGnssError> rest_before = before.topLeftCorner<kGnssError, kGnssError>();
-  const Eigen::Matrix<double, kGnssError, kGnssError> rest_after = after.topLeftCorner<kGnssError, kGnssError>();
+  const Eigen::Matrix<double, kGnssError, kGnssError> rest_before =
+      before.topLeftCorner<kGnssError, kGnssError>();
+  const Eigen::Matrix<double, kGnssError, kGnssError> rest_after =
+      after.topLeftCorner<kGnssError, kGnssError>();
   EXPECT_EQ(rest_after, rest_before);
   // AND the process noise follows the new scale: the variance settles at (2σ)² per horizontal axis
-  for (int k = 0; k < 20000; ++k) ekf_.Predict(Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, 9.81) * 0.01, 0.01);
-  EXPECT_NEAR(ekf_.covariance()(kGnssError, kGnssError), 4.0 * sigma * sigma, 0.01 * 4.0 * sigma * sigma);
+  for (int k = 0; k < 20000; ++k)
+    ekf_.Predict(Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, 9.81) * 0.01, 0.01);
+  EXPECT_NEAR(ekf_.covariance()(kGnssError, kGnssError), 4.0 * sigma * sigma,
+              0.01 * 4.0 * sigma * sigma);
 }
 
 TEST(ErrorStateEkfGnssModelTest, SwitchIsIgnoredWithoutCorrelatedStates) {

@@ -3,11 +3,7 @@
 // 10 Hz JSON lines in mode "ekf" that follow the vehicle.
 #include <fcntl.h>
 #include <signal.h>
-#include <sys/stat.h>
-#include <sys/wait.h>
 #include <unistd.h>
-
-#include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <cstring>
@@ -15,6 +11,10 @@
 #include <fstream>
 #include <string>
 #include <thread>
+
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
 
 #include "hil/estimator/drivers/mcu_frame_decoder.h"
 #include "hil/estimator/drivers/nmea_decoder.h"
@@ -29,7 +29,8 @@ void PutLe(std::string& s, std::uint64_t v, int n) {
 }
 
 // the test's own encoder of the MCU frame protocol v1 (header, payload, CRC low byte first)
-std::string Frame(std::uint8_t type, std::uint16_t seq, std::uint32_t tick, const std::string& payload) {
+std::string Frame(std::uint8_t type, std::uint16_t seq, std::uint32_t tick,
+                  const std::string& payload) {
   std::string body;
   body.push_back(1);
   body.push_back(static_cast<char>(type));
@@ -54,18 +55,22 @@ std::string F32(float v) {
 TEST(NavdEkfE2eTest, FusesMcuImuAndNmeaIntoEkfSolutions) {
   const char* bin = std::getenv("HIL_BIN_DIR");
   ASSERT_NE(bin, nullptr);
-  const auto dir = std::filesystem::temp_directory_path() / ("navd_e2e_" + std::to_string(getpid()));
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("navd_e2e_" + std::to_string(getpid()));
   std::filesystem::create_directories(dir);
-  const std::string gnss = dir / "gnss", imu = dir / "imu", out = dir / "out.jsonl", conf = dir / "navd.conf";
+  const std::string gnss = dir / "gnss", imu = dir / "imu", out = dir / "out.jsonl",
+                    conf = dir / "navd.conf";
   ASSERT_EQ(mkfifo(gnss.c_str(), 0600), 0);
   ASSERT_EQ(mkfifo(imu.c_str(), 0600), 0);
-  std::ofstream(conf) << "[input]\ngnss_device = " << gnss << "\nimu_device = " << imu
-                      << "\n[filter]\nmode = ekf\nnhc_std_mps = 0.05\nfusion_horizon_s = 0.2\n[output]\njson = " << out
-                      << "\nrate_hz = 10\ncan_log = " << (dir / "can.log").string() << "\nnmea_device = "
-                      << (dir / "nmea.txt").string() << "\n";
+  std::ofstream(conf)
+      << "[input]\ngnss_device = " << gnss << "\nimu_device = " << imu
+      << "\n[filter]\nmode = ekf\nnhc_std_mps = 0.05\nfusion_horizon_s = 0.2\n[output]\njson = "
+      << out << "\nrate_hz = 10\ncan_log = " << (dir / "can.log").string()
+      << "\nnmea_device = " << (dir / "nmea.txt").string() << "\n";
   const pid_t pid = fork();
   if (pid == 0) {
-    execl((std::string(bin) + "/navd").c_str(), "navd", "--config", conf.c_str(), static_cast<char*>(nullptr));
+    execl((std::string(bin) + "/navd").c_str(), "navd", "--config", conf.c_str(),
+          static_cast<char*>(nullptr));
     _exit(127);
   }
   const int gfd = open(gnss.c_str(), O_WRONLY);
@@ -76,9 +81,11 @@ TEST(NavdEkfE2eTest, FusesMcuImuAndNmeaIntoEkfSolutions) {
   // GIVEN a level vehicle driving east at 1 m/s for 40 s, a 1 MHz MCU tick and GPS week 1744
   const LocalTangentFrame frame({48.0, 11.0, 500.0});
   const std::int64_t week_ns = 1744LL * 604800LL * kNsPerSecond, tow0_ns = 86400LL * kNsPerSecond;
-  std::string imu_bytes = Frame(4, 0, 0, std::string("\0\0\0\0", 4) + std::string("\x40\x42\x0F\x00", 4) +
-                                             std::string("\x10\x27\0\0", 4) + F32(9.80665f / 8000) +
-                                             F32(0.01f * 3.14159265f / 180) + F32(0.1f) + std::string("\x03\x00", 2));
+  std::string imu_bytes =
+      Frame(4, 0, 0,
+            std::string("\0\0\0\0", 4) + std::string("\x40\x42\x0F\x00", 4) +
+                std::string("\x10\x27\0\0", 4) + F32(9.80665f / 8000) +
+                F32(0.01f * 3.14159265f / 180) + F32(0.1f) + std::string("\x03\x00", 2));
   std::string gnss_bytes;
   std::uint16_t seq = 1;
   for (int k = 1; k <= 4000; ++k) {  // 100 Hz
@@ -94,10 +101,12 @@ TEST(NavdEkfE2eTest, FusesMcuImuAndNmeaIntoEkfSolutions) {
       fix.valid = true;
       fix.position = frame.ToLla(Eigen::Vector3d(k * 0.01, 0, 0));
       fix.v_N_mps = Eigen::Vector3d(1, 0, 0);
-      gnss_bytes += outputs::FormatNmea0183(fix, UnixNsFromGpsNs(week_ns + tow0_ns + k * 10'000'000LL, 18));
+      gnss_bytes +=
+          outputs::FormatNmea0183(fix, UnixNsFromGpsNs(week_ns + tow0_ns + k * 10'000'000LL, 18));
     }
     std::string payload;
-    for (int a : {0, 0, 8000}) PutLe(payload, static_cast<std::uint16_t>(static_cast<std::int16_t>(a)), 2);
+    for (int a : {0, 0, 8000})
+      PutLe(payload, static_cast<std::uint16_t>(static_cast<std::int16_t>(a)), 2);
     for (int g = 0; g < 3; ++g) PutLe(payload, 0, 2);
     imu_bytes += Frame(1, seq++, tick, payload);
   }
@@ -106,10 +115,14 @@ TEST(NavdEkfE2eTest, FusesMcuImuAndNmeaIntoEkfSolutions) {
   const std::size_t imu_chunk = imu_bytes.size() / 40 + 1, gnss_chunk = gnss_bytes.size() / 40 + 1;
   for (std::size_t i = 0; i < 40; ++i) {
     if (i * gnss_chunk < gnss_bytes.size()) {
-      ASSERT_GT(write(gfd, gnss_bytes.data() + i * gnss_chunk, std::min(gnss_chunk, gnss_bytes.size() - i * gnss_chunk)), 0);
+      ASSERT_GT(write(gfd, gnss_bytes.data() + i * gnss_chunk,
+                      std::min(gnss_chunk, gnss_bytes.size() - i * gnss_chunk)),
+                0);
     }
     if (i * imu_chunk < imu_bytes.size()) {
-      ASSERT_GT(write(ifd, imu_bytes.data() + i * imu_chunk, std::min(imu_chunk, imu_bytes.size() - i * imu_chunk)), 0);
+      ASSERT_GT(write(ifd, imu_bytes.data() + i * imu_chunk,
+                      std::min(imu_chunk, imu_bytes.size() - i * imu_chunk)),
+                0);
     }
   }
   // navd has worked through the streams when its output stops growing (a slow machine or a

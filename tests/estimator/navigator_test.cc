@@ -2,9 +2,9 @@
 // out-of-order inputs, bad input.
 #include "hil/estimator/navigator.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+
+#include <gtest/gtest.h>
 
 namespace hil::estimator {
 namespace {
@@ -28,7 +28,8 @@ TEST(NavigatorTest, ThreeReceiversGiveCentreAndHeading) {
     GnssSample g;
     g.t = kT0;
     g.antenna = i;
-    g.position = frame.ToLla(centre + Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) * p.multi_antenna_B_m.col(i));
+    g.position = frame.ToLla(centre + Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) *
+                                          p.multi_antenna_B_m.col(i));
     g.pos_std_enu_m.setConstant(0.3);
     nav.Push(g);
   }
@@ -38,7 +39,8 @@ TEST(NavigatorTest, ThreeReceiversGiveCentreAndHeading) {
   const Eigen::Vector3d c = frame.ToLocal(o.position);
   EXPECT_LT((c - centre).head<2>().norm(), 1e-6);
   const Eigen::Vector3d x = o.q_NB * Eigen::Vector3d::UnitX();
-  EXPECT_NEAR(std::atan2(x.y(), x.x()), yaw, 1e-5);  // (the navigator anchors its own tangent plane at the first fix)
+  EXPECT_NEAR(std::atan2(x.y(), x.x()), yaw,
+              1e-5);  // (the navigator anchors its own tangent plane at the first fix)
 }
 
 TEST(NavigatorTest, CountsOutOfOrderImuAndRejectsBadInput) {
@@ -60,7 +62,6 @@ TEST(NavigatorTest, CountsOutOfOrderImuAndRejectsBadInput) {
   EXPECT_TRUE(nav.status() & kStatusBadInput);
   EXPECT_FALSE(nav.aligned());
 }
-
 
 // An aligned EKF navigator driven at 100 Hz, level and still but for a GNSS course of 1 m/s north.
 struct WaitRig {
@@ -106,7 +107,8 @@ TEST(NavigatorTest, WaitsForADueFixUpToTheMaximumLatency) {
     }
     ASSERT_TRUE(rig.nav.aligned());
     ASSERT_EQ(rig.nav.stats().gnss_late, 0u);
-    // WHEN the next fix (due at 3 s) reaches the host 1.5 s after its epoch (a slow link, a busy host)
+    // WHEN the next fix (due at 3 s) reaches the host 1.5 s after its epoch (a slow link, a busy
+    // host)
     rig.ImuUntil(kT0 + 4'500'000'000LL);
     rig.Fix(kT0 + 3'000'000'000LL);
     rig.ImuUntil(kT0 + 4'600'000'000LL);
@@ -125,7 +127,8 @@ TEST(NavigatorTest, WaitsForADueFixUpToTheMaximumLatency) {
     rig.Fix(kT0 + k * 1'000'000'000LL);
   }
   rig.ImuUntil(kT0 + 20'000'000'000LL);
-  EXPECT_NEAR(static_cast<double>(kT0 + 20'000'000'000LL - rig.nav.filter_time()) * 1e-9, 2.5, 0.011);
+  EXPECT_NEAR(static_cast<double>(kT0 + 20'000'000'000LL - rig.nav.filter_time()) * 1e-9, 2.5,
+              0.011);
 }
 
 TEST(NavigatorTest, FallsBackToTheFixesWhileTheImuIsSilentAndRestartsAfter) {

@@ -24,7 +24,9 @@ void Check(J1939ImuDecoder& dec, const CanRxFrame& f, std::uint64_t& fed) {
   if (!(s->dt_s > 0 && s->dt_s <= 0.5)) std::abort();
   if (!s->delta_angle_B_rad.allFinite() || !s->delta_velocity_B_mps.allFinite()) std::abort();
   // |ω| ≤ √3 · 263 °/s, |f| ≤ √3 · 336 m/s²: the fields' ranges
-  if (s->delta_angle_B_rad.norm() > 8.0 * s->dt_s || s->delta_velocity_B_mps.norm() > 600.0 * s->dt_s) std::abort();
+  if (s->delta_angle_B_rad.norm() > 8.0 * s->dt_s ||
+      s->delta_velocity_B_mps.norm() > 600.0 * s->dt_s)
+    std::abort();
 }
 
 int Hex(char c) {
@@ -41,19 +43,25 @@ void FeedText(std::string_view text, J1939ImuDecoder& dec, std::uint64_t& fed) {
     const std::string_view line = text.substr(0, nl);
     text = nl == std::string_view::npos ? std::string_view() : text.substr(nl + 1);
     const std::size_t close = line.find(')'), hash = line.find('#');
-    if (line.size() < 2 || line[0] != '(' || close == std::string_view::npos || hash == std::string_view::npos) continue;
+    if (line.size() < 2 || line[0] != '(' || close == std::string_view::npos ||
+        hash == std::string_view::npos)
+      continue;
     const std::size_t sp = line.rfind(' ', hash);
     if (sp == std::string_view::npos || sp < close) continue;
     CanRxFrame f;
     std::int64_t sec = 0, usec = 0;
     bool frac = false;
     for (std::size_t i = 1; i < close; ++i) {
-      if (line[i] == '.') frac = true;
-      else if (line[i] >= '0' && line[i] <= '9') (frac ? usec : sec) = ((frac ? usec : sec) % 100000000000LL) * 10 + (line[i] - '0');
+      if (line[i] == '.')
+        frac = true;
+      else if (line[i] >= '0' && line[i] <= '9')
+        (frac ? usec : sec) = ((frac ? usec : sec) % 100000000000LL) * 10 + (line[i] - '0');
     }
-    f.rx_ns = (sec % 4000000000LL) * 1000000000LL + (usec % 1000000) * 1000;  // candump seconds, kept in range
+    f.rx_ns = (sec % 4000000000LL) * 1000000000LL +
+              (usec % 1000000) * 1000;  // candump seconds, kept in range
     std::uint32_t id = 0;
-    for (std::size_t i = sp + 1; i < hash; ++i) id = (id << 4) | static_cast<std::uint32_t>(Hex(line[i]) & 0xF);
+    for (std::size_t i = sp + 1; i < hash; ++i)
+      id = (id << 4) | static_cast<std::uint32_t>(Hex(line[i]) & 0xF);
     f.id = id;
     f.extended = hash - sp - 1 == 8;
     std::size_t n = 0;

@@ -30,7 +30,8 @@ std::string Frame(int seq, int index, std::string_view bytes) {
 
 std::int64_t I64(const std::string& b, std::size_t at) {
   std::uint64_t v = 0;
-  for (int k = 7; k >= 0; --k) v = (v << 8) | static_cast<unsigned char>(b[at + static_cast<std::size_t>(k)]);
+  for (int k = 7; k >= 0; --k)
+    v = (v << 8) | static_cast<unsigned char>(b[at + static_cast<std::size_t>(k)]);
   return static_cast<std::int64_t>(v);
 }
 
@@ -40,7 +41,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (size < 2) return 0;
   const std::string_view in(reinterpret_cast<const char*>(data), size);
   // 1. generic round trip
-  const std::size_t len = 1 + static_cast<unsigned char>(in[0]) % N2kFastPacketAssembler::kMaxPayload;
+  const std::size_t len =
+      1 + static_cast<unsigned char>(in[0]) % N2kFastPacketAssembler::kMaxPayload;
   const int seq = static_cast<unsigned char>(in[1]) & 7;
   std::string payload(in.substr(2, len));
   payload.resize(len, '\x5A');
@@ -70,13 +72,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     lat = static_cast<double>(ilat % 900000000) * 1e-7;
     lon = static_cast<double>(ilon % 1800000000) * 1e-7;
   }
-  const auto fp = hil::estimator::outputs::EncodeGnssPosition(1, 19000, 3600.5, lat, lon, 12.5, 1, 9, 0.9,
-                                                              static_cast<std::uint8_t>(seq), 0x80);
+  const auto fp = hil::estimator::outputs::EncodeGnssPosition(
+      1, 19000, 3600.5, lat, lon, 12.5, 1, 9, 0.9, static_cast<std::uint8_t>(seq), 0x80);
   N2kFastPacketAssembler b;
   std::optional<std::string> msg;
   for (int i = 0; i < fp.count; ++i) {
     const auto& f = fp.frames[static_cast<std::size_t>(i)];
-    if (hil::harness::N2kPgnFromId(f.id) != kPgn || hil::harness::N2kSourceFromId(f.id) != 0x80) std::abort();
+    if (hil::harness::N2kPgnFromId(f.id) != kPgn || hil::harness::N2kSourceFromId(f.id) != 0x80)
+      std::abort();
     msg = b.Add(0x80, kPgn, std::string_view(reinterpret_cast<const char*>(f.data.data()), f.len));
   }
   if (!msg || msg->size() != 43) std::abort();
@@ -86,7 +89,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // 3. arbitrary frames
   N2kFastPacketAssembler c;
   for (std::size_t i = 2; i + 9 <= size; i += 9) {
-    const auto m = c.Add(static_cast<std::uint8_t>(data[i] & 3), kPgn, in.substr(i + 1, 1 + data[i] % 8));
+    const auto m =
+        c.Add(static_cast<std::uint8_t>(data[i] & 3), kPgn, in.substr(i + 1, 1 + data[i] % 8));
     if (m && (m->empty() || m->size() > N2kFastPacketAssembler::kMaxPayload)) std::abort();
   }
   if (c.stats().messages > c.stats().frames) std::abort();

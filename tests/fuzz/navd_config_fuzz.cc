@@ -10,7 +10,8 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   try {
-    (void)hil::estimator::NavdConfig::FromFile(hil::estimator::ConfigFile::Parse(text, "fuzz.conf"));
+    (void)hil::estimator::NavdConfig::FromFile(
+        hil::estimator::ConfigFile::Parse(text, "fuzz.conf"));
   } catch (const hil::estimator::ConfigError&) {
   }
   return 0;

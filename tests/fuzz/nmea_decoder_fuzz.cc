@@ -13,8 +13,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   using namespace hil::estimator::drivers;
   NmeaEpochAssembler epochs;
   NmeaDecoder decoder([&](const NmeaFix& fix) {
-    if (fix.lat_deg && (std::fabs(*fix.lat_deg) > 90.0 + 1.0 / 60.0 || !std::isfinite(*fix.lat_deg))) std::abort();
-    if (fix.lon_deg && (std::fabs(*fix.lon_deg) > 181.0 || !std::isfinite(*fix.lon_deg))) std::abort();
+    if (fix.lat_deg &&
+        (std::fabs(*fix.lat_deg) > 90.0 + 1.0 / 60.0 || !std::isfinite(*fix.lat_deg)))
+      std::abort();
+    if (fix.lon_deg && (std::fabs(*fix.lon_deg) > 181.0 || !std::isfinite(*fix.lon_deg)))
+      std::abort();
     (void)epochs.Add(fix);
   });
   // the first byte chooses the read size, so split reads are explored too

@@ -40,18 +40,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::uint64_t emitted = 0;
   RazorTextDecoder dec([&](const RazorTextSample& s) {
     ++emitted;
-    if (!InRange(s.accel_counts, -512, 511) || !InRange(s.gyro_adc, 0, 1023) || !InRange(s.mag_counts, -4096, 2047))
+    if (!InRange(s.accel_counts, -512, 511) || !InRange(s.gyro_adc, 0, 1023) ||
+        !InRange(s.mag_counts, -4096, 2047))
       std::abort();
     RazorTextSample again;
     if (!RazorTextDecoder::ParseLine(Print(s), again)) std::abort();
-    if (again.format != s.format || again.accel_counts != s.accel_counts || again.gyro_adc != s.gyro_adc ||
-        again.mag_counts != s.mag_counts)
+    if (again.format != s.format || again.accel_counts != s.accel_counts ||
+        again.gyro_adc != s.gyro_adc || again.mag_counts != s.mag_counts)
       std::abort();
   });
   const std::size_t chunk = size > 0 ? 1 + data[0] % 64 : 1;
   const std::string_view all(reinterpret_cast<const char*>(data), size);
   for (std::size_t i = 0; i < all.size(); i += chunk) dec.Feed(all.substr(i, chunk));
   if (dec.stats().lines_ok != emitted) std::abort();
-  if (dec.stats().lines_ok + dec.stats().bad_lines + dec.stats().garbage_bytes > size + 1) std::abort();
+  if (dec.stats().lines_ok + dec.stats().bad_lines + dec.stats().garbage_bytes > size + 1)
+    std::abort();
   return 0;
 }

@@ -15,6 +15,7 @@
 #include "hil/harness/links/can_endpoint.h"
 #include "hil/harness/links/capture_format.h"
 #include "hil/harness/replay/replay.h"
+
 #include "vcan_test_util.h"
 
 namespace hil::harness {
@@ -61,7 +62,8 @@ struct Receiver {
   void Start() {
     thread = std::thread([this] {
       while (!stop) {
-        if (auto r = port.Receive(std::chrono::milliseconds(20)); r && !r->frame.error) frames.push_back(*r);
+        if (auto r = port.Receive(std::chrono::milliseconds(20)); r && !r->frame.error)
+          frames.push_back(*r);
       }
     });
   }
@@ -73,7 +75,8 @@ struct Receiver {
 };
 
 fs::path TempDir(const char* name) {
-  const fs::path d = fs::temp_directory_path() / (std::string("hil_") + name + "_" + std::to_string(getpid()));
+  const fs::path d =
+      fs::temp_directory_path() / (std::string("hil_") + name + "_" + std::to_string(getpid()));
   fs::create_directories(d);
   return d;
 }
@@ -100,14 +103,17 @@ TEST(CanPacingVcanTest, RealtimeFramesLeaveOnScheduleAndAreCaptured) {
     for (std::size_t i = 0; i < schedule.size(); ++i) {
       ASSERT_EQ(rx.frames[i].frame, link::FromDeviceFrame(schedule[i])) << i;
       const std::int64_t scheduled_real = pacer.WallNsOf(schedule[i].t) + real_minus_mono;
-      rx_err_us.push_back(static_cast<double>(rx.frames[i].t_kernel_unix_ns - scheduled_real) * 1e-3);
+      rx_err_us.push_back(static_cast<double>(rx.frames[i].t_kernel_unix_ns - scheduled_real) *
+                          1e-3);
     }
     const auto& e = ep.schedule_error_us();
     ASSERT_EQ(e.size(), schedule.size());
-    std::printf("HIL-FIGURE can_send_schedule_error_us frames=%zu span_s=%.1f p50=%.1f p99=%.1f max=%.1f\n",
-                e.size(), seconds, Pct(e, 50), Pct(e, 99), Pct(e, 100));
-    std::printf("HIL-FIGURE can_kernel_rx_schedule_error_us frames=%zu p50=%.1f p99=%.1f max=%.1f\n",
-                rx_err_us.size(), Pct(rx_err_us, 50), Pct(rx_err_us, 99), Pct(rx_err_us, 100));
+    std::printf(
+        "HIL-FIGURE can_send_schedule_error_us frames=%zu span_s=%.1f p50=%.1f p99=%.1f max=%.1f\n",
+        e.size(), seconds, Pct(e, 50), Pct(e, 99), Pct(e, 100));
+    std::printf(
+        "HIL-FIGURE can_kernel_rx_schedule_error_us frames=%zu p50=%.1f p99=%.1f max=%.1f\n",
+        rx_err_us.size(), Pct(rx_err_us, 50), Pct(rx_err_us, 99), Pct(rx_err_us, 100));
     // never early: a frame leaves at or after its time
     EXPECT_GE(*std::min_element(e.begin(), e.end()), 0.0);
   }
@@ -152,7 +158,8 @@ TEST(CanPacingVcanTest, ReplayedCaptureMatchesTheOriginalFrameForFrame) {
   const auto schedule = Schedule(1.5);
   {
     link::CandumpLogWriter w(dir / "run.candump");
-    for (const CanFrame& f : schedule) w.Write({kStartUnixNs + ToNs(f.t), Iface(), link::FromDeviceFrame(f), 0});
+    for (const CanFrame& f : schedule)
+      w.Write({kStartUnixNs + ToNs(f.t), Iface(), link::FromDeviceFrame(f), 0});
   }
   // ... played by hil replay onto the bus and received there
   Receiver rx;
@@ -167,20 +174,23 @@ TEST(CanPacingVcanTest, ReplayedCaptureMatchesTheOriginalFrameForFrame) {
   EXPECT_EQ(r.frames_failed, 0u);
   ASSERT_EQ(rx.frames.size(), schedule.size());
   // the replay's own re-capture: same frames, same times relative to the first frame
-  const link::CandumpLog again = link::ReadCandumpLog(dir / "replay" / "captures" / (Iface() + ".candump"));
+  const link::CandumpLog again =
+      link::ReadCandumpLog(dir / "replay" / "captures" / (Iface() + ".candump"));
   ASSERT_EQ(again.records.size(), schedule.size());
   std::vector<double> gap_err_us;
   for (std::size_t i = 0; i < schedule.size(); ++i) {
     EXPECT_EQ(rx.frames[i].frame, link::FromDeviceFrame(schedule[i]));
     EXPECT_EQ(again.records[i].frame, link::FromDeviceFrame(schedule[i]));
-    EXPECT_EQ(again.records[i].t_unix_ns - again.records[0].t_unix_ns, (ToNs(schedule[i].t) - ToNs(schedule[0].t)) / 1000 * 1000);
+    EXPECT_EQ(again.records[i].t_unix_ns - again.records[0].t_unix_ns,
+              (ToNs(schedule[i].t) - ToNs(schedule[0].t)) / 1000 * 1000);
     // received spacing vs recorded spacing
-    const double got = static_cast<double>(rx.frames[i].t_kernel_unix_ns - rx.frames[0].t_kernel_unix_ns);
+    const double got =
+        static_cast<double>(rx.frames[i].t_kernel_unix_ns - rx.frames[0].t_kernel_unix_ns);
     const double want = static_cast<double>(ToNs(schedule[i].t) - ToNs(schedule[0].t));
     gap_err_us.push_back(std::abs(got - want) * 1e-3);
   }
-  std::printf("HIL-FIGURE can_replay_timing_error_us frames=%zu p50=%.1f p99=%.1f max=%.1f\n", gap_err_us.size(),
-              Pct(gap_err_us, 50), Pct(gap_err_us, 99), Pct(gap_err_us, 100));
+  std::printf("HIL-FIGURE can_replay_timing_error_us frames=%zu p50=%.1f p99=%.1f max=%.1f\n",
+              gap_err_us.size(), Pct(gap_err_us, 50), Pct(gap_err_us, 99), Pct(gap_err_us, 100));
   // stated tolerance for the round trip inside a TCG VM: p99 of the timing error under 20 ms
   EXPECT_LT(Pct(gap_err_us, 99), 20000.0);
 }

@@ -1,6 +1,5 @@
 // Our candump log against can-utils on a real vcan0: canplayer replays a log we wrote, and a log
 // candump -l wrote is read back by our reader, frame for frame.
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -8,7 +7,10 @@
 #include <fstream>
 #include <thread>
 
+#include <sys/wait.h>
+
 #include "hil/firmware_emu/link/candump_log.h"
+
 #include "vcan_test_util.h"
 
 namespace hil::link {
@@ -20,8 +22,9 @@ using test::ReceiveFrames;
 
 std::vector<CanWireFrame> Frames() {
   std::vector<CanWireFrame> out;
-  for (const char* t : {"123#DEADBEEF", "09F80180#8868111FBFA49103", "09F80280#07FC5C3DFA00FFFF", "7FF#",
-                        "0CF02AE2#007D007D007D0005", "321#R", "1FFFFFFF#0102030405060708", "000#00"}) {
+  for (const char* t :
+       {"123#DEADBEEF", "09F80180#8868111FBFA49103", "09F80280#07FC5C3DFA00FFFF", "7FF#",
+        "0CF02AE2#007D007D007D0005", "321#R", "1FFFFFFF#0102030405060708", "000#00"}) {
     out.push_back(*ParseCanFrameText(t));
   }
   return out;
@@ -50,11 +53,14 @@ TEST(CandumpInteropVcanTest, CanplayerReplaysOurLog) {
   ASSERT_EQ(status, 0) << cmd;
   const auto got = ReceiveFrames(rx, frames.size(), std::chrono::seconds(3));
   ASSERT_EQ(got.size(), frames.size()) << "canplayer did not play every line of our log";
-  for (std::size_t i = 0; i < frames.size(); ++i) EXPECT_EQ(got[i].frame, frames[i]) << FormatCanFrameText(frames[i]);
+  for (std::size_t i = 0; i < frames.size(); ++i)
+    EXPECT_EQ(got[i].frame, frames[i]) << FormatCanFrameText(frames[i]);
   // canplayer keeps the recorded gaps: 7 gaps of 20 ms
-  const double span_ms = static_cast<double>(got.back().t_kernel_unix_ns - got.front().t_kernel_unix_ns) * 1e-6;
+  const double span_ms =
+      static_cast<double>(got.back().t_kernel_unix_ns - got.front().t_kernel_unix_ns) * 1e-6;
   EXPECT_GT(span_ms, 100.0);
-  std::printf("canplayer played our %zu-frame log over %.1f ms (recorded 140 ms)\n", got.size(), span_ms);
+  std::printf("canplayer played our %zu-frame log over %.1f ms (recorded 140 ms)\n", got.size(),
+              span_ms);
 }
 
 TEST(CandumpInteropVcanTest, OurReaderReadsCandumpLogs) {

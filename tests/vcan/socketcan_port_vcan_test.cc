@@ -1,13 +1,14 @@
 // SocketCanPort on a real vcan0: frames of every kind cross from one socket to another unchanged,
 // with kernel timestamps; error frames and receive-queue overflows are counted.
-#include "hil/firmware_emu/link/socketcan_port.h"
-
-#include <sys/socket.h>
 #include <time.h>
 
 #include <thread>
 
+#include <sys/socket.h>
+
 #include "hil/firmware_emu/link/candump_log.h"
+#include "hil/firmware_emu/link/socketcan_port.h"
+
 #include "vcan_test_util.h"
 
 namespace hil::link {
@@ -35,8 +36,9 @@ TEST(SocketCanPortVcanTest, TheKernelHasCan) {
 TEST(SocketCanPortVcanTest, ClassicFramesCrossUnchangedWithKernelTimestamps) {
   SocketCanPort tx(Iface());
   SocketCanPort rx(Iface());
-  const std::vector<CanWireFrame> sent{Frame("123#DEADBEEF"), Frame("09F80180#8868111FBFA49103"), Frame("7FF#"),
-                                       Frame("0CF02DE2#007D007DD580000A"), Frame("321#R"), Frame("12345678#R8")};
+  const std::vector<CanWireFrame> sent{Frame("123#DEADBEEF"), Frame("09F80180#8868111FBFA49103"),
+                                       Frame("7FF#"),         Frame("0CF02DE2#007D007DD580000A"),
+                                       Frame("321#R"),        Frame("12345678#R8")};
   const std::int64_t before = RealtimeNs();
   for (const auto& f : sent) ASSERT_TRUE(tx.Send(f).has_value()) << FormatCanFrameText(f);
   const auto got = ReceiveFrames(rx, sent.size(), std::chrono::seconds(2));
@@ -83,7 +85,8 @@ TEST(SocketCanPortVcanTest, FdFramesWhenTheInterfaceAllowsThem) {
   ASSERT_TRUE(tx.fd_enabled());
   std::string text = "1ABCDEF0##1";
   for (int i = 0; i < 64; ++i) text += "A5";
-  const std::vector<CanWireFrame> sent{Frame("123##1112233"), Frame(text.c_str()), Frame("456#0102")};
+  const std::vector<CanWireFrame> sent{Frame("123##1112233"), Frame(text.c_str()),
+                                       Frame("456#0102")};
   for (const auto& f : sent) ASSERT_TRUE(tx.Send(f).has_value());
   const auto got = ReceiveFrames(rx, sent.size(), std::chrono::seconds(2));
   ASSERT_EQ(got.size(), sent.size());
@@ -97,7 +100,8 @@ TEST(SocketCanPortVcanTest, ErrorFramesAreCountedByClass) {
   SocketCanPort rx(Iface());
   ASSERT_TRUE(tx.Send(Frame("20000004#0001000000000000")).has_value());  // controller: RX overflow
   ASSERT_TRUE(tx.Send(Frame("20000040#0000000000000000")).has_value());  // bus-off
-  ASSERT_TRUE(tx.Send(Frame("20000088#0000000000000000")).has_value());  // protocol violation + bus error
+  ASSERT_TRUE(
+      tx.Send(Frame("20000088#0000000000000000")).has_value());  // protocol violation + bus error
   ASSERT_TRUE(tx.Send(Frame("123#00")).has_value());
   int errors = 0;
   for (int i = 0; i < 40 && rx.stats().frames_received < 1; ++i) {
@@ -135,8 +139,8 @@ TEST(SocketCanPortVcanTest, ReceiveQueueOverflowIsCounted) {
   EXPECT_LT(received, static_cast<std::size_t>(accepted));
   // every accepted frame was either received or counted as dropped by the receive queue
   EXPECT_EQ(received + rx.stats().rx_queue_drops, static_cast<std::size_t>(accepted));
-  std::printf("receive-queue overflow: %d sent, %zu received, %llu counted as dropped\n", accepted, received,
-              static_cast<unsigned long long>(rx.stats().rx_queue_drops));
+  std::printf("receive-queue overflow: %d sent, %zu received, %llu counted as dropped\n", accepted,
+              received, static_cast<unsigned long long>(rx.stats().rx_queue_drops));
 }
 
 TEST(SocketCanPortVcanTest, UnknownInterfaceIsAClearError) {

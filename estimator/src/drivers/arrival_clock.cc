@@ -6,12 +6,12 @@
 namespace hil::estimator::drivers {
 namespace {
 
-constexpr double kRateGain = 0.2;     // smoothing of the host → GPS rate per reference
-constexpr double kOffsetGain = 0.5;   // share of a reference's residual taken into the offset
+constexpr double kRateGain = 0.2;    // smoothing of the host → GPS rate per reference
+constexpr double kOffsetGain = 0.5;  // share of a reference's residual taken into the offset
 constexpr double kMinRate = 0.01, kMaxRate = 100.0;
 constexpr double kAlpha = 0.2, kBeta = 0.02;  // sample tracker gains (β ≤ α²/(2−α): no overshoot)
 constexpr double kMaxResidualPeriods = 0.3;
-constexpr double kMaxAbsNs = 4e18;    // ±126 years around the GPS epoch
+constexpr double kMaxAbsNs = 4e18;  // ±126 years around the GPS epoch
 
 }  // namespace
 
@@ -27,7 +27,8 @@ void ArrivalClock::AddReference(std::int64_t host_ns, GpsNs gps) {
     if (references_ > 1) ++jumps_;
     restart();
   } else {
-    const double measured = static_cast<double>(gps - gps_prev_) / static_cast<double>(host_ns - host_prev_ns_);
+    const double measured =
+        static_cast<double>(gps - gps_prev_) / static_cast<double>(host_ns - host_prev_ns_);
     if (!(measured > kMinRate && measured < kMaxRate)) {
       ++jumps_;
       restart();
@@ -44,7 +45,9 @@ void ArrivalClock::AddReference(std::int64_t host_ns, GpsNs gps) {
       } else {
         rate_ += kRateGain * (measured - rate_);
         const GpsNs predicted = *ToGps(host_ns);
-        gps_anchor_ = predicted + static_cast<GpsNs>(std::llround(kOffsetGain * static_cast<double>(gps - predicted)));
+        gps_anchor_ =
+            predicted +
+            static_cast<GpsNs>(std::llround(kOffsetGain * static_cast<double>(gps - predicted)));
         host_anchor_ns_ = host_ns;
         ++since_restart_;
       }
@@ -88,7 +91,7 @@ GpsNs PeriodicSampleTimer::Add(GpsNs measured) {
     return restart();
   }
   const double n = std::max(1.0, std::round(static_cast<double>(d) / period_ns_));
-  const double predicted = frac_ns_ + n * period_ns_;           // relative to t_
+  const double predicted = frac_ns_ + n * period_ns_;  // relative to t_
   const double residual = static_cast<double>(d) - predicted;
   if (std::abs(residual) > kMaxResidualPeriods * period_ns_) {
     ++restarts_;

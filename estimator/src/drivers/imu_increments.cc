@@ -2,7 +2,8 @@
 
 namespace hil::estimator::drivers {
 
-std::optional<ImuSample> ImuIncrements::Add(GpsNs t, const Eigen::Vector3d& w_B_radps, const Eigen::Vector3d& f_B_mps2,
+std::optional<ImuSample> ImuIncrements::Add(GpsNs t, const Eigen::Vector3d& w_B_radps,
+                                            const Eigen::Vector3d& f_B_mps2,
                                             std::optional<double> dt_s) {
   std::optional<ImuSample> out;
   if (have_prev_) {

@@ -9,14 +9,21 @@ namespace hil::estimator::drivers {
 namespace {
 
 constexpr double kDegToRad = std::numbers::pi / 180.0;
-constexpr std::uint32_t kMaxValid16 = 0xFAFF;    // J1939: above this a field means error / not available
+constexpr std::uint32_t kMaxValid16 =
+    0xFAFF;  // J1939: above this a field means error / not available
 constexpr std::uint32_t kMaxValid24 = 0xFAFFFF;
 constexpr std::uint32_t kTowUnknown = 0xFFFFF;
 constexpr std::uint32_t kSecondsPerWeek = 604800;
 
-std::uint32_t U16(const std::uint8_t* p) { return static_cast<std::uint32_t>(p[0]) | (static_cast<std::uint32_t>(p[1]) << 8); }
-std::uint32_t U24(const std::uint8_t* p) { return U16(p) | (static_cast<std::uint32_t>(p[2]) << 16); }
-std::uint32_t U32(const std::uint8_t* p) { return U24(p) | (static_cast<std::uint32_t>(p[3]) << 24); }
+std::uint32_t U16(const std::uint8_t* p) {
+  return static_cast<std::uint32_t>(p[0]) | (static_cast<std::uint32_t>(p[1]) << 8);
+}
+std::uint32_t U24(const std::uint8_t* p) {
+  return U16(p) | (static_cast<std::uint32_t>(p[2]) << 16);
+}
+std::uint32_t U32(const std::uint8_t* p) {
+  return U24(p) | (static_cast<std::uint32_t>(p[3]) << 24);
+}
 
 double Latency(std::uint8_t b) { return b * 0.5e-3; }
 
@@ -201,15 +208,18 @@ void J1939ImuDecoder::OnPulse(const HilTimePulseMessage& p, std::int64_t rx_ns) 
     ++stats_.pulses_no_time;
     return;
   }
-  const GpsNs gps = (static_cast<GpsNs>(p.gps_week_mod4096) * kSecondsPerWeek + p.gps_tow_s) * kNsPerSecond;
+  const GpsNs gps =
+      (static_cast<GpsNs>(p.gps_week_mod4096) * kSecondsPerWeek + p.gps_tow_s) * kNsPerSecond;
   mcu_clock_.AddPulse(tick, gps);
   const double latency = latency_s_ >= 0 ? latency_s_ : config_.default_latency_s;
   arrival_.AddReference(rx_ns - static_cast<std::int64_t>(std::llround(latency * 1e9)), gps);
 }
 
-std::optional<ImuSample> J1939ImuDecoder::OnPair(const AriMessage& ari, const AccsMessage& accs, std::int64_t rx_ns) {
+std::optional<ImuSample> J1939ImuDecoder::OnPair(const AriMessage& ari, const AccsMessage& accs,
+                                                 std::int64_t rx_ns) {
   const Eigen::Vector3d w = AngularRateFlu_radps(ari), f = SpecificForceFlu_mps2(accs);
-  const auto measured = arrival_.ToGps(rx_ns - static_cast<std::int64_t>(std::llround(ari.latency_s * 1e9)));
+  const auto measured =
+      arrival_.ToGps(rx_ns - static_cast<std::int64_t>(std::llround(ari.latency_s * 1e9)));
   if (!measured) {
     ++stats_.imu_no_time;
     increments_.Restart();

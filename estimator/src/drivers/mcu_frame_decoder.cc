@@ -11,17 +11,23 @@ std::uint16_t U16(const char* p) { return static_cast<std::uint16_t>(U8(p) | (U8
 std::int16_t I16(const char* p) { return static_cast<std::int16_t>(U16(p)); }
 std::uint32_t U32(const char* p) {
   return static_cast<std::uint32_t>(U8(p)) | (static_cast<std::uint32_t>(U8(p + 1)) << 8) |
-         (static_cast<std::uint32_t>(U8(p + 2)) << 16) | (static_cast<std::uint32_t>(U8(p + 3)) << 24);
+         (static_cast<std::uint32_t>(U8(p + 2)) << 16) |
+         (static_cast<std::uint32_t>(U8(p + 3)) << 24);
 }
 float F32(const char* p) { return std::bit_cast<float>(U32(p)); }
 
 int PayloadLength(std::uint8_t type) {
   switch (type) {
-    case 1: return 12;
-    case 2: return 6;
-    case 3: return 7;
-    case 4: return 26;
-    default: return -1;
+    case 1:
+      return 12;
+    case 2:
+      return 6;
+    case 3:
+      return 7;
+    case 4:
+      return 26;
+    default:
+      return -1;
   }
 }
 
@@ -70,7 +76,8 @@ void McuFrameDecoder::Scan() {
     const std::size_t total = static_cast<std::size_t>(n) + 13;
     if (len_ < total) return;
     const char* f = buf_.data();
-    const std::uint16_t crc = Crc16CcittFalse(std::string_view(f + 2, static_cast<std::size_t>(n) + 9));
+    const std::uint16_t crc =
+        Crc16CcittFalse(std::string_view(f + 2, static_cast<std::size_t>(n) + 9));
     if (crc != U16(f + 11 + n)) {
       ++stats_.bad_crc;
       std::memmove(buf_.data(), buf_.data() + 1, --len_);
@@ -108,7 +115,8 @@ void McuFrameDecoder::Scan() {
         fr.profile = U8(p + 24);
         break;
     }
-    if (have_seq_ && fr.sequence != static_cast<std::uint16_t>(last_seq_ + 1) && fr.sequence != 0) ++stats_.sequence_gaps;
+    if (have_seq_ && fr.sequence != static_cast<std::uint16_t>(last_seq_ + 1) && fr.sequence != 0)
+      ++stats_.sequence_gaps;
     have_seq_ = true;
     last_seq_ = fr.sequence;
     ++stats_.frames_ok;

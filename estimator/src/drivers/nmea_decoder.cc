@@ -43,15 +43,18 @@ int HexDigit(char c) {
 
 // ddmm.mmmm + hemisphere → signed degrees
 std::optional<double> ParseAngle(std::string_view value, std::string_view hemi, int deg_digits) {
-  if (value.size() < static_cast<std::size_t>(deg_digits) + 2 || hemi.size() != 1) return std::nullopt;
+  if (value.size() < static_cast<std::size_t>(deg_digits) + 2 || hemi.size() != 1)
+    return std::nullopt;
   const auto deg = ToInt(value.substr(0, deg_digits));
   const auto min = ToDouble(value.substr(deg_digits));
   if (!deg || !min || *min >= 60.0 || *min < 0) return std::nullopt;
   double d = *deg + *min / 60.0;
   if (d > (deg_digits == 2 ? 90.0 : 180.0)) return std::nullopt;  // ddd = 999: not a place on Earth
   const char h = hemi[0];
-  if (h == 'S' || h == 'W') d = -d;
-  else if (h != 'N' && h != 'E') return std::nullopt;
+  if (h == 'S' || h == 'W')
+    d = -d;
+  else if (h != 'N' && h != 'E')
+    return std::nullopt;
   return d;
 }
 
@@ -143,8 +146,10 @@ void NmeaDecoder::Feed(std::string_view bytes) {
     if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) > 0x7E ||
         line_.size() >= kMaxSentence) {
       // binary data or a runaway line: the sentence is lost
-      if (line_.size() >= kMaxSentence) ++stats_.overlong;
-      else ++stats_.malformed;
+      if (line_.size() >= kMaxSentence)
+        ++stats_.overlong;
+      else
+        ++stats_.malformed;
       in_sentence_ = false;
       line_.clear();
       continue;

@@ -26,11 +26,13 @@ std::optional<NmeaMeasurement> NmeaEpochAssembler::Add(const NmeaFix& fix) {
     rmc_course_deg_ = fix.valid ? fix.course_deg : std::nullopt;
     return std::nullopt;
   }
-  if (!fix.valid || !fix.utc_time_of_day_ns || !day_start_unix_ns_ || !fix.msl_altitude_m) return std::nullopt;
+  if (!fix.valid || !fix.utc_time_of_day_ns || !day_start_unix_ns_ || !fix.msl_altitude_m)
+    return std::nullopt;
   NmeaMeasurement m;
   std::int64_t day = *day_start_unix_ns_;
   // a GGA just after midnight following an RMC of the previous day
-  if (rmc_time_of_day_ns_ && *fix.utc_time_of_day_ns + kNsPerDay / 2 < *rmc_time_of_day_ns_) day += kNsPerDay;
+  if (rmc_time_of_day_ns_ && *fix.utc_time_of_day_ns + kNsPerDay / 2 < *rmc_time_of_day_ns_)
+    day += kNsPerDay;
   m.tov_unix_ns = day + *fix.utc_time_of_day_ns;
   m.lat_deg = *fix.lat_deg;
   m.lon_deg = *fix.lon_deg;

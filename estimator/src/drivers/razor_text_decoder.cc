@@ -36,7 +36,8 @@ bool InRange(const std::array<int, 3>& v, int lo, int hi) {
 }  // namespace
 
 Eigen::Vector3d RazorAccel_mps2(const RazorTextSample& s, const RazorScales& k) {
-  return Eigen::Vector3d(s.accel_counts[0], s.accel_counts[1], s.accel_counts[2]) * k.accel_mps2_per_count;
+  return Eigen::Vector3d(s.accel_counts[0], s.accel_counts[1], s.accel_counts[2]) *
+         k.accel_mps2_per_count;
 }
 
 Eigen::Vector3d RazorGyro_radps(const RazorTextSample& s, const RazorScales& k) {
@@ -50,7 +51,8 @@ Eigen::Vector3d RazorMag_uT(const RazorTextSample& s, const RazorScales& k) {
 
 bool RazorTextDecoder::ParseLine(std::string_view line, RazorTextSample& out) {
   std::string_view body;
-  if (line.starts_with(kRawPrefix) && line.ends_with(kRawSuffix) && line.size() >= kRawPrefix.size() + kRawSuffix.size()) {
+  if (line.starts_with(kRawPrefix) && line.ends_with(kRawSuffix) &&
+      line.size() >= kRawPrefix.size() + kRawSuffix.size()) {
     out.format = RazorTextSample::Format::kRaw;
     body = line.substr(kRawPrefix.size(), line.size() - kRawPrefix.size() - kRawSuffix.size());
   } else if (line.starts_with(kV19Prefix) && line.ends_with(kV19Suffix)) {
@@ -63,7 +65,8 @@ bool RazorTextDecoder::ParseLine(std::string_view line, RazorTextSample& out) {
   std::size_t n = 0, from = 0;
   while (true) {
     const std::size_t comma = body.find(',', from);
-    const std::string_view field = body.substr(from, comma == std::string_view::npos ? std::string_view::npos : comma - from);
+    const std::string_view field =
+        body.substr(from, comma == std::string_view::npos ? std::string_view::npos : comma - from);
     if (n == 9 || !ParseInt(field, v[n])) return false;
     ++n;
     if (comma == std::string_view::npos) break;
@@ -75,7 +78,8 @@ bool RazorTextDecoder::ParseLine(std::string_view line, RazorTextSample& out) {
     out.gyro_adc[static_cast<std::size_t>(i)] = v[3 + i];
     out.mag_counts[static_cast<std::size_t>(i)] = v[6 + i];
   }
-  return InRange(out.accel_counts, -512, 511) && InRange(out.gyro_adc, 0, 1023) && InRange(out.mag_counts, -4096, 2047);
+  return InRange(out.accel_counts, -512, 511) && InRange(out.gyro_adc, 0, 1023) &&
+         InRange(out.mag_counts, -4096, 2047);
 }
 
 void RazorTextDecoder::Feed(std::string_view bytes) {

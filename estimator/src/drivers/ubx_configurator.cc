@@ -26,7 +26,9 @@ UbxCommand MsgRate(const char* msg_name, std::uint8_t cls, std::uint8_t id, std:
   return Make(std::string("CFG-MSG ") + msg_name + " " + std::to_string(rate), kIdMsg, payload);
 }
 
-std::string U2(unsigned v) { return {static_cast<char>(v & 0xFF), static_cast<char>((v >> 8) & 0xFF)}; }
+std::string U2(unsigned v) {
+  return {static_cast<char>(v & 0xFF), static_cast<char>((v >> 8) & 0xFF)};
+}
 
 }  // namespace
 
@@ -36,7 +38,8 @@ std::vector<UbxCommand> UbxSetupCommands(const ReceiverSetup& setup) {
     const char* name;
     std::uint8_t id;
   };
-  constexpr std::array<Nmea, 6> kNmea{{{"GGA", 0x00}, {"GLL", 0x01}, {"GSA", 0x02}, {"GSV", 0x03}, {"RMC", 0x04}, {"VTG", 0x05}}};
+  constexpr std::array<Nmea, 6> kNmea{
+      {{"GGA", 0x00}, {"GLL", 0x01}, {"GSA", 0x02}, {"GSV", 0x03}, {"RMC", 0x04}, {"VTG", 0x05}}};
   if (setup.nmea_off || setup.nmea_minimal) {
     for (const Nmea& s : kNmea) {
       const bool keep = setup.nmea_minimal && !setup.nmea_off && (s.id == 0x00 || s.id == 0x04);
@@ -62,13 +65,17 @@ std::vector<UbxCommand> UbxSetupCommands(const ReceiverSetup& setup) {
   return cmds;
 }
 
-UbxConfigurator::UbxConfigurator(std::vector<UbxCommand> commands, std::int64_t timeout_ns, int max_attempts)
-    : commands_(std::move(commands)), timeout_ns_(timeout_ns), max_attempts_(max_attempts < 1 ? 1 : max_attempts) {}
+UbxConfigurator::UbxConfigurator(std::vector<UbxCommand> commands, std::int64_t timeout_ns,
+                                 int max_attempts)
+    : commands_(std::move(commands)),
+      timeout_ns_(timeout_ns),
+      max_attempts_(max_attempts < 1 ? 1 : max_attempts) {}
 
 std::optional<std::string> UbxConfigurator::Poll(std::int64_t now_ns) {
   while (!done()) {
     UbxCommand& c = commands_[next_];
-    if (sent_at_ns_ && now_ns - *sent_at_ns_ < timeout_ns_) return std::nullopt;  // waiting for its ACK
+    if (sent_at_ns_ && now_ns - *sent_at_ns_ < timeout_ns_)
+      return std::nullopt;  // waiting for its ACK
     if (c.attempts >= max_attempts_) {
       c.result = UbxCommand::Result::kTimedOut;
       ++next_;
@@ -115,11 +122,13 @@ std::string UbxConfigurator::Summary() const {
     if (c.result == UbxCommand::Result::kNaked) ++naked;
     if (c.result == UbxCommand::Result::kTimedOut) ++timed_out;
     if (c.result == UbxCommand::Result::kNaked || c.result == UbxCommand::Result::kTimedOut) {
-      failed += (failed.empty() ? "" : ", ") + c.name + (c.result == UbxCommand::Result::kNaked ? " NAK" : " no answer");
+      failed += (failed.empty() ? "" : ", ") + c.name +
+                (c.result == UbxCommand::Result::kNaked ? " NAK" : " no answer");
     }
   }
-  std::string s = std::to_string(commands_.size()) + " commands: " + std::to_string(acked) + " acked, " +
-                  std::to_string(naked) + " refused, " + std::to_string(timed_out) + " unanswered";
+  std::string s = std::to_string(commands_.size()) + " commands: " + std::to_string(acked) +
+                  " acked, " + std::to_string(naked) + " refused, " + std::to_string(timed_out) +
+                  " unanswered";
   if (!failed.empty()) s += " (" + failed + ")";
   return s;
 }

@@ -10,7 +10,8 @@ std::uint8_t U1(const char* p) { return static_cast<std::uint8_t>(*p); }
 std::uint16_t U2(const char* p) { return static_cast<std::uint16_t>(U1(p) | (U1(p + 1) << 8)); }
 std::uint32_t U4(const char* p) {
   return static_cast<std::uint32_t>(U1(p)) | (static_cast<std::uint32_t>(U1(p + 1)) << 8) |
-         (static_cast<std::uint32_t>(U1(p + 2)) << 16) | (static_cast<std::uint32_t>(U1(p + 3)) << 24);
+         (static_cast<std::uint32_t>(U1(p + 2)) << 16) |
+         (static_cast<std::uint32_t>(U1(p + 3)) << 24);
 }
 std::int32_t I4(const char* p) { return static_cast<std::int32_t>(U4(p)); }
 
@@ -71,7 +72,8 @@ constexpr Entry kTable[] = {
 
 }  // namespace
 
-std::size_t UbxDecoder::Encode(std::uint8_t cls, std::uint8_t id, std::string_view payload, char* out, std::size_t cap) {
+std::size_t UbxDecoder::Encode(std::uint8_t cls, std::uint8_t id, std::string_view payload,
+                               char* out, std::size_t cap) {
   const std::size_t n = payload.size() + 8;
   if (n > cap || payload.size() > 0xFFFF) return 0;
   out[0] = static_cast<char>(0xB5);
@@ -170,11 +172,12 @@ std::optional<GnssSample> UbxEpochAssembler::Add(const UbxMessage& m) {
 
 std::optional<GnssSample> UbxEpochAssembler::Flush() {
   std::optional<GnssSample> out;
-  const bool fix_ok = !have_sol_ || ((sol_.flags & 0x01) && (sol_.gps_fix == 2 || sol_.gps_fix == 3));
+  const bool fix_ok =
+      !have_sol_ || ((sol_.flags & 0x01) && (sol_.gps_fix == 2 || sol_.gps_fix == 3));
   if (have_pos_ && week_ >= 0 && fix_ok) {
     GnssSample g;
-    g.t = static_cast<GpsNs>(week_) * 604800LL * kNsPerSecond + static_cast<GpsNs>(itow_) * 1'000'000LL +
-          (have_sol_ ? sol_.ftow_ns : 0);
+    g.t = static_cast<GpsNs>(week_) * 604800LL * kNsPerSecond +
+          static_cast<GpsNs>(itow_) * 1'000'000LL + (have_sol_ ? sol_.ftow_ns : 0);
     g.position = {pos_.lat_deg, pos_.lon_deg, pos_.height_m};
     const double h = std::max(pos_.h_acc_m, 0.01) / std::sqrt(2.0);
     g.pos_std_enu_m = {h, h, std::max(pos_.v_acc_m, 0.01)};

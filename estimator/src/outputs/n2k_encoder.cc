@@ -41,13 +41,15 @@ CanFrame EncodeCogSogRapid(std::uint8_t sid, double cog_rad, double sog_mps, std
   f.data[0] = sid;
   f.data[1] = 0xFC;  // reference 0 (true), reserved bits set
   Put(&f.data[2], Angle16(cog_rad), 2);
-  Put(&f.data[4], static_cast<std::uint16_t>(std::clamp<std::int64_t>(Round(sog_mps * 100), 0, 65532)), 2);
+  Put(&f.data[4],
+      static_cast<std::uint16_t>(std::clamp<std::int64_t>(Round(sog_mps * 100), 0, 65532)), 2);
   f.data[6] = f.data[7] = 0xFF;
   return f;
 }
 
-FastPacket EncodeGnssPosition(std::uint8_t sid, std::uint16_t days, double sod, double lat, double lon, double alt,
-                              int method, int num_sv, double hdop, std::uint8_t seq, std::uint8_t sa) {
+FastPacket EncodeGnssPosition(std::uint8_t sid, std::uint16_t days, double sod, double lat,
+                              double lon, double alt, int method, int num_sv, double hdop,
+                              std::uint8_t seq, std::uint8_t sa) {
   std::array<std::uint8_t, 43> p{};
   p[0] = sid;
   Put(&p[1], days, 2);
@@ -56,7 +58,7 @@ FastPacket EncodeGnssPosition(std::uint8_t sid, std::uint16_t days, double sod, 
   Put(&p[15], static_cast<std::uint64_t>(static_cast<std::int64_t>(std::llround(lon * 1e16))), 8);
   Put(&p[23], static_cast<std::uint64_t>(Round(alt * 1e6)), 8);
   p[31] = static_cast<std::uint8_t>(0 | ((method & 0xF) << 4));  // GNSS type 0 (GPS), method
-  p[32] = 0xFC;                                                   // integrity 0, reserved set
+  p[32] = 0xFC;                                                  // integrity 0, reserved set
   p[33] = static_cast<std::uint8_t>(std::clamp(num_sv, 0, 252));
   Put(&p[34], static_cast<std::uint16_t>(static_cast<std::int16_t>(Round(hdop * 100))), 2);
   Put(&p[36], 0x7FFF, 2);  // PDOP not available
@@ -102,7 +104,8 @@ CanFrame EncodeAttitude(std::uint8_t sid, double yaw, double pitch, double roll,
 
 std::string CandumpLine(const CanFrame& f, std::int64_t unix_us, const std::string& iface) {
   char buf[96];
-  int n = std::snprintf(buf, sizeof buf, "(%lld.%06lld) %s %08X#", static_cast<long long>(unix_us / 1000000),
+  int n = std::snprintf(buf, sizeof buf, "(%lld.%06lld) %s %08X#",
+                        static_cast<long long>(unix_us / 1000000),
                         static_cast<long long>(unix_us % 1000000), iface.c_str(), f.id);
   std::string s(buf, static_cast<std::size_t>(n));
   for (int i = 0; i < f.len; ++i) {

@@ -28,7 +28,8 @@ std::string LatLon(double deg, bool is_lat) {
     ++whole;
   }
   char buf[32];
-  std::snprintf(buf, sizeof buf, is_lat ? "%02d%010.7f,%c" : "%03d%010.7f,%c", whole, minutes, hemi);
+  std::snprintf(buf, sizeof buf, is_lat ? "%02d%010.7f,%c" : "%03d%010.7f,%c", whole, minutes,
+                hemi);
   return buf;
 }
 
@@ -52,7 +53,8 @@ std::string FormatNmea0183(const NavOutput& o, std::int64_t utc_ns) {
   const std::int64_t cs = tod / 10000000;  // centiseconds
   char time[16];
   std::snprintf(time, sizeof time, "%02lld%02lld%02lld.%02lld", static_cast<long long>(cs / 360000),
-                static_cast<long long>(cs / 6000 % 60), static_cast<long long>(cs / 100 % 60), static_cast<long long>(cs % 100));
+                static_cast<long long>(cs / 6000 % 60), static_cast<long long>(cs / 100 % 60),
+                static_cast<long long>(cs % 100));
   int y = 0, m = 0, d = 0;
   CivilFromDays(days, y, m, d);
   const std::string lat = LatLon(o.position.lat_deg, true), lon = LatLon(o.position.lon_deg, false);
@@ -60,12 +62,13 @@ std::string FormatNmea0183(const NavOutput& o, std::int64_t utc_ns) {
   const double speed_kn = o.v_N_mps.head<2>().norm() / 0.514444;
   double course = std::atan2(o.v_N_mps.x(), o.v_N_mps.y()) * 180.0 / M_PI;
   if (course < 0) course += 360.0;
-  std::snprintf(buf, sizeof buf, "GNRMC,%s,%c,%s,%s,%.3f,%.2f,%02d%02d%02d,,,%c", time, o.valid ? 'A' : 'V', lat.c_str(),
-                lon.c_str(), speed_kn, course, d, m, y % 100, o.valid ? 'A' : 'N');
+  std::snprintf(buf, sizeof buf, "GNRMC,%s,%c,%s,%s,%.3f,%.2f,%02d%02d%02d,,,%c", time,
+                o.valid ? 'A' : 'V', lat.c_str(), lon.c_str(), speed_kn, course, d, m, y % 100,
+                o.valid ? 'A' : 'N');
   std::string out = NmeaSentence(buf);
   // GGA: the ellipsoidal height as altitude with a zero geoid separation (the filter has no geoid)
-  std::snprintf(buf, sizeof buf, "GNGGA,%s,%s,%s,%d,08,1.0,%.3f,M,0.0,M,,", time, lat.c_str(), lon.c_str(), o.valid ? 1 : 0,
-                o.position.height_m);
+  std::snprintf(buf, sizeof buf, "GNGGA,%s,%s,%s,%d,08,1.0,%.3f,M,0.0,M,,", time, lat.c_str(),
+                lon.c_str(), o.valid ? 1 : 0, o.position.height_m);
   out += NmeaSentence(buf);
   if (o.has_attitude) {
     const Eigen::Vector3d x = o.q_NB * Eigen::Vector3d::UnitX();

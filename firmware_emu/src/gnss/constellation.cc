@@ -1,10 +1,11 @@
 #include "hil/firmware_emu/gnss/constellation.h"
 
-#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
+
+#include <Eigen/Dense>
 
 #include "hil/firmware_emu/gnss/geodesy.h"
 
@@ -21,8 +22,8 @@ constexpr double kGeoRadius_m = 42164000.0;
 constexpr double kTrackMinElev_deg = 2.0;  // below this the signal is not acquired
 
 // Elevation and azimuth (deg) of an ECEF satellite position seen from an ECEF receiver.
-void LookAngles(const Eigen::Vector3d& sat_e, const Eigen::Vector3d& rx_e, const Eigen::Matrix3d& r_en,
-                double& elev_deg, double& azim_deg) {
+void LookAngles(const Eigen::Vector3d& sat_e, const Eigen::Vector3d& rx_e,
+                const Eigen::Matrix3d& r_en, double& elev_deg, double& azim_deg) {
   const Eigen::Vector3d los_n = r_en.transpose() * (sat_e - rx_e).normalized();
   elev_deg = std::asin(std::clamp(los_n.z(), -1.0, 1.0)) / kDeg;
   double az = std::atan2(los_n.x(), los_n.y()) / kDeg;
@@ -53,12 +54,12 @@ Constellation::Constellation(std::uint64_t seed) {
       gps_.push_back(o);
     }
   }
-  sbas_ = {{120, -15.5}, {124, 21.5}, {126, 25.0}, {127, 55.0}, {128, 83.0},
+  sbas_ = {{120, -15.5}, {124, 21.5},  {126, 25.0},   {127, 55.0},  {128, 83.0},
            {129, 140.0}, {133, -98.0}, {135, -133.0}, {138, -107.3}};
 }
 
-std::vector<SatelliteView> Constellation::Sky(double gps_s, double lat_deg, double lon_deg, double height_m,
-                                              const SkyConditions& cond) const {
+std::vector<SatelliteView> Constellation::Sky(double gps_s, double lat_deg, double lon_deg,
+                                              double height_m, const SkyConditions& cond) const {
   const Eigen::Vector3d rx_e = EcefFromGeodetic(lat_deg, lon_deg, height_m);
   const Eigen::Matrix3d r_en = RotationEcefFromEnu(lat_deg, lon_deg);
   const double n = std::sqrt(kMu_m3ps2 / (kGpsA_m * kGpsA_m * kGpsA_m));
@@ -75,13 +76,15 @@ std::vector<SatelliteView> Constellation::Sky(double gps_s, double lat_deg, doub
     if (s.elev_deg < 0) continue;
     // C/N0: rises with elevation; a slow deterministic ripple stands in for multipath fading
     const double ripple = 1.5 * std::sin(gps_s / 37.0 + o.svid);
-    s.cno_dbhz = static_cast<int>(std::lround(34.0 + 12.0 * std::sin(s.elev_deg * kDeg) + o.cno_offset + ripple));
+    s.cno_dbhz = static_cast<int>(
+        std::lround(34.0 + 12.0 * std::sin(s.elev_deg * kDeg) + o.cno_offset + ripple));
     out.push_back(s);
   }
   if (cond.sbas_enabled) {
     std::vector<SatelliteView> geo;
     for (const auto& [svid, lon] : sbas_) {
-      const Eigen::Vector3d p_e(kGeoRadius_m * std::cos(lon * kDeg), kGeoRadius_m * std::sin(lon * kDeg), 0.0);
+      const Eigen::Vector3d p_e(kGeoRadius_m * std::cos(lon * kDeg),
+                                kGeoRadius_m * std::sin(lon * kDeg), 0.0);
       SatelliteView s;
       s.svid = svid;
       s.sbas = true;
@@ -91,8 +94,10 @@ std::vector<SatelliteView> Constellation::Sky(double gps_s, double lat_deg, doub
       geo.push_back(s);
     }
     // the receiver searches only maxSBAS of them: the highest
-    std::sort(geo.begin(), geo.end(), [](const auto& a, const auto& b) { return a.elev_deg > b.elev_deg; });
-    for (std::size_t i = 0; i < geo.size() && static_cast<int>(i) < cond.max_sbas; ++i) out.push_back(geo[i]);
+    std::sort(geo.begin(), geo.end(),
+              [](const auto& a, const auto& b) { return a.elev_deg > b.elev_deg; });
+    for (std::size_t i = 0; i < geo.size() && static_cast<int>(i) < cond.max_sbas; ++i)
+      out.push_back(geo[i]);
   }
   // channel assignment: highest elevation first, GPS before SBAS
   std::vector<SatelliteView*> order;
@@ -103,7 +108,8 @@ std::vector<SatelliteView> Constellation::Sky(double gps_s, double lat_deg, doub
   });
   int channel = 0;
   for (SatelliteView* s : order) {
-    const bool receivable = !cond.sky_blocked && s->elev_deg >= std::max(kTrackMinElev_deg, cond.blocked_below_deg);
+    const bool receivable =
+        !cond.sky_blocked && s->elev_deg >= std::max(kTrackMinElev_deg, cond.blocked_below_deg);
     if (!receivable || channel >= cond.max_channels) {
       s->cno_dbhz = 0;
       s->quality = receivable ? 0 : 1;  // idle (no free channel) or searching
@@ -114,7 +120,8 @@ std::vector<SatelliteView> Constellation::Sky(double gps_s, double lat_deg, doub
     s->used = !s->sbas && s->elev_deg >= cond.elevation_mask_deg;
     s->quality = s->used ? 7 : 4;
   }
-  std::sort(out.begin(), out.end(), [](const SatelliteView& a, const SatelliteView& b) { return a.svid < b.svid; });
+  std::sort(out.begin(), out.end(),
+            [](const SatelliteView& a, const SatelliteView& b) { return a.svid < b.svid; });
   return out;
 }
 
@@ -123,7 +130,8 @@ Dops ComputeDops(const std::vector<SatelliteView>& sats) {
   for (const auto& s : sats) {
     if (!s.used) continue;
     const double el = s.elev_deg * kDeg, az = s.azim_deg * kDeg;
-    rows.emplace_back(-std::cos(el) * std::sin(az), -std::cos(el) * std::cos(az), -std::sin(el), 1.0);
+    rows.emplace_back(-std::cos(el) * std::sin(az), -std::cos(el) * std::cos(az), -std::sin(el),
+                      1.0);
   }
   Dops d;
   if (rows.size() == 3) {

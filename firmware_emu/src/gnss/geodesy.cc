@@ -9,7 +9,8 @@ Eigen::Vector3d EcefFromGeodetic(double lat_deg, double lon_deg, double height_m
   const double lat = lat_deg * std::numbers::pi / 180.0, lon = lon_deg * std::numbers::pi / 180.0;
   const double s = std::sin(lat), c = std::cos(lat);
   const double n = kWgs84A_m / std::sqrt(1.0 - kWgs84E2 * s * s);
-  return {(n + height_m) * c * std::cos(lon), (n + height_m) * c * std::sin(lon), (n * (1.0 - kWgs84E2) + height_m) * s};
+  return {(n + height_m) * c * std::cos(lon), (n + height_m) * c * std::sin(lon),
+          (n * (1.0 - kWgs84E2) + height_m) * s};
 }
 
 Eigen::Matrix3d RotationEcefFromEnu(double lat_deg, double lon_deg) {

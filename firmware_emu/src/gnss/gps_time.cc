@@ -10,7 +10,9 @@ namespace {
 constexpr std::int64_t kNsPerSecond = 1000000000;
 constexpr std::int64_t kSecondsPerDay = 86400;
 
-std::int64_t FloorDiv(std::int64_t a, std::int64_t b) { return a / b - ((a % b != 0) && ((a < 0) != (b < 0))); }
+std::int64_t FloorDiv(std::int64_t a, std::int64_t b) {
+  return a / b - ((a % b != 0) && ((a < 0) != (b < 0)));
+}
 
 // Unix seconds at which GPS − UTC stepped to the given value (IERS Bulletin C).
 struct LeapStep {
@@ -18,10 +20,24 @@ struct LeapStep {
   int gps_minus_utc_s;
 };
 constexpr std::array<LeapStep, 18> kLeapSteps{{
-    {362793600, 1},   {394329600, 2},   {425865600, 3},   {489024000, 4},   {567993600, 5},
-    {631152000, 6},   {662688000, 7},   {709948800, 8},   {741484800, 9},   {773020800, 10},
-    {820454400, 11},  {867715200, 12},  {915148800, 13},  {1136073600, 14}, {1230768000, 15},
-    {1341100800, 16}, {1435708800, 17}, {1483228800, 18},
+    {362793600, 1},
+    {394329600, 2},
+    {425865600, 3},
+    {489024000, 4},
+    {567993600, 5},
+    {631152000, 6},
+    {662688000, 7},
+    {709948800, 8},
+    {741484800, 9},
+    {773020800, 10},
+    {820454400, 11},
+    {867715200, 12},
+    {915148800, 13},
+    {1136073600, 14},
+    {1230768000, 15},
+    {1341100800, 16},
+    {1435708800, 17},
+    {1483228800, 18},
 }};
 
 }  // namespace
@@ -83,7 +99,8 @@ GpsTime GpsFromUnixNs(std::int64_t unix_ns) {
 }
 
 std::int64_t UnixNsFromGps(const GpsTime& gps) {
-  const std::int64_t gps_ns = static_cast<std::int64_t>(gps.week) * kSecondsPerWeek * kNsPerSecond + gps.tow_ns;
+  const std::int64_t gps_ns =
+      static_cast<std::int64_t>(gps.week) * kSecondsPerWeek * kNsPerSecond + gps.tow_ns;
   // Leap seconds are looked up at the approximate UTC instant, then corrected once.
   std::int64_t unix_ns = gps_ns + kGpsEpochUnix_s * kNsPerSecond;
   int leap = LeapSecondsAtUnix(FloorDiv(unix_ns, kNsPerSecond));
@@ -97,7 +114,8 @@ std::int64_t ParseIsoUtc(const std::string& text) {
   int consumed = 0;
   const int n = std::sscanf(text.c_str(), "%4d-%2d-%2dT%2d:%2d:%2d%n", &u.year, &u.month, &u.day,
                             &u.hour, &u.minute, &u.second, &consumed);
-  if (n != 6) throw std::invalid_argument("not an ISO 8601 UTC time (YYYY-MM-DDThh:mm:ssZ): '" + text + "'");
+  if (n != 6)
+    throw std::invalid_argument("not an ISO 8601 UTC time (YYYY-MM-DDThh:mm:ssZ): '" + text + "'");
   std::size_t pos = static_cast<std::size_t>(consumed);
   if (pos < text.size() && text[pos] == '.') {
     std::size_t k = 0;
@@ -113,8 +131,8 @@ std::int64_t ParseIsoUtc(const std::string& text) {
     throw std::invalid_argument("UTC time must end in 'Z': '" + text + "'");
   }
   // GPS time starts in 1980; the upper bound keeps nanoseconds since 1970 inside 64 bits
-  if (u.year < 1980 || u.year > 2200 || u.month < 1 || u.month > 12 || u.day < 1 || u.day > 31 || u.hour > 23 ||
-      u.minute > 59 || u.second > 59) {
+  if (u.year < 1980 || u.year > 2200 || u.month < 1 || u.month > 12 || u.day < 1 || u.day > 31 ||
+      u.hour > 23 || u.minute > 59 || u.second > 59) {
     throw std::invalid_argument("UTC time out of range: '" + text + "'");
   }
   return UnixNsFromUtc(u);

@@ -27,8 +27,9 @@ ReceiverProfile ProfileWithOverrides(const Neo5mConfig& c) {
 }
 
 ubx::ReceiverSettings DefaultSettings(const ReceiverProfile& p) {
-  return ubx::ReceiverSettings::Defaults(static_cast<std::uint32_t>(p.baud),
-                                         static_cast<std::uint16_t>(std::lround(1000.0 / p.rate_hz)), p.nmea_rates);
+  return ubx::ReceiverSettings::Defaults(
+      static_cast<std::uint32_t>(p.baud),
+      static_cast<std::uint16_t>(std::lround(1000.0 / p.rate_hz)), p.nmea_rates);
 }
 
 // Deterministic pseudorange residual (m) of a used satellite at an epoch: a small smooth value.
@@ -44,8 +45,9 @@ Neo5mDevice::Neo5mDevice(const Neo5mConfig& config, std::uint64_t seed)
       fix_state_(profile_.fix_state),
       session_(DefaultSettings(profile_), profile_.max_rate_hz) {
   if (profile_.rate_hz > profile_.max_rate_hz) {
-    throw std::invalid_argument("GNSS rate " + std::to_string(profile_.rate_hz) + " Hz is above the " +
-                                profile_.name + " maximum of " + std::to_string(profile_.max_rate_hz) + " Hz");
+    throw std::invalid_argument("GNSS rate " + std::to_string(profile_.rate_hz) +
+                                " Hz is above the " + profile_.name + " maximum of " +
+                                std::to_string(profile_.max_rate_hz) + " Hz");
   }
   // receiver clock: a drift of a few hundred ns/s from the seed, the bias starting inside ±0.5 ms
   const std::uint64_t h = seed * 0x9E3779B97F4A7C15ULL;
@@ -55,9 +57,13 @@ Neo5mDevice::Neo5mDevice(const Neo5mConfig& config, std::uint64_t seed)
   fix_state_.Restart(Time{}, config_.start);
 }
 
-int Neo5mDevice::baud(int) const { return static_cast<int>(session_.current().ports[ubx::kUart1].baud); }
+int Neo5mDevice::baud(int) const {
+  return static_cast<int>(session_.current().ports[ubx::kUart1].baud);
+}
 
-Duration Neo5mDevice::Period() const { return Duration{static_cast<std::int64_t>(session_.current().meas_rate_ms) * kNsPerMs}; }
+Duration Neo5mDevice::Period() const {
+  return Duration{static_cast<std::int64_t>(session_.current().meas_rate_ms) * kNsPerMs};
+}
 
 Time Neo5mDevice::NextGridEpoch(Time after) const {
   // epochs sit on the UTC grid of the measurement period (whole seconds at 1 Hz)
@@ -102,12 +108,24 @@ void Neo5mDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
   for (const GnssFault& f : config_.faults) {
     if (t_s < f.start_s || t_s >= f.end_s) continue;
     switch (f.kind) {
-      case GnssFault::Kind::kOutage: cond.sky_blocked = true; break;
-      case GnssFault::Kind::kObstruction: cond.blocked_below_deg = std::max(cond.blocked_below_deg, f.elevation_deg); break;
-      case GnssFault::Kind::kStep: in.offset_N_m += f.offset_N_m; break;
-      case GnssFault::Kind::kMultipath: in.multipath_sigma_m = std::hypot(in.multipath_sigma_m, f.sigma_m); break;
-      case GnssFault::Kind::kOverload: overload_ = true; break;
-      case GnssFault::Kind::kDataGap: data_gap = true; break;
+      case GnssFault::Kind::kOutage:
+        cond.sky_blocked = true;
+        break;
+      case GnssFault::Kind::kObstruction:
+        cond.blocked_below_deg = std::max(cond.blocked_below_deg, f.elevation_deg);
+        break;
+      case GnssFault::Kind::kStep:
+        in.offset_N_m += f.offset_N_m;
+        break;
+      case GnssFault::Kind::kMultipath:
+        in.multipath_sigma_m = std::hypot(in.multipath_sigma_m, f.sigma_m);
+        break;
+      case GnssFault::Kind::kOverload:
+        overload_ = true;
+        break;
+      case GnssFault::Kind::kDataGap:
+        data_gap = true;
+        break;
     }
   }
   const double gps_s = static_cast<double>(e.gps.week) * 604800.0 + e.gps.tow_s();
@@ -129,20 +147,25 @@ void Neo5mDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
   // the solution (the error processes advance every epoch, with or without a fix)
   if (dops.valid) {
     in.h_scale = std::clamp(dops.hdop / profile_.model.hdop_ref, 0.5, 20.0);
-    in.v_scale = dops.vdop < 99 ? std::clamp(dops.vdop / profile_.model.vdop_ref, 0.5, 20.0) : in.h_scale;
+    in.v_scale =
+        dops.vdop < 99 ? std::clamp(dops.vdop / profile_.model.vdop_ref, 0.5, 20.0) : in.h_scale;
   }
   if (valid && !had_fix_last_) t_fix_since_ = t;
   had_fix_last_ = valid;
-  const bool rtk_float = profile_.rtk && valid && t - t_fix_since_ < DurationFromSeconds(profile_.rtk_fixed_after_s);
-  if (rtk_float) in.multipath_sigma_m = std::hypot(in.multipath_sigma_m, profile_.rtk_float_sigma_m);
+  const bool rtk_float =
+      profile_.rtk && valid && t - t_fix_since_ < DurationFromSeconds(profile_.rtk_fixed_after_s);
+  if (rtk_float)
+    in.multipath_sigma_m = std::hypot(in.multipath_sigma_m, profile_.rtk_float_sigma_m);
   GnssFix fix = model_.Calc(truth, unix_ns, dt_s, in);
   fix.fix_type = e.status.fix_type;
   e.sbas_corrections = false;
   if (config_.sbas_corrections && cfg.sbas_used_for_corrections()) {
     for (const auto& s : e.sats) e.sbas_corrections = e.sbas_corrections || (s.sbas && s.tracked);
   }
-  if (profile_.rtk) fix.quality = rtk_float ? FixQuality::kRtkFloat : FixQuality::kRtkFixed;
-  else fix.quality = e.sbas_corrections ? FixQuality::kDgps : FixQuality::kGps;
+  if (profile_.rtk)
+    fix.quality = rtk_float ? FixQuality::kRtkFloat : FixQuality::kRtkFixed;
+  else
+    fix.quality = e.sbas_corrections ? FixQuality::kDgps : FixQuality::kGps;
   if (!valid) fix.quality = FixQuality::kInvalid;
   fix.num_sv = valid ? usable : 0;
   fix.gdop = dops.gdop, fix.pdop = dops.pdop, fix.tdop = dops.tdop, fix.vdop = dops.vdop;
@@ -159,12 +182,14 @@ void Neo5mDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
   for (const auto& s : e.sats) {
     if (s.used) by_channel.push_back(&s);
   }
-  std::sort(by_channel.begin(), by_channel.end(), [](auto* a, auto* b) { return a->channel < b->channel; });
+  std::sort(by_channel.begin(), by_channel.end(),
+            [](auto* a, auto* b) { return a->channel < b->channel; });
   for (const auto* s : by_channel) e.used_in_channel_order.push_back(s->nmea_id());
 
   // receiver clock
   clk_bias_ns_ += clk_drift_nsps_ * dt_s;
-  if (clk_bias_ns_ > 500000.0) clk_bias_ns_ -= 1000000.0;  // 1 ms clock steps, as u-blox receivers make
+  if (clk_bias_ns_ > 500000.0)
+    clk_bias_ns_ -= 1000000.0;  // 1 ms clock steps, as u-blox receivers make
   e.clk_bias_ns = clk_bias_ns_;
   e.clk_drift_nsps = clk_drift_nsps_;
   e.leap_known = valid || fix_state_.start_kind() != StartKind::kCold;
@@ -190,10 +215,13 @@ void Neo5mDevice::EmitEpoch(Time t_ready, DeviceOutput& out) {
   banner_pending_ = false;
   if (OutputEnabled(ubx::kProtoUbx)) {
     for (std::uint8_t id : ubx::kNavOutputOrder) {
-      if (due(ubx::kNav, id)) Push(out, t_ready, ubx::Frame(ubx::kNav, id, ubx::EncodeNav(id, e)), ubx::MessageName(ubx::kNav, id));
+      if (due(ubx::kNav, id))
+        Push(out, t_ready, ubx::Frame(ubx::kNav, id, ubx::EncodeNav(id, e)),
+             ubx::MessageName(ubx::kNav, id));
     }
     if (due(ubx::kMon, ubx::kMonHw)) {
-      Push(out, t_ready, ubx::Frame(ubx::kMon, ubx::kMonHw, ubx::EncodeMonHw(0x0001FFFF)), "UBX-MON-HW");
+      Push(out, t_ready, ubx::Frame(ubx::kMon, ubx::kMonHw, ubx::EncodeMonHw(0x0001FFFF)),
+           "UBX-MON-HW");
     }
   }
   if (!OutputEnabled(ubx::kProtoNmea)) return;
@@ -203,16 +231,30 @@ void Neo5mDevice::EmitEpoch(Time t_ready, DeviceOutput& out) {
   for (std::uint8_t id : kNmeaOrder) {
     if (!due(ubx::kNmeaStd, id)) continue;
     switch (id) {
-      case 0x04: Push(out, t_ready, nmea::EncodeRmc(e.fix, tk, fmt), "NMEA-RMC"); break;
-      case 0x05: Push(out, t_ready, nmea::EncodeVtg(e.fix, fmt), "NMEA-VTG"); break;
-      case 0x00: Push(out, t_ready, nmea::EncodeGga(e.fix, tk, fmt), "NMEA-GGA"); break;
-      case 0x02: Push(out, t_ready, nmea::EncodeGsa(e), "NMEA-GSA"); break;
-      case 0x03:
-        for (auto& s : nmea::EncodeGsv(e, cfg.nmea_num_sv())) Push(out, t_ready, std::move(s), "NMEA-GSV");
+      case 0x04:
+        Push(out, t_ready, nmea::EncodeRmc(e.fix, tk, fmt), "NMEA-RMC");
         break;
-      case 0x01: Push(out, t_ready, nmea::EncodeGll(e.fix, tk, fmt), "NMEA-GLL"); break;
-      case 0x08: Push(out, t_ready, nmea::EncodeZda(e.fix, tk), "NMEA-ZDA"); break;
-      default: break;
+      case 0x05:
+        Push(out, t_ready, nmea::EncodeVtg(e.fix, fmt), "NMEA-VTG");
+        break;
+      case 0x00:
+        Push(out, t_ready, nmea::EncodeGga(e.fix, tk, fmt), "NMEA-GGA");
+        break;
+      case 0x02:
+        Push(out, t_ready, nmea::EncodeGsa(e), "NMEA-GSA");
+        break;
+      case 0x03:
+        for (auto& s : nmea::EncodeGsv(e, cfg.nmea_num_sv()))
+          Push(out, t_ready, std::move(s), "NMEA-GSV");
+        break;
+      case 0x01:
+        Push(out, t_ready, nmea::EncodeGll(e.fix, tk, fmt), "NMEA-GLL");
+        break;
+      case 0x08:
+        Push(out, t_ready, nmea::EncodeZda(e.fix, tk), "NMEA-ZDA");
+        break;
+      default:
+        break;
     }
   }
   if (due(ubx::kNmeaPubx, 0x00)) Push(out, t_ready, nmea::EncodePubx00(e), "NMEA-PUBX00");
@@ -222,8 +264,10 @@ void Neo5mDevice::EmitEpoch(Time t_ready, DeviceOutput& out) {
 void Neo5mDevice::OnHostBytes(int port, Time t, std::string_view bytes, DeviceOutput& out) {
   if (port != 0) return;
   for (const ubx::InputMessage& m : parser_.Feed(bytes)) {
-    if (m.kind == ubx::InputMessage::Kind::kUbx) HandleUbx(m, t, out);
-    else HandleNmea(m, t, out);
+    if (m.kind == ubx::InputMessage::Kind::kUbx)
+      HandleUbx(m, t, out);
+    else
+      HandleNmea(m, t, out);
   }
 }
 
@@ -235,7 +279,8 @@ void Neo5mDevice::HandleUbx(const ubx::InputMessage& m, Time t, DeviceOutput& ou
     const std::uint16_t period_before = session_.current().meas_rate_ms;
     ubx::CfgEffects fx;
     replies = session_.Handle(m.id, m.payload, ubx::kUart1, fx);
-    if (session_.current().meas_rate_ms != period_before) next_epoch_ = NextGridEpoch(last_epoch_time_);
+    if (session_.current().meas_rate_ms != period_before)
+      next_epoch_ = NextGridEpoch(last_epoch_time_);
     if (fx.gps_stop) stopped_ = true;
     if (fx.gps_start && stopped_) {
       stopped_ = false;
@@ -256,8 +301,9 @@ void Neo5mDevice::HandleUbx(const ubx::InputMessage& m, Time t, DeviceOutput& ou
     auto p = ubx::EncodeNav(m.id, last_epoch_);
     if (!p.empty()) replies.push_back({ubx::Frame(m.cls, m.id, p), ubx::MessageName(m.cls, m.id)});
   } else if (m.payload.empty() && m.cls == ubx::kMon && m.id == ubx::kMonVer) {
-    replies.push_back({ubx::Frame(m.cls, m.id, ubx::EncodeMonVer(profile_.sw_version, profile_.hw_version,
-                                                                 profile_.version_extensions)),
+    replies.push_back({ubx::Frame(m.cls, m.id,
+                                  ubx::EncodeMonVer(profile_.sw_version, profile_.hw_version,
+                                                    profile_.version_extensions)),
                        "UBX-MON-VER"});
   } else if (m.payload.empty() && m.cls == ubx::kMon && m.id == ubx::kMonHw) {
     replies.push_back({ubx::Frame(m.cls, m.id, ubx::EncodeMonHw(0x0001FFFF)), "UBX-MON-HW"});
@@ -275,8 +321,10 @@ void Neo5mDevice::HandleNmea(const ubx::InputMessage& m, Time t, DeviceOutput& o
   }
   if (!OutputEnabled(ubx::kProtoNmea)) return;
   const Time t_reply = t + config_.response_delay;
-  if (s == "PUBX,00") Push(out, t_reply, nmea::EncodePubx00(last_epoch_), "NMEA-PUBX00");
-  else if (s == "PUBX,04") Push(out, t_reply, nmea::EncodePubx04(last_epoch_), "NMEA-PUBX04");
+  if (s == "PUBX,00")
+    Push(out, t_reply, nmea::EncodePubx00(last_epoch_), "NMEA-PUBX00");
+  else if (s == "PUBX,04")
+    Push(out, t_reply, nmea::EncodePubx04(last_epoch_), "NMEA-PUBX04");
 }
 
 }  // namespace hil::gnss

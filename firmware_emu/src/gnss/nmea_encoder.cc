@@ -17,7 +17,8 @@ char ModeIndicator(const GnssFix& fix) {
 }
 
 std::string Position(const GnssFix& fix, const NmeaFormat& f) {
-  return FormatLatitude(fix.lat_deg, f.minute_decimals) + "," + FormatLongitude(fix.lon_deg, f.minute_decimals);
+  return FormatLatitude(fix.lat_deg, f.minute_decimals) + "," +
+         FormatLongitude(fix.lon_deg, f.minute_decimals);
 }
 
 }  // namespace
@@ -74,8 +75,10 @@ std::string EncodeGga(const GnssFix& fix, bool time_known, const NmeaFormat& f) 
   b += FormatFixed(fix.hdop, 2) + ",";
   b += FormatFixed(fix.height_m - fix.geoid_separation_m, 1) + ",M,";
   b += FormatFixed(fix.geoid_separation_m, 1) + ",M,";
-  if (f.diff_station && fix.quality != FixQuality::kGps) b += "1.0,0000";
-  else b += ",";
+  if (f.diff_station && fix.quality != FixQuality::kGps)
+    b += "1.0,0000";
+  else
+    b += ",";
   return Frame(b);
 }
 

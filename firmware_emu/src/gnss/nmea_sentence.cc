@@ -7,7 +7,8 @@ namespace hil::gnss::nmea {
 namespace {
 
 // Degrees and minutes with the minutes rounded first, so 59.999995' carries into the degrees.
-std::string FormatDegreesMinutes(double value_deg, int deg_digits, int decimals, char pos, char neg) {
+std::string FormatDegreesMinutes(double value_deg, int deg_digits, int decimals, char pos,
+                                 char neg) {
   const double abs_deg = std::fabs(value_deg);
   const double scale = std::pow(10.0, decimals);
   auto total = static_cast<long long>(std::llround(abs_deg * 60.0 * scale));  // minutes × scale
@@ -17,8 +18,8 @@ std::string FormatDegreesMinutes(double value_deg, int deg_digits, int decimals,
   const long long min_int = min_scaled / static_cast<long long>(scale);
   const long long min_frac = min_scaled % static_cast<long long>(scale);
   char buf[48];
-  std::snprintf(buf, sizeof buf, "%0*lld%02lld.%0*lld,%c", deg_digits, deg, min_int, decimals, min_frac,
-                value_deg < 0 ? neg : pos);
+  std::snprintf(buf, sizeof buf, "%0*lld%02lld.%0*lld,%c", deg_digits, deg, min_int, decimals,
+                min_frac, value_deg < 0 ? neg : pos);
   return buf;
 }
 

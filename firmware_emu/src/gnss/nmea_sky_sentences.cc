@@ -22,8 +22,11 @@ std::string EncodeGsa(const NavEpoch& e) {
     }
   }
   for (; n < 12; ++n) b += ",";
-  if (valid) b += "," + FormatFixed(e.fix.pdop, 2) + "," + FormatFixed(e.fix.hdop, 2) + "," + FormatFixed(e.fix.vdop, 2);
-  else b += ",99.99,99.99,99.99";
+  if (valid)
+    b += "," + FormatFixed(e.fix.pdop, 2) + "," + FormatFixed(e.fix.hdop, 2) + "," +
+         FormatFixed(e.fix.vdop, 2);
+  else
+    b += ",99.99,99.99,99.99";
   return Frame(b);
 }
 
@@ -51,7 +54,8 @@ std::vector<std::string> EncodeGsv(const NavEpoch& e, int max_sv) {
       std::snprintf(buf, sizeof buf, ",%02d,", s.nmea_id());
       b += buf;
       if (s.orbit_known) {
-        std::snprintf(buf, sizeof buf, "%02ld,%03ld,", std::lround(s.elev_deg), std::lround(s.azim_deg) % 360);
+        std::snprintf(buf, sizeof buf, "%02ld,%03ld,", std::lround(s.elev_deg),
+                      std::lround(s.azim_deg) % 360);
         b += buf;
       } else {
         b += ",,";

@@ -20,11 +20,16 @@ std::string EncodePubx00(const NavEpoch& e) {
   std::string b = "PUBX,00,";
   b += e.status.time_known ? FormatTime(f.unix_ns) : "";
   b += ",";
-  if (e.position_known) b += FormatLatitude(f.lat_deg, 6) + "," + FormatLongitude(f.lon_deg, 6);
-  else b += "0000.000000,N,00000.000000,E";
+  if (e.position_known)
+    b += FormatLatitude(f.lat_deg, 6) + "," + FormatLongitude(f.lon_deg, 6);
+  else
+    b += "0000.000000,N,00000.000000,E";
   b += "," + FormatFixed(e.position_known ? f.height_m : 0.0, 3) + ",";
-  if (!valid) b += "NF";
-  else b += std::string(f.quality == FixQuality::kGps ? "G" : "D") + (f.fix_type == FixType::k2D ? "2" : "3");
+  if (!valid)
+    b += "NF";
+  else
+    b += std::string(f.quality == FixQuality::kGps ? "G" : "D") +
+         (f.fix_type == FixType::k2D ? "2" : "3");
   const double h_acc = valid ? f.h_acc_m : 9999.0, v_acc = valid ? f.v_acc_m : 9999.0;
   b += "," + FormatFixed(h_acc, 1) + "," + FormatFixed(v_acc, 1) + ",";
   const double speed = valid ? f.ground_speed_mps() : 0.0;
@@ -50,8 +55,8 @@ std::string EncodePubx04(const NavEpoch& e) {
     --utc_week;
   }
   char buf[96];
-  std::snprintf(buf, sizeof buf, "%.2f,%d,%d%s,%ld,", utc_tow, utc_week, e.leap_s, e.leap_known ? "" : "D",
-                std::lround(e.clk_bias_ns));
+  std::snprintf(buf, sizeof buf, "%.2f,%d,%d%s,%ld,", utc_tow, utc_week, e.leap_s,
+                e.leap_known ? "" : "D", std::lround(e.clk_bias_ns));
   b += buf;
   b += FormatFixed(e.clk_drift_nsps, 3) + ",";
   b += "43,";  // time pulse granularity (ns), the value of the u-blox example

@@ -11,16 +11,25 @@ namespace hil::gnss::ubx {
 namespace {
 
 enum CfgId : std::uint8_t {
-  kPrt = 0x00, kMsg = 0x01, kRst = 0x04, kTp = 0x07, kRate = 0x08, kCfgCfg = 0x09, kSbas = 0x16, kNmea = 0x17,
+  kPrt = 0x00,
+  kMsg = 0x01,
+  kRst = 0x04,
+  kTp = 0x07,
+  kRate = 0x08,
+  kCfgCfg = 0x09,
+  kSbas = 0x16,
+  kNmea = 0x17,
   kNav5 = 0x24
 };
 
-constexpr std::uint16_t Key(std::uint8_t cls, std::uint8_t id) { return static_cast<std::uint16_t>((cls << 8) | id); }
+constexpr std::uint16_t Key(std::uint8_t cls, std::uint8_t id) {
+  return static_cast<std::uint16_t>((cls << 8) | id);
+}
 
 // NMEA message ids in class 0xF0, by sentence name (for $PUBX,40).
-constexpr std::pair<const char*, std::uint8_t> kNmeaIds[] = {{"GGA", 0x00}, {"GLL", 0x01}, {"GSA", 0x02}, {"GSV", 0x03},
-                                                             {"RMC", 0x04}, {"VTG", 0x05}, {"GRS", 0x06}, {"GST", 0x07},
-                                                             {"ZDA", 0x08}};
+constexpr std::pair<const char*, std::uint8_t> kNmeaIds[] = {
+    {"GGA", 0x00}, {"GLL", 0x01}, {"GSA", 0x02}, {"GSV", 0x03}, {"RMC", 0x04},
+    {"VTG", 0x05}, {"GRS", 0x06}, {"GST", 0x07}, {"ZDA", 0x08}};
 
 std::vector<std::string> SplitFields(const std::string& body) {
   std::vector<std::string> f;
@@ -60,8 +69,9 @@ FixMode ReceiverSettings::fix_mode() const {
 
 double ReceiverSettings::min_elevation_deg() const { return static_cast<std::int8_t>(nav5[12]); }
 
-ReceiverSettings ReceiverSettings::Defaults(std::uint32_t baud, std::uint16_t meas_rate_ms,
-                                            const std::map<std::uint8_t, std::uint8_t>& nmea_rates) {
+ReceiverSettings ReceiverSettings::Defaults(
+    std::uint32_t baud, std::uint16_t meas_rate_ms,
+    const std::map<std::uint8_t, std::uint8_t>& nmea_rates) {
   ReceiverSettings s;
   s.ports[kUart1].baud = baud;
   s.ports[2].baud = 9600;
@@ -71,11 +81,14 @@ ReceiverSettings ReceiverSettings::Defaults(std::uint32_t baud, std::uint16_t me
   }
   // CFG-NAV5: the u-blox 5 frame quoted in the fact sheet (portable, auto 2D/3D, minElev 5°,
   // PDOP/TDOP masks 25.0, pAcc 100 m, tAcc 300 m), with the all-ones mask a poll reports
-  const std::array<std::uint8_t, 36> nav5{0xFF, 0xFF, 0x00, 0x03, 0, 0, 0, 0, 0x10, 0x27, 0, 0, 0x05, 0x00,
-                                          0xFA, 0x00, 0xFA, 0x00, 0x64, 0x00, 0x2C, 0x01, 0x00};
+  const std::array<std::uint8_t, 36> nav5{0xFF, 0xFF, 0x00, 0x03, 0,    0,    0,    0,
+                                          0x10, 0x27, 0,    0,    0x05, 0x00, 0xFA, 0x00,
+                                          0xFA, 0x00, 0x64, 0x00, 0x2C, 0x01, 0x00};
   s.nav5 = nav5;
-  s.sbas = {0x01, 0x03, 0x03, 0x00, 0, 0, 0, 0};  // enabled, range + corrections, up to 3 SBAS, auto-scan
-  // CFG-TP: 1 s interval, 100 ms pulse, rising, UTC, 50 ns cable delay (UNVERIFIED u-blox 5 defaults)
+  s.sbas = {0x01, 0x03, 0x03, 0x00,
+            0,    0,    0,    0};  // enabled, range + corrections, up to 3 SBAS, auto-scan
+  // CFG-TP: 1 s interval, 100 ms pulse, rising, UTC, 50 ns cable delay (UNVERIFIED u-blox 5
+  // defaults)
   Writer tp;
   tp.U4(1000000).U4(100000).I1(1).U1(0).U1(0).U1(0).I2(50).I2(0).I4(0);
   std::copy(tp.bytes().begin(), tp.bytes().end(), s.tp.begin());
@@ -89,9 +102,11 @@ UbxCfgSession::UbxCfgSession(const ReceiverSettings& defaults, double max_rate_h
 bool UbxCfgSession::Known(std::uint8_t cls, std::uint8_t id) const {
   switch (cls) {
     case kNav:
-      return std::find(std::begin(kNavOutputOrder), std::end(kNavOutputOrder), id) != std::end(kNavOutputOrder);
+      return std::find(std::begin(kNavOutputOrder), std::end(kNavOutputOrder), id) !=
+             std::end(kNavOutputOrder);
     case kRxm:
-      return id == 0x10 || id == 0x11 || id == 0x20;  // RAW, SFRB, SVSI: accepted, never output by a NEO-5M
+      return id == 0x10 || id == 0x11 ||
+             id == 0x20;  // RAW, SFRB, SVSI: accepted, never output by a NEO-5M
     case kMon:
       return id == kMonHw || id == 0x02 || id == 0x06 || id == 0x07 || id == 0x08;
     case kTim:
@@ -114,7 +129,8 @@ std::vector<std::uint8_t> UbxCfgSession::PortBlock(int port_id) const {
   return w.bytes();
 }
 
-void UbxCfgSession::CopySections(const ReceiverSettings& from, ReceiverSettings& to, std::uint32_t mask) const {
+void UbxCfgSession::CopySections(const ReceiverSettings& from, ReceiverSettings& to,
+                                 std::uint32_t mask) const {
   if (mask & 0x01) to.ports = from.ports;
   if (mask & 0x02) to.rates = from.rates;
   if (mask & 0x08) {
@@ -128,14 +144,16 @@ void UbxCfgSession::CopySections(const ReceiverSettings& from, ReceiverSettings&
   }
 }
 
-std::vector<Reply> UbxCfgSession::Handle(std::uint8_t id, const std::vector<std::uint8_t>& payload, int port_id,
-                                         CfgEffects& fx) {
+std::vector<Reply> UbxCfgSession::Handle(std::uint8_t id, const std::vector<std::uint8_t>& payload,
+                                         int port_id, CfgEffects& fx) {
   std::vector<Reply> out;
   const Reader r(payload);
   const auto reply = [&](std::uint8_t reply_id, const std::vector<std::uint8_t>& p) {
     out.push_back({Frame(kCfg, reply_id, p), MessageName(kCfg, reply_id)});
   };
-  const auto ack = [&](bool ok) { out.push_back({Ack(ok, kCfg, id), ok ? "UBX-ACK-ACK" : "UBX-ACK-NAK"}); };
+  const auto ack = [&](bool ok) {
+    out.push_back({Ack(ok, kCfg, id), ok ? "UBX-ACK-ACK" : "UBX-ACK-NAK"});
+  };
   const auto poll_array = [&](const auto& arr) {
     reply(id, std::vector<std::uint8_t>(arr.begin(), arr.end()));
     ack(true);
@@ -180,8 +198,11 @@ std::vector<Reply> UbxCfgSession::Handle(std::uint8_t id, const std::vector<std:
         ack(true);
         return out;
       }
-      if (n == 3) current_.SetRate(cls, mid, port_id, r.U1(2));
-      else for (int k = 0; k < 6; ++k) current_.SetRate(cls, mid, k, r.U1(2 + static_cast<std::size_t>(k)));
+      if (n == 3)
+        current_.SetRate(cls, mid, port_id, r.U1(2));
+      else
+        for (int k = 0; k < 6; ++k)
+          current_.SetRate(cls, mid, k, r.U1(2 + static_cast<std::size_t>(k)));
       ack(true);
       return out;
     }
@@ -231,7 +252,8 @@ std::vector<Reply> UbxCfgSession::Handle(std::uint8_t id, const std::vector<std:
     case kTp: {
       if (n == 0) return poll_array(current_.tp), out;
       const int status = r.I1(8);
-      if (n != 20 || status < -1 || status > 1 || r.U1(9) > 2 || r.U4(4) > r.U4(0)) return ack(false), out;
+      if (n != 20 || status < -1 || status > 1 || r.U1(9) > 2 || r.U4(4) > r.U4(0))
+        return ack(false), out;
       std::copy(payload.begin(), payload.end(), current_.tp.begin());
       ack(true);
       return out;
@@ -254,7 +276,8 @@ std::vector<Reply> UbxCfgSession::Handle(std::uint8_t id, const std::vector<std:
       if (n != 4) return ack(false), out;
       const std::uint16_t bbr = r.U2(0);
       const std::uint8_t mode = r.U1(2);
-      if (mode != 0 && mode != 1 && mode != 2 && mode != 4 && mode != 8 && mode != 9) return ack(false), out;
+      if (mode != 0 && mode != 1 && mode != 2 && mode != 4 && mode != 8 && mode != 9)
+        return ack(false), out;
       // u-blox 5 firmware acknowledges before resetting (later firmware does not)
       ack(true);
       if (mode == 8) {
@@ -266,7 +289,9 @@ std::vector<Reply> UbxCfgSession::Handle(std::uint8_t id, const std::vector<std:
         return out;
       }
       // navBbrMask: nothing cleared = hot, everything = cold, anything else (ephemeris …) = warm
-      fx.restart = bbr == 0x0000 ? StartKind::kHot : bbr == 0xFFFF ? StartKind::kCold : StartKind::kWarm;
+      fx.restart = bbr == 0x0000   ? StartKind::kHot
+                   : bbr == 0xFFFF ? StartKind::kCold
+                                   : StartKind::kWarm;
       fx.hardware_reset = mode != 2;
       return out;
     }
@@ -294,16 +319,19 @@ bool UbxCfgSession::HandlePubxSet(const std::string& body) {
       }
       rates[k] = static_cast<std::uint8_t>(v);
     }
-    for (int k = 0; k < 6; ++k) current_.SetRate(kNmeaStd, *mid, k, rates[static_cast<std::size_t>(k)]);
+    for (int k = 0; k < 6; ++k)
+      current_.SetRate(kNmeaStd, *mid, k, rates[static_cast<std::size_t>(k)]);
     return true;
   }
   if (f[1] == "41") {
     unsigned long port = 0, in = 0, out = 0, baud = 0;
-    if (f.size() < 7 || !ParseUint(f[2], 10, port) || !ParseUint(f[3], 16, in) || !ParseUint(f[4], 16, out) ||
-        !ParseUint(f[5], 10, baud)) {
+    if (f.size() < 7 || !ParseUint(f[2], 10, port) || !ParseUint(f[3], 16, in) ||
+        !ParseUint(f[4], 16, out) || !ParseUint(f[5], 10, baud)) {
       return false;
     }
-    if (port >= kNumPorts || ((port == 1 || port == 2) && !IsSupportedBaud(static_cast<std::uint32_t>(baud)))) return false;
+    if (port >= kNumPorts ||
+        ((port == 1 || port == 2) && !IsSupportedBaud(static_cast<std::uint32_t>(baud))))
+      return false;
     PortSettings& p = current_.ports[port];
     p.in_mask = static_cast<std::uint16_t>(in & 0x07);
     p.out_mask = static_cast<std::uint16_t>(out & 0x03);

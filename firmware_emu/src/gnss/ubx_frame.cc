@@ -18,14 +18,33 @@ int HexDigit(char c) {
 
 }  // namespace
 
-Writer& Writer::U1(std::uint64_t v) { PutLe(bytes_, v, 1); return *this; }
-Writer& Writer::U2(std::uint64_t v) { PutLe(bytes_, v, 2); return *this; }
-Writer& Writer::U4(std::uint64_t v) { PutLe(bytes_, v, 4); return *this; }
-Writer& Writer::I1(std::int64_t v) { PutLe(bytes_, static_cast<std::uint64_t>(v), 1); return *this; }
-Writer& Writer::I2(std::int64_t v) { PutLe(bytes_, static_cast<std::uint64_t>(v), 2); return *this; }
-Writer& Writer::I4(std::int64_t v) { PutLe(bytes_, static_cast<std::uint64_t>(v), 4); return *this; }
+Writer& Writer::U1(std::uint64_t v) {
+  PutLe(bytes_, v, 1);
+  return *this;
+}
+Writer& Writer::U2(std::uint64_t v) {
+  PutLe(bytes_, v, 2);
+  return *this;
+}
+Writer& Writer::U4(std::uint64_t v) {
+  PutLe(bytes_, v, 4);
+  return *this;
+}
+Writer& Writer::I1(std::int64_t v) {
+  PutLe(bytes_, static_cast<std::uint64_t>(v), 1);
+  return *this;
+}
+Writer& Writer::I2(std::int64_t v) {
+  PutLe(bytes_, static_cast<std::uint64_t>(v), 2);
+  return *this;
+}
+Writer& Writer::I4(std::int64_t v) {
+  PutLe(bytes_, static_cast<std::uint64_t>(v), 4);
+  return *this;
+}
 Writer& Writer::Chars(std::string_view text, std::size_t width) {
-  for (std::size_t i = 0; i < width; ++i) bytes_.push_back(i < text.size() ? static_cast<std::uint8_t>(text[i]) : 0);
+  for (std::size_t i = 0; i < width; ++i)
+    bytes_.push_back(i < text.size() ? static_cast<std::uint8_t>(text[i]) : 0);
   return *this;
 }
 Writer& Writer::Zeros(std::size_t n) {
@@ -96,7 +115,8 @@ void InputParser::FeedByte(std::uint8_t b, std::vector<InputMessage>& out) {
     case State::kHeader:
       buf_ += static_cast<char>(b);
       if (buf_.size() == 4) {
-        const std::size_t len = static_cast<std::uint8_t>(buf_[2]) | (static_cast<std::size_t>(static_cast<std::uint8_t>(buf_[3])) << 8);
+        const std::size_t len = static_cast<std::uint8_t>(buf_[2]) |
+                                (static_cast<std::size_t>(static_cast<std::uint8_t>(buf_[3])) << 8);
         if (len > kMaxInputPayload) {
           ++discarded_;
           state_ = State::kIdle;
@@ -112,7 +132,8 @@ void InputParser::FeedByte(std::uint8_t b, std::vector<InputMessage>& out) {
       state_ = State::kIdle;
       const std::string_view body = std::string_view(buf_).substr(0, buf_.size() - 2);
       const auto [ck_a, ck_b] = Checksum(body);
-      if (static_cast<std::uint8_t>(buf_[buf_.size() - 2]) != ck_a || static_cast<std::uint8_t>(buf_.back()) != ck_b) {
+      if (static_cast<std::uint8_t>(buf_[buf_.size() - 2]) != ck_a ||
+          static_cast<std::uint8_t>(buf_.back()) != ck_b) {
         ++discarded_;
         return;
       }

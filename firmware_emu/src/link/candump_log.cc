@@ -132,9 +132,11 @@ std::string FormatCandumpLine(const CandumpRecord& r, int iface_width) {
     --sec;
   }
   char head[64];
-  std::snprintf(head, sizeof head, "(%010lld.%06lld) ", static_cast<long long>(sec), static_cast<long long>(ns / 1000));
+  std::snprintf(head, sizeof head, "(%010lld.%06lld) ", static_cast<long long>(sec),
+                static_cast<long long>(ns / 1000));
   std::string out = head;
-  if (static_cast<int>(r.iface.size()) < iface_width) out.append(static_cast<std::size_t>(iface_width) - r.iface.size(), ' ');
+  if (static_cast<int>(r.iface.size()) < iface_width)
+    out.append(static_cast<std::size_t>(iface_width) - r.iface.size(), ' ');
   out += r.iface;
   out += ' ';
   out += FormatCanFrameText(r.frame);
@@ -146,7 +148,8 @@ std::optional<CandumpRecord> ParseCandumpLine(std::string_view line) {
   if (line.empty() || line.front() != '(') return std::nullopt;
   const std::size_t close = line.find(')');
   const std::size_t dot = line.find('.');
-  if (close == std::string_view::npos || dot == std::string_view::npos || dot > close) return std::nullopt;
+  if (close == std::string_view::npos || dot == std::string_view::npos || dot > close)
+    return std::nullopt;
   CandumpRecord r;
   std::int64_t sec = 0, frac_ns = 0;
   if (dot == 1) return std::nullopt;
@@ -208,8 +211,10 @@ CandumpLog ReadCandumpLog(const std::string& path) {
       ++log.skipped_lines;
       continue;
     }
-    if (auto r = ParseCandumpLine(line)) log.records.push_back(std::move(*r));
-    else ++log.unreadable_lines;
+    if (auto r = ParseCandumpLine(line))
+      log.records.push_back(std::move(*r));
+    else
+      ++log.unreadable_lines;
   }
   return log;
 }

@@ -1,16 +1,17 @@
 #include "hil/firmware_emu/link/pty_port.h"
 
-#include "hil/firmware_emu/link/tty_port.h"
-
 #include <fcntl.h>
 #include <poll.h>
-#include <sys/ioctl.h>
 #include <termios.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
+
+#include <sys/ioctl.h>
+
+#include "hil/firmware_emu/link/tty_port.h"
 
 namespace hil::link {
 namespace {
@@ -23,18 +24,30 @@ std::runtime_error SysError(const std::string& what) {
 
 unsigned BaudToSpeed(int baud) {
   switch (baud) {
-    case 1200: return B1200;
-    case 2400: return B2400;
-    case 4800: return B4800;
-    case 9600: return B9600;
-    case 19200: return B19200;
-    case 38400: return B38400;
-    case 57600: return B57600;
-    case 115200: return B115200;
-    case 230400: return B230400;
-    case 460800: return B460800;
-    case 921600: return B921600;
-    default: return 0;
+    case 1200:
+      return B1200;
+    case 2400:
+      return B2400;
+    case 4800:
+      return B4800;
+    case 9600:
+      return B9600;
+    case 19200:
+      return B19200;
+    case 38400:
+      return B38400;
+    case 57600:
+      return B57600;
+    case 115200:
+      return B115200;
+    case 230400:
+      return B230400;
+    case 460800:
+      return B460800;
+    case 921600:
+      return B921600;
+    default:
+      return 0;
   }
 }
 
@@ -116,7 +129,8 @@ std::string PtyPort::ReadAvailable() {
 std::size_t PtyPort::PendingToHost() const {
   int n = 0;
   if (ioctl(slave_fd_, FIONREAD, &n) != 0) return 0;
-  if (n > 0) return static_cast<std::size_t>(n);  // unread bytes wait: the hand-over does not matter
+  if (n > 0)
+    return static_cast<std::size_t>(n);  // unread bytes wait: the hand-over does not matter
   // poll() on the slave side runs the pending hand-over (flush_to_ldisc) when its line discipline
   // has no input, so bytes in flight show in FIONREAD now instead of looking read
   pollfd p{slave_fd_, POLLIN, 0};

@@ -1,10 +1,11 @@
 #include "hil/firmware_emu/link/realtime_pacer.h"
 
 #include <sched.h>
-#include <sys/prctl.h>
 #include <time.h>
 
 #include <cmath>
+
+#include <sys/prctl.h>
 
 namespace hil::link {
 namespace {
@@ -22,11 +23,13 @@ std::int64_t RealtimePacer::MonotonicNs() {
 }
 
 std::int64_t RealtimePacer::WallNsOf(Time t) const {
-  return wall_start_ns_ + static_cast<std::int64_t>(std::llround(static_cast<double>(ToNs(t)) / speed_));
+  return wall_start_ns_ +
+         static_cast<std::int64_t>(std::llround(static_cast<double>(ToNs(t)) / speed_));
 }
 
 Time RealtimePacer::SimTimeOfWall(std::int64_t wall_ns) const {
-  return TimeFromNs(static_cast<std::int64_t>(std::llround(static_cast<double>(wall_ns - wall_start_ns_) * speed_)));
+  return TimeFromNs(static_cast<std::int64_t>(
+      std::llround(static_cast<double>(wall_ns - wall_start_ns_) * speed_)));
 }
 
 std::int64_t RealtimePacer::SleepUntil(Time t) const {

@@ -1,18 +1,19 @@
 #include "hil/firmware_emu/link/socketcan_port.h"
 
-#include <linux/can.h>
-#include <linux/can/error.h>
-#include <linux/can/raw.h>
-#include <net/if.h>
 #include <poll.h>
-#include <sys/ioctl.h>
-#include <sys/socket.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
+
+#include <linux/can.h>
+#include <linux/can/error.h>
+#include <linux/can/raw.h>
+#include <net/if.h>
+#include <sys/ioctl.h>
+#include <sys/socket.h>
 
 #include "hil/firmware_emu/link/realtime_pacer.h"
 
@@ -45,7 +46,9 @@ CanWireFrame FromKernel(const canfd_frame& k, bool fd) {
   f.error = (k.can_id & CAN_ERR_FLAG) != 0;
   f.extended = (k.can_id & CAN_EFF_FLAG) != 0 || f.error;
   f.rtr = (k.can_id & CAN_RTR_FLAG) != 0;
-  f.id = f.error ? (k.can_id & CAN_ERR_MASK) : f.extended ? (k.can_id & CAN_EFF_MASK) : (k.can_id & CAN_SFF_MASK);
+  f.id = f.error      ? (k.can_id & CAN_ERR_MASK)
+         : f.extended ? (k.can_id & CAN_EFF_MASK)
+                      : (k.can_id & CAN_SFF_MASK);
   f.fd = fd;
   if (fd) f.fd_flags = k.flags & (CANFD_BRS | CANFD_ESI);
   f.len = std::min<std::uint8_t>(k.len, fd ? CANFD_MAX_DLEN : CAN_MAX_DLEN);
@@ -63,7 +66,8 @@ bool SocketCanPort::Available() {
 }
 
 SocketCanPort::SocketCanPort(const std::string& ifname, const Options& options) : ifname_(ifname) {
-  if (ifname.empty() || ifname.size() >= IFNAMSIZ) throw std::runtime_error("bad CAN interface name '" + ifname + "'");
+  if (ifname.empty() || ifname.size() >= IFNAMSIZ)
+    throw std::runtime_error("bad CAN interface name '" + ifname + "'");
   fd_ = socket(PF_CAN, SOCK_RAW | SOCK_CLOEXEC, CAN_RAW);
   if (fd_ < 0) throw SysError("cannot open a CAN socket for " + ifname);
   const auto fail = [&](const std::string& what) {
@@ -83,15 +87,18 @@ SocketCanPort::SocketCanPort(const std::string& ifname, const Options& options) 
   if (options.fd && mtu_ == static_cast<int>(CANFD_MTU)) {
     fd_enabled_ = setsockopt(fd_, SOL_CAN_RAW, CAN_RAW_FD_FRAMES, &on, sizeof on) == 0;
   }
-  if (options.receive_own_frames) setsockopt(fd_, SOL_CAN_RAW, CAN_RAW_RECV_OWN_MSGS, &on, sizeof on);
+  if (options.receive_own_frames)
+    setsockopt(fd_, SOL_CAN_RAW, CAN_RAW_RECV_OWN_MSGS, &on, sizeof on);
   if (!options.loopback) setsockopt(fd_, SOL_CAN_RAW, CAN_RAW_LOOPBACK, &off, sizeof off);
   if (options.error_frames) {
     const can_err_mask_t mask = CAN_ERR_MASK;
     setsockopt(fd_, SOL_CAN_RAW, CAN_RAW_ERR_FILTER, &mask, sizeof mask);
   }
   if (options.receive_buffer_bytes > 0 &&
-      setsockopt(fd_, SOL_SOCKET, SO_RCVBUFFORCE, &options.receive_buffer_bytes, sizeof options.receive_buffer_bytes) < 0) {
-    setsockopt(fd_, SOL_SOCKET, SO_RCVBUF, &options.receive_buffer_bytes, sizeof options.receive_buffer_bytes);
+      setsockopt(fd_, SOL_SOCKET, SO_RCVBUFFORCE, &options.receive_buffer_bytes,
+                 sizeof options.receive_buffer_bytes) < 0) {
+    setsockopt(fd_, SOL_SOCKET, SO_RCVBUF, &options.receive_buffer_bytes,
+               sizeof options.receive_buffer_bytes);
   }
   setsockopt(fd_, SOL_SOCKET, SO_TIMESTAMPNS, &on, sizeof on);
   setsockopt(fd_, SOL_SOCKET, SO_RXQ_OVFL, &on, sizeof on);
@@ -99,7 +106,8 @@ SocketCanPort::SocketCanPort(const std::string& ifname, const Options& options) 
   sockaddr_can addr{};
   addr.can_family = AF_CAN;
   addr.can_ifindex = ifindex;
-  if (bind(fd_, reinterpret_cast<sockaddr*>(&addr), sizeof addr) < 0) throw fail("cannot bind a CAN socket");
+  if (bind(fd_, reinterpret_cast<sockaddr*>(&addr), sizeof addr) < 0)
+    throw fail("cannot bind a CAN socket");
 }
 
 SocketCanPort::~SocketCanPort() {
@@ -126,8 +134,10 @@ std::optional<std::int64_t> SocketCanPort::Send(const CanWireFrame& frame) {
       continue;
     }
     if (n < 0 && errno == EINTR) continue;
-    if (n < 0 && (errno == ENOBUFS || errno == EAGAIN)) ++stats_.send_queue_full;
-    else ++stats_.send_failures;
+    if (n < 0 && (errno == ENOBUFS || errno == EAGAIN))
+      ++stats_.send_queue_full;
+    else
+      ++stats_.send_failures;
     return std::nullopt;
   }
 }
@@ -139,14 +149,16 @@ std::optional<ReceivedCanFrame> SocketCanPort::Receive(Duration timeout) {
 
   canfd_frame k{};
   iovec iov{&k, sizeof k};
-  alignas(cmsghdr) char control[CMSG_SPACE(sizeof(timespec)) + CMSG_SPACE(sizeof(std::uint32_t)) + 64];
+  alignas(
+      cmsghdr) char control[CMSG_SPACE(sizeof(timespec)) + CMSG_SPACE(sizeof(std::uint32_t)) + 64];
   msghdr msg{};
   msg.msg_iov = &iov;
   msg.msg_iovlen = 1;
   msg.msg_control = control;
   msg.msg_controllen = sizeof control;
   const ssize_t n = recvmsg(fd_, &msg, MSG_DONTWAIT);
-  if (n != static_cast<ssize_t>(CAN_MTU) && n != static_cast<ssize_t>(CANFD_MTU)) return std::nullopt;
+  if (n != static_cast<ssize_t>(CAN_MTU) && n != static_cast<ssize_t>(CANFD_MTU))
+    return std::nullopt;
 
   ReceivedCanFrame r;
   r.t_read_mono_ns = RealtimePacer::MonotonicNs();
@@ -166,8 +178,10 @@ std::optional<ReceivedCanFrame> SocketCanPort::Receive(Duration timeout) {
       last_drop_count_ = drops;
     }
   }
-  if (r.frame.error) CountErrorFrame(r.frame);
-  else ++stats_.frames_received;
+  if (r.frame.error)
+    CountErrorFrame(r.frame);
+  else
+    ++stats_.frames_received;
   return r;
 }
 
@@ -175,7 +189,8 @@ void SocketCanPort::CountErrorFrame(const CanWireFrame& f) {
   ++stats_.error_frames;
   if (f.id & CAN_ERR_BUSOFF) ++stats_.bus_off;
   if (f.id & (CAN_ERR_PROT | CAN_ERR_BUSERROR | CAN_ERR_ACK | CAN_ERR_TRX)) ++stats_.bus_errors;
-  if ((f.id & CAN_ERR_CRTL) && f.len > 1 && (f.data[1] & (CAN_ERR_CRTL_RX_OVERFLOW | CAN_ERR_CRTL_TX_OVERFLOW))) {
+  if ((f.id & CAN_ERR_CRTL) && f.len > 1 &&
+      (f.data[1] & (CAN_ERR_CRTL_RX_OVERFLOW | CAN_ERR_CRTL_TX_OVERFLOW))) {
     ++stats_.controller_overflows;
   }
 }

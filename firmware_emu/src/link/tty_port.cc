@@ -2,13 +2,14 @@
 
 #include <fcntl.h>
 #include <poll.h>
-#include <sys/ioctl.h>
 #include <termios.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
+
+#include <sys/ioctl.h>
 
 #include "hil/firmware_emu/link/pty_port.h"
 
@@ -31,13 +32,16 @@ bool SetRaw8N1(int fd, int baud) {
 
 bool IsDevicePath(const std::string& link) { return link.rfind("/dev/", 0) == 0; }
 
-std::unique_ptr<SerialPort> OpenSerialLink(const std::string& run_dir, const std::string& link, int baud) {
+std::unique_ptr<SerialPort> OpenSerialLink(const std::string& run_dir, const std::string& link,
+                                           int baud) {
   if (IsDevicePath(link)) return std::make_unique<TtyPort>(link, baud);
   return std::make_unique<PtyPort>(run_dir + "/" + link, baud);
 }
 
 TtyPort::TtyPort(const std::string& device_path, int baud) : path_(device_path), baud_(baud) {
-  if (!Open()) throw std::runtime_error("cannot open the serial device " + path_ + ": " + std::strerror(errno));
+  if (!Open())
+    throw std::runtime_error("cannot open the serial device " + path_ + ": " +
+                             std::strerror(errno));
 }
 
 TtyPort::~TtyPort() {

@@ -12,7 +12,8 @@ UartTxQueue::UartTxQueue(int baud, std::size_t buffer_bytes, int bits_per_byte)
 }
 
 void UartTxQueue::set_baud(int baud) {
-  if (baud <= 0) throw std::invalid_argument("UART baud must be positive, got " + std::to_string(baud));
+  if (baud <= 0)
+    throw std::invalid_argument("UART baud must be positive, got " + std::to_string(baud));
   baud_ = baud;
   // 1e9 * bits / baud, rounded to the nanosecond
   byte_period_ = Duration{(1000000000LL * bits_per_byte_ + baud / 2) / baud};

@@ -8,7 +8,7 @@ namespace hil::mcu {
 namespace {
 
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
-constexpr std::uint32_t kMax16 = 0xFAFF;      // highest valid value of a 16-bit J1939 parameter
+constexpr std::uint32_t kMax16 = 0xFAFF;  // highest valid value of a 16-bit J1939 parameter
 constexpr std::uint32_t kMax24 = 0xFAFFFF;
 
 std::uint32_t Raw(double value, double resolution, double offset, std::uint32_t max_raw) {
@@ -40,17 +40,19 @@ CanFrame Base(Time t, const J1939Address& a, std::uint32_t pgn) {
 }
 
 std::uint8_t FomByte(const FiguresOfMerit& fom) {
-  return static_cast<std::uint8_t>((fom[0] & 3) | ((fom[1] & 3) << 2) | ((fom[2] & 3) << 4) | (3 << 6));
+  return static_cast<std::uint8_t>((fom[0] & 3) | ((fom[1] & 3) << 2) | ((fom[2] & 3) << 4) |
+                                   (3 << 6));
 }
 
 }  // namespace
 
 std::uint32_t J1939Id(const J1939Address& a, std::uint32_t pgn) {
-  return (static_cast<std::uint32_t>(a.priority & 7) << 26) | ((pgn & 0x3FFFF) << 8) | a.source_address;
+  return (static_cast<std::uint32_t>(a.priority & 7) << 26) | ((pgn & 0x3FFFF) << 8) |
+         a.source_address;
 }
 
-CanFrame EncodeAri(Time t, const J1939Address& a, const Eigen::Vector3d& w_I_radps, const FiguresOfMerit& fom,
-                   double latency_s) {
+CanFrame EncodeAri(Time t, const J1939Address& a, const Eigen::Vector3d& w_I_radps,
+                   const FiguresOfMerit& fom, double latency_s) {
   CanFrame f = Base(t, a, kPgnAri);
   const double res = 1.0 / 128.0, off = -250.0;
   Put16(f, 0, Raw(-w_I_radps.y() * kRadToDeg, res, off, kMax16));
@@ -61,8 +63,8 @@ CanFrame EncodeAri(Time t, const J1939Address& a, const Eigen::Vector3d& w_I_rad
   return f;
 }
 
-CanFrame EncodeAccs(Time t, const J1939Address& a, const Eigen::Vector3d& f_I_mps2, const FiguresOfMerit& fom,
-                    double latency_s) {
+CanFrame EncodeAccs(Time t, const J1939Address& a, const Eigen::Vector3d& f_I_mps2,
+                    const FiguresOfMerit& fom, double latency_s) {
   CanFrame f = Base(t, a, kPgnAccs);
   const double res = 0.01, off = -320.0;
   Put16(f, 0, Raw(f_I_mps2.y(), res, off, kMax16));
@@ -79,8 +81,8 @@ Eigen::Vector2d PitchRollDegFromSpecificForce(const Eigen::Vector3d& f) {
   return {pitch * kRadToDeg, roll * kRadToDeg};
 }
 
-CanFrame EncodeSsi2(Time t, const J1939Address& a, const Eigen::Vector3d& f_I_mps2, std::uint8_t pitch_fom,
-                    std::uint8_t roll_fom, double latency_s) {
+CanFrame EncodeSsi2(Time t, const J1939Address& a, const Eigen::Vector3d& f_I_mps2,
+                    std::uint8_t pitch_fom, std::uint8_t roll_fom, double latency_s) {
   CanFrame f = Base(t, a, kPgnSsi2);
   const Eigen::Vector2d pr = PitchRollDegFromSpecificForce(f_I_mps2);
   const double res = 1.0 / 32768.0, off = -250.0;
@@ -93,8 +95,8 @@ CanFrame EncodeSsi2(Time t, const J1939Address& a, const Eigen::Vector3d& f_I_mp
   return f;
 }
 
-CanFrame EncodeHilTimePulse(Time t, const J1939Address& a, std::uint32_t tick, bool valid, std::uint32_t tow_s,
-                            int gps_week) {
+CanFrame EncodeHilTimePulse(Time t, const J1939Address& a, std::uint32_t tick, bool valid,
+                            std::uint32_t tow_s, int gps_week) {
   CanFrame f = Base(t, a, kPgnHilTimePulse);
   for (int i = 0; i < 4; ++i) f.data[i] = static_cast<std::uint8_t>((tick >> (8 * i)) & 0xFF);
   const std::uint64_t tow = valid ? (tow_s & 0xFFFFFu) : 0xFFFFFu;

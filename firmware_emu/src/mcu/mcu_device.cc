@@ -26,8 +26,10 @@ std::uint64_t DeriveSeed(std::uint64_t seed, std::uint64_t stream) {
 }
 
 const McuConfig& Validated(const McuConfig& c) {
-  if (!(c.imu_rate_hz > 0 && c.imu_rate_hz <= 10000)) throw std::invalid_argument("mcu: imu_rate_hz must be in (0, 10000]");
-  if (!(c.mag_rate_hz > 0 && c.mag_rate_hz <= 1000)) throw std::invalid_argument("mcu: mag_rate_hz must be in (0, 1000]");
+  if (!(c.imu_rate_hz > 0 && c.imu_rate_hz <= 10000))
+    throw std::invalid_argument("mcu: imu_rate_hz must be in (0, 10000]");
+  if (!(c.mag_rate_hz > 0 && c.mag_rate_hz <= 1000))
+    throw std::invalid_argument("mcu: mag_rate_hz must be in (0, 1000]");
   if (std::abs(c.crystal_ppm) > 10000) throw std::invalid_argument("mcu: crystal_ppm out of range");
   if (c.baud <= 0) throw std::invalid_argument("mcu: baud must be positive");
   if (c.can.ari_every < 1 || c.can.accs_every < 1 || c.can.ssi2_every < 1)
@@ -51,7 +53,8 @@ Eigen::Vector3d Engineering(const TriadCounts& c, double lsb) {
 }
 
 FiguresOfMerit Fom(const TriadCounts& c) {
-  return {static_cast<std::uint8_t>(c.saturated[0] ? 1 : 0), static_cast<std::uint8_t>(c.saturated[1] ? 1 : 0),
+  return {static_cast<std::uint8_t>(c.saturated[0] ? 1 : 0),
+          static_cast<std::uint8_t>(c.saturated[1] ? 1 : 0),
           static_cast<std::uint8_t>(c.saturated[2] ? 1 : 0)};
 }
 
@@ -61,12 +64,14 @@ McuDevice::McuDevice(const McuConfig& config, std::uint64_t seed)
     : config_(Validated(config)),
       timing_rng_(DeriveSeed(seed, 0)),
       fault_rng_(DeriveSeed(seed, 1)),
-      accel_(config.profile.accel, std::round(1e6 / config.imu_rate_hz) * 1e-6, DeriveSeed(seed, 2)),
+      accel_(config.profile.accel, std::round(1e6 / config.imu_rate_hz) * 1e-6,
+             DeriveSeed(seed, 2)),
       gyro_(GyroSpecFor(config), std::round(1e6 / config.imu_rate_hz) * 1e-6, DeriveSeed(seed, 3)),
       mag_(config.profile.mag, 1.0 / config.mag_rate_hz, DeriveSeed(seed, 4)),
       tick_hz_(kNominalTickHz * (1.0 + config.crystal_ppm * 1e-6)),
       imu_period_ticks_(static_cast<std::uint32_t>(std::lround(1e6 / config.imu_rate_hz))),
-      mag_period_(DurationFromSeconds(1.0 / (config.mag_rate_hz * (1.0 + config.mag_oscillator_ppm * 1e-6)))) {
+      mag_period_(DurationFromSeconds(
+          1.0 / (config.mag_rate_hz * (1.0 + config.mag_oscillator_ppm * 1e-6)))) {
   accel_.SetVibration(config_.vibration, true);
   gyro_.SetVibration(config_.vibration, false);
   for (const McuFault& f : config_.faults)
@@ -115,7 +120,8 @@ void McuDevice::ScheduleImu() {
   const double first_ticks = std::round(config_.first_sample_delay_s * 1e6);
   const double tick = first_ticks + static_cast<double>(imu_index_) * imu_period_ticks_;
   const auto offset_ns = static_cast<std::int64_t>(std::llround(tick * 1e9 / tick_hz_));
-  const auto jitter_ns = static_cast<std::int64_t>(std::llround(timing_rng_.Uniform() * config_.jitter_us * 1e3));
+  const auto jitter_ns =
+      static_cast<std::int64_t>(std::llround(timing_rng_.Uniform() * config_.jitter_us * 1e3));
   next_imu_ = boot_ + Duration{offset_ns + jitter_ns};
 }
 
@@ -157,7 +163,8 @@ void McuDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
 std::uint16_t McuDevice::NextSequence(Time t) {
   for (std::size_t i = 0; i < config_.faults.size(); ++i) {
     const McuFault& f = config_.faults[i];
-    if (f.kind == FaultKind::kSequenceJump && !jump_applied_[i] && TimeFromSeconds(f.start_s) <= t) {
+    if (f.kind == FaultKind::kSequenceJump && !jump_applied_[i] &&
+        TimeFromSeconds(f.start_s) <= t) {
       sequence_ = static_cast<std::uint16_t>(sequence_ + f.amount);
       jump_applied_[i] = true;
     }
@@ -192,14 +199,17 @@ void McuDevice::SendSerial(Time t_sample, std::string bytes, const char* what, D
     ++stats_.frames_dropped;
     return;
   }
-  if (ActiveFault(FaultKind::kCorruptBytes, t_sample, &f) && fault_rng_.Uniform() < f->probability &&
-      !bytes.empty()) {
-    const auto pos = static_cast<std::size_t>(fault_rng_.Uniform() * static_cast<double>(bytes.size()));
-    const auto flip = static_cast<unsigned char>(1 + static_cast<int>(fault_rng_.Uniform() * 255.0));
+  if (ActiveFault(FaultKind::kCorruptBytes, t_sample, &f) &&
+      fault_rng_.Uniform() < f->probability && !bytes.empty()) {
+    const auto pos =
+        static_cast<std::size_t>(fault_rng_.Uniform() * static_cast<double>(bytes.size()));
+    const auto flip =
+        static_cast<unsigned char>(1 + static_cast<int>(fault_rng_.Uniform() * 255.0));
     bytes[pos] = static_cast<char>(static_cast<unsigned char>(bytes[pos]) ^ flip);
     ++stats_.frames_corrupted;
   }
-  out.serial.push_back({t_sample + DurationFromSeconds(config_.output_latency_s), 0, std::move(bytes), what});
+  out.serial.push_back(
+      {t_sample + DurationFromSeconds(config_.output_latency_s), 0, std::move(bytes), what});
 }
 
 void McuDevice::OnImuSample(const TruthSample& truth, DeviceOutput& out) {
@@ -226,8 +236,11 @@ void McuDevice::OnImuSample(const TruthSample& truth, DeviceOutput& out) {
     }
     case SerialFormat::kRazorRaw:
     case SerialFormat::kRazorV19: {
-      const auto fmt = config_.format == SerialFormat::kRazorRaw ? RazorTextFormat::kRaw : RazorTextFormat::kV19;
-      SendSerial(t, EncodeRazorLine(fmt, Ints(a), Ints(g, gyro_.spec().counts.nominal_zero_count), Ints(last_mag_)),
+      const auto fmt =
+          config_.format == SerialFormat::kRazorRaw ? RazorTextFormat::kRaw : RazorTextFormat::kV19;
+      SendSerial(t,
+                 EncodeRazorLine(fmt, Ints(a), Ints(g, gyro_.spec().counts.nominal_zero_count),
+                                 Ints(last_mag_)),
                  "RAZOR-TEXT", out);
       break;
     }
@@ -276,8 +289,9 @@ void McuDevice::OnTimePulse(Time t, DeviceOutput& out) {
     SendStatus(t, out);
   }
   if (config_.can.enabled && config_.can.time_pulse) {
-    out.can.push_back(EncodeHilTimePulse(t + DurationFromSeconds(config_.can.latency_s), config_.can.address, latched,
-                                         true, static_cast<std::uint32_t>(tow_s), g.week));
+    out.can.push_back(EncodeHilTimePulse(t + DurationFromSeconds(config_.can.latency_s),
+                                         config_.can.address, latched, true,
+                                         static_cast<std::uint32_t>(tow_s), g.week));
   }
 }
 

@@ -12,7 +12,9 @@ void PutU16(std::vector<std::uint8_t>& b, std::uint16_t v) {
   b.push_back(static_cast<std::uint8_t>(v & 0xFF));
   b.push_back(static_cast<std::uint8_t>(v >> 8));
 }
-void PutI16(std::vector<std::uint8_t>& b, std::int16_t v) { PutU16(b, static_cast<std::uint16_t>(v)); }
+void PutI16(std::vector<std::uint8_t>& b, std::int16_t v) {
+  PutU16(b, static_cast<std::uint16_t>(v));
+}
 void PutU32(std::vector<std::uint8_t>& b, std::uint32_t v) {
   for (int i = 0; i < 4; ++i) b.push_back(static_cast<std::uint8_t>((v >> (8 * i)) & 0xFF));
 }
@@ -25,7 +27,8 @@ std::uint16_t Crc16CcittFalse(std::span<const std::uint8_t> bytes) {
   for (std::uint8_t byte : bytes) {
     crc = static_cast<std::uint16_t>(crc ^ (byte << 8));
     for (int k = 0; k < 8; ++k)
-      crc = (crc & 0x8000) ? static_cast<std::uint16_t>((crc << 1) ^ 0x1021) : static_cast<std::uint16_t>(crc << 1);
+      crc = (crc & 0x8000) ? static_cast<std::uint16_t>((crc << 1) ^ 0x1021)
+                           : static_cast<std::uint16_t>(crc << 1);
   }
   return crc;
 }
@@ -64,7 +67,8 @@ std::string EncodeMagSample(std::uint16_t sequence, std::uint32_t tick, const Ma
   return EncodeFrame(MessageType::kMagSample, sequence, tick, b);
 }
 
-std::string EncodeTimePulse(std::uint16_t sequence, std::uint32_t latched_tick, const TimePulsePayload& p) {
+std::string EncodeTimePulse(std::uint16_t sequence, std::uint32_t latched_tick,
+                            const TimePulsePayload& p) {
   std::vector<std::uint8_t> b;
   PutU16(b, p.gps_week);
   PutU32(b, p.tow_ms);

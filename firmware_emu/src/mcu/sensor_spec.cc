@@ -169,7 +169,8 @@ ImuProfile Tactical() {  // HG1700 / ADIS16488 class
 }  // namespace
 
 const std::vector<std::string>& ProfileNames() {
-  static const std::vector<std::string> names{"razor-v13", "consumer-mems", "industrial-mems", "tactical"};
+  static const std::vector<std::string> names{"razor-v13", "consumer-mems", "industrial-mems",
+                                              "tactical"};
   return names;
 }
 

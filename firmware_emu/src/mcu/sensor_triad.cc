@@ -19,7 +19,8 @@ constexpr double kReferenceTemperature_c = 25.0;
 SensorTriad::SensorTriad(const TriadSpec& spec, double sample_period_s, std::uint64_t seed)
     : spec_(spec), period_s_(sample_period_s), rng_(seed) {
   if (!(sample_period_s > 0)) throw std::invalid_argument("SensorTriad: sample period must be > 0");
-  if (spec.counts.oversample < 1) throw std::invalid_argument("SensorTriad: oversample must be >= 1");
+  if (spec.counts.oversample < 1)
+    throw std::invalid_argument("SensorTriad: oversample must be >= 1");
   const TriadErrorSpec& e = spec_.error;
   // power-on draws: scale factor, misalignment, turn-on bias (in this order, fixed by the seed)
   for (int i = 0; i < 3; ++i) {
@@ -40,7 +41,8 @@ SensorTriad::SensorTriad(const TriadSpec& spec, double sample_period_s, std::uin
   if (spec_.sampling == Sampling::kAverage) {
     white_sigma_scale_ = 1.0 / std::sqrt(period_s_);
   } else {
-    const double noise_bw_hz = e.bandwidth_hz > 0 ? std::numbers::pi / 2.0 * e.bandwidth_hz : 0.5 / period_s_;
+    const double noise_bw_hz =
+        e.bandwidth_hz > 0 ? std::numbers::pi / 2.0 * e.bandwidth_hz : 0.5 / period_s_;
     white_sigma_scale_ = std::sqrt(noise_bw_hz);
   }
 }
@@ -73,8 +75,9 @@ Eigen::Vector3d SensorTriad::VibrationAt(double t_s) const {
       if (spec_.sampling == Sampling::kAverage) {
         // exact mean of sin(ωt + φ) over [t − T, t]
         const double w = tone.omega_radps;
-        v = w > 0 ? (std::cos(w * (t_s - period_s_) + ph) - std::cos(w * t_s + ph)) / (w * period_s_)
-                  : std::sin(ph);
+        v = w > 0
+                ? (std::cos(w * (t_s - period_s_) + ph) - std::cos(w * t_s + ph)) / (w * period_s_)
+                : std::sin(ph);
       } else {
         v = std::sin(tone.omega_radps * t_s + ph);
       }
@@ -84,7 +87,8 @@ Eigen::Vector3d SensorTriad::VibrationAt(double t_s) const {
   return sum;
 }
 
-Eigen::Vector3d SensorTriad::Measure(const Eigen::Vector3d& true_I, double t_s, double temperature_c) {
+Eigen::Vector3d SensorTriad::Measure(const Eigen::Vector3d& true_I, double t_s,
+                                     double temperature_c) {
   const TriadErrorSpec& e = spec_.error;
   // band-limit the motion (exact first-order response to a held input)
   if (first_ || e.bandwidth_hz <= 0) {
@@ -97,13 +101,15 @@ Eigen::Vector3d SensorTriad::Measure(const Eigen::Vector3d& true_I, double t_s, 
   if (!first_) {
     for (int i = 0; i < 3; ++i) {
       if (gm_drive_ > 0) gm_bias_[i] = gm_phi_ * gm_bias_[i] + gm_drive_ * rng_.Normal();
-      if (e.bias_random_walk > 0) rw_bias_[i] += e.bias_random_walk * std::sqrt(period_s_) * rng_.Normal();
+      if (e.bias_random_walk > 0)
+        rw_bias_[i] += e.bias_random_walk * std::sqrt(period_s_) * rng_.Normal();
     }
   }
   first_ = false;
   Eigen::Vector3d value = scale_misalignment_ * (filtered_ + VibrationAt(t_s));
   value += turn_on_bias_ + gm_bias_ + rw_bias_;
-  value += Eigen::Vector3d::Constant(e.bias_temperature_coeff_per_c * (temperature_c - kReferenceTemperature_c));
+  value += Eigen::Vector3d::Constant(e.bias_temperature_coeff_per_c *
+                                     (temperature_c - kReferenceTemperature_c));
   for (int i = 0; i < 3; ++i) value[i] += e.noise_density[i] * white_sigma_scale_ * rng_.Normal();
   return value;
 }
@@ -124,7 +130,8 @@ TriadCounts SensorTriad::Quantise(const Eigen::Vector3d& value) {
     }
     long sum = 0;
     for (int k = 0; k < c.oversample; ++k) {
-      const double noisy = c.conversion_noise_counts > 0 ? x + c.conversion_noise_counts * rng_.Normal() : x;
+      const double noisy =
+          c.conversion_noise_counts > 0 ? x + c.conversion_noise_counts * rng_.Normal() : x;
       long q = std::lround(noisy);
       if (q > c.count_max) q = c.count_max, sat = true;
       if (q < c.count_min) q = c.count_min, sat = true;

@@ -9,14 +9,20 @@
 
 namespace hil::harness {
 
-EstimateCollector::EstimateCollector(std::unique_ptr<EstimateReader> reader, EstimatorProcess* process,
-                                     link::PtyPort* nav_pty, const std::string& raw_path)
-    : reader_(std::move(reader)), process_(process), nav_pty_(nav_pty), raw_(raw_path), raw_path_(raw_path) {
+EstimateCollector::EstimateCollector(std::unique_ptr<EstimateReader> reader,
+                                     EstimatorProcess* process, link::PtyPort* nav_pty,
+                                     const std::string& raw_path)
+    : reader_(std::move(reader)),
+      process_(process),
+      nav_pty_(nav_pty),
+      raw_(raw_path),
+      raw_path_(raw_path) {
   // JSON solutions on stdout: decoded on the process's reader thread (pty output is not its)
   if (process_ && !nav_pty_ && reader_->reads_json()) process_->set_parse_json(true);
 }
 
-void EstimateCollector::Consume(const std::string& line, std::int64_t wall_ns, const nlohmann::json* parsed) {
+void EstimateCollector::Consume(const std::string& line, std::int64_t wall_ns,
+                                const nlohmann::json* parsed) {
   raw_ << line << "\n";
   raw_.flush();  // everything captured so far survives an interrupted run
   if (!raw_) NoteWriteFailure(raw_path_);
@@ -24,7 +30,8 @@ void EstimateCollector::Consume(const std::string& line, std::int64_t wall_ns, c
   std::optional<EstimateRecord> r;
   if (json_observer_ && reader_->reads_json()) {
     // parsed once for both, on the process's reader thread when it could
-    const nlohmann::json j = parsed ? nlohmann::json() : nlohmann::json::parse(line, nullptr, false);
+    const nlohmann::json j =
+        parsed ? nlohmann::json() : nlohmann::json::parse(line, nullptr, false);
     const nlohmann::json& doc = parsed ? *parsed : j;
     json_observer_(doc);
     r = reader_->JsonLine(doc, wall_ns);
@@ -32,11 +39,14 @@ void EstimateCollector::Consume(const std::string& line, std::int64_t wall_ns, c
     if (observer_) observer_(line);
     r = reader_->Line(line, wall_ns);
   }
-  if (r) records_.push_back(*r);
-  else if (reader_->SolutionsInLines()) ++unparsed_;
+  if (r)
+    records_.push_back(*r);
+  else if (reader_->SolutionsInLines())
+    ++unparsed_;
 }
 
-void EstimateCollector::AttachBus(std::function<const std::vector<CanFrame>&()> poll_bus, std::int64_t start_unix_ns) {
+void EstimateCollector::AttachBus(std::function<const std::vector<CanFrame>&()> poll_bus,
+                                  std::int64_t start_unix_ns) {
   poll_bus_ = std::move(poll_bus);
   bus_reader_ = std::make_unique<N2kBusReader>(start_unix_ns);
 }
@@ -53,15 +63,18 @@ void EstimateCollector::Poll() {
       const CanFrame& f = frames[bus_seen_];
       if (!f.extended) continue;
       bus_last_ns_ = now;
-      const std::string_view data(reinterpret_cast<const char*>(f.data.data()), std::min<std::size_t>(f.len, 8));
+      const std::string_view data(reinterpret_cast<const char*>(f.data.data()),
+                                  std::min<std::size_t>(f.len, 8));
       if (auto r = bus_reader_->Frame(f.id, data, now)) records_.push_back(*r);
     }
   }
   if (process_) {
     for (const OutputLine& l : process_->TakeLines()) {
       // with a pty output, stdout is only kept (diagnostics), never parsed as solutions
-      if (nav_pty_) raw_ << "# stdout: " << l.text << "\n";
-      else Consume(l.text, l.wall_ns, l.json.get());
+      if (nav_pty_)
+        raw_ << "# stdout: " << l.text << "\n";
+      else
+        Consume(l.text, l.wall_ns, l.json.get());
     }
   }
   if (nav_pty_) {

@@ -2,8 +2,9 @@
 
 #include <cmath>
 #include <map>
-#include <nlohmann/json.hpp>
 #include <stdexcept>
+
+#include <nlohmann/json.hpp>
 
 #include "hil/firmware_emu/gnss/gps_time.h"
 #include "hil/harness/dut/n2k_bus_reader.h"
@@ -17,7 +18,8 @@ constexpr std::int64_t kDayNs = 86400LL * 1000000000LL;
 
 Time FromUnixSeconds(double unix_s, std::int64_t start_unix_ns) {
   const auto sec = static_cast<std::int64_t>(std::floor(unix_s));
-  const auto ns = static_cast<std::int64_t>(std::llround((unix_s - static_cast<double>(sec)) * 1e6)) * 1000;
+  const auto ns =
+      static_cast<std::int64_t>(std::llround((unix_s - static_cast<double>(sec)) * 1e6)) * 1000;
   return TimeFromNs(sec * 1000000000LL + ns - start_unix_ns);
 }
 
@@ -45,7 +47,8 @@ class JsonLinesReader final : public EstimateReader {
     r.t_validity = FromUnixSeconds(j["tov_utc_s"].get<double>(), start_);
     r.lat_deg = j["lat_deg"].get<double>();
     r.lon_deg = j["lon_deg"].get<double>();
-    if (j.contains("height_m") && j["height_m"].is_number()) r.height_m = j["height_m"].get<double>();
+    if (j.contains("height_m") && j["height_m"].is_number())
+      r.height_m = j["height_m"].get<double>();
     r.vel_enu_mps = Vec3(j, "vel_enu_mps");
     r.pos_std_enu_m = Vec3(j, "pos_std_enu_m");
     if (j.contains("yaw_deg") && j["yaw_deg"].is_number()) r.yaw_deg = j["yaw_deg"].get<double>();
@@ -66,7 +69,8 @@ class GpsdJsonReader final : public EstimateReader {
   bool reads_json() const override { return true; }
   std::optional<EstimateRecord> JsonLine(const nlohmann::json& j, std::int64_t wall_ns) override {
     if (j.is_discarded() || !j.is_object() || j.value("class", "") != "TPV") return std::nullopt;
-    if (!j.contains("time") || !j["time"].is_string() || !j.contains("lat") || !j.contains("lon")) return std::nullopt;
+    if (!j.contains("time") || !j["time"].is_string() || !j.contains("lat") || !j.contains("lon"))
+      return std::nullopt;
     if (j.value("mode", 0) < 2) return std::nullopt;
     EstimateRecord r;
     try {
@@ -76,20 +80,25 @@ class GpsdJsonReader final : public EstimateReader {
     }
     r.lat_deg = j["lat"].get<double>();
     r.lon_deg = j["lon"].get<double>();
-    if (j.contains("altHAE") && j["altHAE"].is_number()) r.height_m = j["altHAE"].get<double>();
-    else if (j.contains("alt") && j["alt"].is_number()) r.height_m = j["alt"].get<double>();
+    if (j.contains("altHAE") && j["altHAE"].is_number())
+      r.height_m = j["altHAE"].get<double>();
+    else if (j.contains("alt") && j["alt"].is_number())
+      r.height_m = j["alt"].get<double>();
     if (j.contains("track") && j["track"].is_number()) {
       r.yaw_deg = j["track"].get<double>();
       if (j.contains("speed") && j["speed"].is_number()) {
         const double v = j["speed"].get<double>(), psi = *r.yaw_deg * M_PI / 180.0;
-        const double climb = j.contains("climb") && j["climb"].is_number() ? j["climb"].get<double>() : 0.0;
+        const double climb =
+            j.contains("climb") && j["climb"].is_number() ? j["climb"].get<double>() : 0.0;
         r.vel_enu_mps = Eigen::Vector3d(v * std::sin(psi), v * std::cos(psi), climb);
       }
     }
-    if (j.contains("epx") && j.contains("epy") && j.contains("epv") && j["epx"].is_number() && j["epy"].is_number() &&
-        j["epv"].is_number()) {
+    if (j.contains("epx") && j.contains("epy") && j.contains("epv") && j["epx"].is_number() &&
+        j["epy"].is_number() && j["epv"].is_number()) {
       // gpsd's epx/epy/epv are 95 % confidence half-widths; 1-sigma ≈ value / 1.96
-      r.pos_std_enu_m = Eigen::Vector3d(j["epx"].get<double>(), j["epy"].get<double>(), j["epv"].get<double>()) / 1.96;
+      r.pos_std_enu_m =
+          Eigen::Vector3d(j["epx"].get<double>(), j["epy"].get<double>(), j["epv"].get<double>()) /
+          1.96;
     }
     r.wall_rx_ns = wall_ns;
     return r;
@@ -132,9 +141,11 @@ class NmeaReader final : public EstimateReader {
     const double msl = std::atof(f[8].c_str());
     const double sep = f.size() > 10 ? std::atof(f[10].c_str()) : 0.0;
     r.height_m = msl + sep;
-    if (last_rmc_tod_ && std::abs(*last_rmc_tod_ - *tod) < 1e-3 && rmc_speed_mps_ && rmc_course_deg_) {
+    if (last_rmc_tod_ && std::abs(*last_rmc_tod_ - *tod) < 1e-3 && rmc_speed_mps_ &&
+        rmc_course_deg_) {
       const double psi = *rmc_course_deg_ * M_PI / 180.0;
-      r.vel_enu_mps = Eigen::Vector3d(*rmc_speed_mps_ * std::sin(psi), *rmc_speed_mps_ * std::cos(psi), 0.0);
+      r.vel_enu_mps =
+          Eigen::Vector3d(*rmc_speed_mps_ * std::sin(psi), *rmc_speed_mps_ * std::cos(psi), 0.0);
       r.yaw_deg = *rmc_course_deg_;
     }
     r.wall_rx_ns = wall_ns;
@@ -153,14 +164,16 @@ class N2kCandumpReader final : public EstimateReader {
   std::optional<EstimateRecord> Line(const std::string& text, std::int64_t wall_ns) override {
     const std::size_t hash = text.find('#');
     const std::size_t sp = text.rfind(' ', hash);
-    if (hash == std::string::npos || sp == std::string::npos || hash - sp - 1 != 8) return std::nullopt;
+    if (hash == std::string::npos || sp == std::string::npos || hash - sp - 1 != 8)
+      return std::nullopt;
     std::uint32_t id = 0;
     std::string data;
     try {
       id = static_cast<std::uint32_t>(std::stoul(text.substr(sp + 1, 8), nullptr, 16));
       const std::string hex = text.substr(hash + 1);
       if (hex.size() % 2 != 0 || hex.empty()) return std::nullopt;
-      for (std::size_t i = 0; i < hex.size(); i += 2) data += static_cast<char>(std::stoi(hex.substr(i, 2), nullptr, 16));
+      for (std::size_t i = 0; i < hex.size(); i += 2)
+        data += static_cast<char>(std::stoi(hex.substr(i, 2), nullptr, 16));
     } catch (const std::exception&) {
       return std::nullopt;
     }
@@ -171,20 +184,24 @@ class N2kCandumpReader final : public EstimateReader {
   N2kBusReader bus_;
 };
 
-// n2k_socketcan: the solutions come from the bus (EstimateCollector::AttachBus); stdout lines (navd's
-// JSON with its health object) are diagnostics only.
+// n2k_socketcan: the solutions come from the bus (EstimateCollector::AttachBus); stdout lines
+// (navd's JSON with its health object) are diagnostics only.
 class NoLinesReader final : public EstimateReader {
  public:
-  std::optional<EstimateRecord> Line(const std::string&, std::int64_t) override { return std::nullopt; }
+  std::optional<EstimateRecord> Line(const std::string&, std::int64_t) override {
+    return std::nullopt;
+  }
   bool SolutionsInLines() const override { return false; }
 };
 
 }  // namespace
 
-std::unique_ptr<EstimateReader> MakeEstimateReader(const std::string& output, std::int64_t start_unix_ns) {
+std::unique_ptr<EstimateReader> MakeEstimateReader(const std::string& output,
+                                                   std::int64_t start_unix_ns) {
   if (output == "json_stdout") return std::make_unique<JsonLinesReader>(start_unix_ns);
   if (output == "gpsd_json") return std::make_unique<GpsdJsonReader>(start_unix_ns);
-  if (output == "nmea_stdout" || output == "nmea_pty") return std::make_unique<NmeaReader>(start_unix_ns);
+  if (output == "nmea_stdout" || output == "nmea_pty")
+    return std::make_unique<NmeaReader>(start_unix_ns);
   if (output == "n2k_candump") return std::make_unique<N2kCandumpReader>(start_unix_ns);
   if (output == "n2k_socketcan") return std::make_unique<NoLinesReader>();
   throw std::invalid_argument("unknown estimator output format '" + output + "'");

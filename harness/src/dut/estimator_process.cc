@@ -2,7 +2,6 @@
 
 #include <fcntl.h>
 #include <signal.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -10,6 +9,7 @@
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
+#include <sys/wait.h>
 
 #include "hil/firmware_emu/link/realtime_pacer.h"
 #include "hil/harness/dut/process_group.h"
@@ -17,18 +17,22 @@
 namespace hil::harness {
 namespace {
 
-constexpr std::int64_t kStdoutEndWaitNs = 200'000'000;  // longest wait for the stdout pipe's end after Stop
+constexpr std::int64_t kStdoutEndWaitNs =
+    200'000'000;  // longest wait for the stdout pipe's end after Stop
 
 }  // namespace
 
 std::string ExitInfo::Describe() const {
-  if (signal != 0) return std::string("ended by signal ") + std::to_string(signal) + " (" + strsignal(signal) + ")";
+  if (signal != 0)
+    return std::string("ended by signal ") + std::to_string(signal) + " (" + strsignal(signal) +
+           ")";
   return "exited with code " + std::to_string(exit_code);
 }
 
 EstimatorProcess::EstimatorProcess(const std::string& command, const std::string& stderr_path) {
   int fds[2];
-  if (pipe2(fds, O_CLOEXEC) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
+  if (pipe2(fds, O_CLOEXEC) != 0)
+    throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
   const int err_fd = open(stderr_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (err_fd < 0) {
     close(fds[0]);
@@ -78,7 +82,8 @@ void EstimatorProcess::ReadLoop() {
       OutputLine l{partial.substr(0, pos), now, nullptr};
       partial.erase(0, pos + 1);
       if (parse_json_ && !l.text.empty() && l.text.front() == '{') {
-        l.json = std::make_shared<const nlohmann::json>(nlohmann::json::parse(l.text, nullptr, false));
+        l.json =
+            std::make_shared<const nlohmann::json>(nlohmann::json::parse(l.text, nullptr, false));
       }
       got.push_back(std::move(l));
     }
@@ -127,7 +132,8 @@ ExitInfo EstimatorProcess::Stop(double grace_s) {
   const bool was_running = Running();
   if (!was_running && !GroupAlive()) return *exit_;
   kill(-pid_, SIGTERM);
-  const std::int64_t deadline = link::RealtimePacer::MonotonicNs() + static_cast<std::int64_t>(grace_s * 1e9);
+  const std::int64_t deadline =
+      link::RealtimePacer::MonotonicNs() + static_cast<std::int64_t>(grace_s * 1e9);
   while (link::RealtimePacer::MonotonicNs() < deadline) {
     const bool leader = Running();
     if (!leader && !GroupAlive()) break;

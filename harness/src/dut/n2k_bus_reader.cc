@@ -11,13 +11,15 @@ constexpr double kRadToDeg = 180.0 / M_PI;
 
 std::uint64_t Le(std::string_view b, std::size_t at, int n) {
   std::uint64_t v = 0;
-  for (int k = n - 1; k >= 0; --k) v = (v << 8) | static_cast<unsigned char>(b[at + static_cast<std::size_t>(k)]);
+  for (int k = n - 1; k >= 0; --k)
+    v = (v << 8) | static_cast<unsigned char>(b[at + static_cast<std::size_t>(k)]);
   return v;
 }
 
 }  // namespace
 
-std::optional<EstimateRecord> N2kBusReader::Frame(std::uint32_t id29, std::string_view data, std::int64_t wall_ns) {
+std::optional<EstimateRecord> N2kBusReader::Frame(std::uint32_t id29, std::string_view data,
+                                                  std::int64_t wall_ns) {
   const std::uint32_t pgn = N2kPgnFromId(id29);
   ++per_pgn_[pgn];
   if (data.empty()) return std::nullopt;
@@ -30,7 +32,8 @@ std::optional<EstimateRecord> N2kBusReader::Frame(std::uint32_t id29, std::strin
       return std::nullopt;
     case 127250:  // SID, heading u16 1e-4 rad
       if (data.size() >= 3 && Le(data, 1, 2) != 0xFFFF) {
-        heading_ = {static_cast<unsigned char>(data[0]), static_cast<double>(Le(data, 1, 2)) * 1e-4, 0};
+        heading_ = {static_cast<unsigned char>(data[0]), static_cast<double>(Le(data, 1, 2)) * 1e-4,
+                    0};
       }
       return std::nullopt;
     case 129029:
@@ -44,7 +47,8 @@ std::optional<EstimateRecord> N2kBusReader::Frame(std::uint32_t id29, std::strin
   const std::uint64_t days = Le(b, 1, 2), tod = Le(b, 3, 4);
   if (days == 0xFFFF || tod == 0xFFFFFFFF) return std::nullopt;
   EstimateRecord r;
-  const std::int64_t t_ns = static_cast<std::int64_t>(days) * kDayNs + static_cast<std::int64_t>(tod) * 100000LL;
+  const std::int64_t t_ns =
+      static_cast<std::int64_t>(days) * kDayNs + static_cast<std::int64_t>(tod) * 100000LL;
   r.t_validity = TimeFromNs(t_ns - start_);
   r.lat_deg = static_cast<double>(static_cast<std::int64_t>(Le(b, 7, 8))) * 1e-16;
   r.lon_deg = static_cast<double>(static_cast<std::int64_t>(Le(b, 15, 8))) * 1e-16;
@@ -52,7 +56,8 @@ std::optional<EstimateRecord> N2kBusReader::Frame(std::uint32_t id29, std::strin
   r.wall_rx_ns = wall_ns;
   const int sid = static_cast<unsigned char>(b[0]);
   if (cog_sog_.sid == sid) {
-    r.vel_enu_mps = Eigen::Vector3d(cog_sog_.b * std::sin(cog_sog_.a), cog_sog_.b * std::cos(cog_sog_.a), 0.0);
+    r.vel_enu_mps =
+        Eigen::Vector3d(cog_sog_.b * std::sin(cog_sog_.a), cog_sog_.b * std::cos(cog_sog_.a), 0.0);
   }
   if (heading_.sid == sid) r.yaw_deg = std::fmod(heading_.a * kRadToDeg + 360.0, 360.0);
   return r;

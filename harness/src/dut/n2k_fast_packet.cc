@@ -7,7 +7,8 @@ std::uint32_t N2kPgnFromId(std::uint32_t id29) {
   return (dp << 16) | (pf << 8) | (pf >= 240 ? ps : 0);
 }
 
-std::optional<std::string> N2kFastPacketAssembler::Add(std::uint8_t source, std::uint32_t pgn, std::string_view data) {
+std::optional<std::string> N2kFastPacketAssembler::Add(std::uint8_t source, std::uint32_t pgn,
+                                                       std::string_view data) {
   ++stats_.frames;
   if (data.empty()) {
     ++stats_.bad_frames;

@@ -57,7 +57,8 @@ NmeaParse ParseNmeaSentence(std::string_view line) {
   }
   if (static_cast<int>(x) != hi * 16 + lo) {
     char buf[64];
-    std::snprintf(buf, sizeof buf, "checksum mismatch (computed %02X, sent %c%c)", x, line[star + 1], line[star + 2]);
+    std::snprintf(buf, sizeof buf, "checksum mismatch (computed %02X, sent %c%c)", x,
+                  line[star + 1], line[star + 2]);
     r.error = buf;
     return r;
   }
@@ -67,9 +68,12 @@ NmeaParse ParseNmeaSentence(std::string_view line) {
   bool first = true;
   for (;;) {
     const std::size_t comma = body.find(',', start);
-    const std::string f = body.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    if (first) s.address = f;
-    else s.fields.push_back(f);
+    const std::string f =
+        body.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    if (first)
+      s.address = f;
+    else
+      s.fields.push_back(f);
     first = false;
     if (comma == std::string::npos) break;
     start = comma + 1;
@@ -95,8 +99,10 @@ std::optional<double> NmeaDegrees(const std::string& value, const std::string& h
   const double min = *v - deg * 100.0;
   if (min >= 60.0) return std::nullopt;
   double d = deg + min / 60.0;
-  if (hemisphere == "S" || hemisphere == "W") d = -d;
-  else if (hemisphere != "N" && hemisphere != "E") return std::nullopt;
+  if (hemisphere == "S" || hemisphere == "W")
+    d = -d;
+  else if (hemisphere != "N" && hemisphere != "E")
+    return std::nullopt;
   return d;
 }
 

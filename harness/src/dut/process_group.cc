@@ -41,7 +41,8 @@ std::uint64_t ContextSwitches(const std::string& status_path) {
   std::string line;
   std::uint64_t n = 0;
   while (std::getline(in, line)) {
-    if (line.rfind("voluntary_ctxt_switches:", 0) == 0 || line.rfind("nonvoluntary_ctxt_switches:", 0) == 0) {
+    if (line.rfind("voluntary_ctxt_switches:", 0) == 0 ||
+        line.rfind("nonvoluntary_ctxt_switches:", 0) == 0) {
       n += std::strtoull(line.c_str() + line.find(':') + 1, nullptr, 10);
     }
   }
@@ -66,7 +67,8 @@ std::vector<int> LiveGroupMembers(int pgid) {
   if (pgid <= 0) return pids;
   ForEachNumericEntry("/proc", [&](const std::string& pid) {
     const StatFields f = ReadStat("/proc/" + pid + "/stat");
-    if (f.pgrp == pgid && f.state != 'Z' && f.state != 'X' && f.state != ' ') pids.push_back(std::atoi(pid.c_str()));
+    if (f.pgrp == pgid && f.state != 'Z' && f.state != 'X' && f.state != ' ')
+      pids.push_back(std::atoi(pid.c_str()));
   });
   return pids;
 }

@@ -6,8 +6,10 @@
 
 namespace hil::harness {
 
-PlannedPath::PlannedPath(std::vector<Eigen::Vector2d> vertices_enu_m) : vertices_(std::move(vertices_enu_m)) {
-  if (vertices_.size() < 2) throw std::invalid_argument("a planned path needs at least two vertices");
+PlannedPath::PlannedPath(std::vector<Eigen::Vector2d> vertices_enu_m)
+    : vertices_(std::move(vertices_enu_m)) {
+  if (vertices_.size() < 2)
+    throw std::invalid_argument("a planned path needs at least two vertices");
 }
 
 double PlannedPath::CrossTrack(const Eigen::Vector2d& p) const {

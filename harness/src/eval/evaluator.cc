@@ -19,21 +19,25 @@ std::vector<Time> RecordTimes(const std::vector<EstimateRecord>& records, Time t
   std::vector<Time> t;
   t.reserve(records.size());
   for (const EstimateRecord& r : records) {
-    if (r.t_validity >= t_from && r.t_validity <= t_to && r.t_validity >= Time{}) t.push_back(r.t_validity);
+    if (r.t_validity >= t_from && r.t_validity <= t_to && r.t_validity >= Time{})
+      t.push_back(r.t_validity);
   }
   return t;
 }
 
-std::vector<ErrorSample> CompareWithTruth(const truth::TruthConfig& truth_config, std::vector<EstimateRecord> records,
+std::vector<ErrorSample> CompareWithTruth(const truth::TruthConfig& truth_config,
+                                          std::vector<EstimateRecord> records,
                                           const Eigen::Vector3d& p_BX_B_m, Time t_from, Time t_to) {
   const TruthTable truth(truth_config, RecordTimes(records, t_from, t_to));
   return CompareWithTruth(truth, std::move(records), p_BX_B_m, t_from, t_to);
 }
 
-std::vector<ErrorSample> CompareWithTruth(const TruthTable& truth, std::vector<EstimateRecord> records,
+std::vector<ErrorSample> CompareWithTruth(const TruthTable& truth,
+                                          std::vector<EstimateRecord> records,
                                           const Eigen::Vector3d& p_BX_B_m, Time t_from, Time t_to) {
-  std::stable_sort(records.begin(), records.end(),
-                   [](const EstimateRecord& a, const EstimateRecord& b) { return a.t_validity < b.t_validity; });
+  std::stable_sort(
+      records.begin(), records.end(),
+      [](const EstimateRecord& a, const EstimateRecord& b) { return a.t_validity < b.t_validity; });
   std::vector<ErrorSample> out;
   out.reserve(records.size());
   for (const EstimateRecord& r : records) {

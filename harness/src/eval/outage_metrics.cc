@@ -11,12 +11,13 @@ constexpr double kHorizonsS[] = {1, 2, 5, 10, 20, 30, 60};
 
 }  // namespace
 
-std::vector<OutageMetrics> ComputeOutages(const std::vector<ErrorSample>& errors, const FaultTimeline& faults,
-                                          double reconverged_error_m) {
+std::vector<OutageMetrics> ComputeOutages(const std::vector<ErrorSample>& errors,
+                                          const FaultTimeline& faults, double reconverged_error_m) {
   // a data gap is an outage for the estimator: no GNSS reaches it
   std::vector<Fault> outages = faults.OfKind(FaultKind::kGnssOutage);
   for (const Fault& f : faults.OfKind(FaultKind::kGnssDataGap)) outages.push_back(f);
-  std::stable_sort(outages.begin(), outages.end(), [](const Fault& a, const Fault& b) { return a.start < b.start; });
+  std::stable_sort(outages.begin(), outages.end(),
+                   [](const Fault& a, const Fault& b) { return a.start < b.start; });
   std::vector<OutageMetrics> out;
   for (std::size_t k = 0; k < outages.size(); ++k) {
     const Fault& f = outages[k];
@@ -66,8 +67,9 @@ OutputTiming ComputeOutputTiming(const std::vector<EstimateRecord>& records_in, 
   OutputTiming t;
   if (records_in.size() < 2) return t;
   std::vector<EstimateRecord> records = records_in;
-  std::stable_sort(records.begin(), records.end(),
-                   [](const EstimateRecord& a, const EstimateRecord& b) { return a.t_validity < b.t_validity; });
+  std::stable_sort(
+      records.begin(), records.end(),
+      [](const EstimateRecord& a, const EstimateRecord& b) { return a.t_validity < b.t_validity; });
   const double span_s = ToSeconds(records.back().t_validity - records.front().t_validity);
   if (span_s <= 0) return t;
   t.output_rate_hz = static_cast<double>(records.size() - 1) / span_s;
@@ -90,7 +92,8 @@ OutputTiming ComputeOutputTiming(const std::vector<EstimateRecord>& records_in, 
   if (wall.size() >= 3) {
     std::sort(wall.begin(), wall.end());
     std::vector<double> iv_ms;
-    for (std::size_t i = 1; i < wall.size(); ++i) iv_ms.push_back(static_cast<double>(wall[i] - wall[i - 1]) * 1e-6 * speed);
+    for (std::size_t i = 1; i < wall.size(); ++i)
+      iv_ms.push_back(static_cast<double>(wall[i] - wall[i - 1]) * 1e-6 * speed);
     const double med = Percentile(iv_ms, 50);
     std::vector<double> dev;
     for (const double v : iv_ms) dev.push_back(std::abs(v - med));

@@ -7,7 +7,8 @@
 namespace hil::harness {
 namespace {
 
-std::optional<std::size_t> ActiveIndex(const FaultTimeline& tl, FaultKind kind, Time t, const std::string& link) {
+std::optional<std::size_t> ActiveIndex(const FaultTimeline& tl, FaultKind kind, Time t,
+                                       const std::string& link) {
   for (std::size_t i = 0; i < tl.faults.size(); ++i) {
     const Fault& f = tl.faults[i];
     if (f.kind == kind && f.ActiveAt(t) && (f.link.empty() || f.link == link)) return i;
@@ -17,7 +18,8 @@ std::optional<std::size_t> ActiveIndex(const FaultTimeline& tl, FaultKind kind, 
 
 }  // namespace
 
-ByteFaultInjector::ByteFaultInjector(const FaultTimeline& timeline, std::uint64_t seed, FaultRecorder* recorder)
+ByteFaultInjector::ByteFaultInjector(const FaultTimeline& timeline, std::uint64_t seed,
+                                     FaultRecorder* recorder)
     : timeline_(timeline), recorder_(recorder), rng_(seed * 0x9E3779B97F4A7C15ULL + 0x5EEDULL) {}
 
 void ByteFaultInjector::Note(std::optional<std::size_t> index, Time t, std::uint64_t n) {
@@ -69,7 +71,9 @@ bool ByteFaultInjector::DropTruncateCorrupt(SerialMessage& msg, const std::strin
   return true;
 }
 
-bool ByteFaultInjector::Apply(SerialMessage& msg, const std::string& link) { return DropTruncateCorrupt(msg, link); }
+bool ByteFaultInjector::Apply(SerialMessage& msg, const std::string& link) {
+  return DropTruncateCorrupt(msg, link);
+}
 
 void ByteFaultInjector::Process(const SerialMessage& in, const std::string& link, int link_baud,
                                 std::vector<SerialMessage>& out) {

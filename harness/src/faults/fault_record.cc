@@ -4,17 +4,28 @@ namespace hil::harness {
 
 const char* FaultUnit(FaultKind kind) {
   switch (kind) {
-    case FaultKind::kGnssOutage: return "epochs without a fix";
-    case FaultKind::kGnssDataGap: return "epochs not sent";
-    case FaultKind::kGnssGlitch: return "epochs with the offset";
-    case FaultKind::kByteCorruption: return "bits flipped";
-    case FaultKind::kFrameDrop: return "messages dropped";
-    case FaultKind::kMcuReset: return "resets";
-    case FaultKind::kBaudMismatch: return "messages garbled";
-    case FaultKind::kFrameDuplicate: return "messages duplicated";
-    case FaultKind::kFrameTruncate: return "messages truncated";
-    case FaultKind::kCanReorder: return "frame pairs swapped";
-    case FaultKind::kGnssOverload: return "messages lost to the transmit buffer";
+    case FaultKind::kGnssOutage:
+      return "epochs without a fix";
+    case FaultKind::kGnssDataGap:
+      return "epochs not sent";
+    case FaultKind::kGnssGlitch:
+      return "epochs with the offset";
+    case FaultKind::kByteCorruption:
+      return "bits flipped";
+    case FaultKind::kFrameDrop:
+      return "messages dropped";
+    case FaultKind::kMcuReset:
+      return "resets";
+    case FaultKind::kBaudMismatch:
+      return "messages garbled";
+    case FaultKind::kFrameDuplicate:
+      return "messages duplicated";
+    case FaultKind::kFrameTruncate:
+      return "messages truncated";
+    case FaultKind::kCanReorder:
+      return "frame pairs swapped";
+    case FaultKind::kGnssOverload:
+      return "messages lost to the transmit buffer";
   }
   return "?";
 }
@@ -38,7 +49,8 @@ void FaultRecorder::Note(std::size_t index, Time t, std::uint64_t n) {
   if (r.times_s.size() < FaultInjection::kMaxTimes) r.times_s.push_back(ToSeconds(t));
 }
 
-std::optional<std::size_t> FaultRecorder::Active(FaultKind kind, Time t, const std::string& link) const {
+std::optional<std::size_t> FaultRecorder::Active(FaultKind kind, Time t,
+                                                 const std::string& link) const {
   for (std::size_t i = 0; i < timeline_.faults.size(); ++i) {
     const Fault& f = timeline_.faults[i];
     if (f.kind == kind && f.ActiveAt(t) && (f.link.empty() || f.link == link)) return i;

@@ -1,12 +1,13 @@
 #include "hil/harness/faults/fault_report.h"
 
 #include <algorithm>
+
 #include <nlohmann/json.hpp>
 
 namespace hil::harness {
 
-const std::vector<std::string> kNavdFlags{"gnss_outage", "gnss_link_errors", "imu_link_errors",
-                                          "gnss_rejected", "imu_gap",      "mcu_reset"};
+const std::vector<std::string> kNavdFlags{"gnss_outage",   "gnss_link_errors", "imu_link_errors",
+                                          "gnss_rejected", "imu_gap",          "mcu_reset"};
 
 void EstimatorHealth::AddLine(const std::string& line) {
   if (line.find("\"health\"") == std::string::npos) return;
@@ -14,7 +15,8 @@ void EstimatorHealth::AddLine(const std::string& line) {
 }
 
 void EstimatorHealth::AddJson(const nlohmann::json& j) {
-  if (j.is_discarded() || !j.is_object() || !j.contains("health") || !j["health"].is_object()) return;
+  if (j.is_discarded() || !j.is_object() || !j.contains("health") || !j["health"].is_object())
+    return;
   present = true;
   for (const auto& [key, value] : j["health"].items()) {
     if (value.is_number()) counters[key] = value.get<double>();
@@ -26,8 +28,8 @@ void EstimatorHealth::AddJson(const nlohmann::json& j) {
   }
 }
 
-void ComputeRecoveryTimes(std::vector<FaultInjection>& faults, const std::vector<ErrorSample>& errors,
-                          double threshold_m) {
+void ComputeRecoveryTimes(std::vector<FaultInjection>& faults,
+                          const std::vector<ErrorSample>& errors, double threshold_m) {
   constexpr double kStayS = 2.0;
   for (FaultInjection& f : faults) {
     f.recovery_time_s.reset();
@@ -51,20 +53,23 @@ void ComputeRecoveryTimes(std::vector<FaultInjection>& faults, const std::vector
   }
 }
 
-void AddFaultMetrics(std::map<std::string, std::optional<double>>& table, const std::vector<FaultInjection>& faults,
-                     const EstimatorHealth& health) {
+void AddFaultMetrics(std::map<std::string, std::optional<double>>& table,
+                     const std::vector<FaultInjection>& faults, const EstimatorHealth& health) {
   std::optional<double> worst, fewest;
   bool never = false;
   for (const FaultInjection& f : faults) {
-    if (f.recovery_time_s) worst = std::max(worst.value_or(0.0), *f.recovery_time_s);
-    else never = true;
+    if (f.recovery_time_s)
+      worst = std::max(worst.value_or(0.0), *f.recovery_time_s);
+    else
+      never = true;
     fewest = std::min(fewest.value_or(static_cast<double>(f.count)), static_cast<double>(f.count));
   }
   table["fault_recovery_time_s"] = never || faults.empty() ? std::nullopt : worst;
   table["fault_injections_min"] = fewest;
   if (!health.present) return;
   for (const auto& [k, v] : health.counters) table["navd." + k] = v;
-  for (const std::string& f : kNavdFlags) table["navd.flag." + f] = health.flags_seen.count(f) ? 1.0 : 0.0;
+  for (const std::string& f : kNavdFlags)
+    table["navd.flag." + f] = health.flags_seen.count(f) ? 1.0 : 0.0;
   for (const std::string& f : health.flags_seen) table["navd.flag." + f] = 1.0;
 }
 
@@ -78,7 +83,8 @@ nlohmann::json FaultInjectionsJson(const std::vector<FaultInjection>& faults) {
                  {"unit", f.unit},
                  {"count", f.count},
                  {"times_s", f.times_s},
-                 {"recovery_time_s", f.recovery_time_s ? nlohmann::json(*f.recovery_time_s) : nlohmann::json(nullptr)}});
+                 {"recovery_time_s", f.recovery_time_s ? nlohmann::json(*f.recovery_time_s)
+                                                       : nlohmann::json(nullptr)}});
   }
   return a;
 }

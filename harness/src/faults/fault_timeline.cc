@@ -17,7 +17,7 @@ struct ParamSpec {
 struct KindSpec {
   FaultKind kind;
   const char* name;
-  bool instantaneous;   // end_s is optional (and defaults to start_s)
+  bool instantaneous;  // end_s is optional (and defaults to start_s)
   bool takes_link;
   std::vector<ParamSpec> params;
 };
@@ -26,9 +26,15 @@ const std::vector<KindSpec>& Kinds() {
   static const std::vector<KindSpec> kinds{
       {FaultKind::kGnssOutage, "gnss_outage", false, false, {}},
       {FaultKind::kGnssDataGap, "gnss_data_gap", false, false, {}},
-      {FaultKind::kGnssGlitch, "gnss_glitch", false, false,
+      {FaultKind::kGnssGlitch,
+       "gnss_glitch",
+       false,
+       false,
        {{"north_m", -1e4, 1e4, 0}, {"east_m", -1e4, 1e4, 0}, {"up_m", -1e4, 1e4, 0}}},
-      {FaultKind::kByteCorruption, "byte_corruption", false, true,
+      {FaultKind::kByteCorruption,
+       "byte_corruption",
+       false,
+       true,
        {{"probability", 0, 1, 1e-3}, {"bit_error_rate", 0, 0.5, 0}}},
       {FaultKind::kFrameDrop, "frame_drop", false, true, {{"probability", 0, 1, 1}}},
       {FaultKind::kMcuReset, "mcu_reset", true, false, {}},
@@ -60,11 +66,13 @@ std::vector<Fault> FaultTimeline::OfKind(FaultKind kind) const {
   for (const Fault& f : faults) {
     if (f.kind == kind) out.push_back(f);
   }
-  std::stable_sort(out.begin(), out.end(), [](const Fault& a, const Fault& b) { return a.start < b.start; });
+  std::stable_sort(out.begin(), out.end(),
+                   [](const Fault& a, const Fault& b) { return a.start < b.start; });
   return out;
 }
 
-std::optional<Fault> FaultTimeline::ActiveAt(FaultKind kind, Time t, const std::string& link) const {
+std::optional<Fault> FaultTimeline::ActiveAt(FaultKind kind, Time t,
+                                             const std::string& link) const {
   for (const Fault& f : faults) {
     if (f.kind == kind && f.ActiveAt(t) && (f.link.empty() || f.link == link)) return f;
   }
@@ -74,7 +82,8 @@ std::optional<Fault> FaultTimeline::ActiveAt(FaultKind kind, Time t, const std::
 FaultTimeline ReadFaultTimeline(const YamlReader& list, double duration_s) {
   FaultTimeline timeline;
   for (const YamlReader& e : list.Elements()) {
-    if (!e.IsMap()) e.Fail("expected a mapping such as {kind: gnss_outage, start_s: 10, end_s: 20}");
+    if (!e.IsMap())
+      e.Fail("expected a mapping such as {kind: gnss_outage, start_s: 10, end_s: 20}");
     const std::string kind_name = e.String("kind");
     const KindSpec* spec = nullptr;
     for (const auto& k : Kinds()) {
@@ -109,7 +118,8 @@ FaultTimeline ReadFaultTimeline(const YamlReader& list, double duration_s) {
     f.end = TimeFromSeconds(end_s);
     if (spec->takes_link) {
       f.link = e.String("link", "");
-      if (f.link.find('/') != std::string::npos) e.Fail("link", "must be a link name such as ttyGPS");
+      if (f.link.find('/') != std::string::npos)
+        e.Fail("link", "must be a link name such as ttyGPS");
     }
     for (const auto& p : spec->params) f.params[p.key] = e.DoubleIn(p.key, p.fallback, p.lo, p.hi);
     timeline.faults.push_back(std::move(f));

@@ -27,12 +27,15 @@ class TxLine {
 }  // namespace
 
 BaudMismatchResult ReceiveAtWrongBaud(std::string_view sent, int tx_baud, int rx_baud) {
-  if (tx_baud <= 0 || rx_baud <= 0) throw std::invalid_argument("ReceiveAtWrongBaud: bauds must be positive");
+  if (tx_baud <= 0 || rx_baud <= 0)
+    throw std::invalid_argument("ReceiveAtWrongBaud: bauds must be positive");
   BaudMismatchResult r;
   const TxLine line(sent);
   // times in units of one tx bit
   const double rx_bit = static_cast<double>(tx_baud) / static_cast<double>(rx_baud);
-  const auto level_at = [&](double t) { return line.Level(static_cast<std::int64_t>(std::floor(t))); };
+  const auto level_at = [&](double t) {
+    return line.Level(static_cast<std::int64_t>(std::floor(t)));
+  };
   double t = 0;  // the receiver looks for a falling edge at or after t
   for (;;) {
     // falling edges sit on slot boundaries k: slot k-1 high, slot k low

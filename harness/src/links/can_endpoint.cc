@@ -9,9 +9,10 @@ namespace {
 // The socket options, after checking that the kernel has CAN at all (for a helpful message).
 link::SocketCanPort::Options BusOptions(const std::string& iface, bool fd) {
   if (!link::SocketCanPort::Available()) {
-    throw std::runtime_error("cannot use the CAN interface " + iface +
-                             ": this kernel has no SocketCAN (AF_CAN); run CAN scenarios in the vcan VM "
-                             "(ci/vcan/run_in_vm) or on a host with can/vcan modules");
+    throw std::runtime_error(
+        "cannot use the CAN interface " + iface +
+        ": this kernel has no SocketCAN (AF_CAN); run CAN scenarios in the vcan VM "
+        "(ci/vcan/run_in_vm) or on a host with can/vcan modules");
   }
   link::SocketCanPort::Options o;
   o.fd = fd;
@@ -29,7 +30,8 @@ CaptureHeader CanHeader(const std::string& iface, std::int64_t start_unix_ns) {
 
 }  // namespace
 
-CanEndpoint::CanEndpoint(const std::string& iface, const std::string& capture_dir, std::int64_t start_unix_ns, bool fd)
+CanEndpoint::CanEndpoint(const std::string& iface, const std::string& capture_dir,
+                         std::int64_t start_unix_ns, bool fd)
     : port_(iface, BusOptions(iface, fd)),
       start_unix_ns_(start_unix_ns),
       candump_(capture_dir + "/" + iface + ".candump"),
@@ -47,7 +49,8 @@ std::optional<Time> CanEndpoint::next_frame_time() const {
   return pending_.front().t;
 }
 
-void CanEndpoint::Capture(CaptureDir dir, Time t, std::int64_t wall_ns, const link::CanWireFrame& f) {
+void CanEndpoint::Capture(CaptureDir dir, Time t, std::int64_t wall_ns,
+                          const link::CanWireFrame& f) {
   CaptureRecord r;
   r.dir = dir;
   r.t_emu_ns = ToNs(t);

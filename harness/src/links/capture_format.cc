@@ -1,12 +1,11 @@
 #include "hil/harness/links/capture_format.h"
 
-#include "hil/harness/run/run_guard.h"
-
 #include <charconv>
 #include <sstream>
 #include <stdexcept>
 
 #include "hil/firmware_emu/link/candump_log.h"
+#include "hil/harness/run/run_guard.h"
 
 namespace hil::harness {
 namespace {
@@ -67,9 +66,10 @@ std::optional<std::string> FromHex(std::string_view hex) {
 
 std::string FormatCaptureLine(const CaptureRecord& r) {
   std::string o(CaptureDirName(r.dir));
-  o += ' ' + std::to_string(r.t_emu_ns) + ' ' + std::to_string(r.byte_period_ns) + ' ' + std::to_string(r.t_wall_ns) +
-       ' ' + (r.name.empty() ? std::string("-") : r.name) + ' ';
-  o += r.is_frame() ? link::FormatCanFrameText(r.frame) : (r.bytes.empty() ? std::string("-") : ToHex(r.bytes));
+  o += ' ' + std::to_string(r.t_emu_ns) + ' ' + std::to_string(r.byte_period_ns) + ' ' +
+       std::to_string(r.t_wall_ns) + ' ' + (r.name.empty() ? std::string("-") : r.name) + ' ';
+  o += r.is_frame() ? link::FormatCanFrameText(r.frame)
+                    : (r.bytes.empty() ? std::string("-") : ToHex(r.bytes));
   if (!r.wall_offsets_ns.empty()) {
     o += ' ';
     for (std::size_t k = 0; k < r.wall_offsets_ns.size(); ++k) {
@@ -122,11 +122,14 @@ std::optional<CaptureRecord> ParseCaptureLine(std::string_view line) {
   return r;
 }
 
-CaptureWriter::CaptureWriter(const std::string& path, const CaptureHeader& h) : out_(path), path_(path) {
+CaptureWriter::CaptureWriter(const std::string& path, const CaptureHeader& h)
+    : out_(path), path_(path) {
   if (!out_) throw std::runtime_error("cannot write the capture " + path);
   out_ << "# hil capture v2\n# link " << h.link << ' ' << h.kind << ' ';
-  if (h.kind == "can") out_ << h.iface;
-  else out_ << h.baud;
+  if (h.kind == "can")
+    out_ << h.iface;
+  else
+    out_ << h.baud;
   out_ << "\n";
   if (h.start_unix_ns != 0) out_ << "# start_unix_ns " << h.start_unix_ns << "\n";
   out_ << "# columns: dir t_emu_ns byte_period_ns t_wall_ns name data [wall_offsets_ns]"
@@ -173,17 +176,22 @@ Capture ReadCapture(const std::string& path) {
         }
       } else if (word == "link") {
         h >> c.header.link >> c.header.kind;
-        if (c.header.kind == "can") h >> c.header.iface;
-        else h >> c.header.baud;
+        if (c.header.kind == "can")
+          h >> c.header.iface;
+        else
+          h >> c.header.baud;
       } else if (word == "start_unix_ns") {
         h >> c.header.start_unix_ns;
       }
       continue;
     }
-    if (auto r = ParseCaptureLine(line)) c.records.push_back(std::move(*r));
-    else ++c.unreadable_lines;
+    if (auto r = ParseCaptureLine(line))
+      c.records.push_back(std::move(*r));
+    else
+      ++c.unreadable_lines;
   }
-  if (c.header.version == 0) throw std::runtime_error(path + " is not a hil capture (no '# hil capture' header)");
+  if (c.header.version == 0)
+    throw std::runtime_error(path + " is not a hil capture (no '# hil capture' header)");
   return c;
 }
 

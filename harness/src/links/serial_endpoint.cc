@@ -9,7 +9,8 @@
 namespace hil::harness {
 namespace {
 
-std::unique_ptr<link::SerialPort> OpenPort(const std::string& link_name, const std::string& link_path, int baud) {
+std::unique_ptr<link::SerialPort> OpenPort(const std::string& link_name,
+                                           const std::string& link_path, int baud) {
   if (link::IsDevicePath(link_name)) return std::make_unique<link::TtyPort>(link_name, baud);
   return std::make_unique<link::PtyPort>(link_path, baud);
 }
@@ -118,7 +119,8 @@ void SerialEndpoint::WriteChunks(std::size_t chunks) {
     r.dir = CaptureDir::kTx;
     r.t_emu_ns = ToNs(c.t_first);
     r.byte_period_ns = c.byte_period.count();
-    r.t_wall_ns = 0;  // virtual mode: no wall time, so a scenario and seed give an identical capture
+    r.t_wall_ns =
+        0;  // virtual mode: no wall time, so a scenario and seed give an identical capture
     r.name = name;
     r.bytes = c.bytes;
     capture_.Write(r);

@@ -56,7 +56,8 @@ bool LooksLikeCandumpLog(const std::string& path) {
 }  // namespace
 
 ReplayResult ReplayCaptures(const ReplayOptions& opt) {
-  if (opt.captures.empty()) throw std::runtime_error("nothing to replay: give at least one capture");
+  if (opt.captures.empty())
+    throw std::runtime_error("nothing to replay: give at least one capture");
   fs::create_directories(opt.out_dir + "/captures");
   const std::string dir = fs::absolute(opt.out_dir).string();
 
@@ -67,7 +68,9 @@ ReplayResult ReplayCaptures(const ReplayOptions& opt) {
   std::vector<std::pair<std::string, std::string>> links;
 
   const auto can_out = [&](const std::string& recorded_iface, std::int64_t start_unix_ns) {
-    const std::string iface = !opt.can_iface.empty() ? opt.can_iface : recorded_iface.empty() ? "vcan0" : recorded_iface;
+    const std::string iface = !opt.can_iface.empty()   ? opt.can_iface
+                              : recorded_iface.empty() ? "vcan0"
+                                                       : recorded_iface;
     if (auto it = can_index.find(iface); it != can_index.end()) return it->second;
     CanOut o;
     o.port = std::make_unique<link::SocketCanPort>(iface);
@@ -138,11 +141,13 @@ ReplayResult ReplayCaptures(const ReplayOptions& opt) {
       events.push_back(e);
     }
   }
-  std::stable_sort(events.begin(), events.end(), [](const Event& a, const Event& b) { return a.t_emu_ns < b.t_emu_ns; });
+  std::stable_sort(events.begin(), events.end(),
+                   [](const Event& a, const Event& b) { return a.t_emu_ns < b.t_emu_ns; });
   if (opt.on_links) opt.on_links(links);
 
   link::RealtimePacer::RequestRealtimeScheduling();
-  std::this_thread::sleep_for(std::chrono::nanoseconds(static_cast<std::int64_t>(opt.start_delay_s * 1e9)));
+  std::this_thread::sleep_for(
+      std::chrono::nanoseconds(static_cast<std::int64_t>(opt.start_delay_s * 1e9)));
   const link::RealtimePacer pacer(opt.speed);
   ReplayResult result;
   result.wall_start_ns = pacer.WallNsOf(Time{});
@@ -220,7 +225,8 @@ ReplayResult ReplayCaptures(const ReplayOptions& opt) {
   // closing a pty discards what its host has not read yet, including bytes still in the kernel's
   // flip buffer (not counted by FIONREAD): wait until every queue has been empty for 50 ms (≤ 2 s)
   const std::int64_t drain_deadline = link::RealtimePacer::MonotonicNs() + 2000000000LL;
-  for (int quiet_ms = 0; quiet_ms < 50 && link::RealtimePacer::MonotonicNs() < drain_deadline; quiet_ms += 2) {
+  for (int quiet_ms = 0; quiet_ms < 50 && link::RealtimePacer::MonotonicNs() < drain_deadline;
+       quiet_ms += 2) {
     for (const SerialOut& o : serial) {
       if (o.port->PendingToHost() > 0) quiet_ms = 0;
     }

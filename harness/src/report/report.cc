@@ -3,21 +3,26 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
-#include <nlohmann/json.hpp>
 #include <stdexcept>
+
+#include <nlohmann/json.hpp>
 
 namespace hil::harness {
 namespace {
 
-nlohmann::json OptionalJson(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
+nlohmann::json OptionalJson(const std::optional<double>& v) {
+  return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+}
 
 nlohmann::json AccuracyJson(const AccuracyMetrics& m) {
   nlohmann::json j;
   j["samples"] = m.samples;
-  j["horizontal_rmse_m"] = m.samples ? nlohmann::json(m.horizontal_rmse_m) : nlohmann::json(nullptr);
+  j["horizontal_rmse_m"] =
+      m.samples ? nlohmann::json(m.horizontal_rmse_m) : nlohmann::json(nullptr);
   j["cep50_m"] = m.samples ? nlohmann::json(m.cep50_m) : nlohmann::json(nullptr);
   j["cep95_m"] = m.samples ? nlohmann::json(m.cep95_m) : nlohmann::json(nullptr);
-  j["max_horizontal_error_m"] = m.samples ? nlohmann::json(m.max_horizontal_error_m) : nlohmann::json(nullptr);
+  j["max_horizontal_error_m"] =
+      m.samples ? nlohmann::json(m.max_horizontal_error_m) : nlohmann::json(nullptr);
   j["vertical_rmse_m"] = m.samples ? nlohmann::json(m.vertical_rmse_m) : nlohmann::json(nullptr);
   j["velocity_rmse_mps"] = OptionalJson(m.velocity_rmse_mps);
   j["heading_rmse_deg"] = OptionalJson(m.heading_rmse_deg);
@@ -40,11 +45,20 @@ std::string XmlEscape(const std::string& s) {
   o.reserve(s.size());
   for (char c : s) {
     switch (c) {
-      case '<': o += "&lt;"; break;
-      case '>': o += "&gt;"; break;
-      case '&': o += "&amp;"; break;
-      case '"': o += "&quot;"; break;
-      default: o += c;
+      case '<':
+        o += "&lt;";
+        break;
+      case '>':
+        o += "&gt;";
+        break;
+      case '&':
+        o += "&amp;";
+        break;
+      case '"':
+        o += "&quot;";
+        break;
+      default:
+        o += c;
     }
   }
   return o;
@@ -77,7 +91,8 @@ MetricTable AccuracyTable(const AccuracyMetrics& m) {
 
 MetricTable RunMetricTable(const RunReport& r) {
   MetricTable t = AccuracyTable(r.metrics);
-  t["output_rate_hz"] = r.metrics.samples >= 2 ? std::optional<double>(r.output_rate_hz) : std::nullopt;
+  t["output_rate_hz"] =
+      r.metrics.samples >= 2 ? std::optional<double>(r.output_rate_hz) : std::nullopt;
   t["solutions_missing_fraction"] =
       r.metrics.samples >= 2 ? std::optional<double>(r.timing.missing_fraction) : std::nullopt;
   t["latency_p99_ms"] = r.latency ? std::optional<double>(r.latency->p99_ms) : std::nullopt;
@@ -87,22 +102,29 @@ MetricTable RunMetricTable(const RunReport& r) {
   bool never_reconverged = false;
   for (const auto& o : r.outages) {
     if (o.samples > 0) worst = std::max(worst.value_or(0.0), o.max_horizontal_error_m);
-    if (o.samples > 0) worst_enu = worst_enu.value_or(Eigen::Vector3d::Zero()).cwiseMax(o.max_abs_error_enu_m);
-    if (o.reconvergence_time_s) reconv = std::max(reconv.value_or(0.0), *o.reconvergence_time_s);
-    else never_reconverged = true;
+    if (o.samples > 0)
+      worst_enu = worst_enu.value_or(Eigen::Vector3d::Zero()).cwiseMax(o.max_abs_error_enu_m);
+    if (o.reconvergence_time_s)
+      reconv = std::max(reconv.value_or(0.0), *o.reconvergence_time_s);
+    else
+      never_reconverged = true;
   }
   t["outage_max_horizontal_error_m"] = worst;
-  const auto axis = [&](int i) { return worst_enu ? std::optional<double>((*worst_enu)[i]) : std::nullopt; };
+  const auto axis = [&](int i) {
+    return worst_enu ? std::optional<double>((*worst_enu)[i]) : std::nullopt;
+  };
   t["outage_max_east_error_m"] = axis(0);
   t["outage_max_north_error_m"] = axis(1);
   t["outage_max_up_error_m"] = axis(2);
-  t["outage_max_enu_error_m"] = worst_enu ? std::optional<double>(worst_enu->maxCoeff()) : std::nullopt;
+  t["outage_max_enu_error_m"] =
+      worst_enu ? std::optional<double>(worst_enu->maxCoeff()) : std::nullopt;
   t["reconvergence_time_s"] = never_reconverged ? std::nullopt : reconv;
   AddFaultMetrics(t, r.fault_injections, r.estimator_health);
   return t;
 }
 
-std::vector<CriterionResult> EvaluateCriteria(const std::vector<Criterion>& criteria, const MetricTable& metrics,
+std::vector<CriterionResult> EvaluateCriteria(const std::vector<Criterion>& criteria,
+                                              const MetricTable& metrics,
                                               const MetricTable& baselines) {
   const auto lookup = [](const MetricTable& t, const std::string& k) {
     const auto it = t.find(k);
@@ -130,7 +152,8 @@ std::vector<CriterionResult> EvaluateCriteria(const std::vector<Criterion>& crit
   return out;
 }
 
-std::vector<CriterionResult> EvaluateCriteria(const std::vector<Criterion>& criteria, const AccuracyMetrics& metrics,
+std::vector<CriterionResult> EvaluateCriteria(const std::vector<Criterion>& criteria,
+                                              const AccuracyMetrics& metrics,
                                               const AccuracyMetrics& baselines) {
   return EvaluateCriteria(criteria, AccuracyTable(metrics), AccuracyTable(baselines));
 }
@@ -149,41 +172,57 @@ void WriteReportJson(const RunReport& r, const std::string& path) {
   m["solutions_missing_fraction"] = r.timing.missing_fraction;
   m["nees_mean"] = OptionalJson(r.metrics.nees_mean);
   if (r.timing.jitter_p99_ms) {
-    m["jitter_ms"] = {{"p50", *r.timing.jitter_p50_ms}, {"p99", *r.timing.jitter_p99_ms}, {"max", *r.timing.jitter_max_ms}};
+    m["jitter_ms"] = {{"p50", *r.timing.jitter_p50_ms},
+                      {"p99", *r.timing.jitter_p99_ms},
+                      {"max", *r.timing.jitter_max_ms}};
   } else {
     m["jitter_ms"] = nullptr;
   }
   if (r.latency) {
-    m["latency_ms"] = {{"p50", r.latency->p50_ms}, {"p99", r.latency->p99_ms}, {"max", r.latency->max_ms}};
+    m["latency_ms"] = {
+        {"p50", r.latency->p50_ms}, {"p99", r.latency->p99_ms}, {"max", r.latency->max_ms}};
   } else {
     m["latency_ms"] = nullptr;  // measured in real-time mode only
   }
   m["outages"] = nlohmann::json::array();
   for (const auto& o : r.outages) {
     nlohmann::json growth = nlohmann::json::array();
-    for (const auto& [h, e] : o.growth) growth.push_back({{"t_since_start_s", h}, {"horizontal_error_m", e}});
-    m["outages"].push_back({{"start_s", o.start_s},
-                            {"end_s", o.end_s},
-                            {"samples", o.samples},
-                            {"max_horizontal_error_m", o.samples ? nlohmann::json(o.max_horizontal_error_m) : nlohmann::json(nullptr)},
-                            {"max_east_error_m", o.samples ? nlohmann::json(o.max_abs_error_enu_m.x()) : nlohmann::json(nullptr)},
-                            {"max_north_error_m", o.samples ? nlohmann::json(o.max_abs_error_enu_m.y()) : nlohmann::json(nullptr)},
-                            {"max_up_error_m", o.samples ? nlohmann::json(o.max_abs_error_enu_m.z()) : nlohmann::json(nullptr)},
-                            {"reconvergence_time_s", OptionalJson(o.reconvergence_time_s)},
-                            {"error_growth", growth}});
+    for (const auto& [h, e] : o.growth)
+      growth.push_back({{"t_since_start_s", h}, {"horizontal_error_m", e}});
+    m["outages"].push_back(
+        {{"start_s", o.start_s},
+         {"end_s", o.end_s},
+         {"samples", o.samples},
+         {"max_horizontal_error_m",
+          o.samples ? nlohmann::json(o.max_horizontal_error_m) : nlohmann::json(nullptr)},
+         {"max_east_error_m",
+          o.samples ? nlohmann::json(o.max_abs_error_enu_m.x()) : nlohmann::json(nullptr)},
+         {"max_north_error_m",
+          o.samples ? nlohmann::json(o.max_abs_error_enu_m.y()) : nlohmann::json(nullptr)},
+         {"max_up_error_m",
+          o.samples ? nlohmann::json(o.max_abs_error_enu_m.z()) : nlohmann::json(nullptr)},
+         {"reconvergence_time_s", OptionalJson(o.reconvergence_time_s)},
+         {"error_growth", growth}});
   }
   j["metrics"] = m;
   j["baselines"] = AccuracyJson(r.baselines);
-  // every criterion metric by name (null when it cannot be computed), for suites and reference figures
+  // every criterion metric by name (null when it cannot be computed), for suites and reference
+  // figures
   j["metric_table"] = nlohmann::json::object();
   for (const auto& [name, value] : RunMetricTable(r)) j["metric_table"][name] = OptionalJson(value);
   j["baseline_table"] = nlohmann::json::object();
-  for (const auto& [name, value] : AccuracyTable(r.baselines)) j["baseline_table"][name] = OptionalJson(value);
+  for (const auto& [name, value] : AccuracyTable(r.baselines))
+    j["baseline_table"][name] = OptionalJson(value);
   j["criteria"] = nlohmann::json::array();
   for (const auto& c : r.criteria) {
-    j["criteria"].push_back({{"name", c.name}, {"threshold", c.threshold}, {"value", OptionalJson(c.value)}, {"pass", c.pass}});
+    j["criteria"].push_back({{"name", c.name},
+                             {"threshold", c.threshold},
+                             {"value", OptionalJson(c.value)},
+                             {"pass", c.pass}});
   }
-  j["estimator"] = {{"command", r.estimator_command}, {"output", r.estimator_output}, {"exit", r.estimator_exit},
+  j["estimator"] = {{"command", r.estimator_command},
+                    {"output", r.estimator_output},
+                    {"exit", r.estimator_exit},
                     {"pid", r.estimator_pid}};
   j["estimator_exit"] = r.estimator_exit;
   j["speed"] = r.speed;
@@ -192,7 +231,8 @@ void WriteReportJson(const RunReport& r, const std::string& path) {
   j["fault_injections"] = FaultInjectionsJson(r.fault_injections);
   j["estimator_health"] = EstimatorHealthJson(r.estimator_health);
   if (!r.incomplete_reason.empty()) j["incomplete_reason"] = r.incomplete_reason;
-  j["fault_effects"] = {{"messages_dropped", r.fault_messages_dropped}, {"bytes_corrupted", r.fault_bytes_corrupted}};
+  j["fault_effects"] = {{"messages_dropped", r.fault_messages_dropped},
+                        {"bytes_corrupted", r.fault_bytes_corrupted}};
   j["wall_time_s"] = r.wall_time_s;
   j["sim_time_s"] = r.sim_time_s;
   j["links"] = {{"gnss_bytes", r.gnss_bytes}, {"gnss_messages_dropped", r.gnss_messages_dropped}};
@@ -208,21 +248,27 @@ void WriteJunitXml(const RunReport& r, const std::string& path) {
   auto out = OpenOut(path);
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   out << "<testsuites>\n";
-  out << "  <testsuite name=\"" << XmlEscape(r.scenario) << "\" tests=\"" << r.criteria.size() + r.problems.size()
-      << "\" failures=\"" << failures << "\" time=\"" << r.wall_time_s << "\">\n";
+  out << "  <testsuite name=\"" << XmlEscape(r.scenario) << "\" tests=\""
+      << r.criteria.size() + r.problems.size() << "\" failures=\"" << failures << "\" time=\""
+      << r.wall_time_s << "\">\n";
   for (const auto& c : r.criteria) {
-    out << "    <testcase classname=\"" << XmlEscape(r.scenario) << "\" name=\"" << XmlEscape(c.name) << "\">";
+    out << "    <testcase classname=\"" << XmlEscape(r.scenario) << "\" name=\""
+        << XmlEscape(c.name) << "\">";
     if (!c.pass) {
       char msg[256];
-      if (c.value) std::snprintf(msg, sizeof msg, "value %.6g fails the threshold %.6g", *c.value, c.threshold);
-      else std::snprintf(msg, sizeof msg, "metric could not be computed (no estimates, or not measured in this mode)");
+      if (c.value)
+        std::snprintf(msg, sizeof msg, "value %.6g fails the threshold %.6g", *c.value,
+                      c.threshold);
+      else
+        std::snprintf(msg, sizeof msg,
+                      "metric could not be computed (no estimates, or not measured in this mode)");
       out << "<failure message=\"" << XmlEscape(msg) << "\"/>";
     }
     out << "</testcase>\n";
   }
   for (const auto& p : r.problems) {
-    out << "    <testcase classname=\"" << XmlEscape(r.scenario) << "\" name=\"run\"><failure message=\""
-        << XmlEscape(p) << "\"/></testcase>\n";
+    out << "    <testcase classname=\"" << XmlEscape(r.scenario)
+        << "\" name=\"run\"><failure message=\"" << XmlEscape(p) << "\"/></testcase>\n";
   }
   out << "  </testsuite>\n</testsuites>\n";
   if (!out) throw std::runtime_error("cannot write " + path);
@@ -230,12 +276,14 @@ void WriteJunitXml(const RunReport& r, const std::string& path) {
 
 void WriteErrorsCsv(const std::vector<ErrorSample>& errors, const std::string& path) {
   auto out = OpenOut(path);
-  out << "t_s,truth_e_m,truth_n_m,truth_u_m,est_e_m,est_n_m,est_u_m,err_e_m,err_n_m,err_u_m,err_h_m\n";
+  out << "t_s,truth_e_m,truth_n_m,truth_u_m,est_e_m,est_n_m,est_u_m,err_e_m,err_n_m,err_u_m,err_h_"
+         "m\n";
   char line[512];
   for (const auto& e : errors) {
-    std::snprintf(line, sizeof line, "%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f\n", ToSeconds(e.t),
-                  e.truth_enu_m.x(), e.truth_enu_m.y(), e.truth_enu_m.z(), e.est_enu_m.x(), e.est_enu_m.y(),
-                  e.est_enu_m.z(), e.err_enu_m.x(), e.err_enu_m.y(), e.err_enu_m.z(), e.horizontal());
+    std::snprintf(line, sizeof line, "%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f\n",
+                  ToSeconds(e.t), e.truth_enu_m.x(), e.truth_enu_m.y(), e.truth_enu_m.z(),
+                  e.est_enu_m.x(), e.est_enu_m.y(), e.est_enu_m.z(), e.err_enu_m.x(),
+                  e.err_enu_m.y(), e.err_enu_m.z(), e.horizontal());
     out << line;
   }
 }

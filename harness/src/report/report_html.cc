@@ -29,7 +29,8 @@ void WriteFile(const std::string& path, const std::string& text) {
   if (!out) throw std::runtime_error("cannot write " + path);
 }
 
-PlotSeries Cdf(const std::vector<ErrorSample>& errors, const std::string& label, const char* color) {
+PlotSeries Cdf(const std::vector<ErrorSample>& errors, const std::string& label,
+               const char* color) {
   PlotSeries s{label, color, PlotSeries::Style::kLine, {}, {}, 0};
   std::vector<double> h;
   for (const auto& e : errors) h.push_back(e.horizontal());
@@ -53,7 +54,8 @@ std::vector<PlotBand> OutageBands(const RunReport& r) {
 
 }  // namespace
 
-std::vector<std::string> WritePlots(const RunReport& r, const ReportSeries& s, const std::string& dir) {
+std::vector<std::string> WritePlots(const RunReport& r, const ReportSeries& s,
+                                    const std::string& dir) {
   std::filesystem::create_directories(dir + "/plots");
   std::vector<std::string> files;
   {
@@ -65,9 +67,11 @@ std::vector<std::string> WritePlots(const RunReport& r, const ReportSeries& s, c
     PlotSeries truth{"truth", kTruthColor, PlotSeries::Style::kLine, {}, {}, 0};
     for (const auto& p : s.truth_en_m) truth.x.push_back(p.x()), truth.y.push_back(p.y());
     PlotSeries gnss{"raw GNSS fixes", kGnssColor, PlotSeries::Style::kPoints, {}, {}, 0};
-    for (const auto& e : s.fix_errors) gnss.x.push_back(e.est_enu_m.x()), gnss.y.push_back(e.est_enu_m.y());
+    for (const auto& e : s.fix_errors)
+      gnss.x.push_back(e.est_enu_m.x()), gnss.y.push_back(e.est_enu_m.y());
     PlotSeries est{"estimate", kEstimateColor, PlotSeries::Style::kLine, {}, {}, 0};
-    for (const auto& e : s.estimate_errors) est.x.push_back(e.est_enu_m.x()), est.y.push_back(e.est_enu_m.y());
+    for (const auto& e : s.estimate_errors)
+      est.x.push_back(e.est_enu_m.x()), est.y.push_back(e.est_enu_m.y());
     c.series = {truth, gnss, est};
     WriteFile(dir + "/plots/trajectory.svg", RenderSvg(c));
     files.push_back("plots/trajectory.svg");
@@ -80,9 +84,11 @@ std::vector<std::string> WritePlots(const RunReport& r, const ReportSeries& s, c
     c.y_from_zero = true;
     c.bands = OutageBands(r);
     PlotSeries gnss{"raw GNSS fixes", kGnssColor, PlotSeries::Style::kPoints, {}, {}, 0};
-    for (const auto& e : s.fix_errors) gnss.x.push_back(ToSeconds(e.t)), gnss.y.push_back(e.horizontal());
+    for (const auto& e : s.fix_errors)
+      gnss.x.push_back(ToSeconds(e.t)), gnss.y.push_back(e.horizontal());
     PlotSeries est{"estimate", kEstimateColor, PlotSeries::Style::kLine, {}, {}, 0};
-    for (const auto& e : s.estimate_errors) est.x.push_back(ToSeconds(e.t)), est.y.push_back(e.horizontal());
+    for (const auto& e : s.estimate_errors)
+      est.x.push_back(ToSeconds(e.t)), est.y.push_back(e.horizontal());
     c.series = {gnss, est};
     WriteFile(dir + "/plots/horizontal_error.svg", RenderSvg(c));
     files.push_back("plots/horizontal_error.svg");
@@ -93,7 +99,8 @@ std::vector<std::string> WritePlots(const RunReport& r, const ReportSeries& s, c
     c.x_label = "horizontal error (m)";
     c.y_label = "samples at or below (%)";
     c.y_from_zero = true;
-    c.series = {Cdf(s.fix_errors, "raw GNSS fixes", kGnssColor), Cdf(s.estimate_errors, "estimate", kEstimateColor)};
+    c.series = {Cdf(s.fix_errors, "raw GNSS fixes", kGnssColor),
+                Cdf(s.estimate_errors, "estimate", kEstimateColor)};
     WriteFile(dir + "/plots/error_cdf.svg", RenderSvg(c));
     files.push_back("plots/error_cdf.svg");
   }
@@ -103,16 +110,19 @@ std::vector<std::string> WritePlots(const RunReport& r, const ReportSeries& s, c
     c.x_label = "latency (ms)";
     c.y_label = "solutions";
     c.y_from_zero = true;
-    c.empty_note = "no data: latency is measured in real-time and scaled runs (--mode realtime|scaled)";
+    c.empty_note =
+        "no data: latency is measured in real-time and scaled runs (--mode realtime|scaled)";
     if (!s.latency_ms.empty()) {
       const auto [lo_it, hi_it] = std::minmax_element(s.latency_ms.begin(), s.latency_ms.end());
       const double lo = *lo_it, hi = std::max(*hi_it, lo + 1e-3);
-      const int bins = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(s.latency_ms.size()))) + 1, 5, 40);
+      const int bins = std::clamp(
+          static_cast<int>(std::sqrt(static_cast<double>(s.latency_ms.size()))) + 1, 5, 40);
       const double w = (hi - lo) / bins;
       PlotSeries h{"solutions per bin", kEstimateColor, PlotSeries::Style::kBars, {}, {}, w};
       std::vector<double> count(static_cast<std::size_t>(bins), 0.0);
       for (const double v : s.latency_ms) {
-        count[static_cast<std::size_t>(std::clamp(static_cast<int>((v - lo) / w), 0, bins - 1))] += 1;
+        count[static_cast<std::size_t>(std::clamp(static_cast<int>((v - lo) / w), 0, bins - 1))] +=
+            1;
       }
       for (int i = 0; i < bins; ++i) {
         h.x.push_back(lo + (i + 0.5) * w);
@@ -129,56 +139,72 @@ std::vector<std::string> WritePlots(const RunReport& r, const ReportSeries& s, c
 void WriteReportHtml(const RunReport& r, const ReportSeries& s, const std::string& dir) {
   const std::vector<std::string> plots = WritePlots(r, s, dir);
   std::string h;
-  h += "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>hil run: " + XmlEscape(r.scenario) +
+  h += "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>hil run: " +
+       XmlEscape(r.scenario) +
        "</title>\n<style>body{font-family:sans-serif;max-width:1000px;margin:2em auto;color:#222}"
-       "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #ccc;padding:4px 10px;text-align:left}"
-       ".pass{color:#176317;font-weight:bold}.fail{color:#b00020;font-weight:bold}img{max-width:100%;"
+       "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #ccc;padding:4px "
+       "10px;text-align:left}"
+       ".pass{color:#176317;font-weight:bold}.fail{color:#b00020;font-weight:bold}img{max-width:"
+       "100%;"
        "border:1px solid #ddd;margin:0.5em 0}</style></head><body>\n";
-  h += "<h1>" + XmlEscape(r.scenario) + ": <span class=\"" + (r.pass() ? "pass\">PASS" : "fail\">FAIL") + "</span></h1>\n";
+  h += "<h1>" + XmlEscape(r.scenario) + ": <span class=\"" +
+       (r.pass() ? "pass\">PASS" : "fail\">FAIL") + "</span></h1>\n";
   char buf[512];
-  std::snprintf(buf, sizeof buf, "<p>Scenario file %s, seed %llu, %s mode (speed %.2fx), %.1f s simulated in %.2f s.</p>\n",
-                XmlEscape(r.scenario_file).c_str(), static_cast<unsigned long long>(r.seed), r.mode.c_str(), r.speed,
-                r.sim_time_s, r.wall_time_s);
+  std::snprintf(
+      buf, sizeof buf,
+      "<p>Scenario file %s, seed %llu, %s mode (speed %.2fx), %.1f s simulated in %.2f s.</p>\n",
+      XmlEscape(r.scenario_file).c_str(), static_cast<unsigned long long>(r.seed), r.mode.c_str(),
+      r.speed, r.sim_time_s, r.wall_time_s);
   h += buf;
-  h += "<p>Estimator: <code>" + XmlEscape(r.estimator_command) + "</code> (output " + XmlEscape(r.estimator_output) + ", " +
-       XmlEscape(r.estimator_exit) + ").</p>\n";
-  h += "<h2>Verdict</h2>\n<table><tr><th>criterion</th><th>threshold</th><th>value</th><th>result</th></tr>\n";
+  h += "<p>Estimator: <code>" + XmlEscape(r.estimator_command) + "</code> (output " +
+       XmlEscape(r.estimator_output) + ", " + XmlEscape(r.estimator_exit) + ").</p>\n";
+  h += "<h2>Verdict</h2>\n<table><tr><th>criterion</th><th>threshold</th><th>value</th><th>result</"
+       "th></tr>\n";
   for (const auto& c : r.criteria) {
     std::snprintf(buf, sizeof buf, "%.4g", c.threshold);
-    h += "<tr><td>" + XmlEscape(c.name) + "</td><td>" + buf + "</td><td>" + Fmt(c.value) + "</td><td class=\"" +
-         (c.pass ? "pass\">PASS" : "fail\">FAIL") + "</td></tr>\n";
+    h += "<tr><td>" + XmlEscape(c.name) + "</td><td>" + buf + "</td><td>" + Fmt(c.value) +
+         "</td><td class=\"" + (c.pass ? "pass\">PASS" : "fail\">FAIL") + "</td></tr>\n";
   }
-  for (const auto& p : r.problems) h += "<tr><td colspan=\"3\">" + XmlEscape(p) + "</td><td class=\"fail\">FAIL</td></tr>\n";
+  for (const auto& p : r.problems)
+    h += "<tr><td colspan=\"3\">" + XmlEscape(p) + "</td><td class=\"fail\">FAIL</td></tr>\n";
   h += "</table>\n";
-  h += "<h2>Accuracy against truth</h2>\n<table><tr><th>metric</th><th>estimate</th><th>raw GNSS</th></tr>\n";
+  h += "<h2>Accuracy against truth</h2>\n<table><tr><th>metric</th><th>estimate</th><th>raw "
+       "GNSS</th></tr>\n";
   const MetricTable est = AccuracyTable(r.metrics), raw = AccuracyTable(r.baselines);
   for (const auto& [name, v] : est) {
     const auto it = raw.find(name);
-    h += "<tr><td>" + name + "</td><td>" + Fmt(v) + "</td><td>" + Fmt(it == raw.end() ? std::nullopt : it->second) +
-         "</td></tr>\n";
+    h += "<tr><td>" + name + "</td><td>" + Fmt(v) + "</td><td>" +
+         Fmt(it == raw.end() ? std::nullopt : it->second) + "</td></tr>\n";
   }
-  std::snprintf(buf, sizeof buf, "<tr><td>samples</td><td>%zu</td><td>%zu</td></tr>\n", r.metrics.samples,
-                r.baselines.samples);
+  std::snprintf(buf, sizeof buf, "<tr><td>samples</td><td>%zu</td><td>%zu</td></tr>\n",
+                r.metrics.samples, r.baselines.samples);
   h += buf;
-  h += "</table>\n<p>Cross-track error: signed distance to the planned path (a polyline, interpolated between "
+  h += "</table>\n<p>Cross-track error: signed distance to the planned path (a polyline, "
+       "interpolated between "
        "vertices as ISO 12188-2 expects), estimate minus truth at the same time of validity.</p>\n";
   h += "<h2>Timing</h2>\n<table>\n";
-  std::snprintf(buf, sizeof buf, "<tr><td>output rate</td><td>%.3f Hz</td></tr><tr><td>missing solutions</td><td>%.1f %%</td></tr>\n",
+  std::snprintf(buf, sizeof buf,
+                "<tr><td>output rate</td><td>%.3f Hz</td></tr><tr><td>missing "
+                "solutions</td><td>%.1f %%</td></tr>\n",
                 r.output_rate_hz, 100.0 * r.timing.missing_fraction);
   h += buf;
   if (r.latency) {
-    std::snprintf(buf, sizeof buf, "<tr><td>latency p50 / p99 / max</td><td>%.2f / %.2f / %.2f ms</td></tr>\n",
+    std::snprintf(buf, sizeof buf,
+                  "<tr><td>latency p50 / p99 / max</td><td>%.2f / %.2f / %.2f ms</td></tr>\n",
                   r.latency->p50_ms, r.latency->p99_ms, r.latency->max_ms);
     h += buf;
   }
   if (r.timing.jitter_p99_ms) {
-    std::snprintf(buf, sizeof buf, "<tr><td>arrival jitter p50 / p99 / max</td><td>%.2f / %.2f / %.2f ms</td></tr>\n",
-                  *r.timing.jitter_p50_ms, *r.timing.jitter_p99_ms, *r.timing.jitter_max_ms);
+    std::snprintf(
+        buf, sizeof buf,
+        "<tr><td>arrival jitter p50 / p99 / max</td><td>%.2f / %.2f / %.2f ms</td></tr>\n",
+        *r.timing.jitter_p50_ms, *r.timing.jitter_p99_ms, *r.timing.jitter_max_ms);
     h += buf;
   }
   h += "</table>\n";
   if (!r.outages.empty()) {
-    h += "<h2>GNSS outages</h2>\n<table><tr><th>start (s)</th><th>end (s)</th><th>max horizontal error</th>"
+    h += "<h2>GNSS outages</h2>\n<table><tr><th>start (s)</th><th>end (s)</th><th>max horizontal "
+         "error</th>"
          "<th>error growth</th><th>reconvergence time</th></tr>\n";
     for (const auto& o : r.outages) {
       std::string growth;
@@ -186,7 +212,8 @@ void WriteReportHtml(const RunReport& r, const ReportSeries& s, const std::strin
         std::snprintf(buf, sizeof buf, "%s%.0f s: %.2f m", growth.empty() ? "" : ", ", t, e);
         growth += buf;
       }
-      std::snprintf(buf, sizeof buf, "<tr><td>%.1f</td><td>%.1f</td><td>%s</td>", o.start_s, o.end_s,
+      std::snprintf(buf, sizeof buf, "<tr><td>%.1f</td><td>%.1f</td><td>%s</td>", o.start_s,
+                    o.end_s,
                     o.samples ? Fmt(o.max_horizontal_error_m, " m").c_str() : "no solutions");
       h += buf;
       h += "<td>" + growth + "</td><td>" + Fmt(o.reconvergence_time_s, " s") + "</td></tr>\n";
@@ -195,18 +222,26 @@ void WriteReportHtml(const RunReport& r, const ReportSeries& s, const std::strin
   }
   if (!r.faults.empty()) {
     h += "<h2>Fault timeline</h2>\n<ul>\n";
-    for (const auto& [kind, when] : r.faults) h += "<li>" + XmlEscape(kind) + ": " + XmlEscape(when) + "</li>\n";
-    std::snprintf(buf, sizeof buf, "</ul><p>Injected: %llu messages dropped, %llu bytes corrupted.</p>\n",
+    for (const auto& [kind, when] : r.faults)
+      h += "<li>" + XmlEscape(kind) + ": " + XmlEscape(when) + "</li>\n";
+    std::snprintf(buf, sizeof buf,
+                  "</ul><p>Injected: %llu messages dropped, %llu bytes corrupted.</p>\n",
                   static_cast<unsigned long long>(r.fault_messages_dropped),
                   static_cast<unsigned long long>(r.fault_bytes_corrupted));
     h += buf;
-    h += "<table><tr><th>fault</th><th>link</th><th>window s</th><th>injected</th><th>first–last s</th>"
+    h += "<table><tr><th>fault</th><th>link</th><th>window s</th><th>injected</th><th>first–last "
+         "s</th>"
          "<th>recovery</th></tr>\n";
     for (const FaultInjection& f : r.fault_injections) {
-      std::snprintf(buf, sizeof buf, "<tr><td>%s</td><td>%s</td><td>%.1f–%.1f</td><td>%llu %s</td><td>%s</td><td>%s</td></tr>\n",
-                    XmlEscape(f.kind).c_str(), f.link.empty() ? "all" : XmlEscape(f.link).c_str(), f.start_s, f.end_s,
-                    static_cast<unsigned long long>(f.count), XmlEscape(f.unit).c_str(),
-                    f.times_s.empty() ? "–" : (Fmt(f.times_s.front(), "") + "–" + Fmt(f.times_s.back(), "")).c_str(),
+      std::snprintf(buf, sizeof buf,
+                    "<tr><td>%s</td><td>%s</td><td>%.1f–%.1f</td><td>%llu "
+                    "%s</td><td>%s</td><td>%s</td></tr>\n",
+                    XmlEscape(f.kind).c_str(), f.link.empty() ? "all" : XmlEscape(f.link).c_str(),
+                    f.start_s, f.end_s, static_cast<unsigned long long>(f.count),
+                    XmlEscape(f.unit).c_str(),
+                    f.times_s.empty()
+                        ? "–"
+                        : (Fmt(f.times_s.front(), "") + "–" + Fmt(f.times_s.back(), "")).c_str(),
                     Fmt(f.recovery_time_s, " s").c_str());
       h += buf;
     }
@@ -225,8 +260,8 @@ void WriteReportHtml(const RunReport& r, const ReportSeries& s, const std::strin
   h += "<h2>Plots</h2>\n";
   for (const auto& p : plots) h += "<p><img src=\"" + p + "\" alt=\"" + p + "\"></p>\n";
   h += "<h2>Artefacts</h2>\n<ul>";
-  for (const char* f : {"report.json", "junit.xml", "truth.csv", "estimate.csv", "gnss_fixes.csv", "captures/",
-                        "estimator.stderr"}) {
+  for (const char* f : {"report.json", "junit.xml", "truth.csv", "estimate.csv", "gnss_fixes.csv",
+                        "captures/", "estimator.stderr"}) {
     h += std::string("<li><a href=\"") + f + "\">" + f + "</a></li>";
   }
   h += "</ul>\n</body></html>\n";

@@ -5,8 +5,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <nlohmann/json.hpp>
 #include <stdexcept>
+
+#include <nlohmann/json.hpp>
 
 #include "hil/firmware_emu/gnss/gps_time.h"
 #include "hil/harness/eval/evaluator.h"
@@ -40,23 +41,24 @@ void WriteNavdConfig(const std::string& path, const Scenario& s, const std::stri
   const bool imu_can = s.mcu.enabled && s.can.imu_to_estimator;
   const bool imu = imu_can || (s.mcu.enabled && s.mcu.config.format == mcu::SerialFormat::kBinary);
   if (imu_can) {
-    out << "\n[imu]\nsource = can\ncan_interface = " << s.can.interface
-        << "\nsource_address = " << static_cast<int>(s.mcu.config.can.address.source_address) << "\n";
+    out << "\n[imu]\nsource = can\ncan_interface = " << s.can.interface << "\nsource_address = "
+        << static_cast<int>(s.mcu.config.can.address.source_address) << "\n";
   } else if (imu) {
     const std::filesystem::path dir = std::filesystem::path(gnss_device).parent_path();
     out << "imu_device = " << (dir / s.mcu.link).string() << "\nimu_baud = " << s.mcu.config.baud
         << "\nimu_format = mcu\n";
   }
   for (const auto& [key, value] : s.estimator.navd_input) out << key << " = " << value << "\n";
-  out << "\n[time]\nleap_seconds = " << gnss::LeapSecondsAtUnix(s.start_unix_ns / 1000000000LL) << "\n\n"
+  out << "\n[time]\nleap_seconds = " << gnss::LeapSecondsAtUnix(s.start_unix_ns / 1000000000LL)
+      << "\n\n"
       << "[filter]\nmode = " << s.estimator.navd_mode << "\n";
   // navd's body origin is the IMU: the antenna relative to the board
   const Eigen::Vector3d lever = s.gnss.model.p_BA_B_m - s.mcu.config.mounting.p_BI_B_m;
   if (imu) out << "lever_arm_m = " << lever.x() << ", " << lever.y() << ", " << lever.z() << "\n";
   for (const auto& [key, value] : s.estimator.navd_filter) out << key << " = " << value << "\n";
   if (s.estimator.navd_mode == "multi_gnss") WriteNavdReceivers(out, s, gnss_device);
-  // n2k_socketcan: the solution is read from navd's NMEA 2000 frames on the bus; its JSON lines stay
-  // on stdout (not scored: estimate.jsonl) so the harness still reads navd's health object
+  // n2k_socketcan: the solution is read from navd's NMEA 2000 frames on the bus; its JSON lines
+  // stay on stdout (not scored: estimate.jsonl) so the harness still reads navd's health object
   if (s.estimator.output == "n2k_socketcan") {
     out << "\n[output]\njson = -\ncan_interface = " << s.can.interface << "\n";
   } else {
@@ -76,12 +78,13 @@ void WriteTruthCsv(const Scenario& s, const std::string& path, std::vector<doubl
   WriteTruthCsv(TruthTable(s.truth, TruthCsvTimes(s)), s, path, t_s, en_m);
 }
 
-void WriteTruthCsv(const TruthTable& truth, const Scenario& s, const std::string& path, std::vector<double>& t_s,
-                   std::vector<Eigen::Vector2d>& en_m) {
+void WriteTruthCsv(const TruthTable& truth, const Scenario& s, const std::string& path,
+                   std::vector<double>& t_s, std::vector<Eigen::Vector2d>& en_m) {
   std::ofstream truth_csv(path);
   if (!truth_csv) throw std::runtime_error("cannot write " + path);
   truth_csv << "t_s,lat_deg,lon_deg,height_m,e_m,n_m,u_m,v_e_mps,v_n_mps,v_u_mps,yaw_deg,speed_mps,"
-               "roll_deg,pitch_deg,w_x_radps,w_y_radps,w_z_radps,f_x_mps2,f_y_mps2,f_z_mps2,steer_deg,cross_track_m\n";
+               "roll_deg,pitch_deg,w_x_radps,w_y_radps,w_z_radps,f_x_mps2,f_y_mps2,f_z_mps2,steer_"
+               "deg,cross_track_m\n";
   char line[640];
   for (const Time t : TruthCsvTimes(s)) {
     const TruthSample& x = truth.At(t);
@@ -91,12 +94,14 @@ void WriteTruthCsv(const TruthTable& truth, const Scenario& s, const std::string
     const double pitch_deg = -std::asin(std::clamp(R(2, 0), -1.0, 1.0)) * 180.0 / M_PI;
     const double roll_deg = std::atan2(R(2, 1), R(2, 2)) * 180.0 / M_PI;
     std::snprintf(line, sizeof line,
-                  "%.3f,%.10f,%.10f,%.4f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.5f,%.6f,%.5f,%.5f,%.8f,%.8f,%.8f,%.6f,%.6f,%.6f,"
+                  "%.3f,%.10f,%.10f,%.4f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.5f,%.6f,%.5f,%.5f,%.8f,%."
+                  "8f,%.8f,%.6f,%.6f,%.6f,"
                   "%.4f,%.6f\n",
-                  ToSeconds(t), x.lat_deg, x.lon_deg, x.height_m, x.p_NB_N_m.x(), x.p_NB_N_m.y(), x.p_NB_N_m.z(),
-                  x.v_NB_N_mps.x(), x.v_NB_N_mps.y(), x.v_NB_N_mps.z(), std::atan2(fwd.x(), fwd.y()) * 180.0 / M_PI,
-                  x.speed_mps, roll_deg, pitch_deg, x.w_IB_B_radps.x(), x.w_IB_B_radps.y(), x.w_IB_B_radps.z(),
-                  x.f_B_mps2.x(), x.f_B_mps2.y(), x.f_B_mps2.z(), x.steer_rad * 180.0 / M_PI, x.cross_track_m);
+                  ToSeconds(t), x.lat_deg, x.lon_deg, x.height_m, x.p_NB_N_m.x(), x.p_NB_N_m.y(),
+                  x.p_NB_N_m.z(), x.v_NB_N_mps.x(), x.v_NB_N_mps.y(), x.v_NB_N_mps.z(),
+                  std::atan2(fwd.x(), fwd.y()) * 180.0 / M_PI, x.speed_mps, roll_deg, pitch_deg,
+                  x.w_IB_B_radps.x(), x.w_IB_B_radps.y(), x.w_IB_B_radps.z(), x.f_B_mps2.x(),
+                  x.f_B_mps2.y(), x.f_B_mps2.z(), x.steer_rad * 180.0 / M_PI, x.cross_track_m);
     truth_csv << line;
     t_s.push_back(ToSeconds(t));
     en_m.emplace_back(x.p_NB_N_m.x(), x.p_NB_N_m.y());
@@ -109,14 +114,20 @@ void WriteScheduleErrors(const DeviceSet& set, const std::string& path) {
     for (const auto& ep : ports) {
       const auto& e = ep->schedule_error_us();
       if (e.empty()) continue;
-      sched.push_back({{"link", ep->link_name()}, {"bytes", e.size()}, {"p50_us", Percentile(e, 50)},
-                       {"p99_us", Percentile(e, 99)}, {"max_us", Percentile(e, 100)}});
+      sched.push_back({{"link", ep->link_name()},
+                       {"bytes", e.size()},
+                       {"p50_us", Percentile(e, 50)},
+                       {"p99_us", Percentile(e, 99)},
+                       {"max_us", Percentile(e, 100)}});
     }
   }
   if (set.can && !set.can->schedule_error_us().empty()) {
     const auto& e = set.can->schedule_error_us();
-    sched.push_back({{"link", set.can->iface()}, {"frames", e.size()}, {"p50_us", Percentile(e, 50)},
-                     {"p99_us", Percentile(e, 99)}, {"max_us", Percentile(e, 100)}});
+    sched.push_back({{"link", set.can->iface()},
+                     {"frames", e.size()},
+                     {"p50_us", Percentile(e, 50)},
+                     {"p99_us", Percentile(e, 99)},
+                     {"max_us", Percentile(e, 100)}});
   }
   if (!sched.empty()) std::ofstream(path) << sched.dump(2) << "\n";
 }

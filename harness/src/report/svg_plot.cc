@@ -1,11 +1,12 @@
 #include "hil/harness/report/svg_plot.h"
-#include "hil/harness/report/report.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <sstream>
+
+#include "hil/harness/report/report.h"
 
 namespace hil::harness {
 namespace {
@@ -19,7 +20,8 @@ std::string Num(double v) {
 std::string TickLabel(double v, double step) {
   char b[32];
   const int decimals = step >= 1 ? 0 : static_cast<int>(std::ceil(-std::log10(step) - 1e-9));
-  std::snprintf(b, sizeof b, "%.*f", std::clamp(decimals, 0, 6), std::abs(v) < step * 1e-6 ? 0.0 : v);
+  std::snprintf(b, sizeof b, "%.*f", std::clamp(decimals, 0, 6),
+                std::abs(v) < step * 1e-6 ? 0.0 : v);
   return b;
 }
 
@@ -41,7 +43,8 @@ std::vector<double> NiceTicks(double lo, double hi, int target_count) {
 
 std::string RenderSvg(const PlotChart& c) {
   const double W = c.width_px, H = c.height_px;
-  const double ml = 70, mr = 20, mt = 36, mb = 52 + 18.0 * static_cast<double>((c.series.size() + 2) / 3);
+  const double ml = 70, mr = 20, mt = 36,
+               mb = 52 + 18.0 * static_cast<double>((c.series.size() + 2) / 3);
   const double pw = W - ml - mr, ph = H - mt - mb;
   double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
   for (const auto& s : c.series) {
@@ -74,38 +77,43 @@ std::string RenderSvg(const PlotChart& c) {
   const auto Y = [&](double v) { return mt + ph - (v - y0) / (y1 - y0) * ph; };
 
   std::ostringstream o;
-  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << c.width_px << "\" height=\"" << c.height_px
-    << "\" viewBox=\"0 0 " << c.width_px << " " << c.height_px << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
+  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << c.width_px << "\" height=\""
+    << c.height_px << "\" viewBox=\"0 0 " << c.width_px << " " << c.height_px
+    << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
   o << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  o << "<text x=\"" << Num(W / 2) << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">" << XmlEscape(c.title) << "</text>\n";
-  o << "<defs><clipPath id=\"plot\"><rect x=\"" << Num(ml) << "\" y=\"" << Num(mt) << "\" width=\"" << Num(pw)
-    << "\" height=\"" << Num(ph) << "\"/></clipPath></defs>\n";
+  o << "<text x=\"" << Num(W / 2) << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">"
+    << XmlEscape(c.title) << "</text>\n";
+  o << "<defs><clipPath id=\"plot\"><rect x=\"" << Num(ml) << "\" y=\"" << Num(mt) << "\" width=\""
+    << Num(pw) << "\" height=\"" << Num(ph) << "\"/></clipPath></defs>\n";
   for (const auto& b : c.bands) {
-    o << "<rect x=\"" << Num(X(b.x0)) << "\" y=\"" << Num(mt) << "\" width=\"" << Num(X(b.x1) - X(b.x0))
-      << "\" height=\"" << Num(ph) << "\" fill=\"#f4b183\" fill-opacity=\"0.35\"><title>" << XmlEscape(b.label)
+    o << "<rect x=\"" << Num(X(b.x0)) << "\" y=\"" << Num(mt) << "\" width=\""
+      << Num(X(b.x1) - X(b.x0)) << "\" height=\"" << Num(ph)
+      << "\" fill=\"#f4b183\" fill-opacity=\"0.35\"><title>" << XmlEscape(b.label)
       << "</title></rect>\n";
   }
   const auto xt = NiceTicks(x0, x1, 8), yt = NiceTicks(y0, y1, 6);
   const double xstep = xt.size() > 1 ? xt[1] - xt[0] : 1, ystep = yt.size() > 1 ? yt[1] - yt[0] : 1;
   for (const double v : xt) {
-    o << "<line x1=\"" << Num(X(v)) << "\" y1=\"" << Num(mt) << "\" x2=\"" << Num(X(v)) << "\" y2=\"" << Num(mt + ph)
-      << "\" stroke=\"#e0e0e0\"/>\n<text x=\"" << Num(X(v)) << "\" y=\"" << Num(mt + ph + 16)
-      << "\" text-anchor=\"middle\">" << TickLabel(v, xstep) << "</text>\n";
+    o << "<line x1=\"" << Num(X(v)) << "\" y1=\"" << Num(mt) << "\" x2=\"" << Num(X(v))
+      << "\" y2=\"" << Num(mt + ph) << "\" stroke=\"#e0e0e0\"/>\n<text x=\"" << Num(X(v))
+      << "\" y=\"" << Num(mt + ph + 16) << "\" text-anchor=\"middle\">" << TickLabel(v, xstep)
+      << "</text>\n";
   }
   for (const double v : yt) {
-    o << "<line x1=\"" << Num(ml) << "\" y1=\"" << Num(Y(v)) << "\" x2=\"" << Num(ml + pw) << "\" y2=\"" << Num(Y(v))
-      << "\" stroke=\"#e0e0e0\"/>\n<text x=\"" << Num(ml - 6) << "\" y=\"" << Num(Y(v) + 4)
-      << "\" text-anchor=\"end\">" << TickLabel(v, ystep) << "</text>\n";
+    o << "<line x1=\"" << Num(ml) << "\" y1=\"" << Num(Y(v)) << "\" x2=\"" << Num(ml + pw)
+      << "\" y2=\"" << Num(Y(v)) << "\" stroke=\"#e0e0e0\"/>\n<text x=\"" << Num(ml - 6)
+      << "\" y=\"" << Num(Y(v) + 4) << "\" text-anchor=\"end\">" << TickLabel(v, ystep)
+      << "</text>\n";
   }
-  o << "<rect x=\"" << Num(ml) << "\" y=\"" << Num(mt) << "\" width=\"" << Num(pw) << "\" height=\"" << Num(ph)
-    << "\" fill=\"none\" stroke=\"#444\"/>\n";
-  o << "<text x=\"" << Num(ml + pw / 2) << "\" y=\"" << Num(mt + ph + 34) << "\" text-anchor=\"middle\">"
-    << XmlEscape(c.x_label) << "</text>\n";
-  o << "<text transform=\"translate(16," << Num(mt + ph / 2) << ") rotate(-90)\" text-anchor=\"middle\">"
-    << XmlEscape(c.y_label) << "</text>\n";
+  o << "<rect x=\"" << Num(ml) << "\" y=\"" << Num(mt) << "\" width=\"" << Num(pw) << "\" height=\""
+    << Num(ph) << "\" fill=\"none\" stroke=\"#444\"/>\n";
+  o << "<text x=\"" << Num(ml + pw / 2) << "\" y=\"" << Num(mt + ph + 34)
+    << "\" text-anchor=\"middle\">" << XmlEscape(c.x_label) << "</text>\n";
+  o << "<text transform=\"translate(16," << Num(mt + ph / 2)
+    << ") rotate(-90)\" text-anchor=\"middle\">" << XmlEscape(c.y_label) << "</text>\n";
   if (empty) {
-    o << "<text x=\"" << Num(ml + pw / 2) << "\" y=\"" << Num(mt + ph / 2) << "\" text-anchor=\"middle\" fill=\"#888\">"
-      << XmlEscape(c.empty_note) << "</text>\n";
+    o << "<text x=\"" << Num(ml + pw / 2) << "\" y=\"" << Num(mt + ph / 2)
+      << "\" text-anchor=\"middle\" fill=\"#888\">" << XmlEscape(c.empty_note) << "</text>\n";
   }
   o << "<g clip-path=\"url(#plot)\">\n";
   for (const auto& s : c.series) {
@@ -113,37 +121,42 @@ std::string RenderSvg(const PlotChart& c) {
     if (s.style == PlotSeries::Style::kLine && n > 0) {
       o << "<polyline fill=\"none\" stroke=\"" << s.color << "\" stroke-width=\"1.6\" points=\"";
       for (std::size_t i = 0; i < n; ++i) {
-        if (std::isfinite(s.x[i]) && std::isfinite(s.y[i])) o << Num(X(s.x[i])) << "," << Num(Y(s.y[i])) << " ";
+        if (std::isfinite(s.x[i]) && std::isfinite(s.y[i]))
+          o << Num(X(s.x[i])) << "," << Num(Y(s.y[i])) << " ";
       }
       o << "\"/>\n";
     } else if (s.style == PlotSeries::Style::kPoints) {
       for (std::size_t i = 0; i < n; ++i) {
         if (std::isfinite(s.x[i]) && std::isfinite(s.y[i])) {
-          o << "<circle cx=\"" << Num(X(s.x[i])) << "\" cy=\"" << Num(Y(s.y[i])) << "\" r=\"2\" fill=\"" << s.color
-            << "\" fill-opacity=\"0.7\"/>\n";
+          o << "<circle cx=\"" << Num(X(s.x[i])) << "\" cy=\"" << Num(Y(s.y[i]))
+            << "\" r=\"2\" fill=\"" << s.color << "\" fill-opacity=\"0.7\"/>\n";
         }
       }
     } else if (s.style == PlotSeries::Style::kBars) {
       for (std::size_t i = 0; i < n; ++i) {
         const double xa = X(s.x[i] - s.bar_width / 2), xb = X(s.x[i] + s.bar_width / 2);
         const double ya = Y(std::max(s.y[i], y0)), yb = Y(std::max(0.0, y0));
-        o << "<rect x=\"" << Num(xa) << "\" y=\"" << Num(ya) << "\" width=\"" << Num(std::max(0.5, xb - xa - 1))
-          << "\" height=\"" << Num(std::max(0.0, yb - ya)) << "\" fill=\"" << s.color << "\"/>\n";
+        o << "<rect x=\"" << Num(xa) << "\" y=\"" << Num(ya) << "\" width=\""
+          << Num(std::max(0.5, xb - xa - 1)) << "\" height=\"" << Num(std::max(0.0, yb - ya))
+          << "\" fill=\"" << s.color << "\"/>\n";
       }
     }
   }
   o << "</g>\n";
   // legend below the axis label, three entries per row
   for (std::size_t i = 0; i < c.series.size(); ++i) {
-    const double lx = ml + static_cast<double>(i % 3) * (pw / 3), ly = mt + ph + 52 + static_cast<double>(i / 3) * 18;
-    o << "<rect x=\"" << Num(lx) << "\" y=\"" << Num(ly - 9) << "\" width=\"14\" height=\"10\" fill=\""
-      << c.series[i].color << "\"/><text x=\"" << Num(lx + 20) << "\" y=\"" << Num(ly) << "\">" << XmlEscape(c.series[i].label)
+    const double lx = ml + static_cast<double>(i % 3) * (pw / 3),
+                 ly = mt + ph + 52 + static_cast<double>(i / 3) * 18;
+    o << "<rect x=\"" << Num(lx) << "\" y=\"" << Num(ly - 9)
+      << "\" width=\"14\" height=\"10\" fill=\"" << c.series[i].color << "\"/><text x=\""
+      << Num(lx + 20) << "\" y=\"" << Num(ly) << "\">" << XmlEscape(c.series[i].label)
       << "</text>\n";
   }
   if (!c.bands.empty()) {
     const double lx = ml + static_cast<double>(c.series.size() % 3) * (pw / 3),
                  ly = mt + ph + 52 + static_cast<double>(c.series.size() / 3) * 18;
-    o << "<rect x=\"" << Num(lx) << "\" y=\"" << Num(ly - 9) << "\" width=\"14\" height=\"10\" fill=\"#f4b183\"/>"
+    o << "<rect x=\"" << Num(lx) << "\" y=\"" << Num(ly - 9)
+      << "\" width=\"14\" height=\"10\" fill=\"#f4b183\"/>"
       << "<text x=\"" << Num(lx + 20) << "\" y=\"" << Num(ly) << "\">GNSS outage</text>\n";
   }
   o << "</svg>\n";

@@ -8,22 +8,28 @@ namespace hil::harness {
 nlohmann::json CanBusJson(const CanBusReport& c) {
   nlohmann::json per_pgn = nlohmann::json::object();
   for (const auto& [pgn, n] : c.received_per_pgn) per_pgn[std::to_string(pgn)] = n;
-  return {{"interface", c.interface},         {"frames_sent", c.frames_sent},
-          {"frames_received", c.frames_received}, {"rx_queue_drops", c.rx_queue_drops},
-          {"send_queue_full", c.send_queue_full}, {"send_failures", c.send_failures},
-          {"error_frames", c.error_frames},     {"lost", c.lost()},
+  return {{"interface", c.interface},
+          {"frames_sent", c.frames_sent},
+          {"frames_received", c.frames_received},
+          {"rx_queue_drops", c.rx_queue_drops},
+          {"send_queue_full", c.send_queue_full},
+          {"send_failures", c.send_failures},
+          {"error_frames", c.error_frames},
+          {"lost", c.lost()},
           {"received_per_pgn", per_pgn}};
 }
 
 void CheckCanRunMode(const Scenario& s, const RunOptions& opt) {
   if (!s.can.imu_to_estimator || opt.emulate_only || opt.mode != RunMode::kVirtual) return;
-  throw std::runtime_error("scenario " + s.name +
-                           " feeds the estimator's IMU over CAN (can: imu_to_estimator): J1939 IMU frames carry no "
-                           "sample time, the estimator stamps them on arrival, so run it with --mode realtime or "
-                           "--mode scaled --speed N (virtual mode sends every frame at once)");
+  throw std::runtime_error(
+      "scenario " + s.name +
+      " feeds the estimator's IMU over CAN (can: imu_to_estimator): J1939 IMU frames carry no "
+      "sample time, the estimator stamps them on arrival, so run it with --mode realtime or "
+      "--mode scaled --speed N (virtual mode sends every frame at once)");
 }
 
-void AddCanBusReport(const CanEndpoint& bus, const std::map<std::uint32_t, std::uint64_t>& received_per_pgn,
+void AddCanBusReport(const CanEndpoint& bus,
+                     const std::map<std::uint32_t, std::uint64_t>& received_per_pgn,
                      RunReport& report) {
   const link::CanPortStats& st = bus.stats();
   CanBusReport c;
@@ -37,7 +43,8 @@ void AddCanBusReport(const CanEndpoint& bus, const std::map<std::uint32_t, std::
   c.received_per_pgn = received_per_pgn;
   if (c.lost() > 0) {
     report.problems.push_back("the CAN bus " + c.interface + " lost " + std::to_string(c.lost()) +
-                              " frame(s): " + std::to_string(c.rx_queue_drops) + " dropped by the receive queue, " +
+                              " frame(s): " + std::to_string(c.rx_queue_drops) +
+                              " dropped by the receive queue, " +
                               std::to_string(c.send_queue_full + c.send_failures) + " never sent");
   }
   report.can = c;

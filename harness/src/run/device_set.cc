@@ -10,7 +10,7 @@ namespace {
 constexpr std::uint64_t kSeedStride = 1000003ULL;
 enum SeedStream : std::uint64_t { kGnssStream = 1, kMcuStream = 2 };
 constexpr std::uint64_t kGnssCommonOffset = 0x5151;  // the error part shared by all receivers
-constexpr std::uint64_t kReceiverStride = 7919;       // each receiver's own part
+constexpr std::uint64_t kReceiverStride = 7919;      // each receiver's own part
 
 // One Neo5mDevice per receiver of the gnss section, each on its own pty (ttyGPS, ttyGPS1, ...).
 void AddGnss(const Scenario& s, std::uint64_t seed, const std::string& dir, DeviceSet& set) {
@@ -39,7 +39,8 @@ void AddGnss(const Scenario& s, std::uint64_t seed, const std::string& dir, Devi
         g.kind = gnss::GnssFault::Kind::kDataGap;
       } else if (f.kind == FaultKind::kGnssGlitch) {
         g.kind = gnss::GnssFault::Kind::kStep;
-        g.offset_N_m = Eigen::Vector3d(f.Param("east_m", 0), f.Param("north_m", 0), f.Param("up_m", 0));
+        g.offset_N_m =
+            Eigen::Vector3d(f.Param("east_m", 0), f.Param("north_m", 0), f.Param("up_m", 0));
       } else if (f.kind == FaultKind::kGnssOverload) {
         g.kind = gnss::GnssFault::Kind::kOverload;
       } else {
@@ -53,7 +54,8 @@ void AddGnss(const Scenario& s, std::uint64_t seed, const std::string& dir, Devi
     set.fix_sources.push_back([raw] { return &raw->last_fix(); });
     const std::string path = dir + "/" + rx.link;
     std::vector<std::unique_ptr<SerialEndpoint>> ports;
-    ports.push_back(std::make_unique<SerialEndpoint>(rx.link, path, dev->baud(0), s.gnss.tx_buffer_bytes,
+    ports.push_back(std::make_unique<SerialEndpoint>(rx.link, path, dev->baud(0),
+                                                     s.gnss.tx_buffer_bytes,
                                                      dir + "/captures/" + rx.link + ".cap"));
     set.links.emplace_back(rx.link, path);
     set.devices.push_back(std::move(dev));
@@ -78,8 +80,8 @@ void AddMcu(const Scenario& s, std::uint64_t seed, const std::string& dir, Devic
   auto dev = std::make_unique<mcu::McuDevice>(cfg, seed * kSeedStride + kMcuStream);
   const std::string path = dir + "/" + s.mcu.link;
   std::vector<std::unique_ptr<SerialEndpoint>> ports;
-  ports.push_back(std::make_unique<SerialEndpoint>(s.mcu.link, path, cfg.baud, s.mcu.tx_buffer_bytes,
-                                                   dir + "/captures/" + s.mcu.link + ".cap"));
+  ports.push_back(std::make_unique<SerialEndpoint>(
+      s.mcu.link, path, cfg.baud, s.mcu.tx_buffer_bytes, dir + "/captures/" + s.mcu.link + ".cap"));
   set.links.emplace_back(s.mcu.link, path);
   set.devices.push_back(std::move(dev));
   set.endpoints.push_back(std::move(ports));
@@ -90,8 +92,8 @@ void AddMcu(const Scenario& s, std::uint64_t seed, const std::string& dir, Devic
 DeviceSet BuildDevices(const Scenario& scenario, std::uint64_t seed, const std::string& run_dir) {
   DeviceSet set;
   if (!scenario.can.interface.empty()) {
-    set.can = std::make_unique<CanEndpoint>(scenario.can.interface, run_dir + "/captures", scenario.start_unix_ns,
-                                            scenario.can.fd);
+    set.can = std::make_unique<CanEndpoint>(scenario.can.interface, run_dir + "/captures",
+                                            scenario.start_unix_ns, scenario.can.fd);
   }
   AddGnss(scenario, seed, run_dir, set);
   AddMcu(scenario, seed, run_dir, set);

@@ -10,7 +10,8 @@ namespace {
 constexpr std::int64_t kRedrawNs = 200'000'000;
 }
 
-ProgressLine::ProgressLine(bool enabled) : enabled_(enabled), wall_start_ns_(link::RealtimePacer::MonotonicNs()) {}
+ProgressLine::ProgressLine(bool enabled)
+    : enabled_(enabled), wall_start_ns_(link::RealtimePacer::MonotonicNs()) {}
 
 ProgressLine::~ProgressLine() { Finish(); }
 
@@ -22,8 +23,8 @@ void ProgressLine::Update(double sim_s, double total_s, std::size_t solutions) {
   drawn_ = true;
   const double wall_s = static_cast<double>(now - wall_start_ns_) * 1e-9;
   const double pct = total_s > 0 ? 100.0 * sim_s / total_s : 0.0;
-  std::fprintf(stderr, "\r\033[K[%6.1f/%.1f s %3.0f%%] %6.1fx real time  %zu solutions", sim_s, total_s, pct,
-               wall_s > 0 ? sim_s / wall_s : 0.0, solutions);
+  std::fprintf(stderr, "\r\033[K[%6.1f/%.1f s %3.0f%%] %6.1fx real time  %zu solutions", sim_s,
+               total_s, pct, wall_s > 0 ? sim_s / wall_s : 0.0, solutions);
   std::fflush(stderr);
 }
 

@@ -4,11 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <csignal>
+#include <cstdio>
 #include <filesystem>
-#include <functional>
 #include <fstream>
+#include <functional>
 #include <set>
 #include <stdexcept>
 
@@ -17,18 +17,18 @@
 #include "hil/firmware_emu/link/pty_port.h"
 #include "hil/firmware_emu/link/realtime_pacer.h"
 #include "hil/firmware_emu/mcu/mcu_device.h"
-#include "hil/harness/faults/byte_faults.h"
-#include "hil/harness/run/can_run.h"
-#include "hil/harness/eval/cross_track.h"
-#include "hil/harness/run/device_set.h"
 #include "hil/harness/dut/estimate_collector.h"
 #include "hil/harness/dut/estimator_process.h"
-#include "hil/harness/eval/outage_metrics.h"
 #include "hil/harness/dut/process_group.h"
-#include "hil/harness/run/progress.h"
+#include "hil/harness/eval/cross_track.h"
+#include "hil/harness/eval/outage_metrics.h"
+#include "hil/harness/faults/byte_faults.h"
 #include "hil/harness/report/report_html.h"
-#include "hil/harness/run/run_guard.h"
 #include "hil/harness/report/run_outputs.h"
+#include "hil/harness/run/can_run.h"
+#include "hil/harness/run/device_set.h"
+#include "hil/harness/run/progress.h"
+#include "hil/harness/run/run_guard.h"
 #include "hil/harness/run/scheduler.h"
 #include "hil/harness/run/truth_table.h"
 #include "hil/harness/run/virtual_gate.h"
@@ -38,7 +38,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr double kDrainQuietS = 0.5;               // estimator output quiet this long after the last byte: done
+constexpr double kDrainQuietS = 0.5;  // estimator output quiet this long after the last byte: done
 // virtual mode: the most bytes one link may hold unread by the host (the order across links is
 // VirtualGate's: before one link's bytes, the others are read to the last byte)
 constexpr std::size_t kLinkBacklogBytes = 2048;
@@ -46,13 +46,14 @@ constexpr std::size_t kLinkBacklogBytes = 2048;
 // in this many consecutive checks this far apart, has finished its output
 constexpr int kIdleChecks = 3;
 constexpr useconds_t kIdleCheckUs = 1000;
-constexpr const char* kNavLink = "ttyNAV";         // pty the estimator writes NMEA into (output nmea_pty)
+constexpr const char* kNavLink = "ttyNAV";  // pty the estimator writes NMEA into (output nmea_pty)
 
 std::int64_t Now() { return link::RealtimePacer::MonotonicNs(); }
 double SecondsSince(std::int64_t t0) { return static_cast<double>(Now() - t0) * 1e-9; }
 
 // The links the estimator reads: those named in its command ({ttyGPS}) or, for navd, in navd.conf.
-std::set<std::string> HostLinks(const Scenario& s, const std::string& raw_command, const DeviceSet& set) {
+std::set<std::string> HostLinks(const Scenario& s, const std::string& raw_command,
+                                const DeviceSet& set) {
   std::set<std::string> used;
   for (const auto& [name, path] : set.links) {
     if (raw_command.find("{" + name + "}") != std::string::npos) used.insert(name);
@@ -62,7 +63,8 @@ std::set<std::string> HostLinks(const Scenario& s, const std::string& raw_comman
     if (s.estimator.navd_mode == "multi_gnss") {
       for (const auto& rx : s.gnss.receivers) used.insert(rx.link);  // navd reads every receiver
     }
-    if (s.mcu.enabled && s.estimator.navd_mode != "gnss_only" && !s.can.imu_to_estimator) used.insert(s.mcu.link);
+    if (s.mcu.enabled && s.estimator.navd_mode != "gnss_only" && !s.can.imu_to_estimator)
+      used.insert(s.mcu.link);
   }
   return used;
 }
@@ -86,11 +88,13 @@ std::string ModeName(RunMode mode, double speed) {
   return std::abs(speed - 1.0) < 1e-12 ? "realtime" : "scaled";
 }
 
-std::string Substitute(const std::string& text, const std::vector<std::pair<std::string, std::string>>& vars) {
+std::string Substitute(const std::string& text,
+                       const std::vector<std::pair<std::string, std::string>>& vars) {
   std::string out = text;
   for (const auto& [key, value] : vars) {
     const std::string pattern = "{" + key + "}";
-    for (std::size_t pos = 0; (pos = out.find(pattern, pos)) != std::string::npos; pos += value.size()) {
+    for (std::size_t pos = 0; (pos = out.find(pattern, pos)) != std::string::npos;
+         pos += value.size()) {
       out.replace(pos, pattern.size(), value);
     }
   }
@@ -99,12 +103,14 @@ std::string Substitute(const std::string& text, const std::vector<std::pair<std:
 
 RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
   const std::int64_t wall_start = Now();
-  const InterruptGuard interrupt_guard;  // Ctrl-C / SIGTERM: stop the estimator, write an incomplete report
+  const InterruptGuard
+      interrupt_guard;  // Ctrl-C / SIGTERM: stop the estimator, write an incomplete report
   ClearWriteFailures();
   std::error_code ec;
   fs::create_directories(opt.out_dir, ec);
   if (ec || access(opt.out_dir.c_str(), W_OK) != 0) {
-    throw std::runtime_error("cannot write the output folder " + opt.out_dir + (ec ? ": " + ec.message() : ""));
+    throw std::runtime_error("cannot write the output folder " + opt.out_dir +
+                             (ec ? ": " + ec.message() : ""));
   }
   CheckCanRunMode(scenario, opt);
   const std::string dir = fs::absolute(opt.out_dir).string();
@@ -122,8 +128,9 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
   report.sim_time_s = scenario.duration_s;
   report.estimator_output = scenario.estimator.output;
   for (const Fault& f : scenario.faults.faults) {
-    report.faults.emplace_back(FaultKindName(f.kind), Seconds(f.start) + "-" + Seconds(f.end) + " s" +
-                                                          (f.link.empty() ? "" : " on " + f.link));
+    report.faults.emplace_back(
+        FaultKindName(f.kind),
+        Seconds(f.start) + "-" + Seconds(f.end) + " s" + (f.link.empty() ? "" : " on " + f.link));
   }
 
   FaultRecorder fault_recorder(scenario.faults);
@@ -155,7 +162,8 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
     estimator.emplace(command, dir + "/estimator.stderr");
     report.estimator_pid = estimator->pid();
     // time for the program to open its devices (gpsd flushes a tty's input when it opens it)
-    if (scenario.estimator.startup_s > 0) usleep(static_cast<useconds_t>(scenario.estimator.startup_s * 1e6));
+    if (scenario.estimator.startup_s > 0)
+      usleep(static_cast<useconds_t>(scenario.estimator.startup_s * 1e6));
   }
   const std::int64_t estimator_start = Now();
   std::optional<link::RealtimePacer> pacer;
@@ -176,15 +184,21 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
   const auto interrupted = [&] {
     if (stop_reason) return true;
     if (const int sig = InterruptGuard::received()) {
-      stop_reason = std::string("interrupted by ") + (sig == SIGINT ? "SIGINT" : sig == SIGTERM ? "SIGTERM" : "SIGHUP") +
+      stop_reason = std::string("interrupted by ") +
+                    (sig == SIGINT    ? "SIGINT"
+                     : sig == SIGTERM ? "SIGTERM"
+                                      : "SIGHUP") +
                     " at t = " + Seconds(t_now) + " s of " + Secs(scenario.duration_s) + " s";
     } else if (const auto file = FirstWriteFailure()) {
-      stop_reason = "cannot write " + *file + " (disk full, file size limit or folder removed) at t = " +
-                    Seconds(t_now) + " s";
+      stop_reason = "cannot write " + *file +
+                    " (disk full, file size limit or folder removed) at t = " + Seconds(t_now) +
+                    " s";
     }
     return stop_reason.has_value();
   };
-  const auto silent_for_ns = [&] { return Now() - std::max(collector.last_output_wall_ns(), estimator_start); };
+  const auto silent_for_ns = [&] {
+    return Now() - std::max(collector.last_output_wall_ns(), estimator_start);
+  };
 
   // ---- the run ----
   ByteFaultInjector byte_faults(scenario.faults, seed, &fault_recorder);
@@ -192,7 +206,8 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
   Scheduler scheduler(scenario, set, byte_faults, pacer ? &*pacer : nullptr, fixes_csv);
   scheduler.set_recorder(&fault_recorder);
   if (scenario.estimator.output == "n2k_socketcan") {
-    collector.AttachBus([&]() -> const std::vector<CanFrame>& { return scheduler.PollBus(); }, scenario.start_unix_ns);
+    collector.AttachBus([&]() -> const std::vector<CanFrame>& { return scheduler.PollBus(); },
+                        scenario.start_unix_ns);
   }
   std::optional<std::string> hang;
   // virtual mode: the host sees its links' bytes in emulated-time order (virtual_gate.h); a wait
@@ -202,19 +217,21 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
     std::vector<SerialEndpoint*> read_by_host;
     for (const auto& ports : set.endpoints) {
       for (const auto& ep : ports) {
-        if (host_links.empty() || host_links.count(ep->link_name())) read_by_host.push_back(ep.get());
+        if (host_links.empty() || host_links.count(ep->link_name()))
+          read_by_host.push_back(ep.get());
       }
     }
-    const auto on_wait = [&, read_by_host, wait_unread = std::size_t{0}, wait_progress_ns = std::int64_t{0}](
-                             std::size_t unread, bool new_wait) mutable {
+    const auto on_wait = [&, read_by_host, wait_unread = std::size_t{0},
+                          wait_progress_ns = std::int64_t{0}](std::size_t unread,
+                                                              bool new_wait) mutable {
       if (new_wait || unread < wait_unread) wait_progress_ns = Now();
       wait_unread = unread;
       collector.Poll();
       if (interrupted() || !estimator_running()) return false;
       if (Now() - wait_progress_ns <= silence_ns) return true;
       if (silent_for_ns() > silence_ns) {
-        hang = "it stopped reading its input and is silent (" + std::to_string(unread) + " bytes unread for " +
-               Secs(silence_s) + " s)";
+        hang = "it stopped reading its input and is silent (" + std::to_string(unread) +
+               " bytes unread for " + Secs(silence_s) + " s)";
         return false;
       }
       // still talking but no longer reading: the port was closed by the peer (or is ignored)
@@ -231,7 +248,8 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
     scheduler.set_gate(&*gate);
   }
   // the truth for the evaluation, sampled on a thread of its own as the run goes (truth_table.h)
-  const Time t_end = TimeFromSeconds(scenario.duration_s), t_from = TimeFromSeconds(scenario.evaluate_from_s);
+  const Time t_end = TimeFromSeconds(scenario.duration_s),
+             t_from = TimeFromSeconds(scenario.evaluate_from_s);
   TruthTableBuilder truth_builder(scenario.truth);
   truth_builder.Ask(TruthCsvTimes(scenario));
   std::size_t estimates_asked = 0, fixes_asked = 0;
@@ -239,11 +257,13 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
     const std::vector<EstimateRecord>& est = collector.records();
     const std::vector<EstimateRecord>& fixes = scheduler.fixes();
     if (est.size() > estimates_asked) {
-      truth_builder.Ask(RecordTimes({est.begin() + static_cast<std::ptrdiff_t>(estimates_asked), est.end()}, t_from, t_end));
+      truth_builder.Ask(RecordTimes(
+          {est.begin() + static_cast<std::ptrdiff_t>(estimates_asked), est.end()}, t_from, t_end));
       estimates_asked = est.size();
     }
     if (fixes.size() > fixes_asked) {
-      truth_builder.Ask(RecordTimes({fixes.begin() + static_cast<std::ptrdiff_t>(fixes_asked), fixes.end()}, t_from, t_end));
+      truth_builder.Ask(RecordTimes(
+          {fixes.begin() + static_cast<std::ptrdiff_t>(fixes_asked), fixes.end()}, t_from, t_end));
       fixes_asked = fixes.size();
     }
   };
@@ -255,7 +275,8 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
     // an estimator's solutions come in time order, about as late as its input: what lies a
     // second behind both will not be asked for any more (a straggler only costs Finish a pass)
     if (!collector.records().empty()) {
-      truth_builder.Advance(std::min(collector.records().back().t_validity, t) - std::chrono::seconds(1));
+      truth_builder.Advance(std::min(collector.records().back().t_validity, t) -
+                            std::chrono::seconds(1));
     }
     if (interrupted()) return false;
     progress.Update(ToSeconds(t), scenario.duration_s, collector.records().size());
@@ -299,7 +320,8 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
       };
       std::int64_t last_progress = Now();
       std::size_t pending = unread();
-      while (estimator_running() && pending > 0 && Now() - last_progress < silence_ns && !interrupted()) {
+      while (estimator_running() && pending > 0 && Now() - last_progress < silence_ns &&
+             !interrupted()) {
         usleep(5000);
         collector.Poll();
         const std::size_t p = unread();
@@ -321,7 +343,8 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
       const std::int64_t last_output = collector.last_output_wall_ns();
       if (gate && last_output > 0) {
         const GroupActivity now = ReadGroupActivity(estimator->pid());
-        const bool idle = SleptThroughout(before, now) && last_output == output_before && gate->Unread() == 0;
+        const bool idle =
+            SleptThroughout(before, now) && last_output == output_before && gate->Unread() == 0;
         idle_checks = idle ? idle_checks + 1 : 0;
         before = now;
         output_before = last_output;
@@ -342,39 +365,48 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
   collector.Poll();
   report.estimator_exit = estimator ? exit_info.Describe() : "none (emulator only)";
   if (crashed) {
-    report.problems.push_back("the estimator ended before the scenario did: " + exit_info.Describe() +
-                              " (see estimator.stderr)");
+    report.problems.push_back("the estimator ended before the scenario did: " +
+                              exit_info.Describe() + " (see estimator.stderr)");
     report.complete = false;
   }
   if (hang) {
-    report.problems.push_back("the estimator hung: " + *hang + "; it was stopped (" + exit_info.Describe() + ")");
+    report.problems.push_back("the estimator hung: " + *hang + "; it was stopped (" +
+                              exit_info.Describe() + ")");
     report.complete = false;
   }
   if (stop_reason) {
-    report.problems.push_back("the run stopped early: " + *stop_reason + "; the estimator was stopped (" +
-                              exit_info.Describe() + ")");
+    report.problems.push_back("the run stopped early: " + *stop_reason +
+                              "; the estimator was stopped (" + exit_info.Describe() + ")");
     report.complete = false;
-    std::fprintf(stderr, "hil: %s; the estimator was stopped, the report is marked incomplete\n", stop_reason->c_str());
+    std::fprintf(stderr, "hil: %s; the estimator was stopped, the report is marked incomplete\n",
+                 stop_reason->c_str());
   }
-  if (!report.complete && !report.problems.empty()) report.incomplete_reason = report.problems.front();
+  if (!report.complete && !report.problems.empty())
+    report.incomplete_reason = report.problems.front();
 
   // ---- evaluation ----
   const std::vector<EstimateRecord>& estimates = collector.records();
-  if (estimates.empty() && !opt.emulate_only) report.problems.push_back("the estimator produced no solution");
-  // the point the estimate describes: navd fusing the IMU board reports the board (its body origin is
-  // the IMU); a GNSS-only navd reports the antenna
+  if (estimates.empty() && !opt.emulate_only)
+    report.problems.push_back("the estimator produced no solution");
+  // the point the estimate describes: navd fusing the IMU board reports the board (its body origin
+  // is the IMU); a GNSS-only navd reports the antenna
   std::string point = scenario.estimator.reference_point;
   if (point == "auto") {
-    const bool navd = scenario.estimator.command.find("{navd}") != std::string::npos && !opt.estimator_command;
+    const bool navd =
+        scenario.estimator.command.find("{navd}") != std::string::npos && !opt.estimator_command;
     const std::string& m = scenario.estimator.navd_mode;
-    point = !navd || m == "multi_gnss" ? "body" : m == "gnss_only" ? "antenna" : scenario.mcu.enabled ? "imu" : "body";
+    point = !navd || m == "multi_gnss" ? "body"
+            : m == "gnss_only"         ? "antenna"
+            : scenario.mcu.enabled     ? "imu"
+                                       : "body";
   }
   const Eigen::Vector3d p_BX_B_m = point == "antenna" ? scenario.gnss.model.p_BA_B_m
                                    : point == "imu"   ? scenario.mcu.config.mounting.p_BI_B_m
                                                       : Eigen::Vector3d::Zero();
   ask_truth();
   const TruthTable truth_table = truth_builder.Finish();
-  std::vector<ErrorSample> est_err = CompareWithTruth(truth_table, estimates, p_BX_B_m, t_from, t_end);
+  std::vector<ErrorSample> est_err =
+      CompareWithTruth(truth_table, estimates, p_BX_B_m, t_from, t_end);
   std::vector<ErrorSample> fix_err =
       CompareWithTruth(truth_table, scheduler.fixes(), scenario.gnss.model.p_BA_B_m, t_from, t_end);
   const PlannedPath path = PlannedPathOf(scenario.truth, scenario.duration_s);
@@ -384,17 +416,20 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
   report.baselines = ComputeAccuracy(fix_err);
   report.timing = ComputeOutputTiming(estimates, pacer ? opt.speed : 1.0);
   if (!pacer) {  // arrival times mean nothing in virtual mode
-    report.timing.jitter_p50_ms.reset(), report.timing.jitter_p99_ms.reset(), report.timing.jitter_max_ms.reset();
+    report.timing.jitter_p50_ms.reset(), report.timing.jitter_p99_ms.reset(),
+        report.timing.jitter_max_ms.reset();
   }
   report.output_rate_hz = report.timing.output_rate_hz;
   report.outages = ComputeOutages(est_err, scenario.faults, scenario.reconverged_error_m);
   ReportSeries series;
   if (pacer && !estimates.empty()) {
     for (const auto& e : estimates) {
-      series.latency_ms.push_back(static_cast<double>(e.wall_rx_ns - pacer->WallNsOf(e.t_validity)) * 1e-6 * opt.speed);
+      series.latency_ms.push_back(
+          static_cast<double>(e.wall_rx_ns - pacer->WallNsOf(e.t_validity)) * 1e-6 * opt.speed);
     }
-    report.latency = LatencyStats{Percentile(series.latency_ms, 50), Percentile(series.latency_ms, 99),
-                                  Percentile(series.latency_ms, 100)};
+    report.latency =
+        LatencyStats{Percentile(series.latency_ms, 50), Percentile(series.latency_ms, 99),
+                     Percentile(series.latency_ms, 100)};
   }
   for (const auto& ports : set.endpoints) {
     for (const auto& ep : ports) {
@@ -406,7 +441,8 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
   // MCU resets happen in the MCU model: the k-th scripted reset took place when the model counted k
   std::uint64_t mcu_resets = 0;
   for (const auto& dev : set.devices) {
-    if (const auto* m = dynamic_cast<const mcu::McuDevice*>(dev.get())) mcu_resets += m->stats().resets;
+    if (const auto* m = dynamic_cast<const mcu::McuDevice*>(dev.get()))
+      mcu_resets += m->stats().resets;
   }
   for (std::size_t i = 0; i < scenario.faults.faults.size(); ++i) {
     const Fault& f = scenario.faults.faults[i];
@@ -418,7 +454,8 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
   report.fault_injections = fault_recorder.records();
   ComputeRecoveryTimes(report.fault_injections, est_err, scenario.reconverged_error_m);
   report.estimator_health = health;
-  report.criteria = EvaluateCriteria(scenario.criteria, RunMetricTable(report), AccuracyTable(report.baselines));
+  report.criteria =
+      EvaluateCriteria(scenario.criteria, RunMetricTable(report), AccuracyTable(report.baselines));
   report.fault_messages_dropped = byte_faults.messages_dropped();
   report.fault_bytes_corrupted = byte_faults.bytes_corrupted();
   report.wall_time_s = SecondsSince(wall_start);
@@ -439,7 +476,9 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
   };
   attempt([&] { WriteErrorsCsv(est_err, dir + "/estimate.csv"); });
   attempt([&] { WriteErrorsCsv(fix_err, dir + "/gnss_fixes_errors.csv"); });
-  attempt([&] { WriteTruthCsv(truth_table, scenario, dir + "/truth.csv", series.truth_t_s, series.truth_en_m); });
+  attempt([&] {
+    WriteTruthCsv(truth_table, scenario, dir + "/truth.csv", series.truth_t_s, series.truth_en_m);
+  });
   attempt([&] { WriteScheduleErrors(set, dir + "/schedule_error.json"); });
   if (opt.html) {
     series.estimate_errors = std::move(est_err);

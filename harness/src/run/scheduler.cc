@@ -32,7 +32,8 @@ void Scheduler::Dispatch(std::size_t d, DeviceOutput& out) {
       }
       if (!recorder_) continue;
       // the receiver's transmit buffer overflowed: count it against an active output overload
-      if (const auto i = recorder_->Active(FaultKind::kGnssOverload, c.t_ready)) recorder_->Note(*i, c.t_ready);
+      if (const auto i = recorder_->Active(FaultKind::kGnssOverload, c.t_ready))
+        recorder_->Note(*i, c.t_ready);
     }
   }
   if (set_.can) {
@@ -61,7 +62,8 @@ bool Scheduler::PollHosts(Time t_host, DeviceOutput& out) {
     const Time t_rx = pacer_ ? pacer_->SimTimeOfWall(link::RealtimePacer::MonotonicNs()) : t_host;
     for (std::size_t p = 0; p < set_.endpoints[d].size(); ++p) {
       const pollfd& pf = host_fds_[k++];
-      if (pf.fd >= 0 && pf.revents == 0) continue;  // nothing from this host (errors and hang-ups are read)
+      if (pf.fd >= 0 && pf.revents == 0)
+        continue;  // nothing from this host (errors and hang-ups are read)
       if (const std::string rx = set_.endpoints[d][p]->PollHost(t_rx); !rx.empty()) {
         set_.devices[d]->OnHostBytes(static_cast<int>(p), t_rx, rx, out);
         set_.endpoints[d][p]->set_baud(set_.devices[d]->baud(static_cast<int>(p)));
@@ -99,9 +101,9 @@ void Scheduler::RecordFixes(Time t) {
     r.vel_enu_mps = Eigen::Vector3d(fix.vel_e_mps, fix.vel_n_mps, -fix.vel_d_mps);
     fixes_.push_back(r);
     char line[256];
-    std::snprintf(line, sizeof line, "%.3f,%.9f,%.9f,%.4f,%.4f,%.4f,%.4f,%d,%.2f\n", ToSeconds(fix.t_validity),
-                  fix.lat_deg, fix.lon_deg, fix.height_m, fix.vel_n_mps, fix.vel_e_mps, fix.vel_d_mps, fix.num_sv,
-                  fix.hdop);
+    std::snprintf(line, sizeof line, "%.3f,%.9f,%.9f,%.4f,%.4f,%.4f,%.4f,%d,%.2f\n",
+                  ToSeconds(fix.t_validity), fix.lat_deg, fix.lon_deg, fix.height_m, fix.vel_n_mps,
+                  fix.vel_e_mps, fix.vel_d_mps, fix.num_sv, fix.hdop);
     fixes_csv_ << line;
   }
 }
@@ -130,7 +132,8 @@ void Scheduler::Run(const std::function<bool(Time)>& keep_going) {
         }
       }
       const std::optional<Time> t_frame = set_.can ? set_.can->next_frame_time() : std::nullopt;
-      if (t_frame && (!t_byte || *t_frame <= *t_byte) && (*t_frame < *t_event || *t_event > t_end)) {
+      if (t_frame && (!t_byte || *t_frame <= *t_byte) &&
+          (*t_frame < *t_event || *t_event > t_end)) {
         set_.can->SendNext(*pacer_);
         continue;
       }
@@ -142,7 +145,8 @@ void Scheduler::Run(const std::function<bool(Time)>& keep_going) {
       if (*t_event <= t_end) {
         // idle until the next event, but a host command is read when it arrives (within ~1 ms),
         // not at the next event: the device may answer in between
-        const Time t_wake = std::min(*t_event, pacer_->SimTimeOfWall(link::RealtimePacer::MonotonicNs()) + kHostPollPeriod);
+        const Time t_wake = std::min(
+            *t_event, pacer_->SimTimeOfWall(link::RealtimePacer::MonotonicNs()) + kHostPollPeriod);
         pacer_->SleepUntil(t_wake);
         if (PollHosts(t_wake, out) || t_wake < *t_event) continue;
       }
@@ -165,7 +169,8 @@ void Scheduler::Run(const std::function<bool(Time)>& keep_going) {
 
 const std::vector<CanFrame>& Scheduler::PollBus() {
   if (set_.can) {
-    const Time t_bus = pacer_ ? pacer_->SimTimeOfWall(link::RealtimePacer::MonotonicNs()) : t_last_event_;
+    const Time t_bus =
+        pacer_ ? pacer_->SimTimeOfWall(link::RealtimePacer::MonotonicNs()) : t_last_event_;
     for (const CanFrame& f : set_.can->PollBus(t_bus)) bus_frames_.push_back(f);
   }
   return bus_frames_;

@@ -15,14 +15,16 @@ TruthTable::TruthTable(const truth::TruthConfig& config, std::vector<Time> times
   for (const Time t : times_) samples_.push_back(truth.Sample(t));
 }
 
-TruthTable::TruthTable(const truth::TruthConfig& config, std::vector<Time> times, std::vector<TruthSample> samples)
+TruthTable::TruthTable(const truth::TruthConfig& config, std::vector<Time> times,
+                       std::vector<TruthSample> samples)
     : times_(std::move(times)), samples_(std::move(samples)), frame_(config.origin) {}
 
 bool TruthTable::Has(Time t) const { return std::binary_search(times_.begin(), times_.end(), t); }
 
 const TruthSample& TruthTable::At(Time t) const {
   const auto it = std::lower_bound(times_.begin(), times_.end(), t);
-  if (it == times_.end() || *it != t) throw std::out_of_range("truth table: no sample at the time asked");
+  if (it == times_.end() || *it != t)
+    throw std::out_of_range("truth table: no sample at the time asked");
   return samples_[static_cast<std::size_t>(it - times_.begin())];
 }
 
@@ -42,8 +44,10 @@ void TruthTableBuilder::Ask(const std::vector<Time>& times) {
   std::lock_guard<std::mutex> lock(mu_);
   for (const Time t : times) {
     if (t < Time{}) continue;
-    if (started_ && t < position_) late_.push_back(t);
-    else asked_.push(t);
+    if (started_ && t < position_)
+      late_.push_back(t);
+    else
+      asked_.push(t);
   }
 }
 

@@ -1,10 +1,11 @@
 #include "hil/harness/run/virtual_gate.h"
 
 #include <sched.h>
-#include <sys/prctl.h>
 #include <time.h>
 
 #include <algorithm>
+
+#include <sys/prctl.h>
 
 namespace hil::harness {
 namespace {
@@ -23,7 +24,8 @@ void SleepNs(long ns) {
 
 }  // namespace
 
-VirtualGate::VirtualGate(std::vector<SerialEndpoint*> host_links, std::size_t max_link_backlog_bytes, WaitStep on_wait)
+VirtualGate::VirtualGate(std::vector<SerialEndpoint*> host_links,
+                         std::size_t max_link_backlog_bytes, WaitStep on_wait)
     : max_backlog_(max_link_backlog_bytes), on_wait_(std::move(on_wait)) {
   for (const SerialEndpoint* ep : host_links) links_.push_back({ep, 0});
   // short sleeps mean short sleeps: the default timer slack (50 µs) would stretch every step

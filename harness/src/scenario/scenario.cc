@@ -1,7 +1,6 @@
 #include "hil/harness/scenario/scenario.h"
 
 #include <algorithm>
-
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -9,49 +8,74 @@
 
 #include "hil/firmware_emu/gnss/gps_time.h"
 #include "hil/harness/scenario/yaml_reader.h"
+
 #include "scenario_sections.h"
 
 namespace hil::harness {
 
 extern const char* const kDefaultScenarioYaml;  // generated from vectors/scenarios/default.yaml
 
-const std::vector<std::string> kCriterionMetrics{
-    "horizontal_rmse_m", "cep50_m", "cep95_m", "max_horizontal_error_m", "vertical_rmse_m", "velocity_rmse_mps",
-    "heading_rmse_deg", "cross_track_rmse_m", "cross_track_p95_m", "cross_track_max_m", "output_rate_hz",
-    "latency_p99_ms", "jitter_p99_ms", "outage_max_horizontal_error_m", "reconvergence_time_s", "nees_mean",
-    "solutions_missing_fraction", "fault_recovery_time_s", "fault_injections_min", "outage_max_east_error_m",
-    "outage_max_north_error_m", "outage_max_up_error_m", "outage_max_enu_error_m"};
+const std::vector<std::string> kCriterionMetrics{"horizontal_rmse_m",
+                                                 "cep50_m",
+                                                 "cep95_m",
+                                                 "max_horizontal_error_m",
+                                                 "vertical_rmse_m",
+                                                 "velocity_rmse_mps",
+                                                 "heading_rmse_deg",
+                                                 "cross_track_rmse_m",
+                                                 "cross_track_p95_m",
+                                                 "cross_track_max_m",
+                                                 "output_rate_hz",
+                                                 "latency_p99_ms",
+                                                 "jitter_p99_ms",
+                                                 "outage_max_horizontal_error_m",
+                                                 "reconvergence_time_s",
+                                                 "nees_mean",
+                                                 "solutions_missing_fraction",
+                                                 "fault_recovery_time_s",
+                                                 "fault_injections_min",
+                                                 "outage_max_east_error_m",
+                                                 "outage_max_north_error_m",
+                                                 "outage_max_up_error_m",
+                                                 "outage_max_enu_error_m"};
 
 namespace {
 
 // A mapping of navd.conf keys of one section to scalar values, in file order.
-std::vector<std::pair<std::string, std::string>> ReadNavdKeys(const YamlReader& f, const char* section,
-                                                              const std::vector<std::string>& reserved = {}) {
-  if (!f.IsMap()) f.Fail(std::string("expected a mapping of navd [") + section + "] keys to values");
+std::vector<std::pair<std::string, std::string>> ReadNavdKeys(
+    const YamlReader& f, const char* section, const std::vector<std::string>& reserved = {}) {
+  if (!f.IsMap())
+    f.Fail(std::string("expected a mapping of navd [") + section + "] keys to values");
   std::vector<std::pair<std::string, std::string>> keys;
   for (const auto& kv : f.node()) {
     const std::string key = kv.first.Scalar();
-    if (key.empty() || key.find_first_of(" =[]#\n") != std::string::npos) f.Fail(key, "not a navd key");
+    if (key.empty() || key.find_first_of(" =[]#\n") != std::string::npos)
+      f.Fail(key, "not a navd key");
     for (const auto& r : reserved) {
       if (key == r) f.Fail(key, "set by hil from the scenario's devices");
     }
-    if (!kv.second.IsScalar()) f.Fail(key, "expected a single value (navd lists are comma-separated strings)");
+    if (!kv.second.IsScalar())
+      f.Fail(key, "expected a single value (navd lists are comma-separated strings)");
     keys.emplace_back(key, kv.second.Scalar());
   }
   return keys;
 }
 
 void ReadEstimator(const YamlReader& r, EstimatorSpec& e) {
-  r.CheckKeys({"command", "output", "navd_mode", "navd_filter", "navd_input", "reference_point", "silence_timeout_s",
-               "startup_s"});
-  e.reference_point = r.Choice("reference_point", e.reference_point, {"auto", "body", "antenna", "imu"});
+  r.CheckKeys({"command", "output", "navd_mode", "navd_filter", "navd_input", "reference_point",
+               "silence_timeout_s", "startup_s"});
+  e.reference_point =
+      r.Choice("reference_point", e.reference_point, {"auto", "body", "antenna", "imu"});
   e.command = r.String("command", e.command);
-  e.output = r.Choice("output", e.output, {"json_stdout", "gpsd_json", "nmea_stdout", "nmea_pty", "n2k_candump",
-                                                  "n2k_socketcan"});
-  e.navd_mode = r.Choice("navd_mode", e.navd_mode, {"gnss_only", "ekf", "planar2d", "imu_only", "multi_gnss"});
+  e.output = r.Choice(
+      "output", e.output,
+      {"json_stdout", "gpsd_json", "nmea_stdout", "nmea_pty", "n2k_candump", "n2k_socketcan"});
+  e.navd_mode = r.Choice("navd_mode", e.navd_mode,
+                         {"gnss_only", "ekf", "planar2d", "imu_only", "multi_gnss"});
   if (auto f = r.OptionalChild("navd_filter")) e.navd_filter = ReadNavdKeys(*f, "filter");
   if (auto f = r.OptionalChild("navd_input")) {
-    e.navd_input = ReadNavdKeys(*f, "input", {"gnss_device", "gnss_baud", "imu_device", "imu_baud", "imu_format"});
+    e.navd_input = ReadNavdKeys(
+        *f, "input", {"gnss_device", "gnss_baud", "imu_device", "imu_baud", "imu_format"});
   }
   e.silence_timeout_s = r.DoubleIn("silence_timeout_s", e.silence_timeout_s, 0.5, 3600);
   e.startup_s = r.DoubleIn("startup_s", e.startup_s, 0, 60);
@@ -63,22 +87,29 @@ std::vector<Criterion> ReadCriteria(const YamlReader& r) {
     c.CheckKeys({"metric", "max", "min", "max_ratio_to_baseline", "name"});
     Criterion k;
     k.metric = c.String("metric");
-    if (std::find(kCriterionMetrics.begin(), kCriterionMetrics.end(), k.metric) == kCriterionMetrics.end() &&
-        k.metric.rfind("navd.", 0) != 0) {  // navd.<health counter>, navd.flag.<flag> (fault_report.h)
+    if (std::find(kCriterionMetrics.begin(), kCriterionMetrics.end(), k.metric) ==
+            kCriterionMetrics.end() &&
+        k.metric.rfind("navd.", 0) !=
+            0) {  // navd.<health counter>, navd.flag.<flag> (fault_report.h)
       std::string msg = "unknown metric '" + k.metric + "' (one of:";
       for (const auto& m : kCriterionMetrics) msg += " " + m;
       c.Fail("metric", msg + ")");
     }
     if (c.Has("max")) k.max = c.DoubleIn("max", 0, 0, 1e9);
     if (c.Has("min")) k.min = c.DoubleIn("min", 0, 0, 1e9);
-    if (c.Has("max_ratio_to_baseline")) k.max_ratio_to_baseline = c.DoubleIn("max_ratio_to_baseline", 0, 0, 1e3);
+    if (c.Has("max_ratio_to_baseline"))
+      k.max_ratio_to_baseline = c.DoubleIn("max_ratio_to_baseline", 0, 0, 1e3);
     const int given = (k.max ? 1 : 0) + (k.min ? 1 : 0) + (k.max_ratio_to_baseline ? 1 : 0);
     if (given == 0) c.Fail("a criterion needs 'max', 'min' or 'max_ratio_to_baseline'");
     if (given > 1) c.Fail("give one of 'max', 'min' or 'max_ratio_to_baseline'");
     char buf[128];
-    if (k.max) std::snprintf(buf, sizeof buf, "%s <= %g", k.metric.c_str(), *k.max);
-    else if (k.min) std::snprintf(buf, sizeof buf, "%s >= %g", k.metric.c_str(), *k.min);
-    else std::snprintf(buf, sizeof buf, "%s <= %g x baseline", k.metric.c_str(), *k.max_ratio_to_baseline);
+    if (k.max)
+      std::snprintf(buf, sizeof buf, "%s <= %g", k.metric.c_str(), *k.max);
+    else if (k.min)
+      std::snprintf(buf, sizeof buf, "%s >= %g", k.metric.c_str(), *k.min);
+    else
+      std::snprintf(buf, sizeof buf, "%s <= %g x baseline", k.metric.c_str(),
+                    *k.max_ratio_to_baseline);
     k.name = c.String("name", buf);
     out.push_back(k);
   }
@@ -86,9 +117,11 @@ std::vector<Criterion> ReadCriteria(const YamlReader& r) {
 }
 
 Scenario FromReader(const YamlReader& root) {
-  std::vector<std::string> keys{"name",     "description", "start_utc", "duration_s", "seed",      "estimator",
-                                "criteria", "faults",      "include",   "evaluation"};
-  for (const auto* section : {&kTruthSectionKeys, &kGnssSectionKeys, &kMcuSectionKeys, &kCanSectionKeys, &kSuiteSectionKeys}) {
+  std::vector<std::string> keys{"name",    "description", "start_utc", "duration_s",
+                                "seed",    "estimator",   "criteria",  "faults",
+                                "include", "evaluation"};
+  for (const auto* section : {&kTruthSectionKeys, &kGnssSectionKeys, &kMcuSectionKeys,
+                              &kCanSectionKeys, &kSuiteSectionKeys}) {
     keys.insert(keys.end(), section->begin(), section->end());
   }
   root.CheckKeys(keys);
@@ -139,7 +172,8 @@ std::vector<std::string> ScenarioLibraryDirs() {
 
 Scenario LoadScenario(const std::string& path, bool short_form) {
   YamlReader root = YamlReader::LoadFile(path);
-  if (short_form) ApplyShortForm(root);  // before the includes: a replaced key is the document's own
+  if (short_form)
+    ApplyShortForm(root);  // before the includes: a replaced key is the document's own
   root.ResolveIncludes(std::filesystem::path(path).parent_path().string(), ScenarioLibraryDirs());
   Scenario s = FromReader(root);
   s.short_form = short_form && s.has_short_form;
@@ -159,6 +193,8 @@ Scenario ParseScenario(const std::string& text, const std::string& name) {
   return FromReader(reader);
 }
 
-Scenario LoadDefaultScenario() { return ParseScenario(kDefaultScenarioYaml, "<embedded default scenario>"); }
+Scenario LoadDefaultScenario() {
+  return ParseScenario(kDefaultScenarioYaml, "<embedded default scenario>");
+}
 
 }  // namespace hil::harness

@@ -9,7 +9,8 @@ void ReadCanSection(const YamlReader& root, CanLinkSpec& c) {
   if (!r) return;
   r->CheckKeys({"interface", "fd", "imu_to_estimator"});
   c.interface = r->String("interface");
-  if (c.interface.empty() || c.interface.size() > 15 || c.interface.find_first_of("/ \t") != std::string::npos) {
+  if (c.interface.empty() || c.interface.size() > 15 ||
+      c.interface.find_first_of("/ \t") != std::string::npos) {
     r->Fail("interface", "must be a network interface name such as vcan0 or can0");
   }
   c.fd = r->Bool("fd", false);
@@ -18,10 +19,12 @@ void ReadCanSection(const YamlReader& root, CanLinkSpec& c) {
 
 void CheckCanUse(const YamlReader& root, const Scenario& s) {
   if (s.can.imu_to_estimator && !(s.mcu.enabled && s.mcu.config.can.enabled)) {
-    root.OptionalChild("can")->Fail("imu_to_estimator", "needs an mcu section with can: {enabled: true}");
+    root.OptionalChild("can")->Fail("imu_to_estimator",
+                                    "needs an mcu section with can: {enabled: true}");
   }
   if (s.estimator.output == "n2k_socketcan" && s.can.interface.empty()) {
-    root.OptionalChild("estimator")->Fail("output", "n2k_socketcan reads the CAN bus: the scenario needs can: {interface: …}");
+    root.OptionalChild("estimator")
+        ->Fail("output", "n2k_socketcan reads the CAN bus: the scenario needs can: {interface: …}");
   }
 }
 

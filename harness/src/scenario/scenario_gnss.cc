@@ -4,12 +4,10 @@
 //   profile: neo-5m            # or rtk (10 Hz, 115200 baud, GGA quality 5 then 4, cm errors)
 //   baud: 9600                 # default: the profile's
 //   link: ttyGPS               # first receiver's link; further ones get ttyGPS1, ttyGPS2, ...
-//   rate_hz: 1                 # default: the profile's; at most its maximum (4 Hz NEO-5M, 20 Hz rtk)
-//   output_lag_s: 0.1
-//   tx_buffer_bytes: 1024
-//   start: hot                 # cold | warm | hot: time to first fix of the power-up
-//   antenna_lever_arm_m: [x, y, z]          # body FLU, single receiver
-//   count: 3                   # receivers on a horizontal circle around the lever arm ...
+//   rate_hz: 1                 # default: the profile's; at most its maximum (4 Hz NEO-5M, 20 Hz
+//   rtk) output_lag_s: 0.1 tx_buffer_bytes: 1024 start: hot                 # cold | warm | hot:
+//   time to first fix of the power-up antenna_lever_arm_m: [x, y, z]          # body FLU, single
+//   receiver count: 3                   # receivers on a horizontal circle around the lever arm ...
 //   array_radius_m: 3.0        # ... of this radius (first one forward, then every 360/count deg)
 //   receivers:                 # or list them (overrides count)
 //     - {link: ttyGPS, antenna_lever_arm_m: [0, 0, 1]}
@@ -32,12 +30,13 @@ namespace {
 gnss::GnssFault ReadFault(const YamlReader& f) {
   f.CheckKeys({"kind", "start_s", "end_s", "elevation_deg", "offset_m", "sigma_m"});
   gnss::GnssFault g;
-  const std::string kind = f.Choice("kind", "outage", {"outage", "obstruction", "step", "multipath", "data_gap"});
-  g.kind = kind == "outage" ? gnss::GnssFault::Kind::kOutage
+  const std::string kind =
+      f.Choice("kind", "outage", {"outage", "obstruction", "step", "multipath", "data_gap"});
+  g.kind = kind == "outage"        ? gnss::GnssFault::Kind::kOutage
            : kind == "obstruction" ? gnss::GnssFault::Kind::kObstruction
-           : kind == "step" ? gnss::GnssFault::Kind::kStep
-           : kind == "multipath" ? gnss::GnssFault::Kind::kMultipath
-                                 : gnss::GnssFault::Kind::kDataGap;
+           : kind == "step"        ? gnss::GnssFault::Kind::kStep
+           : kind == "multipath"   ? gnss::GnssFault::Kind::kMultipath
+                                   : gnss::GnssFault::Kind::kDataGap;
   g.start_s = f.DoubleIn("start_s", 0, 0, 1e7);
   g.end_s = f.DoubleIn("end_s", g.start_s, 0, 1e7);
   if (g.end_s <= g.start_s) f.Fail("end_s", "must be after start_s");
@@ -55,25 +54,33 @@ void ReadGnss(const YamlReader& r, GnssDeviceSpec& g) {
   const gnss::ReceiverProfile profile = gnss::ProfileByName(g.profile);
   g.baud = static_cast<int>(r.Int("baud", profile.baud, 1200, 921600));
   g.link = r.String("link", g.link);
-  if (g.link.empty() || g.link.find('/') != std::string::npos) r.Fail("link", "must be a plain file name such as ttyGPS");
+  if (g.link.empty() || g.link.find('/') != std::string::npos)
+    r.Fail("link", "must be a plain file name such as ttyGPS");
   g.rate_hz = r.DoubleIn("rate_hz", profile.rate_hz, 0.1, 20);
   if (g.rate_hz > profile.max_rate_hz) {
-    r.Fail("rate_hz", "above the " + g.profile + " maximum of " + std::to_string(static_cast<int>(profile.max_rate_hz)) + " Hz");
+    r.Fail("rate_hz", "above the " + g.profile + " maximum of " +
+                          std::to_string(static_cast<int>(profile.max_rate_hz)) + " Hz");
   }
   g.output_lag_s = r.DoubleIn("output_lag_s", g.output_lag_s, 0, 0.9);
   g.tx_buffer_bytes = static_cast<std::size_t>(r.Int("tx_buffer_bytes", 1024, 64, 1 << 20));
   const std::string start = r.Choice("start", "hot", {"cold", "warm", "hot"});
-  g.start = start == "cold" ? gnss::StartKind::kCold : start == "warm" ? gnss::StartKind::kWarm : gnss::StartKind::kHot;
+  g.start = start == "cold"   ? gnss::StartKind::kCold
+            : start == "warm" ? gnss::StartKind::kWarm
+                              : gnss::StartKind::kHot;
   const auto lever = r.Doubles("antenna_lever_arm_m", 3, {0, 0, 0});
   const Eigen::Vector3d lever_B(lever[0], lever[1], lever[2]);
   const gnss::ReceiverModelConfig defaults = g.model;
   g.model = profile.name == "neo-5m" ? defaults : profile.model;
   if (auto e = r.OptionalChild("errors")) {
-    e->CheckKeys({"horizontal_sigma_m", "vertical_sigma_m", "correlation_time_s", "velocity_sigma_mps", "common_fraction"});
-    g.model.horizontal_sigma_m = e->DoubleIn("horizontal_sigma_m", g.model.horizontal_sigma_m, 0, 100);
+    e->CheckKeys({"horizontal_sigma_m", "vertical_sigma_m", "correlation_time_s",
+                  "velocity_sigma_mps", "common_fraction"});
+    g.model.horizontal_sigma_m =
+        e->DoubleIn("horizontal_sigma_m", g.model.horizontal_sigma_m, 0, 100);
     g.model.vertical_sigma_m = e->DoubleIn("vertical_sigma_m", g.model.vertical_sigma_m, 0, 100);
-    g.model.correlation_time_s = e->DoubleIn("correlation_time_s", g.model.correlation_time_s, 0.01, 3600);
-    g.model.velocity_sigma_mps = e->DoubleIn("velocity_sigma_mps", g.model.velocity_sigma_mps, 0, 10);
+    g.model.correlation_time_s =
+        e->DoubleIn("correlation_time_s", g.model.correlation_time_s, 0.01, 3600);
+    g.model.velocity_sigma_mps =
+        e->DoubleIn("velocity_sigma_mps", g.model.velocity_sigma_mps, 0, 10);
     g.model.common_fraction = e->DoubleIn("common_fraction", g.model.common_fraction, 0, 1);
   }
   g.faults.clear();
@@ -83,17 +90,20 @@ void ReadGnss(const YamlReader& r, GnssDeviceSpec& g) {
   }
   g.receivers.clear();
   if (auto list = r.OptionalChild("receivers")) {
-    if (!list->IsSequence() || list->Elements().empty()) list->Fail("must be a non-empty list of {link, antenna_lever_arm_m}");
+    if (!list->IsSequence() || list->Elements().empty())
+      list->Fail("must be a non-empty list of {link, antenna_lever_arm_m}");
     std::size_t i = 0;
     for (const YamlReader& item : list->Elements()) {
       item.CheckKeys({"link", "antenna_lever_arm_m"});
       GnssReceiverSpec rx;
       rx.link = item.String("link", i == 0 ? g.link : g.link + std::to_string(i));
-      if (rx.link.empty() || rx.link.find('/') != std::string::npos) item.Fail("link", "must be a plain file name");
+      if (rx.link.empty() || rx.link.find('/') != std::string::npos)
+        item.Fail("link", "must be a plain file name");
       const auto l = item.Doubles("antenna_lever_arm_m", 3, lever);
       rx.p_BA_B_m = Eigen::Vector3d(l[0], l[1], l[2]);
       for (const auto& other : g.receivers) {
-        if (other.link == rx.link) item.Fail("link", "'" + rx.link + "' is used by another receiver");
+        if (other.link == rx.link)
+          item.Fail("link", "'" + rx.link + "' is used by another receiver");
       }
       g.receivers.push_back(rx);
       ++i;

@@ -26,10 +26,11 @@ mcu::FaultKind FaultKindOf(const std::string& s) {
 }
 
 void ReadCan(const YamlReader& r, mcu::CanOutputConfig& c) {
-  r.CheckKeys({"enabled", "source_address", "priority", "ari_every", "accs_every", "ssi2_every", "time_pulse",
-               "latency_s"});
+  r.CheckKeys({"enabled", "source_address", "priority", "ari_every", "accs_every", "ssi2_every",
+               "time_pulse", "latency_s"});
   c.enabled = r.Bool("enabled", true);
-  c.address.source_address = static_cast<std::uint8_t>(r.Int("source_address", c.address.source_address, 0, 253));
+  c.address.source_address =
+      static_cast<std::uint8_t>(r.Int("source_address", c.address.source_address, 0, 253));
   c.address.priority = static_cast<std::uint8_t>(r.Int("priority", c.address.priority, 0, 7));
   c.ari_every = static_cast<int>(r.Int("ari_every", c.ari_every, 1, 1000));
   c.accs_every = static_cast<int>(r.Int("accs_every", c.accs_every, 1, 1000));
@@ -42,16 +43,18 @@ void ReadFaults(const YamlReader& r, std::vector<mcu::McuFault>& faults) {
   for (const YamlReader& e : r.Elements()) {
     e.CheckKeys({"kind", "start_s", "duration_s", "probability", "amount", "sensor"});
     mcu::McuFault f;
-    f.kind = FaultKindOf(
-        e.Choice("kind", "", {"drop_frames", "sequence_jump", "corrupt_bytes", "stuck_sensor", "reset"}));
+    f.kind = FaultKindOf(e.Choice(
+        "kind", "", {"drop_frames", "sequence_jump", "corrupt_bytes", "stuck_sensor", "reset"}));
     f.start_s = e.DoubleIn("start_s", 0, 0, 7 * 86400);
     f.duration_s = e.DoubleIn("duration_s", 0, 0, 7 * 86400);
     f.probability = e.DoubleIn("probability", 1, 0, 1);
     f.amount = static_cast<int>(e.Int("amount", 1, 1, 65535));
     f.sensor = e.Choice("sensor", "all", {"accel", "gyro", "mag", "all"});
-    const bool needs_duration = f.kind == mcu::FaultKind::kDropFrames || f.kind == mcu::FaultKind::kCorruptBytes ||
+    const bool needs_duration = f.kind == mcu::FaultKind::kDropFrames ||
+                                f.kind == mcu::FaultKind::kCorruptBytes ||
                                 f.kind == mcu::FaultKind::kStuckSensor;
-    if (needs_duration && f.duration_s <= 0) e.Fail("duration_s", "this fault needs a positive duration_s");
+    if (needs_duration && f.duration_s <= 0)
+      e.Fail("duration_s", "this fault needs a positive duration_s");
     faults.push_back(f);
   }
 }
@@ -68,19 +71,39 @@ void ReadVibration(const YamlReader& r, std::vector<mcu::VibrationTone>& tones) 
 }
 
 void ReadMcu(const YamlReader& r, McuDeviceSpec& m) {
-  r.CheckKeys({"profile", "baud", "link", "format", "imu_rate_hz", "mag_rate_hz", "crystal_ppm",
-               "mag_oscillator_ppm", "jitter_us", "output_latency_s", "reboot_s", "time_pulse", "tx_buffer_bytes",
-               "lever_arm_m", "mounting_rpy_deg", "magnetic", "vibration", "temperature", "can", "faults"});
+  r.CheckKeys({"profile",
+               "baud",
+               "link",
+               "format",
+               "imu_rate_hz",
+               "mag_rate_hz",
+               "crystal_ppm",
+               "mag_oscillator_ppm",
+               "jitter_us",
+               "output_latency_s",
+               "reboot_s",
+               "time_pulse",
+               "tx_buffer_bytes",
+               "lever_arm_m",
+               "mounting_rpy_deg",
+               "magnetic",
+               "vibration",
+               "temperature",
+               "can",
+               "faults"});
   m.enabled = true;
   mcu::McuConfig& c = m.config;
-  const std::string profile = r.Choice("profile", "razor-v13", {"razor-v13", "consumer-mems", "industrial-mems", "tactical"});
+  const std::string profile = r.Choice(
+      "profile", "razor-v13", {"razor-v13", "consumer-mems", "industrial-mems", "tactical"});
   c.profile = mcu::ProfileByName(profile);
   c.baud = static_cast<int>(r.Int("baud", c.profile.default_baud, 1200, 4000000));
   m.link = r.String("link", m.link);
-  if (m.link.empty() || m.link.find('/') != std::string::npos) r.Fail("link", "must be a plain file name such as ttyIMU");
+  if (m.link.empty() || m.link.find('/') != std::string::npos)
+    r.Fail("link", "must be a plain file name such as ttyIMU");
   const std::string format = r.Choice("format", "binary", {"binary", "razor-raw", "razor-v19"});
-  c.format = format == "binary" ? mcu::SerialFormat::kBinary
-           : format == "razor-raw" ? mcu::SerialFormat::kRazorRaw : mcu::SerialFormat::kRazorV19;
+  c.format = format == "binary"      ? mcu::SerialFormat::kBinary
+             : format == "razor-raw" ? mcu::SerialFormat::kRazorRaw
+                                     : mcu::SerialFormat::kRazorV19;
   m.imu_rate_is_default = !r.Has("imu_rate_hz");
   c.imu_rate_hz = r.DoubleIn("imu_rate_hz", c.imu_rate_hz, 0.1, 2000);
   c.mag_rate_hz = r.DoubleIn("mag_rate_hz", c.profile.mag_rate_hz, 0.1, 200);
@@ -90,7 +113,8 @@ void ReadMcu(const YamlReader& r, McuDeviceSpec& m) {
   c.output_latency_s = r.DoubleIn("output_latency_s", c.output_latency_s, 0, 0.5);
   c.reboot_s = r.DoubleIn("reboot_s", c.reboot_s, 0.001, 60);
   c.time_pulse = r.Bool("time_pulse", c.time_pulse);
-  m.tx_buffer_bytes = static_cast<std::size_t>(r.Int("tx_buffer_bytes", static_cast<std::int64_t>(m.tx_buffer_bytes), 64, 1 << 20));
+  m.tx_buffer_bytes = static_cast<std::size_t>(
+      r.Int("tx_buffer_bytes", static_cast<std::int64_t>(m.tx_buffer_bytes), 64, 1 << 20));
   c.mounting.p_BI_B_m = Vec(r, "lever_arm_m", c.mounting.p_BI_B_m);
   const Eigen::Vector3d rpy = Vec(r, "mounting_rpy_deg", Eigen::Vector3d::Zero()) * kDeg;
   c.mounting.q_BI = Eigen::AngleAxisd(rpy.z(), Eigen::Vector3d::UnitZ()) *

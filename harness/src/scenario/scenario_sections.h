@@ -1,7 +1,7 @@
 #pragma once
 // Internal to the harness: readers of the scenario file's sections, one file per owner
-// (scenario_truth.cc: origin, vehicle, path; scenario_gnss.cc: gnss; scenario_mcu.cc: mcu). Each lists the top-level
-// keys it reads so the root check knows them.
+// (scenario_truth.cc: origin, vehicle, path; scenario_gnss.cc: gnss; scenario_mcu.cc: mcu). Each
+// lists the top-level keys it reads so the root check knows them.
 #include <string>
 #include <vector>
 
@@ -31,7 +31,8 @@ void CheckCanUse(const YamlReader& root, const Scenario& s);
 extern const std::vector<std::string> kSuiteSectionKeys;
 /// Reads `paper:` into s.paper and checks `short:` (scenario_suite.cc); `top_level_keys` are the
 /// keys a `short:` section may replace (all but name, include, paper and short).
-void ReadSuiteSections(const YamlReader& root, const std::vector<std::string>& top_level_keys, Scenario& s);
+void ReadSuiteSections(const YamlReader& root, const std::vector<std::string>& top_level_keys,
+                       Scenario& s);
 /// Replaces the root's top-level keys by those of its `short:` section (nothing without one).
 void ApplyShortForm(YamlReader& root);
 

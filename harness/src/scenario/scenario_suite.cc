@@ -1,14 +1,16 @@
 // The suite sections of a scenario (owner: acceptance suite). Format:
 //
-// paper:                       # reference figures a suite report shows beside the run's (a mapping or a list)
+// paper:                       # reference figures a suite report shows beside the run's (a mapping
+// or a list)
 //   - source: "Paper 000 (Goli et al., 2013), table of methods"
 //     metric: horizontal_rmse_m   # a criterion metric, in its unit
 //     value: 0.313                # the figure (optional when `finding` says it in words)
-//     relation: about             # about (measured), below (an upper bound: "< 11 cm"), above (a lower bound)
-//     finding: "diverges"         # the result in words (required without a value)
+//     relation: about             # about (measured), below (an upper bound: "< 11 cm"), above (a
+//     lower bound) finding: "diverges"         # the result in words (required without a value)
 //     note: "three NEO-5M on a 3 m circle"
 //
-// short:                       # `hil run --short`, `hil suite --short`: these keys replace the top-level ones
+// short:                       # `hil run --short`, `hil suite --short`: these keys replace the
+// top-level ones
 //   duration_s: 120            # (any top-level key but name, include, paper and short)
 //   faults: [...]
 #include <algorithm>
@@ -24,7 +26,8 @@ PaperFigure ReadFigure(const YamlReader& r) {
   PaperFigure p;
   p.source = r.String("source");
   p.metric = r.String("metric");
-  if (std::find(kCriterionMetrics.begin(), kCriterionMetrics.end(), p.metric) == kCriterionMetrics.end()) {
+  if (std::find(kCriterionMetrics.begin(), kCriterionMetrics.end(), p.metric) ==
+      kCriterionMetrics.end()) {
     std::string msg = "unknown metric '" + p.metric + "' (one of:";
     for (const auto& m : kCriterionMetrics) msg += " " + m;
     r.Fail("metric", msg + ")");
@@ -41,7 +44,8 @@ PaperFigure ReadFigure(const YamlReader& r) {
 
 const std::vector<std::string> kSuiteSectionKeys{"paper", "short"};
 
-void ReadSuiteSections(const YamlReader& root, const std::vector<std::string>& top_level_keys, Scenario& s) {
+void ReadSuiteSections(const YamlReader& root, const std::vector<std::string>& top_level_keys,
+                       Scenario& s) {
   s.paper.clear();
   if (auto p = root.OptionalChild("paper")) {
     if (p->IsSequence()) {
@@ -52,7 +56,8 @@ void ReadSuiteSections(const YamlReader& root, const std::vector<std::string>& t
     }
   }
   if (auto sh = root.OptionalChild("short")) {
-    if (!sh->IsMap() || sh->node().size() == 0) sh->Fail("expected a mapping of top-level keys (e.g. duration_s: 120)");
+    if (!sh->IsMap() || sh->node().size() == 0)
+      sh->Fail("expected a mapping of top-level keys (e.g. duration_s: 120)");
     std::vector<std::string> allowed;
     for (const auto& k : top_level_keys) {
       if (k != "name" && k != "include" && k != "paper" && k != "short") allowed.push_back(k);
@@ -68,7 +73,8 @@ void ApplyShortForm(YamlReader& root) {
   YAML::Node doc = root.node();     // shares the document: assignments below change the root
   for (const auto& kv : sh->node()) {
     const std::string key = kv.first.Scalar();
-    if (key == "name" || key == "include" || key == "paper" || key == "short") continue;  // rejected later
+    if (key == "name" || key == "include" || key == "paper" || key == "short")
+      continue;  // rejected later
     doc[key] = kv.second;
   }
 }

@@ -47,7 +47,8 @@ void ReadVehicle(const YamlReader& r, truth::TruthConfig& t) {
   if (auto sv = r.OptionalChild("speed_variation")) {
     sv->CheckKeys({"std_percent", "correlation_time_s", "seed"});
     p.speed_variation_std = sv->DoubleIn("std_percent", 0, 0, 50) / 100.0;
-    p.speed_variation_tau_s = sv->DoubleIn("correlation_time_s", p.speed_variation_tau_s, 0.1, 3600);
+    p.speed_variation_tau_s =
+        sv->DoubleIn("correlation_time_s", p.speed_variation_tau_s, 0.1, 3600);
     p.speed_variation_seed = static_cast<std::uint64_t>(sv->Int("seed", 1, 0, INT64_MAX));
   }
   t.vehicle = p;

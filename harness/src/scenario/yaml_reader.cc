@@ -7,8 +7,10 @@
 
 namespace hil::harness {
 
-ScenarioError::ScenarioError(std::string file, int line, std::string field, const std::string& message)
-    : std::runtime_error(file + ":" + std::to_string(line) + ": " + (field.empty() ? "" : field + ": ") + message),
+ScenarioError::ScenarioError(std::string file, int line, std::string field,
+                             const std::string& message)
+    : std::runtime_error(file + ":" + std::to_string(line) + ": " +
+                         (field.empty() ? "" : field + ": ") + message),
       file_(std::move(file)),
       line_(line),
       field_(std::move(field)) {}
@@ -19,7 +21,8 @@ int EditDistance(const std::string& a, const std::string& b) {
   for (std::size_t i = 1; i <= a.size(); ++i) {
     cur[0] = static_cast<int>(i);
     for (std::size_t j = 1; j <= b.size(); ++j) {
-      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      cur[j] =
+          std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
     }
     std::swap(prev, cur);
   }
@@ -34,7 +37,8 @@ YamlReader YamlReader::LoadFile(const std::string& file) {
   if (!probe) throw ScenarioError(file, 0, "", "cannot read the file (missing or not readable)");
   try {
     YAML::Node root = YAML::LoadFile(file);
-    if (!root.IsMap()) throw ScenarioError(file, root.Mark().line + 1, "", "the document must be a mapping of keys");
+    if (!root.IsMap())
+      throw ScenarioError(file, root.Mark().line + 1, "", "the document must be a mapping of keys");
     return YamlReader(root, file, "");
   } catch (const YAML::ParserException& e) {
     throw ScenarioError(file, e.mark.line + 1, "", "YAML syntax error: " + e.msg);
@@ -46,7 +50,8 @@ const std::string& YamlReader::FileOf(const std::string& key) const {
   return it == key_file_.end() ? file_ : it->second;
 }
 
-void YamlReader::ResolveIncludes(const std::string& base_dir, const std::vector<std::string>& lib_dirs, int depth) {
+void YamlReader::ResolveIncludes(const std::string& base_dir,
+                                 const std::vector<std::string>& lib_dirs, int depth) {
   namespace fs = std::filesystem;
   const auto inc = Get("include");
   if (!inc) return;
@@ -56,7 +61,8 @@ void YamlReader::ResolveIncludes(const std::string& base_dir, const std::vector<
     names.push_back(inc->Scalar());
   } else if (inc->IsSequence()) {
     for (const auto& el : *inc) {
-      if (!el.IsScalar()) throw ScenarioError(file_, el.Mark().line + 1, FieldOf("include"), "expected a file name");
+      if (!el.IsScalar())
+        throw ScenarioError(file_, el.Mark().line + 1, FieldOf("include"), "expected a file name");
       names.push_back(el.Scalar());
     }
   } else {
@@ -86,7 +92,8 @@ void YamlReader::ResolveIncludes(const std::string& base_dir, const std::vector<
       if (key == "include" || Has(key)) {
         if (added.count(key)) {
           throw ScenarioError(found, kv.first.Mark().line + 1, key,
-                              "also defined by the included file " + added[key] + " (give it in the scenario itself)");
+                              "also defined by the included file " + added[key] +
+                                  " (give it in the scenario itself)");
         }
         continue;  // the including document wins
       }
@@ -99,9 +106,13 @@ void YamlReader::ResolveIncludes(const std::string& base_dir, const std::vector<
 
 int YamlReader::line() const { return node_.Mark().line + 1; }
 
-std::string YamlReader::FieldOf(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+std::string YamlReader::FieldOf(const std::string& key) const {
+  return path_.empty() ? key : path_ + "." + key;
+}
 
-void YamlReader::Fail(const std::string& message) const { throw ScenarioError(file_, line(), path_, message); }
+void YamlReader::Fail(const std::string& message) const {
+  throw ScenarioError(file_, line(), path_, message);
+}
 
 void YamlReader::Fail(const std::string& key, const std::string& message) const {
   const auto n = Get(key);
@@ -136,7 +147,8 @@ void YamlReader::CheckKeys(const std::vector<std::string>& allowed) const {
       }
     }
     std::string msg = "unknown key";
-    if (!best.empty()) msg += " (did you mean '" + best + "'?)";
+    if (!best.empty())
+      msg += " (did you mean '" + best + "'?)";
     else {
       msg += " (known keys:";
       for (const auto& a : allowed) msg += " " + a;
@@ -201,7 +213,8 @@ double YamlReader::DoubleIn(const std::string& key, double fallback, double lo, 
   return v;
 }
 
-std::int64_t YamlReader::Int(const std::string& key, std::int64_t fallback, std::int64_t lo, std::int64_t hi) const {
+std::int64_t YamlReader::Int(const std::string& key, std::int64_t fallback, std::int64_t lo,
+                             std::int64_t hi) const {
   const auto found = Get(key);
   if (!found) return fallback;
   const YAML::Node n = *found;
@@ -212,7 +225,9 @@ std::int64_t YamlReader::Int(const std::string& key, std::int64_t fallback, std:
   } catch (const YAML::Exception&) {
     Fail(key, "expected an integer, got '" + n.Scalar() + "'");
   }
-  if (v < lo || v > hi) Fail(key, "value " + std::to_string(v) + " out of range [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  if (v < lo || v > hi)
+    Fail(key, "value " + std::to_string(v) + " out of range [" + std::to_string(lo) + ", " +
+                  std::to_string(hi) + "]");
   return v;
 }
 
@@ -223,7 +238,8 @@ bool YamlReader::Bool(const std::string& key, bool fallback) const {
   try {
     return n.as<bool>();
   } catch (const YAML::Exception&) {
-    Fail(key, "expected true or false, got '" + (n.IsScalar() ? n.Scalar() : std::string("a structure")) + "'");
+    Fail(key, "expected true or false, got '" +
+                  (n.IsScalar() ? n.Scalar() : std::string("a structure")) + "'");
   }
 }
 
@@ -250,17 +266,20 @@ std::string YamlReader::Choice(const std::string& key, const std::string& fallba
   Fail(key, msg + ")");
 }
 
-std::vector<double> YamlReader::Doubles(const std::string& key, std::size_t n, std::vector<double> fallback) const {
+std::vector<double> YamlReader::Doubles(const std::string& key, std::size_t n,
+                                        std::vector<double> fallback) const {
   const auto found = Get(key);
   if (!found) return fallback;
   const YAML::Node node = *found;
-  if (!node.IsSequence() || node.size() != n) Fail(key, "expected a list of " + std::to_string(n) + " numbers");
+  if (!node.IsSequence() || node.size() != n)
+    Fail(key, "expected a list of " + std::to_string(n) + " numbers");
   std::vector<double> out;
   for (const auto& el : node) {
     try {
       out.push_back(el.as<double>());
     } catch (const YAML::Exception&) {
-      throw ScenarioError(FileOf(key), el.Mark().line + 1, FieldOf(key), "expected a number, got '" + el.Scalar() + "'");
+      throw ScenarioError(FileOf(key), el.Mark().line + 1, FieldOf(key),
+                          "expected a number, got '" + el.Scalar() + "'");
     }
   }
   return out;

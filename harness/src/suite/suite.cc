@@ -1,10 +1,6 @@
 #include "hil/harness/suite/suite.h"
-#include "hil/harness/report/report.h"
-#include "hil/harness/suite/suite_report.h"
-#include "hil/harness/scenario/yaml_reader.h"
 
 #include <fcntl.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -12,11 +8,16 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
 
+#include <nlohmann/json.hpp>
+#include <sys/wait.h>
+
 #include "hil/firmware_emu/link/realtime_pacer.h"
+#include "hil/harness/report/report.h"
+#include "hil/harness/scenario/yaml_reader.h"
+#include "hil/harness/suite/suite_report.h"
 
 namespace hil::harness {
 namespace {
@@ -75,21 +76,26 @@ void WriteSuiteJunit(const std::vector<Case>& cases, const std::string& path) {
       for (const auto& k : c.report.value("criteria", nlohmann::json::array())) {
         std::string msg;
         if (!k.value("pass", false)) {
-          msg = "value " + (k["value"].is_number() ? std::to_string(k["value"].get<double>()) : std::string("n/a")) +
+          msg = "value " +
+                (k["value"].is_number() ? std::to_string(k["value"].get<double>())
+                                        : std::string("n/a")) +
                 " against threshold " + std::to_string(k.value("threshold", 0.0));
         }
         tcs.emplace_back(k.value("name", "criterion"), msg);
       }
-      for (const auto& p : c.report.value("problems", nlohmann::json::array())) tcs.emplace_back("run", p.get<std::string>());
+      for (const auto& p : c.report.value("problems", nlohmann::json::array()))
+        tcs.emplace_back("run", p.get<std::string>());
     } else {
-      tcs.emplace_back("run", "hil run exited with " + std::to_string(c.exit_code) + ": " + Tail(c.log));
+      tcs.emplace_back("run",
+                       "hil run exited with " + std::to_string(c.exit_code) + ": " + Tail(c.log));
     }
     std::size_t failures = 0;
     for (const auto& t : tcs) failures += t.second.empty() ? 0 : 1;
-    out << "  <testsuite name=\"" << XmlEscape(name) << "\" tests=\"" << tcs.size() << "\" failures=\"" << failures
-        << "\" time=\"" << c.wall_s << "\">\n";
+    out << "  <testsuite name=\"" << XmlEscape(name) << "\" tests=\"" << tcs.size()
+        << "\" failures=\"" << failures << "\" time=\"" << c.wall_s << "\">\n";
     for (const auto& [tname, msg] : tcs) {
-      out << "    <testcase classname=\"" << XmlEscape(name) << "\" name=\"" << XmlEscape(tname) << "\">";
+      out << "    <testcase classname=\"" << XmlEscape(name) << "\" name=\"" << XmlEscape(tname)
+          << "\">";
       if (!msg.empty()) out << "<failure message=\"" << XmlEscape(msg) << "\"/>";
       out << "</testcase>\n";
     }
@@ -102,11 +108,13 @@ void WriteSuiteJunit(const std::vector<Case>& cases, const std::string& path) {
 
 std::vector<std::string> SuiteScenarios(const std::string& dir) {
   std::error_code ec;
-  if (!fs::is_directory(dir, ec)) throw std::runtime_error("cannot read the scenario folder " + dir);
+  if (!fs::is_directory(dir, ec))
+    throw std::runtime_error("cannot read the scenario folder " + dir);
   std::vector<std::string> files;
   for (const auto& e : fs::directory_iterator(dir)) {
     const std::string ext = e.path().extension().string();
-    if (e.is_regular_file() && (ext == ".yaml" || ext == ".yml")) files.push_back(e.path().string());
+    if (e.is_regular_file() && (ext == ".yaml" || ext == ".yml"))
+      files.push_back(e.path().string());
   }
   std::sort(files.begin(), files.end());
   return files;
@@ -116,7 +124,8 @@ SuiteResult RunSuite(const SuiteOptions& opt) {
   const std::vector<std::string> files = SuiteScenarios(opt.dir);
   std::error_code ec;
   fs::create_directories(opt.out_dir, ec);
-  if (ec || access(opt.out_dir.c_str(), W_OK) != 0) throw std::runtime_error("cannot write the output folder " + opt.out_dir);
+  if (ec || access(opt.out_dir.c_str(), W_OK) != 0)
+    throw std::runtime_error("cannot write the output folder " + opt.out_dir);
   const std::int64_t suite_start_ns = link::RealtimePacer::MonotonicNs();
   std::vector<SuiteScenarioInfo> infos;
   for (const auto& f : files) {
@@ -167,7 +176,10 @@ SuiteResult RunSuite(const SuiteOptions& opt) {
     if (rj) c.report = nlohmann::json::parse(rj, nullptr, false);
     if (c.report.is_discarded()) c.report = nullptr;
     std::fprintf(stderr, "[%zu/%zu] %s %s (%.1f s)\n", done, cases.size(),
-                 c.exit_code == 0 ? "PASS" : c.exit_code == 1 ? "FAIL" : "ERROR", fs::path(c.out).filename().c_str(), c.wall_s);
+                 c.exit_code == 0   ? "PASS"
+                 : c.exit_code == 1 ? "FAIL"
+                                    : "ERROR",
+                 fs::path(c.out).filename().c_str(), c.wall_s);
   }
   SuiteResult result;
   nlohmann::json summary;
@@ -175,11 +187,17 @@ SuiteResult RunSuite(const SuiteOptions& opt) {
   summary["runs"] = nlohmann::json::array();
   for (const Case& c : cases) {
     ++result.runs;
-    if (c.exit_code == 0) ++result.passed;
-    else if (c.exit_code == 1) ++result.failed;
-    else ++result.invalid;
-    nlohmann::json r{{"scenario_file", c.scenario}, {"run_dir", c.out},       {"exit_code", c.exit_code},
-                     {"pass", c.exit_code == 0},    {"wall_time_s", c.wall_s}};
+    if (c.exit_code == 0)
+      ++result.passed;
+    else if (c.exit_code == 1)
+      ++result.failed;
+    else
+      ++result.invalid;
+    nlohmann::json r{{"scenario_file", c.scenario},
+                     {"run_dir", c.out},
+                     {"exit_code", c.exit_code},
+                     {"pass", c.exit_code == 0},
+                     {"wall_time_s", c.wall_s}};
     if (c.seed) r["seed"] = *c.seed;
     if (c.report.is_object()) {
       r["scenario"] = c.report.value("scenario", "");
@@ -188,8 +206,10 @@ SuiteResult RunSuite(const SuiteOptions& opt) {
       r["criteria"] = c.report.value("criteria", nlohmann::json::array());
       r["complete"] = c.report.value("complete", true);
       // the fault campaign: what each fault injected and how navd saw it (fault_report.h)
-      if (c.report.contains("fault_injections")) r["fault_injections"] = c.report["fault_injections"];
-      if (c.report.contains("estimator_health")) r["estimator_health"] = c.report["estimator_health"];
+      if (c.report.contains("fault_injections"))
+        r["fault_injections"] = c.report["fault_injections"];
+      if (c.report.contains("estimator_health"))
+        r["estimator_health"] = c.report["estimator_health"];
       r["metric_table"] = c.report.value("metric_table", nlohmann::json::object());
       r["baseline_table"] = c.report.value("baseline_table", nlohmann::json::object());
       r["outages"] = r["metrics"].value("outages", nlohmann::json::array());
@@ -206,7 +226,8 @@ SuiteResult RunSuite(const SuiteOptions& opt) {
   summary["short_form"] = opt.short_form;
   summary["seeds"] = std::max(1, opt.repeat);
   summary["jobs"] = opt.jobs;
-  summary["wall_time_s"] = static_cast<double>(link::RealtimePacer::MonotonicNs() - suite_start_ns) * 1e-9;
+  summary["wall_time_s"] =
+      static_cast<double>(link::RealtimePacer::MonotonicNs() - suite_start_ns) * 1e-9;
   summary["scenarios"] = SummariseScenarios(infos, summary["runs"]);
   std::ofstream(opt.out_dir + "/summary.json") << summary.dump(2) << "\n";
   std::ofstream md(opt.out_dir + "/report.md");

@@ -19,14 +19,21 @@ std::string Fmt(const std::string& metric, const json& v) {
   char b[48];
   const auto ends = [&](const char* s) {
     const std::string suf(s);
-    return metric.size() >= suf.size() && metric.compare(metric.size() - suf.size(), suf.size(), suf) == 0;
+    return metric.size() >= suf.size() &&
+           metric.compare(metric.size() - suf.size(), suf.size(), suf) == 0;
   };
-  if (ends("_m") && std::abs(x) >= 1000.0) std::snprintf(b, sizeof b, "%.1f km", x / 1000.0);
-  else if (ends("_m") && std::abs(x) >= 10.0) std::snprintf(b, sizeof b, "%.1f m", x);
-  else if (ends("_m")) std::snprintf(b, sizeof b, "%.1f cm", x * 100.0);
-  else if (ends("_deg")) std::snprintf(b, sizeof b, "%.2f°", x);
-  else if (ends("_s")) std::snprintf(b, sizeof b, "%.1f s", x);
-  else std::snprintf(b, sizeof b, "%.3g", x);
+  if (ends("_m") && std::abs(x) >= 1000.0)
+    std::snprintf(b, sizeof b, "%.1f km", x / 1000.0);
+  else if (ends("_m") && std::abs(x) >= 10.0)
+    std::snprintf(b, sizeof b, "%.1f m", x);
+  else if (ends("_m"))
+    std::snprintf(b, sizeof b, "%.1f cm", x * 100.0);
+  else if (ends("_deg"))
+    std::snprintf(b, sizeof b, "%.2f°", x);
+  else if (ends("_s"))
+    std::snprintf(b, sizeof b, "%.1f s", x);
+  else
+    std::snprintf(b, sizeof b, "%.3g", x);
   return b;
 }
 
@@ -35,8 +42,8 @@ std::string FmtSpread(const std::string& metric, const json& s) {
   if (!s.is_object() || s.value("n", 0) == 0) return "n/a";
   const int n = s.value("n", 0);
   if (n == 1) return Fmt(metric, s["mean"]);
-  return Fmt(metric, s["mean"]) + " ± " + Fmt(metric, s["std"]) + " (" + Fmt(metric, s["min"]) + " – " +
-         Fmt(metric, s["max"]) + ", " + std::to_string(n) + " seeds)";
+  return Fmt(metric, s["mean"]) + " ± " + Fmt(metric, s["std"]) + " (" + Fmt(metric, s["min"]) +
+         " – " + Fmt(metric, s["max"]) + ", " + std::to_string(n) + " seeds)";
 }
 
 std::string Cell(std::string s) {  // Markdown table cell: no pipes or newlines
@@ -59,7 +66,8 @@ json SpreadOf(const std::vector<json>& values) {
   for (const auto& v : values) {
     if (v.is_number()) x.push_back(v.get<double>());
   }
-  if (x.empty()) return {{"n", 0}, {"mean", nullptr}, {"std", nullptr}, {"min", nullptr}, {"max", nullptr}};
+  if (x.empty())
+    return {{"n", 0}, {"mean", nullptr}, {"std", nullptr}, {"min", nullptr}, {"max", nullptr}};
   double mean = 0;
   for (double v : x) mean += v / static_cast<double>(x.size());
   double ss = 0;
@@ -81,7 +89,8 @@ json SummariseScenarios(const std::vector<SuiteScenarioInfo>& scenarios, const j
     }
     json s;
     s["scenario_file"] = info.file;
-    s["scenario"] = info.scenario ? info.scenario->name : std::filesystem::path(info.file).stem().string();
+    s["scenario"] =
+        info.scenario ? info.scenario->name : std::filesystem::path(info.file).stem().string();
     s["description"] = info.scenario ? info.scenario->description : "";
     s["short_form"] = info.scenario && info.scenario->short_form;
     if (!info.error.empty()) s["error"] = info.error;
@@ -107,8 +116,9 @@ json SummariseScenarios(const std::vector<SuiteScenarioInfo>& scenarios, const j
           ours.push_back(Lookup(r, "metric_table", p.metric));
           base.push_back(Lookup(r, "baseline_table", p.metric));
         }
-        json f{{"source", p.source},   {"metric", p.metric},   {"relation", p.relation},   {"finding", p.finding},
-               {"note", p.note},       {"ours", SpreadOf(ours)}, {"raw_gnss", SpreadOf(base)}};
+        json f{{"source", p.source},        {"metric", p.metric}, {"relation", p.relation},
+               {"finding", p.finding},      {"note", p.note},     {"ours", SpreadOf(ours)},
+               {"raw_gnss", SpreadOf(base)}};
         f["value"] = p.value ? json(*p.value) : json(nullptr);
         s["paper"].push_back(f);
       }
@@ -116,7 +126,8 @@ json SummariseScenarios(const std::vector<SuiteScenarioInfo>& scenarios, const j
     // criteria, by position in the scenario's list: pass when every seed passed
     s["criteria"] = json::array();
     std::size_t n_criteria = 0;
-    for (const auto& r : mine) n_criteria = std::max(n_criteria, r.value("criteria", json::array()).size());
+    for (const auto& r : mine)
+      n_criteria = std::max(n_criteria, r.value("criteria", json::array()).size());
     for (std::size_t k = 0; k < n_criteria; ++k) {
       std::vector<json> values, thresholds;
       std::size_t ok = 0, seen = 0;
@@ -130,8 +141,9 @@ json SummariseScenarios(const std::vector<SuiteScenarioInfo>& scenarios, const j
         thresholds.push_back(crit[k].value("threshold", json(nullptr)));
         ok += crit[k].value("pass", false) ? 1 : 0;
       }
-      const std::string metric =
-          info.scenario && k < info.scenario->criteria.size() ? info.scenario->criteria[k].metric : "";
+      const std::string metric = info.scenario && k < info.scenario->criteria.size()
+                                     ? info.scenario->criteria[k].metric
+                                     : "";
       s["criteria"].push_back({{"name", name},
                                {"metric", metric},
                                {"passed", ok},
@@ -144,7 +156,8 @@ json SummariseScenarios(const std::vector<SuiteScenarioInfo>& scenarios, const j
     s["outages"] = json::array();
     std::size_t n_outages = 0;
     for (const auto& r : mine) {
-      if (r.contains("outages") && r["outages"].is_array()) n_outages = std::max(n_outages, r["outages"].size());
+      if (r.contains("outages") && r["outages"].is_array())
+        n_outages = std::max(n_outages, r["outages"].size());
     }
     for (std::size_t k = 0; k < n_outages; ++k) {
       std::map<std::string, std::vector<json>> v;
@@ -154,8 +167,8 @@ json SummariseScenarios(const std::vector<SuiteScenarioInfo>& scenarios, const j
         const json& x = r["outages"][k];
         o["start_s"] = x.value("start_s", 0.0);
         o["end_s"] = x.value("end_s", 0.0);
-        for (const char* key : {"max_east_error_m", "max_north_error_m", "max_up_error_m", "max_horizontal_error_m",
-                                "reconvergence_time_s"}) {
+        for (const char* key : {"max_east_error_m", "max_north_error_m", "max_up_error_m",
+                                "max_horizontal_error_m", "reconvergence_time_s"}) {
           v[key].push_back(x.value(key, json(nullptr)));
         }
       }
@@ -172,18 +185,26 @@ std::string SuiteMarkdown(const json& summary) {
   char line[512];
   const json scenarios = summary.value("scenarios", json::array());
   md += "# Acceptance suite: our figures beside the papers'\n\n";
-  std::snprintf(line, sizeof line, "Scenario folder `%s`, %s form, %d seed(s) per scenario, %.0f s wall time. ",
-                summary.value("scenario_dir", "").c_str(), summary.value("short_form", false) ? "**short**" : "full",
+  std::snprintf(line, sizeof line,
+                "Scenario folder `%s`, %s form, %d seed(s) per scenario, %.0f s wall time. ",
+                summary.value("scenario_dir", "").c_str(),
+                summary.value("short_form", false) ? "**short**" : "full",
                 summary.value("seeds", 1), summary.value("wall_time_s", 0.0));
   md += line;
-  std::snprintf(line, sizeof line, "Runs: %d passed, %d failed, %d invalid — **%s**.\n\n", summary.value("passed", 0),
-                summary.value("failed", 0), summary.value("invalid", 0), summary.value("pass", false) ? "PASS" : "FAIL");
+  std::snprintf(line, sizeof line, "Runs: %d passed, %d failed, %d invalid — **%s**.\n\n",
+                summary.value("passed", 0), summary.value("failed", 0), summary.value("invalid", 0),
+                summary.value("pass", false) ? "PASS" : "FAIL");
   md += line;
-  md += "Values are the mean ± sample standard deviation over the seeds (min – max). A criterion passes when it "
-        "passes in every seed. Reference figures come from each scenario file's `paper:` section.\n\n";
+  md +=
+      "Values are the mean ± sample standard deviation over the seeds (min – max). A criterion "
+      "passes when it "
+      "passes in every seed. Reference figures come from each scenario file's `paper:` "
+      "section.\n\n";
 
-  md += "## Reference figures\n\n| scenario | source | metric | paper | ours | raw GNSS (one receiver) | note |\n"
-        "|---|---|---|---|---|---|---|\n";
+  md +=
+      "## Reference figures\n\n| scenario | source | metric | paper | ours | raw GNSS (one "
+      "receiver) | note |\n"
+      "|---|---|---|---|---|---|---|\n";
   bool any_paper = false;
   for (const auto& s : scenarios) {
     for (const auto& p : s.value("paper", json::array())) {
@@ -195,47 +216,61 @@ std::string SuiteMarkdown(const json& summary) {
       if (!paper.empty() && rel == "above") paper = "> " + paper;
       const std::string finding = p.value("finding", "");
       if (!finding.empty()) paper += (paper.empty() ? "" : " — ") + finding;
-      md += "| " + Cell(s.value("scenario", "")) + " | " + Cell(p.value("source", "")) + " | `" + metric + "` | " +
-            Cell(paper) + " | " + FmtSpread(metric, p["ours"]) + " | " + FmtSpread(metric, p["raw_gnss"]) + " | " +
-            Cell(p.value("note", "")) + " |\n";
+      md += "| " + Cell(s.value("scenario", "")) + " | " + Cell(p.value("source", "")) + " | `" +
+            metric + "` | " + Cell(paper) + " | " + FmtSpread(metric, p["ours"]) + " | " +
+            FmtSpread(metric, p["raw_gnss"]) + " | " + Cell(p.value("note", "")) + " |\n";
     }
   }
   if (!any_paper) md += "| (no scenario has a `paper:` section) | | | | | | |\n";
 
   bool any_outage = false;
-  for (const auto& s : scenarios) any_outage = any_outage || !s.value("outages", json::array()).empty();
+  for (const auto& s : scenarios)
+    any_outage = any_outage || !s.value("outages", json::array()).empty();
   if (any_outage) {
-    md += "\n## GNSS outages: maximum error inside each outage (paper 004: < 11 cm in E, N and U)\n\n"
-          "| scenario | outage | max east | max north | max up | max horizontal | re-converged after |\n"
-          "|---|---|---|---|---|---|---|\n";
+    md +=
+        "\n## GNSS outages: maximum error inside each outage (paper 004: < 11 cm in E, N and U)\n\n"
+        "| scenario | outage | max east | max north | max up | max horizontal | re-converged after "
+        "|\n"
+        "|---|---|---|---|---|---|---|\n";
     for (const auto& s : scenarios) {
       for (const auto& o : s.value("outages", json::array())) {
-        std::snprintf(line, sizeof line, "%.0f–%.0f s", o.value("start_s", 0.0), o.value("end_s", 0.0));
-        md += "| " + Cell(s.value("scenario", "")) + " | " + line + " | " + FmtSpread("e_m", o["max_east_error_m"]) +
-              " | " + FmtSpread("e_m", o["max_north_error_m"]) + " | " + FmtSpread("e_m", o["max_up_error_m"]) + " | " +
-              FmtSpread("e_m", o["max_horizontal_error_m"]) + " | " + FmtSpread("t_s", o["reconvergence_time_s"]) + " |\n";
+        std::snprintf(line, sizeof line, "%.0f–%.0f s", o.value("start_s", 0.0),
+                      o.value("end_s", 0.0));
+        md += "| " + Cell(s.value("scenario", "")) + " | " + line + " | " +
+              FmtSpread("e_m", o["max_east_error_m"]) + " | " +
+              FmtSpread("e_m", o["max_north_error_m"]) + " | " +
+              FmtSpread("e_m", o["max_up_error_m"]) + " | " +
+              FmtSpread("e_m", o["max_horizontal_error_m"]) + " | " +
+              FmtSpread("t_s", o["reconvergence_time_s"]) + " |\n";
       }
     }
   }
 
-  md += "\n## Criteria\n\n| scenario | criterion | value | threshold | seeds passed | result |\n|---|---|---|---|---|---|\n";
+  md +=
+      "\n## Criteria\n\n| scenario | criterion | value | threshold | seeds passed | result "
+      "|\n|---|---|---|---|---|---|\n";
   for (const auto& s : scenarios) {
     const std::string name = Cell(s.value("scenario", ""));
     if (s.contains("error")) {
-      md += "| " + name + " | invalid scenario | " + Cell(s.value("error", "")) + " | | | **INVALID** |\n";
+      md += "| " + name + " | invalid scenario | " + Cell(s.value("error", "")) +
+            " | | | **INVALID** |\n";
       continue;
     }
     const json crit = s.value("criteria", json::array());
-    if (crit.empty()) md += "| " + name + " | (no criteria) | | | | " + (s.value("pass", false) ? "PASS" : "**FAIL**") + " |\n";
+    if (crit.empty())
+      md += "| " + name + " | (no criteria) | | | | " +
+            (s.value("pass", false) ? "PASS" : "**FAIL**") + " |\n";
     for (const auto& c : crit) {
       const std::string cname = c.value("name", "");
       const std::string metric = c.value("metric", "");
       std::snprintf(line, sizeof line, "%d/%d", c.value("passed", 0), c.value("runs", 0));
       md += "| " + name + " | " + Cell(cname) + " | " + FmtSpread(metric, c["value"]) + " | " +
-            FmtSpread(metric, c["threshold"]) + " | " + line + " | " + (c.value("pass", false) ? "PASS" : "**FAIL**") + " |\n";
+            FmtSpread(metric, c["threshold"]) + " | " + line + " | " +
+            (c.value("pass", false) ? "PASS" : "**FAIL**") + " |\n";
     }
     for (const auto& p : s.value("problems", json::array())) {
-      md += "| " + name + " | run problem | " + Cell(p.is_string() ? p.get<std::string>() : p.dump()) + " | | | **FAIL** |\n";
+      md += "| " + name + " | run problem | " +
+            Cell(p.is_string() ? p.get<std::string>() : p.dump()) + " | | | **FAIL** |\n";
     }
   }
 
@@ -244,10 +279,14 @@ std::string SuiteMarkdown(const json& summary) {
     const int code = r.value("exit_code", -1);
     std::snprintf(line, sizeof line, "%.1f s", r.value("wall_time_s", 0.0));
     md += "| " + Cell(std::filesystem::path(r.value("run_dir", "")).filename().string()) + " | " +
-          (r.contains("seed") && r.at("seed").is_number() ? std::to_string(r.at("seed").get<std::uint64_t>())
-                                                            : std::string("-")) +
+          (r.contains("seed") && r.at("seed").is_number()
+               ? std::to_string(r.at("seed").get<std::uint64_t>())
+               : std::string("-")) +
           " | " +
-          (code == 0 ? "PASS" : code == 1 ? "FAIL" : "ERROR (" + std::to_string(code) + ")") + " | " + line + " |\n";
+          (code == 0   ? "PASS"
+           : code == 1 ? "FAIL"
+                       : "ERROR (" + std::to_string(code) + ")") +
+          " | " + line + " |\n";
   }
   return md;
 }

@@ -25,8 +25,9 @@ std::uint32_t PgnOf(std::uint32_t id) {
 }
 
 // NMEA 2000 PGNs sent as fast packets (the ones a navigation stack emits or reads)
-const std::set<std::uint32_t> kFastPacketPgns{126464, 126996, 127233, 127237, 127489, 128275, 129029,
-                                              129038, 129039, 129284, 129285, 129540, 129542, 129794};
+const std::set<std::uint32_t> kFastPacketPgns{126464, 126996, 127233, 127237, 127489,
+                                              128275, 129029, 129038, 129039, 129284,
+                                              129285, 129540, 129542, 129794};
 
 struct FastPacketState {
   int seq = -1;
@@ -45,7 +46,7 @@ ValidationReport ValidateCanLog(const std::string& text) {
   std::string line;
   std::int64_t line_no = 0;
   double last_t = -1;
-  std::map<std::string, std::vector<double>> times;  // per identifier
+  std::map<std::string, std::vector<double>> times;                         // per identifier
   std::map<std::pair<std::uint32_t, std::uint32_t>, FastPacketState> fast;  // (source, pgn)
   while (std::getline(in, line)) {
     ++line_no;
@@ -54,7 +55,8 @@ ValidationReport ValidateCanLog(const std::string& text) {
     std::istringstream ls(line);
     std::string ts, iface, frame;
     if (!(ls >> ts >> iface >> frame) || ts.size() < 4 || ts.front() != '(' || ts.back() != ')') {
-      rep.findings.push_back({true, "format", "not a candump -l line: '" + line.substr(0, 40) + "'", line_no});
+      rep.findings.push_back(
+          {true, "format", "not a candump -l line: '" + line.substr(0, 40) + "'", line_no});
       ++rep.bad_frames;
       continue;
     }
@@ -77,19 +79,24 @@ ValidationReport ValidateCanLog(const std::string& text) {
     const bool fd = !data.empty() && data[0] == '#';
     if (fd) data = data.size() >= 2 ? data.substr(2) : "";  // "##<flags><data>"
     if ((id_hex.size() != 3 && id_hex.size() != 8) || !AllHex(id_hex)) {
-      rep.findings.push_back({true, "identifier", "identifier '" + id_hex + "' must be 3 (standard) or 8 (extended) hex digits", line_no});
+      rep.findings.push_back(
+          {true, "identifier",
+           "identifier '" + id_hex + "' must be 3 (standard) or 8 (extended) hex digits", line_no});
       ++rep.bad_frames;
       continue;
     }
     const auto id = static_cast<std::uint32_t>(std::stoul(id_hex, nullptr, 16));
     if ((id_hex.size() == 3 && id > 0x7FF) || id > 0x1FFFFFFF) {
-      rep.findings.push_back({true, "identifier", "identifier " + id_hex + " out of range", line_no});
+      rep.findings.push_back(
+          {true, "identifier", "identifier " + id_hex + " out of range", line_no});
       ++rep.bad_frames;
       continue;
     }
     const bool remote = data == "R" || (data.size() == 2 && data[0] == 'R');
     if (!remote && (data.size() % 2 != 0 || !AllHex(data) || data.size() > (fd ? 128u : 16u))) {
-      rep.findings.push_back({true, "data", "data '" + data + "' is not whole bytes of hex within the frame length", line_no});
+      rep.findings.push_back(
+          {true, "data", "data '" + data + "' is not whole bytes of hex within the frame length",
+           line_no});
       ++rep.bad_frames;
       continue;
     }
@@ -109,15 +116,21 @@ ValidationReport ValidateCanLog(const std::string& text) {
         FastPacketState& st = fast[{id & 0xFF, pgn}];
         if (frame_no == 0) {
           if (st.frames_left > 0) {
-            rep.findings.push_back({true, "fast_packet", "PGN " + std::to_string(pgn) + ": new packet before the previous one ended", line_no});
+            rep.findings.push_back(
+                {true, "fast_packet",
+                 "PGN " + std::to_string(pgn) + ": new packet before the previous one ended",
+                 line_no});
           }
           const int len = std::stoi(data.substr(2, 2), nullptr, 16);
           st.seq = seq;
           st.next_frame = 1;
           st.frames_left = len <= 6 ? 0 : (len - 6 + 6) / 7;
         } else if (st.frames_left == 0 || seq != st.seq || frame_no != st.next_frame) {
-          rep.findings.push_back({true, "fast_packet", "PGN " + std::to_string(pgn) + ": frame " + std::to_string(frame_no) +
-                                                           " of sequence " + std::to_string(seq) + " out of order", line_no});
+          rep.findings.push_back({true, "fast_packet",
+                                  "PGN " + std::to_string(pgn) + ": frame " +
+                                      std::to_string(frame_no) + " of sequence " +
+                                      std::to_string(seq) + " out of order",
+                                  line_no});
           st.frames_left = 0;
         } else {
           ++st.next_frame;
@@ -135,7 +148,10 @@ ValidationReport ValidateCanLog(const std::string& text) {
     if (span > 0) rep.messages[id].rate_hz = static_cast<double>(ts.size() - 1) / span;
     std::size_t gaps = 0;
     for (const double d : dt) gaps += med > 0 && d > 2.5 * med ? 1 : 0;
-    if (gaps > 0) rep.findings.push_back({false, "sequence_gap", id + ": " + std::to_string(gaps) + " gap(s) longer than 2.5 periods", -1});
+    if (gaps > 0)
+      rep.findings.push_back({false, "sequence_gap",
+                              id + ": " + std::to_string(gaps) + " gap(s) longer than 2.5 periods",
+                              -1});
   }
   rep.epochs = 0;
   if (rep.frames == 0) rep.findings.push_back({true, "empty", "no valid frame in the log", -1});

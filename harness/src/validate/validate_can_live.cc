@@ -13,19 +13,24 @@ namespace hil::harness {
 
 bool IsNetworkInterface(const std::string& source) {
   std::error_code ec;
-  if (source.empty() || source.find('/') != std::string::npos || std::filesystem::exists(source, ec)) return false;
+  if (source.empty() || source.find('/') != std::string::npos ||
+      std::filesystem::exists(source, ec))
+    return false;
   return std::filesystem::exists("/sys/class/net/" + source, ec);
 }
 
 CanListen ListenCanInterface(const std::string& iface, double listen_s) {
   if (!link::SocketCanPort::Available()) {
-    throw std::runtime_error("cannot listen to " + iface +
-                             ": this kernel has no SocketCAN (AF_CAN); use the vcan VM (ci/vcan/run_in_vm)");
+    throw std::runtime_error(
+        "cannot listen to " + iface +
+        ": this kernel has no SocketCAN (AF_CAN); use the vcan VM (ci/vcan/run_in_vm)");
   }
   link::SocketCanPort port(iface, link::SocketCanPort::Options{});
   CanListen out;
-  const std::int64_t end = link::RealtimePacer::MonotonicNs() + static_cast<std::int64_t>(listen_s * 1e9);
-  for (std::int64_t now = link::RealtimePacer::MonotonicNs(); now < end; now = link::RealtimePacer::MonotonicNs()) {
+  const std::int64_t end =
+      link::RealtimePacer::MonotonicNs() + static_cast<std::int64_t>(listen_s * 1e9);
+  for (std::int64_t now = link::RealtimePacer::MonotonicNs(); now < end;
+       now = link::RealtimePacer::MonotonicNs()) {
     const auto r = port.Receive(Duration(std::min<std::int64_t>(end - now, 100000000)));
     if (!r) continue;
     link::CandumpRecord rec;
@@ -44,12 +49,14 @@ ValidationReport ValidateCanInterface(const std::string& iface, double listen_s)
   const CanListen l = ListenCanInterface(iface, listen_s);
   ValidationReport rep = ValidateCanLog(l.candump_text);
   char what[160];
-  std::snprintf(what, sizeof what, "live CAN interface %s, listened to for %g s (%llu frames)", iface.c_str(), listen_s,
-                static_cast<unsigned long long>(l.frames));
+  std::snprintf(what, sizeof what, "live CAN interface %s, listened to for %g s (%llu frames)",
+                iface.c_str(), listen_s, static_cast<unsigned long long>(l.frames));
   rep.description = what;
   if (l.rx_queue_drops > 0) {
     rep.findings.push_back({true, "overflow",
-                            std::to_string(l.rx_queue_drops) + " frame(s) dropped by the receive queue while listening", -1});
+                            std::to_string(l.rx_queue_drops) +
+                                " frame(s) dropped by the receive queue while listening",
+                            -1});
   }
   return rep;
 }

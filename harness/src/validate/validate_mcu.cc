@@ -19,14 +19,16 @@ std::uint16_t Crc16CcittFalse(const std::string& b, std::size_t from, std::size_
   std::uint16_t crc = 0xFFFF;
   for (std::size_t i = from; i < to; ++i) {
     crc = static_cast<std::uint16_t>(crc ^ (static_cast<unsigned char>(b[i]) << 8));
-    for (int k = 0; k < 8; ++k) crc = static_cast<std::uint16_t>(crc & 0x8000 ? (crc << 1) ^ 0x1021 : crc << 1);
+    for (int k = 0; k < 8; ++k)
+      crc = static_cast<std::uint16_t>(crc & 0x8000 ? (crc << 1) ^ 0x1021 : crc << 1);
   }
   return crc;
 }
 
 std::uint32_t U(const std::string& b, std::size_t i, int n) {
   std::uint32_t v = 0;
-  for (int k = n - 1; k >= 0; --k) v = (v << 8) | static_cast<unsigned char>(b[i + static_cast<std::size_t>(k)]);
+  for (int k = n - 1; k >= 0; --k)
+    v = (v << 8) | static_cast<unsigned char>(b[i + static_cast<std::size_t>(k)]);
   return v;
 }
 
@@ -34,7 +36,8 @@ struct TypeSpec {
   const char* name;
   int length;
 };
-const std::map<int, TypeSpec> kTypes{{1, {"IMU_SAMPLE", 12}}, {2, {"MAG_SAMPLE", 6}}, {3, {"TIME_PULSE", 7}}, {4, {"STATUS", 26}}};
+const std::map<int, TypeSpec> kTypes{
+    {1, {"IMU_SAMPLE", 12}}, {2, {"MAG_SAMPLE", 6}}, {3, {"TIME_PULSE", 7}}, {4, {"STATUS", 26}}};
 
 }  // namespace
 
@@ -55,13 +58,15 @@ ValidationReport ValidateMcuStream(const ByteStream& s) {
   std::size_t pos = 0, garbage_start = std::string::npos;
   const auto flush = [&](std::size_t end) {
     if (garbage_start == std::string::npos) return;
-    rep.findings.push_back({true, "framing", std::to_string(end - garbage_start) + " byte(s) outside any frame",
+    rep.findings.push_back({true, "framing",
+                            std::to_string(end - garbage_start) + " byte(s) outside any frame",
                             static_cast<std::int64_t>(garbage_start)});
     rep.garbage_bytes += end - garbage_start;
     garbage_start = std::string::npos;
   };
   while (pos < b.size()) {
-    if (!(static_cast<unsigned char>(b[pos]) == 0xA5 && pos + 1 < b.size() && static_cast<unsigned char>(b[pos + 1]) == 0x5A)) {
+    if (!(static_cast<unsigned char>(b[pos]) == 0xA5 && pos + 1 < b.size() &&
+          static_cast<unsigned char>(b[pos + 1]) == 0x5A)) {
       if (garbage_start == std::string::npos) garbage_start = pos;
       ++pos;
       continue;
@@ -72,12 +77,15 @@ ValidationReport ValidateMcuStream(const ByteStream& s) {
       rep.findings.push_back({false, "truncated", "frame cut off at the end of the stream", off});
       break;
     }
-    const int version = static_cast<unsigned char>(b[pos + 2]), type = static_cast<unsigned char>(b[pos + 3]);
+    const int version = static_cast<unsigned char>(b[pos + 2]),
+              type = static_cast<unsigned char>(b[pos + 3]);
     const std::size_t n = static_cast<unsigned char>(b[pos + 4]);
     const auto spec = kTypes.find(type);
     if (version != 1 || spec == kTypes.end() || static_cast<int>(n) != spec->second.length) {
       char msg[96];
-      std::snprintf(msg, sizeof msg, "frame with version %d, type 0x%02X, length %zu is not in the protocol", version, type, n);
+      std::snprintf(msg, sizeof msg,
+                    "frame with version %d, type 0x%02X, length %zu is not in the protocol",
+                    version, type, n);
       rep.findings.push_back({true, "frame_header", msg, off});
       ++rep.bad_frames;
       pos += 1;
@@ -88,7 +96,8 @@ ValidationReport ValidateMcuStream(const ByteStream& s) {
       break;
     }
     if (Crc16CcittFalse(b, pos + 2, pos + 11 + n) != U(b, pos + 11 + n, 2)) {
-      rep.findings.push_back({true, "checksum", std::string(spec->second.name) + " CRC mismatch", off});
+      rep.findings.push_back(
+          {true, "checksum", std::string(spec->second.name) + " CRC mismatch", off});
       ++rep.bad_frames;
       pos += 1;
       continue;
@@ -103,11 +112,13 @@ ValidationReport ValidateMcuStream(const ByteStream& s) {
       const auto count = static_cast<std::uint16_t>(U(b, p + 2, 2));
       reset = seq == 0 && (!reset_count || count > *reset_count);
       if (seq == 0 && reset_count && count <= *reset_count) {
-        rep.findings.push_back({true, "reset", "sequence restarted at 0 without a higher reset count", off});
+        rep.findings.push_back(
+            {true, "reset", "sequence restarted at 0 without a higher reset count", off});
       }
       reset_count = count;
       imu_period_ticks = U(b, p + 8, 4);
-      if (U(b, p + 4, 4) != 1000000) rep.findings.push_back({true, "status", "nominal tick rate is not 1 MHz", off});
+      if (U(b, p + 4, 4) != 1000000)
+        rep.findings.push_back({true, "status", "nominal tick rate is not 1 MHz", off});
     }
     if (reset) {
       last_tick.clear();
@@ -116,15 +127,16 @@ ValidationReport ValidateMcuStream(const ByteStream& s) {
       have_pulse = false;
     } else if (last_seq && seq != static_cast<std::uint16_t>(*last_seq + 1)) {
       rep.findings.push_back({true, "sequence_gap",
-                              std::to_string(static_cast<std::uint16_t>(seq - *last_seq - 1)) + " frame(s) missing before sequence " +
-                                  std::to_string(seq),
+                              std::to_string(static_cast<std::uint16_t>(seq - *last_seq - 1)) +
+                                  " frame(s) missing before sequence " + std::to_string(seq),
                               off});
     }
     last_seq = seq;
     if (const auto it = last_tick.find(type); it != last_tick.end()) {
       const std::uint32_t d = tick - it->second;  // modulo 2^32
       if (d == 0 || d > 0x80000000u) {
-        rep.findings.push_back({true, "tick_monotonic", std::string(spec->second.name) + " tick did not increase", off});
+        rep.findings.push_back({true, "tick_monotonic",
+                                std::string(spec->second.name) + " tick did not increase", off});
       } else if (tick < it->second) {
         wrap[type] += 1ull << 32;
       }
@@ -134,7 +146,8 @@ ValidationReport ValidateMcuStream(const ByteStream& s) {
     if (type == 3) {  // TIME_PULSE
       const std::uint32_t tow = U(b, p + 2, 4);
       const bool valid = (static_cast<unsigned char>(b[p + 6]) & 1) != 0;
-      if (valid && tow % 1000 != 0) rep.findings.push_back({true, "time_pulse", "pulse TOW is not a whole second", off});
+      if (valid && tow % 1000 != 0)
+        rep.findings.push_back({true, "time_pulse", "pulse TOW is not a whole second", off});
       if (valid && have_pulse && tow > pulse_tow_ms) {
         const double ds = (tow - pulse_tow_ms) * 1e-3;
         const double rate = static_cast<double>(static_cast<std::uint32_t>(tick - pulse_tick)) / ds;
@@ -156,9 +169,11 @@ ValidationReport ValidateMcuStream(const ByteStream& s) {
   for (auto& [type, t] : ticks) {
     if (t.size() < 2 || t.back() <= t.front()) continue;
     const std::string name = kTypes.at(type).name;
-    rep.messages[name].rate_hz = static_cast<double>(t.size() - 1) / ((t.back() - t.front()) * 1e-6);
+    rep.messages[name].rate_hz =
+        static_cast<double>(t.size() - 1) / ((t.back() - t.front()) * 1e-6);
   }
-  if (imu_period_ticks && *imu_period_ticks > 0 && rep.messages.count("IMU_SAMPLE") && rep.messages["IMU_SAMPLE"].rate_hz > 0) {
+  if (imu_period_ticks && *imu_period_ticks > 0 && rep.messages.count("IMU_SAMPLE") &&
+      rep.messages["IMU_SAMPLE"].rate_hz > 0) {
     const double expected = 1e6 / *imu_period_ticks, got = rep.messages["IMU_SAMPLE"].rate_hz;
     rep.epoch_rate_hz = got;
     if (std::abs(got / expected - 1.0) > kMaxImuRateError) {

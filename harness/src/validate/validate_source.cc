@@ -1,7 +1,6 @@
 // Reading what `hil validate` checks: hil captures, raw logs, live serial devices.
 #include <fcntl.h>
 #include <poll.h>
-#include <sys/stat.h>
 #include <termios.h>
 #include <unistd.h>
 
@@ -10,6 +9,8 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+
+#include <sys/stat.h>
 
 #include "hil/firmware_emu/link/pty_port.h"
 #include "hil/firmware_emu/link/realtime_pacer.h"
@@ -34,14 +35,17 @@ ByteStream ReadCapture(const std::string& text, const std::string& source) {
       continue;
     }
     const auto rec = ParseCaptureLine(line);
-    if (!rec) throw std::runtime_error(source + ":" + std::to_string(line_no) + ": not a capture line");
-    if (rec->dir != CaptureDir::kTx) continue;  // host bytes, drops and frames are not the device's stream
+    if (!rec)
+      throw std::runtime_error(source + ":" + std::to_string(line_no) + ": not a capture line");
+    if (rec->dir != CaptureDir::kTx)
+      continue;  // host bytes, drops and frames are not the device's stream
     for (std::size_t i = 0; i < rec->bytes.size(); ++i) {
       s.bytes.push_back(rec->bytes[i]);
       s.t_ns.push_back(ToNs(rec->t_byte(i)));
     }
   }
-  s.description = "hil capture (" + header.substr(std::min<std::size_t>(header.size(), 2)) + "), device bytes";
+  s.description =
+      "hil capture (" + header.substr(std::min<std::size_t>(header.size(), 2)) + "), device bytes";
   return s;
 }
 
@@ -60,7 +64,8 @@ ByteStream ListenSerial(const std::string& source, double listen_s, int baud) {
   char buf[1024];
   for (std::int64_t now = t0; now < end; now = link::RealtimePacer::MonotonicNs()) {
     pollfd p{fd, POLLIN, 0};
-    if (poll(&p, 1, static_cast<int>(std::max<std::int64_t>(1, (end - now) / 1000000))) <= 0) continue;
+    if (poll(&p, 1, static_cast<int>(std::max<std::int64_t>(1, (end - now) / 1000000))) <= 0)
+      continue;
     const ssize_t n = read(fd, buf, sizeof buf);
     if (n <= 0) continue;
     const std::int64_t t = link::RealtimePacer::MonotonicNs() - t0;
@@ -70,7 +75,8 @@ ByteStream ListenSerial(const std::string& source, double listen_s, int baud) {
     }
   }
   close(fd);
-  s.description = "serial device listened to for " + std::to_string(listen_s) + " s at " + std::to_string(baud) + " baud";
+  s.description = "serial device listened to for " + std::to_string(listen_s) + " s at " +
+                  std::to_string(baud) + " baud";
   return s;
 }
 
@@ -78,7 +84,8 @@ ByteStream ListenSerial(const std::string& source, double listen_s, int baud) {
 
 ByteStream ReadByteSource(const std::string& source, double listen_s, int baud) {
   struct stat st {};
-  if (stat(source.c_str(), &st) != 0) throw std::runtime_error("cannot read " + source + ": " + std::strerror(errno));
+  if (stat(source.c_str(), &st) != 0)
+    throw std::runtime_error("cannot read " + source + ": " + std::strerror(errno));
   if (S_ISCHR(st.st_mode)) return ListenSerial(source, listen_s, baud);
   std::ifstream in(source, std::ios::binary);
   if (!in) throw std::runtime_error("cannot read " + source);

@@ -4,8 +4,8 @@
 #include <cstdio>
 #include <set>
 
-#include "hil/harness/eval/evaluator.h"
 #include "hil/harness/dut/nmea_sentence.h"
+#include "hil/harness/eval/evaluator.h"
 #include "hil/harness/validate/validate.h"
 
 namespace hil::harness {
@@ -32,10 +32,12 @@ struct Framed {
 };
 
 std::uint16_t Le16(const std::string& b, std::size_t i) {
-  return static_cast<std::uint16_t>(static_cast<unsigned char>(b[i]) | (static_cast<unsigned char>(b[i + 1]) << 8));
+  return static_cast<std::uint16_t>(static_cast<unsigned char>(b[i]) |
+                                    (static_cast<unsigned char>(b[i + 1]) << 8));
 }
 std::uint32_t Le32(const std::string& b, std::size_t i) {
-  return static_cast<std::uint32_t>(Le16(b, i)) | (static_cast<std::uint32_t>(Le16(b, i + 2)) << 16);
+  return static_cast<std::uint32_t>(Le16(b, i)) |
+         (static_cast<std::uint32_t>(Le16(b, i + 2)) << 16);
 }
 
 Framed FrameStream(const ByteStream& s, bool want_nmea, bool want_ubx, ValidationReport& rep) {
@@ -44,7 +46,8 @@ Framed FrameStream(const ByteStream& s, bool want_nmea, bool want_ubx, Validatio
   std::size_t pos = 0, garbage_start = std::string::npos;
   const auto flush_garbage = [&](std::size_t end) {
     if (garbage_start == std::string::npos) return;
-    rep.findings.push_back({true, "framing", std::to_string(end - garbage_start) + " byte(s) outside any frame",
+    rep.findings.push_back({true, "framing",
+                            std::to_string(end - garbage_start) + " byte(s) outside any frame",
                             static_cast<std::int64_t>(garbage_start)});
     out.garbage += end - garbage_start;
     garbage_start = std::string::npos;
@@ -53,7 +56,8 @@ Framed FrameStream(const ByteStream& s, bool want_nmea, bool want_ubx, Validatio
   while (pos < b.size()) {
     const auto c = static_cast<unsigned char>(b[pos]);
     const bool line_start = pos == 0 || b[pos - 1] == '\n';
-    if (want_ubx && c == 0xB5 && pos + 1 < b.size() && static_cast<unsigned char>(b[pos + 1]) == 0x62) {
+    if (want_ubx && c == 0xB5 && pos + 1 < b.size() &&
+        static_cast<unsigned char>(b[pos + 1]) == 0x62) {
       flush_garbage(pos);
       if (pos + 6 > b.size()) {
         rep.findings.push_back({false, "truncated", "UBX header cut off at the end of the stream",
@@ -62,7 +66,8 @@ Framed FrameStream(const ByteStream& s, bool want_nmea, bool want_ubx, Validatio
       }
       const std::size_t len = Le16(b, pos + 4);
       if (len > kUbxMaxPayload) {
-        rep.findings.push_back({true, "ubx_length", "implausible UBX payload length " + std::to_string(len),
+        rep.findings.push_back({true, "ubx_length",
+                                "implausible UBX payload length " + std::to_string(len),
                                 static_cast<std::int64_t>(pos)});
         ++out.bad;
         pos += 2;
@@ -78,10 +83,12 @@ Framed FrameStream(const ByteStream& s, bool want_nmea, bool want_ubx, Validatio
         ck_a = static_cast<std::uint8_t>(ck_a + static_cast<unsigned char>(b[i]));
         ck_b = static_cast<std::uint8_t>(ck_b + ck_a);
       }
-      if (ck_a != static_cast<unsigned char>(b[pos + 6 + len]) || ck_b != static_cast<unsigned char>(b[pos + 7 + len])) {
+      if (ck_a != static_cast<unsigned char>(b[pos + 6 + len]) ||
+          ck_b != static_cast<unsigned char>(b[pos + 7 + len])) {
         char msg[96];
-        std::snprintf(msg, sizeof msg, "UBX checksum mismatch (class 0x%02X id 0x%02X, %zu payload bytes)",
-                      static_cast<unsigned char>(b[pos + 2]), static_cast<unsigned char>(b[pos + 3]), len);
+        std::snprintf(
+            msg, sizeof msg, "UBX checksum mismatch (class 0x%02X id 0x%02X, %zu payload bytes)",
+            static_cast<unsigned char>(b[pos + 2]), static_cast<unsigned char>(b[pos + 3]), len);
         rep.findings.push_back({true, "checksum", msg, static_cast<std::int64_t>(pos)});
         ++out.bad;
         pos += 2;  // resynchronise on the next sync pair
@@ -99,7 +106,8 @@ Framed FrameStream(const ByteStream& s, bool want_nmea, bool want_ubx, Validatio
       pos += 8 + len;
       continue;
     }
-    if (want_nmea && c == '#' && line_start) {  // a comment line of a log (gpsd format): a segment break
+    if (want_nmea && c == '#' &&
+        line_start) {  // a comment line of a log (gpsd format): a segment break
       flush_garbage(pos);
       const std::size_t nl = b.find('\n', pos);
       Frame f;
@@ -119,12 +127,14 @@ Framed FrameStream(const ByteStream& s, bool want_nmea, bool want_ubx, Validatio
         ++end;
       }
       if (end >= b.size()) {
-        rep.findings.push_back({false, "truncated", "NMEA sentence cut off at the end of the stream",
+        rep.findings.push_back({false, "truncated",
+                                "NMEA sentence cut off at the end of the stream",
                                 static_cast<std::int64_t>(pos)});
         break;
       }
       if (b[end] != '\n') {
-        rep.findings.push_back({true, "framing", "NMEA sentence without line end", static_cast<std::int64_t>(pos)});
+        rep.findings.push_back(
+            {true, "framing", "NMEA sentence without line end", static_cast<std::int64_t>(pos)});
         ++out.bad;
         pos = end;
         continue;
@@ -135,14 +145,16 @@ Framed FrameStream(const ByteStream& s, bool want_nmea, bool want_ubx, Validatio
       const std::size_t total = end + 1 - pos;
       NmeaParse p = ParseNmeaSentence(line);
       if (!p.sentence) {
-        rep.findings.push_back({true, p.error.find("checksum") != std::string::npos ? "checksum" : "framing",
-                                "'" + line.substr(0, 24) + (line.size() > 24 ? "…" : "") + "': " + p.error,
-                                static_cast<std::int64_t>(pos)});
+        rep.findings.push_back(
+            {true, p.error.find("checksum") != std::string::npos ? "checksum" : "framing",
+             "'" + line.substr(0, 24) + (line.size() > 24 ? "…" : "") + "': " + p.error,
+             static_cast<std::int64_t>(pos)});
         ++out.bad;
       } else {
         if (total > kNmeaMaxChars + (crlf ? 0 : 1)) {
-          rep.findings.push_back({true, "length", p.sentence->address + " is " + std::to_string(line.size() + 2) +
-                                                      " characters with CR LF (NMEA allows 82)",
+          rep.findings.push_back({true, "length",
+                                  p.sentence->address + " is " + std::to_string(line.size() + 2) +
+                                      " characters with CR LF (NMEA allows 82)",
                                   static_cast<std::int64_t>(pos)});
         }
         Frame f;
@@ -186,7 +198,9 @@ bool OneOf(const std::string& s, std::initializer_list<const char*> v, bool allo
 
 /// The time-of-day field of a sentence type (index into fields), or -1 when it carries none.
 int TimeField(const std::string& type) {
-  if (type == "GGA" || type == "RMC" || type == "ZDA" || type == "GST" || type == "GBS" || type == "GRS") return 0;
+  if (type == "GGA" || type == "RMC" || type == "ZDA" || type == "GST" || type == "GBS" ||
+      type == "GRS")
+    return 0;
   if (type == "GLL") return 4;
   return -1;
 }
@@ -201,13 +215,17 @@ std::string CheckLayout(const NmeaSentence& s, bool& known) {
     if (f[i].empty() && f[i + 1].empty() && f[i + 2].empty() && f[i + 3].empty()) return true;
     return NmeaDegrees(f[i], f[i + 1]).has_value() && NmeaDegrees(f[i + 2], f[i + 3]).has_value();
   };
-  const auto time_ok = [&](std::size_t i) { return f[i].empty() || NmeaTimeOfDay(f[i]).has_value(); };
+  const auto time_ok = [&](std::size_t i) {
+    return f[i].empty() || NmeaTimeOfDay(f[i]).has_value();
+  };
   if (t == "GGA") {
     if (n != 14) return "GGA has " + std::to_string(n) + " fields (14 expected)";
     if (!time_ok(0)) return "GGA time '" + f[0] + "' is not hhmmss.ss";
     if (!pos_ok(1)) return "GGA position is malformed";
-    if (!OneOf(f[5], {"0", "1", "2", "3", "4", "5", "6", "7", "8"})) return "GGA quality '" + f[5] + "' is not 0-8";
-    if (!IsNumber(f[6], true) || !IsNumber(f[7], true) || !IsNumber(f[8], true)) return "GGA satellites/HDOP/altitude not numeric";
+    if (!OneOf(f[5], {"0", "1", "2", "3", "4", "5", "6", "7", "8"}))
+      return "GGA quality '" + f[5] + "' is not 0-8";
+    if (!IsNumber(f[6], true) || !IsNumber(f[7], true) || !IsNumber(f[8], true))
+      return "GGA satellites/HDOP/altitude not numeric";
     return "";
   }
   if (t == "RMC") {
@@ -216,13 +234,16 @@ std::string CheckLayout(const NmeaSentence& s, bool& known) {
     if (!OneOf(f[1], {"A", "V"})) return "RMC status '" + f[1] + "' is not A or V";
     if (!pos_ok(2)) return "RMC position is malformed";
     if (!IsNumber(f[6], true) || !IsNumber(f[7], true)) return "RMC speed/course not numeric";
-    if (!f[8].empty() && (f[8].size() != 6 || !IsNumber(f[8]))) return "RMC date '" + f[8] + "' is not ddmmyy";
-    if (n >= 12 && !OneOf(f[11], {"A", "D", "E", "N", "M", "S", "F", "R", "P"})) return "RMC mode '" + f[11] + "' unknown";
+    if (!f[8].empty() && (f[8].size() != 6 || !IsNumber(f[8])))
+      return "RMC date '" + f[8] + "' is not ddmmyy";
+    if (n >= 12 && !OneOf(f[11], {"A", "D", "E", "N", "M", "S", "F", "R", "P"}))
+      return "RMC mode '" + f[11] + "' unknown";
     return "";
   }
   if (t == "VTG") {
     if (n != 8 && n != 9) return "VTG has " + std::to_string(n) + " fields (8 or 9 expected)";
-    if (!IsNumber(f[0], true) || !IsNumber(f[4], true) || !IsNumber(f[6], true)) return "VTG course/speed not numeric";
+    if (!IsNumber(f[0], true) || !IsNumber(f[4], true) || !IsNumber(f[6], true))
+      return "VTG course/speed not numeric";
     return "";
   }
   if (t == "GSA") {
@@ -232,7 +253,8 @@ std::string CheckLayout(const NmeaSentence& s, bool& known) {
     return "";
   }
   if (t == "GSV") {
-    if (n < 3 || ((n - 3) % 4 != 0 && (n - 3) % 4 != 1) || n > 20) return "GSV has " + std::to_string(n) + " fields";
+    if (n < 3 || ((n - 3) % 4 != 0 && (n - 3) % 4 != 1) || n > 20)
+      return "GSV has " + std::to_string(n) + " fields";
     if (!IsNumber(f[0]) || !IsNumber(f[1]) || !IsNumber(f[2])) return "GSV counts not numeric";
     return "";
   }
@@ -245,7 +267,8 @@ std::string CheckLayout(const NmeaSentence& s, bool& known) {
   }
   if (t == "TXT") return n == 4 ? "" : "TXT has " + std::to_string(n) + " fields (4 expected)";
   if (t == "ZDA") return n == 6 && time_ok(0) ? "" : "ZDA malformed";
-  if (t == "GST") return n == 8 && time_ok(0) ? "" : "GST has " + std::to_string(n) + " fields (8 expected)";
+  if (t == "GST")
+    return n == 8 && time_ok(0) ? "" : "GST has " + std::to_string(n) + " fields (8 expected)";
   if (t == "GBS") return (n == 8 || n == 10) && time_ok(0) ? "" : "GBS malformed";
   if (t == "GRS") return n >= 14 && time_ok(0) ? "" : "GRS malformed";
   known = false;
@@ -265,7 +288,7 @@ struct Epoch {
   std::vector<const Frame*> frames;  // NMEA sentences in order
   std::size_t bytes = 0;
   std::int64_t t_first_ns = -1;
-  bool after_break = false;          // a comment or the stream start precedes it
+  bool after_break = false;  // a comment or the stream start precedes it
   bool before_break = false;
 };
 
@@ -289,19 +312,24 @@ void CheckNmea(const Framed& fr, bool neo5m, int baud, ValidationReport& rep) {
       rep.findings.push_back({true, "layout", e, static_cast<std::int64_t>(f.offset)});
     }
     if (s.address != "PUBX" && !known) {
-      rep.findings.push_back({neo5m, neo5m ? "message_set" : "unknown_sentence",
-                              s.address + " is not " + (neo5m ? "a sentence a u-blox 5 sends" : "a sentence this validator knows"),
-                              static_cast<std::int64_t>(f.offset)});
+      rep.findings.push_back(
+          {neo5m, neo5m ? "message_set" : "unknown_sentence",
+           s.address + " is not " +
+               (neo5m ? "a sentence a u-blox 5 sends" : "a sentence this validator knows"),
+           static_cast<std::int64_t>(f.offset)});
     }
     if (neo5m && s.address != "PUBX" && s.talker() != "GP") {
-      rep.findings.push_back({true, "talker", s.address + ": a u-blox 5 uses the GP talker", static_cast<std::int64_t>(f.offset)});
+      rep.findings.push_back({true, "talker", s.address + ": a u-blox 5 uses the GP talker",
+                              static_cast<std::int64_t>(f.offset)});
     }
     if (type == "TXT") continue;  // banner lines sit between epochs
     const int tf = TimeField(type);
     std::optional<double> tod;
-    if (tf >= 0 && static_cast<std::size_t>(tf) < s.fields.size()) tod = NmeaTimeOfDay(s.fields[static_cast<std::size_t>(tf)]);
-    const bool new_epoch = epochs.empty() || pending_break ||
-                           (tod && epochs.back().tod_s && std::abs(*tod - *epochs.back().tod_s) > 1e-6);
+    if (tf >= 0 && static_cast<std::size_t>(tf) < s.fields.size())
+      tod = NmeaTimeOfDay(s.fields[static_cast<std::size_t>(tf)]);
+    const bool new_epoch =
+        epochs.empty() || pending_break ||
+        (tod && epochs.back().tod_s && std::abs(*tod - *epochs.back().tod_s) > 1e-6);
     if (new_epoch) {
       if (!epochs.empty() && pending_break) epochs.back().before_break = true;
       epochs.push_back({});
@@ -316,7 +344,9 @@ void CheckNmea(const Framed& fr, bool neo5m, int baud, ValidationReport& rep) {
   }
   if (!epochs.empty()) epochs.back().before_break = true;
   if (lf_only > 0) {
-    rep.findings.push_back({false, "line_end", std::to_string(lf_only) + " sentence(s) end in LF only (CR LF expected)", -1});
+    rep.findings.push_back(
+        {false, "line_end",
+         std::to_string(lf_only) + " sentence(s) end in LF only (CR LF expected)", -1});
   }
 
   // epoch times, rate and gaps
@@ -327,9 +357,10 @@ void CheckNmea(const Framed& fr, bool neo5m, int baud, ValidationReport& rep) {
     if (d < -43200) d += 86400;  // midnight
     if (d <= 0) {
       char msg[96];
-      std::snprintf(msg, sizeof msg, "epoch time went backwards (%.2f s to %.2f s of day)", *epochs[i - 1].tod_s,
-                    *epochs[i].tod_s);
-      rep.findings.push_back({true, "time_monotonic", msg, static_cast<std::int64_t>(epochs[i].frames[0]->offset)});
+      std::snprintf(msg, sizeof msg, "epoch time went backwards (%.2f s to %.2f s of day)",
+                    *epochs[i - 1].tod_s, *epochs[i].tod_s);
+      rep.findings.push_back(
+          {true, "time_monotonic", msg, static_cast<std::int64_t>(epochs[i].frames[0]->offset)});
       continue;
     }
     dt.push_back(d);
@@ -347,18 +378,21 @@ void CheckNmea(const Framed& fr, bool neo5m, int baud, ValidationReport& rep) {
         ++gaps;
         epochs[i - 1].before_break = epochs[i].after_break = true;
         char msg[96];
-        std::snprintf(msg, sizeof msg, "sequence gap: %.0f epoch(s) missing before %.2f s of day", std::round(d / period) - 1,
-                      *epochs[i].tod_s);
-        rep.findings.push_back({false, "sequence_gap", msg, static_cast<std::int64_t>(epochs[i].frames[0]->offset)});
+        std::snprintf(msg, sizeof msg, "sequence gap: %.0f epoch(s) missing before %.2f s of day",
+                      std::round(d / period) - 1, *epochs[i].tod_s);
+        rep.findings.push_back(
+            {false, "sequence_gap", msg, static_cast<std::int64_t>(epochs[i].frames[0]->offset)});
       }
     }
     double span = 0;
     for (const double d : dt) span += d;
-    for (auto& [name, st] : rep.messages) st.rate_hz = static_cast<double>(st.count) / (span + period);
+    for (auto& [name, st] : rep.messages)
+      st.rate_hz = static_cast<double>(st.count) / (span + period);
   }
   if (neo5m && rep.epoch_rate_hz && *rep.epoch_rate_hz > kNeo5mMaxRateHz + 1e-6) {
     char msg[96];
-    std::snprintf(msg, sizeof msg, "epoch rate %.2f Hz above the u-blox 5 maximum of %.0f Hz", *rep.epoch_rate_hz, kNeo5mMaxRateHz);
+    std::snprintf(msg, sizeof msg, "epoch rate %.2f Hz above the u-blox 5 maximum of %.0f Hz",
+                  *rep.epoch_rate_hz, kNeo5mMaxRateHz);
     rep.findings.push_back({true, "rate", msg, -1});
   }
 
@@ -377,8 +411,9 @@ void CheckNmea(const Framed& fr, bool neo5m, int baud, ValidationReport& rep) {
       if (gsv_total < 0) gsv_total = total;
       if ((total != gsv_total || num != gsv_next) && (complete || num != 1)) {
         rep.findings.push_back({complete, "gsv_sequence",
-                                "GSV " + s.fields[1] + " of " + s.fields[0] + " out of sequence (expected " +
-                                    std::to_string(gsv_next) + " of " + std::to_string(gsv_total) + ")",
+                                "GSV " + s.fields[1] + " of " + s.fields[0] +
+                                    " out of sequence (expected " + std::to_string(gsv_next) +
+                                    " of " + std::to_string(gsv_total) + ")",
                                 static_cast<std::int64_t>(f->offset)});
       }
       gsv_total = total;
@@ -396,12 +431,14 @@ void CheckNmea(const Framed& fr, bool neo5m, int baud, ValidationReport& rep) {
       const int rank = Neo5mRank(type);
       if (rank < 0) continue;
       if (rank < last_rank) {
-        rep.findings.push_back({true, "epoch_order", type + " after " + last_type +
-                                                         ": a u-blox 5 sends RMC, VTG, GGA, GSA, GSV, GLL in that order",
+        rep.findings.push_back({true, "epoch_order",
+                                type + " after " + last_type +
+                                    ": a u-blox 5 sends RMC, VTG, GGA, GSA, GSV, GLL in that order",
                                 static_cast<std::int64_t>(f->offset)});
       }
       if (type != "GSV" && seen.count(type)) {
-        rep.findings.push_back({true, "epoch_duplicate", type + " twice in one epoch", static_cast<std::int64_t>(f->offset)});
+        rep.findings.push_back({true, "epoch_duplicate", type + " twice in one epoch",
+                                static_cast<std::int64_t>(f->offset)});
       }
       last_rank = std::max(last_rank, rank);
       last_type = type;
@@ -410,14 +447,16 @@ void CheckNmea(const Framed& fr, bool neo5m, int baud, ValidationReport& rep) {
     if (complete) {
       for (const char* need : {"RMC", "VTG", "GGA", "GSA", "GSV", "GLL"}) {
         if (!seen.count(need)) {
-          rep.findings.push_back({false, "epoch_incomplete", std::string(need) + " missing from an epoch", offset});
+          rep.findings.push_back(
+              {false, "epoch_incomplete", std::string(need) + " missing from an epoch", offset});
         }
       }
     }
     if (baud > 0 && period > 0 && static_cast<double>(e.bytes) * 10.0 / baud > period) {
       char msg[128];
-      std::snprintf(msg, sizeof msg, "epoch of %zu bytes needs %.2f s at %d baud, longer than the %.2f s epoch", e.bytes,
-                    static_cast<double>(e.bytes) * 10.0 / baud, baud, period);
+      std::snprintf(msg, sizeof msg,
+                    "epoch of %zu bytes needs %.2f s at %d baud, longer than the %.2f s epoch",
+                    e.bytes, static_cast<double>(e.bytes) * 10.0 / baud, baud, period);
       rep.findings.push_back({false, "line_budget", msg, offset});
     }
     if (e.t_first_ns >= 0 && e.tod_s && period > 0) {
@@ -440,7 +479,7 @@ void CheckNmea(const Framed& fr, bool neo5m, int baud, ValidationReport& rep) {
 struct UbxSpec {
   std::uint8_t cls, id;
   const char* name;
-  int fixed_len;         // -1: variable
+  int fixed_len;           // -1: variable
   int base = 0, step = 0;  // variable: base + k·step
   bool has_itow = false;
   bool on_ublox5 = true;
@@ -448,27 +487,46 @@ struct UbxSpec {
 
 const std::vector<UbxSpec>& UbxTable() {
   static const std::vector<UbxSpec> t{
-      {0x01, 0x01, "NAV-POSECEF", 20, 0, 0, true},   {0x01, 0x02, "NAV-POSLLH", 28, 0, 0, true},
-      {0x01, 0x03, "NAV-STATUS", 16, 0, 0, true},    {0x01, 0x04, "NAV-DOP", 18, 0, 0, true},
-      {0x01, 0x06, "NAV-SOL", 52, 0, 0, true},       {0x01, 0x11, "NAV-VELECEF", 20, 0, 0, true},
-      {0x01, 0x12, "NAV-VELNED", 36, 0, 0, true},    {0x01, 0x20, "NAV-TIMEGPS", 16, 0, 0, true},
-      {0x01, 0x21, "NAV-TIMEUTC", 20, 0, 0, true},   {0x01, 0x22, "NAV-CLOCK", 20, 0, 0, true},
-      {0x01, 0x30, "NAV-SVINFO", -1, 8, 12, true},   {0x01, 0x31, "NAV-DGPS", -1, 16, 12, true},
-      {0x01, 0x32, "NAV-SBAS", -1, 12, 12, true},    {0x01, 0x60, "NAV-AOPSTATUS", 20, 0, 0, true},
-      {0x01, 0x07, "NAV-PVT", 92, 0, 0, true, false}, {0x01, 0x35, "NAV-SAT", -1, 8, 12, true, false},
-      {0x01, 0x14, "NAV-HPPOSLLH", 36, 0, 0, true, false}, {0x01, 0x61, "NAV-EOE", 4, 0, 0, true, false},
+      {0x01, 0x01, "NAV-POSECEF", 20, 0, 0, true},
+      {0x01, 0x02, "NAV-POSLLH", 28, 0, 0, true},
+      {0x01, 0x03, "NAV-STATUS", 16, 0, 0, true},
+      {0x01, 0x04, "NAV-DOP", 18, 0, 0, true},
+      {0x01, 0x06, "NAV-SOL", 52, 0, 0, true},
+      {0x01, 0x11, "NAV-VELECEF", 20, 0, 0, true},
+      {0x01, 0x12, "NAV-VELNED", 36, 0, 0, true},
+      {0x01, 0x20, "NAV-TIMEGPS", 16, 0, 0, true},
+      {0x01, 0x21, "NAV-TIMEUTC", 20, 0, 0, true},
+      {0x01, 0x22, "NAV-CLOCK", 20, 0, 0, true},
+      {0x01, 0x30, "NAV-SVINFO", -1, 8, 12, true},
+      {0x01, 0x31, "NAV-DGPS", -1, 16, 12, true},
+      {0x01, 0x32, "NAV-SBAS", -1, 12, 12, true},
+      {0x01, 0x60, "NAV-AOPSTATUS", 20, 0, 0, true},
+      {0x01, 0x07, "NAV-PVT", 92, 0, 0, true, false},
+      {0x01, 0x35, "NAV-SAT", -1, 8, 12, true, false},
+      {0x01, 0x14, "NAV-HPPOSLLH", 36, 0, 0, true, false},
+      {0x01, 0x61, "NAV-EOE", 4, 0, 0, true, false},
       {0x01, 0x43, "NAV-SIG", -1, 8, 16, true, false},
-      {0x02, 0x10, "RXM-RAW", -1, 8, 24},            {0x02, 0x11, "RXM-SFRB", 42},
-      {0x02, 0x20, "RXM-SVSI", -1, 8, 6},            {0x02, 0x41, "RXM-PMREQ", 8},
-      {0x04, 0x00, "INF-ERROR", -1, 0, 1},           {0x04, 0x01, "INF-WARNING", -1, 0, 1},
-      {0x04, 0x02, "INF-NOTICE", -1, 0, 1},          {0x04, 0x03, "INF-TEST", -1, 0, 1},
+      {0x02, 0x10, "RXM-RAW", -1, 8, 24},
+      {0x02, 0x11, "RXM-SFRB", 42},
+      {0x02, 0x20, "RXM-SVSI", -1, 8, 6},
+      {0x02, 0x41, "RXM-PMREQ", 8},
+      {0x04, 0x00, "INF-ERROR", -1, 0, 1},
+      {0x04, 0x01, "INF-WARNING", -1, 0, 1},
+      {0x04, 0x02, "INF-NOTICE", -1, 0, 1},
+      {0x04, 0x03, "INF-TEST", -1, 0, 1},
       {0x04, 0x04, "INF-DEBUG", -1, 0, 1},
-      {0x05, 0x01, "ACK-ACK", 2},                    {0x05, 0x00, "ACK-NAK", 2},
-      {0x0A, 0x04, "MON-VER", -1, 40, 30},           {0x0A, 0x09, "MON-HW", -1, 60, 8},
-      {0x0A, 0x02, "MON-IO", -1, 0, 20},             {0x0A, 0x06, "MON-MSGPP", 120},
-      {0x0A, 0x07, "MON-RXBUF", 24},                 {0x0A, 0x08, "MON-TXBUF", 28},
-      {0x0A, 0x0B, "MON-HW2", 28},                   {0x0A, 0x38, "MON-RF", -1, 4, 24, false, false},
-      {0x0D, 0x01, "TIM-TP", 16},                    {0x0D, 0x03, "TIM-TM2", 28},
+      {0x05, 0x01, "ACK-ACK", 2},
+      {0x05, 0x00, "ACK-NAK", 2},
+      {0x0A, 0x04, "MON-VER", -1, 40, 30},
+      {0x0A, 0x09, "MON-HW", -1, 60, 8},
+      {0x0A, 0x02, "MON-IO", -1, 0, 20},
+      {0x0A, 0x06, "MON-MSGPP", 120},
+      {0x0A, 0x07, "MON-RXBUF", 24},
+      {0x0A, 0x08, "MON-TXBUF", 28},
+      {0x0A, 0x0B, "MON-HW2", 28},
+      {0x0A, 0x38, "MON-RF", -1, 4, 24, false, false},
+      {0x0D, 0x01, "TIM-TP", 16},
+      {0x0D, 0x03, "TIM-TM2", 28},
       {0x0D, 0x04, "TIM-SVIN", 28},
   };
   return t;
@@ -483,23 +541,31 @@ void CheckUbx(const Framed& fr, bool neo5m, ValidationReport& rep) {
       if (s.cls == f.cls && s.id == f.id) spec = &s;
     }
     char name[32];
-    if (spec) std::snprintf(name, sizeof name, "UBX-%s", spec->name);
-    else std::snprintf(name, sizeof name, "UBX-0x%02X-0x%02X", f.cls, f.id);
+    if (spec)
+      std::snprintf(name, sizeof name, "UBX-%s", spec->name);
+    else
+      std::snprintf(name, sizeof name, "UBX-0x%02X-0x%02X", f.cls, f.id);
     rep.messages[name].count++;
     const auto off = static_cast<std::int64_t>(f.offset);
     if (f.cls == 0x06) continue;  // CFG: input or poll answers of many lengths
     if (!spec) {
-      rep.findings.push_back({neo5m, "message_set", std::string(name) + " is not a known UBX message", off});
+      rep.findings.push_back(
+          {neo5m, "message_set", std::string(name) + " is not a known UBX message", off});
       continue;
     }
     if (neo5m && !spec->on_ublox5) {
-      rep.findings.push_back({true, "message_set", std::string(name) + " does not exist on u-blox 5", off});
+      rep.findings.push_back(
+          {true, "message_set", std::string(name) + " does not exist on u-blox 5", off});
     }
     const int len = static_cast<int>(f.payload.size());
-    const bool len_ok = spec->fixed_len >= 0 ? len == spec->fixed_len
-                                             : len >= spec->base && (spec->step == 0 || (len - spec->base) % spec->step == 0);
+    const bool len_ok =
+        spec->fixed_len >= 0
+            ? len == spec->fixed_len
+            : len >= spec->base && (spec->step == 0 || (len - spec->base) % spec->step == 0);
     if (!len_ok) {
-      rep.findings.push_back({true, "payload_length", std::string(name) + " payload of " + std::to_string(len) + " bytes", off});
+      rep.findings.push_back({true, "payload_length",
+                              std::string(name) + " payload of " + std::to_string(len) + " bytes",
+                              off});
       continue;
     }
     if (spec->has_itow && len >= 4) {
@@ -507,7 +573,9 @@ void CheckUbx(const Framed& fr, bool neo5m, ValidationReport& rep) {
       if (itows.empty() || itows.back() != itow) {
         if (!itows.empty() && itow < itows.back() && itows.back() - itow < 302400000u) {
           rep.findings.push_back({true, "time_monotonic",
-                                  "iTOW went backwards (" + std::to_string(itows.back()) + " to " + std::to_string(itow) + " ms)", off});
+                                  "iTOW went backwards (" + std::to_string(itows.back()) + " to " +
+                                      std::to_string(itow) + " ms)",
+                                  off});
         }
         itows.push_back(itow);
       }
@@ -530,7 +598,8 @@ void CheckUbx(const Framed& fr, bool neo5m, ValidationReport& rep) {
     span += d;
     if (d > 1.5 * period) {
       char msg[96];
-      std::snprintf(msg, sizeof msg, "sequence gap: %.0f UBX epoch(s) missing", std::round(d / period) - 1);
+      std::snprintf(msg, sizeof msg, "sequence gap: %.0f UBX epoch(s) missing",
+                    std::round(d / period) - 1);
       rep.findings.push_back({false, "sequence_gap", msg, -1});
     }
   }
@@ -552,10 +621,13 @@ std::size_t ValidationReport::errors() const {
 
 ValidationReport ValidateStream(ValidateProtocol protocol, const ByteStream& stream, int baud) {
   ValidationReport rep;
-  rep.protocol = protocol == ValidateProtocol::kNmea ? "nmea" : protocol == ValidateProtocol::kUbx ? "ubx" : "neo5m";
+  rep.protocol = protocol == ValidateProtocol::kNmea  ? "nmea"
+                 : protocol == ValidateProtocol::kUbx ? "ubx"
+                                                      : "neo5m";
   rep.description = stream.description;
   rep.bytes = stream.bytes.size();
-  const bool want_nmea = protocol != ValidateProtocol::kUbx, want_ubx = protocol != ValidateProtocol::kNmea;
+  const bool want_nmea = protocol != ValidateProtocol::kUbx,
+             want_ubx = protocol != ValidateProtocol::kNmea;
   const Framed fr = FrameStream(stream, want_nmea, want_ubx, rep);
   for (const auto& f : fr.frames) rep.frames += f.kind == Frame::Kind::kComment ? 0 : 1;
   rep.bad_frames = fr.bad;

@@ -303,7 +303,8 @@ struct TruthIntegrator::Impl {
     const VehicleParams& p = c->vehicle;
     diff_drive = p.model == VehicleParams::Model::kDiffDrive;
     speed_variation.emplace(p.speed_variation_std, p.speed_variation_tau_s, p.speed_variation_seed);
-    if (p.speed_variation_std > 0) tick_s = 1.0 / c->guidance.rate_hz;  // open loop too: the speed varies
+    if (p.speed_variation_std > 0)
+      tick_s = 1.0 / c->guidance.rate_hz;  // open loop too: the speed varies
     w_IE_N = c->earth_rotation ? EarthRateIn(*frame) : Eigen::Vector3d::Zero();
     if (c->path) {
       const Path& path = *c->path;

@@ -48,7 +48,8 @@ double SpeedVariation::Factor(double t_s) {
       rng.seed(state_ + x_.size());
       const double w = normal(rng);
       normal.reset();
-      x_.push_back(x_.empty() ? std_ * w : phi_ * x_.back() + std_ * std::sqrt(1 - phi_ * phi_) * w);
+      x_.push_back(x_.empty() ? std_ * w
+                              : phi_ * x_.back() + std_ * std::sqrt(1 - phi_ * phi_) * w);
     }
   }
   const double f = pos - static_cast<double>(i);

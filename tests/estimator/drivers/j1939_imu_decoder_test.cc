@@ -1,7 +1,5 @@
 #include "hil/estimator/drivers/j1939_imu_decoder.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -9,6 +7,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 namespace hil::estimator::drivers {
 namespace {
@@ -27,10 +27,12 @@ LogFrame ParseCandump(const std::string& line) {
   const auto close = line.find(')');
   const std::string ts = line.substr(1, close - 1);
   const auto dot = ts.find('.');
-  out.unix_ns = std::stoll(ts.substr(0, dot)) * 1000000000LL + std::stoll(ts.substr(dot + 1)) * 1000LL;
+  out.unix_ns =
+      std::stoll(ts.substr(0, dot)) * 1000000000LL + std::stoll(ts.substr(dot + 1)) * 1000LL;
   const auto hash = line.find('#');
   const auto sp = line.rfind(' ', hash);
-  out.frame.id = static_cast<std::uint32_t>(std::stoul(line.substr(sp + 1, hash - sp - 1), nullptr, 16));
+  out.frame.id =
+      static_cast<std::uint32_t>(std::stoul(line.substr(sp + 1, hash - sp - 1), nullptr, 16));
   out.frame.extended = hash - sp - 1 == 8;
   const std::string hex = line.substr(hash + 1);
   out.frame.len = static_cast<std::uint8_t>(hex.size() / 2);
@@ -53,7 +55,8 @@ std::vector<std::string> ReadLines(const std::string& path, bool skip_comments) 
 std::vector<double> CsvNumbers(const std::string& row) {
   std::vector<double> v;
   std::istringstream in(row);
-  for (std::string cell; std::getline(in, cell, ',');) v.push_back(std::strtod(cell.c_str(), nullptr));
+  for (std::string cell; std::getline(in, cell, ',');)
+    v.push_back(std::strtod(cell.c_str(), nullptr));
   return v;
 }
 
@@ -62,7 +65,8 @@ std::string VectorsCan() {
   return src ? std::string(src) + "/vectors/can/" : std::string();
 }
 
-CanRxFrame Frame(std::uint32_t id, std::array<std::uint8_t, 8> data, std::int64_t rx_ns, std::uint8_t len = 8) {
+CanRxFrame Frame(std::uint32_t id, std::array<std::uint8_t, 8> data, std::int64_t rx_ns,
+                 std::uint8_t len = 8) {
   CanRxFrame f;
   f.id = id;
   f.data = data;
@@ -199,8 +203,11 @@ TEST(J1939ImuDecoderTest, GoldenLogWithinOneLsb) {
   EXPECT_GT(counts[1], 0);
   EXPECT_GT(counts[2], 0);
   EXPECT_GT(counts[3], 0);
-  std::printf("worst decode error in LSB: ARI %.3f  ACCS %.3f  SSI2 %.3f  TIME_PULSE %.3f (frames %d/%d/%d/%d)\n",
-              worst_lsb[0], worst_lsb[1], worst_lsb[2], worst_lsb[3], counts[0], counts[1], counts[2], counts[3]);
+  std::printf(
+      "worst decode error in LSB: ARI %.3f  ACCS %.3f  SSI2 %.3f  TIME_PULSE %.3f (frames "
+      "%d/%d/%d/%d)\n",
+      worst_lsb[0], worst_lsb[1], worst_lsb[2], worst_lsb[3], counts[0], counts[1], counts[2],
+      counts[3]);
 }
 
 // The decoder turns the golden log (received at its emulated times) into IMU samples on GPS time:
@@ -241,7 +248,8 @@ TEST(J1939ImuDecoderTest, GoldenLogToImuSamplesOnGpsTime) {
         k = j;
     }
     ASSERT_GT(k, 0u);
-    const double err_us = std::abs(static_cast<double>(ari_unix_ns[k] - 1000000 + gps_minus_unix_ns - s.t)) * 1e-3;
+    const double err_us =
+        std::abs(static_cast<double>(ari_unix_ns[k] - 1000000 + gps_minus_unix_ns - s.t)) * 1e-3;
     worst_t_us = std::max(worst_t_us, err_us);
     EXPECT_LT(err_us, 100.0);
     EXPECT_NEAR(s.dt_s, 0.1, 1e-3);
@@ -254,16 +262,16 @@ TEST(J1939ImuDecoderTest, GoldenLogToImuSamplesOnGpsTime) {
 TEST(J1939ImuDecoderTest, FiltersSourceAddressAndCountsBadFrames) {
   const std::array<std::uint8_t, 8> ari = {0x00, 0x7D, 0x00, 0x7D, 0x00, 0x82, 0xC0, 0x02};
   J1939ImuDecoder dec;
-  dec.Add(Frame(0x0CF02AE3, ari, 0));         // another source
-  dec.Add(Frame(0x0CF004E2, ari, 0));         // EEC1, not ours
-  dec.Add(Frame(0x0CF02AE2, ari, 0, 6));      // short
+  dec.Add(Frame(0x0CF02AE3, ari, 0));     // another source
+  dec.Add(Frame(0x0CF004E2, ari, 0));     // EEC1, not ours
+  dec.Add(Frame(0x0CF02AE2, ari, 0, 6));  // short
   CanRxFrame std_frame = Frame(0x123, ari, 0);
   std_frame.extended = false;
   dec.Add(std_frame);
   std::array<std::uint8_t, 8> na = ari;
-  na[1] = 0xFE;                               // error indicator
+  na[1] = 0xFE;  // error indicator
   dec.Add(Frame(0x0CF02AE2, na, 0));
-  dec.Add(Frame(0x0CF02DE2, ari, 1000));      // ACCS without an ARI
+  dec.Add(Frame(0x0CF02DE2, ari, 1000));  // ACCS without an ARI
   const J1939ImuStats& st = dec.stats();
   EXPECT_EQ(st.frames, 6u);
   EXPECT_EQ(st.other_source, 1u);
@@ -288,18 +296,28 @@ TEST(J1939ImuDecoderTest, ScaledHostClockAndMcuReset) {
   const double host_per_gps = 0.5;  // the run goes twice as fast as real time
   const std::int64_t host0 = 123456789000LL;
   const GpsNs gps0 = (1744LL * 604800 + 115200) * kNsPerSecond;
-  auto host_of = [&](GpsNs g) { return host0 + static_cast<std::int64_t>(std::llround(static_cast<double>(g - gps0) * host_per_gps)); };
+  auto host_of = [&](GpsNs g) {
+    return host0 +
+           static_cast<std::int64_t>(std::llround(static_cast<double>(g - gps0) * host_per_gps));
+  };
   auto ari = [](double yaw_dps) {
     const auto raw = static_cast<std::uint32_t>(std::lround((yaw_dps + 250) * 128));
-    return std::array<std::uint8_t, 8>{0x00, 0x7D, 0x00, 0x7D, static_cast<std::uint8_t>(raw & 0xFF),
-                                        static_cast<std::uint8_t>(raw >> 8), 0xC0, 0x02};
+    return std::array<std::uint8_t, 8>{0x00,
+                                       0x7D,
+                                       0x00,
+                                       0x7D,
+                                       static_cast<std::uint8_t>(raw & 0xFF),
+                                       static_cast<std::uint8_t>(raw >> 8),
+                                       0xC0,
+                                       0x02};
   };
   const std::array<std::uint8_t, 8> accs = {0x00, 0x7D, 0x00, 0x7D, 0xD5, 0x80, 0xC0, 0x02};
   J1939ImuDecoder dec;
   std::vector<ImuSample> out;
   std::uint32_t tick = 5000000;
   for (int ms = 0; ms < 6000; ms += 10) {
-    const GpsNs t = gps0 + ms * 1000000LL + 3000000;  // samples 3 ms after the whole millisecond grid
+    const GpsNs t =
+        gps0 + ms * 1000000LL + 3000000;  // samples 3 ms after the whole millisecond grid
     if (ms % 1000 == 0) {
       if (ms == 3000) tick = 12345;  // MCU reset: the tick restarts
       const GpsNs edge = gps0 + ms * 1000000LL;
@@ -334,7 +352,8 @@ TEST(ArrivalClockTest, TracksAndRestartsOnAJump) {
   EXPECT_FALSE(c.ToGps(0));
   c.AddReference(1000 - 1000000000LL, 4 * kNsPerSecond);
   EXPECT_FALSE(c.ToGps(1000 - 1000000000LL));  // one reference does not give the rate
-  for (int k = 0; k < 5; ++k) c.AddReference(1000 + k * 1000000000LL, 5 * kNsPerSecond + k * kNsPerSecond);
+  for (int k = 0; k < 5; ++k)
+    c.AddReference(1000 + k * 1000000000LL, 5 * kNsPerSecond + k * kNsPerSecond);
   EXPECT_EQ(*c.ToGps(1000 + 4500000000LL), 9500000000LL);
   c.AddReference(1000 + 5000000000LL, 20 * kNsPerSecond);  // GPS time jumps by 14 s
   EXPECT_EQ(c.jumps(), 1u);

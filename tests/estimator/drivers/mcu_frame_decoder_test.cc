@@ -1,12 +1,12 @@
 #include "hil/estimator/drivers/mcu_frame_decoder.h"
 
-#include <gtest/gtest.h>
-
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "hil/estimator/drivers/mcu_imu_adapter.h"
 
@@ -22,11 +22,13 @@ std::string Hex(const char* hex) {
 }
 
 // worked examples of vectors/mcu/mcu_frame_protocol.md §7
-const std::string kImu = Hex("A5 5A 01 01 0C 02 01 4E 61 BC 00 03 00 FB FF 00 01 FE FF 01 00 F0 FF A4 70");
+const std::string kImu =
+    Hex("A5 5A 01 01 0C 02 01 4E 61 BC 00 03 00 FB FF 00 01 FE FF 01 00 F0 FF A4 70");
 const std::string kPulse = Hex("A5 5A 01 03 07 07 00 40 42 0F 00 D0 06 00 5C 26 05 01 20 C6");
 const std::string kMag = Hex("A5 5A 01 02 06 08 00 90 05 10 00 2C 01 CE FF A8 FD A6 58");
 
-std::vector<McuFrame> Decode(const std::vector<std::string>& pieces, McuDecoderStats* st = nullptr) {
+std::vector<McuFrame> Decode(const std::vector<std::string>& pieces,
+                             McuDecoderStats* st = nullptr) {
   std::vector<McuFrame> out;
   McuFrameDecoder d([&](const McuFrame& f) { out.push_back(f); });
   for (const auto& p : pieces) d.Feed(p);
@@ -72,7 +74,9 @@ TEST(McuFrameDecoderTest, GoldenVectorMatchesExpectedFrameCount) {
   ASSERT_NE(src, nullptr);
   std::ifstream bin(std::string(src) + "/vectors/mcu/tactical_100hz_binary.bin", std::ios::binary);
   std::ifstream csv(std::string(src) + "/vectors/mcu/tactical_100hz_binary.expected.csv");
-  if (!bin || !csv) GTEST_SKIP() << "vectors/mcu/tactical_100hz_binary.* not in this checkout (MCU branch not merged)";
+  if (!bin || !csv)
+    GTEST_SKIP()
+        << "vectors/mcu/tactical_100hz_binary.* not in this checkout (MCU branch not merged)";
   std::stringstream ss;
   ss << bin.rdbuf();
   std::vector<std::string> rows;
@@ -111,7 +115,8 @@ TEST(McuImuAdapterTest, MapsTicksOntoGpsTimeWithCrystalOffset) {
   const GpsNs t0 = 1744LL * 604800LL * kNsPerSecond;
   for (int k = 0; k <= 300; ++k) {  // 3 s at 100 Hz, plus a tick wrap in the middle
     const double t_s = k * 0.01;
-    const auto tick = static_cast<std::uint32_t>(std::llround(4294000000.0 + t_s * rate));  // wraps at 4294967296
+    const auto tick =
+        static_cast<std::uint32_t>(std::llround(4294000000.0 + t_s * rate));  // wraps at 4294967296
     if (k % 100 == 0) {
       McuFrame p;
       p.type = McuFrame::Type::kTimePulse;
@@ -128,7 +133,8 @@ TEST(McuImuAdapterTest, MapsTicksOntoGpsTimeWithCrystalOffset) {
     f.accel_raw = {0, 0, 981};
     if (auto s = a.Add(f)) out.push_back(*s);
   }
-  // THEN samples are on GPS time to well under a microsecond after two pulses, with 0.01 s intervals
+  // THEN samples are on GPS time to well under a microsecond after two pulses, with 0.01 s
+  // intervals
   ASSERT_GT(out.size(), 250u);
   EXPECT_NEAR(a.clock().offset_ppm(), 50.0, 0.5);
   const ImuSample& last = out.back();

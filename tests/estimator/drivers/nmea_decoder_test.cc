@@ -1,19 +1,20 @@
 #include "hil/estimator/drivers/nmea_decoder.h"
 
-#include <gtest/gtest.h>
-
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <vector>
 
+#include <gtest/gtest.h>
+
 #include "hil/estimator/drivers/nmea_epoch.h"
 
 namespace hil::estimator::drivers {
 namespace {
 
-std::vector<NmeaFix> Decode(const std::vector<std::string>& pieces, NmeaDecoderStats* stats = nullptr) {
+std::vector<NmeaFix> Decode(const std::vector<std::string>& pieces,
+                            NmeaDecoderStats* stats = nullptr) {
   std::vector<NmeaFix> out;
   NmeaDecoder d([&](const NmeaFix& f) { out.push_back(f); });
   for (const auto& p : pieces) d.Feed(p);
@@ -21,8 +22,10 @@ std::vector<NmeaFix> Decode(const std::vector<std::string>& pieces, NmeaDecoderS
   return out;
 }
 
-constexpr const char* kGga = "$GPGGA,191434.00,5200.17079,N,00602.17433,E,1,07,1.45,20.8,M,46.1,M,,*61\r\n";
-constexpr const char* kRmc = "$GPRMC,191434.00,A,5200.17079,N,00602.17433,E,0.044,,040712,,,A*73\r\n";
+constexpr const char* kGga =
+    "$GPGGA,191434.00,5200.17079,N,00602.17433,E,1,07,1.45,20.8,M,46.1,M,,*61\r\n";
+constexpr const char* kRmc =
+    "$GPRMC,191434.00,A,5200.17079,N,00602.17433,E,0.044,,040712,,,A*73\r\n";
 
 TEST(NmeaDecoderTest, DecodesCapturedGga) {
   const auto fixes = Decode({kGga});
@@ -52,7 +55,8 @@ TEST(NmeaDecoderTest, SurvivesSplitReadsGarbageAndBadChecksums) {
 }
 
 TEST(NmeaDecoderTest, NoFixSentencesAreNotValid) {
-  const auto fixes = Decode({"$GPGGA,191418.00,,,,,0,00,99.99,,,,,,*62\r\n", "$GPRMC,191418.00,V,,,,,,,040712,,,N*79\r\n"});
+  const auto fixes = Decode({"$GPGGA,191418.00,,,,,0,00,99.99,,,,,,*62\r\n",
+                             "$GPRMC,191418.00,V,,,,,,,040712,,,N*79\r\n"});
   ASSERT_EQ(fixes.size(), 2u);
   EXPECT_FALSE(fixes[0].valid);
   EXPECT_FALSE(fixes[1].valid);

@@ -1,9 +1,9 @@
 #include "hil/estimator/drivers/ubx_configurator.h"
 
-#include <gtest/gtest.h>
-
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "hil/firmware_emu/gnss/gps_time.h"
 #include "hil/firmware_emu/gnss/neo5m_device.h"
@@ -75,7 +75,8 @@ TEST(UbxConfiguratorTest, WaitsForEachAckRetriesAndGivesUp) {
   EXPECT_EQ(c.commands()[4].result, UbxCommand::Result::kTimedOut);
   EXPECT_FALSE(c.all_acked());
   EXPECT_EQ(c.Summary(),
-            "5 commands: 1 acked, 1 refused, 3 unanswered (CFG-MSG NAV-VELNED 1 NAK, CFG-MSG NAV-SOL 1 no answer, "
+            "5 commands: 1 acked, 1 refused, 3 unanswered (CFG-MSG NAV-VELNED 1 NAK, CFG-MSG "
+            "NAV-SOL 1 no answer, "
             "CFG-MSG NAV-TIMEGPS 1 no answer, CFG-RATE 200 ms no answer)");
   c.Restart();
   EXPECT_FALSE(c.done());

@@ -1,9 +1,9 @@
 #include "hil/estimator/drivers/ubx_decoder.h"
 
-#include <gtest/gtest.h>
-
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 namespace hil::estimator::drivers {
 namespace {
@@ -23,20 +23,20 @@ std::string PosLlh(std::uint32_t itow) {
   Le(p, static_cast<std::uint32_t>(354796096), 4);  // lat 35.4796096
   Le(p, 1301250, 4);                                // height 1301.25 m
   Le(p, 1280000, 4);
-  Le(p, 2500, 4);                                   // hAcc 2.5 m
+  Le(p, 2500, 4);  // hAcc 2.5 m
   Le(p, 4000, 4);
   return Frame(0x01, 0x02, p);
 }
 std::string VelNed(std::uint32_t itow) {
   std::string p;
   Le(p, itow, 4);
-  Le(p, 30, 4);                                         // N 0.30
-  Le(p, static_cast<std::uint32_t>(-40), 4);            // E −0.40
-  Le(p, 5, 4);                                          // D 0.05
+  Le(p, 30, 4);                               // N 0.30
+  Le(p, static_cast<std::uint32_t>(-40), 4);  // E −0.40
+  Le(p, 5, 4);                                // D 0.05
   Le(p, 50, 4);
   Le(p, 50, 4);
   Le(p, 0, 4);
-  Le(p, 20, 4);                                         // sAcc 0.20
+  Le(p, 20, 4);  // sAcc 0.20
   Le(p, 0, 4);
   return Frame(0x01, 0x12, p);
 }
@@ -55,15 +55,17 @@ std::string Sol(std::uint32_t itow, std::uint8_t fix, std::uint8_t flags) {
 
 TEST(UbxDecoderTest, EncodeMatchesReferenceCfgMsgFrame) {
   // CFG-MSG NAV-SOL rate 1, as listed in ublox5.md §1
-  EXPECT_EQ(Frame(0x06, 0x01, std::string("\x01\x06\x01", 3)), std::string("\xB5\x62\x06\x01\x03\x00\x01\x06\x01\x12\x4F", 11));
+  EXPECT_EQ(Frame(0x06, 0x01, std::string("\x01\x06\x01", 3)),
+            std::string("\xB5\x62\x06\x01\x03\x00\x01\x06\x01\x12\x4F", 11));
 }
 
 TEST(UbxDecoderTest, AssemblesAnEpochFromMixedSplitStream) {
-  // GIVEN SOL, NMEA text, a corrupted POSLLH, garbage, VELNED then the good POSLLH, one byte per read
+  // GIVEN SOL, NMEA text, a corrupted POSLLH, garbage, VELNED then the good POSLLH, one byte per
+  // read
   std::string bad = PosLlh(86400000);
   bad[10] ^= 0x01;
-  const std::string stream = Sol(86400000, 3, 0x0D) + "$GPGGA,foo*00\r\n" + bad + "\x01\xB5\x02" + VelNed(86400000) +
-                             PosLlh(86400000);
+  const std::string stream = Sol(86400000, 3, 0x0D) + "$GPGGA,foo*00\r\n" + bad + "\x01\xB5\x02" +
+                             VelNed(86400000) + PosLlh(86400000);
   UbxEpochAssembler asm_;
   std::vector<GnssSample> out;
   UbxDecoder d([&](const UbxMessage& m) {
@@ -95,7 +97,7 @@ TEST(UbxDecoderTest, NoFixIsNotReportedAndIncompleteEpochFlushesOnNextItow) {
     if (auto g = a.Add(msg)) out.push_back(*g);
   });
   d.Feed(Sol(1000, 0, 0x0C) + PosLlh(1000) + VelNed(1000));  // no fix
-  d.Feed(Sol(2000, 3, 0x0D) + PosLlh(2000));                   // no VELNED this epoch
+  d.Feed(Sol(2000, 3, 0x0D) + PosLlh(2000));                 // no VELNED this epoch
   EXPECT_TRUE(out.empty());
   d.Feed(PosLlh(3000));  // the next epoch flushes the previous one without velocity
   ASSERT_EQ(out.size(), 1u);

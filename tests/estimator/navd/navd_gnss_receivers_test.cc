@@ -2,18 +2,20 @@
 // the mode, and the navigator's multi-receiver fusion with two to four antennas.
 #include "hil/estimator/navd/navd_gnss_receivers.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "hil/estimator/navd/navd_config.h"
 
 namespace hil::estimator {
 namespace {
 
-NavdConfig Load(const std::string& text) { return NavdConfig::FromFile(ConfigFile::Parse(text, "navd.conf")); }
+NavdConfig Load(const std::string& text) {
+  return NavdConfig::FromFile(ConfigFile::Parse(text, "navd.conf"));
+}
 
 std::string ErrorOf(const std::string& text) {
   try {
@@ -53,13 +55,16 @@ TEST(NavdGnssReceiversTest, OneReceiverStaysAsBefore) {
 TEST(NavdGnssReceiversTest, ErrorsNameTheKey) {
   // several receivers outside multi_gnss
   EXPECT_EQ(ErrorOf("[input]\ngnss_device = a\ngnss_device_1 = b\n"),
-            "navd.conf:3: [input] gnss_device_1: mode gnss_only reads one receiver; several need [filter] mode = multi_gnss");
+            "navd.conf:3: [input] gnss_device_1: mode gnss_only reads one receiver; several need "
+            "[filter] mode = multi_gnss");
   // a gap in the numbering
   EXPECT_EQ(ErrorOf("[input]\ngnss_device = a\ngnss_device_2 = c\n[filter]\nmode = multi_gnss\n"),
-            "navd.conf:3: [input] gnss_device_2: receivers are numbered without gaps: [input] gnss_device_1 is missing");
+            "navd.conf:3: [input] gnss_device_2: receivers are numbered without gaps: [input] "
+            "gnss_device_1 is missing");
   // beyond the limit, index 0 (that is gnss_device), twice, the same device twice
   EXPECT_EQ(ErrorOf("[input]\ngnss_device_4 = x\n"),
-            "navd.conf:2: [input] gnss_device_4: receiver index out of range [1, 3] (gnss_device is receiver 0; navd reads at "
+            "navd.conf:2: [input] gnss_device_4: receiver index out of range [1, 3] (gnss_device "
+            "is receiver 0; navd reads at "
             "most 4 receivers)");
   EXPECT_NE(ErrorOf("[input]\ngnss_device_0 = x\n").find("out of range"), std::string::npos);
   EXPECT_EQ(ErrorOf("[input]\ngnss_device = a\ngnss_device_1 = b\ngnss_device_1 = c\n"),
@@ -69,21 +74,30 @@ TEST(NavdGnssReceiversTest, ErrorsNameTheKey) {
   EXPECT_EQ(ErrorOf("[input]\ngnss_device_1 = b\n[filter]\nmode = multi_gnss\n"),
             "navd.conf:2: [input] gnss_device_1: needs [input] gnss_device (receiver 0)");
   // multi_gnss: antennas
-  EXPECT_EQ(ErrorOf("[input]\ngnss_device = a\ngnss_device_1 = b\n[filter]\nmode = multi_gnss\nantenna_0_m = 1, 0, 0\n"),
-            "navd.conf:5: [filter] antenna_1_m: mode multi_gnss needs the antenna of every receiver (body frame x forward, y "
+  EXPECT_EQ(ErrorOf("[input]\ngnss_device = a\ngnss_device_1 = b\n[filter]\nmode = "
+                    "multi_gnss\nantenna_0_m = 1, 0, 0\n"),
+            "navd.conf:5: [filter] antenna_1_m: mode multi_gnss needs the antenna of every "
+            "receiver (body frame x forward, y "
             "left, z up, metres)");
-  EXPECT_EQ(ErrorOf("[input]\ngnss_device = a\n[filter]\nmode = multi_gnss\nantenna_0_m = 1, 0, 0\n"),
-            "navd.conf:4: [filter] mode: mode multi_gnss needs at least two receivers ([input] gnss_device and gnss_device_1 …)");
+  EXPECT_EQ(
+      ErrorOf("[input]\ngnss_device = a\n[filter]\nmode = multi_gnss\nantenna_0_m = 1, 0, 0\n"),
+      "navd.conf:4: [filter] mode: mode multi_gnss needs at least two receivers ([input] "
+      "gnss_device and gnss_device_1 …)");
   EXPECT_EQ(ErrorOf("[input]\ngnss_device = a\n[filter]\nantenna_1_m = 1, 0, 0\n"),
             "navd.conf:4: [filter] antenna_1_m: there is no receiver 1 (1 configured)");
   EXPECT_EQ(ErrorOf("[filter]\nantenna_0_m = 1, 0\n"),
-            "navd.conf:2: [filter] antenna_0_m: expected three comma-separated numbers 'x, y, z', got '1, 0'");
-  EXPECT_NE(ErrorOf("[filter]\nantenna_0_m = 1, 0, 0, 4\n").find("expected three"), std::string::npos);
+            "navd.conf:2: [filter] antenna_0_m: expected three comma-separated numbers 'x, y, z', "
+            "got '1, 0'");
+  EXPECT_NE(ErrorOf("[filter]\nantenna_0_m = 1, 0, 0, 4\n").find("expected three"),
+            std::string::npos);
   EXPECT_NE(ErrorOf("[filter]\nantenna_0_m = 1, x, 0\n").find("expected three"), std::string::npos);
-  EXPECT_NE(ErrorOf("[filter]\nantenna_4_m = 1, 0, 0\n").find("out of range [0, 3]"), std::string::npos);
-  EXPECT_EQ(ErrorOf("[input]\ngnss_device = a\ngnss_device_1 = b\n[filter]\nmode = multi_gnss\nantenna_0_m = 1, 0, 0\n"
+  EXPECT_NE(ErrorOf("[filter]\nantenna_4_m = 1, 0, 0\n").find("out of range [0, 3]"),
+            std::string::npos);
+  EXPECT_EQ(ErrorOf("[input]\ngnss_device = a\ngnss_device_1 = b\n[filter]\nmode = "
+                    "multi_gnss\nantenna_0_m = 1, 0, 0\n"
                     "antenna_1_m = 1, 0.01, 2\n"),
-            "navd.conf:6: [filter] antenna_0_m: the antennas must lie at least 5 cm from their centre horizontally to give a "
+            "navd.conf:6: [filter] antenna_0_m: the antennas must lie at least 5 cm from their "
+            "centre horizontally to give a "
             "heading");
 }
 
@@ -92,7 +106,8 @@ void ExpectCentreAndHeading(int n) {
   NavigatorParams p;
   p.mode = NavMode::kMultiGnss;
   p.multi_antenna_count = n;
-  for (int i = 0; i < n; ++i) p.multi_antenna_B_m.col(i) = Eigen::Vector3d(1.0 + 2.0 * i, 0.7 * i * i - 1.0, 0.4);
+  for (int i = 0; i < n; ++i)
+    p.multi_antenna_B_m.col(i) = Eigen::Vector3d(1.0 + 2.0 * i, 0.7 * i * i - 1.0, 0.4);
   Navigator nav(p);
   const LocalTangentFrame frame({35.4796096, 50.5979765, 1300});
   const Eigen::Vector3d origin(-4.0, 9.0, 0.0);
@@ -151,7 +166,8 @@ TEST(NavdGnssReceiversTest, NavigatorCombinesEpochsDeliveredInBurstsPerReceiver)
   }
   // THEN every complete epoch gives one solution, in time order, at its own position
   ASSERT_EQ(solutions.size(), 19u);
-  for (std::size_t k = 0; k < solutions.size(); ++k) EXPECT_EQ(solutions[k], kT + static_cast<GpsNs>(k) * 1'000'000'000LL);
+  for (std::size_t k = 0; k < solutions.size(); ++k)
+    EXPECT_EQ(solutions[k], kT + static_cast<GpsNs>(k) * 1'000'000'000LL);
   EXPECT_NEAR(frame.ToLocal(nav.Output().position).x(), 0.4 * 18, 1e-6);
 }
 

@@ -3,9 +3,9 @@
 // object appended to a JSON line.
 #include "hil/estimator/navd/navd_health.h"
 
-#include <gtest/gtest.h>
-
 #include <string>
+
+#include <gtest/gtest.h>
 
 namespace hil::estimator {
 namespace {
@@ -75,7 +75,8 @@ TEST(NavdHealthTest, FlagsAGnssOutageAndCountsTheGapWhenFixesReturn) {
   for (int k = 0; k < 10; ++k) h.OnGnss(Fix(k));
   EXPECT_EQ(h.Field(Ns(9.5)).find("\"gnss_outage\""), std::string::npos);
   for (int k = 10; k < 20; ++k) h.OnGnss(Fix(k, 0));  // no fix for 10 s
-  EXPECT_EQ(h.Field(Ns(12.4)).find("\"gnss_outage\""), std::string::npos) << "a fix may take 3.5 s to reach the filter";
+  EXPECT_EQ(h.Field(Ns(12.4)).find("\"gnss_outage\""), std::string::npos)
+      << "a fix may take 3.5 s to reach the filter";
   EXPECT_NE(h.Field(Ns(19.5)).find("\"gnss_outage\""), std::string::npos);
   EXPECT_TRUE(h.gnss_outage());
   h.OnGnss(Fix(20));
@@ -94,7 +95,10 @@ TEST(NavdHealthTest, AppendsTheHealthObjectInsideTheJsonLine) {
   NavdHealth h({&nmea, nullptr, nullptr, nullptr, nullptr});
   std::string line = "{\"tov_utc_s\":1.0,\"status\":0}\n";
   h.AppendTo(line, Ns(1));
-  EXPECT_EQ(line.rfind("{\"tov_utc_s\":1.0,\"status\":0,\"health\":{\"flags\":[\"gnss_link_errors\"],", 0), 0u) << line;
+  EXPECT_EQ(line.rfind(
+                "{\"tov_utc_s\":1.0,\"status\":0,\"health\":{\"flags\":[\"gnss_link_errors\"],", 0),
+            0u)
+      << line;
   EXPECT_NE(line.find("\"gnss_checksum_errors\":4"), std::string::npos);
   EXPECT_EQ(line.substr(line.size() - 3), "}}\n");
   // the link-error flag holds for 5 s after the last new error
@@ -149,7 +153,8 @@ TEST(NavdHealthTest, ReportsTheJ1939DecodersUnpairedFramesAndRaisesTheImuLinkFla
 TEST(NavdHealthTest, WithoutACanImuTheCanCountersAreZero) {
   NavdHealth h;
   const std::string f = h.Field(Ns(1));
-  EXPECT_NE(f.find("\"imu_can_unpaired\":0,\"imu_can_bad_length\":0,\"imu_can_out_of_order\":0}"), std::string::npos)
+  EXPECT_NE(f.find("\"imu_can_unpaired\":0,\"imu_can_bad_length\":0,\"imu_can_out_of_order\":0}"),
+            std::string::npos)
       << f;
 }
 

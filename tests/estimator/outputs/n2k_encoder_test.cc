@@ -1,15 +1,17 @@
 #include "hil/estimator/outputs/n2k_encoder.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+
+#include <gtest/gtest.h>
 
 #include "hil/estimator/outputs/nmea0183_writer.h"
 
 namespace hil::estimator::outputs {
 namespace {
 
-std::string Hex(const CanFrame& f) { return CandumpLine(f, 0, "x").substr(std::string("(0.000000) x ").size()); }
+std::string Hex(const CanFrame& f) {
+  return CandumpLine(f, 0, "x").substr(std::string("(0.000000) x ").size());
+}
 
 TEST(N2kEncoderTest, PositionRapidMatchesReferenceFrame) {
   // reference: can_and_transports.md §6, 129025 lat 52.1234568 lon 5.9876543 from SA 0x80
@@ -21,7 +23,8 @@ TEST(N2kEncoderTest, CogSogMatchesReferenceFrame) {
 }
 
 TEST(N2kEncoderTest, GnssPositionIsSevenFastPacketFramesThatReassemble) {
-  const FastPacket fp = EncodeGnssPosition(3, 15866, 28800.5, 35.4796096, -50.5979765, 1301.25, 6, 8, 1.2, 5, 0x80);
+  const FastPacket fp =
+      EncodeGnssPosition(3, 15866, 28800.5, 35.4796096, -50.5979765, 1301.25, 6, 8, 1.2, 5, 0x80);
   ASSERT_EQ(fp.count, 7);
   EXPECT_EQ(fp.frames[0].id, 0x0DF80580u);
   EXPECT_EQ(fp.frames[0].data[0], 5 << 5);
@@ -40,7 +43,8 @@ TEST(N2kEncoderTest, GnssPositionIsSevenFastPacketFramesThatReassemble) {
   EXPECT_EQ(le(1, 2), 15866u);
   EXPECT_EQ(le(3, 4), 288005000u);
   EXPECT_NEAR(static_cast<double>(static_cast<std::int64_t>(le(7, 8))) * 1e-16, 35.4796096, 1e-12);
-  EXPECT_NEAR(static_cast<double>(static_cast<std::int64_t>(le(15, 8))) * 1e-16, -50.5979765, 1e-12);
+  EXPECT_NEAR(static_cast<double>(static_cast<std::int64_t>(le(15, 8))) * 1e-16, -50.5979765,
+              1e-12);
   EXPECT_EQ(static_cast<std::int64_t>(le(23, 8)), 1301250000);
   EXPECT_EQ(p[31] >> 4, 6);  // method: estimated (dead reckoning)
   EXPECT_EQ(p[33], 8);
@@ -64,11 +68,17 @@ TEST(Nmea0183WriterTest, SentencesCarryChecksumsAndValues) {
   o.has_attitude = true;
   o.q_NB = Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ());  // body x north
   const std::string s = FormatNmea0183(o, (15866LL * 86400 + 3600) * 1000000000LL);
-  EXPECT_NE(s.find("$GNRMC,010000.00,A,3530.0000000,N,05015.0000000,W,1.944,0.00,100613,,,A*"), std::string::npos) << s;
-  EXPECT_NE(s.find("$GNGGA,010000.00,3530.0000000,N,05015.0000000,W,1,08,1.0,1300.000,M,0.0,M,,*"), std::string::npos);
+  EXPECT_NE(s.find("$GNRMC,010000.00,A,3530.0000000,N,05015.0000000,W,1.944,0.00,100613,,,A*"),
+            std::string::npos)
+      << s;
+  EXPECT_NE(s.find("$GNGGA,010000.00,3530.0000000,N,05015.0000000,W,1,08,1.0,1300.000,M,0.0,M,,*"),
+            std::string::npos);
   EXPECT_NE(s.find("$GNHDT,0.00,T*"), std::string::npos);
-  EXPECT_EQ(NmeaSentence("GPGGA,191434.00,5200.17079,N,00602.17433,E,1,07,1.45,20.8,M,46.1,M,,"),
-            "$GPGGA,191434.00,5200.17079,N,00602.17433,E,1,07,1.45,20.8,M,46.1,M,,*61\r\n");  // a captured sentence
+  EXPECT_EQ(
+      NmeaSentence("GPGGA,191434.00,5200.17079,N,00602.17433,E,1,07,1.45,20.8,M,46.1,M,,"),
+      "$GPGGA,191434.00,5200.17079,N,00602.17433,E,1,07,1.45,20.8,M,46.1,M,,*61\r\n");  // a
+                                                                                        // captured
+                                                                                        // sentence
 }
 
 }  // namespace

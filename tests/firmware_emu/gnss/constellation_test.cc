@@ -1,8 +1,8 @@
 #include "hil/firmware_emu/gnss/constellation.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+
+#include <gtest/gtest.h>
 
 #include "hil/firmware_emu/gnss/gps_time.h"
 
@@ -34,7 +34,8 @@ TEST(ConstellationTest, SkyStatisticsLookLikeGps) {
   EXPECT_GT(hdop / n, 0.7);
   EXPECT_LT(hdop / n, 1.6);
   EXPECT_LT(vdop / n, 2.8);
-  std::printf("used %d..%d, mean HDOP %.2f, mean VDOP %.2f\n", min_used, max_used, hdop / n, vdop / n);
+  std::printf("used %d..%d, mean HDOP %.2f, mean VDOP %.2f\n", min_used, max_used, hdop / n,
+              vdop / n);
 }
 
 TEST(ConstellationTest, GeometryChangesWithTimeAndPlaceAndRepeatsAfterASiderealDay) {
@@ -42,13 +43,15 @@ TEST(ConstellationTest, GeometryChangesWithTimeAndPlaceAndRepeatsAfterASiderealD
   const double t0 = GpsSeconds("2013-06-10T08:00:00Z");
   const auto a = c.Sky(t0, 35.48, 50.60, 1312, SkyConditions{});
   const auto b = c.Sky(t0 + 600, 35.48, 50.60, 1312, SkyConditions{});
-  const auto d = c.Sky(t0 + 86164.0905, 35.48, 50.60, 1312, SkyConditions{});  // 2 orbits = 1 sidereal day
+  const auto d =
+      c.Sky(t0 + 86164.0905, 35.48, 50.60, 1312, SkyConditions{});  // 2 orbits = 1 sidereal day
   const auto south = c.Sky(t0, -33.87, -70.67, 500, SkyConditions{});
   ASSERT_FALSE(a.empty());
   const SatelliteView& s0 = a.front();
   bool moved = false, repeated = false;
   for (const auto& s : b) {
-    if (s.svid == s0.svid) moved = std::abs(s.elev_deg - s0.elev_deg) > 1.0 || std::abs(s.azim_deg - s0.azim_deg) > 1.0;
+    if (s.svid == s0.svid)
+      moved = std::abs(s.elev_deg - s0.elev_deg) > 1.0 || std::abs(s.azim_deg - s0.azim_deg) > 1.0;
   }
   for (const auto& s : d) {
     if (s.svid == s0.svid) repeated = std::abs(s.elev_deg - s0.elev_deg) < 1.0;

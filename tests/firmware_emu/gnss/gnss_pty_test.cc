@@ -2,10 +2,7 @@
 // reports the fixes the emulator sent; ubxtool polls MON-VER, changes the rate and enables and
 // disables messages, and the stream changes accordingly. Needs gpsd, gpsd-clients (gpspipe,
 // ubxtool) and the hil binary; every wait is bounded and every process started here is killed.
-#include <gtest/gtest.h>
-#include <netinet/in.h>
 #include <signal.h>
-#include <sys/socket.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -14,11 +11,15 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
+
+#include <gtest/gtest.h>
+#include <netinet/in.h>
+#include <nlohmann/json.hpp>
+#include <sys/socket.h>
 
 namespace {
 
@@ -29,7 +30,9 @@ std::string Env(const char* name) {
   return v ? v : "";
 }
 
-bool HaveTool(const std::string& tool) { return std::system(("command -v " + tool + " >/dev/null 2>&1").c_str()) == 0; }
+bool HaveTool(const std::string& tool) {
+  return std::system(("command -v " + tool + " >/dev/null 2>&1").c_str()) == 0;
+}
 
 int FreePort() {
   const int fd = socket(AF_INET, SOCK_STREAM, 0);
@@ -88,7 +91,8 @@ std::vector<CapturedMessage> ReadCapture(const fs::path& p) {
     ss >> dir >> t >> period >> wall >> name >> hex;
     if (dir != "tx") continue;
     std::string bytes;
-    for (std::size_t i = 0; i + 1 < hex.size(); i += 2) bytes += static_cast<char>(std::stoi(hex.substr(i, 2), nullptr, 16));
+    for (std::size_t i = 0; i + 1 < hex.size(); i += 2)
+      bytes += static_cast<char>(std::stoi(hex.substr(i, 2), nullptr, 16));
     out.push_back({std::stod(t) * 1e-9, name, bytes});
   }
   return out;
@@ -96,7 +100,8 @@ std::vector<CapturedMessage> ReadCapture(const fs::path& p) {
 
 std::int32_t I4(const std::string& b, std::size_t off) {
   std::uint32_t v = 0;
-  for (int i = 3; i >= 0; --i) v = (v << 8) | static_cast<std::uint8_t>(b[off + static_cast<std::size_t>(i)]);
+  for (int i = 3; i >= 0; --i)
+    v = (v << 8) | static_cast<std::uint8_t>(b[off + static_cast<std::size_t>(i)]);
   return static_cast<std::int32_t>(v);
 }
 
@@ -111,12 +116,14 @@ class GnssPtyTest : public ::testing::Test {
  protected:
   void SetUp() override {
     for (const char* tool : {"gpsd", "gpspipe", "ubxtool", "timeout"}) {
-      ASSERT_TRUE(HaveTool(tool)) << tool << " is not installed (Debian packages gpsd, gpsd-clients; see ci/setup)";
+      ASSERT_TRUE(HaveTool(tool))
+          << tool << " is not installed (Debian packages gpsd, gpsd-clients; see ci/setup)";
     }
     hil_ = Env("HIL_BIN_DIR") + "/hil";
     ASSERT_TRUE(fs::exists(hil_)) << hil_;
-    dir_ = fs::temp_directory_path() / ("hil_gnss_pty_" + std::to_string(getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ = fs::temp_directory_path() /
+           ("hil_gnss_pty_" + std::to_string(getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -128,13 +135,16 @@ class GnssPtyTest : public ::testing::Test {
   /// Starts `hil emulate` on a scenario of `duration_s` and waits for the link.
   void Emulate(int duration_s) {
     std::ofstream(dir_ / "scenario.yaml")
-        << "name: gnss_pty\nstart_utc: \"2026-03-10T08:00:00Z\"\nduration_s: " << duration_s << "\nseed: 5\n"
+        << "name: gnss_pty\nstart_utc: \"2026-03-10T08:00:00Z\"\nduration_s: " << duration_s
+        << "\nseed: 5\n"
         << "origin: {lat_deg: -33.4488897, lon_deg: -70.6692655, height_m: 570.0}\n"
-        << "vehicle: {model: bicycle, wheelbase_m: 0.84}\npath: {type: line, heading_deg: 30.0, speed_kmh: 3.6}\n"
+        << "vehicle: {model: bicycle, wheelbase_m: 0.84}\npath: {type: line, heading_deg: 30.0, "
+           "speed_kmh: 3.6}\n"
         << "gnss: {profile: neo-5m, baud: 9600, link: ttyGPS}\n";
     pids_.push_back(Spawn("timeout " + std::to_string(duration_s + 20) + " " + hil_ + " emulate " +
-                              (dir_ / "scenario.yaml").string() + " --out " + (dir_ / "run").string() + " > " +
-                              (dir_ / "emulate.out").string() + " 2>&1",
+                              (dir_ / "scenario.yaml").string() + " --out " +
+                              (dir_ / "run").string() + " > " + (dir_ / "emulate.out").string() +
+                              " 2>&1",
                           dir_ / "hil.pid"));
     emulate_pid_ = pids_.back();
     link_ = dir_ / "run" / "ttyGPS";
@@ -142,12 +152,15 @@ class GnssPtyTest : public ::testing::Test {
   }
   /// Waits for `hil emulate` to finish (it flushes its capture then).
   std::vector<CapturedMessage> WaitEndAndReadCapture(double seconds) {
-    EXPECT_TRUE(WaitFor([&] { return kill(emulate_pid_, 0) != 0; }, seconds)) << "hil emulate did not end";
+    EXPECT_TRUE(WaitFor([&] { return kill(emulate_pid_, 0) != 0; }, seconds))
+        << "hil emulate did not end";
     return ReadCapture(dir_ / "run" / "captures" / "ttyGPS.cap");
   }
   std::string Ubxtool(const std::string& args) {
     const fs::path out = dir_ / "ubxtool.out";
-    std::system(("timeout 15 ubxtool -f " + link_.string() + " -s 9600 -P 12 " + args + " > " + out.string() + " 2>&1").c_str());
+    std::system(("timeout 15 ubxtool -f " + link_.string() + " -s 9600 -P 12 " + args + " > " +
+                 out.string() + " 2>&1")
+                    .c_str());
     return ReadAll(out);
   }
 
@@ -160,12 +173,14 @@ class GnssPtyTest : public ::testing::Test {
 TEST_F(GnssPtyTest, GpsdIdentifiesAUbloxAndReportsTheEmittedFixes) {
   Emulate(22);
   const int port = FreePort();
-  pids_.push_back(Spawn("timeout 30 gpsd -N -n -S " + std::to_string(port) + " -F " + (dir_ / "gpsd.sock").string() +
-                            " " + link_.string() + " > " + (dir_ / "gpsd.log").string() + " 2>&1",
+  pids_.push_back(Spawn("timeout 30 gpsd -N -n -S " + std::to_string(port) + " -F " +
+                            (dir_ / "gpsd.sock").string() + " " + link_.string() + " > " +
+                            (dir_ / "gpsd.log").string() + " 2>&1",
                         dir_ / "gpsd.pid"));
   std::this_thread::sleep_for(std::chrono::milliseconds(500));
-  std::system(("timeout 17 gpspipe -w localhost:" + std::to_string(port) + " > " + (dir_ / "pipe.json").string() +
-               " 2>/dev/null").c_str());
+  std::system(("timeout 17 gpspipe -w localhost:" + std::to_string(port) + " > " +
+               (dir_ / "pipe.json").string() + " 2>/dev/null")
+                  .c_str());
   const auto capture = WaitEndAndReadCapture(20);
 
   // what the emulator sent: NMEA GGA positions and UBX NAV-SOL ECEF positions
@@ -177,7 +192,8 @@ TEST_F(GnssPtyTest, GpsdIdentifiesAUbloxAndReportsTheEmittedFixes) {
       std::stringstream ss(m.bytes);
       std::string x;
       while (std::getline(ss, x, ',')) f.push_back(x);
-      if (f.size() > 6 && f[6] != "0") gga.emplace_back(NmeaDegrees(f[2], f[3]), NmeaDegrees(f[4], f[5]));
+      if (f.size() > 6 && f[6] != "0")
+        gga.emplace_back(NmeaDegrees(f[2], f[3]), NmeaDegrees(f[4], f[5]));
     } else if (m.name == "UBX-NAV-SOL") {
       sol.push_back({I4(m.bytes, 6 + 12), I4(m.bytes, 6 + 16), I4(m.bytes, 6 + 20)});
     }
@@ -191,19 +207,23 @@ TEST_F(GnssPtyTest, GpsdIdentifiesAUbloxAndReportsTheEmittedFixes) {
     if (j.is_discarded() || !j.contains("class")) continue;
     if (j["class"] == "DEVICE" && j.value("driver", "") == "u-blox") {
       ublox = true;
-      EXPECT_NE(j.value("subtype", "").find("SW 6.02 (36023),HW 00040005"), std::string::npos) << line;
+      EXPECT_NE(j.value("subtype", "").find("SW 6.02 (36023),HW 00040005"), std::string::npos)
+          << line;
     }
     if (j["class"] != "TPV" || j.value("mode", 0) < 2) continue;
     ++tpv;
     bool ok = false;
-    if (j.contains("ecefx")) {  // from NAV-SOL: ECEF printed in metres with 2 decimals = the cm sent
-      const std::array<std::int32_t, 3> e{static_cast<std::int32_t>(std::lround(j["ecefx"].get<double>() * 100)),
-                                          static_cast<std::int32_t>(std::lround(j["ecefy"].get<double>() * 100)),
-                                          static_cast<std::int32_t>(std::lround(j["ecefz"].get<double>() * 100))};
+    if (j.contains(
+            "ecefx")) {  // from NAV-SOL: ECEF printed in metres with 2 decimals = the cm sent
+      const std::array<std::int32_t, 3> e{
+          static_cast<std::int32_t>(std::lround(j["ecefx"].get<double>() * 100)),
+          static_cast<std::int32_t>(std::lround(j["ecefy"].get<double>() * 100)),
+          static_cast<std::int32_t>(std::lround(j["ecefz"].get<double>() * 100))};
       for (const auto& s : sol) ok = ok || s == e;
     } else {  // from NMEA: lat/lon to the sentence's 1e-5 minutes
       for (const auto& [lat, lon] : gga) {
-        ok = ok || (std::abs(lat - j["lat"].get<double>()) < 1e-8 && std::abs(lon - j["lon"].get<double>()) < 1e-8);
+        ok = ok || (std::abs(lat - j["lat"].get<double>()) < 1e-8 &&
+                    std::abs(lon - j["lon"].get<double>()) < 1e-8);
       }
     }
     EXPECT_TRUE(ok) << "gpsd reported a fix the emulator did not send: " << line;

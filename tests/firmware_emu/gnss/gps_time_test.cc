@@ -16,14 +16,15 @@ TEST(GpsTimeTest, KnownInstants) {
 }
 
 TEST(GpsTimeTest, LeapSecondsTable) {
-  EXPECT_EQ(LeapSecondsAtUnix(315964800), 0);          // GPS epoch
-  EXPECT_EQ(LeapSecondsAtUnix(1341100799), 15);        // 2012-06-30T23:59:59Z
-  EXPECT_EQ(LeapSecondsAtUnix(1341100800), 16);        // 2012-07-01
-  EXPECT_EQ(LeapSecondsAtUnix(1800000000), 18);        // 2027
+  EXPECT_EQ(LeapSecondsAtUnix(315964800), 0);    // GPS epoch
+  EXPECT_EQ(LeapSecondsAtUnix(1341100799), 15);  // 2012-06-30T23:59:59Z
+  EXPECT_EQ(LeapSecondsAtUnix(1341100800), 16);  // 2012-07-01
+  EXPECT_EQ(LeapSecondsAtUnix(1800000000), 18);  // 2027
 }
 
 TEST(GpsTimeTest, CalendarRoundTripAcrossMidnightAndLeapDay) {
-  for (const char* s : {"2016-02-29T23:59:59.999Z", "2000-01-01T00:00:00Z", "2026-12-31T23:59:59Z"}) {
+  for (const char* s :
+       {"2016-02-29T23:59:59.999Z", "2000-01-01T00:00:00Z", "2026-12-31T23:59:59Z"}) {
     const std::int64_t ns = ParseIsoUtc(s);
     const UtcTime u = UtcFromUnixNs(ns);
     EXPECT_EQ(UnixNsFromUtc(u), ns) << s;

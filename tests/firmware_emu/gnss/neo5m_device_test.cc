@@ -1,14 +1,13 @@
 #include "hil/firmware_emu/gnss/neo5m_device.h"
 
-#include <gtest/gtest.h>
-
-#include <set>
-
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <set>
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "hil/firmware_emu/gnss/gps_time.h"
 #include "hil/firmware_emu/gnss/ubx_frame.h"
@@ -30,7 +29,8 @@ TruthSample Truth(Time t, double lat = 35.4796096, double lon = 50.5979765, doub
 struct Harness {
   explicit Harness(Neo5mConfig cfg, std::uint64_t seed = 3) : dev(cfg, seed) {}
   /// Runs epochs up to `t_end_s` and returns what came out.
-  std::vector<SerialMessage> RunUntil(double t_end_s, double lat = 35.4796096, double lon = 50.5979765) {
+  std::vector<SerialMessage> RunUntil(double t_end_s, double lat = 35.4796096,
+                                      double lon = 50.5979765) {
     std::vector<SerialMessage> got;
     while (dev.next_event_time() <= TimeFromSeconds(t_end_s)) {
       DeviceOutput out;
@@ -75,7 +75,8 @@ TEST(Neo5mDeviceTest, DefaultStreamIsBannerThenNmeaInReceiverOrder) {
   ASSERT_GE(n.size(), 13u);
   for (int i = 0; i < 7; ++i) EXPECT_EQ(n[static_cast<std::size_t>(i)], "NMEA-TXT");
   EXPECT_EQ(first[0].bytes, "$GPTXT,01,01,02,u-blox ag - www.u-blox.com*50\r\n");
-  EXPECT_EQ(first[1].bytes, "$GPTXT,01,01,02,HW  UBX-G50xx  00040005 *53\r\n");  // verbatim u-blox 5 line
+  EXPECT_EQ(first[1].bytes,
+            "$GPTXT,01,01,02,HW  UBX-G50xx  00040005 *53\r\n");  // verbatim u-blox 5 line
   EXPECT_EQ(first[0].t_ready, TimeFromSeconds(0.1));
   const auto second = h.RunUntil(1.0);
   n = Names(second);
@@ -93,7 +94,8 @@ TEST(Neo5mDeviceTest, DefaultStreamIsBannerThenNmeaInReceiverOrder) {
 }
 
 TEST(Neo5mDeviceTest, TimeToFirstFixDependsOnTheStart) {
-  Harness hot(Config(StartKind::kHot)), warm(Config(StartKind::kWarm)), cold(Config(StartKind::kCold));
+  Harness hot(Config(StartKind::kHot)), warm(Config(StartKind::kWarm)),
+      cold(Config(StartKind::kCold));
   hot.RunUntil(40);
   warm.RunUntil(40);
   cold.RunUntil(40);
@@ -120,7 +122,8 @@ TEST(Neo5mDeviceTest, CfgRstColdRestartsAcquisitionAndRepeatsTheBanner) {
   Harness h(Config());
   h.RunUntil(5);
   ASSERT_TRUE(h.dev.last_fix().valid());
-  const auto replies = h.Host(ubx::Frame(0x06, 0x04, std::vector<std::uint8_t>{0xFF, 0xFF, 0x01, 0x00}));
+  const auto replies =
+      h.Host(ubx::Frame(0x06, 0x04, std::vector<std::uint8_t>{0xFF, 0xFF, 0x01, 0x00}));
   ASSERT_EQ(replies.size(), 1u);
   EXPECT_EQ(replies[0].name, "UBX-ACK-ACK");
   const auto out = h.RunUntil(40);
@@ -132,7 +135,8 @@ TEST(Neo5mDeviceTest, CfgRstColdRestartsAcquisitionAndRepeatsTheBanner) {
       break;
     }
   }
-  EXPECT_EQ(first_valid, 6 + 29 - 1 + 1);  // reset at 5.5 s, first epoch 6 s; TTFF 29 s from the reset
+  EXPECT_EQ(first_valid,
+            6 + 29 - 1 + 1);  // reset at 5.5 s, first epoch 6 s; TTFF 29 s from the reset
 }
 
 TEST(Neo5mDeviceTest, OutageDropsTheFixAndReacquires) {
@@ -202,7 +206,8 @@ TEST(Neo5mDeviceTest, OverloadOutputsMoreThanTheBaudCarriesAndOnlyWhileActive) {
   EXPECT_GT(overload, 960u) << "the overloaded output exceeds the line";
   EXPECT_EQ(overload_names.count("UBX-NAV-SOL"), 1u);
   EXPECT_EQ(overload_names.count("NMEA-ZDA"), 1u);
-  EXPECT_NEAR(static_cast<double>(after), static_cast<double>(normal), 0.1 * static_cast<double>(normal))
+  EXPECT_NEAR(static_cast<double>(after), static_cast<double>(normal),
+              0.1 * static_cast<double>(normal))
       << "back to the configured output after the fault";
   EXPECT_EQ(after_names, normal_names);
   EXPECT_EQ(h.dev.overloaded_epochs(), 10u);
@@ -303,14 +308,16 @@ TEST(Neo5mDeviceTest, ReportedAccuracyMatchesTheActualError) {
     h.dev.OnEvent(t, out);
     const GnssFix& f = h.dev.last_fix();
     if (!f.valid()) continue;
-    const double de = (f.lon_deg - t.lon_deg) * 111320.0 * std::cos(t.lat_deg * std::numbers::pi / 180);
+    const double de =
+        (f.lon_deg - t.lon_deg) * 111320.0 * std::cos(t.lat_deg * std::numbers::pi / 180);
     const double dn = (f.lat_deg - t.lat_deg) * 110950.0;
     sum_e2 += de * de + dn * dn;
     sum_hacc2 += f.h_acc_m * f.h_acc_m;
     ++n;
   }
   const double rms = std::sqrt(sum_e2 / n), hacc = std::sqrt(sum_hacc2 / n);
-  std::printf("horizontal error RMS %.3f m, reported hAcc RMS %.3f m over %d fixes\n", rms, hacc, n);
+  std::printf("horizontal error RMS %.3f m, reported hAcc RMS %.3f m over %d fixes\n", rms, hacc,
+              n);
   EXPECT_NEAR(rms / hacc, 1.0, 0.2) << "rms " << rms << " hAcc " << hacc;
 }
 
@@ -334,16 +341,18 @@ TEST(Neo5mDeviceTest, ThreeReceiversShareTheCommonError) {
     // position errors relative to the truth: use the error model's state via the fix
     for (auto& d : rx) {
       const GnssFix& f = d->last_fix();
-      sum += Eigen::Vector3d((f.lon_deg - 50.5979765) * 90000.0, (f.lat_deg - 35.4796096) * 110950.0, 0);
+      sum += Eigen::Vector3d((f.lon_deg - 50.5979765) * 90000.0,
+                             (f.lat_deg - 35.4796096) * 110950.0, 0);
     }
     const GnssFix& f0 = rx[0]->last_fix();
-    single2 += std::pow((f0.lon_deg - 50.5979765) * 90000.0, 2) + std::pow((f0.lat_deg - 35.4796096) * 110950.0, 2);
+    single2 += std::pow((f0.lon_deg - 50.5979765) * 90000.0, 2) +
+               std::pow((f0.lat_deg - 35.4796096) * 110950.0, 2);
     avg2 += (sum / 3.0).squaredNorm();
     ++n;
   }
   const double ratio = std::sqrt(avg2 / single2);
-  std::printf("single receiver horizontal RMS %.3f m, mean of three %.3f m (ratio %.3f)\n", std::sqrt(single2 / n),
-              std::sqrt(avg2 / n), ratio);
+  std::printf("single receiver horizontal RMS %.3f m, mean of three %.3f m (ratio %.3f)\n",
+              std::sqrt(single2 / n), std::sqrt(avg2 / n), ratio);
   EXPECT_NEAR(ratio, std::sqrt(0.46 + 0.54 / 3.0), 0.05);
 }
 
@@ -378,8 +387,10 @@ TEST(Neo5mDeviceTest, DataGapSilencesTheOutputButKeepsTheRtkFix) {
     if (m.name == "NMEA-GGA" && t > 50.0 && t < 50.2) gga.push_back(m.bytes);
   }
   ASSERT_EQ(gga.size(), 1u) << "the first epoch after the gap is sent";
-  EXPECT_NE(gga[0].find(",4,"), std::string::npos) << "still RTK fixed, no re-acquisition: " << gga[0];
-  for (const auto& f : h.fixes) EXPECT_TRUE(ToSeconds(f.t_validity) < 6 || f.valid()) << "the receiver keeps its fix";
+  EXPECT_NE(gga[0].find(",4,"), std::string::npos)
+      << "still RTK fixed, no re-acquisition: " << gga[0];
+  for (const auto& f : h.fixes)
+    EXPECT_TRUE(ToSeconds(f.t_validity) < 6 || f.valid()) << "the receiver keeps its fix";
 }
 
 }  // namespace

@@ -2,8 +2,6 @@
 // ublox-lea-5h.log and nl551e.log in shared/vectors/gpsd-ublox5, read, not copied): the same
 // sentence order, and every field of every sentence has a shape (digits → 9) that the real
 // receiver also printed in that field, with and without a fix; the banner is the real one's form.
-#include <gtest/gtest.h>
-
 #include <cstdlib>
 #include <fstream>
 #include <map>
@@ -11,6 +9,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "hil/firmware_emu/gnss/gps_time.h"
 #include "hil/firmware_emu/gnss/neo5m_device.h"
@@ -51,7 +51,8 @@ struct Reference {
 
 Reference LoadReference() {
   Reference ref;
-  const std::string dir = std::string(std::getenv("HIL_SOURCE_DIR")) + "/../shared/vectors/gpsd-ublox5/";
+  const std::string dir =
+      std::string(std::getenv("HIL_SOURCE_DIR")) + "/../shared/vectors/gpsd-ublox5/";
   for (const char* file : {"ublox-lea-5h.log", "nl551e.log"}) {
     std::ifstream in(dir + file);
     EXPECT_TRUE(in) << dir + file;
@@ -72,7 +73,8 @@ Reference LoadReference() {
 
 TEST(NmeaConventionsTest, StreamMatchesRealUblox5Captures) {
   const Reference ref = LoadReference();
-  ASSERT_EQ(ref.order, (std::vector<std::string>{"GPRMC", "GPVTG", "GPGGA", "GPGSA", "GPGSV", "GPGLL"}));
+  ASSERT_EQ(ref.order,
+            (std::vector<std::string>{"GPRMC", "GPVTG", "GPGGA", "GPGSA", "GPGSV", "GPGLL"}));
   // a stationary receiver at the nl551e site, warm start: no fix for 28 s, then a fix
   Neo5mConfig cfg;
   cfg.start_unix_ns = ParseIsoUtc("2012-07-04T19:14:00Z");
@@ -113,7 +115,8 @@ TEST(NmeaConventionsTest, StreamMatchesRealUblox5Captures) {
 }
 
 TEST(NmeaConventionsTest, BannerHasTheRealReceiversForm) {
-  const std::string dir = std::string(std::getenv("HIL_SOURCE_DIR")) + "/../shared/vectors/gpsd-ublox5/";
+  const std::string dir =
+      std::string(std::getenv("HIL_SOURCE_DIR")) + "/../shared/vectors/gpsd-ublox5/";
   std::ifstream in(dir + "nl551e.log");
   std::vector<std::string> real;
   std::string line;
@@ -131,7 +134,8 @@ TEST(NmeaConventionsTest, BannerHasTheRealReceiversForm) {
     if (m.name == "NMEA-TXT") ours.push_back(m.bytes.substr(0, m.bytes.size() - 2));
   }
   ASSERT_EQ(ours.size(), 7u);
-  for (std::size_t i : {0u, 1u, 2u, 3u, 5u, 6u}) EXPECT_EQ(ours[i], real[i]);  // all but the MOD line
+  for (std::size_t i : {0u, 1u, 2u, 3u, 5u, 6u})
+    EXPECT_EQ(ours[i], real[i]);  // all but the MOD line
   EXPECT_EQ(ours[4].rfind("$GPTXT,01,01,02,MOD ", 0), 0u);
 }
 

@@ -22,8 +22,10 @@ TEST(NmeaEncoderTest, ReproducesCapturedFixSentences) {
   fix.num_sv = 7;
   fix.hdop = 1.45;
   fix.vel_n_mps = 0.044 * 1852.0 / 3600.0;  // stationary: the course stays empty
-  EXPECT_EQ(EncodeRmc(fix), "$GPRMC,191434.00,A,5200.17079,N,00602.17433,E,0.044,,040712,,,A*73\r\n");
-  EXPECT_EQ(EncodeGga(fix), "$GPGGA,191434.00,5200.17079,N,00602.17433,E,1,07,1.45,20.8,M,46.1,M,,*61\r\n");
+  EXPECT_EQ(EncodeRmc(fix),
+            "$GPRMC,191434.00,A,5200.17079,N,00602.17433,E,0.044,,040712,,,A*73\r\n");
+  EXPECT_EQ(EncodeGga(fix),
+            "$GPGGA,191434.00,5200.17079,N,00602.17433,E,1,07,1.45,20.8,M,46.1,M,,*61\r\n");
 }
 
 TEST(NmeaEncoderTest, ReproducesCapturedNoFixSentences) {

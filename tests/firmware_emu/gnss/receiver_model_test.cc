@@ -1,9 +1,9 @@
 #include "hil/firmware_emu/gnss/receiver_model.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 namespace hil::gnss {
 namespace {
@@ -40,7 +40,8 @@ TEST(ReceiverModelTest, ErrorStatisticsMatchConfiguration) {
 }
 
 TEST(ReceiverModelTest, SameSeedSameFixes) {
-  ReceiverModel a(ReceiverModelConfig{}, 7), b(ReceiverModelConfig{}, 7), c(ReceiverModelConfig{}, 8);
+  ReceiverModel a(ReceiverModelConfig{}, 7), b(ReceiverModelConfig{}, 7),
+      c(ReceiverModelConfig{}, 8);
   for (int k = 0; k < 10; ++k) {
     const GnssFix fa = a.Calc(StationaryTruth(k), 0, 1.0);
     const GnssFix fb = b.Calc(StationaryTruth(k), 0, 1.0);

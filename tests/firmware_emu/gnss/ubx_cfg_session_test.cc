@@ -55,10 +55,11 @@ TEST_F(CfgSessionTest, PrtRefusesUnsupportedBaud) {
 }
 
 TEST_F(CfgSessionTest, MsgAllThreeFormsAndPoll) {
-  EXPECT_EQ(session.current().Rate(0xF0, 0x00), 1);  // GGA on by default
-  EXPECT_EQ(Send(0x01, {0x01, 0x06, 0x01})[0].bytes, Ack(true, 0x06, 0x01));       // port form
+  EXPECT_EQ(session.current().Rate(0xF0, 0x00), 1);                           // GGA on by default
+  EXPECT_EQ(Send(0x01, {0x01, 0x06, 0x01})[0].bytes, Ack(true, 0x06, 0x01));  // port form
   EXPECT_EQ(session.current().Rate(0x01, 0x06), 1);
-  EXPECT_EQ(Send(0x01, {0xF0, 0x00, 0, 0, 0, 0, 0, 0})[0].bytes, Ack(true, 0x06, 0x01));  // 6-target form
+  EXPECT_EQ(Send(0x01, {0xF0, 0x00, 0, 0, 0, 0, 0, 0})[0].bytes,
+            Ack(true, 0x06, 0x01));  // 6-target form
   EXPECT_EQ(session.current().Rate(0xF0, 0x00), 0);
   const auto r = Send(0x01, {0x01, 0x06});  // poll
   ASSERT_EQ(r.size(), 2u);
@@ -68,10 +69,13 @@ TEST_F(CfgSessionTest, MsgAllThreeFormsAndPoll) {
 }
 
 TEST_F(CfgSessionTest, RateKeepsNavRateOneAndTheReceiverMaximum) {
-  EXPECT_EQ(Send(0x08, {0xFA, 0x00, 0x01, 0x00, 0x01, 0x00})[0].bytes, Ack(true, 0x06, 0x08));  // 250 ms
+  EXPECT_EQ(Send(0x08, {0xFA, 0x00, 0x01, 0x00, 0x01, 0x00})[0].bytes,
+            Ack(true, 0x06, 0x08));  // 250 ms
   EXPECT_EQ(session.current().meas_rate_ms, 250);
-  EXPECT_EQ(Send(0x08, {0x64, 0x00, 0x01, 0x00, 0x01, 0x00})[0].bytes, Ack(false, 0x06, 0x08));  // 10 Hz
-  EXPECT_EQ(Send(0x08, {0xE8, 0x03, 0x02, 0x00, 0x01, 0x00})[0].bytes, Ack(false, 0x06, 0x08));  // navRate 2
+  EXPECT_EQ(Send(0x08, {0x64, 0x00, 0x01, 0x00, 0x01, 0x00})[0].bytes,
+            Ack(false, 0x06, 0x08));  // 10 Hz
+  EXPECT_EQ(Send(0x08, {0xE8, 0x03, 0x02, 0x00, 0x01, 0x00})[0].bytes,
+            Ack(false, 0x06, 0x08));  // navRate 2
   EXPECT_EQ(session.current().meas_rate_ms, 250);
   const auto r = Send(0x08, {});
   EXPECT_EQ(PayloadOf(r[0].bytes), (std::vector<std::uint8_t>{0xFA, 0x00, 0x01, 0x00, 0x01, 0x00}));
@@ -81,9 +85,11 @@ TEST_F(CfgSessionTest, Nav5PollReturnsTheUblox5DefaultFrame) {
   const auto r = Send(0x24, {});
   ASSERT_EQ(r.size(), 2u);
   // the u-blox 5 CFG-NAV5 frame of the fact sheet (§1), mask reported as all ones
-  const std::string expect = Frame(0x06, 0x24, std::vector<std::uint8_t>{
-      0xFF, 0xFF, 0x00, 0x03, 0, 0, 0, 0, 0x10, 0x27, 0, 0, 0x05, 0x00, 0xFA, 0x00, 0xFA, 0x00, 0x64, 0x00, 0x2C, 0x01,
-      0x00, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0});
+  const std::string expect = Frame(
+      0x06, 0x24, std::vector<std::uint8_t>{0xFF, 0xFF, 0x00, 0x03, 0,    0,    0,    0,    0x10,
+                                            0x27, 0,    0,    0x05, 0x00, 0xFA, 0x00, 0xFA, 0x00,
+                                            0x64, 0x00, 0x2C, 0x01, 0x00, 0,    0,    0,    0,
+                                            0,    0,    0,    0,    0,    0,    0,    0,    0});
   EXPECT_EQ(r[0].bytes, expect);
   // set only the minimum elevation (mask bit 1) and a 2D-only fix mode (bit 2)
   std::vector<std::uint8_t> set(36, 0);
@@ -99,9 +105,9 @@ TEST_F(CfgSessionTest, Nav5PollReturnsTheUblox5DefaultFrame) {
 }
 
 TEST_F(CfgSessionTest, CfgCfgSavesAndHardwareResetRestores) {
-  Send(0x01, {0xF0, 0x05, 0x00});  // VTG off
+  Send(0x01, {0xF0, 0x05, 0x00});                          // VTG off
   Send(0x09, {0, 0, 0, 0, 0xFF, 0xFF, 0, 0, 0, 0, 0, 0});  // save everything
-  Send(0x01, {0xF0, 0x00, 0x00});  // GGA off, not saved
+  Send(0x01, {0xF0, 0x00, 0x00});                          // GGA off, not saved
   session.LoadSaved();
   EXPECT_EQ(session.current().Rate(0xF0, 0x05), 0);
   EXPECT_EQ(session.current().Rate(0xF0, 0x00), 1);
@@ -121,8 +127,9 @@ TEST_F(CfgSessionTest, RstRestartKinds) {
 }
 
 TEST_F(CfgSessionTest, MessagesOfLaterGenerationsAreRefused) {
-  EXPECT_EQ(Send(0x31, std::vector<std::uint8_t>(32, 0))[0].bytes, Ack(false, 0x06, 0x31));  // CFG-TP5
-  EXPECT_EQ(Send(0x3E, {})[0].bytes, Ack(false, 0x06, 0x3E));                                // CFG-GNSS
+  EXPECT_EQ(Send(0x31, std::vector<std::uint8_t>(32, 0))[0].bytes,
+            Ack(false, 0x06, 0x31));                           // CFG-TP5
+  EXPECT_EQ(Send(0x3E, {})[0].bytes, Ack(false, 0x06, 0x3E));  // CFG-GNSS
 }
 
 TEST_F(CfgSessionTest, PollsOfSbasTpNmeaAnswerWithMessageThenAck) {
@@ -132,7 +139,8 @@ TEST_F(CfgSessionTest, PollsOfSbasTpNmeaAnswerWithMessageThenAck) {
     EXPECT_EQ(static_cast<std::uint8_t>(r[0].bytes[3]), id);
     EXPECT_EQ(r[1].bytes, Ack(true, 0x06, id));
   }
-  EXPECT_EQ(Send(0x17, {0, 0x30, 0, 0})[0].bytes, Ack(false, 0x06, 0x17));  // NMEA version 3.0 unknown
+  EXPECT_EQ(Send(0x17, {0, 0x30, 0, 0})[0].bytes,
+            Ack(false, 0x06, 0x17));  // NMEA version 3.0 unknown
 }
 
 TEST_F(CfgSessionTest, PubxSetsRatesAndPorts) {

@@ -1,10 +1,11 @@
 #include "hil/firmware_emu/link/candump_log.h"
 
-#include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
+
+#include <gtest/gtest.h>
 
 namespace hil::link {
 namespace {
@@ -26,7 +27,8 @@ struct FrameRow {
 
 std::vector<FrameRow> FrameRows() {
   std::vector<FrameRow> rows;
-  rows.push_back({"standard id, 4 bytes", "123#DEADBEEF", Classic(0x123, false, {0xDE, 0xAD, 0xBE, 0xEF})});
+  rows.push_back(
+      {"standard id, 4 bytes", "123#DEADBEEF", Classic(0x123, false, {0xDE, 0xAD, 0xBE, 0xEF})});
   rows.push_back({"extended id, 1 byte", "12345678#01", Classic(0x12345678, true, {0x01})});
   rows.push_back({"NMEA 2000 129025 (reference)", "09F80180#8868111FBFA49103",
                   Classic(0x09F80180, true, {0x88, 0x68, 0x11, 0x1F, 0xBF, 0xA4, 0x91, 0x03})});
@@ -52,7 +54,8 @@ std::vector<FrameRow> FrameRows() {
   fd64.fd = true;
   fd64.fd_flags = 2;
   fd64.len = 64;
-  for (int i = 0; i < 64; ++i) fd64.data[static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(i * 3);
+  for (int i = 0; i < 64; ++i)
+    fd64.data[static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(i * 3);
   std::string t64 = "1ABCDEF0##2";
   for (int i = 0; i < 64; ++i) {
     char b[3];
@@ -84,8 +87,9 @@ TEST(CandumpLogTest, ParserIsTolerantLikeCanUtils) {
 }
 
 TEST(CandumpLogTest, RejectsMalformedFrameStrings) {
-  for (const char* bad : {"", "12#00", "1234#00", "123", "123#0", "123#GG", "123#112233445566778899",
-                          "800#00", "123#R9", "123##", "123##1AABBCC0", "20000004#R"}) {
+  for (const char* bad :
+       {"", "12#00", "1234#00", "123", "123#0", "123#GG", "123#112233445566778899", "800#00",
+        "123#R9", "123##", "123##1AABBCC0", "20000004#R"}) {
     SCOPED_TRACE(bad);
     EXPECT_FALSE(ParseCanFrameText(bad).has_value());
   }
@@ -117,14 +121,16 @@ TEST(CandumpLogTest, ParsesLinesOfEveryCandumpVariant) {
   const auto nanos = ParseCandumpLine("(1700000000.123456789) vcan0 123#");  // candump -N
   ASSERT_TRUE(nanos.has_value());
   EXPECT_EQ(nanos->t_unix_ns, 1700000000123456789LL);
-  EXPECT_FALSE(ParseCandumpLine("DROPCOUNT: dropped 3 CAN frame(s) on 'can0' socket (total drops 3)"));
+  EXPECT_FALSE(
+      ParseCandumpLine("DROPCOUNT: dropped 3 CAN frame(s) on 'can0' socket (total drops 3)"));
   EXPECT_FALSE(ParseCandumpLine("(1700000000.000000) vcan0"));
   EXPECT_FALSE(ParseCandumpLine("(17000x0000.000000) vcan0 123#"));
   EXPECT_FALSE(ParseCandumpLine("(1700000000.000000) vcan0 123#00 X"));
 }
 
 TEST(CandumpLogTest, WriterAndReaderRoundTripAFile) {
-  const std::string path = std::filesystem::temp_directory_path() / ("hil_candump_" + std::to_string(getpid()) + ".log");
+  const std::string path =
+      std::filesystem::temp_directory_path() / ("hil_candump_" + std::to_string(getpid()) + ".log");
   std::vector<CandumpRecord> written;
   {
     CandumpLogWriter w(path);
@@ -142,7 +148,8 @@ TEST(CandumpLogTest, WriterAndReaderRoundTripAFile) {
   }
   {
     std::ofstream extra(path, std::ios::app);
-    extra << "DROPCOUNT: dropped 1 CAN frame(s) on 'vcan0' socket (total drops 1)\n\n(1.0) vcan0 nonsense\n";
+    extra << "DROPCOUNT: dropped 1 CAN frame(s) on 'vcan0' socket (total drops 1)\n\n(1.0) vcan0 "
+             "nonsense\n";
   }
   const CandumpLog log = ReadCandumpLog(path);
   EXPECT_EQ(log.records, written);

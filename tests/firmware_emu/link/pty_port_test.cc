@@ -4,10 +4,10 @@
 #include <poll.h>
 #include <unistd.h>
 
-#include <gtest/gtest.h>
-
 #include <filesystem>
 #include <string>
+
+#include <gtest/gtest.h>
 
 namespace hil::link {
 namespace {
@@ -26,7 +26,8 @@ std::string ReadSome(int fd, std::size_t want) {
 }
 
 TEST(PtyPortTest, BytesCrossBothWaysThroughTheSymlink) {
-  const std::string link = std::filesystem::temp_directory_path() / ("hil_pty_test_" + std::to_string(getpid()));
+  const std::string link =
+      std::filesystem::temp_directory_path() / ("hil_pty_test_" + std::to_string(getpid()));
   PtyPort port(link, 9600);
   ASSERT_TRUE(std::filesystem::is_symlink(link));
   const int host = open(link.c_str(), O_RDWR | O_NOCTTY);

@@ -31,7 +31,9 @@ TEST(UartTxQueueTest, DropsWholeMessagesWhenTheBufferIsFull) {
   EXPECT_EQ(later->bytes.size(), 30u);
 }
 
-TEST(UartTxQueueTest, RejectsNonPositiveBaud) { EXPECT_THROW(UartTxQueue(0, 10), std::invalid_argument); }
+TEST(UartTxQueueTest, RejectsNonPositiveBaud) {
+  EXPECT_THROW(UartTxQueue(0, 10), std::invalid_argument);
+}
 
 }  // namespace
 }  // namespace hil::link

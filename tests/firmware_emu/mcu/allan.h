@@ -8,7 +8,8 @@
 namespace hil::mcu::test {
 
 /// {τ, σ(τ)} for cluster sizes m = 1, 2, 4, … up to n/8 samples.
-inline std::vector<std::pair<double, double>> AllanDeviation(const std::vector<double>& y, double dt) {
+inline std::vector<std::pair<double, double>> AllanDeviation(const std::vector<double>& y,
+                                                             double dt) {
   const std::size_t n = y.size();
   std::vector<double> cum(n + 1, 0.0);
   for (std::size_t i = 0; i < n; ++i) cum[i + 1] = cum[i] + y[i];
@@ -22,7 +23,8 @@ inline std::vector<std::pair<double, double>> AllanDeviation(const std::vector<d
       sum += (b - a) * (b - a);
       ++count;
     }
-    out.emplace_back(static_cast<double>(m) * dt, std::sqrt(sum / (2.0 * static_cast<double>(count))));
+    out.emplace_back(static_cast<double>(m) * dt,
+                     std::sqrt(sum / (2.0 * static_cast<double>(count))));
   }
   return out;
 }
@@ -34,7 +36,8 @@ inline double NoiseDensityFromAllan(const std::vector<std::pair<double, double>>
 
 /// Bias instability B: the largest Allan deviation left after removing the white part,
 /// divided by √(2 ln2 / π).
-inline double BiasInstabilityFromAllan(const std::vector<std::pair<double, double>>& a, double n_density) {
+inline double BiasInstabilityFromAllan(const std::vector<std::pair<double, double>>& a,
+                                       double n_density) {
   double best = 0;
   for (const auto& [tau, sigma] : a) {
     const double rest = sigma * sigma - n_density * n_density / tau;

@@ -19,10 +19,14 @@ struct ReadFrame {
   std::int16_t I16(std::size_t at) const {
     return static_cast<std::int16_t>(payload[at] | (payload[at + 1] << 8));
   }
-  std::uint16_t U16(std::size_t at) const { return static_cast<std::uint16_t>(payload[at] | (payload[at + 1] << 8)); }
+  std::uint16_t U16(std::size_t at) const {
+    return static_cast<std::uint16_t>(payload[at] | (payload[at + 1] << 8));
+  }
   std::uint32_t U32(std::size_t at) const {
-    return static_cast<std::uint32_t>(payload[at]) | (static_cast<std::uint32_t>(payload[at + 1]) << 8) |
-           (static_cast<std::uint32_t>(payload[at + 2]) << 16) | (static_cast<std::uint32_t>(payload[at + 3]) << 24);
+    return static_cast<std::uint32_t>(payload[at]) |
+           (static_cast<std::uint32_t>(payload[at + 1]) << 8) |
+           (static_cast<std::uint32_t>(payload[at + 2]) << 16) |
+           (static_cast<std::uint32_t>(payload[at + 3]) << 24);
   }
   float F32(std::size_t at) const {
     const std::uint32_t u = U32(at);

@@ -35,7 +35,8 @@ TEST(J1939ImuTest, IdentifiersFollowPrioPgnSa) {
 }
 
 TEST(J1939ImuTest, AriExample) {
-  EXPECT_EQ(Candump(EncodeAri(Time{}, kAddr, {0, 0, 10 * kDeg}, kOk, 0.001)), "0CF02AE2#007D007D0082C002");
+  EXPECT_EQ(Candump(EncodeAri(Time{}, kAddr, {0, 0, 10 * kDeg}, kOk, 0.001)),
+            "0CF02AE2#007D007D0082C002");
 }
 
 TEST(J1939ImuTest, AriSignsPitchNoseUpIsMinusWy) {
@@ -46,14 +47,16 @@ TEST(J1939ImuTest, AriSignsPitchNoseUpIsMinusWy) {
 }
 
 TEST(J1939ImuTest, AccsExampleMatchesTheDerivedReferenceFrame) {
-  EXPECT_EQ(Candump(EncodeAccs(Time{}, kAddr, {0, 0, 9.80665}, kOk, 0.001)), "0CF02DE2#007D007DD580C002");
+  EXPECT_EQ(Candump(EncodeAccs(Time{}, kAddr, {0, 0, 9.80665}, kOk, 0.001)),
+            "0CF02DE2#007D007DD580C002");
   // the reference's frame with latency byte 0x0A and FoM bits as zero except the reserved pair
   const CanFrame f = EncodeAccs(Time{}, kAddr, {0, 0, 9.80665}, kOk, 0.005);
   EXPECT_EQ(f.data[7], 0x0A);
 }
 
 TEST(J1939ImuTest, Ssi2Example) {
-  EXPECT_EQ(Candump(EncodeSsi2(Time{}, kAddr, {0, 0, 9.80665}, 0, 0, 0.001)), "0CF029E2#00007D00007D3302");
+  EXPECT_EQ(Candump(EncodeSsi2(Time{}, kAddr, {0, 0, 9.80665}, 0, 0, 0.001)),
+            "0CF029E2#00007D00007D3302");
 }
 
 TEST(J1939ImuTest, Ssi2PitchNoseUpAndRollRightDownArePositive) {
@@ -65,7 +68,8 @@ TEST(J1939ImuTest, Ssi2PitchNoseUpAndRollRightDownArePositive) {
 }
 
 TEST(J1939ImuTest, TimePulseExample) {
-  EXPECT_EQ(Candump(EncodeHilTimePulse(Time{}, kAddr, 1000000, true, 86400, 1744)), "0CFF50E2#40420F008051016D");
+  EXPECT_EQ(Candump(EncodeHilTimePulse(Time{}, kAddr, 1000000, true, 86400, 1744)),
+            "0CFF50E2#40420F008051016D");
   const CanFrame unknown = EncodeHilTimePulse(Time{}, kAddr, 1, false, 86400, 1744);
   EXPECT_EQ(unknown.data[4], 0xFF);
   EXPECT_EQ(unknown.data[5], 0xFF);

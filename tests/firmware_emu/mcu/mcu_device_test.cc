@@ -9,8 +9,9 @@
 
 #include <gtest/gtest.h>
 
-#include "frame_reader.h"
 #include "hil/firmware_emu/gnss/gps_time.h"
+
+#include "frame_reader.h"
 #include "truth_driver.h"
 
 namespace hil::mcu {
@@ -52,8 +53,8 @@ TEST(McuDeviceTest, StartsWithPowerOnStatusAndCountsEveryFrame) {
   const ReadFrame& s = frames.front().frame;
   ASSERT_EQ(s.type, static_cast<std::uint8_t>(MessageType::kStatus));
   EXPECT_EQ(s.sequence, 0);
-  EXPECT_EQ(s.payload[0], 0);   // power-on
-  EXPECT_EQ(s.U16(2), 0);       // reset count
+  EXPECT_EQ(s.payload[0], 0);  // power-on
+  EXPECT_EQ(s.U16(2), 0);      // reset count
   EXPECT_EQ(s.U32(4), 1000000u);
   EXPECT_EQ(s.U32(8), 100000u);  // 10 Hz
   EXPECT_FLOAT_EQ(s.F32(12), static_cast<float>(9.80665 / 256.0));
@@ -75,7 +76,8 @@ TEST(McuDeviceTest, SamplesRunOnTheCrystalAndLatchTheTimePulse) {
   ASSERT_GE(imu.size(), 40u);
   for (std::size_t i = 1; i < imu.size(); ++i) {
     // 100 000 ticks of a 1.0001 MHz crystal = 99 990.001 µs of true time
-    EXPECT_NEAR(static_cast<double>((imu[i].t_ready - imu[i - 1].t_ready).count()), 99990001.0, 1.0);
+    EXPECT_NEAR(static_cast<double>((imu[i].t_ready - imu[i - 1].t_ready).count()), 99990001.0,
+                1.0);
     EXPECT_NEAR(static_cast<double>(imu[i].frame.tick - imu[i - 1].frame.tick), 100000.0, 1.0);
   }
   const auto pulses = OfType(frames, MessageType::kTimePulse);
@@ -90,7 +92,8 @@ TEST(McuDeviceTest, SamplesRunOnTheCrystalAndLatchTheTimePulse) {
     EXPECT_EQ(pulses[i].frame.payload[6], 1);
     EXPECT_EQ(pulses[i].frame.tick, dev.TickAt(t_edge));
     if (i > 0) {
-      EXPECT_NEAR(static_cast<double>(pulses[i].frame.tick - pulses[i - 1].frame.tick), 1000100.0, 1.0);
+      EXPECT_NEAR(static_cast<double>(pulses[i].frame.tick - pulses[i - 1].frame.tick), 1000100.0,
+                  1.0);
       EXPECT_EQ(pulses[i].frame.U32(2) - pulses[i - 1].frame.U32(2), 1000u);
     }
   }
@@ -104,7 +107,8 @@ TEST(McuDeviceTest, JitterDelaysSamplesWithinItsBound) {
   McuConfig c = BaseConfig();
   c.jitter_us = 50;
   McuDevice dev(c, 3);
-  const auto imu = OfType(Frames(test::RunDevice(dev, TimeFromSeconds(3.0))), MessageType::kImuSample);
+  const auto imu =
+      OfType(Frames(test::RunDevice(dev, TimeFromSeconds(3.0))), MessageType::kImuSample);
   bool any_late = false;
   for (std::size_t i = 0; i < imu.size(); ++i) {
     const std::int64_t nominal = 10000000 + static_cast<std::int64_t>(i) * 100000000 + 500000;
@@ -154,7 +158,8 @@ TEST(McuDeviceTest, AResetWithADurationStaysSilentThatLong) {
     if (frames[i].frame.sequence == 0 && boot == 0) boot = i;
   }
   ASSERT_GT(boot, 0u);
-  EXPECT_NEAR(ToSeconds(frames[boot].t_ready), 3.55, 0.001) << "boot STATUS right after the silent gap";
+  EXPECT_NEAR(ToSeconds(frames[boot].t_ready), 3.55, 0.001)
+      << "boot STATUS right after the silent gap";
   EXPECT_GT(last_before, 1.9);
   EXPECT_LT(frames[boot].frame.tick, 10u);
   EXPECT_EQ(dev.stats().resets, 1u);
@@ -167,7 +172,8 @@ TEST(McuDeviceTest, DroppedFramesLeaveASequenceGap) {
   const auto frames = Frames(test::RunDevice(dev, TimeFromSeconds(3.0)));
   std::uint64_t missing = 0;
   for (std::size_t i = 1; i < frames.size(); ++i)
-    missing += static_cast<std::uint16_t>(frames[i].frame.sequence - frames[i - 1].frame.sequence - 1);
+    missing +=
+        static_cast<std::uint16_t>(frames[i].frame.sequence - frames[i - 1].frame.sequence - 1);
   EXPECT_EQ(missing, dev.stats().frames_dropped);
   EXPECT_GE(missing, 10u);  // 5 IMU + 5 MAG + pulse + status
 }
@@ -179,9 +185,12 @@ TEST(McuDeviceTest, SequenceJumpAdvancesTheCounter) {
   const auto frames = Frames(test::RunDevice(dev, TimeFromSeconds(3.0)));
   int jumps = 0;
   for (std::size_t i = 1; i < frames.size(); ++i) {
-    const int d = static_cast<std::uint16_t>(frames[i].frame.sequence - frames[i - 1].frame.sequence);
-    if (d == 101) ++jumps;
-    else EXPECT_EQ(d, 1);
+    const int d =
+        static_cast<std::uint16_t>(frames[i].frame.sequence - frames[i - 1].frame.sequence);
+    if (d == 101)
+      ++jumps;
+    else
+      EXPECT_EQ(d, 1);
   }
   EXPECT_EQ(jumps, 1);
 }
@@ -201,7 +210,8 @@ TEST(McuDeviceTest, StuckGyroRepeatsItsCounts) {
   McuConfig c = BaseConfig();
   c.faults.push_back({FaultKind::kStuckSensor, 1.0, 1.0, 1.0, 1, "gyro"});
   McuDevice dev(c, 8);
-  const auto imu = OfType(Frames(test::RunDevice(dev, TimeFromSeconds(3.0), 0.2)), MessageType::kImuSample);
+  const auto imu =
+      OfType(Frames(test::RunDevice(dev, TimeFromSeconds(3.0), 0.2)), MessageType::kImuSample);
   std::vector<std::vector<std::uint8_t>> gyro_in_window;
   int accel_changes = 0;
   for (std::size_t i = 0; i < imu.size(); ++i) {
@@ -248,7 +258,8 @@ TEST(McuDeviceTest, CanFramesCarryTheSerialSampleAtSampleTimePlusLatency) {
       ++ari;
       EXPECT_NEAR(u16(4) / 128.0 - 250.0, match->frame.I16(10) * gyro_lsb_deg, 0.5 / 128.0 + 1e-9);
       EXPECT_NEAR(u16(0) / 128.0 - 250.0, -match->frame.I16(8) * gyro_lsb_deg, 0.5 / 128.0 + 1e-9);
-      EXPECT_NEAR(u16(4) / 128.0 - 250.0, 0.1 * 180 / 3.141592653589793, 0.1);  // yaw rate of the truth
+      EXPECT_NEAR(u16(4) / 128.0 - 250.0, 0.1 * 180 / 3.141592653589793,
+                  0.1);  // yaw rate of the truth
     } else if (pgn == kPgnAccs) {
       ++accs;
       EXPECT_NEAR(u16(4) * 0.01 - 320.0, match->frame.I16(4) * acc_lsb, 0.005 + 1e-9);
@@ -271,12 +282,14 @@ TEST(McuDeviceTest, RazorRawTextLinesCarryRegisterAndAdcCounts) {
   McuDevice dev(c, 10);
   const DeviceOutput out = test::RunDevice(dev, TimeFromSeconds(2.0));
   ASSERT_EQ(out.serial.size(), 20u);  // text lines only: no pulse or status frames
-  const std::regex line(R"(^\$,(-?\d+),(-?\d+),(-?\d+),(\d+),(\d+),(\d+),(-?\d+),(-?\d+),(-?\d+),#\r\n$)");
+  const std::regex line(
+      R"(^\$,(-?\d+),(-?\d+),(-?\d+),(\d+),(\d+),(\d+),(-?\d+),(-?\d+),(-?\d+),#\r\n$)");
   for (std::size_t i = 1; i < out.serial.size(); ++i) {
     std::smatch m;
     ASSERT_TRUE(std::regex_match(out.serial[i].bytes, m, line)) << out.serial[i].bytes;
-    EXPECT_NEAR(std::stoi(m[3]), 256, 60);   // +1 g on z in 3.9 mg counts
-    for (int k = 4; k <= 6; ++k) EXPECT_NEAR(std::stoi(m[k]), 382, 25);  // 10-bit ADC near zero rate
+    EXPECT_NEAR(std::stoi(m[3]), 256, 60);  // +1 g on z in 3.9 mg counts
+    for (int k = 4; k <= 6; ++k)
+      EXPECT_NEAR(std::stoi(m[k]), 382, 25);                     // 10-bit ADC near zero rate
     EXPECT_NEAR(std::stoi(m[9]), -40.0 / (100.0 / 1300.0), 40);  // 40 µT down → −520 counts
   }
 }
@@ -287,7 +300,8 @@ TEST(McuDeviceTest, RazorV19TextUsesItsFraming) {
   McuDevice dev(c, 10);
   const DeviceOutput out = test::RunDevice(dev, TimeFromSeconds(1.0));
   ASSERT_FALSE(out.serial.empty());
-  EXPECT_TRUE(std::regex_match(out.serial.back().bytes, std::regex(R"(^!Data:(-?\d+,){8}-?\d+#\n\r$)")));
+  EXPECT_TRUE(
+      std::regex_match(out.serial.back().bytes, std::regex(R"(^!Data:(-?\d+,){8}-?\d+#\n\r$)")));
 }
 
 TEST(McuDeviceTest, SameSeedSameBytesOtherSeedOtherBytes) {

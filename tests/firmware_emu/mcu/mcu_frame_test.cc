@@ -37,13 +37,15 @@ TEST(McuFrameTest, ImuSampleMatchesTheSpecExample) {
 
 TEST(McuFrameTest, TimePulseMatchesTheSpecExample) {
   TimePulsePayload p{1744, 86400000, true};
-  EXPECT_EQ(Hex(EncodeTimePulse(7, 1000000, p)), "A5 5A 01 03 07 07 00 40 42 0F 00 D0 06 00 5C 26 05 01 20 C6");
+  EXPECT_EQ(Hex(EncodeTimePulse(7, 1000000, p)),
+            "A5 5A 01 03 07 07 00 40 42 0F 00 D0 06 00 5C 26 05 01 20 C6");
 }
 
 TEST(McuFrameTest, MagSampleMatchesTheSpecExample) {
   MagSamplePayload p;
   p.mag = {300, -50, -600};
-  EXPECT_EQ(Hex(EncodeMagSample(8, 1050000, p)), "A5 5A 01 02 06 08 00 90 05 10 00 2C 01 CE FF A8 FD A6 58");
+  EXPECT_EQ(Hex(EncodeMagSample(8, 1050000, p)),
+            "A5 5A 01 02 06 08 00 90 05 10 00 2C 01 CE FF A8 FD A6 58");
 }
 
 TEST(McuFrameTest, StatusHasItsSpecifiedLengthAndFloatLayout) {
@@ -52,7 +54,7 @@ TEST(McuFrameTest, StatusHasItsSpecifiedLengthAndFloatLayout) {
   p.pulse_seen = true;
   p.reset_count = 0x0201;
   p.imu_period_ticks = 100000;
-  p.accel_scale_mps2_per_lsb = 1.0f;  // 0x3F800000
+  p.accel_scale_mps2_per_lsb = 1.0f;   // 0x3F800000
   p.gyro_scale_radps_per_lsb = -2.0f;  // 0xC0000000
   p.mag_scale_uT_per_lsb = 0.5f;       // 0x3F000000
   p.profile = 2;
@@ -70,8 +72,9 @@ TEST(McuFrameTest, AnyFlippedByteBreaksTheCrc) {
     std::string bad = good;
     bad[i] = static_cast<char>(bad[i] ^ 0x10);
     const std::vector<std::uint8_t> body(bad.begin() + 2, bad.end() - 2);
-    const auto crc = static_cast<std::uint16_t>(static_cast<unsigned char>(bad[bad.size() - 2]) |
-                                                (static_cast<unsigned char>(bad[bad.size() - 1]) << 8));
+    const auto crc =
+        static_cast<std::uint16_t>(static_cast<unsigned char>(bad[bad.size() - 2]) |
+                                   (static_cast<unsigned char>(bad[bad.size() - 1]) << 8));
     EXPECT_NE(Crc16CcittFalse(body), crc) << "byte " << i;
   }
 }

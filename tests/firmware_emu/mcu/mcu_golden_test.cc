@@ -12,9 +12,10 @@
 
 #include <gtest/gtest.h>
 
-#include "frame_reader.h"
 #include "hil/firmware_emu/gnss/gps_time.h"
 #include "hil/firmware_emu/mcu/mcu_device.h"
+
+#include "frame_reader.h"
 #include "truth_driver.h"
 
 namespace hil::mcu {
@@ -38,16 +39,19 @@ McuConfig VectorConfig() {
   c.crystal_ppm = 37.5;
   c.jitter_us = 20;
   c.mounting.p_BI_B_m = Eigen::Vector3d(0.3, 0.0, 1.2);  // on a tube above the rear axle
-  c.vibration.push_back({23.0, Eigen::Vector3d(0.3, 0.2, 0.8), Eigen::Vector3d(0.002, 0.002, 0.001)});
+  c.vibration.push_back(
+      {23.0, Eigen::Vector3d(0.3, 0.2, 0.8), Eigen::Vector3d(0.002, 0.002, 0.001)});
   return c;
 }
 
 std::string Header(const std::string& what, const McuConfig& c) {
   std::ostringstream h;
-  h << "# " << what << "\n# Generator: tests/firmware_emu/mcu/mcu_golden_test.cc (HIL_REGEN_VECTORS=1 rewrites)\n"
+  h << "# " << what
+    << "\n# Generator: tests/firmware_emu/mcu/mcu_golden_test.cc (HIL_REGEN_VECTORS=1 rewrites)\n"
     << "# Seed: " << kSeed << "  Profile: " << c.profile.name << "  start_utc: " << kStartUtc
     << "  crystal_ppm: " << c.crystal_ppm << "  imu_rate_hz: " << c.imu_rate_hz << "\n"
-    << "# Truth: level vehicle turning left at 0.1 rad/s, 0.45 m/s, rolling 0.05 rad at 0.5 Hz; board lever arm "
+    << "# Truth: level vehicle turning left at 0.1 rad/s, 0.45 m/s, rolling 0.05 rad at 0.5 Hz; "
+       "board lever arm "
        "(0.3, 0, 1.2) m; 23 Hz vibration\n";
   return h.str();
 }
@@ -62,20 +66,26 @@ BinaryVector MakeBinary(const McuConfig& c, double seconds) {
   McuDevice dev(c, kSeed);
   const DeviceOutput out = test::RunDevice(dev, TimeFromSeconds(seconds), kRollAmplitudeRad);
   BinaryVector v;
-  v.csv = Header("MCU frame protocol v1 (vectors/mcu/mcu_frame_protocol.md): one row per frame in the .bin", c);
+  v.csv = Header(
+      "MCU frame protocol v1 (vectors/mcu/mcu_frame_protocol.md): one row per frame in the .bin",
+      c);
   v.csv +=
       "# columns: offset,sequence,type,tick,crc_ok,values...\n"
       "#  IMU_SAMPLE(1): ax_mps2,ay_mps2,az_mps2,gx_radps,gy_radps,gz_radps (raw x STATUS scale)\n"
       "#  MAG_SAMPLE(2): mx_uT,my_uT,mz_uT\n"
       "#  TIME_PULSE(3): gps_week,tow_ms,valid\n"
-      "#  STATUS(4): reset_cause,flags,reset_count,tick_hz,imu_period_ticks,accel_scale,gyro_scale,mag_scale,profile\n"
-      "#  corrupted frames (crc_ok 0) have no values; their sequence/type/tick are the bytes as read (maybe corrupted)\n"
+      "#  STATUS(4): "
+      "reset_cause,flags,reset_count,tick_hz,imu_period_ticks,accel_scale,gyro_scale,mag_scale,"
+      "profile\n"
+      "#  corrupted frames (crc_ok 0) have no values; their sequence/type/tick are the bytes as "
+      "read (maybe corrupted)\n"
       "#  dropped frames do not appear (the sequence numbers show the gap)\n";
   double sa = 0, sg = 0, sm = 0;
   for (const SerialMessage& m : out.serial) {
     const test::ReadFrame f = test::ParseFrame(m.bytes);
     std::string row = std::to_string(v.bin.size()) + "," + std::to_string(f.sequence) + "," +
-                      std::to_string(f.type) + "," + std::to_string(f.tick) + "," + (f.crc_ok ? "1" : "0");
+                      std::to_string(f.type) + "," + std::to_string(f.tick) + "," +
+                      (f.crc_ok ? "1" : "0");
     v.bin += m.bytes;
     if (!f.crc_ok) {
       v.csv += row + "\n";
@@ -85,8 +95,9 @@ BinaryVector MakeBinary(const McuConfig& c, double seconds) {
       case 4:
         sa = f.F32(12), sg = f.F32(16), sm = f.F32(20);
         row += "," + std::to_string(f.payload[0]) + "," + std::to_string(f.payload[1]) + "," +
-               std::to_string(f.U16(2)) + "," + std::to_string(f.U32(4)) + "," + std::to_string(f.U32(8)) + "," +
-               G(sa) + "," + G(sg) + "," + G(sm) + "," + std::to_string(f.payload[24]);
+               std::to_string(f.U16(2)) + "," + std::to_string(f.U32(4)) + "," +
+               std::to_string(f.U32(8)) + "," + G(sa) + "," + G(sg) + "," + G(sm) + "," +
+               std::to_string(f.payload[24]);
         break;
       case 1:
         for (int i = 0; i < 3; ++i) row += "," + G(f.I16(2 * static_cast<std::size_t>(i)) * sa);
@@ -96,7 +107,8 @@ BinaryVector MakeBinary(const McuConfig& c, double seconds) {
         for (int i = 0; i < 3; ++i) row += "," + G(f.I16(2 * static_cast<std::size_t>(i)) * sm);
         break;
       case 3:
-        row += "," + std::to_string(f.U16(0)) + "," + std::to_string(f.U32(2)) + "," + std::to_string(f.payload[6]);
+        row += "," + std::to_string(f.U16(0)) + "," + std::to_string(f.U32(2)) + "," +
+               std::to_string(f.payload[6]);
         break;
       default:
         break;
@@ -117,8 +129,10 @@ BinaryVector MakeText(McuConfig c, SerialFormat format, double seconds) {
                      (format == SerialFormat::kRazorRaw ? "raw `$,...,#`" : "v19 `!Data:...#`") +
                      " (vectors/mcu/razor_text_formats.md): one row per line",
                  c);
-  v.csv += "# columns: ax_mps2,ay_mps2,az_mps2,gx_radps,gy_radps,gz_radps,mx_uT,my_uT,mz_uT\n"
-           "# accel = count x 9.80665/256; gyro = (adc - 382) x (3.3/1024 V)/(3.33 mV/(deg/s)); mag = count x 100/1300\n";
+  v.csv +=
+      "# columns: ax_mps2,ay_mps2,az_mps2,gx_radps,gy_radps,gz_radps,mx_uT,my_uT,mz_uT\n"
+      "# accel = count x 9.80665/256; gyro = (adc - 382) x (3.3/1024 V)/(3.33 mV/(deg/s)); mag = "
+      "count x 100/1300\n";
   for (const SerialMessage& m : out.serial) {
     v.bin += m.bytes;
     std::string body = m.bytes.substr(m.bytes.find_first_of(":,") + 1);
@@ -132,9 +146,13 @@ BinaryVector MakeText(McuConfig c, SerialFormat format, double seconds) {
     std::string row;
     for (int i = 0; i < 9; ++i) {
       double x;
-      if (i < 3) x = n[static_cast<std::size_t>(i)] * p.accel.counts.count_lsb;
-      else if (i < 6) x = (n[static_cast<std::size_t>(i)] - p.gyro.counts.nominal_zero_count) * p.gyro.counts.count_lsb;
-      else x = n[static_cast<std::size_t>(i)] * p.mag.counts.count_lsb;
+      if (i < 3)
+        x = n[static_cast<std::size_t>(i)] * p.accel.counts.count_lsb;
+      else if (i < 6)
+        x = (n[static_cast<std::size_t>(i)] - p.gyro.counts.nominal_zero_count) *
+            p.gyro.counts.count_lsb;
+      else
+        x = n[static_cast<std::size_t>(i)] * p.mag.counts.count_lsb;
       row += (i ? "," : "") + G(x);
     }
     v.csv += row + "\n";
@@ -145,7 +163,8 @@ BinaryVector MakeText(McuConfig c, SerialFormat format, double seconds) {
 // ---- CAN (candump -l) ----
 std::string CandumpLine(std::int64_t unix_ns, const CanFrame& f) {
   char buf[64];
-  std::snprintf(buf, sizeof buf, "(%010llu.%06llu) vcan0 %08X#", static_cast<unsigned long long>(unix_ns / 1000000000),
+  std::snprintf(buf, sizeof buf, "(%010llu.%06llu) vcan0 %08X#",
+                static_cast<unsigned long long>(unix_ns / 1000000000),
                 static_cast<unsigned long long>((unix_ns % 1000000000) / 1000), f.id);
   std::string s = buf;
   for (int i = 0; i < f.len; ++i) {
@@ -169,9 +188,12 @@ BinaryVector MakeCan(McuConfig c, double seconds) {
     if (f.type == 1) imu.emplace_back(m.t_ready - DurationFromSeconds(c.output_latency_s), f);
   }
   BinaryVector v;
-  v.csv = Header("MCU J1939 CAN frames (vectors/can/README.md, hil_imu.dbc): one row per line of the .candump", c);
+  v.csv = Header(
+      "MCU J1939 CAN frames (vectors/can/README.md, hil_imu.dbc): one row per line of the .candump",
+      c);
   v.csv +=
-      "# columns: timestamp,id_hex,pgn,values... (engineering values the MCU encoded; decoders agree within one LSB)\n"
+      "# columns: timestamp,id_hex,pgn,values... (engineering values the MCU encoded; decoders "
+      "agree within one LSB)\n"
       "#  61482 ARI: pitch_rate_dps,roll_rate_dps,yaw_rate_dps,latency_ms\n"
       "#  61485 ACCS: lateral_mps2,longitudinal_mps2,vertical_mps2,latency_ms\n"
       "#  61481 SSI2: pitch_deg,roll_deg,latency_ms\n"
@@ -181,15 +203,20 @@ BinaryVector MakeCan(McuConfig c, double seconds) {
     v.bin += CandumpLine(unix_ns, f);
     const std::uint32_t pgn = (f.id >> 8) & 0x3FFFF;
     char head[96];
-    std::snprintf(head, sizeof head, "%lld.%06lld,%08X,%u", static_cast<long long>(unix_ns / 1000000000),
+    std::snprintf(head, sizeof head, "%lld.%06lld,%08X,%u",
+                  static_cast<long long>(unix_ns / 1000000000),
                   static_cast<long long>((unix_ns % 1000000000) / 1000), f.id, pgn);
     std::string row = head;
     const double latency_ms = f.data[7] * 0.5;
     if (pgn == kPgnHilTimePulse) {
-      const std::uint32_t tick = f.data[0] | (f.data[1] << 8) | (f.data[2] << 16) | (static_cast<std::uint32_t>(f.data[3]) << 24);
-      const std::uint32_t hi = f.data[4] | (f.data[5] << 8) | (f.data[6] << 16) | (static_cast<std::uint32_t>(f.data[7]) << 24);
-      const gnss::GpsTime g = gnss::GpsFromUnixNs(unix_ns - static_cast<std::int64_t>(c.can.latency_s * 1e9));
-      row += "," + std::to_string(tick) + "," + std::to_string(g.tow_ns / 1000000000) + "," + std::to_string(g.week % 4096);
+      const std::uint32_t tick = f.data[0] | (f.data[1] << 8) | (f.data[2] << 16) |
+                                 (static_cast<std::uint32_t>(f.data[3]) << 24);
+      const std::uint32_t hi = f.data[4] | (f.data[5] << 8) | (f.data[6] << 16) |
+                               (static_cast<std::uint32_t>(f.data[7]) << 24);
+      const gnss::GpsTime g =
+          gnss::GpsFromUnixNs(unix_ns - static_cast<std::int64_t>(c.can.latency_s * 1e9));
+      row += "," + std::to_string(tick) + "," + std::to_string(g.tow_ns / 1000000000) + "," +
+             std::to_string(g.week % 4096);
       EXPECT_EQ(hi & 0xFFFFF, g.tow_ns / 1000000000);
     } else {
       const Time t_sample = f.t - DurationFromSeconds(c.can.latency_s);
@@ -203,7 +230,8 @@ BinaryVector MakeCan(McuConfig c, double seconds) {
       const Eigen::Vector3d acc(s->I16(0) * sa, s->I16(2) * sa, s->I16(4) * sa);
       const Eigen::Vector3d w(s->I16(6) * sg, s->I16(8) * sg, s->I16(10) * sg);
       if (pgn == kPgnAri) {
-        row += "," + G(-w.y() * kRadToDeg) + "," + G(w.x() * kRadToDeg) + "," + G(w.z() * kRadToDeg);
+        row +=
+            "," + G(-w.y() * kRadToDeg) + "," + G(w.x() * kRadToDeg) + "," + G(w.z() * kRadToDeg);
       } else if (pgn == kPgnAccs) {
         row += "," + G(acc.y()) + "," + G(acc.x()) + "," + G(acc.z());
       } else {
@@ -244,8 +272,9 @@ void CheckOrWrite(const std::string& rel, const std::string& content) {
   }
   const std::string have = ReadAll(path);
   ASSERT_FALSE(have.empty()) << path << " is missing; run with HIL_REGEN_VECTORS=1";
-  EXPECT_TRUE(have == content) << path << " differs from the regenerated vector (" << have.size() << " vs "
-                               << content.size() << " bytes); if the change is intended, HIL_REGEN_VECTORS=1";
+  EXPECT_TRUE(have == content) << path << " differs from the regenerated vector (" << have.size()
+                               << " vs " << content.size()
+                               << " bytes); if the change is intended, HIL_REGEN_VECTORS=1";
 }
 
 TEST(McuGoldenTest, RazorBinaryStream) {

@@ -7,9 +7,10 @@
 
 #include <gtest/gtest.h>
 
-#include "allan.h"
 #include "hil/firmware_emu/mcu/sensor_spec.h"
 #include "hil/firmware_emu/mcu/sensor_triad.h"
+
+#include "allan.h"
 
 namespace hil::mcu {
 namespace {
@@ -18,8 +19,8 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kDt = 0.1;  // 10 Hz: seed 000's IMU rate
 
 // GIVEN a triad at rest WHEN it is sampled n times THEN the per-axis records of Measure()
-std::vector<std::vector<double>> StaticRecord(const TriadSpec& spec, std::size_t n, std::uint64_t seed,
-                                              bool quantised) {
+std::vector<std::vector<double>> StaticRecord(const TriadSpec& spec, std::size_t n,
+                                              std::uint64_t seed, bool quantised) {
   SensorTriad triad(spec, kDt, seed);
   std::vector<std::vector<double>> axes(3, std::vector<double>(n));
   for (std::size_t k = 0; k < n; ++k) {
@@ -48,11 +49,14 @@ TEST(SensorAllanTest, RazorGyroRecoversNoiseDensityAndBiasInstability) {
     const auto a = test::AllanDeviation(y, kDt);
     const double n_hat = test::NoiseDensityFromAllan(a);
     const double b_hat = test::BiasInstabilityFromAllan(a, n_hat);
-    std::printf("razor gyro: N = %.5f deg/s/rtHz (configured %.5f), B = %.2f deg/h (configured %.2f)\n",
-                n_hat / kDeg, spec.error.noise_density[0] / kDeg, b_hat / kDeg * 3600,
-                spec.error.bias_instability / kDeg * 3600);
-    EXPECT_NEAR(n_hat / spec.error.noise_density[0], 1.0, 0.10) << "N = " << n_hat / kDeg << " °/s/√Hz";
-    EXPECT_NEAR(b_hat / spec.error.bias_instability, 1.0, 0.10) << "B = " << b_hat / kDeg * 3600 << " °/h";
+    std::printf(
+        "razor gyro: N = %.5f deg/s/rtHz (configured %.5f), B = %.2f deg/h (configured %.2f)\n",
+        n_hat / kDeg, spec.error.noise_density[0] / kDeg, b_hat / kDeg * 3600,
+        spec.error.bias_instability / kDeg * 3600);
+    EXPECT_NEAR(n_hat / spec.error.noise_density[0], 1.0, 0.10)
+        << "N = " << n_hat / kDeg << " °/s/√Hz";
+    EXPECT_NEAR(b_hat / spec.error.bias_instability, 1.0, 0.10)
+        << "B = " << b_hat / kDeg * 3600 << " °/h";
   }
 }
 
@@ -64,9 +68,11 @@ TEST(SensorAllanTest, IndustrialAccelRecoversNoiseDensityAndBiasInstability) {
   for (const auto& y : axes) {
     const auto a = test::AllanDeviation(y, kDt);
     const double n_hat = test::NoiseDensityFromAllan(a);
-    std::printf("industrial accel: N = %.4g m/s^2/rtHz (configured %.4g), B = %.4g m/s^2 (configured %.4g)\n",
-                n_hat, spec.error.noise_density[0], test::BiasInstabilityFromAllan(a, n_hat),
-                spec.error.bias_instability);
+    std::printf(
+        "industrial accel: N = %.4g m/s^2/rtHz (configured %.4g), B = %.4g m/s^2 (configured "
+        "%.4g)\n",
+        n_hat, spec.error.noise_density[0], test::BiasInstabilityFromAllan(a, n_hat),
+        spec.error.bias_instability);
     EXPECT_NEAR(n_hat / spec.error.noise_density[0], 1.0, 0.10);
     EXPECT_NEAR(test::BiasInstabilityFromAllan(a, n_hat) / spec.error.bias_instability, 1.0, 0.10);
   }

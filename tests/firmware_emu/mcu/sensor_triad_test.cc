@@ -40,7 +40,8 @@ TEST(SensorTriadTest, RazorGyroAdcSumsSixteenConversionsAroundTheNominalZero) {
   EXPECT_EQ(t.Sample({0, 0, 0}, 0, 25).counts[0], 0);
   // 100 °/s = 103.3 counts above zero-rate → round(484.99) − 382 = 103 per conversion
   const double counts = 100 * kDeg / spec.counts.count_lsb;
-  EXPECT_EQ(t.Sample({100 * kDeg, 0, 0}, 0.1, 25).counts[0], 16 * (std::lround(spec.counts.zero_count + counts) - 382));
+  EXPECT_EQ(t.Sample({100 * kDeg, 0, 0}, 0.1, 25).counts[0],
+            16 * (std::lround(spec.counts.zero_count + counts) - 382));
   // the sensor saturates at ±300 °/s
   const TriadCounts sat = t.Sample({0, 500 * kDeg, 0}, 0.2, 25);
   EXPECT_TRUE(sat.saturated[1]);
@@ -98,7 +99,8 @@ TEST(SensorTriadTest, AveragedVibrationIsTheMeanOverThePeriod) {
   SensorTriad u(p, 0.1, 1);
   u.SetVibration({{10.0, Eigen::Vector3d(1, 1, 1), Eigen::Vector3d::Zero()}}, true);
   double peak = 0;
-  for (int k = 0; k < 50; ++k) peak = std::max(peak, std::abs(u.Measure({0, 0, 0}, 0.0137 * k, 25)[0]));
+  for (int k = 0; k < 50; ++k)
+    peak = std::max(peak, std::abs(u.Measure({0, 0, 0}, 0.0137 * k, 25)[0]));
   EXPECT_GT(peak, 0.9);
 }
 

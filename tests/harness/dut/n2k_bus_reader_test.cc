@@ -1,9 +1,9 @@
 #include "hil/harness/dut/n2k_bus_reader.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "hil/estimator/outputs/n2k_encoder.h"
 
@@ -27,7 +27,8 @@ TEST(N2kBusReaderTest, RecordFrom129029WithVelocityAndHeadingOfTheSameSid) {
   EXPECT_FALSE(Feed(r, out::EncodeCogSogRapid(sid, M_PI / 6, 1.0, 0x80)));
   EXPECT_FALSE(Feed(r, out::EncodeVesselHeading(sid, M_PI / 6, 0x80)));
   EXPECT_FALSE(Feed(r, out::EncodeAttitude(sid, M_PI / 6, 0.01, -0.02, 0x80)));
-  const auto fp = out::EncodeGnssPosition(sid, days, sod, 35.4796096, 50.5979765, 1312.25, 1, 8, 1.0, 2, 0x80);
+  const auto fp =
+      out::EncodeGnssPosition(sid, days, sod, 35.4796096, 50.5979765, 1312.25, 1, 8, 1.0, 2, 0x80);
   std::optional<EstimateRecord> rec;
   for (int i = 0; i < fp.count; ++i) rec = Feed(r, fp.frames[static_cast<std::size_t>(i)]);
   ASSERT_TRUE(rec);
@@ -46,7 +47,8 @@ TEST(N2kBusReaderTest, RecordFrom129029WithVelocityAndHeadingOfTheSameSid) {
   EXPECT_EQ(r.frames_per_pgn().at(127257), 1u);
 
   // another SID: the 129029 stands alone (no stale velocity or heading)
-  const auto fp2 = out::EncodeGnssPosition(sid + 1, days, sod + 1, 35.4796, 50.5979, 1312.0, 1, 8, 1.0, 3, 0x80);
+  const auto fp2 =
+      out::EncodeGnssPosition(sid + 1, days, sod + 1, 35.4796, 50.5979, 1312.0, 1, 8, 1.0, 3, 0x80);
   for (int i = 0; i < fp2.count; ++i) rec = Feed(r, fp2.frames[static_cast<std::size_t>(i)]);
   ASSERT_TRUE(rec);
   EXPECT_FALSE(rec->vel_enu_mps);

@@ -1,8 +1,8 @@
 #include "hil/harness/dut/n2k_fast_packet.h"
 
-#include <gtest/gtest.h>
-
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "hil/estimator/outputs/n2k_encoder.h"
 
@@ -22,8 +22,8 @@ TEST(N2kFastPacketTest, PgnOfIdentifiers) {
 
 // navd's 129029 encoder → frames → reassembly gives the 43-byte payload back
 TEST(N2kFastPacketTest, RoundTripOfNavdEncoder) {
-  const auto fp = estimator::outputs::EncodeGnssPosition(7, 15866, 28800.25, 52.1234567, -1.7654321, 81.5, 1, 9, 0.9,
-                                                         5, 0x80);
+  const auto fp = estimator::outputs::EncodeGnssPosition(7, 15866, 28800.25, 52.1234567, -1.7654321,
+                                                         81.5, 1, 9, 0.9, 5, 0x80);
   ASSERT_EQ(fp.count, 7);
   N2kFastPacketAssembler a;
   std::optional<std::string> msg;
@@ -35,15 +35,18 @@ TEST(N2kFastPacketTest, RoundTripOfNavdEncoder) {
   ASSERT_EQ(msg->size(), 43u);
   EXPECT_EQ(static_cast<unsigned char>((*msg)[0]), 7);  // SID
   std::int64_t lat = 0;
-  for (int k = 7; k >= 0; --k) lat = (lat << 8) | static_cast<unsigned char>((*msg)[7 + static_cast<std::size_t>(k)]);
+  for (int k = 7; k >= 0; --k)
+    lat = (lat << 8) | static_cast<unsigned char>((*msg)[7 + static_cast<std::size_t>(k)]);
   EXPECT_NEAR(static_cast<double>(lat) * 1e-16, 52.1234567, 1e-12);
   EXPECT_EQ(a.stats().messages, 1u);
   EXPECT_EQ(a.stats().out_of_turn, 0u);
 }
 
 TEST(N2kFastPacketTest, InterleavedSourcesAndLostFrames) {
-  const auto m1 = estimator::outputs::EncodeGnssPosition(1, 15866, 10.0, 10.0, 20.0, 0, 1, 9, 0.9, 1, 0x80);
-  const auto m2 = estimator::outputs::EncodeGnssPosition(2, 15866, 10.0, -10.0, -20.0, 0, 1, 9, 0.9, 3, 0x81);
+  const auto m1 =
+      estimator::outputs::EncodeGnssPosition(1, 15866, 10.0, 10.0, 20.0, 0, 1, 9, 0.9, 1, 0x80);
+  const auto m2 =
+      estimator::outputs::EncodeGnssPosition(2, 15866, 10.0, -10.0, -20.0, 0, 1, 9, 0.9, 3, 0x81);
   N2kFastPacketAssembler a;
   int complete = 0;
   for (int i = 0; i < 7; ++i) {  // two sources, frame by frame interleaved
@@ -59,7 +62,8 @@ TEST(N2kFastPacketTest, InterleavedSourcesAndLostFrames) {
   }
   EXPECT_EQ(b.stats().out_of_turn, 3u);  // frames 4, 5, 6
   std::optional<std::string> again;
-  for (int i = 0; i < 7; ++i) again = b.Add(0x80, 129029, Bytes(m1.frames[static_cast<std::size_t>(i)]));
+  for (int i = 0; i < 7; ++i)
+    again = b.Add(0x80, 129029, Bytes(m1.frames[static_cast<std::size_t>(i)]));
   EXPECT_TRUE(again);
   // a new first frame while a message is under way abandons it
   N2kFastPacketAssembler c;
@@ -76,7 +80,10 @@ TEST(N2kFastPacketTest, InterleavedSourcesAndLostFrames) {
 
 TEST(N2kFastPacketTest, ShortMessageInTheFirstFrame) {
   N2kFastPacketAssembler a;
-  const auto m = a.Add(0x10, 130000, std::string("\x20\x04" "abcdXX", 8));
+  const auto m = a.Add(0x10, 130000,
+                       std::string("\x20\x04"
+                                   "abcdXX",
+                                   8));
   ASSERT_TRUE(m);
   EXPECT_EQ(*m, "abcd");
 }

@@ -1,8 +1,8 @@
 #include "hil/harness/eval/cross_track.h"
 
-#include <gtest/gtest.h>
-
 #include <cmath>
+
+#include <gtest/gtest.h>
 
 #include "hil/harness/eval/outage_metrics.h"
 
@@ -61,7 +61,7 @@ TEST(OutageMetricsTest, GrowthMaximumAndReconvergence) {
   for (int t = 0; t <= 40; ++t) {
     double h = 0.2;
     if (t >= 10 && t <= 20) h = 0.2 + 0.05 * (t - 10) * (t - 10);  // ½ b t² growth
-    if (t > 20 && t <= 24) h = 3.0 - 0.6 * (t - 20);                // back down after reacquisition
+    if (t > 20 && t <= 24) h = 3.0 - 0.6 * (t - 20);               // back down after reacquisition
     errors.push_back(Err(t, h));
   }
   const auto m = ComputeOutages(errors, f, 1.0);
@@ -118,10 +118,12 @@ TEST(OutageMetricsTest, ArrivalJitterAroundTheMedianInterval) {
   for (int i = 0; i < 100; ++i) {
     EstimateRecord e;
     e.t_validity = TimeFromSeconds(i * 0.1);
-    e.wall_rx_ns = 1'000'000'000LL + i * 100'000'000LL + (i % 3 == 0 ? 3'000'000LL : 0);  // every third 3 ms late
+    e.wall_rx_ns = 1'000'000'000LL + i * 100'000'000LL +
+                   (i % 3 == 0 ? 3'000'000LL : 0);  // every third 3 ms late
     r.push_back(e);
   }
-  const OutputTiming t = ComputeOutputTiming(r, 2.0);  // scaled: wall intervals count double in sim time
+  const OutputTiming t =
+      ComputeOutputTiming(r, 2.0);  // scaled: wall intervals count double in sim time
   ASSERT_TRUE(t.jitter_max_ms);
   // wall intervals 97, 100, 103 ms (×2 = 194, 200, 206): deviations 6, 0, 6
   EXPECT_NEAR(*t.jitter_p50_ms, 6.0, 1e-6);

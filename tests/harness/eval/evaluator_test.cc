@@ -23,9 +23,11 @@ TEST(EvaluatorTest, KnownOffsetGivesKnownMetrics) {
     const TruthSample s = truth.Sample(TimeFromSeconds(k));
     // 3 m east, 4 m north of the truth: 5 m horizontal error everywhere
     const auto g = truth.frame().ToGeodetic(s.p_NB_N_m + Eigen::Vector3d(3, 4, -1));
-    recs.push_back({TimeFromSeconds(k), g.lat_deg, g.lon_deg, g.height_m, std::nullopt, std::nullopt, std::nullopt, 0});
+    recs.push_back({TimeFromSeconds(k), g.lat_deg, g.lon_deg, g.height_m, std::nullopt,
+                    std::nullopt, std::nullopt, 0});
   }
-  const auto errs = CompareWithTruth(cfg, recs, Eigen::Vector3d::Zero(), Time{}, TimeFromSeconds(100));
+  const auto errs =
+      CompareWithTruth(cfg, recs, Eigen::Vector3d::Zero(), Time{}, TimeFromSeconds(100));
   const AccuracyMetrics m = ComputeAccuracy(errs);
   EXPECT_EQ(m.samples, 10u);
   EXPECT_NEAR(m.horizontal_rmse_m, 5.0, 1e-6);
@@ -44,7 +46,8 @@ TEST(EvaluatorTest, CriteriaAgainstAbsoluteAndBaselineThresholds) {
   EXPECT_FALSE(r[0].pass);
   EXPECT_TRUE(r[1].pass);
   EXPECT_NEAR(r[1].threshold, 0.24, 1e-12) << "0.6 × 0.40";
-  EXPECT_FALSE(EvaluateCriteria({abs}, AccuracyMetrics{}, base)[0].pass) << "no estimates must fail";
+  EXPECT_FALSE(EvaluateCriteria({abs}, AccuracyMetrics{}, base)[0].pass)
+      << "no estimates must fail";
 }
 
 TEST(EvaluatorTest, PercentileInterpolates) {

@@ -26,8 +26,9 @@ TEST(OutageAxesTest, LargestAbsoluteErrorPerAxisInsideEachOutage) {
   b.end = TimeFromSeconds(40);
   faults.faults = {a, b};
   // errors outside the outages (5 s, 25 s) are large and must not count
-  const std::vector<ErrorSample> errors{At(5, 9, 9, 9),          At(10, 0.01, -0.05, 0.02), At(15, -0.08, 0.03, -0.10),
-                                        At(20, 0.02, 0.04, 0.01), At(25, 9, 9, 9),          At(35, 0.0, -0.2, 0.3)};
+  const std::vector<ErrorSample> errors{
+      At(5, 9, 9, 9),           At(10, 0.01, -0.05, 0.02), At(15, -0.08, 0.03, -0.10),
+      At(20, 0.02, 0.04, 0.01), At(25, 9, 9, 9),           At(35, 0.0, -0.2, 0.3)};
   const auto o = ComputeOutages(errors, faults, 1.0);
   ASSERT_EQ(o.size(), 2u);
   EXPECT_DOUBLE_EQ(o[0].max_abs_error_enu_m.x(), 0.08);

@@ -1,24 +1,26 @@
 // The fault campaign's injections: every link fault of the timeline (bit error rate, duplicate,
 // truncate, baud mismatch, CAN reorder) applied deterministically and counted per fault, the
-// host UART's view of a wrong baud, recovery times and navd's health object as the harness reads it.
-#include <gtest/gtest.h>
-
+// host UART's view of a wrong baud, recovery times and navd's health object as the harness reads
+// it.
 #include <bitset>
 #include <cmath>
+
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "hil/harness/faults/byte_faults.h"
 #include "hil/harness/faults/fault_record.h"
 #include "hil/harness/faults/fault_report.h"
-#include "hil/harness/scenario/scenario.h"
 #include "hil/harness/faults/uart_baud_mismatch.h"
+#include "hil/harness/scenario/scenario.h"
 
 namespace hil::harness {
 namespace {
 
 Scenario Parse(const std::string& faults) {
-  return ParseScenario("name: t\nduration_s: 100\norigin: {lat_deg: 35.4, lon_deg: 50.5, height_m: 1300}\n" + faults,
-                       "t.yaml");
+  return ParseScenario(
+      "name: t\nduration_s: 100\norigin: {lat_deg: 35.4, lon_deg: 50.5, height_m: 1300}\n" + faults,
+      "t.yaml");
 }
 
 SerialMessage Msg(double t_s, const std::string& bytes) {
@@ -30,7 +32,8 @@ SerialMessage Msg(double t_s, const std::string& bytes) {
 
 std::size_t BitDiff(const std::string& a, const std::string& b) {
   std::size_t n = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) n += std::bitset<8>(static_cast<unsigned char>(a[i] ^ b[i])).count();
+  for (std::size_t i = 0; i < a.size(); ++i)
+    n += std::bitset<8>(static_cast<unsigned char>(a[i] ^ b[i])).count();
   return n;
 }
 
@@ -42,7 +45,8 @@ TEST(BaudMismatchTest, EqualBaudsGiveTheBytesBack) {
 }
 
 TEST(BaudMismatchTest, AWrongBaudGivesGarbageAndFramingErrorsDeterministically) {
-  const std::string s = "$GPRMC,080000.00,A,3528.77658,N,05035.87859,E,0.432,30.0,100613,,,A*6B\r\n";
+  const std::string s =
+      "$GPRMC,080000.00,A,3528.77658,N,05035.87859,E,0.432,30.0,100613,,,A*6B\r\n";
   // the device at half the host's rate: each device bit spans two host bits
   const BaudMismatchResult slow = ReceiveAtWrongBaud(s, 4800, 9600);
   EXPECT_NE(slow.received, s);
@@ -61,7 +65,8 @@ TEST(BaudMismatchTest, AWrongBaudGivesGarbageAndFramingErrorsDeterministically) 
 }
 
 TEST(ByteFaultsTest, BitErrorRateFlipsTheExpectedNumberOfBitsAndCountsThem) {
-  const Scenario s = Parse("faults:\n  - {kind: byte_corruption, start_s: 10, end_s: 20, bit_error_rate: 1e-3}\n");
+  const Scenario s =
+      Parse("faults:\n  - {kind: byte_corruption, start_s: 10, end_s: 20, bit_error_rate: 1e-3}\n");
   FaultRecorder rec(s.faults);
   ByteFaultInjector inj(s.faults, 42, &rec);
   const std::string payload(1000, 'U');
@@ -115,7 +120,8 @@ TEST(ByteFaultsTest, DuplicateTruncateAndBaudMismatchAreAppliedAndCounted) {
 }
 
 TEST(ByteFaultsTest, CanReorderSwapsContentsAndKeepsBusTimesInOrder) {
-  const Scenario s = Parse("faults:\n  - {kind: can_reorder, start_s: 10, end_s: 20, probability: 1}\n");
+  const Scenario s =
+      Parse("faults:\n  - {kind: can_reorder, start_s: 10, end_s: 20, probability: 1}\n");
   FaultRecorder rec(s.faults);
   ByteFaultInjector inj(s.faults, 3, &rec);
   std::vector<CanFrame> frames(3);
@@ -145,19 +151,22 @@ TEST(FaultReportTest, RecoveryTimeIsFromTheEndUntilTheErrorStaysBelowTheThreshol
     errs.push_back(Err(t, t >= 10 && t < 23 ? 3.0 : (t >= 24 && t < 24.5 ? 2.0 : 0.2)));
   }
   std::vector<FaultInjection> f(2);
-  f[0].start_s = 10, f[0].end_s = 20;  // error high until 23 s, again 24-24.5 s: recovered at 24.5 s
+  f[0].start_s = 10,
+  f[0].end_s = 20;  // error high until 23 s, again 24-24.5 s: recovered at 24.5 s
   f[1].start_s = 30, f[1].end_s = 31;  // never left the threshold: 0
   ComputeRecoveryTimes(f, errs, 1.0);
   ASSERT_TRUE(f[0].recovery_time_s);
   EXPECT_NEAR(*f[0].recovery_time_s, 4.5, 1e-6);
   ASSERT_TRUE(f[1].recovery_time_s);
   EXPECT_NEAR(*f[1].recovery_time_s, 0.0, 1e-6);
-  std::vector<ErrorSample> bad(errs.begin(), errs.begin() + 150);  // the run ends at 14.9 s, in the fault
+  std::vector<ErrorSample> bad(errs.begin(),
+                               errs.begin() + 150);  // the run ends at 14.9 s, in the fault
   ComputeRecoveryTimes(f, bad, 1.0);
   EXPECT_FALSE(f[0].recovery_time_s);
   std::map<std::string, std::optional<double>> table;
   AddFaultMetrics(table, f, EstimatorHealth{});
-  EXPECT_FALSE(table.at("fault_recovery_time_s")) << "a fault that never recovered fails the criterion";
+  EXPECT_FALSE(table.at("fault_recovery_time_s"))
+      << "a fault that never recovered fails the criterion";
 }
 
 TEST(FaultReportTest, ReadsNavdHealthCountersAndEveryFlagRaised) {

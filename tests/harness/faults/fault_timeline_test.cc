@@ -11,9 +11,12 @@ namespace {
 
 constexpr const char* kBase = "name: t\nduration_s: 100\norigin: {lat_deg: 35.0, lon_deg: 50.0}\n";
 
-Scenario Parse(const std::string& faults) { return ParseScenario(std::string(kBase) + faults, "s.yaml"); }
+Scenario Parse(const std::string& faults) {
+  return ParseScenario(std::string(kBase) + faults, "s.yaml");
+}
 
-void ExpectError(const std::string& faults, int line, const std::string& field, const std::string& fragment) {
+void ExpectError(const std::string& faults, int line, const std::string& field,
+                 const std::string& fragment) {
   try {
     Parse(faults);
     FAIL() << "expected a ScenarioError for:\n" << faults;
@@ -46,18 +49,25 @@ TEST(FaultTimelineTest, ParsesEveryKindWithItsParameters) {
   EXPECT_DOUBLE_EQ(s.faults.faults[3].Param("probability", 0), 1.0);
   EXPECT_EQ(s.faults.faults[4].start, s.faults.faults[4].end) << "mcu_reset is instantaneous";
   EXPECT_TRUE(s.faults.ActiveAt(FaultKind::kByteCorruption, TimeFromSeconds(15), "ttyGPS"));
-  EXPECT_FALSE(s.faults.ActiveAt(FaultKind::kByteCorruption, TimeFromSeconds(15), "ttyIMU")) << "other link";
-  EXPECT_FALSE(s.faults.ActiveAt(FaultKind::kByteCorruption, TimeFromSeconds(20), "ttyGPS")) << "end is exclusive";
-  EXPECT_TRUE(s.faults.ActiveAt(FaultKind::kFrameDrop, TimeFromSeconds(30), "anything")) << "no link: every link";
+  EXPECT_FALSE(s.faults.ActiveAt(FaultKind::kByteCorruption, TimeFromSeconds(15), "ttyIMU"))
+      << "other link";
+  EXPECT_FALSE(s.faults.ActiveAt(FaultKind::kByteCorruption, TimeFromSeconds(20), "ttyGPS"))
+      << "end is exclusive";
+  EXPECT_TRUE(s.faults.ActiveAt(FaultKind::kFrameDrop, TimeFromSeconds(30), "anything"))
+      << "no link: every link";
 }
 
 TEST(FaultTimelineTest, ErrorsNameLineAndField) {
-  ExpectError("faults:\n  - {kind: gnss_outgae, start_s: 1, end_s: 2}\n", 5, "faults[0].kind", "unknown fault kind");
-  ExpectError("faults:\n  - {kind: gnss_outage, start_s: 5, end_s: 2}\n", 5, "faults[0].end_s", "must be after");
-  ExpectError("faults:\n  - {kind: gnss_outage, start_s: 5, end_s: 200}\n", 5, "faults[0].end_s", "out of range");
-  ExpectError("faults:\n  - kind: frame_drop\n    start_s: 1\n    end_s: 2\n    probability: 1.5\n", 8,
-              "faults[0].probability", "out of range");
-  ExpectError("faults:\n  - {kind: gnss_outage, start_s: 1, end_s: 2, link: ttyGPS}\n", 5, "faults[0].link", "unknown key");
+  ExpectError("faults:\n  - {kind: gnss_outgae, start_s: 1, end_s: 2}\n", 5, "faults[0].kind",
+              "unknown fault kind");
+  ExpectError("faults:\n  - {kind: gnss_outage, start_s: 5, end_s: 2}\n", 5, "faults[0].end_s",
+              "must be after");
+  ExpectError("faults:\n  - {kind: gnss_outage, start_s: 5, end_s: 200}\n", 5, "faults[0].end_s",
+              "out of range");
+  ExpectError("faults:\n  - kind: frame_drop\n    start_s: 1\n    end_s: 2\n    probability: 1.5\n",
+              8, "faults[0].probability", "out of range");
+  ExpectError("faults:\n  - {kind: gnss_outage, start_s: 1, end_s: 2, link: ttyGPS}\n", 5,
+              "faults[0].link", "unknown key");
   ExpectError("faults:\n  - {kind: gnss_outage, end_s: 2}\n", 5, "faults[0]", "start_s");
   ExpectError("faults:\n  - {kind: gnss_outage, start_s: 1}\n", 5, "faults[0]", "end_s");
 }
@@ -94,7 +104,8 @@ TEST(ByteFaultsTest, DropsAndCorruptsOnlyInsideTheirWindowsAndRepeatsWithTheSeed
   for (std::size_t i = 0; i < payload.size(); ++i) {
     if (ma.bytes[i] != 'A') {
       ++changed;
-      const unsigned diff = static_cast<unsigned char>(ma.bytes[i]) ^ static_cast<unsigned char>('A');
+      const unsigned diff =
+          static_cast<unsigned char>(ma.bytes[i]) ^ static_cast<unsigned char>('A');
       EXPECT_EQ(diff & (diff - 1), 0u) << "one bit flipped per corrupted byte";
     }
   }

@@ -2,10 +2,10 @@
 
 #include <unistd.h>
 
-#include <gtest/gtest.h>
-
 #include <filesystem>
 #include <fstream>
+
+#include <gtest/gtest.h>
 
 #include "hil/firmware_emu/link/candump_log.h"
 
@@ -28,7 +28,8 @@ TEST(CaptureFormatTest, LinesHaveTheDocumentedColumns) {
   r.bytes = std::string("$G\r\n\x00\xff", 6);
   EXPECT_EQ(FormatCaptureLine(r), "tx 100000000 1041667 5000 NMEA-GGA 24470d0a00ff");
   r.wall_offsets_ns = {0, 1100, 2050, 3200, 4100, 5300};
-  EXPECT_EQ(FormatCaptureLine(r), "tx 100000000 1041667 5000 NMEA-GGA 24470d0a00ff 0,1100,2050,3200,4100,5300");
+  EXPECT_EQ(FormatCaptureLine(r),
+            "tx 100000000 1041667 5000 NMEA-GGA 24470d0a00ff 0,1100,2050,3200,4100,5300");
   CaptureRecord f;
   f.dir = CaptureDir::kFrameTx;
   f.t_emu_ns = 7;
@@ -43,14 +44,16 @@ TEST(CaptureFormatTest, LinesHaveTheDocumentedColumns) {
 TEST(CaptureFormatTest, EveryKindOfRecordRoundTripsThroughAFile) {
   const auto path = Temp("rt.cap");
   std::vector<CaptureRecord> recs;
-  for (CaptureDir d : {CaptureDir::kTx, CaptureDir::kRx, CaptureDir::kDrop, CaptureDir::kFrameTx, CaptureDir::kFrameRx}) {
+  for (CaptureDir d : {CaptureDir::kTx, CaptureDir::kRx, CaptureDir::kDrop, CaptureDir::kFrameTx,
+                       CaptureDir::kFrameRx}) {
     CaptureRecord r;
     r.dir = d;
     r.t_emu_ns = 1000 * static_cast<int>(d) + 1;
     r.t_wall_ns = 99;
     r.name = "x";
     if (r.is_frame()) {
-      r.frame = *link::ParseCanFrameText(d == CaptureDir::kFrameTx ? "123##1AABB" : "20000004#0001000000000000");
+      r.frame = *link::ParseCanFrameText(d == CaptureDir::kFrameTx ? "123##1AABB"
+                                                                   : "20000004#0001000000000000");
     } else {
       r.bytes = "ab\x01";
       r.byte_period_ns = d == CaptureDir::kTx ? 86806 : 0;
@@ -83,7 +86,8 @@ TEST(CaptureFormatTest, ReadsVersionOneCapturesAndCountsBadLines) {
   const auto path = Temp("v1.cap");
   {
     std::ofstream o(path);
-    o << "# hil capture v1: link ttyGPS, baud 9600\n# dir t_emu_ns byte_period_ns t_wall_ns name hex_bytes\n"
+    o << "# hil capture v1: link ttyGPS, baud 9600\n# dir t_emu_ns byte_period_ns t_wall_ns name "
+         "hex_bytes\n"
          "tx 100000000 1041667 0 NMEA-GGA 2447\n"
          "rx 2000000000 0 123456 host b562\n"
          "tx 1 2 3 broken zz\n"

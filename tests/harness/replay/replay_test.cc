@@ -8,12 +8,12 @@
 #include <poll.h>
 #include <unistd.h>
 
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <atomic>
 #include <filesystem>
 #include <thread>
+
+#include <gtest/gtest.h>
 
 #include "hil/firmware_emu/link/realtime_pacer.h"
 #include "hil/harness/links/capture_format.h"
@@ -77,7 +77,8 @@ class Host {
 };
 
 fs::path TempDir(const char* name) {
-  const fs::path d = fs::temp_directory_path() / (std::string("hil_") + name + "_" + std::to_string(getpid()));
+  const fs::path d =
+      fs::temp_directory_path() / (std::string("hil_") + name + "_" + std::to_string(getpid()));
   fs::remove_all(d);
   fs::create_directories(d / "captures");
   return d;
@@ -89,7 +90,8 @@ std::vector<SerialMessage> Messages(int count) {
     SerialMessage m;
     m.t_ready = TimeFromNs(50000000LL + k * 100000000LL);  // 10 Hz
     m.name = "MSG" + std::to_string(k);
-    m.bytes = "$GPGGA," + std::to_string(k) + ",4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,*47\r\n";
+    m.bytes =
+        "$GPGGA," + std::to_string(k) + ",4807.038,N,01131.000,E,1,08,0.9,545.4,M,46.9,M,,*47\r\n";
     m.bytes += std::string("\xB5\x62\x01\x06\x00\xFF", 6);
     out.push_back(m);
   }
@@ -101,7 +103,8 @@ TEST(ReplayTest, RealtimeCaptureHasPerByteWallTimes) {
   Host host;
   std::size_t total = 0;
   {
-    SerialEndpoint ep("ttyGPS", (dir / "ttyGPS").string(), 38400, 4096, (dir / "captures" / "ttyGPS.cap").string());
+    SerialEndpoint ep("ttyGPS", (dir / "ttyGPS").string(), 38400, 4096,
+                      (dir / "captures" / "ttyGPS.cap").string());
     host.Start((dir / "ttyGPS").string());
     usleep(50000);
     const link::RealtimePacer pacer(1.0);
@@ -124,7 +127,9 @@ TEST(ReplayTest, RealtimeCaptureHasPerByteWallTimes) {
     EXPECT_GT(r.t_wall_ns, 0);
     // bytes leave one UART period apart: the last one about (n-1) periods after the first
     const double span = static_cast<double>(r.wall_offsets_ns.back());
-    EXPECT_NEAR(span, static_cast<double>(r.byte_period_ns) * static_cast<double>(r.bytes.size() - 1), 20e6);
+    EXPECT_NEAR(span,
+                static_cast<double>(r.byte_period_ns) * static_cast<double>(r.bytes.size() - 1),
+                20e6);
     EXPECT_TRUE(std::is_sorted(r.wall_offsets_ns.begin(), r.wall_offsets_ns.end()));
   }
 }
@@ -133,7 +138,8 @@ TEST(ReplayTest, VirtualCaptureRecordsDropsAndEmulatedTimesOnly) {
   const fs::path dir = TempDir("virt_capture");
   Host host;
   {
-    SerialEndpoint ep("ttyGPS", (dir / "ttyGPS").string(), 9600, 100, (dir / "captures" / "ttyGPS.cap").string());
+    SerialEndpoint ep("ttyGPS", (dir / "ttyGPS").string(), 9600, 100,
+                      (dir / "captures" / "ttyGPS.cap").string());
     host.Start((dir / "ttyGPS").string());
     usleep(50000);
     auto msgs = Messages(2);
@@ -158,7 +164,8 @@ TEST(ReplayTest, ReplayedCaptureIsIdenticalInBytesAndOnTime) {
   const fs::path dir = TempDir("replay_src");
   {
     Host sink;
-    SerialEndpoint ep("ttyGPS", (dir / "ttyGPS").string(), 38400, 4096, (dir / "captures" / "ttyGPS.cap").string());
+    SerialEndpoint ep("ttyGPS", (dir / "ttyGPS").string(), 38400, 4096,
+                      (dir / "captures" / "ttyGPS.cap").string());
     sink.Start((dir / "ttyGPS").string());
     std::size_t n = 0;
     for (const auto& m : Messages(20)) {
@@ -200,9 +207,12 @@ TEST(ReplayTest, ReplayedCaptureIsIdenticalInBytesAndOnTime) {
   for (std::size_t k = 0; k < sent.size(); ++k) {
     err_us.push_back(static_cast<double>(host.t_ns()[k] - (r.wall_start_ns + t_byte_ns[k])) * 1e-3);
   }
-  std::printf("HIL-FIGURE pty_replay_arrival_error_us bytes=%zu p50=%.1f p99=%.1f max=%.1f (writer: p50=%.1f p99=%.1f max=%.1f)\n",
-              err_us.size(), Pct(err_us, 50), Pct(err_us, 99), Pct(err_us, 100), Pct(r.byte_schedule_error_us, 50),
-              Pct(r.byte_schedule_error_us, 99), Pct(r.byte_schedule_error_us, 100));
+  std::printf(
+      "HIL-FIGURE pty_replay_arrival_error_us bytes=%zu p50=%.1f p99=%.1f max=%.1f (writer: "
+      "p50=%.1f p99=%.1f max=%.1f)\n",
+      err_us.size(), Pct(err_us, 50), Pct(err_us, 99), Pct(err_us, 100),
+      Pct(r.byte_schedule_error_us, 50), Pct(r.byte_schedule_error_us, 99),
+      Pct(r.byte_schedule_error_us, 100));
   // stated tolerance (shared, loaded CI machine): never early beyond the reader's clock, median
   // within 2 ms, 99 % within 20 ms of the recorded time
   EXPECT_GT(Pct(err_us, 0), -100.0);

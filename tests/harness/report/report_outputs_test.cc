@@ -1,15 +1,15 @@
 // Estimate readers (output adapters), criteria with min thresholds, SVG charts, scenario includes.
-#include <gtest/gtest.h>
-
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
+#include <gtest/gtest.h>
+
 #include "hil/firmware_emu/gnss/gps_time.h"
 #include "hil/harness/dut/estimate_reader.h"
 #include "hil/harness/report/report.h"
-#include "hil/harness/scenario/scenario.h"
 #include "hil/harness/report/svg_plot.h"
+#include "hil/harness/scenario/scenario.h"
 #include "hil/harness/scenario/yaml_reader.h"
 
 namespace hil::harness {
@@ -37,7 +37,9 @@ TEST(EstimateReaderTest, NavdJsonLines) {
 // health only, never as solutions, and are not "unparsed" output
 TEST(EstimateReaderTest, N2kSocketcanTakesNoSolutionFromLines) {
   auto r = MakeEstimateReader("n2k_socketcan", kStart);
-  EXPECT_FALSE(r->Line(R"({"tov_utc_s":1370851202.5,"lat_deg":35.5,"lon_deg":50.6,"height_m":1312.5,"status":0})", 1));
+  EXPECT_FALSE(r->Line(
+      R"({"tov_utc_s":1370851202.5,"lat_deg":35.5,"lon_deg":50.6,"height_m":1312.5,"status":0})",
+      1));
   EXPECT_FALSE(r->SolutionsInLines());
   EXPECT_TRUE(MakeEstimateReader("json_stdout", kStart)->SolutionsInLines());
 }
@@ -57,7 +59,8 @@ TEST(EstimateReaderTest, GpsdTpvObjects) {
   EXPECT_NEAR(e->vel_enu_mps->y(), 0.0, 1e-12);
   EXPECT_NEAR(e->pos_std_enu_m->y(), 2.0, 1e-12);
   EXPECT_FALSE(r->Line(R"({"class":"SKY","satellites":[]})", 1));
-  EXPECT_FALSE(r->Line(R"({"class":"TPV","mode":1,"time":"2013-06-10T08:00:03.000Z","lat":1,"lon":2})", 1))
+  EXPECT_FALSE(
+      r->Line(R"({"class":"TPV","mode":1,"time":"2013-06-10T08:00:03.000Z","lat":1,"lon":2})", 1))
       << "no fix: no solution";
 }
 
@@ -71,10 +74,13 @@ std::string Nmea(const std::string& body) {
 
 TEST(EstimateReaderTest, NmeaGgaWithRmcVelocity) {
   auto r = MakeEstimateReader("nmea_stdout", kStart);
-  EXPECT_FALSE(r->Line(Nmea("GPRMC,080004.00,A,3528.77658,N,05035.87859,E,1.944,90.00,100613,,,A"), 1));
-  EXPECT_FALSE(r->Line("$GPGGA,080004.00,3528.77658,N,05035.87859,E,1,08,1.01,1312.0,M,-20.1,M,,*00", 2))
+  EXPECT_FALSE(
+      r->Line(Nmea("GPRMC,080004.00,A,3528.77658,N,05035.87859,E,1.944,90.00,100613,,,A"), 1));
+  EXPECT_FALSE(
+      r->Line("$GPGGA,080004.00,3528.77658,N,05035.87859,E,1,08,1.01,1312.0,M,-20.1,M,,*00", 2))
       << "a wrong checksum is no solution";
-  const auto e = r->Line(Nmea("GPGGA,080004.00,3528.77658,N,05035.87859,E,1,08,1.01,1312.0,M,-20.1,M,,"), 2);
+  const auto e =
+      r->Line(Nmea("GPGGA,080004.00,3528.77658,N,05035.87859,E,1,08,1.01,1312.0,M,-20.1,M,,"), 2);
   ASSERT_TRUE(e);
   EXPECT_EQ(ToNs(e->t_validity), 4'000'000'000LL);
   EXPECT_NEAR(e->lat_deg, 35 + 28.77658 / 60, 1e-12);
@@ -82,7 +88,8 @@ TEST(EstimateReaderTest, NmeaGgaWithRmcVelocity) {
   EXPECT_NEAR(e->height_m, 1312.0 - 20.1, 1e-9) << "ellipsoidal = MSL + geoid separation";
   ASSERT_TRUE(e->vel_enu_mps);
   EXPECT_NEAR(e->vel_enu_mps->x(), 1.944 * 1852 / 3600, 1e-9);
-  EXPECT_FALSE(r->Line(Nmea("GPGGA,080005.00,,,,,0,00,99.99,,,,,,"), 3)) << "quality 0 is no solution";
+  EXPECT_FALSE(r->Line(Nmea("GPGGA,080005.00,,,,,0,00,99.99,,,,,,"), 3))
+      << "quality 0 is no solution";
 }
 
 TEST(CriteriaTest, MinimumThresholdsAndRunMetrics) {
@@ -99,7 +106,8 @@ TEST(CriteriaTest, MinimumThresholdsAndRunMetrics) {
   Criterion outage{"outage", "outage_max_horizontal_error_m", 3.0, std::nullopt, std::nullopt};
   Criterion reconv{"reconv", "reconvergence_time_s", 2.0, std::nullopt, std::nullopt};
   Criterion latency{"latency", "latency_p99_ms", 100.0, std::nullopt, std::nullopt};
-  const auto res = EvaluateCriteria({rate, outage, reconv, latency}, RunMetricTable(r), MetricTable{});
+  const auto res =
+      EvaluateCriteria({rate, outage, reconv, latency}, RunMetricTable(r), MetricTable{});
   EXPECT_FALSE(res[0].pass) << "9.5 Hz is below the 10 Hz minimum";
   EXPECT_TRUE(res[1].pass);
   EXPECT_FALSE(res[2].pass);
@@ -132,26 +140,33 @@ class IncludeTest : public ::testing::Test {
   void SetUp() override {
     dir_ = std::filesystem::temp_directory_path() / ("hil_include_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir_ / "lib" / "vehicles");
-    Write("lib/vehicles/tractor.yaml", "vehicle: {model: bicycle, wheelbase_m: 2.7, speed_lag_s: 1.5}\n");
+    Write("lib/vehicles/tractor.yaml",
+          "vehicle: {model: bicycle, wheelbase_m: 2.7, speed_lag_s: 1.5}\n");
     Write("lib/vehicles/broken.yaml", "vehicle:\n  model: bicycle\n  wheelbase_m: 200\n");
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
-  void Write(const std::string& name, const std::string& text) { std::ofstream(dir_ / name) << text; }
+  void Write(const std::string& name, const std::string& text) {
+    std::ofstream(dir_ / name) << text;
+  }
   std::string Path(const std::string& name) const { return (dir_ / name).string(); }
   std::filesystem::path dir_;
 };
 
 TEST_F(IncludeTest, IncludedPiecesAreMergedAndTheScenarioWins) {
-  Write("s.yaml", "name: s\ninclude: [lib/vehicles/tractor.yaml]\norigin: {lat_deg: 35, lon_deg: 50}\n");
+  Write("s.yaml",
+        "name: s\ninclude: [lib/vehicles/tractor.yaml]\norigin: {lat_deg: 35, lon_deg: 50}\n");
   const Scenario s = LoadScenario(Path("s.yaml"));
   EXPECT_DOUBLE_EQ(s.truth.vehicle.wheelbase_m, 2.7);
   EXPECT_DOUBLE_EQ(s.truth.vehicle.speed_lag_s, 1.5);
-  Write("own.yaml", "name: s\ninclude: lib/vehicles/tractor.yaml\nvehicle: {wheelbase_m: 1.1}\norigin: {lat_deg: 35, lon_deg: 50}\n");
+  Write("own.yaml",
+        "name: s\ninclude: lib/vehicles/tractor.yaml\nvehicle: {wheelbase_m: 1.1}\norigin: "
+        "{lat_deg: 35, lon_deg: 50}\n");
   EXPECT_DOUBLE_EQ(LoadScenario(Path("own.yaml")).truth.vehicle.wheelbase_m, 1.1);
 }
 
 TEST_F(IncludeTest, ErrorsNameTheIncludedFile) {
-  Write("s.yaml", "name: s\ninclude: [lib/vehicles/broken.yaml]\norigin: {lat_deg: 35, lon_deg: 50}\n");
+  Write("s.yaml",
+        "name: s\ninclude: [lib/vehicles/broken.yaml]\norigin: {lat_deg: 35, lon_deg: 50}\n");
   try {
     LoadScenario(Path("s.yaml"));
     FAIL();
@@ -167,12 +182,15 @@ TEST_F(IncludeTest, ErrorsNameTheIncludedFile) {
   } catch (const ScenarioError& e) {
     EXPECT_EQ(e.file(), Path("m.yaml"));
     EXPECT_EQ(e.line(), 2);
-    EXPECT_NE(std::string(e.what()).find("cannot find included file 'lib/nothing.yaml'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("cannot find included file 'lib/nothing.yaml'"),
+              std::string::npos)
+        << e.what();
   }
 }
 
 TEST_F(IncludeTest, TheProjectLibraryIsSearched) {
-  Write("s.yaml", "name: s\ninclude: [vehicles/small_robot.yaml]\norigin: {lat_deg: 35, lon_deg: 50}\n");
+  Write("s.yaml",
+        "name: s\ninclude: [vehicles/small_robot.yaml]\norigin: {lat_deg: 35, lon_deg: 50}\n");
   EXPECT_DOUBLE_EQ(LoadScenario(Path("s.yaml")).truth.vehicle.wheelbase_m, 0.84);
 }
 
@@ -199,7 +217,8 @@ TEST(EstimateReaderTest, Nmea2000GnssPositionFastPacketsFromCandumpLines) {
   payload += std::string(43 - payload.size(), '\0');
   // fast packet frames: [seq|0, len, 6 bytes], then [seq|k, 7 bytes]
   std::vector<std::string> frames;
-  frames.push_back(std::string{static_cast<char>(3 << 5), static_cast<char>(payload.size())} + payload.substr(0, 6));
+  frames.push_back(std::string{static_cast<char>(3 << 5), static_cast<char>(payload.size())} +
+                   payload.substr(0, 6));
   for (std::size_t i = 6, k = 1; i < payload.size(); i += 7, ++k) {
     std::string f(1, static_cast<char>((3 << 5) | static_cast<int>(k)));
     f += payload.substr(i, 7);
@@ -223,7 +242,8 @@ TEST(EstimateReaderTest, Nmea2000GnssPositionFastPacketsFromCandumpLines) {
   EXPECT_NEAR(e->lat_deg, 35.4796096, 1e-12);
   EXPECT_NEAR(e->lon_deg, 50.5979765, 1e-12);
   EXPECT_NEAR(e->height_m, 1312.25, 1e-9);
-  EXPECT_FALSE(r->Line("(1749542407.500000) vcan0 09F80117#A0B3F2150AB5A61E", 1)) << "129025 is not read";
+  EXPECT_FALSE(r->Line("(1749542407.500000) vcan0 09F80117#A0B3F2150AB5A61E", 1))
+      << "129025 is not read";
 }
 
 }  // namespace

@@ -1,14 +1,14 @@
 // The scenario's `can` section (harness/src/scenario/scenario_can.cc).
-#include <gtest/gtest.h>
-
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include <gtest/gtest.h>
+
 #include "hil/estimator/navd/navd_config.h"
-#include "hil/harness/run/can_run.h"
 #include "hil/harness/report/run_outputs.h"
+#include "hil/harness/run/can_run.h"
 #include "hil/harness/scenario/scenario.h"
 #include "hil/harness/scenario/yaml_reader.h"
 
@@ -24,14 +24,15 @@ TEST(ScenarioCanTest, NoSectionMeansNoCanLink) {
 }
 
 TEST(ScenarioCanTest, ReadsInterfaceAndFd) {
-  const Scenario s = ParseScenario(std::string(kBase) + "can: {interface: vcan0, fd: true}\n", "t.yaml");
+  const Scenario s =
+      ParseScenario(std::string(kBase) + "can: {interface: vcan0, fd: true}\n", "t.yaml");
   EXPECT_EQ(s.can.interface, "vcan0");
   EXPECT_TRUE(s.can.fd);
 }
 
 TEST(ScenarioCanTest, BadValuesNameFileLineAndField) {
-  for (const char* bad : {"can: {interface: /dev/can0}\n", "can: {interface: vcan0, bitrate: 5}\n", "can: {fd: true}\n",
-                          "can: {interface: averyveryverylongname0}\n"}) {
+  for (const char* bad : {"can: {interface: /dev/can0}\n", "can: {interface: vcan0, bitrate: 5}\n",
+                          "can: {fd: true}\n", "can: {interface: averyveryverylongname0}\n"}) {
     SCOPED_TRACE(bad);
     try {
       ParseScenario(std::string(kBase) + bad, "t.yaml");
@@ -55,7 +56,8 @@ TEST(ScenarioCanTest, ImuToEstimatorAndBusOutput) {
 
 TEST(ScenarioCanTest, WhatNeedsTheBusIsChecked) {
   const std::pair<const char*, const char*> bad[] = {
-      {"mcu: {profile: razor-v13}\ncan: {interface: vcan0, imu_to_estimator: true}\n", "t.yaml:4: can.imu_to_estimator"},
+      {"mcu: {profile: razor-v13}\ncan: {interface: vcan0, imu_to_estimator: true}\n",
+       "t.yaml:4: can.imu_to_estimator"},
       {"can: {interface: vcan0, imu_to_estimator: true}\n", "t.yaml:3: can.imu_to_estimator"},
       {"estimator: {output: n2k_socketcan}\n", "t.yaml:3: estimator.output"}};
   for (const auto& [text, where] : bad) {
@@ -81,8 +83,8 @@ TEST(ScenarioCanTest, GeneratedNavdConfigReadsTheImuFromCan) {
   EXPECT_EQ(c.imu.source_address, 17);
   EXPECT_TRUE(c.imu_device.empty());
   EXPECT_EQ(c.mode(), estimator::NavMode::kEkf);
-  EXPECT_EQ(c.can_interface, "vcan0");            // NMEA 2000 back onto the bus
-  EXPECT_EQ(c.json_path, "-");  // JSON on stdout: the harness reads its health object
+  EXPECT_EQ(c.can_interface, "vcan0");  // NMEA 2000 back onto the bus
+  EXPECT_EQ(c.json_path, "-");          // JSON on stdout: the harness reads its health object
 }
 
 TEST(ScenarioCanTest, VirtualModeIsRefusedForAnImuOnCan) {
@@ -117,9 +119,10 @@ TEST(ScenarioCanTest, ShippedCanScenarioLoads) {
 TEST(ScenarioCanTest, ShippedCanReorderFaultScenarioLoads) {
   const char* src = std::getenv("HIL_SOURCE_DIR");
   ASSERT_NE(src, nullptr);
-  const Scenario s = LoadScenario(std::string(src) + "/vectors/scenarios/vcan/fault_can_reorder.yaml");
+  const Scenario s =
+      LoadScenario(std::string(src) + "/vectors/scenarios/vcan/fault_can_reorder.yaml");
   EXPECT_EQ(s.name, "fault_can_reorder");
-  EXPECT_TRUE(s.can.imu_to_estimator);           // from can_imu.yaml
+  EXPECT_TRUE(s.can.imu_to_estimator);  // from can_imu.yaml
   EXPECT_EQ(s.estimator.output, "n2k_socketcan");
   ASSERT_EQ(s.faults.faults.size(), 1u);
   EXPECT_EQ(s.faults.faults[0].kind, FaultKind::kCanReorder);

@@ -1,14 +1,14 @@
 // Every scenario of vectors/scenarios loads in its full and its short form, and the acceptance
 // scenarios carry the papers' reference figures the suite report shows.
-#include <gtest/gtest.h>
-
 #include <cstdlib>
 #include <filesystem>
 #include <map>
 
+#include <gtest/gtest.h>
+
 #include "hil/harness/scenario/scenario.h"
-#include "hil/harness/suite/suite.h"
 #include "hil/harness/scenario/yaml_reader.h"
+#include "hil/harness/suite/suite.h"
 
 namespace hil::harness {
 namespace {
@@ -27,7 +27,8 @@ TEST(ScenarioFilesTest, EveryScenarioLoadsFullAndShort) {
         const Scenario s = LoadScenario(f, short_form);
         EXPECT_EQ(s.short_form, short_form && s.has_short_form) << f;
         if (s.short_form) {
-          EXPECT_LT(s.duration_s, LoadScenario(f).duration_s) << f << ": a short form should be shorter";
+          EXPECT_LT(s.duration_s, LoadScenario(f).duration_s)
+              << f << ": a short form should be shorter";
         }
       } catch (const ScenarioError& e) {
         ADD_FAILURE() << (short_form ? "short form: " : "") << e.what();
@@ -59,7 +60,8 @@ TEST(ScenarioFilesTest, PapersFiguresComeFromTheScenarioFiles) {
   const Scenario three = LoadScenario(Dir() + "/seed000_three_gps.yaml");
   EXPECT_EQ(three.estimator.navd_mode, "multi_gnss");
   ASSERT_EQ(three.gnss.receivers.size(), 3u);
-  EXPECT_NEAR((three.gnss.receivers[0].p_BA_B_m - three.gnss.receivers[1].p_BA_B_m).norm(), 5.196, 1e-3);
+  EXPECT_NEAR((three.gnss.receivers[0].p_BA_B_m - three.gnss.receivers[1].p_BA_B_m).norm(), 5.196,
+              1e-3);
   // every variant justifies its thresholds with criteria
   for (const auto& f : SuiteScenarios(Dir())) {
     if (std::filesystem::path(f).filename().string().rfind("variant_", 0) == 0) {

@@ -1,7 +1,8 @@
-// The scenario's gnss section (harness/src/scenario/scenario_gnss.cc): several receivers, faults, profiles.
-#include <gtest/gtest.h>
-
+// The scenario's gnss section (harness/src/scenario/scenario_gnss.cc): several receivers, faults,
+// profiles.
 #include <cmath>
+
+#include <gtest/gtest.h>
 
 #include "hil/harness/scenario/scenario.h"
 #include "hil/harness/scenario/yaml_reader.h"
@@ -22,9 +23,10 @@ TEST(ScenarioGnssTest, DefaultIsOneNeo5mOnTtyGps) {
 
 TEST(ScenarioGnssTest, ThreeReceiversOnACircleFiveMetresApart) {
   // seed 000: three receivers on a 3 m circle, 5.2 m apart
-  const Scenario s = ParseScenario(std::string(kMinimal) +
-                                       "gnss: {count: 3, array_radius_m: 3.0, antenna_lever_arm_m: [0, 0, 1.2]}\n",
-                                   "s.yaml");
+  const Scenario s =
+      ParseScenario(std::string(kMinimal) +
+                        "gnss: {count: 3, array_radius_m: 3.0, antenna_lever_arm_m: [0, 0, 1.2]}\n",
+                    "s.yaml");
   ASSERT_EQ(s.gnss.receivers.size(), 3u);
   EXPECT_EQ(s.gnss.receivers[0].link, "ttyGPS");
   EXPECT_EQ(s.gnss.receivers[1].link, "ttyGPS1");
@@ -39,16 +41,17 @@ TEST(ScenarioGnssTest, ThreeReceiversOnACircleFiveMetresApart) {
 }
 
 TEST(ScenarioGnssTest, ExplicitReceiversFaultsAndStart) {
-  const Scenario s = ParseScenario(std::string(kMinimal) +
-                                       "gnss:\n"
-                                       "  start: cold\n"
-                                       "  receivers:\n"
-                                       "    - {link: gpsA, antenna_lever_arm_m: [1, 0, 1]}\n"
-                                       "    - {link: gpsB, antenna_lever_arm_m: [-1, 0, 1]}\n"
-                                       "  faults:\n"
-                                       "    - {kind: outage, start_s: 10, end_s: 20}\n"
-                                       "    - {kind: step, start_s: 30, end_s: 31, offset_m: [2, 0, 0]}\n",
-                                   "s.yaml");
+  const Scenario s =
+      ParseScenario(std::string(kMinimal) +
+                        "gnss:\n"
+                        "  start: cold\n"
+                        "  receivers:\n"
+                        "    - {link: gpsA, antenna_lever_arm_m: [1, 0, 1]}\n"
+                        "    - {link: gpsB, antenna_lever_arm_m: [-1, 0, 1]}\n"
+                        "  faults:\n"
+                        "    - {kind: outage, start_s: 10, end_s: 20}\n"
+                        "    - {kind: step, start_s: 30, end_s: 31, offset_m: [2, 0, 0]}\n",
+                    "s.yaml");
   ASSERT_EQ(s.gnss.receivers.size(), 2u);
   EXPECT_EQ(s.gnss.link, "gpsA");
   EXPECT_EQ(s.gnss.start, gnss::StartKind::kCold);
@@ -65,9 +68,9 @@ TEST(ScenarioGnssTest, RtkProfileDefaults) {
 }
 
 TEST(ScenarioGnssTest, RefusesRatesAboveTheReceiverAndBadFaults) {
-  for (const std::string bad : {"gnss: {rate_hz: 10}\n", "gnss: {faults: [{kind: outage, start_s: 5, end_s: 2}]}\n",
-                                "gnss: {faults: [{kind: jam}]}\n",
-                                "gnss: {receivers: [{link: a}, {link: a}]}\n"}) {
+  for (const std::string bad :
+       {"gnss: {rate_hz: 10}\n", "gnss: {faults: [{kind: outage, start_s: 5, end_s: 2}]}\n",
+        "gnss: {faults: [{kind: jam}]}\n", "gnss: {receivers: [{link: a}, {link: a}]}\n"}) {
     EXPECT_THROW(ParseScenario(std::string(kMinimal) + bad, "s.yaml"), ScenarioError) << bad;
   }
 }

@@ -1,4 +1,5 @@
-// The scenario's `mcu:` section (harness/src/scenario/scenario_mcu.cc) and the device set it creates.
+// The scenario's `mcu:` section (harness/src/scenario/scenario_mcu.cc) and the device set it
+// creates.
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -37,26 +38,27 @@ TEST(ScenarioMcuTest, DefaultsFollowSeed000) {
 }
 
 TEST(ScenarioMcuTest, ReadsEveryKey) {
-  const Scenario s = ParseScenario(std::string(kBase) +
-                                       "mcu:\n"
-                                       "  profile: tactical\n"
-                                       "  baud: 230400\n"
-                                       "  link: ttyMCU\n"
-                                       "  format: razor-v19\n"
-                                       "  imu_rate_hz: 100\n"
-                                       "  mag_rate_hz: 20\n"
-                                       "  crystal_ppm: -30\n"
-                                       "  jitter_us: 15\n"
-                                       "  lever_arm_m: [0.1, 0.2, 1.5]\n"
-                                       "  mounting_rpy_deg: [0, 0, 90]\n"
-                                       "  magnetic: {field_enu_uT: [1, 2, -3], hard_iron_uT: [4, 5, 6]}\n"
-                                       "  vibration: [{frequency_hz: 25, accel_amplitude_mps2: [1, 2, 3]}]\n"
-                                       "  temperature: {start_c: 10, rate_c_per_h: 5}\n"
-                                       "  can: {source_address: 0x81, priority: 2, ssi2_every: 10, latency_s: 0.002}\n"
-                                       "  faults:\n"
-                                       "    - {kind: reset, start_s: 30}\n"
-                                       "    - {kind: stuck_sensor, start_s: 5, duration_s: 2, sensor: gyro}\n",
-                                   "s.yaml");
+  const Scenario s = ParseScenario(
+      std::string(kBase) +
+          "mcu:\n"
+          "  profile: tactical\n"
+          "  baud: 230400\n"
+          "  link: ttyMCU\n"
+          "  format: razor-v19\n"
+          "  imu_rate_hz: 100\n"
+          "  mag_rate_hz: 20\n"
+          "  crystal_ppm: -30\n"
+          "  jitter_us: 15\n"
+          "  lever_arm_m: [0.1, 0.2, 1.5]\n"
+          "  mounting_rpy_deg: [0, 0, 90]\n"
+          "  magnetic: {field_enu_uT: [1, 2, -3], hard_iron_uT: [4, 5, 6]}\n"
+          "  vibration: [{frequency_hz: 25, accel_amplitude_mps2: [1, 2, 3]}]\n"
+          "  temperature: {start_c: 10, rate_c_per_h: 5}\n"
+          "  can: {source_address: 0x81, priority: 2, ssi2_every: 10, latency_s: 0.002}\n"
+          "  faults:\n"
+          "    - {kind: reset, start_s: 30}\n"
+          "    - {kind: stuck_sensor, start_s: 5, duration_s: 2, sensor: gyro}\n",
+      "s.yaml");
   const mcu::McuConfig& c = s.mcu.config;
   EXPECT_EQ(c.profile.name, "tactical");
   EXPECT_EQ(c.baud, 230400);
@@ -81,7 +83,8 @@ TEST(ScenarioMcuTest, ReadsEveryKey) {
   EXPECT_EQ(c.faults[1].sensor, "gyro");
 }
 
-void ExpectError(const std::string& mcu_text, const std::string& field, const std::string& fragment) {
+void ExpectError(const std::string& mcu_text, const std::string& field,
+                 const std::string& fragment) {
   try {
     ParseScenario(std::string(kBase) + mcu_text, "s.yaml");
     FAIL() << "expected a ScenarioError";
@@ -104,13 +107,15 @@ TEST(ScenarioMcuTest, ExampleScenarioLoads) {
 TEST(ScenarioMcuTest, BadValuesNameTheirField) {
   ExpectError("mcu: {profil: razor-v13}\n", "mcu.profil", "did you mean 'profile'");
   ExpectError("mcu: {profile: adxl}\n", "mcu.profile", "razor-v13");
-  ExpectError("mcu: {faults: [{kind: drop_frames, start_s: 1}]}\n", "mcu.faults[0].duration_s", "positive");
+  ExpectError("mcu: {faults: [{kind: drop_frames, start_s: 1}]}\n", "mcu.faults[0].duration_s",
+              "positive");
   ExpectError("mcu: {link: a/b}\n", "mcu.link", "plain file name");
 }
 
 TEST(ScenarioMcuTest, BuildDevicesAddsTheBoardWithItsLink) {
   const Scenario s = ParseScenario(std::string(kBase) + "mcu: {link: ttyIMU}\n", "s.yaml");
-  const std::string dir = (std::filesystem::temp_directory_path() / "hil_scenario_mcu_test").string();
+  const std::string dir =
+      (std::filesystem::temp_directory_path() / "hil_scenario_mcu_test").string();
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir + "/captures");
   {

@@ -11,7 +11,8 @@ constexpr const char* kMinimal =
     "name: t\n"
     "origin: {lat_deg: 35.0, lon_deg: 50.0}\n";
 
-void ExpectError(const std::string& text, int line, const std::string& field, const std::string& fragment) {
+void ExpectError(const std::string& text, int line, const std::string& field,
+                 const std::string& fragment) {
   try {
     ParseScenario(text, "s.yaml");
     FAIL() << "expected a ScenarioError for:\n" << text;
@@ -36,19 +37,21 @@ TEST(ScenarioTest, UnknownKeyNamesLineAndField) {
 }
 
 TEST(ScenarioTest, MisspeltKeySuggestsTheRightOne) {
-  ExpectError(std::string(kMinimal) + "gnss:\n  baud: 9600\n  rate_hx: 1\n", 5, "gnss.rate_hx", "did you mean 'rate_hz'");
+  ExpectError(std::string(kMinimal) + "gnss:\n  baud: 9600\n  rate_hx: 1\n", 5, "gnss.rate_hx",
+              "did you mean 'rate_hz'");
 }
 
 TEST(ScenarioTest, WrongTypeNamesLineAndField) {
-  ExpectError(std::string(kMinimal) + "gnss:\n  baud: fast\n", 4, "gnss.baud", "expected an integer");
+  ExpectError(std::string(kMinimal) + "gnss:\n  baud: fast\n", 4, "gnss.baud",
+              "expected an integer");
   ExpectError(std::string(kMinimal) + "duration_s: [1, 2]\n", 3, "duration_s", "expected a number");
 }
 
 TEST(ScenarioTest, OutOfRangeAndMissingValues) {
   ExpectError(std::string(kMinimal) + "duration_s: -5\n", 3, "duration_s", "out of range");
   ExpectError("name: t\n", 1, "", "missing required key 'origin'");
-  ExpectError(std::string(kMinimal) + "criteria:\n  - {metric: horizontal_rmse_m}\n", 4, "criteria[0]",
-              "needs 'max'");
+  ExpectError(std::string(kMinimal) + "criteria:\n  - {metric: horizontal_rmse_m}\n", 4,
+              "criteria[0]", "needs 'max'");
   ExpectError(std::string(kMinimal) + "start_utc: yesterday\n", 3, "start_utc", "ISO 8601");
 }
 

@@ -2,10 +2,10 @@
 // kernel without CAN (the listening itself runs in the vcan VM: tests/vcan, vcan_e2e_can_scenario).
 #include "hil/harness/validate/validate_can_live.h"
 
-#include <gtest/gtest.h>
-
 #include <filesystem>
 #include <fstream>
+
+#include <gtest/gtest.h>
 
 #include "hil/firmware_emu/link/socketcan_port.h"
 

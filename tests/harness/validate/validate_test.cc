@@ -2,11 +2,11 @@
 // capture, and on deliberately broken streams.
 #include "hil/harness/validate/validate.h"
 
-#include <gtest/gtest.h>
-
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+
+#include <gtest/gtest.h>
 
 namespace hil::harness {
 namespace {
@@ -35,7 +35,8 @@ std::string Sentence(const std::string& body) {
 std::string Epoch(const std::string& hhmmss) {
   return Sentence("GPRMC," + hhmmss + ".00,A,3528.77658,N,05035.87859,E,0.864,30.00,100613,,,A") +
          Sentence("GPVTG,30.00,T,,M,0.864,N,1.600,K,A") +
-         Sentence("GPGGA," + hhmmss + ".00,3528.77658,N,05035.87859,E,1,08,1.01,1312.0,M,-20.1,M,,") +
+         Sentence("GPGGA," + hhmmss +
+                  ".00,3528.77658,N,05035.87859,E,1,08,1.01,1312.0,M,-20.1,M,,") +
          Sentence("GPGSA,A,3,01,02,03,04,05,06,07,08,,,,,1.80,1.01,1.49") +
          Sentence("GPGSV,2,1,08,01,40,083,46,02,17,308,41,03,07,344,39,04,22,228,45") +
          Sentence("GPGSV,2,2,08,05,40,083,46,06,17,308,41,07,07,344,39,08,22,228,45") +
@@ -72,7 +73,8 @@ TEST(ValidateTest, RealUblox5CapturesConformToTheNmeaAndNeo5mChecks) {
     }
   }
   // the counts the vectors' README gives for ublox-lea-5h.log
-  const ValidationReport r = ValidateStream(ValidateProtocol::kNmea, ReadByteSource(Vector("ublox-lea-5h.log"), 1, 0), 0);
+  const ValidationReport r =
+      ValidateStream(ValidateProtocol::kNmea, ReadByteSource(Vector("ublox-lea-5h.log"), 1, 0), 0);
   EXPECT_EQ(r.frames, 164u);
   EXPECT_EQ(r.messages.at("GPGSV").count, 59u);
   EXPECT_EQ(r.messages.at("GPTXT").count, 14u);
@@ -80,7 +82,8 @@ TEST(ValidateTest, RealUblox5CapturesConformToTheNmeaAndNeo5mChecks) {
 }
 
 TEST(ValidateTest, Ublox7UbxCaptureConformsToTheUbxChecks) {
-  const ValidationReport r = ValidateStream(ValidateProtocol::kUbx, ReadByteSource(Vector("navisys-gr701w.log"), 1, 0), 0);
+  const ValidationReport r =
+      ValidateStream(ValidateProtocol::kUbx, ReadByteSource(Vector("navisys-gr701w.log"), 1, 0), 0);
   EXPECT_TRUE(r.conforms()) << ValidationSummary(r);
   EXPECT_EQ(r.frames, 423u);
   EXPECT_EQ(r.messages.at("UBX-NAV-SOL").count, 81u);
@@ -123,7 +126,8 @@ TEST(ValidateTest, BrokenNmeaStreamsFail) {
     EXPECT_EQ(r.garbage_bytes, 9u);
   }
   {  // a GGA with a field missing (checksum recomputed): layout error
-    const std::string bad = Sentence("GPGGA,080000.00,3528.77658,N,05035.87859,E,1,08,1.01,1312.0,M,-20.1,M") + good;
+    const std::string bad =
+        Sentence("GPGGA,080000.00,3528.77658,N,05035.87859,E,1,08,1.01,1312.0,M,-20.1,M") + good;
     const ValidationReport r = ValidateStream(ValidateProtocol::kNmea, Bytes(bad), 0);
     EXPECT_TRUE(HasFinding(r, "layout", true)) << ValidationSummary(r);
   }
@@ -148,14 +152,17 @@ TEST(ValidateTest, Neo5mProfileChecksOrderTalkerAndMessageSet) {
     std::string e = Epoch("080001");
     const std::size_t rmc_len = e.find("$GPVTG");
     const std::size_t gga = e.find("$GPGGA"), gsa = e.find("$GPGSA");
-    const std::string swapped = e.substr(gga, gsa - gga) + e.substr(0, rmc_len) + e.substr(rmc_len, gga - rmc_len) + e.substr(gsa);
+    const std::string swapped = e.substr(gga, gsa - gga) + e.substr(0, rmc_len) +
+                                e.substr(rmc_len, gga - rmc_len) + e.substr(gsa);
     const std::string s = Epoch("080000") + swapped + Epoch("080002");
     const ValidationReport r = ValidateStream(ValidateProtocol::kNeo5m, Bytes(s), 9600);
     EXPECT_TRUE(HasFinding(r, "epoch_order", true)) << ValidationSummary(r);
-    EXPECT_TRUE(ValidateStream(ValidateProtocol::kNmea, Bytes(s), 0).conforms()) << "plain NMEA has no order";
+    EXPECT_TRUE(ValidateStream(ValidateProtocol::kNmea, Bytes(s), 0).conforms())
+        << "plain NMEA has no order";
   }
   {  // a GN talker and a sentence a u-blox 5 does not send
-    const std::string s = Epochs(3) + Sentence("GNGNS,080003.00,3528.77658,N,05035.87859,E,AN,08,1.0,1312.0,-20.1,,");
+    const std::string s =
+        Epochs(3) + Sentence("GNGNS,080003.00,3528.77658,N,05035.87859,E,AN,08,1.0,1312.0,-20.1,,");
     const ValidationReport r = ValidateStream(ValidateProtocol::kNeo5m, Bytes(s), 9600);
     EXPECT_TRUE(HasFinding(r, "talker", true)) << ValidationSummary(r);
     EXPECT_TRUE(HasFinding(r, "message_set", true)) << ValidationSummary(r);
@@ -166,7 +173,8 @@ TEST(ValidateTest, Neo5mProfileChecksOrderTalkerAndMessageSet) {
       char t[16];
       std::snprintf(t, sizeof t, "0800%02d.%02d", i / 5, (i % 5) * 20);
       std::string e = Epoch("080000");
-      for (std::size_t p = 0; (p = e.find("080000.00", p)) != std::string::npos; p += 9) e.replace(p, 9, t);
+      for (std::size_t p = 0; (p = e.find("080000.00", p)) != std::string::npos; p += 9)
+        e.replace(p, 9, t);
       // recompute checksums
       std::string fixed;
       std::size_t start = 0;
@@ -184,7 +192,11 @@ TEST(ValidateTest, Neo5mProfileChecksOrderTalkerAndMessageSet) {
 }
 
 std::string Ubx(std::uint8_t cls, std::uint8_t id, const std::string& payload) {
-  std::string f{'\xB5', '\x62', static_cast<char>(cls), static_cast<char>(id), static_cast<char>(payload.size() & 0xFF),
+  std::string f{'\xB5',
+                '\x62',
+                static_cast<char>(cls),
+                static_cast<char>(id),
+                static_cast<char>(payload.size() & 0xFF),
                 static_cast<char>(payload.size() >> 8)};
   f += payload;
   std::uint8_t a = 0, b = 0;
@@ -199,7 +211,8 @@ std::string Ubx(std::uint8_t cls, std::uint8_t id, const std::string& payload) {
 
 std::string NavSol(std::uint32_t itow) {
   std::string p(52, '\0');
-  for (int i = 0; i < 4; ++i) p[static_cast<std::size_t>(i)] = static_cast<char>((itow >> (8 * i)) & 0xFF);
+  for (int i = 0; i < 4; ++i)
+    p[static_cast<std::size_t>(i)] = static_cast<char>((itow >> (8 * i)) & 0xFF);
   return Ubx(0x01, 0x06, p);
 }
 
@@ -215,7 +228,8 @@ TEST(ValidateTest, BrokenUbxStreamsFail) {
     EXPECT_EQ(r.frames, 4u) << "the framer resynchronises on the next frame";
   }
   {  // NAV-SOL with a 40-byte payload, NAV-PVT on a u-blox 5, iTOW going backwards
-    const std::string bad = good + Ubx(0x01, 0x06, std::string(40, '\0')) + Ubx(0x01, 0x07, std::string(92, '\0')) + NavSol(50000);
+    const std::string bad = good + Ubx(0x01, 0x06, std::string(40, '\0')) +
+                            Ubx(0x01, 0x07, std::string(92, '\0')) + NavSol(50000);
     const ValidationReport r = ValidateStream(ValidateProtocol::kNeo5m, Bytes(bad), 0);
     EXPECT_TRUE(HasFinding(r, "payload_length", true)) << ValidationSummary(r);
     EXPECT_TRUE(HasFinding(r, "message_set", true)) << ValidationSummary(r);
@@ -234,13 +248,14 @@ std::string CanLog(bool lose_frame_3) {
   std::string log;
   char line[128];
   for (int i = 0; i < 20; ++i) {
-    std::snprintf(line, sizeof line, "(%d.%06d) vcan0 09F80101#A0B3F2150AB5A61E\n", 1700000000 + i / 10, (i % 10) * 100000);
+    std::snprintf(line, sizeof line, "(%d.%06d) vcan0 09F80101#A0B3F2150AB5A61E\n",
+                  1700000000 + i / 10, (i % 10) * 100000);
     log += line;
   }
   for (int f = 0; f < 7; ++f) {
     if (lose_frame_3 && f == 3) continue;
-    std::snprintf(line, sizeof line, "(1700000002.%06d) vcan0 0DF80501#%02X%s\n", f * 1000, (2 << 5) | f,
-                  f == 0 ? "2B000000000000" : "00000000000000");
+    std::snprintf(line, sizeof line, "(1700000002.%06d) vcan0 0DF80501#%02X%s\n", f * 1000,
+                  (2 << 5) | f, f == 0 ? "2B000000000000" : "00000000000000");
     log += line;
   }
   return log;
@@ -254,7 +269,9 @@ TEST(ValidateTest, CanLogs) {
   r = ValidateCanLog(CanLog(true));
   EXPECT_TRUE(HasFinding(r, "fast_packet", true)) << ValidationSummary(r);
   // malformed lines and a timestamp going backwards
-  r = ValidateCanLog(CanLog(false) + "(1700000001.000000) vcan0 09F80101#A0\nnonsense\n(1700000003.0) vcan0 123#00\n");
+  r = ValidateCanLog(
+      CanLog(false) +
+      "(1700000001.000000) vcan0 09F80101#A0\nnonsense\n(1700000003.0) vcan0 123#00\n");
   EXPECT_TRUE(HasFinding(r, "time_monotonic", true));
   EXPECT_TRUE(HasFinding(r, "format", true));
   EXPECT_EQ(r.bad_frames, 2u);
@@ -277,7 +294,8 @@ std::uint16_t Crc(const std::string& b, std::size_t from, std::size_t to) {
   std::uint16_t crc = 0xFFFF;
   for (std::size_t i = from; i < to; ++i) {
     crc = static_cast<std::uint16_t>(crc ^ (static_cast<unsigned char>(b[i]) << 8));
-    for (int k = 0; k < 8; ++k) crc = static_cast<std::uint16_t>(crc & 0x8000 ? (crc << 1) ^ 0x1021 : crc << 1);
+    for (int k = 0; k < 8; ++k)
+      crc = static_cast<std::uint16_t>(crc & 0x8000 ? (crc << 1) ^ 0x1021 : crc << 1);
   }
   return crc;
 }
@@ -289,14 +307,14 @@ std::string Le(std::uint32_t v, int n) {
 }
 
 std::string McuFrame(int type, std::uint16_t seq, std::uint32_t tick, const std::string& payload) {
-  std::string f = std::string("\xA5\x5A\x01", 3) + static_cast<char>(type) + static_cast<char>(payload.size()) + Le(seq, 2) +
-                  Le(tick, 4) + payload;
+  std::string f = std::string("\xA5\x5A\x01", 3) + static_cast<char>(type) +
+                  static_cast<char>(payload.size()) + Le(seq, 2) + Le(tick, 4) + payload;
   return f + Le(Crc(f, 2, f.size()), 2);
 }
 
 std::string Status(std::uint16_t reset_count) {
-  return std::string(1, '\x03') + std::string(1, '\x00') + Le(reset_count, 2) + Le(1000000, 4) + Le(100000, 4) +
-         std::string(14, '\0');
+  return std::string(1, '\x03') + std::string(1, '\x00') + Le(reset_count, 2) + Le(1000000, 4) +
+         Le(100000, 4) + std::string(14, '\0');
 }
 
 // 3 s of a 10 Hz IMU with 1 Hz time pulses (tick rate 1 MHz + 50 ppm), from sequence `seq0`
@@ -305,7 +323,10 @@ std::string McuStream(std::uint16_t& seq, std::uint16_t reset_count) {
   for (int k = 0; k < 30; ++k) {
     const auto tick = static_cast<std::uint32_t>(k * 100005);
     s += McuFrame(1, seq++, tick + 10, std::string(12, '\x01'));
-    if (k % 10 == 0) s += McuFrame(3, seq++, tick, Le(1744, 2) + Le(86400000u + static_cast<std::uint32_t>(k / 10) * 1000u, 4) + '\x01');
+    if (k % 10 == 0)
+      s += McuFrame(
+          3, seq++, tick,
+          Le(1744, 2) + Le(86400000u + static_cast<std::uint32_t>(k / 10) * 1000u, 4) + '\x01');
   }
   return s;
 }
@@ -358,7 +379,8 @@ TEST(ValidateMcuTest, RatesResetsGapsAndCorruption) {
   // an IMU rate far from the STATUS period (every other sample lost, sequence intact)
   seq2 = 0;
   std::string slow = McuFrame(4, seq2++, 0, Status(0));
-  for (int k = 0; k < 20; ++k) slow += McuFrame(1, seq2++, static_cast<std::uint32_t>(k * 200000), std::string(12, '\0'));
+  for (int k = 0; k < 20; ++k)
+    slow += McuFrame(1, seq2++, static_cast<std::uint32_t>(k * 200000), std::string(12, '\0'));
   s.bytes = slow;
   EXPECT_TRUE(HasFinding(ValidateMcuStream(s), "rate", true));
 }

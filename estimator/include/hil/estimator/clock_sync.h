@@ -3,7 +3,8 @@
 /// Maps the MCU's free-running u32 tick (nominal 1 MHz, crystal offset and drift unknown) onto GPS
 /// time through the latched time pulse: each TIME_PULSE gives (tick at the edge, whole GPS second).
 /// The tick is unwrapped to 64 bits; the tick rate is estimated from consecutive pulses (smoothed),
-/// and t_gps(tick) = t_gps(last pulse) + (tick − tick_pulse) / rate. Host arrival times are not used.
+/// and t_gps(tick) = t_gps(last pulse) + (tick − tick_pulse) / rate. Host arrival times are not
+/// used.
 
 #include <cstdint>
 #include <optional>
@@ -14,7 +15,8 @@ namespace hil::estimator {
 
 class ClockSync {
  public:
-  explicit ClockSync(double nominal_tick_hz = 1e6) : rate_hz_(nominal_tick_hz), nominal_hz_(nominal_tick_hz) {}
+  explicit ClockSync(double nominal_tick_hz = 1e6)
+      : rate_hz_(nominal_tick_hz), nominal_hz_(nominal_tick_hz) {}
   /// Unwraps a 32-bit tick against the previous one (ticks must be presented in stream order).
   std::int64_t Unwrap(std::uint32_t tick);
   /// A time pulse: the unwrapped tick latched at the edge and the GPS time of the edge.

@@ -24,18 +24,19 @@
 /// (half that σ). Without it (τ = 0) the deviation is white at every update, which over-trusts
 /// the set speed when the real speed wanders over seconds.
 /// The first 15 are the classic INS error states (paper 004); the three augmented states model the
-/// time-correlated error of a standalone receiver (NEO-5M class, τ of seconds) so it is not mistaken
-/// for vehicle motion. With gnss_error_tau_s = 0 they are frozen at zero (a plain 15-state filter).
-/// Continuous error dynamics (ENU, Earth-fixed tangent frame):
+/// time-correlated error of a standalone receiver (NEO-5M class, τ of seconds) so it is not
+/// mistaken for vehicle motion. With gnss_error_tau_s = 0 they are frozen at zero (a plain 15-state
+/// filter). Continuous error dynamics (ENU, Earth-fixed tangent frame):
 ///   δṗ = δv;  δv̇ = −[(Ĉf̂)×]φ − Ĉδb_a − 2[ω_IE×]δv;  φ̇ = −[ω_IE×]φ − Ĉδb_g;
 ///   δḃ = w (random walk);  ė = −e/τ + w (σ per axis: horizontal, horizontal, vertical).
 /// Φ = I + F·dt per IMU interval; Joseph-form updates; every update is χ²-gated on its NIS.
 /// The filter never throws or aborts on input; non-finite inputs are counted and rejected.
 
+#include <cstdint>
+
+#include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <Eigen/Geometry>
-#include <Eigen/Cholesky>
-#include <cstdint>
 
 #include "hil/estimator/mechanization.h"
 
@@ -59,10 +60,10 @@ using EkfMatrix = Eigen::Matrix<double, ekf_index::kNumStates, ekf_index::kNumSt
 
 /// Filter parameters (constant for a run). Noise densities are continuous-time.
 struct EkfParams {
-  double accel_noise_mps2_rthz = 0.02;        ///< velocity random walk (m/s/√s)
-  double gyro_noise_radps_rthz = 2e-4;        ///< angle random walk (rad/√s)
-  double accel_bias_rw_mps3_rthz = 1e-4;      ///< accelerometer bias random walk
-  double gyro_bias_rw_radps2_rthz = 1e-6;     ///< gyro bias random walk
+  double accel_noise_mps2_rthz = 0.02;     ///< velocity random walk (m/s/√s)
+  double gyro_noise_radps_rthz = 2e-4;     ///< angle random walk (rad/√s)
+  double accel_bias_rw_mps3_rthz = 1e-4;   ///< accelerometer bias random walk
+  double gyro_bias_rw_radps2_rthz = 1e-6;  ///< gyro bias random walk
   double init_pos_std_m = 1.0;
   double init_vel_std_mps = 0.2;
   double init_roll_pitch_std_rad = 0.03;
@@ -70,41 +71,42 @@ struct EkfParams {
   double init_accel_bias_std_mps2 = 0.05;
   double init_gyro_bias_std_radps = 0.005;
   Eigen::Vector3d lever_arm_B_m = Eigen::Vector3d::Zero();  ///< GNSS antenna in the body frame
-  double gnss_error_tau_s = 0.0;              ///< correlated GNSS position error τ (0 = off)
+  double gnss_error_tau_s = 0.0;  ///< correlated GNSS position error τ (0 = off)
   /// its steady-state σ per horizontal axis (and up, unless:) at HDOP 1; fixes that report their
   /// HDOP scale it (SetGnssErrorModel), as a receiver's error scales with its geometry
   double gnss_error_std_m = 0.0;
-  /// σ of the up component (0: gnss_error_std_m); the float model keeps the same up/horizontal ratio
+  /// σ of the up component (0: gnss_error_std_m); the float model keeps the same up/horizontal
+  /// ratio
   double gnss_error_vertical_std_m = 0.0;
   /// RTK float solutions (GGA quality 5): their own correlated error (decimetres, seconds); the
   /// filter switches to this model while fixes are float (0 = same model as fixed fixes).
   double gnss_float_error_tau_s = 0.0;
   double gnss_float_error_std_m = 0.0;
-  double gnss_pos_std_floor_m = 0.005;        ///< lower bound on the white GNSS position σ
+  double gnss_pos_std_floor_m = 0.005;  ///< lower bound on the white GNSS position σ
   double gnss_vel_std_floor_mps = 0.01;
-  double nhc_std_mps = 0.0;                   ///< non-holonomic constraint σ (0 = off)
-  double speed_rw_mps_rthz = 0.0;             ///< set-speed random walk, m/s/√s (0 = speed model off)
-  double speed_dev_std_mps = 0.05;            ///< forward speed's deviation from the set speed (1σ)
-  double speed_dev_tau_s = 0.0;               ///< its correlation time (0: white, no state of its own)
-  double gate_sigma = 5.0;                    ///< per-update χ² gate: NIS ≤ gate² · dof
+  double nhc_std_mps = 0.0;         ///< non-holonomic constraint σ (0 = off)
+  double speed_rw_mps_rthz = 0.0;   ///< set-speed random walk, m/s/√s (0 = speed model off)
+  double speed_dev_std_mps = 0.05;  ///< forward speed's deviation from the set speed (1σ)
+  double speed_dev_tau_s = 0.0;     ///< its correlation time (0: white, no state of its own)
+  double gate_sigma = 5.0;          ///< per-update χ² gate: NIS ≤ gate² · dof
 };
 
 /// Health and status bit field.
 enum EkfStatus : std::uint32_t {
   kStatusAligned = 1u << 0,
-  kStatusGnssFused = 1u << 1,          ///< the last GNSS update passed the gate
-  kStatusGnssRejected = 1u << 2,       ///< the last GNSS update was rejected
-  kStatusDeadReckoning = 1u << 3,      ///< no GNSS fused for longer than the outage threshold
-  kStatusReset = 1u << 4,              ///< position/velocity reset to GNSS after a long rejection
-  kStatusBadInput = 1u << 5,           ///< a non-finite or out-of-range input was dropped
-  kStatusCovarianceRepaired = 1u << 6, ///< a covariance diagonal was clamped
-  kStatusImuLost = 1u << 7,            ///< the IMU fell silent while fixes arrive: the solution is the fix
+  kStatusGnssFused = 1u << 1,           ///< the last GNSS update passed the gate
+  kStatusGnssRejected = 1u << 2,        ///< the last GNSS update was rejected
+  kStatusDeadReckoning = 1u << 3,       ///< no GNSS fused for longer than the outage threshold
+  kStatusReset = 1u << 4,               ///< position/velocity reset to GNSS after a long rejection
+  kStatusBadInput = 1u << 5,            ///< a non-finite or out-of-range input was dropped
+  kStatusCovarianceRepaired = 1u << 6,  ///< a covariance diagonal was clamped
+  kStatusImuLost = 1u << 7,  ///< the IMU fell silent while fixes arrive: the solution is the fix
 };
 
 /// Result of one measurement update.
 struct UpdateResult {
   bool accepted = false;
-  double nis = 0;   ///< innovationᵀ S⁻¹ innovation
+  double nis = 0;  ///< innovationᵀ S⁻¹ innovation
   int dof = 0;
 };
 
@@ -112,16 +114,19 @@ struct UpdateResult {
 class ErrorStateEkf {
  public:
   ErrorStateEkf() = default;
-  explicit ErrorStateEkf(const EkfParams& params, const EarthModel& earth) : params_(params), earth_(earth) {}
+  explicit ErrorStateEkf(const EkfParams& params, const EarthModel& earth)
+      : params_(params), earth_(earth) {}
 
   /// Sets the nominal state and the initial covariance from the parameters.
   void Initialize(const NavState& state);
   /// One IMU interval of raw increments (biases are removed here).
-  void Predict(const Eigen::Vector3d& delta_angle_B_rad, const Eigen::Vector3d& delta_velocity_B_mps, double dt_s);
+  void Predict(const Eigen::Vector3d& delta_angle_B_rad,
+               const Eigen::Vector3d& delta_velocity_B_mps, double dt_s);
   /// GNSS antenna position in N with per-axis σ.
   UpdateResult UpdatePosition(const Eigen::Vector3d& p_antenna_N_m, const Eigen::Vector3d& std_m);
   /// GNSS antenna velocity in N with per-axis σ.
-  UpdateResult UpdateVelocity(const Eigen::Vector3d& v_antenna_N_mps, const Eigen::Vector3d& std_mps);
+  UpdateResult UpdateVelocity(const Eigen::Vector3d& v_antenna_N_mps,
+                              const Eigen::Vector3d& std_mps);
   /// Non-holonomic constraint: body lateral and vertical velocity are zero (ground vehicle).
   UpdateResult UpdateNonHolonomic();
   /// Speed model: the forward body velocity equals the set speed (within speed_dev_std_mps).
@@ -139,8 +144,8 @@ class ErrorStateEkf {
   /// are off (gnss_error_tau_s = 0) or the model is unchanged.
   void SetGnssErrorModel(double tau_s, double std_m, bool new_source);
   /// Resets position/velocity to a measurement after a long rejection (keeps attitude and biases).
-  void ResetPositionVelocity(const Eigen::Vector3d& p_N_m, const Eigen::Vector3d& v_N_mps, double pos_std_m,
-                             double vel_std_mps);
+  void ResetPositionVelocity(const Eigen::Vector3d& p_N_m, const Eigen::Vector3d& v_N_mps,
+                             double pos_std_m, double vel_std_mps);
 
   /// Antenna position predicted from the nominal state.
   Eigen::Vector3d AntennaPosition() const;
@@ -186,8 +191,8 @@ class ErrorStateEkf {
   double gm_up_ratio_ = 1.0;                // up σ / horizontal σ
   double set_speed_ = 0.0;                  // speed model: the vehicle's set speed (m/s)
   double speed_dev_ = 0.0;                  // speed model: forward speed minus set speed (m/s)
-  Eigen::Vector3d w_B_ = Eigen::Vector3d::Zero();   // last compensated angular rate
-  Eigen::Vector3d f_N_ = Eigen::Vector3d::Zero();   // last specific force in N
+  Eigen::Vector3d w_B_ = Eigen::Vector3d::Zero();  // last compensated angular rate
+  Eigen::Vector3d f_N_ = Eigen::Vector3d::Zero();  // last specific force in N
   EkfMatrix P_ = EkfMatrix::Identity();
   std::uint32_t repairs_ = 0;
 };

@@ -30,9 +30,10 @@
 /// its position and velocity at the next fix (its state could not be propagated through the gap),
 /// and until then Output() stays the fix.
 
-#include <Eigen/Core>
 #include <cstdint>
 #include <optional>
+
+#include <Eigen/Core>
 
 #include "hil/estimator/error_state_ekf.h"
 #include "hil/estimator/geodesy.h"
@@ -48,7 +49,8 @@ enum class NavMode {
   kPlanar2d,   ///< seed 000's planar Kalman filter
   kGnssOnly,   ///< the GNSS fix, passed through
   kImuOnly,    ///< dead reckoning after alignment (no GNSS updates)
-  kMultiGnss,  ///< several receivers (seed 000: three): centroid position and heading from their geometry
+  kMultiGnss,  ///< several receivers (seed 000: three): centroid position and heading from their
+               ///< geometry
 };
 /// Mode name as used in the configuration and the JSON output.
 const char* NavModeName(NavMode m);
@@ -65,16 +67,17 @@ struct NavigatorParams {
   std::int64_t fusion_horizon_ns = 250'000'000;  ///< largest GNSS delay that is still fused in time
   /// Longest wait for an expected GNSS epoch (≤ the filter's IMU buffer; 0 or ≤ the horizon: off).
   std::int64_t gnss_max_latency_ns = 0;
-  double align_min_speed_mps = 0.2;              ///< GNSS course trusted for heading above this
-  double nhc_period_s = 0.1;                     ///< non-holonomic update period (if enabled)
-  double outage_flag_s = 1.5;                    ///< dead-reckoning flag after this long without GNSS
-  double reset_after_rejected_s = 5.0;           ///< reset to GNSS after rejections for this long
-  double imu_timeout_s = 1.0;                    ///< IMU modes: fall back to the fixes after this silence
+  double align_min_speed_mps = 0.2;     ///< GNSS course trusted for heading above this
+  double nhc_period_s = 0.1;            ///< non-holonomic update period (if enabled)
+  double outage_flag_s = 1.5;           ///< dead-reckoning flag after this long without GNSS
+  double reset_after_rejected_s = 5.0;  ///< reset to GNSS after rejections for this long
+  double imu_timeout_s = 1.0;           ///< IMU modes: fall back to the fixes after this silence
   bool use_gnss_velocity = true;
   /// Multi-receiver mode: antenna positions in the body frame, one column per receiver
   /// (GnssSample::antenna); the first `multi_antenna_count` columns are used (seed 000: three on a
   /// 3 m circle). At least two antennas with distinct horizontal positions give a heading.
-  Eigen::Matrix<double, 3, kMaxGnssAntennas> multi_antenna_B_m = Eigen::Matrix<double, 3, kMaxGnssAntennas>::Zero();
+  Eigen::Matrix<double, 3, kMaxGnssAntennas> multi_antenna_B_m =
+      Eigen::Matrix<double, 3, kMaxGnssAntennas>::Zero();
   int multi_antenna_count = 3;
 };
 
@@ -82,11 +85,11 @@ struct NavigatorParams {
 struct NavigatorStats {
   std::uint64_t imu_samples = 0, imu_out_of_order = 0, imu_overflow = 0, imu_gaps = 0;
   std::uint64_t gnss_samples = 0, gnss_late = 0, gnss_fused = 0, gnss_rejected = 0, gnss_resets = 0;
-  std::uint64_t imu_losses = 0;   ///< times the IMU fell silent while fixes kept coming (ImuLost())
-  bool imu_lost = false;          ///< ImuLost() after the newest input
+  std::uint64_t imu_losses = 0;  ///< times the IMU fell silent while fixes kept coming (ImuLost())
+  bool imu_lost = false;         ///< ImuLost() after the newest input
   std::uint64_t bad_input = 0;
   double last_nis_pos = 0, last_nis_vel = 0;
-  double mean_nis_pos = 0;   ///< running mean of accepted position NIS (≈ 3 when consistent)
+  double mean_nis_pos = 0;  ///< running mean of accepted position NIS (≈ 3 when consistent)
   std::uint64_t nis_count = 0;
 };
 
@@ -94,7 +97,7 @@ struct NavigatorStats {
 struct NavOutput {
   GpsNs t = 0;
   bool valid = false;
-  Lla position;                                        ///< body reference point
+  Lla position;  ///< body reference point
   Eigen::Vector3d p_N_m = Eigen::Vector3d::Zero();
   Eigen::Vector3d v_N_mps = Eigen::Vector3d::Zero();
   Eigen::Quaterniond q_NB = Eigen::Quaterniond::Identity();
@@ -148,14 +151,14 @@ class Navigator {
   LocalTangentFrame frame_;
   bool frame_set_ = false;
   bool aligned_ = false;
-  RingBuffer<ImuSample, 1024> imu_;   // 10 s at 100 Hz: covers the longest GNSS wait
+  RingBuffer<ImuSample, 1024> imu_;  // 10 s at 100 Hz: covers the longest GNSS wait
   RingBuffer<GnssSample, 32> gnss_;
   std::optional<HeadingSample> heading_;
   GpsNs newest_imu_t_ = 0, filter_t_ = 0, last_gnss_fused_t_ = 0, first_rejected_t_ = -1;
   GpsNs last_nhc_t_ = 0;
-  bool gnss_float_ = false;  // the correlated GNSS error model in use is the RTK float one
-  bool restart_at_next_fix_ = false; // IMU samples resumed after a loss
-  int fixes_since_imu_ = 0;          // fixes pushed since the last IMU sample
+  bool gnss_float_ = false;           // the correlated GNSS error model in use is the RTK float one
+  bool restart_at_next_fix_ = false;  // IMU samples resumed after a loss
+  int fixes_since_imu_ = 0;           // fixes pushed since the last IMU sample
   GpsNs newest_gnss_t_ = -1, gnss_period_ns_ = 0;  // GNSS stream timing (for the wait)
   bool have_imu_ = false;
   Eigen::Vector3d mean_f_B_ = Eigen::Vector3d::Zero();

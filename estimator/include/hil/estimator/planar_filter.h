@@ -12,15 +12,16 @@
 namespace hil::estimator {
 
 struct PlanarFilterParams {
-  double accel_noise_mps2 = 0.3;      ///< acceleration input noise (1σ, per sample)
-  double heading_gain = 0.05;         ///< fraction of the course−heading difference applied per fix
+  double accel_noise_mps2 = 0.3;  ///< acceleration input noise (1σ, per sample)
+  double heading_gain = 0.05;     ///< fraction of the course−heading difference applied per fix
 };
 
 class PlanarFilter {
  public:
   explicit PlanarFilter(const PlanarFilterParams& p = {}) : params_(p) {}
   /// Starts from a position, velocity and heading (radians counter-clockwise from east).
-  void Initialize(const Eigen::Vector2d& p_m, const Eigen::Vector2d& v_mps, double yaw_rad, double pos_std_m);
+  void Initialize(const Eigen::Vector2d& p_m, const Eigen::Vector2d& v_mps, double yaw_rad,
+                  double pos_std_m);
   /// One IMU interval: body forward/left acceleration (m/s²) and yaw rate (rad/s).
   void Predict(double accel_fwd_mps2, double accel_left_mps2, double yaw_rate_radps, double dt_s);
   /// GNSS position (m) with 1σ per axis; optional velocity.

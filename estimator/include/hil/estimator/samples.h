@@ -1,11 +1,12 @@
 #pragma once
 /// @file
 /// The estimator core's inputs as value types, time-stamped on one time base (GPS nanoseconds,
-/// time_types.h), already mapped from each device's own clock by the drivers. Frames: N = ENU at the
-/// filter origin, B = body FLU (x forward, y left, z up).
+/// time_types.h), already mapped from each device's own clock by the drivers. Frames: N = ENU at
+/// the filter origin, B = body FLU (x forward, y left, z up).
+
+#include <cstdint>
 
 #include <Eigen/Core>
-#include <cstdint>
 
 #include "hil/estimator/geodesy.h"
 #include "hil/estimator/time_types.h"
@@ -14,30 +15,30 @@ namespace hil::estimator {
 
 /// One IMU interval: increments over (t − dt, t].
 struct ImuSample {
-  GpsNs t = 0;                                                   ///< end of the interval
-  double dt_s = 0;                                               ///< interval length
-  Eigen::Vector3d delta_angle_B_rad = Eigen::Vector3d::Zero();   ///< ∫ ω_IB_B dt
-  Eigen::Vector3d delta_velocity_B_mps = Eigen::Vector3d::Zero();///< ∫ f_B dt
+  GpsNs t = 0;                                                     ///< end of the interval
+  double dt_s = 0;                                                 ///< interval length
+  Eigen::Vector3d delta_angle_B_rad = Eigen::Vector3d::Zero();     ///< ∫ ω_IB_B dt
+  Eigen::Vector3d delta_velocity_B_mps = Eigen::Vector3d::Zero();  ///< ∫ f_B dt
 };
 
 /// One GNSS fix of the antenna, time of validity t (the receiver's measurement epoch).
 struct GnssSample {
   GpsNs t = 0;
-  Lla position;                                                  ///< antenna, WGS-84
-  Eigen::Vector3d pos_std_enu_m{1.0, 1.0, 2.0};                  ///< 1σ per ENU axis
+  Lla position;                                  ///< antenna, WGS-84
+  Eigen::Vector3d pos_std_enu_m{1.0, 1.0, 2.0};  ///< 1σ per ENU axis
   bool has_velocity = false;
-  Eigen::Vector3d vel_enu_mps = Eigen::Vector3d::Zero();         ///< antenna velocity
+  Eigen::Vector3d vel_enu_mps = Eigen::Vector3d::Zero();  ///< antenna velocity
   Eigen::Vector3d vel_std_enu_mps{0.2, 0.2, 0.4};
   int num_sv = 0;
-  int fix_quality = 1;                                           ///< 0 none, 1 GPS, 2 DGPS, 4/5 RTK
-  double hdop = 0;                                               ///< receiver's HDOP (0: not reported)
-  int antenna = 0;                                               ///< receiver index (multi-receiver)
+  int fix_quality = 1;  ///< 0 none, 1 GPS, 2 DGPS, 4/5 RTK
+  double hdop = 0;      ///< receiver's HDOP (0: not reported)
+  int antenna = 0;      ///< receiver index (multi-receiver)
 };
 
 /// A magnetometer heading (already tilt-compensated and declination-corrected).
 struct HeadingSample {
   GpsNs t = 0;
-  double yaw_deg = 0;        ///< clockwise from true north
+  double yaw_deg = 0;  ///< clockwise from true north
   double std_deg = 5.0;
 };
 

@@ -35,9 +35,9 @@ struct SerialMessage {
 /// One CAN frame as the device puts it on the bus at `t`.
 struct CanFrame {
   Time t{};
-  std::uint32_t id = 0;      ///< 11- or 29-bit identifier (without flags)
+  std::uint32_t id = 0;  ///< 11- or 29-bit identifier (without flags)
   bool extended = true;
-  std::uint8_t len = 0;      ///< data length, 0–8 (classic) or up to 64 (FD)
+  std::uint8_t len = 0;  ///< data length, 0–8 (classic) or up to 64 (FD)
   bool fd = false;
   std::array<std::uint8_t, 64> data{};
 };

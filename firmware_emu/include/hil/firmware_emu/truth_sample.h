@@ -27,16 +27,16 @@ inline constexpr double kStandardGravity_mps2 = 9.80665;
 
 /// The true vehicle state at one instant.
 struct TruthSample {
-  Time t{};                               ///< scenario time
-  double lat_deg = 0, lon_deg = 0;        ///< geodetic WGS-84 of the reference point
-  double height_m = 0;                    ///< ellipsoidal height of the reference point
-  Eigen::Vector3d p_NB_N_m = Eigen::Vector3d::Zero();      ///< local ENU position
-  Eigen::Vector3d p_EB_E_m = Eigen::Vector3d::Zero();      ///< ECEF position
-  Eigen::Vector3d v_NB_N_mps = Eigen::Vector3d::Zero();    ///< velocity w.r.t. the ground, ENU
-  Eigen::Vector3d a_NB_N_mps2 = Eigen::Vector3d::Zero();   ///< acceleration w.r.t. the ground, ENU
+  Time t{};                         ///< scenario time
+  double lat_deg = 0, lon_deg = 0;  ///< geodetic WGS-84 of the reference point
+  double height_m = 0;              ///< ellipsoidal height of the reference point
+  Eigen::Vector3d p_NB_N_m = Eigen::Vector3d::Zero();     ///< local ENU position
+  Eigen::Vector3d p_EB_E_m = Eigen::Vector3d::Zero();     ///< ECEF position
+  Eigen::Vector3d v_NB_N_mps = Eigen::Vector3d::Zero();   ///< velocity w.r.t. the ground, ENU
+  Eigen::Vector3d a_NB_N_mps2 = Eigen::Vector3d::Zero();  ///< acceleration w.r.t. the ground, ENU
   Eigen::Quaterniond q_NB = Eigen::Quaterniond::Identity();  ///< attitude, body FLU → ENU
-  Eigen::Vector3d w_NB_B_radps = Eigen::Vector3d::Zero();  ///< angular rate w.r.t. the ground
-  Eigen::Vector3d w_IB_B_radps = Eigen::Vector3d::Zero();  ///< inertial angular rate (gyro truth)
+  Eigen::Vector3d w_NB_B_radps = Eigen::Vector3d::Zero();    ///< angular rate w.r.t. the ground
+  Eigen::Vector3d w_IB_B_radps = Eigen::Vector3d::Zero();    ///< inertial angular rate (gyro truth)
   Eigen::Vector3d alpha_NB_B_radps2 = Eigen::Vector3d::Zero();  ///< angular acceleration
   /// Specific force at the reference point in B (what an ideal accelerometer there measures):
   /// f = R_BN (a + 2 Ω_IE × v − g), gravity included (normal gravity, which contains the
@@ -44,14 +44,14 @@ struct TruthSample {
   /// on z when level and at rest.
   Eigen::Vector3d f_B_mps2 = Eigen::Vector3d::Zero();
   Eigen::Vector3d gravity_N_mps2{0, 0, -kStandardGravity_mps2};  ///< local gravity vector
-  double speed_mps = 0;          ///< horizontal forward speed of the reference point (the model's v)
-  double steer_rad = 0;          ///< front-wheel steering angle (bicycle models), left positive
+  double speed_mps = 0;  ///< horizontal forward speed of the reference point (the model's v)
+  double steer_rad = 0;  ///< front-wheel steering angle (bicycle models), left positive
   /// Rear (bicycle) or drive (differential) wheel ground speeds: v ∓ ψ̇ · track / 2.
   double wheel_speed_left_mps = 0, wheel_speed_right_mps = 0;
-  double cross_track_m = 0;      ///< signed distance to the planned path, left positive
-  double along_track_m = 0;      ///< arc length of the nearest planned-path point from its start
-  double speed_cmd_mps = 0;      ///< forward speed commanded by the guidance (held between updates)
-  double steer_cmd_rad = 0;      ///< steering angle commanded by the guidance (bicycle models)
+  double cross_track_m = 0;  ///< signed distance to the planned path, left positive
+  double along_track_m = 0;  ///< arc length of the nearest planned-path point from its start
+  double speed_cmd_mps = 0;  ///< forward speed commanded by the guidance (held between updates)
+  double steer_cmd_rad = 0;  ///< steering angle commanded by the guidance (bicycle models)
 };
 
 }  // namespace hil

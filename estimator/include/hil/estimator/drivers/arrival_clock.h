@@ -6,8 +6,8 @@
 /// the MCU's queueing latency = the GPS second of the pulse edge). Only differences of host times
 /// between a reference and a sample are used: the host clock's offset from GPS time and its rate
 /// (any positive rate, so a scaled-time run maps as well) are estimated, never trusted.
-/// `PeriodicSampleTimer` then removes arrival jitter from a periodic stream (an alpha-beta tracker of
-/// the sample instants and the period, with skipped samples bridged).
+/// `PeriodicSampleTimer` then removes arrival jitter from a periodic stream (an alpha-beta tracker
+/// of the sample instants and the period, with skipped samples bridged).
 
 #include <cstdint>
 #include <optional>
@@ -43,7 +43,8 @@ class ArrivalClock {
 class PeriodicSampleTimer {
  public:
   /// `max_gap_s`: a measured instant further than this from the previous one restarts the tracker.
-  explicit PeriodicSampleTimer(double max_gap_s = 0.5) : max_gap_ns_(static_cast<std::int64_t>(max_gap_s * 1e9)) {}
+  explicit PeriodicSampleTimer(double max_gap_s = 0.5)
+      : max_gap_ns_(static_cast<std::int64_t>(max_gap_s * 1e9)) {}
   /// The smoothed instant of a sample measured at `measured`.
   GpsNs Add(GpsNs measured);
   /// Current period estimate in ns (0 until two samples are seen).
@@ -55,7 +56,7 @@ class PeriodicSampleTimer {
   std::int64_t max_gap_ns_;
   bool have_ = false;
   GpsNs t_ = 0;
-  double frac_ns_ = 0;       // sub-ns part of the smoothed instant
+  double frac_ns_ = 0;  // sub-ns part of the smoothed instant
   double period_ns_ = 0;
   std::uint64_t restarts_ = 0;
 };

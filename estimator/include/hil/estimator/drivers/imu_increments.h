@@ -5,9 +5,10 @@
 /// wants Δθ and Δv over each interval. The trapezoid rule over consecutive samples gives them; an
 /// interval that is not positive or longer than `max_gap_s` is dropped and restarts the sequence.
 
-#include <Eigen/Core>
 #include <cstdint>
 #include <optional>
+
+#include <Eigen/Core>
 
 #include "hil/estimator/samples.h"
 
@@ -20,7 +21,8 @@ class ImuIncrements {
   /// The increment from the previous sample to this one (none for the first sample or after a
   /// gap). `dt_s` is the interval by the sensor's own clock when the caller has one (MCU ticks);
   /// otherwise it is t − t_previous.
-  std::optional<ImuSample> Add(GpsNs t, const Eigen::Vector3d& w_B_radps, const Eigen::Vector3d& f_B_mps2,
+  std::optional<ImuSample> Add(GpsNs t, const Eigen::Vector3d& w_B_radps,
+                               const Eigen::Vector3d& f_B_mps2,
                                std::optional<double> dt_s = std::nullopt);
   /// Forgets the previous sample (a reset, an unusable sample).
   void Restart() { have_prev_ = false; }

@@ -16,7 +16,12 @@ namespace hil::estimator::drivers {
 
 /// One decoded frame; the payload fields of its type are filled.
 struct McuFrame {
-  enum class Type : std::uint8_t { kImu = 1, kMag = 2, kTimePulse = 3, kStatus = 4 } type = Type::kImu;
+  enum class Type : std::uint8_t {
+    kImu = 1,
+    kMag = 2,
+    kTimePulse = 3,
+    kStatus = 4
+  } type = Type::kImu;
   std::uint16_t sequence = 0;
   std::uint32_t tick = 0;
   std::array<std::int16_t, 3> accel_raw{}, gyro_raw{}, mag_raw{};

@@ -1,15 +1,16 @@
 #pragma once
 /// @file
 /// Turns decoded MCU frames into estimator samples on GPS time: STATUS gives the LSB scales (IMU
-/// frames before the first STATUS are counted and dropped), TIME_PULSE feeds the ClockSync, and each
-/// IMU_SAMPLE becomes an ImuSample whose interval runs from the previous sample (trapezoidal
+/// frames before the first STATUS are counted and dropped), TIME_PULSE feeds the ClockSync, and
+/// each IMU_SAMPLE becomes an ImuSample whose interval runs from the previous sample (trapezoidal
 /// increments of the sampled rates). Samples before the first valid time pulse, and across a gap
-/// longer than `max_gap_s`, are dropped (the latter restarts the interval). MCU resets (a STATUS with
-/// sequence 0) restart the clock mapping.
+/// longer than `max_gap_s`, are dropped (the latter restarts the interval). MCU resets (a STATUS
+/// with sequence 0) restart the clock mapping.
 
-#include <Eigen/Core>
 #include <cstdint>
 #include <optional>
+
+#include <Eigen/Core>
 
 #include "hil/estimator/clock_sync.h"
 #include "hil/estimator/drivers/imu_increments.h"

@@ -2,7 +2,8 @@
 /// @file
 /// Tolerant NMEA 0183 decoder for navd: accepts bytes in arbitrary pieces (split reads), skips
 /// garbage and binary frames between sentences, verifies checksums (bad ones are counted and
-/// dropped), and decodes the sentences navd uses (GGA, RMC) into value types. Never throws on input.
+/// dropped), and decodes the sentences navd uses (GGA, RMC) into value types. Never throws on
+/// input.
 
 #include <cstdint>
 #include <functional>
@@ -18,12 +19,12 @@ struct NmeaFix {
   std::optional<std::int64_t> utc_time_of_day_ns;  ///< hhmmss.ss as nanoseconds since midnight
   std::optional<int> day, month, year;             ///< RMC date (year with century)
   bool valid = false;                              ///< GGA quality > 0, or RMC status 'A'
-  int quality = 0;                                 ///< GGA fix quality (0 invalid, 1 GPS, 2 DGPS, 4 RTK…)
+  int quality = 0;  ///< GGA fix quality (0 invalid, 1 GPS, 2 DGPS, 4 RTK…)
   std::optional<double> lat_deg, lon_deg;
   std::optional<double> msl_altitude_m, geoid_separation_m;
   std::optional<double> hdop;
   int num_sv = 0;
-  std::optional<double> speed_mps, course_deg;     ///< RMC
+  std::optional<double> speed_mps, course_deg;  ///< RMC
 };
 
 /// Counters a host can report as health.

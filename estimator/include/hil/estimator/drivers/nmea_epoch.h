@@ -12,7 +12,7 @@ namespace hil::estimator::drivers {
 
 /// A GNSS position/velocity measurement from NMEA, time-stamped by the receiver.
 struct NmeaMeasurement {
-  std::int64_t tov_unix_ns = 0;  ///< epoch time, UTC
+  std::int64_t tov_unix_ns = 0;                   ///< epoch time, UTC
   double lat_deg = 0, lon_deg = 0, height_m = 0;  ///< height above the ellipsoid
   std::optional<double> speed_mps, course_deg;
   std::optional<double> hdop;

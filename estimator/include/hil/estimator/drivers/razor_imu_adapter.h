@@ -7,9 +7,10 @@
 /// the map exists, or across a gap longer than `max_gap_s`, are counted and dropped. This is the
 /// best a host can do with the stock firmware; the binary protocol or CAN (time pulse) are exact.
 
-#include <Eigen/Core>
 #include <cstdint>
 #include <optional>
+
+#include <Eigen/Core>
 
 #include "hil/estimator/drivers/arrival_clock.h"
 #include "hil/estimator/drivers/imu_increments.h"
@@ -24,8 +25,10 @@ struct RazorAdapterStats {
 
 class RazorImuAdapter {
  public:
-  explicit RazorImuAdapter(RazorScales scales = {}, double max_gap_s = 0.5) : scales_(scales), timer_(max_gap_s), increments_(max_gap_s) {}
-  /// A GNSS fix with time of validity `tov` whose last byte arrived at `host_ns`, `latency_s` after `tov`.
+  explicit RazorImuAdapter(RazorScales scales = {}, double max_gap_s = 0.5)
+      : scales_(scales), timer_(max_gap_s), increments_(max_gap_s) {}
+  /// A GNSS fix with time of validity `tov` whose last byte arrived at `host_ns`, `latency_s` after
+  /// `tov`.
   void AddGnssArrival(std::int64_t host_ns, GpsNs tov, double latency_s);
   /// One line received at `host_ns`; an IMU sample when it completes an interval.
   std::optional<ImuSample> Add(const RazorTextSample& line, std::int64_t host_ns);

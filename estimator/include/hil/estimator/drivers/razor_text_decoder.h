@@ -8,20 +8,21 @@
 /// a line that is malformed, out of range, too long or cut by a new start is counted and dropped.
 /// No allocation; never throws on input. The lines carry no time: the caller stamps them.
 
-#include <Eigen/Core>
 #include <array>
 #include <cstdint>
 #include <functional>
 #include <string_view>
+
+#include <Eigen/Core>
 
 namespace hil::estimator::drivers {
 
 /// One decoded line.
 struct RazorTextSample {
   enum class Format : std::uint8_t { kRaw, kV19 } format = Format::kRaw;
-  std::array<int, 3> accel_counts{};   ///< ADXL345, −512 … 511
-  std::array<int, 3> gyro_adc{};       ///< 10-bit ADC, 0 … 1023
-  std::array<int, 3> mag_counts{};     ///< HMC5843, −4096 … 2047
+  std::array<int, 3> accel_counts{};  ///< ADXL345, −512 … 511
+  std::array<int, 3> gyro_adc{};      ///< 10-bit ADC, 0 … 1023
+  std::array<int, 3> mag_counts{};    ///< HMC5843, −4096 … 2047
 };
 
 /// Conversion to engineering units (defaults: the stock board, razor_text_formats.md).

@@ -22,9 +22,9 @@ namespace hil::estimator::drivers {
 /// One CFG command and what became of it.
 struct UbxCommand {
   enum class Result { kPending, kAcked, kNaked, kTimedOut };
-  std::string name;         ///< e.g. "CFG-MSG NAV-POSLLH 1"
+  std::string name;  ///< e.g. "CFG-MSG NAV-POSLLH 1"
   std::uint8_t cls = 0, id = 0;
-  std::string frame;        ///< the complete UBX frame to send
+  std::string frame;  ///< the complete UBX frame to send
   Result result = Result::kPending;
   int attempts = 0;
 };
@@ -49,8 +49,8 @@ class UbxConfigurator {
   /// @param max_attempts sends per command before it is given up as timed out
   /// The default timeout covers an ACK queued behind a whole epoch of NMEA at 9600 baud; a shorter
   /// one resends too early, and u-blox ACKs name only the class and id (every CFG-MSG looks alike).
-  explicit UbxConfigurator(std::vector<UbxCommand> commands, std::int64_t timeout_ns = 1'500'000'000,
-                           int max_attempts = 3);
+  explicit UbxConfigurator(std::vector<UbxCommand> commands,
+                           std::int64_t timeout_ns = 1'500'000'000, int max_attempts = 3);
 
   /// Bytes to write now (the current command, first send or retry), if any.
   std::optional<std::string> Poll(std::int64_t now_ns);

@@ -34,7 +34,8 @@ struct UbxMessage {
 };
 
 struct UbxDecoderStats {
-  std::uint64_t frames_ok = 0, bad_checksum = 0, overlong = 0, unsupported = 0, garbage_bytes = 0, acks = 0, naks = 0;
+  std::uint64_t frames_ok = 0, bad_checksum = 0, overlong = 0, unsupported = 0, garbage_bytes = 0,
+                acks = 0, naks = 0;
 };
 
 class UbxDecoder {
@@ -44,7 +45,8 @@ class UbxDecoder {
   void Feed(std::string_view bytes);
   const UbxDecoderStats& stats() const { return stats_; }
   /// Builds a frame (sync, header, payload, checksum), e.g. for CFG commands.
-  static std::size_t Encode(std::uint8_t cls, std::uint8_t id, std::string_view payload, char* out, std::size_t cap);
+  static std::size_t Encode(std::uint8_t cls, std::uint8_t id, std::string_view payload, char* out,
+                            std::size_t cap);
 
  private:
   void Scan();
@@ -57,7 +59,8 @@ class UbxDecoder {
 };
 
 /// Joins POSLLH, VELNED and SOL of one epoch (same iTOW, any order) into a GnssSample on GPS time.
-/// The epoch is emitted when all three are present, or, with what it has, when a later epoch starts.
+/// The epoch is emitted when all three are present, or, with what it has, when a later epoch
+/// starts.
 class UbxEpochAssembler {
  public:
   std::optional<GnssSample> Add(const UbxMessage& m);

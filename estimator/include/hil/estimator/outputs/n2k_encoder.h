@@ -35,13 +35,15 @@ CanFrame EncodePositionRapid(double lat_deg, double lon_deg, std::uint8_t source
 CanFrame EncodeCogSogRapid(std::uint8_t sid, double cog_rad, double sog_mps, std::uint8_t source);
 /// `days_since_1970` and `seconds_of_day` UTC; `method` 0 none, 1 GNSS, 2 DGNSS, 4 RTK fixed,
 /// 5 RTK float, 6 estimated (dead reckoning).
-FastPacket EncodeGnssPosition(std::uint8_t sid, std::uint16_t days_since_1970, double seconds_of_day, double lat_deg,
-                              double lon_deg, double altitude_m, int method, int num_sv, double hdop,
+FastPacket EncodeGnssPosition(std::uint8_t sid, std::uint16_t days_since_1970,
+                              double seconds_of_day, double lat_deg, double lon_deg,
+                              double altitude_m, int method, int num_sv, double hdop,
                               std::uint8_t fast_packet_sequence, std::uint8_t source);
 /// True heading (radians clockwise from north, [0, 2π)).
 CanFrame EncodeVesselHeading(std::uint8_t sid, double heading_rad, std::uint8_t source);
 /// Yaw (clockwise from north), pitch (nose up), roll (right side down), radians.
-CanFrame EncodeAttitude(std::uint8_t sid, double yaw_rad, double pitch_rad, double roll_rad, std::uint8_t source);
+CanFrame EncodeAttitude(std::uint8_t sid, double yaw_rad, double pitch_rad, double roll_rad,
+                        std::uint8_t source);
 
 /// "(secs.micros) IFACE IIIIIIII#HEX\n", the `candump -l` log line.
 std::string CandumpLine(const CanFrame& f, std::int64_t unix_us, const std::string& iface);

@@ -25,33 +25,34 @@ namespace hil::gnss {
 
 /// One satellite as the receiver sees it at an epoch.
 struct SatelliteView {
-  int svid = 0;               ///< UBX numbering: GPS 1–32, SBAS 120–158
+  int svid = 0;  ///< UBX numbering: GPS 1–32, SBAS 120–158
   bool sbas = false;
   double elev_deg = 0, azim_deg = 0;
-  int cno_dbhz = 0;           ///< 0 when not tracked
-  int channel = 255;          ///< 0–15 when assigned to a channel, 255 otherwise
-  bool tracked = false;       ///< code (and carrier) lock
-  bool used = false;          ///< in the navigation solution
-  bool orbit_known = true;    ///< elevation/azimuth known (almanac or ephemeris)
-  int quality = 0;            ///< UBX qualityInd 0–7
-  double pr_res_m = 0;        ///< pseudorange residual (used satellites)
+  int cno_dbhz = 0;         ///< 0 when not tracked
+  int channel = 255;        ///< 0–15 when assigned to a channel, 255 otherwise
+  bool tracked = false;     ///< code (and carrier) lock
+  bool used = false;        ///< in the navigation solution
+  bool orbit_known = true;  ///< elevation/azimuth known (almanac or ephemeris)
+  int quality = 0;          ///< UBX qualityInd 0–7
+  double pr_res_m = 0;      ///< pseudorange residual (used satellites)
   int nmea_id() const { return sbas ? svid - 87 : svid; }  ///< NMEA numbering (SBAS 120 → 33)
 };
 
 /// Dilutions of precision of a satellite geometry.
 struct Dops {
-  double gdop = 99.99, pdop = 99.99, tdop = 99.99, vdop = 99.99, hdop = 99.99, ndop = 99.99, edop = 99.99;
+  double gdop = 99.99, pdop = 99.99, tdop = 99.99, vdop = 99.99, hdop = 99.99, ndop = 99.99,
+         edop = 99.99;
   bool valid = false;  ///< false with fewer than 4 satellites
 };
 
 /// What limits the sky at an epoch (receiver settings and scripted faults).
 struct SkyConditions {
-  double elevation_mask_deg = 5.0;    ///< CFG-NAV5 minElev: satellites below are not used
-  double blocked_below_deg = 0.0;     ///< scripted obstruction: nothing below this is received
-  bool sky_blocked = false;           ///< scripted outage: nothing is received
-  bool sbas_enabled = true;           ///< CFG-SBAS mode bit 0
-  int max_sbas = 3;                   ///< CFG-SBAS maxSBAS: SBAS satellites searched
-  int max_channels = 16;              ///< tracking channels (u-blox 5: 16 for GPS/SBAS, UNVERIFIED)
+  double elevation_mask_deg = 5.0;  ///< CFG-NAV5 minElev: satellites below are not used
+  double blocked_below_deg = 0.0;   ///< scripted obstruction: nothing below this is received
+  bool sky_blocked = false;         ///< scripted outage: nothing is received
+  bool sbas_enabled = true;         ///< CFG-SBAS mode bit 0
+  int max_sbas = 3;                 ///< CFG-SBAS maxSBAS: SBAS satellites searched
+  int max_channels = 16;            ///< tracking channels (u-blox 5: 16 for GPS/SBAS, UNVERIFIED)
 };
 
 class Constellation {

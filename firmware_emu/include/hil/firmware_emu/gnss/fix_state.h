@@ -38,10 +38,10 @@ enum class FixMode : std::uint8_t { k2DOnly = 1, k3DOnly = 2, kAuto = 3 };
 
 struct FixStatus {
   FixType fix_type = FixType::kNoFix;
-  bool time_known = false;   ///< UTC/GPS time valid (NMEA time fields are printed)
-  bool orbit_known = false;  ///< elevation/azimuth of satellites known
-  std::uint32_t ttff_ms = 0; ///< time to first fix of the current start (0 before it)
-  std::uint32_t msss_ms = 0; ///< milliseconds since (re)start
+  bool time_known = false;    ///< UTC/GPS time valid (NMEA time fields are printed)
+  bool orbit_known = false;   ///< elevation/azimuth of satellites known
+  std::uint32_t ttff_ms = 0;  ///< time to first fix of the current start (0 before it)
+  std::uint32_t msss_ms = 0;  ///< milliseconds since (re)start
 };
 
 class FixState {
@@ -57,10 +57,10 @@ class FixState {
   FixStateConfig config_;
   StartKind kind_ = StartKind::kHot;
   Time t_start_{};
-  Time t_fix_allowed_{};     // acquisition ends here
-  Time t_lost_{};            // when the sky went away
-  bool had_fix_ = false;     // a fix since the start
-  bool lost_ = false;        // currently without enough satellites
+  Time t_fix_allowed_{};  // acquisition ends here
+  Time t_lost_{};         // when the sky went away
+  bool had_fix_ = false;  // a fix since the start
+  bool lost_ = false;     // currently without enough satellites
   bool orbit_known_ = false;
   std::uint32_t ttff_ms_ = 0;
 };

@@ -18,8 +18,8 @@
 /// `obstruction` (nothing received below `elevation_deg`: fewer satellites, worse DOP, 2D or no
 /// fix), `step` (position offset `offset_m` ENU while active), `multipath` (extra correlated
 /// error of `sigma_m` per axis while active), `data_gap` (the receiver keeps tracking and its fix
-/// keeps its quality, but none of its periodic output reaches the link: the GNSS data removed from a
-/// recorded run, as paper 004 injected its outages), `overload` (every NMEA sentence and UBX NAV
+/// keeps its quality, but none of its periodic output reaches the link: the GNSS data removed from
+/// a recorded run, as paper 004 injected its outages), `overload` (every NMEA sentence and UBX NAV
 /// message the receiver knows is output each epoch, as after a careless CFG-MSG: at 9600 baud more
 /// bytes than the line carries, so the transmit buffer — the UART queue of the port — overflows and
 /// drops whole messages; `overloaded_epochs()` counts the epochs).
@@ -44,21 +44,28 @@ namespace hil::gnss {
 
 /// One scripted receiver fault, active for start_s ≤ t < end_s (scenario seconds).
 struct GnssFault {
-  enum class Kind { kOutage, kObstruction, kStep, kMultipath, kDataGap, kOverload } kind = Kind::kOutage;
+  enum class Kind {
+    kOutage,
+    kObstruction,
+    kStep,
+    kMultipath,
+    kDataGap,
+    kOverload
+  } kind = Kind::kOutage;
   double start_s = 0, end_s = 0;
-  double elevation_deg = 30.0;                             ///< obstruction
-  Eigen::Vector3d offset_N_m = Eigen::Vector3d::Zero();    ///< step (ENU)
-  double sigma_m = 3.0;                                    ///< multipath
+  double elevation_deg = 30.0;                           ///< obstruction
+  Eigen::Vector3d offset_N_m = Eigen::Vector3d::Zero();  ///< step (ENU)
+  double sigma_m = 3.0;                                  ///< multipath
 };
 
 struct Neo5mConfig {
   std::string name = "gps0";
   std::string profile = "neo-5m";
-  int baud = 0;                 ///< 0: the profile's default
-  double rate_hz = 0;           ///< 0: the profile's default
-  Duration output_lag = std::chrono::milliseconds(100);  ///< epoch → first byte ready
+  int baud = 0;                                             ///< 0: the profile's default
+  double rate_hz = 0;                                       ///< 0: the profile's default
+  Duration output_lag = std::chrono::milliseconds(100);     ///< epoch → first byte ready
   Duration response_delay = std::chrono::milliseconds(10);  ///< host command → reply ready
-  std::int64_t start_unix_ns = 0;  ///< UTC of scenario time 0
+  std::int64_t start_unix_ns = 0;                           ///< UTC of scenario time 0
   std::optional<ReceiverModelConfig> model;  ///< errors; the profile's grade when empty
   StartKind start = StartKind::kHot;
   std::vector<GnssFault> faults;
@@ -109,7 +116,7 @@ class Neo5mDevice final : public Device {
   bool stopped_ = false;
   std::uint64_t epoch_count_ = 0;
   bool position_known_ = false;
-  Time t_fix_since_{};           // start of the current uninterrupted fix (RTK convergence)
+  Time t_fix_since_{};  // start of the current uninterrupted fix (RTK convergence)
   bool had_fix_last_ = false;
   double clk_bias_ns_ = 0, clk_drift_nsps_ = 0;
   NavEpoch last_epoch_;

@@ -16,9 +16,9 @@ inline constexpr double kCourseMinSpeed_mps = 0.5 / 3.6;
 
 /// Number formats of a profile. The defaults are the u-blox 5 firmware-6 formats.
 struct NmeaFormat {
-  int minute_decimals = 5;      ///< lat/lon minutes
-  bool mode_indicator = true;   ///< NMEA 2.3 mode field in RMC, VTG, GLL (CFG-NMEA version 0x23)
-  bool diff_station = false;    ///< GGA age/station filled when the fix is differential (RTK)
+  int minute_decimals = 5;     ///< lat/lon minutes
+  bool mode_indicator = true;  ///< NMEA 2.3 mode field in RMC, VTG, GLL (CFG-NMEA version 0x23)
+  bool diff_station = false;   ///< GGA age/station filled when the fix is differential (RTK)
 };
 
 /// `$GPRMC` — recommended minimum data. The date is kept without a fix once time is known.

@@ -36,21 +36,22 @@ namespace hil::gnss {
 
 /// Error and reporting parameters of one receiver; constant for a run.
 struct ReceiverModelConfig {
-  double horizontal_sigma_m = 0.35;   ///< per-axis standard deviation of east/north error at hdop_ref
-  double vertical_sigma_m = 0.8;      ///< standard deviation of the up error at vdop_ref
-  double correlation_time_s = 4.5;    ///< Gauss–Markov correlation time of position errors
-  double velocity_sigma_mps = 0.03;   ///< white velocity noise per axis
-  double common_fraction = 0.46;      ///< share of the position error variance common to all receivers
-  double geoid_separation_m = -20.0;  ///< geoid height N at the site (MSL = ellipsoid − N)
+  double horizontal_sigma_m =
+      0.35;                         ///< per-axis standard deviation of east/north error at hdop_ref
+  double vertical_sigma_m = 0.8;    ///< standard deviation of the up error at vdop_ref
+  double correlation_time_s = 4.5;  ///< Gauss–Markov correlation time of position errors
+  double velocity_sigma_mps = 0.03;  ///< white velocity noise per axis
+  double common_fraction = 0.46;  ///< share of the position error variance common to all receivers
+  double geoid_separation_m = -20.0;      ///< geoid height N at the site (MSL = ellipsoid − N)
   double hdop_ref = 1.0, vdop_ref = 1.6;  ///< DOPs at which the sigmas above hold
   Eigen::Vector3d p_BA_B_m = Eigen::Vector3d::Zero();  ///< antenna lever arm from the body origin
 };
 
 /// Per-epoch inputs from the rest of the receiver (geometry) and the fault timeline.
 struct ErrorInputs {
-  double h_scale = 1.0, v_scale = 1.0;                     ///< hdop/hdop_ref, vdop/vdop_ref
-  Eigen::Vector3d offset_N_m = Eigen::Vector3d::Zero();    ///< position step glitch (ENU)
-  double multipath_sigma_m = 0.0;                          ///< burst: extra error sigma per axis
+  double h_scale = 1.0, v_scale = 1.0;                   ///< hdop/hdop_ref, vdop/vdop_ref
+  Eigen::Vector3d offset_N_m = Eigen::Vector3d::Zero();  ///< position step glitch (ENU)
+  double multipath_sigma_m = 0.0;                        ///< burst: extra error sigma per axis
 };
 
 /// Receiver error model; one instance per emulated receiver, deterministic for its seeds.
@@ -58,26 +59,29 @@ class ReceiverModel {
  public:
   /// @param seed this receiver's own error stream
   /// @param common_seed the scenario-wide stream shared by all receivers (0: seed + 1)
-  ReceiverModel(const ReceiverModelConfig& config, std::uint64_t seed, std::uint64_t common_seed = 0);
+  ReceiverModel(const ReceiverModelConfig& config, std::uint64_t seed,
+                std::uint64_t common_seed = 0);
 
   /// Produces the fix of the epoch at `truth.t`, advancing the error processes by `dt_s`
   /// (the time since the previous call). `unix_ns` is the epoch's UTC instant. The fix type,
   /// DOPs and satellite count are left for the caller (they come from the constellation).
-  GnssFix Calc(const TruthSample& truth, std::int64_t unix_ns, double dt_s, const ErrorInputs& in = {});
+  GnssFix Calc(const TruthSample& truth, std::int64_t unix_ns, double dt_s,
+               const ErrorInputs& in = {});
 
   /// Current position error of the antenna in ENU (m), for diagnostics and tests.
   const Eigen::Vector3d& position_error_N_m() const { return err_N_m_; }
   const ReceiverModelConfig& config() const { return config_; }
 
  private:
-  void Advance(Eigen::Vector3d& state, std::mt19937_64& rng, std::normal_distribution<double>& normal, double phi,
-               bool first);
+  void Advance(Eigen::Vector3d& state, std::mt19937_64& rng,
+               std::normal_distribution<double>& normal, double phi, bool first);
   ReceiverModelConfig config_;
   std::mt19937_64 rng_, common_rng_;
   // one distribution per engine: a normal distribution caches its second variate, so sharing one
   // between the engines would leak the common stream into this receiver's own stream
   std::normal_distribution<double> normal_{0.0, 1.0}, common_normal_{0.0, 1.0};
-  Eigen::Vector3d own_ = Eigen::Vector3d::Zero(), common_ = Eigen::Vector3d::Zero(), burst_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d own_ = Eigen::Vector3d::Zero(), common_ = Eigen::Vector3d::Zero(),
+                  burst_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d err_N_m_ = Eigen::Vector3d::Zero();
   bool started_ = false;
 };

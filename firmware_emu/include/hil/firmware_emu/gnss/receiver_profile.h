@@ -28,12 +28,12 @@ struct ReceiverProfile {
   double rate_hz = 1.0;
   double max_rate_hz = 4.0;
   std::map<std::uint8_t, std::uint8_t> nmea_rates;  ///< class-0xF0 id → rate (per epoch)
-  std::vector<std::string> banner;                   ///< $GPTXT lines after start/reset
-  std::string sw_version, hw_version;                ///< MON-VER
+  std::vector<std::string> banner;                  ///< $GPTXT lines after start/reset
+  std::string sw_version, hw_version;               ///< MON-VER
   std::vector<std::string> version_extensions;
   nmea::NmeaFormat format;
   FixStateConfig fix_state;
-  ReceiverModelConfig model;                         ///< default error grade
+  ReceiverModelConfig model;  ///< default error grade
   bool rtk = false;
   double rtk_fixed_after_s = 20.0;
   double rtk_float_sigma_m = 0.15;

@@ -68,7 +68,7 @@ struct ReceiverSettings {
 /// What a handled command asks of the receiver beyond its replies.
 struct CfgEffects {
   std::optional<StartKind> restart;  ///< CFG-RST: restart navigation with this start kind
-  bool hardware_reset = false;       ///< CFG-RST: controlled/HW reset (configuration from BBR, banner)
+  bool hardware_reset = false;  ///< CFG-RST: controlled/HW reset (configuration from BBR, banner)
   bool gps_stop = false, gps_start = false;
 };
 
@@ -84,7 +84,8 @@ class UbxCfgSession {
   UbxCfgSession(const ReceiverSettings& defaults, double max_rate_hz);
 
   /// Handles CFG message `id` arriving on port `port_id`; returns its replies in order.
-  std::vector<Reply> Handle(std::uint8_t id, const std::vector<std::uint8_t>& payload, int port_id, CfgEffects& fx);
+  std::vector<Reply> Handle(std::uint8_t id, const std::vector<std::uint8_t>& payload, int port_id,
+                            CfgEffects& fx);
   /// Handles `$PUBX,40` / `$PUBX,41` (body without `$` and checksum). No reply (NMEA commands are
   /// not acknowledged). Returns false when the sentence is malformed or invalid.
   bool HandlePubxSet(const std::string& body);

@@ -22,8 +22,16 @@ inline constexpr std::size_t kMaxInputPayload = 4096;
 
 /// Message classes of a u-blox 5.
 enum Class : std::uint8_t {
-  kNav = 0x01, kRxm = 0x02, kInf = 0x04, kAck = 0x05, kCfg = 0x06, kMon = 0x0A, kAid = 0x0B, kTim = 0x0D,
-  kNmeaStd = 0xF0, kNmeaPubx = 0xF1
+  kNav = 0x01,
+  kRxm = 0x02,
+  kInf = 0x04,
+  kAck = 0x05,
+  kCfg = 0x06,
+  kMon = 0x0A,
+  kAid = 0x0B,
+  kTim = 0x0D,
+  kNmeaStd = 0xF0,
+  kNmeaPubx = 0xF1
 };
 
 /// Appends little-endian fields to a payload.
@@ -65,7 +73,9 @@ class Reader {
 std::pair<std::uint8_t, std::uint8_t> Checksum(std::string_view bytes);
 /// A complete frame as a byte string.
 std::string Frame(std::uint8_t cls, std::uint8_t id, const std::vector<std::uint8_t>& payload);
-inline std::string Frame(std::uint8_t cls, std::uint8_t id, const Writer& w) { return Frame(cls, id, w.bytes()); }
+inline std::string Frame(std::uint8_t cls, std::uint8_t id, const Writer& w) {
+  return Frame(cls, id, w.bytes());
+}
 
 /// One unit of host input: a checksum-valid UBX frame or a checksum-valid NMEA sentence.
 struct InputMessage {

@@ -17,8 +17,16 @@ namespace hil::gnss::ubx {
 
 /// Message ids of the NAV class.
 enum NavId : std::uint8_t {
-  kNavPosEcef = 0x01, kNavPosLlh = 0x02, kNavStatus = 0x03, kNavDop = 0x04, kNavSol = 0x06,
-  kNavVelEcef = 0x11, kNavVelNed = 0x12, kNavTimeGps = 0x20, kNavTimeUtc = 0x21, kNavClock = 0x22,
+  kNavPosEcef = 0x01,
+  kNavPosLlh = 0x02,
+  kNavStatus = 0x03,
+  kNavDop = 0x04,
+  kNavSol = 0x06,
+  kNavVelEcef = 0x11,
+  kNavVelNed = 0x12,
+  kNavTimeGps = 0x20,
+  kNavTimeUtc = 0x21,
+  kNavClock = 0x22,
   kNavSvInfo = 0x30
 };
 enum MonId : std::uint8_t { kMonVer = 0x04, kMonHw = 0x09 };
@@ -26,9 +34,9 @@ enum AckId : std::uint8_t { kAckNak = 0x00, kAckAck = 0x01 };
 
 /// The NAV messages in the order the emulator sends them within an epoch (by id; the u-blox 5
 /// order is UNVERIFIED, a u-blox 7 capture shows the messages grouped by class).
-inline constexpr std::uint8_t kNavOutputOrder[] = {kNavPosEcef, kNavPosLlh, kNavStatus, kNavDop,
-                                                   kNavSol, kNavVelEcef, kNavVelNed, kNavTimeGps,
-                                                   kNavTimeUtc, kNavClock, kNavSvInfo};
+inline constexpr std::uint8_t kNavOutputOrder[] = {
+    kNavPosEcef, kNavPosLlh,  kNavStatus,  kNavDop,   kNavSol,   kNavVelEcef,
+    kNavVelNed,  kNavTimeGps, kNavTimeUtc, kNavClock, kNavSvInfo};
 
 /// Name for diagnostics, e.g. "UBX-NAV-SOL"; "UBX-xx-yy" for unnamed ids.
 std::string MessageName(std::uint8_t cls, std::uint8_t id);

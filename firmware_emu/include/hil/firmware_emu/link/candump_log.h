@@ -10,12 +10,14 @@
 /// the left to a common width; hexadecimal digits are upper case. Frame strings:
 ///  - classic: `123#DEADBEEF` (3 hex digits = 11-bit id), `12345678#01` (8 digits = 29-bit id);
 ///  - remote request: `123#R`, or `123#R5` with a requested length 1–8;
-///  - error frame: 8 digits with CAN_ERR_FLAG 0x20000000 set in the id, e.g. `20000004#0001000000000000`;
+///  - error frame: 8 digits with CAN_ERR_FLAG 0x20000000 set in the id, e.g.
+///  `20000004#0001000000000000`;
 ///  - CAN FD: `123##1AABB` (after `##` one hex digit of flags: BRS = 1, ESI = 2).
 /// The reader is tolerant as canplayer is: lines that do not start with '(' are ignored (e.g.
 /// candump's `DROPCOUNT:` lines), data bytes may be separated by '.', lower-case hex is accepted,
-/// a fraction of other than 6 digits is read as a decimal fraction (candump -N writes 9), a trailing
-/// ` T`/` R` direction flag (candump -x) is accepted, and `_<dlc>` length codes are skipped.
+/// a fraction of other than 6 digits is read as a decimal fraction (candump -N writes 9), a
+/// trailing ` T`/` R` direction flag (candump -x) is accepted, and `_<dlc>` length codes are
+/// skipped.
 
 #include <cstdint>
 #include <fstream>
@@ -51,8 +53,8 @@ std::string FormatCandumpLine(const CandumpRecord& r, int iface_width = 0);
 /// Parses one log line; nothing for a line canplayer would skip or cannot read.
 std::optional<CandumpRecord> ParseCandumpLine(std::string_view line);
 
-/// Writes a `candump -l` compatible log, one line per frame, flushed per line so a crashed run keeps
-/// everything written before.
+/// Writes a `candump -l` compatible log, one line per frame, flushed per line so a crashed run
+/// keeps everything written before.
 class CandumpLogWriter {
  public:
   /// @throws std::runtime_error naming the path when it cannot be created.

@@ -1,9 +1,9 @@
 #pragma once
 /// @file
 /// A pseudo-terminal standing in for a device's serial port. The emulator holds the master side;
-/// the host (estimator, gpsd, a customer's program) opens the slave through a stable symlink such as
-/// `RUN_DIR/ttyGPS`. The slave is put in raw 8N1 mode at the configured baud, but a pty does not pace:
-/// callers write each byte at its UART time themselves (see RealtimePacer).
+/// the host (estimator, gpsd, a customer's program) opens the slave through a stable symlink such
+/// as `RUN_DIR/ttyGPS`. The slave is put in raw 8N1 mode at the configured baud, but a pty does not
+/// pace: callers write each byte at its UART time themselves (see RealtimePacer).
 ///
 /// This and the other transport files are the only ones in firmware_emu that touch descriptors.
 

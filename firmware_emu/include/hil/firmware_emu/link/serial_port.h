@@ -29,9 +29,11 @@ class SerialPort {
 /// Opens the port a scenario link names: an absolute path under /dev is an existing serial device
 /// (TtyPort); anything else is a pty whose symlink is made at `run_dir/link` (PtyPort).
 /// @throws std::runtime_error naming the path.
-std::unique_ptr<SerialPort> OpenSerialLink(const std::string& run_dir, const std::string& link, int baud);
+std::unique_ptr<SerialPort> OpenSerialLink(const std::string& run_dir, const std::string& link,
+                                           int baud);
 
-/// True when `link` names a real device (an absolute /dev path) rather than a pty in the run folder.
+/// True when `link` names a real device (an absolute /dev path) rather than a pty in the run
+/// folder.
 bool IsDevicePath(const std::string& link);
 
 }  // namespace hil::link

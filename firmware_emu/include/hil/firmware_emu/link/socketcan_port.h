@@ -30,26 +30,29 @@ struct ReceivedCanFrame {
 /// Counters of one port.
 struct CanPortStats {
   std::uint64_t frames_sent = 0;
-  std::uint64_t send_failures = 0;      ///< write errors other than a full queue
-  std::uint64_t send_queue_full = 0;    ///< ENOBUFS/EAGAIN: the interface's TX queue was full
-  std::uint64_t frames_received = 0;    ///< data and remote frames (error frames not included)
-  std::uint64_t error_frames = 0;       ///< every error frame
-  std::uint64_t bus_off = 0;            ///< error frames with the bus-off class
-  std::uint64_t bus_errors = 0;         ///< protocol violations, bus errors, missing ACK, transceiver faults
+  std::uint64_t send_failures = 0;    ///< write errors other than a full queue
+  std::uint64_t send_queue_full = 0;  ///< ENOBUFS/EAGAIN: the interface's TX queue was full
+  std::uint64_t frames_received = 0;  ///< data and remote frames (error frames not included)
+  std::uint64_t error_frames = 0;     ///< every error frame
+  std::uint64_t bus_off = 0;          ///< error frames with the bus-off class
+  std::uint64_t bus_errors =
+      0;  ///< protocol violations, bus errors, missing ACK, transceiver faults
   std::uint64_t controller_overflows = 0;  ///< controller RX/TX buffer overflow reports
-  std::uint64_t rx_queue_drops = 0;     ///< frames the socket receive queue dropped (SO_RXQ_OVFL)
+  std::uint64_t rx_queue_drops = 0;  ///< frames the socket receive queue dropped (SO_RXQ_OVFL)
 };
 
 class SocketCanPort {
  public:
   struct Options {
-    bool fd = false;                   ///< ask for CAN FD frames (granted when the MTU allows it)
-    bool receive_own_frames = false;   ///< also receive what this socket sends (CAN_RAW_RECV_OWN_MSGS)
-    bool loopback = true;              ///< other sockets on this host see our frames (CAN_RAW_LOOPBACK)
-    bool error_frames = true;          ///< subscribe to every error class
+    bool fd = false;  ///< ask for CAN FD frames (granted when the MTU allows it)
+    bool receive_own_frames =
+        false;                 ///< also receive what this socket sends (CAN_RAW_RECV_OWN_MSGS)
+    bool loopback = true;      ///< other sockets on this host see our frames (CAN_RAW_LOOPBACK)
+    bool error_frames = true;  ///< subscribe to every error class
     /// receive queue size (SO_RCVBUFFORCE when privileged, else SO_RCVBUF up to the system limit):
     /// the kernel's default (~200 kB, a few thousand frames) overflows when the reader is held up
-    /// for a moment while a sender bursts, e.g. canplayer replaying at 1 ms gaps on a loaded machine
+    /// for a moment while a sender bursts, e.g. canplayer replaying at 1 ms gaps on a loaded
+    /// machine
     int receive_buffer_bytes = 4 << 20;
   };
 

@@ -1,9 +1,9 @@
 #pragma once
 /// @file
 /// A real serial device (`/dev/ttyUSB0`, `/dev/ttyS1`, …) standing in for a pty, so the harness can
-/// drive real hardware or read a real receiver. Opened raw 8N1 at the configured baud; its UART paces
-/// the bytes. A device that goes away (USB unplugged, EIO/ENXIO) is reopened on the next write or
-/// read, so a reset of the peer does not end the run.
+/// drive real hardware or read a real receiver. Opened raw 8N1 at the configured baud; its UART
+/// paces the bytes. A device that goes away (USB unplugged, EIO/ENXIO) is reopened on the next
+/// write or read, so a reset of the peer does not end the run.
 
 #include <string>
 

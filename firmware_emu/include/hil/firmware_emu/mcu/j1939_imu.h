@@ -31,19 +31,19 @@ std::uint32_t J1939Id(const J1939Address& a, std::uint32_t pgn);
 using FiguresOfMerit = std::array<std::uint8_t, 3>;
 
 /// ARI from the inertial rate of I (rad/s): pitch rate −ω_y, roll rate ω_x, yaw rate ω_z.
-CanFrame EncodeAri(Time t, const J1939Address& a, const Eigen::Vector3d& w_I_radps, const FiguresOfMerit& fom,
-                   double latency_s);
+CanFrame EncodeAri(Time t, const J1939Address& a, const Eigen::Vector3d& w_I_radps,
+                   const FiguresOfMerit& fom, double latency_s);
 /// ACCS from the specific force in I (m/s²): lateral f_y, longitudinal f_x, vertical f_z.
-CanFrame EncodeAccs(Time t, const J1939Address& a, const Eigen::Vector3d& f_I_mps2, const FiguresOfMerit& fom,
-                    double latency_s);
+CanFrame EncodeAccs(Time t, const J1939Address& a, const Eigen::Vector3d& f_I_mps2,
+                    const FiguresOfMerit& fom, double latency_s);
 /// SSI2 pitch = atan2(f_x, √(f_y² + f_z²)), roll = atan2(f_y, f_z) from the specific force in I.
-CanFrame EncodeSsi2(Time t, const J1939Address& a, const Eigen::Vector3d& f_I_mps2, std::uint8_t pitch_fom,
-                    std::uint8_t roll_fom, double latency_s);
+CanFrame EncodeSsi2(Time t, const J1939Address& a, const Eigen::Vector3d& f_I_mps2,
+                    std::uint8_t pitch_fom, std::uint8_t roll_fom, double latency_s);
 /// The pitch and roll (degrees) SSI2 reports for a specific force.
 Eigen::Vector2d PitchRollDegFromSpecificForce(const Eigen::Vector3d& f_I_mps2);
 /// HIL_TIME_PULSE: latched tick, GPS time of week (whole s; nullopt-like `valid` = false sends
 /// 0xFFFFF) and the GPS week modulo 4096.
-CanFrame EncodeHilTimePulse(Time t, const J1939Address& a, std::uint32_t tick, bool valid, std::uint32_t tow_s,
-                            int gps_week);
+CanFrame EncodeHilTimePulse(Time t, const J1939Address& a, std::uint32_t tick, bool valid,
+                            std::uint32_t tow_s, int gps_week);
 
 }  // namespace hil::mcu

@@ -22,12 +22,12 @@ enum class SerialFormat {
 };
 
 enum class FaultKind {
-  kDropFrames,     ///< frames queued but lost with `probability` during [start, start + duration)
-  kSequenceJump,   ///< at `start`, the sequence counter advances by `amount` extra
-  kCorruptBytes,   ///< with `probability` per frame, one byte is flipped (the CRC then fails)
-  kStuckSensor,    ///< `sensor` repeats its last counts during [start, start + duration)
-  kReset,          ///< at `start` the MCU resets: silent for `duration_s` (when > 0; else the config's
-                   ///< `reboot_s`), then tick and sequence restart
+  kDropFrames,    ///< frames queued but lost with `probability` during [start, start + duration)
+  kSequenceJump,  ///< at `start`, the sequence counter advances by `amount` extra
+  kCorruptBytes,  ///< with `probability` per frame, one byte is flipped (the CRC then fails)
+  kStuckSensor,   ///< `sensor` repeats its last counts during [start, start + duration)
+  kReset,  ///< at `start` the MCU resets: silent for `duration_s` (when > 0; else the config's
+           ///< `reboot_s`), then tick and sequence restart
 };
 
 /// One entry of the firmware fault timeline.
@@ -36,18 +36,18 @@ struct McuFault {
   double start_s = 0;
   double duration_s = 0;
   double probability = 1.0;
-  int amount = 1;                ///< sequence jump size
-  std::string sensor = "all";    ///< accel | gyro | mag | all (stuck sensor)
+  int amount = 1;              ///< sequence jump size
+  std::string sensor = "all";  ///< accel | gyro | mag | all (stuck sensor)
 };
 
 /// The J1939 output.
 struct CanOutputConfig {
   bool enabled = false;
   J1939Address address;
-  int ari_every = 1;    ///< one ARI per this many IMU samples
+  int ari_every = 1;  ///< one ARI per this many IMU samples
   int accs_every = 1;
   int ssi2_every = 1;
-  bool time_pulse = true;  ///< HIL_TIME_PULSE once per GPS time pulse
+  bool time_pulse = true;    ///< HIL_TIME_PULSE once per GPS time pulse
   double latency_s = 0.001;  ///< sample instant to frame on the bus
 };
 
@@ -56,11 +56,11 @@ struct McuConfig {
   ImuProfile profile = ProfileByName("razor-v13");
   int baud = 57600;
   SerialFormat format = SerialFormat::kBinary;
-  double imu_rate_hz = 10;        ///< default: 10 × the GPS rate of seed 000
+  double imu_rate_hz = 10;  ///< default: 10 × the GPS rate of seed 000
   double mag_rate_hz = 10;
-  double crystal_ppm = 0;         ///< MCU tick rate offset from nominal 1 MHz
-  double mag_oscillator_ppm = 0;  ///< compass output-rate oscillator offset
-  double jitter_us = 0;           ///< interrupt latency of a sample, uniform in [0, jitter]
+  double crystal_ppm = 0;              ///< MCU tick rate offset from nominal 1 MHz
+  double mag_oscillator_ppm = 0;       ///< compass output-rate oscillator offset
+  double jitter_us = 0;                ///< interrupt latency of a sample, uniform in [0, jitter]
   double first_sample_delay_s = 0.01;  ///< boot to first IMU sample
   double output_latency_s = 0.0005;    ///< sample to frame ready for the UART
   double reboot_s = 0.2;               ///< reset to boot
@@ -69,8 +69,8 @@ struct McuConfig {
   BoardMounting mounting;
   MagneticSpec magnetic;
   std::vector<VibrationTone> vibration;
-  double temperature_c = 25;             ///< board temperature at t = 0
-  double temperature_rate_c_per_h = 0;   ///< linear warm-up
+  double temperature_c = 25;            ///< board temperature at t = 0
+  double temperature_rate_c_per_h = 0;  ///< linear warm-up
   CanOutputConfig can;
   std::vector<McuFault> faults;
 };

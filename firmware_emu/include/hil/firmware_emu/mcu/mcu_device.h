@@ -15,8 +15,8 @@
 
 #include <cstdint>
 #include <optional>
-#include <utility>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "hil/firmware_emu/device.h"
@@ -70,7 +70,7 @@ class McuDevice final : public Device {
 
   // state
   bool up_ = true;
-  Time boot_{};                       ///< true time of tick 0
+  Time boot_{};  ///< true time of tick 0
   std::optional<Time> pending_status_;
   std::optional<Time> pending_boot_;
   std::uint64_t imu_index_ = 0;

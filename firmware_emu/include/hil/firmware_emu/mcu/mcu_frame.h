@@ -45,8 +45,8 @@ struct TimePulsePayload {
 };
 /// STATUS payload.
 struct StatusPayload {
-  std::uint8_t reset_cause = 0;   ///< 0 power-on, 1 watchdog, 2 brown-out, 3 external
-  bool pulse_seen = false;        ///< a time pulse in the last 1.5 s
+  std::uint8_t reset_cause = 0;  ///< 0 power-on, 1 watchdog, 2 brown-out, 3 external
+  bool pulse_seen = false;       ///< a time pulse in the last 1.5 s
   std::uint16_t reset_count = 0;
   std::uint32_t tick_hz = kNominalTickHz;
   std::uint32_t imu_period_ticks = 0;
@@ -61,7 +61,8 @@ std::string EncodeFrame(MessageType type, std::uint16_t sequence, std::uint32_t 
                         std::span<const std::uint8_t> payload);
 std::string EncodeImuSample(std::uint16_t sequence, std::uint32_t tick, const ImuSamplePayload& p);
 std::string EncodeMagSample(std::uint16_t sequence, std::uint32_t tick, const MagSamplePayload& p);
-std::string EncodeTimePulse(std::uint16_t sequence, std::uint32_t latched_tick, const TimePulsePayload& p);
+std::string EncodeTimePulse(std::uint16_t sequence, std::uint32_t latched_tick,
+                            const TimePulsePayload& p);
 std::string EncodeStatus(std::uint16_t sequence, std::uint32_t tick, const StatusPayload& p);
 
 }  // namespace hil::mcu

@@ -34,9 +34,9 @@ struct TriadErrorSpec {
   double bias_correlation_time_s = 100;  ///< Gauss–Markov correlation time τc (peak at 1.89 τc)
   double bias_random_walk = 0;           ///< rate random walk K, unit/√s
   Eigen::Vector3d turn_on_bias_sigma = Eigen::Vector3d::Zero();  ///< per power-on, unit (1σ)
-  double scale_factor_sigma_ppm = 0;     ///< per-axis scale factor error (1σ)
-  double misalignment_sigma_rad = 0;     ///< each off-diagonal axis coupling (1σ, non-orthogonal)
-  double bandwidth_hz = 0;               ///< first-order low-pass before sampling; 0 = none
+  double scale_factor_sigma_ppm = 0;  ///< per-axis scale factor error (1σ)
+  double misalignment_sigma_rad = 0;  ///< each off-diagonal axis coupling (1σ, non-orthogonal)
+  double bandwidth_hz = 0;            ///< first-order low-pass before sampling; 0 = none
   double bias_temperature_coeff_per_c = 0;  ///< bias change per °C away from 25 °C, unit/°C
 };
 
@@ -44,9 +44,9 @@ struct TriadErrorSpec {
 /// oversample 1, zero offsets and no conversion noise; the Razor's analog gyros are read through
 /// the 10-bit ADC with an offset and summed over `oversample` conversions.
 struct TriadCountSpec {
-  double count_lsb = 1;        ///< engineering units per sensor/ADC count
-  double range = 1e300;        ///< the sensor saturates at ± this many engineering units
-  int count_min = -32768;      ///< register / ADC limits of one conversion
+  double count_lsb = 1;    ///< engineering units per sensor/ADC count
+  double range = 1e300;    ///< the sensor saturates at ± this many engineering units
+  int count_min = -32768;  ///< register / ADC limits of one conversion
   int count_max = 32767;
   double zero_count = 0;       ///< actual count at zero input (analog sensors: zero-rate level)
   int nominal_zero_count = 0;  ///< count the firmware subtracts per conversion
@@ -73,8 +73,8 @@ struct VibrationTone {
 
 /// A named sensor set (protocol STATUS "sensor profile").
 struct ImuProfile {
-  std::string name;   ///< razor-v13, consumer-mems, industrial-mems, tactical
-  int id = 0;         ///< STATUS profile id
+  std::string name;  ///< razor-v13, consumer-mems, industrial-mems, tactical
+  int id = 0;        ///< STATUS profile id
   TriadSpec accel, gyro, mag;
   int default_baud = 115200;
   double mag_rate_hz = 10;  ///< compass output rate (its own oscillator)

@@ -14,23 +14,24 @@
 
 #include <nlohmann/json_fwd.hpp>
 
-#include "hil/firmware_emu/link/pty_port.h"
 #include "hil/firmware_emu/device.h"
+#include "hil/firmware_emu/link/pty_port.h"
 #include "hil/harness/dut/estimate_reader.h"
-#include "hil/harness/dut/n2k_bus_reader.h"
 #include "hil/harness/dut/estimator_process.h"
+#include "hil/harness/dut/n2k_bus_reader.h"
 
 namespace hil::harness {
 
 class EstimateCollector {
  public:
   /// `nav_pty` (may be null): the pty the estimator writes its solutions into.
-  EstimateCollector(std::unique_ptr<EstimateReader> reader, EstimatorProcess* process, link::PtyPort* nav_pty,
-                    const std::string& raw_path);
+  EstimateCollector(std::unique_ptr<EstimateReader> reader, EstimatorProcess* process,
+                    link::PtyPort* nav_pty, const std::string& raw_path);
 
   /// Output n2k_socketcan: `poll_bus` polls the CAN bus and returns every frame others put on it so
   /// far (the scheduler's list); Poll() decodes the new ones (N2kBusReader) into records.
-  void AttachBus(std::function<const std::vector<CanFrame>&()> poll_bus, std::int64_t start_unix_ns);
+  void AttachBus(std::function<const std::vector<CanFrame>&()> poll_bus,
+                 std::int64_t start_unix_ns);
   /// Takes what arrived since the last call.
   void Poll();
   /// Output n2k_socketcan: frames seen per PGN (empty otherwise).
@@ -44,11 +45,14 @@ class EstimateCollector {
   void set_line_observer(std::function<void(const std::string&)> f) { observer_ = std::move(f); }
   /// For a JSON output format, the observer of each line parsed (parsed once for both the reader
   /// and the observer); then set_line_observer's observer is not called for those lines.
-  void set_json_observer(std::function<void(const nlohmann::json&)> f) { json_observer_ = std::move(f); }
+  void set_json_observer(std::function<void(const nlohmann::json&)> f) {
+    json_observer_ = std::move(f);
+  }
 
  private:
   /// `parsed`: the line already parsed as JSON (EstimatorProcess's reader thread), or null.
-  void Consume(const std::string& line, std::int64_t wall_ns, const nlohmann::json* parsed = nullptr);
+  void Consume(const std::string& line, std::int64_t wall_ns,
+               const nlohmann::json* parsed = nullptr);
   std::unique_ptr<EstimateReader> reader_;
   EstimatorProcess* process_;
   link::PtyPort* nav_pty_;

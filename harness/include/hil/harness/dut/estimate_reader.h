@@ -30,7 +30,8 @@ class EstimateReader {
   /// True for the JSON formats: Line() parses the text, and JsonLine() takes it parsed.
   virtual bool reads_json() const { return false; }
   /// Line() for a line already parsed (the parse result, possibly discarded).
-  virtual std::optional<EstimateRecord> JsonLine(const nlohmann::json& /*line*/, std::int64_t /*wall_ns*/) {
+  virtual std::optional<EstimateRecord> JsonLine(const nlohmann::json& /*line*/,
+                                                 std::int64_t /*wall_ns*/) {
     return std::nullopt;
   }
   /// False when the solutions come from elsewhere (n2k_socketcan: the bus) and every line is a
@@ -39,6 +40,7 @@ class EstimateReader {
 };
 
 /// The reader for an output format name. @throws std::invalid_argument for an unknown name.
-std::unique_ptr<EstimateReader> MakeEstimateReader(const std::string& output, std::int64_t start_unix_ns);
+std::unique_ptr<EstimateReader> MakeEstimateReader(const std::string& output,
+                                                   std::int64_t start_unix_ns);
 
 }  // namespace hil::harness

@@ -1,9 +1,9 @@
 #pragma once
 /// @file
 /// The estimator under test as a child process: started through /bin/sh with its stdout on a pipe
-/// (read line by line, each line stamped with its wall-clock arrival), its stderr into a file in the
-/// run folder. Crashes and silence are observable; Stop() always ends the process (SIGTERM, then
-/// SIGKILL after a grace period).
+/// (read line by line, each line stamped with its wall-clock arrival), its stderr into a file in
+/// the run folder. Crashes and silence are observable; Stop() always ends the process (SIGTERM,
+/// then SIGKILL after a grace period).
 
 #include <atomic>
 #include <cstdint>
@@ -29,10 +29,10 @@ struct OutputLine {
 
 /// How the process ended.
 struct ExitInfo {
-  bool exited = false;       ///< ended by itself (exit or crash) before Stop()
-  int exit_code = -1;        ///< when it exited normally
-  int signal = 0;            ///< the signal that ended it, if any
-  bool killed_by_us = false; ///< needed SIGKILL after SIGTERM
+  bool exited = false;        ///< ended by itself (exit or crash) before Stop()
+  int exit_code = -1;         ///< when it exited normally
+  int signal = 0;             ///< the signal that ended it, if any
+  bool killed_by_us = false;  ///< needed SIGKILL after SIGTERM
   std::string Describe() const;
 };
 

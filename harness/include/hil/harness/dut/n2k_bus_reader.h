@@ -2,10 +2,10 @@
 /// @file
 /// The estimator's NMEA 2000 output as EstimateRecords, frame by frame (from the live bus,
 /// output `n2k_socketcan`, or from candump lines, output `n2k_candump`). A record per PGN 129029
-/// GNSS Position Data (fast packet; date, time of validity, latitude, longitude, altitude), with the
-/// velocity of the 129026 COG & SOG Rapid Update and the heading of the 127250 Vessel Heading that
-/// carry the same SID (navd sends them together). 129025 Position Rapid Update carries no time of
-/// validity, and 127257 Attitude no field the evaluator scores: both are counted, not evaluated.
+/// GNSS Position Data (fast packet; date, time of validity, latitude, longitude, altitude), with
+/// the velocity of the 129026 COG & SOG Rapid Update and the heading of the 127250 Vessel Heading
+/// that carry the same SID (navd sends them together). 129025 Position Rapid Update carries no time
+/// of validity, and 127257 Attitude no field the evaluator scores: both are counted, not evaluated.
 /// Layouts: canboat's database (../shared/reference/can_and_transports.md); all-ones = no data.
 
 #include <cstdint>
@@ -13,8 +13,8 @@
 #include <optional>
 #include <string_view>
 
-#include "hil/harness/eval/evaluator.h"
 #include "hil/harness/dut/n2k_fast_packet.h"
+#include "hil/harness/eval/evaluator.h"
 
 namespace hil::harness {
 
@@ -23,7 +23,8 @@ class N2kBusReader {
   /// `start_unix_ns`: UTC of emulated t = 0 (record times are relative to it).
   explicit N2kBusReader(std::int64_t start_unix_ns) : start_(start_unix_ns) {}
   /// One frame with a 29-bit identifier; a record when it completes a 129029.
-  std::optional<EstimateRecord> Frame(std::uint32_t id29, std::string_view data, std::int64_t wall_ns);
+  std::optional<EstimateRecord> Frame(std::uint32_t id29, std::string_view data,
+                                      std::int64_t wall_ns);
   /// Frames seen per PGN.
   const std::map<std::uint32_t, std::uint64_t>& frames_per_pgn() const { return per_pgn_; }
   const N2kFastPacketStats& fast_packet_stats() const { return fast_.stats(); }

@@ -2,9 +2,9 @@
 /// @file
 /// NMEA 2000 on the receiving side: the PGN of a 29-bit identifier, and the reassembly of
 /// fast-packet messages (ISO 11783-3 / NMEA 2000 "fast packet": frame 0 = sequence counter in bits
-/// 5–7, frame index 0 in bits 0–4, the total payload length, 6 payload bytes; frames 1…31 = the same
-/// counter, their index, 7 payload bytes). Messages are reassembled per (source address, PGN); a
-/// frame out of turn (wrong counter or index) drops the message under way and is counted. No
+/// 5–7, frame index 0 in bits 0–4, the total payload length, 6 payload bytes; frames 1…31 = the
+/// same counter, their index, 7 payload bytes). Messages are reassembled per (source address, PGN);
+/// a frame out of turn (wrong counter or index) drops the message under way and is counted. No
 /// reliance on frame order between different sources or PGNs.
 
 #include <cstdint>
@@ -18,13 +18,15 @@ namespace hil::harness {
 /// PGN of a 29-bit identifier (PDU1: destination cleared; PDU2: group extension kept).
 std::uint32_t N2kPgnFromId(std::uint32_t id29);
 /// Source address of a 29-bit identifier.
-inline std::uint8_t N2kSourceFromId(std::uint32_t id29) { return static_cast<std::uint8_t>(id29 & 0xFF); }
+inline std::uint8_t N2kSourceFromId(std::uint32_t id29) {
+  return static_cast<std::uint8_t>(id29 & 0xFF);
+}
 
 struct N2kFastPacketStats {
   std::uint64_t frames = 0, messages = 0;
-  std::uint64_t out_of_turn = 0;   ///< a frame that does not continue the message under way
-  std::uint64_t bad_frames = 0;    ///< empty frame, first frame without a length, length > 223
-  std::uint64_t abandoned = 0;     ///< a new first frame while a message was still incomplete
+  std::uint64_t out_of_turn = 0;  ///< a frame that does not continue the message under way
+  std::uint64_t bad_frames = 0;   ///< empty frame, first frame without a length, length > 223
+  std::uint64_t abandoned = 0;    ///< a new first frame while a message was still incomplete
 };
 
 class N2kFastPacketAssembler {

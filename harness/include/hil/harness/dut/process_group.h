@@ -15,8 +15,8 @@ std::vector<int> LiveGroupMembers(int pgid);
 
 /// A snapshot of the threads of a process group.
 struct GroupActivity {
-  bool readable = false;   ///< /proc could be read and the group has at least one live process
-  bool all_asleep = false; ///< every thread waits in an interruptible sleep (state S)
+  bool readable = false;    ///< /proc could be read and the group has at least one live process
+  bool all_asleep = false;  ///< every thread waits in an interruptible sleep (state S)
   /// Sum over the threads of their voluntary and involuntary context switches: a thread that
   /// woke up in between has switched at least once more.
   std::uint64_t switches = 0;

@@ -22,8 +22,9 @@ struct EstimateRecord {
   double lat_deg = 0, lon_deg = 0, height_m = 0;
   std::optional<Eigen::Vector3d> vel_enu_mps;
   std::optional<double> yaw_deg;  ///< heading clockwise from north
-  std::optional<Eigen::Vector3d> pos_std_enu_m;  ///< reported 1-sigma position uncertainty (for NEES)
-  std::int64_t wall_rx_ns = 0;    ///< CLOCK_MONOTONIC arrival (0 when not applicable)
+  std::optional<Eigen::Vector3d>
+      pos_std_enu_m;            ///< reported 1-sigma position uncertainty (for NEES)
+  std::int64_t wall_rx_ns = 0;  ///< CLOCK_MONOTONIC arrival (0 when not applicable)
 };
 
 /// The error of one record against truth, ENU.
@@ -48,17 +49,20 @@ struct AccuracyMetrics {
   double horizontal_rmse_m = 0, cep50_m = 0, cep95_m = 0, max_horizontal_error_m = 0;
   double vertical_rmse_m = 0;
   std::optional<double> velocity_rmse_mps, heading_rmse_deg;
-  std::optional<double> cross_track_rmse_m, cross_track_p95_m, cross_track_max_m;  ///< |xte| statistics
+  std::optional<double> cross_track_rmse_m, cross_track_p95_m,
+      cross_track_max_m;            ///< |xte| statistics
   std::optional<double> nees_mean;  ///< mean NEES (≈3 for a consistent 3-D position covariance)
 };
 
 /// Compares records with truth. `p_BX_B_m` is the lever arm of the point the records refer to
 /// (zero for the estimator's reference point, the antenna's for raw fixes). Records before
 /// `t_from` are skipped (convergence); records after `t_to` too.
-std::vector<ErrorSample> CompareWithTruth(const truth::TruthConfig& truth_config, std::vector<EstimateRecord> records,
+std::vector<ErrorSample> CompareWithTruth(const truth::TruthConfig& truth_config,
+                                          std::vector<EstimateRecord> records,
                                           const Eigen::Vector3d& p_BX_B_m, Time t_from, Time t_to);
 /// The same with the truth from a table that holds every time RecordTimes(records, …) gives.
-std::vector<ErrorSample> CompareWithTruth(const TruthTable& truth, std::vector<EstimateRecord> records,
+std::vector<ErrorSample> CompareWithTruth(const TruthTable& truth,
+                                          std::vector<EstimateRecord> records,
                                           const Eigen::Vector3d& p_BX_B_m, Time t_from, Time t_to);
 /// The times CompareWithTruth needs the truth at for `records`.
 std::vector<Time> RecordTimes(const std::vector<EstimateRecord>& records, Time t_from, Time t_to);

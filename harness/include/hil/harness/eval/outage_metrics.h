@@ -13,8 +13,8 @@ namespace hil::harness {
 
 struct OutageMetrics {
   double start_s = 0, end_s = 0;
-  std::size_t samples = 0;              ///< solutions inside the outage
-  double max_horizontal_error_m = 0;    ///< over solutions valid in [start, end]
+  std::size_t samples = 0;            ///< solutions inside the outage
+  double max_horizontal_error_m = 0;  ///< over solutions valid in [start, end]
   /// Largest |error| along each local axis (east, north, up) over the same solutions (paper 004
   /// states its outage result per axis).
   Eigen::Vector3d max_abs_error_enu_m = Eigen::Vector3d::Zero();
@@ -27,14 +27,16 @@ struct OutageMetrics {
 };
 
 /// One entry per gnss_outage fault, in time order.
-std::vector<OutageMetrics> ComputeOutages(const std::vector<ErrorSample>& errors, const FaultTimeline& faults,
-                                          double reconverged_error_m);
+std::vector<OutageMetrics> ComputeOutages(const std::vector<ErrorSample>& errors,
+                                          const FaultTimeline& faults, double reconverged_error_m);
 
 /// Rate and regularity of the output stream.
 struct OutputTiming {
-  double output_rate_hz = 0;              ///< solutions per second of validity time
-  double missing_fraction = 0;            ///< gaps longer than 1.5 nominal periods, as a fraction of expected solutions
-  std::optional<double> jitter_p50_ms, jitter_p99_ms, jitter_max_ms;  ///< |arrival interval − median|, wall clock
+  double output_rate_hz = 0;  ///< solutions per second of validity time
+  double missing_fraction =
+      0;  ///< gaps longer than 1.5 nominal periods, as a fraction of expected solutions
+  std::optional<double> jitter_p50_ms, jitter_p99_ms,
+      jitter_max_ms;  ///< |arrival interval − median|, wall clock
 };
 
 /// `records` sorted or not; arrival jitter only when records carry wall times.

@@ -4,9 +4,11 @@
 /// queue, and to CAN frames before they reach the bus:
 ///   - `frame_drop` removes a message (with its probability);
 ///   - `frame_truncate` cuts a message at a uniformly drawn byte (with its probability);
-///   - `byte_corruption` flips one random bit in each byte with its per-byte `probability`, or every
+///   - `byte_corruption` flips one random bit in each byte with its per-byte `probability`, or
+///   every
 ///     bit independently with its `bit_error_rate`;
-///   - `baud_mismatch` replaces the message by what the host UART reads when the device sends at the
+///   - `baud_mismatch` replaces the message by what the host UART reads when the device sends at
+///   the
 ///     fault's `baud` (uart_baud_mismatch.h);
 ///   - `frame_duplicate` sends the message twice (with its probability);
 ///   - `can_reorder` swaps two consecutive CAN frames of one device output (with its probability),
@@ -27,13 +29,16 @@ namespace hil::harness {
 
 class ByteFaultInjector {
  public:
-  ByteFaultInjector(const FaultTimeline& timeline, std::uint64_t seed, FaultRecorder* recorder = nullptr);
+  ByteFaultInjector(const FaultTimeline& timeline, std::uint64_t seed,
+                    FaultRecorder* recorder = nullptr);
 
   /// Applies the faults active at `msg.t_ready` on `link` and appends what the link carries to
   /// `out`: nothing (dropped), the message, or two copies (duplicated). `link_baud` is the host's
   /// baud (for baud_mismatch; 0 disables that fault).
-  void Process(const SerialMessage& msg, const std::string& link, int link_baud, std::vector<SerialMessage>& out);
-  /// Process() without baud mismatch and duplicates, in place. Returns false when the message is dropped.
+  void Process(const SerialMessage& msg, const std::string& link, int link_baud,
+               std::vector<SerialMessage>& out);
+  /// Process() without baud mismatch and duplicates, in place. Returns false when the message is
+  /// dropped.
   bool Apply(SerialMessage& msg, const std::string& link);
   /// Applies can_reorder to the frames of one device output.
   void ProcessCan(std::vector<CanFrame>& frames);

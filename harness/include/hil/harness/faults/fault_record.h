@@ -3,7 +3,8 @@
 /// What each fault of the timeline actually did in a run: how many injections (messages dropped,
 /// duplicated, truncated or garbled by a baud mismatch, bits flipped, CAN frames swapped, MCU
 /// resets, receiver messages lost to its transmit buffer, GNSS epochs without a fix or with a
-/// glitch) and when. Filled by whoever applies the fault; written to report.json `fault_injections`.
+/// glitch) and when. Filled by whoever applies the fault; written to report.json
+/// `fault_injections`.
 
 #include <cstdint>
 #include <optional>
@@ -17,13 +18,14 @@ namespace hil::harness {
 
 /// The record of one fault of the timeline.
 struct FaultInjection {
-  std::string kind;        ///< FaultKindName
-  std::string link;        ///< "" = every link
+  std::string kind;  ///< FaultKindName
+  std::string link;  ///< "" = every link
   double start_s = 0, end_s = 0;
-  std::string unit;        ///< what `count` counts ("messages", "bits", "frames", "resets", …)
+  std::string unit;  ///< what `count` counts ("messages", "bits", "frames", "resets", …)
   std::uint64_t count = 0;
   std::vector<double> times_s;  ///< emulated times of the first kMaxTimes injections
-  std::optional<double> recovery_time_s;  ///< evaluator: end of the fault → error back below threshold
+  std::optional<double>
+      recovery_time_s;  ///< evaluator: end of the fault → error back below threshold
   static constexpr std::size_t kMaxTimes = 200;
 };
 

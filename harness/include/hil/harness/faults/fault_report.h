@@ -15,10 +15,11 @@
 ///   navd.flag.<flag>        1 when navd raised that flag at least once during the run, else 0
 
 #include <map>
-#include <nlohmann/json_fwd.hpp>
 #include <set>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json_fwd.hpp>
 
 #include "hil/harness/eval/evaluator.h"
 #include "hil/harness/faults/fault_record.h"
@@ -42,12 +43,12 @@ extern const std::vector<std::string> kNavdFlags;
 /// Sets each fault's recovery time: seconds from its end until the horizontal error is below
 /// `threshold_m` and stays there for 2 s (0 when it never left it). Absent when no solution after
 /// the end reaches that.
-void ComputeRecoveryTimes(std::vector<FaultInjection>& faults, const std::vector<ErrorSample>& errors,
-                          double threshold_m);
+void ComputeRecoveryTimes(std::vector<FaultInjection>& faults,
+                          const std::vector<ErrorSample>& errors, double threshold_m);
 
 /// Adds fault_recovery_time_s, fault_injections_min, navd.* (see the file comment).
-void AddFaultMetrics(std::map<std::string, std::optional<double>>& table, const std::vector<FaultInjection>& faults,
-                     const EstimatorHealth& health);
+void AddFaultMetrics(std::map<std::string, std::optional<double>>& table,
+                     const std::vector<FaultInjection>& faults, const EstimatorHealth& health);
 
 nlohmann::json FaultInjectionsJson(const std::vector<FaultInjection>& faults);
 nlohmann::json EstimatorHealthJson(const EstimatorHealth& health);

@@ -19,12 +19,12 @@
 /// mcu_reset takes an optional end_s: the MCU is silent from start_s to end_s (its reboot time;
 /// without end_s the mcu section's reboot time). byte_corruption takes either `probability` (per
 /// byte: one random bit flipped) or `bit_error_rate` (every bit flipped independently).
-/// Who applies what: the GNSS device model applies gnss_outage, gnss_data_gap, gnss_glitch and gnss_overload (its
-/// UART transmit buffer then overflows and drops whole messages), the MCU model mcu_reset; the
-/// scheduler applies byte_corruption, frame_drop, frame_duplicate, frame_truncate and baud_mismatch
-/// (what the host's UART receives) to whole serial messages and can_reorder to CAN frames
-/// (ByteFaultInjector in byte_faults.h). Every injection is counted per fault (fault_record.h).
-/// The evaluator reads the outages and each fault's recovery time.
+/// Who applies what: the GNSS device model applies gnss_outage, gnss_data_gap, gnss_glitch and
+/// gnss_overload (its UART transmit buffer then overflows and drops whole messages), the MCU model
+/// mcu_reset; the scheduler applies byte_corruption, frame_drop, frame_duplicate, frame_truncate
+/// and baud_mismatch (what the host's UART receives) to whole serial messages and can_reorder to
+/// CAN frames (ByteFaultInjector in byte_faults.h). Every injection is counted per fault
+/// (fault_record.h). The evaluator reads the outages and each fault's recovery time.
 
 #include <map>
 #include <optional>
@@ -48,7 +48,7 @@ enum class FaultKind {
   kFrameDuplicate,  ///< a serial message sent twice (with `probability`)
   kFrameTruncate,   ///< a serial message cut short at a random byte (with `probability`)
   kCanReorder,      ///< two consecutive CAN frames of one device swap places (with `probability`)
-  kGnssOverload,    ///< the receiver outputs every message it knows: more bytes than its baud carries
+  kGnssOverload,  ///< the receiver outputs every message it knows: more bytes than its baud carries
 };
 
 /// The scenario-file name of a kind ("gnss_outage", …).
@@ -59,7 +59,7 @@ struct Fault {
   FaultKind kind = FaultKind::kGnssOutage;
   Time start{};
   Time end{};
-  std::string link;                      ///< the link it applies to ("" = every link); byte faults, baud
+  std::string link;  ///< the link it applies to ("" = every link); byte faults, baud
   std::map<std::string, double> params;  ///< kind-specific numbers (probability, north_m, baud, …)
   /// A parameter, or `fallback` when the scenario did not give it.
   double Param(const std::string& key, double fallback) const;

@@ -17,7 +17,7 @@
 namespace hil::harness {
 
 struct BaudMismatchResult {
-  std::string received;            ///< the bytes the host reads
+  std::string received;  ///< the bytes the host reads
   std::uint64_t framing_errors = 0;
 };
 

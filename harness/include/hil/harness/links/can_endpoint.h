@@ -3,7 +3,8 @@
 /// The CAN bus of a run, as SerialEndpoint is a serial port: frames the devices put on the bus at
 /// their emulated times go out on a raw SocketCAN socket (vcan0 in the VM, a real can0 on a bench),
 /// frames others send (the estimator's output) are read back, and both directions are captured:
-///  - `captures/<iface>.candump`: a `candump -l` log (time = scenario start UTC + emulated time), so
+///  - `captures/<iface>.candump`: a `candump -l` log (time = scenario start UTC + emulated time),
+///  so
 ///    can-utils' canplayer replays it and `hil replay` plays it;
 ///  - `captures/<iface>.cap`: the hil capture (ftx/frx lines with emulated and wall-clock times).
 /// Virtual mode sends every queued frame at once; real-time mode sends each at its wall time and
@@ -29,10 +30,11 @@ class CanEndpoint {
   /// @param start_unix_ns UTC of emulated t = 0 (candump log timestamps)
   /// @throws std::runtime_error when the interface cannot be opened (the message says when the
   ///         kernel has no CAN at all and points at ci/vcan/run_in_vm).
-  CanEndpoint(const std::string& iface, const std::string& capture_dir, std::int64_t start_unix_ns, bool fd = false);
+  CanEndpoint(const std::string& iface, const std::string& capture_dir, std::int64_t start_unix_ns,
+              bool fd = false);
 
-  /// Queues a device's frame to leave at frame.t (frames of one device come in time order; frames of
-  /// several devices are merged by time).
+  /// Queues a device's frame to leave at frame.t (frames of one device come in time order; frames
+  /// of several devices are merged by time).
   void Queue(const CanFrame& frame);
   /// Emulated time of the next frame waiting to be sent.
   std::optional<Time> next_frame_time() const;

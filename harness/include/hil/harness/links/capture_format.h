@@ -9,15 +9,17 @@
 ///     # columns: dir t_emu_ns byte_period_ns t_wall_ns name data [wall_offsets_ns]
 ///     tx 100000000 1042 5193820011 NMEA-GGA 2447504747412c... 0,1061,2075,...
 ///
-/// dir: tx (device → host bytes), rx (host → device bytes), drop (a message the UART dropped whole),
-/// ftx (CAN frame the harness put on the bus), frx (CAN frame read from the bus).
-/// t_emu_ns: emulated time of the first byte's start bit (or of the frame). byte_period_ns: time
-/// between byte starts (0 for rx, drop and frames); byte k is at t_emu_ns + k·byte_period_ns.
-/// t_wall_ns: CLOCK_MONOTONIC when the first byte was written (or the frame sent, or rx bytes read)
-/// in a real-time run; 0 in virtual mode (nothing is paced there, and a scenario and seed then give a
-/// byte-identical capture) and for bytes never written. data: lower-case hex bytes, or for frames the can-utils frame string
-/// (`09F80180#8868111FBFA49103`). wall_offsets_ns (real-time runs): comma-separated wall time of each
-/// byte minus t_wall_ns. Lines starting with '#' are comments; v1 files (no offsets) read the same.
+/// dir: tx (device → host bytes), rx (host → device bytes), drop (a message the UART dropped
+/// whole), ftx (CAN frame the harness put on the bus), frx (CAN frame read from the bus). t_emu_ns:
+/// emulated time of the first byte's start bit (or of the frame). byte_period_ns: time between byte
+/// starts (0 for rx, drop and frames); byte k is at t_emu_ns + k·byte_period_ns. t_wall_ns:
+/// CLOCK_MONOTONIC when the first byte was written (or the frame sent, or rx bytes read) in a
+/// real-time run; 0 in virtual mode (nothing is paced there, and a scenario and seed then give a
+/// byte-identical capture) and for bytes never written. data: lower-case hex bytes, or for frames
+/// the can-utils frame string
+/// (`09F80180#8868111FBFA49103`). wall_offsets_ns (real-time runs): comma-separated wall time of
+/// each byte minus t_wall_ns. Lines starting with '#' are comments; v1 files (no offsets) read the
+/// same.
 
 #include <cstdint>
 #include <fstream>
@@ -40,8 +42,8 @@ struct CaptureRecord {
   std::int64_t byte_period_ns = 0;
   std::int64_t t_wall_ns = 0;
   std::string name = "-";
-  std::string bytes;         ///< tx, rx, drop: the raw bytes
-  link::CanWireFrame frame;  ///< ftx, frx
+  std::string bytes;                          ///< tx, rx, drop: the raw bytes
+  link::CanWireFrame frame;                   ///< ftx, frx
   std::vector<std::int64_t> wall_offsets_ns;  ///< per byte, when known
 
   bool is_frame() const { return dir == CaptureDir::kFrameTx || dir == CaptureDir::kFrameRx; }
@@ -55,10 +57,10 @@ struct CaptureRecord {
 /// What the header says about the link.
 struct CaptureHeader {
   int version = 2;
-  std::string link;      ///< link name, e.g. ttyGPS or can0
-  std::string kind;      ///< "serial" or "can"
-  int baud = 0;          ///< serial: line rate
-  std::string iface;     ///< can: the interface the frames went to
+  std::string link;                ///< link name, e.g. ttyGPS or can0
+  std::string kind;                ///< "serial" or "can"
+  int baud = 0;                    ///< serial: line rate
+  std::string iface;               ///< can: the interface the frames went to
   std::int64_t start_unix_ns = 0;  ///< UTC of emulated t = 0, when known (0 otherwise)
 };
 

@@ -28,8 +28,8 @@ class SerialEndpoint {
   /// @param link_path symlink for the host side, e.g. RUN_DIR/ttyGPS
   /// @param capture_path capture file for this link (see CaptureFileName)
   /// @throws std::runtime_error when the port or the capture cannot be opened.
-  SerialEndpoint(std::string link_name, const std::string& link_path, int baud, std::size_t tx_buffer_bytes,
-                 const std::string& capture_path);
+  SerialEndpoint(std::string link_name, const std::string& link_path, int baud,
+                 std::size_t tx_buffer_bytes, const std::string& capture_path);
   /// Writes the bytes still queued (never sent) into the capture with t_wall_ns = 0.
   ~SerialEndpoint();
   SerialEndpoint(const SerialEndpoint&) = delete;
@@ -75,7 +75,7 @@ class SerialEndpoint {
   std::size_t pending_offset_ = 0;  // bytes of pending_.front() already written
   CaptureRecord current_;           // capture line of the chunk being written in real time
   std::vector<double> schedule_error_us_;
-  std::string write_buffer_;        // virtual mode: the waiting chunks joined for one write
+  std::string write_buffer_;  // virtual mode: the waiting chunks joined for one write
 };
 
 /// The capture file name of a link: `<link>.cap`, with a device path reduced to its base name

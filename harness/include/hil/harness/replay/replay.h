@@ -1,11 +1,13 @@
 #pragma once
 /// @file
-/// `hil replay`: plays captures back at their recorded timing, byte by byte (each serial byte at its
-/// own recorded UART time, unlike gpsd's gpsfake, which times whole sentences) and frame by frame.
+/// `hil replay`: plays captures back at their recorded timing, byte by byte (each serial byte at
+/// its own recorded UART time, unlike gpsd's gpsfake, which times whole sentences) and frame by
+/// frame.
 ///  - a serial capture (`<link>.cap`) is played into a fresh pty whose symlink is `OUT/<link>` (or,
 ///    when the link was a /dev path, into that real device); its `tx` lines are the device's bytes;
 ///    `rx` (what the host sent) and `drop` lines are not played;
-///  - a CAN capture (`<iface>.cap`, ftx lines) or a `candump -l` log (any other file whose lines start
+///  - a CAN capture (`<iface>.cap`, ftx lines) or a `candump -l` log (any other file whose lines
+///  start
 ///    with '(') is played onto a SocketCAN interface.
 /// Several captures of one run play together on one clock: emulated t = 0 of the captures is the
 /// replay's start (a candump log's first frame is its t = 0). What is played is captured again in
@@ -24,16 +26,16 @@ struct ReplayOptions {
   std::string out_dir;                ///< ptys (symlinks) and the re-capture
   double speed = 1.0;                 ///< > 1 plays faster
   double start_delay_s = 1.0;         ///< time between creating the links and emulated t = 0
-  std::string can_iface;              ///< plays every CAN source onto this interface (default: as recorded)
+  std::string can_iface;  ///< plays every CAN source onto this interface (default: as recorded)
   /// Called once the links exist, with {link name, path} each (hil prints them).
   std::function<void(const std::vector<std::pair<std::string, std::string>>&)> on_links;
 };
 
 struct ReplayResult {
-  std::uint64_t bytes = 0;   ///< serial bytes played
-  std::uint64_t frames = 0;  ///< CAN frames played
-  std::uint64_t frames_failed = 0;  ///< CAN frames the interface did not accept
-  std::int64_t wall_start_ns = 0;   ///< CLOCK_MONOTONIC of emulated t = 0
+  std::uint64_t bytes = 0;                      ///< serial bytes played
+  std::uint64_t frames = 0;                     ///< CAN frames played
+  std::uint64_t frames_failed = 0;              ///< CAN frames the interface did not accept
+  std::int64_t wall_start_ns = 0;               ///< CLOCK_MONOTONIC of emulated t = 0
   std::vector<double> byte_schedule_error_us;   ///< written − scheduled, per byte
   std::vector<double> frame_schedule_error_us;  ///< sent − scheduled, per frame
 };

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "hil/harness/links/can_bus_report.h"
 #include "hil/harness/eval/evaluator.h"
-#include "hil/harness/faults/fault_report.h"
 #include "hil/harness/eval/outage_metrics.h"
+#include "hil/harness/faults/fault_report.h"
+#include "hil/harness/links/can_bus_report.h"
 #include "hil/harness/scenario/scenario.h"
 
 namespace hil::harness {
@@ -34,7 +34,7 @@ struct RunReport {
   std::string scenario_file;
   std::uint64_t seed = 0;
   std::string mode;
-  bool complete = true;            ///< false when the run stopped early
+  bool complete = true;               ///< false when the run stopped early
   std::vector<std::string> problems;  ///< why the run failed besides criteria (crash, silence…)
   AccuracyMetrics metrics;
   double output_rate_hz = 0;
@@ -48,10 +48,13 @@ struct RunReport {
   double wall_time_s = 0, sim_time_s = 0, speed = 1.0;
   std::uint64_t gnss_bytes = 0, gnss_messages_dropped = 0;
   std::uint64_t fault_messages_dropped = 0, fault_bytes_corrupted = 0;
-  std::vector<std::pair<std::string, std::string>> faults;  ///< {kind, "start–end s"} for the report
-  std::vector<FaultInjection> fault_injections;  ///< per fault: what was injected, recovery (fault_report.h)
-  EstimatorHealth estimator_health;              ///< navd's detections (fault_report.h)
-  std::string incomplete_reason;  ///< why the run stopped early (signal, output folder, link), if it did
+  std::vector<std::pair<std::string, std::string>>
+      faults;  ///< {kind, "start–end s"} for the report
+  std::vector<FaultInjection>
+      fault_injections;              ///< per fault: what was injected, recovery (fault_report.h)
+  EstimatorHealth estimator_health;  ///< navd's detections (fault_report.h)
+  std::string
+      incomplete_reason;  ///< why the run stopped early (signal, output folder, link), if it did
   std::optional<CanBusReport> can;  ///< the scenario's CAN bus (can_run.h), when it has one
   bool pass() const;
 };
@@ -66,9 +69,11 @@ MetricTable RunMetricTable(const RunReport& r);
 std::string XmlEscape(const std::string& s);
 
 /// Evaluates the scenario's criteria against the metrics.
-std::vector<CriterionResult> EvaluateCriteria(const std::vector<Criterion>& criteria, const MetricTable& metrics,
+std::vector<CriterionResult> EvaluateCriteria(const std::vector<Criterion>& criteria,
+                                              const MetricTable& metrics,
                                               const MetricTable& baselines);
-std::vector<CriterionResult> EvaluateCriteria(const std::vector<Criterion>& criteria, const AccuracyMetrics& metrics,
+std::vector<CriterionResult> EvaluateCriteria(const std::vector<Criterion>& criteria,
+                                              const AccuracyMetrics& metrics,
                                               const AccuracyMetrics& baselines);
 
 /// Writes report.json. @throws std::runtime_error naming the file on failure.

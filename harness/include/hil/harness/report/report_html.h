@@ -25,9 +25,11 @@ struct ReportSeries {
 };
 
 /// The plot files written, relative to the run folder.
-std::vector<std::string> WritePlots(const RunReport& report, const ReportSeries& series, const std::string& run_dir);
+std::vector<std::string> WritePlots(const RunReport& report, const ReportSeries& series,
+                                    const std::string& run_dir);
 
 /// Writes RUN_DIR/report.html (and the plots). @throws std::runtime_error naming the file.
-void WriteReportHtml(const RunReport& report, const ReportSeries& series, const std::string& run_dir);
+void WriteReportHtml(const RunReport& report, const ReportSeries& series,
+                     const std::string& run_dir);
 
 }  // namespace hil::harness

@@ -8,8 +8,8 @@
 #include <Eigen/Core>
 
 #include "hil/harness/run/device_set.h"
-#include "hil/harness/scenario/scenario.h"
 #include "hil/harness/run/truth_table.h"
+#include "hil/harness/scenario/scenario.h"
 
 namespace hil::harness {
 
@@ -20,8 +20,8 @@ void WriteNavdConfig(const std::string& path, const Scenario& s, const std::stri
 void WriteTruthCsv(const Scenario& s, const std::string& path, std::vector<double>& t_s,
                    std::vector<Eigen::Vector2d>& en_m);
 /// The same from a table that holds the times TruthCsvTimes(s) gives.
-void WriteTruthCsv(const TruthTable& truth, const Scenario& s, const std::string& path, std::vector<double>& t_s,
-                   std::vector<Eigen::Vector2d>& en_m);
+void WriteTruthCsv(const TruthTable& truth, const Scenario& s, const std::string& path,
+                   std::vector<double>& t_s, std::vector<Eigen::Vector2d>& en_m);
 /// The times of truth.csv: every 100 ms from 0 to the scenario's end.
 std::vector<Time> TruthCsvTimes(const Scenario& s);
 

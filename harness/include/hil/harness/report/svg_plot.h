@@ -26,9 +26,9 @@ struct PlotBand {
 struct PlotChart {
   std::string title, x_label, y_label;
   std::vector<PlotSeries> series;
-  std::vector<PlotBand> bands;   ///< shaded vertical intervals
-  bool equal_aspect = false;     ///< same metres per pixel on both axes
-  bool y_from_zero = false;      ///< y axis starts at 0
+  std::vector<PlotBand> bands;         ///< shaded vertical intervals
+  bool equal_aspect = false;           ///< same metres per pixel on both axes
+  bool y_from_zero = false;            ///< y axis starts at 0
   std::string empty_note = "no data";  ///< the note an empty chart shows in its frame
   int width_px = 760, height_px = 420;
 };

@@ -13,8 +13,8 @@
 #include "hil/firmware_emu/device.h"
 #include "hil/firmware_emu/gnss/gnss_fix.h"
 #include "hil/harness/links/can_endpoint.h"
-#include "hil/harness/scenario/scenario.h"
 #include "hil/harness/links/serial_endpoint.h"
+#include "hil/harness/scenario/scenario.h"
 
 namespace hil::harness {
 

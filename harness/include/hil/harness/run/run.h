@@ -28,16 +28,17 @@ namespace hil::harness {
 enum class RunMode { kVirtual, kRealtime };
 
 struct RunOptions {
-  std::string out_dir;                      ///< run folder (created)
-  std::optional<std::uint64_t> seed;        ///< overrides the scenario's seed
+  std::string out_dir;                ///< run folder (created)
+  std::optional<std::uint64_t> seed;  ///< overrides the scenario's seed
   RunMode mode = RunMode::kVirtual;
-  double speed = 1.0;                       ///< real-time speed-up (realtime mode; ≠ 1 is "scaled")
+  double speed = 1.0;  ///< real-time speed-up (realtime mode; ≠ 1 is "scaled")
   std::optional<std::string> estimator_command;  ///< overrides the scenario's estimator command
-  std::string navd_path;                    ///< substituted for {navd}
-  bool progress = false;                    ///< live progress line on stderr
-  bool emulate_only = false;                ///< `hil emulate`: no estimator; print the links and run
-  std::optional<double> silence_timeout_s;  ///< overrides the scenario's estimator.silence_timeout_s
-  bool html = true;                         ///< write report.html and plots/
+  std::string navd_path;                         ///< substituted for {navd}
+  bool progress = false;                         ///< live progress line on stderr
+  bool emulate_only = false;  ///< `hil emulate`: no estimator; print the links and run
+  std::optional<double>
+      silence_timeout_s;  ///< overrides the scenario's estimator.silence_timeout_s
+  bool html = true;       ///< write report.html and plots/
 };
 
 /// "virtual", "realtime" or "scaled" (real time with a speed-up other than 1).
@@ -48,6 +49,7 @@ std::string ModeName(RunMode mode, double speed);
 RunReport RunScenario(const Scenario& scenario, const RunOptions& options);
 
 /// Replaces every "{key}" in `text` whose key is in the map.
-std::string Substitute(const std::string& text, const std::vector<std::pair<std::string, std::string>>& vars);
+std::string Substitute(const std::string& text,
+                       const std::vector<std::pair<std::string, std::string>>& vars);
 
 }  // namespace hil::harness

@@ -5,7 +5,8 @@
 ///    loop sees it, stops the estimator's process group, and writes a report marked incomplete.
 ///    SIGPIPE and SIGXFSZ are ignored, so a closed pipe or a full file (RLIMIT_FSIZE) turns into a
 ///    failed write the run can report instead of killing `hil` without a report.
-///  - Write failures of the run folder's files (captures, estimate.jsonl) are noted here, so the run
+///  - Write failures of the run folder's files (captures, estimate.jsonl) are noted here, so the
+///  run
 ///    can stop with a clear message naming the file.
 
 #include <optional>

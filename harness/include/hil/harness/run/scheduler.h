@@ -13,20 +13,20 @@
 #include <vector>
 
 #include "hil/firmware_emu/link/realtime_pacer.h"
-#include "hil/harness/faults/byte_faults.h"
-#include "hil/harness/run/device_set.h"
 #include "hil/harness/eval/evaluator.h"
+#include "hil/harness/faults/byte_faults.h"
 #include "hil/harness/faults/fault_record.h"
-#include "hil/harness/scenario/scenario.h"
+#include "hil/harness/run/device_set.h"
 #include "hil/harness/run/virtual_gate.h"
+#include "hil/harness/scenario/scenario.h"
 
 namespace hil::harness {
 
 class Scheduler {
  public:
   /// `pacer` null: virtual mode. `fixes_csv` receives one line per raw GNSS fix.
-  Scheduler(const Scenario& scenario, DeviceSet& devices, ByteFaultInjector& faults, const link::RealtimePacer* pacer,
-            std::ostream& fixes_csv);
+  Scheduler(const Scenario& scenario, DeviceSet& devices, ByteFaultInjector& faults,
+            const link::RealtimePacer* pacer, std::ostream& fixes_csv);
 
   /// Where the faults of the timeline applied here are counted (GNSS epochs in an outage or a
   /// glitch, receiver messages lost to its transmit buffer in an output overload).
@@ -67,9 +67,10 @@ class Scheduler {
   std::vector<EstimateRecord> fixes_;
   std::vector<CanFrame> bus_frames_;
   Time t_last_event_{};
-  static constexpr std::size_t kMaxDeferredBytes = 8192;  // virtual mode: bytes the run may hold back
+  static constexpr std::size_t kMaxDeferredBytes =
+      8192;  // virtual mode: bytes the run may hold back
   VirtualWriteQueue writes_{nullptr, kMaxDeferredBytes};
-  bool write_refused_ = false;  // the gate gave up a wait
+  bool write_refused_ = false;    // the gate gave up a wait
   std::vector<pollfd> host_fds_;  // one per serial endpoint, in device and port order
 };
 

@@ -25,7 +25,8 @@ class TruthTable {
   /// Samples the truth at `times` (any order, repeats allowed; negative times are left out).
   TruthTable(const truth::TruthConfig& config, std::vector<Time> times);
   /// A table of samples already taken (`times` sorted and unique, one sample each).
-  TruthTable(const truth::TruthConfig& config, std::vector<Time> times, std::vector<TruthSample> samples);
+  TruthTable(const truth::TruthConfig& config, std::vector<Time> times,
+             std::vector<TruthSample> samples);
   /// The sample at `t`, one of the times given. @throws std::out_of_range otherwise.
   const TruthSample& At(Time t) const;
   bool Has(Time t) const;
@@ -63,13 +64,14 @@ class TruthTableBuilder {
   const truth::TruthConfig& config_;
   std::mutex mu_;
   std::condition_variable cv_;
-  std::priority_queue<Time, std::vector<Time>, std::greater<>> asked_;  // not yet taken by the thread
-  std::vector<Time> late_;      // asked behind the thread's position
+  std::priority_queue<Time, std::vector<Time>, std::greater<>>
+      asked_;               // not yet taken by the thread
+  std::vector<Time> late_;  // asked behind the thread's position
   Time watermark_{};
   bool has_watermark_ = false;
-  Time notified_watermark_{};   // the thread is woken for every second of watermark, not every event
+  Time notified_watermark_{};  // the thread is woken for every second of watermark, not every event
   bool finishing_ = false;
-  Time position_{};             // the latest time the thread has sampled (or taken)
+  Time position_{};  // the latest time the thread has sampled (or taken)
   bool started_ = false;
   std::vector<Time> done_times_;  // thread-owned until joined
   std::vector<TruthSample> done_samples_;

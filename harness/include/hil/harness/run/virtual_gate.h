@@ -29,7 +29,8 @@ class VirtualGate {
   /// this step starts a new wait. Returns false to abandon the wait.
   using WaitStep = std::function<bool(std::size_t unread, bool new_wait)>;
 
-  VirtualGate(std::vector<SerialEndpoint*> host_links, std::size_t max_link_backlog_bytes, WaitStep on_wait);
+  VirtualGate(std::vector<SerialEndpoint*> host_links, std::size_t max_link_backlog_bytes,
+              WaitStep on_wait);
 
   /// Before `bytes` bytes are written to `ep`: waits until the host has read the other host links
   /// and `ep`'s backlog leaves room. Links the host does not read pass at once. False: the wait
@@ -45,7 +46,8 @@ class VirtualGate {
  private:
   struct Link {
     const SerialEndpoint* ep;
-    std::size_t unread_bound;  // ≥ the bytes unread: last PendingToHost() plus the bytes written since
+    std::size_t
+        unread_bound;  // ≥ the bytes unread: last PendingToHost() plus the bytes written since
   };
   Link* Find(const SerialEndpoint& ep);
   /// Unread bytes on the links selected (refreshing their bounds); `except` is skipped, and a

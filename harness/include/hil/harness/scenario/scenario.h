@@ -21,8 +21,9 @@ namespace hil::harness {
 /// threshold is `max`, or `max_ratio_to_baseline` × the same metric of the raw GNSS baseline; or,
 /// with `min`, when value ≥ min (e.g. output_rate_hz).
 struct Criterion {
-  std::string name;    ///< e.g. "horizontal_rmse_m <= 1.0"
-  std::string metric;  ///< a key of report.json's metrics (e.g. horizontal_rmse_m); see kCriterionMetrics
+  std::string name;  ///< e.g. "horizontal_rmse_m <= 1.0"
+  std::string
+      metric;  ///< a key of report.json's metrics (e.g. horizontal_rmse_m); see kCriterionMetrics
   std::optional<double> max;
   std::optional<double> min;
   std::optional<double> max_ratio_to_baseline;
@@ -31,12 +32,13 @@ struct Criterion {
 /// A published reference figure (section `paper:`, scenario_suite.cc): a suite report puts the
 /// run's value of `metric` beside it. Any user can add their own reference figures this way.
 struct PaperFigure {
-  std::string source;              ///< the publication and where in it (e.g. "paper 000, table of methods")
-  std::string metric;              ///< a criterion metric (kCriterionMetrics), compared in its unit
-  std::optional<double> value;     ///< the figure; absent for a qualitative finding
-  std::string relation = "about";  ///< about (a measured value), below (an upper bound), above (a lower bound)
-  std::string finding;             ///< the result in words ("diverges"), required without a value
-  std::string note;                ///< free text (conditions, how it maps onto this scenario)
+  std::string source;  ///< the publication and where in it (e.g. "paper 000, table of methods")
+  std::string metric;  ///< a criterion metric (kCriterionMetrics), compared in its unit
+  std::optional<double> value;  ///< the figure; absent for a qualitative finding
+  std::string relation =
+      "about";          ///< about (a measured value), below (an upper bound), above (a lower bound)
+  std::string finding;  ///< the result in words ("diverges"), required without a value
+  std::string note;     ///< free text (conditions, how it maps onto this scenario)
 };
 
 /// The metric names a criterion may use.
@@ -44,8 +46,8 @@ extern const std::vector<std::string> kCriterionMetrics;
 
 /// One receiver of the scenario's GNSS section: its link and its antenna position.
 struct GnssReceiverSpec {
-  std::string link = "ttyGPS";                          ///< symlink name in the run folder
-  Eigen::Vector3d p_BA_B_m = Eigen::Vector3d::Zero();   ///< antenna lever arm (body FLU)
+  std::string link = "ttyGPS";                         ///< symlink name in the run folder
+  Eigen::Vector3d p_BA_B_m = Eigen::Vector3d::Zero();  ///< antenna lever arm (body FLU)
 };
 
 /// The GNSS receiver device(s) of a scenario (section `gnss`, read by scenario_gnss.cc). All
@@ -55,9 +57,9 @@ struct GnssReceiverSpec {
 struct GnssDeviceSpec {
   std::string profile = "neo-5m";
   int baud = 9600;
-  std::string link = "ttyGPS";    ///< symlink name in the run folder (first receiver)
+  std::string link = "ttyGPS";  ///< symlink name in the run folder (first receiver)
   double rate_hz = 1.0;
-  double output_lag_s = 0.1;      ///< epoch to first byte
+  double output_lag_s = 0.1;  ///< epoch to first byte
   std::size_t tx_buffer_bytes = 1024;
   gnss::ReceiverModelConfig model;
   gnss::StartKind start = gnss::StartKind::kHot;
@@ -67,11 +69,11 @@ struct GnssDeviceSpec {
 
 /// The IMU board's microcontroller of a scenario (section `mcu:`; absent → no IMU board).
 struct McuDeviceSpec {
-  bool enabled = false;            ///< true when the scenario has an `mcu:` section
-  std::string link = "ttyIMU";     ///< symlink name in the run folder
+  bool enabled = false;         ///< true when the scenario has an `mcu:` section
+  std::string link = "ttyIMU";  ///< symlink name in the run folder
   std::size_t tx_buffer_bytes = 4096;
   bool imu_rate_is_default = true;  ///< no imu_rate_hz given: 10 × the GNSS rate
-  mcu::McuConfig config;           ///< start_unix_ns is filled from the scenario's start_utc
+  mcu::McuConfig config;            ///< start_unix_ns is filled from the scenario's start_utc
 };
 
 /// How the estimator under test is started and read.
@@ -97,8 +99,8 @@ struct EstimatorSpec {
   /// (the first receiver's antenna), "imu" (the IMU board), or "auto": antenna for a GNSS-only
   /// navd, the IMU for navd fusing the board, the body otherwise.
   std::string reference_point = "auto";
-  double silence_timeout_s = 10.0;      ///< no output for this long fails the run
-  double startup_s = 0.0;               ///< wall time given to the program to open its devices before t = 0
+  double silence_timeout_s = 10.0;  ///< no output for this long fails the run
+  double startup_s = 0.0;  ///< wall time given to the program to open its devices before t = 0
 };
 
 /// The CAN bus of a scenario (links helper): devices' CAN frames go out on this SocketCAN

@@ -43,7 +43,8 @@ class YamlReader {
   /// top-level keys are added where this document does not define them (the document wins), and
   /// errors in them name the included file. Included files may include others (depth ≤ 8).
   /// @throws ScenarioError for a missing include, a cycle or a key two includes both define.
-  void ResolveIncludes(const std::string& base_dir, const std::vector<std::string>& lib_dirs, int depth = 0);
+  void ResolveIncludes(const std::string& base_dir, const std::vector<std::string>& lib_dirs,
+                       int depth = 0);
 
   /// Fails on any key of this mapping that is not in `allowed` (suggesting the closest one).
   void CheckKeys(std::initializer_list<const char*> allowed) const;
@@ -59,14 +60,17 @@ class YamlReader {
   double Double(const std::string& key, double fallback) const;
   /// A number in [lo, hi].
   double DoubleIn(const std::string& key, double fallback, double lo, double hi) const;
-  std::int64_t Int(const std::string& key, std::int64_t fallback, std::int64_t lo, std::int64_t hi) const;
+  std::int64_t Int(const std::string& key, std::int64_t fallback, std::int64_t lo,
+                   std::int64_t hi) const;
   bool Bool(const std::string& key, bool fallback) const;
   std::string String(const std::string& key) const;
   std::string String(const std::string& key, const std::string& fallback) const;
   /// A string that must be one of `choices`.
-  std::string Choice(const std::string& key, const std::string& fallback, std::initializer_list<const char*> choices) const;
+  std::string Choice(const std::string& key, const std::string& fallback,
+                     std::initializer_list<const char*> choices) const;
   /// A sequence of exactly `n` numbers.
-  std::vector<double> Doubles(const std::string& key, std::size_t n, std::vector<double> fallback) const;
+  std::vector<double> Doubles(const std::string& key, std::size_t n,
+                              std::vector<double> fallback) const;
 
   /// Throws a ScenarioError located at this node (or at `key` within it).
   [[noreturn]] void Fail(const std::string& message) const;

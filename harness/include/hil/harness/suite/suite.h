@@ -15,14 +15,14 @@
 namespace hil::harness {
 
 struct SuiteOptions {
-  std::string dir;                       ///< folder of scenario files
-  std::string out_dir;                   ///< suite output folder
-  std::string hil_exe;                   ///< the hil binary the runs use
+  std::string dir;      ///< folder of scenario files
+  std::string out_dir;  ///< suite output folder
+  std::string hil_exe;  ///< the hil binary the runs use
   int jobs = 2;
   int repeat = 1;
-  std::optional<std::uint64_t> seed;     ///< first seed of the repeats
-  std::vector<std::string> run_args;     ///< passed to every `hil run` (e.g. --estimator CMD)
-  bool short_form = false;               ///< each scenario's `short:` form (`hil run --short`)
+  std::optional<std::uint64_t> seed;  ///< first seed of the repeats
+  std::vector<std::string> run_args;  ///< passed to every `hil run` (e.g. --estimator CMD)
+  bool short_form = false;            ///< each scenario's `short:` form (`hil run --short`)
 };
 
 struct SuiteResult {

@@ -6,10 +6,11 @@
 /// GNSS baseline), and of each GNSS outage's maximum east, north, up and horizontal error.
 /// Written as OUT/summary.json (`scenarios`) and OUT/report.md.
 
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "hil/harness/scenario/scenario.h"
 
@@ -29,7 +30,8 @@ nlohmann::json SpreadOf(const std::vector<nlohmann::json>& values);
 /// One entry per scenario file, from the runs' summary entries (each with `scenario_file`,
 /// `pass`, `seed`, `exit_code` and, when the run produced a report, `metric_table`,
 /// `baseline_table`, `criteria`, `outages`).
-nlohmann::json SummariseScenarios(const std::vector<SuiteScenarioInfo>& scenarios, const nlohmann::json& runs);
+nlohmann::json SummariseScenarios(const std::vector<SuiteScenarioInfo>& scenarios,
+                                  const nlohmann::json& runs);
 
 /// The Markdown report of a summary (`scenarios`, `passed`, `failed`, `invalid`, `short_form`,
 /// `seeds`, `wall_time_s`).

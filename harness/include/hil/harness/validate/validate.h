@@ -42,10 +42,10 @@ struct ByteStream {
 ByteStream ReadByteSource(const std::string& source, double listen_s, int baud);
 
 struct ValidationFinding {
-  bool error = true;          ///< false: a warning
-  std::string check;          ///< e.g. "checksum", "epoch_order"
+  bool error = true;  ///< false: a warning
+  std::string check;  ///< e.g. "checksum", "epoch_order"
   std::string message;
-  std::int64_t offset = -1;   ///< byte offset (or line number for CAN logs), -1 when not applicable
+  std::int64_t offset = -1;  ///< byte offset (or line number for CAN logs), -1 when not applicable
 };
 
 struct MessageStats {
@@ -67,7 +67,8 @@ struct ValidationReport {
 ValidationReport ValidateStream(ValidateProtocol protocol, const ByteStream& stream, int baud);
 
 /// Validates an MCU frame protocol v1 stream (vectors/mcu/mcu_frame_protocol.md): framing, CRC,
-/// sequence gaps (resets allowed), per-type tick monotonicity, IMU rate against STATUS, time pulses.
+/// sequence gaps (resets allowed), per-type tick monotonicity, IMU rate against STATUS, time
+/// pulses.
 ValidationReport ValidateMcuStream(const ByteStream& stream);
 
 /// Validates a candump -l log file's text.

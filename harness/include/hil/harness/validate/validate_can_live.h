@@ -17,7 +17,7 @@ bool IsNetworkInterface(const std::string& source);
 
 /// What a live listen saw.
 struct CanListen {
-  std::string candump_text;        ///< one `candump -l` line per frame
+  std::string candump_text;  ///< one `candump -l` line per frame
   std::uint64_t frames = 0, rx_queue_drops = 0, error_frames = 0;
 };
 

@@ -15,7 +15,8 @@ namespace hil::estimator {
 /// A configuration error: "FILE:LINE: [section] key: message".
 class ConfigError : public std::runtime_error {
  public:
-  ConfigError(const std::string& file, int line, const std::string& field, const std::string& message);
+  ConfigError(const std::string& file, int line, const std::string& field,
+              const std::string& message);
 };
 
 /// One `key = value` line.

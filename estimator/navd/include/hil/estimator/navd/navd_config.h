@@ -7,16 +7,16 @@
 #include <string>
 
 #include "hil/estimator/navd/config_file.h"
-#include "hil/estimator/navd/navd_imu_config.h"
 #include "hil/estimator/navd/navd_gnss_receivers.h"
-#include "hil/estimator/navigator.h"
+#include "hil/estimator/navd/navd_imu_config.h"
 #include "hil/estimator/navd/nmea_accuracy.h"
+#include "hil/estimator/navigator.h"
 
 namespace hil::estimator {
 
 struct NavdConfig {
   // [input]
-  std::string gnss_device;       ///< serial device of the GNSS receiver (NMEA); empty = none
+  std::string gnss_device;             ///< serial device of the GNSS receiver (NMEA); empty = none
   GnssReceiversConfig gnss_receivers;  ///< gnss_device_1 … and the antennas (multi_gnss)
   int gnss_baud = 9600;
   std::string gnss_protocol = "nmea";  ///< nmea (GGA + RMC) or ubx (NAV-POSLLH/VELNED/SOL)
@@ -28,21 +28,24 @@ struct NavdConfig {
   /// after the port reopens): ubx → NAV-POSLLH/VELNED/SOL/TIMEGPS on, NMEA off; nmea → GGA and RMC
   /// only. Off by default (the receiver's saved configuration is used as it is).
   bool gnss_configure = false;
-  double gnss_rate_hz = 0;       ///< with gnss_configure: CFG-RATE to this rate; 0 leaves the rate
-  double nmea_rtk_fixed_std_m = 0.0;  ///< [filter] 1σ per horizontal axis of RTK fixed fixes (0: UERE)
-  double nmea_rtk_float_std_m = 0.0;  ///< [filter] 1σ per horizontal axis of RTK float fixes (0: UERE)
-  double nmea_velocity_std_mps = 0.2; ///< [filter] 1σ per horizontal axis of the RMC velocity
+  double gnss_rate_hz = 0;  ///< with gnss_configure: CFG-RATE to this rate; 0 leaves the rate
+  double nmea_rtk_fixed_std_m =
+      0.0;  ///< [filter] 1σ per horizontal axis of RTK fixed fixes (0: UERE)
+  double nmea_rtk_float_std_m =
+      0.0;  ///< [filter] 1σ per horizontal axis of RTK float fixes (0: UERE)
+  double nmea_velocity_std_mps = 0.2;  ///< [filter] 1σ per horizontal axis of the RMC velocity
   /// The NMEA accuracy settings together.
   NmeaAccuracy nmea_accuracy() const {
     return {nmea_uere_m, nmea_rtk_fixed_std_m, nmea_rtk_float_std_m, nmea_velocity_std_mps};
   }
-  std::string imu_device;        ///< serial device of the IMU microcontroller; empty = none
+  std::string imu_device;  ///< serial device of the IMU microcontroller; empty = none
   int imu_baud = 57600;
-  std::string imu_format = "mcu";///< mcu (binary frame protocol v1) or razor_text (Razor v13 stock lines)
+  std::string imu_format =
+      "mcu";  ///< mcu (binary frame protocol v1) or razor_text (Razor v13 stock lines)
   // [imu]: serial or CAN (navd_imu_config.h)
   NavdImuConfig imu;
   // [time]
-  int leap_seconds = 18;         ///< GPS − UTC until the receiver reports it
+  int leap_seconds = 18;  ///< GPS − UTC until the receiver reports it
   // [filter]: mode and the estimator parameters (navigator.h, error_state_ekf.h)
   NavigatorParams nav;
   // [output]
@@ -50,9 +53,9 @@ struct NavdConfig {
   double output_rate_hz = 10.0;  ///< IMU modes: solution rate (GNSS-only modes: one per fix)
   std::string nmea_device;       ///< NMEA 0183 output (GGA, RMC, HDT) to this file/pty; empty = off
   std::string can_interface;     ///< NMEA 2000 output on this SocketCAN interface; empty = off
-  std::string can_log;           ///< NMEA 2000 frames as `candump -l` lines to this file; empty = off
-  int can_source_address = 0x80; ///< NMEA 2000 source address
-  double can_rate_hz = 10.0;     ///< 129025/129026/127250/127257 rate (129029 at 1 Hz)
+  std::string can_log;  ///< NMEA 2000 frames as `candump -l` lines to this file; empty = off
+  int can_source_address = 0x80;  ///< NMEA 2000 source address
+  double can_rate_hz = 10.0;      ///< 129025/129026/127250/127257 rate (129029 at 1 Hz)
 
   /// Every GNSS receiver's device, receiver 0 (gnss_device) first.
   std::vector<std::string> GnssDevices() const { return gnss_receivers.Devices(gnss_device); }

@@ -7,10 +7,11 @@
 /// and the heading (seed 000: three NEO-5M on a 3 m circle). All receivers share gnss_baud and
 /// gnss_protocol. Validation errors name the file, the line and the key.
 
-#include <Eigen/Core>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include "hil/estimator/navd/config_file.h"
 #include "hil/estimator/navigator.h"
@@ -34,7 +35,8 @@ struct GnssReceiversConfig {
   /// After every key is read: checks the receivers against the mode and fills the navigator's
   /// antenna geometry. `mode_line` is the line of [filter] mode (0 when absent).
   /// @throws ConfigError naming the offending key.
-  void Validate(const ConfigFile& file, const std::string& gnss_device, int mode_line, NavigatorParams& nav) const;
+  void Validate(const ConfigFile& file, const std::string& gnss_device, int mode_line,
+                NavigatorParams& nav) const;
   /// Every receiver's device in index order (gnss_device first); empty when gnss_device is empty.
   std::vector<std::string> Devices(const std::string& gnss_device) const;
 };

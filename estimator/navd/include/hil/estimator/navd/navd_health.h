@@ -11,17 +11,16 @@
 ///   gnss_garbage_bytes     bytes outside any sentence/frame (line noise, framing garbage)
 ///   gnss_epochs            GNSS epochs decoded (with or without a fix)
 ///   gnss_no_fix_epochs     epochs the receiver reported without a fix
-///   gnss_repeated_epochs   epochs whose time is not after the previous one (duplicates, reordering)
-///   gnss_gaps              times a fix came more than 1.5 receiver periods after the previous fix
-///   gnss_outages           times the gnss_outage flag was raised
-///   gnss_rejected          fixes the filter's innovation gate refused
-///   gnss_late              fixes older than the filter's fusion horizon
-///   gnss_resets            filter resets to a GNSS fix (a gross jump persisted)
+///   gnss_repeated_epochs   epochs whose time is not after the previous one (duplicates,
+///   reordering) gnss_gaps              times a fix came more than 1.5 receiver periods after the
+///   previous fix gnss_outages           times the gnss_outage flag was raised gnss_rejected fixes
+///   the filter's innovation gate refused gnss_late              fixes older than the filter's
+///   fusion horizon gnss_resets            filter resets to a GNSS fix (a gross jump persisted)
 ///   imu_crc_errors, imu_bad_headers, imu_garbage_bytes   MCU frame decoder errors
 ///   imu_sequence_gaps      MCU frame sequence numbers skipped
 ///   imu_repeated_frames    MCU frames repeating the previous sequence and tick (duplicates)
-///   imu_gaps               IMU frames more than 2.5 sample periods (MCU ticks) after the previous one
-///   mcu_resets             MCU resets seen: the tick and the sequence restarted together
+///   imu_gaps               IMU frames more than 2.5 sample periods (MCU ticks) after the previous
+///   one mcu_resets             MCU resets seen: the tick and the sequence restarted together
 ///   imu_samples_dropped    IMU samples the adapter could not use (no time mapping, no scale, gap)
 ///   imu_losses             times the IMU fell silent while fixes kept coming (solutions = fixes)
 ///   imu_can_unpaired       J1939 IMU ([imu] source = can): an ARI without its ACCS or an ACCS
@@ -31,7 +30,8 @@
 /// Flags (current state at the solution's time of validity):
 ///   gnss_outage            no fix for more than max(3.5 s, 3 receiver periods + 0.5 s)
 ///   gnss_link_errors, imu_link_errors   decoder errors on that link in the last 5 s (for the
-///                          IMU: MCU frame errors, sequence gaps, repeats, and the imu_can_* counters)
+///                          IMU: MCU frame errors, sequence gaps, repeats, and the imu_can_*
+///                          counters)
 ///   gnss_rejected          a fix refused by the gate in the last 5 s
 ///   imu_gap, mcu_reset     one in the last 5 s
 ///   imu_lost               the IMU is silent: the solution is the GNSS fix (Navigator::ImuLost)
@@ -73,7 +73,8 @@ class NavdHealth {
   void AppendTo(std::string& json_line, GpsNs t);
 
   struct Counters {
-    std::uint64_t gnss_epochs = 0, gnss_no_fix_epochs = 0, gnss_repeated_epochs = 0, gnss_gaps = 0, gnss_outages = 0;
+    std::uint64_t gnss_epochs = 0, gnss_no_fix_epochs = 0, gnss_repeated_epochs = 0, gnss_gaps = 0,
+                  gnss_outages = 0;
     std::uint64_t imu_repeated_frames = 0, imu_gaps = 0, mcu_resets = 0;
   };
   const Counters& counters() const { return c_; }

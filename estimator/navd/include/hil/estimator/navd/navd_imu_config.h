@@ -26,7 +26,7 @@ struct NavdImuConfig {
 /// Reads one `[imu]` entry. @throws ConfigError naming file, line and key (unknown key included).
 void ReadNavdImuKey(const ConfigFile& file, const ConfigEntry& entry, NavdImuConfig& imu);
 /// Cross-checks `[imu]` against `[input]` once the file is read. @throws ConfigError.
-void ValidateNavdImu(const ConfigFile& file, const NavdImuConfig& imu, const std::string& imu_device,
-                     const std::string& imu_format);
+void ValidateNavdImu(const ConfigFile& file, const NavdImuConfig& imu,
+                     const std::string& imu_device, const std::string& imu_format);
 
 }  // namespace hil::estimator
