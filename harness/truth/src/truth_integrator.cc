@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
@@ -35,7 +36,7 @@ struct Inputs {
 
 /// The discrete state of the path follower.
 struct Mode {
-  enum class Phase { kOpenLoop, kFollow, kStopped, kTurnInPlace, kDone };
+  enum class Phase { kOpenLoop, kFollow, kStopped, kTurnInPlace, kDone, kExternal };
   Phase phase = Phase::kOpenLoop;
   std::size_t segment = 0;  ///< active path segment
   double resume_t = kInf;   ///< end of a stop
@@ -95,6 +96,18 @@ struct TruthIntegrator::Impl {
   bool pending_root = false;
   std::int64_t next_tick = 1;  // index of the next guidance update
   double last_request = 0;
+
+  // closed loop: external commands, from each one's grid instant on (sorted by time)
+  std::vector<std::pair<double, Inputs>> schedule;
+  bool restart_needed = false;
+  long late_restarts = 0;
+
+  /// The external command in force at t (zero before the first).
+  Inputs Scheduled(double t) const {
+    const auto it = std::upper_bound(schedule.begin(), schedule.end(), t,
+                                     [](double x, const auto& e) { return x < e.first; });
+    return it == schedule.begin() ? Inputs{} : std::prev(it)->second;
+  }
 
   // ---- model -------------------------------------------------------------------------------
 
@@ -185,6 +198,8 @@ struct TruthIntegrator::Impl {
     const VehicleParams& p = c->vehicle;
     Inputs out;
     switch (mode.phase) {
+      case Mode::Phase::kExternal:
+        return Scheduled(t + 1e-9);  // a command exactly at a grid instant acts there
       case Mode::Phase::kOpenLoop:
         out.v_cmd = NominalSpeed(t) * speed_variation->Factor(t);
         out.u_cmd = diff_drive ? c->yaw_rate_dps * kDeg : c->steer_deg * kDeg;
@@ -306,7 +321,8 @@ struct TruthIntegrator::Impl {
     if (p.speed_variation_std > 0)
       tick_s = 1.0 / c->guidance.rate_hz;  // open loop too: the speed varies
     w_IE_N = c->earth_rotation ? EarthRateIn(*frame) : Eigen::Vector3d::Zero();
-    if (c->path) {
+    if (c->external_commands) tick_s = c->command_period_s;
+    if (c->path && !c->external_commands) {
       const Path& path = *c->path;
       const std::size_t nv = path.vertices().size();
       tick_s = 1.0 / c->guidance.rate_hz;
@@ -350,7 +366,9 @@ struct TruthIntegrator::Impl {
     const double yaw0 =
         c->heading_deg ? (90.0 - *c->heading_deg) * kDeg : std::atan2(u0.y(), u0.x());
     mode = Mode{};
-    mode.phase = path ? Mode::Phase::kFollow : Mode::Phase::kOpenLoop;
+    mode.phase = c->external_commands ? Mode::Phase::kExternal
+                 : path               ? Mode::Phase::kFollow
+                                      : Mode::Phase::kOpenLoop;
     s[kE] = start.x();
     s[kN] = start.y();
     s[kYaw] = yaw0;
@@ -375,7 +393,7 @@ struct TruthIntegrator::Impl {
     Check(CVodeSVtolerances(cvode, c->rtol, atol), "CVodeSVtolerances");
     Check(CVodeSetMaxStep(cvode, c->max_step_s), "CVodeSetMaxStep");
     Check(CVodeSetMaxNumSteps(cvode, 1000000), "CVodeSetMaxNumSteps");
-    if (path) {
+    if (path && !c->external_commands) {
       Check(CVodeRootInit(cvode, 1, Roots), "CVodeRootInit");
       int dir = 1;
       Check(CVodeSetRootDirection(cvode, &dir), "CVodeSetRootDirection");
@@ -388,6 +406,7 @@ struct TruthIntegrator::Impl {
     steps_before = 0;
     reinits = roots = 0;
     last_request = 0;
+    restart_needed = false;
     Check(CVodeSetStopTime(cvode, NextTimeEvent()), "CVodeSetStopTime");
   }
 
@@ -464,6 +483,8 @@ TruthIntegrator::TruthIntegrator(const TruthConfig& config)
     throw std::invalid_argument("guidance rate must be positive");
   if (config_.path && config_.guidance.lookahead_m <= 0)
     throw std::invalid_argument("look-ahead must be positive");
+  if (config_.external_commands && !(config_.command_period_s > 0))
+    throw std::invalid_argument("command period must be positive");
   impl_->c = &config_;
   impl_->terrain = &terrain_;
   impl_->frame = &frame_;
@@ -479,6 +500,25 @@ long TruthIntegrator::steps() const {
   return impl_->steps_before + n;
 }
 long TruthIntegrator::reinits() const { return impl_->reinits; }
+long TruthIntegrator::commands() const { return static_cast<long>(impl_->schedule.size()); }
+long TruthIntegrator::late_command_restarts() const { return impl_->late_restarts; }
+
+void TruthIntegrator::SetCommand(Time t, double speed_mps, double steer_or_yaw_rate) {
+  Impl& m = *impl_;
+  if (!config_.external_commands)
+    throw std::logic_error("SetCommand needs TruthConfig::external_commands");
+  const double ts = ToSeconds(t);
+  if (!m.schedule.empty() && ts < m.schedule.back().first)
+    throw std::invalid_argument("truth commands must come in non-decreasing time order");
+  m.schedule.emplace_back(ts, Inputs{speed_mps, steer_or_yaw_rate});
+  // The grid instant where it acts: already handled (or the initial state, at t = 0) ⇒ replay.
+  const double tick = std::ceil(ts / m.tick_s - 1e-9) * m.tick_s;
+  const bool handled = tick < m.t_cur || (tick == m.t_cur && !m.pending);
+  if (handled && !m.restart_needed) {
+    m.restart_needed = true;
+    if (!(m.t_cur == 0 && m.fresh)) ++m.late_restarts;  // nothing integrated yet: not late
+  }
+}
 long TruthIntegrator::root_events() const { return impl_->roots; }
 
 TruthSample TruthIntegrator::Sample(Time t) {
@@ -486,7 +526,7 @@ TruthSample TruthIntegrator::Sample(Time t) {
   const double ts = ToSeconds(t);
   if (ts < 0) throw std::runtime_error("truth requested before t = 0");
   // dense output covers the last step only: an earlier request restarts from t = 0
-  if (ts < m.t_lo || ts < m.last_request) m.Init();
+  if (ts < m.t_lo || ts < m.last_request || m.restart_needed) m.Init();
   m.last_request = ts;
   m.AdvanceTo(ts);
 

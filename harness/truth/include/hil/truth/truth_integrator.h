@@ -30,6 +30,16 @@
 /// stop, a turn in place (differential drive, sharp corners) or ends the path. Time events
 /// (guidance updates, the end of a stop, steps of a speed profile) use the stop time.
 ///
+/// **Commands as inputs (closed loop)**: with `TruthConfig::external_commands` the built-in
+/// guidance is off and the vehicle obeys the commands given by `SetCommand` (speed and steering
+/// angle or yaw rate, the outputs of the emulated actuators), piecewise constant on a grid of
+/// `command_period_s`: a command set for time t takes effect at the first grid instant ≥ t. The
+/// integrator stops at every grid instant (CVodeSetStopTime) and re-initialises (CVodeReInit) only
+/// where the command changes. Commands must be set before the truth is sampled past their grid
+/// instant (the lockstep guarantees it); a late command is still honoured, by re-integrating from
+/// t = 0 with the whole command history (deterministic, slower). A `path`, if given, is then used
+/// for the samples' cross-track only.
+///
 /// **Sampling**: requests must come in non-decreasing time order; each is read from the
 /// interpolating polynomial of the last step (CVodeGetDky), so the step sequence does not depend
 /// on which sensors sample the truth. Commands are right-continuous: a sample exactly at a
@@ -94,6 +104,9 @@ struct TruthConfig {
   double rtol = 1e-10;  ///< CVODE relative tolerance
   double atol_m = 1e-9;     ///< CVODE absolute tolerance on positions (m); angles get atol_m/10 rad
   double max_step_s = 0.5;  ///< CVODE maximum step
+  /// Closed loop: commands come from `TruthIntegrator::SetCommand`, not from the built-in guidance.
+  bool external_commands = false;
+  double command_period_s = 0.01;  ///< grid on which external commands take effect
 };
 
 class TruthIntegrator {
@@ -110,6 +123,16 @@ class TruthIntegrator {
   const LocalFrame& frame() const { return frame_; }
   const Terrain& terrain() const { return terrain_; }
   const TruthConfig& config() const { return config_; }
+  /// Closed loop (`external_commands`): from the first grid instant ≥ t on, the commanded forward
+  /// speed is `speed_mps` and the steering command `steer_or_yaw_rate` (front-wheel angle in rad,
+  /// left positive, for the bicycle models; yaw rate in rad/s, left positive, for diff_drive).
+  /// Times must not decrease from one call to the next.
+  /// @throws std::logic_error without `external_commands`, std::invalid_argument for a decreasing
+  /// time.
+  void SetCommand(Time t, double speed_mps, double steer_or_yaw_rate);
+  /// Commands given so far, and re-integrations from t = 0 forced by late commands.
+  long commands() const;
+  long late_command_restarts() const;
   /// CVODE internal steps taken so far, over all re-initialisations (for benchmarks).
   long steps() const;
   /// Re-initialisations (input discontinuities) so far.

@@ -1,0 +1,117 @@
+// The truth with commands as inputs (closed loop): piecewise-constant commands on the command
+// grid, a restart only where they change, the analytic steady turn, determinism whatever the
+// sampling, and late commands honoured by a replay.
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "hil/truth/truth_integrator.h"
+
+namespace hil::truth {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180;
+
+TruthConfig ClosedLoop() {
+  TruthConfig c;
+  c.origin = {35.4796096, 50.5979765, 1300};
+  c.vehicle = VehicleParams::Tractor();
+  c.heading_deg = 90;  // east
+  c.external_commands = true;
+  c.command_period_s = 0.01;
+  c.earth_rotation = false;
+  return c;
+}
+
+Time Sec(double s) { return TimeFromSeconds(s); }
+
+TEST(TruthCommands, FollowsPiecewiseConstantCommands) {
+  TruthIntegrator truth(ClosedLoop());
+  truth.SetCommand(Sec(0), 1.0, 0.0);
+  const TruthSample a = truth.Sample(Sec(20));
+  EXPECT_NEAR(a.p_NB_N_m.x(), 20.0, 1e-6);  // started at speed, straight east
+  EXPECT_NEAR(a.p_NB_N_m.y(), 0.0, 1e-9);
+  EXPECT_DOUBLE_EQ(a.speed_cmd_mps, 1.0);
+  const double delta = 10 * kDeg;
+  truth.SetCommand(Sec(20.005), 1.0, delta);  // acts at the grid instant 20.01 s
+  const TruthSample b = truth.Sample(Sec(20.009));
+  EXPECT_DOUBLE_EQ(b.steer_cmd_rad, 0.0);
+  const TruthSample c = truth.Sample(Sec(20.01));
+  EXPECT_DOUBLE_EQ(c.steer_cmd_rad, delta);
+  const TruthSample d = truth.Sample(Sec(40));  // steady turn: ψ̇ = v tan δ / L
+  EXPECT_NEAR(d.steer_rad, delta, 1e-9);
+  EXPECT_NEAR(d.w_NB_B_radps.z(), std::tan(delta) / truth.config().vehicle.wheelbase_m, 1e-7);
+  EXPECT_EQ(truth.late_command_restarts(), 0);
+}
+
+TEST(TruthCommands, RestartsOnlyWhereTheCommandChanges) {
+  TruthIntegrator truth(ClosedLoop());
+  truth.SetCommand(Sec(0), 1.0, 0.0);
+  // 10 Hz: sample at the tick, the command arrives 1 ms later (acts at the next grid instant);
+  // the steering changes at ticks 1, 5, 10, …, 100.
+  for (int k = 1; k <= 100; ++k) {
+    truth.Sample(Sec(0.1 * k));
+    const double delta = (k / 5) % 2 ? 5 * kDeg : -5 * kDeg;
+    truth.SetCommand(Sec(0.1 * k + 0.001), 1.0, delta);
+  }
+  truth.Sample(Sec(10.05));
+  EXPECT_EQ(truth.commands(), 101);
+  EXPECT_EQ(truth.reinits(), 21);
+  EXPECT_EQ(truth.late_command_restarts(), 0);
+}
+
+std::vector<TruthSample> RunWithSampling(double sample_period_s) {
+  TruthIntegrator truth(ClosedLoop());
+  truth.SetCommand(Sec(0), 0.8, 0.0);
+  std::vector<TruthSample> at_ticks;
+  for (int k = 1; k <= 200; ++k) {
+    const double t = 0.1 * k;
+    for (double s = t - 0.1 + sample_period_s; s < t - 1e-12; s += sample_period_s)
+      truth.Sample(Sec(s));
+    at_ticks.push_back(truth.Sample(Sec(t)));
+    truth.SetCommand(Sec(t + 0.001), 0.8, 0.2 * std::sin(0.3 * t));
+  }
+  return at_ticks;
+}
+
+TEST(TruthCommands, SamplesDoNotDependOnTheSamplingSchedule) {
+  const std::vector<TruthSample> coarse = RunWithSampling(0.1), fine = RunWithSampling(0.007);
+  ASSERT_EQ(coarse.size(), fine.size());
+  for (std::size_t i = 0; i < coarse.size(); ++i) {
+    EXPECT_EQ(coarse[i].p_NB_N_m, fine[i].p_NB_N_m) << i;
+    EXPECT_EQ(coarse[i].q_NB.coeffs(), fine[i].q_NB.coeffs()) << i;
+  }
+}
+
+TEST(TruthCommands, ALateCommandIsHonouredByAReplay) {
+  TruthIntegrator on_time(ClosedLoop()), late(ClosedLoop());
+  on_time.SetCommand(Sec(0), 1.0, 0.0);
+  late.SetCommand(Sec(0), 1.0, 0.0);
+  on_time.Sample(Sec(5));
+  on_time.SetCommand(Sec(5.001), 1.0, 3 * kDeg);
+  late.Sample(Sec(7));  // already past 5 s
+  late.SetCommand(Sec(5.001), 1.0, 3 * kDeg);
+  EXPECT_EQ(late.late_command_restarts(), 1);
+  const TruthSample a = on_time.Sample(Sec(12)), b = late.Sample(Sec(12));
+  EXPECT_EQ(a.p_NB_N_m, b.p_NB_N_m);
+  EXPECT_THROW(late.SetCommand(Sec(4), 1.0, 0.0), std::invalid_argument);
+  TruthConfig open = ClosedLoop();
+  open.external_commands = false;
+  TruthIntegrator open_loop(open);
+  EXPECT_THROW(open_loop.SetCommand(Sec(1), 1.0, 0.0), std::logic_error);
+}
+
+TEST(TruthCommands, DiffDriveTakesYawRate) {
+  TruthConfig c = ClosedLoop();
+  c.vehicle = VehicleParams::DiffDrive();
+  TruthIntegrator truth(c);
+  truth.SetCommand(Sec(0), 0.5, 0.1);
+  const TruthSample s = truth.Sample(Sec(30));
+  EXPECT_NEAR(s.w_NB_B_radps.z(), 0.1, 1e-7);
+  EXPECT_NEAR(s.speed_mps, 0.5, 1e-9);
+}
+
+}  // namespace
+}  // namespace hil::truth
