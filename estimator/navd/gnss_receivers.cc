@@ -17,6 +17,7 @@ est::GnssSample ToGnssSample(const est::drivers::NmeaMeasurement& m, int leap_s,
   g.fix_quality = m.quality;
   g.num_sv = m.num_sv;
   g.hdop = m.hdop.value_or(0.0);
+  g.ground_speed_mps = m.speed_mps;  // known also when the course is not (no velocity then)
   if (m.speed_mps && m.course_deg) {
     const double c = *m.course_deg * std::numbers::pi / 180.0;
     g.vel_enu_mps = {*m.speed_mps * std::sin(c), *m.speed_mps * std::cos(c), 0.0};
@@ -42,10 +43,10 @@ GnssReceivers::Receiver::Receiver(const std::string& path, int baud, int index,
            ubx_input = cfg.gnss_protocol == "ubx"](const est::drivers::UbxMessage& msg) {
         setup.OnMessage(msg);
         if (!ubx_input) return;
-        auto g = ubx_epochs.Add(msg);
-        if (!g) return;
-        g->antenna = index;
-        h(*g);
+        for (est::GnssSample g : ubx_epochs.Add(msg)) {
+          g.antenna = index;
+          h(g);
+        }
       }) {}
 
 GnssReceivers::GnssReceivers(const est::NavdConfig& cfg, Handler handler)

@@ -100,7 +100,11 @@ est::NavSolution ToSolution(const est::NavOutput& o, const est::Navigator& nav, 
   s.lat_deg = o.position.lat_deg;
   s.lon_deg = o.position.lon_deg;
   s.height_m = o.position.height_m;
-  s.vel_enu_mps = {o.v_N_mps.x(), o.v_N_mps.y(), o.v_N_mps.z()};
+  if (o.has_velocity) {
+    s.vel_enu_mps = std::array<double, 3>{o.v_N_mps.x(), o.v_N_mps.y(), o.v_N_mps.z()};
+  }
+  s.speed_mps =
+      o.has_velocity ? std::optional<double>(o.v_N_mps.head<2>().norm()) : o.ground_speed_mps;
   s.pos_std_enu_m = {o.pos_std_enu_m.x(), o.pos_std_enu_m.y(), o.pos_std_enu_m.z()};
   if (o.has_attitude) {
     const Eigen::Vector3d x = o.q_NB * Eigen::Vector3d::UnitX(),

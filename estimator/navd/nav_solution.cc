@@ -10,11 +10,21 @@ std::string ToJsonLine(const NavSolution& s) {
   const long long nsec = s.tov_unix_ns % 1000000000LL;
   int n = std::snprintf(
       buf, sizeof buf,
-      "{\"tov_utc_s\":%lld.%09lld,\"lat_deg\":%.10f,\"lon_deg\":%.10f,\"height_m\":%.4f,"
-      "\"vel_enu_mps\":[%.4f,%.4f,%.4f],\"pos_std_enu_m\":[%.4f,%.4f,%.4f]",
-      sec, nsec, s.lat_deg, s.lon_deg, s.height_m, s.vel_enu_mps[0], s.vel_enu_mps[1],
-      s.vel_enu_mps[2], s.pos_std_enu_m[0], s.pos_std_enu_m[1], s.pos_std_enu_m[2]);
+      "{\"tov_utc_s\":%lld.%09lld,\"lat_deg\":%.10f,\"lon_deg\":%.10f,\"height_m\":%.4f", sec, nsec,
+      s.lat_deg, s.lon_deg, s.height_m);
   std::string out(buf, static_cast<std::size_t>(n));
+  if (s.vel_enu_mps) {
+    const auto& v = *s.vel_enu_mps;
+    n = std::snprintf(buf, sizeof buf, ",\"vel_enu_mps\":[%.4f,%.4f,%.4f]", v[0], v[1], v[2]);
+    out.append(buf, static_cast<std::size_t>(n));
+  }
+  if (s.speed_mps) {
+    n = std::snprintf(buf, sizeof buf, ",\"speed_mps\":%.4f", *s.speed_mps);
+    out.append(buf, static_cast<std::size_t>(n));
+  }
+  n = std::snprintf(buf, sizeof buf, ",\"pos_std_enu_m\":[%.4f,%.4f,%.4f]", s.pos_std_enu_m[0],
+                    s.pos_std_enu_m[1], s.pos_std_enu_m[2]);
+  out.append(buf, static_cast<std::size_t>(n));
   if (s.yaw_deg) {
     n = std::snprintf(buf, sizeof buf, ",\"yaw_deg\":%.4f", *s.yaw_deg);
     out.append(buf, static_cast<std::size_t>(n));

@@ -305,7 +305,9 @@ void Navigator::GnssOnlyFix(const GnssSample& g) {
   direct_.valid = g.fix_quality > 0;
   direct_.position = g.position;
   direct_.p_N_m = frame_.ToLocal(g.position);
-  direct_.v_N_mps = g.vel_enu_mps;
+  direct_.v_N_mps = g.has_velocity ? g.vel_enu_mps : Eigen::Vector3d::Zero();
+  direct_.has_velocity = g.has_velocity;
+  direct_.ground_speed_mps = g.ground_speed_mps;
   direct_.pos_std_enu_m = g.pos_std_enu_m;
   direct_.vel_std_enu_mps = g.vel_std_enu_mps;
   direct_.has_attitude = false;

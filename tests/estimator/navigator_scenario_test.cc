@@ -7,62 +7,11 @@
 
 #include <gtest/gtest.h>
 
+#include "fixtures/seed000.h"
 #include "fixtures/sensor_simulator.h"
 
 namespace hil::estimator::testing {
 namespace {
-
-truth::TruthConfig Seed000Truth() {
-  truth::TruthConfig t;
-  t.origin = {35.4796096, 50.5979765, 1300.0};
-  t.heading_deg = 30.0;
-  t.speed_mps = 1.6 / 3.6;
-  return t;
-}
-
-/// Consumer IMU of the Razor v13 class (ADXL345, LY530AL/LPR530AL through a 10-bit ADC).
-ImuGrade ConsumerImu() {
-  ImuGrade g;
-  g.gyro_arw_deg_rthr = 3.8;
-  g.gyro_turn_on_bias_deg_s = 0.3;
-  g.gyro_bias_instability_deg_hr = 36.0;
-  g.accel_vrw_mps_rthr = 0.25;
-  g.accel_turn_on_bias_mps2 = 0.1;
-  g.accel_bias_instability_mps2 = 0.005;
-  g.bias_tau_s = 300.0;
-  return g;
-}
-
-GnssModel Neo5mGnss() {
-  GnssModel g;
-  g.rate_hz = 1.0;
-  g.white_std_m = 0.03;
-  g.corr_std_m = 0.28;
-  g.corr_tau_s = 4.5;
-  g.vertical_factor = 1.5;
-  g.vel_std_mps = 0.05;
-  g.latency_s = 0.12;
-  g.reported_pos_std_m = 0.05;
-  g.reported_vel_std_mps = 0.05;
-  return g;
-}
-
-NavigatorParams Seed000Params(const Eigen::Vector3d& lever) {
-  NavigatorParams p;
-  p.mode = NavMode::kEkf;
-  p.ekf.lever_arm_B_m = lever;
-  p.ekf.accel_noise_mps2_rthz = 0.25 / 60.0 * 3.0;
-  p.ekf.gyro_noise_radps_rthz = 3.8 / 60.0 * M_PI / 180.0 * 2.0;
-  p.ekf.accel_bias_rw_mps3_rthz = 5e-4;
-  p.ekf.gyro_bias_rw_radps2_rthz = 2e-5;
-  p.ekf.init_accel_bias_std_mps2 = 0.3;
-  p.ekf.init_gyro_bias_std_radps = 0.01;
-  p.ekf.gnss_error_tau_s = 4.5;
-  p.ekf.gnss_error_std_m = 0.28;
-  p.ekf.nhc_std_mps = 0.02;
-  p.fusion_horizon_ns = 300'000'000;
-  return p;
-}
 
 TEST(NavigatorScenarioTest, Seed000FusedRmseBeatsRawGnss) {
   // GIVEN the seed 000 robot: 1.6 km/h straight line, NEO-5M-class errors (σ 0.28 m, τ 4.5 s) at

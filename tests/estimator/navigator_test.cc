@@ -193,5 +193,31 @@ TEST(NavigatorTest, FallsBackToTheFixesWhileTheImuIsSilentAndRestartsAfter) {
   EXPECT_LT((frame.ToLocal(back.position) - Eigen::Vector3d(22.0, 0, 0)).head<2>().norm(), 0.3);
 }
 
+// issue 15.12: an RMC with a speed and an empty course is a speed without a direction. The fix
+// passes through with the speed reported and no velocity (not a velocity of 0 as if known).
+TEST(NavigatorTest, GnssOnlyFixWithSpeedButNoCourseReportsTheSpeedAndNoVelocity) {
+  NavigatorParams p;
+  p.mode = NavMode::kGnssOnly;
+  Navigator nav(p);
+  GnssSample g;
+  g.t = kT0;
+  g.position = {51.925907, 4.5776455, 42.0};
+  g.ground_speed_mps = 0.109;  // what ublox-lea-5h.log's receiver said, course field empty
+  nav.Push(g);
+  NavOutput o = nav.Output();
+  ASSERT_TRUE(o.valid);
+  EXPECT_FALSE(o.has_velocity);
+  ASSERT_TRUE(o.ground_speed_mps.has_value());
+  EXPECT_DOUBLE_EQ(*o.ground_speed_mps, 0.109);
+  // the next fix has a course: the velocity is known again
+  g.t += kNsPerSecond;
+  g.has_velocity = true;
+  g.vel_enu_mps = {0.1, 0.2, 0.0};
+  nav.Push(g);
+  o = nav.Output();
+  EXPECT_TRUE(o.has_velocity);
+  EXPECT_NEAR(o.v_N_mps.y(), 0.2, 1e-12);
+}
+
 }  // namespace
 }  // namespace hil::estimator

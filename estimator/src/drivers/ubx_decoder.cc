@@ -1,7 +1,10 @@
 #include "hil/estimator/drivers/ubx_decoder.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+
+#include "hil/estimator/geodesy.h"
 
 namespace hil::estimator::drivers {
 namespace {
@@ -47,7 +50,21 @@ constexpr Entry kTable[] = {
        m.week = static_cast<std::int16_t>(U2(p + 8));
        m.gps_fix = U1(p + 10);
        m.flags = U1(p + 11);
+       for (int i = 0; i < 3; ++i) {
+         m.p_E_m[i] = I4(p + 12 + 4 * i) * 0.01;
+         m.v_E_mps[i] = I4(p + 28 + 4 * i) * 0.01;
+       }
+       m.p_acc_m = U4(p + 24) * 0.01;
+       m.sol_s_acc_mps = U4(p + 40) * 0.01;
+       m.pdop = U2(p + 44) * 0.01;
        m.num_sv = U1(p + 47);
+     }},
+    {0x01, 0x04, 18,
+     [](const char* p, UbxMessage& m) {
+       m.itow_ms = U4(p);
+       m.pdop = U2(p + 6) * 0.01;
+       m.vdop = U2(p + 10) * 0.01;
+       m.hdop = U2(p + 12) * 0.01;
      }},
     {0x01, 0x12, 36,
      [](const char* p, UbxMessage& m) {
@@ -146,52 +163,89 @@ void UbxDecoder::Dispatch(const char* f, std::size_t n) {
   ++stats_.unsupported;
 }
 
-std::optional<GnssSample> UbxEpochAssembler::Add(const UbxMessage& m) {
-  if (m.cls != 0x01) return std::nullopt;
+UbxEpochs UbxEpochAssembler::Add(const UbxMessage& m) {
+  UbxEpochs out;
+  const auto keep = [&out](std::optional<GnssSample> g) {
+    if (g) out.samples[out.count++] = *g;
+  };
+  if (m.cls != 0x01) return out;
   if (m.id == 0x20) {
     if (m.flags & 0x02) week_ = m.week;
     if (m.flags & 0x04) leap_s_ = m.leap_s;
-    return std::nullopt;
+    return out;
   }
-  if (m.id != 0x02 && m.id != 0x06 && m.id != 0x12) return std::nullopt;
-  std::optional<GnssSample> out;
-  if ((have_pos_ || have_vel_ || have_sol_) && m.itow_ms != itow_) {
-    out = Flush();
+  const std::uint8_t kind = m.id == 0x02 ? kPos : m.id == 0x12 ? kVel : m.id == 0x06 ? kSol : 0;
+  if (kind == 0) return out;
+  if (have_ != 0 && m.itow_ms != itow_) {
+    expected_ |= have_;  // what this receiver sends per epoch, learned from the epochs it sent
+    keep(Flush());
   }
   itow_ = m.itow_ms;
-  if (m.id == 0x02) pos_ = m, have_pos_ = true;
-  if (m.id == 0x12) vel_ = m, have_vel_ = true;
-  if (m.id == 0x06) {
+  have_ |= kind;
+  if (kind == kPos) pos_ = m;
+  if (kind == kVel) vel_ = m;
+  if (kind == kSol) {
     sol_ = m;
-    have_sol_ = true;
     if (m.flags & 0x04) week_ = m.week;
   }
-  if (have_pos_ && have_vel_ && have_sol_) out = Flush();
+  if (Complete()) keep(Flush());
   return out;
+}
+
+bool UbxEpochAssembler::Complete() const {
+  constexpr std::uint8_t kAll = kPos | kVel | kSol;
+  if ((have_ & kAll) == kAll) return true;
+  return expected_ != 0 && (have_ & expected_) == expected_;
+}
+
+void UbxEpochAssembler::FillPosition(GnssSample& g) const {
+  if (have_ & kPos) {  // NAV-POSLLH: 1e-7 deg, mm
+    g.position = {pos_.lat_deg, pos_.lon_deg, pos_.height_m};
+    const double h = std::max(pos_.h_acc_m, 0.01) / std::sqrt(2.0);
+    g.pos_std_enu_m = {h, h, std::max(pos_.v_acc_m, 0.01)};
+    return;
+  }
+  // NAV-SOL: ECEF in cm with a 3-D accuracy, shared equally by the three axes
+  g.position = LlaFromEcef(Eigen::Vector3d(sol_.p_E_m[0], sol_.p_E_m[1], sol_.p_E_m[2]));
+  const double s = std::max(sol_.p_acc_m, 0.01) / std::sqrt(3.0);
+  g.pos_std_enu_m = {s, s, s};
+}
+
+void UbxEpochAssembler::FillVelocity(GnssSample& g) const {
+  if (have_ & kVel) {  // NAV-VELNED: NED in cm/s
+    g.has_velocity = true;
+    g.vel_enu_mps = {vel_.vel_e_mps, vel_.vel_n_mps, -vel_.vel_d_mps};
+    const double s = std::max(vel_.s_acc_mps, 0.01);
+    g.vel_std_enu_mps = {s, s, s};
+  } else if (have_ & kSol) {  // NAV-SOL: ECEF in cm/s, rotated into ENU at the fix
+    const LocalTangentFrame at_fix(g.position);
+    const Eigen::Vector3d v_E(sol_.v_E_mps[0], sol_.v_E_mps[1], sol_.v_E_mps[2]);
+    g.has_velocity = true;
+    g.vel_enu_mps = at_fix.R_EN().transpose() * v_E;
+    const double s = std::max(sol_.sol_s_acc_mps, 0.01);
+    g.vel_std_enu_mps = {s, s, s};
+  }
+  if (g.has_velocity) g.ground_speed_mps = g.vel_enu_mps.head<2>().norm();
 }
 
 std::optional<GnssSample> UbxEpochAssembler::Flush() {
   std::optional<GnssSample> out;
+  const bool have_sol = (have_ & kSol) != 0;
   const bool fix_ok =
-      !have_sol_ || ((sol_.flags & 0x01) && (sol_.gps_fix == 2 || sol_.gps_fix == 3));
-  if (have_pos_ && week_ >= 0 && fix_ok) {
+      !have_sol || ((sol_.flags & 0x01) && (sol_.gps_fix == 2 || sol_.gps_fix == 3));
+  if ((have_ & (kPos | kSol)) && week_ >= 0 && fix_ok) {
     GnssSample g;
     g.t = static_cast<GpsNs>(week_) * 604800LL * kNsPerSecond +
-          static_cast<GpsNs>(itow_) * 1'000'000LL + (have_sol_ ? sol_.ftow_ns : 0);
-    g.position = {pos_.lat_deg, pos_.lon_deg, pos_.height_m};
-    const double h = std::max(pos_.h_acc_m, 0.01) / std::sqrt(2.0);
-    g.pos_std_enu_m = {h, h, std::max(pos_.v_acc_m, 0.01)};
-    if (have_vel_) {
-      g.has_velocity = true;
-      g.vel_enu_mps = {vel_.vel_e_mps, vel_.vel_n_mps, -vel_.vel_d_mps};
-      const double s = std::max(vel_.s_acc_mps, 0.01);
-      g.vel_std_enu_mps = {s, s, s};
-    }
-    g.num_sv = have_sol_ ? sol_.num_sv : 0;
-    g.fix_quality = have_sol_ && (sol_.flags & 0x02) ? 2 : 1;
+          static_cast<GpsNs>(itow_) * 1'000'000LL + (have_sol ? sol_.ftow_ns : 0);
+    FillPosition(g);
+    FillVelocity(g);
+    g.fix_dim = have_sol && sol_.gps_fix == 2 ? 2 : 3;
+    if (g.fix_dim == 2) g.pos_std_enu_m.z() = kHeldHeightStd_m;
+    g.num_sv = have_sol ? sol_.num_sv : 0;
+    g.fix_quality = have_sol && (sol_.flags & 0x02) ? 2 : 1;
     out = g;
   }
-  have_pos_ = have_vel_ = have_sol_ = false;
+  have_ = 0;
   return out;
 }
 

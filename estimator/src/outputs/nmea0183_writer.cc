@@ -59,12 +59,18 @@ std::string FormatNmea0183(const NavOutput& o, std::int64_t utc_ns) {
   CivilFromDays(days, y, m, d);
   const std::string lat = LatLon(o.position.lat_deg, true), lon = LatLon(o.position.lon_deg, false);
   char buf[256];
-  const double speed_kn = o.v_N_mps.head<2>().norm() / 0.514444;
-  double course = std::atan2(o.v_N_mps.x(), o.v_N_mps.y()) * 180.0 / M_PI;
-  if (course < 0) course += 360.0;
-  std::snprintf(buf, sizeof buf, "GNRMC,%s,%c,%s,%s,%.3f,%.2f,%02d%02d%02d,,,%c", time,
-                o.valid ? 'A' : 'V', lat.c_str(), lon.c_str(), speed_kn, course, d, m, y % 100,
-                o.valid ? 'A' : 'N');
+  // a speed without a direction (the receiver gave no course) keeps the course field empty
+  const double speed_mps =
+      o.has_velocity ? o.v_N_mps.head<2>().norm() : o.ground_speed_mps.value_or(0.0);
+  char course[16] = "";
+  if (o.has_velocity) {
+    double c = std::atan2(o.v_N_mps.x(), o.v_N_mps.y()) * 180.0 / M_PI;
+    if (c < 0) c += 360.0;
+    std::snprintf(course, sizeof course, "%.2f", c);
+  }
+  std::snprintf(buf, sizeof buf, "GNRMC,%s,%c,%s,%s,%.3f,%s,%02d%02d%02d,,,%c", time,
+                o.valid ? 'A' : 'V', lat.c_str(), lon.c_str(), speed_mps / 0.514444, course, d, m,
+                y % 100, o.valid ? 'A' : 'N');
   std::string out = NmeaSentence(buf);
   // GGA: the ellipsoidal height as altitude with a zero geoid separation (the filter has no geoid)
   std::snprintf(buf, sizeof buf, "GNGGA,%s,%s,%s,%d,08,1.0,%.3f,M,0.0,M,,", time, lat.c_str(),

@@ -1,5 +1,6 @@
 #include "hil/estimator/drivers/ubx_decoder.h"
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -69,7 +70,7 @@ TEST(UbxDecoderTest, AssemblesAnEpochFromMixedSplitStream) {
   UbxEpochAssembler asm_;
   std::vector<GnssSample> out;
   UbxDecoder d([&](const UbxMessage& m) {
-    if (auto g = asm_.Add(m)) out.push_back(*g);
+    for (const GnssSample& g : asm_.Add(m)) out.push_back(g);
   });
   for (char c : stream) d.Feed(std::string_view(&c, 1));
   // THEN one fix on GPS time with position, accuracy and NED→ENU velocity
@@ -94,14 +95,83 @@ TEST(UbxDecoderTest, NoFixIsNotReportedAndIncompleteEpochFlushesOnNextItow) {
   UbxMessage m;
   std::vector<GnssSample> out;
   UbxDecoder d([&](const UbxMessage& msg) {
-    if (auto g = a.Add(msg)) out.push_back(*g);
+    for (const GnssSample& g : a.Add(msg)) out.push_back(g);
   });
   d.Feed(Sol(1000, 0, 0x0C) + PosLlh(1000) + VelNed(1000));  // no fix
   d.Feed(Sol(2000, 3, 0x0D) + PosLlh(2000));                 // no VELNED this epoch
   EXPECT_TRUE(out.empty());
-  d.Feed(PosLlh(3000));  // the next epoch flushes the previous one without velocity
-  ASSERT_EQ(out.size(), 1u);
-  EXPECT_FALSE(out[0].has_velocity);
+  d.Feed(PosLlh(3000));       // the next epoch flushes the previous one: VELNED missing, so the
+  ASSERT_EQ(out.size(), 1u);  // velocity is NAV-SOL's ECEF velocity (zero in this SOL)
+  EXPECT_TRUE(out[0].has_velocity);
+  EXPECT_EQ(out[0].vel_enu_mps.norm(), 0.0);
+  EXPECT_EQ(out[0].vel_std_enu_mps.x(), 0.01);  // SOL sAcc 0, floored at 1 cm/s
+}
+
+// NAV-SOL of navisys-gr701w.log at 2024-03-28T15:14:05Z (GPS week 2307): ECEF in cm and cm/s
+std::string SolEcef(std::uint32_t itow, std::uint8_t fix, std::uint8_t flags) {
+  std::string p;
+  Le(p, itow, 4);
+  Le(p, 0, 4);  // fTOW
+  Le(p, 2307, 2);
+  p.push_back(static_cast<char>(fix));
+  p.push_back(static_cast<char>(flags));
+  for (std::int32_t v : {-200169112, -392507405, 459654666})
+    Le(p, static_cast<std::uint32_t>(v), 4);
+  Le(p, 2463, 4);  // pAcc 24.63 m
+  for (std::int32_t v : {38, -22, -2}) Le(p, static_cast<std::uint32_t>(v), 4);
+  Le(p, 105, 4);  // sAcc 1.05 m/s
+  Le(p, 250, 2);  // pDOP 2.5
+  p.push_back(0);
+  p.push_back(5);  // numSV
+  p.append(4, '\0');
+  return Frame(0x01, 0x06, p);
+}
+
+TEST(UbxDecoderTest, ReceiverSendingOnlyNavSolGivesPositionAndVelocityFromEcef) {
+  // GIVEN a receiver that sends NAV-SOL (no POSLLH, no VELNED) each second
+  UbxEpochAssembler a;
+  std::vector<GnssSample> out;
+  UbxDecoder d([&](const UbxMessage& m) {
+    for (const GnssSample& g : a.Add(m)) out.push_back(g);
+  });
+  const std::uint32_t itow = 4 * 86400000 + 15 * 3600000 + 14 * 60000 + 23000;  // Thu 15:14:23 GPS
+  d.Feed(SolEcef(itow, 3, 0x0D));
+  EXPECT_TRUE(out.empty());  // what the receiver sends per epoch is not known yet
+  d.Feed(SolEcef(itow + 1000, 3, 0x0D));
+  ASSERT_EQ(out.size(), 2u);  // the first epoch, flushed by the second, and the second (learned:
+                              // this receiver sends NAV-SOL alone)
+  d.Feed(SolEcef(itow + 2000, 2, 0x0D));
+  ASSERT_EQ(out.size(), 3u);  // NAV-SOL alone completes an epoch at once
+  // THEN position, height and velocity equal gpsd's decoding of the same message (.chk:
+  // lat 46.404648618, lon -117.020462010, altHAE 232.9577, velN -0.031, velE 0.438, velD -0.002)
+  const GnssSample& g = out[0];
+  EXPECT_EQ(g.t, 2307LL * 604800LL * kNsPerSecond + itow * 1'000'000LL);
+  EXPECT_NEAR(g.position.lat_deg, 46.404648618, 1e-9);
+  EXPECT_NEAR(g.position.lon_deg, -117.020462010, 1e-9);
+  EXPECT_NEAR(g.position.height_m, 232.9577, 1e-4);
+  EXPECT_NEAR(g.pos_std_enu_m.x(), 24.63 / std::sqrt(3.0), 1e-9);
+  ASSERT_TRUE(g.has_velocity);
+  EXPECT_NEAR(g.vel_enu_mps.x(), 0.438, 5e-4);
+  EXPECT_NEAR(g.vel_enu_mps.y(), -0.031, 5e-4);
+  EXPECT_NEAR(g.vel_enu_mps.z(), 0.002, 5e-4);
+  ASSERT_TRUE(g.ground_speed_mps);
+  EXPECT_NEAR(*g.ground_speed_mps, 0.440, 5e-4);
+  EXPECT_EQ(g.num_sv, 5);
+  EXPECT_EQ(g.fix_dim, 3);
+  // a 2-D fix: the height is the receiver's held value, not a measurement
+  EXPECT_EQ(out[2].fix_dim, 2);
+  EXPECT_EQ(out[2].pos_std_enu_m.z(), UbxEpochAssembler::kHeldHeightStd_m);
+}
+
+TEST(UbxDecoderTest, NavSolWithGpsFixOkClearIsNoFix) {
+  UbxEpochAssembler a;
+  std::vector<GnssSample> out;
+  UbxDecoder d([&](const UbxMessage& m) {
+    for (const GnssSample& g : a.Add(m)) out.push_back(g);
+  });
+  d.Feed(SolEcef(1000, 3, 0x0D) + SolEcef(2000, 3, 0x0C) + SolEcef(3000, 3, 0x0D));
+  ASSERT_EQ(out.size(), 2u);  // the epoch at 2000 (3-D, gpsFixOk clear) is dropped
+  EXPECT_EQ(out[1].t % (604800LL * kNsPerSecond), 3000 * 1'000'000LL);
 }
 
 }  // namespace

@@ -22,6 +22,8 @@
 #include "hil/firmware_emu/gnss/ubx_frame.h"
 #include "hil/firmware_emu/gnss/ubx_messages.h"
 
+#include "golden_file.h"
+
 namespace hil::gnss {
 namespace {
 
@@ -319,27 +321,7 @@ std::string Generate() {
 }
 
 TEST(GnssGoldenTest, VectorsMatchTheEmulator) {
-  const char* src = std::getenv("HIL_SOURCE_DIR");
-  ASSERT_NE(src, nullptr) << "HIL_SOURCE_DIR is not set";
-  const std::string path = std::string(src) + "/vectors/gnss/neo5m_messages.golden";
-  const std::string now = Generate();
-  if (const char* regen = std::getenv("HIL_REGEN_VECTORS"); regen && std::string(regen) == "1") {
-    std::ofstream(path, std::ios::binary) << now;
-    GTEST_SKIP() << "rewrote " << path;
-  }
-  std::ifstream in(path, std::ios::binary);
-  ASSERT_TRUE(in) << "missing " << path << " (run with HIL_REGEN_VECTORS=1)";
-  const std::string stored((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  std::istringstream a(stored), b(now);
-  std::string la, lb;
-  int line = 0;
-  while (true) {
-    const bool ga = static_cast<bool>(std::getline(a, la)),
-               gb = static_cast<bool>(std::getline(b, lb));
-    ++line;
-    if (!ga && !gb) break;
-    ASSERT_EQ(la, lb) << path << ":" << line << " differs from the emulator's output";
-  }
+  hil::test::CheckOrWriteGolden("vectors/gnss/neo5m_messages.golden", Generate());
 }
 
 // The decoded values agree with the inputs (so the vectors cannot silently encode wrong values).

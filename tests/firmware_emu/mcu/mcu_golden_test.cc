@@ -16,6 +16,7 @@
 #include "hil/firmware_emu/mcu/mcu_device.h"
 
 #include "frame_reader.h"
+#include "golden_file.h"
 #include "truth_driver.h"
 
 namespace hil::mcu {
@@ -245,36 +246,9 @@ BinaryVector MakeCan(McuConfig c, double seconds) {
   return v;
 }
 
-// ---- compare or regenerate ----
-std::string SourceDir() {
-  const char* s = std::getenv("HIL_SOURCE_DIR");
-  return s ? s : HIL_TEST_SOURCE_DIR;
-}
-
-bool Regenerate() {
-  const char* r = std::getenv("HIL_REGEN_VECTORS");
-  return r && std::string(r) == "1";
-}
-
-std::string ReadAll(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
+// ---- compare or regenerate (tests/support/golden_file.h) ----
 void CheckOrWrite(const std::string& rel, const std::string& content) {
-  const std::string path = SourceDir() + "/" + rel;
-  if (Regenerate()) {
-    std::ofstream(path, std::ios::binary) << content;
-    std::printf("wrote %s (%zu bytes)\n", path.c_str(), content.size());
-    return;
-  }
-  const std::string have = ReadAll(path);
-  ASSERT_FALSE(have.empty()) << path << " is missing; run with HIL_REGEN_VECTORS=1";
-  EXPECT_TRUE(have == content) << path << " differs from the regenerated vector (" << have.size()
-                               << " vs " << content.size()
-                               << " bytes); if the change is intended, HIL_REGEN_VECTORS=1";
+  hil::test::CheckOrWriteGolden(rel, content);
 }
 
 TEST(McuGoldenTest, RazorBinaryStream) {

@@ -100,6 +100,10 @@ struct NavOutput {
   Lla position;  ///< body reference point
   Eigen::Vector3d p_N_m = Eigen::Vector3d::Zero();
   Eigen::Vector3d v_N_mps = Eigen::Vector3d::Zero();
+  /// v_N_mps is known. False for a passed-through fix whose receiver gave no course (v_N_mps is
+  /// then zero and means nothing; ground_speed_mps may still hold the reported speed).
+  bool has_velocity = true;
+  std::optional<double> ground_speed_mps;  ///< horizontal speed when known without a direction
   Eigen::Quaterniond q_NB = Eigen::Quaterniond::Identity();
   bool has_attitude = false;
   Eigen::Vector3d pos_std_enu_m = Eigen::Vector3d::Zero();

@@ -5,6 +5,7 @@
 /// the filter origin, B = body FLU (x forward, y left, z up).
 
 #include <cstdint>
+#include <optional>
 
 #include <Eigen/Core>
 
@@ -26,9 +27,13 @@ struct GnssSample {
   GpsNs t = 0;
   Lla position;                                  ///< antenna, WGS-84
   Eigen::Vector3d pos_std_enu_m{1.0, 1.0, 2.0};  ///< 1σ per ENU axis
-  bool has_velocity = false;
+  int fix_dim = 3;  ///< 3: 3-D fix; 2: 2-D fix (height held by the receiver, not measured)
+  bool has_velocity = false;  ///< the velocity vector is known (speed and direction)
   Eigen::Vector3d vel_enu_mps = Eigen::Vector3d::Zero();  ///< antenna velocity
   Eigen::Vector3d vel_std_enu_mps{0.2, 0.2, 0.4};
+  /// Horizontal speed over ground when the receiver reports it, also when its direction is
+  /// unknown (e.g. an RMC with an empty course field): reported, never fused as a velocity.
+  std::optional<double> ground_speed_mps;
   int num_sv = 0;
   int fix_quality = 1;  ///< 0 none, 1 GPS, 2 DGPS, 4/5 RTK
   double hdop = 0;      ///< receiver's HDOP (0: not reported)

@@ -4,8 +4,8 @@
 /// them into GnssSamples. Framing: B5 62, class, id, u16 length, payload, Fletcher-8 checksum over
 /// class..payload. Bytes may come in any pieces, mixed with NMEA or garbage; bad checksums and
 /// overlong lengths are counted and the search restarts one byte after the B5. Never throws.
-/// Messages: NAV-POSLLH (01 02), NAV-SOL (01 06), NAV-VELNED (01 12), NAV-TIMEGPS (01 20),
-/// NAV-TIMEUTC (01 21), ACK-ACK (05 01), ACK-NAK (05 00).
+/// Messages: NAV-POSLLH (01 02), NAV-DOP (01 04), NAV-SOL (01 06), NAV-VELNED (01 12),
+/// NAV-TIMEGPS (01 20), NAV-TIMEUTC (01 21), ACK-ACK (05 01), ACK-NAK (05 00).
 
 #include <array>
 #include <cstdint>
@@ -29,6 +29,11 @@ struct UbxMessage {
   int week = -1, gps_fix = 0, num_sv = 0, leap_s = 0;
   std::uint8_t flags = 0;  ///< SOL flags (b0 gpsFixOk) or TIMEGPS valid bits
   std::int32_t ftow_ns = 0;
+  // NAV-SOL: the solution in ECEF (E), its 3-D accuracies
+  std::array<double, 3> p_E_m{}, v_E_mps{};
+  double p_acc_m = 0, sol_s_acc_mps = 0;
+  // NAV-DOP (and NAV-SOL pDOP)
+  double pdop = 0, hdop = 0, vdop = 0;
   // ACK
   std::uint8_t ack_cls = 0, ack_id = 0;
 };
@@ -58,18 +63,40 @@ class UbxDecoder {
   std::size_t len_ = 0;
 };
 
-/// Joins POSLLH, VELNED and SOL of one epoch (same iTOW, any order) into a GnssSample on GPS time.
-/// The epoch is emitted when all three are present, or, with what it has, when a later epoch
-/// starts.
+/// Joins the navigation messages of one epoch (same iTOW, any order) into a GnssSample on GPS
+/// time, from whichever of them the receiver sends: position from NAV-POSLLH, else from NAV-SOL's
+/// ECEF position (the estimator's geodesy); velocity from NAV-VELNED, else from NAV-SOL's ECEF
+/// velocity rotated into ENU at that position; fix type, gpsFixOk, week and numSV from NAV-SOL.
+/// A fix is reported when NAV-SOL (if sent) says gpsFixOk with a 2-D or 3-D fix.
+/// The epoch is emitted as soon as it holds POSLLH, VELNED and SOL, or every message this
+/// receiver has been seen to send per epoch (learned from the epochs before); otherwise, with
+/// what it has, when a later epoch starts.
+/// The epochs one message ends: none, one, or two (the previous epoch, flushed by this message's
+/// new iTOW, and the new epoch when this message alone completes it). Iterable.
+struct UbxEpochs {
+  std::array<GnssSample, 2> samples;
+  std::size_t count = 0;
+  const GnssSample* begin() const { return samples.data(); }
+  const GnssSample* end() const { return samples.data() + count; }
+  bool empty() const { return count == 0; }
+};
+
 class UbxEpochAssembler {
  public:
-  std::optional<GnssSample> Add(const UbxMessage& m);
+  UbxEpochs Add(const UbxMessage& m);
   int leap_seconds() const { return leap_s_; }
+  /// Vertical 1σ given for a 2-D fix, whose height the receiver holds instead of measuring.
+  static constexpr double kHeldHeightStd_m = 1000.0;
 
  private:
+  enum : std::uint8_t { kPos = 1, kVel = 2, kSol = 4 };
   std::optional<GnssSample> Flush();
+  bool Complete() const;
+  void FillPosition(GnssSample& g) const;
+  void FillVelocity(GnssSample& g) const;
   std::uint32_t itow_ = 0;
-  bool have_pos_ = false, have_vel_ = false, have_sol_ = false;
+  std::uint8_t have_ = 0;      // messages of the current epoch
+  std::uint8_t expected_ = 0;  // messages this receiver sends per epoch (0: not yet known)
   UbxMessage pos_, vel_, sol_;
   int week_ = -1, leap_s_ = 18;
 };

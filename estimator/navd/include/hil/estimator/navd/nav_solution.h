@@ -3,9 +3,11 @@
 /// The estimator's output at one time of validity, and its JSON-lines form (one object per line),
 /// which is navd's stdout contract with the harness:
 ///   {"tov_utc_s": 1370851200.000000, "lat_deg": …, "lon_deg": …, "height_m": …,
-///    "vel_enu_mps": [e, n, u], "pos_std_enu_m": [...], "yaw_deg": …, "roll_deg": …, "pitch_deg":
-///    …, "vel_std_enu_mps": [...], "nis_pos": …, "mean_nis_pos": …, "mode": "ekf", "status": N}
-/// (the fields after pos_std_enu_m are present when known).
+///    "vel_enu_mps": [e, n, u], "speed_mps": …, "pos_std_enu_m": [...], "yaw_deg": …, "roll_deg":
+///    …, "pitch_deg": …, "vel_std_enu_mps": [...], "nis_pos": …, "mean_nis_pos": …, "mode": "ekf",
+///    "status": N}
+/// (vel_enu_mps, speed_mps and the fields after pos_std_enu_m are present when known: a fix whose
+/// receiver reported a speed without a course carries speed_mps and no vel_enu_mps).
 /// `tov_utc_s` is the time of validity as UTC seconds since the Unix epoch; `yaw_deg` is the
 /// heading, degrees clockwise from true north (absent when unknown).
 
@@ -17,10 +19,11 @@
 namespace hil::estimator {
 
 struct NavSolution {
-  std::int64_t tov_unix_ns = 0;           ///< time of validity, UTC
-  double lat_deg = 0, lon_deg = 0;        ///< WGS-84
-  double height_m = 0;                    ///< ellipsoidal height
-  std::array<double, 3> vel_enu_mps{};    ///< velocity in the local ENU frame
+  std::int64_t tov_unix_ns = 0;                      ///< time of validity, UTC
+  double lat_deg = 0, lon_deg = 0;                   ///< WGS-84
+  double height_m = 0;                               ///< ellipsoidal height
+  std::optional<std::array<double, 3>> vel_enu_mps;  ///< velocity in the local ENU frame
+  std::optional<double> speed_mps;        ///< horizontal speed, also when its direction is unknown
   std::optional<double> yaw_deg;          ///< heading clockwise from true north
   std::array<double, 3> pos_std_enu_m{};  ///< 1-sigma position uncertainty, ENU
   std::optional<double> roll_deg,
