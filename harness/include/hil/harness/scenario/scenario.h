@@ -5,6 +5,7 @@
 /// and reports errors as ScenarioError (file, line, field).
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -148,6 +149,14 @@ Scenario LoadScenario(const std::string& path, bool short_form = false);
 std::vector<std::string> ScenarioLibraryDirs();
 /// Loads the embedded default scenario (vectors/scenarios/default.yaml, compiled in).
 Scenario LoadDefaultScenario();
+
+/// NGA's EGM96 15' geoid grid (`gnss.geoid: egm96`): PROJ's egm96_15.gtx (Debian proj-data; found
+/// when the project is configured, or $HIL_EGM96_GRID), read once per process.
+/// @throws std::runtime_error when the grid cannot be read.
+std::shared_ptr<const gnss::GeoidGrid> Egm96Geoid();
+/// The geoid table of a u-blox 5 (`gnss.geoid: ublox5`, the default): EGM96 at 10° nodes rounded
+/// to whole metres, interpolated bilinearly (see geoid_grid.h for the real captures it matches).
+std::shared_ptr<const gnss::GeoidGrid> Ublox5Geoid();
 /// Parses scenario text; `name` stands for the file in messages. @throws ScenarioError.
 Scenario ParseScenario(const std::string& text, const std::string& name);
 
