@@ -114,11 +114,16 @@ struct CanLinkSpec {
   bool imu_to_estimator = false;
 };
 
+/// UTC of t = 0 when a scenario gives no start_utc. Not the paper's 2013-06-10: gpsd 3.22 (Debian
+/// 12) takes NMEA dates before its release (2021) for GPS week-rollover victims and reports them
+/// 1024 weeks later.
+inline constexpr const char* kDefaultStartUtc = "2026-06-10T08:00:00Z";
+
 struct Scenario {
   std::string file;  ///< where it came from ("<embedded default>" for the default)
   std::string name;
   std::string description;
-  std::int64_t start_unix_ns = 0;  ///< UTC of t = 0
+  std::int64_t start_unix_ns = 0;  ///< UTC of t = 0 (start_utc; default kDefaultStartUtc)
   double duration_s = 60;
   std::uint64_t seed = 1;
   truth::TruthConfig truth;
