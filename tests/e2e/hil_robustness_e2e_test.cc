@@ -221,5 +221,70 @@ TEST(HilRobustnessE2eTest, AnOutputFolderThatCannotBeCreatedIsAClearError) {
       << r.out;
 }
 
+// Issue 15.6: inputs that are not scenarios must exit 2 with the file, line and field named (a
+// folder aborted hil with 134, validate said 1, impossible dates ran shifted, a binary file's
+// message lost its byte, an empty file was at "line 0", a missing include looked in "").
+TEST(HilRobustnessE2eTest, AFolderIsBadInputForRunEmulateAndValidate) {
+  TempDir dir("e2e_folder");
+  const std::string out = " --out " + dir / "run";
+  for (const std::string& cmd :
+       {" run " + dir.str() + out, " emulate " + dir.str() + out,
+        " validate --protocol nmea " + dir.str(), " validate --protocol ubx " + dir.str(),
+        " validate --protocol mcu " + dir.str()}) {
+    const CommandResult r = RunCommand(Hil() + cmd);
+    EXPECT_EQ(r.exit_code, 2) << cmd << r.out;
+    EXPECT_NE(r.out.find(dir.str() + ": is a folder"), std::string::npos) << cmd << r.out;
+  }
+}
+
+TEST(HilRobustnessE2eTest, AnImpossibleStartDateIsBadInput) {
+  TempDir dir("e2e_date");
+  for (const char* date : {"2027-02-29", "2026-02-30", "2026-04-31"}) {
+    WriteFile(dir / "s.yaml", std::string("start_utc: \"") + date + "T08:00:00Z\"\n" + Scenario(5));
+    const CommandResult r = RunCommand(Hil() + " run " + dir / "s.yaml" + " --out " + dir / "run");
+    EXPECT_EQ(r.exit_code, 2) << date << r.out;
+    EXPECT_NE(r.out.find(dir / "s.yaml:1: start_utc: no such date"), std::string::npos) << r.out;
+  }
+  WriteFile(dir / "s.yaml", "start_utc: \"2028-02-29T08:00:00Z\"\n" + Scenario(5));
+  const CommandResult leap = RunCommand(Hil() + " run " + dir / "s.yaml" + " --out " + dir / "run");
+  EXPECT_EQ(leap.exit_code, 0) << leap.out;
+  EXPECT_NE(ReadFile(dir / "run/captures/ttyGPS.cap").find("2c3239303232382c"), std::string::npos)
+      << "RMC of 29 February 2028 (\",290228,\" in the capture's hex bytes)";
+}
+
+TEST(HilRobustnessE2eTest, BinaryAndEmptyFilesAreNamedWithTheirLine) {
+  TempDir dir("e2e_binary");
+  WriteFile(dir / "bin.yaml", std::string("name: t\nseed: 1\x01\xfe\n", 18));
+  CommandResult r = RunCommand(Hil() + " run " + dir / "bin.yaml" + " --out " + dir / "run");
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.out.find(dir / "bin.yaml:2: column 8: byte 0x01 is not text"), std::string::npos)
+      << r.out;
+  WriteFile(dir / "nul.yaml", std::string("\0\0\0", 3));
+  r = RunCommand(Hil() + " run " + dir / "nul.yaml" + " --out " + dir / "run");
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.out.find(dir / "nul.yaml:1: column 1: byte 0x00"), std::string::npos) << r.out;
+  for (const char* text : {"", "# only a comment\n"}) {
+    WriteFile(dir / "empty.yaml", text);
+    r = RunCommand(Hil() + " run " + dir / "empty.yaml" + " --out " + dir / "run");
+    EXPECT_EQ(r.exit_code, 2) << r.out;
+    EXPECT_NE(r.out.find(dir / "empty.yaml:1: the file is empty"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find(":0:"), std::string::npos) << r.out;
+  }
+}
+
+TEST(HilRobustnessE2eTest, AMissingIncludeNamesTheFoldersLookedIn) {
+  TempDir dir("e2e_include");
+  WriteFile(dir / "s.yaml", "include: no_such_rig.yaml\n" + Scenario(5));
+  // the scenario named without a folder: it lives in the current one
+  const CommandResult r =
+      RunCommand("cd " + dir.str() + " && " + Hil() + " run s.yaml --out " + dir / "run");
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.out.find("s.yaml:1: include: cannot find included file 'no_such_rig.yaml' (looked "
+                       "in ., "),
+            std::string::npos)
+      << r.out;
+  EXPECT_EQ(r.out.find("looked in ,"), std::string::npos) << r.out;
+}
+
 }  // namespace
 }  // namespace hil::test

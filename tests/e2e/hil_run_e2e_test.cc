@@ -19,18 +19,21 @@ TEST(HilRunE2eTest, DefaultScenarioPassesWithHonestMetrics) {
   EXPECT_TRUE(report["pass"].get<bool>());
   const double est = report["metrics"]["horizontal_rmse_m"].get<double>();
   const double raw = report["baselines"]["horizontal_rmse_m"].get<double>();
-  // a standalone receiver of the configured grade (0.28 m per axis) and an estimate built from it
+  // a standalone receiver of the configured grade (0.225 m per axis), and navd's EKF fusing it with
+  // the IMU board does better (issue 15.9: the default showed GNSS only, 0.393 against 0.392 m)
   EXPECT_GT(raw, 0.1);
   EXPECT_LT(raw, 1.0);
   EXPECT_GT(est, 0.05);
-  EXPECT_LT(est, 1.0);
-  // every epoch of the 120 s run reached navd through the pty and came back
-  EXPECT_GE(report["metrics"]["samples"].get<int>(), 118);
-  EXPECT_NEAR(report["metrics"]["output_rate_hz"].get<double>(), 1.0, 0.01);
-  for (const char* f :
-       {"junit.xml", "truth.csv", "estimate.csv", "gnss_fixes.csv", "captures/ttyGPS.cap"}) {
+  EXPECT_LT(est, 0.9 * raw);
+  // both links: every GNSS epoch from 20 s to 120 s scored, the estimate at the IMU's 10 Hz
+  EXPECT_GE(report["baselines"]["samples"].get<int>(), 100);
+  EXPECT_GE(report["metrics"]["samples"].get<int>(), 995);
+  EXPECT_NEAR(report["metrics"]["output_rate_hz"].get<double>(), 10.0, 0.1);
+  for (const char* f : {"junit.xml", "truth.csv", "estimate.csv", "gnss_fixes.csv",
+                        "captures/ttyGPS.cap", "captures/ttyIMU.cap"}) {
     EXPECT_TRUE(std::filesystem::exists(dir / ("run/" + std::string(f)))) << f;
   }
+  EXPECT_NE(ReadFile(dir / "run/navd.conf").find("ekf"), std::string::npos);
   EXPECT_NE(ReadFile(dir / "run/junit.xml").find("<testcase"), std::string::npos);
   EXPECT_NE(r.out.find("PASS"), std::string::npos);
 }

@@ -40,6 +40,13 @@ constexpr std::array<LeapStep, 18> kLeapSteps{{
     {1483228800, 18},
 }};
 
+// Days of a Gregorian month (month 1–12).
+int DaysInMonth(int year, int month) {
+  constexpr std::array<int, 12> kDays{31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+  const bool leap = (year % 4 == 0 && year % 100 != 0) || year % 400 == 0;
+  return month == 2 && leap ? 29 : kDays[static_cast<std::size_t>(month - 1)];
+}
+
 }  // namespace
 
 std::int64_t DaysFromCivil(int year, int month, int day) {
@@ -134,6 +141,11 @@ std::int64_t ParseIsoUtc(const std::string& text) {
   if (u.year < 1980 || u.year > 2200 || u.month < 1 || u.month > 12 || u.day < 1 || u.day > 31 ||
       u.hour > 23 || u.minute > 59 || u.second > 59) {
     throw std::invalid_argument("UTC time out of range: '" + text + "'");
+  }
+  if (u.day > DaysInMonth(u.year, u.month)) {  // else 2027-02-29 would silently be 1 March
+    throw std::invalid_argument(
+        "no such date: month " + std::to_string(u.month) + " of " + std::to_string(u.year) +
+        " has " + std::to_string(DaysInMonth(u.year, u.month)) + " days: '" + text + "'");
   }
   return UnixNsFromUtc(u);
 }

@@ -62,7 +62,8 @@ GnssFix ReceiverModel::Calc(const TruthSample& truth, std::int64_t unix_ns, doub
   fix.lon_deg =
       truth.lon_deg + d_N.x() / ((rn + truth.height_m) * std::cos(lat)) * 180.0 / std::numbers::pi;
   fix.height_m = truth.height_m + d_N.z();
-  fix.geoid_separation_m = config_.geoid_separation_m;
+  fix.geoid_separation_m = config_.geoid ? config_.geoid->SeparationAt_m(fix.lat_deg, fix.lon_deg)
+                                         : config_.geoid_separation_m;
   const double sv = config_.velocity_sigma_mps * in.h_scale;
   fix.vel_e_mps = v_A_N.x() + sv * normal_(rng_);
   fix.vel_n_mps = v_A_N.y() + sv * normal_(rng_);

@@ -63,30 +63,48 @@ std::vector<OutageMetrics> ComputeOutages(const std::vector<ErrorSample>& errors
   return out;
 }
 
-OutputTiming ComputeOutputTiming(const std::vector<EstimateRecord>& records_in, double speed) {
+namespace {
+
+// Solutions missing from a gap of `gap_s` seconds: none up to 1.5 periods, else
+// round(gap / period) − 1. A window edge counts like a solution, so a stream may start up to 1.5
+// periods after the window opens (its phase) and end as much before it closes.
+double MissingInGap(double gap_s, double period_s) {
+  return gap_s > 1.5 * period_s ? std::round(gap_s / period_s) - 1 : 0.0;
+}
+
+}  // namespace
+
+OutputTiming ComputeOutputTiming(const std::vector<EstimateRecord>& records_in, Time t_from,
+                                 Time t_to, double speed) {
   OutputTiming t;
-  if (records_in.size() < 2) return t;
-  std::vector<EstimateRecord> records = records_in;
+  std::vector<EstimateRecord> records;
+  for (const EstimateRecord& r : records_in) {
+    if (r.t_validity >= t_from && r.t_validity <= t_to) records.push_back(r);
+  }
+  const double window_s = ToSeconds(t_to - t_from);
+  if (window_s <= 0) return t;
+  t.output_rate_hz = static_cast<double>(records.size()) / window_s;
+  if (records.empty()) {
+    t.missing_fraction = 1.0;
+    return t;
+  }
   std::stable_sort(
       records.begin(), records.end(),
       [](const EstimateRecord& a, const EstimateRecord& b) { return a.t_validity < b.t_validity; });
-  const double span_s = ToSeconds(records.back().t_validity - records.front().t_validity);
-  if (span_s <= 0) return t;
-  t.output_rate_hz = static_cast<double>(records.size() - 1) / span_s;
   std::vector<double> dt_s;
   for (std::size_t i = 1; i < records.size(); ++i) {
     dt_s.push_back(ToSeconds(records[i].t_validity - records[i - 1].t_validity));
   }
-  const double period_s = Percentile(dt_s, 50);
+  // the nominal period: the median interval (one solution alone says nothing about it)
+  const double period_s = dt_s.empty() ? 0.0 : Percentile(dt_s, 50);
   if (period_s > 0) {
-    double missing = 0;
-    for (const double d : dt_s) {
-      if (d > 1.5 * period_s) missing += std::round(d / period_s) - 1;
-    }
-    t.missing_fraction = missing / (span_s / period_s + 1);
+    double missing = MissingInGap(ToSeconds(records.front().t_validity - t_from), period_s) +
+                     MissingInGap(ToSeconds(t_to - records.back().t_validity), period_s);
+    for (const double d : dt_s) missing += MissingInGap(d, period_s);
+    t.missing_fraction = missing / (static_cast<double>(records.size()) + missing);
   }
   std::vector<std::int64_t> wall;
-  for (const auto& r : records_in) {
+  for (const auto& r : records) {
     if (r.wall_rx_ns > 0) wall.push_back(r.wall_rx_ns);
   }
   if (wall.size() >= 3) {

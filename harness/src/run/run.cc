@@ -414,7 +414,7 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
   AddCrossTrack(fix_err, path);
   report.metrics = ComputeAccuracy(est_err);
   report.baselines = ComputeAccuracy(fix_err);
-  report.timing = ComputeOutputTiming(estimates, pacer ? opt.speed : 1.0);
+  report.timing = ComputeOutputTiming(estimates, t_from, t_end, pacer ? opt.speed : 1.0);
   if (!pacer) {  // arrival times mean nothing in virtual mode
     report.timing.jitter_p50_ms.reset(), report.timing.jitter_p99_ms.reset(),
         report.timing.jitter_max_ms.reset();

@@ -130,7 +130,7 @@ Scenario FromReader(const YamlReader& root) {
   s.name = root.String("name");
   s.description = root.String("description", "");
   try {
-    s.start_unix_ns = gnss::ParseIsoUtc(root.String("start_utc", "2013-06-10T08:00:00Z"));
+    s.start_unix_ns = gnss::ParseIsoUtc(root.String("start_utc", kDefaultStartUtc));
   } catch (const std::invalid_argument& e) {
     root.Fail("start_utc", e.what());
   }

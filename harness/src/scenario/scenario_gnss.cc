@@ -13,6 +13,9 @@
 //     - {link: ttyGPS, antenna_lever_arm_m: [0, 0, 1]}
 //   errors: {horizontal_sigma_m, vertical_sigma_m, correlation_time_s, velocity_sigma_mps,
 //            common_fraction}
+//   geoid: ublox5              # geoid height N at each fix: ublox5 (EGM96 on the receiver's 10°
+//                              # table, the default) or egm96 (the 15' grid)
+//   geoid_separation_m: -20.0  # or a fixed N instead
 //   faults:                    # the receiver's own fault timeline (scenario seconds)
 //     - {kind: outage, start_s: 30, end_s: 45}
 //     - {kind: obstruction, start_s: 60, end_s: 70, elevation_deg: 40}
@@ -20,6 +23,8 @@
 //     - {kind: multipath, start_s: 100, end_s: 110, sigma_m: 3}
 //     - {kind: data_gap, start_s: 120, end_s: 130}   # output removed, receiver keeps its fix
 #include <cmath>
+#include <cstdlib>
+#include <memory>
 #include <numbers>
 
 #include "scenario_sections.h"
@@ -49,7 +54,8 @@ gnss::GnssFault ReadFault(const YamlReader& f) {
 
 void ReadGnss(const YamlReader& r, GnssDeviceSpec& g) {
   r.CheckKeys({"profile", "baud", "link", "rate_hz", "output_lag_s", "tx_buffer_bytes", "errors",
-               "antenna_lever_arm_m", "start", "count", "array_radius_m", "receivers", "faults"});
+               "antenna_lever_arm_m", "start", "count", "array_radius_m", "receivers", "faults",
+               "geoid", "geoid_separation_m"});
   g.profile = r.Choice("profile", g.profile, {"neo-5m", "rtk"});
   const gnss::ReceiverProfile profile = gnss::ProfileByName(g.profile);
   g.baud = static_cast<int>(r.Int("baud", profile.baud, 1200, 921600));
@@ -128,11 +134,45 @@ void ReadGnss(const YamlReader& r, GnssDeviceSpec& g) {
 const std::vector<std::string> kGnssSectionKeys{"gnss"};
 
 void ReadGnssSection(const YamlReader& root, GnssDeviceSpec& g) {
-  if (auto r = root.OptionalChild("gnss")) {
+  const auto r = root.OptionalChild("gnss");
+  if (r) {
     ReadGnss(*r, g);
   } else {
     g.receivers = {GnssReceiverSpec{g.link, g.model.p_BA_B_m}};
   }
+  // the geoid: EGM96 at each fix's position as a u-blox 5 applies it, unless the scenario fixes N
+  g.model.geoid.reset();
+  if (r && r->Has("geoid_separation_m")) {
+    if (r->Has("geoid")) r->Fail("geoid", "give either geoid or geoid_separation_m, not both");
+    g.model.geoid_separation_m = r->DoubleIn("geoid_separation_m", 0, -200, 200);
+    return;
+  }
+  const std::string model = r ? r->Choice("geoid", "ublox5", {"ublox5", "egm96"}) : "ublox5";
+  try {
+    g.model.geoid = model == "egm96" ? Egm96Geoid() : Ublox5Geoid();
+  } catch (const std::exception& e) {
+    const std::string why = std::string(e.what()) +
+                            " (install Debian's proj-data, or fix the geoid height with "
+                            "gnss.geoid_separation_m)";
+    if (r) r->Fail("geoid", why);
+    root.Fail(why);
+  }
+}
+
+std::shared_ptr<const gnss::GeoidGrid> Egm96Geoid() {
+  // one grid per process (4 MB), read on first use; $HIL_EGM96_GRID overrides the built-in path
+  static const std::shared_ptr<const gnss::GeoidGrid> grid = [] {
+    const char* env = std::getenv("HIL_EGM96_GRID");
+    return std::make_shared<const gnss::GeoidGrid>(
+        gnss::GeoidGrid::LoadGtx(env && *env ? env : HIL_EGM96_GRID));
+  }();
+  return grid;
+}
+
+std::shared_ptr<const gnss::GeoidGrid> Ublox5Geoid() {
+  static const std::shared_ptr<const gnss::GeoidGrid> grid =
+      std::make_shared<const gnss::GeoidGrid>(Egm96Geoid()->Resampled(10.0, true));
+  return grid;
 }
 
 }  // namespace hil::harness

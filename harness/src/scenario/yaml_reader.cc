@@ -2,18 +2,59 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <optional>
 
 namespace hil::harness {
 
 ScenarioError::ScenarioError(std::string file, int line, std::string field,
                              const std::string& message)
-    : std::runtime_error(file + ":" + std::to_string(line) + ": " +
+    : std::runtime_error(file + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " +
                          (field.empty() ? "" : field + ": ") + message),
       file_(std::move(file)),
       line_(line),
       field_(std::move(field)) {}
+
+namespace {
+
+struct NonText {
+  int line = 0;
+  std::string message;
+};
+
+// The first byte that cannot be in a YAML text file (a control character other than tab and line
+// ends, or a byte that does not start or continue valid UTF-8), named by its line, column and
+// value: yaml-cpp's own message would print the byte itself, which a terminal does not show.
+std::optional<NonText> FirstNonText(const std::string& text) {
+  int line = 1, column = 1;
+  for (std::size_t i = 0; i < text.size(); ++column) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    std::size_t len = c < 0x80             ? 1
+                      : (c & 0xE0) == 0xC0 ? 2
+                      : (c & 0xF0) == 0xE0 ? 3
+                      : (c & 0xF8) == 0xF0 ? 4
+                                           : 0;
+    bool ok = len > 0 && (c >= 0x20 || c == '\t' || c == '\n' || c == '\r') && c != 0x7F &&
+              i + len <= text.size() && !(len == 2 && c < 0xC2);
+    for (std::size_t k = 1; ok && k < len; ++k)
+      ok = (static_cast<unsigned char>(text[i + k]) & 0xC0) == 0x80;
+    if (!ok) {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "0x%02X", c);
+      return NonText{line, "column " + std::to_string(column) + ": byte " + hex +
+                               " is not text (a scenario is a UTF-8 YAML text file; is this a "
+                               "binary file?)"};
+    }
+    if (c == '\n') ++line, column = 0;
+    i += len;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
 
 int EditDistance(const std::string& a, const std::string& b) {
   std::vector<int> prev(b.size() + 1), cur(b.size() + 1);
@@ -33,10 +74,17 @@ YamlReader::YamlReader(YAML::Node node, std::string file, std::string path)
     : node_(std::move(node)), file_(std::move(file)), path_(std::move(path)) {}
 
 YamlReader YamlReader::LoadFile(const std::string& file) {
-  std::ifstream probe(file);
+  std::error_code ec;
+  if (std::filesystem::is_directory(file, ec))
+    throw ScenarioError(file, 0, "", "is a folder, not a scenario file");
+  std::ifstream probe(file, std::ios::binary);
   if (!probe) throw ScenarioError(file, 0, "", "cannot read the file (missing or not readable)");
+  const std::string text{std::istreambuf_iterator<char>(probe), std::istreambuf_iterator<char>()};
+  if (const auto bad = FirstNonText(text)) throw ScenarioError(file, bad->line, "", bad->message);
   try {
-    YAML::Node root = YAML::LoadFile(file);
+    YAML::Node root = YAML::Load(text);
+    if (root.IsNull() || !root.IsDefined())
+      throw ScenarioError(file, 1, "", "the file is empty (a scenario is a mapping of keys)");
     if (!root.IsMap())
       throw ScenarioError(file, root.Mark().line + 1, "", "the document must be a mapping of keys");
     return YamlReader(root, file, "");
@@ -50,9 +98,11 @@ const std::string& YamlReader::FileOf(const std::string& key) const {
   return it == key_file_.end() ? file_ : it->second;
 }
 
-void YamlReader::ResolveIncludes(const std::string& base_dir,
+void YamlReader::ResolveIncludes(const std::string& base_dir_in,
                                  const std::vector<std::string>& lib_dirs, int depth) {
   namespace fs = std::filesystem;
+  // a scenario named without a folder ("my.yaml") lives in the current one
+  const std::string base_dir = base_dir_in.empty() ? "." : base_dir_in;
   const auto inc = Get("include");
   if (!inc) return;
   if (depth > 8) Fail("include", "includes nested more than 8 deep (a cycle?)");

@@ -87,6 +87,8 @@ ByteStream ReadByteSource(const std::string& source, double listen_s, int baud) 
   if (stat(source.c_str(), &st) != 0)
     throw std::runtime_error("cannot read " + source + ": " + std::strerror(errno));
   if (S_ISCHR(st.st_mode)) return ListenSerial(source, listen_s, baud);
+  if (S_ISDIR(st.st_mode))
+    throw std::runtime_error(source + ": is a folder, not a capture, a log or a serial device");
   std::ifstream in(source, std::ios::binary);
   if (!in) throw std::runtime_error("cannot read " + source);
   std::stringstream ss;

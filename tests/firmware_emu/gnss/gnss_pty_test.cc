@@ -21,6 +21,8 @@
 #include <nlohmann/json.hpp>
 #include <sys/socket.h>
 
+#include "hil/firmware_emu/gnss/gps_time.h"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -277,6 +279,50 @@ TEST_F(GnssPtyTest, UbxtoolPollsAndConfiguresTheReceiver) {
   EXPECT_TRUE(two_hz);
   EXPECT_GT(first_sol, 0);
   EXPECT_GT(last_ubx, last_nmea) << "NMEA continued after ubxtool -d NMEA";
+}
+
+// Issue 15.11: the default scenario started on the paper's 2013-06-10, which gpsd 3.22 takes for
+// a GPS week-rollover victim: every TPV said 2033-01-24. gpsd attached to `hil emulate` (the
+// README's example) must report the emulated UTC: the scenario's start plus the time since the
+// emulation began.
+TEST_F(GnssPtyTest, GpsdReportsTheEmulatedUtcOfTheDefaultScenario) {
+  std::ifstream def(Env("HIL_SOURCE_DIR") + "/vectors/scenarios/default.yaml");
+  std::string line, start_text;
+  while (std::getline(def, line)) {
+    if (line.rfind("start_utc: \"", 0) == 0) start_text = line.substr(12, line.rfind('"') - 12);
+  }
+  ASSERT_FALSE(start_text.empty()) << "default.yaml gives no start_utc";
+  const std::int64_t start_ns = hil::gnss::ParseIsoUtc(start_text);
+  const auto t0 = std::chrono::steady_clock::now();
+  pids_.push_back(Spawn("timeout 30 " + hil_ + " emulate --out " + (dir_ / "run").string() + " > " +
+                            (dir_ / "emulate.out").string() + " 2>&1",
+                        dir_ / "hil.pid"));
+  link_ = dir_ / "run" / "ttyGPS";
+  ASSERT_TRUE(WaitFor([&] { return fs::exists(link_); }, 10.0)) << "no link " << link_;
+  const int port = FreePort();
+  pids_.push_back(Spawn("timeout 20 gpsd -N -n -b -S " + std::to_string(port) + " -F " +
+                            (dir_ / "gpsd.sock").string() + " " + link_.string() + " > " +
+                            (dir_ / "gpsd.log").string() + " 2>&1",
+                        dir_ / "gpsd.pid"));
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  std::system(("timeout 10 gpspipe -w localhost:" + std::to_string(port) + " > " +
+               (dir_ / "pipe.json").string() + " 2>/dev/null")
+                  .c_str());
+  const double elapsed_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  int tpv = 0;
+  std::istringstream pipe(ReadAll(dir_ / "pipe.json"));
+  while (std::getline(pipe, line)) {
+    const auto j = nlohmann::json::parse(line, nullptr, false);
+    if (j.is_discarded() || j.value("class", "") != "TPV" || !j.contains("time")) continue;
+    ++tpv;
+    const double since_start_s =
+        static_cast<double>(hil::gnss::ParseIsoUtc(j["time"].get<std::string>()) - start_ns) * 1e-9;
+    EXPECT_GE(since_start_s, 0.0) << line;
+    EXPECT_LE(since_start_s, elapsed_s + 1.0) << "emulated " << elapsed_s << " s: " << line;
+    EXPECT_NEAR(since_start_s, std::round(since_start_s), 1e-3) << "1 Hz epochs: " << line;
+  }
+  EXPECT_GE(tpv, 5) << "see " << dir_ / "pipe.json";
 }
 
 }  // namespace

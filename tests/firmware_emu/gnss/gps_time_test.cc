@@ -56,3 +56,19 @@ TEST(GpsTimeTest, RejectsYearsOutsideTheGpsEra) {
 
 }  // namespace
 }  // namespace hil::gnss
+
+namespace hil::gnss {
+namespace {
+
+// Issue 15.6: days past a month's end were accepted and ran shifted (2027-02-29 as 1 March).
+TEST(GpsTimeTest, RejectsDaysPastTheEndOfTheMonth) {
+  for (const char* s : {"2027-02-29T08:00:00Z", "2026-02-30T08:00:00Z", "2026-04-31T00:00:00Z",
+                        "2026-06-31T00:00:00Z", "2100-02-29T00:00:00Z"})
+    EXPECT_THROW(ParseIsoUtc(s), std::invalid_argument) << s;
+  for (const char* s : {"2028-02-29T08:00:00Z", "2000-02-29T00:00:00Z", "2026-01-31T00:00:00Z",
+                        "2026-12-31T23:59:59Z"})
+    EXPECT_NO_THROW(ParseIsoUtc(s)) << s;
+}
+
+}  // namespace
+}  // namespace hil::gnss

@@ -107,10 +107,47 @@ TEST(OutageMetricsTest, OutputRateAndMissingSolutions) {
     e.t_validity = TimeFromSeconds(i * 0.1);
     r.push_back(e);
   }
-  const OutputTiming t = ComputeOutputTiming(r, 1.0);
-  EXPECT_NEAR(t.output_rate_hz, 89.0 / 9.9, 1e-9);
+  const OutputTiming t = ComputeOutputTiming(r, TimeFromSeconds(0), TimeFromSeconds(10), 1.0);
+  EXPECT_NEAR(t.output_rate_hz, 90.0 / 10.0, 1e-9);
   EXPECT_NEAR(t.missing_fraction, 10.0 / 100.0, 1e-9);
   EXPECT_FALSE(t.jitter_p50_ms) << "no arrival times, no jitter";
+}
+
+// Issue 15.2: a run whose estimator answered 37 of its 120 epochs (it stopped after 37 s) reported
+// 1.00 Hz and 0 % missing when only the span between the first and the last solution counted.
+TEST(OutageMetricsTest, GapsAtTheStartAndEndOfTheWindowAreMissingSolutions) {
+  std::vector<EstimateRecord> r;
+  for (int i = 1; i <= 37; ++i) {
+    EstimateRecord e;
+    e.t_validity = TimeFromSeconds(i);
+    r.push_back(e);
+  }
+  const OutputTiming stops = ComputeOutputTiming(r, TimeFromSeconds(0), TimeFromSeconds(120), 1.0);
+  EXPECT_NEAR(stops.output_rate_hz, 37.0 / 120.0, 1e-9);
+  EXPECT_NEAR(stops.missing_fraction, 82.0 / 119.0, 1e-9)
+      << "the edges count like solutions: 83 s after the last one hold 82 missing";
+
+  for (auto& e : r) e.t_validity += std::chrono::seconds(83);  // the same 37 at 84..120 s
+  const OutputTiming late = ComputeOutputTiming(r, TimeFromSeconds(0), TimeFromSeconds(120), 1.0);
+  EXPECT_NEAR(late.output_rate_hz, 37.0 / 120.0, 1e-9);
+  EXPECT_NEAR(late.missing_fraction, 83.0 / 120.0, 1e-9);
+
+  // records outside the window do not count, and an empty window misses everything
+  const OutputTiming outside = ComputeOutputTiming(r, TimeFromSeconds(0), TimeFromSeconds(60), 1.0);
+  EXPECT_EQ(outside.output_rate_hz, 0.0);
+  EXPECT_EQ(outside.missing_fraction, 1.0);
+}
+
+TEST(OutageMetricsTest, AStreamThatFillsTheWindowMissesNothing) {
+  std::vector<EstimateRecord> r;
+  for (int i = 1; i <= 120; ++i) {  // one epoch per second, the first one second in
+    EstimateRecord e;
+    e.t_validity = TimeFromSeconds(i);
+    r.push_back(e);
+  }
+  const OutputTiming t = ComputeOutputTiming(r, TimeFromSeconds(0), TimeFromSeconds(120), 1.0);
+  EXPECT_NEAR(t.output_rate_hz, 1.0, 1e-12);
+  EXPECT_EQ(t.missing_fraction, 0.0);
 }
 
 TEST(OutageMetricsTest, ArrivalJitterAroundTheMedianInterval) {
@@ -123,7 +160,8 @@ TEST(OutageMetricsTest, ArrivalJitterAroundTheMedianInterval) {
     r.push_back(e);
   }
   const OutputTiming t =
-      ComputeOutputTiming(r, 2.0);  // scaled: wall intervals count double in sim time
+      ComputeOutputTiming(r, TimeFromSeconds(0), TimeFromSeconds(10),
+                          2.0);  // scaled: wall intervals count double in sim time
   ASSERT_TRUE(t.jitter_max_ms);
   // wall intervals 97, 100, 103 ms (×2 = 194, 200, 206): deviations 6, 0, 6
   EXPECT_NEAR(*t.jitter_p50_ms, 6.0, 1e-6);

@@ -1,9 +1,14 @@
 // The scenario's gnss section (harness/src/scenario/scenario_gnss.cc): several receivers, faults,
 // profiles.
 #include <cmath>
+#include <sstream>
+#include <string>
+#include <tuple>
+#include <vector>
 
 #include <gtest/gtest.h>
 
+#include "hil/firmware_emu/gnss/neo5m_device.h"
 #include "hil/harness/scenario/scenario.h"
 #include "hil/harness/scenario/yaml_reader.h"
 
@@ -71,6 +76,74 @@ TEST(ScenarioGnssTest, RefusesRatesAboveTheReceiverAndBadFaults) {
   for (const std::string bad :
        {"gnss: {rate_hz: 10}\n", "gnss: {faults: [{kind: outage, start_s: 5, end_s: 2}]}\n",
         "gnss: {faults: [{kind: jam}]}\n", "gnss: {receivers: [{link: a}, {link: a}]}\n"}) {
+    EXPECT_THROW(ParseScenario(std::string(kMinimal) + bad, "s.yaml"), ScenarioError) << bad;
+  }
+}
+
+}  // namespace
+}  // namespace hil::harness
+
+namespace hil::harness {
+namespace {
+
+// The GGA an emulated receiver of scenario `s` prints at rest at (lat, lon, ellipsoidal height).
+std::vector<std::string> GgaAt(const Scenario& s, double lat, double lon, double height_m) {
+  gnss::Neo5mConfig cfg;
+  cfg.start_unix_ns = s.start_unix_ns;
+  cfg.model = s.gnss.model;
+  gnss::Neo5mDevice dev(cfg, 3);
+  while (dev.next_event_time() <= TimeFromSeconds(5)) {
+    TruthSample t;
+    t.t = dev.next_event_time();
+    t.lat_deg = lat, t.lon_deg = lon, t.height_m = height_m;
+    DeviceOutput out;
+    dev.OnEvent(t, out);
+    for (const auto& m : out.serial) {
+      if (m.bytes.rfind("$GPGGA", 0) != 0 || !dev.last_fix().valid()) continue;
+      std::vector<std::string> f;
+      std::stringstream ss(m.bytes);
+      for (std::string x; std::getline(ss, x, ',');) f.push_back(x);
+      return f;
+    }
+  }
+  ADD_FAILURE() << "no GGA with a fix";
+  return std::vector<std::string>(12);
+}
+
+// Issue 15.5: the geoid separation was a fixed −20.0 m everywhere. A u-blox 5 prints EGM96 from
+// its 10° table at its fix: at the nl551e capture's site (gpsd's nl551e.log, a u-blox 5) the real
+// receiver printed 46.1 m, at the Karaj origin the table gives −17.2 m (nodes −17.68, −15.06,
+// −15.89, −28.33 m at 30/40° N, 50/60° E, rounded to whole metres).
+TEST(ScenarioGnssTest, ReceiversPrintTheUblox5GeoidAtTheirFix) {
+  for (const auto& [lat, lon, n] :
+       {std::tuple{52.0028467, 6.0362388, "46.1"}, std::tuple{35.4796096, 50.5979765, "-17.2"}}) {
+    const Scenario s = ParseScenario(std::string(kMinimal) +
+                                         "gnss: {errors: {horizontal_sigma_m: "
+                                         "0, vertical_sigma_m: 0}}\n",
+                                     "s.yaml");
+    const auto f = GgaAt(s, lat, lon, 100.0);
+    EXPECT_EQ(f[11], n) << lat;
+    // GGA altitude = ellipsoidal height − N
+    EXPECT_NEAR(std::stod(f[9]), 100.0 - std::stod(n), 0.051) << lat;
+  }
+}
+
+TEST(ScenarioGnssTest, GeoidKeysChooseTheModelOrFixTheHeight) {
+  const Scenario table = ParseScenario(kMinimal, "s.yaml");
+  ASSERT_TRUE(table.gnss.model.geoid);
+  EXPECT_EQ(table.gnss.model.geoid->lat_step_deg(), 10.0);
+  const Scenario fine = ParseScenario(std::string(kMinimal) + "gnss: {geoid: egm96}\n", "s.yaml");
+  ASSERT_TRUE(fine.gnss.model.geoid);
+  EXPECT_EQ(fine.gnss.model.geoid->lat_step_deg(), 0.25);
+  const Scenario fixed =
+      ParseScenario(std::string(kMinimal) + "gnss: {geoid_separation_m: -20.0}\n", "s.yaml");
+  EXPECT_FALSE(fixed.gnss.model.geoid);
+  EXPECT_EQ(fixed.gnss.model.geoid_separation_m, -20.0);
+  const auto f = GgaAt(fixed, 35.4796096, 50.5979765, 100.0);
+  EXPECT_EQ(f[11], "-20.0");
+  for (const char* bad :
+       {"gnss: {geoid: egm2008}\n", "gnss: {geoid: egm96, geoid_separation_m: 1}\n",
+        "gnss: {geoid_separation_m: 500}\n"}) {
     EXPECT_THROW(ParseScenario(std::string(kMinimal) + bad, "s.yaml"), ScenarioError) << bad;
   }
 }

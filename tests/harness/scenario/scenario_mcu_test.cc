@@ -21,8 +21,15 @@ constexpr const char* kBase =
     "gnss: {rate_hz: 2}\n";
 
 TEST(ScenarioMcuTest, NoSectionNoBoard) {
-  EXPECT_FALSE(LoadDefaultScenario().mcu.enabled);
   EXPECT_FALSE(ParseScenario(kBase, "s.yaml").mcu.enabled);
+}
+
+TEST(ScenarioMcuTest, TheDefaultScenarioCarriesTheRazorBoardAtTenTimesTheGpsRate) {
+  const Scenario s = LoadDefaultScenario();
+  ASSERT_TRUE(s.mcu.enabled);
+  EXPECT_EQ(s.mcu.config.profile.name, "razor-v13");
+  EXPECT_DOUBLE_EQ(s.mcu.config.imu_rate_hz, 10.0 * s.gnss.rate_hz);
+  EXPECT_EQ(s.estimator.navd_mode, "ekf");
 }
 
 TEST(ScenarioMcuTest, DefaultsFollowSeed000) {

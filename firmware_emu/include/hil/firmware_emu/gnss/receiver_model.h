@@ -25,10 +25,12 @@
 /// All randomness comes from the seeds; the sequence of draws does not depend on the faults.
 
 #include <cstdint>
+#include <memory>
 #include <random>
 
 #include <Eigen/Core>
 
+#include "hil/firmware_emu/gnss/geoid_grid.h"
 #include "hil/firmware_emu/gnss/gnss_fix.h"
 #include "hil/firmware_emu/truth_sample.h"
 
@@ -42,8 +44,11 @@ struct ReceiverModelConfig {
   double correlation_time_s = 4.5;  ///< Gauss–Markov correlation time of position errors
   double velocity_sigma_mps = 0.03;  ///< white velocity noise per axis
   double common_fraction = 0.46;  ///< share of the position error variance common to all receivers
-  double geoid_separation_m = -20.0;      ///< geoid height N at the site (MSL = ellipsoid − N)
-  double hdop_ref = 1.0, vdop_ref = 1.6;  ///< DOPs at which the sigmas above hold
+  /// Geoid height N (MSL = ellipsoid − N): from this EGM96 grid at each fix's position, as a
+  /// u-blox 5 computes it; without a grid, the fixed value below.
+  std::shared_ptr<const GeoidGrid> geoid;
+  double geoid_separation_m = -20.0;                   ///< N when `geoid` is null
+  double hdop_ref = 1.0, vdop_ref = 1.6;               ///< DOPs at which the sigmas above hold
   Eigen::Vector3d p_BA_B_m = Eigen::Vector3d::Zero();  ///< antenna lever arm from the body origin
 };
 

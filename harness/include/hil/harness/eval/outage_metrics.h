@@ -30,16 +30,21 @@ struct OutageMetrics {
 std::vector<OutageMetrics> ComputeOutages(const std::vector<ErrorSample>& errors,
                                           const FaultTimeline& faults, double reconverged_error_m);
 
-/// Rate and regularity of the output stream.
+/// Rate and regularity of the output stream over the evaluated window.
 struct OutputTiming {
-  double output_rate_hz = 0;  ///< solutions per second of validity time
-  double missing_fraction =
-      0;  ///< gaps longer than 1.5 nominal periods, as a fraction of expected solutions
+  double output_rate_hz = 0;  ///< solutions valid in the window per second of the window
+  /// Solutions missing from the window as a fraction of those expected: gaps between solutions
+  /// longer than 1.5 nominal periods (the median interval), and the gaps between the window's
+  /// start or end and the first or last solution (a stream that stops early or starts late misses
+  /// solutions too). 1 when the window holds no solution.
+  double missing_fraction = 0;
   std::optional<double> jitter_p50_ms, jitter_p99_ms,
       jitter_max_ms;  ///< |arrival interval − median|, wall clock
 };
 
-/// `records` sorted or not; arrival jitter only when records carry wall times.
-OutputTiming ComputeOutputTiming(const std::vector<EstimateRecord>& records, double speed);
+/// Timing of the records valid in [t_from, t_to] (the evaluated window), sorted or not; arrival
+/// jitter only when records carry wall times. `speed` scales wall intervals to emulated time.
+OutputTiming ComputeOutputTiming(const std::vector<EstimateRecord>& records, Time t_from, Time t_to,
+                                 double speed);
 
 }  // namespace hil::harness

@@ -5,6 +5,7 @@
 /// and reports errors as ScenarioError (file, line, field).
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -113,11 +114,16 @@ struct CanLinkSpec {
   bool imu_to_estimator = false;
 };
 
+/// UTC of t = 0 when a scenario gives no start_utc. Not the paper's 2013-06-10: gpsd 3.22 (Debian
+/// 12) takes NMEA dates before its release (2021) for GPS week-rollover victims and reports them
+/// 1024 weeks later.
+inline constexpr const char* kDefaultStartUtc = "2026-06-10T08:00:00Z";
+
 struct Scenario {
   std::string file;  ///< where it came from ("<embedded default>" for the default)
   std::string name;
   std::string description;
-  std::int64_t start_unix_ns = 0;  ///< UTC of t = 0
+  std::int64_t start_unix_ns = 0;  ///< UTC of t = 0 (start_utc; default kDefaultStartUtc)
   double duration_s = 60;
   std::uint64_t seed = 1;
   truth::TruthConfig truth;
@@ -148,6 +154,14 @@ Scenario LoadScenario(const std::string& path, bool short_form = false);
 std::vector<std::string> ScenarioLibraryDirs();
 /// Loads the embedded default scenario (vectors/scenarios/default.yaml, compiled in).
 Scenario LoadDefaultScenario();
+
+/// NGA's EGM96 15' geoid grid (`gnss.geoid: egm96`): PROJ's egm96_15.gtx (Debian proj-data; found
+/// when the project is configured, or $HIL_EGM96_GRID), read once per process.
+/// @throws std::runtime_error when the grid cannot be read.
+std::shared_ptr<const gnss::GeoidGrid> Egm96Geoid();
+/// The geoid table of a u-blox 5 (`gnss.geoid: ublox5`, the default): EGM96 at 10° nodes rounded
+/// to whole metres, interpolated bilinearly (see geoid_grid.h for the real captures it matches).
+std::shared_ptr<const gnss::GeoidGrid> Ublox5Geoid();
 /// Parses scenario text; `name` stands for the file in messages. @throws ScenarioError.
 Scenario ParseScenario(const std::string& text, const std::string& name);
 
