@@ -27,14 +27,19 @@ Wt901cDevice::Wt901cDevice(const Wt901cConfig& config, std::uint64_t seed)
     : config_(config), rng_(seed) {
   if (!KnownRate(config_.rrate_code)) throw std::invalid_argument("WT901C: unknown RRATE code");
   if (BaudOfCode(config_.baud_code) == 0) throw std::invalid_argument("WT901C: unknown BAUD code");
+  LoadDefaults();
+  flash_ = regs_;
+  PowerOn(Time{});
+}
+
+void Wt901cDevice::LoadDefaults() {
+  regs_.fill(0);
   regs_[kRsw] = config_.rsw;
   regs_[kRrate] = config_.rrate_code;
   regs_[kBaud] = config_.baud_code;
   regs_[0x1A] = 0x50;  // IICADDR
   regs_[0x1F] = 4;     // BANDWIDTH 21 Hz
   regs_[kVersion] = config_.version;
-  flash_ = regs_;
-  PowerOn(Time{});
 }
 
 void Wt901cDevice::PowerOn(Time t) {
@@ -129,14 +134,14 @@ void Wt901cDevice::OnHostBytes(int port, Time t, std::string_view bytes, DeviceO
   (void)port;
   host_buf_.append(bytes);
   std::size_t i = 0;
-  while (host_buf_.size() - i >= 2) {
+  while (i + 2 <= host_buf_.size()) {
     if (static_cast<unsigned char>(host_buf_[i]) != 0xFF ||
         static_cast<unsigned char>(host_buf_[i + 1]) != 0xAA) {
       ++stats_.host_garbage_bytes;
       ++i;
       continue;
     }
-    if (host_buf_.size() - i < 5) break;
+    if (i + 5 > host_buf_.size()) break;
     const auto b = [&](std::size_t k) { return static_cast<unsigned char>(host_buf_[i + k]); };
     HandleCommand(t, b(2), static_cast<std::uint16_t>(b(3) | (b(4) << 8)), out);
     i += 5;
@@ -177,9 +182,7 @@ void Wt901cDevice::HandleCommand(Time t, std::uint8_t reg, std::uint16_t value, 
         ++stats_.reboots;
         PowerOn(t);
       } else if (value == 0x0001) {
-        const Wt901cStats kept = stats_;
-        *this = Wt901cDevice(config_, rng_.NextSeed());  // factory defaults, new power-on
-        stats_ = kept;
+        LoadDefaults();  // factory defaults (in RAM until saved), then a new power-on
         ++stats_.reboots;
         PowerOn(t);
       }

@@ -130,6 +130,21 @@ TEST(Wt901cDeviceTest, LockedFirmwareNeedsTheKeyAndSaveSurvivesAReboot) {
   EXPECT_TRUE(out.serial.empty());
 }
 
+TEST(Wt901cDeviceTest, FactoryResetRestoresDefaultsAndKeepsParsing) {
+  Wt901cDevice dev(Wt901cConfig{}, 1);
+  DeviceOutput out;
+  // several commands in one write: rate change, factory reset, then a read after it
+  dev.OnHostBytes(0, TimeFromSeconds(1),
+                  EncodeWriteCommand(0x03, 0x07) + EncodeWriteCommand(0x00, 0x0001) +
+                      EncodeWriteCommand(0x27, 0x0003),
+                  out);
+  EXPECT_EQ(dev.reg(0x03), 0x06);
+  EXPECT_EQ(dev.stats().commands, 3u);
+  EXPECT_EQ(dev.stats().reboots, 1u);
+  ASSERT_EQ(out.serial.size(), 1u);
+  EXPECT_EQ(Field(out.serial[0].bytes, 0), 0x06);
+}
+
 TEST(Wt901cDeviceTest, RegisterReadRepliesWith0x5FAndFourRegisters) {
   Wt901cDevice dev(Wt901cConfig{}, 1);
   DeviceOutput out;

@@ -61,6 +61,7 @@ class Wt901cDevice final : public Device {
                                kGx = 0x37, kHx = 0x3A, kRoll = 0x3D, kTemp = 0x40, kKey = 0x69;
 
  private:
+  void LoadDefaults();
   void PowerOn(Time t);
   void Schedule(Time from);
   void HandleCommand(Time t, std::uint8_t reg, std::uint16_t value, DeviceOutput& out);
