@@ -2,7 +2,6 @@
 
 #include <dirent.h>
 #include <fcntl.h>
-#include <time.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -104,12 +103,6 @@ bool SleptThroughout(const GroupActivity& before, const GroupActivity& after) {
 
 namespace {
 
-std::int64_t MonotonicNs() {
-  timespec ts{};
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000LL + ts.tv_nsec;
-}
-
 /// State letter and thread count from the text of a stat file (state ' ' when it cannot be read).
 /// The text of an open /proc file, read again from its start ("" when it cannot be read).
 std::string ReadAgain(int fd) {
@@ -134,9 +127,6 @@ StatFields ParseStateAndThreads(char* buf, long* threads) {
 
 }  // namespace
 
-GroupSleepProbe::GroupSleepProbe(int pgid, std::int64_t refresh_ns)
-    : pgid_(pgid), refresh_ns_(refresh_ns) {}
-
 GroupSleepProbe::~GroupSleepProbe() { CloseTasks(); }
 
 void GroupSleepProbe::CloseTasks() {
@@ -149,7 +139,6 @@ void GroupSleepProbe::CloseTasks() {
 
 void GroupSleepProbe::ReadTasks() {
   CloseTasks();
-  read_at_ns_ = MonotonicNs();
   for (const int pid : LiveGroupMembers(pgid_)) {
     const std::string task_dir = "/proc/" + std::to_string(pid) + "/task";
     ForEachNumericEntry(task_dir, [&](const std::string& tid) {
@@ -173,7 +162,7 @@ void GroupSleepProbe::ReadTasks() {
 
 bool GroupSleepProbe::AllAsleep() {
   if (pgid_ <= 0) return false;
-  if (tasks_.empty() || MonotonicNs() - read_at_ns_ >= refresh_ns_) ReadTasks();
+  if (tasks_.empty()) ReadTasks();
   for (int attempt = 0; attempt < 2; ++attempt) {
     bool changed = false, live = false;
     for (const Task& t : tasks_) {

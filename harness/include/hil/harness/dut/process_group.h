@@ -33,12 +33,12 @@ bool SleptThroughout(const GroupActivity& before, const GroupActivity& after);
 
 /// Whether every thread of a process group sleeps, cheaply enough to ask thousands of times a
 /// second: the threads' /proc stat and children files stay open and are read again in place. The
-/// list of threads is read afresh (a scan of /proc) on the first call, when a thread has ended, a
-/// process's thread count changed or a thread's children changed (a fork), and otherwise every
-/// `refresh_ns` of wall time.
+/// list of threads is read afresh (a scan of /proc, which costs milliseconds on a busy machine)
+/// only on the first call and when a thread has ended, a process's thread count changed or a
+/// thread's children changed (a fork: a group grows only by its members' children).
 class GroupSleepProbe {
  public:
-  explicit GroupSleepProbe(int pgid, std::int64_t refresh_ns = 20'000'000);
+  explicit GroupSleepProbe(int pgid) : pgid_(pgid) {}
   ~GroupSleepProbe();
   GroupSleepProbe(const GroupSleepProbe&) = delete;
   GroupSleepProbe& operator=(const GroupSleepProbe&) = delete;
@@ -59,8 +59,6 @@ class GroupSleepProbe {
   void CloseTasks();
 
   int pgid_;
-  std::int64_t refresh_ns_;
-  std::int64_t read_at_ns_ = 0;
   std::vector<Task> tasks_;
 };
 

@@ -52,7 +52,7 @@ class Scheduler {
     writes_ = VirtualWriteQueue(gate, kMaxDeferredBytes);
   }
   /// Virtual mode's regular host turns (see the file comment).
-  static constexpr Duration kHostTurnPeriod = std::chrono::milliseconds(250);
+  static constexpr Duration kHostTurnPeriod = std::chrono::seconds(1);
 
   /// Runs from t = 0 to the scenario's end. After every event, `keep_going(t)` decides whether
   /// to continue (false stops the run early, e.g. when the estimator died).
