@@ -1,6 +1,8 @@
 #include "hil/harness/dut/process_group.h"
 
 #include <dirent.h>
+#include <fcntl.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -97,6 +99,94 @@ GroupActivity ReadGroupActivity(int pgid) {
 bool SleptThroughout(const GroupActivity& before, const GroupActivity& after) {
   return before.readable && after.readable && before.all_asleep && after.all_asleep &&
          before.threads == after.threads && before.switches == after.switches;
+}
+
+namespace {
+
+/// State letter and thread count from the text of a stat file (state ' ' when it cannot be read).
+/// The text of an open /proc file, read again from its start ("" when it cannot be read).
+std::string ReadAgain(int fd) {
+  char buf[512];
+  const ssize_t n = fd >= 0 ? pread(fd, buf, sizeof buf, 0) : -1;
+  return n > 0 ? std::string(buf, static_cast<std::size_t>(n)) : std::string();
+}
+
+StatFields ParseStateAndThreads(char* buf, long* threads) {
+  StatFields f;
+  const char* close = std::strrchr(buf, ')');
+  if (!close) return f;
+  char state = ' ';
+  // fields 3 (state) to 20 (num_threads) of proc(5)
+  if (std::sscanf(close + 1,
+                  " %c %*d %*d %*d %*d %*d %*u %*u %*u %*u %*u %*u %*u %*d %*d %*d %*d %ld", &state,
+                  threads) != 2)
+    return f;
+  f.state = state;
+  return f;
+}
+
+}  // namespace
+
+GroupSleepProbe::~GroupSleepProbe() { CloseTasks(); }
+
+void GroupSleepProbe::CloseTasks() {
+  for (const Task& t : tasks_) {
+    close(t.fd);
+    if (t.children_fd >= 0) close(t.children_fd);
+  }
+  tasks_.clear();
+}
+
+void GroupSleepProbe::ReadTasks() {
+  CloseTasks();
+  for (const int pid : LiveGroupMembers(pgid_)) {
+    const std::string task_dir = "/proc/" + std::to_string(pid) + "/task";
+    ForEachNumericEntry(task_dir, [&](const std::string& tid) {
+      const int fd = open((task_dir + "/" + tid + "/stat").c_str(), O_RDONLY | O_CLOEXEC);
+      if (fd < 0) return;
+      Task t;
+      t.fd = fd;
+      t.children_fd = open((task_dir + "/" + tid + "/children").c_str(), O_RDONLY | O_CLOEXEC);
+      t.children = ReadAgain(t.children_fd);
+      t.process = std::atoi(tid.c_str()) == pid;
+      char buf[512];
+      const ssize_t n = pread(fd, buf, sizeof buf - 1, 0);
+      if (n > 0) {
+        buf[n] = '\0';
+        ParseStateAndThreads(buf, &t.threads);
+      }
+      tasks_.push_back(t);
+    });
+  }
+}
+
+bool GroupSleepProbe::AllAsleep() {
+  if (pgid_ <= 0) return false;
+  if (tasks_.empty()) ReadTasks();
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    bool changed = false, live = false;
+    for (const Task& t : tasks_) {
+      char buf[512];
+      const ssize_t n = pread(t.fd, buf, sizeof buf - 1, 0);
+      long threads = 0;
+      StatFields f;
+      if (n > 0) {
+        buf[n] = '\0';
+        f = ParseStateAndThreads(buf, &threads);
+      }
+      if (f.state == ' ' || (t.process && threads != t.threads) ||
+          (t.children_fd >= 0 && ReadAgain(t.children_fd) != t.children)) {
+        changed = true;  // a thread ended or started, a process forked: read the list again
+        break;
+      }
+      if (f.state == 'Z' || f.state == 'X') continue;
+      if (f.state != 'S') return false;
+      live = true;
+    }
+    if (!changed) return live;
+    ReadTasks();
+  }
+  return false;
 }
 
 }  // namespace hil::harness

@@ -61,6 +61,7 @@ bool SerialEndpoint::Queue(const SerialMessage& msg) {
     capture_.Write(r);
     return false;
   }
+  last_queued_end_ = std::max(last_queued_end_, chunk->t_end());
   pending_.emplace_back(std::move(*chunk), msg.name.empty() ? "-" : msg.name);
   return true;
 }
@@ -134,13 +135,13 @@ std::size_t SerialEndpoint::queued_bytes() const {
   return n - pending_offset_;
 }
 
-std::string SerialEndpoint::PollHost(Time t_now) {
+std::string SerialEndpoint::PollHost(Time t_now, bool virtual_time) {
   std::string rx = port_->ReadAvailable();
   if (!rx.empty()) {
     CaptureRecord r;
     r.dir = CaptureDir::kRx;
     r.t_emu_ns = ToNs(t_now);
-    r.t_wall_ns = link::RealtimePacer::MonotonicNs();
+    r.t_wall_ns = virtual_time ? 0 : link::RealtimePacer::MonotonicNs();
     r.name = "host";
     r.bytes = rx;
     capture_.Write(r);

@@ -244,7 +244,7 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& opt) {
                     " s): the port was closed by the peer or is no longer read";
       return false;
     };
-    gate.emplace(read_by_host, kLinkBacklogBytes, on_wait);
+    gate.emplace(read_by_host, kLinkBacklogBytes, on_wait, estimator->pid());
     scheduler.set_gate(&*gate);
   }
   // the truth for the evaluation, sampled on a thread of its own as the run goes (truth_table.h)

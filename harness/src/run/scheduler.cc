@@ -64,7 +64,7 @@ bool Scheduler::PollHosts(Time t_host, DeviceOutput& out) {
       const pollfd& pf = host_fds_[k++];
       if (pf.fd >= 0 && pf.revents == 0)
         continue;  // nothing from this host (errors and hang-ups are read)
-      if (const std::string rx = set_.endpoints[d][p]->PollHost(t_rx); !rx.empty()) {
+      if (const std::string rx = set_.endpoints[d][p]->PollHost(t_rx, !pacer_); !rx.empty()) {
         set_.devices[d]->OnHostBytes(static_cast<int>(p), t_rx, rx, out);
         set_.endpoints[d][p]->set_baud(set_.devices[d]->baud(static_cast<int>(p)));
         replied = replied || !out.serial.empty() || !out.can.empty();
@@ -151,6 +151,20 @@ void Scheduler::Run(const std::function<bool(Time)>& keep_going) {
         if (PollHosts(t_wake, out) || t_wake < *t_event) continue;
       }
     }
+    if (gate_ && !pacer_) {
+      // host bytes arriving, then a host turn, due before (or at) this event come first
+      if (!arrivals_.empty() && arrivals_.front().t <= std::min(*t_event, t_end)) {
+        DeliverHostBytes(arrivals_.front(), out);
+        arrivals_.pop_front();
+        continue;
+      }
+      const Time t_turn = NextHostTurn();
+      if (t_turn <= *t_event && t_turn <= t_end) {
+        HostTurn(t_turn);
+        if (write_refused_) break;
+        continue;
+      }
+    }
     if (*t_event > t_end) break;
     const TruthSample ts = truth.Sample(*t_event);
     for (std::size_t d = 0; d < set_.devices.size(); ++d) {
@@ -159,11 +173,56 @@ void Scheduler::Run(const std::function<bool(Time)>& keep_going) {
       Dispatch(d, out);
     }
     RecordFixes(*t_event);
-    // configuration commands from the host reach the device with their arrival time
-    PollHosts(*t_event, out);
+    // real time: configuration commands from the host reach the device with their arrival time
+    // (virtual mode reads them at host turns); without a gate no host is paced and none is waited
+    // for
+    if (pacer_ || !gate_) PollHosts(*t_event, out);
     t_last_event_ = *t_event;
     PollBus();
     if (write_refused_ || !keep_going(*t_event)) break;
+  }
+}
+
+Time Scheduler::NextHostTurn() const {
+  Time t = next_periodic_turn_;
+  for (const Time a : answer_turns_) t = std::min(t, a);
+  return t;
+}
+
+void Scheduler::HostTurn(Time t) {
+  while (next_periodic_turn_ <= t) next_periodic_turn_ += kHostTurnPeriod;
+  std::erase_if(answer_turns_, [t](Time a) { return a <= t; });
+  if (!writes_.Pump(true) || !gate_->WaitHostIdle()) {
+    write_refused_ = true;
+    return;
+  }
+  // What the host wrote may answer any byte written so far (virtual mode writes bytes when they
+  // are made, ahead of their UART times): it arrives once the last of them has left its UART.
+  Time t_rx = t;
+  for (const auto& ports : set_.endpoints) {
+    for (const auto& ep : ports) t_rx = std::max(t_rx, ep->last_queued_end());
+  }
+  for (std::size_t d = 0; d < set_.devices.size(); ++d) {
+    for (std::size_t p = 0; p < set_.endpoints[d].size(); ++p) {
+      std::string rx = set_.endpoints[d][p]->PollHost(t_rx, true);
+      if (!rx.empty()) arrivals_.push_back({t_rx, d, p, std::move(rx)});
+    }
+  }
+}
+
+void Scheduler::DeliverHostBytes(const HostBytes& h, DeviceOutput& out) {
+  const int port = static_cast<int>(h.port);
+  set_.devices[h.device]->OnHostBytes(port, h.t, h.bytes, out);
+  SerialEndpoint& ep = *set_.endpoints[h.device][h.port];
+  ep.set_baud(set_.devices[h.device]->baud(port));
+  const bool answered = !out.serial.empty();
+  Dispatch(h.device, out);
+  if (!write_refused_ && !writes_.Pump(true)) write_refused_ = true;
+  // the host's next turn: when the answer has left the UART (it is written at once)
+  if (answered) {
+    for (const auto& e : set_.endpoints[h.device]) {
+      if (e->last_queued_end() > h.t) answer_turns_.push_back(e->last_queued_end());
+    }
   }
 }
 

@@ -4,6 +4,9 @@
 #include <time.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <string>
 
 #include <sys/prctl.h>
 
@@ -17,6 +20,12 @@ constexpr int kYieldSteps = 16;
 constexpr long kFirstSleepNs = 20'000;
 constexpr long kLongestSleepNs = 1'000'000;
 
+std::int64_t MonotonicNs() {
+  timespec ts{};
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000LL + ts.tv_nsec;
+}
+
 void SleepNs(long ns) {
   timespec ts{0, ns};
   nanosleep(&ts, nullptr);
@@ -25,9 +34,11 @@ void SleepNs(long ns) {
 }  // namespace
 
 VirtualGate::VirtualGate(std::vector<SerialEndpoint*> host_links,
-                         std::size_t max_link_backlog_bytes, WaitStep on_wait)
+                         std::size_t max_link_backlog_bytes, WaitStep on_wait, int host_pgid)
     : max_backlog_(max_link_backlog_bytes), on_wait_(std::move(on_wait)) {
   for (const SerialEndpoint* ep : host_links) links_.push_back({ep, 0});
+  if (host_pgid > 0) host_.emplace(host_pgid);
+  host_pgid_ = host_pgid;
   // short sleeps mean short sleeps: the default timer slack (50 µs) would stretch every step
   prctl(PR_SET_TIMERSLACK, 1000UL, 0UL, 0UL, 0UL);
 }
@@ -102,6 +113,54 @@ bool VirtualGate::WaitAllRead() {
 }
 
 std::size_t VirtualGate::Unread() { return Refresh(nullptr, nullptr, true); }
+
+bool VirtualGate::HostHoldsLinks() const {
+  std::vector<std::string> devices;
+  for (const Link& l : links_) {
+    std::error_code ec;
+    const auto target = std::filesystem::canonical(l.ep->link_path(), ec);
+    if (!ec) devices.push_back(target.string());
+  }
+  for (const int pid : LiveGroupMembers(host_pgid_)) {
+    std::error_code ec;
+    const std::string fd_dir = "/proc/" + std::to_string(pid) + "/fd";
+    for (const auto& e : std::filesystem::directory_iterator(fd_dir, ec)) {
+      std::error_code ec2;
+      const auto target = std::filesystem::read_symlink(e.path(), ec2);
+      if (!ec2) std::erase(devices, target.string());
+    }
+  }
+  return devices.empty();
+}
+
+bool VirtualGate::WaitHostIdle() {
+  if (!host_ || busy_host_) return WaitAllRead();
+  const std::int64_t start = MonotonicNs();
+  std::int64_t all_read_since = -1;
+  const auto idle = [&] {
+    if (Refresh(nullptr, nullptr, true) != 0) {
+      all_read_since = -1;
+      return false;
+    }
+    if (!links_opened_) {
+      links_opened_ = HostHoldsLinks() || MonotonicNs() - start > kBusyHostLimitNs;
+      if (!links_opened_) return false;
+    }
+    // every byte read: the host has been running since; asleep now, it has finished with them
+    if (host_->AllAsleep()) return true;
+    const std::int64_t now = MonotonicNs();
+    if (all_read_since < 0) all_read_since = now;
+    if (now - all_read_since < kBusyHostLimitNs) return false;
+    busy_host_ = true;
+    std::fprintf(stderr,
+                 "hil: the estimator read all its input but did not sleep for %.0f s: it is never "
+                 "waited for again, and the bytes it writes get the emulated time they are seen "
+                 "at\n",
+                 static_cast<double>(kBusyHostLimitNs) * 1e-9);
+    return true;
+  };
+  return Wait(idle, nullptr, nullptr);
+}
 
 void VirtualWriteQueue::Add(SerialEndpoint& ep, std::size_t bytes) {
   if (!fifo_.empty() && fifo_.back().ep == &ep) {

@@ -39,6 +39,8 @@ class SerialEndpoint {
   /// written by WriteAll() (virtual mode) or WriteNextByte() (real time). Returns false when the
   /// transmit buffer had no room (the message was dropped).
   bool Queue(const SerialMessage& msg);
+  /// Emulated time at which the last byte queued so far leaves the UART (its stop bit ends).
+  Time last_queued_end() const { return last_queued_end_; }
   /// Emulated time of the next byte waiting to be written, if any.
   std::optional<Time> next_byte_time() const;
   /// Writes the next waiting byte at its UART wall time and records the schedule error.
@@ -55,7 +57,8 @@ class SerialEndpoint {
   /// poll() shows host bytes on this descriptor (-1: none to poll, call PollHost anyway).
   int host_input_fd() const { return port_->host_input_fd(); }
   /// Reads host bytes (non-blocking), captures them with emulated time `t_now`, returns them.
-  std::string PollHost(Time t_now);
+  /// With `virtual_time` the capture gives no wall time (0, as for virtual mode's tx bytes).
+  std::string PollHost(Time t_now, bool virtual_time = false);
   void set_baud(int baud) { uart_.set_baud(baud); }
   std::size_t PendingToHost() const { return port_->PendingToHost(); }
   const link::UartTxQueue& uart() const { return uart_; }
@@ -72,6 +75,7 @@ class SerialEndpoint {
   link::UartTxQueue uart_;
   CaptureWriter capture_;
   std::deque<std::pair<link::TimedChunk, std::string>> pending_;  // chunk, message name
+  Time last_queued_end_{};
   std::size_t pending_offset_ = 0;  // bytes of pending_.front() already written
   CaptureRecord current_;           // capture line of the chunk being written in real time
   std::vector<double> schedule_error_us_;

@@ -4,12 +4,24 @@
 /// emulated time from device event to device event; in real-time/scaled mode it also writes each
 /// byte at its wall-clock UART time. Byte faults of the timeline are applied to whole messages
 /// before they enter a UART queue, so the bytes depend only on the scenario and the seed.
+///
+/// Host turns (virtual mode): the bytes a host writes to its devices are read only at host turns,
+/// at emulated times fixed by the run itself: every `kHostTurnPeriod` from t = 0, and when the
+/// last byte of a device's answer to the host has left its UART. At a turn every byte made so far
+/// is written and the gate waits until the host has read all of it and sleeps
+/// (VirtualGate::WaitHostIdle). What the host wrote then answers bytes written up to now: it
+/// reaches its device when the last of them has left its UART (virtual mode writes bytes when
+/// they are made, ahead of their UART times), or at the turn's time if that is later. A
+/// configuration dialogue (command, ACK, next command …) thus runs at the pace of the emulated
+/// UARTs, and an unsolicited command arrives after the next turn, the same in every run.
 
 #include <poll.h>
 
+#include <deque>
 #include <functional>
 #include <optional>
 #include <ostream>
+#include <string>
 #include <vector>
 
 #include "hil/firmware_emu/link/realtime_pacer.h"
@@ -35,7 +47,12 @@ class Scheduler {
   /// Virtual mode: the gate that keeps the host's links in order (virtual_gate.h); without one
   /// bytes are written as they are made. When the gate gives up a wait the run stops and the bytes
   /// not yet written stay unsent.
-  void set_gate(VirtualGate* gate) { writes_ = VirtualWriteQueue(gate, kMaxDeferredBytes); }
+  void set_gate(VirtualGate* gate) {
+    gate_ = gate;
+    writes_ = VirtualWriteQueue(gate, kMaxDeferredBytes);
+  }
+  /// Virtual mode's regular host turns (see the file comment).
+  static constexpr Duration kHostTurnPeriod = std::chrono::seconds(1);
 
   /// Runs from t = 0 to the scenario's end. After every event, `keep_going(t)` decides whether
   /// to continue (false stops the run early, e.g. when the estimator died).
@@ -57,6 +74,19 @@ class Scheduler {
   /// Hands the bytes hosts wrote since the last call to their devices, at `t_host` (virtual) or at
   /// their wall arrival time (real time). Returns true when a device queued a reply.
   bool PollHosts(Time t_host, DeviceOutput& out);
+  /// Virtual mode: the next host turn.
+  Time NextHostTurn() const;
+  /// Bytes a host wrote, read at a host turn, and when they reach their device.
+  struct HostBytes {
+    Time t{};
+    std::size_t device = 0, port = 0;
+    std::string bytes;
+  };
+  /// Virtual mode: a host turn at `t` (every byte written, the host read and asleep); what it
+  /// wrote is captured and queued in arrivals_.
+  void HostTurn(Time t);
+  /// Virtual mode: host bytes reach their device, which may answer.
+  void DeliverHostBytes(const HostBytes& h, DeviceOutput& out);
 
   const Scenario& scenario_;
   DeviceSet& set_;
@@ -70,8 +100,12 @@ class Scheduler {
   static constexpr std::size_t kMaxDeferredBytes =
       8192;  // virtual mode: bytes the run may hold back
   VirtualWriteQueue writes_{nullptr, kMaxDeferredBytes};
-  bool write_refused_ = false;    // the gate gave up a wait
-  std::vector<pollfd> host_fds_;  // one per serial endpoint, in device and port order
+  bool write_refused_ = false;  // the gate gave up a wait
+  VirtualGate* gate_ = nullptr;
+  Time next_periodic_turn_{};
+  std::vector<Time> answer_turns_;  // host turns at the ends of devices' answers
+  std::deque<HostBytes> arrivals_;  // read at turns, in time order, not yet delivered
+  std::vector<pollfd> host_fds_;    // one per serial endpoint, in device and port order
 };
 
 }  // namespace hil::harness

@@ -10,6 +10,12 @@
 /// before it, never after. Runs of bytes on one link wait only for that link's backlog to fall
 /// below `max_link_backlog_bytes` (which bounds the pty buffer, not the order).
 ///
+/// Host-to-device bytes get emulated times as deterministic as device-to-host ones: at the
+/// scheduler's host turns (scheduler.h) WaitHostIdle() holds emulated time until the host has read
+/// every byte written so far and every thread of its process group sleeps. It has then answered
+/// all it read, or waits for more; what it wrote is read at the turn's emulated time. Its answer
+/// cannot depend on bytes written later (there are none yet), nor on when the machine ran it.
+///
 /// While it waits, `on_wait` is called (it polls the estimator's output and decides when a host
 /// that no longer reads has hung); returning false gives up the wait and the run.
 
@@ -17,8 +23,10 @@
 #include <cstdint>
 #include <deque>
 #include <functional>
+#include <optional>
 #include <vector>
 
+#include "hil/harness/dut/process_group.h"
 #include "hil/harness/links/serial_endpoint.h"
 
 namespace hil::harness {
@@ -29,8 +37,10 @@ class VirtualGate {
   /// this step starts a new wait. Returns false to abandon the wait.
   using WaitStep = std::function<bool(std::size_t unread, bool new_wait)>;
 
+  /// `host_pgid`: the host's process group, whose sleep WaitHostIdle() waits for (≤ 0: none,
+  /// WaitHostIdle() then waits only for the bytes to be read).
   VirtualGate(std::vector<SerialEndpoint*> host_links, std::size_t max_link_backlog_bytes,
-              WaitStep on_wait);
+              WaitStep on_wait, int host_pgid = -1);
 
   /// Before `bytes` bytes are written to `ep`: waits until the host has read the other host links
   /// and `ep`'s backlog leaves room. Links the host does not read pass at once. False: the wait
@@ -42,6 +52,18 @@ class VirtualGate {
   bool WaitAllRead();
   /// Bytes not yet read on the host links (exact when 0), for the drain and hang reports.
   std::size_t Unread();
+  /// Waits until the host has read every byte and all its threads sleep (a host turn). A host
+  /// that has read everything but does not sleep within `kBusyHostLimitNs` of wall time (it
+  /// polls without blocking) cannot be waited for: from then on the turns wait only for its
+  /// reads, and busy_host() says so. False: the wait was given up (the run stops).
+  bool WaitHostIdle();
+  /// The host was found never to sleep (its host-to-device bytes are then stamped when they are
+  /// seen, not deterministically).
+  bool busy_host() const { return busy_host_; }
+  /// The host's first turn waits also until a process of its group holds every host link open
+  /// (a host that is still starting may sleep before it has opened its devices and written its
+  /// start-up commands), at most kBusyHostLimitNs.
+  static constexpr std::int64_t kBusyHostLimitNs = 2'000'000'000;
 
  private:
   struct Link {
@@ -58,6 +80,13 @@ class VirtualGate {
   std::vector<Link> links_;
   std::size_t max_backlog_;
   WaitStep on_wait_;
+  /// Whether a process of the host's group has every host link open.
+  bool HostHoldsLinks() const;
+
+  std::optional<GroupSleepProbe> host_;
+  int host_pgid_ = -1;
+  bool busy_host_ = false;
+  bool links_opened_ = false;
 };
 
 /// Virtual mode's writes: every chunk queued on a serial endpoint, in emulated-time order across
