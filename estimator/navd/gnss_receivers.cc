@@ -18,6 +18,7 @@ est::GnssSample ToGnssSample(const est::drivers::NmeaMeasurement& m, int leap_s,
   g.num_sv = m.num_sv;
   g.hdop = m.hdop.value_or(0.0);
   g.ground_speed_mps = m.speed_mps;  // known also when the course is not (no velocity then)
+  g.geoid_separation_m = m.geoid_separation_m;
   if (m.speed_mps && m.course_deg) {
     const double c = *m.course_deg * std::numbers::pi / 180.0;
     g.vel_enu_mps = {*m.speed_mps * std::sin(c), *m.speed_mps * std::cos(c), 0.0};

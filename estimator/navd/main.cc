@@ -216,6 +216,7 @@ int main(int argc, char** argv) {
   // GNSS receivers (one, or several in multi_gnss mode): one solution per fix in GNSS-only modes
   hil::navd::GnssReceivers receivers(cfg, [&](const est::GnssSample& g) {
     health.OnGnss(g);
+    can->OnGnss(g);
     if (razor_text) razor_adapter.AddGnssArrival(gnss_read_ns, g.t, cfg.imu.razor_gnss_latency_s);
     nav.Push(g);
     if (imu_mode && !nav.ImuLost()) return;

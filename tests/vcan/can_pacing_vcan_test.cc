@@ -9,6 +9,7 @@
 #include <atomic>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <thread>
 
 #include "hil/firmware_emu/link/candump_log.h"
@@ -90,19 +91,27 @@ TEST(CanPacingVcanTest, RealtimeFramesLeaveOnScheduleAndAreCaptured) {
   Receiver rx;
   rx.Start();
   std::vector<double> rx_err_us;
+  std::optional<link::RealtimePacer> pacer;
+  std::int64_t real_minus_mono = 0;
   {
     CanEndpoint ep(Iface(), dir.string(), kStartUnixNs);
     for (const CanFrame& f : schedule) ep.Queue(f);
-    const link::RealtimePacer pacer(1.0);
+    // the kernel turns receive stamping on from a work item after the first socket asks for it;
+    // frames before that get each socket's own read time (a run's sockets are long open)
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    pacer.emplace(1.0);
     // CLOCK_REALTIME of emulated t = 0, to compare kernel receive stamps with the schedule
-    const std::int64_t real_minus_mono = ClockNs(CLOCK_REALTIME) - ClockNs(CLOCK_MONOTONIC);
-    while (ep.next_frame_time()) ep.SendNext(pacer);
+    real_minus_mono = ClockNs(CLOCK_REALTIME) - ClockNs(CLOCK_MONOTONIC);
+    while (ep.next_frame_time()) ep.SendNext(*pacer);
+    ep.FinishCapture(std::chrono::milliseconds(200));
+    EXPECT_TRUE(ep.PollBus(Time{}, &*pacer).empty());  // our own frames are not others' frames
     rx.Finish();
     ASSERT_EQ(ep.stats().frames_sent, schedule.size());
+    EXPECT_EQ(ep.stats().own_frames_received, schedule.size());
     ASSERT_EQ(rx.frames.size(), schedule.size());
     for (std::size_t i = 0; i < schedule.size(); ++i) {
       ASSERT_EQ(rx.frames[i].frame, link::FromDeviceFrame(schedule[i])) << i;
-      const std::int64_t scheduled_real = pacer.WallNsOf(schedule[i].t) + real_minus_mono;
+      const std::int64_t scheduled_real = pacer->WallNsOf(schedule[i].t) + real_minus_mono;
       rx_err_us.push_back(static_cast<double>(rx.frames[i].t_kernel_unix_ns - scheduled_real) *
                           1e-3);
     }
@@ -117,20 +126,35 @@ TEST(CanPacingVcanTest, RealtimeFramesLeaveOnScheduleAndAreCaptured) {
     // never early: a frame leaves at or after its time
     EXPECT_GE(*std::min_element(e.begin(), e.end()), 0.0);
   }
-  // both captures hold every frame at its emulated time
+  // both captures hold every frame, in bus order, at the time the bus carried it (issue 15.3):
+  // the emulated time of its kernel receive stamp, the same stamp another socket (candump) got
   const link::CandumpLog log = link::ReadCandumpLog(dir / (Iface() + ".candump"));
   ASSERT_EQ(log.records.size(), schedule.size());
   const Capture cap = ReadCapture(dir / (Iface() + ".cap"));
   ASSERT_EQ(cap.records.size(), schedule.size());
   EXPECT_EQ(cap.header.kind, "can");
   EXPECT_EQ(cap.header.start_unix_ns, kStartUnixNs);
+  std::vector<double> stamp_err_us;
+  std::size_t worst = 0;
   for (std::size_t i = 0; i < schedule.size(); ++i) {
     EXPECT_EQ(log.records[i].frame, link::FromDeviceFrame(schedule[i]));
-    EXPECT_EQ(log.records[i].t_unix_ns, kStartUnixNs + ToNs(schedule[i].t) / 1000 * 1000);
+    const std::int64_t on_bus_ns =
+        ToNs(pacer->SimTimeOfWall(rx.frames[i].t_kernel_unix_ns - real_minus_mono));
+    stamp_err_us.push_back(
+        std::abs(static_cast<double>(log.records[i].t_unix_ns - kStartUnixNs - on_bus_ns)) * 1e-3);
+    if (stamp_err_us.back() > stamp_err_us[worst]) worst = i;
+    EXPECT_GE(cap.records[i].t_emu_ns, ToNs(schedule[i].t));  // not before it was scheduled
+    if (i > 0) {
+      EXPECT_GE(log.records[i].t_unix_ns, log.records[i - 1].t_unix_ns);
+    }
     EXPECT_EQ(cap.records[i].dir, CaptureDir::kFrameTx);
-    EXPECT_EQ(cap.records[i].t_emu_ns, ToNs(schedule[i].t));
+    EXPECT_EQ(cap.records[i].t_emu_ns / 1000, (log.records[i].t_unix_ns - kStartUnixNs) / 1000);
     EXPECT_GT(cap.records[i].t_wall_ns, 0);
   }
+  std::printf("HIL-FIGURE can_capture_vs_other_socket_us frames=%zu p50=%.1f p99=%.1f max=%.1f\n",
+              stamp_err_us.size(), Pct(stamp_err_us, 50), Pct(stamp_err_us, 99),
+              Pct(stamp_err_us, 100));
+  EXPECT_LT(Pct(stamp_err_us, 100), 1000.0) << "frame " << worst;  // within 1 ms of candump's
 }
 
 TEST(CanPacingVcanTest, VirtualModeSendsAtOnceWithEmulatedTimes) {

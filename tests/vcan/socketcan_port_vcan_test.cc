@@ -63,6 +63,9 @@ TEST(SocketCanPortVcanTest, OwnFramesComeBackOnlyWhenAskedFor) {
   const auto echo = ReceiveFrames(me, 1, std::chrono::seconds(1));
   ASSERT_EQ(echo.size(), 1u);
   EXPECT_TRUE(echo[0].own);
+  EXPECT_GT(echo[0].t_kernel_unix_ns, 0);  // stamped like any frame (candump's time of it)
+  EXPECT_EQ(me.stats().own_frames_received, 1u);
+  EXPECT_EQ(me.stats().frames_received, 0u);  // echoes are not frames from others
   SocketCanPort quiet(Iface());
   ASSERT_TRUE(quiet.Send(Frame("101#02")).has_value());
   EXPECT_TRUE(ReceiveFrames(quiet, 1, std::chrono::milliseconds(200)).empty());

@@ -38,6 +38,7 @@ std::optional<NmeaMeasurement> NmeaEpochAssembler::Add(const NmeaFix& fix) {
   m.lon_deg = *fix.lon_deg;
   m.height_m = *fix.msl_altitude_m + fix.geoid_separation_m.value_or(0.0);
   m.hdop = fix.hdop;
+  m.geoid_separation_m = fix.geoid_separation_m;
   m.quality = fix.quality;
   m.num_sv = fix.num_sv;
   if (rmc_time_of_day_ns_ == fix.utc_time_of_day_ns) {

@@ -40,6 +40,7 @@ constexpr Entry kTable[] = {
        m.lon_deg = I4(p + 4) * 1e-7;
        m.lat_deg = I4(p + 8) * 1e-7;
        m.height_m = I4(p + 12) * 1e-3;
+       m.h_msl_m = I4(p + 16) * 1e-3;
        m.h_acc_m = U4(p + 20) * 1e-3;
        m.v_acc_m = U4(p + 24) * 1e-3;
      }},
@@ -201,6 +202,7 @@ bool UbxEpochAssembler::Complete() const {
 void UbxEpochAssembler::FillPosition(GnssSample& g) const {
   if (have_ & kPos) {  // NAV-POSLLH: 1e-7 deg, mm
     g.position = {pos_.lat_deg, pos_.lon_deg, pos_.height_m};
+    g.geoid_separation_m = pos_.height_m - pos_.h_msl_m;
     const double h = std::max(pos_.h_acc_m, 0.01) / std::sqrt(2.0);
     g.pos_std_enu_m = {h, h, std::max(pos_.v_acc_m, 0.01)};
     return;

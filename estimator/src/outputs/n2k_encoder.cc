@@ -49,7 +49,8 @@ CanFrame EncodeCogSogRapid(std::uint8_t sid, double cog_rad, double sog_mps, std
 
 FastPacket EncodeGnssPosition(std::uint8_t sid, std::uint16_t days, double sod, double lat,
                               double lon, double alt, int method, int num_sv, double hdop,
-                              std::uint8_t seq, std::uint8_t sa) {
+                              std::uint8_t seq, std::uint8_t sa,
+                              std::optional<double> geoid_separation_m) {
   std::array<std::uint8_t, 43> p{};
   p[0] = sid;
   Put(&p[1], days, 2);
@@ -59,11 +60,17 @@ FastPacket EncodeGnssPosition(std::uint8_t sid, std::uint16_t days, double sod, 
   Put(&p[23], static_cast<std::uint64_t>(Round(alt * 1e6)), 8);
   p[31] = static_cast<std::uint8_t>(0 | ((method & 0xF) << 4));  // GNSS type 0 (GPS), method
   p[32] = 0xFC;                                                  // integrity 0, reserved set
-  p[33] = static_cast<std::uint8_t>(std::clamp(num_sv, 0, 252));
-  Put(&p[34], static_cast<std::uint16_t>(static_cast<std::int16_t>(Round(hdop * 100))), 2);
+  p[33] = num_sv < 0 ? 0xFF : static_cast<std::uint8_t>(std::clamp(num_sv, 0, 252));
+  const std::int64_t hdop_raw =
+      hdop > 0 ? std::clamp<std::int64_t>(Round(hdop * 100), 0, 32764) : 0x7FFF;  // not available
+  Put(&p[34], static_cast<std::uint16_t>(hdop_raw), 2);
   Put(&p[36], 0x7FFF, 2);  // PDOP not available
-  Put(&p[38], 0, 4);       // geoidal separation 0 (heights are ellipsoidal)
-  p[42] = 0;               // no reference stations
+  const std::int64_t n_raw =
+      geoid_separation_m ? std::clamp<std::int64_t>(Round(*geoid_separation_m * 100), -2147483647,
+                                                    2147483646)
+                         : 0x7FFFFFFF;  // not available
+  Put(&p[38], static_cast<std::uint32_t>(static_cast<std::int32_t>(n_raw)), 4);
+  p[42] = 0;  // no reference stations
   FastPacket fp;
   const std::uint32_t id = N2kCanId(129029, 3, sa);
   std::size_t used = 0;

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include <sys/inotify.h>
 #include <sys/ioctl.h>
 
 #include "hil/firmware_emu/link/tty_port.h"
@@ -73,8 +74,16 @@ PtyPort::PtyPort(const std::string& symlink_path, int baud) : symlink_path_(syml
   const int flags = fcntl(master_fd_, F_GETFL);
   fcntl(master_fd_, F_SETFL, flags | O_NONBLOCK);
 
+  // who else opens the slave from now on (our own open above is not counted)
+  inotify_fd_ = inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
+  if (inotify_fd_ >= 0 && inotify_add_watch(inotify_fd_, name, IN_OPEN | IN_CLOSE) < 0) {
+    close(inotify_fd_);
+    inotify_fd_ = -1;
+  }
+
   unlink(symlink_path.c_str());
   if (symlink(slave_path_.c_str(), symlink_path.c_str()) != 0) {
+    if (inotify_fd_ >= 0) close(inotify_fd_);
     close(slave_fd_);
     close(master_fd_);
     throw SysError("cannot create the link " + symlink_path + " -> " + slave_path_);
@@ -83,8 +92,36 @@ PtyPort::PtyPort(const std::string& symlink_path, int baud) : symlink_path_(syml
 
 PtyPort::~PtyPort() {
   unlink(symlink_path_.c_str());
+  if (inotify_fd_ >= 0) close(inotify_fd_);
   if (slave_fd_ >= 0) close(slave_fd_);
   if (master_fd_ >= 0) close(master_fd_);
+}
+
+long PtyPort::WriteNow(std::string_view bytes) {
+  for (;;) {
+    const ssize_t n = write(master_fd_, bytes.data(), bytes.size());
+    if (n >= 0) return n;
+    if (errno == EINTR) continue;
+    return errno == EAGAIN ? 0 : -1;
+  }
+}
+
+bool PtyPort::HostAttached() {
+  if (inotify_fd_ < 0) return true;  // cannot tell: as if someone listened
+  alignas(inotify_event) char buf[4096];
+  for (;;) {
+    const ssize_t n = read(inotify_fd_, buf, sizeof buf);
+    if (n <= 0) break;
+    for (ssize_t at = 0; at < n;) {
+      const auto* e = reinterpret_cast<const inotify_event*>(buf + at);
+      if (e->mask & IN_OPEN) ++host_opens_;
+      if ((e->mask & IN_CLOSE) && host_opens_ > 0 && --host_opens_ == 0)
+        tcflush(slave_fd_, TCIFLUSH);  // the last listener left: what it did not read is gone
+      if (e->mask & IN_Q_OVERFLOW) host_opens_ = 1;  // events lost: assume someone listens
+      at += static_cast<ssize_t>(sizeof(inotify_event) + e->len);
+    }
+  }
+  return host_opens_ > 0;
 }
 
 bool PtyPort::Write(std::string_view bytes) {

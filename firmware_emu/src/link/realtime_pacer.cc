@@ -1,9 +1,13 @@
 #include "hil/firmware_emu/link/realtime_pacer.h"
 
+#include <pthread.h>
 #include <sched.h>
 #include <time.h>
+#include <unistd.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 
 #include <sys/prctl.h>
 
@@ -46,11 +50,33 @@ std::int64_t RealtimePacer::SleepUntil(Time t) const {
   return now;
 }
 
-bool RealtimePacer::RequestRealtimeScheduling() {
+ThreadSchedule RealtimePacer::CurrentThreadSchedule() {
+  ThreadSchedule s;
+  int policy = 0;
+  sched_param param{};
+  if (pthread_getschedparam(pthread_self(), &policy, &param) == 0) {
+    s.policy = policy == SCHED_FIFO    ? "SCHED_FIFO"
+               : policy == SCHED_RR    ? "SCHED_RR"
+               : policy == SCHED_OTHER ? "SCHED_OTHER"
+               : policy == SCHED_BATCH ? "SCHED_BATCH"
+               : policy == SCHED_IDLE  ? "SCHED_IDLE"
+                                       : "policy " + std::to_string(policy);
+    s.priority = param.sched_priority;
+  }
+  const int slack = prctl(PR_GET_TIMERSLACK, 0, 0, 0, 0);
+  s.timer_slack_ns = slack;
+  s.tid = static_cast<int>(gettid());
+  return s;
+}
+
+ThreadSchedule RealtimePacer::RequestRealtimeScheduling(int priority) {
   prctl(PR_SET_TIMERSLACK, 1UL, 0, 0, 0);
   sched_param param{};
-  param.sched_priority = 50;
-  return sched_setscheduler(0, SCHED_FIFO, &param) == 0;
+  param.sched_priority = priority;
+  const int err = pthread_setschedparam(pthread_self(), SCHED_FIFO, &param);
+  ThreadSchedule s = CurrentThreadSchedule();
+  if (err != 0) s.refused = std::strerror(err);
+  return s;
 }
 
 }  // namespace hil::link

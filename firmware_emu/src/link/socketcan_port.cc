@@ -180,6 +180,8 @@ std::optional<ReceivedCanFrame> SocketCanPort::Receive(Duration timeout) {
   }
   if (r.frame.error)
     CountErrorFrame(r.frame);
+  else if (r.own)
+    ++stats_.own_frames_received;
   else
     ++stats_.frames_received;
   return r;

@@ -87,6 +87,17 @@ bool TtyPort::Write(std::string_view bytes) {
   return true;
 }
 
+long TtyPort::WriteNow(std::string_view bytes) {
+  if (fd_ < 0 && !Reopen()) return -1;
+  for (;;) {
+    const ssize_t n = write(fd_, bytes.data(), bytes.size());
+    if (n >= 0) return n;
+    if (errno == EINTR) continue;
+    if (errno == EAGAIN) return 0;
+    return Reopen() ? 0 : -1;  // the device went away: the bytes are lost, the port may be back
+  }
+}
+
 std::string TtyPort::ReadAvailable() {
   std::string out;
   if (fd_ < 0 && !Reopen()) return out;

@@ -1,5 +1,7 @@
 #include "hil/harness/links/can_endpoint.h"
 
+#include <time.h>
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -16,6 +18,7 @@ link::SocketCanPort::Options BusOptions(const std::string& iface, bool fd) {
   }
   link::SocketCanPort::Options o;
   o.fd = fd;
+  o.receive_own_frames = true;  // our frames come back stamped like everyone's (bus order)
   return o;
 }
 
@@ -28,6 +31,13 @@ CaptureHeader CanHeader(const std::string& iface, std::int64_t start_unix_ns) {
   return h;
 }
 
+std::int64_t RealtimeMinusMonotonicNs() {
+  timespec r{}, m{};
+  clock_gettime(CLOCK_REALTIME, &r);
+  clock_gettime(CLOCK_MONOTONIC, &m);
+  return (static_cast<std::int64_t>(r.tv_sec) - m.tv_sec) * 1000000000LL + (r.tv_nsec - m.tv_nsec);
+}
+
 }  // namespace
 
 CanEndpoint::CanEndpoint(const std::string& iface, const std::string& capture_dir,
@@ -35,7 +45,15 @@ CanEndpoint::CanEndpoint(const std::string& iface, const std::string& capture_di
     : port_(iface, BusOptions(iface, fd)),
       start_unix_ns_(start_unix_ns),
       candump_(capture_dir + "/" + iface + ".candump"),
-      capture_(capture_dir + "/" + iface + ".cap", CanHeader(iface, start_unix_ns)) {}
+      capture_(capture_dir + "/" + iface + ".cap", CanHeader(iface, start_unix_ns)),
+      realtime_minus_mono_ns_(RealtimeMinusMonotonicNs()) {}
+
+CanEndpoint::~CanEndpoint() {
+  try {
+    FinishCapture(Duration::zero());  // frames others sent after the last PollBus are captured
+  } catch (const std::exception&) {   // a capture that cannot be written is noticed by the run
+  }
+}
 
 void CanEndpoint::Queue(const CanFrame& frame) {
   // keep the queue in time order; equal times keep their arrival order
@@ -51,6 +69,8 @@ std::optional<Time> CanEndpoint::next_frame_time() const {
 
 void CanEndpoint::Capture(CaptureDir dir, Time t, std::int64_t wall_ns,
                           const link::CanWireFrame& f) {
+  t = std::max(t, t_last_capture_);
+  t_last_capture_ = t;
   CaptureRecord r;
   r.dir = dir;
   r.t_emu_ns = ToNs(t);
@@ -65,7 +85,15 @@ void CanEndpoint::Capture(CaptureDir dir, Time t, std::int64_t wall_ns,
   candump_.Write(c);
 }
 
+std::pair<Time, std::int64_t> CanEndpoint::BusTime(const link::ReceivedCanFrame& r,
+                                                   const link::RealtimePacer& pacer) {
+  const std::int64_t mono = r.t_kernel_unix_ns > 0 ? r.t_kernel_unix_ns - realtime_minus_mono_ns_
+                                                   : r.t_read_mono_ns;  // no stamp came
+  return {pacer.SimTimeOfWall(mono), mono};
+}
+
 void CanEndpoint::SendNext(const link::RealtimePacer& pacer) {
+  pacer_ = pacer;
   if (pending_.empty()) return;
   const CanFrame f = pending_.front();
   pending_.pop_front();
@@ -73,8 +101,10 @@ void CanEndpoint::SendNext(const link::RealtimePacer& pacer) {
   pacer.SleepUntil(f.t);
   const link::CanWireFrame w = link::FromDeviceFrame(f);
   const auto sent = port_.Send(w);
-  if (sent) schedule_error_us_.push_back(static_cast<double>(*sent - scheduled) * 1e-3);
-  Capture(CaptureDir::kFrameTx, f.t, sent.value_or(0), w);
+  if (!sent) return;  // it never left: counted in stats(), not captured
+  schedule_error_us_.push_back(static_cast<double>(*sent - scheduled) * 1e-3);
+  awaiting_echo_.push_back({w, f.t, *sent, false});
+  ReadBus(f.t, &pacer, Duration::zero());  // capture it (and what came before) in bus order now
 }
 
 void CanEndpoint::SendAll() {
@@ -82,18 +112,69 @@ void CanEndpoint::SendAll() {
     const CanFrame f = pending_.front();
     pending_.pop_front();
     const link::CanWireFrame w = link::FromDeviceFrame(f);
-    port_.Send(w);
+    if (!port_.Send(w)) continue;
     Capture(CaptureDir::kFrameTx, f.t, 0, w);  // virtual mode: no wall time (deterministic capture)
+    awaiting_echo_.push_back({w, f.t, 0, true});
   }
 }
 
-std::vector<CanFrame> CanEndpoint::PollBus(Time t_now) {
-  std::vector<CanFrame> out;
-  while (auto r = port_.Receive(Duration::zero())) {
-    Capture(CaptureDir::kFrameRx, t_now, r->t_read_mono_ns, r->frame);
-    if (!r->frame.error) out.push_back(link::ToDeviceFrame(r->frame, t_now));
+void CanEndpoint::CaptureUnechoed() {
+  const Sent s = awaiting_echo_.front();
+  awaiting_echo_.pop_front();
+  if (s.captured) return;
+  const Time t = pacer_ ? pacer_->SimTimeOfWall(s.t_write_mono_ns) : s.t_scheduled;
+  Capture(CaptureDir::kFrameTx, t, s.t_write_mono_ns, s.frame);
+}
+
+void CanEndpoint::OnEcho(const link::ReceivedCanFrame& r, Time t, std::int64_t mono_ns) {
+  // echoes come in the order the frames were written; one the receive queue dropped is skipped
+  const auto match = std::find_if(awaiting_echo_.begin(), awaiting_echo_.end(),
+                                  [&](const Sent& s) { return s.frame == r.frame; });
+  if (match == awaiting_echo_.end()) {  // not ours to account for (sent before a restart?)
+    Capture(CaptureDir::kFrameTx, t, mono_ns, r.frame);
+    return;
   }
+  while (awaiting_echo_.begin() != match) CaptureUnechoed();
+  const bool captured = awaiting_echo_.front().captured;
+  awaiting_echo_.pop_front();
+  if (!captured) Capture(CaptureDir::kFrameTx, t, mono_ns, r.frame);
+}
+
+void CanEndpoint::ReadBus(Time t_now, const link::RealtimePacer* pacer, Duration wait) {
+  const std::int64_t give_up = link::RealtimePacer::MonotonicNs() + wait.count();
+  for (;;) {
+    std::optional<link::ReceivedCanFrame> r = port_.Receive(Duration::zero());
+    if (!r) {
+      const std::int64_t left = give_up - link::RealtimePacer::MonotonicNs();
+      if (awaiting_echo_.empty() || left <= 0) return;
+      r = port_.Receive(Duration{std::min<std::int64_t>(left, 10000000)});
+      if (!r) continue;
+    }
+    const auto [t, mono] = pacer ? BusTime(*r, *pacer) : std::pair{t_now, r->t_read_mono_ns};
+    if (r->own && !r->frame.error) {
+      OnEcho(*r, t, mono);
+      continue;
+    }
+    Capture(CaptureDir::kFrameRx, t, mono, r->frame);
+    if (!r->frame.error) inbox_.push_back(link::ToDeviceFrame(r->frame, t));
+  }
+}
+
+std::vector<CanFrame> CanEndpoint::PollBus(Time t_now, const link::RealtimePacer* pacer) {
+  if (pacer) pacer_ = *pacer;
+  ReadBus(t_now, pacer, Duration::zero());
+  std::vector<CanFrame> out;
+  out.swap(inbox_);
   return out;
+}
+
+void CanEndpoint::FinishCapture(Duration timeout) {
+  if (pacer_) {
+    const link::RealtimePacer pacer = *pacer_;
+    ReadBus(pacer.SimTimeOfWall(link::RealtimePacer::MonotonicNs()), &pacer,
+            awaiting_echo_.empty() ? Duration::zero() : timeout);
+  }
+  while (!awaiting_echo_.empty()) CaptureUnechoed();
 }
 
 }  // namespace hil::harness

@@ -38,14 +38,16 @@ SerialEndpoint::SerialEndpoint(std::string link_name, const std::string& link_pa
       capture_(capture_path, SerialHeader(link_name_, baud)) {}
 
 SerialEndpoint::~SerialEndpoint() {
-  if (pending_offset_ > 0) FinishChunk();
-  for (const auto& [chunk, name] : pending_) {
+  FinishRealtimeRecords();
+  for (std::size_t i = 0; i < pending_.size(); ++i) {
+    const auto& [chunk, name] = pending_[i];
+    const std::size_t from = i == 0 ? pending_offset_ : 0;  // the bytes that did not leave
     CaptureRecord r;
     r.dir = CaptureDir::kTx;
-    r.t_emu_ns = ToNs(chunk.t_first);
+    r.t_emu_ns = ToNs(chunk.t_byte(from));
     r.byte_period_ns = chunk.byte_period.count();
     r.name = name;
-    r.bytes = chunk.bytes;
+    r.bytes = chunk.bytes.substr(from);
     capture_.Write(r);
   }
 }
@@ -71,11 +73,30 @@ std::optional<Time> SerialEndpoint::next_byte_time() const {
   return pending_.front().first.t_byte(pending_offset_);
 }
 
-void SerialEndpoint::FinishChunk() {
-  // a partly written chunk (end of run) keeps only the bytes that left
-  current_.bytes.resize(current_.wall_offsets_ns.size());
-  capture_.Write(current_);
+void SerialEndpoint::FinishRealtimeRecords() {
+  if (!current_.bytes.empty()) capture_.Write(current_);
+  if (!current_drop_.bytes.empty()) capture_.Write(current_drop_);
   current_ = CaptureRecord{};
+  current_drop_ = CaptureRecord{};
+}
+
+void SerialEndpoint::RecordRealtimeByte(bool left, Time t, std::int64_t wall, Duration period,
+                                        const std::string& name, char byte) {
+  CaptureRecord& r = left ? current_ : current_drop_;
+  CaptureRecord& other = left ? current_drop_ : current_;
+  if (!other.bytes.empty()) {  // the line changed between sending and dropping: a new record
+    capture_.Write(other);
+    other = CaptureRecord{};
+  }
+  if (r.bytes.empty()) {
+    r.dir = left ? CaptureDir::kTx : CaptureDir::kDrop;
+    r.t_emu_ns = ToNs(t);
+    r.byte_period_ns = period.count();
+    r.t_wall_ns = left ? wall : 0;  // a dropped byte was never written
+    r.name = name;
+  }
+  r.bytes.push_back(byte);
+  if (left) r.wall_offsets_ns.push_back(wall - r.t_wall_ns);
 }
 
 void SerialEndpoint::WriteNextByte(const link::RealtimePacer& pacer) {
@@ -84,21 +105,19 @@ void SerialEndpoint::WriteNextByte(const link::RealtimePacer& pacer) {
   const Time t = c.t_byte(pending_offset_);
   const std::int64_t scheduled = pacer.WallNsOf(t);
   pacer.SleepUntil(t);
-  port_->Write(std::string_view(c.bytes).substr(pending_offset_, 1));
+  // a UART sends whether or not anyone listens: a byte nobody can take now is dropped, never
+  // waited for (that would stall every link of the run), and captured as a drop
+  const std::string_view byte = std::string_view(c.bytes).substr(pending_offset_, 1);
+  const bool left = port_->HostAttached() && port_->WriteNow(byte) == 1;
   const std::int64_t wall = link::RealtimePacer::MonotonicNs();
-  schedule_error_us_.push_back(static_cast<double>(wall - scheduled) * 1e-3);
-  if (pending_offset_ == 0) {
-    current_ = CaptureRecord{};
-    current_.dir = CaptureDir::kTx;
-    current_.t_emu_ns = ToNs(c.t_first);
-    current_.byte_period_ns = c.byte_period.count();
-    current_.t_wall_ns = wall;
-    current_.name = name;
-    current_.bytes = c.bytes;
+  if (left) {
+    schedule_error_us_.push_back(static_cast<double>(wall - scheduled) * 1e-3);
+  } else {
+    ++bytes_dropped_unread_;
   }
-  current_.wall_offsets_ns.push_back(wall - current_.t_wall_ns);
+  RecordRealtimeByte(left, t, wall, c.byte_period, name, byte[0]);
   if (++pending_offset_ == c.bytes.size()) {
-    FinishChunk();
+    FinishRealtimeRecords();
     pending_.pop_front();
     pending_offset_ = 0;
   }

@@ -109,13 +109,14 @@ void WriteTruthCsv(const TruthTable& truth, const Scenario& s, const std::string
 }
 
 void WriteScheduleErrors(const DeviceSet& set, const std::string& path) {
-  nlohmann::json sched = nlohmann::json::array();
+  nlohmann::json links = nlohmann::json::array();
   for (const auto& ports : set.endpoints) {
     for (const auto& ep : ports) {
       const auto& e = ep->schedule_error_us();
-      if (e.empty()) continue;
-      sched.push_back({{"link", ep->link_name()},
+      if (e.empty() && ep->bytes_dropped_unread() == 0) continue;
+      links.push_back({{"link", ep->link_name()},
                        {"bytes", e.size()},
+                       {"bytes_dropped_unread", ep->bytes_dropped_unread()},
                        {"p50_us", Percentile(e, 50)},
                        {"p99_us", Percentile(e, 99)},
                        {"max_us", Percentile(e, 100)}});
@@ -123,13 +124,25 @@ void WriteScheduleErrors(const DeviceSet& set, const std::string& path) {
   }
   if (set.can && !set.can->schedule_error_us().empty()) {
     const auto& e = set.can->schedule_error_us();
-    sched.push_back({{"link", set.can->iface()},
+    links.push_back({{"link", set.can->iface()},
                      {"frames", e.size()},
                      {"p50_us", Percentile(e, 50)},
                      {"p99_us", Percentile(e, 99)},
                      {"max_us", Percentile(e, 100)}});
   }
-  if (!sched.empty()) std::ofstream(path) << sched.dump(2) << "\n";
+  if (links.empty() && set.threads.empty()) return;
+  // what each thread of the real-time run really got, read back from the kernel
+  nlohmann::json threads = nlohmann::json::array();
+  for (const auto& [name, t] : set.threads) {
+    nlohmann::json j = {{"thread", name},
+                        {"tid", t.tid},
+                        {"policy", t.policy},
+                        {"priority", t.priority},
+                        {"timer_slack_ns", t.timer_slack_ns}};
+    if (!t.refused.empty()) j["realtime_refused"] = t.refused;
+    threads.push_back(j);
+  }
+  std::ofstream(path) << nlohmann::json{{"threads", threads}, {"links", links}}.dump(2) << "\n";
 }
 
 }  // namespace hil::harness

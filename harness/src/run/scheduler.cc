@@ -3,15 +3,22 @@
 #include <poll.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
+#include <thread>
 
 #include "hil/truth/truth_integrator.h"
 
 namespace hil::harness {
 namespace {
 
-/// In real time, how long the scheduler sleeps at most before it looks for host bytes again.
-constexpr Duration kHostPollPeriod = std::chrono::milliseconds(1);
+/// In real time, how long (wall) the event thread sleeps at most before it looks for host bytes
+/// again.
+constexpr std::int64_t kHostPollPeriodNs = 1'000'000;
+/// In real time, how long (wall) before its time an event is computed, so that its bytes wait in
+/// their queues when the pacing thread is due to write them (a host command read meanwhile counts
+/// from that event's time on: it takes effect at most this much later than it arrived).
+constexpr std::int64_t kEventLeadNs = 5'000'000;
 
 }  // namespace
 
@@ -19,7 +26,25 @@ Scheduler::Scheduler(const Scenario& scenario, DeviceSet& devices, ByteFaultInje
                      const link::RealtimePacer* pacer, std::ostream& fixes_csv)
     : scenario_(scenario), set_(devices), faults_(faults), pacer_(pacer), fixes_csv_(fixes_csv) {}
 
+Scheduler::~Scheduler() = default;
+
+std::unique_lock<std::mutex> Scheduler::LinksLock() {
+  return pacing_ ? std::unique_lock<std::mutex>(pacing_->links_mutex())
+                 : std::unique_lock<std::mutex>();
+}
+
+void Scheduler::StartPacing() {
+  std::vector<SerialEndpoint*> serial;
+  for (auto& ports : set_.endpoints) {
+    for (auto& ep : ports) serial.push_back(ep.get());
+  }
+  pacing_ = std::make_unique<PacingThread>(serial, set_.can.get(), *pacer_);
+  set_.threads = {{"events", link::RealtimePacer::CurrentThreadSchedule()},
+                  {"pacing", pacing_->schedule()}};
+}
+
 void Scheduler::Dispatch(std::size_t d, DeviceOutput& out) {
+  std::unique_lock<std::mutex> lock = LinksLock();
   std::vector<SerialMessage> carried;
   for (SerialMessage& m : out.serial) {
     SerialEndpoint& ep = *set_.endpoints[d].at(static_cast<std::size_t>(m.port));
@@ -45,6 +70,10 @@ void Scheduler::Dispatch(std::size_t d, DeviceOutput& out) {
     if (!write_refused_ && !writes_.Pump(false)) write_refused_ = true;
     if (set_.can) set_.can->SendAll();
   }
+  if (pacing_) {
+    lock.unlock();
+    pacing_->Wake();
+  }
 }
 
 bool Scheduler::PollHosts(Time t_host, DeviceOutput& out) {
@@ -59,14 +88,25 @@ bool Scheduler::PollHosts(Time t_host, DeviceOutput& out) {
   bool replied = false;
   std::size_t k = 0;
   for (std::size_t d = 0; d < set_.devices.size(); ++d) {
-    const Time t_rx = pacer_ ? pacer_->SimTimeOfWall(link::RealtimePacer::MonotonicNs()) : t_host;
+    // real time: its arrival, but not before the event the devices already computed
+    const Time t_rx =
+        pacer_ ? std::max(pacer_->SimTimeOfWall(link::RealtimePacer::MonotonicNs()), t_last_event_)
+               : t_host;
     for (std::size_t p = 0; p < set_.endpoints[d].size(); ++p) {
       const pollfd& pf = host_fds_[k++];
       if (pf.fd >= 0 && pf.revents == 0)
         continue;  // nothing from this host (errors and hang-ups are read)
-      if (const std::string rx = set_.endpoints[d][p]->PollHost(t_rx, !pacer_); !rx.empty()) {
+      std::string rx;
+      {
+        const std::unique_lock<std::mutex> lock = LinksLock();
+        rx = set_.endpoints[d][p]->PollHost(t_rx, !pacer_);
+      }
+      if (!rx.empty()) {
         set_.devices[d]->OnHostBytes(static_cast<int>(p), t_rx, rx, out);
-        set_.endpoints[d][p]->set_baud(set_.devices[d]->baud(static_cast<int>(p)));
+        {
+          const std::unique_lock<std::mutex> lock = LinksLock();
+          set_.endpoints[d][p]->set_baud(set_.devices[d]->baud(static_cast<int>(p)));
+        }
         replied = replied || !out.serial.empty() || !out.can.empty();
         Dispatch(d, out);
       }
@@ -109,6 +149,17 @@ void Scheduler::RecordFixes(Time t) {
 }
 
 void Scheduler::Run(const std::function<bool(Time)>& keep_going) {
+  bool to_the_end = false;
+  try {
+    to_the_end = RunEvents(keep_going);
+  } catch (...) {
+    pacing_.reset();  // a run that failed writes nothing more
+    throw;
+  }
+  if (!to_the_end) pacing_.reset();  // stopped early: what is queued stays unsent
+}
+
+bool Scheduler::RunEvents(const std::function<bool(Time)>& keep_going) {
   truth::TruthIntegrator truth(scenario_.truth);
   const Time t_end = TimeFromSeconds(scenario_.duration_s);
   DeviceOutput out;
@@ -118,37 +169,19 @@ void Scheduler::Run(const std::function<bool(Time)>& keep_going) {
     for (const auto& dev : set_.devices) {
       if (!t_event || dev->next_event_time() < *t_event) t_event = dev->next_event_time();
     }
-    if (!t_event) break;
+    if (!t_event) return true;
     if (pacer_) {
-      std::optional<Time> t_byte;
-      SerialEndpoint* ep_next = nullptr;
-      for (auto& ports : set_.endpoints) {
-        for (auto& ep : ports) {
-          const auto tb = ep->next_byte_time();
-          if (tb && (!t_byte || *tb < *t_byte)) {
-            t_byte = tb;
-            ep_next = ep.get();
-          }
-        }
-      }
-      const std::optional<Time> t_frame = set_.can ? set_.can->next_frame_time() : std::nullopt;
-      if (t_frame && (!t_byte || *t_frame <= *t_byte) &&
-          (*t_frame < *t_event || *t_event > t_end)) {
-        set_.can->SendNext(*pacer_);
+      // the pacing thread writes the bytes and frames; this one idles until the next event, but
+      // reads a host command when it arrives (within ~1 ms), not at the next event: the device
+      // may answer in between
+      if (!pacing_) StartPacing();
+      const std::int64_t now = link::RealtimePacer::MonotonicNs();
+      const std::int64_t due = pacer_->WallNsOf(*t_event) - kEventLeadNs;
+      if (*t_event <= t_end && due > now) {
+        std::this_thread::sleep_until(std::chrono::steady_clock::time_point(
+            std::chrono::nanoseconds(std::min(due, now + kHostPollPeriodNs))));
+        PollHosts(*t_event, out);
         continue;
-      }
-      if (ep_next && (*t_byte < *t_event || *t_event > t_end)) {
-        ep_next->WriteNextByte(*pacer_);
-        PollHosts(*t_byte, out);  // a host's command arrives while the device talks
-        continue;
-      }
-      if (*t_event <= t_end) {
-        // idle until the next event, but a host command is read when it arrives (within ~1 ms),
-        // not at the next event: the device may answer in between
-        const Time t_wake = std::min(
-            *t_event, pacer_->SimTimeOfWall(link::RealtimePacer::MonotonicNs()) + kHostPollPeriod);
-        pacer_->SleepUntil(t_wake);
-        if (PollHosts(t_wake, out) || t_wake < *t_event) continue;
       }
     }
     if (gate_ && !pacer_) {
@@ -161,11 +194,11 @@ void Scheduler::Run(const std::function<bool(Time)>& keep_going) {
       const Time t_turn = NextHostTurn();
       if (t_turn <= *t_event && t_turn <= t_end) {
         HostTurn(t_turn);
-        if (write_refused_) break;
+        if (write_refused_) return false;
         continue;
       }
     }
-    if (*t_event > t_end) break;
+    if (*t_event > t_end) return true;
     const TruthSample ts = truth.Sample(*t_event);
     for (std::size_t d = 0; d < set_.devices.size(); ++d) {
       if (set_.devices[d]->next_event_time() != *t_event) continue;
@@ -173,13 +206,13 @@ void Scheduler::Run(const std::function<bool(Time)>& keep_going) {
       Dispatch(d, out);
     }
     RecordFixes(*t_event);
+    t_last_event_ = *t_event;
     // real time: configuration commands from the host reach the device with their arrival time
     // (virtual mode reads them at host turns); without a gate no host is paced and none is waited
     // for
     if (pacer_ || !gate_) PollHosts(*t_event, out);
-    t_last_event_ = *t_event;
     PollBus();
-    if (write_refused_ || !keep_going(*t_event)) break;
+    if (write_refused_ || !keep_going(*t_event)) return false;
   }
 }
 
@@ -230,7 +263,8 @@ const std::vector<CanFrame>& Scheduler::PollBus() {
   if (set_.can) {
     const Time t_bus =
         pacer_ ? pacer_->SimTimeOfWall(link::RealtimePacer::MonotonicNs()) : t_last_event_;
-    for (const CanFrame& f : set_.can->PollBus(t_bus)) bus_frames_.push_back(f);
+    const std::unique_lock<std::mutex> lock = LinksLock();
+    for (const CanFrame& f : set_.can->PollBus(t_bus, pacer_)) bus_frames_.push_back(f);
   }
   return bus_frames_;
 }
@@ -240,13 +274,13 @@ void Scheduler::Flush() {
     if (!write_refused_ && !writes_.Pump(true)) write_refused_ = true;
     return;
   }
-  for (auto& ports : set_.endpoints) {
-    for (auto& ep : ports) {
-      while (ep->next_byte_time()) ep->WriteNextByte(*pacer_);
-    }
+  if (pacing_) {
+    pacing_->Drain();  // every byte and frame still queued leaves at its time
+    pacing_.reset();
   }
   if (set_.can) {
-    while (set_.can->next_frame_time()) set_.can->SendNext(*pacer_);
+    set_.can->FinishCapture(std::chrono::milliseconds(100));  // the last frames' echoes
+    PollBus();
   }
 }
 

@@ -35,6 +35,40 @@ struct FastPacketState {
   int frames_left = 0;
 };
 
+// NMEA 2000 fast-packet continuity of one frame of a fast-packet PGN; true when it starts a
+// packet (frame 0).
+bool CheckFastPacket(std::uint32_t id, const std::string& data, std::int64_t line_no,
+                     std::map<std::pair<std::uint32_t, std::uint32_t>, FastPacketState>& fast,
+                     ValidationReport& rep) {
+  const std::uint32_t pgn = PgnOf(id);
+  const int b0 = std::stoi(data.substr(0, 2), nullptr, 16);
+  const int seq = b0 >> 5, frame_no = b0 & 0x1F;
+  FastPacketState& st = fast[{id & 0xFF, pgn}];
+  if (frame_no == 0) {
+    if (st.frames_left > 0) {
+      rep.findings.push_back(
+          {true, "fast_packet",
+           "PGN " + std::to_string(pgn) + ": new packet before the previous one ended", line_no});
+    }
+    const int len = std::stoi(data.substr(2, 2), nullptr, 16);
+    st.seq = seq;
+    st.next_frame = 1;
+    st.frames_left = len <= 6 ? 0 : (len - 6 + 6) / 7;
+    return true;
+  }
+  if (st.frames_left == 0 || seq != st.seq || frame_no != st.next_frame) {
+    rep.findings.push_back({true, "fast_packet",
+                            "PGN " + std::to_string(pgn) + ": frame " + std::to_string(frame_no) +
+                                " of sequence " + std::to_string(seq) + " out of order",
+                            line_no});
+    st.frames_left = 0;
+  } else {
+    ++st.next_frame;
+    --st.frames_left;
+  }
+  return false;
+}
+
 }  // namespace
 
 ValidationReport ValidateCanLog(const std::string& text) {
@@ -106,38 +140,10 @@ ValidationReport ValidateCanLog(const std::string& text) {
     }
     last_t = std::max(last_t, t);
     rep.messages[id_hex].count++;
-    times[id_hex].push_back(t);
-    // NMEA 2000 fast packet continuity
-    if (id_hex.size() == 8 && !remote && data.size() >= 4) {
-      const std::uint32_t pgn = PgnOf(id);
-      if (kFastPacketPgns.count(pgn)) {
-        const int b0 = std::stoi(data.substr(0, 2), nullptr, 16);
-        const int seq = b0 >> 5, frame_no = b0 & 0x1F;
-        FastPacketState& st = fast[{id & 0xFF, pgn}];
-        if (frame_no == 0) {
-          if (st.frames_left > 0) {
-            rep.findings.push_back(
-                {true, "fast_packet",
-                 "PGN " + std::to_string(pgn) + ": new packet before the previous one ended",
-                 line_no});
-          }
-          const int len = std::stoi(data.substr(2, 2), nullptr, 16);
-          st.seq = seq;
-          st.next_frame = 1;
-          st.frames_left = len <= 6 ? 0 : (len - 6 + 6) / 7;
-        } else if (st.frames_left == 0 || seq != st.seq || frame_no != st.next_frame) {
-          rep.findings.push_back({true, "fast_packet",
-                                  "PGN " + std::to_string(pgn) + ": frame " +
-                                      std::to_string(frame_no) + " of sequence " +
-                                      std::to_string(seq) + " out of order",
-                                  line_no});
-          st.frames_left = 0;
-        } else {
-          ++st.next_frame;
-          --st.frames_left;
-        }
-      }
-    }
+    // a fast packet's frames leave back to back: its period is that of its first frames
+    const bool fast_packet =
+        id_hex.size() == 8 && !remote && data.size() >= 4 && kFastPacketPgns.count(PgnOf(id));
+    if (!fast_packet || CheckFastPacket(id, data, line_no, fast, rep)) times[id_hex].push_back(t);
   }
   for (auto& [id, ts] : times) {
     if (ts.size() < 2) continue;

@@ -277,6 +277,38 @@ TEST(ValidateTest, CanLogs) {
   EXPECT_EQ(r.bad_frames, 2u);
 }
 
+// navd's 129029 at 1 Hz: seven frames back to back each second (issue 15.4: that warned
+// sequence_gap on a clean log, the period taken between frames instead of packets)
+std::string FastPacketsEverySecond(int seconds, int skip_second) {
+  std::string log;
+  char line[128];
+  for (int s = 0; s < seconds; ++s) {
+    if (s == skip_second) continue;
+    for (int f = 0; f < 7; ++f) {
+      std::snprintf(line, sizeof line, "(%d.%06d) vcan0 0DF80580#%02X%s\n", 1700000000 + s, f * 40,
+                    ((s & 7) << 5) | f, f == 0 ? "2B000000000000" : "00000000000000");
+      log += line;
+    }
+  }
+  return log;
+}
+
+TEST(ValidateTest, FastPacketBurstsAreTimedPerPacket) {
+  ValidationReport r = ValidateCanLog(FastPacketsEverySecond(10, -1));
+  EXPECT_TRUE(r.conforms()) << ValidationSummary(r);
+  EXPECT_FALSE(HasFinding(r, "sequence_gap", false)) << ValidationSummary(r);
+  EXPECT_EQ(r.frames, 70u);
+  EXPECT_EQ(r.messages.at("0DF80580").count, 70u);
+  EXPECT_NEAR(r.messages.at("0DF80580").rate_hz, 1.0, 1e-9);  // packets per second
+  // three packets missing (seconds 4 to 6) are still a gap
+  const std::string three_missing =
+      FastPacketsEverySecond(4, -1) +
+      FastPacketsEverySecond(10, -1).substr(FastPacketsEverySecond(7, -1).size());
+  r = ValidateCanLog(three_missing);
+  EXPECT_TRUE(r.conforms()) << ValidationSummary(r);
+  EXPECT_TRUE(HasFinding(r, "sequence_gap", false)) << ValidationSummary(r);
+}
+
 }  // namespace
 }  // namespace hil::harness
 

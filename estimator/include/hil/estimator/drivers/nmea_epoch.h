@@ -16,6 +16,7 @@ struct NmeaMeasurement {
   double lat_deg = 0, lon_deg = 0, height_m = 0;  ///< height above the ellipsoid
   std::optional<double> speed_mps, course_deg;
   std::optional<double> hdop;
+  std::optional<double> geoid_separation_m;  ///< GGA's geoid height (height_m includes it)
   int quality = 0, num_sv = 0;
 };
 

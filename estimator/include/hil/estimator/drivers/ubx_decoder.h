@@ -22,7 +22,7 @@ struct UbxMessage {
   std::uint8_t cls = 0, id = 0;
   std::uint32_t itow_ms = 0;
   // NAV-POSLLH
-  double lat_deg = 0, lon_deg = 0, height_m = 0, h_acc_m = 0, v_acc_m = 0;
+  double lat_deg = 0, lon_deg = 0, height_m = 0, h_msl_m = 0, h_acc_m = 0, v_acc_m = 0;
   // NAV-VELNED
   double vel_n_mps = 0, vel_e_mps = 0, vel_d_mps = 0, s_acc_mps = 0;
   // NAV-SOL / NAV-TIMEGPS

@@ -34,6 +34,13 @@ class PtyPort final : public SerialPort {
   /// are dropped at once (counted in bytes_dropped_unread()) until a write goes through whole.
   /// Returns false if the pty failed (it never throws in the data path).
   bool Write(std::string_view bytes) override;
+  /// Writes what the host's input queue has room for, without waiting (real time). Returns the
+  /// bytes written (0 when the queue is full), -1 if the pty failed.
+  long WriteNow(std::string_view bytes) override;
+  /// True while some process other than the emulator has the slave open (inotify open/close
+  /// events on it). When the last one closes it, its unread input is discarded, as a tty's is at
+  /// its last close: a process opening it later reads only what was written after it opened.
+  bool HostAttached() override;
   /// Bytes lost because the host did not read this port.
   std::uint64_t bytes_dropped_unread() const { return bytes_dropped_unread_; }
   static constexpr int kStallTimeoutMs = 1000;
@@ -56,6 +63,8 @@ class PtyPort final : public SerialPort {
   int slave_fd_ = -1;  // kept open so the pty survives the host closing and reopening it
   std::string slave_path_;
   std::string symlink_path_;
+  int inotify_fd_ = -1;  // open/close events of the slave; -1: unknown (then always attached)
+  int host_opens_ = 0;   // processes' opens of the slave not closed yet
   bool stalled_ = false;
   std::uint64_t bytes_dropped_unread_ = 0;
 };

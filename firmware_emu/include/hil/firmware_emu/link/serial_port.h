@@ -16,6 +16,13 @@ class SerialPort {
   /// Writes all bytes, waiting while the line's output queue is full. False if the port failed
   /// (never throws in the data path).
   virtual bool Write(std::string_view bytes) = 0;
+  /// Writes what the line takes now, never waiting (real time: a UART does not wait for its
+  /// listener). Returns the bytes accepted; the rest is the caller's to drop. -1 if the port
+  /// failed.
+  virtual long WriteNow(std::string_view bytes) = 0;
+  /// Whether anyone listens: a pty knows when no process has its slave open; a real line always
+  /// has its far end attached.
+  virtual bool HostAttached() = 0;
   /// Bytes the host (or the real device) has sent, without blocking; empty if none.
   virtual std::string ReadAvailable() = 0;
   /// Bytes written that have not left yet (pty: not read by the host; tty: not transmitted).

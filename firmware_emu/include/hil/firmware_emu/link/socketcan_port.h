@@ -32,9 +32,11 @@ struct CanPortStats {
   std::uint64_t frames_sent = 0;
   std::uint64_t send_failures = 0;    ///< write errors other than a full queue
   std::uint64_t send_queue_full = 0;  ///< ENOBUFS/EAGAIN: the interface's TX queue was full
-  std::uint64_t frames_received = 0;  ///< data and remote frames (error frames not included)
-  std::uint64_t error_frames = 0;     ///< every error frame
-  std::uint64_t bus_off = 0;          ///< error frames with the bus-off class
+  std::uint64_t frames_received =
+      0;  ///< data and remote frames others sent (error frames and own echoes not included)
+  std::uint64_t own_frames_received = 0;  ///< our own frames echoed back (receive_own_frames)
+  std::uint64_t error_frames = 0;         ///< every error frame
+  std::uint64_t bus_off = 0;              ///< error frames with the bus-off class
   std::uint64_t bus_errors =
       0;  ///< protocol violations, bus errors, missing ACK, transceiver faults
   std::uint64_t controller_overflows = 0;  ///< controller RX/TX buffer overflow reports

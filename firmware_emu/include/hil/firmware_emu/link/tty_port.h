@@ -20,6 +20,10 @@ class TtyPort final : public SerialPort {
   TtyPort& operator=(const TtyPort&) = delete;
 
   bool Write(std::string_view bytes) override;
+  /// Writes what the output queue takes now (the UART paces it); a full queue takes nothing.
+  long WriteNow(std::string_view bytes) override;
+  /// A device's line always has its far end (whatever is wired to it).
+  bool HostAttached() override { return true; }
   std::string ReadAvailable() override;
   std::size_t PendingToHost() const override;
   const std::string& path() const override { return path_; }

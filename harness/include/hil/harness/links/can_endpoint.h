@@ -4,16 +4,21 @@
 /// their emulated times go out on a raw SocketCAN socket (vcan0 in the VM, a real can0 on a bench),
 /// frames others send (the estimator's output) are read back, and both directions are captured:
 ///  - `captures/<iface>.candump`: a `candump -l` log (time = scenario start UTC + emulated time),
-///  so
-///    can-utils' canplayer replays it and `hil replay` plays it;
+///    so can-utils' canplayer replays it and `hil replay` plays it;
 ///  - `captures/<iface>.cap`: the hil capture (ftx/frx lines with emulated and wall-clock times).
-/// Virtual mode sends every queued frame at once; real-time mode sends each at its wall time and
-/// records the schedule error.
-
+/// Virtual mode sends every queued frame at once and captures it at its emulated time (the same
+/// bytes in every run); frames from others get the emulated time they were read at.
+/// Real-time mode sends each frame at its wall time and records the schedule error; the captures
+/// then say when each frame was on the bus, as candump does: the socket receives its own frames
+/// back (CAN_RAW_RECV_OWN_MSGS) and every frame, ours and others', is captured in the order the
+/// socket got them, at the kernel's receive time (SO_TIMESTAMPNS) mapped onto emulated time. The
+/// captures are therefore in bus order with time never going backwards. A sent frame whose echo
+/// never came (the receive queue overflowed) is captured at the time its write returned.
 #include <cstdint>
 #include <deque>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "hil/firmware_emu/device.h"
@@ -42,23 +47,53 @@ class CanEndpoint {
   void SendNext(const link::RealtimePacer& pacer);
   /// Sends every queued frame now (virtual mode).
   void SendAll();
-  /// Reads every frame waiting on the bus (non-blocking), captures it at emulated time `t_now`
-  /// and returns it (time-stamped `t_now`; error frames are counted, not returned).
-  std::vector<CanFrame> PollBus(Time t_now);
+  /// Reads every frame waiting on the bus (non-blocking) and returns the frames others sent since
+  /// the last call (error frames are counted, not returned). `pacer` null (virtual mode): they are
+  /// stamped `t_now`; otherwise with the emulated time of their kernel receive time.
+  std::vector<CanFrame> PollBus(Time t_now, const link::RealtimePacer* pacer);
+  /// Real time: waits up to `timeout` for the echoes of the frames sent, reading the bus meanwhile
+  /// (PollBus returns what others sent), then captures any frame still without an echo at its
+  /// write time. The destructor does the same without waiting, after capturing what the socket
+  /// still holds (e.g. the estimator's last frames).
+  void FinishCapture(Duration timeout);
 
   const std::string& iface() const { return port_.ifname(); }
   const link::CanPortStats& stats() const { return port_.stats(); }
   /// Schedule errors (µs) of frames sent in real time: wall time sent − scheduled wall time.
   const std::vector<double>& schedule_error_us() const { return schedule_error_us_; }
 
+  ~CanEndpoint();
+  CanEndpoint(const CanEndpoint&) = delete;
+  CanEndpoint& operator=(const CanEndpoint&) = delete;
+
  private:
+  /// A frame written to the socket whose echo has not been read yet.
+  struct Sent {
+    link::CanWireFrame frame;
+    Time t_scheduled{};
+    std::int64_t t_write_mono_ns = 0;
+    bool captured = false;  // virtual mode: captured at its emulated time already
+  };
   void Capture(CaptureDir dir, Time t, std::int64_t wall_ns, const link::CanWireFrame& f);
+  /// Reads what the socket holds, captures it in that order, keeps others' frames for PollBus.
+  void ReadBus(Time t_now, const link::RealtimePacer* pacer, Duration wait);
+  void OnEcho(const link::ReceivedCanFrame& r, Time t, std::int64_t mono_ns);
+  /// Captures the oldest frame still awaiting its echo at its write time.
+  void CaptureUnechoed();
+  /// Emulated time and CLOCK_MONOTONIC of a received frame: its kernel stamp (real time).
+  std::pair<Time, std::int64_t> BusTime(const link::ReceivedCanFrame& r,
+                                        const link::RealtimePacer& pacer);
 
   link::SocketCanPort port_;
   std::int64_t start_unix_ns_;
   link::CandumpLogWriter candump_;
   CaptureWriter capture_;
   std::deque<CanFrame> pending_;
+  std::deque<Sent> awaiting_echo_;
+  std::vector<CanFrame> inbox_;               // others' frames read, not yet returned by PollBus
+  std::optional<link::RealtimePacer> pacer_;  // real time: a copy of the run's clock mapping
+  std::int64_t realtime_minus_mono_ns_ = 0;   // CLOCK_REALTIME − CLOCK_MONOTONIC at start
+  Time t_last_capture_{};                     // captures never go back in time
   std::vector<double> schedule_error_us_;
 };
 

@@ -10,9 +10,11 @@
 ///     tx 100000000 1042 5193820011 NMEA-GGA 2447504747412c... 0,1061,2075,...
 ///
 /// dir: tx (device → host bytes), rx (host → device bytes), drop (a message the UART dropped
-/// whole), ftx (CAN frame the harness put on the bus), frx (CAN frame read from the bus). t_emu_ns:
-/// emulated time of the first byte's start bit (or of the frame). byte_period_ns: time between byte
-/// starts (0 for rx, drop and frames); byte k is at t_emu_ns + k·byte_period_ns. t_wall_ns:
+/// whole, or in a real-time run bytes the UART sent that nobody could take: no process had the pty
+/// open or its input queue was full), ftx (CAN frame the harness put on the bus), frx (CAN frame
+/// read from the bus). t_emu_ns: emulated time of the first byte's start bit (or of the frame).
+/// byte_period_ns: time between byte starts (0 for rx, frames and whole dropped messages); byte k
+/// is at t_emu_ns + k·byte_period_ns. t_wall_ns:
 /// CLOCK_MONOTONIC when the first byte was written (or the frame sent, or rx bytes read) in a
 /// real-time run; 0 in virtual mode (nothing is paced there, and a scenario and seed then give a
 /// byte-identical capture) and for bytes never written. data: lower-case hex bytes, or for frames

@@ -43,7 +43,10 @@ class SerialEndpoint {
   Time last_queued_end() const { return last_queued_end_; }
   /// Emulated time of the next byte waiting to be written, if any.
   std::optional<Time> next_byte_time() const;
-  /// Writes the next waiting byte at its UART wall time and records the schedule error.
+  /// Writes the next waiting byte at its UART wall time and records the schedule error. A byte
+  /// the host cannot take at that instant (nobody has the pty open, or its input queue is full) is
+  /// dropped at the UART and captured as a drop, as a real UART loses what nobody reads; this
+  /// never waits beyond the byte's time.
   void WriteNextByte(const link::RealtimePacer& pacer);
   /// Writes every waiting byte at once, in one write (virtual mode). The order in which the host
   /// sees several links is kept by VirtualGate / VirtualWriteQueue, before this is called.
@@ -64,11 +67,17 @@ class SerialEndpoint {
   const link::UartTxQueue& uart() const { return uart_; }
   const std::string& link_name() const { return link_name_; }
   const std::string& link_path() const { return port_->path(); }
+  /// Real time: bytes dropped because nobody had the port open or its input queue was full.
+  std::uint64_t bytes_dropped_unread() const { return bytes_dropped_unread_; }
   /// Schedule errors (µs) of bytes written in real time: wall time written − scheduled wall time.
   const std::vector<double>& schedule_error_us() const { return schedule_error_us_; }
 
  private:
-  void FinishChunk();
+  /// Real time: adds one byte to the capture line being built, tx when it `left`, else drop.
+  void RecordRealtimeByte(bool left, Time t, std::int64_t wall, Duration byte_period,
+                          const std::string& name, char byte);
+  /// Real time: writes the capture lines being built.
+  void FinishRealtimeRecords();
 
   std::string link_name_;
   std::unique_ptr<link::SerialPort> port_;
@@ -77,7 +86,9 @@ class SerialEndpoint {
   std::deque<std::pair<link::TimedChunk, std::string>> pending_;  // chunk, message name
   Time last_queued_end_{};
   std::size_t pending_offset_ = 0;  // bytes of pending_.front() already written
-  CaptureRecord current_;           // capture line of the chunk being written in real time
+  CaptureRecord current_;           // real time: capture line of the bytes of a chunk that left
+  CaptureRecord current_drop_;      // real time: capture line of its bytes dropped unread
+  std::uint64_t bytes_dropped_unread_ = 0;
   std::vector<double> schedule_error_us_;
   std::string write_buffer_;  // virtual mode: the waiting chunks joined for one write
 };

@@ -25,7 +25,9 @@ void WriteTruthCsv(const TruthTable& truth, const Scenario& s, const std::string
 /// The times of truth.csv: every 100 ms from 0 to the scenario's end.
 std::vector<Time> TruthCsvTimes(const Scenario& s);
 
-/// Real-time schedule error per link (p50/p99/max µs); nothing in virtual mode.
+/// Real time: `{"threads": [{thread, tid, policy, priority, timer_slack_ns}], "links": [{link,
+/// bytes, bytes_dropped_unread, p50_us, p99_us, max_us}]}`, the scheduling each thread really got
+/// and the schedule error per link; nothing in virtual mode.
 void WriteScheduleErrors(const DeviceSet& set, const std::string& path);
 
 }  // namespace hil::harness

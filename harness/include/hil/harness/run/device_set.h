@@ -29,6 +29,8 @@ struct DeviceSet {
   /// The CAN bus (scenario section `can`); null when the scenario has none. Every device's
   /// DeviceOutput::can frames go out on it.
   std::unique_ptr<CanEndpoint> can;
+  /// Real time: the scheduling the run's threads really got ({"events" | "pacing", …}).
+  std::vector<std::pair<std::string, link::ThreadSchedule>> threads;
 };
 
 /// Creates the devices, their ptys (symlinks and captures in `run_dir`) and the CAN bus.

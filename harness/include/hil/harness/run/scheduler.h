@@ -1,9 +1,10 @@
 #pragma once
 /// @file
 /// The one scheduler that owns the clock of a run (order of operations in run.h). It advances
-/// emulated time from device event to device event; in real-time/scaled mode it also writes each
-/// byte at its wall-clock UART time. Byte faults of the timeline are applied to whole messages
-/// before they enter a UART queue, so the bytes depend only on the scenario and the seed.
+/// emulated time from device event to device event; in real-time/scaled mode a pacing thread of
+/// its own (pacing_thread.h) writes each byte and frame at its wall-clock time meanwhile. Byte
+/// faults of the timeline are applied to whole messages before they enter a UART queue, so the
+/// bytes depend only on the scenario and the seed.
 ///
 /// Host turns (virtual mode): the bytes a host writes to its devices are read only at host turns,
 /// at emulated times fixed by the run itself: every `kHostTurnPeriod` from t = 0, and when the
@@ -19,6 +20,8 @@
 
 #include <deque>
 #include <functional>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -29,6 +32,7 @@
 #include "hil/harness/faults/byte_faults.h"
 #include "hil/harness/faults/fault_record.h"
 #include "hil/harness/run/device_set.h"
+#include "hil/harness/run/pacing_thread.h"
 #include "hil/harness/run/virtual_gate.h"
 #include "hil/harness/scenario/scenario.h"
 
@@ -60,6 +64,9 @@ class Scheduler {
 
   /// Writes the bytes still queued (real time) at their UART times.
   void Flush();
+  ~Scheduler();
+  Scheduler(const Scheduler&) = delete;
+  Scheduler& operator=(const Scheduler&) = delete;
 
   /// The raw GNSS fixes of the first receiver seen so far (the baseline).
   const std::vector<EstimateRecord>& fixes() const { return fixes_; }
@@ -69,7 +76,13 @@ class Scheduler {
   const std::vector<CanFrame>& PollBus();
 
  private:
+  /// Run's loop; true when it reached the scenario's end, false when keep_going stopped it.
+  bool RunEvents(const std::function<bool(Time)>& keep_going);
   void Dispatch(std::size_t device, DeviceOutput& out);
+  /// Real time: starts the pacing thread (pacing_thread.h) and notes the threads' scheduling.
+  void StartPacing();
+  /// The endpoints' lock while the pacing thread runs (an empty lock otherwise).
+  std::unique_lock<std::mutex> LinksLock();
   void RecordFixes(Time t);
   /// Hands the bytes hosts wrote since the last call to their devices, at `t_host` (virtual) or at
   /// their wall arrival time (real time). Returns true when a device queued a reply.
@@ -103,9 +116,10 @@ class Scheduler {
   bool write_refused_ = false;  // the gate gave up a wait
   VirtualGate* gate_ = nullptr;
   Time next_periodic_turn_{};
-  std::vector<Time> answer_turns_;  // host turns at the ends of devices' answers
-  std::deque<HostBytes> arrivals_;  // read at turns, in time order, not yet delivered
-  std::vector<pollfd> host_fds_;    // one per serial endpoint, in device and port order
+  std::vector<Time> answer_turns_;        // host turns at the ends of devices' answers
+  std::deque<HostBytes> arrivals_;        // read at turns, in time order, not yet delivered
+  std::vector<pollfd> host_fds_;          // one per serial endpoint, in device and port order
+  std::unique_ptr<PacingThread> pacing_;  // real time: writes the bytes and frames
 };
 
 }  // namespace hil::harness

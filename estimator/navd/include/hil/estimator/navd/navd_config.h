@@ -55,7 +55,7 @@ struct NavdConfig {
   std::string can_interface;     ///< NMEA 2000 output on this SocketCAN interface; empty = off
   std::string can_log;  ///< NMEA 2000 frames as `candump -l` lines to this file; empty = off
   int can_source_address = 0x80;  ///< NMEA 2000 source address
-  double can_rate_hz = 10.0;      ///< 129025/129026/127250/127257 rate (129029 at 1 Hz)
+  double can_rate_hz = 10.0;      ///< 129025/127250/127257 rate (129026 at most 4 Hz, 129029 1 Hz)
 
   /// Every GNSS receiver's device, receiver 0 (gnss_device) first.
   std::vector<std::string> GnssDevices() const { return gnss_receivers.Devices(gnss_device); }
