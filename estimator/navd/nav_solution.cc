@@ -8,12 +8,13 @@ std::string ToJsonLine(const NavSolution& s) {
   char buf[768];
   const long long sec = s.tov_unix_ns / 1000000000LL;
   const long long nsec = s.tov_unix_ns % 1000000000LL;
-  int n = std::snprintf(
-      buf, sizeof buf,
-      "{\"tov_utc_s\":%lld.%09lld,\"lat_deg\":%.10f,\"lon_deg\":%.10f,\"height_m\":%.4f,"
-      "\"vel_enu_mps\":[%.4f,%.4f,%.4f],\"pos_std_enu_m\":[%.4f,%.4f,%.4f]",
-      sec, nsec, s.lat_deg, s.lon_deg, s.height_m, s.vel_enu_mps[0], s.vel_enu_mps[1],
-      s.vel_enu_mps[2], s.pos_std_enu_m[0], s.pos_std_enu_m[1], s.pos_std_enu_m[2]);
+  int n = std::snprintf(buf, sizeof buf,
+                        "{\"tov_utc_s\":%lld.%09lld,\"tov_unix_ns\":%lld,\"lat_deg\":%.10f,\"lon_"
+                        "deg\":%.10f,\"height_m\":%.4f,"
+                        "\"vel_enu_mps\":[%.4f,%.4f,%.4f],\"pos_std_enu_m\":[%.4f,%.4f,%.4f]",
+                        sec, nsec, static_cast<long long>(s.tov_unix_ns), s.lat_deg, s.lon_deg,
+                        s.height_m, s.vel_enu_mps[0], s.vel_enu_mps[1], s.vel_enu_mps[2],
+                        s.pos_std_enu_m[0], s.pos_std_enu_m[1], s.pos_std_enu_m[2]);
   std::string out(buf, static_cast<std::size_t>(n));
   if (s.yaw_deg) {
     n = std::snprintf(buf, sizeof buf, ",\"yaw_deg\":%.4f", *s.yaw_deg);

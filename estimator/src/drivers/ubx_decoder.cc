@@ -176,8 +176,8 @@ std::optional<GnssSample> UbxEpochAssembler::Flush() {
       !have_sol_ || ((sol_.flags & 0x01) && (sol_.gps_fix == 2 || sol_.gps_fix == 3));
   if (have_pos_ && week_ >= 0 && fix_ok) {
     GnssSample g;
-    g.t = static_cast<GpsNs>(week_) * 604800LL * kNsPerSecond +
-          static_cast<GpsNs>(itow_) * 1'000'000LL + (have_sol_ ? sol_.ftow_ns : 0);
+    g.t = GpsTimeFromWeek(
+        week_, static_cast<std::int64_t>(itow_) * 1'000'000LL + (have_sol_ ? sol_.ftow_ns : 0));
     g.position = {pos_.lat_deg, pos_.lon_deg, pos_.height_m};
     const double h = std::max(pos_.h_acc_m, 0.01) / std::sqrt(2.0);
     g.pos_std_enu_m = {h, h, std::max(pos_.v_acc_m, 0.01)};
