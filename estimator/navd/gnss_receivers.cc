@@ -1,32 +1,8 @@
 #include "gnss_receivers.h"
 
-#include <cmath>
-#include <numbers>
-
 namespace hil::navd {
 
 namespace est = hil::estimator;
-
-est::GnssSample ToGnssSample(const est::drivers::NmeaMeasurement& m, int leap_s,
-                             const est::NmeaAccuracy& acc) {
-  est::GnssSample g;
-  g.t = est::GpsNsFromUnixNs(m.tov_unix_ns, leap_s);
-  g.position = {m.lat_deg, m.lon_deg, m.height_m};
-  const double sigma = est::NmeaHorizontalStd(acc, m.quality, m.hdop);
-  g.pos_std_enu_m = {sigma, sigma, 2.0 * sigma};
-  g.fix_quality = m.quality;
-  g.num_sv = m.num_sv;
-  g.hdop = m.hdop.value_or(0.0);
-  g.ground_speed_mps = m.speed_mps;  // known also when the course is not (no velocity then)
-  g.geoid_separation_m = m.geoid_separation_m;
-  if (m.speed_mps && m.course_deg) {
-    const double c = *m.course_deg * std::numbers::pi / 180.0;
-    g.vel_enu_mps = {*m.speed_mps * std::sin(c), *m.speed_mps * std::cos(c), 0.0};
-    g.has_velocity = true;
-    g.vel_std_enu_mps = {acc.velocity_std_mps, acc.velocity_std_mps, 2.0 * acc.velocity_std_mps};
-  }
-  return g;
-}
 
 GnssReceivers::Receiver::Receiver(const std::string& path, int baud, int index,
                                   const est::NavdConfig& cfg, const Handler& h)
@@ -36,7 +12,7 @@ GnssReceivers::Receiver::Receiver(const std::string& path, int baud, int index,
             h](const est::drivers::NmeaFix& fix) {
         const auto m = nmea_epochs.Add(fix);
         if (!m) return;
-        est::GnssSample g = ToGnssSample(*m, leap, acc);
+        est::GnssSample g = est::drivers::ToGnssSample(*m, leap, acc);
         g.antenna = index;
         h(g);
       }),

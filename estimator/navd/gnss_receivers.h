@@ -14,6 +14,7 @@
 
 #include "hil/estimator/drivers/nmea_decoder.h"
 #include "hil/estimator/drivers/nmea_epoch.h"
+#include "hil/estimator/drivers/nmea_gnss_sample.h"
 #include "hil/estimator/drivers/ubx_decoder.h"
 #include "hil/estimator/navd/navd_config.h"
 #include "hil/estimator/samples.h"
@@ -22,12 +23,6 @@
 #include "serial_device.h"
 
 namespace hil::navd {
-
-/// A decoded NMEA epoch as a filter sample: horizontal 1σ per axis from the fix quality and HDOP
-/// (nmea_accuracy.h; vertical twice that), velocity from RMC speed and course with the configured
-/// 1σ.
-estimator::GnssSample ToGnssSample(const estimator::drivers::NmeaMeasurement& m, int leap_s,
-                                   const estimator::NmeaAccuracy& acc);
 
 class GnssReceivers {
  public:

@@ -21,6 +21,7 @@
 #include <functional>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -96,7 +97,7 @@ void PrintUsage() {
 
 est::NavSolution ToSolution(const est::NavOutput& o, const est::Navigator& nav, int leap_s) {
   est::NavSolution s;
-  s.tov_unix_ns = est::UnixNsFromGpsNs(o.t, leap_s);
+  s.tov_unix_ns = est::UnixNsFromGpsTime(o.t, leap_s);
   s.lat_deg = o.position.lat_deg;
   s.lon_deg = o.position.lon_deg;
   s.height_m = o.position.height_m;
@@ -190,10 +191,9 @@ int main(int argc, char** argv) {
   signal(SIGPIPE, SIG_IGN);
 
   est::Navigator nav(cfg.nav);
-  const bool imu_mode = cfg.mode() == est::NavMode::kEkf || cfg.mode() == est::NavMode::kPlanar2d ||
-                        cfg.mode() == est::NavMode::kImuOnly;
+  const bool imu_mode = est::UsesImu(cfg.mode());
   std::uint64_t nmea_write_errors = 0;
-  est::GpsNs last_emitted = -1;
+  std::optional<est::GpsTime> last_emitted;
   est::NavdHealth health;  // fault detection: counters and flags in every JSON line
   const auto emit = [&](const est::NavOutput& o) {
     std::string line = est::ToJsonLine(ToSolution(o, nav, cfg.leap_seconds));
@@ -202,10 +202,10 @@ int main(int argc, char** argv) {
     std::fflush(out);
     if (nmea_fd >= 0) {
       const std::string s =
-          est::outputs::FormatNmea0183(o, est::UnixNsFromGpsNs(o.t, cfg.leap_seconds));
+          est::outputs::FormatNmea0183(o, est::UnixNsFromGpsTime(o.t, cfg.leap_seconds));
       if (write(nmea_fd, s.data(), s.size()) != static_cast<ssize_t>(s.size())) ++nmea_write_errors;
     }
-    can->Publish(o, est::UnixNsFromGpsNs(o.t, cfg.leap_seconds));
+    can->Publish(o, est::UnixNsFromGpsTime(o.t, cfg.leap_seconds));
     last_emitted = o.t;
   };
 
@@ -224,7 +224,7 @@ int main(int argc, char** argv) {
     const est::NavOutput o = nav.Output();
     if (o.valid && o.t != last_emitted) emit(o);
   });
-  const std::int64_t period_ns = static_cast<std::int64_t>(std::llround(1e9 / cfg.output_rate_hz));
+  const est::Nanoseconds period{std::llround(1e9 / cfg.output_rate_hz)};
   est::drivers::McuImuAdapter mcu_adapter;
   const auto on_imu = [&](const est::ImuSample& s) {
     nav.Push(s);
@@ -232,7 +232,9 @@ int main(int argc, char** argv) {
     // each sample as it is decoded: run the filter to the horizon, one solution per output period
     nav.Update();
     if (!nav.aligned()) return;
-    if (last_emitted >= 0 && s.t / period_ns == last_emitted / period_ns) return;
+    if (last_emitted &&
+        s.t.time_since_epoch() / period == last_emitted->time_since_epoch() / period)
+      return;
     const est::NavOutput o = nav.Output();
     if (o.valid && o.t != last_emitted)
       emit(o);  // (a fix stands in for the filter after an IMU loss)

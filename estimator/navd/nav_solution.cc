@@ -8,10 +8,11 @@ std::string ToJsonLine(const NavSolution& s) {
   char buf[768];
   const long long sec = s.tov_unix_ns / 1000000000LL;
   const long long nsec = s.tov_unix_ns % 1000000000LL;
-  int n = std::snprintf(
-      buf, sizeof buf,
-      "{\"tov_utc_s\":%lld.%09lld,\"lat_deg\":%.10f,\"lon_deg\":%.10f,\"height_m\":%.4f", sec, nsec,
-      s.lat_deg, s.lon_deg, s.height_m);
+  int n = std::snprintf(buf, sizeof buf,
+                        "{\"tov_utc_s\":%lld.%09lld,\"tov_unix_ns\":%lld,\"lat_deg\":%.10f,"
+                        "\"lon_deg\":%.10f,\"height_m\":%.4f",
+                        sec, nsec, static_cast<long long>(s.tov_unix_ns), s.lat_deg, s.lon_deg,
+                        s.height_m);
   std::string out(buf, static_cast<std::size_t>(n));
   if (s.vel_enu_mps) {
     const auto& v = *s.vel_enu_mps;

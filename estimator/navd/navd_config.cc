@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "hil/estimator/navd/serial_bauds.h"
+
 namespace hil::estimator {
 namespace {
 
@@ -36,6 +38,22 @@ double ToDouble(const ConfigFile& f, const ConfigEntry& e, double lo, double hi)
     throw ConfigError(f.name(), e.line, Field(e), m.str());
   }
   return v;
+}
+
+// A baud rate navd can open a serial device at (serial_bauds.h); any other is an error.
+int ToBaud(const ConfigFile& f, const ConfigEntry& e) {
+  const int baud = ToInt(f, e, 1, 4'000'000);
+  if (!hil::navd::SerialSpeed(baud)) {
+    throw ConfigError(
+        f.name(), e.line, Field(e),
+        "unsupported baud rate " + e.value + " (supported: " + hil::navd::SerialBaudList() + ")");
+  }
+  return baud;
+}
+
+// A duration key given in seconds (the user-facing unit), in whole nanoseconds (truncated).
+Nanoseconds TruncatedNs(double seconds) {
+  return Nanoseconds{static_cast<std::int64_t>(seconds * 1e9)};
 }
 
 Eigen::Vector3d ToVector3(const ConfigFile& f, const ConfigEntry& e, double limit) {
@@ -71,7 +89,7 @@ NavdConfig NavdConfig::FromFile(const ConfigFile& f) {
     if (s == "input" && k == "gnss_device")
       c.gnss_device = e.value;
     else if (s == "input" && k == "gnss_baud")
-      c.gnss_baud = ToInt(f, e, 1200, 921600);
+      c.gnss_baud = ToBaud(f, e);
     else if (s == "input" && k == "gnss_protocol") {
       if (e.value != "nmea" && e.value != "ubx")
         throw ConfigError(f.name(), e.line, Field(e),
@@ -94,7 +112,7 @@ NavdConfig NavdConfig::FromFile(const ConfigFile& f) {
     else if (s == "input" && k == "imu_device")
       c.imu_device = e.value;
     else if (s == "input" && k == "imu_baud")
-      c.imu_baud = ToInt(f, e, 1200, 921600);
+      c.imu_baud = ToBaud(f, e);
     else if (s == "input" && k == "imu_format") {
       if (e.value != "mcu" && e.value != "razor_text")
         throw ConfigError(f.name(), e.line, Field(e),
@@ -145,9 +163,9 @@ NavdConfig NavdConfig::FromFile(const ConfigFile& f) {
     else if (s == "filter" && k == "gate_sigma")
       ekf.gate_sigma = ToDouble(f, e, 1.0, 1000.0);
     else if (s == "filter" && k == "fusion_horizon_s")
-      c.nav.fusion_horizon_ns = static_cast<std::int64_t>(ToDouble(f, e, 0.0, 2.0) * 1e9);
+      c.nav.fusion_horizon = TruncatedNs(ToDouble(f, e, 0.0, 2.0));
     else if (s == "filter" && k == "gnss_max_latency_s") {
-      c.nav.gnss_max_latency_ns = static_cast<std::int64_t>(ToDouble(f, e, 0.0, 5.0) * 1e9);
+      c.nav.gnss_max_latency = TruncatedNs(ToDouble(f, e, 0.0, 5.0));
       latency_line = e.line;
     } else if (s == "filter" && k == "use_gnss_velocity") {
       if (e.value != "true" && e.value != "false")
@@ -174,8 +192,7 @@ NavdConfig NavdConfig::FromFile(const ConfigFile& f) {
     else
       throw ConfigError(f.name(), e.line, Field(e), "unknown key");
   }
-  const bool needs_imu = c.nav.mode == NavMode::kEkf || c.nav.mode == NavMode::kPlanar2d ||
-                         c.nav.mode == NavMode::kImuOnly;
+  const bool needs_imu = UsesImu(c.nav.mode);
   ValidateNavdImu(f, c.imu, c.imu_device, c.imu_format);
   if (needs_imu && c.imu_device.empty() && !c.imu.from_can()) {
     throw ConfigError(f.name(), mode_line, "[filter] mode",
@@ -192,7 +209,7 @@ NavdConfig NavdConfig::FromFile(const ConfigFile& f) {
                       "gnss_float_error_tau_s and gnss_float_error_std_m go together, and need "
                       "gnss_error_tau_s > 0");
   }
-  if (latency_line > 0 && c.nav.gnss_max_latency_ns < c.nav.fusion_horizon_ns) {
+  if (latency_line > 0 && c.nav.gnss_max_latency < c.nav.fusion_horizon) {
     throw ConfigError(
         f.name(), latency_line, "[filter] gnss_max_latency_s",
         "must be at least fusion_horizon_s (the filter never runs closer than the horizon)");

@@ -6,10 +6,10 @@
 namespace hil::estimator {
 namespace {
 
-constexpr GpsNs kRecentNs = 5'000'000'000LL;
+constexpr Nanoseconds kRecent{5'000'000'000LL};
 // a fix reaches the filter up to ~2.2 s after its time of validity at 9600 baud (the epoch is
 // complete only when the next one starts), so "no fix" is judged with margin beyond that
-constexpr GpsNs kMinOutageNs = 3'500'000'000LL;
+constexpr Nanoseconds kMinOutage{3'500'000'000LL};
 constexpr std::uint32_t kResetTickWindow =
     60'000'000;                                // a restarted 1 MHz tick is below one minute
 constexpr std::uint16_t kResetSeqWindow = 64;  // a restarted sequence is small
@@ -24,20 +24,20 @@ void Add(std::string& s, const char* key, std::uint64_t v) {
 
 void NavdHealth::OnGnss(const GnssSample& g) {
   ++c_.gnss_epochs;
-  if (last_gnss_t_ >= 0) {
-    if (g.t <= last_gnss_t_) {
+  if (last_gnss_t_) {
+    if (g.t <= *last_gnss_t_) {
       ++c_.gnss_repeated_epochs;
       return;
     }
-    const GpsNs dt = g.t - last_gnss_t_;
-    if (gnss_period_ns_ == 0 || dt < gnss_period_ns_) gnss_period_ns_ = dt;
+    const Nanoseconds dt = g.t - *last_gnss_t_;
+    if (gnss_period_ == Nanoseconds{0} || dt < gnss_period_) gnss_period_ = dt;
   }
   last_gnss_t_ = g.t;
   if (g.fix_quality <= 0) {
     ++c_.gnss_no_fix_epochs;
     return;
   }
-  if (last_fix_t_ >= 0 && gnss_period_ns_ > 0 && (g.t - last_fix_t_) * 2 > gnss_period_ns_ * 3)
+  if (last_fix_t_ && gnss_period_ > Nanoseconds{0} && (g.t - *last_fix_t_) * 2 > gnss_period_ * 3)
     ++c_.gnss_gaps;
   last_fix_t_ = g.t;
 }
@@ -92,18 +92,18 @@ std::uint64_t NavdHealth::ImuLinkErrors() const {
   return n;
 }
 
-bool NavdHealth::Rose(Recent& r, std::uint64_t value, GpsNs t) {
+bool NavdHealth::Rose(Recent& r, std::uint64_t value, GpsTime t) {
   if (value > r.seen) r.last_rise = t;
   r.seen = value;
-  return r.last_rise >= 0 && t - r.last_rise <= kRecentNs;
+  return r.last_rise && t - *r.last_rise <= kRecent;
 }
 
-std::string NavdHealth::Field(GpsNs t) {
+std::string NavdHealth::Field(GpsTime t) {
   // outage: no fix for longer than a few receiver periods (judged at the solution's time)
-  const GpsNs limit = std::max(kMinOutageNs, 3 * gnss_period_ns_ + GpsNs{500'000'000});
-  const GpsNs since =
-      last_fix_t_ >= 0 ? t - last_fix_t_ : (last_gnss_t_ >= 0 ? t - last_gnss_t_ : 0);
-  const bool outage = (last_fix_t_ >= 0 || last_gnss_t_ >= 0) && since > limit;
+  const Nanoseconds limit = std::max(kMinOutage, 3 * gnss_period_ + Nanoseconds{500'000'000});
+  const Nanoseconds since =
+      last_fix_t_ ? t - *last_fix_t_ : (last_gnss_t_ ? t - *last_gnss_t_ : Nanoseconds{0});
+  const bool outage = (last_fix_t_ || last_gnss_t_) && since > limit;
   if (outage && !outage_) ++c_.gnss_outages;
   outage_ = outage;
 
@@ -154,7 +154,7 @@ std::string NavdHealth::Field(GpsNs t) {
   return s;
 }
 
-void NavdHealth::AppendTo(std::string& line, GpsNs t) {
+void NavdHealth::AppendTo(std::string& line, GpsTime t) {
   std::size_t end = line.size();
   while (end > 0 && (line[end - 1] == '\n' || line[end - 1] == '\r')) --end;
   if (end == 0 || line[end - 1] != '}') return;

@@ -6,36 +6,9 @@
 
 #include <cerrno>
 
+#include "hil/estimator/navd/serial_bauds.h"
+
 namespace hil::navd {
-namespace {
-
-speed_t SpeedOf(int baud) {
-  switch (baud) {
-    case 4800:
-      return B4800;
-    case 9600:
-      return B9600;
-    case 19200:
-      return B19200;
-    case 38400:
-      return B38400;
-    case 57600:
-      return B57600;
-    case 115200:
-      return B115200;
-    case 230400:
-      return B230400;
-    case 460800:
-      return B460800;
-    case 921600:
-      return B921600;
-    default:
-      return B9600;
-  }
-}
-
-}  // namespace
-
 SerialDevice::~SerialDevice() { Close(); }
 
 void SerialDevice::Close() {
@@ -51,8 +24,11 @@ int SerialDevice::EnsureOpen() {
   if (tcgetattr(fd_, &tio) == 0) {
     cfmakeraw(&tio);
     tio.c_cflag |= CLOCAL | CREAD;
-    cfsetispeed(&tio, SpeedOf(baud_));
-    cfsetospeed(&tio, SpeedOf(baud_));
+    // the configuration accepts only the rates of kSerialBauds
+    if (const std::optional<speed_t> speed = SerialSpeed(baud_)) {
+      cfsetispeed(&tio, *speed);
+      cfsetospeed(&tio, *speed);
+    }
     tcsetattr(fd_, TCSANOW, &tio);
   }
   if (opened_once_) ++reopens_;

@@ -11,10 +11,10 @@ std::int64_t ClockSync::Unwrap(std::uint32_t tick) {
   return wraps_ * (std::int64_t{1} << 32) + tick;
 }
 
-void ClockSync::AddPulse(std::int64_t tick, GpsNs t_gps) {
+void ClockSync::AddPulse(std::int64_t tick, GpsTime t_gps) {
   if (have_pulse_ && t_gps > pulse_t_ && tick > pulse_tick_) {
-    const double measured =
-        static_cast<double>(tick - pulse_tick_) / (static_cast<double>(t_gps - pulse_t_) * 1e-9);
+    const double measured = static_cast<double>(tick - pulse_tick_) /
+                            (static_cast<double>((t_gps - pulse_t_).count()) * 1e-9);
     // reject implausible rates (missed pulses are fine: the interval is measured in GPS time)
     if (std::abs(measured / nominal_hz_ - 1.0) < 1e-3) {
       const double w = pulses_ < 3 ? 1.0 : 0.2;
@@ -27,10 +27,10 @@ void ClockSync::AddPulse(std::int64_t tick, GpsNs t_gps) {
   ++pulses_;
 }
 
-std::optional<GpsNs> ClockSync::ToGps(std::int64_t tick) const {
+std::optional<GpsTime> ClockSync::ToGps(std::int64_t tick) const {
   if (!have_pulse_) return std::nullopt;
   return pulse_t_ +
-         static_cast<GpsNs>(std::llround(static_cast<double>(tick - pulse_tick_) / rate_hz_ * 1e9));
+         Nanoseconds{std::llround(static_cast<double>(tick - pulse_tick_) / rate_hz_ * 1e9)};
 }
 
 void ClockSync::Reset() {

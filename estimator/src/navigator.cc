@@ -7,9 +7,11 @@
 namespace hil::estimator {
 
 namespace {
-constexpr double kNsToS = 1e-9;
 
-ImuSample ScaledPart(const ImuSample& s, GpsNs t_end, double fraction) {
+/// An IMU interval's length in whole nanoseconds (truncated).
+Nanoseconds IntervalNs(double dt_s) { return Nanoseconds{static_cast<std::int64_t>(dt_s * 1e9)}; }
+
+ImuSample ScaledPart(const ImuSample& s, GpsTime t_end, double fraction) {
   ImuSample p = s;
   p.t = t_end;
   p.dt_s = s.dt_s * fraction;
@@ -66,14 +68,13 @@ void Navigator::Push(const ImuSample& s) {
     ++stats_.imu_out_of_order;
     return;
   }
-  if (have_imu_ && s.t - newest_imu_t_ > static_cast<GpsNs>(1.5 * s.dt_s * 1e9)) ++stats_.imu_gaps;
-  if (have_imu_ && aligned_ &&
-      static_cast<double>(s.t - newest_imu_t_) * kNsToS > params_.imu_timeout_s) {
+  if (have_imu_ && s.t - newest_imu_t_ > IntervalNs(1.5 * s.dt_s)) ++stats_.imu_gaps;
+  if (have_imu_ && aligned_ && s.t - newest_imu_t_ > params_.imu_timeout) {
     // back after a loss: nothing can carry the filter through the gap. Drop what is buffered from
     // before it, restart the filter just before this sample and its position at the next fix.
     while (!imu_.empty()) imu_.PopFront();
     while (!gnss_.empty() && gnss_.front().t < s.t) gnss_.PopFront();
-    filter_t_ = std::max(filter_t_, s.t - static_cast<GpsNs>(s.dt_s * 1e9));
+    filter_t_ = std::max(filter_t_, s.t - IntervalNs(s.dt_s));
     restart_at_next_fix_ = true;
   }
   ++stats_.imu_samples;
@@ -97,10 +98,12 @@ void Navigator::Push(const GnssSample& g) {
     GnssOnlyFix(g);
     ++fixes_since_imu_;
   }  // the fallback solution while the IMU is lost
-  if (g.t > newest_gnss_t_) {
+  if (!newest_gnss_t_ || g.t > *newest_gnss_t_) {
     // the fix period, for the wait on the next epoch (clamped to 20 Hz .. 0.5 Hz)
-    if (newest_gnss_t_ >= 0)
-      gnss_period_ns_ = std::clamp<GpsNs>(g.t - newest_gnss_t_, 50'000'000, 2'000'000'000);
+    if (newest_gnss_t_) {
+      gnss_period_ = std::clamp<Nanoseconds>(g.t - *newest_gnss_t_, std::chrono::milliseconds(50),
+                                             std::chrono::seconds(2));
+    }
     newest_gnss_t_ = g.t;
   }
   const bool lost = ImuLost();
@@ -133,12 +136,11 @@ void Navigator::Push(const HeadingSample& h) {
 
 void Navigator::Update() {
   if (!UsesImu()) return;
-  GpsNs horizon_t = newest_imu_t_ - params_.fusion_horizon_ns;
-  if (params_.gnss_max_latency_ns > params_.fusion_horizon_ns && gnss_period_ns_ > 0) {
+  GpsTime horizon_t = newest_imu_t_ - params_.fusion_horizon;
+  if (params_.gnss_max_latency > params_.fusion_horizon && gnss_period_ > Nanoseconds{0}) {
     // hold at the next expected GNSS epoch until it arrives or the wait runs out
-    const GpsNs expected_t = newest_gnss_t_ + gnss_period_ns_;
-    horizon_t =
-        std::min(horizon_t, std::max(expected_t, newest_imu_t_ - params_.gnss_max_latency_ns));
+    const GpsTime expected_t = *newest_gnss_t_ + gnss_period_;
+    horizon_t = std::min(horizon_t, std::max(expected_t, newest_imu_t_ - params_.gnss_max_latency));
   }
   while (!imu_.empty() && imu_.front().t <= horizon_t) {
     ImuSample s = imu_.front();
@@ -150,8 +152,9 @@ void Navigator::Update() {
       const GnssSample g = gnss_.front();
       gnss_.PopFront();
       if (aligned_ && !consumed && g.t > filter_t_) {
-        const GpsNs start = std::max(s.t - static_cast<GpsNs>(s.dt_s * 1e9), filter_t_);
-        const double frac = static_cast<double>(g.t - start) / static_cast<double>(s.t - start);
+        const GpsTime start = std::max(s.t - IntervalNs(s.dt_s), filter_t_);
+        const double frac =
+            static_cast<double>((g.t - start).count()) / static_cast<double>((s.t - start).count());
         if (frac >= 1.0 - 1e-9) {
           ProcessImu(s);
           consumed = true;
@@ -189,12 +192,12 @@ void Navigator::ProcessImu(const ImuSample& s) {
   filter_t_ = s.t;
   if (params_.mode == NavMode::kEkf &&
       (params_.ekf.nhc_std_mps > 0 || params_.ekf.speed_rw_mps_rthz > 0) &&
-      static_cast<double>(filter_t_ - last_nhc_t_) * kNsToS >= params_.nhc_period_s - 1e-6) {
+      filter_t_ - last_nhc_t_ >= params_.nhc_period - std::chrono::microseconds(1)) {
     ekf_.UpdateNonHolonomic();
     ekf_.UpdateSpeedModel();
     last_nhc_t_ = filter_t_;
   }
-  if (static_cast<double>(filter_t_ - last_gnss_fused_t_) * kNsToS > params_.outage_flag_s) {
+  if (filter_t_ - last_gnss_fused_t_ > params_.outage_flag_after) {
     status_ |= kStatusDeadReckoning;
   }
 }
@@ -271,7 +274,7 @@ void Navigator::ProcessGnss(const GnssSample& g) {
     ++stats_.nis_count;
     stats_.mean_nis_pos += (rp.nis - stats_.mean_nis_pos) / static_cast<double>(stats_.nis_count);
     last_gnss_fused_t_ = g.t;
-    first_rejected_t_ = -1;
+    first_rejected_t_.reset();
     status_ =
         (status_ | kStatusGnssFused) & ~(kStatusGnssRejected | kStatusDeadReckoning | kStatusReset);
     if (g.has_velocity && params_.use_gnss_velocity) {
@@ -282,10 +285,9 @@ void Navigator::ProcessGnss(const GnssSample& g) {
   }
   ++stats_.gnss_rejected;
   status_ = (status_ | kStatusGnssRejected) & ~kStatusGnssFused;
-  if (first_rejected_t_ < 0) first_rejected_t_ = g.t;
+  if (!first_rejected_t_) first_rejected_t_ = g.t;
   // recovery: a long run of rejections means the filter, not the receiver, is wrong
-  if (static_cast<double>(g.t - first_rejected_t_) * kNsToS >= params_.reset_after_rejected_s)
-    ResetToFix(g, p);
+  if (g.t - *first_rejected_t_ >= params_.reset_after_rejected) ResetToFix(g, p);
 }
 
 void Navigator::ResetToFix(const GnssSample& g, const Eigen::Vector3d& p_antenna_N_m) {
@@ -294,7 +296,7 @@ void Navigator::ResetToFix(const GnssSample& g, const Eigen::Vector3d& p_antenna
                              g.pos_std_enu_m.maxCoeff(), vel_std);
   ekf_.ResetSetSpeed(vel_std);
   ++stats_.gnss_resets;
-  first_rejected_t_ = -1;
+  first_rejected_t_.reset();
   last_gnss_fused_t_ = g.t;
   status_ |= kStatusReset;
 }
@@ -333,7 +335,7 @@ void Navigator::MultiGnssFix(const GnssSample& g) {
   for (int i = 0; i < n; ++i) {
     bool found = false;
     for (std::size_t k = 0; k < multi_[i].size() && !found; ++k) {
-      if (std::llabs(multi_[i][k].t - g.t) <= 1'000'000) {
+      if (std::chrono::abs(multi_[i][k].t - g.t) <= std::chrono::milliseconds(1)) {
         epoch[i] = multi_[i][k];
         found = true;
       }
@@ -341,7 +343,8 @@ void Navigator::MultiGnssFix(const GnssSample& g) {
     if (!found) return;
   }
   for (int i = 0; i < n; ++i) {
-    while (!multi_[i].empty() && multi_[i].front().t <= g.t + 1'000'000) multi_[i].PopFront();
+    while (!multi_[i].empty() && multi_[i].front().t <= g.t + std::chrono::milliseconds(1))
+      multi_[i].PopFront();
   }
   // centroid of the antennas minus the body-frame centroid; heading by a 2-D Procrustes fit
   const double w = 1.0 / n;
@@ -373,9 +376,8 @@ void Navigator::MultiGnssFix(const GnssSample& g) {
   direct_.status = kStatusGnssFused;
 }
 
-bool Navigator::UsesImu() const {
-  return params_.mode == NavMode::kEkf || params_.mode == NavMode::kImuOnly ||
-         params_.mode == NavMode::kPlanar2d;
+bool UsesImu(NavMode m) {
+  return m == NavMode::kEkf || m == NavMode::kImuOnly || m == NavMode::kPlanar2d;
 }
 
 // not in imu_only: a dead-reckoning comparison never shows a fix
@@ -385,9 +387,9 @@ bool Navigator::FallsBackToFixes() const {
 
 bool Navigator::ImuLost() const {
   constexpr int kFixesBeforeImuLost = 4;
-  return FallsBackToFixes() && have_imu_ && aligned_ && newest_gnss_t_ >= 0 &&
+  return FallsBackToFixes() && have_imu_ && aligned_ && newest_gnss_t_ &&
          fixes_since_imu_ >= kFixesBeforeImuLost &&
-         static_cast<double>(newest_gnss_t_ - newest_imu_t_) * kNsToS > params_.imu_timeout_s;
+         *newest_gnss_t_ - newest_imu_t_ > params_.imu_timeout;
 }
 
 NavOutput Navigator::Output() const {

@@ -51,7 +51,7 @@ BENCHMARK(BM_GnssPositionVelocityUpdate);
 
 void BM_Seed004WholeRun(benchmark::State& state) {
   // straight line at 1 m/s heading east, level, with noise: 180 000 IMU and 18 000 GNSS samples
-  constexpr GpsNs t0 = 1'400'000'000LL * 1'000'000'000LL;
+  constexpr GpsTime t0 = GpsTimeFromNs(1'400'000'000LL * 1'000'000'000LL);
   std::mt19937_64 rng(7);
   std::normal_distribution<double> n(0, 1);
   std::vector<ImuSample> imu;
@@ -59,7 +59,7 @@ void BM_Seed004WholeRun(benchmark::State& state) {
   const LocalTangentFrame frame({31.0, 121.4, 10.0});
   for (int k = 1; k <= 180000; ++k) {
     ImuSample s;
-    s.t = t0 + k * 10'000'000LL;
+    s.t = t0 + Nanoseconds{k * 10'000'000LL};
     s.dt_s = 0.01;
     s.delta_angle_B_rad = Eigen::Vector3d(n(rng), n(rng), n(rng)) * 1e-6;
     s.delta_velocity_B_mps = Eigen::Vector3d(n(rng) * 1e-4, n(rng) * 1e-4, 9.7940 * 0.01);
@@ -84,7 +84,7 @@ void BM_Seed004WholeRun(benchmark::State& state) {
     std::size_t gi = 0;
     for (const ImuSample& s : imu) {
       nav.Push(s);
-      while (gi < gnss.size() && gnss[gi].t + 50'000'000 <= s.t) nav.Push(gnss[gi++]);
+      while (gi < gnss.size() && gnss[gi].t + Nanoseconds{50'000'000} <= s.t) nav.Push(gnss[gi++]);
       nav.Update();
     }
     benchmark::DoNotOptimize(nav.Output());

@@ -101,8 +101,8 @@ TEST(NavdEkfE2eTest, FusesMcuImuAndNmeaIntoEkfSolutions) {
       fix.valid = true;
       fix.position = frame.ToLla(Eigen::Vector3d(k * 0.01, 0, 0));
       fix.v_N_mps = Eigen::Vector3d(1, 0, 0);
-      gnss_bytes +=
-          outputs::FormatNmea0183(fix, UnixNsFromGpsNs(week_ns + tow0_ns + k * 10'000'000LL, 18));
+      gnss_bytes += outputs::FormatNmea0183(
+          fix, UnixNsFromGpsTime(GpsTimeFromNs(week_ns + tow0_ns + k * 10'000'000LL), 18));
     }
     std::string payload;
     for (int a : {0, 0, 8000})

@@ -94,7 +94,7 @@ TEST(NavigatorScenarioTest, Seed004OutagesStayUnderElevenCentimetres) {
   p.ekf.gnss_error_tau_s = 30.0;
   p.ekf.gnss_error_std_m = 0.005;
   p.ekf.nhc_std_mps = 0.02;
-  p.fusion_horizon_ns = 150'000'000;
+  p.fusion_horizon = std::chrono::milliseconds(150);
   Navigator nav(p);
   SensorSimulator sim(t, MidGradeImu(), 100.0, RtkGnss(), lever, nav, 4);
   // WHEN it drives 1800 s with outages at 1400–1410, 1450–1460, 1480–1490 and 1500–1510 s

@@ -9,7 +9,9 @@
 namespace hil::estimator {
 namespace {
 
-constexpr GpsNs kT0 = 1'400'000'000LL * 1'000'000'000LL;
+using namespace std::chrono_literals;
+
+constexpr GpsTime kT0 = GpsTimeFromNs(1'400'000'000LL * 1'000'000'000LL);
 
 TEST(NavigatorTest, ThreeReceiversGiveCentreAndHeading) {
   // GIVEN seed 000's three antennas on a 3 m circle, 120° apart
@@ -51,7 +53,7 @@ TEST(NavigatorTest, CountsOutOfOrderImuAndRejectsBadInput) {
   nav.Push(s);
   nav.Push(s);  // same time again
   s.dt_s = std::nan("");
-  s.t += 10'000'000;
+  s.t += 10ms;
   nav.Push(s);
   GnssSample g;
   g.position.lat_deg = 123.0;  // impossible latitude
@@ -65,28 +67,28 @@ TEST(NavigatorTest, CountsOutOfOrderImuAndRejectsBadInput) {
 
 // An aligned EKF navigator driven at 100 Hz, level and still but for a GNSS course of 1 m/s north.
 struct WaitRig {
-  explicit WaitRig(std::int64_t max_latency_ns) : nav(Params(max_latency_ns)) {}
-  static NavigatorParams Params(std::int64_t max_latency_ns) {
+  explicit WaitRig(Nanoseconds max_latency) : nav(Params(max_latency)) {}
+  static NavigatorParams Params(Nanoseconds max_latency) {
     NavigatorParams p;
     p.mode = NavMode::kEkf;
-    p.fusion_horizon_ns = 200'000'000;
-    p.gnss_max_latency_ns = max_latency_ns;
+    p.fusion_horizon = 200ms;
+    p.gnss_max_latency = max_latency;
     return p;
   }
-  void ImuUntil(GpsNs t_end) {
-    for (; t_imu < t_end; t_imu += 10'000'000) {
+  void ImuUntil(GpsTime t_end) {
+    for (; t_imu < t_end; t_imu += 10ms) {
       ImuSample s;
-      s.t = t_imu + 10'000'000;
+      s.t = t_imu + 10ms;
       s.dt_s = 0.01;
       s.delta_velocity_B_mps = Eigen::Vector3d(0, 0, 9.80) * 0.01;
       nav.Push(s);
       nav.Update();
     }
   }
-  void Fix(GpsNs t) {
+  void Fix(GpsTime t) {
     GnssSample g;
     g.t = t;
-    g.position = frame.ToLla(Eigen::Vector3d(0, 1e-9 * static_cast<double>(t - kT0), 0));
+    g.position = frame.ToLla(Eigen::Vector3d(0, 1e-9 * static_cast<double>((t - kT0).count()), 0));
     g.pos_std_enu_m.setConstant(0.1);
     g.has_velocity = true;
     g.vel_enu_mps = Eigen::Vector3d(0, 1, 0);
@@ -94,41 +96,40 @@ struct WaitRig {
   }
   Navigator nav;
   LocalTangentFrame frame{Lla{45.0, 10.0, 100.0}};
-  GpsNs t_imu = kT0;
+  GpsTime t_imu = kT0;
 };
 
 TEST(NavigatorTest, WaitsForADueFixUpToTheMaximumLatency) {
   for (const bool wait : {true, false}) {
     // GIVEN an aligned filter with fixes at 1 Hz, fused on time
-    WaitRig rig(wait ? 2'500'000'000 : 0);
+    WaitRig rig(wait ? 2500ms : 0ms);
     for (int k = 0; k < 3; ++k) {
-      rig.ImuUntil(kT0 + k * 1'000'000'000LL + 100'000'000);
-      rig.Fix(kT0 + k * 1'000'000'000LL);
+      rig.ImuUntil(kT0 + k * 1s + 100ms);
+      rig.Fix(kT0 + k * 1s);
     }
     ASSERT_TRUE(rig.nav.aligned());
     ASSERT_EQ(rig.nav.stats().gnss_late, 0u);
     // WHEN the next fix (due at 3 s) reaches the host 1.5 s after its epoch (a slow link, a busy
     // host)
-    rig.ImuUntil(kT0 + 4'500'000'000LL);
-    rig.Fix(kT0 + 3'000'000'000LL);
-    rig.ImuUntil(kT0 + 4'600'000'000LL);
+    rig.ImuUntil(kT0 + 4500ms);
+    rig.Fix(kT0 + 3s);
+    rig.ImuUntil(kT0 + 4600ms);
     // THEN with a 2.5 s wait the filter held at the due epoch and fuses it; with no wait it is late
     EXPECT_EQ(rig.nav.stats().gnss_late, wait ? 0u : 1u);
     if (wait) {
-      EXPECT_GE(rig.nav.filter_time(), kT0 + 3'000'000'000LL);
+      EXPECT_GE(rig.nav.filter_time(), kT0 + 3s);
     }
     // AND the output always reports the newest IMU time (the output predictor)
-    EXPECT_EQ(rig.nav.Output().t, kT0 + 4'600'000'000LL);
+    EXPECT_EQ(rig.nav.Output().t, kT0 + 4600ms);
   }
   // AND without fixes (an outage) the waiting filter runs the maximum latency behind, no further
-  WaitRig rig(2'500'000'000);
+  WaitRig rig(2500ms);
   for (int k = 0; k < 3; ++k) {
-    rig.ImuUntil(kT0 + k * 1'000'000'000LL + 100'000'000);
-    rig.Fix(kT0 + k * 1'000'000'000LL);
+    rig.ImuUntil(kT0 + k * 1s + 100ms);
+    rig.Fix(kT0 + k * 1s);
   }
-  rig.ImuUntil(kT0 + 20'000'000'000LL);
-  EXPECT_NEAR(static_cast<double>(kT0 + 20'000'000'000LL - rig.nav.filter_time()) * 1e-9, 2.5,
-              0.011);
+  rig.ImuUntil(kT0 + 20s);
+  EXPECT_NEAR(static_cast<double>((kT0 + 20s - rig.nav.filter_time()).count()) * 1e-9, 2.5, 0.011);
 }
 
 TEST(NavigatorTest, FallsBackToTheFixesWhileTheImuIsSilentAndRestartsAfter) {
@@ -139,17 +140,17 @@ TEST(NavigatorTest, FallsBackToTheFixesWhileTheImuIsSilentAndRestartsAfter) {
   const Lla origin{48.0, 11.0, 500.0};
   const LocalTangentFrame frame(origin);
   const double g0 = NormalGravity(origin.lat_deg, origin.height_m);
-  const auto fix = [&](GpsNs t) {
+  const auto fix = [&](GpsTime t) {
     GnssSample g;
     g.t = t;
-    g.position = frame.ToLla(Eigen::Vector3d(static_cast<double>(t - kT0) * 1e-9, 0, 0));
+    g.position = frame.ToLla(Eigen::Vector3d(static_cast<double>((t - kT0).count()) * 1e-9, 0, 0));
     g.pos_std_enu_m = Eigen::Vector3d(0.3, 0.3, 0.6);
     g.has_velocity = true;
     g.vel_enu_mps = Eigen::Vector3d(1, 0, 0);
     g.vel_std_enu_mps = Eigen::Vector3d::Constant(0.05);
     nav.Push(g);
   };
-  const auto imu = [&](GpsNs t) {
+  const auto imu = [&](GpsTime t) {
     ImuSample s;
     s.t = t;
     s.dt_s = 0.01;
@@ -157,10 +158,10 @@ TEST(NavigatorTest, FallsBackToTheFixesWhileTheImuIsSilentAndRestartsAfter) {
     nav.Push(s);
     nav.Update();
   };
-  constexpr GpsNs kMs = 1'000'000;
-  for (GpsNs t = kT0 + 10 * kMs; t <= kT0 + 10'000 * kMs; t += 10 * kMs) {
+  constexpr Nanoseconds kMs = 1ms;
+  for (GpsTime t = kT0 + 10 * kMs; t <= kT0 + 10'000 * kMs; t += 10 * kMs) {
     imu(t);
-    if ((t - kT0) % (1000 * kMs) == 0) fix(t);
+    if ((t - kT0) % (1000 * kMs) == 0ns) fix(t);
   }
   ASSERT_TRUE(nav.aligned());
   EXPECT_FALSE(nav.ImuLost());
@@ -180,9 +181,9 @@ TEST(NavigatorTest, FallsBackToTheFixesWhileTheImuIsSilentAndRestartsAfter) {
   EXPECT_TRUE(nav.stats().imu_lost);
   // WHEN the IMU comes back: the filter restarts at the next fix and tracks the vehicle again
   const std::uint64_t resets = nav.stats().gnss_resets;
-  for (GpsNs t = kT0 + 16'010 * kMs; t <= kT0 + 22'000 * kMs; t += 10 * kMs) {
+  for (GpsTime t = kT0 + 16'010 * kMs; t <= kT0 + 22'000 * kMs; t += 10 * kMs) {
     imu(t);
-    if ((t - kT0) % (1000 * kMs) == 0) fix(t);
+    if ((t - kT0) % (1000 * kMs) == 0ns) fix(t);
   }
   EXPECT_FALSE(nav.ImuLost());
   EXPECT_EQ(nav.stats().gnss_resets, resets + 1);

@@ -15,7 +15,7 @@ constexpr double kMaxAbsNs = 4e18;  // ±126 years around the GPS epoch
 
 }  // namespace
 
-void ArrivalClock::AddReference(std::int64_t host_ns, GpsNs gps) {
+void ArrivalClock::AddReference(std::int64_t host_ns, GpsTime gps) {
   const bool ordered = references_ > 0 && host_ns > host_prev_ns_ && gps > gps_prev_;
   ++references_;
   auto restart = [&] {
@@ -27,8 +27,8 @@ void ArrivalClock::AddReference(std::int64_t host_ns, GpsNs gps) {
     if (references_ > 1) ++jumps_;
     restart();
   } else {
-    const double measured =
-        static_cast<double>(gps - gps_prev_) / static_cast<double>(host_ns - host_prev_ns_);
+    const double measured = static_cast<double>((gps - gps_prev_).count()) /
+                            static_cast<double>(host_ns - host_prev_ns_);
     if (!(measured > kMinRate && measured < kMaxRate)) {
       ++jumps_;
       restart();
@@ -38,16 +38,16 @@ void ArrivalClock::AddReference(std::int64_t host_ns, GpsNs gps) {
       gps_anchor_ = gps;
       ++since_restart_;
     } else {
-      const double residual_s = static_cast<double>(gps - *ToGps(host_ns)) * 1e-9;
+      const double residual_s = static_cast<double>((gps - *ToGps(host_ns)).count()) * 1e-9;
       if (std::abs(residual_s) > kJumpS) {
         ++jumps_;
         restart();
       } else {
         rate_ += kRateGain * (measured - rate_);
-        const GpsNs predicted = *ToGps(host_ns);
+        const GpsTime predicted = *ToGps(host_ns);
         gps_anchor_ =
             predicted +
-            static_cast<GpsNs>(std::llround(kOffsetGain * static_cast<double>(gps - predicted)));
+            Nanoseconds{std::llround(kOffsetGain * static_cast<double>((gps - predicted).count()))};
         host_anchor_ns_ = host_ns;
         ++since_restart_;
       }
@@ -57,14 +57,15 @@ void ArrivalClock::AddReference(std::int64_t host_ns, GpsNs gps) {
   gps_prev_ = gps;
 }
 
-std::optional<GpsNs> ArrivalClock::ToGps(std::int64_t host_ns) const {
+std::optional<GpsTime> ArrivalClock::ToGps(std::int64_t host_ns) const {
   if (since_restart_ < 2) return std::nullopt;  // the rate needs two references
   // the offset in double, the anchor kept in integer ns (a double holds 1e18 ns only to 128 ns)
   const double offset = static_cast<double>(host_ns - host_anchor_ns_) * rate_;
-  if (!(std::abs(offset) < kMaxAbsNs) || std::abs(static_cast<double>(gps_anchor_)) >= kMaxAbsNs) {
+  if (!(std::abs(offset) < kMaxAbsNs) ||
+      std::abs(static_cast<double>(ToNs(gps_anchor_))) >= kMaxAbsNs) {
     return std::nullopt;  // no plausible time (centuries away)
   }
-  return gps_anchor_ + static_cast<GpsNs>(std::llround(offset));
+  return gps_anchor_ + Nanoseconds{std::llround(offset)};
 }
 
 void ArrivalClock::Reset() {
@@ -73,7 +74,7 @@ void ArrivalClock::Reset() {
   since_restart_ = 0;
 }
 
-GpsNs PeriodicSampleTimer::Add(GpsNs measured) {
+GpsTime PeriodicSampleTimer::Add(GpsTime measured) {
   auto restart = [&] {
     have_ = true;
     t_ = measured;
@@ -81,7 +82,7 @@ GpsNs PeriodicSampleTimer::Add(GpsNs measured) {
     return measured;
   };
   if (!have_) return restart();
-  const std::int64_t d = measured - t_;
+  const std::int64_t d = (measured - t_).count();
   if (d <= 0 || d > max_gap_ns_) {
     ++restarts_;
     return restart();
@@ -100,7 +101,7 @@ GpsNs PeriodicSampleTimer::Add(GpsNs measured) {
   const double smoothed = predicted + kAlpha * residual;
   period_ns_ += kBeta * residual / n;
   const double whole = std::floor(smoothed);
-  t_ += static_cast<std::int64_t>(whole);
+  t_ += Nanoseconds{static_cast<std::int64_t>(whole)};
   frac_ns_ = smoothed - whole;
   return t_;
 }

@@ -2,12 +2,12 @@
 
 namespace hil::estimator::drivers {
 
-std::optional<ImuSample> ImuIncrements::Add(GpsNs t, const Eigen::Vector3d& w_B_radps,
+std::optional<ImuSample> ImuIncrements::Add(GpsTime t, const Eigen::Vector3d& w_B_radps,
                                             const Eigen::Vector3d& f_B_mps2,
                                             std::optional<double> dt_s) {
   std::optional<ImuSample> out;
   if (have_prev_) {
-    const double dt = dt_s ? *dt_s : static_cast<double>(t - prev_t_) * 1e-9;
+    const double dt = dt_s ? *dt_s : static_cast<double>((t - prev_t_).count()) * 1e-9;
     if (dt > 0 && dt <= max_gap_s_) {
       ImuSample s;
       s.t = t;

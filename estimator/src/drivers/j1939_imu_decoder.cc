@@ -198,8 +198,7 @@ void J1939ImuDecoder::OnPulse(const HilTimePulseMessage& p, std::int64_t rx_ns) 
   if (have_tick_ && p.tick < last_tick_ && last_tick_ - p.tick < 0x80000000u) {
     ++stats_.mcu_resets;
     mcu_clock_.Reset();
-    timer_.Reset();
-    increments_.Restart();
+    imu_.Reset();
   }
   have_tick_ = true;
   last_tick_ = p.tick;
@@ -208,8 +207,7 @@ void J1939ImuDecoder::OnPulse(const HilTimePulseMessage& p, std::int64_t rx_ns) 
     ++stats_.pulses_no_time;
     return;
   }
-  const GpsNs gps =
-      (static_cast<GpsNs>(p.gps_week_mod4096) * kSecondsPerWeek + p.gps_tow_s) * kNsPerSecond;
+  const GpsTime gps = GpsTimeFromWeek(p.gps_week_mod4096, std::int64_t{p.gps_tow_s} * kNsPerSecond);
   mcu_clock_.AddPulse(tick, gps);
   const double latency = latency_s_ >= 0 ? latency_s_ : config_.default_latency_s;
   arrival_.AddReference(rx_ns - static_cast<std::int64_t>(std::llround(latency * 1e9)), gps);
@@ -218,19 +216,9 @@ void J1939ImuDecoder::OnPulse(const HilTimePulseMessage& p, std::int64_t rx_ns) 
 std::optional<ImuSample> J1939ImuDecoder::OnPair(const AriMessage& ari, const AccsMessage& accs,
                                                  std::int64_t rx_ns) {
   const Eigen::Vector3d w = AngularRateFlu_radps(ari), f = SpecificForceFlu_mps2(accs);
-  const auto measured =
-      arrival_.ToGps(rx_ns - static_cast<std::int64_t>(std::llround(ari.latency_s * 1e9)));
-  if (!measured) {
-    ++stats_.imu_no_time;
-    increments_.Restart();
-    return std::nullopt;
-  }
-  const GpsNs t = timer_.Add(*measured);
-  const std::uint64_t gaps_before = increments_.gaps();
-  auto out = increments_.Add(t, w, f);
-  if (out) ++stats_.imu_out;
-  if (increments_.gaps() != gaps_before) ++stats_.imu_gap;
-  return out;
+  const std::int64_t sampled_ns =
+      rx_ns - static_cast<std::int64_t>(std::llround(ari.latency_s * 1e9));
+  return imu_.Add(arrival_, sampled_ns, w, f, stats_);
 }
 
 }  // namespace hil::estimator::drivers

@@ -15,8 +15,7 @@ std::optional<ImuSample> McuImuAdapter::Add(const McuFrame& f) {
       return std::nullopt;
     case McuFrame::Type::kTimePulse:
       if (f.time_valid) {
-        const GpsNs t = static_cast<GpsNs>(f.gps_week) * 604800LL * kNsPerSecond +
-                        static_cast<GpsNs>(f.tow_ms) * 1'000'000LL;
+        const GpsTime t = GpsTimeFromWeek(f.gps_week, std::int64_t{f.tow_ms} * 1'000'000LL);
         clock_.AddPulse(clock_.Unwrap(f.tick), t);
         ++stats_.pulses;
       }

@@ -237,8 +237,8 @@ std::optional<GnssSample> UbxEpochAssembler::Flush() {
       !have_sol || ((sol_.flags & 0x01) && (sol_.gps_fix == 2 || sol_.gps_fix == 3));
   if ((have_ & (kPos | kSol)) && week_ >= 0 && fix_ok) {
     GnssSample g;
-    g.t = static_cast<GpsNs>(week_) * 604800LL * kNsPerSecond +
-          static_cast<GpsNs>(itow_) * 1'000'000LL + (have_sol ? sol_.ftow_ns : 0);
+    g.t = GpsTimeFromWeek(
+        week_, static_cast<std::int64_t>(itow_) * 1'000'000LL + (have_sol ? sol_.ftow_ns : 0));
     FillPosition(g);
     FillVelocity(g);
     g.fix_dim = have_sol && sol_.gps_fix == 2 ? 2 : 3;

@@ -91,7 +91,6 @@ void Neo5mDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
   if (stopped_) return;
 
   const ubx::ReceiverSettings& cfg = session_.current();
-  const double t_s = ToSeconds(t);
   NavEpoch e;
   const std::int64_t unix_ns = config_.start_unix_ns + ToNs(t);
   e.gps = GpsFromUnixNs(unix_ns);
@@ -106,7 +105,7 @@ void Neo5mDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
   overload_ = false;
   bool data_gap = false;
   for (const GnssFault& f : config_.faults) {
-    if (t_s < f.start_s || t_s >= f.end_s) continue;
+    if (t < f.start || t >= f.end) continue;
     switch (f.kind) {
       case GnssFault::Kind::kOutage:
         cond.sky_blocked = true;

@@ -76,8 +76,8 @@ McuDevice::McuDevice(const McuConfig& config, std::uint64_t seed)
   gyro_.SetVibration(config_.vibration, false);
   for (const McuFault& f : config_.faults)
     if (f.kind == FaultKind::kReset) {
-      resets_.emplace_back(TimeFromSeconds(f.start_s),
-                           DurationFromSeconds(f.duration_s > 0 ? f.duration_s : config_.reboot_s));
+      resets_.emplace_back(
+          f.start, f.duration > Duration{0} ? f.duration : DurationFromSeconds(config_.reboot_s));
     }
   std::sort(resets_.begin(), resets_.end());
   jump_applied_.assign(config_.faults.size(), false);
@@ -163,8 +163,7 @@ void McuDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
 std::uint16_t McuDevice::NextSequence(Time t) {
   for (std::size_t i = 0; i < config_.faults.size(); ++i) {
     const McuFault& f = config_.faults[i];
-    if (f.kind == FaultKind::kSequenceJump && !jump_applied_[i] &&
-        TimeFromSeconds(f.start_s) <= t) {
+    if (f.kind == FaultKind::kSequenceJump && !jump_applied_[i] && f.start <= t) {
       sequence_ = static_cast<std::uint16_t>(sequence_ + f.amount);
       jump_applied_[i] = true;
     }
@@ -175,8 +174,7 @@ std::uint16_t McuDevice::NextSequence(Time t) {
 bool McuDevice::ActiveFault(FaultKind kind, Time t, const McuFault** which) const {
   for (const McuFault& f : config_.faults) {
     if (f.kind != kind) continue;
-    const Time a = TimeFromSeconds(f.start_s);
-    if (t >= a && t < a + DurationFromSeconds(f.duration_s)) {
+    if (t >= f.start && t < f.start + f.duration) {
       if (which) *which = &f;
       return true;
     }
@@ -187,8 +185,7 @@ bool McuDevice::ActiveFault(FaultKind kind, Time t, const McuFault** which) cons
 bool McuDevice::Stuck(const char* sensor, Time t) const {
   for (const McuFault& f : config_.faults) {
     if (f.kind != FaultKind::kStuckSensor || (f.sensor != "all" && f.sensor != sensor)) continue;
-    const Time a = TimeFromSeconds(f.start_s);
-    if (t >= a && t < a + DurationFromSeconds(f.duration_s)) return true;
+    if (t >= f.start && t < f.start + f.duration) return true;
   }
   return false;
 }
@@ -217,8 +214,8 @@ void McuDevice::OnImuSample(const TruthSample& truth, DeviceOutput& out) {
   const double t_s = ToSeconds(t);
   const double temp = config_.temperature_c + config_.temperature_rate_c_per_h * t_s / 3600.0;
   const IdealImu ideal = IdealImuFromTruth(truth, config_.mounting, config_.magnetic);
-  TriadCounts a = accel_.Sample(ideal.f_I_mps2, t_s, temp);
-  TriadCounts g = gyro_.Sample(ideal.w_I_radps, t_s, temp);
+  TriadCounts a = accel_.Sample(ideal.f_I_mps2, t, temp);
+  TriadCounts g = gyro_.Sample(ideal.w_I_radps, t, temp);
   if (have_accel_ && Stuck("accel", t)) a = last_accel_;
   if (have_gyro_ && Stuck("gyro", t)) g = last_gyro_;
   last_accel_ = a, last_gyro_ = g;
@@ -266,7 +263,7 @@ void McuDevice::OnMagSample(const TruthSample& truth) {
   const double t_s = ToSeconds(t);
   const double temp = config_.temperature_c + config_.temperature_rate_c_per_h * t_s / 3600.0;
   const IdealImu ideal = IdealImuFromTruth(truth, config_.mounting, config_.magnetic);
-  TriadCounts m = mag_.Sample(ideal.mag_I_uT, t_s, temp);
+  TriadCounts m = mag_.Sample(ideal.mag_I_uT, t, temp);
   if (have_mag_ && Stuck("mag", t)) m = last_mag_;
   last_mag_ = m;
   have_mag_ = true;

@@ -87,8 +87,7 @@ Eigen::Vector3d SensorTriad::VibrationAt(double t_s) const {
   return sum;
 }
 
-Eigen::Vector3d SensorTriad::Measure(const Eigen::Vector3d& true_I, double t_s,
-                                     double temperature_c) {
+Eigen::Vector3d SensorTriad::Measure(const Eigen::Vector3d& true_I, Time t, double temperature_c) {
   const TriadErrorSpec& e = spec_.error;
   // band-limit the motion (exact first-order response to a held input)
   if (first_ || e.bandwidth_hz <= 0) {
@@ -106,7 +105,7 @@ Eigen::Vector3d SensorTriad::Measure(const Eigen::Vector3d& true_I, double t_s,
     }
   }
   first_ = false;
-  Eigen::Vector3d value = scale_misalignment_ * (filtered_ + VibrationAt(t_s));
+  Eigen::Vector3d value = scale_misalignment_ * (filtered_ + VibrationAt(ToSeconds(t)));
   value += turn_on_bias_ + gm_bias_ + rw_bias_;
   value += Eigen::Vector3d::Constant(e.bias_temperature_coeff_per_c *
                                      (temperature_c - kReferenceTemperature_c));

@@ -40,11 +40,18 @@ class JsonLinesReader final : public EstimateReader {
   bool reads_json() const override { return true; }
   std::optional<EstimateRecord> JsonLine(const nlohmann::json& j, std::int64_t wall_ns) override {
     if (j.is_discarded() || !j.is_object()) return std::nullopt;
-    for (const char* k : {"tov_utc_s", "lat_deg", "lon_deg"}) {
+    for (const char* k : {"lat_deg", "lon_deg"}) {
       if (!j.contains(k) || !j[k].is_number()) return std::nullopt;
     }
     EstimateRecord r;
-    r.t_validity = FromUnixSeconds(j["tov_utc_s"].get<double>(), start_);
+    // navd's integer time of validity; other estimators may give only seconds (`tov_utc_s`)
+    if (j.contains("tov_unix_ns") && j["tov_unix_ns"].is_number_integer()) {
+      r.t_validity = TimeFromNs(j["tov_unix_ns"].get<std::int64_t>() - start_);
+    } else if (j.contains("tov_utc_s") && j["tov_utc_s"].is_number()) {
+      r.t_validity = FromUnixSeconds(j["tov_utc_s"].get<double>(), start_);
+    } else {
+      return std::nullopt;
+    }
     r.lat_deg = j["lat_deg"].get<double>();
     r.lon_deg = j["lon_deg"].get<double>();
     if (j.contains("height_m") && j["height_m"].is_number())

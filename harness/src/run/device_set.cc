@@ -31,8 +31,8 @@ void AddGnss(const Scenario& s, std::uint64_t seed, const std::string& dir, Devi
     // the scenario's global fault timeline: outages, data gaps and glitches reach every receiver
     for (const Fault& f : s.faults.faults) {
       gnss::GnssFault g;
-      g.start_s = ToSeconds(f.start);
-      g.end_s = ToSeconds(f.end);
+      g.start = f.start;
+      g.end = f.end;
       if (f.kind == FaultKind::kGnssOutage) {
         g.kind = gnss::GnssFault::Kind::kOutage;
       } else if (f.kind == FaultKind::kGnssDataGap) {
@@ -69,12 +69,12 @@ void AddMcu(const Scenario& s, std::uint64_t seed, const std::string& dir, Devic
   if (!s.mcu.enabled) return;
   mcu::McuConfig cfg = s.mcu.config;
   cfg.start_unix_ns = s.start_unix_ns;
-  // the scenario's global fault timeline: an mcu_reset keeps the MCU silent until its end_s
+  // the scenario's global fault timeline: an mcu_reset keeps the MCU silent until its end
   for (const Fault& f : s.faults.OfKind(FaultKind::kMcuReset)) {
     mcu::McuFault r;
     r.kind = mcu::FaultKind::kReset;
-    r.start_s = ToSeconds(f.start);
-    r.duration_s = ToSeconds(f.end - f.start);
+    r.start = f.start;
+    r.duration = f.end - f.start;
     cfg.faults.push_back(r);
   }
   auto dev = std::make_unique<mcu::McuDevice>(cfg, seed * kSeedStride + kMcuStream);

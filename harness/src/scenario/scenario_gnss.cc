@@ -42,9 +42,11 @@ gnss::GnssFault ReadFault(const YamlReader& f) {
            : kind == "step"        ? gnss::GnssFault::Kind::kStep
            : kind == "multipath"   ? gnss::GnssFault::Kind::kMultipath
                                    : gnss::GnssFault::Kind::kDataGap;
-  g.start_s = f.DoubleIn("start_s", 0, 0, 1e7);
-  g.end_s = f.DoubleIn("end_s", g.start_s, 0, 1e7);
-  if (g.end_s <= g.start_s) f.Fail("end_s", "must be after start_s");
+  const double start_s = f.DoubleIn("start_s", 0, 0, 1e7);
+  const double end_s = f.DoubleIn("end_s", start_s, 0, 1e7);
+  if (end_s <= start_s) f.Fail("end_s", "must be after start_s");
+  g.start = TimeFromSeconds(start_s);
+  g.end = TimeFromSeconds(end_s);
   g.elevation_deg = f.DoubleIn("elevation_deg", g.elevation_deg, 0, 90);
   const auto off = f.Doubles("offset_m", 3, {0, 0, 0});
   g.offset_N_m = Eigen::Vector3d(off[0], off[1], off[2]);

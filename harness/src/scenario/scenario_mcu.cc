@@ -45,15 +45,15 @@ void ReadFaults(const YamlReader& r, std::vector<mcu::McuFault>& faults) {
     mcu::McuFault f;
     f.kind = FaultKindOf(e.Choice(
         "kind", "", {"drop_frames", "sequence_jump", "corrupt_bytes", "stuck_sensor", "reset"}));
-    f.start_s = e.DoubleIn("start_s", 0, 0, 7 * 86400);
-    f.duration_s = e.DoubleIn("duration_s", 0, 0, 7 * 86400);
+    f.start = TimeFromSeconds(e.DoubleIn("start_s", 0, 0, 7 * 86400));
+    f.duration = DurationFromSeconds(e.DoubleIn("duration_s", 0, 0, 7 * 86400));
     f.probability = e.DoubleIn("probability", 1, 0, 1);
     f.amount = static_cast<int>(e.Int("amount", 1, 1, 65535));
     f.sensor = e.Choice("sensor", "all", {"accel", "gyro", "mag", "all"});
     const bool needs_duration = f.kind == mcu::FaultKind::kDropFrames ||
                                 f.kind == mcu::FaultKind::kCorruptBytes ||
                                 f.kind == mcu::FaultKind::kStuckSensor;
-    if (needs_duration && f.duration_s <= 0)
+    if (needs_duration && f.duration <= Duration{0})
       e.Fail("duration_s", "this fault needs a positive duration_s");
     faults.push_back(f);
   }

@@ -243,13 +243,14 @@ TEST(J1939ImuDecoderTest, GoldenLogToImuSamplesOnGpsTime) {
     // find the ARI of this sample: the one whose time − latency is nearest
     std::size_t k = 0;
     for (std::size_t j = 1; j < ari_unix_ns.size(); ++j) {
-      if (std::llabs(ari_unix_ns[j] - 1000000 + gps_minus_unix_ns - s.t) <
-          std::llabs(ari_unix_ns[k] - 1000000 + gps_minus_unix_ns - s.t))
+      if (std::llabs(ari_unix_ns[j] - 1000000 + gps_minus_unix_ns - ToNs(s.t)) <
+          std::llabs(ari_unix_ns[k] - 1000000 + gps_minus_unix_ns - ToNs(s.t)))
         k = j;
     }
     ASSERT_GT(k, 0u);
     const double err_us =
-        std::abs(static_cast<double>(ari_unix_ns[k] - 1000000 + gps_minus_unix_ns - s.t)) * 1e-3;
+        std::abs(static_cast<double>(ari_unix_ns[k] - 1000000 + gps_minus_unix_ns - ToNs(s.t))) *
+        1e-3;
     worst_t_us = std::max(worst_t_us, err_us);
     EXPECT_LT(err_us, 100.0);
     EXPECT_NEAR(s.dt_s, 0.1, 1e-3);
@@ -295,10 +296,10 @@ TEST(J1939ImuDecoderTest, FiltersSourceAddressAndCountsBadFrames) {
 TEST(J1939ImuDecoderTest, ScaledHostClockAndMcuReset) {
   const double host_per_gps = 0.5;  // the run goes twice as fast as real time
   const std::int64_t host0 = 123456789000LL;
-  const GpsNs gps0 = (1744LL * 604800 + 115200) * kNsPerSecond;
-  auto host_of = [&](GpsNs g) {
-    return host0 +
-           static_cast<std::int64_t>(std::llround(static_cast<double>(g - gps0) * host_per_gps));
+  const GpsTime gps0 = GpsTimeFromWeek(1744, 115200 * kNsPerSecond);
+  auto host_of = [&](GpsTime g) {
+    return host0 + static_cast<std::int64_t>(
+                       std::llround(static_cast<double>((g - gps0).count()) * host_per_gps));
   };
   auto ari = [](double yaw_dps) {
     const auto raw = static_cast<std::uint32_t>(std::lround((yaw_dps + 250) * 128));
@@ -316,11 +317,11 @@ TEST(J1939ImuDecoderTest, ScaledHostClockAndMcuReset) {
   std::vector<ImuSample> out;
   std::uint32_t tick = 5000000;
   for (int ms = 0; ms < 6000; ms += 10) {
-    const GpsNs t =
-        gps0 + ms * 1000000LL + 3000000;  // samples 3 ms after the whole millisecond grid
+    const GpsTime t = gps0 + Nanoseconds{ms * 1000000LL +
+                                         3000000};  // samples 3 ms after the whole millisecond grid
     if (ms % 1000 == 0) {
       if (ms == 3000) tick = 12345;  // MCU reset: the tick restarts
-      const GpsNs edge = gps0 + ms * 1000000LL;
+      const GpsTime edge = gps0 + Nanoseconds{ms * 1000000LL};
       const std::uint32_t tow = 115200 + static_cast<std::uint32_t>(ms / 1000);
       const std::uint64_t hi = tow | (1744ULL << 20);
       std::array<std::uint8_t, 8> tp{};
@@ -328,10 +329,10 @@ TEST(J1939ImuDecoderTest, ScaledHostClockAndMcuReset) {
         tp[static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(tick >> (8 * i));
         tp[static_cast<std::size_t>(4 + i)] = static_cast<std::uint8_t>(hi >> (8 * i));
       }
-      dec.Add(Frame(0x0CFF50E2, tp, host_of(edge + 1000000)));
+      dec.Add(Frame(0x0CFF50E2, tp, host_of(edge + Nanoseconds{1000000})));
       tick += 1000000;
     }
-    const std::int64_t rx = host_of(t + 1000000);
+    const std::int64_t rx = host_of(t + Nanoseconds{1000000});
     if (auto s = dec.Add(Frame(0x0CF02AE2, ari(10.0), rx))) out.push_back(*s);
     if (auto s = dec.Add(Frame(0x0CF02DE2, accs, rx + 50000))) out.push_back(*s);
   }
@@ -339,8 +340,8 @@ TEST(J1939ImuDecoderTest, ScaledHostClockAndMcuReset) {
   EXPECT_NEAR(dec.arrival_clock().rate(), 1.0 / host_per_gps, 1e-6);
   ASSERT_GT(out.size(), 450u);
   for (const ImuSample& s : out) {
-    const std::int64_t phase = (s.t - gps0 - 3000000) % 10000000;
-    EXPECT_LE(std::min<std::int64_t>(phase, 10000000 - phase), 1000) << s.t - gps0;
+    const std::int64_t phase = ((s.t - gps0).count() - 3000000) % 10000000;
+    EXPECT_LE(std::min<std::int64_t>(phase, 10000000 - phase), 1000) << (s.t - gps0).count();
     EXPECT_NEAR(s.dt_s, 0.01, 1e-6);
     EXPECT_NEAR(s.delta_angle_B_rad.z(), 10 * kDegToRad * 0.01, 1e-9);
     EXPECT_NEAR(s.delta_velocity_B_mps.z(), 9.81 * 0.01, 1e-9);
@@ -350,16 +351,16 @@ TEST(J1939ImuDecoderTest, ScaledHostClockAndMcuReset) {
 TEST(ArrivalClockTest, TracksAndRestartsOnAJump) {
   ArrivalClock c;
   EXPECT_FALSE(c.ToGps(0));
-  c.AddReference(1000 - 1000000000LL, 4 * kNsPerSecond);
+  c.AddReference(1000 - 1000000000LL, GpsTimeFromNs(4 * kNsPerSecond));
   EXPECT_FALSE(c.ToGps(1000 - 1000000000LL));  // one reference does not give the rate
   for (int k = 0; k < 5; ++k)
-    c.AddReference(1000 + k * 1000000000LL, 5 * kNsPerSecond + k * kNsPerSecond);
-  EXPECT_EQ(*c.ToGps(1000 + 4500000000LL), 9500000000LL);
-  c.AddReference(1000 + 5000000000LL, 20 * kNsPerSecond);  // GPS time jumps by 14 s
+    c.AddReference(1000 + k * 1000000000LL, GpsTimeFromNs(5 * kNsPerSecond + k * kNsPerSecond));
+  EXPECT_EQ(*c.ToGps(1000 + 4500000000LL), GpsTimeFromNs(9500000000LL));
+  c.AddReference(1000 + 5000000000LL, GpsTimeFromNs(20 * kNsPerSecond));  // GPS time jumps by 14 s
   EXPECT_EQ(c.jumps(), 1u);
   EXPECT_FALSE(c.ToGps(1000 + 5000000000LL));  // restarted: the rate is measured again
-  c.AddReference(1000 + 6000000000LL, 21 * kNsPerSecond);
-  EXPECT_EQ(*c.ToGps(1000 + 6500000000LL), 21500000000LL);
+  c.AddReference(1000 + 6000000000LL, GpsTimeFromNs(21 * kNsPerSecond));
+  EXPECT_EQ(*c.ToGps(1000 + 6500000000LL), GpsTimeFromNs(21500000000LL));
 }
 
 TEST(PeriodicSampleTimerTest, SmoothsJitterAndBridgesAMissedSample) {
@@ -370,8 +371,8 @@ TEST(PeriodicSampleTimerTest, SmoothsJitterAndBridgesAMissedSample) {
     if (k == 200) continue;  // a lost sample
     state = state * 1664525u + 1013904223u;
     const std::int64_t jitter = static_cast<std::int64_t>(state % 400000) - 200000;  // ±200 µs
-    const GpsNs t = timer.Add(k * 10000000LL + jitter);
-    if (k > 100) worst = std::max(worst, std::abs(static_cast<double>(t - k * 10000000LL)));
+    const GpsTime t = timer.Add(GpsTimeFromNs(k * 10000000LL + jitter));
+    if (k > 100) worst = std::max(worst, std::abs(static_cast<double>(ToNs(t) - k * 10000000LL)));
   }
   EXPECT_LT(worst, 120000.0);  // smoothed well below the ±200 µs jitter
   EXPECT_NEAR(timer.period_ns(), 1e7, 2e3);

@@ -112,7 +112,7 @@ TEST(McuImuAdapterTest, MapsTicksOntoGpsTimeWithCrystalOffset) {
   McuImuAdapter a;
   a.Add(Status(0.01, 0.001));
   std::vector<ImuSample> out;
-  const GpsNs t0 = 1744LL * 604800LL * kNsPerSecond;
+  const GpsTime t0 = GpsTimeFromWeek(1744, 0);
   for (int k = 0; k <= 300; ++k) {  // 3 s at 100 Hz, plus a tick wrap in the middle
     const double t_s = k * 0.01;
     const auto tick =
@@ -138,7 +138,7 @@ TEST(McuImuAdapterTest, MapsTicksOntoGpsTimeWithCrystalOffset) {
   ASSERT_GT(out.size(), 250u);
   EXPECT_NEAR(a.clock().offset_ppm(), 50.0, 0.5);
   const ImuSample& last = out.back();
-  EXPECT_NEAR(static_cast<double>(last.t - t0) * 1e-9, 3.0, 1e-6);
+  EXPECT_NEAR(static_cast<double>((last.t - t0).count()) * 1e-9, 3.0, 1e-6);
   // (the ticks are integers: one tick of quantisation, 1 µs)
   EXPECT_NEAR(last.dt_s, 0.01, 1.1e-6);
   EXPECT_NEAR(last.delta_angle_B_rad.z(), 0.1 * last.dt_s, 1e-9);  // scales are f32 on the wire

@@ -153,22 +153,22 @@ namespace {
 TEST(RazorImuAdapterTest, StampsLinesThroughGnssArrivals) {
   RazorImuAdapter adapter;
   const std::int64_t host0 = 5000000000LL;
-  const GpsNs gps0 = 1000LL * kNsPerSecond;
+  const GpsTime gps0 = GpsTimeFromNs(1000LL * kNsPerSecond);
   RazorTextSample line;
   line.accel_counts = {0, 0, 256};
   line.gyro_adc = {382, 382, 392};  // +10 ADC on z
   std::vector<ImuSample> out;
   for (int k = 0; k < 50; ++k) {
-    const GpsNs t = gps0 + k * 100000000LL + 30000000;  // lines 30 ms after the 0.1 s grid
+    const std::int64_t t_ns = k * 100000000LL + 30000000;  // lines 30 ms after the 0.1 s grid
     if (k % 10 == 0)
-      adapter.AddGnssArrival(host0 + (gps0 + k * 100000000LL - gps0) + 100000000,
-                             gps0 + k * 100000000LL, 0.1);
-    if (auto s = adapter.Add(line, host0 + (t - gps0))) out.push_back(*s);
+      adapter.AddGnssArrival(host0 + k * 100000000LL + 100000000,
+                             gps0 + Nanoseconds{k * 100000000LL}, 0.1);
+    if (auto s = adapter.Add(line, host0 + t_ns)) out.push_back(*s);
   }
   EXPECT_GT(adapter.stats().imu_no_time, 0u);  // before two fixes gave the map
   ASSERT_GT(out.size(), 25u);
   for (const ImuSample& s : out) {
-    EXPECT_EQ((s.t - gps0 - 30000000) % 100000000, 0);
+    EXPECT_EQ(((s.t - gps0).count() - 30000000) % 100000000, 0);
     EXPECT_NEAR(s.dt_s, 0.1, 1e-9);
     EXPECT_NEAR(s.delta_velocity_B_mps.z(), 9.80665 * 0.1, 1e-9);
     EXPECT_NEAR(s.delta_angle_B_rad.z(), 10 * (3.3 / 1024 / 3.33e-3) * std::numbers::pi / 180 * 0.1,

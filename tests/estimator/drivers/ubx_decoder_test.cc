@@ -78,7 +78,7 @@ TEST(UbxDecoderTest, AssemblesAnEpochFromMixedSplitStream) {
   EXPECT_EQ(d.stats().frames_ok, 3u);
   ASSERT_EQ(out.size(), 1u);
   const GnssSample& g = out[0];
-  EXPECT_EQ(g.t, 1744LL * 604800LL * kNsPerSecond + 86400LL * kNsPerSecond - 1500);
+  EXPECT_EQ(ToNs(g.t), 1744LL * 604800LL * kNsPerSecond + 86400LL * kNsPerSecond - 1500);
   EXPECT_NEAR(g.position.lat_deg, 35.4796096, 1e-9);
   EXPECT_NEAR(g.position.lon_deg, 50.5979765, 1e-9);
   EXPECT_NEAR(g.position.height_m, 1301.25, 1e-9);

@@ -82,7 +82,7 @@ Decoded DecodeUbx(const std::string& bytes) {
     if (m.cls == 0x01 && m.id == 0x06) sols.push_back(m);
     for (const GnssSample& g : epochs.Add(m)) {
       NavdEpoch e;
-      e.unix_ns = UnixNsFromGpsNs(g.t, epochs.leap_seconds());
+      e.unix_ns = UnixNsFromGpsTime(g.t, epochs.leap_seconds());
       e.mode = g.fix_dim;
       e.lat_deg = g.position.lat_deg, e.lon_deg = g.position.lon_deg;
       e.alt_hae_m = g.position.height_m;
@@ -97,9 +97,8 @@ Decoded DecodeUbx(const std::string& bytes) {
   dec.Feed(bytes);
   for (const auto& s : sols) {
     if (s.week < 0) continue;
-    const GpsNs t = static_cast<GpsNs>(s.week) * 604800LL * kNsPerSecond +
-                    static_cast<GpsNs>(s.itow_ms) * 1'000'000LL;
-    d.sol_by_unix_ns[UnixNsFromGpsNs(t, epochs.leap_seconds())] = s;
+    const GpsTime t = GpsTimeFromWeek(s.week, static_cast<std::int64_t>(s.itow_ms) * 1'000'000LL);
+    d.sol_by_unix_ns[UnixNsFromGpsTime(t, epochs.leap_seconds())] = s;
   }
   d.bad_checksums = dec.stats().bad_checksum;
   return d;

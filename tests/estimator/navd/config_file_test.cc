@@ -35,6 +35,16 @@ TEST(ConfigFileTest, ErrorsNameFileLineAndKey) {
   } catch (const ConfigError& e) {
     EXPECT_STREQ(e.what(), "navd.conf:3: [input] gnss_devcie: unknown key");
   }
+  // a rate navd cannot open its device at is an error (it used to fall back to 9600 silently)
+  try {
+    NavdConfig::FromFile(
+        ConfigFile::Parse("[input]\nimu_device = /x\nimu_baud = 14400\n", "n.conf"));
+    FAIL();
+  } catch (const ConfigError& e) {
+    EXPECT_STREQ(e.what(),
+                 "n.conf:3: [input] imu_baud: unsupported baud rate 14400 (supported: 1200, 2400, "
+                 "4800, 9600, 19200, 38400, 57600, 115200, 230400, 460800, 921600)");
+  }
   EXPECT_THROW(ConfigFile::Parse("[input\n", "x"), ConfigError);
   EXPECT_THROW(ConfigFile::Load("/nonexistent/navd.conf"), ConfigError);
 }
@@ -48,7 +58,7 @@ TEST(ConfigFileTest, ReferenceExampleIsValidAndComplete) {
   EXPECT_EQ(c.imu_device, "/dev/ttyIMU");
   EXPECT_DOUBLE_EQ(c.nav.ekf.lever_arm_B_m.x(), 0.84);
   EXPECT_DOUBLE_EQ(c.nav.ekf.gnss_error_tau_s, 4.5);
-  EXPECT_EQ(c.nav.fusion_horizon_ns, 300'000'000);
+  EXPECT_EQ(c.nav.fusion_horizon, Nanoseconds{300'000'000});
   EXPECT_TRUE(c.nmea_device.empty());
 }
 
@@ -134,7 +144,7 @@ TEST(ConfigFileTest, RtkNmeaAccuracyFloatModelAndGnssWait) {
   EXPECT_DOUBLE_EQ(c.nmea_accuracy().velocity_std_mps, 0.1);
   EXPECT_DOUBLE_EQ(c.nav.ekf.gnss_float_error_tau_s, 5.0);
   EXPECT_DOUBLE_EQ(c.nav.ekf.gnss_float_error_std_m, 0.2);
-  EXPECT_EQ(c.nav.gnss_max_latency_ns, 2'500'000'000);
+  EXPECT_EQ(c.nav.gnss_max_latency, Nanoseconds{2'500'000'000});
   // without RTK settings a quality-4 fix falls back to HDOP × UERE
   EXPECT_NEAR(NmeaHorizontalStd(NmeaAccuracy{}, kGgaQualityRtkFixed, 1.0), 2.5 / std::sqrt(2.0),
               1e-12);

@@ -113,7 +113,7 @@ void ExpectCentreAndHeading(int n) {
   const Eigen::Vector3d origin(-4.0, 9.0, 0.0);
   const double yaw = -2.1;
   const Eigen::AngleAxisd R(yaw, Eigen::Vector3d::UnitZ());
-  constexpr GpsNs kT = 1'400'000'000LL * 1'000'000'000LL;
+  constexpr GpsTime kT = GpsTimeFromNs(1'400'000'000LL * 1'000'000'000LL);
   for (int i = n - 1; i >= 0; --i) {
     EXPECT_FALSE(nav.Output().valid) << "no solution before every receiver has its fix";
     GnssSample g;
@@ -150,13 +150,13 @@ TEST(NavdGnssReceiversTest, NavigatorCombinesEpochsDeliveredInBurstsPerReceiver)
   }
   Navigator nav(p);
   const LocalTangentFrame frame({35.4796096, 50.5979765, 1300});
-  constexpr GpsNs kT = 1'400'000'000LL * 1'000'000'000LL;
-  std::vector<GpsNs> solutions;
+  constexpr GpsTime kT = GpsTimeFromNs(1'400'000'000LL * 1'000'000'000LL);
+  std::vector<GpsTime> solutions;
   for (int i = 0; i < 3; ++i) {
     for (int k = 0; k < 20; ++k) {
       if (i == 0 && k == 19) continue;
       GnssSample g;
-      g.t = kT + k * 1'000'000'000LL;
+      g.t = kT + k * std::chrono::seconds(1);
       g.antenna = i;
       g.position = frame.ToLla(Eigen::Vector3d(0.4 * k, 0, 0) + p.multi_antenna_B_m.col(i));
       nav.Push(g);
@@ -167,7 +167,7 @@ TEST(NavdGnssReceiversTest, NavigatorCombinesEpochsDeliveredInBurstsPerReceiver)
   // THEN every complete epoch gives one solution, in time order, at its own position
   ASSERT_EQ(solutions.size(), 19u);
   for (std::size_t k = 0; k < solutions.size(); ++k)
-    EXPECT_EQ(solutions[k], kT + static_cast<GpsNs>(k) * 1'000'000'000LL);
+    EXPECT_EQ(solutions[k], kT + static_cast<std::int64_t>(k) * std::chrono::seconds(1));
   EXPECT_NEAR(frame.ToLocal(nav.Output().position).x(), 0.4 * 18, 1e-6);
 }
 

@@ -22,12 +22,12 @@ McuFrame Imu(std::uint16_t seq, std::uint32_t tick) {
 
 GnssSample Fix(double t_s, int quality = 1) {
   GnssSample g;
-  g.t = static_cast<GpsNs>(t_s * 1e9);
+  g.t = GpsTimeFromNs(static_cast<std::int64_t>(t_s * 1e9));
   g.fix_quality = quality;
   return g;
 }
 
-GpsNs Ns(double t_s) { return static_cast<GpsNs>(t_s * 1e9); }
+GpsTime Ns(double t_s) { return GpsTimeFromNs(static_cast<std::int64_t>(t_s * 1e9)); }
 
 TEST(NavdHealthTest, DetectsAnMcuResetFromTheTickAndSequenceRestartingTogether) {
   NavdHealth h;

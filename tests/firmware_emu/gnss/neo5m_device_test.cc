@@ -141,7 +141,7 @@ TEST(Neo5mDeviceTest, CfgRstColdRestartsAcquisitionAndRepeatsTheBanner) {
 
 TEST(Neo5mDeviceTest, OutageDropsTheFixAndReacquires) {
   Neo5mConfig c = Config();
-  c.faults.push_back({GnssFault::Kind::kOutage, 10, 20});
+  c.faults.push_back({GnssFault::Kind::kOutage, TimeFromSeconds(10), TimeFromSeconds(20)});
   Harness h(c);
   h.RunUntil(30);
   for (const auto& f : h.fixes) {
@@ -161,7 +161,8 @@ TEST(Neo5mDeviceTest, OutageDropsTheFixAndReacquires) {
 
 TEST(Neo5mDeviceTest, ObstructionLeavesFewerSatellitesAndWorseDop) {
   Neo5mConfig c = Config();
-  c.faults.push_back({GnssFault::Kind::kObstruction, 10, 20, 40.0});
+  c.faults.push_back(
+      {GnssFault::Kind::kObstruction, TimeFromSeconds(10), TimeFromSeconds(20), 40.0});
   Harness h(c);
   h.RunUntil(15);
   const GnssFix& open = h.fixes[5];
@@ -174,7 +175,8 @@ TEST(Neo5mDeviceTest, ObstructionLeavesFewerSatellitesAndWorseDop) {
 
 TEST(Neo5mDeviceTest, StepGlitchMovesThePosition) {
   Neo5mConfig c = Config();
-  c.faults.push_back({GnssFault::Kind::kStep, 10, 20, 0, Eigen::Vector3d(0, 50, 0)});
+  c.faults.push_back({GnssFault::Kind::kStep, TimeFromSeconds(10), TimeFromSeconds(20), 0,
+                      Eigen::Vector3d(0, 50, 0)});
   Harness h(c);
   h.RunUntil(12);
   const double dlat_m = (h.fixes[11].lat_deg - h.fixes[9].lat_deg) * 111000.0;
@@ -183,7 +185,7 @@ TEST(Neo5mDeviceTest, StepGlitchMovesThePosition) {
 
 TEST(Neo5mDeviceTest, OverloadOutputsMoreThanTheBaudCarriesAndOnlyWhileActive) {
   Neo5mConfig c = Config();
-  c.faults.push_back({GnssFault::Kind::kOverload, 10, 20});
+  c.faults.push_back({GnssFault::Kind::kOverload, TimeFromSeconds(10), TimeFromSeconds(20)});
   Harness h(c);
   const auto per_epoch = [&](double from_s, double to_s) {
     std::size_t bytes = 0, epochs = 0;
@@ -377,7 +379,7 @@ TEST(Neo5mDeviceTest, RtkProfileIsTenHertzFloatThenFixed) {
 TEST(Neo5mDeviceTest, DataGapSilencesTheOutputButKeepsTheRtkFix) {
   Neo5mConfig c = Config();
   c.profile = "rtk";
-  c.faults.push_back({GnssFault::Kind::kDataGap, 40, 50});
+  c.faults.push_back({GnssFault::Kind::kDataGap, TimeFromSeconds(40), TimeFromSeconds(50)});
   Harness h(c);
   const auto out = h.RunUntil(60);
   std::vector<std::string> gga;

@@ -122,7 +122,8 @@ TEST(McuDeviceTest, JitterDelaysSamplesWithinItsBound) {
 
 TEST(McuDeviceTest, ResetRestartsTickAndSequence) {
   McuConfig c = BaseConfig();
-  c.faults.push_back({FaultKind::kReset, 2.05, 0, 1, 1, "all"});
+  c.faults.push_back(
+      {FaultKind::kReset, TimeFromSeconds(2.05), DurationFromSeconds(0), 1, 1, "all"});
   McuDevice dev(c, 4);
   const auto frames = Frames(test::RunDevice(dev, TimeFromSeconds(4.0)));
   std::size_t boot = 0;
@@ -146,7 +147,8 @@ TEST(McuDeviceTest, ResetRestartsTickAndSequence) {
 TEST(McuDeviceTest, AResetWithADurationStaysSilentThatLong) {
   // the scenario's global mcu_reset {start_s, end_s}: a brown-out of end - start seconds
   McuConfig c = BaseConfig();
-  c.faults.push_back({FaultKind::kReset, 2.05, 1.5, 1, 1, "all"});
+  c.faults.push_back(
+      {FaultKind::kReset, TimeFromSeconds(2.05), DurationFromSeconds(1.5), 1, 1, "all"});
   McuDevice dev(c, 4);
   const auto frames = Frames(test::RunDevice(dev, TimeFromSeconds(5.0)));
   std::size_t boot = 0;
@@ -167,7 +169,8 @@ TEST(McuDeviceTest, AResetWithADurationStaysSilentThatLong) {
 
 TEST(McuDeviceTest, DroppedFramesLeaveASequenceGap) {
   McuConfig c = BaseConfig();
-  c.faults.push_back({FaultKind::kDropFrames, 1.0, 0.5, 1.0, 1, "all"});
+  c.faults.push_back(
+      {FaultKind::kDropFrames, TimeFromSeconds(1.0), DurationFromSeconds(0.5), 1.0, 1, "all"});
   McuDevice dev(c, 5);
   const auto frames = Frames(test::RunDevice(dev, TimeFromSeconds(3.0)));
   std::uint64_t missing = 0;
@@ -180,7 +183,8 @@ TEST(McuDeviceTest, DroppedFramesLeaveASequenceGap) {
 
 TEST(McuDeviceTest, SequenceJumpAdvancesTheCounter) {
   McuConfig c = BaseConfig();
-  c.faults.push_back({FaultKind::kSequenceJump, 1.5, 0, 1, 100, "all"});
+  c.faults.push_back(
+      {FaultKind::kSequenceJump, TimeFromSeconds(1.5), DurationFromSeconds(0), 1, 100, "all"});
   McuDevice dev(c, 6);
   const auto frames = Frames(test::RunDevice(dev, TimeFromSeconds(3.0)));
   int jumps = 0;
@@ -197,7 +201,8 @@ TEST(McuDeviceTest, SequenceJumpAdvancesTheCounter) {
 
 TEST(McuDeviceTest, CorruptedBytesFailTheCrc) {
   McuConfig c = BaseConfig();
-  c.faults.push_back({FaultKind::kCorruptBytes, 1.0, 1.0, 1.0, 1, "all"});
+  c.faults.push_back(
+      {FaultKind::kCorruptBytes, TimeFromSeconds(1.0), DurationFromSeconds(1.0), 1.0, 1, "all"});
   McuDevice dev(c, 7);
   const auto frames = Frames(test::RunDevice(dev, TimeFromSeconds(3.0)));
   std::uint64_t bad = 0;
@@ -208,7 +213,8 @@ TEST(McuDeviceTest, CorruptedBytesFailTheCrc) {
 
 TEST(McuDeviceTest, StuckGyroRepeatsItsCounts) {
   McuConfig c = BaseConfig();
-  c.faults.push_back({FaultKind::kStuckSensor, 1.0, 1.0, 1.0, 1, "gyro"});
+  c.faults.push_back(
+      {FaultKind::kStuckSensor, TimeFromSeconds(1.0), DurationFromSeconds(1.0), 1.0, 1, "gyro"});
   McuDevice dev(c, 8);
   const auto imu =
       OfType(Frames(test::RunDevice(dev, TimeFromSeconds(3.0), 0.2)), MessageType::kImuSample);

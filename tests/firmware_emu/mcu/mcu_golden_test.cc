@@ -259,11 +259,16 @@ TEST(McuGoldenTest, RazorBinaryStream) {
 
 TEST(McuGoldenTest, RazorBinaryStreamWithFirmwareFaults) {
   McuConfig c = VectorConfig();
-  c.faults.push_back({FaultKind::kDropFrames, 1.0, 0.3, 1.0, 1, "all"});
-  c.faults.push_back({FaultKind::kSequenceJump, 2.0, 0, 1.0, 1000, "all"});
-  c.faults.push_back({FaultKind::kCorruptBytes, 2.5, 0.5, 0.5, 1, "all"});
-  c.faults.push_back({FaultKind::kStuckSensor, 3.0, 0.5, 1.0, 1, "accel"});
-  c.faults.push_back({FaultKind::kReset, 4.0, 0, 1.0, 1, "all"});
+  c.faults.push_back(
+      {FaultKind::kDropFrames, TimeFromSeconds(1.0), DurationFromSeconds(0.3), 1.0, 1, "all"});
+  c.faults.push_back(
+      {FaultKind::kSequenceJump, TimeFromSeconds(2.0), DurationFromSeconds(0), 1.0, 1000, "all"});
+  c.faults.push_back(
+      {FaultKind::kCorruptBytes, TimeFromSeconds(2.5), DurationFromSeconds(0.5), 0.5, 1, "all"});
+  c.faults.push_back(
+      {FaultKind::kStuckSensor, TimeFromSeconds(3.0), DurationFromSeconds(0.5), 1.0, 1, "accel"});
+  c.faults.push_back(
+      {FaultKind::kReset, TimeFromSeconds(4.0), DurationFromSeconds(0), 1.0, 1, "all"});
   const BinaryVector v = MakeBinary(c, 6.0);
   CheckOrWrite("vectors/mcu/razor_v13_faults.bin", v.bin);
   CheckOrWrite("vectors/mcu/razor_v13_faults.expected.csv", v.csv);

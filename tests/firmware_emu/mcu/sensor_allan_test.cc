@@ -24,7 +24,7 @@ std::vector<std::vector<double>> StaticRecord(const TriadSpec& spec, std::size_t
   SensorTriad triad(spec, kDt, seed);
   std::vector<std::vector<double>> axes(3, std::vector<double>(n));
   for (std::size_t k = 0; k < n; ++k) {
-    const double t = static_cast<double>(k) * kDt;
+    const Time t = TimeFromSeconds(static_cast<double>(k) * kDt);
     Eigen::Vector3d v;
     if (quantised) {
       const TriadCounts c = triad.Sample(Eigen::Vector3d::Zero(), t, 25.0);

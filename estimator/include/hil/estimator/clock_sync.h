@@ -20,9 +20,9 @@ class ClockSync {
   /// Unwraps a 32-bit tick against the previous one (ticks must be presented in stream order).
   std::int64_t Unwrap(std::uint32_t tick);
   /// A time pulse: the unwrapped tick latched at the edge and the GPS time of the edge.
-  void AddPulse(std::int64_t tick, GpsNs t_gps);
+  void AddPulse(std::int64_t tick, GpsTime t_gps);
   /// GPS time of an unwrapped tick; nullopt before the first pulse.
-  std::optional<GpsNs> ToGps(std::int64_t tick) const;
+  std::optional<GpsTime> ToGps(std::int64_t tick) const;
   /// Estimated tick rate (Hz) and its offset from nominal (ppm).
   double rate_hz() const { return rate_hz_; }
   double offset_ppm() const { return (rate_hz_ / nominal_hz_ - 1.0) * 1e6; }
@@ -37,7 +37,7 @@ class ClockSync {
   std::int64_t wraps_ = 0;
   bool have_pulse_ = false;
   std::int64_t pulse_tick_ = 0;
-  GpsNs pulse_t_ = 0;
+  GpsTime pulse_t_{};
   std::uint64_t pulses_ = 0;
 };
 

@@ -8,21 +8,21 @@
 ///         status(), stats()
 /// @endsystem
 ///
-/// Delay handling: a fusion horizon. The filter runs `fusion_horizon_ns` behind the newest IMU
+/// Delay handling: a fusion horizon. The filter runs `fusion_horizon` behind the newest IMU
 /// sample, so a GNSS fix that arrives up to that late is still fused at its own time of validity
 /// (the IMU interval that contains it is split there). Output() re-propagates the filter state
 /// through the IMU samples still waiting in the buffer (the output predictor). Samples older than
 /// the filter time are counted as late and dropped; IMU samples out of order are dropped.
-/// Waiting for GNSS: with `gnss_max_latency_ns` above the horizon, the filter also holds at the
+/// Waiting for GNSS: with `gnss_max_latency` above the horizon, the filter also holds at the
 /// time of the next expected GNSS epoch (last fix time + the measured fix period) until that fix
-/// arrives or the newest IMU sample is `gnss_max_latency_ns` past it. A slow serial link (NMEA at
+/// arrives or the newest IMU sample is `gnss_max_latency` past it. A slow serial link (NMEA at
 /// 9600 baud completes GGA ≈ 0.3 s after the epoch) or a host that reads its devices unevenly
-/// then costs no fixes, while the filter runs only `fusion_horizon_ns` behind when fixes are on
-/// time. During a GNSS outage the filter runs `gnss_max_latency_ns` behind (the output predictor
+/// then costs no fixes, while the filter runs only `fusion_horizon` behind when fixes are on
+/// time. During a GNSS outage the filter runs `gnss_max_latency` behind (the output predictor
 /// still reports the newest IMU time).
 /// Alignment: levelling from the mean specific force, heading from the GNSS course once the speed
 /// exceeds `align_min_speed_mps`, or from the compass. Fixed-size buffers, no allocation.
-/// IMU loss: when the IMU has been silent for `imu_timeout_s` of GNSS time while fixes keep coming
+/// IMU loss: when the IMU has been silent for `imu_timeout` of GNSS time while fixes keep coming
 /// (a dead sensor, a cut cable or bus) and at least 4 fixes arrived since the last IMU sample (a
 /// host that reads its links in bursts can see GNSS time run ahead for a moment without any loss),
 /// Output() is the newest fix itself, flagged kStatusImuLost,
@@ -56,6 +56,8 @@ enum class NavMode {
 const char* NavModeName(NavMode m);
 /// Mode from its name; nullopt when unknown.
 std::optional<NavMode> NavModeFromName(const char* name);
+/// Modes that run on IMU samples (ekf, planar2d, imu_only): the one predicate for hosts too.
+bool UsesImu(NavMode m);
 
 /// Receivers the multi-receiver mode combines at most.
 inline constexpr int kMaxGnssAntennas = 4;
@@ -64,14 +66,15 @@ struct NavigatorParams {
   NavMode mode = NavMode::kEkf;
   EkfParams ekf;
   PlanarFilterParams planar;
-  std::int64_t fusion_horizon_ns = 250'000'000;  ///< largest GNSS delay that is still fused in time
+  /// Largest GNSS delay that is still fused in time.
+  Nanoseconds fusion_horizon{250'000'000};
   /// Longest wait for an expected GNSS epoch (≤ the filter's IMU buffer; 0 or ≤ the horizon: off).
-  std::int64_t gnss_max_latency_ns = 0;
-  double align_min_speed_mps = 0.2;     ///< GNSS course trusted for heading above this
-  double nhc_period_s = 0.1;            ///< non-holonomic update period (if enabled)
-  double outage_flag_s = 1.5;           ///< dead-reckoning flag after this long without GNSS
-  double reset_after_rejected_s = 5.0;  ///< reset to GNSS after rejections for this long
-  double imu_timeout_s = 1.0;           ///< IMU modes: fall back to the fixes after this silence
+  Nanoseconds gnss_max_latency{0};
+  double align_min_speed_mps = 0.2;                 ///< GNSS course trusted for heading above this
+  Nanoseconds nhc_period{100'000'000};              ///< non-holonomic update period (if enabled)
+  Nanoseconds outage_flag_after{1'500'000'000};     ///< dead-reckoning flag after this without GNSS
+  Nanoseconds reset_after_rejected{5'000'000'000};  ///< reset to GNSS after rejections this long
+  Nanoseconds imu_timeout{1'000'000'000};  ///< IMU modes: fall back to the fixes after this
   bool use_gnss_velocity = true;
   /// Multi-receiver mode: antenna positions in the body frame, one column per receiver
   /// (GnssSample::antenna); the first `multi_antenna_count` columns are used (seed 000: three on a
@@ -95,7 +98,7 @@ struct NavigatorStats {
 
 /// The solution at one time of validity.
 struct NavOutput {
-  GpsNs t = 0;
+  GpsTime t{};
   bool valid = false;
   Lla position;  ///< body reference point
   Eigen::Vector3d p_N_m = Eigen::Vector3d::Zero();
@@ -133,8 +136,8 @@ class Navigator {
   const LocalTangentFrame& frame() const { return frame_; }
   const NavigatorParams& params() const { return params_; }
   /// Filter (delayed) time.
-  GpsNs filter_time() const { return filter_t_; }
-  /// IMU modes: the IMU has been silent for imu_timeout_s of GNSS time while fixes arrive.
+  GpsTime filter_time() const { return filter_t_; }
+  /// IMU modes: the IMU has been silent for imu_timeout of GNSS time while fixes arrive.
   bool ImuLost() const;
 
  private:
@@ -145,7 +148,7 @@ class Navigator {
   void GnssOnlyFix(const GnssSample& g);
   /// Restarts the EKF's position and velocity at a fix (long rejection, or after an IMU loss).
   void ResetToFix(const GnssSample& g, const Eigen::Vector3d& p_antenna_N_m);
-  bool UsesImu() const;           ///< modes that run on IMU samples (ekf, planar2d, imu_only)
+  bool UsesImu() const { return estimator::UsesImu(params_.mode); }
   bool FallsBackToFixes() const;  ///< modes whose solution becomes the fix when the IMU is lost
   void MultiGnssFix(const GnssSample& g);
 
@@ -158,12 +161,13 @@ class Navigator {
   RingBuffer<ImuSample, 1024> imu_;  // 10 s at 100 Hz: covers the longest GNSS wait
   RingBuffer<GnssSample, 32> gnss_;
   std::optional<HeadingSample> heading_;
-  GpsNs newest_imu_t_ = 0, filter_t_ = 0, last_gnss_fused_t_ = 0, first_rejected_t_ = -1;
-  GpsNs last_nhc_t_ = 0;
+  GpsTime newest_imu_t_{}, filter_t_{}, last_gnss_fused_t_{}, last_nhc_t_{};
+  std::optional<GpsTime> first_rejected_t_;  // first of the current run of rejected fixes
   bool gnss_float_ = false;           // the correlated GNSS error model in use is the RTK float one
   bool restart_at_next_fix_ = false;  // IMU samples resumed after a loss
   int fixes_since_imu_ = 0;           // fixes pushed since the last IMU sample
-  GpsNs newest_gnss_t_ = -1, gnss_period_ns_ = 0;  // GNSS stream timing (for the wait)
+  std::optional<GpsTime> newest_gnss_t_;  // GNSS stream timing (for the wait)
+  Nanoseconds gnss_period_{0};
   bool have_imu_ = false;
   Eigen::Vector3d mean_f_B_ = Eigen::Vector3d::Zero();
   double mean_f_weight_ = 0;

@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// The estimator core's inputs as value types, time-stamped on one time base (GPS nanoseconds,
+/// The estimator core's inputs as value types, time-stamped on one time base (GpsTime,
 /// time_types.h), already mapped from each device's own clock by the drivers. Frames: N = ENU at
 /// the filter origin, B = body FLU (x forward, y left, z up).
 
@@ -16,7 +16,7 @@ namespace hil::estimator {
 
 /// One IMU interval: increments over (t − dt, t].
 struct ImuSample {
-  GpsNs t = 0;                                                     ///< end of the interval
+  GpsTime t{};                                                     ///< end of the interval
   double dt_s = 0;                                                 ///< interval length
   Eigen::Vector3d delta_angle_B_rad = Eigen::Vector3d::Zero();     ///< ∫ ω_IB_B dt
   Eigen::Vector3d delta_velocity_B_mps = Eigen::Vector3d::Zero();  ///< ∫ f_B dt
@@ -24,7 +24,7 @@ struct ImuSample {
 
 /// One GNSS fix of the antenna, time of validity t (the receiver's measurement epoch).
 struct GnssSample {
-  GpsNs t = 0;
+  GpsTime t{};
   Lla position;                                  ///< antenna, WGS-84
   Eigen::Vector3d pos_std_enu_m{1.0, 1.0, 2.0};  ///< 1σ per ENU axis
   int fix_dim = 3;  ///< 3: 3-D fix; 2: 2-D fix (height held by the receiver, not measured)
@@ -45,7 +45,7 @@ struct GnssSample {
 
 /// A magnetometer heading (already tilt-compensated and declination-corrected).
 struct HeadingSample {
-  GpsNs t = 0;
+  GpsTime t{};
   double yaw_deg = 0;  ///< clockwise from true north
   double std_deg = 5.0;
 };

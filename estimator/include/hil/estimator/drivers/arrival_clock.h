@@ -20,9 +20,9 @@ namespace hil::estimator::drivers {
 class ArrivalClock {
  public:
   /// A reference event at `host_ns` (host clock) that happened at GPS time `gps`.
-  void AddReference(std::int64_t host_ns, GpsNs gps);
+  void AddReference(std::int64_t host_ns, GpsTime gps);
   /// GPS time of a host instant; nullopt until two references since the last restart gave the rate.
-  std::optional<GpsNs> ToGps(std::int64_t host_ns) const;
+  std::optional<GpsTime> ToGps(std::int64_t host_ns) const;
   /// Estimated GPS seconds per host second (1 in real time, the scale factor of a scaled run).
   double rate() const { return rate_; }
   std::uint64_t references() const { return references_; }
@@ -35,7 +35,7 @@ class ArrivalClock {
  private:
   double rate_ = 1.0;
   std::int64_t host_anchor_ns_ = 0, host_prev_ns_ = 0;
-  GpsNs gps_anchor_ = 0, gps_prev_ = 0;
+  GpsTime gps_anchor_{}, gps_prev_{};
   std::uint64_t references_ = 0, jumps_ = 0, since_restart_ = 0;
 };
 
@@ -46,7 +46,7 @@ class PeriodicSampleTimer {
   explicit PeriodicSampleTimer(double max_gap_s = 0.5)
       : max_gap_ns_(static_cast<std::int64_t>(max_gap_s * 1e9)) {}
   /// The smoothed instant of a sample measured at `measured`.
-  GpsNs Add(GpsNs measured);
+  GpsTime Add(GpsTime measured);
   /// Current period estimate in ns (0 until two samples are seen).
   double period_ns() const { return period_ns_; }
   std::uint64_t restarts() const { return restarts_; }
@@ -55,7 +55,7 @@ class PeriodicSampleTimer {
  private:
   std::int64_t max_gap_ns_;
   bool have_ = false;
-  GpsNs t_ = 0;
+  GpsTime t_{};
   double frac_ns_ = 0;  // sub-ns part of the smoothed instant
   double period_ns_ = 0;
   std::uint64_t restarts_ = 0;

@@ -21,7 +21,7 @@ class ImuIncrements {
   /// The increment from the previous sample to this one (none for the first sample or after a
   /// gap). `dt_s` is the interval by the sensor's own clock when the caller has one (MCU ticks);
   /// otherwise it is t − t_previous.
-  std::optional<ImuSample> Add(GpsNs t, const Eigen::Vector3d& w_B_radps,
+  std::optional<ImuSample> Add(GpsTime t, const Eigen::Vector3d& w_B_radps,
                                const Eigen::Vector3d& f_B_mps2,
                                std::optional<double> dt_s = std::nullopt);
   /// Forgets the previous sample (a reset, an unusable sample).
@@ -33,7 +33,7 @@ class ImuIncrements {
  private:
   double max_gap_s_;
   bool have_prev_ = false;
-  GpsNs prev_t_ = 0;
+  GpsTime prev_t_{};
   Eigen::Vector3d prev_w_ = Eigen::Vector3d::Zero(), prev_f_ = Eigen::Vector3d::Zero();
   std::uint64_t increments_ = 0, gaps_ = 0;
 };

@@ -22,7 +22,7 @@
 
 #include "hil/estimator/clock_sync.h"
 #include "hil/estimator/drivers/arrival_clock.h"
-#include "hil/estimator/drivers/imu_increments.h"
+#include "hil/estimator/drivers/arrival_imu_increments.h"
 #include "hil/estimator/samples.h"
 
 namespace hil::estimator::drivers {
@@ -100,19 +100,19 @@ struct J1939ImuDecoderConfig {
   double default_latency_s = 0.001;  ///< pulse latency until an IMU frame tells it
 };
 
-struct J1939ImuStats {
+struct J1939ImuStats : ArrivalImuCounts {
   std::uint64_t frames = 0, not_extended = 0, other_source = 0, unknown_pgn = 0, bad_length = 0;
   std::uint64_t not_available = 0;  ///< IMU messages with an error / n/a field
   std::uint64_t ari = 0, accs = 0, ssi2 = 0, pulses = 0, pulses_no_time = 0;
   std::uint64_t unpaired = 0;      ///< ARI without its ACCS, or ACCS without its ARI
   std::uint64_t out_of_order = 0;  ///< receive time going back
-  std::uint64_t imu_out = 0, imu_no_time = 0, imu_gap = 0, mcu_resets = 0;
+  std::uint64_t mcu_resets = 0;
 };
 
 class J1939ImuDecoder {
  public:
   explicit J1939ImuDecoder(J1939ImuDecoderConfig config = {})
-      : config_(config), timer_(config.max_gap_s), increments_(config.max_gap_s) {}
+      : config_(config), imu_(config.max_gap_s) {}
   /// Consumes one frame; returns an IMU sample when the frame completes one.
   std::optional<ImuSample> Add(const CanRxFrame& frame);
   const J1939ImuStats& stats() const { return stats_; }
@@ -131,7 +131,6 @@ class J1939ImuDecoder {
   J1939ImuDecoderConfig config_;
   J1939ImuStats stats_;
   ArrivalClock arrival_;
-  PeriodicSampleTimer timer_;
   ClockSync mcu_clock_;
   bool have_tick_ = false;
   std::uint32_t last_tick_ = 0;
@@ -141,7 +140,7 @@ class J1939ImuDecoder {
   std::optional<AriMessage> pending_ari_;
   std::int64_t pending_ari_rx_ns_ = 0;
   std::optional<Ssi2Message> last_slope_;
-  ImuIncrements increments_;
+  ArrivalImuIncrements imu_;
 };
 
 }  // namespace hil::estimator::drivers

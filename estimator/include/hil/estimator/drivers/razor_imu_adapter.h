@@ -13,23 +13,23 @@
 #include <Eigen/Core>
 
 #include "hil/estimator/drivers/arrival_clock.h"
-#include "hil/estimator/drivers/imu_increments.h"
+#include "hil/estimator/drivers/arrival_imu_increments.h"
 #include "hil/estimator/drivers/razor_text_decoder.h"
 #include "hil/estimator/samples.h"
 
 namespace hil::estimator::drivers {
 
-struct RazorAdapterStats {
-  std::uint64_t imu_out = 0, imu_no_time = 0, imu_gap = 0, gnss_references = 0;
+struct RazorAdapterStats : ArrivalImuCounts {
+  std::uint64_t gnss_references = 0;
 };
 
 class RazorImuAdapter {
  public:
   explicit RazorImuAdapter(RazorScales scales = {}, double max_gap_s = 0.5)
-      : scales_(scales), timer_(max_gap_s), increments_(max_gap_s) {}
+      : scales_(scales), imu_(max_gap_s) {}
   /// A GNSS fix with time of validity `tov` whose last byte arrived at `host_ns`, `latency_s` after
   /// `tov`.
-  void AddGnssArrival(std::int64_t host_ns, GpsNs tov, double latency_s);
+  void AddGnssArrival(std::int64_t host_ns, GpsTime tov, double latency_s);
   /// One line received at `host_ns`; an IMU sample when it completes an interval.
   std::optional<ImuSample> Add(const RazorTextSample& line, std::int64_t host_ns);
   const RazorAdapterStats& stats() const { return stats_; }
@@ -38,8 +38,7 @@ class RazorImuAdapter {
  private:
   RazorScales scales_;
   ArrivalClock clock_;
-  PeriodicSampleTimer timer_;
-  ImuIncrements increments_;
+  ArrivalImuIncrements imu_;
   RazorAdapterStats stats_;
 };
 

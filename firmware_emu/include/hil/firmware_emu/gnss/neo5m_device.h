@@ -42,7 +42,7 @@
 
 namespace hil::gnss {
 
-/// One scripted receiver fault, active for start_s ≤ t < end_s (scenario seconds).
+/// One scripted receiver fault, active for start ≤ t < end (emulated time).
 struct GnssFault {
   enum class Kind {
     kOutage,
@@ -52,7 +52,7 @@ struct GnssFault {
     kDataGap,
     kOverload
   } kind = Kind::kOutage;
-  double start_s = 0, end_s = 0;
+  Time start{}, end{};
   double elevation_deg = 30.0;                           ///< obstruction
   Eigen::Vector3d offset_N_m = Eigen::Vector3d::Zero();  ///< step (ENU)
   double sigma_m = 3.0;                                  ///< multipath

@@ -12,6 +12,7 @@
 #include <string>
 #include <string_view>
 
+#include "hil/firmware_emu/link/baud_table.h"
 #include "hil/firmware_emu/link/serial_port.h"
 
 namespace hil::link {
@@ -68,8 +69,5 @@ class PtyPort final : public SerialPort {
   bool stalled_ = false;
   std::uint64_t bytes_dropped_unread_ = 0;
 };
-
-/// Maps a baud rate to its termios speed constant; returns 0 when the rate has none.
-unsigned BaudToSpeed(int baud);
 
 }  // namespace hil::link

@@ -11,6 +11,7 @@
 #include "hil/firmware_emu/mcu/imu_kinematics.h"
 #include "hil/firmware_emu/mcu/j1939_imu.h"
 #include "hil/firmware_emu/mcu/sensor_spec.h"
+#include "hil/firmware_emu/sim_time.h"
 
 namespace hil::mcu {
 
@@ -26,15 +27,15 @@ enum class FaultKind {
   kSequenceJump,  ///< at `start`, the sequence counter advances by `amount` extra
   kCorruptBytes,  ///< with `probability` per frame, one byte is flipped (the CRC then fails)
   kStuckSensor,   ///< `sensor` repeats its last counts during [start, start + duration)
-  kReset,  ///< at `start` the MCU resets: silent for `duration_s` (when > 0; else the config's
-           ///< `reboot_s`), then tick and sequence restart
+  kReset,         ///< at `start` the MCU resets: silent for `duration` (when > 0; else the config's
+                  ///< `reboot_s`), then tick and sequence restart
 };
 
 /// One entry of the firmware fault timeline.
 struct McuFault {
   FaultKind kind = FaultKind::kDropFrames;
-  double start_s = 0;
-  double duration_s = 0;
+  Time start{};  ///< emulated time
+  Duration duration{0};
   double probability = 1.0;
   int amount = 1;              ///< sequence jump size
   std::string sensor = "all";  ///< accel | gyro | mag | all (stuck sensor)

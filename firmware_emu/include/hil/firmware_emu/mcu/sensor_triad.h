@@ -19,6 +19,7 @@
 
 #include "hil/firmware_emu/mcu/rng.h"
 #include "hil/firmware_emu/mcu/sensor_spec.h"
+#include "hil/firmware_emu/sim_time.h"
 
 namespace hil::mcu {
 
@@ -38,14 +39,14 @@ class SensorTriad {
   /// of each tone applies (accelerometer or gyro).
   void SetVibration(const std::vector<VibrationTone>& tones, bool accel);
 
-  /// The erroneous continuous value (engineering units) of the sample at `t_s` for true input
+  /// The erroneous continuous value (engineering units) of the sample at `t` for true input
   /// `true_I`: everything except quantisation. Advances the random processes by one sample.
-  Eigen::Vector3d Measure(const Eigen::Vector3d& true_I, double t_s, double temperature_c);
+  Eigen::Vector3d Measure(const Eigen::Vector3d& true_I, Time t, double temperature_c);
   /// Quantises a continuous value into counts (ADC path, oversampling, saturation).
   TriadCounts Quantise(const Eigen::Vector3d& value);
   /// Measure then Quantise.
-  TriadCounts Sample(const Eigen::Vector3d& true_I, double t_s, double temperature_c) {
-    return Quantise(Measure(true_I, t_s, temperature_c));
+  TriadCounts Sample(const Eigen::Vector3d& true_I, Time t, double temperature_c) {
+    return Quantise(Measure(true_I, t, temperature_c));
   }
 
   /// Engineering units per output LSB.

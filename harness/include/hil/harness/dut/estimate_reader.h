@@ -2,8 +2,9 @@
 /// @file
 /// Adapters that turn the estimator's output lines into EstimateRecords, one per output format
 /// (EstimatorSpec::output):
-///  - json_stdout: navd's JSON lines ({"tov_utc_s", "lat_deg", "lon_deg", "height_m",
-///    "vel_enu_mps", "yaw_deg", "pos_std_enu_m"});
+///  - json_stdout: navd's JSON lines ({"tov_unix_ns" (integer; else "tov_utc_s" in seconds, read to
+///    the microsecond), "lat_deg", "lon_deg", "height_m", "vel_enu_mps", "yaw_deg",
+///    "pos_std_enu_m"});
 ///  - gpsd_json: gpsd TPV objects ({"class":"TPV","time":ISO,"lat","lon","altHAE"|"alt",
 ///    "track","speed","climb","epx","epy","epv"}), e.g. from `gpspipe -w`; other classes skipped;
 ///  - nmea_stdout / nmea_pty: NMEA 0183 GGA (position, time of day) and RMC (speed, course); the

@@ -6,10 +6,10 @@
 
 #include <string>
 
+#include "hil/estimator/drivers/nmea_accuracy.h"
 #include "hil/estimator/navd/config_file.h"
 #include "hil/estimator/navd/navd_gnss_receivers.h"
 #include "hil/estimator/navd/navd_imu_config.h"
-#include "hil/estimator/navd/nmea_accuracy.h"
 #include "hil/estimator/navigator.h"
 
 namespace hil::estimator {

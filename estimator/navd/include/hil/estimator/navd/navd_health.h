@@ -37,6 +37,7 @@
 ///   imu_lost               the IMU is silent: the solution is the GNSS fix (Navigator::ImuLost)
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "hil/estimator/drivers/j1939_imu_decoder.h"
@@ -68,9 +69,9 @@ class NavdHealth {
   /// Every decoded MCU frame.
   void OnMcuFrame(const drivers::McuFrame& f);
   /// Updates the flags for a solution valid at `t` and returns `,"health":{…}` to append to it.
-  std::string Field(GpsNs t);
+  std::string Field(GpsTime t);
   /// Inserts the health object into a JSON line ending in "}\n" (or "}").
-  void AppendTo(std::string& json_line, GpsNs t);
+  void AppendTo(std::string& json_line, GpsTime t);
 
   struct Counters {
     std::uint64_t gnss_epochs = 0, gnss_no_fix_epochs = 0, gnss_repeated_epochs = 0, gnss_gaps = 0,
@@ -87,8 +88,8 @@ class NavdHealth {
   HealthSources src_;
   Counters c_;
   // GNSS
-  GpsNs last_gnss_t_ = -1, last_fix_t_ = -1;
-  GpsNs gnss_period_ns_ = 0;  // smallest interval seen between epochs
+  std::optional<GpsTime> last_gnss_t_, last_fix_t_;
+  Nanoseconds gnss_period_{0};  // smallest interval seen between epochs
   bool outage_ = false;
   // MCU
   bool have_frame_ = false;
@@ -100,9 +101,9 @@ class NavdHealth {
   // "in the last 5 s" flags: the counter value at the previous solution and when it last rose
   struct Recent {
     std::uint64_t seen = 0;
-    GpsNs last_rise = -1;
+    std::optional<GpsTime> last_rise;
   };
-  bool Rose(Recent& r, std::uint64_t value, GpsNs t);
+  bool Rose(Recent& r, std::uint64_t value, GpsTime t);
   Recent gnss_errors_, imu_errors_, rejected_, imu_gap_, mcu_reset_;
 };
 

@@ -1,4 +1,4 @@
-#include "hil/estimator/navd/nmea_accuracy.h"
+#include "hil/estimator/drivers/nmea_accuracy.h"
 
 #include <numbers>
 

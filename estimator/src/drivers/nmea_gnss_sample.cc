@@ -1,0 +1,28 @@
+#include "hil/estimator/drivers/nmea_gnss_sample.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace hil::estimator::drivers {
+
+GnssSample ToGnssSample(const NmeaMeasurement& m, int leap_s, const NmeaAccuracy& acc) {
+  GnssSample g;
+  g.t = GpsTimeFromUnixNs(m.tov_unix_ns, leap_s);
+  g.position = {m.lat_deg, m.lon_deg, m.height_m};
+  const double sigma = NmeaHorizontalStd(acc, m.quality, m.hdop);
+  g.pos_std_enu_m = {sigma, sigma, 2.0 * sigma};
+  g.fix_quality = m.quality;
+  g.num_sv = m.num_sv;
+  g.hdop = m.hdop.value_or(0.0);
+  g.ground_speed_mps = m.speed_mps;  // known also when the course is not (no velocity then)
+  g.geoid_separation_m = m.geoid_separation_m;
+  if (m.speed_mps && m.course_deg) {
+    const double c = *m.course_deg * std::numbers::pi / 180.0;
+    g.vel_enu_mps = {*m.speed_mps * std::sin(c), *m.speed_mps * std::cos(c), 0.0};
+    g.has_velocity = true;
+    g.vel_std_enu_mps = {acc.velocity_std_mps, acc.velocity_std_mps, 2.0 * acc.velocity_std_mps};
+  }
+  return g;
+}
+
+}  // namespace hil::estimator::drivers
