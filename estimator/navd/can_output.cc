@@ -15,10 +15,10 @@
 
 namespace hil::navd {
 
-CanOutput::CanOutput(const std::string& interface, const std::string& log_path, std::uint8_t sa,
-                     double rapid_rate_hz)
+CanOutput::CanOutput(const std::string& interface, const std::string& log_path,
+                     std::uint8_t source_address, double rapid_rate_hz)
     : iface_name_(interface.empty() ? "can0" : interface),
-      sa_(sa),
+      sa_(source_address),
       rapid_period_ns_(static_cast<std::int64_t>(std::llround(1e9 / rapid_rate_hz))) {
   if (!interface.empty()) {
     sock_ = socket(PF_CAN, SOCK_RAW, CAN_RAW);
