@@ -35,6 +35,57 @@ struct FastPacketState {
   int frames_left = 0;
 };
 
+// NMEA 2000 fast-packet continuity of one extended data frame: each packet's frames in order, no
+// new packet before the previous one of the same source and PGN ended.
+void CheckFastPacket(std::uint32_t id, const std::string& data, std::int64_t line_no,
+                     std::map<std::pair<std::uint32_t, std::uint32_t>, FastPacketState>& fast,
+                     ValidationReport& rep) {
+  const std::uint32_t pgn = PgnOf(id);
+  if (kFastPacketPgns.count(pgn)) {
+    const int b0 = std::stoi(data.substr(0, 2), nullptr, 16);
+    const int seq = b0 >> 5, frame_no = b0 & 0x1F;
+    FastPacketState& st = fast[{id & 0xFF, pgn}];
+    if (frame_no == 0) {
+      if (st.frames_left > 0) {
+        rep.findings.push_back(
+            {true, "fast_packet",
+             "PGN " + std::to_string(pgn) + ": new packet before the previous one ended", line_no});
+      }
+      const int len = std::stoi(data.substr(2, 2), nullptr, 16);
+      st.seq = seq;
+      st.next_frame = 1;
+      st.frames_left = len <= 6 ? 0 : (len - 6 + 6) / 7;
+    } else if (st.frames_left == 0 || seq != st.seq || frame_no != st.next_frame) {
+      rep.findings.push_back({true, "fast_packet",
+                              "PGN " + std::to_string(pgn) + ": frame " + std::to_string(frame_no) +
+                                  " of sequence " + std::to_string(seq) + " out of order",
+                              line_no});
+      st.frames_left = 0;
+    } else {
+      ++st.next_frame;
+      --st.frames_left;
+    }
+  }
+}
+
+// Each identifier's rate, and the gaps longer than 2.5 of its median periods.
+void CheckRates(const std::map<std::string, std::vector<double>>& times, ValidationReport& rep) {
+  for (const auto& [id, ts] : times) {
+    if (ts.size() < 2) continue;
+    const double span = ts.back() - ts.front();
+    std::vector<double> dt;
+    for (std::size_t i = 1; i < ts.size(); ++i) dt.push_back(ts[i] - ts[i - 1]);
+    const double med = Percentile(dt, 50);
+    if (span > 0) rep.messages[id].rate_hz = static_cast<double>(ts.size() - 1) / span;
+    std::size_t gaps = 0;
+    for (const double d : dt) gaps += med > 0 && d > 2.5 * med ? 1 : 0;
+    if (gaps > 0)
+      rep.findings.push_back({false, "sequence_gap",
+                              id + ": " + std::to_string(gaps) + " gap(s) longer than 2.5 periods",
+                              -1});
+  }
+}
+
 }  // namespace
 
 ValidationReport ValidateCanLog(const std::string& text) {
@@ -108,51 +159,10 @@ ValidationReport ValidateCanLog(const std::string& text) {
     rep.messages[id_hex].count++;
     times[id_hex].push_back(t);
     // NMEA 2000 fast packet continuity
-    if (id_hex.size() == 8 && !remote && data.size() >= 4) {
-      const std::uint32_t pgn = PgnOf(id);
-      if (kFastPacketPgns.count(pgn)) {
-        const int b0 = std::stoi(data.substr(0, 2), nullptr, 16);
-        const int seq = b0 >> 5, frame_no = b0 & 0x1F;
-        FastPacketState& st = fast[{id & 0xFF, pgn}];
-        if (frame_no == 0) {
-          if (st.frames_left > 0) {
-            rep.findings.push_back(
-                {true, "fast_packet",
-                 "PGN " + std::to_string(pgn) + ": new packet before the previous one ended",
-                 line_no});
-          }
-          const int len = std::stoi(data.substr(2, 2), nullptr, 16);
-          st.seq = seq;
-          st.next_frame = 1;
-          st.frames_left = len <= 6 ? 0 : (len - 6 + 6) / 7;
-        } else if (st.frames_left == 0 || seq != st.seq || frame_no != st.next_frame) {
-          rep.findings.push_back({true, "fast_packet",
-                                  "PGN " + std::to_string(pgn) + ": frame " +
-                                      std::to_string(frame_no) + " of sequence " +
-                                      std::to_string(seq) + " out of order",
-                                  line_no});
-          st.frames_left = 0;
-        } else {
-          ++st.next_frame;
-          --st.frames_left;
-        }
-      }
-    }
+    if (id_hex.size() == 8 && !remote && data.size() >= 4)
+      CheckFastPacket(id, data, line_no, fast, rep);
   }
-  for (auto& [id, ts] : times) {
-    if (ts.size() < 2) continue;
-    const double span = ts.back() - ts.front();
-    std::vector<double> dt;
-    for (std::size_t i = 1; i < ts.size(); ++i) dt.push_back(ts[i] - ts[i - 1]);
-    const double med = Percentile(dt, 50);
-    if (span > 0) rep.messages[id].rate_hz = static_cast<double>(ts.size() - 1) / span;
-    std::size_t gaps = 0;
-    for (const double d : dt) gaps += med > 0 && d > 2.5 * med ? 1 : 0;
-    if (gaps > 0)
-      rep.findings.push_back({false, "sequence_gap",
-                              id + ": " + std::to_string(gaps) + " gap(s) longer than 2.5 periods",
-                              -1});
-  }
+  CheckRates(times, rep);
   rep.epochs = 0;
   if (rep.frames == 0) rep.findings.push_back({true, "empty", "no valid frame in the log", -1});
   return rep;
