@@ -91,7 +91,6 @@ TEST(UbxDecoderTest, AssemblesAnEpochFromMixedSplitStream) {
 
 TEST(UbxDecoderTest, NoFixIsNotReportedAndIncompleteEpochFlushesOnNextItow) {
   UbxEpochAssembler a;
-  UbxMessage m;
   std::vector<GnssSample> out;
   UbxDecoder d([&](const UbxMessage& msg) {
     if (auto g = a.Add(msg)) out.push_back(*g);
