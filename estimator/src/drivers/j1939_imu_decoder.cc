@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <numbers>
 
+#include "hil/estimator/drivers/arrival_stamped_imu.h"
+
 namespace hil::estimator::drivers {
 namespace {
 
@@ -220,17 +222,7 @@ std::optional<ImuSample> J1939ImuDecoder::OnPair(const AriMessage& ari, const Ac
   const Eigen::Vector3d w = AngularRateFlu_radps(ari), f = SpecificForceFlu_mps2(accs);
   const auto measured =
       arrival_.ToGps(rx_ns - static_cast<std::int64_t>(std::llround(ari.latency_s * 1e9)));
-  if (!measured) {
-    ++stats_.imu_no_time;
-    increments_.Restart();
-    return std::nullopt;
-  }
-  const GpsNs t = timer_.Add(*measured);
-  const std::uint64_t gaps_before = increments_.gaps();
-  auto out = increments_.Add(t, w, f);
-  if (out) ++stats_.imu_out;
-  if (increments_.gaps() != gaps_before) ++stats_.imu_gap;
-  return out;
+  return AddArrivalStamped(measured, w, f, timer_, increments_, stats_);
 }
 
 }  // namespace hil::estimator::drivers

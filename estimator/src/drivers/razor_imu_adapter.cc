@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "hil/estimator/drivers/arrival_stamped_imu.h"
+
 namespace hil::estimator::drivers {
 
 void RazorImuAdapter::AddGnssArrival(std::int64_t host_ns, GpsNs tov, double latency_s) {
@@ -12,17 +14,7 @@ void RazorImuAdapter::AddGnssArrival(std::int64_t host_ns, GpsNs tov, double lat
 std::optional<ImuSample> RazorImuAdapter::Add(const RazorTextSample& line, std::int64_t host_ns) {
   const Eigen::Vector3d w = RazorGyro_radps(line, scales_), f = RazorAccel_mps2(line, scales_);
   const auto measured = clock_.ToGps(host_ns);
-  if (!measured) {
-    ++stats_.imu_no_time;
-    increments_.Restart();
-    return std::nullopt;
-  }
-  const GpsNs t = timer_.Add(*measured);
-  const std::uint64_t gaps_before = increments_.gaps();
-  auto out = increments_.Add(t, w, f);
-  if (out) ++stats_.imu_out;
-  if (increments_.gaps() != gaps_before) ++stats_.imu_gap;
-  return out;
+  return AddArrivalStamped(measured, w, f, timer_, increments_, stats_);
 }
 
 }  // namespace hil::estimator::drivers
