@@ -9,6 +9,8 @@
 
 #include "hil/harness/validate/validate.h"
 
+#include "garbage_run.h"
+
 namespace hil::harness {
 namespace {
 
@@ -146,19 +148,13 @@ ValidationReport ValidateMcuStream(const ByteStream& s) {
   rep.bytes = s.bytes.size();
   const std::string& b = s.bytes;
   McuStreamState st;
-  std::size_t pos = 0, garbage_start = std::string::npos;
-  const auto flush = [&](std::size_t end) {
-    if (garbage_start == std::string::npos) return;
-    rep.findings.push_back({true, "framing",
-                            std::to_string(end - garbage_start) + " byte(s) outside any frame",
-                            static_cast<std::int64_t>(garbage_start)});
-    rep.garbage_bytes += end - garbage_start;
-    garbage_start = std::string::npos;
-  };
+  std::size_t pos = 0;
+  GarbageRun garbage;
+  const auto flush = [&](std::size_t end) { rep.garbage_bytes += garbage.End(end, rep); };
   while (pos < b.size()) {
     if (!(static_cast<unsigned char>(b[pos]) == 0xA5 && pos + 1 < b.size() &&
           static_cast<unsigned char>(b[pos + 1]) == 0x5A)) {
-      if (garbage_start == std::string::npos) garbage_start = pos;
+      garbage.Add(pos);
       ++pos;
       continue;
     }

@@ -8,6 +8,8 @@
 #include "hil/harness/eval/evaluator.h"
 #include "hil/harness/validate/validate.h"
 
+#include "garbage_run.h"
+
 namespace hil::harness {
 namespace {
 
@@ -154,15 +156,9 @@ FrameStep FrameNmea(const ByteStream& s, std::size_t& pos, Framed& out, Validati
 Framed FrameStream(const ByteStream& s, bool want_nmea, bool want_ubx, ValidationReport& rep) {
   Framed out;
   const std::string& b = s.bytes;
-  std::size_t pos = 0, garbage_start = std::string::npos;
-  const auto flush_garbage = [&](std::size_t end) {
-    if (garbage_start == std::string::npos) return;
-    rep.findings.push_back({true, "framing",
-                            std::to_string(end - garbage_start) + " byte(s) outside any frame",
-                            static_cast<std::int64_t>(garbage_start)});
-    out.garbage += end - garbage_start;
-    garbage_start = std::string::npos;
-  };
+  std::size_t pos = 0;
+  GarbageRun garbage;
+  const auto flush_garbage = [&](std::size_t end) { out.garbage += garbage.End(end, rep); };
   while (pos < b.size()) {
     const auto c = static_cast<unsigned char>(b[pos]);
     const bool line_start = pos == 0 || b[pos - 1] == '\n';
@@ -194,7 +190,7 @@ Framed FrameStream(const ByteStream& s, bool want_nmea, bool want_ubx, Validatio
       ++pos;
       continue;
     }
-    if (garbage_start == std::string::npos) garbage_start = pos;
+    garbage.Add(pos);
     ++pos;
   }
   flush_garbage(pos < b.size() ? pos : b.size());
