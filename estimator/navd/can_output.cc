@@ -27,8 +27,8 @@ bool NewPeriod(std::int64_t t, std::int64_t last, std::int64_t period) {
 
 }  // namespace
 
-CanOutput::CanOutput(const std::string& interface, const std::string& log_path, std::uint8_t sa,
-                     double rapid_rate_hz)
+CanOutput::CanOutput(const std::string& interface, const std::string& log_path,
+                     std::uint8_t source_address, double rapid_rate_hz)
     : iface_name_(interface.empty() ? "can0" : interface),
       sa_(sa),
       rapid_period_ns_(static_cast<std::int64_t>(std::llround(1e9 / rapid_rate_hz))),

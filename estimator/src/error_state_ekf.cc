@@ -43,11 +43,12 @@ void ErrorStateEkf::Initialize(const NavState& s) {
   if (SpeedDevState(p)) P_(kSpeedDev, kSpeedDev) = p.speed_dev_std_mps * p.speed_dev_std_mps;
 }
 
-void ErrorStateEkf::Predict(const Eigen::Vector3d& dth_raw, const Eigen::Vector3d& dv_raw,
-                            double dt) {
-  if (!(dt > 0) || dt > 1.0 || !AllFinite(dth_raw) || !AllFinite(dv_raw)) return;
-  const Eigen::Vector3d dth = dth_raw - bg_ * dt;
-  const Eigen::Vector3d dv = dv_raw - ba_ * dt;
+void ErrorStateEkf::Predict(const Eigen::Vector3d& delta_angle_B_rad,
+                            const Eigen::Vector3d& delta_velocity_B_mps, double dt) {
+  if (!(dt > 0) || dt > 1.0 || !AllFinite(delta_angle_B_rad) || !AllFinite(delta_velocity_B_mps))
+    return;
+  const Eigen::Vector3d dth = delta_angle_B_rad - bg_ * dt;
+  const Eigen::Vector3d dv = delta_velocity_B_mps - ba_ * dt;
   const Eigen::Matrix3d C = state_.q_NB.toRotationMatrix();
   w_B_ = dth / dt;
   f_N_ = C * dv / dt;
@@ -128,23 +129,24 @@ Eigen::Matrix<double, 2, kNumStates> ErrorStateEkf::NonHolonomicJacobian() const
   return H.bottomRows<2>();
 }
 
-UpdateResult ErrorStateEkf::UpdatePosition(const Eigen::Vector3d& z, const Eigen::Vector3d& std_m) {
-  if (!AllFinite(z) || !AllFinite(std_m)) return {};
+UpdateResult ErrorStateEkf::UpdatePosition(const Eigen::Vector3d& p_antenna_N_m,
+                                           const Eigen::Vector3d& std_m) {
+  if (!AllFinite(p_antenna_N_m) || !AllFinite(std_m)) return {};
   const Eigen::Vector3d pred =
       AntennaPosition() + (params_.gnss_error_tau_s > 0 ? e_gnss_ : Eigen::Vector3d::Zero());
   Eigen::Matrix3d R = Eigen::Matrix3d::Zero();
   for (int i = 0; i < 3; ++i)
     R(i, i) = std::pow(std::max(std_m[i], params_.gnss_pos_std_floor_m), 2);
-  return Update<3>(z - pred, PositionJacobian(), R);
+  return Update<3>(p_antenna_N_m - pred, PositionJacobian(), R);
 }
 
-UpdateResult ErrorStateEkf::UpdateVelocity(const Eigen::Vector3d& z,
+UpdateResult ErrorStateEkf::UpdateVelocity(const Eigen::Vector3d& v_antenna_N_mps,
                                            const Eigen::Vector3d& std_mps) {
-  if (!AllFinite(z) || !AllFinite(std_mps)) return {};
+  if (!AllFinite(v_antenna_N_mps) || !AllFinite(std_mps)) return {};
   Eigen::Matrix3d R = Eigen::Matrix3d::Zero();
   for (int i = 0; i < 3; ++i)
     R(i, i) = std::pow(std::max(std_mps[i], params_.gnss_vel_std_floor_mps), 2);
-  return Update<3>(z - AntennaVelocity(), VelocityJacobian(), R);
+  return Update<3>(v_antenna_N_mps - AntennaVelocity(), VelocityJacobian(), R);
 }
 
 UpdateResult ErrorStateEkf::UpdateNonHolonomic() {
@@ -210,7 +212,7 @@ UpdateResult ErrorStateEkf::UpdateYaw(double yaw_enu_rad, double std_rad) {
 }
 
 template <int M>
-UpdateResult ErrorStateEkf::Update(const Eigen::Matrix<double, M, 1>& y,
+UpdateResult ErrorStateEkf::Update(const Eigen::Matrix<double, M, 1>& innovation,
                                    const Eigen::Matrix<double, M, kNumStates>& H,
                                    const Eigen::Matrix<double, M, M>& R) {
   UpdateResult r;
@@ -218,12 +220,12 @@ UpdateResult ErrorStateEkf::Update(const Eigen::Matrix<double, M, 1>& y,
   const Eigen::Matrix<double, kNumStates, M> PHt = P_ * H.transpose();
   const Eigen::Matrix<double, M, M> S = H * PHt + R;
   const Eigen::LDLT<Eigen::Matrix<double, M, M>> ldlt(S);
-  if (ldlt.info() != Eigen::Success || !y.allFinite()) return r;
-  r.nis = y.dot(ldlt.solve(y));
+  if (ldlt.info() != Eigen::Success || !innovation.allFinite()) return r;
+  r.nis = innovation.dot(ldlt.solve(innovation));
   if (!std::isfinite(r.nis) || r.nis > params_.gate_sigma * params_.gate_sigma * M) return r;
   const Eigen::Matrix<double, M, M> S_inv = ldlt.solve(Eigen::Matrix<double, M, M>::Identity());
   const Eigen::Matrix<double, kNumStates, M> K = PHt * S_inv;
-  const EkfVector dx = K * y;
+  const EkfVector dx = K * innovation;
   // Joseph form keeps P symmetric positive semi-definite
   const EkfMatrix IKH = EkfMatrix::Identity() - K * H;
   P_ = IKH * P_ * IKH.transpose() + K * R * K.transpose();

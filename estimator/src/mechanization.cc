@@ -22,19 +22,23 @@ Eigen::Matrix3d Skew(const Eigen::Vector3d& v) {
   return m;
 }
 
-void Propagate(const EarthModel& earth, const Eigen::Vector3d& dth, const Eigen::Vector3d& dv,
-               double dt, MechanizationMemory& mem, NavState& s) {
+void Propagate(const EarthModel& earth, const Eigen::Vector3d& delta_angle_B_rad,
+               const Eigen::Vector3d& delta_velocity_B_mps, double dt, MechanizationMemory& mem,
+               NavState& s) {
   Eigen::Vector3d coning = Eigen::Vector3d::Zero(), sculling = Eigen::Vector3d::Zero();
   if (mem.valid) {
-    coning = mem.prev_delta_angle_B_rad.cross(dth) / 12.0;
-    sculling =
-        (mem.prev_delta_angle_B_rad.cross(dv) + mem.prev_delta_velocity_B_mps.cross(dth)) / 12.0;
+    coning = mem.prev_delta_angle_B_rad.cross(delta_angle_B_rad) / 12.0;
+    sculling = (mem.prev_delta_angle_B_rad.cross(delta_velocity_B_mps) +
+                mem.prev_delta_velocity_B_mps.cross(delta_angle_B_rad)) /
+               12.0;
   }
   // velocity: specific force resolved with the attitude at the start, rotation and sculling terms
   const Eigen::Matrix3d C_old = s.q_NB.toRotationMatrix();
   // (I − ½[ζ×]) accounts for N turning with the Earth over the interval, ζ = ω_IE·dt
   const Eigen::Vector3d zeta = earth.w_IE_N_radps * dt;
-  const Eigen::Vector3d dv_rot = C_old * (dv + 0.5 * dth.cross(dv) + sculling);
+  const Eigen::Vector3d dv_rot =
+      C_old *
+      (delta_velocity_B_mps + 0.5 * delta_angle_B_rad.cross(delta_velocity_B_mps) + sculling);
   const Eigen::Vector3d dv_N = dv_rot - 0.5 * zeta.cross(dv_rot);
   // gravity at the vehicle, not at the origin: in a tangent-plane frame the plumb line tilts by
   // p/R away from the origin and the magnitude falls by 2h/R (free-air gradient)
@@ -49,10 +53,10 @@ void Propagate(const EarthModel& earth, const Eigen::Vector3d& dth, const Eigen:
   s.p_N_m += 0.5 * (v_old + s.v_N_mps) * dt;
   // attitude: body rotation, then the frame's rotation with the Earth
   s.q_NB = QuatFromRotationVector(-earth.w_IE_N_radps * dt) * s.q_NB *
-           QuatFromRotationVector(dth + coning);
+           QuatFromRotationVector(delta_angle_B_rad + coning);
   s.q_NB.normalize();
-  mem.prev_delta_angle_B_rad = dth;
-  mem.prev_delta_velocity_B_mps = dv;
+  mem.prev_delta_angle_B_rad = delta_angle_B_rad;
+  mem.prev_delta_velocity_B_mps = delta_velocity_B_mps;
   mem.valid = true;
 }
 

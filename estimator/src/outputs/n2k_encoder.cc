@@ -27,17 +27,17 @@ std::uint32_t N2kCanId(std::uint32_t pgn, int priority, std::uint8_t source) {
   return (static_cast<std::uint32_t>(priority & 7) << 26) | ((pgn & 0x3FFFF) << 8) | source;
 }
 
-CanFrame EncodePositionRapid(double lat, double lon, std::uint8_t sa) {
+CanFrame EncodePositionRapid(double lat, double lon, std::uint8_t source) {
   CanFrame f;
-  f.id = N2kCanId(129025, 2, sa);
+  f.id = N2kCanId(129025, 2, source);
   Put(&f.data[0], static_cast<std::uint32_t>(static_cast<std::int32_t>(Round(lat * 1e7))), 4);
   Put(&f.data[4], static_cast<std::uint32_t>(static_cast<std::int32_t>(Round(lon * 1e7))), 4);
   return f;
 }
 
-CanFrame EncodeCogSogRapid(std::uint8_t sid, double cog_rad, double sog_mps, std::uint8_t sa) {
+CanFrame EncodeCogSogRapid(std::uint8_t sid, double cog_rad, double sog_mps, std::uint8_t source) {
   CanFrame f;
-  f.id = N2kCanId(129026, 2, sa);
+  f.id = N2kCanId(129026, 2, source);
   f.data[0] = sid;
   f.data[1] = 0xFC;  // reference 0 (true), reserved bits set
   Put(&f.data[2], Angle16(cog_rad), 2);
@@ -54,7 +54,7 @@ FastPacket EncodeGnssPosition(std::uint8_t sid, std::uint16_t days, double sod, 
   std::array<std::uint8_t, 43> p{};
   p[0] = sid;
   Put(&p[1], days, 2);
-  Put(&p[3], static_cast<std::uint32_t>(Round(sod * 1e4)), 4);
+  Put(&p[3], static_cast<std::uint32_t>(Round(seconds_of_day * 1e4)), 4);
   Put(&p[7], static_cast<std::uint64_t>(Round(lat * 1e16)), 8);
   Put(&p[15], static_cast<std::uint64_t>(static_cast<std::int64_t>(std::llround(lon * 1e16))), 8);
   Put(&p[23], static_cast<std::uint64_t>(Round(alt * 1e6)), 8);
@@ -72,13 +72,13 @@ FastPacket EncodeGnssPosition(std::uint8_t sid, std::uint16_t days, double sod, 
   Put(&p[38], static_cast<std::uint32_t>(static_cast<std::int32_t>(n_raw)), 4);
   p[42] = 0;  // no reference stations
   FastPacket fp;
-  const std::uint32_t id = N2kCanId(129029, 3, sa);
+  const std::uint32_t id = N2kCanId(129029, 3, source);
   std::size_t used = 0;
   for (int frame = 0; used < p.size(); ++frame) {
     CanFrame& f = fp.frames[static_cast<std::size_t>(frame)];
     f.id = id;
     f.data.fill(0xFF);
-    f.data[0] = static_cast<std::uint8_t>(((seq & 7) << 5) | (frame & 0x1F));
+    f.data[0] = static_cast<std::uint8_t>(((fast_packet_sequence & 7) << 5) | (frame & 0x1F));
     std::size_t at = 1;
     if (frame == 0) f.data[at++] = static_cast<std::uint8_t>(p.size());
     while (at < 8 && used < p.size()) f.data[at++] = p[used++];
@@ -87,9 +87,9 @@ FastPacket EncodeGnssPosition(std::uint8_t sid, std::uint16_t days, double sod, 
   return fp;
 }
 
-CanFrame EncodeVesselHeading(std::uint8_t sid, double heading_rad, std::uint8_t sa) {
+CanFrame EncodeVesselHeading(std::uint8_t sid, double heading_rad, std::uint8_t source) {
   CanFrame f;
-  f.id = N2kCanId(127250, 2, sa);
+  f.id = N2kCanId(127250, 2, source);
   f.data[0] = sid;
   Put(&f.data[1], Angle16(heading_rad), 2);
   Put(&f.data[3], 0x7FFF, 2);  // deviation n/a
@@ -98,9 +98,10 @@ CanFrame EncodeVesselHeading(std::uint8_t sid, double heading_rad, std::uint8_t 
   return f;
 }
 
-CanFrame EncodeAttitude(std::uint8_t sid, double yaw, double pitch, double roll, std::uint8_t sa) {
+CanFrame EncodeAttitude(std::uint8_t sid, double yaw, double pitch, double roll,
+                        std::uint8_t source) {
   CanFrame f;
-  f.id = N2kCanId(127257, 3, sa);
+  f.id = N2kCanId(127257, 3, source);
   f.data[0] = sid;
   Put(&f.data[1], SignedAngle16(yaw), 2);
   Put(&f.data[3], SignedAngle16(pitch), 2);

@@ -43,9 +43,9 @@ std::string NmeaSentence(const std::string& body) {
   return "$" + body + tail;
 }
 
-std::string FormatNmea0183(const NavOutput& o, std::int64_t utc_ns) {
+std::string FormatNmea0183(const NavOutput& o, std::int64_t utc_unix_ns) {
   const std::int64_t day_ns = 86400LL * 1000000000LL;
-  std::int64_t days = utc_ns / day_ns, tod = utc_ns % day_ns;
+  std::int64_t days = utc_unix_ns / day_ns, tod = utc_unix_ns % day_ns;
   if (tod < 0) {
     tod += day_ns;
     --days;

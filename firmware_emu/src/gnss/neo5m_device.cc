@@ -35,6 +35,72 @@ ubx::ReceiverSettings DefaultSettings(const ReceiverProfile& p) {
 // Deterministic pseudorange residual (m) of a used satellite at an epoch: a small smooth value.
 double Residual(int svid, double gps_s) { return 0.6 * std::sin(gps_s / 23.0 + svid * 1.7); }
 
+// What the scripted faults active at `t_s` do to the output; their effects on the sky and on the
+// errors go into `cond` and `in`.
+struct ActiveFaults {
+  bool overload = false, data_gap = false;
+};
+ActiveFaults ApplyFaults(const std::vector<GnssFault>& faults, Time t, SkyConditions& cond,
+                         ErrorInputs& in) {
+  ActiveFaults active;
+  for (const GnssFault& f : faults) {
+    if (t < f.start || t >= f.end) continue;
+    switch (f.kind) {
+      case GnssFault::Kind::kOutage:
+        cond.sky_blocked = true;
+        break;
+      case GnssFault::Kind::kObstruction:
+        cond.blocked_below_deg = std::max(cond.blocked_below_deg, f.elevation_deg);
+        break;
+      case GnssFault::Kind::kStep:
+        in.offset_N_m += f.offset_N_m;
+        break;
+      case GnssFault::Kind::kMultipath:
+        in.multipath_sigma_m = std::hypot(in.multipath_sigma_m, f.sigma_m);
+        break;
+      case GnssFault::Kind::kOverload:
+        active.overload = true;
+        break;
+      case GnssFault::Kind::kDataGap:
+        active.data_gap = true;
+        break;
+    }
+  }
+  return active;
+}
+
+// The satellites as the fix leaves them: none used without a fix (the tracked ones flagged
+// quality 4), the used ones with their pseudorange residuals.
+void MarkSatellites(std::vector<SatelliteView>& sats, bool orbit_known, bool valid, double gps_s) {
+  for (auto& s : sats) {
+    s.orbit_known = orbit_known;
+    if (!valid) {
+      s.used = false;
+      if (s.tracked) s.quality = 4;
+    }
+    if (s.used) s.pr_res_m = Residual(s.svid, gps_s);
+  }
+}
+
+// Whether an SBAS satellite is tracked (its corrections can then be applied).
+bool AnySbasTracked(const std::vector<SatelliteView>& sats) {
+  return std::any_of(sats.begin(), sats.end(),
+                     [](const SatelliteView& s) { return s.sbas && s.tracked; });
+}
+
+// The svids of the used satellites in the order of their channels (GSA's list).
+std::vector<int> UsedInChannelOrder(const std::vector<SatelliteView>& sats) {
+  std::vector<const SatelliteView*> by_channel;
+  for (const auto& s : sats) {
+    if (s.used) by_channel.push_back(&s);
+  }
+  std::sort(by_channel.begin(), by_channel.end(),
+            [](auto* a, auto* b) { return a->channel < b->channel; });
+  std::vector<int> svids;
+  for (const auto* s : by_channel) svids.push_back(s->nmea_id());
+  return svids;
+}
+
 }  // namespace
 
 Neo5mDevice::Neo5mDevice(const Neo5mConfig& config, std::uint64_t seed)
@@ -102,45 +168,16 @@ void Neo5mDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
   cond.sbas_enabled = cfg.sbas_enabled();
   cond.max_sbas = cfg.sbas[2];
   ErrorInputs in;
-  overload_ = false;
-  bool data_gap = false;
-  for (const GnssFault& f : config_.faults) {
-    if (t < f.start || t >= f.end) continue;
-    switch (f.kind) {
-      case GnssFault::Kind::kOutage:
-        cond.sky_blocked = true;
-        break;
-      case GnssFault::Kind::kObstruction:
-        cond.blocked_below_deg = std::max(cond.blocked_below_deg, f.elevation_deg);
-        break;
-      case GnssFault::Kind::kStep:
-        in.offset_N_m += f.offset_N_m;
-        break;
-      case GnssFault::Kind::kMultipath:
-        in.multipath_sigma_m = std::hypot(in.multipath_sigma_m, f.sigma_m);
-        break;
-      case GnssFault::Kind::kOverload:
-        overload_ = true;
-        break;
-      case GnssFault::Kind::kDataGap:
-        data_gap = true;
-        break;
-    }
-  }
+  const ActiveFaults active = ApplyFaults(config_.faults, t, cond, in);
+  overload_ = active.overload;
+  const bool data_gap = active.data_gap;
   const double gps_s = static_cast<double>(e.gps.week) * 604800.0 + e.gps.tow_s();
   e.sats = constellation_.Sky(gps_s, truth.lat_deg, truth.lon_deg, truth.height_m, cond);
   int usable = 0;
   for (const auto& s : e.sats) usable += s.used ? 1 : 0;
   e.status = fix_state_.Step(t, usable, cfg.fix_mode());
   const bool valid = e.status.fix_type != FixType::kNoFix;
-  for (auto& s : e.sats) {
-    s.orbit_known = e.status.orbit_known;
-    if (!valid) {
-      s.used = false;
-      if (s.tracked) s.quality = 4;
-    }
-    if (s.used) s.pr_res_m = Residual(s.svid, gps_s);
-  }
+  MarkSatellites(e.sats, e.status.orbit_known, valid, gps_s);
   const Dops dops = ComputeDops(e.sats);
 
   // the solution (the error processes advance every epoch, with or without a fix)
@@ -157,10 +194,8 @@ void Neo5mDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
     in.multipath_sigma_m = std::hypot(in.multipath_sigma_m, profile_.rtk_float_sigma_m);
   GnssFix fix = model_.Calc(truth, unix_ns, dt_s, in);
   fix.fix_type = e.status.fix_type;
-  e.sbas_corrections = false;
-  if (config_.sbas_corrections && cfg.sbas_used_for_corrections()) {
-    for (const auto& s : e.sats) e.sbas_corrections = e.sbas_corrections || (s.sbas && s.tracked);
-  }
+  e.sbas_corrections =
+      config_.sbas_corrections && cfg.sbas_used_for_corrections() && AnySbasTracked(e.sats);
   if (profile_.rtk)
     fix.quality = rtk_float ? FixQuality::kRtkFloat : FixQuality::kRtkFixed;
   else
@@ -177,13 +212,7 @@ void Neo5mDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
     fix.lat_deg = last.lat_deg, fix.lon_deg = last.lon_deg, fix.height_m = last.height_m;
   }
   e.fix = fix;
-  std::vector<const SatelliteView*> by_channel;
-  for (const auto& s : e.sats) {
-    if (s.used) by_channel.push_back(&s);
-  }
-  std::sort(by_channel.begin(), by_channel.end(),
-            [](auto* a, auto* b) { return a->channel < b->channel; });
-  for (const auto* s : by_channel) e.used_in_channel_order.push_back(s->nmea_id());
+  e.used_in_channel_order = UsedInChannelOrder(e.sats);
 
   // receiver clock
   clk_bias_ns_ += clk_drift_nsps_ * dt_s;

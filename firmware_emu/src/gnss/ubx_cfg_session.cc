@@ -144,161 +144,209 @@ void UbxCfgSession::CopySections(const ReceiverSettings& from, ReceiverSettings&
   }
 }
 
+// The replies to one CFG message, in order: polled messages and the ACK-ACK or ACK-NAK.
+class CfgReplies {
+ public:
+  explicit CfgReplies(std::uint8_t id) : id_(id) {}
+  void Message(const std::vector<std::uint8_t>& p) {
+    out_.push_back({Frame(kCfg, id_, p), MessageName(kCfg, id_)});
+  }
+  void Acknowledge(bool ok) {
+    out_.push_back({Ack(ok, kCfg, id_), ok ? "UBX-ACK-ACK" : "UBX-ACK-NAK"});
+  }
+  template <typename Array>
+  void PollArray(const Array& arr) {
+    Message(std::vector<std::uint8_t>(arr.begin(), arr.end()));
+    Acknowledge(true);
+  }
+  std::vector<Reply> Take() { return std::move(out_); }
+
+ private:
+  std::uint8_t id_;
+  std::vector<Reply> out_;
+};
+
+namespace {
+
+// A fixed-size CFG payload the receiver keeps as it arrived: polled with an empty payload, set with
+// one of its size when `valid`.
+template <std::size_t N>
+void PollOrSet(std::array<std::uint8_t, N>& kept, const std::vector<std::uint8_t>& payload,
+               bool valid, CfgReplies& out) {
+  if (payload.empty()) return out.PollArray(kept);
+  if (payload.size() != N || !valid) return out.Acknowledge(false);
+  std::copy(payload.begin(), payload.end(), kept.begin());
+  out.Acknowledge(true);
+}
+
+}  // namespace
+
+void UbxCfgSession::HandlePrt(const std::vector<std::uint8_t>& payload, int port_id,
+                              CfgReplies& out) {
+  const Reader r(payload);
+  const std::size_t n = payload.size();
+  if (n == 0 || n == 1) {
+    const int pid = n == 0 ? port_id : r.U1(0);
+    if (pid >= kNumPorts) return out.Acknowledge(false);
+    out.Message(PortBlock(pid));
+    return out.Acknowledge(true);
+  }
+  if (n % 20 != 0) return out.Acknowledge(false);
+  for (std::size_t off = 0; off < n; off += 20) {
+    const int pid = r.U1(off);
+    const bool uart = pid == 1 || pid == 2;
+    if (pid >= kNumPorts || (uart && !IsSupportedBaud(r.U4(off + 8)))) {
+      return out.Acknowledge(false);
+    }
+  }
+  for (std::size_t off = 0; off < n; off += 20) {
+    PortSettings& p = current_.ports[r.U1(off)];
+    if (r.U1(off) == 1 || r.U1(off) == 2) {
+      p.mode = r.U4(off + 4);
+      p.baud = r.U4(off + 8);
+    }
+    p.in_mask = r.U2(off + 12) & 0x07;
+    p.out_mask = r.U2(off + 14) & 0x03;  // RTCM output does not exist on u-blox 5
+  }
+  out.Acknowledge(true);
+}
+
+void UbxCfgSession::HandleMsg(const std::vector<std::uint8_t>& payload, int port_id,
+                              CfgReplies& out) {
+  const Reader r(payload);
+  const std::size_t n = payload.size();
+  if (n < 2 || (n != 2 && n != 3 && n != 8)) return out.Acknowledge(false);
+  const std::uint8_t cls = r.U1(0), mid = r.U1(1);
+  if (!Known(cls, mid)) return out.Acknowledge(false);
+  if (n == 2) {
+    Writer w;
+    w.U1(cls).U1(mid);
+    const auto it = current_.rates.find(Key(cls, mid));
+    for (std::size_t k = 0; k < 6; ++k) w.U1(it == current_.rates.end() ? 0 : it->second[k]);
+    out.Message(w.bytes());
+    return out.Acknowledge(true);
+  }
+  if (n == 3)
+    current_.SetRate(cls, mid, port_id, r.U1(2));
+  else
+    for (int k = 0; k < 6; ++k)
+      current_.SetRate(cls, mid, k, r.U1(2 + static_cast<std::size_t>(k)));
+  out.Acknowledge(true);
+}
+
+void UbxCfgSession::HandleRate(const std::vector<std::uint8_t>& payload, CfgReplies& out) {
+  const Reader r(payload);
+  const std::size_t n = payload.size();
+  if (n == 0) {
+    Writer w;
+    w.U2(current_.meas_rate_ms).U2(current_.nav_rate).U2(current_.time_ref);
+    out.Message(w.bytes());
+    return out.Acknowledge(true);
+  }
+  const std::uint16_t meas = r.U2(0), nav = r.U2(2), tref = r.U2(4);
+  const double min_period_ms = 1000.0 / max_rate_hz_ - 1e-9;
+  if (n != 6 || nav != 1 || tref > 1 || meas < min_period_ms) return out.Acknowledge(false);
+  current_.meas_rate_ms = meas;
+  current_.time_ref = tref;
+  out.Acknowledge(true);
+}
+
+void UbxCfgSession::HandleNav5(const std::vector<std::uint8_t>& payload, CfgReplies& out) {
+  const Reader r(payload);
+  const std::size_t n = payload.size();
+  if (n == 0) return out.PollArray(current_.nav5);
+  if (n != 36) return out.Acknowledge(false);
+  const std::uint16_t mask = r.U2(0);
+  const std::uint8_t dyn = r.U1(2), fix_mode = r.U1(3);
+  if ((mask & 0x01) && (dyn == 1 || dyn > 8)) return out.Acknowledge(false);
+  if ((mask & 0x04) && (fix_mode < 1 || fix_mode > 3)) return out.Acknowledge(false);
+  auto& s = current_.nav5;
+  const auto copy = [&](std::size_t from, std::size_t len) {
+    for (std::size_t k = from; k < from + len; ++k) s[k] = payload[k];
+  };
+  if (mask & 0x01) copy(2, 1);
+  if (mask & 0x02) copy(12, 1);
+  if (mask & 0x04) copy(3, 9);
+  if (mask & 0x08) copy(13, 1);
+  if (mask & 0x10) copy(14, 2), copy(18, 2);
+  if (mask & 0x20) copy(16, 2), copy(20, 2);
+  if (mask & 0x40) copy(22, 1);
+  out.Acknowledge(true);
+}
+
+void UbxCfgSession::HandleRst(const std::vector<std::uint8_t>& payload, CfgReplies& out,
+                              CfgEffects& fx) {
+  const Reader r(payload);
+  if (payload.size() != 4) return out.Acknowledge(false);
+  const std::uint16_t bbr = r.U2(0);
+  const std::uint8_t mode = r.U1(2);
+  if (mode != 0 && mode != 1 && mode != 2 && mode != 4 && mode != 8 && mode != 9)
+    return out.Acknowledge(false);
+  // u-blox 5 firmware acknowledges before resetting (later firmware does not)
+  out.Acknowledge(true);
+  if (mode == 8) {
+    fx.gps_stop = true;
+    return;
+  }
+  if (mode == 9) {
+    fx.gps_start = true;
+    return;
+  }
+  // navBbrMask: nothing cleared = hot, everything = cold, anything else (ephemeris …) = warm
+  fx.restart = bbr == 0x0000   ? StartKind::kHot
+               : bbr == 0xFFFF ? StartKind::kCold
+                               : StartKind::kWarm;
+  fx.hardware_reset = mode != 2;
+}
+
 std::vector<Reply> UbxCfgSession::Handle(std::uint8_t id, const std::vector<std::uint8_t>& payload,
                                          int port_id, CfgEffects& fx) {
-  std::vector<Reply> out;
+  CfgReplies out(id);
   const Reader r(payload);
-  const auto reply = [&](std::uint8_t reply_id, const std::vector<std::uint8_t>& p) {
-    out.push_back({Frame(kCfg, reply_id, p), MessageName(kCfg, reply_id)});
-  };
-  const auto ack = [&](bool ok) {
-    out.push_back({Ack(ok, kCfg, id), ok ? "UBX-ACK-ACK" : "UBX-ACK-NAK"});
-  };
-  const auto poll_array = [&](const auto& arr) {
-    reply(id, std::vector<std::uint8_t>(arr.begin(), arr.end()));
-    ack(true);
-  };
   const std::size_t n = payload.size();
   switch (id) {
     case kPrt:
-      if (n == 0 || n == 1) {
-        const int pid = n == 0 ? port_id : r.U1(0);
-        if (pid >= kNumPorts) return ack(false), out;
-        reply(id, PortBlock(pid));
-        ack(true);
-        return out;
-      }
-      if (n % 20 != 0) return ack(false), out;
-      for (std::size_t off = 0; off < n; off += 20) {
-        const int pid = r.U1(off);
-        const bool uart = pid == 1 || pid == 2;
-        if (pid >= kNumPorts || (uart && !IsSupportedBaud(r.U4(off + 8)))) return ack(false), out;
-      }
-      for (std::size_t off = 0; off < n; off += 20) {
-        PortSettings& p = current_.ports[r.U1(off)];
-        if (r.U1(off) == 1 || r.U1(off) == 2) {
-          p.mode = r.U4(off + 4);
-          p.baud = r.U4(off + 8);
-        }
-        p.in_mask = r.U2(off + 12) & 0x07;
-        p.out_mask = r.U2(off + 14) & 0x03;  // RTCM output does not exist on u-blox 5
-      }
-      ack(true);
-      return out;
-    case kMsg: {
-      if (n < 2 || (n != 2 && n != 3 && n != 8)) return ack(false), out;
-      const std::uint8_t cls = r.U1(0), mid = r.U1(1);
-      if (!Known(cls, mid)) return ack(false), out;
-      if (n == 2) {
-        Writer w;
-        w.U1(cls).U1(mid);
-        const auto it = current_.rates.find(Key(cls, mid));
-        for (std::size_t k = 0; k < 6; ++k) w.U1(it == current_.rates.end() ? 0 : it->second[k]);
-        reply(id, w.bytes());
-        ack(true);
-        return out;
-      }
-      if (n == 3)
-        current_.SetRate(cls, mid, port_id, r.U1(2));
-      else
-        for (int k = 0; k < 6; ++k)
-          current_.SetRate(cls, mid, k, r.U1(2 + static_cast<std::size_t>(k)));
-      ack(true);
-      return out;
-    }
-    case kRate: {
-      if (n == 0) {
-        Writer w;
-        w.U2(current_.meas_rate_ms).U2(current_.nav_rate).U2(current_.time_ref);
-        reply(id, w.bytes());
-        ack(true);
-        return out;
-      }
-      const std::uint16_t meas = r.U2(0), nav = r.U2(2), tref = r.U2(4);
-      const double min_period_ms = 1000.0 / max_rate_hz_ - 1e-9;
-      if (n != 6 || nav != 1 || tref > 1 || meas < min_period_ms) return ack(false), out;
-      current_.meas_rate_ms = meas;
-      current_.time_ref = tref;
-      ack(true);
-      return out;
-    }
-    case kNav5: {
-      if (n == 0) return poll_array(current_.nav5), out;
-      if (n != 36) return ack(false), out;
-      const std::uint16_t mask = r.U2(0);
-      const std::uint8_t dyn = r.U1(2), fix_mode = r.U1(3);
-      if ((mask & 0x01) && (dyn == 1 || dyn > 8)) return ack(false), out;
-      if ((mask & 0x04) && (fix_mode < 1 || fix_mode > 3)) return ack(false), out;
-      auto& s = current_.nav5;
-      const auto copy = [&](std::size_t from, std::size_t len) {
-        for (std::size_t k = from; k < from + len; ++k) s[k] = payload[k];
-      };
-      if (mask & 0x01) copy(2, 1);
-      if (mask & 0x02) copy(12, 1);
-      if (mask & 0x04) copy(3, 9);
-      if (mask & 0x08) copy(13, 1);
-      if (mask & 0x10) copy(14, 2), copy(18, 2);
-      if (mask & 0x20) copy(16, 2), copy(20, 2);
-      if (mask & 0x40) copy(22, 1);
-      ack(true);
-      return out;
-    }
+      HandlePrt(payload, port_id, out);
+      break;
+    case kMsg:
+      HandleMsg(payload, port_id, out);
+      break;
+    case kRate:
+      HandleRate(payload, out);
+      break;
+    case kNav5:
+      HandleNav5(payload, out);
+      break;
     case kSbas:
-      if (n == 0) return poll_array(current_.sbas), out;
-      if (n != 8 || r.U1(2) > 3) return ack(false), out;
-      std::copy(payload.begin(), payload.end(), current_.sbas.begin());
-      ack(true);
-      return out;
+      PollOrSet(current_.sbas, payload, r.U1(2) <= 3, out);
+      break;
     case kTp: {
-      if (n == 0) return poll_array(current_.tp), out;
       const int status = r.I1(8);
-      if (n != 20 || status < -1 || status > 1 || r.U1(9) > 2 || r.U4(4) > r.U4(0))
-        return ack(false), out;
-      std::copy(payload.begin(), payload.end(), current_.tp.begin());
-      ack(true);
-      return out;
+      PollOrSet(current_.tp, payload,
+                status >= -1 && status <= 1 && r.U1(9) <= 2 && r.U4(4) <= r.U4(0), out);
+      break;
     }
     case kNmea:
-      if (n == 0) return poll_array(current_.nmea), out;
-      if (n != 4 || (r.U1(1) != 0x23 && r.U1(1) != 0x21)) return ack(false), out;
-      std::copy(payload.begin(), payload.end(), current_.nmea.begin());
-      ack(true);
-      return out;
-    case kCfgCfg: {
-      if (n != 12 && n != 13) return ack(false), out;
+      PollOrSet(current_.nmea, payload, r.U1(1) == 0x23 || r.U1(1) == 0x21, out);
+      break;
+    case kCfgCfg:
+      if (n != 12 && n != 13) {
+        out.Acknowledge(false);
+        break;
+      }
       CopySections(defaults_, current_, r.U4(0));  // clear
       CopySections(current_, saved_, r.U4(4));     // save
       CopySections(saved_, current_, r.U4(8));     // load
-      ack(true);
-      return out;
-    }
-    case kRst: {
-      if (n != 4) return ack(false), out;
-      const std::uint16_t bbr = r.U2(0);
-      const std::uint8_t mode = r.U1(2);
-      if (mode != 0 && mode != 1 && mode != 2 && mode != 4 && mode != 8 && mode != 9)
-        return ack(false), out;
-      // u-blox 5 firmware acknowledges before resetting (later firmware does not)
-      ack(true);
-      if (mode == 8) {
-        fx.gps_stop = true;
-        return out;
-      }
-      if (mode == 9) {
-        fx.gps_start = true;
-        return out;
-      }
-      // navBbrMask: nothing cleared = hot, everything = cold, anything else (ephemeris …) = warm
-      fx.restart = bbr == 0x0000   ? StartKind::kHot
-                   : bbr == 0xFFFF ? StartKind::kCold
-                                   : StartKind::kWarm;
-      fx.hardware_reset = mode != 2;
-      return out;
-    }
+      out.Acknowledge(true);
+      break;
+    case kRst:
+      HandleRst(payload, out, fx);
+      break;
     default:
-      ack(false);  // a CFG message this receiver does not have
-      return out;
+      out.Acknowledge(false);  // a CFG message this receiver does not have
+      break;
   }
+  return out.Take();
 }
 
 bool UbxCfgSession::HandlePubxSet(const std::string& body) {

@@ -50,6 +50,72 @@ std::uint64_t AccCm(const NavEpoch& e, double acc_m) {
   return e.fix.valid() ? RoundU(acc_m * 100.0) : kUnknownAcc;
 }
 
+// NAV-SOL: ECEF position and velocity, fix type and flags.
+void WriteNavSol(Writer& w, const NavEpoch& e) {
+  const GnssFix& f = e.fix;
+  const Eigen::Vector3d p = EcefPos(e) * 100.0, v = EcefVel(e) * 100.0;
+  w.U4(Itow(e))
+      .I4(Ftow(e))
+      .I2(e.status.time_known ? e.gps.week : 0)
+      .U1(static_cast<std::uint8_t>(f.fix_type))
+      .U1(FixFlags(e));
+  w.I4(Round(p.x())).I4(Round(p.y())).I4(Round(p.z())).U4(AccCm(e, f.p_acc_m));
+  w.I4(Round(v.x())).I4(Round(v.y())).I4(Round(v.z())).U4(AccCm(e, f.s_acc_mps));
+  w.U2(f.valid() ? Dop(f.pdop) : 9999)
+      .U1(0)
+      .U1(static_cast<std::uint64_t>(f.valid() ? f.num_sv : 0))
+      .U4(0);
+}
+
+// NAV-VELNED: NED velocity, speed, ground speed and course.
+void WriteNavVelNed(Writer& w, const NavEpoch& e) {
+  const GnssFix& f = e.fix;
+  const bool k = f.valid();
+  const double gs = k ? f.ground_speed_mps() : 0.0;
+  const double sp = k ? std::sqrt(gs * gs + f.vel_d_mps * f.vel_d_mps) : 0.0;
+  w.U4(Itow(e))
+      .I4(k ? Round(f.vel_n_mps * 100) : 0)
+      .I4(k ? Round(f.vel_e_mps * 100) : 0)
+      .I4(k ? Round(f.vel_d_mps * 100) : 0);
+  w.U4(RoundU(sp * 100)).U4(RoundU(gs * 100)).I4(k ? Round(f.course_deg() * 1e5) : 0);
+  w.U4(AccCm(e, f.s_acc_mps)).U4(k ? RoundU(f.heading_acc_deg * 1e5) : RoundU(180.0 * 1e5));
+}
+
+// NAV-TIMEUTC: the UTC date and time of the epoch.
+void WriteNavTimeUtc(Writer& w, const NavEpoch& e) {
+  const GnssFix& f = e.fix;
+  const UtcTime u = UtcFromUnixNs(f.unix_ns);
+  const std::uint8_t valid = e.status.time_known ? (0x03 | (e.leap_known ? 0x04 : 0)) : 0;
+  w.U4(Itow(e)).U4(RoundU(e.t_acc_ns)).I4(u.nanosecond).U2(static_cast<std::uint64_t>(u.year));
+  w.U1(static_cast<std::uint64_t>(u.month))
+      .U1(static_cast<std::uint64_t>(u.day))
+      .U1(static_cast<std::uint64_t>(u.hour));
+  w.U1(static_cast<std::uint64_t>(u.minute)).U1(static_cast<std::uint64_t>(u.second)).U1(valid);
+}
+
+// NAV-SVINFO: one block per satellite with a known orbit or tracked.
+void WriteNavSvInfo(Writer& w, const NavEpoch& e) {
+  const GnssFix& f = e.fix;
+  std::vector<const SatelliteView*> list;
+  for (const auto& s : e.sats) {
+    if (s.orbit_known || s.tracked) list.push_back(&s);
+  }
+  w.U4(Itow(e)).U1(list.size()).U1(1 /* chipGen: u-blox 5 */).U2(0);
+  for (const SatelliteView* s : list) {
+    std::uint8_t flags = 0;
+    if (s->used && f.valid()) flags |= 0x01;
+    if (s->used && f.valid() && e.sbas_corrections) flags |= 0x02;
+    if (s->orbit_known) flags |= 0x04;
+    if (s->orbit_known && s->tracked) flags |= 0x08;
+    w.U1(static_cast<std::uint64_t>(s->channel))
+        .U1(static_cast<std::uint64_t>(s->svid))
+        .U1(flags)
+        .U1(static_cast<std::uint64_t>(s->quality));
+    w.U1(static_cast<std::uint64_t>(s->cno_dbhz)).I1(s->orbit_known ? std::lround(s->elev_deg) : 0);
+    w.I2(s->orbit_known ? std::lround(s->azim_deg) % 360 : 0).I4(Round(s->pr_res_m * 100));
+  }
+}
+
 }  // namespace
 
 std::string MessageName(std::uint8_t cls, std::uint8_t id) {
@@ -129,53 +195,25 @@ std::vector<std::uint8_t> EncodeNav(std::uint8_t id, const NavEpoch& e) {
       else
         for (int i = 0; i < 7; ++i) w.U2(9999);
       break;
-    case kNavSol: {  // len 52
-      const Eigen::Vector3d p = EcefPos(e) * 100.0, v = EcefVel(e) * 100.0;
-      w.U4(Itow(e))
-          .I4(Ftow(e))
-          .I2(e.status.time_known ? e.gps.week : 0)
-          .U1(static_cast<std::uint8_t>(f.fix_type))
-          .U1(FixFlags(e));
-      w.I4(Round(p.x())).I4(Round(p.y())).I4(Round(p.z())).U4(AccCm(e, f.p_acc_m));
-      w.I4(Round(v.x())).I4(Round(v.y())).I4(Round(v.z())).U4(AccCm(e, f.s_acc_mps));
-      w.U2(f.valid() ? Dop(f.pdop) : 9999)
-          .U1(0)
-          .U1(static_cast<std::uint64_t>(f.valid() ? f.num_sv : 0))
-          .U4(0);
+    case kNavSol:  // len 52
+      WriteNavSol(w, e);
       break;
-    }
     case kNavVelEcef: {  // len 20
       const Eigen::Vector3d v = EcefVel(e) * 100.0;
       w.U4(Itow(e)).I4(Round(v.x())).I4(Round(v.y())).I4(Round(v.z())).U4(AccCm(e, f.s_acc_mps));
       break;
     }
-    case kNavVelNed: {  // len 36
-      const bool k = f.valid();
-      const double gs = k ? f.ground_speed_mps() : 0.0;
-      const double sp = k ? std::sqrt(gs * gs + f.vel_d_mps * f.vel_d_mps) : 0.0;
-      w.U4(Itow(e))
-          .I4(k ? Round(f.vel_n_mps * 100) : 0)
-          .I4(k ? Round(f.vel_e_mps * 100) : 0)
-          .I4(k ? Round(f.vel_d_mps * 100) : 0);
-      w.U4(RoundU(sp * 100)).U4(RoundU(gs * 100)).I4(k ? Round(f.course_deg() * 1e5) : 0);
-      w.U4(AccCm(e, f.s_acc_mps)).U4(k ? RoundU(f.heading_acc_deg * 1e5) : RoundU(180.0 * 1e5));
+    case kNavVelNed:  // len 36
+      WriteNavVelNed(w, e);
       break;
-    }
     case kNavTimeGps: {  // len 16
       const std::uint8_t valid = e.status.time_known ? (0x03 | (e.leap_known ? 0x04 : 0)) : 0;
       w.U4(Itow(e)).I4(Ftow(e)).I2(e.gps.week).I1(e.leap_s).U1(valid).U4(RoundU(e.t_acc_ns));
       break;
     }
-    case kNavTimeUtc: {  // len 20
-      const UtcTime u = UtcFromUnixNs(f.unix_ns);
-      const std::uint8_t valid = e.status.time_known ? (0x03 | (e.leap_known ? 0x04 : 0)) : 0;
-      w.U4(Itow(e)).U4(RoundU(e.t_acc_ns)).I4(u.nanosecond).U2(static_cast<std::uint64_t>(u.year));
-      w.U1(static_cast<std::uint64_t>(u.month))
-          .U1(static_cast<std::uint64_t>(u.day))
-          .U1(static_cast<std::uint64_t>(u.hour));
-      w.U1(static_cast<std::uint64_t>(u.minute)).U1(static_cast<std::uint64_t>(u.second)).U1(valid);
+    case kNavTimeUtc:  // len 20
+      WriteNavTimeUtc(w, e);
       break;
-    }
     case kNavClock:  // len 20
       w.U4(Itow(e))
           .I4(Round(e.clk_bias_ns))
@@ -183,28 +221,9 @@ std::vector<std::uint8_t> EncodeNav(std::uint8_t id, const NavEpoch& e) {
           .U4(RoundU(e.t_acc_ns))
           .U4(RoundU(e.f_acc_psps));
       break;
-    case kNavSvInfo: {  // len 8 + 12·numCh
-      std::vector<const SatelliteView*> list;
-      for (const auto& s : e.sats) {
-        if (s.orbit_known || s.tracked) list.push_back(&s);
-      }
-      w.U4(Itow(e)).U1(list.size()).U1(1 /* chipGen: u-blox 5 */).U2(0);
-      for (const SatelliteView* s : list) {
-        std::uint8_t flags = 0;
-        if (s->used && f.valid()) flags |= 0x01;
-        if (s->used && f.valid() && e.sbas_corrections) flags |= 0x02;
-        if (s->orbit_known) flags |= 0x04;
-        if (s->orbit_known && s->tracked) flags |= 0x08;
-        w.U1(static_cast<std::uint64_t>(s->channel))
-            .U1(static_cast<std::uint64_t>(s->svid))
-            .U1(flags)
-            .U1(static_cast<std::uint64_t>(s->quality));
-        w.U1(static_cast<std::uint64_t>(s->cno_dbhz))
-            .I1(s->orbit_known ? std::lround(s->elev_deg) : 0);
-        w.I2(s->orbit_known ? std::lround(s->azim_deg) % 360 : 0).I4(Round(s->pr_res_m * 100));
-      }
+    case kNavSvInfo:  // len 8 + 12·numCh
+      WriteNavSvInfo(w, e);
       break;
-    }
     default:
       break;
   }

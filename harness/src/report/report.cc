@@ -32,6 +32,30 @@ nlohmann::json AccuracyJson(const AccuracyMetrics& m) {
   return j;
 }
 
+// Each outage's figures (null where no estimate fell inside it) and its error growth.
+nlohmann::json OutagesJson(const std::vector<OutageMetrics>& outages) {
+  nlohmann::json a = nlohmann::json::array();
+  for (const auto& o : outages) {
+    nlohmann::json growth = nlohmann::json::array();
+    for (const auto& [h, e] : o.growth)
+      growth.push_back({{"t_since_start_s", h}, {"horizontal_error_m", e}});
+    a.push_back({{"start_s", o.start_s},
+                 {"end_s", o.end_s},
+                 {"samples", o.samples},
+                 {"max_horizontal_error_m",
+                  o.samples ? nlohmann::json(o.max_horizontal_error_m) : nlohmann::json(nullptr)},
+                 {"max_east_error_m",
+                  o.samples ? nlohmann::json(o.max_abs_error_enu_m.x()) : nlohmann::json(nullptr)},
+                 {"max_north_error_m",
+                  o.samples ? nlohmann::json(o.max_abs_error_enu_m.y()) : nlohmann::json(nullptr)},
+                 {"max_up_error_m",
+                  o.samples ? nlohmann::json(o.max_abs_error_enu_m.z()) : nlohmann::json(nullptr)},
+                 {"reconvergence_time_s", OptionalJson(o.reconvergence_time_s)},
+                 {"error_growth", growth}});
+  }
+  return a;
+}
+
 std::ofstream OpenOut(const std::string& path) {
   std::ofstream out(path);
   if (!out) throw std::runtime_error("cannot write " + path);
@@ -184,26 +208,7 @@ void WriteReportJson(const RunReport& r, const std::string& path) {
   } else {
     m["latency_ms"] = nullptr;  // measured in real-time mode only
   }
-  m["outages"] = nlohmann::json::array();
-  for (const auto& o : r.outages) {
-    nlohmann::json growth = nlohmann::json::array();
-    for (const auto& [h, e] : o.growth)
-      growth.push_back({{"t_since_start_s", h}, {"horizontal_error_m", e}});
-    m["outages"].push_back(
-        {{"start_s", o.start_s},
-         {"end_s", o.end_s},
-         {"samples", o.samples},
-         {"max_horizontal_error_m",
-          o.samples ? nlohmann::json(o.max_horizontal_error_m) : nlohmann::json(nullptr)},
-         {"max_east_error_m",
-          o.samples ? nlohmann::json(o.max_abs_error_enu_m.x()) : nlohmann::json(nullptr)},
-         {"max_north_error_m",
-          o.samples ? nlohmann::json(o.max_abs_error_enu_m.y()) : nlohmann::json(nullptr)},
-         {"max_up_error_m",
-          o.samples ? nlohmann::json(o.max_abs_error_enu_m.z()) : nlohmann::json(nullptr)},
-         {"reconvergence_time_s", OptionalJson(o.reconvergence_time_s)},
-         {"error_growth", growth}});
-  }
+  m["outages"] = OutagesJson(r.outages);
   j["metrics"] = m;
   j["baselines"] = AccuracyJson(r.baselines);
   // every criterion metric by name (null when it cannot be computed), for suites and reference

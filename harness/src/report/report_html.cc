@@ -136,6 +136,79 @@ std::vector<std::string> WritePlots(const RunReport& r, const ReportSeries& s,
   return files;
 }
 
+namespace {
+
+// The GNSS outages table: per outage its maximum error, error growth and reconvergence.
+void AppendOutagesHtml(std::string& h, const RunReport& r) {
+  char buf[512];
+  if (!r.outages.empty()) {
+    h += "<h2>GNSS outages</h2>\n<table><tr><th>start (s)</th><th>end (s)</th><th>max horizontal "
+         "error</th>"
+         "<th>error growth</th><th>reconvergence time</th></tr>\n";
+    for (const auto& o : r.outages) {
+      std::string growth;
+      for (const auto& [t, e] : o.growth) {
+        std::snprintf(buf, sizeof buf, "%s%.0f s: %.2f m", growth.empty() ? "" : ", ", t, e);
+        growth += buf;
+      }
+      std::snprintf(buf, sizeof buf, "<tr><td>%.1f</td><td>%.1f</td><td>%s</td>", o.start_s,
+                    o.end_s,
+                    o.samples ? Fmt(o.max_horizontal_error_m, " m").c_str() : "no solutions");
+      h += buf;
+      h += "<td>" + growth + "</td><td>" + Fmt(o.reconvergence_time_s, " s") + "</td></tr>\n";
+    }
+    h += "</table>\n";
+  }
+}
+
+// The fault timeline and the table of what was injected, when, and the recovery.
+void AppendFaultsHtml(std::string& h, const RunReport& r) {
+  char buf[512];
+  if (!r.faults.empty()) {
+    h += "<h2>Fault timeline</h2>\n<ul>\n";
+    for (const auto& [kind, when] : r.faults)
+      h += "<li>" + XmlEscape(kind) + ": " + XmlEscape(when) + "</li>\n";
+    std::snprintf(buf, sizeof buf,
+                  "</ul><p>Injected: %llu messages dropped, %llu bytes corrupted.</p>\n",
+                  static_cast<unsigned long long>(r.fault_messages_dropped),
+                  static_cast<unsigned long long>(r.fault_bytes_corrupted));
+    h += buf;
+    h += "<table><tr><th>fault</th><th>link</th><th>window s</th><th>injected</th><th>first–last "
+         "s</th>"
+         "<th>recovery</th></tr>\n";
+    for (const FaultInjection& f : r.fault_injections) {
+      std::snprintf(buf, sizeof buf,
+                    "<tr><td>%s</td><td>%s</td><td>%.1f–%.1f</td><td>%llu "
+                    "%s</td><td>%s</td><td>%s</td></tr>\n",
+                    XmlEscape(f.kind).c_str(), f.link.empty() ? "all" : XmlEscape(f.link).c_str(),
+                    f.start_s, f.end_s, static_cast<unsigned long long>(f.count),
+                    XmlEscape(f.unit).c_str(),
+                    f.times_s.empty()
+                        ? "–"
+                        : (Fmt(f.times_s.front(), "") + "–" + Fmt(f.times_s.back(), "")).c_str(),
+                    Fmt(f.recovery_time_s, " s").c_str());
+      h += buf;
+    }
+    h += "</table>\n";
+  }
+}
+
+// navd's health: the flags it raised and its non-zero counters.
+void AppendHealthHtml(std::string& h, const RunReport& r) {
+  if (r.estimator_health.present) {
+    h += "<h2>Estimator health (navd)</h2>\n<p>Flags raised:";
+    for (const std::string& f : r.estimator_health.flags_seen) h += " " + XmlEscape(f);
+    if (r.estimator_health.flags_seen.empty()) h += " none";
+    h += "</p>\n<p>Counters:";
+    for (const auto& [k, v] : r.estimator_health.counters) {
+      if (v != 0) h += " " + XmlEscape(k) + "=" + std::to_string(static_cast<long long>(v));
+    }
+    h += "</p>\n";
+  }
+}
+
+}  // namespace
+
 void WriteReportHtml(const RunReport& r, const ReportSeries& s, const std::string& dir) {
   const std::vector<std::string> plots = WritePlots(r, s, dir);
   std::string h;
@@ -202,61 +275,9 @@ void WriteReportHtml(const RunReport& r, const ReportSeries& s, const std::strin
     h += buf;
   }
   h += "</table>\n";
-  if (!r.outages.empty()) {
-    h += "<h2>GNSS outages</h2>\n<table><tr><th>start (s)</th><th>end (s)</th><th>max horizontal "
-         "error</th>"
-         "<th>error growth</th><th>reconvergence time</th></tr>\n";
-    for (const auto& o : r.outages) {
-      std::string growth;
-      for (const auto& [t, e] : o.growth) {
-        std::snprintf(buf, sizeof buf, "%s%.0f s: %.2f m", growth.empty() ? "" : ", ", t, e);
-        growth += buf;
-      }
-      std::snprintf(buf, sizeof buf, "<tr><td>%.1f</td><td>%.1f</td><td>%s</td>", o.start_s,
-                    o.end_s,
-                    o.samples ? Fmt(o.max_horizontal_error_m, " m").c_str() : "no solutions");
-      h += buf;
-      h += "<td>" + growth + "</td><td>" + Fmt(o.reconvergence_time_s, " s") + "</td></tr>\n";
-    }
-    h += "</table>\n";
-  }
-  if (!r.faults.empty()) {
-    h += "<h2>Fault timeline</h2>\n<ul>\n";
-    for (const auto& [kind, when] : r.faults)
-      h += "<li>" + XmlEscape(kind) + ": " + XmlEscape(when) + "</li>\n";
-    std::snprintf(buf, sizeof buf,
-                  "</ul><p>Injected: %llu messages dropped, %llu bytes corrupted.</p>\n",
-                  static_cast<unsigned long long>(r.fault_messages_dropped),
-                  static_cast<unsigned long long>(r.fault_bytes_corrupted));
-    h += buf;
-    h += "<table><tr><th>fault</th><th>link</th><th>window s</th><th>injected</th><th>first–last "
-         "s</th>"
-         "<th>recovery</th></tr>\n";
-    for (const FaultInjection& f : r.fault_injections) {
-      std::snprintf(buf, sizeof buf,
-                    "<tr><td>%s</td><td>%s</td><td>%.1f–%.1f</td><td>%llu "
-                    "%s</td><td>%s</td><td>%s</td></tr>\n",
-                    XmlEscape(f.kind).c_str(), f.link.empty() ? "all" : XmlEscape(f.link).c_str(),
-                    f.start_s, f.end_s, static_cast<unsigned long long>(f.count),
-                    XmlEscape(f.unit).c_str(),
-                    f.times_s.empty()
-                        ? "–"
-                        : (Fmt(f.times_s.front(), "") + "–" + Fmt(f.times_s.back(), "")).c_str(),
-                    Fmt(f.recovery_time_s, " s").c_str());
-      h += buf;
-    }
-    h += "</table>\n";
-  }
-  if (r.estimator_health.present) {
-    h += "<h2>Estimator health (navd)</h2>\n<p>Flags raised:";
-    for (const std::string& f : r.estimator_health.flags_seen) h += " " + XmlEscape(f);
-    if (r.estimator_health.flags_seen.empty()) h += " none";
-    h += "</p>\n<p>Counters:";
-    for (const auto& [k, v] : r.estimator_health.counters) {
-      if (v != 0) h += " " + XmlEscape(k) + "=" + std::to_string(static_cast<long long>(v));
-    }
-    h += "</p>\n";
-  }
+  AppendOutagesHtml(h, r);
+  AppendFaultsHtml(h, r);
+  AppendHealthHtml(h, r);
   h += "<h2>Plots</h2>\n";
   for (const auto& p : plots) h += "<p><img src=\"" + p + "\" alt=\"" + p + "\"></p>\n";
   h += "<h2>Artefacts</h2>\n<ul>";

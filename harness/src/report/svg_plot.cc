@@ -41,7 +41,19 @@ std::vector<double> NiceTicks(double lo, double hi, int target_count) {
   return t;
 }
 
-std::string RenderSvg(const PlotChart& c) {
+namespace {
+
+// The plot area in pixels (margins left and top, width and height) and the data range it shows.
+struct PlotFrame {
+  double ml, mt, pw, ph;
+  double x0, x1, y0, y1;
+  bool empty;  ///< nothing to show: the range is the unit square
+  double X(double v) const { return ml + (v - x0) / (x1 - x0) * pw; }
+  double Y(double v) const { return mt + ph - (v - y0) / (y1 - y0) * ph; }
+};
+
+// The frame of `c`: every finite point and every band, padded (equal scales when asked for).
+PlotFrame FitFrame(const PlotChart& c) {
   const double W = c.width_px, H = c.height_px;
   const double ml = 70, mr = 20, mt = 36,
                mb = 52 + 18.0 * static_cast<double>((c.series.size() + 2) / 3);
@@ -73,8 +85,50 @@ std::string RenderSvg(const PlotChart& c) {
     const double cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
     x0 = cx - s * pw / 2, x1 = cx + s * pw / 2, y0 = cy - s * ph / 2, y1 = cy + s * ph / 2;
   }
-  const auto X = [&](double v) { return ml + (v - x0) / (x1 - x0) * pw; };
-  const auto Y = [&](double v) { return mt + ph - (v - y0) / (y1 - y0) * ph; };
+  return {ml, mt, pw, ph, x0, x1, y0, y1, empty};
+}
+
+// One series: a polyline, points or bars, clipped to the plot area by the caller's group.
+void WriteSeries(std::ostream& o, const PlotSeries& s, const PlotFrame& f) {
+  const double y0 = f.y0;
+  const auto X = [&](double v) { return f.X(v); };
+  const auto Y = [&](double v) { return f.Y(v); };
+  const std::size_t n = std::min(s.x.size(), s.y.size());
+  if (s.style == PlotSeries::Style::kLine && n > 0) {
+    o << "<polyline fill=\"none\" stroke=\"" << s.color << "\" stroke-width=\"1.6\" points=\"";
+    for (std::size_t i = 0; i < n; ++i) {
+      if (std::isfinite(s.x[i]) && std::isfinite(s.y[i]))
+        o << Num(X(s.x[i])) << "," << Num(Y(s.y[i])) << " ";
+    }
+    o << "\"/>\n";
+  } else if (s.style == PlotSeries::Style::kPoints) {
+    for (std::size_t i = 0; i < n; ++i) {
+      if (std::isfinite(s.x[i]) && std::isfinite(s.y[i])) {
+        o << "<circle cx=\"" << Num(X(s.x[i])) << "\" cy=\"" << Num(Y(s.y[i]))
+          << "\" r=\"2\" fill=\"" << s.color << "\" fill-opacity=\"0.7\"/>\n";
+      }
+    }
+  } else if (s.style == PlotSeries::Style::kBars) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const double xa = X(s.x[i] - s.bar_width / 2), xb = X(s.x[i] + s.bar_width / 2);
+      const double ya = Y(std::max(s.y[i], y0)), yb = Y(std::max(0.0, y0));
+      o << "<rect x=\"" << Num(xa) << "\" y=\"" << Num(ya) << "\" width=\""
+        << Num(std::max(0.5, xb - xa - 1)) << "\" height=\"" << Num(std::max(0.0, yb - ya))
+        << "\" fill=\"" << s.color << "\"/>\n";
+    }
+  }
+}
+
+}  // namespace
+
+std::string RenderSvg(const PlotChart& c) {
+  const PlotFrame frame = FitFrame(c);
+  const double W = c.width_px;
+  const double ml = frame.ml, mt = frame.mt, pw = frame.pw, ph = frame.ph;
+  const double x0 = frame.x0, x1 = frame.x1, y0 = frame.y0, y1 = frame.y1;
+  const bool empty = frame.empty;
+  const auto X = [&](double v) { return frame.X(v); };
+  const auto Y = [&](double v) { return frame.Y(v); };
 
   std::ostringstream o;
   o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << c.width_px << "\" height=\""
@@ -116,32 +170,7 @@ std::string RenderSvg(const PlotChart& c) {
       << "\" text-anchor=\"middle\" fill=\"#888\">" << XmlEscape(c.empty_note) << "</text>\n";
   }
   o << "<g clip-path=\"url(#plot)\">\n";
-  for (const auto& s : c.series) {
-    const std::size_t n = std::min(s.x.size(), s.y.size());
-    if (s.style == PlotSeries::Style::kLine && n > 0) {
-      o << "<polyline fill=\"none\" stroke=\"" << s.color << "\" stroke-width=\"1.6\" points=\"";
-      for (std::size_t i = 0; i < n; ++i) {
-        if (std::isfinite(s.x[i]) && std::isfinite(s.y[i]))
-          o << Num(X(s.x[i])) << "," << Num(Y(s.y[i])) << " ";
-      }
-      o << "\"/>\n";
-    } else if (s.style == PlotSeries::Style::kPoints) {
-      for (std::size_t i = 0; i < n; ++i) {
-        if (std::isfinite(s.x[i]) && std::isfinite(s.y[i])) {
-          o << "<circle cx=\"" << Num(X(s.x[i])) << "\" cy=\"" << Num(Y(s.y[i]))
-            << "\" r=\"2\" fill=\"" << s.color << "\" fill-opacity=\"0.7\"/>\n";
-        }
-      }
-    } else if (s.style == PlotSeries::Style::kBars) {
-      for (std::size_t i = 0; i < n; ++i) {
-        const double xa = X(s.x[i] - s.bar_width / 2), xb = X(s.x[i] + s.bar_width / 2);
-        const double ya = Y(std::max(s.y[i], y0)), yb = Y(std::max(0.0, y0));
-        o << "<rect x=\"" << Num(xa) << "\" y=\"" << Num(ya) << "\" width=\""
-          << Num(std::max(0.5, xb - xa - 1)) << "\" height=\"" << Num(std::max(0.0, yb - ya))
-          << "\" fill=\"" << s.color << "\"/>\n";
-      }
-    }
-  }
+  for (const auto& s : c.series) WriteSeries(o, s, frame);
   o << "</g>\n";
   // legend below the axis label, three entries per row
   for (std::size_t i = 0; i < c.series.size(); ++i) {

@@ -99,6 +99,49 @@ std::vector<truth::PathVertex> ReadWaypoints(const YamlReader& list) {
   return out;
 }
 
+// speed_profile: steps at increasing times, each with its speed.
+void ReadSpeedProfile(const YamlReader& prof, std::vector<truth::SpeedStep>& out) {
+  double last = -1;
+  for (const YamlReader& step : prof.Elements()) {
+    step.CheckKeys({"t_s", "speed_mps", "speed_kmh"});
+    truth::SpeedStep s;
+    s.t_s = step.DoubleIn("t_s", 0, 0, 7 * 86400);
+    if (!step.Has("t_s")) step.Fail("missing required key 't_s'");
+    if (s.t_s <= last) step.Fail("t_s", "speed profile times must increase");
+    last = s.t_s;
+    if (!step.Has("speed_mps") && !step.Has("speed_kmh"))
+      step.Fail("missing 'speed_mps' or 'speed_kmh'");
+    s.speed_mps = Speed(step, 0);
+    out.push_back(s);
+  }
+}
+
+// A boustrophedon path, its turns no tighter than vehicle `v` can steer.
+truth::Path ReadBoustrophedon(const YamlReader& r, const truth::VehicleParams& v) {
+  truth::BoustrophedonSpec b;
+  b.start_p_N_m = Point(r, "row_start_enu_m", {0, 0});
+  b.heading_deg = r.DoubleIn("row_heading_deg", 0, -360, 360);
+  b.row_length_m = r.DoubleIn("row_length_m", 100, 1, 1e5);
+  b.row_spacing_m = r.DoubleIn("row_spacing_m", 7.5, 0.2, 1000);
+  b.rows = static_cast<int>(r.Int("rows", 4, 1, 10000));
+  const double r_min = v.model == truth::VehicleParams::Model::kDiffDrive
+                           ? 0.0
+                           : v.wheelbase_m / std::tan(v.max_steer_deg * kDeg);
+  b.turn_radius_m =
+      r.DoubleIn("turn_radius_m", std::max(r_min * 1.05, b.row_spacing_m / 2 * 0.999), 0.1, 1000);
+  if (b.turn_radius_m < r_min) {
+    r.Fail("turn_radius_m",
+           "below the vehicle's minimum turning radius " + std::to_string(r_min) + " m");
+  }
+  if (b.row_spacing_m < 2 * b.turn_radius_m) {
+    r.Fail("row_spacing_m", "row spacing must be at least twice the turn radius (" +
+                                std::to_string(b.turn_radius_m) + " m)");
+  }
+  b.first_turn_right = r.Choice("first_turn", "right", {"right", "left"}) == "right";
+  if (r.Has("turn_speed_mps")) b.turn_speed_mps = r.DoubleIn("turn_speed_mps", 0, 0.05, 30);
+  return truth::MakeBoustrophedon(b);
+}
+
 void ReadPath(const YamlReader& r, truth::TruthConfig& t) {
   const std::string type = r.Choice(
       "type", "line", {"line", "ab_line", "waypoints", "rectangle", "boustrophedon", "circle"});
@@ -123,21 +166,7 @@ void ReadPath(const YamlReader& r, truth::TruthConfig& t) {
   r.CheckKeys(keys);
 
   t.speed_mps = Speed(r, t.speed_mps);
-  if (auto prof = r.OptionalChild("speed_profile")) {
-    double last = -1;
-    for (const YamlReader& step : prof->Elements()) {
-      step.CheckKeys({"t_s", "speed_mps", "speed_kmh"});
-      truth::SpeedStep s;
-      s.t_s = step.DoubleIn("t_s", 0, 0, 7 * 86400);
-      if (!step.Has("t_s")) step.Fail("missing required key 't_s'");
-      if (s.t_s <= last) step.Fail("t_s", "speed profile times must increase");
-      last = s.t_s;
-      if (!step.Has("speed_mps") && !step.Has("speed_kmh"))
-        step.Fail("missing 'speed_mps' or 'speed_kmh'");
-      s.speed_mps = Speed(step, 0);
-      t.speed_profile.push_back(s);
-    }
-  }
+  if (auto prof = r.OptionalChild("speed_profile")) ReadSpeedProfile(*prof, t.speed_profile);
   if (r.Has("start_enu_m")) t.start_p_N_m = Point(r, "start_enu_m", {0, 0});
   if (r.Has("heading_deg")) t.heading_deg = r.DoubleIn("heading_deg", 0, -360, 360);
   if (type == "line") {
@@ -169,28 +198,7 @@ void ReadPath(const YamlReader& r, truth::TruthConfig& t) {
           r.DoubleIn("height_m", 15, 0.5, 1e5), r.DoubleIn("side_heading_deg", 0, -360, 360),
           r.Bool("clockwise", true), static_cast<int>(r.Int("laps", 1, 1, 1000)));
     } else if (type == "boustrophedon") {
-      truth::BoustrophedonSpec b;
-      b.start_p_N_m = Point(r, "row_start_enu_m", {0, 0});
-      b.heading_deg = r.DoubleIn("row_heading_deg", 0, -360, 360);
-      b.row_length_m = r.DoubleIn("row_length_m", 100, 1, 1e5);
-      b.row_spacing_m = r.DoubleIn("row_spacing_m", 7.5, 0.2, 1000);
-      b.rows = static_cast<int>(r.Int("rows", 4, 1, 10000));
-      const double r_min = t.vehicle.model == truth::VehicleParams::Model::kDiffDrive
-                               ? 0.0
-                               : t.vehicle.wheelbase_m / std::tan(t.vehicle.max_steer_deg * kDeg);
-      b.turn_radius_m = r.DoubleIn("turn_radius_m",
-                                   std::max(r_min * 1.05, b.row_spacing_m / 2 * 0.999), 0.1, 1000);
-      if (b.turn_radius_m < r_min) {
-        r.Fail("turn_radius_m",
-               "below the vehicle's minimum turning radius " + std::to_string(r_min) + " m");
-      }
-      if (b.row_spacing_m < 2 * b.turn_radius_m) {
-        r.Fail("row_spacing_m", "row spacing must be at least twice the turn radius (" +
-                                    std::to_string(b.turn_radius_m) + " m)");
-      }
-      b.first_turn_right = r.Choice("first_turn", "right", {"right", "left"}) == "right";
-      if (r.Has("turn_speed_mps")) b.turn_speed_mps = r.DoubleIn("turn_speed_mps", 0, 0.05, 30);
-      t.path = truth::MakeBoustrophedon(b);
+      t.path = ReadBoustrophedon(r, t.vehicle);
     } else if (type == "circle") {
       t.path =
           truth::MakeCircle(Point(r, "centre_enu_m", {0, 0}), r.DoubleIn("radius_m", 5, 0.2, 1e5),

@@ -104,6 +104,85 @@ void WriteSuiteJunit(const std::vector<Case>& cases, const std::string& path) {
   out << "</testsuites>\n";
 }
 
+// One case per scenario file and seed, each with its run folder (created here) and log.
+std::vector<Case> PlanCases(const std::vector<std::string>& files, const SuiteOptions& opt) {
+  std::vector<Case> cases;
+  for (const auto& f : files) {
+    for (int i = 0; i < std::max(1, opt.repeat); ++i) {
+      Case c;
+      c.scenario = f;
+      std::string stem = fs::path(f).stem().string();
+      if (opt.seed || opt.repeat > 1) {
+        c.seed = opt.seed.value_or(1) + static_cast<std::uint64_t>(i);
+        stem += "-seed" + std::to_string(*c.seed);
+      }
+      c.out = (fs::path(opt.out_dir) / stem).string();
+      fs::create_directories(c.out);
+      c.log = c.out + "/hil.log";
+      cases.push_back(c);
+    }
+  }
+  return cases;
+}
+
+// Runs the cases, at most opt.jobs at a time, and reads each one's exit code and report.json.
+void RunCases(std::vector<Case>& cases, const SuiteOptions& opt) {
+  std::map<pid_t, std::size_t> running;
+  std::size_t next = 0, done = 0;
+  while (done < cases.size()) {
+    while (next < cases.size() && static_cast<int>(running.size()) < std::max(1, opt.jobs)) {
+      cases[next].started_ns = link::RealtimePacer::MonotonicNs();
+      running[Start(opt, cases[next])] = next;
+      ++next;
+    }
+    int status = 0;
+    const pid_t pid = waitpid(-1, &status, 0);
+    if (pid < 0) break;
+    const auto it = running.find(pid);
+    if (it == running.end()) continue;
+    Case& c = cases[it->second];
+    running.erase(it);
+    ++done;
+    c.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    c.wall_s = static_cast<double>(link::RealtimePacer::MonotonicNs() - c.started_ns) * 1e-9;
+    std::ifstream rj(c.out + "/report.json");
+    if (rj) c.report = nlohmann::json::parse(rj, nullptr, false);
+    if (c.report.is_discarded()) c.report = nullptr;
+    std::fprintf(stderr, "[%zu/%zu] %s %s (%.1f s)\n", done, cases.size(),
+                 c.exit_code == 0   ? "PASS"
+                 : c.exit_code == 1 ? "FAIL"
+                                    : "ERROR",
+                 fs::path(c.out).filename().c_str(), c.wall_s);
+  }
+}
+
+// A case's entry in summary.json: its verdict and, when it wrote one, what its report holds.
+nlohmann::json RunJson(const Case& c) {
+  nlohmann::json r{{"scenario_file", c.scenario},
+                   {"run_dir", c.out},
+                   {"exit_code", c.exit_code},
+                   {"pass", c.exit_code == 0},
+                   {"wall_time_s", c.wall_s}};
+  if (c.seed) r["seed"] = *c.seed;
+  if (c.report.is_object()) {
+    r["scenario"] = c.report.value("scenario", "");
+    r["seed"] = c.report.value("seed", 0);
+    r["metrics"] = c.report.value("metrics", nlohmann::json::object());
+    r["criteria"] = c.report.value("criteria", nlohmann::json::array());
+    r["complete"] = c.report.value("complete", true);
+    // the fault campaign: what each fault injected and how navd saw it (fault_report.h)
+    if (c.report.contains("fault_injections")) r["fault_injections"] = c.report["fault_injections"];
+    if (c.report.contains("estimator_health")) r["estimator_health"] = c.report["estimator_health"];
+    r["metric_table"] = c.report.value("metric_table", nlohmann::json::object());
+    r["baseline_table"] = c.report.value("baseline_table", nlohmann::json::object());
+    r["outages"] = r["metrics"].value("outages", nlohmann::json::array());
+    r["problems"] = c.report.value("problems", nlohmann::json::array());
+  } else {
+    r["error"] = Tail(c.log);
+  }
+  return r;
+}
+
 }  // namespace
 
 std::vector<std::string> SuiteScenarios(const std::string& dir) {
@@ -138,49 +217,8 @@ SuiteResult RunSuite(const SuiteOptions& opt) {
     }
     infos.push_back(std::move(info));
   }
-  std::vector<Case> cases;
-  for (const auto& f : files) {
-    for (int i = 0; i < std::max(1, opt.repeat); ++i) {
-      Case c;
-      c.scenario = f;
-      std::string stem = fs::path(f).stem().string();
-      if (opt.seed || opt.repeat > 1) {
-        c.seed = opt.seed.value_or(1) + static_cast<std::uint64_t>(i);
-        stem += "-seed" + std::to_string(*c.seed);
-      }
-      c.out = (fs::path(opt.out_dir) / stem).string();
-      fs::create_directories(c.out);
-      c.log = c.out + "/hil.log";
-      cases.push_back(c);
-    }
-  }
-  std::map<pid_t, std::size_t> running;
-  std::size_t next = 0, done = 0;
-  while (done < cases.size()) {
-    while (next < cases.size() && static_cast<int>(running.size()) < std::max(1, opt.jobs)) {
-      cases[next].started_ns = link::RealtimePacer::MonotonicNs();
-      running[Start(opt, cases[next])] = next;
-      ++next;
-    }
-    int status = 0;
-    const pid_t pid = waitpid(-1, &status, 0);
-    if (pid < 0) break;
-    const auto it = running.find(pid);
-    if (it == running.end()) continue;
-    Case& c = cases[it->second];
-    running.erase(it);
-    ++done;
-    c.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    c.wall_s = static_cast<double>(link::RealtimePacer::MonotonicNs() - c.started_ns) * 1e-9;
-    std::ifstream rj(c.out + "/report.json");
-    if (rj) c.report = nlohmann::json::parse(rj, nullptr, false);
-    if (c.report.is_discarded()) c.report = nullptr;
-    std::fprintf(stderr, "[%zu/%zu] %s %s (%.1f s)\n", done, cases.size(),
-                 c.exit_code == 0   ? "PASS"
-                 : c.exit_code == 1 ? "FAIL"
-                                    : "ERROR",
-                 fs::path(c.out).filename().c_str(), c.wall_s);
-  }
+  std::vector<Case> cases = PlanCases(files, opt);
+  RunCases(cases, opt);
   SuiteResult result;
   nlohmann::json summary;
   summary["scenario_dir"] = opt.dir;
@@ -193,31 +231,7 @@ SuiteResult RunSuite(const SuiteOptions& opt) {
       ++result.failed;
     else
       ++result.invalid;
-    nlohmann::json r{{"scenario_file", c.scenario},
-                     {"run_dir", c.out},
-                     {"exit_code", c.exit_code},
-                     {"pass", c.exit_code == 0},
-                     {"wall_time_s", c.wall_s}};
-    if (c.seed) r["seed"] = *c.seed;
-    if (c.report.is_object()) {
-      r["scenario"] = c.report.value("scenario", "");
-      r["seed"] = c.report.value("seed", 0);
-      r["metrics"] = c.report.value("metrics", nlohmann::json::object());
-      r["criteria"] = c.report.value("criteria", nlohmann::json::array());
-      r["complete"] = c.report.value("complete", true);
-      // the fault campaign: what each fault injected and how navd saw it (fault_report.h)
-      if (c.report.contains("fault_injections"))
-        r["fault_injections"] = c.report["fault_injections"];
-      if (c.report.contains("estimator_health"))
-        r["estimator_health"] = c.report["estimator_health"];
-      r["metric_table"] = c.report.value("metric_table", nlohmann::json::object());
-      r["baseline_table"] = c.report.value("baseline_table", nlohmann::json::object());
-      r["outages"] = r["metrics"].value("outages", nlohmann::json::array());
-      r["problems"] = c.report.value("problems", nlohmann::json::array());
-    } else {
-      r["error"] = Tail(c.log);
-    }
-    summary["runs"].push_back(r);
+    summary["runs"].push_back(RunJson(c));
   }
   summary["passed"] = result.passed;
   summary["failed"] = result.failed;

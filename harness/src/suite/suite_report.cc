@@ -59,6 +59,170 @@ json Lookup(const json& run, const char* table, const std::string& key) {
   return run[table][key];
 }
 
+// A scenario's reference figures: each paper's figure beside our runs' and the raw GNSS baseline.
+json PaperJson(const SuiteScenarioInfo& info, const std::vector<json>& mine) {
+  json paper = json::array();
+  if (info.scenario) {
+    for (const PaperFigure& p : info.scenario->paper) {
+      std::vector<json> ours, base;
+      for (const auto& r : mine) {
+        ours.push_back(Lookup(r, "metric_table", p.metric));
+        base.push_back(Lookup(r, "baseline_table", p.metric));
+      }
+      json f{{"source", p.source},        {"metric", p.metric}, {"relation", p.relation},
+             {"finding", p.finding},      {"note", p.note},     {"ours", SpreadOf(ours)},
+             {"raw_gnss", SpreadOf(base)}};
+      f["value"] = p.value ? json(*p.value) : json(nullptr);
+      paper.push_back(f);
+    }
+  }
+  return paper;
+}
+
+// A scenario's criteria, by position in its list: pass when every seed passed.
+json CriteriaJson(const SuiteScenarioInfo& info, const std::vector<json>& mine) {
+  json criteria = json::array();
+  std::size_t n_criteria = 0;
+  for (const auto& r : mine)
+    n_criteria = std::max(n_criteria, r.value("criteria", json::array()).size());
+  for (std::size_t k = 0; k < n_criteria; ++k) {
+    std::vector<json> values, thresholds;
+    std::size_t ok = 0, seen = 0;
+    std::string name;
+    for (const auto& r : mine) {
+      const json crit = r.value("criteria", json::array());
+      if (k >= crit.size()) continue;
+      ++seen;
+      name = crit[k].value("name", "criterion");
+      values.push_back(crit[k].value("value", json(nullptr)));
+      thresholds.push_back(crit[k].value("threshold", json(nullptr)));
+      ok += crit[k].value("pass", false) ? 1 : 0;
+    }
+    const std::string metric = info.scenario && k < info.scenario->criteria.size()
+                                   ? info.scenario->criteria[k].metric
+                                   : "";
+    criteria.push_back({{"name", name},
+                        {"metric", metric},
+                        {"passed", ok},
+                        {"runs", mine.size()},
+                        {"pass", seen == mine.size() && ok == mine.size()},
+                        {"value", SpreadOf(values)},
+                        {"threshold", SpreadOf(thresholds)}});
+  }
+  return criteria;
+}
+
+// A scenario's outages, by position: the spread over the seeds of the per-axis maxima (paper 004).
+json OutagesJson(const std::vector<json>& mine) {
+  json outages = json::array();
+  std::size_t n_outages = 0;
+  for (const auto& r : mine) {
+    if (r.contains("outages") && r["outages"].is_array())
+      n_outages = std::max(n_outages, r["outages"].size());
+  }
+  for (std::size_t k = 0; k < n_outages; ++k) {
+    std::map<std::string, std::vector<json>> v;
+    json o;
+    for (const auto& r : mine) {
+      if (!r.contains("outages") || k >= r["outages"].size()) continue;
+      const json& x = r["outages"][k];
+      o["start_s"] = x.value("start_s", 0.0);
+      o["end_s"] = x.value("end_s", 0.0);
+      for (const char* key : {"max_east_error_m", "max_north_error_m", "max_up_error_m",
+                              "max_horizontal_error_m", "reconvergence_time_s"}) {
+        v[key].push_back(x.value(key, json(nullptr)));
+      }
+    }
+    for (auto& [key, vals] : v) o[key] = SpreadOf(vals);
+    outages.push_back(o);
+  }
+  return outages;
+}
+
+// The reference figures table: the papers' figures beside ours and the raw GNSS.
+void AppendPaperMd(std::string& md, const json& scenarios) {
+  md +=
+      "## Reference figures\n\n| scenario | source | metric | paper | ours | raw GNSS (one "
+      "receiver) | note |\n"
+      "|---|---|---|---|---|---|---|\n";
+  bool any_paper = false;
+  for (const auto& s : scenarios) {
+    for (const auto& p : s.value("paper", json::array())) {
+      any_paper = true;
+      const std::string metric = p.value("metric", "");
+      std::string paper = p["value"].is_number() ? Fmt(metric, p["value"]) : "";
+      const std::string rel = p.value("relation", "about");
+      if (!paper.empty() && rel == "below") paper = "< " + paper;
+      if (!paper.empty() && rel == "above") paper = "> " + paper;
+      const std::string finding = p.value("finding", "");
+      if (!finding.empty()) paper += (paper.empty() ? "" : " — ") + finding;
+      md += "| " + Cell(s.value("scenario", "")) + " | " + Cell(p.value("source", "")) + " | `" +
+            metric + "` | " + Cell(paper) + " | " + FmtSpread(metric, p["ours"]) + " | " +
+            FmtSpread(metric, p["raw_gnss"]) + " | " + Cell(p.value("note", "")) + " |\n";
+    }
+  }
+  if (!any_paper) md += "| (no scenario has a `paper:` section) | | | | | | |\n";
+}
+
+// The outages table, when a scenario has outages.
+void AppendOutagesMd(std::string& md, const json& scenarios) {
+  char line[512];
+  bool any_outage = false;
+  for (const auto& s : scenarios)
+    any_outage = any_outage || !s.value("outages", json::array()).empty();
+  if (any_outage) {
+    md +=
+        "\n## GNSS outages: maximum error inside each outage (paper 004: < 11 cm in E, N and U)\n\n"
+        "| scenario | outage | max east | max north | max up | max horizontal | re-converged after "
+        "|\n"
+        "|---|---|---|---|---|---|---|\n";
+    for (const auto& s : scenarios) {
+      for (const auto& o : s.value("outages", json::array())) {
+        std::snprintf(line, sizeof line, "%.0f–%.0f s", o.value("start_s", 0.0),
+                      o.value("end_s", 0.0));
+        md += "| " + Cell(s.value("scenario", "")) + " | " + line + " | " +
+              FmtSpread("e_m", o["max_east_error_m"]) + " | " +
+              FmtSpread("e_m", o["max_north_error_m"]) + " | " +
+              FmtSpread("e_m", o["max_up_error_m"]) + " | " +
+              FmtSpread("e_m", o["max_horizontal_error_m"]) + " | " +
+              FmtSpread("t_s", o["reconvergence_time_s"]) + " |\n";
+      }
+    }
+  }
+}
+
+// The criteria table: every criterion of every scenario with the seeds it passed in.
+void AppendCriteriaMd(std::string& md, const json& scenarios) {
+  char line[512];
+  md +=
+      "\n## Criteria\n\n| scenario | criterion | value | threshold | seeds passed | result "
+      "|\n|---|---|---|---|---|---|\n";
+  for (const auto& s : scenarios) {
+    const std::string name = Cell(s.value("scenario", ""));
+    if (s.contains("error")) {
+      md += "| " + name + " | invalid scenario | " + Cell(s.value("error", "")) +
+            " | | | **INVALID** |\n";
+      continue;
+    }
+    const json crit = s.value("criteria", json::array());
+    if (crit.empty())
+      md += "| " + name + " | (no criteria) | | | | " +
+            (s.value("pass", false) ? "PASS" : "**FAIL**") + " |\n";
+    for (const auto& c : crit) {
+      const std::string cname = c.value("name", "");
+      const std::string metric = c.value("metric", "");
+      std::snprintf(line, sizeof line, "%d/%d", c.value("passed", 0), c.value("runs", 0));
+      md += "| " + name + " | " + Cell(cname) + " | " + FmtSpread(metric, c["value"]) + " | " +
+            FmtSpread(metric, c["threshold"]) + " | " + line + " | " +
+            (c.value("pass", false) ? "PASS" : "**FAIL**") + " |\n";
+    }
+    for (const auto& p : s.value("problems", json::array())) {
+      md += "| " + name + " | run problem | " +
+            Cell(p.is_string() ? p.get<std::string>() : p.dump()) + " | | | **FAIL** |\n";
+    }
+  }
+}
+
 }  // namespace
 
 json SpreadOf(const std::vector<json>& values) {
@@ -108,73 +272,11 @@ json SummariseScenarios(const std::vector<SuiteScenarioInfo>& scenarios, const j
     s["problems"] = errors;
     s["pass"] = !mine.empty() && passed == mine.size() && info.error.empty();
     // reference figures: the run's metric beside the paper's, and the raw GNSS baseline
-    s["paper"] = json::array();
-    if (info.scenario) {
-      for (const PaperFigure& p : info.scenario->paper) {
-        std::vector<json> ours, base;
-        for (const auto& r : mine) {
-          ours.push_back(Lookup(r, "metric_table", p.metric));
-          base.push_back(Lookup(r, "baseline_table", p.metric));
-        }
-        json f{{"source", p.source},        {"metric", p.metric}, {"relation", p.relation},
-               {"finding", p.finding},      {"note", p.note},     {"ours", SpreadOf(ours)},
-               {"raw_gnss", SpreadOf(base)}};
-        f["value"] = p.value ? json(*p.value) : json(nullptr);
-        s["paper"].push_back(f);
-      }
-    }
+    s["paper"] = PaperJson(info, mine);
     // criteria, by position in the scenario's list: pass when every seed passed
-    s["criteria"] = json::array();
-    std::size_t n_criteria = 0;
-    for (const auto& r : mine)
-      n_criteria = std::max(n_criteria, r.value("criteria", json::array()).size());
-    for (std::size_t k = 0; k < n_criteria; ++k) {
-      std::vector<json> values, thresholds;
-      std::size_t ok = 0, seen = 0;
-      std::string name;
-      for (const auto& r : mine) {
-        const json crit = r.value("criteria", json::array());
-        if (k >= crit.size()) continue;
-        ++seen;
-        name = crit[k].value("name", "criterion");
-        values.push_back(crit[k].value("value", json(nullptr)));
-        thresholds.push_back(crit[k].value("threshold", json(nullptr)));
-        ok += crit[k].value("pass", false) ? 1 : 0;
-      }
-      const std::string metric = info.scenario && k < info.scenario->criteria.size()
-                                     ? info.scenario->criteria[k].metric
-                                     : "";
-      s["criteria"].push_back({{"name", name},
-                               {"metric", metric},
-                               {"passed", ok},
-                               {"runs", mine.size()},
-                               {"pass", seen == mine.size() && ok == mine.size()},
-                               {"value", SpreadOf(values)},
-                               {"threshold", SpreadOf(thresholds)}});
-    }
+    s["criteria"] = CriteriaJson(info, mine);
     // outages, by position: the per-axis maxima of paper 004
-    s["outages"] = json::array();
-    std::size_t n_outages = 0;
-    for (const auto& r : mine) {
-      if (r.contains("outages") && r["outages"].is_array())
-        n_outages = std::max(n_outages, r["outages"].size());
-    }
-    for (std::size_t k = 0; k < n_outages; ++k) {
-      std::map<std::string, std::vector<json>> v;
-      json o;
-      for (const auto& r : mine) {
-        if (!r.contains("outages") || k >= r["outages"].size()) continue;
-        const json& x = r["outages"][k];
-        o["start_s"] = x.value("start_s", 0.0);
-        o["end_s"] = x.value("end_s", 0.0);
-        for (const char* key : {"max_east_error_m", "max_north_error_m", "max_up_error_m",
-                                "max_horizontal_error_m", "reconvergence_time_s"}) {
-          v[key].push_back(x.value(key, json(nullptr)));
-        }
-      }
-      for (auto& [key, vals] : v) o[key] = SpreadOf(vals);
-      s["outages"].push_back(o);
-    }
+    s["outages"] = OutagesJson(mine);
     out.push_back(s);
   }
   return out;
@@ -201,78 +303,11 @@ std::string SuiteMarkdown(const json& summary) {
       "passes in every seed. Reference figures come from each scenario file's `paper:` "
       "section.\n\n";
 
-  md +=
-      "## Reference figures\n\n| scenario | source | metric | paper | ours | raw GNSS (one "
-      "receiver) | note |\n"
-      "|---|---|---|---|---|---|---|\n";
-  bool any_paper = false;
-  for (const auto& s : scenarios) {
-    for (const auto& p : s.value("paper", json::array())) {
-      any_paper = true;
-      const std::string metric = p.value("metric", "");
-      std::string paper = p["value"].is_number() ? Fmt(metric, p["value"]) : "";
-      const std::string rel = p.value("relation", "about");
-      if (!paper.empty() && rel == "below") paper = "< " + paper;
-      if (!paper.empty() && rel == "above") paper = "> " + paper;
-      const std::string finding = p.value("finding", "");
-      if (!finding.empty()) paper += (paper.empty() ? "" : " — ") + finding;
-      md += "| " + Cell(s.value("scenario", "")) + " | " + Cell(p.value("source", "")) + " | `" +
-            metric + "` | " + Cell(paper) + " | " + FmtSpread(metric, p["ours"]) + " | " +
-            FmtSpread(metric, p["raw_gnss"]) + " | " + Cell(p.value("note", "")) + " |\n";
-    }
-  }
-  if (!any_paper) md += "| (no scenario has a `paper:` section) | | | | | | |\n";
+  AppendPaperMd(md, scenarios);
 
-  bool any_outage = false;
-  for (const auto& s : scenarios)
-    any_outage = any_outage || !s.value("outages", json::array()).empty();
-  if (any_outage) {
-    md +=
-        "\n## GNSS outages: maximum error inside each outage (paper 004: < 11 cm in E, N and U)\n\n"
-        "| scenario | outage | max east | max north | max up | max horizontal | re-converged after "
-        "|\n"
-        "|---|---|---|---|---|---|---|\n";
-    for (const auto& s : scenarios) {
-      for (const auto& o : s.value("outages", json::array())) {
-        std::snprintf(line, sizeof line, "%.0f–%.0f s", o.value("start_s", 0.0),
-                      o.value("end_s", 0.0));
-        md += "| " + Cell(s.value("scenario", "")) + " | " + line + " | " +
-              FmtSpread("e_m", o["max_east_error_m"]) + " | " +
-              FmtSpread("e_m", o["max_north_error_m"]) + " | " +
-              FmtSpread("e_m", o["max_up_error_m"]) + " | " +
-              FmtSpread("e_m", o["max_horizontal_error_m"]) + " | " +
-              FmtSpread("t_s", o["reconvergence_time_s"]) + " |\n";
-      }
-    }
-  }
+  AppendOutagesMd(md, scenarios);
 
-  md +=
-      "\n## Criteria\n\n| scenario | criterion | value | threshold | seeds passed | result "
-      "|\n|---|---|---|---|---|---|\n";
-  for (const auto& s : scenarios) {
-    const std::string name = Cell(s.value("scenario", ""));
-    if (s.contains("error")) {
-      md += "| " + name + " | invalid scenario | " + Cell(s.value("error", "")) +
-            " | | | **INVALID** |\n";
-      continue;
-    }
-    const json crit = s.value("criteria", json::array());
-    if (crit.empty())
-      md += "| " + name + " | (no criteria) | | | | " +
-            (s.value("pass", false) ? "PASS" : "**FAIL**") + " |\n";
-    for (const auto& c : crit) {
-      const std::string cname = c.value("name", "");
-      const std::string metric = c.value("metric", "");
-      std::snprintf(line, sizeof line, "%d/%d", c.value("passed", 0), c.value("runs", 0));
-      md += "| " + name + " | " + Cell(cname) + " | " + FmtSpread(metric, c["value"]) + " | " +
-            FmtSpread(metric, c["threshold"]) + " | " + line + " | " +
-            (c.value("pass", false) ? "PASS" : "**FAIL**") + " |\n";
-    }
-    for (const auto& p : s.value("problems", json::array())) {
-      md += "| " + name + " | run problem | " +
-            Cell(p.is_string() ? p.get<std::string>() : p.dump()) + " | | | **FAIL** |\n";
-    }
-  }
+  AppendCriteriaMd(md, scenarios);
 
   md += "\n## Runs\n\n| run | seed | result | wall time |\n|---|---|---|---|\n";
   for (const auto& r : summary.value("runs", json::array())) {

@@ -9,6 +9,8 @@
 
 #include "hil/harness/validate/validate.h"
 
+#include "garbage_run.h"
+
 namespace hil::harness {
 namespace {
 
@@ -39,14 +41,8 @@ struct TypeSpec {
 const std::map<int, TypeSpec> kTypes{
     {1, {"IMU_SAMPLE", 12}}, {2, {"MAG_SAMPLE", 6}}, {3, {"TIME_PULSE", 7}}, {4, {"STATUS", 26}}};
 
-}  // namespace
-
-ValidationReport ValidateMcuStream(const ByteStream& s) {
-  ValidationReport rep;
-  rep.protocol = "mcu";
-  rep.description = s.description;
-  rep.bytes = s.bytes.size();
-  const std::string& b = s.bytes;
+// What the checks carry from frame to frame (the ticks and the pulse since the last reset).
+struct McuStreamState {
   std::optional<std::uint16_t> last_seq;
   std::optional<std::uint16_t> reset_count;
   std::map<int, std::uint32_t> last_tick;
@@ -55,19 +51,110 @@ ValidationReport ValidateMcuStream(const ByteStream& s) {
   std::optional<std::uint32_t> imu_period_ticks;
   bool have_pulse = false;
   std::uint32_t pulse_tow_ms = 0, pulse_tick = 0;
-  std::size_t pos = 0, garbage_start = std::string::npos;
-  const auto flush = [&](std::size_t end) {
-    if (garbage_start == std::string::npos) return;
-    rep.findings.push_back({true, "framing",
-                            std::to_string(end - garbage_start) + " byte(s) outside any frame",
-                            static_cast<std::int64_t>(garbage_start)});
-    rep.garbage_bytes += end - garbage_start;
-    garbage_start = std::string::npos;
-  };
+};
+
+// The checks of one well-formed frame of `type` at `pos` (stream offset `off`): STATUS and resets,
+// sequence continuity, tick monotonicity per type, TIME_PULSE spacing.
+void CheckFrame(const std::string& b, std::size_t pos, int type, const char* name, std::int64_t off,
+                McuStreamState& st, ValidationReport& rep) {
+  const auto seq = static_cast<std::uint16_t>(U(b, pos + 5, 2));
+  const std::uint32_t tick = U(b, pos + 7, 4);
+  const std::size_t p = pos + 11;
+  bool reset = false;
+  if (type == 4) {  // STATUS
+    const auto count = static_cast<std::uint16_t>(U(b, p + 2, 2));
+    reset = seq == 0 && (!st.reset_count || count > *st.reset_count);
+    if (seq == 0 && st.reset_count && count <= *st.reset_count) {
+      rep.findings.push_back(
+          {true, "reset", "sequence restarted at 0 without a higher reset count", off});
+    }
+    st.reset_count = count;
+    st.imu_period_ticks = U(b, p + 8, 4);
+    if (U(b, p + 4, 4) != 1000000)
+      rep.findings.push_back({true, "status", "nominal tick rate is not 1 MHz", off});
+  }
+  if (reset) {
+    st.last_tick.clear();
+    st.ticks.clear();
+    st.wrap.clear();
+    st.have_pulse = false;
+  } else if (st.last_seq && seq != static_cast<std::uint16_t>(*st.last_seq + 1)) {
+    rep.findings.push_back({true, "sequence_gap",
+                            std::to_string(static_cast<std::uint16_t>(seq - *st.last_seq - 1)) +
+                                " frame(s) missing before sequence " + std::to_string(seq),
+                            off});
+  }
+  st.last_seq = seq;
+  if (const auto it = st.last_tick.find(type); it != st.last_tick.end()) {
+    const std::uint32_t d = tick - it->second;  // modulo 2^32
+    if (d == 0 || d > 0x80000000u) {
+      rep.findings.push_back(
+          {true, "tick_monotonic", std::string(name) + " tick did not increase", off});
+    } else if (tick < it->second) {
+      st.wrap[type] += 1ull << 32;
+    }
+  }
+  st.last_tick[type] = tick;
+  st.ticks[type].push_back(static_cast<double>(st.wrap[type] + tick));
+  if (type == 3) {  // TIME_PULSE
+    const std::uint32_t tow = U(b, p + 2, 4);
+    const bool valid = (static_cast<unsigned char>(b[p + 6]) & 1) != 0;
+    if (valid && tow % 1000 != 0)
+      rep.findings.push_back({true, "time_pulse", "pulse TOW is not a whole second", off});
+    if (valid && st.have_pulse && tow > st.pulse_tow_ms) {
+      const double ds = (tow - st.pulse_tow_ms) * 1e-3;
+      const double rate =
+          static_cast<double>(static_cast<std::uint32_t>(tick - st.pulse_tick)) / ds;
+      if (std::abs(rate / 1e6 - 1.0) * 1e6 > kMaxTickRateErrorPpm) {
+        char msg[96];
+        std::snprintf(msg, sizeof msg, "tick rate between pulses %.0f Hz (nominal 1 MHz)", rate);
+        rep.findings.push_back({true, "time_pulse", msg, off});
+      }
+    }
+    if (valid) {
+      st.have_pulse = true;
+      st.pulse_tow_ms = tow;
+      st.pulse_tick = tick;
+    }
+  }
+}
+
+// Each type's rate over the ticks, and the IMU rate against the STATUS nominal period.
+void CheckRates(const McuStreamState& st, ValidationReport& rep) {
+  for (const auto& [type, t] : st.ticks) {
+    if (t.size() < 2 || t.back() <= t.front()) continue;
+    const std::string name = kTypes.at(type).name;
+    rep.messages[name].rate_hz =
+        static_cast<double>(t.size() - 1) / ((t.back() - t.front()) * 1e-6);
+  }
+  if (st.imu_period_ticks && *st.imu_period_ticks > 0 && rep.messages.count("IMU_SAMPLE") &&
+      rep.messages["IMU_SAMPLE"].rate_hz > 0) {
+    const double expected = 1e6 / *st.imu_period_ticks, got = rep.messages["IMU_SAMPLE"].rate_hz;
+    rep.epoch_rate_hz = got;
+    if (std::abs(got / expected - 1.0) > kMaxImuRateError) {
+      char msg[96];
+      std::snprintf(msg, sizeof msg, "IMU rate %.3f Hz, STATUS says %.3f Hz", got, expected);
+      rep.findings.push_back({true, "rate", msg, -1});
+    }
+  }
+}
+
+}  // namespace
+
+ValidationReport ValidateMcuStream(const ByteStream& s) {
+  ValidationReport rep;
+  rep.protocol = "mcu";
+  rep.description = s.description;
+  rep.bytes = s.bytes.size();
+  const std::string& b = s.bytes;
+  McuStreamState st;
+  std::size_t pos = 0;
+  GarbageRun garbage;
+  const auto flush = [&](std::size_t end) { rep.garbage_bytes += garbage.End(end, rep); };
   while (pos < b.size()) {
     if (!(static_cast<unsigned char>(b[pos]) == 0xA5 && pos + 1 < b.size() &&
           static_cast<unsigned char>(b[pos + 1]) == 0x5A)) {
-      if (garbage_start == std::string::npos) garbage_start = pos;
+      garbage.Add(pos);
       ++pos;
       continue;
     }
@@ -104,84 +191,11 @@ ValidationReport ValidateMcuStream(const ByteStream& s) {
     }
     ++rep.frames;
     rep.messages[spec->second.name].count++;
-    const auto seq = static_cast<std::uint16_t>(U(b, pos + 5, 2));
-    const std::uint32_t tick = U(b, pos + 7, 4);
-    const std::size_t p = pos + 11;
-    bool reset = false;
-    if (type == 4) {  // STATUS
-      const auto count = static_cast<std::uint16_t>(U(b, p + 2, 2));
-      reset = seq == 0 && (!reset_count || count > *reset_count);
-      if (seq == 0 && reset_count && count <= *reset_count) {
-        rep.findings.push_back(
-            {true, "reset", "sequence restarted at 0 without a higher reset count", off});
-      }
-      reset_count = count;
-      imu_period_ticks = U(b, p + 8, 4);
-      if (U(b, p + 4, 4) != 1000000)
-        rep.findings.push_back({true, "status", "nominal tick rate is not 1 MHz", off});
-    }
-    if (reset) {
-      last_tick.clear();
-      ticks.clear();
-      wrap.clear();
-      have_pulse = false;
-    } else if (last_seq && seq != static_cast<std::uint16_t>(*last_seq + 1)) {
-      rep.findings.push_back({true, "sequence_gap",
-                              std::to_string(static_cast<std::uint16_t>(seq - *last_seq - 1)) +
-                                  " frame(s) missing before sequence " + std::to_string(seq),
-                              off});
-    }
-    last_seq = seq;
-    if (const auto it = last_tick.find(type); it != last_tick.end()) {
-      const std::uint32_t d = tick - it->second;  // modulo 2^32
-      if (d == 0 || d > 0x80000000u) {
-        rep.findings.push_back({true, "tick_monotonic",
-                                std::string(spec->second.name) + " tick did not increase", off});
-      } else if (tick < it->second) {
-        wrap[type] += 1ull << 32;
-      }
-    }
-    last_tick[type] = tick;
-    ticks[type].push_back(static_cast<double>(wrap[type] + tick));
-    if (type == 3) {  // TIME_PULSE
-      const std::uint32_t tow = U(b, p + 2, 4);
-      const bool valid = (static_cast<unsigned char>(b[p + 6]) & 1) != 0;
-      if (valid && tow % 1000 != 0)
-        rep.findings.push_back({true, "time_pulse", "pulse TOW is not a whole second", off});
-      if (valid && have_pulse && tow > pulse_tow_ms) {
-        const double ds = (tow - pulse_tow_ms) * 1e-3;
-        const double rate = static_cast<double>(static_cast<std::uint32_t>(tick - pulse_tick)) / ds;
-        if (std::abs(rate / 1e6 - 1.0) * 1e6 > kMaxTickRateErrorPpm) {
-          char msg[96];
-          std::snprintf(msg, sizeof msg, "tick rate between pulses %.0f Hz (nominal 1 MHz)", rate);
-          rep.findings.push_back({true, "time_pulse", msg, off});
-        }
-      }
-      if (valid) {
-        have_pulse = true;
-        pulse_tow_ms = tow;
-        pulse_tick = tick;
-      }
-    }
+    CheckFrame(b, pos, type, spec->second.name, off, st, rep);
     pos += 13 + n;
   }
   flush(pos < b.size() ? pos : b.size());
-  for (auto& [type, t] : ticks) {
-    if (t.size() < 2 || t.back() <= t.front()) continue;
-    const std::string name = kTypes.at(type).name;
-    rep.messages[name].rate_hz =
-        static_cast<double>(t.size() - 1) / ((t.back() - t.front()) * 1e-6);
-  }
-  if (imu_period_ticks && *imu_period_ticks > 0 && rep.messages.count("IMU_SAMPLE") &&
-      rep.messages["IMU_SAMPLE"].rate_hz > 0) {
-    const double expected = 1e6 / *imu_period_ticks, got = rep.messages["IMU_SAMPLE"].rate_hz;
-    rep.epoch_rate_hz = got;
-    if (std::abs(got / expected - 1.0) > kMaxImuRateError) {
-      char msg[96];
-      std::snprintf(msg, sizeof msg, "IMU rate %.3f Hz, STATUS says %.3f Hz", got, expected);
-      rep.findings.push_back({true, "rate", msg, -1});
-    }
-  }
+  CheckRates(st, rep);
   rep.epochs = rep.messages.count("TIME_PULSE") ? rep.messages["TIME_PULSE"].count : 0;
   if (rep.frames == 0) rep.findings.push_back({true, "empty", "no valid frame in the stream", -1});
   return rep;

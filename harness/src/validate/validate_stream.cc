@@ -8,6 +8,8 @@
 #include "hil/harness/eval/evaluator.h"
 #include "hil/harness/validate/validate.h"
 
+#include "garbage_run.h"
+
 namespace hil::harness {
 namespace {
 
@@ -40,70 +42,130 @@ std::uint32_t Le32(const std::string& b, std::size_t i) {
          (static_cast<std::uint32_t>(Le16(b, i + 2)) << 16);
 }
 
+std::int64_t TimeAt(const ByteStream& s, std::size_t i) {
+  return i < s.t_ns.size() ? s.t_ns[i] : -1;
+}
+
+// After one frame: go on at the new position, or stop (the stream ends inside the frame).
+enum class FrameStep { kNext, kStop };
+
+// The UBX frame whose sync pair is at `pos`: appended to `out` with `pos` past it, or a finding
+// with `pos` past the sync pair (to resynchronise).
+FrameStep FrameUbx(const ByteStream& s, std::size_t& pos, Framed& out, ValidationReport& rep) {
+  const std::string& b = s.bytes;
+  if (pos + 6 > b.size()) {
+    rep.findings.push_back({false, "truncated", "UBX header cut off at the end of the stream",
+                            static_cast<std::int64_t>(pos)});
+    return FrameStep::kStop;
+  }
+  const std::size_t len = Le16(b, pos + 4);
+  if (len > kUbxMaxPayload) {
+    rep.findings.push_back({true, "ubx_length",
+                            "implausible UBX payload length " + std::to_string(len),
+                            static_cast<std::int64_t>(pos)});
+    ++out.bad;
+    pos += 2;
+    return FrameStep::kNext;
+  }
+  if (pos + 8 + len > b.size()) {
+    rep.findings.push_back({false, "truncated", "UBX frame cut off at the end of the stream",
+                            static_cast<std::int64_t>(pos)});
+    return FrameStep::kStop;
+  }
+  std::uint8_t ck_a = 0, ck_b = 0;
+  for (std::size_t i = pos + 2; i < pos + 6 + len; ++i) {
+    ck_a = static_cast<std::uint8_t>(ck_a + static_cast<unsigned char>(b[i]));
+    ck_b = static_cast<std::uint8_t>(ck_b + ck_a);
+  }
+  if (ck_a != static_cast<unsigned char>(b[pos + 6 + len]) ||
+      ck_b != static_cast<unsigned char>(b[pos + 7 + len])) {
+    char msg[96];
+    std::snprintf(
+        msg, sizeof msg, "UBX checksum mismatch (class 0x%02X id 0x%02X, %zu payload bytes)",
+        static_cast<unsigned char>(b[pos + 2]), static_cast<unsigned char>(b[pos + 3]), len);
+    rep.findings.push_back({true, "checksum", msg, static_cast<std::int64_t>(pos)});
+    ++out.bad;
+    pos += 2;  // resynchronise on the next sync pair
+    return FrameStep::kNext;
+  }
+  Frame f;
+  f.kind = Frame::Kind::kUbx;
+  f.offset = pos;
+  f.length = 8 + len;
+  f.t_ns = TimeAt(s, pos);
+  f.cls = static_cast<std::uint8_t>(b[pos + 2]);
+  f.id = static_cast<std::uint8_t>(b[pos + 3]);
+  f.payload = b.substr(pos + 6, len);
+  out.frames.push_back(std::move(f));
+  pos += 8 + len;
+  return FrameStep::kNext;
+}
+
+// The NMEA sentence whose '$' is at `pos`: appended to `out` (or a finding), `pos` past its line.
+FrameStep FrameNmea(const ByteStream& s, std::size_t& pos, Framed& out, ValidationReport& rep) {
+  const std::string& b = s.bytes;
+  std::size_t end = pos + 1;
+  while (end < b.size() && b[end] != '\n' && b[end] != '$' && end - pos < 4 * kNmeaMaxChars &&
+         !(static_cast<unsigned char>(b[end]) == 0xB5 && end + 1 < b.size() &&
+           static_cast<unsigned char>(b[end + 1]) == 0x62)) {
+    ++end;
+  }
+  if (end >= b.size()) {
+    rep.findings.push_back({false, "truncated", "NMEA sentence cut off at the end of the stream",
+                            static_cast<std::int64_t>(pos)});
+    return FrameStep::kStop;
+  }
+  if (b[end] != '\n') {
+    rep.findings.push_back(
+        {true, "framing", "NMEA sentence without line end", static_cast<std::int64_t>(pos)});
+    ++out.bad;
+    pos = end;
+    return FrameStep::kNext;
+  }
+  std::string line = b.substr(pos, end - pos);
+  const bool crlf = !line.empty() && line.back() == '\r';
+  if (crlf) line.pop_back();
+  const std::size_t total = end + 1 - pos;
+  NmeaParse p = ParseNmeaSentence(line);
+  if (!p.sentence) {
+    rep.findings.push_back(
+        {true, p.error.find("checksum") != std::string::npos ? "checksum" : "framing",
+         "'" + line.substr(0, 24) + (line.size() > 24 ? "…" : "") + "': " + p.error,
+         static_cast<std::int64_t>(pos)});
+    ++out.bad;
+  } else {
+    if (total > kNmeaMaxChars + (crlf ? 0 : 1)) {
+      rep.findings.push_back({true, "length",
+                              p.sentence->address + " is " + std::to_string(line.size() + 2) +
+                                  " characters with CR LF (NMEA allows 82)",
+                              static_cast<std::int64_t>(pos)});
+    }
+    Frame f;
+    f.kind = Frame::Kind::kNmea;
+    f.offset = pos;
+    f.length = total;
+    f.t_ns = TimeAt(s, pos);
+    f.nmea = std::move(p.sentence);
+    f.crlf = crlf;
+    out.frames.push_back(std::move(f));
+  }
+  pos = end + 1;
+  return FrameStep::kNext;
+}
+
 Framed FrameStream(const ByteStream& s, bool want_nmea, bool want_ubx, ValidationReport& rep) {
   Framed out;
   const std::string& b = s.bytes;
-  std::size_t pos = 0, garbage_start = std::string::npos;
-  const auto flush_garbage = [&](std::size_t end) {
-    if (garbage_start == std::string::npos) return;
-    rep.findings.push_back({true, "framing",
-                            std::to_string(end - garbage_start) + " byte(s) outside any frame",
-                            static_cast<std::int64_t>(garbage_start)});
-    out.garbage += end - garbage_start;
-    garbage_start = std::string::npos;
-  };
-  const auto time_at = [&](std::size_t i) { return i < s.t_ns.size() ? s.t_ns[i] : -1; };
+  std::size_t pos = 0;
+  GarbageRun garbage;
+  const auto flush_garbage = [&](std::size_t end) { out.garbage += garbage.End(end, rep); };
   while (pos < b.size()) {
     const auto c = static_cast<unsigned char>(b[pos]);
     const bool line_start = pos == 0 || b[pos - 1] == '\n';
     if (want_ubx && c == 0xB5 && pos + 1 < b.size() &&
         static_cast<unsigned char>(b[pos + 1]) == 0x62) {
       flush_garbage(pos);
-      if (pos + 6 > b.size()) {
-        rep.findings.push_back({false, "truncated", "UBX header cut off at the end of the stream",
-                                static_cast<std::int64_t>(pos)});
-        break;
-      }
-      const std::size_t len = Le16(b, pos + 4);
-      if (len > kUbxMaxPayload) {
-        rep.findings.push_back({true, "ubx_length",
-                                "implausible UBX payload length " + std::to_string(len),
-                                static_cast<std::int64_t>(pos)});
-        ++out.bad;
-        pos += 2;
-        continue;
-      }
-      if (pos + 8 + len > b.size()) {
-        rep.findings.push_back({false, "truncated", "UBX frame cut off at the end of the stream",
-                                static_cast<std::int64_t>(pos)});
-        break;
-      }
-      std::uint8_t ck_a = 0, ck_b = 0;
-      for (std::size_t i = pos + 2; i < pos + 6 + len; ++i) {
-        ck_a = static_cast<std::uint8_t>(ck_a + static_cast<unsigned char>(b[i]));
-        ck_b = static_cast<std::uint8_t>(ck_b + ck_a);
-      }
-      if (ck_a != static_cast<unsigned char>(b[pos + 6 + len]) ||
-          ck_b != static_cast<unsigned char>(b[pos + 7 + len])) {
-        char msg[96];
-        std::snprintf(
-            msg, sizeof msg, "UBX checksum mismatch (class 0x%02X id 0x%02X, %zu payload bytes)",
-            static_cast<unsigned char>(b[pos + 2]), static_cast<unsigned char>(b[pos + 3]), len);
-        rep.findings.push_back({true, "checksum", msg, static_cast<std::int64_t>(pos)});
-        ++out.bad;
-        pos += 2;  // resynchronise on the next sync pair
-        continue;
-      }
-      Frame f;
-      f.kind = Frame::Kind::kUbx;
-      f.offset = pos;
-      f.length = 8 + len;
-      f.t_ns = time_at(pos);
-      f.cls = static_cast<std::uint8_t>(b[pos + 2]);
-      f.id = static_cast<std::uint8_t>(b[pos + 3]);
-      f.payload = b.substr(pos + 6, len);
-      out.frames.push_back(std::move(f));
-      pos += 8 + len;
+      if (FrameUbx(s, pos, out, rep) == FrameStep::kStop) break;
       continue;
     }
     if (want_nmea && c == '#' &&
@@ -120,53 +182,7 @@ Framed FrameStream(const ByteStream& s, bool want_nmea, bool want_ubx, Validatio
     }
     if (want_nmea && c == '$') {
       flush_garbage(pos);
-      std::size_t end = pos + 1;
-      while (end < b.size() && b[end] != '\n' && b[end] != '$' && end - pos < 4 * kNmeaMaxChars &&
-             !(static_cast<unsigned char>(b[end]) == 0xB5 && end + 1 < b.size() &&
-               static_cast<unsigned char>(b[end + 1]) == 0x62)) {
-        ++end;
-      }
-      if (end >= b.size()) {
-        rep.findings.push_back({false, "truncated",
-                                "NMEA sentence cut off at the end of the stream",
-                                static_cast<std::int64_t>(pos)});
-        break;
-      }
-      if (b[end] != '\n') {
-        rep.findings.push_back(
-            {true, "framing", "NMEA sentence without line end", static_cast<std::int64_t>(pos)});
-        ++out.bad;
-        pos = end;
-        continue;
-      }
-      std::string line = b.substr(pos, end - pos);
-      const bool crlf = !line.empty() && line.back() == '\r';
-      if (crlf) line.pop_back();
-      const std::size_t total = end + 1 - pos;
-      NmeaParse p = ParseNmeaSentence(line);
-      if (!p.sentence) {
-        rep.findings.push_back(
-            {true, p.error.find("checksum") != std::string::npos ? "checksum" : "framing",
-             "'" + line.substr(0, 24) + (line.size() > 24 ? "…" : "") + "': " + p.error,
-             static_cast<std::int64_t>(pos)});
-        ++out.bad;
-      } else {
-        if (total > kNmeaMaxChars + (crlf ? 0 : 1)) {
-          rep.findings.push_back({true, "length",
-                                  p.sentence->address + " is " + std::to_string(line.size() + 2) +
-                                      " characters with CR LF (NMEA allows 82)",
-                                  static_cast<std::int64_t>(pos)});
-        }
-        Frame f;
-        f.kind = Frame::Kind::kNmea;
-        f.offset = pos;
-        f.length = total;
-        f.t_ns = time_at(pos);
-        f.nmea = std::move(p.sentence);
-        f.crlf = crlf;
-        out.frames.push_back(std::move(f));
-      }
-      pos = end + 1;
+      if (FrameNmea(s, pos, out, rep) == FrameStep::kStop) break;
       continue;
     }
     if (c == '\r' || c == '\n') {
@@ -174,7 +190,7 @@ Framed FrameStream(const ByteStream& s, bool want_nmea, bool want_ubx, Validatio
       ++pos;
       continue;
     }
-    if (garbage_start == std::string::npos) garbage_start = pos;
+    garbage.Add(pos);
     ++pos;
   }
   flush_garbage(pos < b.size() ? pos : b.size());
@@ -292,7 +308,9 @@ struct Epoch {
   bool before_break = false;
 };
 
-void CheckNmea(const Framed& fr, bool neo5m, int baud, ValidationReport& rep) {
+// The valid sentences grouped into epochs (by time of day, and at every break of the log), with
+// the per-sentence checks: layout, the message set, the talker, the line end.
+std::vector<Epoch> GroupEpochs(const Framed& fr, bool neo5m, ValidationReport& rep) {
   std::vector<Epoch> epochs;
   bool pending_break = true;
   std::size_t lf_only = 0;
@@ -348,8 +366,12 @@ void CheckNmea(const Framed& fr, bool neo5m, int baud, ValidationReport& rep) {
         {false, "line_end",
          std::to_string(lf_only) + " sentence(s) end in LF only (CR LF expected)", -1});
   }
+  return epochs;
+}
 
-  // epoch times, rate and gaps
+// Epoch times: monotonic, the rate (and a NEO-5M's maximum), the gaps; the median period (0 when
+// there are fewer than two timed epochs).
+double CheckEpochTimes(std::vector<Epoch>& epochs, bool neo5m, ValidationReport& rep) {
   std::vector<double> dt;
   for (std::size_t i = 1; i < epochs.size(); ++i) {
     if (epochs[i].after_break || !epochs[i].tod_s || !epochs[i - 1].tod_s) continue;
@@ -395,6 +417,68 @@ void CheckNmea(const Framed& fr, bool neo5m, int baud, ValidationReport& rep) {
                   *rep.epoch_rate_hz, kNeo5mMaxRateHz);
     rep.findings.push_back({true, "rate", msg, -1});
   }
+  return period;
+}
+
+// GSV numbering within an epoch (an incomplete epoch may start inside a set).
+void CheckGsvSequence(const Epoch& e, bool complete, std::int64_t offset, ValidationReport& rep) {
+  int gsv_total = -1, gsv_next = 1;
+  for (const Frame* f : e.frames) {
+    const NmeaSentence& s = *f->nmea;
+    if (s.type() != "GSV" || s.fields.size() < 3) continue;
+    const int total = std::atoi(s.fields[0].c_str()), num = std::atoi(s.fields[1].c_str());
+    if (gsv_total < 0) gsv_total = total;
+    if ((total != gsv_total || num != gsv_next) && (complete || num != 1)) {
+      rep.findings.push_back({complete, "gsv_sequence",
+                              "GSV " + s.fields[1] + " of " + s.fields[0] +
+                                  " out of sequence (expected " + std::to_string(gsv_next) +
+                                  " of " + std::to_string(gsv_total) + ")",
+                              static_cast<std::int64_t>(f->offset)});
+    }
+    gsv_total = total;
+    gsv_next = num + 1;
+  }
+  if (complete && gsv_total > 0 && gsv_next != gsv_total + 1) {
+    rep.findings.push_back({true, "gsv_sequence", "GSV set incomplete in an epoch", offset});
+  }
+}
+
+// A u-blox 5 epoch: its sentences in order, none twice, none missing from a complete epoch.
+void CheckNeo5mEpoch(const Epoch& e, bool complete, std::int64_t offset, ValidationReport& rep) {
+  int last_rank = -1;
+  std::string last_type;
+  std::set<std::string> seen;
+  for (const Frame* f : e.frames) {
+    const std::string type = f->nmea->type();
+    const int rank = Neo5mRank(type);
+    if (rank < 0) continue;
+    if (rank < last_rank) {
+      rep.findings.push_back({true, "epoch_order",
+                              type + " after " + last_type +
+                                  ": a u-blox 5 sends RMC, VTG, GGA, GSA, GSV, GLL in that order",
+                              static_cast<std::int64_t>(f->offset)});
+    }
+    if (type != "GSV" && seen.count(type)) {
+      rep.findings.push_back({true, "epoch_duplicate", type + " twice in one epoch",
+                              static_cast<std::int64_t>(f->offset)});
+    }
+    last_rank = std::max(last_rank, rank);
+    last_type = type;
+    seen.insert(type);
+  }
+  if (complete) {
+    for (const char* need : {"RMC", "VTG", "GGA", "GSA", "GSV", "GLL"}) {
+      if (!seen.count(need)) {
+        rep.findings.push_back(
+            {false, "epoch_incomplete", std::string(need) + " missing from an epoch", offset});
+      }
+    }
+  }
+}
+
+void CheckNmea(const Framed& fr, bool neo5m, int baud, ValidationReport& rep) {
+  std::vector<Epoch> epochs = GroupEpochs(fr, neo5m, rep);
+  const double period = CheckEpochTimes(epochs, neo5m, rep);
 
   // per-epoch content (complete epochs only: not next to a break or the stream ends)
   std::vector<double> first_byte_offset_s;
@@ -402,56 +486,9 @@ void CheckNmea(const Framed& fr, bool neo5m, int baud, ValidationReport& rep) {
     const Epoch& e = epochs[k];
     const bool complete = !e.after_break && !e.before_break;
     const auto offset = static_cast<std::int64_t>(e.frames.front()->offset);
-    // GSV numbering
-    int gsv_total = -1, gsv_next = 1;
-    for (const Frame* f : e.frames) {
-      const NmeaSentence& s = *f->nmea;
-      if (s.type() != "GSV" || s.fields.size() < 3) continue;
-      const int total = std::atoi(s.fields[0].c_str()), num = std::atoi(s.fields[1].c_str());
-      if (gsv_total < 0) gsv_total = total;
-      if ((total != gsv_total || num != gsv_next) && (complete || num != 1)) {
-        rep.findings.push_back({complete, "gsv_sequence",
-                                "GSV " + s.fields[1] + " of " + s.fields[0] +
-                                    " out of sequence (expected " + std::to_string(gsv_next) +
-                                    " of " + std::to_string(gsv_total) + ")",
-                                static_cast<std::int64_t>(f->offset)});
-      }
-      gsv_total = total;
-      gsv_next = num + 1;
-    }
-    if (complete && gsv_total > 0 && gsv_next != gsv_total + 1) {
-      rep.findings.push_back({true, "gsv_sequence", "GSV set incomplete in an epoch", offset});
-    }
+    CheckGsvSequence(e, complete, offset, rep);
     if (!neo5m) continue;
-    int last_rank = -1;
-    std::string last_type;
-    std::set<std::string> seen;
-    for (const Frame* f : e.frames) {
-      const std::string type = f->nmea->type();
-      const int rank = Neo5mRank(type);
-      if (rank < 0) continue;
-      if (rank < last_rank) {
-        rep.findings.push_back({true, "epoch_order",
-                                type + " after " + last_type +
-                                    ": a u-blox 5 sends RMC, VTG, GGA, GSA, GSV, GLL in that order",
-                                static_cast<std::int64_t>(f->offset)});
-      }
-      if (type != "GSV" && seen.count(type)) {
-        rep.findings.push_back({true, "epoch_duplicate", type + " twice in one epoch",
-                                static_cast<std::int64_t>(f->offset)});
-      }
-      last_rank = std::max(last_rank, rank);
-      last_type = type;
-      seen.insert(type);
-    }
-    if (complete) {
-      for (const char* need : {"RMC", "VTG", "GGA", "GSA", "GSV", "GLL"}) {
-        if (!seen.count(need)) {
-          rep.findings.push_back(
-              {false, "epoch_incomplete", std::string(need) + " missing from an epoch", offset});
-        }
-      }
-    }
+    CheckNeo5mEpoch(e, complete, offset, rep);
     if (baud > 0 && period > 0 && static_cast<double>(e.bytes) * 10.0 / baud > period) {
       char msg[128];
       std::snprintf(msg, sizeof msg,

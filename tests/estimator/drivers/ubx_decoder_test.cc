@@ -92,7 +92,6 @@ TEST(UbxDecoderTest, AssemblesAnEpochFromMixedSplitStream) {
 
 TEST(UbxDecoderTest, NoFixIsNotReportedAndIncompleteEpochFlushesOnNextItow) {
   UbxEpochAssembler a;
-  UbxMessage m;
   std::vector<GnssSample> out;
   UbxDecoder d([&](const UbxMessage& msg) {
     for (const GnssSample& g : a.Add(msg)) out.push_back(g);

@@ -121,8 +121,8 @@ class Navigator {
   explicit Navigator(const NavigatorParams& params);
 
   void Push(const ImuSample& s);
-  void Push(const GnssSample& s);
-  void Push(const HeadingSample& s);
+  void Push(const GnssSample& g);
+  void Push(const HeadingSample& h);
   /// Runs the filter up to the fusion horizon.
   void Update();
   /// The solution at the newest input time (IMU modes: output predictor).

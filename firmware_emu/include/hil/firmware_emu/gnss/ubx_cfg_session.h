@@ -78,6 +78,8 @@ struct Reply {
   std::string name;
 };
 
+class CfgReplies;  // the replies to one CFG message (ubx_cfg_session.cc)
+
 class UbxCfgSession {
  public:
   /// @param max_rate_hz highest navigation rate the receiver supports (CFG-RATE refuses more)
@@ -99,6 +101,12 @@ class UbxCfgSession {
   std::vector<std::uint8_t> PortBlock(int port_id) const;
   bool Known(std::uint8_t cls, std::uint8_t id) const;
   void CopySections(const ReceiverSettings& from, ReceiverSettings& to, std::uint32_t mask) const;
+  // one CFG message each (Handle dispatches)
+  void HandlePrt(const std::vector<std::uint8_t>& payload, int port_id, CfgReplies& out);
+  void HandleMsg(const std::vector<std::uint8_t>& payload, int port_id, CfgReplies& out);
+  void HandleRate(const std::vector<std::uint8_t>& payload, CfgReplies& out);
+  void HandleNav5(const std::vector<std::uint8_t>& payload, CfgReplies& out);
+  void HandleRst(const std::vector<std::uint8_t>& payload, CfgReplies& out, CfgEffects& fx);
 
   ReceiverSettings defaults_, current_, saved_;
   double max_rate_hz_;

@@ -45,7 +45,7 @@ struct CandumpRecord {
 /// The compact frame string, as candump prints it (no '.' separators).
 std::string FormatCanFrameText(const CanWireFrame& f);
 /// Parses a frame string; nothing if it is not a classic, RTR, error or FD frame string.
-std::optional<CanWireFrame> ParseCanFrameText(std::string_view text);
+std::optional<CanWireFrame> ParseCanFrameText(std::string_view s);
 
 /// One log line without the newline. `iface_width` right-aligns the interface name as candump does
 /// when it dumps several interfaces (0: no padding). The time is truncated to the microsecond.

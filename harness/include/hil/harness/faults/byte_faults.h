@@ -32,10 +32,10 @@ class ByteFaultInjector {
   ByteFaultInjector(const FaultTimeline& timeline, std::uint64_t seed,
                     FaultRecorder* recorder = nullptr);
 
-  /// Applies the faults active at `msg.t_ready` on `link` and appends what the link carries to
+  /// Applies the faults active at `in.t_ready` on `link` and appends what the link carries to
   /// `out`: nothing (dropped), the message, or two copies (duplicated). `link_baud` is the host's
   /// baud (for baud_mismatch; 0 disables that fault).
-  void Process(const SerialMessage& msg, const std::string& link, int link_baud,
+  void Process(const SerialMessage& in, const std::string& link, int link_baud,
                std::vector<SerialMessage>& out);
   /// Process() without baud mismatch and duplicates, in place. Returns false when the message is
   /// dropped.

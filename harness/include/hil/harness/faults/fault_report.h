@@ -34,7 +34,7 @@ struct EstimatorHealth {
   /// Takes one output line of the estimator (lines without a health object are ignored).
   void AddLine(const std::string& line);
   /// The same for a line already parsed (a JSON object; anything else is ignored).
-  void AddJson(const nlohmann::json& line);
+  void AddJson(const nlohmann::json& j);
 };
 
 /// The flags navd knows (navd.flag.<name> is 0 for these when never raised).

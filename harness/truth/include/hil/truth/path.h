@@ -79,7 +79,7 @@ struct BoustrophedonSpec {
   double arc_step_deg = 5;               ///< polyline resolution of the arcs
 };
 /// @throws std::invalid_argument when row_spacing < 2 × turn_radius.
-Path MakeBoustrophedon(const BoustrophedonSpec& spec);
+Path MakeBoustrophedon(const BoustrophedonSpec& b);
 /// A circle of `radius_m` about `centre`, starting at the point that lies at bearing
 /// `start_bearing_deg` (clockwise from north) from the centre, travelling counter-clockwise (left
 /// turn) or clockwise, `laps` times, as a polygon with `points_per_lap` vertices.
