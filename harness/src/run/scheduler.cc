@@ -3,7 +3,6 @@
 #include <poll.h>
 
 #include <algorithm>
-#include <cstdio>
 
 #include "hil/truth/truth_integrator.h"
 
@@ -15,16 +14,19 @@ constexpr Duration kHostPollPeriod = std::chrono::milliseconds(1);
 
 }  // namespace
 
-Scheduler::Scheduler(const Scenario& scenario, DeviceSet& devices, ByteFaultInjector& faults,
-                     const link::RealtimePacer* pacer, std::ostream& fixes_csv)
-    : scenario_(scenario), set_(devices), faults_(faults), pacer_(pacer), fixes_csv_(fixes_csv) {}
+Scheduler::Scheduler(DeviceSet& devices, const link::RealtimePacer* pacer, Time t_end)
+    : set_(devices), pacer_(pacer), t_end_(t_end) {}
 
 void Scheduler::Dispatch(std::size_t d, DeviceOutput& out) {
   std::vector<SerialMessage> carried;
   for (SerialMessage& m : out.serial) {
     SerialEndpoint& ep = *set_.endpoints[d].at(static_cast<std::size_t>(m.port));
     carried.clear();
-    faults_.Process(m, ep.link_name(), ep.uart().baud(), carried);
+    if (faults_) {
+      faults_->Process(m, ep.link_name(), ep.uart().baud(), carried);
+    } else {
+      carried.push_back(m);
+    }
     for (const SerialMessage& c : carried) {
       if (ep.Queue(c)) {
         if (!pacer_) writes_.Add(ep, c.bytes.size());
@@ -37,7 +39,7 @@ void Scheduler::Dispatch(std::size_t d, DeviceOutput& out) {
     }
   }
   if (set_.can) {
-    faults_.ProcessCan(out.can);
+    if (faults_) faults_->ProcessCan(out.can);
     for (const CanFrame& f : out.can) set_.can->Queue(f);
   }
   out.clear();
@@ -77,93 +79,72 @@ bool Scheduler::PollHosts(Time t_host, DeviceOutput& out) {
   return replied;
 }
 
-void Scheduler::RecordFixes(Time t) {
-  // the raw-GNSS baseline is one receiver, the first (its antenna is the scenario's antenna lever
-  // arm); further receivers of a multi-antenna scenario feed the estimator, not the baseline
-  if (set_.fix_sources.empty()) return;
-  {
-    const gnss::GnssFix& fix = *set_.fix_sources.front()();
-    if (fix.t_validity != t) return;
-    if (recorder_) {
-      const auto outage = recorder_->Active(FaultKind::kGnssOutage, t);
-      if (outage && !fix.valid()) recorder_->Note(*outage, t);
-      const auto gap = recorder_->Active(FaultKind::kGnssDataGap, t);
-      if (gap) recorder_->Note(*gap, t);  // the receiver computed this epoch but sent nothing
-      const auto glitch = recorder_->Active(FaultKind::kGnssGlitch, t);
-      if (glitch && fix.valid()) recorder_->Note(*glitch, t);
+bool Scheduler::PaceTowards(Time t_event, DeviceOutput& out) {
+  // the next action in emulated time: a device event, a byte leaving a UART or a CAN frame
+  std::optional<Time> t_byte;
+  SerialEndpoint* ep_next = nullptr;
+  for (auto& ports : set_.endpoints) {
+    for (auto& ep : ports) {
+      const auto tb = ep->next_byte_time();
+      if (tb && (!t_byte || *tb < *t_byte)) {
+        t_byte = tb;
+        ep_next = ep.get();
+      }
     }
-    if (!fix.valid()) return;
-    EstimateRecord r;
-    r.t_validity = fix.t_validity;
-    r.lat_deg = fix.lat_deg;
-    r.lon_deg = fix.lon_deg;
-    r.height_m = fix.height_m;
-    r.vel_enu_mps = Eigen::Vector3d(fix.vel_e_mps, fix.vel_n_mps, -fix.vel_d_mps);
-    fixes_.push_back(r);
-    char line[256];
-    std::snprintf(line, sizeof line, "%.3f,%.9f,%.9f,%.4f,%.4f,%.4f,%.4f,%d,%.2f\n",
-                  ToSeconds(fix.t_validity), fix.lat_deg, fix.lon_deg, fix.height_m, fix.vel_n_mps,
-                  fix.vel_e_mps, fix.vel_d_mps, fix.num_sv, fix.hdop);
-    fixes_csv_ << line;
   }
+  const std::optional<Time> t_frame = set_.can ? set_.can->next_frame_time() : std::nullopt;
+  if (t_frame && (!t_byte || *t_frame <= *t_byte) && (*t_frame < t_event || t_event > t_end_)) {
+    set_.can->SendNext(*pacer_);
+    return true;
+  }
+  if (ep_next && (*t_byte < t_event || t_event > t_end_)) {
+    ep_next->WriteNextByte(*pacer_);
+    PollHosts(*t_byte, out);  // a host's command arrives while the device talks
+    return true;
+  }
+  if (t_event > t_end_) return false;
+  // idle until the next event, but a host command is read when it arrives (within ~1 ms), not at
+  // the next event: the device may answer in between
+  const Time t_wake = std::min(
+      t_event, pacer_->SimTimeOfWall(link::RealtimePacer::MonotonicNs()) + kHostPollPeriod);
+  pacer_->SleepUntil(t_wake);
+  return PollHosts(t_wake, out) || t_wake < t_event;
 }
 
-void Scheduler::Run(const std::function<bool(Time)>& keep_going) {
-  truth::TruthIntegrator truth(scenario_.truth);
-  const Time t_end = TimeFromSeconds(scenario_.duration_s);
+void Scheduler::Serve(Time t_event, const TruthSample& truth, SchedulerMonitor& monitor,
+                      DeviceOutput& out) {
+  for (std::size_t d = 0; d < set_.devices.size(); ++d) {
+    if (set_.devices[d]->next_event_time() != t_event) continue;
+    set_.devices[d]->OnEvent(truth, out);
+    Dispatch(d, out);
+  }
+  monitor.OnDeviceEvents(t_event);
+  // configuration commands from the host reach the device with their arrival time
+  PollHosts(t_event, out);
+  t_last_event_ = t_event;
+  PollBus();
+}
+
+void Scheduler::Run(SchedulerMonitor& monitor, const truth::TruthConfig* truth) {
+  std::optional<truth::TruthIntegrator> integrator;
+  if (truth) integrator.emplace(*truth);
   DeviceOutput out;
   for (;;) {
-    // the next action in emulated time: a device event or (real time) a byte leaving a UART
     std::optional<Time> t_event;
     for (const auto& dev : set_.devices) {
       if (!t_event || dev->next_event_time() < *t_event) t_event = dev->next_event_time();
     }
     if (!t_event) break;
-    if (pacer_) {
-      std::optional<Time> t_byte;
-      SerialEndpoint* ep_next = nullptr;
-      for (auto& ports : set_.endpoints) {
-        for (auto& ep : ports) {
-          const auto tb = ep->next_byte_time();
-          if (tb && (!t_byte || *tb < *t_byte)) {
-            t_byte = tb;
-            ep_next = ep.get();
-          }
-        }
-      }
-      const std::optional<Time> t_frame = set_.can ? set_.can->next_frame_time() : std::nullopt;
-      if (t_frame && (!t_byte || *t_frame <= *t_byte) &&
-          (*t_frame < *t_event || *t_event > t_end)) {
-        set_.can->SendNext(*pacer_);
-        continue;
-      }
-      if (ep_next && (*t_byte < *t_event || *t_event > t_end)) {
-        ep_next->WriteNextByte(*pacer_);
-        PollHosts(*t_byte, out);  // a host's command arrives while the device talks
-        continue;
-      }
-      if (*t_event <= t_end) {
-        // idle until the next event, but a host command is read when it arrives (within ~1 ms),
-        // not at the next event: the device may answer in between
-        const Time t_wake = std::min(
-            *t_event, pacer_->SimTimeOfWall(link::RealtimePacer::MonotonicNs()) + kHostPollPeriod);
-        pacer_->SleepUntil(t_wake);
-        if (PollHosts(t_wake, out) || t_wake < *t_event) continue;
-      }
+    if (pacer_ && PaceTowards(*t_event, out)) continue;
+    if (*t_event > t_end_) break;
+    TruthSample sample;
+    if (integrator) {
+      sample = integrator->Sample(*t_event);
+    } else {
+      sample.t = *t_event;
     }
-    if (*t_event > t_end) break;
-    const TruthSample ts = truth.Sample(*t_event);
-    for (std::size_t d = 0; d < set_.devices.size(); ++d) {
-      if (set_.devices[d]->next_event_time() != *t_event) continue;
-      set_.devices[d]->OnEvent(ts, out);
-      Dispatch(d, out);
-    }
-    RecordFixes(*t_event);
-    // configuration commands from the host reach the device with their arrival time
-    PollHosts(*t_event, out);
-    t_last_event_ = *t_event;
-    PollBus();
-    if (write_refused_ || !keep_going(*t_event)) break;
+    Serve(*t_event, sample, monitor, out);
+    if (write_refused_ || !monitor.KeepGoing(*t_event)) break;
   }
 }
 
