@@ -9,6 +9,9 @@ CanWireFrame FromDeviceFrame(const CanFrame& f) {
   w.id = f.id & (f.extended ? 0x1FFFFFFFU : 0x7FFU);
   w.extended = f.extended;
   w.fd = f.fd;
+  w.rtr = f.rtr;
+  w.error = f.error;
+  w.fd_flags = f.fd_flags;
   w.len = std::min<std::uint8_t>(f.len, f.fd ? 64 : 8);
   std::copy_n(f.data.begin(), w.len, w.data.begin());
   return w;

@@ -203,15 +203,22 @@ class NoLinesReader final : public EstimateReader {
 
 }  // namespace
 
-std::unique_ptr<EstimateReader> MakeEstimateReader(const std::string& output,
+std::unique_ptr<EstimateReader> MakeEstimateReader(EstimatorOutput output,
                                                    std::int64_t start_unix_ns) {
-  if (output == "json_stdout") return std::make_unique<JsonLinesReader>(start_unix_ns);
-  if (output == "gpsd_json") return std::make_unique<GpsdJsonReader>(start_unix_ns);
-  if (output == "nmea_stdout" || output == "nmea_pty")
-    return std::make_unique<NmeaReader>(start_unix_ns);
-  if (output == "n2k_candump") return std::make_unique<N2kCandumpReader>(start_unix_ns);
-  if (output == "n2k_socketcan") return std::make_unique<NoLinesReader>();
-  throw std::invalid_argument("unknown estimator output format '" + output + "'");
+  switch (output) {
+    case EstimatorOutput::kJsonStdout:
+      return std::make_unique<JsonLinesReader>(start_unix_ns);
+    case EstimatorOutput::kGpsdJson:
+      return std::make_unique<GpsdJsonReader>(start_unix_ns);
+    case EstimatorOutput::kNmeaStdout:
+    case EstimatorOutput::kNmeaPty:
+      return std::make_unique<NmeaReader>(start_unix_ns);
+    case EstimatorOutput::kN2kCandump:
+      return std::make_unique<N2kCandumpReader>(start_unix_ns);
+    case EstimatorOutput::kN2kSocketcan:
+      return std::make_unique<NoLinesReader>();
+  }
+  throw std::invalid_argument("unknown estimator output format");
 }
 
 }  // namespace hil::harness

@@ -53,6 +53,11 @@ SerialEndpoint::~SerialEndpoint() {
 }
 
 bool SerialEndpoint::Queue(const SerialMessage& msg) {
+  if (msg.byte_period) {  // timed already (a replay): the bytes keep their recorded times
+    pending_.emplace_back(link::TimedChunk{msg.t_ready, *msg.byte_period, msg.bytes},
+                          msg.name.empty() ? "-" : msg.name);
+    return true;
+  }
   auto chunk = uart_.Submit(msg.t_ready, msg.bytes);
   if (!chunk) {
     CaptureRecord r;

@@ -51,15 +51,15 @@ void WriteNavdConfig(const std::string& path, const Scenario& s, const std::stri
   for (const auto& [key, value] : s.estimator.navd_input) out << key << " = " << value << "\n";
   out << "\n[time]\nleap_seconds = " << gnss::LeapSecondsAtUnix(s.start_unix_ns / 1000000000LL)
       << "\n\n"
-      << "[filter]\nmode = " << s.estimator.navd_mode << "\n";
+      << "[filter]\nmode = " << Name(s.estimator.navd_mode) << "\n";
   // navd's body origin is the IMU: the antenna relative to the board
   const Eigen::Vector3d lever = s.gnss.model.p_BA_B_m - s.mcu.config.mounting.p_BI_B_m;
   if (imu) out << "lever_arm_m = " << lever.x() << ", " << lever.y() << ", " << lever.z() << "\n";
   for (const auto& [key, value] : s.estimator.navd_filter) out << key << " = " << value << "\n";
-  if (s.estimator.navd_mode == "multi_gnss") WriteNavdReceivers(out, s, gnss_device);
+  if (s.estimator.navd_mode == NavdMode::kMultiGnss) WriteNavdReceivers(out, s, gnss_device);
   // n2k_socketcan: the solution is read from navd's NMEA 2000 frames on the bus; its JSON lines
   // stay on stdout (not scored: estimate.jsonl) so the harness still reads navd's health object
-  if (s.estimator.output == "n2k_socketcan") {
+  if (s.estimator.output == EstimatorOutput::kN2kSocketcan) {
     out << "\n[output]\njson = -\ncan_interface = " << s.can.interface << "\n";
   } else {
     out << "\n[output]\njson = -\n";
@@ -106,6 +106,18 @@ void WriteTruthCsv(const TruthTable& truth, const Scenario& s, const std::string
     t_s.push_back(ToSeconds(t));
     en_m.emplace_back(x.p_NB_N_m.x(), x.p_NB_N_m.y());
   }
+}
+
+void WriteFixCsvHeader(std::ostream& out) {
+  out << "t_s,lat_deg,lon_deg,height_m,vel_n_mps,vel_e_mps,vel_d_mps,num_sv,hdop\n";
+}
+
+void WriteFixCsvLine(std::ostream& out, const gnss::GnssFix& fix) {
+  char line[256];
+  std::snprintf(line, sizeof line, "%.3f,%.9f,%.9f,%.4f,%.4f,%.4f,%.4f,%d,%.2f\n",
+                ToSeconds(fix.t_validity), fix.lat_deg, fix.lon_deg, fix.height_m, fix.vel_n_mps,
+                fix.vel_e_mps, fix.vel_d_mps, fix.num_sv, fix.hdop);
+  out << line;
 }
 
 void WriteScheduleErrors(const DeviceSet& set, const std::string& path) {

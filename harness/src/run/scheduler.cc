@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
 #include <thread>
 
 #include "hil/truth/truth_integrator.h"
@@ -22,9 +21,8 @@ constexpr std::int64_t kEventLeadNs = 5'000'000;
 
 }  // namespace
 
-Scheduler::Scheduler(const Scenario& scenario, DeviceSet& devices, ByteFaultInjector& faults,
-                     const link::RealtimePacer* pacer, std::ostream& fixes_csv)
-    : scenario_(scenario), set_(devices), faults_(faults), pacer_(pacer), fixes_csv_(fixes_csv) {}
+Scheduler::Scheduler(DeviceSet& devices, const link::RealtimePacer* pacer, Time t_end)
+    : set_(devices), pacer_(pacer), t_end_(t_end) {}
 
 Scheduler::~Scheduler() = default;
 
@@ -49,7 +47,11 @@ void Scheduler::Dispatch(std::size_t d, DeviceOutput& out) {
   for (SerialMessage& m : out.serial) {
     SerialEndpoint& ep = *set_.endpoints[d].at(static_cast<std::size_t>(m.port));
     carried.clear();
-    faults_.Process(m, ep.link_name(), ep.uart().baud(), carried);
+    if (faults_) {
+      faults_->Process(m, ep.link_name(), ep.uart().baud(), carried);
+    } else {
+      carried.push_back(m);
+    }
     for (const SerialMessage& c : carried) {
       if (ep.Queue(c)) {
         if (!pacer_) writes_.Add(ep, c.bytes.size());
@@ -62,7 +64,7 @@ void Scheduler::Dispatch(std::size_t d, DeviceOutput& out) {
     }
   }
   if (set_.can) {
-    faults_.ProcessCan(out.can);
+    if (faults_) faults_->ProcessCan(out.can);
     for (const CanFrame& f : out.can) set_.can->Queue(f);
   }
   out.clear();
@@ -117,41 +119,53 @@ bool Scheduler::PollHosts(Time t_host, DeviceOutput& out) {
   return replied;
 }
 
-void Scheduler::RecordFixes(Time t) {
-  // the raw-GNSS baseline is one receiver, the first (its antenna is the scenario's antenna lever
-  // arm); further receivers of a multi-antenna scenario feed the estimator, not the baseline
-  if (set_.fix_sources.empty()) return;
-  {
-    const gnss::GnssFix& fix = *set_.fix_sources.front()();
-    if (fix.t_validity != t) return;
-    if (recorder_) {
-      const auto outage = recorder_->Active(FaultKind::kGnssOutage, t);
-      if (outage && !fix.valid()) recorder_->Note(*outage, t);
-      const auto gap = recorder_->Active(FaultKind::kGnssDataGap, t);
-      if (gap) recorder_->Note(*gap, t);  // the receiver computed this epoch but sent nothing
-      const auto glitch = recorder_->Active(FaultKind::kGnssGlitch, t);
-      if (glitch && fix.valid()) recorder_->Note(*glitch, t);
-    }
-    if (!fix.valid()) return;
-    EstimateRecord r;
-    r.t_validity = fix.t_validity;
-    r.lat_deg = fix.lat_deg;
-    r.lon_deg = fix.lon_deg;
-    r.height_m = fix.height_m;
-    r.vel_enu_mps = Eigen::Vector3d(fix.vel_e_mps, fix.vel_n_mps, -fix.vel_d_mps);
-    fixes_.push_back(r);
-    char line[256];
-    std::snprintf(line, sizeof line, "%.3f,%.9f,%.9f,%.4f,%.4f,%.4f,%.4f,%d,%.2f\n",
-                  ToSeconds(fix.t_validity), fix.lat_deg, fix.lon_deg, fix.height_m, fix.vel_n_mps,
-                  fix.vel_e_mps, fix.vel_d_mps, fix.num_sv, fix.hdop);
-    fixes_csv_ << line;
-  }
+bool Scheduler::PaceTowards(Time t_event, DeviceOutput& out) {
+  // the pacing thread writes the bytes and frames; this one idles until the next event, but reads
+  // a host command when it arrives (within ~1 ms), not at the next event: the device may answer
+  // in between
+  if (!pacing_) StartPacing();
+  const std::int64_t now = link::RealtimePacer::MonotonicNs();
+  const std::int64_t due = pacer_->WallNsOf(t_event) - kEventLeadNs;
+  if (t_event > t_end_ || due <= now) return false;
+  std::this_thread::sleep_until(std::chrono::steady_clock::time_point(
+      std::chrono::nanoseconds(std::min(due, now + kHostPollPeriodNs))));
+  PollHosts(t_event, out);
+  return true;
 }
 
-void Scheduler::Run(const std::function<bool(Time)>& keep_going) {
+bool Scheduler::HostStep(Time t_event, DeviceOutput& out) {
+  // host bytes arriving, then a host turn, due before (or at) this event come first
+  if (!arrivals_.empty() && arrivals_.front().t <= std::min(t_event, t_end_)) {
+    DeliverHostBytes(arrivals_.front(), out);
+    arrivals_.pop_front();
+    return true;
+  }
+  const Time t_turn = NextHostTurn();
+  if (t_turn > t_event || t_turn > t_end_) return false;
+  HostTurn(t_turn);
+  return true;
+}
+
+void Scheduler::Serve(Time t_event, const TruthSample& truth, SchedulerMonitor& monitor,
+                      DeviceOutput& out) {
+  for (std::size_t d = 0; d < set_.devices.size(); ++d) {
+    if (set_.devices[d]->next_event_time() != t_event) continue;
+    set_.devices[d]->OnEvent(truth, out);
+    Dispatch(d, out);
+  }
+  monitor.OnDeviceEvents(t_event);
+  t_last_event_ = t_event;
+  // real time: configuration commands from the host reach the device with their arrival time
+  // (virtual mode reads them at host turns); without a gate no host is paced and none is waited
+  // for
+  if (pacer_ || !gate_) PollHosts(t_event, out);
+  PollBus();
+}
+
+void Scheduler::Run(SchedulerMonitor& monitor, const truth::TruthConfig* truth) {
   bool to_the_end = false;
   try {
-    to_the_end = RunEvents(keep_going);
+    to_the_end = RunEvents(monitor, truth);
   } catch (...) {
     pacing_.reset();  // a run that failed writes nothing more
     throw;
@@ -159,60 +173,30 @@ void Scheduler::Run(const std::function<bool(Time)>& keep_going) {
   if (!to_the_end) pacing_.reset();  // stopped early: what is queued stays unsent
 }
 
-bool Scheduler::RunEvents(const std::function<bool(Time)>& keep_going) {
-  truth::TruthIntegrator truth(scenario_.truth);
-  const Time t_end = TimeFromSeconds(scenario_.duration_s);
+bool Scheduler::RunEvents(SchedulerMonitor& monitor, const truth::TruthConfig* truth) {
+  std::optional<truth::TruthIntegrator> integrator;
+  if (truth) integrator.emplace(*truth);
   DeviceOutput out;
   for (;;) {
-    // the next action in emulated time: a device event or (real time) a byte leaving a UART
     std::optional<Time> t_event;
     for (const auto& dev : set_.devices) {
       if (!t_event || dev->next_event_time() < *t_event) t_event = dev->next_event_time();
     }
     if (!t_event) return true;
-    if (pacer_) {
-      // the pacing thread writes the bytes and frames; this one idles until the next event, but
-      // reads a host command when it arrives (within ~1 ms), not at the next event: the device
-      // may answer in between
-      if (!pacing_) StartPacing();
-      const std::int64_t now = link::RealtimePacer::MonotonicNs();
-      const std::int64_t due = pacer_->WallNsOf(*t_event) - kEventLeadNs;
-      if (*t_event <= t_end && due > now) {
-        std::this_thread::sleep_until(std::chrono::steady_clock::time_point(
-            std::chrono::nanoseconds(std::min(due, now + kHostPollPeriodNs))));
-        PollHosts(*t_event, out);
-        continue;
-      }
+    if (pacer_ && PaceTowards(*t_event, out)) continue;
+    if (gate_ && !pacer_ && HostStep(*t_event, out)) {
+      if (write_refused_) return false;
+      continue;
     }
-    if (gate_ && !pacer_) {
-      // host bytes arriving, then a host turn, due before (or at) this event come first
-      if (!arrivals_.empty() && arrivals_.front().t <= std::min(*t_event, t_end)) {
-        DeliverHostBytes(arrivals_.front(), out);
-        arrivals_.pop_front();
-        continue;
-      }
-      const Time t_turn = NextHostTurn();
-      if (t_turn <= *t_event && t_turn <= t_end) {
-        HostTurn(t_turn);
-        if (write_refused_) return false;
-        continue;
-      }
+    if (*t_event > t_end_) return true;
+    TruthSample sample;
+    if (integrator) {
+      sample = integrator->Sample(*t_event);
+    } else {
+      sample.t = *t_event;
     }
-    if (*t_event > t_end) return true;
-    const TruthSample ts = truth.Sample(*t_event);
-    for (std::size_t d = 0; d < set_.devices.size(); ++d) {
-      if (set_.devices[d]->next_event_time() != *t_event) continue;
-      set_.devices[d]->OnEvent(ts, out);
-      Dispatch(d, out);
-    }
-    RecordFixes(*t_event);
-    t_last_event_ = *t_event;
-    // real time: configuration commands from the host reach the device with their arrival time
-    // (virtual mode reads them at host turns); without a gate no host is paced and none is waited
-    // for
-    if (pacer_ || !gate_) PollHosts(*t_event, out);
-    PollBus();
-    if (write_refused_ || !keep_going(*t_event)) return false;
+    Serve(*t_event, sample, monitor, out);
+    if (write_refused_ || !monitor.KeepGoing(*t_event)) return false;
   }
 }
 

@@ -64,14 +64,10 @@ std::vector<std::pair<std::string, std::string>> ReadNavdKeys(
 void ReadEstimator(const YamlReader& r, EstimatorSpec& e) {
   r.CheckKeys({"command", "output", "navd_mode", "navd_filter", "navd_input", "reference_point",
                "silence_timeout_s", "startup_s"});
-  e.reference_point =
-      r.Choice("reference_point", e.reference_point, {"auto", "body", "antenna", "imu"});
+  e.reference_point = r.Choice("reference_point", e.reference_point, kReferencePointNames);
   e.command = r.String("command", e.command);
-  e.output = r.Choice(
-      "output", e.output,
-      {"json_stdout", "gpsd_json", "nmea_stdout", "nmea_pty", "n2k_candump", "n2k_socketcan"});
-  e.navd_mode = r.Choice("navd_mode", e.navd_mode,
-                         {"gnss_only", "ekf", "planar2d", "imu_only", "multi_gnss"});
+  e.output = r.Choice("output", e.output, kEstimatorOutputNames);
+  e.navd_mode = r.Choice("navd_mode", e.navd_mode, kNavdModeNames);
   if (auto f = r.OptionalChild("navd_filter")) e.navd_filter = ReadNavdKeys(*f, "filter");
   if (auto f = r.OptionalChild("navd_input")) {
     e.navd_input = ReadNavdKeys(

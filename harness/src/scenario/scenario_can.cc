@@ -22,7 +22,7 @@ void CheckCanUse(const YamlReader& root, const Scenario& s) {
     root.OptionalChild("can")->Fail("imu_to_estimator",
                                     "needs an mcu section with can: {enabled: true}");
   }
-  if (s.estimator.output == "n2k_socketcan" && s.can.interface.empty()) {
+  if (s.estimator.output == EstimatorOutput::kN2kSocketcan && s.can.interface.empty()) {
     root.OptionalChild("estimator")
         ->Fail("output", "n2k_socketcan reads the CAN bus: the scenario needs can: {interface: …}");
   }

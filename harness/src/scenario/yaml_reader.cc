@@ -316,6 +316,17 @@ std::string YamlReader::Choice(const std::string& key, const std::string& fallba
   Fail(key, msg + ")");
 }
 
+std::size_t YamlReader::ChoiceIndex(const std::string& key, std::size_t fallback,
+                                    std::span<const std::string_view> names) const {
+  const std::string v = String(key, std::string(names[fallback]));
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (v == names[i]) return i;
+  }
+  std::string msg = "unknown value '" + v + "' (one of:";
+  for (const std::string_view c : names) msg += " " + std::string(c);
+  Fail(key, msg + ")");
+}
+
 std::vector<double> YamlReader::Doubles(const std::string& key, std::size_t n,
                                         std::vector<double> fallback) const {
   const auto found = Get(key);

@@ -142,6 +142,8 @@ TEST(McuDeviceTest, ResetRestartsTickAndSequence) {
   EXPECT_EQ(frames[boot + 1].frame.type, static_cast<std::uint8_t>(MessageType::kImuSample));
   EXPECT_NEAR(frames[boot + 1].frame.tick, 10000.0, 1.0);
   EXPECT_EQ(dev.stats().resets, 1u);
+  const Device& as_device = dev;  // what the run's report reads, through the Device interface
+  EXPECT_EQ(as_device.statistics().resets, 1u);
 }
 
 TEST(McuDeviceTest, AResetWithADurationStaysSilentThatLong) {

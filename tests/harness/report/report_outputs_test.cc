@@ -18,7 +18,7 @@ namespace {
 const std::int64_t kStart = gnss::ParseIsoUtc("2013-06-10T08:00:00Z");
 
 TEST(EstimateReaderTest, NavdJsonLines) {
-  auto r = MakeEstimateReader("json_stdout", kStart);
+  auto r = MakeEstimateReader(EstimatorOutput::kJsonStdout, kStart);
   const auto e = r->Line(
       R"({"tov_utc_s":1370851202.500000000,"lat_deg":35.5,"lon_deg":50.6,"height_m":1312.5,"vel_enu_mps":[0.1,0.2,0.0],)"
       R"("pos_std_enu_m":[0.3,0.3,0.6],"yaw_deg":30.0,"mode":"gnss_only","status":0})",
@@ -36,16 +36,16 @@ TEST(EstimateReaderTest, NavdJsonLines) {
 // n2k_socketcan: the solutions come from the bus; navd's JSON lines on stdout are read for its
 // health only, never as solutions, and are not "unparsed" output
 TEST(EstimateReaderTest, N2kSocketcanTakesNoSolutionFromLines) {
-  auto r = MakeEstimateReader("n2k_socketcan", kStart);
+  auto r = MakeEstimateReader(EstimatorOutput::kN2kSocketcan, kStart);
   EXPECT_FALSE(r->Line(
       R"({"tov_utc_s":1370851202.5,"lat_deg":35.5,"lon_deg":50.6,"height_m":1312.5,"status":0})",
       1));
   EXPECT_FALSE(r->SolutionsInLines());
-  EXPECT_TRUE(MakeEstimateReader("json_stdout", kStart)->SolutionsInLines());
+  EXPECT_TRUE(MakeEstimateReader(EstimatorOutput::kJsonStdout, kStart)->SolutionsInLines());
 }
 
 TEST(EstimateReaderTest, GpsdTpvObjects) {
-  auto r = MakeEstimateReader("gpsd_json", kStart);
+  auto r = MakeEstimateReader(EstimatorOutput::kGpsdJson, kStart);
   const auto e = r->Line(
       R"({"class":"TPV","device":"/dev/pts/3","mode":3,"time":"2013-06-10T08:00:03.000Z","ept":0.005,)"
       R"("lat":35.47960960,"lon":50.59797650,"altHAE":1312.000,"track":90.0,"speed":2.0,"climb":0.0,)"
@@ -73,7 +73,7 @@ std::string Nmea(const std::string& body) {
 }
 
 TEST(EstimateReaderTest, NmeaGgaWithRmcVelocity) {
-  auto r = MakeEstimateReader("nmea_stdout", kStart);
+  auto r = MakeEstimateReader(EstimatorOutput::kNmeaStdout, kStart);
   EXPECT_FALSE(
       r->Line(Nmea("GPRMC,080004.00,A,3528.77658,N,05035.87859,E,1.944,90.00,100613,,,A"), 1));
   EXPECT_FALSE(
@@ -225,7 +225,7 @@ TEST(EstimateReaderTest, Nmea2000GnssPositionFastPacketsFromCandumpLines) {
     f.resize(8, '\xFF');
     frames.push_back(f);
   }
-  auto r = MakeEstimateReader("n2k_candump", kStart);
+  auto r = MakeEstimateReader(EstimatorOutput::kN2kCandump, kStart);
   std::optional<EstimateRecord> e;
   for (const auto& f : frames) {
     std::string line = "(1749542407.500000) vcan0 0DF80517#";

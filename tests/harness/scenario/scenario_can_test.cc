@@ -51,7 +51,7 @@ constexpr const char* kCanImu =
 TEST(ScenarioCanTest, ImuToEstimatorAndBusOutput) {
   const Scenario s = ParseScenario(std::string(kBase) + kCanImu, "t.yaml");
   EXPECT_TRUE(s.can.imu_to_estimator);
-  EXPECT_EQ(s.estimator.output, "n2k_socketcan");
+  EXPECT_EQ(s.estimator.output, EstimatorOutput::kN2kSocketcan);
 }
 
 TEST(ScenarioCanTest, WhatNeedsTheBusIsChecked) {
@@ -123,7 +123,7 @@ TEST(ScenarioCanTest, ShippedCanReorderFaultScenarioLoads) {
       LoadScenario(std::string(src) + "/vectors/scenarios/vcan/fault_can_reorder.yaml");
   EXPECT_EQ(s.name, "fault_can_reorder");
   EXPECT_TRUE(s.can.imu_to_estimator);  // from can_imu.yaml
-  EXPECT_EQ(s.estimator.output, "n2k_socketcan");
+  EXPECT_EQ(s.estimator.output, EstimatorOutput::kN2kSocketcan);
   ASSERT_EQ(s.faults.faults.size(), 1u);
   EXPECT_EQ(s.faults.faults[0].kind, FaultKind::kCanReorder);
   EXPECT_GT(s.faults.faults[0].Param("probability", 0), 0.0);

@@ -58,7 +58,7 @@ TEST(ScenarioFilesTest, PapersFiguresComeFromTheScenarioFiles) {
   EXPECT_NE(imu.paper[0].finding.find("diverges"), std::string::npos);
   // three receivers: navd reads all three, 5.2 m apart
   const Scenario three = LoadScenario(Dir() + "/seed000_three_gps.yaml");
-  EXPECT_EQ(three.estimator.navd_mode, "multi_gnss");
+  EXPECT_EQ(three.estimator.navd_mode, NavdMode::kMultiGnss);
   ASSERT_EQ(three.gnss.receivers.size(), 3u);
   EXPECT_NEAR((three.gnss.receivers[0].p_BA_B_m - three.gnss.receivers[1].p_BA_B_m).norm(), 5.196,
               1e-3);

@@ -15,6 +15,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -30,6 +31,9 @@ struct SerialMessage {
   int port = 0;       ///< the device's serial port index (0 for single-port devices)
   std::string bytes;  ///< the complete framed message
   std::string name;   ///< e.g. "NMEA-GGA", "UBX-NAV-SOL" — for diagnostics and drop counting
+  /// Bytes timed already (a replayed capture): byte k starts at t_ready + k·byte_period, as
+  /// recorded, instead of going through the port's UART model. Emulated devices leave it unset.
+  std::optional<Duration> byte_period{};
 };
 
 /// One CAN frame as the device puts it on the bus at `t`.
@@ -37,8 +41,11 @@ struct CanFrame {
   Time t{};
   std::uint32_t id = 0;  ///< 11- or 29-bit identifier (without flags)
   bool extended = true;
-  std::uint8_t len = 0;  ///< data length, 0–8 (classic) or up to 64 (FD)
+  std::uint8_t len = 0;  ///< data length, 0–8 (classic) or up to 64 (FD); RTR: the length asked
   bool fd = false;
+  bool rtr = false;           ///< remote transmission request (a replayed frame)
+  bool error = false;         ///< error frame (a replayed frame; `id` holds the error class)
+  std::uint8_t fd_flags = 0;  ///< CAN FD flags: bit 0 BRS, bit 1 ESI
   std::array<std::uint8_t, 64> data{};
 };
 
@@ -50,6 +57,12 @@ struct DeviceOutput {
     serial.clear();
     can.clear();
   }
+};
+
+/// What a device counted during a run that the run's report needs (the harness sums them over
+/// the devices). A device that counts none of them reports zeros.
+struct DeviceStatistics {
+  std::uint64_t resets = 0;  ///< resets the device went through (scripted or commanded)
 };
 
 /// An emulated device.
@@ -70,6 +83,8 @@ class Device {
   virtual int baud(int port) const = 0;
   /// Number of serial ports the device has.
   virtual int serial_port_count() const { return 1; }
+  /// The counters of the run so far (DeviceStatistics).
+  virtual DeviceStatistics statistics() const { return {}; }
 };
 
 }  // namespace hil

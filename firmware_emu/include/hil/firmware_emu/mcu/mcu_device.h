@@ -42,6 +42,7 @@ class McuDevice final : public Device {
   int baud(int) const override { return config_.baud; }
 
   const McuStats& stats() const { return stats_; }
+  DeviceStatistics statistics() const override { return {stats_.resets}; }
   /// Actual tick rate (Hz) of the MCU's crystal.
   double tick_hz() const { return tick_hz_; }
   /// The tick the MCU's counter shows at true time t (wraps at 2³²).

@@ -20,6 +20,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "hil/harness/eval/evaluator.h"
+#include "hil/harness/scenario/estimator_kinds.h"
 
 namespace hil::harness {
 
@@ -40,8 +41,8 @@ class EstimateReader {
   virtual bool SolutionsInLines() const { return true; }
 };
 
-/// The reader for an output format name. @throws std::invalid_argument for an unknown name.
-std::unique_ptr<EstimateReader> MakeEstimateReader(const std::string& output,
+/// The reader for an output format (parsed from the scenario's estimator.output).
+std::unique_ptr<EstimateReader> MakeEstimateReader(EstimatorOutput output,
                                                    std::int64_t start_unix_ns);
 
 }  // namespace hil::harness

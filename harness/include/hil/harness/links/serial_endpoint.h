@@ -37,7 +37,8 @@ class SerialEndpoint {
 
   /// Queues one message in the UART (or records its drop). Its bytes wait in this endpoint until
   /// written by WriteAll() (virtual mode) or WriteNextByte() (real time). Returns false when the
-  /// transmit buffer had no room (the message was dropped).
+  /// transmit buffer had no room (the message was dropped). A message timed already
+  /// (SerialMessage::byte_period) bypasses the UART and keeps its times.
   bool Queue(const SerialMessage& msg);
   /// Emulated time at which the last byte queued so far leaves the UART (its stop bit ends).
   Time last_queued_end() const { return last_queued_end_; }

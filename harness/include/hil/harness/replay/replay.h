@@ -10,9 +10,12 @@
 ///  start
 ///    with '(') is played onto a SocketCAN interface.
 /// Several captures of one run play together on one clock: emulated t = 0 of the captures is the
-/// replay's start (a candump log's first frame is its t = 0). What is played is captured again in
-/// `OUT/captures/` in the same formats with wall-clock times, so a replay can be compared with the
-/// original (identical bytes; times differ by the schedule error).
+/// replay's start (a candump log's first frame is its t = 0); every CAN source goes onto one
+/// interface. The captures become a ReplayDevice (replay_device.h) that the run's Scheduler
+/// drives in real time, so a replay has the one clock of a run. What is played is captured again
+/// in `OUT/captures/` in the same formats with wall-clock times, so a replay can be compared with
+/// the original (identical bytes; times differ by the schedule error); what a host sends back
+/// (rx lines, frames of other senders) is captured there too.
 
 #include <cstdint>
 #include <functional>

@@ -1,7 +1,9 @@
 #pragma once
 /// @file
-/// Files of the run folder besides the reports: navd.conf, truth.csv, schedule_error.json.
+/// Files of the run folder besides the reports: navd.conf, truth.csv, gnss_fixes.csv,
+/// schedule_error.json.
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -24,6 +26,10 @@ void WriteTruthCsv(const TruthTable& truth, const Scenario& s, const std::string
                    std::vector<double>& t_s, std::vector<Eigen::Vector2d>& en_m);
 /// The times of truth.csv: every 100 ms from 0 to the scenario's end.
 std::vector<Time> TruthCsvTimes(const Scenario& s);
+
+/// gnss_fixes.csv, written as the run goes: the header line, then one line per raw GNSS fix.
+void WriteFixCsvHeader(std::ostream& out);
+void WriteFixCsvLine(std::ostream& out, const gnss::GnssFix& fix);
 
 /// Real time: `{"threads": [{thread, tid, policy, priority, timer_slack_ns}], "links": [{link,
 /// bytes, bytes_dropped_unread, p50_us, p99_us, max_us}]}`, the scheduling each thread really got

@@ -1,10 +1,13 @@
 #pragma once
 /// @file
-/// The one scheduler that owns the clock of a run (order of operations in run.h). It advances
-/// emulated time from device event to device event; in real-time/scaled mode a pacing thread of
-/// its own (pacing_thread.h) writes each byte and frame at its wall-clock time meanwhile. Byte
-/// faults of the timeline are applied to whole messages before they enter a UART queue, so the
-/// bytes depend only on the scenario and the seed.
+/// The one scheduler that owns the clock (order of operations in run.h). It advances emulated
+/// time from device event to device event; in real-time/scaled mode a pacing thread of its own
+/// (pacing_thread.h) writes each byte and CAN frame at its wall-clock time meanwhile. Byte faults
+/// of the timeline are applied to whole messages before they enter a UART queue, so the bytes
+/// depend only on the scenario and the seed. It only schedules: what the run does at each event
+/// time (watching the estimator, recording the raw fixes) is a SchedulerMonitor's, and files are
+/// written elsewhere. A run drives the scenario's emulated devices through it; `hil replay` drives
+/// a ReplayDevice.
 ///
 /// Host turns (virtual mode): the bytes a host writes to its devices are read only at host turns,
 /// at emulated times fixed by the run itself: every `kHostTurnPeriod` from t = 0, and when the
@@ -19,33 +22,42 @@
 #include <poll.h>
 
 #include <deque>
-#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
-#include <ostream>
 #include <string>
 #include <vector>
 
 #include "hil/firmware_emu/link/realtime_pacer.h"
-#include "hil/harness/eval/evaluator.h"
 #include "hil/harness/faults/byte_faults.h"
 #include "hil/harness/faults/fault_record.h"
 #include "hil/harness/run/device_set.h"
 #include "hil/harness/run/pacing_thread.h"
 #include "hil/harness/run/virtual_gate.h"
-#include "hil/harness/scenario/scenario.h"
+#include "hil/truth/truth_integrator.h"
 
 namespace hil::harness {
 
+/// What watches a scheduler's run, called at every event time (Drake's simulator monitor).
+class SchedulerMonitor {
+ public:
+  virtual ~SchedulerMonitor() = default;
+  /// The devices whose event was at `t` have handed over their output; the host's bytes of this
+  /// instant are not read yet.
+  virtual void OnDeviceEvents(Time t) { (void)t; }
+  /// Everything of event time `t` is done: false stops the run early (e.g. the estimator died).
+  virtual bool KeepGoing(Time t) = 0;
+};
+
 class Scheduler {
  public:
-  /// `pacer` null: virtual mode. `fixes_csv` receives one line per raw GNSS fix.
-  Scheduler(const Scenario& scenario, DeviceSet& devices, ByteFaultInjector& faults,
-            const link::RealtimePacer* pacer, std::ostream& fixes_csv);
+  /// `pacer` null: virtual mode. Events after `t_end` are not served.
+  Scheduler(DeviceSet& devices, const link::RealtimePacer* pacer, Time t_end);
 
-  /// Where the faults of the timeline applied here are counted (GNSS epochs in an outage or a
-  /// glitch, receiver messages lost to its transmit buffer in an output overload).
+  /// The byte faults applied to every message and frame (none when not set).
+  void set_byte_faults(ByteFaultInjector* faults) { faults_ = faults; }
+  /// Where the faults of the timeline applied here are counted (receiver messages lost to its
+  /// transmit buffer in an output overload).
   void set_recorder(FaultRecorder* recorder) { recorder_ = recorder; }
 
   /// Virtual mode: the gate that keeps the host's links in order (virtual_gate.h); without one
@@ -58,9 +70,9 @@ class Scheduler {
   /// Virtual mode's regular host turns (see the file comment).
   static constexpr Duration kHostTurnPeriod = std::chrono::seconds(1);
 
-  /// Runs from t = 0 to the scenario's end. After every event, `keep_going(t)` decides whether
-  /// to continue (false stops the run early, e.g. when the estimator died).
-  void Run(const std::function<bool(Time)>& keep_going);
+  /// Runs from t = 0 to t_end. The devices sample `truth` (integrated with CVODE); without one
+  /// (devices that read no truth, a replay) each event's sample holds only its time.
+  void Run(SchedulerMonitor& monitor, const truth::TruthConfig* truth);
 
   /// Writes the bytes still queued (real time) at their UART times.
   void Flush();
@@ -68,22 +80,26 @@ class Scheduler {
   Scheduler(const Scheduler&) = delete;
   Scheduler& operator=(const Scheduler&) = delete;
 
-  /// The raw GNSS fixes of the first receiver seen so far (the baseline).
-  const std::vector<EstimateRecord>& fixes() const { return fixes_; }
   /// Frames others put on the CAN bus during the run (the estimator's NMEA 2000 output).
   const std::vector<CanFrame>& bus_frames() const { return bus_frames_; }
   /// Reads what others put on the bus now (also during the drain after Run) and returns them all.
   const std::vector<CanFrame>& PollBus();
 
  private:
-  /// Run's loop; true when it reached the scenario's end, false when keep_going stopped it.
-  bool RunEvents(const std::function<bool(Time)>& keep_going);
+  /// Run's loop; true when it reached t_end, false when the monitor or the gate stopped it.
+  bool RunEvents(SchedulerMonitor& monitor, const truth::TruthConfig* truth);
   void Dispatch(std::size_t device, DeviceOutput& out);
+  void Serve(Time t_event, const TruthSample& truth, SchedulerMonitor& monitor, DeviceOutput& out);
   /// Real time: starts the pacing thread (pacing_thread.h) and notes the threads' scheduling.
   void StartPacing();
   /// The endpoints' lock while the pacing thread runs (an empty lock otherwise).
   std::unique_lock<std::mutex> LinksLock();
-  void RecordFixes(Time t);
+  /// Real time: sleeps towards `t_event` (computed kEventLeadNs ahead) while reading host bytes.
+  /// True when it slept and the next action must be picked again.
+  bool PaceTowards(Time t_event, DeviceOutput& out);
+  /// Virtual mode: host bytes due, or a host turn due, before (or at) `t_event`. True when it did
+  /// one and the next action must be picked again.
+  bool HostStep(Time t_event, DeviceOutput& out);
   /// Hands the bytes hosts wrote since the last call to their devices, at `t_host` (virtual) or at
   /// their wall arrival time (real time). Returns true when a device queued a reply.
   bool PollHosts(Time t_host, DeviceOutput& out);
@@ -101,13 +117,11 @@ class Scheduler {
   /// Virtual mode: host bytes reach their device, which may answer.
   void DeliverHostBytes(const HostBytes& h, DeviceOutput& out);
 
-  const Scenario& scenario_;
   DeviceSet& set_;
-  ByteFaultInjector& faults_;
   const link::RealtimePacer* pacer_;
-  std::ostream& fixes_csv_;
+  Time t_end_;
+  ByteFaultInjector* faults_ = nullptr;
   FaultRecorder* recorder_ = nullptr;
-  std::vector<EstimateRecord> fixes_;
   std::vector<CanFrame> bus_frames_;
   Time t_last_event_{};
   static constexpr std::size_t kMaxDeferredBytes =

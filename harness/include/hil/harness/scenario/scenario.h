@@ -14,6 +14,7 @@
 #include "hil/firmware_emu/gnss/receiver_model.h"
 #include "hil/firmware_emu/mcu/mcu_config.h"
 #include "hil/harness/faults/fault_timeline.h"
+#include "hil/harness/scenario/estimator_kinds.h"
 #include "hil/truth/truth_integrator.h"
 
 namespace hil::harness {
@@ -88,8 +89,8 @@ struct EstimatorSpec {
   /// as candump -L lines on stdout), n2k_socketcan (navd's NMEA 2000 frames read back from the
   /// scenario's CAN bus: 129029 position and time, with 129026 velocity and 127250 heading of the
   /// same SID).
-  std::string output = "json_stdout";
-  std::string navd_mode = "gnss_only";  ///< written into the generated navd.conf
+  EstimatorOutput output = EstimatorOutput::kJsonStdout;
+  NavdMode navd_mode = NavdMode::kGnssOnly;  ///< written into the generated navd.conf
   /// Further navd.conf `[filter]` keys (noise grades, gates, …), written as given; navd validates
   /// them and names the bad key (a rejected key fails the run with navd's message).
   std::vector<std::pair<std::string, std::string>> navd_filter;
@@ -99,7 +100,7 @@ struct EstimatorSpec {
   /// The point of the vehicle the estimate describes: "body" (the reference point), "antenna"
   /// (the first receiver's antenna), "imu" (the IMU board), or "auto": antenna for a GNSS-only
   /// navd, the IMU for navd fusing the board, the body otherwise.
-  std::string reference_point = "auto";
+  ReferencePoint reference_point = ReferencePoint::kAuto;
   double silence_timeout_s = 10.0;  ///< no output for this long fails the run
   double startup_s = 0.0;  ///< wall time given to the program to open its devices before t = 0
 };

@@ -4,12 +4,15 @@
 /// error is a ScenarioError naming the file, the 1-based line and the dotted field path
 /// (`devices.gps.baud`), with a suggestion for a misspelt key.
 
+#include <array>
 #include <functional>
 #include <initializer_list>
 #include <map>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <yaml-cpp/yaml.h>
@@ -68,6 +71,15 @@ class YamlReader {
   /// A string that must be one of `choices`.
   std::string Choice(const std::string& key, const std::string& fallback,
                      std::initializer_list<const char*> choices) const;
+  /// Choice() for an enum: the index of the value in `names` (`fallback` when the key is absent).
+  std::size_t ChoiceIndex(const std::string& key, std::size_t fallback,
+                          std::span<const std::string_view> names) const;
+  /// ChoiceIndex() as the enum whose names array (in the enum's order) is `names`.
+  template <class Enum, std::size_t N>
+  Enum Choice(const std::string& key, Enum fallback,
+              const std::array<std::string_view, N>& names) const {
+    return static_cast<Enum>(ChoiceIndex(key, static_cast<std::size_t>(fallback), names));
+  }
   /// A sequence of exactly `n` numbers.
   std::vector<double> Doubles(const std::string& key, std::size_t n,
                               std::vector<double> fallback) const;

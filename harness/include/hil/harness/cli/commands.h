@@ -1,0 +1,38 @@
+#pragma once
+/// @file
+/// The `hil` CLI, one subcommand per file in harness/src/cli/: each declares its options on the
+/// app and returns how to run it; main() only parses and dispatches. Exit codes: 0 every
+/// criterion passed (validate: conforms), 1 one failed, 2 bad input.
+
+#include <functional>
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "hil/harness/scenario/scenario.h"
+
+namespace hil::cli {
+
+inline constexpr int kExitPass = 0, kExitFail = 1, kExitBadInput = 2;
+
+/// A declared subcommand: run() is called when the command line chose it.
+struct Subcommand {
+  CLI::App* cmd = nullptr;
+  std::function<int()> run;
+};
+
+Subcommand AddRun(CLI::App& app);       ///< hil run
+Subcommand AddEmulate(CLI::App& app);   ///< hil emulate
+Subcommand AddValidate(CLI::App& app);  ///< hil validate
+Subcommand AddSuite(CLI::App& app);     ///< hil suite
+Subcommand AddReplay(CLI::App& app);    ///< hil replay
+
+/// This executable's path ("hil" when /proc cannot tell).
+std::string SelfExecutable();
+/// `name` beside this executable if it is there, else `name` (found on PATH).
+std::string SiblingExecutable(const std::string& name);
+/// The scenario at `path` (empty: the embedded default); an invalid one is reported on stderr.
+std::optional<harness::Scenario> LoadOrReport(const std::string& path, bool short_form = false);
+
+}  // namespace hil::cli

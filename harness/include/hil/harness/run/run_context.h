@@ -1,0 +1,92 @@
+#pragma once
+/// @file
+/// The mutable state of one run beside the immutable Scenario (Drake: System vs Context; MuJoCo:
+/// mjModel vs mjData). RunScenario goes through five phases that share it (run_phases.h):
+/// prepare (the run folder, the devices and their links, the process under test), execute (the
+/// scheduler, watched by a RunWatchdog), drain (the host reads every byte and finishes its
+/// output), evaluate (against the truth) and write (the run folder's files, report.json last).
+
+#include <cstdint>
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+
+#include "hil/firmware_emu/link/pty_port.h"
+#include "hil/firmware_emu/link/realtime_pacer.h"
+#include "hil/harness/dut/estimate_collector.h"
+#include "hil/harness/dut/estimator_process.h"
+#include "hil/harness/faults/byte_faults.h"
+#include "hil/harness/faults/fault_record.h"
+#include "hil/harness/faults/fault_report.h"
+#include "hil/harness/report/report.h"
+#include "hil/harness/run/device_set.h"
+#include "hil/harness/run/fix_baseline.h"
+#include "hil/harness/run/progress.h"
+#include "hil/harness/run/run.h"
+#include "hil/harness/run/scheduler.h"
+#include "hil/harness/run/truth_table.h"
+#include "hil/harness/run/virtual_gate.h"
+#include "hil/harness/scenario/scenario.h"
+
+namespace hil::harness {
+
+struct RunContext {
+  /// Fixes what the options decide (seed, silence timeout, times); the phases fill the rest.
+  RunContext(const Scenario& scenario, const RunOptions& options);
+
+  const Scenario& scenario;
+  const RunOptions& options;
+  std::int64_t wall_start_ns;
+  std::string dir;  ///< the run folder, absolute
+  std::uint64_t seed;
+  double silence_s;
+  std::int64_t silence_ns;
+  Time t_end, t_from;  ///< the scenario's end; the first time evaluated
+  RunReport report;
+
+  // prepare
+  FaultRecorder fault_recorder;
+  DeviceSet set;
+  std::unique_ptr<link::PtyPort> nav_pty;  ///< output nmea_pty: the pty the estimator writes
+  std::set<std::string> host_links;        ///< the links the estimator reads (none named: all)
+  std::ofstream fixes_csv;
+  std::optional<EstimatorProcess> estimator;
+  std::int64_t estimator_start_ns = 0;
+  std::optional<link::RealtimePacer> pacer;  ///< real time or scaled; none in virtual mode
+  std::optional<EstimateCollector> collector;
+  EstimatorHealth health;
+
+  // execute
+  std::optional<ByteFaultInjector> byte_faults;
+  std::optional<ProgressLine> progress;
+  std::optional<Scheduler> scheduler;
+  std::optional<VirtualGate> gate;  ///< virtual mode with an estimator
+  std::optional<FixBaseline> baseline;
+  std::optional<TruthTableBuilder> truth_builder;
+  std::size_t estimates_asked = 0, fixes_asked = 0;  ///< records handed to the truth builder
+
+  // why the run ends early: the estimator hung; a signal, the run folder, a closed port
+  std::optional<std::string> hang, stop_reason;
+  Time t_now{};  ///< the latest event time served
+
+  /// True when the run must stop for a signal or a file that could not be written (sets
+  /// stop_reason the first time).
+  bool Interrupted();
+  bool EstimatorRunning() { return estimator && estimator->Running(); }
+  /// Wall time since the estimator's last output (or its start).
+  std::int64_t SilentForNs() const;
+  /// Asks the truth builder for the times of the solutions and fixes that came since last time.
+  void AskTruth();
+  /// Nothing stopped the run early so far and the estimator still runs.
+  bool Healthy() { return !hang && !stop_reason && EstimatorRunning(); }
+};
+
+/// Wall-clock now (CLOCK_MONOTONIC, ns).
+inline std::int64_t NowNs() { return link::RealtimePacer::MonotonicNs(); }
+/// "%g" of seconds, and "%.1f" of a time, for messages.
+std::string SecondsText(double s);
+std::string SecondsText(Time t);
+
+}  // namespace hil::harness

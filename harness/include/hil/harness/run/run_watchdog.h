@@ -1,0 +1,33 @@
+#pragma once
+/// @file
+/// What watches a run while the scheduler executes it (the scheduler's monitor): after each event
+/// time it takes the raw fix, polls the estimator's output, feeds the truth builder, draws the
+/// progress line and decides whether the run goes on. The estimator ending is a crash; no output
+/// for the silence timeout (real time) is a hang; in virtual mode the gate's waits come here
+/// too (OnGateWait): not reading its input for the silence timeout is a hang when the estimator
+/// is also silent, a closed port when it still talks.
+
+#include <cstddef>
+#include <cstdint>
+
+#include "hil/harness/run/run_context.h"
+#include "hil/harness/run/scheduler.h"
+
+namespace hil::harness {
+
+class RunWatchdog final : public SchedulerMonitor {
+ public:
+  explicit RunWatchdog(RunContext& ctx) : ctx_(ctx) {}
+  void OnDeviceEvents(Time t) override;
+  bool KeepGoing(Time t) override;
+  /// VirtualGate::WaitStep: false gives the wait (and the run) up.
+  bool OnGateWait(std::size_t unread, bool new_wait);
+
+ private:
+  RunContext& ctx_;
+  std::int64_t running_checked_ns_ = 0;  // the last wall time the estimator was seen running
+  std::size_t wait_unread_ = 0;          // unread bytes at the last gate wait step
+  std::int64_t wait_progress_ns_ = 0;    // wall time the host last read during a gate wait
+};
+
+}  // namespace hil::harness

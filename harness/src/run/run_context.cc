@@ -1,0 +1,72 @@
+#include "hil/harness/run/run_context.h"
+
+#include <algorithm>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+
+#include "hil/harness/run/run_guard.h"
+
+namespace hil::harness {
+
+std::string SecondsText(double s) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%g", s);
+  return b;
+}
+
+std::string SecondsText(Time t) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.1f", ToSeconds(t));
+  return b;
+}
+
+RunContext::RunContext(const Scenario& s, const RunOptions& o)
+    : scenario(s),
+      options(o),
+      wall_start_ns(NowNs()),
+      dir(std::filesystem::absolute(o.out_dir).string()),
+      seed(o.seed.value_or(s.seed)),
+      silence_s(o.silence_timeout_s.value_or(s.estimator.silence_timeout_s)),
+      silence_ns(static_cast<std::int64_t>(silence_s * 1e9)),
+      t_end(TimeFromSeconds(s.duration_s)),
+      t_from(TimeFromSeconds(s.evaluate_from_s)),
+      fault_recorder(s.faults) {}
+
+bool RunContext::Interrupted() {
+  if (stop_reason) return true;
+  if (const int sig = InterruptGuard::received()) {
+    stop_reason = std::string("interrupted by ") +
+                  (sig == SIGINT    ? "SIGINT"
+                   : sig == SIGTERM ? "SIGTERM"
+                                    : "SIGHUP") +
+                  " at t = " + SecondsText(t_now) + " s of " + SecondsText(scenario.duration_s) +
+                  " s";
+  } else if (const auto file = FirstWriteFailure()) {
+    stop_reason = "cannot write " + *file +
+                  " (disk full, file size limit or folder removed) at t = " + SecondsText(t_now) +
+                  " s";
+  }
+  return stop_reason.has_value();
+}
+
+std::int64_t RunContext::SilentForNs() const {
+  return NowNs() - std::max(collector->last_output_wall_ns(), estimator_start_ns);
+}
+
+void RunContext::AskTruth() {
+  const std::vector<EstimateRecord>& est = collector->records();
+  const std::vector<EstimateRecord>& fixes = baseline->fixes();
+  if (est.size() > estimates_asked) {
+    truth_builder->Ask(RecordTimes(
+        {est.begin() + static_cast<std::ptrdiff_t>(estimates_asked), est.end()}, t_from, t_end));
+    estimates_asked = est.size();
+  }
+  if (fixes.size() > fixes_asked) {
+    truth_builder->Ask(RecordTimes(
+        {fixes.begin() + static_cast<std::ptrdiff_t>(fixes_asked), fixes.end()}, t_from, t_end));
+    fixes_asked = fixes.size();
+  }
+}
+
+}  // namespace hil::harness

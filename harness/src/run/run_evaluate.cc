@@ -1,0 +1,149 @@
+// Phases 4 and 5 of a run: the evaluation against the truth, and the run folder's files.
+#include <cstdio>
+#include <functional>
+
+#include "hil/harness/eval/cross_track.h"
+#include "hil/harness/eval/outage_metrics.h"
+#include "hil/harness/report/run_outputs.h"
+#include "hil/harness/run/can_run.h"
+
+#include "run_phases.h"
+
+namespace hil::harness {
+namespace {
+
+// The point the estimate describes: navd fusing the IMU board reports the board (its body origin
+// is the IMU); a GNSS-only navd reports the antenna.
+Eigen::Vector3d EstimatedPoint(const Scenario& scenario, const RunOptions& opt) {
+  ReferencePoint point = scenario.estimator.reference_point;
+  if (point == ReferencePoint::kAuto) {
+    const bool navd =
+        scenario.estimator.command.find("{navd}") != std::string::npos && !opt.estimator_command;
+    const NavdMode m = scenario.estimator.navd_mode;
+    point = !navd || m == NavdMode::kMultiGnss ? ReferencePoint::kBody
+            : m == NavdMode::kGnssOnly         ? ReferencePoint::kAntenna
+            : scenario.mcu.enabled             ? ReferencePoint::kImu
+                                               : ReferencePoint::kBody;
+  }
+  return point == ReferencePoint::kAntenna ? scenario.gnss.model.p_BA_B_m
+         : point == ReferencePoint::kImu   ? scenario.mcu.config.mounting.p_BI_B_m
+                                           : Eigen::Vector3d::Zero();
+}
+
+void EvaluateTiming(RunContext& ctx, const std::vector<EstimateRecord>& estimates,
+                    ReportSeries& series) {
+  RunReport& report = ctx.report;
+  const double speed = ctx.options.speed;
+  report.timing = ComputeOutputTiming(estimates, ctx.t_from, ctx.t_end, ctx.pacer ? speed : 1.0);
+  if (!ctx.pacer) {  // arrival times mean nothing in virtual mode
+    report.timing.jitter_p50_ms.reset(), report.timing.jitter_p99_ms.reset(),
+        report.timing.jitter_max_ms.reset();
+  }
+  report.output_rate_hz = report.timing.output_rate_hz;
+  if (ctx.pacer && !estimates.empty()) {
+    for (const auto& e : estimates) {
+      series.latency_ms.push_back(
+          static_cast<double>(e.wall_rx_ns - ctx.pacer->WallNsOf(e.t_validity)) * 1e-6 * speed);
+    }
+    report.latency =
+        LatencyStats{Percentile(series.latency_ms, 50), Percentile(series.latency_ms, 99),
+                     Percentile(series.latency_ms, 100)};
+  }
+}
+
+// What the links and devices counted; the k-th scripted MCU reset took place when the devices
+// counted k resets.
+void CountLinksAndDevices(RunContext& ctx) {
+  RunReport& report = ctx.report;
+  for (const auto& ports : ctx.set.endpoints) {
+    for (const auto& ep : ports) {
+      report.gnss_bytes += ep->uart().bytes_sent();
+      report.gnss_messages_dropped += ep->uart().messages_dropped();
+    }
+  }
+  if (ctx.set.can) AddCanBusReport(*ctx.set.can, ctx.collector->bus_frames_per_pgn(), report);
+  std::uint64_t resets = 0;
+  for (const auto& dev : ctx.set.devices) resets += dev->statistics().resets;
+  const std::vector<Fault>& faults = ctx.scenario.faults.faults;
+  for (std::size_t i = 0; i < faults.size(); ++i) {
+    if (faults[i].kind == FaultKind::kMcuReset && resets > 0) {
+      ctx.fault_recorder.Note(i, faults[i].start);
+      --resets;
+    }
+  }
+}
+
+void EvaluateFaultsAndCriteria(RunContext& ctx, const std::vector<ErrorSample>& est_err) {
+  RunReport& report = ctx.report;
+  report.fault_injections = ctx.fault_recorder.records();
+  ComputeRecoveryTimes(report.fault_injections, est_err, ctx.scenario.reconverged_error_m);
+  report.estimator_health = ctx.health;
+  report.criteria = EvaluateCriteria(ctx.scenario.criteria, RunMetricTable(report),
+                                     AccuracyTable(report.baselines));
+  report.fault_messages_dropped = ctx.byte_faults->messages_dropped();
+  report.fault_bytes_corrupted = ctx.byte_faults->bytes_corrupted();
+  report.wall_time_s = static_cast<double>(NowNs() - ctx.wall_start_ns) * 1e-9;
+  if (ctx.collector->unparsed_lines() > 0) {
+    std::fprintf(stderr, "hil: %zu estimator output line(s) were not solutions (kept in %s)\n",
+                 ctx.collector->unparsed_lines(), ctx.nav_pty ? "estimate.nmea" : "estimate.jsonl");
+  }
+}
+
+// Writes one file of the run folder; a failure marks the report incomplete instead of ending.
+void Attempt(RunReport& report, const std::function<void()>& write) {
+  try {
+    write();
+  } catch (const std::exception& e) {
+    report.problems.push_back(std::string("the run folder is incomplete: ") + e.what());
+    report.complete = false;
+    if (report.incomplete_reason.empty()) report.incomplete_reason = report.problems.back();
+  }
+}
+
+}  // namespace
+
+RunEvaluation Evaluate(RunContext& ctx) {
+  const Scenario& scenario = ctx.scenario;
+  RunReport& report = ctx.report;
+  const std::vector<EstimateRecord>& estimates = ctx.collector->records();
+  if (estimates.empty() && !ctx.options.emulate_only)
+    report.problems.push_back("the estimator produced no solution");
+  const Eigen::Vector3d p_BX_B_m = EstimatedPoint(scenario, ctx.options);
+  ctx.AskTruth();
+  RunEvaluation ev{ctx.truth_builder->Finish(), {}, {}, {}};
+  ev.estimate_errors = CompareWithTruth(ev.truth, estimates, p_BX_B_m, ctx.t_from, ctx.t_end);
+  ev.fix_errors = CompareWithTruth(ev.truth, ctx.baseline->fixes(), scenario.gnss.model.p_BA_B_m,
+                                   ctx.t_from, ctx.t_end);
+  const PlannedPath path = PlannedPathOf(scenario.truth, scenario.duration_s);
+  AddCrossTrack(ev.estimate_errors, path);
+  AddCrossTrack(ev.fix_errors, path);
+  report.metrics = ComputeAccuracy(ev.estimate_errors);
+  report.baselines = ComputeAccuracy(ev.fix_errors);
+  EvaluateTiming(ctx, estimates, ev.series);
+  report.outages =
+      ComputeOutages(ev.estimate_errors, scenario.faults, scenario.reconverged_error_m);
+  CountLinksAndDevices(ctx);
+  EvaluateFaultsAndCriteria(ctx, ev.estimate_errors);
+  return ev;
+}
+
+void WriteRunFolder(RunContext& ctx, RunEvaluation& ev) {
+  RunReport& report = ctx.report;
+  const std::string& dir = ctx.dir;
+  ReportSeries& series = ev.series;
+  Attempt(report, [&] { WriteErrorsCsv(ev.estimate_errors, dir + "/estimate.csv"); });
+  Attempt(report, [&] { WriteErrorsCsv(ev.fix_errors, dir + "/gnss_fixes_errors.csv"); });
+  Attempt(report, [&] {
+    WriteTruthCsv(ev.truth, ctx.scenario, dir + "/truth.csv", series.truth_t_s, series.truth_en_m);
+  });
+  Attempt(report, [&] { WriteScheduleErrors(ctx.set, dir + "/schedule_error.json"); });
+  if (ctx.options.html) {
+    series.estimate_errors = std::move(ev.estimate_errors);
+    series.fix_errors = std::move(ev.fix_errors);
+    Attempt(report, [&] { WriteReportHtml(report, series, dir); });
+  }
+  Attempt(report, [&] { WriteJunitXml(report, dir + "/junit.xml"); });
+  WriteReportJson(report, dir + "/report.json");
+}
+
+}  // namespace hil::harness

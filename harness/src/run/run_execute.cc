@@ -1,0 +1,173 @@
+// Phases 2 and 3 of a run: the scheduler executes the scenario; the drain lets the host finish.
+#include <unistd.h>
+
+#include <cstdio>
+
+#include "hil/harness/dut/process_group.h"
+#include "hil/harness/report/run_outputs.h"
+
+#include "run_phases.h"
+
+namespace hil::harness {
+namespace {
+
+constexpr double kDrainQuietS = 0.5;  // estimator output quiet this long after the last byte: done
+// virtual mode: the most bytes one link may hold unread by the host (the order across links is
+// VirtualGate's: before one link's bytes, the others are read to the last byte)
+constexpr std::size_t kLinkBacklogBytes = 2048;
+// virtual mode's drain: the estimator's whole process group asleep, with nothing left to read,
+// in this many consecutive checks this far apart, has finished its output
+constexpr int kIdleChecks = 3;
+constexpr useconds_t kIdleCheckUs = 1000;
+
+// Virtual mode with an estimator: the host sees its links' bytes in emulated-time order
+// (virtual_gate.h); a wait that sees no byte read for the silence timeout ends the run as a hang
+// or a closed port (RunWatchdog::OnGateWait).
+void MakeGate(RunContext& ctx, RunWatchdog& watchdog) {
+  if (ctx.pacer || ctx.options.emulate_only) return;
+  std::vector<SerialEndpoint*> read_by_host;
+  for (const auto& ports : ctx.set.endpoints) {
+    for (const auto& ep : ports) {
+      if (ctx.host_links.empty() || ctx.host_links.count(ep->link_name()))
+        read_by_host.push_back(ep.get());
+    }
+  }
+  ctx.gate.emplace(
+      read_by_host, kLinkBacklogBytes,
+      [&watchdog](std::size_t unread, bool new_wait) {
+        return watchdog.OnGateWait(unread, new_wait);
+      },
+      ctx.estimator->pid());
+  ctx.scheduler->set_gate(&*ctx.gate);
+}
+
+// Bytes not yet read on the links the estimator reads (none named: all).
+std::size_t UnreadByHost(const RunContext& ctx) {
+  std::size_t n = 0;
+  for (const auto& ports : ctx.set.endpoints) {
+    for (const auto& ep : ports) {
+      if (ctx.host_links.empty() || ctx.host_links.count(ep->link_name())) n += ep->PendingToHost();
+    }
+  }
+  return n;
+}
+
+// Real time: waits while the host reads, up to the silence timeout without progress.
+void DrainInputRealtime(RunContext& ctx) {
+  std::int64_t last_progress = NowNs();
+  std::size_t pending = UnreadByHost(ctx);
+  while (ctx.EstimatorRunning() && pending > 0 && NowNs() - last_progress < ctx.silence_ns &&
+         !ctx.Interrupted()) {
+    usleep(5000);
+    ctx.collector->Poll();
+    const std::size_t p = UnreadByHost(ctx);
+    if (p < pending) last_progress = NowNs();
+    pending = p;
+  }
+}
+
+// Output complete: in virtual mode, when every process of the estimator's group has slept through
+// a few checks with all its input read (it waits for input that will not come); otherwise (real
+// time, or /proc cannot tell) when its output has been quiet for kDrainQuietS.
+void DrainOutput(RunContext& ctx) {
+  const std::int64_t drain_start = NowNs();
+  GroupActivity before;
+  std::int64_t output_before = -1;
+  int idle_checks = 0;
+  while (ctx.EstimatorRunning() && !ctx.Interrupted()) {
+    ctx.collector->Poll();
+    const std::int64_t last_output = ctx.collector->last_output_wall_ns();
+    if (ctx.gate && last_output > 0) {
+      const GroupActivity now = ReadGroupActivity(ctx.estimator->pid());
+      const bool idle =
+          SleptThroughout(before, now) && last_output == output_before && ctx.gate->Unread() == 0;
+      idle_checks = idle ? idle_checks + 1 : 0;
+      before = now;
+      output_before = last_output;
+      if (idle_checks >= kIdleChecks) break;
+    }
+    const std::int64_t quiet_ns = NowNs() - std::max(last_output, drain_start);
+    if (last_output > 0 && quiet_ns > static_cast<std::int64_t>(kDrainQuietS * 1e9)) break;
+    if (quiet_ns > ctx.silence_ns) {
+      if (ctx.collector->records().empty())
+        ctx.hang = "no output for " + SecondsText(ctx.silence_s) + " s";
+      break;
+    }
+    usleep(ctx.gate ? kIdleCheckUs : 10000);
+  }
+}
+
+}  // namespace
+
+void Execute(RunContext& ctx, RunWatchdog& watchdog) {
+  const Scenario& scenario = ctx.scenario;
+  ctx.byte_faults.emplace(scenario.faults, ctx.seed, &ctx.fault_recorder);
+  ctx.progress.emplace(ctx.options.progress);
+  ctx.scheduler.emplace(ctx.set, ctx.pacer ? &*ctx.pacer : nullptr, ctx.t_end);
+  ctx.scheduler->set_byte_faults(&*ctx.byte_faults);
+  ctx.scheduler->set_recorder(&ctx.fault_recorder);
+  ctx.baseline.emplace(ctx.set, &ctx.fault_recorder, ctx.fixes_csv);
+  if (scenario.estimator.output == EstimatorOutput::kN2kSocketcan) {
+    Scheduler& scheduler = *ctx.scheduler;
+    ctx.collector->AttachBus(
+        [&scheduler]() -> const std::vector<CanFrame>& { return scheduler.PollBus(); },
+        scenario.start_unix_ns);
+  }
+  MakeGate(ctx, watchdog);
+  // the truth for the evaluation, sampled on a thread of its own as the run goes (truth_table.h)
+  ctx.truth_builder.emplace(scenario.truth);
+  ctx.truth_builder->Ask(TruthCsvTimes(scenario));
+  try {
+    ctx.scheduler->Run(watchdog, &scenario.truth);
+  } catch (const std::exception& e) {
+    ctx.stop_reason =
+        std::string("the run failed at t = ") + SecondsText(ctx.t_now) + " s: " + e.what();
+  }
+  if (!ctx.hang && !ctx.Interrupted()) ctx.scheduler->Flush();
+  for (const auto& ports : ctx.set.endpoints) {
+    for (const auto& ep : ports) ep->FlushCapture();
+  }
+  ctx.Interrupted();  // a capture that could not be written stops the run here at the latest
+}
+
+void Drain(RunContext& ctx) {
+  if (ctx.Healthy()) {
+    if (ctx.gate) {
+      ctx.gate->WaitAllRead();  // gives up (hang, closed port, interrupt) through its wait step
+    } else {
+      DrainInputRealtime(ctx);
+    }
+  }
+  if (ctx.Healthy()) DrainOutput(ctx);
+}
+
+void StopEstimator(RunContext& ctx) {
+  RunReport& report = ctx.report;
+  ctx.progress->Finish();
+  const bool crashed =
+      !ctx.options.emulate_only && !ctx.hang && !ctx.stop_reason && !ctx.EstimatorRunning();
+  const ExitInfo exit_info = ctx.estimator ? ctx.estimator->Stop() : ExitInfo{};
+  ctx.collector->Poll();
+  report.estimator_exit = ctx.estimator ? exit_info.Describe() : "none (emulator only)";
+  if (crashed) {
+    report.problems.push_back("the estimator ended before the scenario did: " +
+                              exit_info.Describe() + " (see estimator.stderr)");
+    report.complete = false;
+  }
+  if (ctx.hang) {
+    report.problems.push_back("the estimator hung: " + *ctx.hang + "; it was stopped (" +
+                              exit_info.Describe() + ")");
+    report.complete = false;
+  }
+  if (ctx.stop_reason) {
+    report.problems.push_back("the run stopped early: " + *ctx.stop_reason +
+                              "; the estimator was stopped (" + exit_info.Describe() + ")");
+    report.complete = false;
+    std::fprintf(stderr, "hil: %s; the estimator was stopped, the report is marked incomplete\n",
+                 ctx.stop_reason->c_str());
+  }
+  if (!report.complete && !report.problems.empty())
+    report.incomplete_reason = report.problems.front();
+}
+
+}  // namespace hil::harness

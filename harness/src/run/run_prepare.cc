@@ -1,0 +1,125 @@
+// Phase 1 of a run: the folder, the report's header, the devices and links, the process under test.
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "hil/harness/report/run_outputs.h"
+#include "hil/harness/run/can_run.h"
+
+#include "run_phases.h"
+
+namespace hil::harness {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kNavLink = "ttyNAV";  // pty the estimator writes NMEA into (output nmea_pty)
+
+// The links the estimator reads: those named in its command ({ttyGPS}) or, for navd, in navd.conf.
+std::set<std::string> HostLinks(const Scenario& s, const std::string& raw_command,
+                                const DeviceSet& set) {
+  std::set<std::string> used;
+  for (const auto& [name, path] : set.links) {
+    if (raw_command.find("{" + name + "}") != std::string::npos) used.insert(name);
+  }
+  if (raw_command.find("{navd}") != std::string::npos) {
+    used.insert(s.gnss.link);
+    if (s.estimator.navd_mode == NavdMode::kMultiGnss) {
+      for (const auto& rx : s.gnss.receivers) used.insert(rx.link);  // navd reads every receiver
+    }
+    if (s.mcu.enabled && s.estimator.navd_mode != NavdMode::kGnssOnly && !s.can.imu_to_estimator)
+      used.insert(s.mcu.link);
+  }
+  return used;
+}
+
+void MakeRunFolder(const RunContext& ctx) {
+  const std::string& out_dir = ctx.options.out_dir;
+  std::error_code ec;
+  fs::create_directories(out_dir, ec);
+  if (ec || access(out_dir.c_str(), W_OK) != 0) {
+    throw std::runtime_error("cannot write the output folder " + out_dir +
+                             (ec ? ": " + ec.message() : ""));
+  }
+  CheckCanRunMode(ctx.scenario, ctx.options);
+  fs::create_directories(ctx.dir + "/captures");
+}
+
+void StartReport(RunContext& ctx) {
+  const Scenario& scenario = ctx.scenario;
+  RunReport& report = ctx.report;
+  report.scenario = scenario.name;
+  report.scenario_file = scenario.file;
+  report.seed = ctx.seed;
+  report.mode = ModeName(ctx.options.mode, ctx.options.speed);
+  report.speed = ctx.options.mode == RunMode::kVirtual ? 1.0 : ctx.options.speed;
+  report.sim_time_s = scenario.duration_s;
+  report.estimator_output = std::string(Name(scenario.estimator.output));
+  for (const Fault& f : scenario.faults.faults) {
+    report.faults.emplace_back(FaultKindName(f.kind), SecondsText(f.start) + "-" +
+                                                          SecondsText(f.end) + " s" +
+                                                          (f.link.empty() ? "" : " on " + f.link));
+  }
+}
+
+// The estimator's command with every {key} substituted; opens the pty of output nmea_pty.
+std::string EstimatorCommand(RunContext& ctx, const std::string& raw_command) {
+  std::vector<std::pair<std::string, std::string>> vars{
+      {"navd", ctx.options.navd_path}, {"run_dir", ctx.dir}, {"seed", std::to_string(ctx.seed)}};
+  vars.insert(vars.end(), ctx.set.links.begin(), ctx.set.links.end());
+  if (ctx.scenario.estimator.output == EstimatorOutput::kNmeaPty && !ctx.options.emulate_only) {
+    ctx.nav_pty = std::make_unique<link::PtyPort>(ctx.dir + "/" + kNavLink, 115200);
+    vars.emplace_back(kNavLink, ctx.dir + "/" + kNavLink);
+  }
+  return Substitute(raw_command, vars);
+}
+
+void StartEstimator(RunContext& ctx, const std::string& command) {
+  if (ctx.options.emulate_only) {
+    for (const auto& [name, path] : ctx.set.links) {
+      std::printf("%s %s\n", name.c_str(), path.c_str());
+    }
+    std::fflush(stdout);
+    return;
+  }
+  ctx.estimator.emplace(command, ctx.dir + "/estimator.stderr");
+  ctx.report.estimator_pid = ctx.estimator->pid();
+  // time for the program to open its devices (gpsd flushes a tty's input when it opens it)
+  if (ctx.scenario.estimator.startup_s > 0)
+    usleep(static_cast<useconds_t>(ctx.scenario.estimator.startup_s * 1e6));
+}
+
+}  // namespace
+
+void Prepare(RunContext& ctx) {
+  const Scenario& scenario = ctx.scenario;
+  const RunOptions& opt = ctx.options;
+  MakeRunFolder(ctx);
+  StartReport(ctx);
+  ctx.set = BuildDevices(scenario, ctx.seed, ctx.dir);
+  WriteNavdConfig(ctx.dir + "/navd.conf", scenario, ctx.dir + "/" + scenario.gnss.link);
+  const std::string raw_command = opt.estimator_command.value_or(scenario.estimator.command);
+  const std::string command = EstimatorCommand(ctx, raw_command);
+  ctx.host_links = HostLinks(scenario, raw_command, ctx.set);
+  ctx.report.estimator_command = opt.emulate_only ? "" : command;
+  ctx.fixes_csv.open(ctx.dir + "/gnss_fixes.csv");
+  WriteFixCsvHeader(ctx.fixes_csv);
+  StartEstimator(ctx, command);
+  ctx.estimator_start_ns = NowNs();
+  if (opt.mode == RunMode::kRealtime) {
+    link::RealtimePacer::RequestRealtimeScheduling();
+    ctx.pacer.emplace(opt.speed);
+  }
+  ctx.collector.emplace(MakeEstimateReader(scenario.estimator.output, scenario.start_unix_ns),
+                        ctx.estimator ? &*ctx.estimator : nullptr, ctx.nav_pty.get(),
+                        ctx.dir + (ctx.nav_pty ? "/estimate.nmea" : "/estimate.jsonl"));
+  EstimatorHealth& health = ctx.health;
+  ctx.collector->set_line_observer([&health](const std::string& line) { health.AddLine(line); });
+  ctx.collector->set_json_observer([&health](const nlohmann::json& line) { health.AddJson(line); });
+}
+
+}  // namespace hil::harness

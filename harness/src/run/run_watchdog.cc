@@ -1,0 +1,63 @@
+#include "hil/harness/run/run_watchdog.h"
+
+#include <algorithm>
+#include <chrono>
+#include <string>
+
+namespace hil::harness {
+
+void RunWatchdog::OnDeviceEvents(Time t) { ctx_.baseline->Record(t); }
+
+bool RunWatchdog::KeepGoing(Time t) {
+  ctx_.t_now = t;
+  ctx_.collector->Poll();
+  ctx_.AskTruth();
+  // an estimator's solutions come in time order, about as late as its input: what lies a second
+  // behind both will not be asked for any more (a straggler only costs Finish a pass)
+  const std::vector<EstimateRecord>& records = ctx_.collector->records();
+  if (!records.empty()) {
+    ctx_.truth_builder->Advance(std::min(records.back().t_validity, t) - std::chrono::seconds(1));
+  }
+  if (ctx_.Interrupted()) return false;
+  ctx_.progress->Update(ToSeconds(t), ctx_.scenario.duration_s, records.size());
+  if (ctx_.options.emulate_only) return true;
+  // whether the estimator still runs: a wait4() per event costs more than the event in virtual
+  // mode, so at most once per millisecond of wall time
+  if (const std::int64_t now = NowNs(); now - running_checked_ns_ >= 1'000'000) {
+    running_checked_ns_ = now;
+    if (!ctx_.EstimatorRunning()) return false;
+  }
+  if (ctx_.pacer && ctx_.SilentForNs() > ctx_.silence_ns) {
+    ctx_.hang = "no output for " + SecondsText(ctx_.silence_s) + " s";
+    return false;
+  }
+  return !ctx_.hang && !ctx_.stop_reason;
+}
+
+bool RunWatchdog::OnGateWait(std::size_t unread, bool new_wait) {
+  if (new_wait || unread < wait_unread_) wait_progress_ns_ = NowNs();
+  wait_unread_ = unread;
+  ctx_.collector->Poll();
+  if (ctx_.Interrupted() || !ctx_.EstimatorRunning()) return false;
+  if (NowNs() - wait_progress_ns_ <= ctx_.silence_ns) return true;
+  const std::string unread_text =
+      std::to_string(unread) + " bytes unread for " + SecondsText(ctx_.silence_s) + " s";
+  if (ctx_.SilentForNs() > ctx_.silence_ns) {
+    ctx_.hang = "it stopped reading its input and is silent (" + unread_text + ")";
+    return false;
+  }
+  // still talking but no longer reading: the port was closed by the peer (or is ignored)
+  std::string links;
+  for (const auto& ports : ctx_.set.endpoints) {
+    for (const auto& ep : ports) {
+      const bool read = ctx_.host_links.empty() || ctx_.host_links.count(ep->link_name()) > 0;
+      if (read && ep->PendingToHost() > 0) links += " " + ep->link_name();
+    }
+  }
+  ctx_.stop_reason = "the estimator stopped reading" + links +
+                     " at t = " + SecondsText(ctx_.t_now) + " s (" + unread_text +
+                     "): the port was closed by the peer or is no longer read";
+  return false;
+}
+
+}  // namespace hil::harness
