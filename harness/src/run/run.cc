@@ -29,9 +29,10 @@ std::string Substitute(const std::string& text,
 }
 
 RunReport RunScenario(const Scenario& scenario, const RunOptions& options) {
+  // Ctrl-C / SIGTERM: stop the estimator, write an incomplete report. Made before the context
+  // and gone after it: the captures' last writes (the endpoints' destructors) happen under it.
+  const InterruptGuard interrupt_guard;
   RunContext ctx(scenario, options);
-  const InterruptGuard
-      interrupt_guard;  // Ctrl-C / SIGTERM: stop the estimator, write an incomplete report
   ClearWriteFailures();
   Prepare(ctx);
   RunWatchdog watchdog(ctx);
