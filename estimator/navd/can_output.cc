@@ -30,7 +30,7 @@ bool NewPeriod(std::int64_t t, std::int64_t last, std::int64_t period) {
 CanOutput::CanOutput(const std::string& interface, const std::string& log_path,
                      std::uint8_t source_address, double rapid_rate_hz)
     : iface_name_(interface.empty() ? "can0" : interface),
-      sa_(sa),
+      sa_(source_address),
       rapid_period_ns_(static_cast<std::int64_t>(std::llround(1e9 / rapid_rate_hz))),
       cog_sog_period_ns_(std::max<std::int64_t>(rapid_period_ns_, kCogSogPeriodNs)) {
   if (!interface.empty()) {

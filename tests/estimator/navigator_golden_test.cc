@@ -26,7 +26,7 @@ std::string Row(const Navigator& nav, double t_s) {
   char b[320];
   std::snprintf(
       b, sizeof b, "%.1f,%.3f,%d,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%u\n",
-      t_s, o.valid ? static_cast<double>(o.t - SensorSimulator::kGpsStartNs) * 1e-9 : 0.0,
+      t_s, o.valid ? static_cast<double>((o.t - SensorSimulator::kGpsStart).count()) * 1e-9 : 0.0,
       o.valid ? 1 : 0, o.p_N_m.x(), o.p_N_m.y(), o.p_N_m.z(), o.v_N_mps.x(), o.v_N_mps.y(),
       o.v_N_mps.z(), yaw_deg, o.pos_std_enu_m.x(), o.pos_std_enu_m.y(), o.pos_std_enu_m.z(),
       o.accel_bias_B.x(), o.gyro_bias_B.z() * 180.0 / std::numbers::pi, o.status);

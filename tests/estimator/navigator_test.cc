@@ -211,7 +211,7 @@ TEST(NavigatorTest, GnssOnlyFixWithSpeedButNoCourseReportsTheSpeedAndNoVelocity)
   ASSERT_TRUE(o.ground_speed_mps.has_value());
   EXPECT_DOUBLE_EQ(*o.ground_speed_mps, 0.109);
   // the next fix has a course: the velocity is known again
-  g.t += kNsPerSecond;
+  g.t += std::chrono::seconds(1);
   g.has_velocity = true;
   g.vel_enu_mps = {0.1, 0.2, 0.0};
   nav.Push(g);

@@ -47,9 +47,9 @@ CanFrame EncodeCogSogRapid(std::uint8_t sid, double cog_rad, double sog_mps, std
   return f;
 }
 
-FastPacket EncodeGnssPosition(std::uint8_t sid, std::uint16_t days, double sod, double lat,
-                              double lon, double alt, int method, int num_sv, double hdop,
-                              std::uint8_t seq, std::uint8_t sa,
+FastPacket EncodeGnssPosition(std::uint8_t sid, std::uint16_t days, double seconds_of_day,
+                              double lat, double lon, double alt, int method, int num_sv,
+                              double hdop, std::uint8_t fast_packet_sequence, std::uint8_t source,
                               std::optional<double> geoid_separation_m) {
   std::array<std::uint8_t, 43> p{};
   p[0] = sid;

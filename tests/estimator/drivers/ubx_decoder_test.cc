@@ -144,7 +144,7 @@ TEST(UbxDecoderTest, ReceiverSendingOnlyNavSolGivesPositionAndVelocityFromEcef) 
   // THEN position, height and velocity equal gpsd's decoding of the same message (.chk:
   // lat 46.404648618, lon -117.020462010, altHAE 232.9577, velN -0.031, velE 0.438, velD -0.002)
   const GnssSample& g = out[0];
-  EXPECT_EQ(g.t, 2307LL * 604800LL * kNsPerSecond + itow * 1'000'000LL);
+  EXPECT_EQ(ToNs(g.t), 2307LL * 604800LL * kNsPerSecond + itow * 1'000'000LL);
   EXPECT_NEAR(g.position.lat_deg, 46.404648618, 1e-9);
   EXPECT_NEAR(g.position.lon_deg, -117.020462010, 1e-9);
   EXPECT_NEAR(g.position.height_m, 232.9577, 1e-4);
@@ -170,7 +170,7 @@ TEST(UbxDecoderTest, NavSolWithGpsFixOkClearIsNoFix) {
   });
   d.Feed(SolEcef(1000, 3, 0x0D) + SolEcef(2000, 3, 0x0C) + SolEcef(3000, 3, 0x0D));
   ASSERT_EQ(out.size(), 2u);  // the epoch at 2000 (3-D, gpsFixOk clear) is dropped
-  EXPECT_EQ(out[1].t % (604800LL * kNsPerSecond), 3000 * 1'000'000LL);
+  EXPECT_EQ(ToNs(out[1].t) % (604800LL * kNsPerSecond), 3000 * 1'000'000LL);
 }
 
 }  // namespace

@@ -29,7 +29,7 @@ TEST(ScenarioMcuTest, TheDefaultScenarioCarriesTheRazorBoardAtTenTimesTheGpsRate
   ASSERT_TRUE(s.mcu.enabled);
   EXPECT_EQ(s.mcu.config.profile.name, "razor-v13");
   EXPECT_DOUBLE_EQ(s.mcu.config.imu_rate_hz, 10.0 * s.gnss.rate_hz);
-  EXPECT_EQ(s.estimator.navd_mode, "ekf");
+  EXPECT_EQ(s.estimator.navd_mode, NavdMode::kEkf);
 }
 
 TEST(ScenarioMcuTest, DefaultsFollowSeed000) {

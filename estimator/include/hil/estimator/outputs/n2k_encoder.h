@@ -34,14 +34,13 @@ std::uint32_t N2kCanId(std::uint32_t pgn, int priority, std::uint8_t source);
 CanFrame EncodePositionRapid(double lat_deg, double lon_deg, std::uint8_t source);
 /// `cog_rad` true course over ground in [0, 2π), `sog_mps` speed over ground.
 CanFrame EncodeCogSogRapid(std::uint8_t sid, double cog_rad, double sog_mps, std::uint8_t source);
-/// `days_since_1970` and `seconds_of_day` UTC; `altitude_m` above the WGS-84 ellipsoid; `method`
+/// `days` since 1970 and `seconds_of_day` UTC; `alt` (m) above the WGS-84 ellipsoid; `method`
 /// 0 none, 1 GNSS, 2 DGNSS, 4 RTK fixed, 5 RTK float, 6 estimated (dead reckoning). What the
 /// receiver did not report goes out as "not available": `num_sv` < 0, `hdop` <= 0, no
 /// `geoid_separation_m` (the geoid's height above the ellipsoid, as in GGA).
-FastPacket EncodeGnssPosition(std::uint8_t sid, std::uint16_t days_since_1970,
-                              double seconds_of_day, double lat_deg, double lon_deg,
-                              double altitude_m, int method, int num_sv, double hdop,
-                              std::uint8_t fast_packet_sequence, std::uint8_t source,
+FastPacket EncodeGnssPosition(std::uint8_t sid, std::uint16_t days, double seconds_of_day,
+                              double lat, double lon, double alt, int method, int num_sv,
+                              double hdop, std::uint8_t fast_packet_sequence, std::uint8_t source,
                               std::optional<double> geoid_separation_m = std::nullopt);
 /// True heading (radians clockwise from north, [0, 2π)).
 CanFrame EncodeVesselHeading(std::uint8_t sid, double heading_rad, std::uint8_t source);
