@@ -123,7 +123,6 @@ bool Scheduler::PaceTowards(Time t_event, DeviceOutput& out) {
   // the pacing thread writes the bytes and frames; this one idles until the next event, but reads
   // a host command when it arrives (within ~1 ms), not at the next event: the device may answer
   // in between
-  if (!pacing_) StartPacing();
   const std::int64_t now = link::RealtimePacer::MonotonicNs();
   const std::int64_t due = pacer_->WallNsOf(t_event) - kEventLeadNs;
   if (t_event > t_end_ || due <= now) return false;
@@ -176,6 +175,7 @@ void Scheduler::Run(SchedulerMonitor& monitor, const truth::TruthConfig* truth) 
 bool Scheduler::RunEvents(SchedulerMonitor& monitor, const truth::TruthConfig* truth) {
   std::optional<truth::TruthIntegrator> integrator;
   if (truth) integrator.emplace(*truth);
+  if (pacer_ && !pacing_) StartPacing();  // before the first event: its bytes leave on time
   DeviceOutput out;
   for (;;) {
     std::optional<Time> t_event;

@@ -3,8 +3,8 @@
 /// The estimator's output at one time of validity, and its JSON-lines form (one object per line),
 /// which is navd's stdout contract with the harness:
 ///   {"tov_utc_s": 1370851200.000000000, "tov_unix_ns": 1370851200000000000, "lat_deg": …,
-///    "lon_deg": …, "height_m": …, "vel_enu_mps": [e, n, u], "speed_mps": …, "pos_std_enu_m": [...],
-///    "yaw_deg": …, "roll_deg": …, "pitch_deg": …, "vel_std_enu_mps": [...], "nis_pos": …,
+///    "lon_deg": …, "height_m": …, "vel_enu_mps": [e, n, u], "speed_mps": …, "pos_std_enu_m":
+///    [...], "yaw_deg": …, "roll_deg": …, "pitch_deg": …, "vel_std_enu_mps": [...], "nis_pos": …,
 ///    "mean_nis_pos": …, "mode": "ekf", "status": N}
 /// (vel_enu_mps, speed_mps and the fields after pos_std_enu_m are present when known: a fix whose
 /// receiver reported a speed without a course carries speed_mps and no vel_enu_mps).
