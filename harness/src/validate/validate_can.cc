@@ -69,6 +69,25 @@ bool CheckFastPacket(std::uint32_t id, const std::string& data, std::int64_t lin
   return false;
 }
 
+// The rate of each identifier and its gaps longer than 2.5 median periods (fast packets are
+// timed by their first frames).
+void CheckRates(const std::map<std::string, std::vector<double>>& times, ValidationReport& rep) {
+  for (const auto& [id, ts] : times) {
+    if (ts.size() < 2) continue;
+    const double span = ts.back() - ts.front();
+    std::vector<double> dt;
+    for (std::size_t i = 1; i < ts.size(); ++i) dt.push_back(ts[i] - ts[i - 1]);
+    const double med = Percentile(dt, 50);
+    if (span > 0) rep.messages[id].rate_hz = static_cast<double>(ts.size() - 1) / span;
+    std::size_t gaps = 0;
+    for (const double d : dt) gaps += med > 0 && d > 2.5 * med ? 1 : 0;
+    if (gaps > 0)
+      rep.findings.push_back({false, "sequence_gap",
+                              id + ": " + std::to_string(gaps) + " gap(s) longer than 2.5 periods",
+                              -1});
+  }
+}
+
 }  // namespace
 
 ValidationReport ValidateCanLog(const std::string& text) {
@@ -145,20 +164,7 @@ ValidationReport ValidateCanLog(const std::string& text) {
         id_hex.size() == 8 && !remote && data.size() >= 4 && kFastPacketPgns.count(PgnOf(id));
     if (!fast_packet || CheckFastPacket(id, data, line_no, fast, rep)) times[id_hex].push_back(t);
   }
-  for (auto& [id, ts] : times) {
-    if (ts.size() < 2) continue;
-    const double span = ts.back() - ts.front();
-    std::vector<double> dt;
-    for (std::size_t i = 1; i < ts.size(); ++i) dt.push_back(ts[i] - ts[i - 1]);
-    const double med = Percentile(dt, 50);
-    if (span > 0) rep.messages[id].rate_hz = static_cast<double>(ts.size() - 1) / span;
-    std::size_t gaps = 0;
-    for (const double d : dt) gaps += med > 0 && d > 2.5 * med ? 1 : 0;
-    if (gaps > 0)
-      rep.findings.push_back({false, "sequence_gap",
-                              id + ": " + std::to_string(gaps) + " gap(s) longer than 2.5 periods",
-                              -1});
-  }
+  CheckRates(times, rep);
   rep.epochs = 0;
   if (rep.frames == 0) rep.findings.push_back({true, "empty", "no valid frame in the log", -1});
   return rep;
