@@ -33,15 +33,15 @@ class CanOutput {
 
   bool enabled() const { return sock_ >= 0 || log_ != nullptr; }
   /// Sends what is due at this solution's time of validity (UTC Unix ns).
-  void Publish(const estimator::NavOutput& o, std::int64_t utc_unix_ns);
+  void Publish(const estimator::NavOutput& o, std::int64_t utc_ns);
   /// A receiver's fix: its satellites, HDOP and geoid separation go into the next 129029.
   void OnGnss(const estimator::GnssSample& g);
   std::uint64_t send_errors() const { return send_errors_; }
   std::uint64_t frames_sent() const { return frames_; }
 
  private:
-  void Send(const estimator::outputs::CanFrame& f, std::int64_t utc_unix_ns);
-  void SendGnssPosition(const estimator::NavOutput& o, std::int64_t utc_unix_ns);
+  void Send(const estimator::outputs::CanFrame& f, std::int64_t utc_ns);
+  void SendGnssPosition(const estimator::NavOutput& o, std::int64_t utc_ns);
   int sock_ = -1;
   std::FILE* log_ = nullptr;
   std::string iface_name_;
