@@ -77,7 +77,7 @@ class Wt901cDevice final : public Device {
   Eigen::Vector3d gyro_bias_dps_ = Eigen::Vector3d::Zero();
   double yaw_drift_dps_ = 0, yaw_offset_deg_ = 0, last_yaw_deg_ = 0;
   Time power_on_{}, next_cycle_{}, unlocked_until_{};
-  bool zero_yaw_pending_ = false, single_pending_ = false;
+  bool single_pending_ = false;
   std::string host_buf_;
   Wt901cStats stats_;
   Wt901cCycle cycle_;
