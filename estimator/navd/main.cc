@@ -127,10 +127,9 @@ est::NavSolution ToSolution(const est::NavOutput& o, const est::Navigator& nav, 
   return s;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  std::string config_path;
+// Reads the command line into `config_path`; an exit code when navd is to stop at once
+// (--help, or a usage error after its message), nullopt to run.
+std::optional<int> ParseArgs(int argc, char** argv, std::string& config_path) {
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--help" || a == "-h") {
@@ -148,137 +147,99 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "navd: --config FILE is required (see navd --help)\n");
     return 2;
   }
-  est::NavdConfig cfg;
-  try {
-    cfg = est::NavdConfig::FromFile(est::ConfigFile::Load(config_path));
-  } catch (const est::ConfigError& e) {
-    std::fprintf(stderr, "navd: %s\n", e.what());
-    return 2;
+  return std::nullopt;
+}
+
+// Where the solutions go: JSON lines, NMEA 0183 ([output] nmea_device) and NMEA 2000 over CAN.
+struct SolutionOutputs {
+  FILE* out = stdout;
+  int nmea_fd = -1;
+  std::unique_ptr<hil::navd::CanOutput> can;
+  std::uint64_t nmea_write_errors = 0;
+  std::optional<est::GpsTime> last_emitted;
+
+  // Opens every configured output; false, after a message naming it, when one cannot be opened.
+  bool Open(const est::NavdConfig& cfg) {
+    if (cfg.json_path != "-") {
+      out = std::fopen(cfg.json_path.c_str(), "w");
+      if (!out) {
+        std::fprintf(stderr, "navd: cannot write %s: %s\n", cfg.json_path.c_str(),
+                     std::strerror(errno));
+        return false;
+      }
+    }
+    if (!cfg.nmea_device.empty()) {
+      nmea_fd = open(cfg.nmea_device.c_str(), O_WRONLY | O_NOCTTY | O_NONBLOCK | O_CREAT | O_APPEND,
+                     0644);
+      if (nmea_fd < 0) {
+        std::fprintf(stderr, "navd: cannot open [output] nmea_device %s: %s\n",
+                     cfg.nmea_device.c_str(), std::strerror(errno));
+        return false;
+      }
+    }
+    try {
+      can = std::make_unique<hil::navd::CanOutput>(
+          cfg.can_interface, cfg.can_log, static_cast<std::uint8_t>(cfg.can_source_address),
+          cfg.can_rate_hz);
+    } catch (const std::runtime_error& e) {
+      std::fprintf(stderr, "navd: [output] %s\n", e.what());
+      return false;
+    }
+    return true;
   }
 
-  FILE* out = stdout;
-  if (cfg.json_path != "-") {
-    out = std::fopen(cfg.json_path.c_str(), "w");
-    if (!out) {
-      std::fprintf(stderr, "navd: cannot write %s: %s\n", cfg.json_path.c_str(),
-                   std::strerror(errno));
-      return 2;
+  // One solution to every output.
+  void Emit(const est::NavOutput& o, const est::Navigator& nav, est::NavdHealth& health,
+            int leap_s) {
+    std::string line = est::ToJsonLine(ToSolution(o, nav, leap_s));
+    health.AppendTo(line, o.t);
+    std::fwrite(line.data(), 1, line.size(), out);
+    std::fflush(out);
+    if (nmea_fd >= 0) {
+      const std::string s = est::outputs::FormatNmea0183(o, est::UnixNsFromGpsTime(o.t, leap_s));
+      if (write(nmea_fd, s.data(), s.size()) != static_cast<ssize_t>(s.size())) ++nmea_write_errors;
     }
+    can->Publish(o, est::UnixNsFromGpsTime(o.t, leap_s));
+    last_emitted = o.t;
   }
-  int nmea_fd = -1;
-  if (!cfg.nmea_device.empty()) {
-    nmea_fd =
-        open(cfg.nmea_device.c_str(), O_WRONLY | O_NOCTTY | O_NONBLOCK | O_CREAT | O_APPEND, 0644);
-    if (nmea_fd < 0) {
-      std::fprintf(stderr, "navd: cannot open [output] nmea_device %s: %s\n",
-                   cfg.nmea_device.c_str(), std::strerror(errno));
-      return 2;
-    }
+
+  void Close() {
+    if (out != stdout) std::fclose(out);
+    if (nmea_fd >= 0) close(nmea_fd);
   }
-  std::unique_ptr<hil::navd::CanOutput> can;
-  try {
-    can = std::make_unique<hil::navd::CanOutput>(cfg.can_interface, cfg.can_log,
-                                                 static_cast<std::uint8_t>(cfg.can_source_address),
-                                                 cfg.can_rate_hz);
-  } catch (const std::runtime_error& e) {
-    std::fprintf(stderr, "navd: [output] %s\n", e.what());
-    return 2;
-  }
+};
+
+void InstallSignalHandlers() {
   struct sigaction sa {};
   sa.sa_handler = OnSignal;
   sigaction(SIGTERM, &sa, nullptr);
   sigaction(SIGINT, &sa, nullptr);
   signal(SIGPIPE, SIG_IGN);
+}
 
-  est::Navigator nav(cfg.nav);
-  const bool imu_mode = est::UsesImu(cfg.mode());
-  std::uint64_t nmea_write_errors = 0;
-  std::optional<est::GpsTime> last_emitted;
-  est::NavdHealth health;  // fault detection: counters and flags in every JSON line
-  const auto emit = [&](const est::NavOutput& o) {
-    std::string line = est::ToJsonLine(ToSolution(o, nav, cfg.leap_seconds));
-    health.AppendTo(line, o.t);
-    std::fwrite(line.data(), 1, line.size(), out);
-    std::fflush(out);
-    if (nmea_fd >= 0) {
-      const std::string s =
-          est::outputs::FormatNmea0183(o, est::UnixNsFromGpsTime(o.t, cfg.leap_seconds));
-      if (write(nmea_fd, s.data(), s.size()) != static_cast<ssize_t>(s.size())) ++nmea_write_errors;
-    }
-    can->Publish(o, est::UnixNsFromGpsTime(o.t, cfg.leap_seconds));
-    last_emitted = o.t;
-  };
-
-  // the Razor text lines carry no time: stamped on arrival, mapped through the GNSS fixes' arrivals
-  const bool razor_text = !cfg.imu.from_can() && cfg.imu_format == "razor_text";
-  std::int64_t gnss_read_ns = 0, imu_read_ns = 0;
-  est::drivers::RazorImuAdapter razor_adapter;
-  // GNSS receivers (one, or several in multi_gnss mode): one solution per fix in GNSS-only modes
-  hil::navd::GnssReceivers receivers(cfg, [&](const est::GnssSample& g) {
-    health.OnGnss(g);
-    can->OnGnss(g);
-    if (razor_text) razor_adapter.AddGnssArrival(gnss_read_ns, g.t, cfg.imu.razor_gnss_latency_s);
-    nav.Push(g);
-    if (imu_mode && !nav.ImuLost()) return;
-    // GNSS-only modes, and IMU modes whose IMU fell silent: one solution per fix
-    const est::NavOutput o = nav.Output();
-    if (o.valid && o.t != last_emitted) emit(o);
-  });
-  const est::Nanoseconds period{std::llround(1e9 / cfg.output_rate_hz)};
-  est::drivers::McuImuAdapter mcu_adapter;
-  const auto on_imu = [&](const est::ImuSample& s) {
-    nav.Push(s);
-    if (!imu_mode) return;
-    // each sample as it is decoded: run the filter to the horizon, one solution per output period
-    nav.Update();
-    if (!nav.aligned()) return;
-    if (last_emitted &&
-        s.t.time_since_epoch() / period == last_emitted->time_since_epoch() / period)
-      return;
-    const est::NavOutput o = nav.Output();
-    if (o.valid && o.t != last_emitted)
-      emit(o);  // (a fix stands in for the filter after an IMU loss)
-  };
-  est::drivers::McuFrameDecoder mcu([&](const est::drivers::McuFrame& f) {
-    health.OnMcuFrame(f);
-    if (const auto s = mcu_adapter.Add(f)) on_imu(*s);
-  });
-  est::drivers::RazorTextDecoder razor([&](const est::drivers::RazorTextSample& line) {
-    if (const auto s = razor_adapter.Add(line, imu_read_ns)) on_imu(*s);
-  });
-  std::unique_ptr<hil::navd::CanImuInput> can_imu;
-  if (cfg.imu.from_can()) {
-    est::drivers::J1939ImuDecoderConfig jc;
-    jc.any_source = cfg.imu.source_address < 0;
-    jc.source_address =
-        static_cast<std::uint8_t>(cfg.imu.source_address < 0 ? 0 : cfg.imu.source_address);
-    try {
-      can_imu = std::make_unique<hil::navd::CanImuInput>(cfg.imu.can_interface, jc);
-    } catch (const std::runtime_error& e) {
-      std::fprintf(stderr, "navd: %s\n", e.what());
-      return 2;
-    }
+// The J1939 IMU on CAN when [imu] source is can; false, after a message, when it cannot be opened.
+bool OpenCanImu(const est::NavdConfig& cfg, std::unique_ptr<hil::navd::CanImuInput>& can_imu) {
+  if (!cfg.imu.from_can()) return true;
+  est::drivers::J1939ImuDecoderConfig jc;
+  jc.any_source = cfg.imu.source_address < 0;
+  jc.source_address =
+      static_cast<std::uint8_t>(cfg.imu.source_address < 0 ? 0 : cfg.imu.source_address);
+  try {
+    can_imu = std::make_unique<hil::navd::CanImuInput>(cfg.imu.can_interface, jc);
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "navd: %s\n", e.what());
+    return false;
   }
+  return true;
+}
 
-  health.set_sources({&receivers.nmea_totals(), &receivers.ubx_totals(), &mcu.stats(),
-                      &mcu_adapter.stats(), &nav.stats(),
-                      can_imu ? &can_imu->decoder().stats() : nullptr});
-  // every input device with what its bytes are fed to
-  hil::navd::SerialDevice imu(cfg.imu_device, cfg.imu_baud);
-  std::vector<std::pair<hil::navd::SerialDevice*, std::function<void(const std::string&)>>> inputs;
-  for (std::size_t i = 0; i < receivers.size(); ++i) {
-    inputs.emplace_back(&receivers.device(i), [&, i](const std::string& b) {
-      gnss_read_ns = MonotonicNs();
-      receivers.Feed(i, b);
-    });
-  }
-  inputs.emplace_back(&imu, [&](const std::string& b) {
-    imu_read_ns = MonotonicNs();
-    if (razor_text)
-      razor.Feed(b);
-    else
-      mcu.Feed(b);
-  });
+// A serial input device with what its bytes are fed to.
+using SerialInput = std::pair<hil::navd::SerialDevice*, std::function<void(const std::string&)>>;
+
+// Polls the inputs (and the CAN IMU socket) until SIGTERM/SIGINT, feeding what each one reads.
+void PollInputs(const std::vector<SerialInput>& inputs, hil::navd::CanImuInput* can_imu,
+                hil::navd::GnssReceivers& receivers,
+                const std::function<void(const est::ImuSample&)>& on_imu) {
   std::vector<pollfd> p;
   std::vector<std::size_t> polled;
   std::string buf;
@@ -313,6 +274,12 @@ int main(int argc, char** argv) {
       if (!alive) usleep(100000);
     }
   }
+}
+
+// The counters navd prints on stderr when it stops.
+void PrintStopStats(const hil::navd::GnssReceivers& receivers,
+                    const est::drivers::McuFrameDecoder& mcu, const est::Navigator& nav,
+                    const SolutionOutputs& outputs) {
   const auto st = receivers.nmea_stats();
   const auto ubx_st = receivers.ubx_stats();
   const auto& ns = nav.stats();
@@ -338,22 +305,117 @@ int main(int argc, char** argv) {
       static_cast<unsigned long long>(ns.gnss_resets),
       static_cast<unsigned long long>(ubx_st.frames_ok),
       static_cast<unsigned long long>(ubx_st.bad_checksum),
-      static_cast<unsigned long long>(nmea_write_errors),
-      static_cast<unsigned long long>(can->frames_sent()),
-      static_cast<unsigned long long>(can->send_errors()));
-  if (razor_text) {
-    std::fprintf(stderr,
-                 "navd: razor_text lines=%llu bad_lines=%llu garbage_bytes=%llu imu=%llu "
-                 "no_time=%llu gaps=%llu\n",
-                 static_cast<unsigned long long>(razor.stats().lines_ok),
-                 static_cast<unsigned long long>(razor.stats().bad_lines),
-                 static_cast<unsigned long long>(razor.stats().garbage_bytes),
-                 static_cast<unsigned long long>(razor_adapter.stats().imu_out),
-                 static_cast<unsigned long long>(razor_adapter.stats().imu_no_time),
-                 static_cast<unsigned long long>(razor_adapter.stats().imu_gap));
+      static_cast<unsigned long long>(outputs.nmea_write_errors),
+      static_cast<unsigned long long>(outputs.can->frames_sent()),
+      static_cast<unsigned long long>(outputs.can->send_errors()));
+}
+
+// The Razor text decoder's and adapter's counters, printed on stop in razor_text format.
+void PrintRazorStats(const est::drivers::RazorTextDecoder& razor,
+                     const est::drivers::RazorImuAdapter& razor_adapter) {
+  std::fprintf(stderr,
+               "navd: razor_text lines=%llu bad_lines=%llu garbage_bytes=%llu imu=%llu "
+               "no_time=%llu gaps=%llu\n",
+               static_cast<unsigned long long>(razor.stats().lines_ok),
+               static_cast<unsigned long long>(razor.stats().bad_lines),
+               static_cast<unsigned long long>(razor.stats().garbage_bytes),
+               static_cast<unsigned long long>(razor_adapter.stats().imu_out),
+               static_cast<unsigned long long>(razor_adapter.stats().imu_no_time),
+               static_cast<unsigned long long>(razor_adapter.stats().imu_gap));
+}
+
+// The daemon proper: the inputs, their decoders and the navigator, until SIGTERM/SIGINT; closes
+// the outputs after a clean stop.
+int Run(const est::NavdConfig& cfg, SolutionOutputs& outputs) {
+  est::Navigator nav(cfg.nav);
+  const bool imu_mode = est::UsesImu(cfg.mode());
+  est::NavdHealth health;  // fault detection: counters and flags in every JSON line
+  const auto emit = [&](const est::NavOutput& o) {
+    outputs.Emit(o, nav, health, cfg.leap_seconds);
+  };
+
+  // the Razor text lines carry no time: stamped on arrival, mapped through the GNSS fixes' arrivals
+  const bool razor_text = !cfg.imu.from_can() && cfg.imu_format == "razor_text";
+  std::int64_t gnss_read_ns = 0, imu_read_ns = 0;
+  est::drivers::RazorImuAdapter razor_adapter;
+  // GNSS receivers (one, or several in multi_gnss mode): one solution per fix in GNSS-only modes
+  hil::navd::GnssReceivers receivers(cfg, [&](const est::GnssSample& g) {
+    health.OnGnss(g);
+    outputs.can->OnGnss(g);
+    if (razor_text) razor_adapter.AddGnssArrival(gnss_read_ns, g.t, cfg.imu.razor_gnss_latency_s);
+    nav.Push(g);
+    if (imu_mode && !nav.ImuLost()) return;
+    // GNSS-only modes, and IMU modes whose IMU fell silent: one solution per fix
+    const est::NavOutput o = nav.Output();
+    if (o.valid && o.t != outputs.last_emitted) emit(o);
+  });
+  const est::Nanoseconds period{std::llround(1e9 / cfg.output_rate_hz)};
+  est::drivers::McuImuAdapter mcu_adapter;
+  const auto on_imu = [&](const est::ImuSample& s) {
+    nav.Push(s);
+    if (!imu_mode) return;
+    // each sample as it is decoded: run the filter to the horizon, one solution per output period
+    nav.Update();
+    if (!nav.aligned()) return;
+    const std::optional<est::GpsTime>& last_emitted = outputs.last_emitted;
+    if (last_emitted &&
+        s.t.time_since_epoch() / period == last_emitted->time_since_epoch() / period)
+      return;
+    const est::NavOutput o = nav.Output();
+    if (o.valid && o.t != last_emitted)
+      emit(o);  // (a fix stands in for the filter after an IMU loss)
+  };
+  est::drivers::McuFrameDecoder mcu([&](const est::drivers::McuFrame& f) {
+    health.OnMcuFrame(f);
+    if (const auto s = mcu_adapter.Add(f)) on_imu(*s);
+  });
+  est::drivers::RazorTextDecoder razor([&](const est::drivers::RazorTextSample& line) {
+    if (const auto s = razor_adapter.Add(line, imu_read_ns)) on_imu(*s);
+  });
+  std::unique_ptr<hil::navd::CanImuInput> can_imu;
+  if (!OpenCanImu(cfg, can_imu)) return 2;
+
+  health.set_sources({&receivers.nmea_totals(), &receivers.ubx_totals(), &mcu.stats(),
+                      &mcu_adapter.stats(), &nav.stats(),
+                      can_imu ? &can_imu->decoder().stats() : nullptr});
+  // every input device with what its bytes are fed to
+  hil::navd::SerialDevice imu(cfg.imu_device, cfg.imu_baud);
+  std::vector<SerialInput> inputs;
+  for (std::size_t i = 0; i < receivers.size(); ++i) {
+    inputs.emplace_back(&receivers.device(i), [&, i](const std::string& b) {
+      gnss_read_ns = MonotonicNs();
+      receivers.Feed(i, b);
+    });
   }
+  inputs.emplace_back(&imu, [&](const std::string& b) {
+    imu_read_ns = MonotonicNs();
+    if (razor_text)
+      razor.Feed(b);
+    else
+      mcu.Feed(b);
+  });
+  PollInputs(inputs, can_imu.get(), receivers, on_imu);
+  PrintStopStats(receivers, mcu, nav, outputs);
+  if (razor_text) PrintRazorStats(razor, razor_adapter);
   if (can_imu) hil::navd::PrintCanImuStats(*can_imu, stderr);
-  if (out != stdout) std::fclose(out);
-  if (nmea_fd >= 0) close(nmea_fd);
+  outputs.Close();
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string config_path;
+  if (const std::optional<int> exit_code = ParseArgs(argc, argv, config_path)) return *exit_code;
+  est::NavdConfig cfg;
+  try {
+    cfg = est::NavdConfig::FromFile(est::ConfigFile::Load(config_path));
+  } catch (const est::ConfigError& e) {
+    std::fprintf(stderr, "navd: %s\n", e.what());
+    return 2;
+  }
+  SolutionOutputs outputs;
+  if (!outputs.Open(cfg)) return 2;
+  InstallSignalHandlers();
+  return Run(cfg, outputs);
 }

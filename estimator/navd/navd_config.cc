@@ -77,121 +77,143 @@ Eigen::Vector3d ToVector3(const ConfigFile& f, const ConfigEntry& e, double limi
   return v;
 }
 
-}  // namespace
+// An [input] key of navd itself (the receivers' own, gnss_device_N, excepted); false for another.
+bool ReadInputKey(const ConfigFile& f, const ConfigEntry& e, NavdConfig& c) {
+  if (e.section != "input") return false;
+  const std::string& k = e.key;
+  if (k == "gnss_device")
+    c.gnss_device = e.value;
+  else if (k == "gnss_baud")
+    c.gnss_baud = ToBaud(f, e);
+  else if (k == "gnss_protocol") {
+    if (e.value != "nmea" && e.value != "ubx")
+      throw ConfigError(f.name(), e.line, Field(e),
+                        "unknown protocol '" + e.value + "' (known: nmea, ubx)");
+    c.gnss_protocol = e.value;
+  } else if (k == "gnss_configure") {
+    if (e.value != "true" && e.value != "false")
+      throw ConfigError(f.name(), e.line, Field(e), "expected true or false");
+    c.gnss_configure = e.value == "true";
+  } else if (k == "gnss_rate_hz")
+    c.gnss_rate_hz = ToDouble(f, e, 0.0, 10.0);
+  else if (k == "imu_device")
+    c.imu_device = e.value;
+  else if (k == "imu_baud")
+    c.imu_baud = ToBaud(f, e);
+  else if (k == "imu_format") {
+    if (e.value != "mcu" && e.value != "razor_text")
+      throw ConfigError(f.name(), e.line, Field(e),
+                        "unknown IMU format '" + e.value + "' (known: mcu, razor_text)");
+    c.imu_format = e.value;
+  } else
+    return false;
+  return true;
+}
 
-NavdConfig NavdConfig::FromFile(const ConfigFile& f) {
-  NavdConfig c;
-  c.nav.mode = NavMode::kGnssOnly;  // the default without an IMU
-  int mode_line = 0, latency_line = 0;
-  for (const ConfigEntry& e : f.entries()) {
-    const std::string s = e.section, k = e.key;
-    EkfParams& ekf = c.nav.ekf;
-    if (s == "input" && k == "gnss_device")
-      c.gnss_device = e.value;
-    else if (s == "input" && k == "gnss_baud")
-      c.gnss_baud = ToBaud(f, e);
-    else if (s == "input" && k == "gnss_protocol") {
-      if (e.value != "nmea" && e.value != "ubx")
-        throw ConfigError(f.name(), e.line, Field(e),
-                          "unknown protocol '" + e.value + "' (known: nmea, ubx)");
-      c.gnss_protocol = e.value;
-    } else if (s == "input" && k == "gnss_configure") {
-      if (e.value != "true" && e.value != "false")
-        throw ConfigError(f.name(), e.line, Field(e), "expected true or false");
-      c.gnss_configure = e.value == "true";
-    } else if (s == "input" && k == "gnss_rate_hz")
-      c.gnss_rate_hz = ToDouble(f, e, 0.0, 10.0);
-    else if (s == "filter" && k == "nmea_uere_m")
-      c.nmea_uere_m = ToDouble(f, e, 0.005, 100.0);
-    else if (s == "filter" && k == "nmea_rtk_fixed_std_m")
-      c.nmea_rtk_fixed_std_m = ToDouble(f, e, 0.001, 10.0);
-    else if (s == "filter" && k == "nmea_rtk_float_std_m")
-      c.nmea_rtk_float_std_m = ToDouble(f, e, 0.001, 100.0);
-    else if (s == "filter" && k == "nmea_velocity_std_mps")
-      c.nmea_velocity_std_mps = ToDouble(f, e, 0.001, 10.0);
-    else if (s == "input" && k == "imu_device")
-      c.imu_device = e.value;
-    else if (s == "input" && k == "imu_baud")
-      c.imu_baud = ToBaud(f, e);
-    else if (s == "input" && k == "imu_format") {
-      if (e.value != "mcu" && e.value != "razor_text")
-        throw ConfigError(f.name(), e.line, Field(e),
-                          "unknown IMU format '" + e.value + "' (known: mcu, razor_text)");
-      c.imu_format = e.value;
-    } else if (s == "time" && k == "leap_seconds")
-      c.leap_seconds = ToInt(f, e, 0, 60);
-    else if (s == "filter" && k == "mode") {
-      const auto m = NavModeFromName(e.value.c_str());
-      if (!m)
-        throw ConfigError(f.name(), e.line, Field(e),
-                          "unknown mode '" + e.value +
-                              "' (known: ekf, planar2d, gnss_only, imu_only, multi_gnss)");
-      c.nav.mode = *m;
-      mode_line = e.line;
-    } else if (s == "filter" && k == "lever_arm_m")
-      ekf.lever_arm_B_m = ToVector3(f, e, 50.0);
-    else if (s == "filter" && k == "accel_noise")
-      ekf.accel_noise_mps2_rthz = ToDouble(f, e, 1e-6, 10.0);
-    else if (s == "filter" && k == "gyro_noise")
-      ekf.gyro_noise_radps_rthz = ToDouble(f, e, 1e-8, 1.0);
-    else if (s == "filter" && k == "accel_bias_rw")
-      ekf.accel_bias_rw_mps3_rthz = ToDouble(f, e, 0.0, 1.0);
-    else if (s == "filter" && k == "gyro_bias_rw")
-      ekf.gyro_bias_rw_radps2_rthz = ToDouble(f, e, 0.0, 0.1);
-    else if (s == "filter" && k == "init_accel_bias_std")
-      ekf.init_accel_bias_std_mps2 = ToDouble(f, e, 0.0, 10.0);
-    else if (s == "filter" && k == "init_gyro_bias_std")
-      ekf.init_gyro_bias_std_radps = ToDouble(f, e, 0.0, 1.0);
-    else if (s == "filter" && k == "gnss_error_tau_s")
-      ekf.gnss_error_tau_s = ToDouble(f, e, 0.0, 3600.0);
-    else if (s == "filter" && k == "gnss_error_std_m")
-      ekf.gnss_error_std_m = ToDouble(f, e, 0.0, 100.0);
-    else if (s == "filter" && k == "gnss_error_vertical_std_m")
-      ekf.gnss_error_vertical_std_m = ToDouble(f, e, 0.0, 100.0);
-    else if (s == "filter" && k == "gnss_float_error_tau_s")
-      ekf.gnss_float_error_tau_s = ToDouble(f, e, 0.0, 3600.0);
-    else if (s == "filter" && k == "gnss_float_error_std_m")
-      ekf.gnss_float_error_std_m = ToDouble(f, e, 0.0, 100.0);
-    else if (s == "filter" && k == "nhc_std_mps")
-      ekf.nhc_std_mps = ToDouble(f, e, 0.0, 10.0);
-    else if (s == "filter" && k == "speed_rw")
-      ekf.speed_rw_mps_rthz = ToDouble(f, e, 0.0, 10.0);
-    else if (s == "filter" && k == "speed_dev_std_mps")
-      ekf.speed_dev_std_mps = ToDouble(f, e, 0.001, 10.0);
-    else if (s == "filter" && k == "speed_dev_tau_s")
-      ekf.speed_dev_tau_s = ToDouble(f, e, 0.0, 3600.0);
-    else if (s == "filter" && k == "gate_sigma")
-      ekf.gate_sigma = ToDouble(f, e, 1.0, 1000.0);
-    else if (s == "filter" && k == "fusion_horizon_s")
-      c.nav.fusion_horizon = TruncatedNs(ToDouble(f, e, 0.0, 2.0));
-    else if (s == "filter" && k == "gnss_max_latency_s") {
-      c.nav.gnss_max_latency = TruncatedNs(ToDouble(f, e, 0.0, 5.0));
-      latency_line = e.line;
-    } else if (s == "filter" && k == "use_gnss_velocity") {
-      if (e.value != "true" && e.value != "false")
-        throw ConfigError(f.name(), e.line, Field(e), "expected true or false");
-      c.nav.use_gnss_velocity = e.value == "true";
-    } else if (s == "output" && k == "json")
-      c.json_path = e.value;
-    else if (s == "output" && k == "rate_hz")
-      c.output_rate_hz = ToDouble(f, e, 0.1, 1000.0);
-    else if (s == "output" && k == "nmea_device")
-      c.nmea_device = e.value;
-    else if (s == "output" && k == "can_interface")
-      c.can_interface = e.value;
-    else if (s == "output" && k == "can_log")
-      c.can_log = e.value;
-    else if (s == "output" && k == "can_source_address")
-      c.can_source_address = ToInt(f, e, 0, 251);
-    else if (s == "output" && k == "can_rate_hz")
-      c.can_rate_hz = ToDouble(f, e, 0.1, 100.0);
-    else if (s == "imu")
-      ReadNavdImuKey(f, e, c.imu);
-    else if (c.gnss_receivers.Read(f, e))
-      continue;  // gnss_device_N, antenna_N_m
-    else
-      throw ConfigError(f.name(), e.line, Field(e), "unknown key");
-  }
+// A [filter] key of the error-state EKF's parameters; false for another.
+bool ReadEkfKey(const ConfigFile& f, const ConfigEntry& e, EkfParams& ekf) {
+  if (e.section != "filter") return false;
+  const std::string& k = e.key;
+  if (k == "lever_arm_m")
+    ekf.lever_arm_B_m = ToVector3(f, e, 50.0);
+  else if (k == "accel_noise")
+    ekf.accel_noise_mps2_rthz = ToDouble(f, e, 1e-6, 10.0);
+  else if (k == "gyro_noise")
+    ekf.gyro_noise_radps_rthz = ToDouble(f, e, 1e-8, 1.0);
+  else if (k == "accel_bias_rw")
+    ekf.accel_bias_rw_mps3_rthz = ToDouble(f, e, 0.0, 1.0);
+  else if (k == "gyro_bias_rw")
+    ekf.gyro_bias_rw_radps2_rthz = ToDouble(f, e, 0.0, 0.1);
+  else if (k == "init_accel_bias_std")
+    ekf.init_accel_bias_std_mps2 = ToDouble(f, e, 0.0, 10.0);
+  else if (k == "init_gyro_bias_std")
+    ekf.init_gyro_bias_std_radps = ToDouble(f, e, 0.0, 1.0);
+  else if (k == "gnss_error_tau_s")
+    ekf.gnss_error_tau_s = ToDouble(f, e, 0.0, 3600.0);
+  else if (k == "gnss_error_std_m")
+    ekf.gnss_error_std_m = ToDouble(f, e, 0.0, 100.0);
+  else if (k == "gnss_error_vertical_std_m")
+    ekf.gnss_error_vertical_std_m = ToDouble(f, e, 0.0, 100.0);
+  else if (k == "gnss_float_error_tau_s")
+    ekf.gnss_float_error_tau_s = ToDouble(f, e, 0.0, 3600.0);
+  else if (k == "gnss_float_error_std_m")
+    ekf.gnss_float_error_std_m = ToDouble(f, e, 0.0, 100.0);
+  else if (k == "nhc_std_mps")
+    ekf.nhc_std_mps = ToDouble(f, e, 0.0, 10.0);
+  else if (k == "speed_rw")
+    ekf.speed_rw_mps_rthz = ToDouble(f, e, 0.0, 10.0);
+  else if (k == "speed_dev_std_mps")
+    ekf.speed_dev_std_mps = ToDouble(f, e, 0.001, 10.0);
+  else if (k == "speed_dev_tau_s")
+    ekf.speed_dev_tau_s = ToDouble(f, e, 0.0, 3600.0);
+  else if (k == "gate_sigma")
+    ekf.gate_sigma = ToDouble(f, e, 1.0, 1000.0);
+  else
+    return false;
+  return true;
+}
+
+// The other [filter] keys: the mode, the NMEA accuracies and the navigator's timing; `mode_line`
+// and `latency_line` note where mode and gnss_max_latency_s stand. False for another key.
+bool ReadFilterKey(const ConfigFile& f, const ConfigEntry& e, NavdConfig& c, int& mode_line,
+                   int& latency_line) {
+  if (e.section != "filter") return false;
+  const std::string& k = e.key;
+  if (k == "nmea_uere_m")
+    c.nmea_uere_m = ToDouble(f, e, 0.005, 100.0);
+  else if (k == "nmea_rtk_fixed_std_m")
+    c.nmea_rtk_fixed_std_m = ToDouble(f, e, 0.001, 10.0);
+  else if (k == "nmea_rtk_float_std_m")
+    c.nmea_rtk_float_std_m = ToDouble(f, e, 0.001, 100.0);
+  else if (k == "nmea_velocity_std_mps")
+    c.nmea_velocity_std_mps = ToDouble(f, e, 0.001, 10.0);
+  else if (k == "mode") {
+    const auto m = NavModeFromName(e.value.c_str());
+    if (!m)
+      throw ConfigError(
+          f.name(), e.line, Field(e),
+          "unknown mode '" + e.value + "' (known: ekf, planar2d, gnss_only, imu_only, multi_gnss)");
+    c.nav.mode = *m;
+    mode_line = e.line;
+  } else if (k == "fusion_horizon_s")
+    c.nav.fusion_horizon = TruncatedNs(ToDouble(f, e, 0.0, 2.0));
+  else if (k == "gnss_max_latency_s") {
+    c.nav.gnss_max_latency = TruncatedNs(ToDouble(f, e, 0.0, 5.0));
+    latency_line = e.line;
+  } else if (k == "use_gnss_velocity") {
+    if (e.value != "true" && e.value != "false")
+      throw ConfigError(f.name(), e.line, Field(e), "expected true or false");
+    c.nav.use_gnss_velocity = e.value == "true";
+  } else
+    return false;
+  return true;
+}
+
+// An [output] key; false for another.
+bool ReadOutputKey(const ConfigFile& f, const ConfigEntry& e, NavdConfig& c) {
+  if (e.section != "output") return false;
+  const std::string& k = e.key;
+  if (k == "json")
+    c.json_path = e.value;
+  else if (k == "rate_hz")
+    c.output_rate_hz = ToDouble(f, e, 0.1, 1000.0);
+  else if (k == "nmea_device")
+    c.nmea_device = e.value;
+  else if (k == "can_interface")
+    c.can_interface = e.value;
+  else if (k == "can_log")
+    c.can_log = e.value;
+  else if (k == "can_source_address")
+    c.can_source_address = ToInt(f, e, 0, 251);
+  else if (k == "can_rate_hz")
+    c.can_rate_hz = ToDouble(f, e, 0.1, 100.0);
+  else
+    return false;
+  return true;
+}
+
+// The rules that join keys, once the whole file is read.
+void CheckAcrossKeys(const ConfigFile& f, NavdConfig& c, int mode_line, int latency_line) {
   const bool needs_imu = UsesImu(c.nav.mode);
   ValidateNavdImu(f, c.imu, c.imu_device, c.imu_format);
   if (needs_imu && c.imu_device.empty() && !c.imu.from_can()) {
@@ -214,6 +236,28 @@ NavdConfig NavdConfig::FromFile(const ConfigFile& f) {
         f.name(), latency_line, "[filter] gnss_max_latency_s",
         "must be at least fusion_horizon_s (the filter never runs closer than the horizon)");
   }
+}
+
+}  // namespace
+
+NavdConfig NavdConfig::FromFile(const ConfigFile& f) {
+  NavdConfig c;
+  c.nav.mode = NavMode::kGnssOnly;  // the default without an IMU
+  int mode_line = 0, latency_line = 0;
+  for (const ConfigEntry& e : f.entries()) {
+    if (ReadInputKey(f, e, c) || ReadEkfKey(f, e, c.nav.ekf) ||
+        ReadFilterKey(f, e, c, mode_line, latency_line) || ReadOutputKey(f, e, c))
+      continue;
+    if (e.section == "time" && e.key == "leap_seconds")
+      c.leap_seconds = ToInt(f, e, 0, 60);
+    else if (e.section == "imu")
+      ReadNavdImuKey(f, e, c.imu);
+    else if (c.gnss_receivers.Read(f, e))
+      continue;  // gnss_device_N, antenna_N_m
+    else
+      throw ConfigError(f.name(), e.line, Field(e), "unknown key");
+  }
+  CheckAcrossKeys(f, c, mode_line, latency_line);
   return c;
 }
 
