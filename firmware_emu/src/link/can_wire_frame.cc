@@ -23,8 +23,11 @@ CanFrame ToDeviceFrame(const CanWireFrame& w, Time t) {
   f.id = w.id;
   f.extended = w.extended;
   f.fd = w.fd;
-  f.len = w.rtr ? 0 : w.len;
-  std::copy_n(w.data.begin(), f.len, f.data.begin());
+  f.rtr = w.rtr;
+  f.error = w.error;
+  f.fd_flags = w.fd_flags;
+  f.len = w.len;  // a remote frame's length is the one it asks for; it carries no data
+  std::copy_n(w.data.begin(), w.rtr ? 0 : w.len, f.data.begin());
   return f;
 }
 

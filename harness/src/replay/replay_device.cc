@@ -5,20 +5,6 @@
 
 namespace hil::harness {
 
-CanFrame ReplayFrame(const link::CanWireFrame& w, Time t) {
-  CanFrame f;
-  f.t = t;
-  f.id = w.id;
-  f.extended = w.extended;
-  f.len = w.len;
-  f.fd = w.fd;
-  f.rtr = w.rtr;
-  f.error = w.error;
-  f.fd_flags = w.fd_flags;
-  f.data = w.data;
-  return f;
-}
-
 ReplayDevice::ReplayDevice(std::vector<ReplayItem> items, std::vector<int> bauds)
     : items_(std::move(items)), bauds_(std::move(bauds)) {
   std::stable_sort(items_.begin(), items_.end(),
@@ -33,7 +19,7 @@ void ReplayDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
   for (; next_ < items_.size() && items_[next_].t == truth.t; ++next_) {
     const ReplayItem& item = items_[next_];
     if (item.port < 0) {
-      out.can.push_back(ReplayFrame(item.record.frame, item.t));
+      out.can.push_back(link::ToDeviceFrame(item.record.frame, item.t));
       continue;
     }
     SerialMessage m;

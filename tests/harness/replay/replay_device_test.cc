@@ -66,7 +66,7 @@ TEST(ReplayDeviceTest, RecordedFramesKeepEveryFlagOnTheWire) {
   w.id = 0x123;
   w.rtr = true;
   w.len = 4;  // the length asked for
-  CanFrame f = ReplayFrame(w, TimeFromNs(5));
+  CanFrame f = link::ToDeviceFrame(w, TimeFromNs(5));
   EXPECT_EQ(link::FromDeviceFrame(f), w);
   link::CanWireFrame fd;
   fd.id = 0x18FF0080;
@@ -75,7 +75,7 @@ TEST(ReplayDeviceTest, RecordedFramesKeepEveryFlagOnTheWire) {
   fd.fd_flags = 1;  // BRS
   fd.len = 12;
   for (std::uint8_t i = 0; i < 12; ++i) fd.data[i] = static_cast<std::uint8_t>(i + 1);
-  EXPECT_EQ(link::FromDeviceFrame(ReplayFrame(fd, TimeFromNs(6))), fd);
+  EXPECT_EQ(link::FromDeviceFrame(link::ToDeviceFrame(fd, TimeFromNs(6))), fd);
 }
 
 class OnlyTheEnd final : public SchedulerMonitor {

@@ -44,7 +44,7 @@ constexpr bool IsValidFdLength(unsigned len) {
 
 /// The wire frame of a device's frame (its send time is dropped).
 CanWireFrame FromDeviceFrame(const CanFrame& f);
-/// The device-level frame at emulated time `t`.
+/// The device-level frame at emulated time `t`, flags and all (FromDeviceFrame's inverse).
 CanFrame ToDeviceFrame(const CanWireFrame& w, Time t);
 
 }  // namespace hil::link

@@ -40,7 +40,4 @@ class ReplayDevice final : public Device {
   std::size_t next_ = 0;
 };
 
-/// The device-level frame of a recorded wire frame at emulated time `t`, flags and all.
-CanFrame ReplayFrame(const link::CanWireFrame& w, Time t);
-
 }  // namespace hil::harness
