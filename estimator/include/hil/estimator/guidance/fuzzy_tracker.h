@@ -1,0 +1,62 @@
+#pragma once
+/// @file
+/// Paper 003's path tracker (seeds_001_003.md §B.6): an analytic fuzzy rule with a self-adjusting
+/// weight. The lateral deviation d (m, + = vehicle left of the line) and the heading deviation θ
+/// (path direction minus vehicle yaw, + = counter-clockwise) are quantised to the fuzzy domain
+/// [−S, S] (S = 6; k_d = S/0.6 m = 10, k_θ = S/60° = 0.1 per degree); the weight n = k·|d/M|^p
+/// (eq. 10: M = 0.6 m, p = 0.8, k = 1.1), clamped to [0, 1], mixes them into the fuzzy front-wheel
+/// angle A, and α = k_α·A (α > 0 = left), clamped to ±32°. The controller answers with the
+/// curvature κ = tan α / L of the front-steered platform (wheelbase L).
+///
+/// How the paper's three inconsistencies are resolved (estimator/src/guidance/README.md):
+///  - eq. 9, A = n(S − |D|) + (1 − n)(S − |Θ|), carries no sign and is largest at zero deviation.
+///    Here A = n·(−D) + (1 − n)·Θ: the signed analytic rule whose magnitude, when D and Θ ask
+///    for the same turn, is S minus eq. 9's value (S − A₉ = n|D| + (1 − n)|Θ|). The signs follow
+///    the paper's conventions: left of the line (d > 0) steers right, a path direction
+///    counter-clockwise of the heading (θ > 0) steers left;
+///  - k_α = 0.17 maps [−6, 6] onto neither ±32° nor ±0.56 rad: k_α = 32°/6 = 5.33° per level,
+///    so the fuzzy domain spans the push rod's range (a parameter);
+///  - n > 1 for |d| > 0.533 m with k = 1.1, p = 0.8: n is clamped to [0, 1].
+/// Same interface as PurePursuit (path_tracker.h): Update(path, pose) → TrackingCommand, Reset().
+/// Allocation-free.
+
+#include <cstddef>
+
+#include "hil/estimator/guidance/path_tracker.h"
+
+namespace hil::estimator::guidance {
+
+struct FuzzyTrackerConfig {
+  double domain_s = 6.0;            ///< S: the fuzzy domain [−S, S]
+  double d_range_m = 0.6;           ///< basic domain of d: k_d = S / d_range
+  double theta_range_deg = 60.0;    ///< basic domain of θ: k_θ = S / θ_range
+  double alpha_max_deg = 32.0;      ///< the push rod's steering range
+  double k_alpha_deg = 32.0 / 6.0;  ///< output scale (° per level); the paper prints 0.17
+  double weight_k = 1.1, weight_p = 0.8, weight_m_m = 0.6;  ///< eq. 10
+  bool quantise_levels = false;  ///< round A to whole fuzzy levels (−6 … 6) before scaling
+  double wheelbase_m = 0.84;     ///< paper 003's platform
+  double search_window_m = 5.0;  ///< projection search around the previous foot
+};
+
+/// n = k·|d/M|^p clamped to [0, 1] (eq. 10).
+double FuzzyWeight(const FuzzyTrackerConfig& c, double d_m);
+/// The front-wheel angle α (rad, + = left) for lateral deviation d (m, + = left of the line) and
+/// heading deviation θ (rad, path minus vehicle, + = counter-clockwise).
+double FuzzySteerAngle_rad(const FuzzyTrackerConfig& c, double d_m, double theta_rad);
+
+class FuzzyTracker {
+ public:
+  explicit FuzzyTracker(const FuzzyTrackerConfig& config) : cfg_(config) {}
+  TrackingCommand Update(const PlannedPath& path, const VehiclePose2d& pose);
+  void Reset() { have_hint_ = false; }
+  /// The front-wheel angle of the last Update (rad, + = left).
+  double last_steer_rad() const { return last_steer_rad_; }
+
+ private:
+  FuzzyTrackerConfig cfg_;
+  std::size_t hint_ = 0;
+  bool have_hint_ = false;
+  double last_steer_rad_ = 0;
+};
+
+}  // namespace hil::estimator::guidance

@@ -1,0 +1,44 @@
+#include "hil/estimator/guidance/fuzzy_tracker.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace hil::estimator::guidance {
+namespace {
+constexpr double kDegPerRad = 180.0 / std::numbers::pi;
+}  // namespace
+
+double FuzzyWeight(const FuzzyTrackerConfig& c, double d_m) {
+  const double n = c.weight_k * std::pow(std::fabs(d_m / c.weight_m_m), c.weight_p);
+  return std::isfinite(n) ? std::clamp(n, 0.0, 1.0) : 1.0;
+}
+
+double FuzzySteerAngle_rad(const FuzzyTrackerConfig& c, double d_m, double theta_rad) {
+  const double s = c.domain_s;
+  const double big_d = std::clamp(s / c.d_range_m * d_m, -s, s);
+  const double big_theta = std::clamp(s / c.theta_range_deg * theta_rad * kDegPerRad, -s, s);
+  const double n = FuzzyWeight(c, d_m);
+  double a = n * -big_d + (1.0 - n) * big_theta;
+  if (c.quantise_levels) a = std::round(a);
+  const double alpha_deg = std::clamp(c.k_alpha_deg * a, -c.alpha_max_deg, c.alpha_max_deg);
+  return alpha_deg / kDegPerRad;
+}
+
+TrackingCommand FuzzyTracker::Update(const PlannedPath& path, const VehiclePose2d& pose) {
+  if (path.vertex_count() < 2) return {};
+  const PathProjection foot = have_hint_ ? path.Project(pose.p_EN_m, hint_, cfg_.search_window_m)
+                                         : path.Project(pose.p_EN_m);
+  hint_ = foot.edge;
+  have_hint_ = true;
+  TrackingCommand c;
+  c.cross_track_m = foot.cross_track_m;
+  c.heading_error_rad = WrapPi(foot.path_yaw_rad - pose.yaw_rad);
+  c.s_m = foot.s_m;
+  c.end_of_path = foot.s_m >= path.length_m() - 1e-6;
+  last_steer_rad_ = FuzzySteerAngle_rad(cfg_, c.cross_track_m, c.heading_error_rad);
+  c.curvature_left_per_m = std::tan(last_steer_rad_) / cfg_.wheelbase_m;
+  return c;
+}
+
+}  // namespace hil::estimator::guidance

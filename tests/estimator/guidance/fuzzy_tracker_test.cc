@@ -1,0 +1,110 @@
+// Paper 003's fuzzy tracker: hand-computed weights and steering angles (values from a pocket
+// calculation, listed in estimator/src/guidance/README.md), the sign conventions through a path,
+// and a kinematic closed loop of the greenhouse platform (front-steered, L = 0.84 m, ±32°, 0.5 m/s,
+// 5 Hz as in the paper's tests): it converges from a 1 m offset and a 30° heading error.
+#include "hil/estimator/guidance/fuzzy_tracker.h"
+
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+namespace hil::estimator::guidance {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+TEST(FuzzyTrackerTest, WeightIsEq10ClampedToOne) {
+  const FuzzyTrackerConfig c;
+  // n = 1.1 |d / 0.6|^0.8 (reference sheet: 0.151, 0.262, 0.457, 0.632, 0.795, 0.951, 1.100)
+  EXPECT_NEAR(FuzzyWeight(c, 0.05), 0.151, 5e-4);
+  EXPECT_NEAR(FuzzyWeight(c, -0.1), 0.262344, 1e-6);
+  EXPECT_NEAR(FuzzyWeight(c, 0.3), 0.631784, 1e-6);
+  EXPECT_NEAR(FuzzyWeight(c, 0.5), 0.951, 5e-4);
+  EXPECT_DOUBLE_EQ(FuzzyWeight(c, 0.0), 0.0);
+  EXPECT_DOUBLE_EQ(FuzzyWeight(c, 0.54), 1.0);  // n would be 1.008 (> 1 beyond 0.533 m)
+  EXPECT_DOUBLE_EQ(FuzzyWeight(c, -0.6), 1.0);  // 1.1 clamped
+}
+
+TEST(FuzzyTrackerTest, SteerAnglesByHand) {
+  const FuzzyTrackerConfig c;
+  // d = 0.3 m left, θ = 0: D = 3, n = 0.631784, A = −1.895352, α = −1.895352 × 32/6 = −10.10854°
+  EXPECT_NEAR(FuzzySteerAngle_rad(c, 0.3, 0.0) / kDeg, -10.108546, 1e-5);
+  // on the line, path 10° counter-clockwise: n = 0, Θ = 1, α = 5.3333° (left)
+  EXPECT_NEAR(FuzzySteerAngle_rad(c, 0.0, 10 * kDeg) / kDeg, 5.333333, 1e-5);
+  // d = −0.1 m (right), θ = −20°: D = −1, Θ = −2, n = 0.262344, A = 0.262344 − 2 × 0.737656
+  EXPECT_NEAR(FuzzySteerAngle_rad(c, -0.1, -20 * kDeg) / kDeg, -6.469157, 1e-5);
+  // d = 0.2 m, θ = 30°: the heading term wins, A = −0.913536 + 1.629696 → α = +3.81952°
+  EXPECT_NEAR(FuzzySteerAngle_rad(c, 0.2, 30 * kDeg) / kDeg, 3.819520, 1e-5);
+  // saturation: the domain's edge and beyond it give the push rod's full −32°
+  EXPECT_NEAR(FuzzySteerAngle_rad(c, 0.6, 0.0) / kDeg, -32.0, 1e-9);
+  EXPECT_NEAR(FuzzySteerAngle_rad(c, 1.0, 0.0) / kDeg, -32.0, 1e-9);
+  EXPECT_NEAR(FuzzySteerAngle_rad(c, -3.0, 90 * kDeg) / kDeg, 32.0, 1e-9);
+  FuzzyTrackerConfig q = c;
+  q.quantise_levels = true;  // A = round(−1.895) = −2 → −10.6667°
+  EXPECT_NEAR(FuzzySteerAngle_rad(q, 0.3, 0.0) / kDeg, -10.666667, 1e-5);
+}
+
+PlannedPath EastLine() {
+  PlannedPath p;
+  p.Append({0, 0}, SegmentKind::kStraight, 0);
+  p.Append({40, 0}, SegmentKind::kStraight, 0);
+  return p;
+}
+
+TEST(FuzzyTrackerTest, SignsThroughThePath) {
+  const PlannedPath path = EastLine();
+  FuzzyTracker t{FuzzyTrackerConfig{}};
+  VehiclePose2d pose;
+  pose.p_EN_m = {5, 0.3};  // left of an eastward line
+  pose.speed_mps = 0.5;
+  const TrackingCommand c = t.Update(path, pose);
+  EXPECT_NEAR(c.cross_track_m, 0.3, 1e-12);
+  EXPECT_NEAR(c.heading_error_rad, 0.0, 1e-12);
+  EXPECT_NEAR(c.curvature_left_per_m, -0.212239, 1e-6);  // tan(−10.10854°) / 0.84: turn right
+  EXPECT_NEAR(t.last_steer_rad() / kDeg, -10.108546, 1e-5);
+  pose.p_EN_m = {6, 0};
+  pose.yaw_rad = -10 * kDeg;  // heading right of the path: θ = +10°, steer left
+  EXPECT_NEAR(t.Update(path, pose).curvature_left_per_m, 0.111136, 1e-6);
+}
+
+// Rear-axle kinematic bicycle at 0.5 m/s, the command held between 5 Hz updates.
+double MeanAbsDeviation(const VehiclePose2d& start, double* final_abs_m) {
+  const PlannedPath path = EastLine();
+  FuzzyTracker t{FuzzyTrackerConfig{}};
+  VehiclePose2d pose = start;
+  double sum = 0;
+  int n = 0;
+  for (int k = 0; k < 5 * 60; ++k) {
+    const TrackingCommand c = t.Update(path, pose);
+    sum += std::fabs(c.cross_track_m);
+    ++n;
+    for (int j = 0; j < 20; ++j) {
+      const double dt = 0.2 / 20;
+      pose.p_EN_m +=
+          pose.speed_mps * dt * Eigen::Vector2d(std::cos(pose.yaw_rad), std::sin(pose.yaw_rad));
+      pose.yaw_rad += pose.speed_mps * c.curvature_left_per_m * dt;
+    }
+    *final_abs_m = std::fabs(c.cross_track_m);
+  }
+  return sum / n;
+}
+
+TEST(FuzzyTrackerTest, ConvergesOnTheGreenhousePlatform) {
+  VehiclePose2d a;
+  a.p_EN_m = {0, 1.0};
+  a.speed_mps = 0.5;
+  double final_m = 0;
+  const double mean_a = MeanAbsDeviation(a, &final_m);
+  EXPECT_LT(final_m, 0.02);
+  EXPECT_LT(mean_a, 0.25);
+  VehiclePose2d b;
+  b.p_EN_m = {0, -0.3};
+  b.yaw_rad = -30 * kDeg;
+  b.speed_mps = 0.5;
+  MeanAbsDeviation(b, &final_m);
+  EXPECT_LT(final_m, 0.02);
+}
+
+}  // namespace
+}  // namespace hil::estimator::guidance
