@@ -44,8 +44,8 @@ std::optional<RayHit> CastBox(const Ray2& ray, const OrientedBox& box, double ma
   }
   if (t_enter > max_range_m) return std::nullopt;
   hit.range_m = t_enter;
-  const Eigen::Vector2d n_box = enter_axis == 0 ? Eigen::Vector2d(enter_sign, 0)
-                                                : Eigen::Vector2d(0, enter_sign);
+  const Eigen::Vector2d n_box =
+      enter_axis == 0 ? Eigen::Vector2d(enter_sign, 0) : Eigen::Vector2d(0, enter_sign);
   hit.normal = Eigen::Vector2d(c * n_box.x() - s * n_box.y(), s * n_box.x() + c * n_box.y());
   return hit;
 }

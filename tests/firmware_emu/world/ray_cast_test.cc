@@ -64,8 +64,8 @@ TEST(CastSegment, HitsAt45DegreesWithTheNormalFacingTheOrigin) {
   ASSERT_TRUE(hit);
   EXPECT_NEAR(hit->range_m, 3 * std::numbers::sqrt2, 1e-12);
   EXPECT_NEAR(hit->normal.x(), -1.0, 1e-12);
-  EXPECT_FALSE(CastSegment(RayAt(0, 0, 80), {3, -10}, {3, 10}, 20));  // meets x = 3 at y = 17
-  EXPECT_FALSE(CastSegment(RayAt(0, 0, 90), {3, -10}, {3, 10}, 20));  // parallel
+  EXPECT_FALSE(CastSegment(RayAt(0, 0, 80), {3, -10}, {3, 10}, 20));   // meets x = 3 at y = 17
+  EXPECT_FALSE(CastSegment(RayAt(0, 0, 90), {3, -10}, {3, 10}, 20));   // parallel
   EXPECT_FALSE(CastSegment(RayAt(0, 0, 180), {3, -10}, {3, 10}, 20));  // behind
 }
 

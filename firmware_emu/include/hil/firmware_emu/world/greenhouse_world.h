@@ -28,7 +28,7 @@ struct GreenhouseConfig {
   double ridge_height_m = 0.3;
   double ridge_spacing_m = 1.8;  ///< centre to centre: aisle clearance = spacing − width
   double ridge_length_m = 30;
-  double headland_m = 3;    ///< clear ground between the ridge ends and the end walls
+  double headland_m = 3;       ///< clear ground between the ridge ends and the end walls
   double side_margin_m = 1.5;  ///< between the outer ridges' sides and the side walls
   double wall_height_m = 3;
   double post_spacing_m = 4;  ///< posts along the side walls (0: none)
@@ -55,9 +55,9 @@ std::optional<ConfigProblem> CheckGreenhouse(const GreenhouseConfig& c);
 
 /// Where a point is relative to the aisles.
 struct AislePosition {
-  int aisle = 0;         ///< nearest aisle, 0 … ridge_count − 2 (0 with a single ridge)
-  double along_m = 0;    ///< along the rows from the ridges' start line
-  double lateral_m = 0;  ///< left of the aisle's centre line (positive to the left)
+  int aisle = 0;                ///< nearest aisle, 0 … ridge_count − 2 (0 with a single ridge)
+  double along_m = 0;           ///< along the rows from the ridges' start line
+  double lateral_m = 0;         ///< left of the aisle's centre line (positive to the left)
   bool between_ridges = false;  ///< along the ridges (0 ≤ along ≤ length)
 };
 
