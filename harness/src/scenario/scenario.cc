@@ -117,7 +117,7 @@ Scenario FromReader(const YamlReader& root) {
                                 "seed",    "estimator",   "criteria",  "faults",
                                 "include", "evaluation"};
   for (const auto* section : {&kTruthSectionKeys, &kGnssSectionKeys, &kMcuSectionKeys,
-                              &kCanSectionKeys, &kSuiteSectionKeys}) {
+                              &kCanSectionKeys, &kGreenhouseSectionKeys, &kSuiteSectionKeys}) {
     keys.insert(keys.end(), section->begin(), section->end());
   }
   root.CheckKeys(keys);
@@ -139,6 +139,7 @@ Scenario FromReader(const YamlReader& root) {
   // seed 000: the IMU runs 10 times as fast as the GPS
   if (s.mcu.imu_rate_is_default) s.mcu.config.imu_rate_hz = 10.0 * s.gnss.rate_hz;
   ReadCanSection(root, s.can);
+  ReadGreenhouseSection(root, s);
   ReadSuiteSections(root, keys, s);
   if (auto e = root.OptionalChild("estimator")) ReadEstimator(*e, s.estimator);
   CheckCanUse(root, s);

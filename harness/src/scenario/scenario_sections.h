@@ -28,6 +28,10 @@ void ReadCanSection(const YamlReader& root, CanLinkSpec& c);
 /// section is read (scenario_can.cc).
 void CheckCanUse(const YamlReader& root, const Scenario& s);
 
+extern const std::vector<std::string> kGreenhouseSectionKeys;
+/// Reads the greenhouse section (optional; scenario_greenhouse.cc): the ridge map of paper 001.
+void ReadGreenhouseSection(const YamlReader& root, Scenario& s);
+
 extern const std::vector<std::string> kSuiteSectionKeys;
 /// Reads `paper:` into s.paper and checks `short:` (scenario_suite.cc); `top_level_keys` are the
 /// keys a `short:` section may replace (all but name, include, paper and short).

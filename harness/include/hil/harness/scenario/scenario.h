@@ -13,6 +13,7 @@
 #include "hil/firmware_emu/gnss/neo5m_device.h"
 #include "hil/firmware_emu/gnss/receiver_model.h"
 #include "hil/firmware_emu/mcu/mcu_config.h"
+#include "hil/firmware_emu/world/greenhouse_world.h"
 #include "hil/harness/faults/fault_timeline.h"
 #include "hil/harness/scenario/estimator_kinds.h"
 #include "hil/truth/truth_integrator.h"
@@ -132,6 +133,8 @@ struct Scenario {
   McuDeviceSpec mcu;
   CanLinkSpec can;
   EstimatorSpec estimator;
+  /// The greenhouse the range sensors see (section `greenhouse:`, paper 001); none without it.
+  std::optional<world::GreenhouseConfig> greenhouse;
   std::vector<Criterion> criteria;
   FaultTimeline faults;
   /// Seconds after the end of an outage within which the horizontal error must return below
