@@ -44,6 +44,7 @@
 #include "can_imu_input.h"
 #include "can_output.h"
 #include "gnss_receivers.h"
+#include "kfgins_mode.h"
 #include "serial_device.h"
 
 namespace {
@@ -89,6 +90,7 @@ void PrintUsage() {
       "                  speed_rw, speed_dev_std_mps, speed_dev_tau_s, antenna_0_m … (multi_gnss)\n"
       "                  [output] json, rate_hz, nmea_device, can_interface, can_log,\n"
       "                  can_source_address, can_rate_hz\n"
+      "  --kfgins YAML   offline on a KF-GINS dataset (estimator/doc/kfgins.md)\n"
       "  --help          this text\n"
       "examples:\n"
       "  navd --config /etc/navd.conf\n"
@@ -405,6 +407,7 @@ int Run(const est::NavdConfig& cfg, SolutionOutputs& outputs) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (hil::navd::WantsKfginsMode(argc, argv)) return hil::navd::KfginsMain(argc, argv);
   std::string config_path;
   if (const std::optional<int> exit_code = ParseArgs(argc, argv, config_path)) return *exit_code;
   est::NavdConfig cfg;

@@ -234,6 +234,20 @@ void Navigator::TryAlign(const GnssSample& g) {
   last_nhc_t_ = g.t;
 }
 
+void Navigator::InitializeAt(GpsTime t, const Lla& body_position, const Eigen::Vector3d& v_N_mps,
+                             const Eigen::Quaterniond& q_NB) {
+  EnsureFrame(body_position);
+  NavState st;
+  st.p_N_m = frame_.ToLocal(body_position);
+  st.v_N_mps = v_N_mps;
+  st.q_NB = q_NB.normalized();
+  ekf_.Initialize(st);
+  aligned_ = true;
+  status_ |= kStatusAligned;
+  filter_t_ = newest_imu_t_ = last_gnss_fused_t_ = last_nhc_t_ = t;
+  have_imu_ = true;
+}
+
 void Navigator::ProcessGnss(const GnssSample& g) {
   if (!aligned_) {
     TryAlign(g);

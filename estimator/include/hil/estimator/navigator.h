@@ -125,6 +125,10 @@ class Navigator {
   void Push(const HeadingSample& h);
   /// Runs the filter up to the fusion horizon.
   void Update();
+  /// Starts the EKF at a known state of the body origin at time t (a dataset's initial position,
+  /// velocity and attitude) instead of aligning itself; the frame's origin is that position.
+  void InitializeAt(GpsTime t, const Lla& body_position, const Eigen::Vector3d& v_N_mps,
+                    const Eigen::Quaterniond& q_NB);
   /// The solution at the newest input time (IMU modes: output predictor).
   NavOutput Output() const;
 

@@ -27,6 +27,7 @@ Subcommand AddEmulate(CLI::App& app);   ///< hil emulate
 Subcommand AddValidate(CLI::App& app);  ///< hil validate
 Subcommand AddSuite(CLI::App& app);     ///< hil suite
 Subcommand AddReplay(CLI::App& app);    ///< hil replay
+Subcommand AddDataset(CLI::App& app);   ///< hil dataset
 
 /// This executable's path ("hil" when /proc cannot tell).
 std::string SelfExecutable();

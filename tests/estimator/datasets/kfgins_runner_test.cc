@@ -1,0 +1,112 @@
+#include "hil/estimator/datasets/kfgins_runner.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "datasets/kfgins_test_files.h"
+#include "hil/estimator/geodesy.h"
+
+namespace hil::estimator::datasets {
+namespace {
+
+constexpr double kLat = 30.5, kLon = 114.3, kH = 20.0;
+
+// 20 s at rest, level, facing north: the IMU measures −g on its down axis and the Earth rate;
+// 1 Hz fixes of an antenna 0.5 m above the IMU
+std::string WriteStationaryDataset(const std::string& dir, const std::string& extra_yaml = "") {
+  const double g = NormalGravity(kLat, kH), w = kEarthRate_radps, lat = kLat * std::numbers::pi / 180;
+  std::string imu, gnss;
+  char line[256];
+  for (int k = 1; k <= 4000; ++k) {
+    const double dt = 0.005;
+    std::snprintf(line, sizeof line, "%.3f %.12e 0 %.12e 0 0 %.12e\n", 1000 + k * dt,
+                  w * std::cos(lat) * dt, -w * std::sin(lat) * dt, -g * dt);
+    imu += line;
+  }
+  LocalTangentFrame f({kLat, kLon, kH});
+  const Lla ant = f.ToLla(Eigen::Vector3d(0, 0, 0.5));
+  for (int k = 1; k <= 20; ++k) {
+    std::snprintf(line, sizeof line, "%d %.11f %.11f %.4f 0.01 0.01 0.02\n", 1000 + k,
+                  ant.lat_deg, ant.lon_deg, ant.height_m);
+    gnss += line;
+  }
+  testing::WriteFile(dir, "IMU.txt", imu);
+  testing::WriteFile(dir, "GNSS.txt", gnss);
+  std::snprintf(line, sizeof line, "initpos: [%.10f, %.10f, %.4f]\n", kLat, kLon, kH);
+  const std::string yaml = "imupath: \"" + dir + "/IMU.txt\"\ngnsspath: \"" + dir +
+                           "/GNSS.txt\"\noutputpath: \"" + dir + "/out\"\nimudatarate: 200\n"
+                           "starttime: 1000.005\n" + line +
+                           "initvel: [0, 0, 0]\ninitatt: [0, 0, 0]\ninitposstd: [0.1, 0.1, 0.1]\n"
+                           "initvelstd: [0.1, 0.1, 0.1]\ninitattstd: [1, 1, 2]\nimunoise:\n"
+                           "  arw: 0.3\n  vrw: 0.1\n  gbstd: 50\n  abstd: 1000\n  corrtime: 1\n"
+                           "antlever: [0, 0, -0.5]\n" + extra_yaml;
+  return testing::WriteFile(dir, "kf-gins.yaml", yaml);
+}
+
+std::vector<std::vector<double>> ReadRows(const std::string& path) {
+  std::ifstream in(path);
+  std::vector<std::vector<double>> rows;
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream s(line);
+    rows.emplace_back();
+    for (double v; s >> v;) rows.back().push_back(v);
+  }
+  return rows;
+}
+
+TEST(KfginsRunner, StationaryDatasetStaysPutWithOneLinePerImuEpoch) {
+  const std::string dir = testing::TempDir();
+  const KfginsConfig c = LoadKfginsConfig(WriteStationaryDataset(dir));
+  const KfginsRunResult r = RunKfgins(c, NavigatorParamsFromKfgins(c));
+  EXPECT_EQ(r.imu_epochs, 4000u);
+  EXPECT_EQ(r.gnss_records, 19u);  // the fix at the start time is not after it
+  EXPECT_EQ(r.gnss_fused, 19u);
+  EXPECT_GT(r.mean_nis_pos, 0.0);
+  const auto nav = ReadRows(dir + "/out/KF_GINS_Navresult.nav");
+  ASSERT_EQ(nav.size(), 4000u);
+  ASSERT_EQ(nav.back().size(), 11u);
+  EXPECT_NEAR(nav.back()[1], 1020.0, 1e-9);
+  LocalTangentFrame f({kLat, kLon, kH});
+  const Eigen::Vector3d p = f.ToLocal({nav.back()[2], nav.back()[3], nav.back()[4]});
+  EXPECT_LT(p.norm(), 0.02);
+  EXPECT_LT(std::abs(nav.back()[8]) + std::abs(nav.back()[9]), 0.05);  // roll, pitch (deg)
+  EXPECT_EQ(ReadRows(dir + "/out/KF_GINS_IMU_ERR.txt").back().size(), 7u);
+  EXPECT_EQ(ReadRows(dir + "/out/KF_GINS_STD.txt").back().size(), 16u);
+}
+
+TEST(KfginsRunner, EndTimeStopsTheRunAndMissingFilesAreErrors) {
+  const std::string dir = testing::TempDir();
+  const KfginsConfig c = LoadKfginsConfig(WriteStationaryDataset(dir, "endtime: 1010\n"));
+  EXPECT_EQ(RunKfgins(c, NavigatorParamsFromKfgins(c)).imu_epochs, 2000u);
+  KfginsConfig bad = c;
+  bad.gnsspath = dir + "/none.txt";
+  try {
+    RunKfgins(bad, NavigatorParamsFromKfgins(bad));
+    FAIL();
+  } catch (const DatasetError& e) {
+    EXPECT_NE(std::string(e.what()).find(dir + "/none.txt: cannot open"), std::string::npos);
+  }
+}
+
+TEST(KfginsRunner, ParametersFollowTheConfigurationsUnits) {
+  KfginsConfig c;
+  c.imunoise = {0.6, 0.12, 36, 1000, 0, 0, 2};
+  c.initposstd_ned_m = {0.1, 0.3, 0.2};
+  c.antlever_frd_m = {1, 2, 3};
+  const NavigatorParams p = NavigatorParamsFromKfgins(c);
+  EXPECT_NEAR(p.ekf.gyro_noise_radps_rthz, 0.01 * std::numbers::pi / 180, 1e-15);  // 0.6°/√h
+  EXPECT_NEAR(p.ekf.accel_noise_mps2_rthz, 0.002, 1e-15);
+  EXPECT_NEAR(p.ekf.accel_bias_rw_mps3_rthz, 0.01 * std::sqrt(2.0 / 7200), 1e-15);
+  EXPECT_DOUBLE_EQ(p.ekf.init_pos_std_m, 0.3);
+  EXPECT_EQ(p.ekf.lever_arm_B_m, Eigen::Vector3d(1, -2, -3));
+  EXPECT_EQ(p.fusion_horizon.count(), 0);
+}
+
+}  // namespace
+}  // namespace hil::estimator::datasets
