@@ -2,6 +2,8 @@
 // stream crosses a real pty, and the run folder holds the reports.
 #include <unistd.h>
 
+#include <cstdio>
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -36,6 +38,10 @@ TEST(HilRunE2eTest, DefaultScenarioPassesWithHonestMetrics) {
   EXPECT_NE(ReadFile(dir / "run/navd.conf").find("ekf"), std::string::npos);
   EXPECT_NE(ReadFile(dir / "run/junit.xml").find("<testcase"), std::string::npos);
   EXPECT_NE(r.out.find("PASS"), std::string::npos);
+  // the summary shows the point of the fusion: the fused errors as fractions of the raw fixes'
+  char ratio[64];
+  std::snprintf(ratio, sizeof ratio, "fused/raw  horizontal RMSE %.2fx,", est / raw);
+  EXPECT_NE(r.out.find(ratio), std::string::npos) << r.out;
 }
 
 TEST(HilRunE2eTest, SameSeedSameBytes) {

@@ -12,6 +12,21 @@ namespace {
 
 using harness::RunMode;
 
+// The fused estimate's errors as fractions of the raw fixes' (below 1: the fusion does better),
+// when both were scored.
+void PrintFusedVsRaw(const hil::harness::RunReport& r) {
+  const auto& e = r.metrics;
+  const auto& g = r.baselines;
+  if (e.samples == 0 || g.samples == 0 || g.horizontal_rmse_m <= 0 || g.cep95_m <= 0 ||
+      g.max_horizontal_error_m <= 0)
+    return;
+  std::printf(
+      "fused/raw  horizontal RMSE %.2fx, CEP95 %.2fx, max %.2fx (below 1: better than the raw "
+      "fixes)\n",
+      e.horizontal_rmse_m / g.horizontal_rmse_m, e.cep95_m / g.cep95_m,
+      e.max_horizontal_error_m / g.max_horizontal_error_m);
+}
+
 void PrintSummary(const hil::harness::RunReport& r, const std::string& dir) {
   const auto fmt = [](const hil::harness::AccuracyMetrics& m, double v) {
     char b[32];
@@ -31,6 +46,7 @@ void PrintSummary(const hil::harness::RunReport& r, const std::string& dir) {
               fmt(r.baselines, r.baselines.horizontal_rmse_m).c_str(),
               fmt(r.baselines, r.baselines.cep95_m).c_str(),
               fmt(r.baselines, r.baselines.max_horizontal_error_m).c_str(), r.baselines.samples);
+  PrintFusedVsRaw(r);
   for (const auto& o : r.outages) {
     char reconv[64] = "never";
     if (o.reconvergence_time_s)

@@ -11,6 +11,7 @@
 
 #include "hil/firmware_emu/gnss/gps_time.h"
 #include "hil/harness/eval/evaluator.h"
+#include "hil/harness/run/machine_load.h"
 #include "hil/truth/truth_integrator.h"
 
 namespace hil::harness {
@@ -120,6 +121,34 @@ void WriteFixCsvLine(std::ostream& out, const gnss::GnssFix& fix) {
   out << line;
 }
 
+namespace {
+
+// What the machine gave the real-time run (machine_load.h): from the pacing's start to now.
+nlohmann::json MachineJson(const DeviceSet& set) {
+  const MachineFigures m = ReadMachineFigures();
+  const auto opt = [](const std::optional<long>& v) {
+    return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+  };
+  bool fifo_granted = false;
+  for (const auto& [name, t] : set.threads) fifo_granted = fifo_granted || t.realtime();
+  nlohmann::json j = {{"cpus_online", m.cpus_online},
+                      {"load_average", {m.load_1m, m.load_5m, m.load_15m}},
+                      {"sched_rt_runtime_us", opt(m.rt_runtime_us)},
+                      {"sched_rt_period_us", opt(m.rt_period_us)},
+                      {"sched_fifo_granted", fifo_granted}};
+  const std::optional<CpuTicks> now = ReadCpuTicks();
+  if (set.cpu_at_start && now) {
+    const CpuShares s = SharesBetween(*set.cpu_at_start, *now);
+    j["since_pacing_start"] = {{"ticks", s.ticks},
+                               {"busy_pct", s.busy_pct},
+                               {"idle_pct", s.idle_pct},
+                               {"steal_pct", s.steal_pct}};
+  }
+  return j;
+}
+
+}  // namespace
+
 void WriteScheduleErrors(const DeviceSet& set, const std::string& path) {
   nlohmann::json links = nlohmann::json::array();
   for (const auto& ports : set.endpoints) {
@@ -154,7 +183,9 @@ void WriteScheduleErrors(const DeviceSet& set, const std::string& path) {
     if (!t.refused.empty()) j["realtime_refused"] = t.refused;
     threads.push_back(j);
   }
-  std::ofstream(path) << nlohmann::json{{"threads", threads}, {"links", links}}.dump(2) << "\n";
+  nlohmann::json out{{"threads", threads}, {"links", links}};
+  if (!set.threads.empty()) out["machine"] = MachineJson(set);
+  std::ofstream(path) << out.dump(2) << "\n";
 }
 
 }  // namespace hil::harness

@@ -39,6 +39,7 @@ void Scheduler::StartPacing() {
   pacing_ = std::make_unique<PacingThread>(serial, set_.can.get(), *pacer_);
   set_.threads = {{"events", link::RealtimePacer::CurrentThreadSchedule()},
                   {"pacing", pacing_->schedule()}};
+  set_.cpu_at_start = ReadCpuTicks();
 }
 
 void Scheduler::Dispatch(std::size_t d, DeviceOutput& out) {
@@ -69,7 +70,10 @@ void Scheduler::Dispatch(std::size_t d, DeviceOutput& out) {
   }
   out.clear();
   if (!pacer_) {
-    if (!write_refused_ && !writes_.Pump(false)) write_refused_ = true;
+    // a paced host reads its links in runs of messages (VirtualWriteQueue); CAN frames are not
+    // paced, so beside a bus every serial chunk goes as soon as it may, as the frames do
+    const bool hold_tail = gate_ && !set_.can;
+    if (!write_refused_ && !writes_.Pump(false, hold_tail)) write_refused_ = true;
     if (set_.can) set_.can->SendAll();
   }
   if (pacing_) {

@@ -172,11 +172,13 @@ void VirtualWriteQueue::Add(SerialEndpoint& ep, std::size_t bytes) {
   deferred_ += bytes;
 }
 
-bool VirtualWriteQueue::Pump(bool all) {
+bool VirtualWriteQueue::Pump(bool all, bool hold_tail) {
   while (!fifo_.empty()) {
     const Batch b = fifo_.front();
+    const bool forced = all || deferred_ > max_deferred_;
+    if (hold_tail && !forced && fifo_.size() == 1 && b.bytes < kBatchBytes) break;
     if (gate_) {
-      if (all || deferred_ > max_deferred_) {
+      if (forced) {
         if (!gate_->BeforeWrite(*b.ep, b.bytes)) return false;
       } else if (!gate_->TryWrite(*b.ep, b.bytes)) {
         break;

@@ -6,6 +6,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "hil/firmware_emu/gnss/gnss_fix.h"
 #include "hil/harness/links/can_endpoint.h"
 #include "hil/harness/links/serial_endpoint.h"
+#include "hil/harness/run/machine_load.h"
 #include "hil/harness/scenario/scenario.h"
 
 namespace hil::harness {
@@ -31,6 +33,8 @@ struct DeviceSet {
   std::unique_ptr<CanEndpoint> can;
   /// Real time: the scheduling the run's threads really got ({"events" | "pacing", …}).
   std::vector<std::pair<std::string, link::ThreadSchedule>> threads;
+  /// Real time: /proc/stat when the pacing started (schedule_error.json: what the machine gave).
+  std::optional<CpuTicks> cpu_at_start;
 };
 
 /// Creates the devices, their ptys (symlinks and captures in `run_dir`) and the CAN bus.

@@ -90,9 +90,13 @@ class VirtualGate {
 };
 
 /// Virtual mode's writes: every chunk queued on a serial endpoint, in emulated-time order across
-/// links. The head of the queue goes out as soon as the gate lets it through without waiting, and
-/// consecutive chunks of one link go out in one write; so while the host keeps up the run never
-/// waits for it. When more than `max_deferred_bytes` wait here, Pump waits for the host.
+/// links. Consecutive chunks of one link form a batch that goes out in one write. A batch goes as
+/// soon as the gate lets it through without waiting and it is complete: a chunk of another link
+/// follows it, or it holds `kBatchBytes` (with `hold_tail` false, also the last batch, which may
+/// still grow). So the host reads its links in runs of messages, in the same order across links
+/// as message by message (a batch of one link never passes a chunk of another), with a write, a
+/// wake-up and a read per run instead of per message. While the host keeps up the run never waits
+/// for it; when more than `max_deferred_bytes` wait here, Pump waits for the host.
 /// Without a gate (no estimator to pace) every chunk is written at once.
 class VirtualWriteQueue {
  public:
@@ -101,8 +105,11 @@ class VirtualWriteQueue {
   /// One chunk of `bytes` bytes was queued on `ep` (SerialEndpoint::Queue returned true).
   void Add(SerialEndpoint& ep, std::size_t bytes);
   /// Writes what may go; with `all`, waits for the host until everything is written. False: the
-  /// gate gave up a wait (the run stops; the rest stays unsent).
-  bool Pump(bool all);
+  /// gate gave up a wait (the run stops; the rest stays unsent). `hold_tail`: the last batch
+  /// waits for the next chunk of another link (or kBatchBytes) unless `all`.
+  bool Pump(bool all, bool hold_tail = false);
+  /// The bytes at which a batch of one link goes even without a chunk of another link after it.
+  static constexpr std::size_t kBatchBytes = 2048;
   std::size_t deferred_bytes() const { return deferred_; }
 
  private:
