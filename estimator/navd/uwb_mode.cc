@@ -28,6 +28,7 @@ namespace {
 namespace est = hil::estimator;
 constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr std::size_t kStatuses = 5;
+constexpr double kFieldHalf_m = 7.5;  // paper 003 §B.5: the error field was fitted on 15 m × 15 m
 
 est::uwb::TdoaSolverConfig SolverConfig(const est::NavdUwbConfig& u) {
   est::uwb::TdoaSolverConfig c;
@@ -97,7 +98,11 @@ class UwbNavigator {
 };
 
 void UwbNavigator::OnFix(std::uint32_t system_time_ms, const Eigen::Vector2d& p_measured_W_m) {
-  const Eigen::Vector2d p = cfg_.correction ? correction_.Correct(p_measured_W_m) : p_measured_W_m;
+  // eq. 8 within the fitted 15 m × 15 m field; beyond it the cubic is evaluated at the nearest
+  // point of the field (a cubic extrapolated tens of metres grows without bound)
+  const Eigen::Vector2d at = p_measured_W_m.cwiseMax(-kFieldHalf_m).cwiseMin(kFieldHalf_m);
+  const Eigen::Vector2d p =
+      cfg_.correction ? Eigen::Vector2d(p_measured_W_m + correction_.Error_m(at)) : p_measured_W_m;
   const bool heading = !cfg_.attitude_device.empty();
   if (!filter_.initialized()) {
     if (heading && !have_new_yaw_) return;  // wait for the first heading
