@@ -46,6 +46,7 @@
 #include "gnss_receivers.h"
 #include "kfgins_mode.h"
 #include "serial_device.h"
+#include "uwb_mode.h"
 
 namespace {
 
@@ -420,5 +421,6 @@ int main(int argc, char** argv) {
   SolutionOutputs outputs;
   if (!outputs.Open(cfg)) return 2;
   InstallSignalHandlers();
+  if (cfg.uwb.enabled()) return hil::navd::RunUwbMode(cfg, outputs.out, &g_stop);  // paper 003
   return Run(cfg, outputs);
 }

@@ -252,6 +252,8 @@ NavdConfig NavdConfig::FromFile(const ConfigFile& f) {
       c.leap_seconds = ToInt(f, e, 0, 60);
     else if (e.section == "imu")
       ReadNavdImuKey(f, e, c.imu);
+    else if (e.section == "uwb")
+      ReadNavdUwbKey(f, e, c.uwb);
     else if (c.gnss_receivers.Read(f, e))
       continue;  // gnss_device_N, antenna_N_m
     else

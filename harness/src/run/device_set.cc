@@ -3,12 +3,14 @@
 #include "hil/firmware_emu/gnss/neo5m_device.h"
 #include "hil/firmware_emu/mcu/mcu_device.h"
 
+#include "device_set_paper003.h"
+
 namespace hil::harness {
 namespace {
 
 // Seeds of independent random streams derived from the run's seed.
 constexpr std::uint64_t kSeedStride = 1000003ULL;
-enum SeedStream : std::uint64_t { kGnssStream = 1, kMcuStream = 2 };
+enum SeedStream : std::uint64_t { kGnssStream = 1, kMcuStream = 2, kUwbStream = 3, kWitStream = 4 };
 constexpr std::uint64_t kGnssCommonOffset = 0x5151;  // the error part shared by all receivers
 constexpr std::uint64_t kReceiverStride = 7919;      // each receiver's own part
 
@@ -97,6 +99,8 @@ DeviceSet BuildDevices(const Scenario& scenario, std::uint64_t seed, const std::
   }
   AddGnss(scenario, seed, run_dir, set);
   AddMcu(scenario, seed, run_dir, set);
+  AddPaper003Devices(scenario, seed * kSeedStride + kUwbStream, seed * kSeedStride + kWitStream,
+                     run_dir, set);
   return set;
 }
 

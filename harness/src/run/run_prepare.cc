@@ -26,7 +26,10 @@ std::set<std::string> HostLinks(const Scenario& s, const std::string& raw_comman
   for (const auto& [name, path] : set.links) {
     if (raw_command.find("{" + name + "}") != std::string::npos) used.insert(name);
   }
-  if (raw_command.find("{navd}") != std::string::npos) {
+  if (raw_command.find("{navd}") != std::string::npos && s.estimator.navd_mode == NavdMode::kUwb) {
+    used.insert(s.uwb.link);  // navd's UWB mode reads the tag and the WT901C only
+    if (s.wt901c.enabled) used.insert(s.wt901c.link);
+  } else if (raw_command.find("{navd}") != std::string::npos) {
     used.insert(s.gnss.link);
     if (s.estimator.navd_mode == NavdMode::kMultiGnss) {
       for (const auto& rx : s.gnss.receivers) used.insert(rx.link);  // navd reads every receiver

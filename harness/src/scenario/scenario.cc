@@ -117,7 +117,8 @@ Scenario FromReader(const YamlReader& root) {
                                 "seed",    "estimator",   "criteria",  "faults",
                                 "include", "evaluation"};
   for (const auto* section : {&kTruthSectionKeys, &kGnssSectionKeys, &kMcuSectionKeys,
-                              &kCanSectionKeys, &kGreenhouseSectionKeys, &kSuiteSectionKeys}) {
+                              &kCanSectionKeys, &kGreenhouseSectionKeys, &kSuiteSectionKeys,
+                              &kPaper003SectionKeys}) {
     keys.insert(keys.end(), section->begin(), section->end());
   }
   root.CheckKeys(keys);
@@ -138,6 +139,7 @@ Scenario FromReader(const YamlReader& root) {
   s.mcu.config.start_unix_ns = s.start_unix_ns;
   // seed 000: the IMU runs 10 times as fast as the GPS
   if (s.mcu.imu_rate_is_default) s.mcu.config.imu_rate_hz = 10.0 * s.gnss.rate_hz;
+  ReadPaper003Sections(root, s.uwb, s.wt901c);
   ReadCanSection(root, s.can);
   ReadGreenhouseSection(root, s);
   ReadSuiteSections(root, keys, s);

@@ -49,7 +49,7 @@ TEST(UwbTagDeviceTest, FieldAloneIsExactlyUndoneByEq8) {
   c.errors.residual_sigma_m.setZero();
   UwbTagDevice dev(c, 1);
   for (const Eigen::Vector2d& p : {Eigen::Vector2d(1.5, 3.5), Eigen::Vector2d(-2.61, -6.49),
-                                  Eigen::Vector2d(-7, -7), Eigen::Vector2d(7.5, 7.5)}) {
+                                   Eigen::Vector2d(-7, -7), Eigen::Vector2d(7.5, 7.5)}) {
     const Eigen::Vector2d m = MeanMeasured(dev, p, 1);
     EXPECT_NEAR((Correct(m) - p).norm(), 0.0, 1e-9);
     EXPECT_GT((m - p).norm(), 0.01);  // the field is there

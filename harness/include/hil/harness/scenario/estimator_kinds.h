@@ -24,9 +24,10 @@ inline constexpr std::array<std::string_view, 6> kEstimatorOutputNames{
     "json_stdout", "gpsd_json", "nmea_stdout", "nmea_pty", "n2k_candump", "n2k_socketcan"};
 
 /// navd's filter mode (scenario key estimator.navd_mode, navd.conf [filter] mode).
-enum class NavdMode { kGnssOnly, kEkf, kPlanar2d, kImuOnly, kMultiGnss };
-inline constexpr std::array<std::string_view, 5> kNavdModeNames{"gnss_only", "ekf", "planar2d",
-                                                                "imu_only", "multi_gnss"};
+/// kUwb: navd's UWB mode (paper 003), selected by the generated navd.conf's [uwb] section.
+enum class NavdMode { kGnssOnly, kEkf, kPlanar2d, kImuOnly, kMultiGnss, kUwb };
+inline constexpr std::array<std::string_view, 6> kNavdModeNames{
+    "gnss_only", "ekf", "planar2d", "imu_only", "multi_gnss", "uwb"};
 
 /// The point of the vehicle the estimate describes (scenario key estimator.reference_point).
 enum class ReferencePoint {

@@ -10,10 +10,12 @@
 #include <string>
 #include <vector>
 
+#include "hil/firmware_emu/attitude/wt901c_config.h"
 #include "hil/firmware_emu/gnss/neo5m_device.h"
 #include "hil/firmware_emu/gnss/receiver_model.h"
 #include "hil/firmware_emu/mcu/mcu_config.h"
 #include "hil/firmware_emu/world/greenhouse_world.h"
+#include "hil/firmware_emu/uwb/uwb_tag_device.h"
 #include "hil/harness/faults/fault_timeline.h"
 #include "hil/harness/scenario/estimator_kinds.h"
 #include "hil/truth/truth_integrator.h"
@@ -79,6 +81,22 @@ struct McuDeviceSpec {
   mcu::McuConfig config;            ///< start_unix_ns is filled from the scenario's start_utc
 };
 
+/// Paper 003's UWB tag (section `uwb:`, scenario_paper003.cc; absent → no UWB).
+struct UwbDeviceSpec {
+  bool enabled = false;
+  std::string link = "ttyUWB";  ///< symlink name in the run folder
+  std::size_t tx_buffer_bytes = 4096;
+  uwb::UwbTagConfig config;
+};
+
+/// Paper 003's WT901C attitude sensor (section `wt901c:`, scenario_paper003.cc; absent → none).
+struct Wt901cDeviceSpec {
+  bool enabled = false;
+  std::string link = "ttyWIT";  ///< symlink name in the run folder
+  std::size_t tx_buffer_bytes = 1024;
+  wit::Wt901cConfig config;
+};
+
 /// How the estimator under test is started and read.
 struct EstimatorSpec {
   /// Shell command; {navd}, {run_dir}, {seed} and every link name in braces ({ttyGPS}, {ttyNAV})
@@ -131,6 +149,8 @@ struct Scenario {
   truth::TruthConfig truth;
   GnssDeviceSpec gnss;
   McuDeviceSpec mcu;
+  UwbDeviceSpec uwb;
+  Wt901cDeviceSpec wt901c;
   CanLinkSpec can;
   EstimatorSpec estimator;
   /// The greenhouse the range sensors see (section `greenhouse:`, paper 001); none without it.

@@ -10,6 +10,7 @@
 #include "hil/estimator/navd/config_file.h"
 #include "hil/estimator/navd/navd_gnss_receivers.h"
 #include "hil/estimator/navd/navd_imu_config.h"
+#include "hil/estimator/navd/navd_uwb_config.h"
 #include "hil/estimator/navigator.h"
 
 namespace hil::estimator {
@@ -44,6 +45,8 @@ struct NavdConfig {
       "mcu";  ///< mcu (binary frame protocol v1) or razor_text (Razor v13 stock lines)
   // [imu]: serial or CAN (navd_imu_config.h)
   NavdImuConfig imu;
+  // [uwb]: navd's UWB mode when uwb.device is set (navd_uwb_config.h)
+  NavdUwbConfig uwb;
   // [time]
   int leap_seconds = 18;  ///< GPS − UTC until the receiver reports it
   // [filter]: mode and the estimator parameters (navigator.h, error_state_ekf.h)
