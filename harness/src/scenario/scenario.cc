@@ -117,7 +117,8 @@ Scenario FromReader(const YamlReader& root) {
                                 "seed",    "estimator",   "criteria",  "faults",
                                 "include", "evaluation"};
   for (const auto* section : {&kTruthSectionKeys, &kGnssSectionKeys, &kMcuSectionKeys,
-                              &kCanSectionKeys, &kGreenhouseSectionKeys, &kSuiteSectionKeys}) {
+                              &kCanSectionKeys, &kGreenhouseSectionKeys, &kRangeSensorSectionKeys,
+                              &kSuiteSectionKeys}) {
     keys.insert(keys.end(), section->begin(), section->end());
   }
   root.CheckKeys(keys);
@@ -140,6 +141,7 @@ Scenario FromReader(const YamlReader& root) {
   if (s.mcu.imu_rate_is_default) s.mcu.config.imu_rate_hz = 10.0 * s.gnss.rate_hz;
   ReadCanSection(root, s.can);
   ReadGreenhouseSection(root, s);
+  ReadRangeSensorSections(root, s);
   ReadSuiteSections(root, keys, s);
   if (auto e = root.OptionalChild("estimator")) ReadEstimator(*e, s.estimator);
   CheckCanUse(root, s);
