@@ -56,10 +56,7 @@ Target TfLunaDevice::Sense(const TruthSample& truth) const {
   t.present = true;
   t.range_m = hit->range_m;
   t.cos_incidence = std::abs(hit->normal.dot(ray.dir));
-  const TargetReflectivity& f = config_.reflectivity;
-  t.reflectivity = hit->kind == world::ObstacleKind::kRidge  ? f.ridge
-                   : hit->kind == world::ObstacleKind::kPost ? f.post
-                                                             : f.wall;
+  t.reflectivity = config_.reflectivity.Of(hit->kind);
   return t;
 }
 

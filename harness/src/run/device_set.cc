@@ -1,7 +1,9 @@
 #include "hil/harness/run/device_set.h"
 
 #include "hil/firmware_emu/gnss/neo5m_device.h"
+#include "hil/firmware_emu/lidar/rplidar_device.h"
 #include "hil/firmware_emu/mcu/mcu_device.h"
+#include "hil/firmware_emu/rangefinder/tf_luna_device.h"
 
 #include "device_set_paper003.h"
 
@@ -10,7 +12,15 @@ namespace {
 
 // Seeds of independent random streams derived from the run's seed.
 constexpr std::uint64_t kSeedStride = 1000003ULL;
-enum SeedStream : std::uint64_t { kGnssStream = 1, kMcuStream = 2, kUwbStream = 3, kWitStream = 4 };
+enum SeedStream : std::uint64_t {
+  kGnssStream = 1,
+  kMcuStream = 2,
+  kUwbStream = 3,
+  kWitStream = 4,
+  kRangefinderStream = 5,
+  kLidarStream = 6
+};
+constexpr std::uint64_t kUnitStride = 104729;        // each rangefinder unit's own stream
 constexpr std::uint64_t kGnssCommonOffset = 0x5151;  // the error part shared by all receivers
 constexpr std::uint64_t kReceiverStride = 7919;      // each receiver's own part
 
@@ -89,6 +99,40 @@ void AddMcu(const Scenario& s, std::uint64_t seed, const std::string& dir, Devic
   set.endpoints.push_back(std::move(ports));
 }
 
+// One serial link for a device: RUN_DIR/<link> with its capture.
+void AddSerial(std::unique_ptr<Device> dev, const std::string& link, std::size_t tx_buffer,
+               const std::string& dir, DeviceSet& set) {
+  const std::string path = dir + "/" + link;
+  std::vector<std::unique_ptr<SerialEndpoint>> ports;
+  ports.push_back(std::make_unique<SerialEndpoint>(link, path, dev->baud(0), tx_buffer,
+                                                   dir + "/captures/" + link + ".cap"));
+  set.links.emplace_back(link, path);
+  set.devices.push_back(std::move(dev));
+  set.endpoints.push_back(std::move(ports));
+}
+
+// Paper 001's range sensors: one TfLunaDevice per rangefinder unit and the RPLIDAR, each on its
+// own pty, all casting against the scenario's greenhouse.
+void AddRangeSensors(const Scenario& s, std::uint64_t seed, const std::string& dir,
+                     DeviceSet& set) {
+  if (!s.greenhouse || (!s.rangefinders.enabled && !s.lidar.enabled)) return;
+  set.world = std::make_unique<world::GreenhouseWorld>(*s.greenhouse);
+  const std::uint64_t base = seed * kSeedStride + kRangefinderStream;
+  for (std::size_t i = 0; i < s.rangefinders.units.size(); ++i) {
+    const RangefinderUnitSpec& u = s.rangefinders.units[i];
+    rangefinder::TfLunaConfig cfg = s.rangefinders.module;
+    cfg.name = "rf_" + u.name;
+    cfg.mount = u.mount;
+    AddSerial(std::make_unique<rangefinder::TfLunaDevice>(cfg, *set.world, base + kUnitStride * i),
+              u.link, s.rangefinders.tx_buffer_bytes, dir, set);
+  }
+  if (s.lidar.enabled) {
+    AddSerial(std::make_unique<lidar::RplidarDevice>(s.lidar.config, *set.world,
+                                                     seed * kSeedStride + kLidarStream),
+              s.lidar.link, s.lidar.tx_buffer_bytes, dir, set);
+  }
+}
+
 }  // namespace
 
 DeviceSet BuildDevices(const Scenario& scenario, std::uint64_t seed, const std::string& run_dir) {
@@ -101,6 +145,7 @@ DeviceSet BuildDevices(const Scenario& scenario, std::uint64_t seed, const std::
   AddMcu(scenario, seed, run_dir, set);
   AddPaper003Devices(scenario, seed * kSeedStride + kUwbStream, seed * kSeedStride + kWitStream,
                      run_dir, set);
+  AddRangeSensors(scenario, seed, run_dir, set);
   return set;
 }
 

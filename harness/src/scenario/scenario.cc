@@ -117,8 +117,8 @@ Scenario FromReader(const YamlReader& root) {
                                 "seed",    "estimator",   "criteria",  "faults",
                                 "include", "evaluation"};
   for (const auto* section : {&kTruthSectionKeys, &kGnssSectionKeys, &kMcuSectionKeys,
-                              &kCanSectionKeys, &kGreenhouseSectionKeys, &kSuiteSectionKeys,
-                              &kPaper003SectionKeys}) {
+                              &kCanSectionKeys, &kGreenhouseSectionKeys, &kRangeSensorSectionKeys,
+                              &kSuiteSectionKeys, &kPaper003SectionKeys}) {
     keys.insert(keys.end(), section->begin(), section->end());
   }
   root.CheckKeys(keys);
@@ -142,6 +142,7 @@ Scenario FromReader(const YamlReader& root) {
   ReadPaper003Sections(root, s.uwb, s.wt901c);
   ReadCanSection(root, s.can);
   ReadGreenhouseSection(root, s);
+  ReadRangeSensorSections(root, s);
   ReadSuiteSections(root, keys, s);
   if (auto e = root.OptionalChild("estimator")) ReadEstimator(*e, s.estimator);
   CheckCanUse(root, s);

@@ -35,6 +35,11 @@ extern const std::vector<std::string> kGreenhouseSectionKeys;
 /// Reads the greenhouse section (optional; scenario_greenhouse.cc): the ridge map of paper 001.
 void ReadGreenhouseSection(const YamlReader& root, Scenario& s);
 
+extern const std::vector<std::string> kRangeSensorSectionKeys;
+/// Reads the rangefinders and lidar sections (optional; scenario_range_sensors.cc), after the
+/// greenhouse section they need.
+void ReadRangeSensorSections(const YamlReader& root, Scenario& s);
+
 extern const std::vector<std::string> kSuiteSectionKeys;
 /// Reads `paper:` into s.paper and checks `short:` (scenario_suite.cc); `top_level_keys` are the
 /// keys a `short:` section may replace (all but name, include, paper and short).

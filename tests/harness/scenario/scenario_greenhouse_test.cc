@@ -82,3 +82,49 @@ TEST(ScenarioGreenhouse, PostsWiderThanTheMarginAndUnknownKeys) {
 
 }  // namespace
 }  // namespace hil::harness
+
+namespace hil::harness {
+namespace {
+
+TEST(ScenarioRangeSensors, DefaultsAndTheLibraryLayout) {
+  const Scenario s = ParseScenario(std::string(kMinimal) +
+                                       "greenhouse: {}\n"
+                                       "rangefinders: {rate_hz: 50, format: mm}\n"
+                                       "lidar: {rotation_hz: 10, mount_m: [0, 0, 0.5]}\n",
+                                   "g.yaml");
+  ASSERT_TRUE(s.rangefinders.enabled);
+  ASSERT_EQ(s.rangefinders.units.size(), 4u);
+  EXPECT_EQ(s.rangefinders.units[0].link, "ttyRF_RF");
+  EXPECT_DOUBLE_EQ(s.rangefinders.units[1].mount.x_m, -0.2);
+  EXPECT_DOUBLE_EQ(s.rangefinders.units[3].mount.yaw_deg, 90);
+  EXPECT_EQ(s.rangefinders.module.settings.frame_rate_hz, 50);
+  EXPECT_EQ(s.rangefinders.module.settings.format, rangefinder::OutputFormat::kMm9Byte);
+  ASSERT_TRUE(s.lidar.enabled);
+  EXPECT_DOUBLE_EQ(s.lidar.config.rotation_hz, 10);
+  EXPECT_DOUBLE_EQ(s.lidar.config.mount.z_m, 0.5);
+  const Scenario lib =
+      ParseScenario(std::string(kMinimal) + "include: [greenhouse/seed001_greenhouse.yaml]\n", "g.yaml");
+  ASSERT_TRUE(lib.greenhouse);
+  EXPECT_EQ(lib.greenhouse->ridge_count, 4);
+  EXPECT_EQ(lib.rangefinders.units.size(), 4u);
+  EXPECT_EQ(lib.lidar.link, "ttyLIDAR");
+}
+
+TEST(ScenarioRangeSensors, BadSensorSections) {
+  ExpectError(std::string(kMinimal) + "rangefinders: {}\n", 3, "rangefinders",
+              "needs a greenhouse");
+  ExpectError(std::string(kMinimal) + "greenhouse: {}\nrangefinders: {baud: 12345}\n", 4,
+              "rangefinders.baud", "TF-Luna manual");
+  ExpectError(std::string(kMinimal) +
+                  "greenhouse: {}\n"
+                  "rangefinders:\n"
+                  "  units:\n"
+                  "    - {name: a, link: ttyA}\n"
+                  "    - {name: b, link: ttyA}\n",
+              7, "rangefinders.units[1].link", "two units");
+  ExpectError(std::string(kMinimal) + "greenhouse: {}\nlidar: {rotation_hz: 30}\n", 4,
+              "lidar.rotation_hz", "out of range");
+}
+
+}  // namespace
+}  // namespace hil::harness

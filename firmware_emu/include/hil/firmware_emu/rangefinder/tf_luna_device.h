@@ -31,12 +31,6 @@ struct RangefinderMount {
   double yaw_deg = -90;                 ///< beam direction, counter-clockwise from forward
 };
 
-/// Reflectivity of what the beam hits (scenario parameters, UNVERIFIED): soil ridges 25 %,
-/// galvanised posts 50 %, transparent PE film walls 5 % (most light passes through).
-struct TargetReflectivity {
-  double ridge = 0.25, post = 0.5, wall = 0.05;
-};
-
 /// The settings a module keeps in flash (saved with 0x11, restored with 0x10).
 struct TfLunaSettings {
   std::uint16_t frame_rate_hz = 100;
@@ -49,7 +43,7 @@ struct TfLunaConfig {
   std::string name = "rf_right_front";
   RangefinderMount mount;
   RangeModelConfig model;
-  TargetReflectivity reflectivity;
+  world::SurfaceReflectivity reflectivity;
   TfLunaSettings settings;  ///< factory defaults (the manual's)
   double chip_temperature_c = 40;
   double cast_range_m = 12;        ///< how far the beam is traced (beyond the 9 m limit)

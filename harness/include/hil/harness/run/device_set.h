@@ -21,6 +21,9 @@
 namespace hil::harness {
 
 struct DeviceSet {
+  /// The greenhouse the range sensors cast against (section `greenhouse:`); declared before the
+  /// devices, which point to it, so it outlives them.
+  std::unique_ptr<world::GreenhouseWorld> world;
   std::vector<std::unique_ptr<Device>> devices;
   /// endpoints[i][p] is serial port p of devices[i]
   std::vector<std::vector<std::unique_ptr<SerialEndpoint>>> endpoints;

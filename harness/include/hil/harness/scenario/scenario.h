@@ -13,7 +13,9 @@
 #include "hil/firmware_emu/attitude/wt901c_config.h"
 #include "hil/firmware_emu/gnss/neo5m_device.h"
 #include "hil/firmware_emu/gnss/receiver_model.h"
+#include "hil/firmware_emu/lidar/rplidar_device.h"
 #include "hil/firmware_emu/mcu/mcu_config.h"
+#include "hil/firmware_emu/rangefinder/tf_luna_device.h"
 #include "hil/firmware_emu/world/greenhouse_world.h"
 #include "hil/firmware_emu/uwb/uwb_tag_device.h"
 #include "hil/harness/faults/fault_timeline.h"
@@ -95,6 +97,28 @@ struct Wt901cDeviceSpec {
   std::string link = "ttyWIT";  ///< symlink name in the run folder
   std::size_t tx_buffer_bytes = 1024;
   wit::Wt901cConfig config;
+/// One laser rangefinder of the `rangefinders:` section: its name, pty link and mount.
+struct RangefinderUnitSpec {
+  std::string name, link;
+  rangefinder::RangefinderMount mount;
+};
+
+/// Paper 001's laser rangefinders (section `rangefinders:`; needs `greenhouse:`). Each unit is a
+/// TfLunaDevice on its own pty; `module` holds the settings they share.
+struct RangefinderSpec {
+  bool enabled = false;
+  rangefinder::TfLunaConfig module;
+  std::vector<RangefinderUnitSpec>
+      units;  ///< default: right-front, right-rear, left-front, left-rear
+  std::size_t tx_buffer_bytes = 4096;
+};
+
+/// Paper 001's 2-D LiDAR (section `lidar:`; needs `greenhouse:`): an RplidarDevice on a pty.
+struct LidarSpec {
+  bool enabled = false;
+  std::string link = "ttyLIDAR";
+  lidar::RplidarConfig config;
+  std::size_t tx_buffer_bytes = 16384;
 };
 
 /// How the estimator under test is started and read.
@@ -155,6 +179,8 @@ struct Scenario {
   EstimatorSpec estimator;
   /// The greenhouse the range sensors see (section `greenhouse:`, paper 001); none without it.
   std::optional<world::GreenhouseConfig> greenhouse;
+  RangefinderSpec rangefinders;
+  LidarSpec lidar;
   std::vector<Criterion> criteria;
   FaultTimeline faults;
   /// Seconds after the end of an outage within which the horizontal error must return below
