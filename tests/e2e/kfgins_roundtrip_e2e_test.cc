@@ -90,8 +90,8 @@ TEST_F(KfginsRoundTrip, ExportThenNavdKfginsMatchesTheOnlineEstimate) {
   ASSERT_EQ(r.exit_code, 0) << r.out;
   const auto online = OnlineSolutions(run + "/estimate.jsonl", 18);
   ASSERT_GT(online.size(), 500u);
-  const std::vector<double> d =
-      Differences(exp + "/result/KF_GINS_Navresult.nav", online, online.begin()->first * 1e-3);
+  const std::vector<double> d = Differences(exp + "/result/KF_GINS_Navresult.nav", online,
+                                            static_cast<double>(online.begin()->first) * 1e-3);
   ASSERT_GT(d.size(), 500u);
   RecordProperty("max_difference_m", std::to_string(Max(d)));
   EXPECT_LT(Max(d), kExportMaxTolerance_m);
@@ -108,8 +108,8 @@ TEST_F(KfginsRoundTrip, ReplayOfTheCapturesReproducesTheOnlineEstimate) {
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_NE(r.out.find("GNSS fixes: 1"), std::string::npos) << r.out;
   const auto online = OnlineSolutions(run + "/estimate.jsonl", 18);
-  const std::vector<double> d =
-      Differences(out + "/KF_GINS_Navresult.nav", online, online.begin()->first * 1e-3);
+  const std::vector<double> d = Differences(out + "/KF_GINS_Navresult.nav", online,
+                                            static_cast<double>(online.begin()->first) * 1e-3);
   ASSERT_GT(d.size(), 500u);
   RecordProperty("max_difference_m", std::to_string(Max(d)));
   EXPECT_LT(Max(d), 0.01);
