@@ -21,11 +21,12 @@ bool WantsKfginsMode(int argc, char** argv) {
 namespace {
 int Usage(const char* problem) {
   std::fprintf(stderr,
-               "navd: %s\nusage: navd --kfgins CONFIG.yaml [--navd-conf FILE]\n"
+               "navd: %s\nusage: navd --kfgins CONFIG.yaml [--navd-conf FILE] [--align]\n"
                "  runs navd's filter on a KF-GINS dataset (the configuration's imupath, gnsspath)\n"
                "  and writes KF_GINS_Navresult.nav, KF_GINS_IMU_ERR.txt, KF_GINS_STD.txt to its\n"
                "  outputpath. --navd-conf takes the [filter] section of a navd.conf instead of\n"
-               "  the parameters derived from the KF-GINS configuration.\n",
+               "  the parameters derived from the KF-GINS configuration; --align lets the filter\n"
+               "  align itself as navd does online instead of starting from initpos/initatt.\n",
                problem);
   return 2;
 }
@@ -33,12 +34,15 @@ int Usage(const char* problem) {
 
 int KfginsMain(int argc, char** argv) {
   std::string config_path, navd_conf;
+  bool self_align = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--kfgins" && i + 1 < argc) {
       config_path = argv[++i];
     } else if (a == "--navd-conf" && i + 1 < argc) {
       navd_conf = argv[++i];
+    } else if (a == "--align") {
+      self_align = true;
     } else {
       return Usage(("unknown or incomplete option '" + a + "'").c_str());
     }
@@ -51,18 +55,19 @@ int KfginsMain(int argc, char** argv) {
       params.fusion_horizon = est::Nanoseconds{0};  // the files are complete: no fusion delay
       params.gnss_max_latency = est::Nanoseconds{0};
     }
-    const ds::KfginsRunResult r = ds::RunKfgins(cfg, params);
-    std::fprintf(stderr,
-                 "navd: kfgins %s: %llu IMU epochs (sow %.3f .. %.3f), %llu fixes: fused %llu, "
-                 "rejected %llu, resets %llu, mean NIS %.2f; IMU gaps %llu; wall %.3f s, CPU %.3f s "
-                 "= %.3f us per IMU epoch (reading, filter, writing)\n",
-                 config_path.c_str(), static_cast<unsigned long long>(r.imu_epochs), r.first_sow,
-                 r.last_sow, static_cast<unsigned long long>(r.gnss_records),
-                 static_cast<unsigned long long>(r.gnss_fused),
-                 static_cast<unsigned long long>(r.gnss_rejected),
-                 static_cast<unsigned long long>(r.gnss_resets), r.mean_nis_pos,
-                 static_cast<unsigned long long>(r.imu_gaps), r.wall_s, r.cpu_s,
-                 r.imu_epochs ? r.cpu_s * 1e6 / static_cast<double>(r.imu_epochs) : 0.0);
+    const ds::KfginsRunResult r = ds::RunKfgins(cfg, params, self_align);
+    std::fprintf(
+        stderr,
+        "navd: kfgins %s: %llu IMU epochs (sow %.3f .. %.3f), %llu fixes: fused %llu, "
+        "rejected %llu, resets %llu, mean NIS %.2f; IMU gaps %llu; wall %.3f s, CPU %.3f s "
+        "= %.3f us per IMU epoch (reading, filter, writing)\n",
+        config_path.c_str(), static_cast<unsigned long long>(r.imu_epochs), r.first_sow, r.last_sow,
+        static_cast<unsigned long long>(r.gnss_records),
+        static_cast<unsigned long long>(r.gnss_fused),
+        static_cast<unsigned long long>(r.gnss_rejected),
+        static_cast<unsigned long long>(r.gnss_resets), r.mean_nis_pos,
+        static_cast<unsigned long long>(r.imu_gaps), r.wall_s, r.cpu_s,
+        r.imu_epochs ? r.cpu_s * 1e6 / static_cast<double>(r.imu_epochs) : 0.0);
   } catch (const ds::DatasetError& e) {
     std::fprintf(stderr, "navd: %s\n", e.what());
     return 2;

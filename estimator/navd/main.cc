@@ -45,6 +45,7 @@
 #include "can_output.h"
 #include "gnss_receivers.h"
 #include "kfgins_mode.h"
+#include "replay_mode.h"
 #include "serial_device.h"
 #include "uwb_mode.h"
 
@@ -92,6 +93,8 @@ void PrintUsage() {
       "                  [output] json, rate_hz, nmea_device, can_interface, can_log,\n"
       "                  can_source_address, can_rate_hz\n"
       "  --kfgins YAML   offline on a KF-GINS dataset (estimator/doc/kfgins.md)\n"
+      "  --replay LOG... --out DIR   a recorded log (hil captures, u-blox/NMEA bytes) in virtual\n"
+      "                  time, solutions in KF-GINS files, consistency report (kfgins.md)\n"
       "  --help          this text\n"
       "examples:\n"
       "  navd --config /etc/navd.conf\n"
@@ -409,6 +412,7 @@ int Run(const est::NavdConfig& cfg, SolutionOutputs& outputs) {
 
 int main(int argc, char** argv) {
   if (hil::navd::WantsKfginsMode(argc, argv)) return hil::navd::KfginsMain(argc, argv);
+  if (hil::navd::WantsReplayMode(argc, argv)) return hil::navd::ReplayMain(argc, argv);
   std::string config_path;
   if (const std::optional<int> exit_code = ParseArgs(argc, argv, config_path)) return *exit_code;
   est::NavdConfig cfg;

@@ -23,8 +23,9 @@ int main(int argc, char** argv) {
       "  hil replay runs/x/captures/ttyGPS.cap      replay a capture into runs/replay/ttyGPS\n"
       "Exit codes: 0 every criterion passed (validate: conforms), 1 one failed, 2 bad input.");
   const std::vector<hil::cli::Subcommand> commands{
-      hil::cli::AddRun(app), hil::cli::AddEmulate(app), hil::cli::AddValidate(app),
-      hil::cli::AddSuite(app), hil::cli::AddReplay(app), hil::cli::AddDataset(app)};
+      hil::cli::AddRun(app),   hil::cli::AddEmulate(app), hil::cli::AddValidate(app),
+      hil::cli::AddSuite(app), hil::cli::AddReplay(app),  hil::cli::AddDataset(app),
+      hil::cli::AddExport(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

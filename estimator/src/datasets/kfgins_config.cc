@@ -4,8 +4,9 @@
 #include <cmath>
 #include <fstream>
 #include <map>
-#include <sys/stat.h>
 #include <vector>
+
+#include <sys/stat.h>
 
 namespace hil::estimator::datasets {
 namespace {

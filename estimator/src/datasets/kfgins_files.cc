@@ -5,10 +5,10 @@
 namespace hil::estimator::datasets {
 namespace {
 
-constexpr const char* kImuFields[] = {"sow", "dtheta_x", "dtheta_y", "dtheta_z",
-                                      "dvel_x", "dvel_y", "dvel_z", "odometer"};
-constexpr const char* kGnssFields[] = {"sow",   "lat",   "lon",   "h",     "std_n",
-                                       "std_e", "std_d", "vel_n", "vel_e", "vel_d",
+constexpr const char* kImuFields[] = {"sow",    "dtheta_x", "dtheta_y", "dtheta_z",
+                                      "dvel_x", "dvel_y",   "dvel_z",   "odometer"};
+constexpr const char* kGnssFields[] = {"sow",    "lat",    "lon",   "h",     "std_n",
+                                       "std_e",  "std_d",  "vel_n", "vel_e", "vel_d",
                                        "std_vn", "std_ve", "std_vd"};
 
 // the time check both files share

@@ -15,11 +15,10 @@ Eigen::Matrix3d FrdFromFlu() { return Eigen::Vector3d(1, -1, -1).asDiagonal(); }
 }  // namespace
 
 Eigen::Quaterniond QuatEnuFluFromEulerNed(const Eigen::Vector3d& rpy) {
-  const Eigen::Matrix3d c_ned_frd =
-      (Eigen::AngleAxisd(rpy.z(), Eigen::Vector3d::UnitZ()) *
-       Eigen::AngleAxisd(rpy.y(), Eigen::Vector3d::UnitY()) *
-       Eigen::AngleAxisd(rpy.x(), Eigen::Vector3d::UnitX()))
-          .toRotationMatrix();
+  const Eigen::Matrix3d c_ned_frd = (Eigen::AngleAxisd(rpy.z(), Eigen::Vector3d::UnitZ()) *
+                                     Eigen::AngleAxisd(rpy.y(), Eigen::Vector3d::UnitY()) *
+                                     Eigen::AngleAxisd(rpy.x(), Eigen::Vector3d::UnitX()))
+                                        .toRotationMatrix();
   return Eigen::Quaterniond(EnuFromNed() * c_ned_frd * FrdFromFlu()).normalized();
 }
 

@@ -1,6 +1,5 @@
 #include "hil/estimator/datasets/kfgins_runner.h"
 
-#include <sys/stat.h>
 #include <time.h>
 
 #include <algorithm>
@@ -8,6 +7,8 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
+
+#include <sys/stat.h>
 
 #include "hil/estimator/datasets/kfgins_files.h"
 #include "hil/estimator/datasets/kfgins_frames.h"
@@ -108,7 +109,7 @@ NavigatorParams NavigatorParamsFromKfgins(const KfginsConfig& c) {
   return p;
 }
 
-KfginsRunResult RunKfgins(const KfginsConfig& c, const NavigatorParams& params) {
+KfginsRunResult RunKfgins(const KfginsConfig& c, const NavigatorParams& params, bool self_align) {
   const auto wall0 = std::chrono::steady_clock::now();
   const double cpu0 = CpuSeconds();
   KfginsImuReader imu(c.Resolve(c.imupath), c.imudatalen);
@@ -128,7 +129,7 @@ KfginsRunResult RunKfgins(const KfginsConfig& c, const NavigatorParams& params) 
     if (c.endtime_s > 0 && r.sow > c.endtime_s) break;
     const GpsTime t = TimeOfSow(r.sow);
     if (!started) {
-      StartAt(c, r.sow, *nav);
+      if (!self_align) StartAt(c, r.sow, *nav);
       started = true;
       res.first_sow = r.sow;
     } else {
@@ -146,10 +147,11 @@ KfginsRunResult RunKfgins(const KfginsConfig& c, const NavigatorParams& params) 
       nav->Push(s);
       nav->Update();
     }
+    prev_t = t;
+    if (!nav->aligned()) continue;  // self-aligning: nothing to write before the alignment
     out.Write(ToEpoch(*nav, r.sow));
     ++res.imu_epochs;
     res.last_sow = r.sow;
-    prev_t = t;
   }
   out.Close();
   if (!started) throw DatasetError(c.Resolve(c.imupath), 0, "no IMU epoch at or after starttime");

@@ -50,8 +50,8 @@ int TextLineReader::ParseNumbers(std::string_view line, double* out, int max,
     const char* num = (*start == '+') ? start + 1 : start;
     const auto [ptr, ec] = std::from_chars(num, p, v);
     if (ec != std::errc() || ptr != p || !std::isfinite(v)) {
-      const std::string field = field_names ? std::string(field_names[count])
-                                            : "column " + std::to_string(count + 1);
+      const std::string field =
+          field_names ? std::string(field_names[count]) : "column " + std::to_string(count + 1);
       Fail(field + (ec == std::errc() && ptr == p ? ": not finite: '" : ": not a number: '") +
            std::string(start, p) + "'");
     }

@@ -27,8 +27,9 @@ void Declare(CLI::App& app, DatasetArgs& a) {
   a.cmd = app.add_subcommand("dataset", "Standard datasets: KF-GINS-format test data, scoring");
   a.cmd->require_subcommand(1);
   a.gen = a.cmd->add_subcommand(
-      "kfgins", "Write IMU.txt, GNSS.txt, truth.nav and kf-gins.yaml from our truth and a "
-                "consumer-MEMS IMU model (deterministic for a seed)");
+      "kfgins",
+      "Write IMU.txt, GNSS.txt, truth.nav and kf-gins.yaml from our truth and a "
+      "consumer-MEMS IMU model (deterministic for a seed)");
   a.gen->add_option("DIR", a.dir, "output folder")->required();
   a.gen->add_option("--seconds", a.opt.duration_s, "length (default 60)")
       ->check(CLI::Range(1.0, 86400.0));

@@ -43,7 +43,7 @@ class Decoder {
 
   void Frame(const std::string& b, std::int64_t t_emu_ns) {
     if (b.size() < 13 || b[0] != '\xa5' || b[1] != '\x5a' ||
-        b.size() != 13 + static_cast<unsigned char>(b[4]) ||
+        b.size() != 13u + static_cast<unsigned char>(b[4]) ||
         Crc16(b, 2, b.size() - 2) != Le(b, b.size() - 2, 2)) {
       ++out_.bad_frames;
       return;
@@ -67,13 +67,15 @@ class Decoder {
       gyro_scale_ = g;
     } else if (type == 3 && (b[11 + 6] & 1)) {
       const double t = Le(b, 11, 2) * 604800.0 + Le(b, 13, 4) * 1e-3;
-      if (out_.pulses == 0) out_.gps_at_emulated_zero_s = t - std::floor(t_emu_ns * 1e-9);
+      if (out_.pulses == 0)
+        out_.gps_at_emulated_zero_s = t - std::floor(static_cast<double>(t_emu_ns) * 1e-9);
       pulses_.push_back({tick, t});
       ++out_.pulses;
     } else if (type == 1 && accel_scale_ > 0) {
       RawSample s{tick, {}, {}};
       for (int k = 0; k < 3; ++k) {
-        s.a[k] = static_cast<std::int16_t>(Le(b, 11 + 2 * k, 2)) * static_cast<double>(accel_scale_);
+        s.a[k] =
+            static_cast<std::int16_t>(Le(b, 11 + 2 * k, 2)) * static_cast<double>(accel_scale_);
         s.w[k] = static_cast<std::int16_t>(Le(b, 17 + 2 * k, 2)) * static_cast<double>(gyro_scale_);
       }
       segment_.push_back(s);

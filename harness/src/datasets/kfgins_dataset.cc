@@ -1,7 +1,5 @@
 #include "hil/harness/datasets/kfgins_dataset.h"
 
-#include <sys/stat.h>
-
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -9,6 +7,7 @@
 #include <stdexcept>
 
 #include <Eigen/Geometry>
+#include <sys/stat.h>
 
 #include "hil/harness/datasets/kfgins_text.h"
 #include "hil/truth/path.h"
@@ -23,7 +22,8 @@ const Eigen::Vector3d kLeverFlu(0.2, -0.1, 0.6);
 
 truth::TruthConfig FieldTruth() {
   truth::TruthConfig c;
-  c.origin = {30.5278, 114.3557, 25.0};  // an open field; the values only set gravity and Earth rate
+  c.origin = {30.5278, 114.3557,
+              25.0};  // an open field; the values only set gravity and Earth rate
   truth::BoustrophedonSpec b;
   b.heading_deg = 30;
   b.row_length_m = 100;
@@ -106,8 +106,8 @@ class Generator {
     const double phi = std::exp(-dt / o_.bias_tau_s), q = std::sqrt(1 - phi * phi);
     KfginsImuIncrement inc;
     for (int i = 0; i < 3; ++i) {
-      e_.gyro_drift[i] = phi * e_.gyro_drift[i] +
-                         q * o_.gyro_bias_instability_deg_hr * kDeg / 3600 * n01_(rng_);
+      e_.gyro_drift[i] =
+          phi * e_.gyro_drift[i] + q * o_.gyro_bias_instability_deg_hr * kDeg / 3600 * n01_(rng_);
       e_.accel_drift[i] =
           phi * e_.accel_drift[i] + q * o_.accel_bias_instability_mg * 1e-3 * 9.80665 * n01_(rng_);
       inc.dtheta_flu_rad[i] = dth[i] + (e_.gyro_bias[i] + e_.gyro_drift[i]) * dt +

@@ -1,7 +1,5 @@
 #include "hil/harness/datasets/run_export.h"
 
-#include <sys/stat.h>
-
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -13,6 +11,7 @@
 #include <vector>
 
 #include <Eigen/Geometry>
+#include <sys/stat.h>
 
 #include "hil/harness/datasets/capture_imu.h"
 #include "hil/harness/datasets/kfgins_text.h"
@@ -45,8 +44,9 @@ Csv ReadCsv(const std::string& path) {
     for (std::size_t i = 0; i < names.size() && std::getline(s, cell, ','); ++i) {
       char* end = nullptr;
       row[names[i]] = std::strtod(cell.c_str(), &end);
-      if (end == cell.c_str()) throw std::runtime_error(path + ":" + std::to_string(n) + ": " +
-                                                        names[i] + ": not a number");
+      if (end == cell.c_str())
+        throw std::runtime_error(path + ":" + std::to_string(n) + ": " + names[i] +
+                                 ": not a number");
     }
     csv.rows.push_back(std::move(row));
   }
@@ -166,10 +166,13 @@ RunExportResult ExportKfgins(const RunData& d, const std::string& out) {
     files.WriteImu(SowOf(s.t_gps_s), {s.dtheta_flu_rad, s.dvel_flu_mps});
     ++res.imu_lines;
   }
+  // NMEA (RMC) reports no vertical velocity: the receiver's fix says 0 there, as navd takes it
+  const bool nmea = !d.conf.count("gnss_protocol") || d.conf.at("gnss_protocol") != "ubx";
   for (const auto& r : d.fixes.rows) {
     const KfginsFix f = FixOf(d, r);
     files.WriteGnss(f);
-    files.WriteGnssPosVel(f, {At(r, "vel_n_mps"), At(r, "vel_e_mps"), At(r, "vel_d_mps")},
+    files.WriteGnssPosVel(f,
+                          {At(r, "vel_n_mps"), At(r, "vel_e_mps"), nmea ? 0.0 : At(r, "vel_d_mps")},
                           {d.vel_std_mps, d.vel_std_mps, 2 * d.vel_std_mps});
     ++res.gnss_lines;
   }
@@ -181,8 +184,8 @@ RunExportResult ExportKfgins(const RunData& d, const std::string& out) {
   const CaptureImuSample& first = d.imu.samples.front();
   y.imudatarate_hz = 1.0 / first.dt_s;
   y.starttime_s = SowOf(first.t_gps_s);
-  y.init = TruthPva(TruthNear(d.truth, first.t_gps_s - d.imu.gps_at_emulated_zero_s),
-                    y.starttime_s);
+  y.init =
+      TruthPva(TruthNear(d.truth, first.t_gps_s - d.imu.gps_at_emulated_zero_s), y.starttime_s);
   std::stringstream lever(d.conf.count("lever_arm_m") ? d.conf.at("lever_arm_m") : "0,0,0");
   for (int i = 0; i < 3; ++i) {
     std::string c;
@@ -236,7 +239,8 @@ RunExportResult ExportGnssInsSim(const RunData& d, const std::string& out) {
   std::FILE* rt = CreateCsv(out + "/ref_time.csv", "time (sec)");
   std::FILE* rp =
       CreateCsv(out + "/ref_pos.csv", "ref_pos_lat (deg),ref_pos_lon (deg),ref_pos_alt (m)");
-  std::FILE* rv = CreateCsv(out + "/ref_vel.csv", "ref_vel_x (m/s),ref_vel_y (m/s),ref_vel_z (m/s)");
+  std::FILE* rv =
+      CreateCsv(out + "/ref_vel.csv", "ref_vel_x (m/s),ref_vel_y (m/s),ref_vel_z (m/s)");
   std::FILE* ra =
       CreateCsv(out + "/ref_att_euler.csv", "ref_Yaw (deg),ref_Pitch (deg),ref_Roll (deg)");
   for (const auto& r : d.truth.rows) {

@@ -57,10 +57,10 @@ TEST(KfginsImuReader, BadLinesNameFileLineAndField) {
 
 TEST(KfginsGnssReader, ReadsPositionAndOptionalVelocity) {
   const std::string dir = testing::TempDir();
-  KfginsGnssReader r(testing::WriteFile(
-      dir, "gnss.txt",
-      "456300 30.44 114.47 20.9 0.01 0.02 0.03\n"
-      "456301 30.44 114.47 20.9 0.01 0.02 0.03 1.0 -1.0 0.1 0.05 0.05 0.1\n"));
+  KfginsGnssReader r(
+      testing::WriteFile(dir, "gnss.txt",
+                         "456300 30.44 114.47 20.9 0.01 0.02 0.03\n"
+                         "456301 30.44 114.47 20.9 0.01 0.02 0.03 1.0 -1.0 0.1 0.05 0.05 0.1\n"));
   KfginsGnssRecord g;
   ASSERT_TRUE(r.Next(g));
   EXPECT_FALSE(g.has_velocity);

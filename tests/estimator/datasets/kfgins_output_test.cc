@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "hil/estimator/datasets/dataset_error.h"
+
 #include "datasets/kfgins_test_files.h"
 
 namespace hil::estimator::datasets {
@@ -44,7 +46,7 @@ TEST(KfginsOutputWriter, WritesTheThreeFilesOneLineEach) {
 }
 
 TEST(KfginsOutputWriter, UnwritableFolderIsAnError) {
-  EXPECT_THROW(KfginsOutputWriter("/nonexistent/out"), DatasetError);
+  EXPECT_THROW({ KfginsOutputWriter w("/nonexistent/out"); }, DatasetError);
 }
 
 }  // namespace

@@ -9,8 +9,9 @@
 
 #include <gtest/gtest.h>
 
-#include "datasets/kfgins_test_files.h"
 #include "hil/estimator/geodesy.h"
+
+#include "datasets/kfgins_test_files.h"
 
 namespace hil::estimator::datasets {
 namespace {
@@ -20,7 +21,8 @@ constexpr double kLat = 30.5, kLon = 114.3, kH = 20.0;
 // 20 s at rest, level, facing north: the IMU measures −g on its down axis and the Earth rate;
 // 1 Hz fixes of an antenna 0.5 m above the IMU
 std::string WriteStationaryDataset(const std::string& dir, const std::string& extra_yaml = "") {
-  const double g = NormalGravity(kLat, kH), w = kEarthRate_radps, lat = kLat * std::numbers::pi / 180;
+  const double g = NormalGravity(kLat, kH), w = kEarthRate_radps,
+               lat = kLat * std::numbers::pi / 180;
   std::string imu, gnss;
   char line[256];
   for (int k = 1; k <= 4000; ++k) {
@@ -32,20 +34,23 @@ std::string WriteStationaryDataset(const std::string& dir, const std::string& ex
   LocalTangentFrame f({kLat, kLon, kH});
   const Lla ant = f.ToLla(Eigen::Vector3d(0, 0, 0.5));
   for (int k = 1; k <= 20; ++k) {
-    std::snprintf(line, sizeof line, "%d %.11f %.11f %.4f 0.01 0.01 0.02\n", 1000 + k,
-                  ant.lat_deg, ant.lon_deg, ant.height_m);
+    std::snprintf(line, sizeof line, "%d %.11f %.11f %.4f 0.01 0.01 0.02\n", 1000 + k, ant.lat_deg,
+                  ant.lon_deg, ant.height_m);
     gnss += line;
   }
   testing::WriteFile(dir, "IMU.txt", imu);
   testing::WriteFile(dir, "GNSS.txt", gnss);
   std::snprintf(line, sizeof line, "initpos: [%.10f, %.10f, %.4f]\n", kLat, kLon, kH);
   const std::string yaml = "imupath: \"" + dir + "/IMU.txt\"\ngnsspath: \"" + dir +
-                           "/GNSS.txt\"\noutputpath: \"" + dir + "/out\"\nimudatarate: 200\n"
-                           "starttime: 1000.005\n" + line +
+                           "/GNSS.txt\"\noutputpath: \"" + dir +
+                           "/out\"\nimudatarate: 200\n"
+                           "starttime: 1000.005\n" +
+                           line +
                            "initvel: [0, 0, 0]\ninitatt: [0, 0, 0]\ninitposstd: [0.1, 0.1, 0.1]\n"
                            "initvelstd: [0.1, 0.1, 0.1]\ninitattstd: [1, 1, 2]\nimunoise:\n"
                            "  arw: 0.3\n  vrw: 0.1\n  gbstd: 50\n  abstd: 1000\n  corrtime: 1\n"
-                           "antlever: [0, 0, -0.5]\n" + extra_yaml;
+                           "antlever: [0, 0, -0.5]\n" +
+                           extra_yaml;
   return testing::WriteFile(dir, "kf-gins.yaml", yaml);
 }
 
@@ -65,8 +70,8 @@ TEST(KfginsRunner, StationaryDatasetStaysPutWithOneLinePerImuEpoch) {
   const KfginsConfig c = LoadKfginsConfig(WriteStationaryDataset(dir));
   const KfginsRunResult r = RunKfgins(c, NavigatorParamsFromKfgins(c));
   EXPECT_EQ(r.imu_epochs, 4000u);
-  EXPECT_EQ(r.gnss_records, 19u);  // the fix at the start time is not after it
-  EXPECT_EQ(r.gnss_fused, 19u);
+  EXPECT_EQ(r.gnss_records, 20u);  // 1001 … 1020 s, all after the start at 1000.005 s
+  EXPECT_EQ(r.gnss_fused, 20u);
   EXPECT_GT(r.mean_nis_pos, 0.0);
   const auto nav = ReadRows(dir + "/out/KF_GINS_Navresult.nav");
   ASSERT_EQ(nav.size(), 4000u);

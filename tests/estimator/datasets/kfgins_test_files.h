@@ -1,10 +1,10 @@
 #pragma once
 // Small files for the dataset reader tests: written into a fresh temporary folder.
+#include <unistd.h>
+
 #include <cstdio>
 #include <cstdlib>
 #include <string>
-
-#include <unistd.h>
 
 namespace hil::estimator::datasets::testing {
 

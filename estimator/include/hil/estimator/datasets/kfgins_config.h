@@ -29,12 +29,12 @@ struct KfginsImuNoise {
 };
 
 struct KfginsConfig {
-  std::string config_path;                   ///< the file itself (for messages)
+  std::string config_path;                    ///< the file itself (for messages)
   std::string imupath, gnsspath, outputpath;  ///< as written in the file
-  int imudatalen = 7;                        ///< columns of an IMU line (8: with odometer speed)
+  int imudatalen = 7;                         ///< columns of an IMU line (8: with odometer speed)
   double imudatarate_hz = 200;
-  double starttime_s = 0;   ///< GPS seconds of week; the initial state is valid here
-  double endtime_s = -1;    ///< −1: to the end of the IMU file
+  double starttime_s = 0;  ///< GPS seconds of week; the initial state is valid here
+  double endtime_s = -1;   ///< −1: to the end of the IMU file
   Eigen::Vector3d initpos_deg_deg_m = Eigen::Vector3d::Zero();  ///< lat, lon, ellipsoidal height
   Eigen::Vector3d initvel_ned_mps = Eigen::Vector3d::Zero();
   Eigen::Vector3d initatt_rpy_deg = Eigen::Vector3d::Zero();  ///< roll, pitch, yaw (NED, FRD)

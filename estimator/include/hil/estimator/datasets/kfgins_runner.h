@@ -31,7 +31,11 @@ struct KfginsRunResult {
 NavigatorParams NavigatorParamsFromKfgins(const KfginsConfig& c);
 
 /// Runs `params` (e.g. NavigatorParamsFromKfgins, or a navd.conf's) on the configuration's files.
+/// `self_align`: the Navigator aligns itself as navd does online (levelling from the specific
+/// force, heading from the fixes' velocity) instead of starting from initpos/initvel/initatt;
+/// the result files then start at the alignment.
 /// @throws DatasetError for a missing or bad file (naming file, line and field).
-KfginsRunResult RunKfgins(const KfginsConfig& c, const NavigatorParams& params);
+KfginsRunResult RunKfgins(const KfginsConfig& c, const NavigatorParams& params,
+                          bool self_align = false);
 
 }  // namespace hil::estimator::datasets

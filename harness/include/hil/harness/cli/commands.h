@@ -28,6 +28,7 @@ Subcommand AddValidate(CLI::App& app);  ///< hil validate
 Subcommand AddSuite(CLI::App& app);     ///< hil suite
 Subcommand AddReplay(CLI::App& app);    ///< hil replay
 Subcommand AddDataset(CLI::App& app);   ///< hil dataset
+Subcommand AddExport(CLI::App& app);    ///< hil export
 
 /// This executable's path ("hil" when /proc cannot tell).
 std::string SelfExecutable();

@@ -14,7 +14,8 @@
 ///         (lat, lon, alt, vN, vE, vD), ref_time.csv with ref_pos.csv, ref_vel.csv (NED) and
 ///         ref_att_euler.csv (yaw, pitch, roll) at the truth's own 10 Hz times.
 /// A fix's σ is navd's NMEA rule: HDOP × nmea_uere_m / √2 per horizontal axis, twice that
-/// vertically; its velocity σ is nmea_velocity_std_mps (both from the run's navd.conf).
+/// vertically; its velocity σ is nmea_velocity_std_mps (twice that vertically; both from the run's
+/// navd.conf); an NMEA receiver reports no vertical velocity, so vD is 0 for NMEA runs.
 
 #include <cstdint>
 #include <string>

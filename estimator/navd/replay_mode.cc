@@ -1,0 +1,284 @@
+#include "replay_mode.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <sys/stat.h>
+
+#include "hil/estimator/datasets/kfgins_frames.h"
+#include "hil/estimator/datasets/kfgins_output.h"
+#include "hil/estimator/drivers/mcu_frame_decoder.h"
+#include "hil/estimator/drivers/mcu_imu_adapter.h"
+#include "hil/estimator/navd/config_file.h"
+#include "hil/estimator/navd/navd_config.h"
+#include "hil/estimator/navigator.h"
+
+#include "gnss_receivers.h"
+
+namespace hil::navd {
+namespace est = hil::estimator;
+namespace ds = hil::estimator::datasets;
+
+bool WantsReplayMode(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i)
+    if (std::strcmp(argv[i], "--replay") == 0) return true;
+  return false;
+}
+
+namespace {
+
+// bytes of one link at one recorded time
+struct Chunk {
+  std::int64_t t_ns = 0;
+  bool imu = false;
+  std::string bytes;
+};
+
+std::string FromHex(const std::string& hex) {
+  std::string out;
+  for (std::size_t i = 0; i + 1 < hex.size(); i += 2)
+    out += static_cast<char>(std::stoi(hex.substr(i, 2), nullptr, 16));
+  return out;
+}
+
+// a hil capture's device-to-host records, or a raw log as one chunk
+void ReadLog(const std::string& path, std::vector<Chunk>& chunks, bool& ubx) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path + ": cannot open");
+  std::stringstream all;
+  all << in.rdbuf();
+  const std::string text = all.str();
+  if (text.rfind("# hil capture", 0) == 0) {
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);) {
+      std::istringstream f(line);
+      std::string dir, name, hex;
+      std::int64_t t = 0, period = 0, wall = 0;
+      if (!(f >> dir >> t >> period >> wall >> name >> hex) || dir != "tx") continue;
+      const bool imu = name.rfind("MCU-", 0) == 0;
+      if (name.rfind("UBX", 0) == 0) ubx = true;
+      chunks.push_back({t, imu, FromHex(hex)});
+    }
+    return;
+  }
+  std::size_t start = 0;  // gpsd's logs open with '#' comment lines
+  while (start < text.size() && text[start] == '#') {
+    const std::size_t nl = text.find('\n', start);
+    start = nl == std::string::npos ? text.size() : nl + 1;
+  }
+  if (text.find("\xb5\x62", start) != std::string::npos) ubx = true;
+  chunks.push_back({0, false, text.substr(start)});
+}
+
+// what the report says without a truth
+struct Consistency {
+  std::vector<double> fix_t, imu_t;
+  double sigma_h_sum = 0, nis_cv_sum = 0;
+  std::uint64_t nis_cv_n = 0;
+  std::optional<est::GnssSample> prev_fix;
+  std::optional<est::LocalTangentFrame> frame_storage;
+
+  void OnFix(const est::GnssSample& g) {
+    if (!frame_storage) frame_storage.emplace(g.position);
+    const est::LocalTangentFrame& frame = *frame_storage;
+    fix_t.push_back(static_cast<double>(est::ToNs(g.t)) * 1e-9);
+    sigma_h_sum += g.pos_std_enu_m.head<2>().norm() / std::sqrt(2.0);
+    if (prev_fix && prev_fix->has_velocity) {
+      // fix-to-fix innovation: this fix against the last one carried on at its velocity
+      const double dt = static_cast<double>((g.t - prev_fix->t).count()) * 1e-9;
+      const Eigen::Vector3d d = frame.ToLocal(g.position) - frame.ToLocal(prev_fix->position) -
+                                prev_fix->vel_enu_mps * dt;
+      const Eigen::Vector2d s2 =
+          g.pos_std_enu_m.head<2>().cwiseAbs2() + prev_fix->pos_std_enu_m.head<2>().cwiseAbs2();
+      if (dt > 0 && dt < 5 && s2.minCoeff() > 0) {
+        nis_cv_sum += d.x() * d.x() / s2.x() + d.y() * d.y() / s2.y();
+        ++nis_cv_n;
+      }
+    }
+    prev_fix = g;
+  }
+};
+
+// rate (from the median interval), gaps (intervals over 1.5 × the median) and the longest
+std::string RateLine(const char* what, const std::vector<double>& t) {
+  char buf[256];
+  if (t.size() < 2) {
+    std::snprintf(buf, sizeof buf, "%s: %zu\n", what, t.size());
+    return buf;
+  }
+  std::vector<double> d;
+  for (std::size_t i = 1; i < t.size(); ++i) d.push_back(t[i] - t[i - 1]);
+  std::vector<double> s = d;
+  std::nth_element(s.begin(), s.begin() + static_cast<long>(s.size() / 2), s.end());
+  const double med = s[s.size() / 2];
+  std::size_t gaps = 0;
+  double longest = 0;
+  for (double x : d) {
+    if (x > 1.5 * med) ++gaps;
+    longest = std::max(longest, x);
+  }
+  std::snprintf(buf, sizeof buf,
+                "%s: %zu over %.1f s, %.2f Hz, %zu gaps, longest interval %.3f s\n", what, t.size(),
+                t.back() - t.front(), med > 0 ? 1.0 / med : 0.0, gaps, longest);
+  return buf;
+}
+
+ds::KfginsEpoch EpochOf(const est::NavOutput& o) {
+  ds::KfginsEpoch e;
+  const std::int64_t ns = est::ToNs(o.t);
+  const std::int64_t week_ns = est::kSecondsPerGpsWeek * est::kNsPerSecond;
+  e.week = static_cast<int>(ns / week_ns);
+  e.sow = static_cast<double>(ns % week_ns) * 1e-9;
+  e.lat_deg = o.position.lat_deg;
+  e.lon_deg = o.position.lon_deg;
+  e.height_m = o.position.height_m;
+  e.vel_ned_mps = ds::SwapNedEnu(o.v_N_mps);
+  // no attitude (GNSS-only modes without a course): zeros, as the column cannot stay empty
+  if (o.has_attitude) e.rpy_deg = ds::EulerNedFromQuatEnuFlu(o.q_NB) * 180.0 / M_PI;
+  e.gyro_bias_frd_deg_hr = ds::FlipBody(o.gyro_bias_B) * 180.0 / M_PI * 3600.0;
+  e.accel_bias_frd_mgal = ds::FlipBody(o.accel_bias_B) * 1e5;
+  e.pos_std_ned_m = ds::SwapStd(o.pos_std_enu_m);
+  e.vel_std_ned_mps = ds::SwapStd(o.vel_std_enu_mps);
+  e.att_std_deg = ds::SwapStd(o.att_std_rad) * 180.0 / M_PI;
+  return e;
+}
+
+int Usage(const std::string& problem) {
+  std::fprintf(stderr, "navd: %s\nusage: navd --replay LOG [LOG...] --out DIR [--navd-conf FILE]\n",
+               problem.c_str());
+  return 2;
+}
+
+struct ReplayArgs {
+  std::vector<std::string> logs;
+  std::string out_dir, navd_conf;
+};
+
+// the command line; an exit code when it is wrong
+std::optional<int> ParseReplayArgs(int argc, char** argv, ReplayArgs& r) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--replay") continue;
+    if (a == "--out" && i + 1 < argc) {
+      r.out_dir = argv[++i];
+    } else if (a == "--navd-conf" && i + 1 < argc) {
+      r.navd_conf = argv[++i];
+    } else if (!a.empty() && a[0] != '-') {
+      r.logs.push_back(a);
+    } else {
+      return Usage("unknown or incomplete option '" + a + "'");
+    }
+  }
+  if (r.logs.empty() || r.out_dir.empty()) return Usage("--replay needs a LOG and --out DIR");
+  return std::nullopt;
+}
+
+// navd's configuration for the replay: the given navd.conf, or the mode and protocol the logs need
+est::NavdConfig ReplayConfig(const ReplayArgs& r, bool have_imu, bool ubx) {
+  est::NavdConfig cfg;
+  if (!r.navd_conf.empty()) {
+    cfg = est::NavdConfig::FromFile(est::ConfigFile::Load(r.navd_conf));
+  } else {
+    cfg.nav.mode = have_imu ? est::NavMode::kEkf : est::NavMode::kGnssOnly;
+    cfg.gnss_protocol = ubx ? "ubx" : "nmea";
+  }
+  cfg.gnss_device = r.logs.front();  // never opened: the bytes are fed from the logs
+  cfg.gnss_receivers = {};
+  return cfg;
+}
+
+std::string Report(const ReplayArgs& r, const est::NavdConfig& cfg, const Consistency& cons,
+                   const est::NavigatorStats& st, std::uint64_t solutions) {
+  char buf[512];
+  std::string report = "navd replay of " + std::to_string(r.logs.size()) + " log(s), mode " +
+                       est::NavModeName(cfg.mode()) + "\n";
+  report += RateLine("GNSS fixes", cons.fix_t);
+  report += RateLine("IMU samples", cons.imu_t);
+  const double n_fix = static_cast<double>(std::max<std::size_t>(cons.fix_t.size(), 1));
+  std::snprintf(
+      buf, sizeof buf,
+      "reported horizontal sigma mean %.3f m; fix-to-fix innovation NIS (2 dof, "
+      "constant velocity) mean %.2f over %llu pairs\n"
+      "filter: %llu solutions, fused %llu, rejected %llu, resets %llu, mean position "
+      "NIS %.2f (3 when consistent), late fixes %llu, IMU gaps %llu\n",
+      cons.sigma_h_sum / n_fix,
+      cons.nis_cv_n ? cons.nis_cv_sum / static_cast<double>(cons.nis_cv_n) : 0.0,
+      static_cast<unsigned long long>(cons.nis_cv_n), static_cast<unsigned long long>(solutions),
+      static_cast<unsigned long long>(st.gnss_fused),
+      static_cast<unsigned long long>(st.gnss_rejected),
+      static_cast<unsigned long long>(st.gnss_resets), st.mean_nis_pos,
+      static_cast<unsigned long long>(st.gnss_late), static_cast<unsigned long long>(st.imu_gaps));
+  return report + buf;
+}
+
+// feeds the logs' bytes in their recorded order to the decoders and the filter
+int Replay(const ReplayArgs& r) {
+  std::vector<Chunk> chunks;
+  bool ubx = false;
+  for (const std::string& l : r.logs) ReadLog(l, chunks, ubx);
+  std::stable_sort(chunks.begin(), chunks.end(),
+                   [](const Chunk& a, const Chunk& b) { return a.t_ns < b.t_ns; });
+  const bool have_imu =
+      std::any_of(chunks.begin(), chunks.end(), [](const Chunk& c) { return c.imu; });
+  const est::NavdConfig cfg = ReplayConfig(r, have_imu, ubx);
+  est::Navigator nav(cfg.nav);
+  const bool imu_mode = est::UsesImu(cfg.mode());
+  ::mkdir(r.out_dir.c_str(), 0755);
+  ds::KfginsOutputWriter out(r.out_dir);
+  Consistency cons;
+  std::uint64_t solutions = 0;
+  const auto emit = [&] {
+    const est::NavOutput o = nav.Output();
+    if (!o.valid) return;
+    out.Write(EpochOf(o));
+    ++solutions;
+  };
+  GnssReceivers receivers(cfg, [&](const est::GnssSample& g) {
+    nav.Push(g);
+    cons.OnFix(g);
+    if (!imu_mode) emit();
+  });
+  est::drivers::McuImuAdapter adapter;
+  est::drivers::McuFrameDecoder mcu([&](const est::drivers::McuFrame& f) {
+    if (const auto s = adapter.Add(f)) {
+      cons.imu_t.push_back(static_cast<double>(est::ToNs(s->t)) * 1e-9);
+      nav.Push(*s);
+      nav.Update();
+      if (nav.aligned()) emit();
+    }
+  });
+  for (const Chunk& c : chunks) {
+    if (c.imu) {
+      mcu.Feed(c.bytes);
+      continue;
+    }
+    for (std::size_t k = 0; k < c.bytes.size(); k += 256) receivers.Feed(0, c.bytes.substr(k, 256));
+  }
+  out.Close();
+  const std::string report = Report(r, cfg, cons, nav.stats(), solutions);
+  std::fputs(report.c_str(), stdout);
+  std::ofstream(r.out_dir + "/replay_report.txt") << report;
+  return 0;
+}
+
+}  // namespace
+
+int ReplayMain(int argc, char** argv) {
+  ReplayArgs r;
+  if (const auto code = ParseReplayArgs(argc, argv, r)) return *code;
+  try {
+    return Replay(r);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "navd: %s\n", e.what());
+    return 2;
+  }
+}
+
+}  // namespace hil::navd
