@@ -150,7 +150,9 @@ nlohmann::json MachineJson(const DeviceSet& set) {
                       {"load_average", {m.load_1m, m.load_5m, m.load_15m}},
                       {"sched_rt_runtime_us", opt(m.rt_runtime_us)},
                       {"sched_rt_period_us", opt(m.rt_period_us)},
-                      {"sched_fifo_granted", fifo_granted}};
+                      {"sched_fifo_granted", fifo_granted},
+                      {"kernel", m.kernel},
+                      {"preempt", m.preempt.empty() ? "the build's default" : m.preempt}};
   const std::optional<CpuTicks> now = ReadCpuTicks();
   if (set.cpu_at_start && now) {
     const CpuShares s = SharesBetween(*set.cpu_at_start, *now);
