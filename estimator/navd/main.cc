@@ -35,6 +35,7 @@
 #include "hil/estimator/drivers/razor_text_decoder.h"
 #include "hil/estimator/drivers/ubx_decoder.h"
 #include "hil/estimator/navd/config_file.h"
+#include "hil/estimator/navd/input_merge.h"
 #include "hil/estimator/navd/nav_solution.h"
 #include "hil/estimator/navd/navd_config.h"
 #include "hil/estimator/navd/navd_health.h"
@@ -76,7 +77,7 @@ void PrintUsage() {
       "gnss_protocol\n"
       "                  (nmea|ubx), gnss_configure, gnss_rate_hz, imu_device, imu_baud, "
       "imu_format\n"
-      "                  (mcu|razor_text)\n"
+      "                  (mcu|razor_text), merge_window_s\n"
       "                  [imu] source (serial|can), can_interface, source_address, "
       "razor_gnss_latency_s\n"
       "                  [time] leap_seconds\n"
@@ -330,6 +331,44 @@ void PrintRazorStats(const est::drivers::RazorTextDecoder& razor,
                static_cast<unsigned long long>(razor_adapter.stats().imu_gap));
 }
 
+// Every MCU frame with its IMU sample (if any) and the IMU link's counters, into the merge; the
+// time of a frame without a sample is the last sample's.
+struct McuInput {
+  est::drivers::McuImuAdapter adapter;
+  est::GpsTime last_t{};
+  est::MergeItem Item(const est::drivers::McuFrame& f, const est::drivers::McuDecoderStats& st) {
+    est::MergeItem m;
+    m.kind = est::MergeItem::Kind::kImu;
+    m.from_mcu = true;
+    m.frame = f;
+    m.imu = adapter.Add(f);
+    if (m.imu) last_t = m.imu->t;
+    m.t = last_t;
+    m.mcu = st;
+    m.mcu_adapter = adapter.stats();
+    return m;
+  }
+};
+
+// The health object's sources: the decoders' live counters, or with the input merge the counters
+// of the items it released.
+est::HealthSources HealthSourcesOf(const est::InputMerge& merge,
+                                   const hil::navd::GnssReceivers& receivers,
+                                   const est::drivers::McuFrameDecoder& mcu, const McuInput& mcu_in,
+                                   const est::Navigator& nav,
+                                   const hil::navd::CanImuInput* can_imu) {
+  if (merge.enabled()) {
+    const est::MergedCounters& c = merge.counters();
+    return {&c.nmea, &c.ubx, &c.mcu, &c.mcu_adapter, &nav.stats(), can_imu ? &c.j1939 : nullptr};
+  }
+  return {&receivers.nmea_totals(),
+          &receivers.ubx_totals(),
+          &mcu.stats(),
+          &mcu_in.adapter.stats(),
+          &nav.stats(),
+          can_imu ? &can_imu->decoder().stats() : nullptr};
+}
+
 // The daemon proper: the inputs, their decoders and the navigator, until SIGTERM/SIGINT; closes
 // the outputs after a clean stop.
 int Run(const est::NavdConfig& cfg, SolutionOutputs& outputs) {
@@ -344,19 +383,17 @@ int Run(const est::NavdConfig& cfg, SolutionOutputs& outputs) {
   const bool razor_text = !cfg.imu.from_can() && cfg.imu_format == "razor_text";
   std::int64_t gnss_read_ns = 0, imu_read_ns = 0;
   est::drivers::RazorImuAdapter razor_adapter;
-  // GNSS receivers (one, or several in multi_gnss mode): one solution per fix in GNSS-only modes
-  hil::navd::GnssReceivers receivers(cfg, [&](const est::GnssSample& g) {
+  // GNSS-only modes, and IMU modes whose IMU fell silent: one solution per fix
+  const auto use_gnss = [&](const est::GnssSample& g) {
     health.OnGnss(g);
     outputs.can->OnGnss(g);
     if (razor_text) razor_adapter.AddGnssArrival(gnss_read_ns, g.t, cfg.imu.razor_gnss_latency_s);
     nav.Push(g);
     if (imu_mode && !nav.ImuLost()) return;
-    // GNSS-only modes, and IMU modes whose IMU fell silent: one solution per fix
     const est::NavOutput o = nav.Output();
     if (o.valid && o.t != outputs.last_emitted) emit(o);
-  });
+  };
   const est::Nanoseconds period{std::llround(1e9 / cfg.output_rate_hz)};
-  est::drivers::McuImuAdapter mcu_adapter;
   const auto on_imu = [&](const est::ImuSample& s) {
     nav.Push(s);
     if (!imu_mode) return;
@@ -371,19 +408,40 @@ int Run(const est::NavdConfig& cfg, SolutionOutputs& outputs) {
     if (o.valid && o.t != last_emitted)
       emit(o);  // (a fix stands in for the filter after an IMU loss)
   };
-  est::drivers::McuFrameDecoder mcu([&](const est::drivers::McuFrame& f) {
-    health.OnMcuFrame(f);
-    if (const auto s = mcu_adapter.Add(f)) on_imu(*s);
+  // every decoded input, in device-time order with [input] merge_window_s, else as it is read
+  est::InputMerge merge(razor_text ? est::Nanoseconds{0} : cfg.merge_window, 2048,
+                        [&](const est::MergeItem& m) {
+                          if (m.kind == est::MergeItem::Kind::kGnss) return use_gnss(m.gnss);
+                          if (m.from_mcu) health.OnMcuFrame(m.frame);
+                          if (m.imu) on_imu(*m.imu);
+                        });
+  hil::navd::GnssReceivers receivers(cfg, [&](const est::GnssSample& g) {
+    est::MergeItem m;
+    m.kind = est::MergeItem::Kind::kGnss;
+    m.t = g.t;
+    m.link = g.antenna;
+    m.gnss = g;
+    if (merge.enabled()) m.nmea = receivers.nmea_stats(), m.ubx = receivers.ubx_stats();
+    merge.Add(std::move(m));
   });
+  McuInput mcu_in;
+  est::drivers::McuFrameDecoder mcu(
+      [&](const est::drivers::McuFrame& f) { merge.Add(mcu_in.Item(f, mcu.stats())); });
   est::drivers::RazorTextDecoder razor([&](const est::drivers::RazorTextSample& line) {
     if (const auto s = razor_adapter.Add(line, imu_read_ns)) on_imu(*s);
   });
   std::unique_ptr<hil::navd::CanImuInput> can_imu;
   if (!OpenCanImu(cfg, can_imu)) return 2;
+  const auto on_can_imu = [&](const est::ImuSample& s) {
+    est::MergeItem m;
+    m.kind = est::MergeItem::Kind::kImu;
+    m.t = s.t;
+    m.imu = s;
+    m.j1939 = can_imu->decoder().stats();
+    merge.Add(std::move(m));
+  };
 
-  health.set_sources({&receivers.nmea_totals(), &receivers.ubx_totals(), &mcu.stats(),
-                      &mcu_adapter.stats(), &nav.stats(),
-                      can_imu ? &can_imu->decoder().stats() : nullptr});
+  health.set_sources(HealthSourcesOf(merge, receivers, mcu, mcu_in, nav, can_imu.get()));
   // every input device with what its bytes are fed to
   hil::navd::SerialDevice imu(cfg.imu_device, cfg.imu_baud);
   std::vector<SerialInput> inputs;
@@ -400,7 +458,8 @@ int Run(const est::NavdConfig& cfg, SolutionOutputs& outputs) {
     else
       mcu.Feed(b);
   });
-  PollInputs(inputs, can_imu.get(), receivers, on_imu);
+  PollInputs(inputs, can_imu.get(), receivers, on_can_imu);
+  merge.ReleaseAll();  // what the merge still holds goes on (and out) before navd stops
   PrintStopStats(receivers, mcu, nav, outputs);
   if (razor_text) PrintRazorStats(razor, razor_adapter);
   if (can_imu) hil::navd::PrintCanImuStats(*can_imu, stderr);

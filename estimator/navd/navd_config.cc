@@ -96,6 +96,8 @@ bool ReadInputKey(const ConfigFile& f, const ConfigEntry& e, NavdConfig& c) {
     c.gnss_configure = e.value == "true";
   } else if (k == "gnss_rate_hz")
     c.gnss_rate_hz = ToDouble(f, e, 0.0, 10.0);
+  else if (k == "merge_window_s")
+    c.merge_window = TruncatedNs(ToDouble(f, e, 0.0, 10.0));
   else if (k == "imu_device")
     c.imu_device = e.value;
   else if (k == "imu_baud")

@@ -1,5 +1,6 @@
 #include "hil/harness/run/machine_load.h"
 
+#include <sys/utsname.h>
 #include <unistd.h>
 
 #include <fstream>
@@ -62,6 +63,17 @@ MachineFigures ReadMachineFigures() {
   load >> m.load_1m >> m.load_5m >> m.load_15m;
   m.rt_runtime_us = ReadLong("/proc/sys/kernel/sched_rt_runtime_us");
   m.rt_period_us = ReadLong("/proc/sys/kernel/sched_rt_period_us");
+  utsname u{};
+  if (uname(&u) == 0) m.kernel = std::string(u.release) + " " + u.version;
+  std::string preempt = ReadText("/sys/kernel/debug/sched/preempt");
+  if (preempt.empty()) {
+    std::istringstream cmdline(ReadText("/proc/cmdline"));
+    for (std::string word; cmdline >> word;) {
+      if (word.rfind("preempt=", 0) == 0) preempt = word;
+    }
+  }
+  while (!preempt.empty() && (preempt.back() == '\n' || preempt.back() == ' ')) preempt.pop_back();
+  m.preempt = preempt;
   return m;
 }
 

@@ -15,6 +15,9 @@ constexpr double kDrainQuietS = 0.5;  // estimator output quiet this long after 
 // virtual mode: the most bytes one link may hold unread by the host (the order across links is
 // VirtualGate's: before one link's bytes, the others are read to the last byte)
 constexpr std::size_t kLinkBacklogBytes = 2048;
+// ... and when the host merges its inputs by device time (the links run apart by up to half its
+// merge window, RunContext::navd_merge_window_s): about 2 s of IMU frames at 100 Hz
+constexpr std::size_t kSkewLinkBacklogBytes = 16384;
 // virtual mode's drain: the estimator's whole process group asleep, with nothing left to read,
 // in this many consecutive checks this far apart, has finished its output
 constexpr int kIdleChecks = 3;
@@ -32,12 +35,13 @@ void MakeGate(RunContext& ctx, RunWatchdog& watchdog) {
         read_by_host.push_back(ep.get());
     }
   }
+  const Duration skew = TimeFromSeconds(ctx.navd_merge_window_s / 2) - Time{};
   ctx.gate.emplace(
-      read_by_host, kLinkBacklogBytes,
+      read_by_host, skew > Duration{0} ? kSkewLinkBacklogBytes : kLinkBacklogBytes,
       [&watchdog](std::size_t unread, bool new_wait) {
         return watchdog.OnGateWait(unread, new_wait);
       },
-      ctx.estimator->pid());
+      ctx.estimator->pid(), skew);
   ctx.scheduler->set_gate(&*ctx.gate);
 }
 

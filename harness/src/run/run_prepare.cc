@@ -18,6 +18,10 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* kNavLink = "ttyNAV";  // pty the estimator writes NMEA into (output nmea_pty)
+// Virtual mode: navd's [input] merge_window_s. The gate lets its links run apart by half of it,
+// which leaves the other half for a GNSS epoch's bytes to be made after its time of validity
+// (RTK NMEA at 115200 Bd: tens of ms; a NEO-5M's epoch at 9600 Bd: about 0.5 s).
+constexpr double kNavdMergeWindowS = 2.0;
 
 // The links the estimator reads: those named in its command ({ttyGPS}) or, for navd, in navd.conf.
 std::set<std::string> HostLinks(const Scenario& s, const std::string& raw_command,
@@ -104,8 +108,17 @@ void Prepare(RunContext& ctx) {
   MakeRunFolder(ctx);
   StartReport(ctx);
   ctx.set = BuildDevices(scenario, ctx.seed, ctx.dir);
-  WriteNavdConfig(ctx.dir + "/navd.conf", scenario, ctx.dir + "/" + scenario.gnss.link);
   const std::string raw_command = opt.estimator_command.value_or(scenario.estimator.command);
+  // virtual mode: navd merges its inputs by device time, so the gate may hand the links over in
+  // batches (virtual_gate.h, input_merge.h); a scenario's own merge_window_s is kept as it is
+  const double own_window_s = NavdMergeWindowS(scenario);
+  const bool navd_virtual = opt.mode == RunMode::kVirtual && !opt.emulate_only &&
+                            raw_command.find("{navd}") != std::string::npos;
+  ctx.navd_merge_window_s =
+      own_window_s >= 0 ? own_window_s : (navd_virtual ? kNavdMergeWindowS : 0.0);
+  if (!navd_virtual) ctx.navd_merge_window_s = 0;
+  WriteNavdConfig(ctx.dir + "/navd.conf", scenario, ctx.dir + "/" + scenario.gnss.link,
+                  navd_virtual && own_window_s < 0 ? kNavdMergeWindowS : 0.0);
   const std::string command = EstimatorCommand(ctx, raw_command);
   ctx.host_links = HostLinks(scenario, raw_command, ctx.set);
   ctx.report.estimator_command = opt.emulate_only ? "" : command;

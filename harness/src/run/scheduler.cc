@@ -55,7 +55,7 @@ void Scheduler::Dispatch(std::size_t d, DeviceOutput& out) {
     }
     for (const SerialMessage& c : carried) {
       if (ep.Queue(c)) {
-        if (!pacer_) writes_.Add(ep, c.bytes.size());
+        if (!pacer_) writes_.Add(ep, c.bytes.size(), c.t_ready);
         continue;
       }
       if (!recorder_) continue;

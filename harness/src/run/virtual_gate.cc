@@ -34,8 +34,9 @@ void SleepNs(long ns) {
 }  // namespace
 
 VirtualGate::VirtualGate(std::vector<SerialEndpoint*> host_links,
-                         std::size_t max_link_backlog_bytes, WaitStep on_wait, int host_pgid)
-    : max_backlog_(max_link_backlog_bytes), on_wait_(std::move(on_wait)) {
+                         std::size_t max_link_backlog_bytes, WaitStep on_wait, int host_pgid,
+                         Duration max_skew)
+    : max_backlog_(max_link_backlog_bytes), on_wait_(std::move(on_wait)), max_skew_(max_skew) {
   for (const SerialEndpoint* ep : host_links) links_.push_back({ep, 0});
   if (host_pgid > 0) host_.emplace(host_pgid);
   host_pgid_ = host_pgid;
@@ -78,11 +79,35 @@ bool VirtualGate::Wait(const std::function<bool()>& done, const Link* except, co
   }
 }
 
-bool VirtualGate::BeforeWrite(const SerialEndpoint& ep, std::size_t bytes) {
+bool VirtualGate::OthersReadUpTo(const Link* self, Time t) {
+  for (Link& l : links_) {
+    if (&l == self) continue;
+    if (l.runs.empty() || l.runs.front().second > t) continue;
+    // ask the kernel how far the host has read, and forget the runs it has read entirely
+    l.unread_bound = l.ep->PendingToHost();
+    const std::size_t read = l.written - std::min(l.unread_bound, l.written);
+    while (!l.runs.empty() && l.runs.front().first <= read) l.runs.pop_front();
+    if (!l.runs.empty() && l.runs.front().second <= t) return false;
+  }
+  return true;
+}
+
+void VirtualGate::Counted(Link& self, std::size_t bytes, Time t_first) {
+  self.unread_bound += bytes;
+  if (max_skew_ <= Duration{0}) return;
+  self.written += bytes;
+  self.runs.emplace_back(self.written, t_first);
+}
+
+bool VirtualGate::BeforeWrite(const SerialEndpoint& ep, std::size_t bytes, Time t_first,
+                              Time t_last) {
   Link* self = Find(ep);
   if (!self) return true;  // a link the host does not read: no order to keep
-  // every other link read to its last byte
-  const bool others_read = Wait([&] { return Refresh(self, nullptr) == 0; }, self, nullptr);
+  // every other link read to its last byte (or, with a max_skew, up to t_last − max_skew)
+  const bool others_read =
+      max_skew_ > Duration{0}
+          ? Wait([&] { return OthersReadUpTo(self, t_last - max_skew_); }, self, nullptr)
+          : Wait([&] { return Refresh(self, nullptr) == 0; }, self, nullptr);
   if (!others_read) return false;
   // this link's backlog below the bound (a message longer than the bound waits for an empty link)
   if (self->unread_bound + bytes > max_backlog_) {
@@ -92,19 +117,23 @@ bool VirtualGate::BeforeWrite(const SerialEndpoint& ep, std::size_t bytes) {
     };
     if (!Wait(room, nullptr, self)) return false;
   }
-  self->unread_bound += bytes;
+  Counted(*self, bytes, t_first);
   return true;
 }
 
-bool VirtualGate::TryWrite(const SerialEndpoint& ep, std::size_t bytes) {
+bool VirtualGate::TryWrite(const SerialEndpoint& ep, std::size_t bytes, Time t_first, Time t_last) {
   Link* self = Find(ep);
   if (!self) return true;
-  if (Refresh(self, nullptr) != 0) return false;
+  if (max_skew_ > Duration{0}) {
+    if (!OthersReadUpTo(self, t_last - max_skew_)) return false;
+  } else if (Refresh(self, nullptr) != 0) {
+    return false;
+  }
   if (self->unread_bound + bytes > max_backlog_) {
     Refresh(nullptr, self);
     if (self->unread_bound != 0 && self->unread_bound + bytes > max_backlog_) return false;
   }
-  self->unread_bound += bytes;
+  Counted(*self, bytes, t_first);
   return true;
 }
 
@@ -162,25 +191,34 @@ bool VirtualGate::WaitHostIdle() {
   return Wait(idle, nullptr, nullptr);
 }
 
-void VirtualWriteQueue::Add(SerialEndpoint& ep, std::size_t bytes) {
+void VirtualWriteQueue::Add(SerialEndpoint& ep, std::size_t bytes, Time t) {
   if (!fifo_.empty() && fifo_.back().ep == &ep) {
     ++fifo_.back().chunks;
     fifo_.back().bytes += bytes;
+    fifo_.back().t_last = std::max(fifo_.back().t_last, t);
   } else {
-    fifo_.push_back({&ep, 1, bytes});
+    fifo_.push_back({&ep, 1, bytes, t, t});
   }
   deferred_ += bytes;
 }
 
 bool VirtualWriteQueue::Pump(bool all, bool hold_tail) {
+  // Held back: the last batch, which may still grow; with a max_skew (the host orders its inputs
+  // itself) every batch until kBatchBytes wait, and then all go: fewer, larger hand-overs.
+  const bool skew = gate_ && gate_->max_skew() > Duration{0};
+  const bool flush =
+      !hold_tail || all || deferred_ > max_deferred_ || (skew && deferred_ >= kBatchBytes);
+  if (skew && flush && !fifo_.empty() &&
+      fifo_.back().t_last - fifo_.front().t_first <= gate_->max_skew())
+    return PumpPerLink();
   while (!fifo_.empty()) {
     const Batch b = fifo_.front();
     const bool forced = all || deferred_ > max_deferred_;
-    if (hold_tail && !forced && fifo_.size() == 1 && b.bytes < kBatchBytes) break;
+    if (!flush && (skew || fifo_.size() == 1) && b.bytes < kBatchBytes) break;
     if (gate_) {
       if (forced) {
-        if (!gate_->BeforeWrite(*b.ep, b.bytes)) return false;
-      } else if (!gate_->TryWrite(*b.ep, b.bytes)) {
+        if (!gate_->BeforeWrite(*b.ep, b.bytes, b.t_first, b.t_last)) return false;
+      } else if (!gate_->TryWrite(*b.ep, b.bytes, b.t_first, b.t_last)) {
         break;
       }
     }
@@ -188,6 +226,30 @@ bool VirtualWriteQueue::Pump(bool all, bool hold_tail) {
     deferred_ -= b.bytes;
     fifo_.pop_front();
   }
+  return true;
+}
+
+bool VirtualWriteQueue::PumpPerLink() {
+  // everything queued lies within max_skew: the links may be written in any order, each link's
+  // runs in one write (the gate still waits for what the host must have read before)
+  std::vector<Batch> per_link;
+  for (const Batch& b : fifo_) {
+    auto it = std::find_if(per_link.begin(), per_link.end(),
+                           [&](const Batch& p) { return p.ep == b.ep; });
+    if (it == per_link.end()) {
+      per_link.push_back(b);
+    } else {
+      it->chunks += b.chunks;
+      it->bytes += b.bytes;
+      it->t_last = std::max(it->t_last, b.t_last);
+    }
+  }
+  for (const Batch& b : per_link) {
+    if (!gate_->BeforeWrite(*b.ep, b.bytes, b.t_first, b.t_last)) return false;
+    b.ep->WriteChunks(b.chunks);
+  }
+  fifo_.clear();
+  deferred_ = 0;
   return true;
 }
 

@@ -39,6 +39,7 @@ TEST(MachineLoadTest, ThisMachinesFigures) {
   const MachineFigures m = ReadMachineFigures();
   EXPECT_GE(m.cpus_online, 1);
   EXPECT_GE(m.load_1m, 0.0);
+  EXPECT_FALSE(m.kernel.empty());
   EXPECT_TRUE(ReadCpuTicks());
 }
 

@@ -15,8 +15,12 @@
 
 namespace hil::harness {
 
+/// The scenario's own [input] merge_window_s for navd (estimator.navd_input), -1 when it sets none.
+double NavdMergeWindowS(const Scenario& s);
 /// The navd configuration for this scenario (input device, leap seconds, mode, JSON output).
-void WriteNavdConfig(const std::string& path, const Scenario& s, const std::string& gnss_device);
+/// `merge_window_s` > 0: [input] merge_window_s (unless the scenario's navd_input sets it).
+void WriteNavdConfig(const std::string& path, const Scenario& s, const std::string& gnss_device,
+                     double merge_window_s = 0);
 
 /// Truth at 10 Hz as CSV; returns the horizontal track (t, east, north) for the plots.
 void WriteTruthCsv(const Scenario& s, const std::string& path, std::vector<double>& t_s,

@@ -39,6 +39,11 @@ struct MachineFigures {
   double load_1m = 0, load_5m = 0, load_15m = 0;
   /// /proc/sys/kernel/sched_rt_runtime_us and _period_us (-1: unlimited; nullopt: unreadable)
   std::optional<long> rt_runtime_us, rt_period_us;
+  /// uname's release and version (the version names the preemption build, e.g. PREEMPT_DYNAMIC)
+  std::string kernel;
+  /// The preemption model in use: debugfs sched/preempt when readable, else a preempt= on the
+  /// kernel command line, else empty (the build's default: CONFIG_PREEMPT_* in /proc/config.gz)
+  std::string preempt;
 };
 MachineFigures ReadMachineFigures();
 

@@ -51,6 +51,9 @@ struct RunContext {
   DeviceSet set;
   std::unique_ptr<link::PtyPort> nav_pty;  ///< output nmea_pty: the pty the estimator writes
   std::set<std::string> host_links;        ///< the links the estimator reads (none named: all)
+  /// navd's [input] merge_window_s as navd.conf sets it (0: off; virtual mode sets it for navd,
+  /// and the gate then lets the links run apart by half of it: kNavdMergeWindowS)
+  double navd_merge_window_s = 0;
   std::ofstream fixes_csv;
   std::optional<EstimatorProcess> estimator;
   std::int64_t estimator_start_ns = 0;

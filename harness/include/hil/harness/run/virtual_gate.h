@@ -39,15 +39,24 @@ class VirtualGate {
 
   /// `host_pgid`: the host's process group, whose sleep WaitHostIdle() waits for (≤ 0: none,
   /// WaitHostIdle() then waits only for the bytes to be read).
+  /// `max_skew`: 0, the other links read to their last byte before bytes go to one link; above 0
+  /// (a host that orders its inputs by device time itself, e.g. navd's [input] merge_window_s),
+  /// only their bytes made up to `max_skew` before the last of these bytes (see BeforeWrite).
   VirtualGate(std::vector<SerialEndpoint*> host_links, std::size_t max_link_backlog_bytes,
-              WaitStep on_wait, int host_pgid = -1);
+              WaitStep on_wait, int host_pgid = -1, Duration max_skew = Duration{0});
 
   /// Before `bytes` bytes are written to `ep`: waits until the host has read the other host links
   /// and `ep`'s backlog leaves room. Links the host does not read pass at once. False: the wait
-  /// was given up (the run stops).
-  bool BeforeWrite(const SerialEndpoint& ep, std::size_t bytes);
+  /// was given up (the run stops). With a max_skew, `t_first` and `t_last` are the emulated
+  /// times the first and the last of these bytes were made at, and of the other links only the
+  /// bytes made up to t_last − max_skew must have been read (a run of bytes counts as made at
+  /// its first byte's time until all of it is read).
+  bool BeforeWrite(const SerialEndpoint& ep, std::size_t bytes, Time t_first = Time{},
+                   Time t_last = Time{});
   /// BeforeWrite without the wait: true (and the bytes counted) when they may go now.
-  bool TryWrite(const SerialEndpoint& ep, std::size_t bytes);
+  bool TryWrite(const SerialEndpoint& ep, std::size_t bytes, Time t_first = Time{},
+                Time t_last = Time{});
+  Duration max_skew() const { return max_skew_; }
   /// Waits until the host has read every byte of every link it reads.
   bool WaitAllRead();
   /// Bytes not yet read on the host links (exact when 0), for the drain and hang reports.
@@ -70,7 +79,14 @@ class VirtualGate {
     const SerialEndpoint* ep;
     std::size_t
         unread_bound;  // ≥ the bytes unread: last PendingToHost() plus the bytes written since
+    // with a max_skew: the bytes written so far, and the runs not known to be read yet (the
+    // byte count at their end, the time of their first byte)
+    std::size_t written = 0;
+    std::deque<std::pair<std::size_t, Time>> runs{};
   };
+  /// With a max_skew: whether the host has read every other link's bytes made up to `t`.
+  bool OthersReadUpTo(const Link* self, Time t);
+  void Counted(Link& self, std::size_t bytes, Time t_first);
   Link* Find(const SerialEndpoint& ep);
   /// Unread bytes on the links selected (refreshing their bounds); `except` is skipped, and a
   /// link known to be read (bound 0) is not asked again unless `ask_all`.
@@ -83,6 +99,7 @@ class VirtualGate {
   /// Whether a process of the host's group has every host link open.
   bool HostHoldsLinks() const;
 
+  Duration max_skew_{0};
   std::optional<GroupSleepProbe> host_;
   int host_pgid_ = -1;
   bool busy_host_ = false;
@@ -102,8 +119,9 @@ class VirtualWriteQueue {
  public:
   VirtualWriteQueue(VirtualGate* gate, std::size_t max_deferred_bytes)
       : gate_(gate), max_deferred_(max_deferred_bytes) {}
-  /// One chunk of `bytes` bytes was queued on `ep` (SerialEndpoint::Queue returned true).
-  void Add(SerialEndpoint& ep, std::size_t bytes);
+  /// One chunk of `bytes` bytes made at emulated time `t` was queued on `ep`
+  /// (SerialEndpoint::Queue returned true).
+  void Add(SerialEndpoint& ep, std::size_t bytes, Time t = Time{});
   /// Writes what may go; with `all`, waits for the host until everything is written. False: the
   /// gate gave up a wait (the run stops; the rest stays unsent). `hold_tail`: the last batch
   /// waits for the next chunk of another link (or kBatchBytes) unless `all`.
@@ -117,7 +135,10 @@ class VirtualWriteQueue {
     SerialEndpoint* ep;
     std::size_t chunks;
     std::size_t bytes;
+    Time t_first, t_last;
   };
+  /// With a max_skew, when all that is queued lies within it: every link's runs in one write.
+  bool PumpPerLink();
   VirtualGate* gate_;
   std::size_t max_deferred_;
   std::deque<Batch> fifo_;

@@ -43,6 +43,9 @@ struct NavdConfig {
   int imu_baud = 57600;
   std::string imu_format =
       "mcu";  ///< mcu (binary frame protocol v1) or razor_text (Razor v13 stock lines)
+  /// Inputs to the filter in device-time order, held this long behind the newest IMU sample
+  /// (input_merge.h); 0: as they are read.
+  Nanoseconds merge_window{0};
   // [imu]: serial or CAN (navd_imu_config.h)
   NavdImuConfig imu;
   // [uwb]: navd's UWB mode when uwb.device is set (navd_uwb_config.h)
