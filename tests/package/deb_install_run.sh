@@ -29,8 +29,8 @@ grep -qx "ExecStart=/usr/bin/navd --config /etc/navd/navd.conf" "$root/usr/lib/s
 # the installed hil, default scenario (run folder in the scratch root)
 "$root/usr/bin/hil" run --out "$root/run"
 grep -q '"pass": *true' "$root/run/report.json" || { echo "deb_install_run: run did not pass" >&2; exit 1; }
-grep -q "$root/usr/bin/navd" "$root/run/report.json" "$root/run/navd.conf" "$root/run"/*.json 2>/dev/null ||
-  echo "deb_install_run: (the report does not name the navd path)"
+grep -q "\"command\": *\"$root/usr/bin/navd --config" "$root/run/report.json" ||
+  { echo "deb_install_run: the run did not use the installed navd" >&2; exit 1; }
 
 "${dpkg_root[@]}" -r hil navd
 for f in usr/bin/hil usr/bin/navd usr/share/hil; do
