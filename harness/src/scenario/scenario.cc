@@ -167,6 +167,12 @@ std::vector<std::string> ScenarioLibraryDirs() {
     }
   }
   dirs.emplace_back(HIL_SCENARIO_LIB_DIR);
+  // an installed hil (cmake --install, the Debian package): PREFIX/share/hil/scenarios/lib
+  std::error_code ec;
+  const std::filesystem::path installed =
+      std::filesystem::read_symlink("/proc/self/exe", ec).parent_path().parent_path() /
+      "share/hil/scenarios/lib";
+  if (!ec && std::filesystem::is_directory(installed, ec)) dirs.push_back(installed.string());
   return dirs;
 }
 

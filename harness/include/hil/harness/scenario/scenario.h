@@ -199,8 +199,8 @@ struct Scenario {
 /// replace the top-level keys of the same name first (`hil run --short`, `hil suite --short`).
 /// @throws ScenarioError.
 Scenario LoadScenario(const std::string& path, bool short_form = false);
-/// Where included scenario pieces live: $HIL_SCENARIO_LIB (colon-separated) and the source tree's
-/// vectors/scenarios/lib.
+/// Where included scenario pieces live: $HIL_SCENARIO_LIB (colon-separated), the source tree's
+/// vectors/scenarios/lib, and for an installed hil PREFIX/share/hil/scenarios/lib beside its bin/.
 std::vector<std::string> ScenarioLibraryDirs();
 /// Loads the embedded default scenario (vectors/scenarios/default.yaml, compiled in).
 Scenario LoadDefaultScenario();
