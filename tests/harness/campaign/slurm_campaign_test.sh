@@ -9,6 +9,7 @@ set -uo pipefail
 hil=${1:?usage: slurm_campaign_test.sh HIL SOURCE_DIR}
 src=${2:?usage: slurm_campaign_test.sh HIL SOURCE_DIR}
 work=$(mktemp -d /tmp/hil_slurm_test_XXXXXX)
+chmod 755 "$work"  # munged wants every folder above its socket executable by all
 cluster=$work/cluster
 conf=$cluster/etc/slurm.conf
 status=0
@@ -19,7 +20,7 @@ leftovers() {  # processes that carry this cluster's SLURM_CONF (daemons, jobs, 
   local p
   for p in /proc/[0-9]*; do
     [ "${p#/proc/}" = "$$" ] && continue
-    tr '\0' '\n' <"$p/environ" 2>/dev/null | grep -qx "SLURM_CONF=$conf" && echo "${p#/proc/}"
+    { tr '\0' '\n' <"$p/environ"; } 2>/dev/null | grep -qx "SLURM_CONF=$conf" && echo "${p#/proc/}"
   done
 }
 
