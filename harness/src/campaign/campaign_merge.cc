@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "hil/harness/campaign/campaign_report.h"
+#include "hil/harness/campaign/campaign_slurm.h"
 #include "hil/harness/campaign/campaign_summary.h"
 
 namespace hil::harness {
@@ -50,7 +51,13 @@ void ShardState(const CampaignFolder& f, ShardProgress& s) {
     s.state = gone ? "killed" : "running";
     s.detail = "started on " + st.value("host", std::string("?")) + " as pid " +
                std::to_string(pid) + (gone ? ", which is gone" : "");
-    if (st.contains("slurm_job")) s.detail += ", Slurm job " + st.value("slurm_job", "");
+    if (st.contains("slurm_job")) {
+      // on another node the pid says nothing: ask Slurm whether the task still runs
+      const std::string job = st.value("slurm_job", "");
+      const std::string state = SlurmJobState(job);
+      s.detail += ", Slurm job " + job + (state.empty() ? "" : " " + state);
+      if (!state.empty() && state != "RUNNING" && state != "COMPLETING") s.state = "killed";
+    }
   }
   if (has_log) s.detail += (s.detail.empty() ? "log " : "; log ") + log;
 }

@@ -117,12 +117,18 @@ SlurmSubmission SubmitSlurm(const CampaignFolder& f, const std::vector<int>& sha
   return s;
 }
 
+std::string SlurmJobState(const std::string& job) {
+  const Output o = Capture("scontrol show job -o " + ShellQuote(job));
+  if (o.status == 127 || o.status < 0) return "";
+  const std::size_t at = o.text.find("JobState=");
+  if (o.status != 0 || at == std::string::npos) return "GONE";
+  return o.text.substr(at + 9, o.text.find(' ', at) - at - 9);
+}
+
 std::string WaitForSlurmJob(const std::string& job, double poll_s) {
   for (;;) {
-    const Output o = Capture("scontrol show job -o " + ShellQuote(job));
-    const std::size_t at = o.text.find("JobState=");
-    if (o.status != 0 || at == std::string::npos) return "GONE";
-    const std::string state = o.text.substr(at + 9, o.text.find(' ', at) - at - 9);
+    const std::string state = SlurmJobState(job);
+    if (state.empty()) return "GONE";
     if (state != "PENDING" && state != "RUNNING" && state != "CONFIGURING" &&
         state != "COMPLETING" && state != "SUSPENDED" && state != "REQUEUED")
       return state;

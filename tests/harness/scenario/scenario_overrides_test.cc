@@ -17,7 +17,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string Scenario(const std::string& text) {
+std::string ScenarioFile(const std::string& text) {
   const fs::path dir = fs::temp_directory_path() / ("hil_overrides_" + std::to_string(getpid()));
   fs::create_directories(dir);
   const std::string path = (dir / "s.yaml").string();
@@ -47,7 +47,7 @@ TEST(ScenarioOverridesTest, SplitsPathsAndParsesAssignments) {
 }
 
 TEST(ScenarioOverridesTest, SetsMappingKeysAndListElements) {
-  const std::string path = Scenario(kBase);
+  const std::string path = ScenarioFile(kBase);
   const Scenario s = LoadScenario(
       path, false, {{"gnss.baud", "38400"}, {"criteria[0].max", "0.5"}, {"duration_s", "120"}});
   EXPECT_EQ(s.gnss.baud, 38400);
@@ -58,7 +58,7 @@ TEST(ScenarioOverridesTest, SetsMappingKeysAndListElements) {
 }
 
 TEST(ScenarioOverridesTest, BadOverridesNameTheField) {
-  const std::string path = Scenario(kBase);
+  const std::string path = ScenarioFile(kBase);
   const auto expect = [&](const ScenarioOverride& o, const std::string& fragment) {
     try {
       LoadScenario(path, false, {o});

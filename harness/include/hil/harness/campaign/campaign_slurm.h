@@ -44,6 +44,10 @@ SlurmSubmission SubmitSlurm(const CampaignFolder& folder, const std::vector<int>
 /// ("COMPLETED", "FAILED", "CANCELLED", …; "GONE" when Slurm no longer knows it).
 std::string WaitForSlurmJob(const std::string& job, double poll_s = 1.0);
 
+/// The job's JobState now ("RUNNING", "CANCELLED", …), "GONE" when Slurm no longer knows it, ""
+/// when scontrol cannot be run here.
+std::string SlurmJobState(const std::string& job);
+
 /// `s` quoted for a POSIX shell.
 std::string ShellQuote(const std::string& s);
 
