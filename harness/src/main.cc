@@ -21,11 +21,13 @@ int main(int argc, char** argv) {
       "  hil suite vectors/scenarios -j 2 --seeds 3     papers' figures beside ours: "
       "runs/suite-scenarios/report.md\n"
       "  hil replay runs/x/captures/ttyGPS.cap      replay a capture into runs/replay/ttyGPS\n"
+      "  hil campaign mc.yaml --local -j 2          scenarios x seeds x sweeps, merged report\n"
+      "  hil campaign mc.yaml --slurm --wait        the same as a Slurm job array\n"
       "Exit codes: 0 every criterion passed (validate: conforms), 1 one failed, 2 bad input.");
   const std::vector<hil::cli::Subcommand> commands{
-      hil::cli::AddRun(app),   hil::cli::AddEmulate(app), hil::cli::AddValidate(app),
-      hil::cli::AddSuite(app), hil::cli::AddReplay(app),  hil::cli::AddDataset(app),
-      hil::cli::AddExport(app)};
+      hil::cli::AddRun(app),    hil::cli::AddEmulate(app), hil::cli::AddValidate(app),
+      hil::cli::AddSuite(app),  hil::cli::AddReplay(app),  hil::cli::AddDataset(app),
+      hil::cli::AddExport(app), hil::cli::AddCampaign(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -21,10 +21,16 @@ std::string SiblingExecutable(const std::string& name) {
   return fs::exists(candidate, ec) ? candidate.string() : name;  // else rely on PATH
 }
 
-std::optional<harness::Scenario> LoadOrReport(const std::string& path, bool short_form) {
+std::optional<harness::Scenario> LoadOrReport(
+    const std::string& path, bool short_form,
+    const std::vector<harness::ScenarioOverride>& overrides) {
   try {
+    if (path.empty() && !overrides.empty()) {
+      std::fprintf(stderr, "hil: --set needs a scenario file\n");
+      return std::nullopt;
+    }
     return path.empty() ? hil::harness::LoadDefaultScenario()
-                        : hil::harness::LoadScenario(path, short_form);
+                        : hil::harness::LoadScenario(path, short_form, overrides);
   } catch (const hil::harness::ScenarioError& e) {
     std::fprintf(stderr, "hil: invalid scenario: %s\n", e.what());
     return std::nullopt;

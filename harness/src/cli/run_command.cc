@@ -3,6 +3,7 @@
 
 #include <cstdio>
 #include <memory>
+#include <stdexcept>
 
 #include "hil/harness/cli/commands.h"
 #include "hil/harness/run/run.h"
@@ -72,6 +73,7 @@ struct RunArgs {
   double speed = 1.0, silence_timeout_s = 0;
   CLI::Option *seed_opt = nullptr, *est_opt = nullptr, *speed_opt = nullptr, *silence_opt = nullptr;
   bool no_html = false, short_form = false;
+  std::vector<std::string> sets;
 };
 
 void Declare(CLI::App& app, RunArgs& a) {
@@ -100,10 +102,20 @@ void Declare(CLI::App& app, RunArgs& a) {
   a.cmd->add_flag("--no-html", a.no_html, "skip report.html and the plots");
   a.cmd->add_flag("--short", a.short_form,
                   "the scenario's quick form: its `short:` keys replace the top-level ones");
+  a.cmd->add_option("--set", a.sets,
+                    "FIELD=VALUE: set one scenario field (dotted path, [i] for list elements, a "
+                    "YAML value), e.g. --set gnss.baud=38400; repeatable");
 }
 
 int Execute(const RunArgs& a) {
-  const auto scenario = LoadOrReport(a.scenario, a.short_form);
+  std::vector<harness::ScenarioOverride> overrides;
+  try {
+    for (const auto& text : a.sets) overrides.push_back(harness::ParseOverride(text));
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "hil: --set: %s\n", e.what());
+    return kExitBadInput;
+  }
+  const auto scenario = LoadOrReport(a.scenario, a.short_form, overrides);
   if (!scenario) return kExitBadInput;
   if (a.mode == "scaled" && !*a.speed_opt) {
     std::fprintf(stderr, "hil: --mode scaled needs --speed (see hil run --help)\n");

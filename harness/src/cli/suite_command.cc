@@ -62,7 +62,6 @@ int Execute(const SuiteArgs& a) {
   if (*a.mode_opt) opt.run_args.insert(opt.run_args.end(), {"--mode", a.mode});
   if (*a.speed_opt) opt.run_args.insert(opt.run_args.end(), {"--speed", std::to_string(a.speed)});
   opt.short_form = a.short_form;
-  opt.run_args.emplace_back("--no-html");
   try {
     if (hil::harness::SuiteScenarios(a.dir).empty()) {
       std::fprintf(stderr, "hil: no scenario files (*.yaml) in %s\n", a.dir.c_str());

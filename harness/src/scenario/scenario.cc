@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "hil/firmware_emu/gnss/gps_time.h"
+#include "hil/harness/scenario/scenario_overrides.h"
 #include "hil/harness/scenario/yaml_reader.h"
 
 #include "scenario_sections.h"
@@ -176,11 +177,13 @@ std::vector<std::string> ScenarioLibraryDirs() {
   return dirs;
 }
 
-Scenario LoadScenario(const std::string& path, bool short_form) {
+Scenario LoadScenario(const std::string& path, bool short_form,
+                      const std::vector<ScenarioOverride>& overrides) {
   YamlReader root = YamlReader::LoadFile(path);
   if (short_form)
     ApplyShortForm(root);  // before the includes: a replaced key is the document's own
   root.ResolveIncludes(std::filesystem::path(path).parent_path().string(), ScenarioLibraryDirs());
+  ApplyOverrides(root, overrides);  // after them: a field an include gave can be set too
   Scenario s = FromReader(root);
   s.short_form = short_form && s.has_short_form;
   return s;

@@ -7,6 +7,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -29,12 +30,15 @@ Subcommand AddSuite(CLI::App& app);     ///< hil suite
 Subcommand AddReplay(CLI::App& app);    ///< hil replay
 Subcommand AddDataset(CLI::App& app);   ///< hil dataset
 Subcommand AddExport(CLI::App& app);    ///< hil export
+Subcommand AddCampaign(CLI::App& app);  ///< hil campaign (and its status, merge)
 
 /// This executable's path ("hil" when /proc cannot tell).
 std::string SelfExecutable();
 /// `name` beside this executable if it is there, else `name` (found on PATH).
 std::string SiblingExecutable(const std::string& name);
 /// The scenario at `path` (empty: the embedded default); an invalid one is reported on stderr.
-std::optional<harness::Scenario> LoadOrReport(const std::string& path, bool short_form = false);
+std::optional<harness::Scenario> LoadOrReport(
+    const std::string& path, bool short_form = false,
+    const std::vector<harness::ScenarioOverride>& overrides = {});
 
 }  // namespace hil::cli

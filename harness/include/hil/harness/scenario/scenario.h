@@ -20,6 +20,7 @@
 #include "hil/firmware_emu/uwb/uwb_tag_device.h"
 #include "hil/harness/faults/fault_timeline.h"
 #include "hil/harness/scenario/estimator_kinds.h"
+#include "hil/harness/scenario/scenario_overrides.h"
 #include "hil/truth/truth_integrator.h"
 
 namespace hil::harness {
@@ -196,9 +197,11 @@ struct Scenario {
 
 /// Loads and validates a scenario file; `include:` files are looked up beside it, then in
 /// ScenarioLibraryDirs(). With `short_form`, the keys of the file's `short:` section (if any)
-/// replace the top-level keys of the same name first (`hil run --short`, `hil suite --short`).
-/// @throws ScenarioError.
-Scenario LoadScenario(const std::string& path, bool short_form = false);
+/// replace the top-level keys of the same name first (`hil run --short`, `hil suite --short`);
+/// then, after the includes, each of `overrides` sets one field (`hil run --set`, a campaign's
+/// sweeps; scenario_overrides.h). @throws ScenarioError.
+Scenario LoadScenario(const std::string& path, bool short_form = false,
+                      const std::vector<ScenarioOverride>& overrides = {});
 /// Where included scenario pieces live: $HIL_SCENARIO_LIB (colon-separated), the source tree's
 /// vectors/scenarios/lib, and for an installed hil PREFIX/share/hil/scenarios/lib beside its bin/.
 std::vector<std::string> ScenarioLibraryDirs();

@@ -1,11 +1,12 @@
 #pragma once
 /// @file
-/// `hil suite DIR`: every scenario file (*.yaml, *.yml) directly in DIR, each run by a child
-/// `hil run` into OUT/<scenario file stem>[-seed<N>], `jobs` at a time, optionally `repeat` times
-/// with seeds seed, seed+1, … (the scenario's own seed when none is given). The results go into
-/// OUT/summary.json, one OUT/junit.xml (a testsuite per run, a testcase per criterion) and
-/// OUT/report.md, which puts each scenario's figures (mean and spread over the seeds) beside the
-/// reference figures of its `paper:` section (suite_report.h).
+/// `hil suite DIR`: every scenario file (*.yaml, *.yml) directly in DIR, optionally `repeat` times
+/// with seeds seed, seed+1, … (the scenario's own seed when none is given), as the simplest
+/// campaign (campaign_plan.h): the same engine runs each as a child `hil run` into
+/// OUT/runs/<scenario file stem>[-seed<N>], `jobs` at a time, records it in OUT/records/ and
+/// merges them into OUT/summary.json, OUT/junit.xml (a testsuite per run, a testcase per
+/// criterion), OUT/report.md, which puts each scenario's figures (mean and spread over the seeds)
+/// beside the reference figures of its `paper:` section (suite_report.h), and OUT/report.html.
 
 #include <cstdint>
 #include <optional>

@@ -33,8 +33,8 @@ nlohmann::json SpreadOf(const std::vector<nlohmann::json>& values);
 nlohmann::json SummariseScenarios(const std::vector<SuiteScenarioInfo>& scenarios,
                                   const nlohmann::json& runs);
 
-/// The Markdown report of a summary (`scenarios`, `passed`, `failed`, `invalid`, `short_form`,
-/// `seeds`, `wall_time_s`).
+/// The Markdown report of a summary (`title`, `scenario_dir`, `scenarios`, `passed`, `failed`,
+/// `invalid`, `short_form`, `seeds`, `runs`). No wall times: the same bytes whoever ran the runs.
 std::string SuiteMarkdown(const nlohmann::json& summary);
 
 }  // namespace hil::harness

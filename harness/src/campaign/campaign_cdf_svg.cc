@@ -1,0 +1,109 @@
+// The CDF across seeds of one metric, one step line per group, as a standalone SVG.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "hil/harness/campaign/campaign_report.h"
+#include "hil/harness/report/report.h"
+
+namespace hil::harness {
+namespace {
+
+using nlohmann::json;
+
+constexpr double kW = 640, kH = 320, kLeft = 60, kRight = 20, kTop = 30, kBottom = 40;
+constexpr const char* kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd",
+                                    "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
+
+struct Line {
+  std::string label;
+  std::vector<double> x;  // sorted
+};
+
+std::vector<Line> Lines(const json& summary, const std::string& metric) {
+  std::vector<Line> lines;
+  for (const auto& g : summary.value("groups", json::array())) {
+    Line l{g.value("id", ""), {}};
+    for (const auto& r : summary.value("runs", json::array())) {
+      if (r.value("group", "") != l.label || !r.contains("metric_table")) continue;
+      const json v = r["metric_table"].value(metric, json(nullptr));
+      if (v.is_number()) l.x.push_back(v.get<double>());
+    }
+    std::sort(l.x.begin(), l.x.end());
+    if (!l.x.empty()) lines.push_back(l);
+  }
+  return lines;
+}
+
+std::string Num(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.2f", v);
+  return b;
+}
+
+std::string Axes(double lo, double hi, const std::string& metric, double height) {
+  const double plot_h = height - kTop - kBottom;
+  std::string s = "<rect x=\"" + Num(kLeft) + "\" y=\"" + Num(kTop) + "\" width=\"" +
+                  Num(kW - kLeft - kRight) + "\" height=\"" + Num(plot_h) +
+                  "\" fill=\"none\" stroke=\"#333\"/>\n";
+  char b[256];
+  for (int i = 0; i <= 4; ++i) {
+    const double fx = kLeft + (kW - kLeft - kRight) * i / 4.0;
+    std::snprintf(
+        b, sizeof b,
+        "<text x=\"%.2f\" y=\"%.2f\" font-size=\"11\" text-anchor=\"middle\">%.3g</text>\n", fx,
+        kTop + plot_h + 15, lo + (hi - lo) * i / 4.0);
+    s += b;
+    const double fy = kTop + plot_h * (1.0 - i / 4.0);
+    std::snprintf(b, sizeof b,
+                  "<text x=\"%.2f\" y=\"%.2f\" font-size=\"11\" text-anchor=\"end\">%.2f</text>\n",
+                  kLeft - 5, fy + 4, i / 4.0);
+    s += b;
+  }
+  s += "<text x=\"" + Num(kW / 2) + "\" y=\"" + Num(kTop + plot_h + 32) +
+       "\" font-size=\"12\" text-anchor=\"middle\">" + XmlEscape(metric) + "</text>\n";
+  s += "<text x=\"" + Num(kW / 2) +
+       "\" y=\"18\" font-size=\"13\" text-anchor=\"middle\">CDF over "
+       "seeds: " +
+       XmlEscape(metric) + "</text>\n";
+  return s;
+}
+
+}  // namespace
+
+std::string CdfSvg(const json& summary, const std::string& metric) {
+  const std::vector<Line> lines = Lines(summary, metric);
+  if (lines.empty()) return "";
+  double lo = lines[0].x.front(), hi = lines[0].x.back();
+  for (const auto& l : lines) lo = std::min(lo, l.x.front()), hi = std::max(hi, l.x.back());
+  const double pad = hi > lo ? 0.05 * (hi - lo) : std::max(0.5, 0.1 * std::abs(lo));
+  lo -= pad, hi += pad;
+  const double height = kH + 14.0 * static_cast<double>(lines.size());
+  const double plot_h = kH - kTop - kBottom, plot_w = kW - kLeft - kRight;
+  const auto px = [&](double x) { return kLeft + plot_w * (x - lo) / (hi - lo); };
+  const auto py = [&](double f) { return kTop + plot_h * (1.0 - f); };
+  std::string s = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + Num(kW) + "\" height=\"" +
+                  Num(height) + "\" viewBox=\"0 0 " + Num(kW) + " " + Num(height) + "\">\n";
+  s += Axes(lo, hi, metric, kH);
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const Line& l = lines[i];
+    const char* colour = kColours[i % (sizeof kColours / sizeof kColours[0])];
+    const double n = static_cast<double>(l.x.size());
+    std::string d = "M" + Num(px(lo)) + "," + Num(py(0));
+    for (std::size_t k = 0; k < l.x.size(); ++k) {
+      d += " H" + Num(px(l.x[k])) + " V" + Num(py(static_cast<double>(k + 1) / n));
+    }
+    d += " H" + Num(px(hi));
+    s += std::string("<path fill=\"none\" stroke=\"") + colour + "\" stroke-width=\"1.5\" d=\"" +
+         d + "\"/>\n";
+    const double ly = kH + 14.0 * static_cast<double>(i);
+    s += std::string("<rect x=\"") + Num(kLeft) + "\" y=\"" + Num(ly - 8) +
+         "\" width=\"12\" height=\"3\" fill=\"" + colour + "\"/><text x=\"" + Num(kLeft + 18) +
+         "\" y=\"" + Num(ly) + "\" font-size=\"11\">" + XmlEscape(l.label) + " (" +
+         std::to_string(l.x.size()) + " runs)</text>\n";
+  }
+  return s + "</svg>\n";
+}
+
+}  // namespace hil::harness

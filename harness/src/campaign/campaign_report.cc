@@ -1,0 +1,220 @@
+#include "hil/harness/campaign/campaign_report.h"
+
+#include <cstdio>
+
+#include "hil/harness/campaign/campaign_stats.h"
+#include "hil/harness/report/report.h"
+#include "hil/harness/suite/suite_report.h"
+
+namespace hil::harness {
+namespace {
+
+using nlohmann::json;
+
+std::string Num(const json& v) {
+  if (!v.is_number()) return "n/a";
+  char b[32];
+  std::snprintf(b, sizeof b, "%.4g", v.get<double>());
+  return b;
+}
+
+std::string Cell(std::string s) {
+  for (char& c : s) {
+    if (c == '|') c = '/';
+    if (c == '\n') c = ' ';
+  }
+  return s;
+}
+
+std::string Joined(const json& ids, std::size_t most) {
+  std::string s;
+  std::size_t k = 0;
+  for (const auto& id : ids) {
+    if (k++ == most) return s + ", … (" + std::to_string(ids.size()) + " in all)";
+    s += (s.empty() ? "" : ", ") + id.get<std::string>();
+  }
+  return s.empty() ? "none" : s;
+}
+
+// Rows (scenario, criterion, value, threshold, result, failing runs) of the campaign criteria.
+std::vector<std::vector<std::string>> CriteriaRows(const json& summary) {
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& c : summary.value("criteria", json::array())) {
+    const std::string rel = c.value("relation", "max") == "max" ? "≤ " : "≥ ";
+    if (c["groups"].empty())
+      rows.push_back({"(no group matches '" + c.value("scenarios", "") + "')", c.value("name", ""),
+                      "n/a", rel + Num(c["threshold"]), "FAIL", ""});
+    for (const auto& g : c["groups"]) {
+      rows.push_back({g.value("group", ""), c.value("name", ""),
+                      Num(g["value"]) + " (" + std::to_string(g.value("n", 0)) + " runs)",
+                      rel + Num(c["threshold"]), g.value("pass", false) ? "PASS" : "FAIL",
+                      Joined(g["failing_runs"], 12)});
+    }
+  }
+  return rows;
+}
+
+// Rows (group, metric, n, mean, p50, p95, max) of the report metrics.
+std::vector<std::vector<std::string>> MetricRows(const json& summary) {
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& g : summary.value("groups", json::array())) {
+    for (const auto& m : summary.value("report_metrics", json::array())) {
+      const std::string metric = m.get<std::string>();
+      if (!g["metrics"].contains(metric)) continue;
+      const json& st = g["metrics"][metric];
+      rows.push_back({g.value("id", ""), metric, std::to_string(st.value("n", 0)), Num(st["mean"]),
+                      Num(st["p50"]), Num(st["p95"]), Num(st["max"])});
+    }
+  }
+  return rows;
+}
+
+std::string MdTable(const std::vector<std::string>& head,
+                    const std::vector<std::vector<std::string>>& rows) {
+  std::string s = "|", sep = "|";
+  for (const auto& h : head) s += " " + h + " |", sep += "---|";
+  s += "\n" + sep + "\n";
+  for (const auto& r : rows) {
+    s += "|";
+    for (const auto& c : r) s += " " + Cell(c) + " |";
+    s += "\n";
+  }
+  return s;
+}
+
+std::string HtmlTable(const std::vector<std::string>& head,
+                      const std::vector<std::vector<std::string>>& rows) {
+  std::string s = "<table>\n<tr>";
+  for (const auto& h : head) s += "<th>" + XmlEscape(h) + "</th>";
+  s += "</tr>\n";
+  for (const auto& r : rows) {
+    s += "<tr>";
+    for (const auto& c : r) {
+      const bool fail = c == "FAIL" || c.rfind("ERROR", 0) == 0;
+      s += std::string(fail ? "<td class=\"fail\">" : "<td>") + XmlEscape(c) + "</td>";
+    }
+    s += "</tr>\n";
+  }
+  return s + "</table>\n";
+}
+
+const std::vector<std::string> kCriteriaHead{"group", "criterion", "value",
+                                             "bound", "result",    "runs that break it"};
+const std::vector<std::string> kMetricHead{"group", "metric", "n", "mean", "p50", "p95", "max"};
+
+std::string Verdict(const json& summary) {
+  char b[256];
+  std::snprintf(
+      b, sizeof b, "%zu of %zu planned runs recorded%s: %d passed, %d failed, %d invalid.",
+      summary.value("runs", json::array()).size(), summary.value("runs_planned", 0UL),
+      summary.value("complete", false) ? "" : " (**partial merge**)", summary.value("passed", 0),
+      summary.value("failed", 0), summary.value("invalid", 0));
+  return b;
+}
+
+}  // namespace
+
+std::string CampaignMarkdown(const json& summary) {
+  std::string md = SuiteMarkdown(summary);
+  md += "\n## Campaign\n\n" + Verdict(summary) + " Campaign verdict: **" +
+        (summary.value("pass", false) ? "PASS" : "FAIL") + "**";
+  if (!summary.value("complete", false))
+    md += "; runs missing: " + Joined(summary["missing_runs"], 20);
+  md += ".\n";
+  if (!summary.value("criteria", json::array()).empty()) {
+    md += "\n### Criteria across runs (per scenario and sweep point, over the seeds)\n\n" +
+          MdTable(kCriteriaHead, CriteriaRows(summary));
+  }
+  md +=
+      "\n### Metrics over the seeds (p50, p95: linear interpolation between order statistics)\n\n" +
+      MdTable(kMetricHead, MetricRows(summary));
+  md += "\n### CDF plots across seeds\n\n";
+  for (const auto& m : summary.value("report_metrics", json::array())) {
+    if (!CdfSvg(summary, m.get<std::string>()).empty())
+      md += "- [" + m.get<std::string>() + "](plots/cdf_" + m.get<std::string>() + ".svg)\n";
+  }
+  return md;
+}
+
+std::string CampaignHtml(const json& summary) {
+  std::string h =
+      "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>" +
+      XmlEscape(summary.value("title", "")) +
+      "</title>\n<style>body{font-family:sans-serif;margin:2em}table{border-collapse:collapse;"
+      "margin-bottom:1em}td,th{border:1px solid #aaa;padding:2px 6px;font-size:13px}"
+      "td.fail{background:#fdd}</style></head><body>\n";
+  h += "<h1>" + XmlEscape(summary.value("title", "")) + "</h1>\n<p>" + XmlEscape(Verdict(summary)) +
+       " Campaign verdict: <b>" + (summary.value("pass", false) ? "PASS" : "FAIL") + "</b></p>\n";
+  if (!summary.value("complete", false))
+    h += "<p class=\"fail\">Runs missing: " + XmlEscape(Joined(summary["missing_runs"], 50)) +
+         "</p>\n";
+  if (!summary.value("criteria", json::array()).empty())
+    h += "<h2>Criteria across runs</h2>\n" + HtmlTable(kCriteriaHead, CriteriaRows(summary));
+  h += "<h2>Metrics over the seeds</h2>\n" + HtmlTable(kMetricHead, MetricRows(summary));
+  h += "<h2>CDF plots across seeds</h2>\n";
+  for (const auto& m : summary.value("report_metrics", json::array())) h += CdfSvg(summary, m);
+  std::vector<std::vector<std::string>> runs;
+  for (const auto& r : summary.value("runs", json::array())) {
+    const int code = r.value("exit_code", -1);
+    std::string failed;
+    for (const auto& c : r.value("criteria", json::array())) {
+      if (!c.value("pass", false)) failed += (failed.empty() ? "" : "; ") + c.value("name", "");
+    }
+    runs.push_back({r.value("id", ""), r.value("group", ""),
+                    code == 0   ? "PASS"
+                    : code == 1 ? "FAIL"
+                                : "ERROR " + std::to_string(code),
+                    failed.empty() ? r.value("error", "") : failed});
+  }
+  h += "<h2>Runs</h2>\n" + HtmlTable({"run", "group", "result", "failed criteria"}, runs);
+  return h + "</body></html>\n";
+}
+
+std::string CampaignJunit(const json& summary) {
+  std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"" +
+                    XmlEscape(summary.value("title", "hil campaign")) + "\">\n";
+  const auto suite = [&](const std::string& name,
+                         const std::vector<std::pair<std::string, std::string>>& cases) {
+    std::size_t failures = 0;
+    for (const auto& t : cases) failures += t.second.empty() ? 0 : 1;
+    out += "  <testsuite name=\"" + XmlEscape(name) + "\" tests=\"" + std::to_string(cases.size()) +
+           "\" failures=\"" + std::to_string(failures) + "\">\n";
+    for (const auto& [tname, msg] : cases) {
+      out +=
+          "    <testcase classname=\"" + XmlEscape(name) + "\" name=\"" + XmlEscape(tname) + "\">";
+      if (!msg.empty()) out += "<failure message=\"" + XmlEscape(msg) + "\"/>";
+      out += "</testcase>\n";
+    }
+    out += "  </testsuite>\n";
+  };
+  for (const auto& r : summary.value("runs", json::array())) {
+    std::vector<std::pair<std::string, std::string>> cases;
+    if (r.contains("metric_table")) {
+      for (const auto& k : r.value("criteria", json::array())) {
+        std::string msg;
+        if (!k.value("pass", false))
+          msg = "value " + Num(k.value("value", json(nullptr))) + " against threshold " +
+                Num(k.value("threshold", json(nullptr)));
+        cases.emplace_back(k.value("name", "criterion"), msg);
+      }
+      for (const auto& p : r.value("problems", json::array()))
+        cases.emplace_back("run", p.get<std::string>());
+    } else {
+      cases.emplace_back("run", "hil run exited with " + std::to_string(r.value("exit_code", -1)) +
+                                    ": " + r.value("error", ""));
+    }
+    suite(r.value("id", ""), cases);
+  }
+  if (!summary.value("criteria", json::array()).empty()) {
+    std::vector<std::pair<std::string, std::string>> cases;
+    for (const auto& row : CriteriaRows(summary))
+      cases.emplace_back(row[0] + ": " + row[1], row[4] == "PASS"
+                                                     ? ""
+                                                     : "value " + row[2] + ", bound " + row[3] +
+                                                           "; runs that break it: " + row[5]);
+    suite("campaign criteria", cases);
+  }
+  return out + "</testsuites>\n";
+}
+
+}  // namespace hil::harness
