@@ -87,6 +87,30 @@ void AddMcu(const Scenario& s, std::uint64_t seed, const std::string& dir, Devic
   set.endpoints.push_back(std::move(ports));
 }
 
+// Closed loop: the differential-drive base on its serial link (RUN_DIR/<link>, e.g. ttyBASE).
+void AddBase(const Scenario& s, const std::string& dir, DeviceSet& set) {
+  const ClosedLoopSpec& c = s.closed_loop;
+  if (!c.enabled) return;
+  actuator::BaseSerialDeviceConfig cfg;
+  cfg.motors = c.motors;
+  cfg.serial.pid_rate_hz = c.pid_rate_hz;
+  cfg.control_period = DurationFromSeconds(c.control_period_s);
+  cfg.command_timeout = DurationFromSeconds(c.command_timeout_s);
+  cfg.first_command_due = TimeFromSeconds(c.first_command_due_s);
+  for (const Fault& f : s.faults.OfKind(FaultKind::kCommandLinkLoss))
+    cfg.link_loss.emplace_back(f.start, f.end);
+  auto dev = std::make_unique<actuator::BaseSerialDevice>(cfg);
+  dev->ReserveTicks(static_cast<std::size_t>(s.duration_s / c.control_period_s) + 2);
+  set.base = dev.get();
+  const std::string path = dir + "/" + c.link;
+  std::vector<std::unique_ptr<SerialEndpoint>> ports;
+  ports.push_back(std::make_unique<SerialEndpoint>(c.link, path, dev->baud(0), 4096,
+                                                   dir + "/captures/" + c.link + ".cap"));
+  set.links.emplace_back(c.link, path);
+  set.devices.push_back(std::move(dev));
+  set.endpoints.push_back(std::move(ports));
+}
+
 }  // namespace
 
 DeviceSet BuildDevices(const Scenario& scenario, std::uint64_t seed, const std::string& run_dir) {
@@ -97,6 +121,7 @@ DeviceSet BuildDevices(const Scenario& scenario, std::uint64_t seed, const std::
   }
   AddGnss(scenario, seed, run_dir, set);
   AddMcu(scenario, seed, run_dir, set);
+  AddBase(scenario, run_dir, set);
   return set;
 }
 

@@ -85,8 +85,8 @@ std::vector<Criterion> ReadCriteria(const YamlReader& r) {
     k.metric = c.String("metric");
     if (std::find(kCriterionMetrics.begin(), kCriterionMetrics.end(), k.metric) ==
             kCriterionMetrics.end() &&
-        k.metric.rfind("navd.", 0) !=
-            0) {  // navd.<health counter>, navd.flag.<flag> (fault_report.h)
+        k.metric.rfind("navd.", 0) != 0 && k.metric.rfind("tracking.", 0) != 0 &&
+        k.metric.rfind("closed_loop.", 0) != 0) {  // navd.<health counter>, navd.flag.<flag> (fault_report.h)
       std::string msg = "unknown metric '" + k.metric + "' (one of:";
       for (const auto& m : kCriterionMetrics) msg += " " + m;
       c.Fail("metric", msg + ")");
@@ -117,7 +117,7 @@ Scenario FromReader(const YamlReader& root) {
                                 "seed",    "estimator",   "criteria",  "faults",
                                 "include", "evaluation"};
   for (const auto* section : {&kTruthSectionKeys, &kGnssSectionKeys, &kMcuSectionKeys,
-                              &kCanSectionKeys, &kSuiteSectionKeys}) {
+                              &kCanSectionKeys, &kClosedLoopSectionKeys, &kSuiteSectionKeys}) {
     keys.insert(keys.end(), section->begin(), section->end());
   }
   root.CheckKeys(keys);
@@ -139,6 +139,7 @@ Scenario FromReader(const YamlReader& root) {
   // seed 000: the IMU runs 10 times as fast as the GPS
   if (s.mcu.imu_rate_is_default) s.mcu.config.imu_rate_hz = 10.0 * s.gnss.rate_hz;
   ReadCanSection(root, s.can);
+  ReadClosedLoopSection(root, s);
   ReadSuiteSections(root, keys, s);
   if (auto e = root.OptionalChild("estimator")) ReadEstimator(*e, s.estimator);
   CheckCanUse(root, s);

@@ -28,6 +28,11 @@ void ReadCanSection(const YamlReader& root, CanLinkSpec& c);
 /// section is read (scenario_can.cc).
 void CheckCanUse(const YamlReader& root, const Scenario& s);
 
+extern const std::vector<std::string> kClosedLoopSectionKeys;
+/// Reads the closed_loop section (optional; scenario_closed_loop.cc) and makes the truth take
+/// the actuator's commands.
+void ReadClosedLoopSection(const YamlReader& root, Scenario& s);
+
 extern const std::vector<std::string> kSuiteSectionKeys;
 /// Reads `paper:` into s.paper and checks `short:` (scenario_suite.cc); `top_level_keys` are the
 /// keys a `short:` section may replace (all but name, include, paper and short).

@@ -15,6 +15,10 @@
 
 namespace hil::harness {
 
+/// Closed loop: the FIFO in the run folder into which navd writes its NMEA 0183 solution for the
+/// controller ([output] nmea_device), substituted as {nav_nmea} in the controller's command.
+inline constexpr const char* kNavNmeaFifo = "nav.nmea";
+
 /// The navd configuration for this scenario (input device, leap seconds, mode, JSON output).
 void WriteNavdConfig(const std::string& path, const Scenario& s, const std::string& gnss_device);
 
