@@ -26,12 +26,12 @@ TEST(ClosedLoopE2eTest, DiffDriveOverTheSerialBaseProtocolPasses) {
   const auto rep = nlohmann::json::parse(ReadFile(dir / "r/report.json"));
   EXPECT_TRUE(rep["pass"].get<bool>()) << rep.dump(2);
   const auto& tr = rep["tracking"];
-  EXPECT_GT(tr["samples"].get<int>(), 200);
+  EXPECT_GT(tr["samples"].get<int>(), 150) << "10 Hz from 25 s to 45 s";
   EXPECT_LT(tr["cross_track_mean_abs_m"].get<double>(), 0.05) << tr.dump(2);
   const auto& cl = rep["closed_loop"];
   EXPECT_EQ(cl["missing_commands"].get<int>(), 0) << cl.dump(2);
   EXPECT_EQ(cl["watchdog_trips"].get<int>(), 0);
-  EXPECT_GT(cl["motor_commands"].get<int>(), 200) << "10 Hz commands for most of the 30 s";
+  EXPECT_GT(cl["motor_commands"].get<int>(), 350) << "10 Hz commands from about 5.3 s to 45 s";
   // the commands are in the base link's capture, as received bytes
   const std::string cap = ReadFile(dir / "r/captures/ttyBASE.cap");
   EXPECT_NE(cap.find("rx "), std::string::npos);
