@@ -103,11 +103,11 @@ void Attempt(RunReport& report, const std::function<void()>& write) {
   }
 }
 
-// The truth vehicle's track at truth.csv's times (10 Hz).
-std::vector<TrackSample> TruthTrack(const RunContext& ctx, const TruthTable& truth) {
+// The truth vehicle's track at truth.csv's times (10 Hz) from `t_from` on.
+std::vector<TrackSample> TruthTrack(const RunContext& ctx, const TruthTable& truth, Time t_from) {
   std::vector<TrackSample> track;
   for (const Time t : TruthCsvTimes(ctx.scenario)) {
-    if (t < ctx.t_from || t > ctx.t_end || !truth.Has(t)) continue;
+    if (t < t_from || t > ctx.t_end || !truth.Has(t)) continue;
     const TruthSample& s = truth.At(t);
     const Eigen::Vector3d x = s.q_NB * Eigen::Vector3d::UnitX();
     track.push_back({t, s.p_NB_N_m.head<2>(), std::atan2(x.y(), x.x()), s.speed_mps});
@@ -128,8 +128,9 @@ std::optional<double> DistanceAfter(const std::vector<TrackSample>& track, std::
 // Closed loop: the truth against the planned path, and what the controller and the base did.
 void EvaluateClosedLoop(RunContext& ctx, const TruthTable& truth) {
   RunReport& report = ctx.report;
-  const std::vector<TrackSample> track = TruthTrack(ctx, truth);
-  report.tracking = ScoreTracking(ReadPathVertices(ctx.scenario.closed_loop.path_file), track);
+  report.tracking = ScoreTracking(ReadPathVertices(ctx.scenario.closed_loop.path_file),
+                                  TruthTrack(ctx, truth, ctx.t_from));
+  const std::vector<TrackSample> track = TruthTrack(ctx, truth, Time{});  // the whole run
   ClosedLoopReport c;
   c.controller_command = report.controller_command;
   if (ctx.controller) {
