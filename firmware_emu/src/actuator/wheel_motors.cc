@@ -8,7 +8,10 @@
 
 namespace hil::actuator {
 
-WheelMotors::WheelMotors(const WheelMotorsConfig& config) : cfg_(config) {}
+WheelMotors::WheelMotors(const WheelMotorsConfig& config) : cfg_(config) {
+  speed_radps_ = {cfg_.initial_wheel_speed_radps, cfg_.initial_wheel_speed_radps};
+  target_radps_ = speed_radps_;
+}
 
 void WheelMotors::Command(Time t, double left_radps, double right_radps) {
   AdvanceTo(t);

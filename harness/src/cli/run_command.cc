@@ -129,6 +129,7 @@ int Execute(const RunArgs& a) {
   if (*a.est_opt) opt.estimator_command = a.estimator;
   if (*a.silence_opt) opt.silence_timeout_s = a.silence_timeout_s;
   opt.navd_path = SiblingExecutable("navd");
+  opt.guidanced_path = SiblingExecutable("guidanced");
   opt.progress = isatty(STDERR_FILENO);
   opt.html = !a.no_html;
   try {

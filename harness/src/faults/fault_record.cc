@@ -26,6 +26,10 @@ const char* FaultUnit(FaultKind kind) {
       return "frame pairs swapped";
     case FaultKind::kGnssOverload:
       return "messages lost to the transmit buffer";
+    case FaultKind::kControllerStop:
+      return "controller processes killed";
+    case FaultKind::kCommandLinkLoss:
+      return "command bytes lost";
   }
   return "?";
 }

@@ -43,6 +43,8 @@ const std::vector<KindSpec>& Kinds() {
       {FaultKind::kFrameTruncate, "frame_truncate", false, true, {{"probability", 0, 1, 1}}},
       {FaultKind::kCanReorder, "can_reorder", false, false, {{"probability", 0, 1, 1}}},
       {FaultKind::kGnssOverload, "gnss_overload", false, false, {}},
+      {FaultKind::kControllerStop, "controller_stop", true, false, {}},
+      {FaultKind::kCommandLinkLoss, "command_link_loss", false, false, {}},
   };
   return kinds;
 }

@@ -115,6 +115,24 @@ MetricTable AccuracyTable(const AccuracyMetrics& m) {
 
 MetricTable RunMetricTable(const RunReport& r) {
   MetricTable t = AccuracyTable(r.metrics);
+  if (r.tracking) {
+    const XteStats& x = r.tracking->all;
+    const bool any = x.samples > 0;
+    const auto v = [any](double d) { return any ? std::optional<double>(d) : std::nullopt; };
+    t["tracking.cross_track_mean_abs_m"] = v(x.mean_abs_m);
+    t["tracking.cross_track_rmse_m"] = v(x.rmse_m);
+    t["tracking.cross_track_p95_abs_m"] = v(x.p95_abs_m);
+    t["tracking.cross_track_max_abs_m"] = v(x.max_abs_m);
+    t["tracking.heading_error_rms_deg"] = v(x.heading_rmse_deg);
+    t["tracking.settling_distance_m"] = r.tracking->settling_distance_m;
+    t["tracking.settling_time_s"] = r.tracking->settling_time_s;
+  }
+  if (r.closed_loop) {
+    t["closed_loop.missing_commands"] = static_cast<double>(r.closed_loop->missing_commands);
+    t["closed_loop.watchdog_trips"] = static_cast<double>(r.closed_loop->watchdog_trips);
+    t["closed_loop.final_speed_mps"] = r.closed_loop->final_speed_mps;
+    t["closed_loop.distance_after_last_command_m"] = r.closed_loop->distance_after_last_command_m;
+  }
   t["output_rate_hz"] =
       r.metrics.samples >= 2 ? std::optional<double>(r.output_rate_hz) : std::nullopt;
   t["solutions_missing_fraction"] =
@@ -182,6 +200,58 @@ std::vector<CriterionResult> EvaluateCriteria(const std::vector<Criterion>& crit
   return EvaluateCriteria(criteria, AccuracyTable(metrics), AccuracyTable(baselines));
 }
 
+namespace {
+
+nlohmann::json XteJson(const XteStats& x) {
+  if (x.samples == 0) return {{"samples", 0}};
+  return {{"samples", x.samples},
+          {"cross_track_mean_abs_m", x.mean_abs_m},
+          {"cross_track_rmse_m", x.rmse_m},
+          {"cross_track_p95_abs_m", x.p95_abs_m},
+          {"cross_track_max_abs_m", x.max_abs_m},
+          {"heading_error_rms_deg", x.heading_rmse_deg}};
+}
+
+nlohmann::json TrackingJson(const TrackingMetrics& m) {
+  nlohmann::json j = XteJson(m.all);
+  j["initial_cross_track_m"] = m.initial_cross_track_m;
+  j["settle_band_m"] = m.settle_band_m;
+  j["settling_distance_m"] = OptionalJson(m.settling_distance_m);
+  j["settling_time_s"] = OptionalJson(m.settling_time_s);
+  j["distance_travelled_m"] = m.distance_travelled_m;
+  j["segments"] = nlohmann::json::array();
+  for (const SegmentTracking& s : m.segments) {
+    nlohmann::json e = XteJson(s.stats);
+    e["index"] = s.index;
+    e["kind"] = s.kind;
+    e["start_s_m"] = s.start_s_m;
+    e["end_s_m"] = s.end_s_m;
+    j["segments"].push_back(e);
+  }
+  return j;
+}
+
+nlohmann::json ClosedLoopJson(const ClosedLoopReport& c) {
+  return {{"controller_command", c.controller_command},
+          {"controller_exit", c.controller_exit},
+          {"control_ticks", c.control_ticks},
+          {"missing_commands", c.missing_commands},
+          {"first_missing_s", OptionalJson(c.first_missing_s)},
+          {"motor_commands", c.motor_commands},
+          {"saturated_commands", c.saturated_commands},
+          {"invalid_lines", c.invalid_lines},
+          {"command_bytes_lost", c.command_bytes_lost},
+          {"last_command_s", OptionalJson(c.last_command_s)},
+          {"watchdog_trips", c.watchdog_trips},
+          {"watchdog_trip_s", OptionalJson(c.watchdog_trip_s)},
+          {"distance_after_last_command_m", OptionalJson(c.distance_after_last_command_m)},
+          {"distance_after_watchdog_m", OptionalJson(c.distance_after_watchdog_m)},
+          {"final_speed_mps", c.final_speed_mps},
+          {"stopped", c.stopped}};
+}
+
+}  // namespace
+
 void WriteReportJson(const RunReport& r, const std::string& path) {
   nlohmann::json j;
   j["scenario"] = r.scenario;
@@ -242,6 +312,8 @@ void WriteReportJson(const RunReport& r, const std::string& path) {
   j["sim_time_s"] = r.sim_time_s;
   j["links"] = {{"gnss_bytes", r.gnss_bytes}, {"gnss_messages_dropped", r.gnss_messages_dropped}};
   if (r.can) j["can"] = CanBusJson(*r.can);
+  if (r.tracking) j["tracking"] = TrackingJson(*r.tracking);
+  if (r.closed_loop) j["closed_loop"] = ClosedLoopJson(*r.closed_loop);
   auto out = OpenOut(path);
   out << j.dump(2) << "\n";
   if (!out) throw std::runtime_error("cannot write " + path);

@@ -133,6 +133,24 @@ void AddRangeSensors(const Scenario& s, std::uint64_t seed, const std::string& d
   }
 }
 
+// Closed loop: the differential-drive base on its serial link (RUN_DIR/<link>, e.g. ttyBASE).
+void AddBase(const Scenario& s, const std::string& dir, DeviceSet& set) {
+  const ClosedLoopSpec& c = s.closed_loop;
+  if (!c.enabled) return;
+  actuator::BaseSerialDeviceConfig cfg;
+  cfg.motors = c.motors;
+  cfg.serial.pid_rate_hz = c.pid_rate_hz;
+  cfg.control_period = DurationFromSeconds(c.control_period_s);
+  cfg.command_timeout = DurationFromSeconds(c.command_timeout_s);
+  cfg.first_command_due = TimeFromSeconds(c.first_command_due_s);
+  for (const Fault& f : s.faults.OfKind(FaultKind::kCommandLinkLoss))
+    cfg.link_loss.emplace_back(f.start, f.end);
+  auto dev = std::make_unique<actuator::BaseSerialDevice>(cfg);
+  dev->ReserveTicks(static_cast<std::size_t>(s.duration_s / c.control_period_s) + 2);
+  set.base = dev.get();
+  AddSerial(std::move(dev), c.link, 4096, dir, set);
+}
+
 }  // namespace
 
 DeviceSet BuildDevices(const Scenario& scenario, std::uint64_t seed, const std::string& run_dir) {
@@ -146,6 +164,7 @@ DeviceSet BuildDevices(const Scenario& scenario, std::uint64_t seed, const std::
   AddPaper003Devices(scenario, seed * kSeedStride + kUwbStream, seed * kSeedStride + kWitStream,
                      run_dir, set);
   AddRangeSensors(scenario, seed, run_dir, set);
+  AddBase(scenario, run_dir, set);
   return set;
 }
 

@@ -1,3 +1,5 @@
+#include <unistd.h>
+
 #include "hil/harness/run/run_context.h"
 
 #include <algorithm>
@@ -8,6 +10,10 @@
 #include "hil/harness/run/run_guard.h"
 
 namespace hil::harness {
+
+OwnedFd::~OwnedFd() {
+  if (fd >= 0) close(fd);
+}
 
 std::string SecondsText(double s) {
   char b[32];

@@ -1,9 +1,12 @@
 // Phases 4 and 5 of a run: the evaluation against the truth, and the run folder's files.
+#include <cmath>
 #include <cstdio>
 #include <functional>
 
 #include "hil/harness/eval/cross_track.h"
 #include "hil/harness/eval/outage_metrics.h"
+#include "hil/harness/eval/path_file_reader.h"
+#include "hil/harness/eval/path_tracking.h"
 #include "hil/harness/report/run_outputs.h"
 #include "hil/harness/run/can_run.h"
 
@@ -100,6 +103,62 @@ void Attempt(RunReport& report, const std::function<void()>& write) {
   }
 }
 
+// The truth vehicle's track at truth.csv's times (10 Hz) from `t_from` on.
+std::vector<TrackSample> TruthTrack(const RunContext& ctx, const TruthTable& truth, Time t_from) {
+  std::vector<TrackSample> track;
+  for (const Time t : TruthCsvTimes(ctx.scenario)) {
+    if (t < t_from || t > ctx.t_end || !truth.Has(t)) continue;
+    const TruthSample& s = truth.At(t);
+    const Eigen::Vector3d x = s.q_NB * Eigen::Vector3d::UnitX();
+    track.push_back({t, s.p_NB_N_m.head<2>(), std::atan2(x.y(), x.x()), s.speed_mps});
+  }
+  return track;
+}
+
+// Distance along the track from time `from` to its end.
+std::optional<double> DistanceAfter(const std::vector<TrackSample>& track, std::optional<Time> from) {
+  if (!from) return std::nullopt;
+  double d = 0;
+  for (std::size_t i = 1; i < track.size(); ++i) {
+    if (track[i - 1].t >= *from) d += (track[i].p_N_m - track[i - 1].p_N_m).norm();
+  }
+  return d;
+}
+
+// Closed loop: the truth against the planned path, and what the controller and the base did.
+void EvaluateClosedLoop(RunContext& ctx, const TruthTable& truth) {
+  RunReport& report = ctx.report;
+  report.tracking = ScoreTracking(ReadPathVertices(ctx.scenario.closed_loop.path_file),
+                                  TruthTrack(ctx, truth, ctx.t_from));
+  const std::vector<TrackSample> track = TruthTrack(ctx, truth, Time{});  // the whole run
+  ClosedLoopReport c;
+  c.controller_command = report.controller_command;
+  if (ctx.controller) {
+    ctx.controller->Running();
+    c.controller_exit = ctx.controller->Describe();
+  }
+  if (const actuator::BaseSerialDevice* base = ctx.set.base) {
+    const auto& k = base->counters();
+    const auto& m = base->motors().counters();
+    c.control_ticks = k.ticks;
+    c.missing_commands = k.missing_commands;
+    if (k.first_missing) c.first_missing_s = ToSeconds(*k.first_missing);
+    if (k.last_command) c.last_command_s = ToSeconds(*k.last_command);
+    c.command_bytes_lost = k.bytes_lost;
+    c.motor_commands = base->session().counters().motor_commands;
+    c.invalid_lines = base->session().counters().invalid;
+    c.saturated_commands = m.saturated_commands;
+    c.watchdog_trips = m.watchdog_trips;
+    if (m.watchdog_trips > 0) c.watchdog_trip_s = ToSeconds(m.last_watchdog_trip);
+    c.distance_after_last_command_m = DistanceAfter(track, k.last_command);
+    if (m.watchdog_trips > 0)
+      c.distance_after_watchdog_m = DistanceAfter(track, m.last_watchdog_trip);
+  }
+  if (!track.empty()) c.final_speed_mps = track.back().speed_mps;
+  c.stopped = std::fabs(c.final_speed_mps) < 0.01;
+  report.closed_loop = c;
+}
+
 }  // namespace
 
 RunEvaluation Evaluate(RunContext& ctx) {
@@ -114,7 +173,9 @@ RunEvaluation Evaluate(RunContext& ctx) {
   ev.estimate_errors = CompareWithTruth(ev.truth, estimates, p_BX_B_m, ctx.t_from, ctx.t_end);
   ev.fix_errors = CompareWithTruth(ev.truth, ctx.baseline->fixes(), scenario.gnss.model.p_BA_B_m,
                                    ctx.t_from, ctx.t_end);
-  const PlannedPath path = PlannedPathOf(scenario.truth, scenario.duration_s);
+  const PlannedPath path = scenario.closed_loop.enabled
+                               ? PlannedPath(ReadPathVertices(scenario.closed_loop.path_file))
+                               : PlannedPathOf(scenario.truth, scenario.duration_s);
   AddCrossTrack(ev.estimate_errors, path);
   AddCrossTrack(ev.fix_errors, path);
   report.metrics = ComputeAccuracy(ev.estimate_errors);
@@ -123,6 +184,7 @@ RunEvaluation Evaluate(RunContext& ctx) {
   report.outages =
       ComputeOutages(ev.estimate_errors, scenario.faults, scenario.reconverged_error_m);
   CountLinksAndDevices(ctx);
+  if (scenario.closed_loop.enabled) EvaluateClosedLoop(ctx, ev.truth);
   EvaluateFaultsAndCriteria(ctx, ev.estimate_errors);
   return ev;
 }

@@ -118,6 +118,9 @@ void Execute(RunContext& ctx, RunWatchdog& watchdog) {
         scenario.start_unix_ns);
   }
   MakeGate(ctx, watchdog);
+  // closed loop: every control tick is a host turn (lockstep with the controller)
+  if (scenario.closed_loop.enabled && ctx.gate)
+    ctx.scheduler->set_control_period(DurationFromSeconds(scenario.closed_loop.control_period_s));
   // the truth for the evaluation, sampled on a thread of its own as the run goes (truth_table.h)
   ctx.truth_builder.emplace(scenario.truth);
   ctx.truth_builder->Ask(TruthCsvTimes(scenario));
@@ -128,6 +131,7 @@ void Execute(RunContext& ctx, RunWatchdog& watchdog) {
         std::string("the run failed at t = ") + SecondsText(ctx.t_now) + " s: " + e.what();
   }
   if (!ctx.hang && !ctx.Interrupted()) ctx.scheduler->Flush();
+  if (scenario.closed_loop.enabled) ctx.truth_builder->SetCommands(ctx.scheduler->vehicle_commands());
   for (const auto& ports : ctx.set.endpoints) {
     for (const auto& ep : ports) ep->FlushCapture();
   }

@@ -1,8 +1,14 @@
 // Phase 1 of a run: the folder, the report's header, the devices and links, the process under test.
+#include <fcntl.h>
 #include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 
 #include <cstdio>
 #include <filesystem>
+
+#include <sys/stat.h>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
@@ -100,6 +106,36 @@ void StartEstimator(RunContext& ctx, const std::string& command) {
     usleep(static_cast<useconds_t>(ctx.scenario.estimator.startup_s * 1e6));
 }
 
+// Closed loop: the FIFO navd writes its NMEA solution into, held open (read and write) by the run
+// so that navd's non-blocking open finds a reader and the controller's open finds a writer.
+void MakeNavFifo(RunContext& ctx) {
+  if (!ctx.scenario.closed_loop.enabled || ctx.options.emulate_only) return;
+  const std::string path = ctx.dir + "/" + kNavNmeaFifo;
+  unlink(path.c_str());
+  if (mkfifo(path.c_str(), 0600) != 0)
+    throw std::runtime_error("cannot make the FIFO " + path + ": " + std::strerror(errno));
+  ctx.nav_fifo.fd = open(path.c_str(), O_RDWR | O_NONBLOCK | O_CLOEXEC);
+  if (ctx.nav_fifo.fd < 0)
+    throw std::runtime_error("cannot open the FIFO " + path + ": " + std::strerror(errno));
+}
+
+// Closed loop: the controller, in the estimator's process group.
+void StartController(RunContext& ctx) {
+  const ClosedLoopSpec& c = ctx.scenario.closed_loop;
+  if (!c.enabled || ctx.options.emulate_only || !ctx.estimator) return;
+  const truth::Geodetic& o = ctx.scenario.truth.origin;
+  char origin[96];
+  std::snprintf(origin, sizeof origin, "%.9f,%.9f,%.3f", o.lat_deg, o.lon_deg, o.height_m);
+  std::vector<std::pair<std::string, std::string>> vars{
+      {"guidanced", ctx.options.guidanced_path}, {"path_file", c.path_file},
+      {"nav_nmea", ctx.dir + "/" + kNavNmeaFifo}, {"origin", origin},
+      {"run_dir", ctx.dir}, {"seed", std::to_string(ctx.seed)}};
+  vars.insert(vars.end(), ctx.set.links.begin(), ctx.set.links.end());
+  const std::string command = Substitute(c.controller, vars);
+  ctx.report.controller_command = command;
+  ctx.controller.emplace(command, ctx.estimator->pid(), ctx.dir + "/controller.log");
+}
+
 }  // namespace
 
 void Prepare(RunContext& ctx) {
@@ -124,7 +160,9 @@ void Prepare(RunContext& ctx) {
   ctx.report.estimator_command = opt.emulate_only ? "" : command;
   ctx.fixes_csv.open(ctx.dir + "/gnss_fixes.csv");
   WriteFixCsvHeader(ctx.fixes_csv);
+  MakeNavFifo(ctx);
   StartEstimator(ctx, command);
+  StartController(ctx);
   ctx.estimator_start_ns = NowNs();
   if (opt.mode == RunMode::kRealtime) {
     link::RealtimePacer::RequestRealtimeScheduling();

@@ -6,7 +6,23 @@
 
 namespace hil::harness {
 
-void RunWatchdog::OnDeviceEvents(Time t) { ctx_.baseline->Record(t); }
+void RunWatchdog::OnDeviceEvents(Time t) {
+  ctx_.baseline->Record(t);
+  if (ctx_.pacer) StopController(t);  // real time: no host turns
+}
+
+void RunWatchdog::OnHostTurn(Time t) { StopController(t); }
+
+void RunWatchdog::StopController(Time t) {
+  if (!ctx_.controller) return;
+  const std::vector<Fault>& faults = ctx_.scenario.faults.faults;
+  for (std::size_t i = 0; i < faults.size(); ++i) {
+    if (faults[i].kind != FaultKind::kControllerStop || faults[i].start > t) continue;
+    if (!ctx_.controller->Running()) continue;
+    ctx_.controller->Kill();
+    ctx_.fault_recorder.Note(i, t);
+  }
+}
 
 bool RunWatchdog::KeepGoing(Time t) {
   ctx_.t_now = t;
@@ -15,7 +31,7 @@ bool RunWatchdog::KeepGoing(Time t) {
   // an estimator's solutions come in time order, about as late as its input: what lies a second
   // behind both will not be asked for any more (a straggler only costs Finish a pass)
   const std::vector<EstimateRecord>& records = ctx_.collector->records();
-  if (!records.empty()) {
+  if (!records.empty() && !ctx_.scenario.closed_loop.enabled) {
     ctx_.truth_builder->Advance(std::min(records.back().t_validity, t) - std::chrono::seconds(1));
   }
   if (ctx_.Interrupted()) return false;

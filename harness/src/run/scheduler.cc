@@ -136,7 +136,7 @@ bool Scheduler::PaceTowards(Time t_event, DeviceOutput& out) {
   return true;
 }
 
-bool Scheduler::HostStep(Time t_event, DeviceOutput& out) {
+bool Scheduler::HostStep(Time t_event, SchedulerMonitor& monitor, DeviceOutput& out) {
   // host bytes arriving, then a host turn, due before (or at) this event come first
   if (!arrivals_.empty() && arrivals_.front().t <= std::min(t_event, t_end_)) {
     DeliverHostBytes(arrivals_.front(), out);
@@ -146,6 +146,7 @@ bool Scheduler::HostStep(Time t_event, DeviceOutput& out) {
   const Time t_turn = NextHostTurn();
   if (t_turn > t_event || t_turn > t_end_) return false;
   HostTurn(t_turn);
+  if (!write_refused_) monitor.OnHostTurn(t_turn);
   return true;
 }
 
@@ -154,6 +155,10 @@ void Scheduler::Serve(Time t_event, const TruthSample& truth, SchedulerMonitor& 
   for (std::size_t d = 0; d < set_.devices.size(); ++d) {
     if (set_.devices[d]->next_event_time() != t_event) continue;
     set_.devices[d]->OnEvent(truth, out);
+    if (const std::optional<VehicleCommand> c = set_.devices[d]->TakeVehicleCommand()) {
+      if (integrator_) integrator_->SetCommand(c->t, c->speed_mps, c->steer_or_yaw_rate);
+      vehicle_commands_.push_back(*c);
+    }
     Dispatch(d, out);
   }
   monitor.OnDeviceEvents(t_event);
@@ -177,7 +182,7 @@ void Scheduler::Run(SchedulerMonitor& monitor, const truth::TruthConfig* truth) 
 }
 
 bool Scheduler::RunEvents(SchedulerMonitor& monitor, const truth::TruthConfig* truth) {
-  std::optional<truth::TruthIntegrator> integrator;
+  std::optional<truth::TruthIntegrator>& integrator = integrator_;
   if (truth) integrator.emplace(*truth);
   if (pacer_ && !pacing_) StartPacing();  // before the first event: its bytes leave on time
   DeviceOutput out;
@@ -188,7 +193,7 @@ bool Scheduler::RunEvents(SchedulerMonitor& monitor, const truth::TruthConfig* t
     }
     if (!t_event) return true;
     if (pacer_ && PaceTowards(*t_event, out)) continue;
-    if (gate_ && !pacer_ && HostStep(*t_event, out)) {
+    if (gate_ && !pacer_ && HostStep(*t_event, monitor, out)) {
       if (write_refused_) return false;
       continue;
     }
@@ -206,12 +211,16 @@ bool Scheduler::RunEvents(SchedulerMonitor& monitor, const truth::TruthConfig* t
 
 Time Scheduler::NextHostTurn() const {
   Time t = next_periodic_turn_;
+  if (control_period_ > Duration{}) t = std::min(t, next_control_turn_);
   for (const Time a : answer_turns_) t = std::min(t, a);
   return t;
 }
 
 void Scheduler::HostTurn(Time t) {
   while (next_periodic_turn_ <= t) next_periodic_turn_ += kHostTurnPeriod;
+  if (control_period_ > Duration{}) {
+    while (next_control_turn_ <= t) next_control_turn_ += control_period_;
+  }
   std::erase_if(answer_turns_, [t](Time a) { return a <= t; });
   if (!writes_.Pump(true) || !gate_->WaitHostIdle()) {
     write_refused_ = true;

@@ -5,13 +5,23 @@
 
 namespace hil::harness {
 
-TruthTable::TruthTable(const truth::TruthConfig& config, std::vector<Time> times)
+namespace {
+
+void Replay(truth::TruthIntegrator& truth, const std::vector<VehicleCommand>& commands) {
+  for (const VehicleCommand& c : commands) truth.SetCommand(c.t, c.speed_mps, c.steer_or_yaw_rate);
+}
+
+}  // namespace
+
+TruthTable::TruthTable(const truth::TruthConfig& config, std::vector<Time> times,
+                       const std::vector<VehicleCommand>& commands)
     : times_(std::move(times)), frame_(config.origin) {
   std::erase_if(times_, [](Time t) { return t < Time{}; });
   std::sort(times_.begin(), times_.end());
   times_.erase(std::unique(times_.begin(), times_.end()), times_.end());
   samples_.reserve(times_.size());
   truth::TruthIntegrator truth(config);
+  Replay(truth, commands);
   for (const Time t : times_) samples_.push_back(truth.Sample(t));
 }
 
@@ -65,6 +75,7 @@ void TruthTableBuilder::Advance(Time t) {
 
 void TruthTableBuilder::Work() {
   truth::TruthIntegrator truth(config_);
+  bool replayed = false;
   std::vector<Time> batch;
   for (;;) {
     batch.clear();
@@ -83,6 +94,10 @@ void TruthTableBuilder::Work() {
         position_ = batch.back();
       }
       if (batch.empty() && finishing_) return;
+      if (config_.external_commands && !replayed) {
+        Replay(truth, commands_);  // finishing_: the commands are complete
+        replayed = true;
+      }
     }
     for (const Time t : batch) {
       if (!done_times_.empty() && done_times_.back() == t) continue;
@@ -104,7 +119,7 @@ TruthTable TruthTableBuilder::Finish() {
   // stragglers (asked behind the thread): one more pass for them, merged in time order
   std::erase_if(late_, [&](Time t) { return std::binary_search(times.begin(), times.end(), t); });
   if (!late_.empty()) {
-    const TruthTable extra(config_, late_);
+    const TruthTable extra(config_, late_, commands_);
     std::vector<Time> all_t;
     std::vector<TruthSample> all_s;
     std::size_t i = 0, j = 0;

@@ -86,8 +86,8 @@ std::vector<Criterion> ReadCriteria(const YamlReader& r) {
     k.metric = c.String("metric");
     if (std::find(kCriterionMetrics.begin(), kCriterionMetrics.end(), k.metric) ==
             kCriterionMetrics.end() &&
-        k.metric.rfind("navd.", 0) !=
-            0) {  // navd.<health counter>, navd.flag.<flag> (fault_report.h)
+        k.metric.rfind("navd.", 0) != 0 && k.metric.rfind("tracking.", 0) != 0 &&
+        k.metric.rfind("closed_loop.", 0) != 0) {  // navd.<health counter>, navd.flag.<flag> (fault_report.h)
       std::string msg = "unknown metric '" + k.metric + "' (one of:";
       for (const auto& m : kCriterionMetrics) msg += " " + m;
       c.Fail("metric", msg + ")");
@@ -119,7 +119,7 @@ Scenario FromReader(const YamlReader& root) {
                                 "include", "evaluation"};
   for (const auto* section : {&kTruthSectionKeys, &kGnssSectionKeys, &kMcuSectionKeys,
                               &kCanSectionKeys, &kGreenhouseSectionKeys, &kRangeSensorSectionKeys,
-                              &kSuiteSectionKeys, &kPaper003SectionKeys}) {
+                              &kSuiteSectionKeys, &kPaper003SectionKeys, &kClosedLoopSectionKeys}) {
     keys.insert(keys.end(), section->begin(), section->end());
   }
   root.CheckKeys(keys);
@@ -144,6 +144,7 @@ Scenario FromReader(const YamlReader& root) {
   ReadCanSection(root, s.can);
   ReadGreenhouseSection(root, s);
   ReadRangeSensorSections(root, s);
+  ReadClosedLoopSection(root, s);
   ReadSuiteSections(root, keys, s);
   if (auto e = root.OptionalChild("estimator")) ReadEstimator(*e, s.estimator);
   CheckCanUse(root, s);

@@ -39,6 +39,10 @@ extern const std::vector<std::string> kRangeSensorSectionKeys;
 /// Reads the rangefinders and lidar sections (optional; scenario_range_sensors.cc), after the
 /// greenhouse section they need.
 void ReadRangeSensorSections(const YamlReader& root, Scenario& s);
+extern const std::vector<std::string> kClosedLoopSectionKeys;
+/// Reads the closed_loop section (optional; scenario_closed_loop.cc) and makes the truth take
+/// the actuator's commands.
+void ReadClosedLoopSection(const YamlReader& root, Scenario& s);
 
 extern const std::vector<std::string> kSuiteSectionKeys;
 /// Reads `paper:` into s.paper and checks `short:` (scenario_suite.cc); `top_level_keys` are the

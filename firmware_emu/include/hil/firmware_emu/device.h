@@ -65,6 +65,16 @@ struct DeviceStatistics {
   std::uint64_t resets = 0;  ///< resets the device went through (scripted or commanded)
 };
 
+/// Closed loop: what an actuator drives the truth vehicle with from the first truth-command grid
+/// instant at or after `t` on (TruthIntegrator::SetCommand): forward speed and the steering input
+/// (front-wheel angle in rad, left positive, for the bicycle models; yaw rate in rad/s, left
+/// positive, for a differential-drive base).
+struct VehicleCommand {
+  Time t{};
+  double speed_mps = 0;
+  double steer_or_yaw_rate = 0;
+};
+
 /// An emulated device.
 class Device {
  public:
@@ -85,6 +95,9 @@ class Device {
   virtual int serial_port_count() const { return 1; }
   /// The counters of the run so far (DeviceStatistics).
   virtual DeviceStatistics statistics() const { return {}; }
+  /// Closed loop: an actuator's new output after its event (at most one per event), which the
+  /// scheduler hands to the truth. Devices that drive nothing return nullopt.
+  virtual std::optional<VehicleCommand> TakeVehicleCommand() { return std::nullopt; }
 };
 
 }  // namespace hil

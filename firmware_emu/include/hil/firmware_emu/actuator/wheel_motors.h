@@ -28,6 +28,9 @@ struct WheelMotorsConfig {
   std::array<double, 2> slip{0.0, 0.0};  ///< fraction of the tyre speed lost, left and right
   Duration command_latency = std::chrono::milliseconds(5);
   Duration command_timeout = std::chrono::milliseconds(2000);
+  /// Both wheels turn at this speed at t = 0 (a base already rolling when the run starts); the
+  /// watchdog counts from the first command.
+  double initial_wheel_speed_radps = 0.0;
 };
 
 struct WheelMotorsCounters {
@@ -51,6 +54,8 @@ class WheelMotors {
 
   Time now() const { return now_; }
   double wheel_speed_radps(int wheel) const { return speed_radps_[wheel]; }
+  /// The speed the wheel's loop steers to now (the latest command in effect; 0 after a trip).
+  double target_speed_radps(int wheel) const { return target_radps_[wheel]; }
   double ground_speed_mps(int wheel) const;
   /// Forward speed (m/s) and yaw rate (rad/s, positive = left) of the midpoint of the axle.
   double body_speed_mps() const;

@@ -10,6 +10,7 @@
 
 #include "hil/harness/eval/evaluator.h"
 #include "hil/harness/eval/outage_metrics.h"
+#include "hil/harness/eval/path_tracking.h"
 #include "hil/harness/faults/fault_report.h"
 #include "hil/harness/links/can_bus_report.h"
 #include "hil/harness/scenario/scenario.h"
@@ -28,6 +29,20 @@ struct CriterionResult {
   bool pass = false;
 };
 
+/// Closed loop: what the controller and the actuator did (report.json `closed_loop`).
+struct ClosedLoopReport {
+  std::string controller_command, controller_exit;
+  std::uint64_t control_ticks = 0, missing_commands = 0, motor_commands = 0;
+  std::uint64_t saturated_commands = 0, invalid_lines = 0, command_bytes_lost = 0;
+  std::optional<double> first_missing_s, last_command_s;
+  std::uint64_t watchdog_trips = 0;
+  std::optional<double> watchdog_trip_s;
+  /// Distance the truth vehicle went after the last command arrived, and after the watchdog.
+  std::optional<double> distance_after_last_command_m, distance_after_watchdog_m;
+  double final_speed_mps = 0;
+  bool stopped = false;  ///< final speed below 1 cm/s
+};
+
 /// Everything report.json holds.
 struct RunReport {
   std::string scenario;
@@ -44,6 +59,7 @@ struct RunReport {
   AccuracyMetrics baselines;
   std::vector<CriterionResult> criteria;
   std::string estimator_command, estimator_output, estimator_exit;
+  std::string controller_command;  ///< closed loop: the controller's command (substituted)
   int estimator_pid = 0;  ///< process (and process group) id of the estimator, 0 when none
   double wall_time_s = 0, sim_time_s = 0, speed = 1.0;
   std::uint64_t gnss_bytes = 0, gnss_messages_dropped = 0;
@@ -56,6 +72,8 @@ struct RunReport {
   std::string
       incomplete_reason;  ///< why the run stopped early (signal, output folder, link), if it did
   std::optional<CanBusReport> can;  ///< the scenario's CAN bus (can_run.h), when it has one
+  std::optional<TrackingMetrics> tracking;       ///< closed loop: the truth against the path
+  std::optional<ClosedLoopReport> closed_loop;  ///< closed loop: controller and actuator
   bool pass() const;
 };
 

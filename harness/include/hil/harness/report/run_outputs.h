@@ -17,6 +17,10 @@ namespace hil::harness {
 
 /// The scenario's own [input] merge_window_s for navd (estimator.navd_input), -1 when it sets none.
 double NavdMergeWindowS(const Scenario& s);
+/// Closed loop: the FIFO in the run folder into which navd writes its NMEA 0183 solution for the
+/// controller ([output] nmea_device), substituted as {nav_nmea} in the controller's command.
+inline constexpr const char* kNavNmeaFifo = "nav.nmea";
+
 /// The navd configuration for this scenario (input device, leap seconds, mode, JSON output).
 /// `merge_window_s` > 0: [input] merge_window_s (unless the scenario's navd_input sets it).
 void WriteNavdConfig(const std::string& path, const Scenario& s, const std::string& gnss_device,

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "hil/firmware_emu/actuator/base_serial_device.h"
 #include "hil/firmware_emu/device.h"
 #include "hil/firmware_emu/gnss/gnss_fix.h"
 #include "hil/harness/links/can_endpoint.h"
@@ -34,6 +35,8 @@ struct DeviceSet {
   /// The CAN bus (scenario section `can`); null when the scenario has none. Every device's
   /// DeviceOutput::can frames go out on it.
   std::unique_ptr<CanEndpoint> can;
+  /// Closed loop: the differential-drive base (owned by `devices`), null otherwise.
+  const actuator::BaseSerialDevice* base = nullptr;
   /// Real time: the scheduling the run's threads really got ({"events" | "pacing", …}).
   std::vector<std::pair<std::string, link::ThreadSchedule>> threads;
   /// Real time: /proc/stat when the pacing started (schedule_error.json: what the machine gave).

@@ -35,6 +35,7 @@ struct RunOptions {
   double speed = 1.0;  ///< real-time speed-up (realtime mode; ≠ 1 is "scaled")
   std::optional<std::string> estimator_command;  ///< overrides the scenario's estimator command
   std::string navd_path;                         ///< substituted for {navd}
+  std::string guidanced_path = "guidanced";      ///< substituted for {guidanced} (closed loop)
   bool progress = false;                         ///< live progress line on stderr
   bool emulate_only = false;  ///< `hil emulate`: no estimator; print the links and run
   std::optional<double>

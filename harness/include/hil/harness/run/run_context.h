@@ -15,6 +15,7 @@
 
 #include "hil/firmware_emu/link/pty_port.h"
 #include "hil/firmware_emu/link/realtime_pacer.h"
+#include "hil/harness/dut/controller_process.h"
 #include "hil/harness/dut/estimate_collector.h"
 #include "hil/harness/dut/estimator_process.h"
 #include "hil/harness/faults/byte_faults.h"
@@ -31,6 +32,15 @@
 #include "hil/harness/scenario/scenario.h"
 
 namespace hil::harness {
+
+/// A file descriptor closed with its owner.
+struct OwnedFd {
+  int fd = -1;
+  OwnedFd() = default;
+  OwnedFd(const OwnedFd&) = delete;
+  OwnedFd& operator=(const OwnedFd&) = delete;
+  ~OwnedFd();
+};
 
 struct RunContext {
   /// Fixes what the options decide (seed, silence timeout, times); the phases fill the rest.
@@ -56,6 +66,10 @@ struct RunContext {
   double navd_merge_window_s = 0;
   std::ofstream fixes_csv;
   std::optional<EstimatorProcess> estimator;
+  /// Closed loop: the controller (in the estimator's process group) and the FIFO navd writes its
+  /// NMEA solution into, held open by the run so that neither side waits for the other.
+  std::optional<ControllerProcess> controller;
+  OwnedFd nav_fifo;
   std::int64_t estimator_start_ns = 0;
   std::optional<link::RealtimePacer> pacer;  ///< real time or scaled; none in virtual mode
   std::optional<EstimateCollector> collector;

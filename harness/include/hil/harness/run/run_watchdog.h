@@ -20,10 +20,15 @@ class RunWatchdog final : public SchedulerMonitor {
   explicit RunWatchdog(RunContext& ctx) : ctx_(ctx) {}
   void OnDeviceEvents(Time t) override;
   bool KeepGoing(Time t) override;
+  /// Closed loop: a `controller_stop` fault kills the controller at the first host turn at or
+  /// after its start (the host is idle there: the same point of the run every time).
+  void OnHostTurn(Time t) override;
   /// VirtualGate::WaitStep: false gives the wait (and the run) up.
   bool OnGateWait(std::size_t unread, bool new_wait);
 
  private:
+  /// Kills the controller for the controller_stop faults due at `t`.
+  void StopController(Time t);
   RunContext& ctx_;
   std::int64_t running_checked_ns_ = 0;  // the last wall time the estimator was seen running
   std::size_t wait_unread_ = 0;          // unread bytes at the last gate wait step

@@ -47,6 +47,9 @@ class SchedulerMonitor {
   virtual void OnDeviceEvents(Time t) { (void)t; }
   /// Everything of event time `t` is done: false stops the run early (e.g. the estimator died).
   virtual bool KeepGoing(Time t) = 0;
+  /// Virtual mode: a host turn at `t` is over (the host was idle and what it wrote is read); the
+  /// host is idle now, so what is done to it here is done at a deterministic point of the run.
+  virtual void OnHostTurn(Time t) { (void)t; }
 };
 
 class Scheduler {
@@ -69,6 +72,16 @@ class Scheduler {
   }
   /// Virtual mode's regular host turns (see the file comment).
   static constexpr Duration kHostTurnPeriod = std::chrono::seconds(1);
+  /// Closed loop (virtual mode): a host turn also at every control tick (every `period` from
+  /// `period` on): the controller has read everything made before the tick and answered before
+  /// emulated time passes it (lockstep); its command reaches the actuator at the turn.
+  void set_control_period(Duration period) {
+    control_period_ = period;
+    next_control_turn_ = Time{} + period;
+  }
+  /// Closed loop: the commands the actuators gave the truth so far, in time order (the
+  /// evaluation replays them).
+  const std::vector<VehicleCommand>& vehicle_commands() const { return vehicle_commands_; }
 
   /// Runs from t = 0 to t_end. The devices sample `truth` (integrated with CVODE); without one
   /// (devices that read no truth, a replay) each event's sample holds only its time.
@@ -99,7 +112,7 @@ class Scheduler {
   bool PaceTowards(Time t_event, DeviceOutput& out);
   /// Virtual mode: host bytes due, or a host turn due, before (or at) `t_event`. True when it did
   /// one and the next action must be picked again.
-  bool HostStep(Time t_event, DeviceOutput& out);
+  bool HostStep(Time t_event, SchedulerMonitor& monitor, DeviceOutput& out);
   /// Hands the bytes hosts wrote since the last call to their devices, at `t_host` (virtual) or at
   /// their wall arrival time (real time). Returns true when a device queued a reply.
   bool PollHosts(Time t_host, DeviceOutput& out);
@@ -130,6 +143,10 @@ class Scheduler {
   bool write_refused_ = false;  // the gate gave up a wait
   VirtualGate* gate_ = nullptr;
   Time next_periodic_turn_{};
+  Duration control_period_{};  // closed loop: control ticks are host turns (zero: none)
+  Time next_control_turn_{};
+  std::optional<truth::TruthIntegrator> integrator_;
+  std::vector<VehicleCommand> vehicle_commands_;
   std::vector<Time> answer_turns_;        // host turns at the ends of devices' answers
   std::deque<HostBytes> arrivals_;        // read at turns, in time order, not yet delivered
   std::vector<pollfd> host_fds_;          // one per serial endpoint, in device and port order

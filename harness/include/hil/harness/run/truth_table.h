@@ -13,6 +13,7 @@
 #include <thread>
 #include <vector>
 
+#include "hil/firmware_emu/device.h"
 #include "hil/firmware_emu/sim_time.h"
 #include "hil/firmware_emu/truth_sample.h"
 #include "hil/truth/local_frame.h"
@@ -23,7 +24,9 @@ namespace hil::harness {
 class TruthTable {
  public:
   /// Samples the truth at `times` (any order, repeats allowed; negative times are left out).
-  TruthTable(const truth::TruthConfig& config, std::vector<Time> times);
+  /// Closed loop: `commands` are the actuators' commands of the run, replayed.
+  TruthTable(const truth::TruthConfig& config, std::vector<Time> times,
+             const std::vector<VehicleCommand>& commands = {});
   /// A table of samples already taken (`times` sorted and unique, one sample each).
   TruthTable(const truth::TruthConfig& config, std::vector<Time> times,
              std::vector<TruthSample> samples);
@@ -55,6 +58,9 @@ class TruthTableBuilder {
   void Ask(const std::vector<Time>& times);
   /// No time before `t` will be asked for any more (except stragglers, see the class comment).
   void Advance(Time t);
+  /// Closed loop: the actuators' commands of the whole run, before Finish (the thread samples
+  /// nothing before Finish then: Advance is not called in a closed-loop run).
+  void SetCommands(std::vector<VehicleCommand> commands) { commands_ = std::move(commands); }
   /// Samples everything asked for and returns the table.
   TruthTable Finish();
 
@@ -67,6 +73,7 @@ class TruthTableBuilder {
   std::priority_queue<Time, std::vector<Time>, std::greater<>>
       asked_;               // not yet taken by the thread
   std::vector<Time> late_;  // asked behind the thread's position
+  std::vector<VehicleCommand> commands_;  // closed loop, complete once finishing_
   Time watermark_{};
   bool has_watermark_ = false;
   Time notified_watermark_{};  // the thread is woken for every second of watermark, not every event

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "hil/firmware_emu/attitude/wt901c_config.h"
+#include "hil/firmware_emu/actuator/wheel_motors.h"
 #include "hil/firmware_emu/gnss/neo5m_device.h"
 #include "hil/firmware_emu/gnss/receiver_model.h"
 #include "hil/firmware_emu/lidar/rplidar_device.h"
@@ -159,6 +160,29 @@ struct CanLinkSpec {
   bool imu_to_estimator = false;
 };
 
+/// Closed loop (section `closed_loop:`, scenario_closed_loop.cc): the controller under test
+/// steers the truth vehicle through an emulated actuator (vectors/scenarios/closed_loop/README.md).
+struct ClosedLoopSpec {
+  bool enabled = false;  ///< the scenario has a `closed_loop:` section
+  enum class Channel { kSerialBase } channel = Channel::kSerialBase;
+  std::string link = "ttyBASE";  ///< the actuator's serial link (symlink in the run folder)
+  std::string path_file;         ///< the planned path (absolute), {path_file} in the command
+  /// The controller's shell command; {guidanced}, {path_file}, {nav_nmea} (the FIFO navd writes
+  /// its NMEA 0183 solution into), {origin} ("lat,lon,h"), {run_dir} and the link names are
+  /// substituted. It runs in the estimator's process group (the lockstep waits for both).
+  std::string controller;
+  double control_period_s = 0.1;   ///< the controller's tick: a host turn each
+  double command_timeout_s = 0.3;  ///< a tick whose last command is older: missing
+  double first_command_due_s = 3;  ///< ticks before this count no missing command
+  Eigen::Vector2d start_p_N_m{0, 0};  ///< where the vehicle starts (ENU, m)
+  double start_heading_deg = 0;       ///< its heading, clockwise from north
+  /// The vehicle rolls straight at this speed when the run starts (the operator drove it onto
+  /// the line): the estimator aligns on the motion before the controller's first command.
+  double initial_speed_mps = 0;
+  actuator::WheelMotorsConfig motors;  ///< the base's wheels (track_m from the vehicle)
+  double pid_rate_hz = 30;             ///< ROSArduinoBridge's PID frame rate
+};
+
 /// UTC of t = 0 when a scenario gives no start_utc. Not the paper's 2013-06-10: gpsd 3.22 (Debian
 /// 12) takes NMEA dates before its release (2021) for GPS week-rollover victims and reports them
 /// 1024 weeks later.
@@ -177,6 +201,7 @@ struct Scenario {
   UwbDeviceSpec uwb;
   Wt901cDeviceSpec wt901c;
   CanLinkSpec can;
+  ClosedLoopSpec closed_loop;
   EstimatorSpec estimator;
   /// The greenhouse the range sensors see (section `greenhouse:`, paper 001); none without it.
   std::optional<world::GreenhouseConfig> greenhouse;

@@ -1,0 +1,260 @@
+// guidanced: the guidance controller of a closed-loop run (estimator/guidanced/README.md). Reads
+// the estimator's solution as NMEA 0183 (GGA position, RMC speed, HDT heading: navd's
+// [output] nmea_device) and the planned path, runs pure pursuit at each solution, and commands a
+// differential-drive base over the ROSArduinoBridge serial protocol (`m L R`). Event-driven: one
+// command per solution, no timers, so that a lockstep harness sees the same commands every run.
+// Fixed buffers after start-up; no allocation per solution.
+#include <fcntl.h>
+#include <poll.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include <array>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <numbers>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "hil/estimator/drivers/nmea_decoder.h"
+#include "hil/estimator/geodesy.h"
+#include "hil/estimator/guidance/base_serial_client.h"
+#include "hil/estimator/guidance/path_file.h"
+#include "hil/estimator/guidance/path_tracker.h"
+
+namespace {
+
+namespace est = hil::estimator;
+namespace g = hil::estimator::guidance;
+
+struct Options {
+  std::string path_file, nav, base;
+  est::Lla origin;
+  double speed_mps = 0.5, lookahead_m = 1.0;
+  double track_m = 0.5, wheel_radius_m = 0.1, max_wheel_radps = 20, pid_rate_hz = 30;
+  int counts_per_rev = 1200;
+};
+
+[[noreturn]] void Usage(const char* why) {
+  std::fprintf(stderr,
+               "guidanced: %s\nusage: guidanced --path FILE --origin LAT,LON,H --nav NMEA_IN "
+               "--base TTY [--speed M/S] [--lookahead M] [--track M] [--wheel-radius M] "
+               "[--counts-per-rev N] [--pid-rate HZ] [--max-wheel-speed RAD/S]\n",
+               why);
+  std::exit(2);
+}
+
+double Number(const char* key, const char* v) {
+  char* end = nullptr;
+  const double x = std::strtod(v, &end);
+  if (end == v || *end != '\0' || !std::isfinite(x))
+    Usage((std::string(key) + ": not a number: " + v).c_str());
+  return x;
+}
+
+Options Parse(int argc, char** argv) {
+  Options o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string k = argv[i];
+    if (i + 1 >= argc) Usage(("missing the value of " + k).c_str());
+    const char* v = argv[++i];
+    if (k == "--path") {
+      o.path_file = v;
+    } else if (k == "--nav") {
+      o.nav = v;
+    } else if (k == "--base") {
+      o.base = v;
+    } else if (k == "--origin") {
+      if (std::sscanf(v, "%lf,%lf,%lf", &o.origin.lat_deg, &o.origin.lon_deg,
+                      &o.origin.height_m) != 3)
+        Usage("--origin: expected LAT,LON,H");
+    } else if (k == "--speed") {
+      o.speed_mps = Number("--speed", v);
+    } else if (k == "--lookahead") {
+      o.lookahead_m = Number("--lookahead", v);
+    } else if (k == "--track") {
+      o.track_m = Number("--track", v);
+    } else if (k == "--wheel-radius") {
+      o.wheel_radius_m = Number("--wheel-radius", v);
+    } else if (k == "--counts-per-rev") {
+      o.counts_per_rev = static_cast<int>(Number("--counts-per-rev", v));
+    } else if (k == "--pid-rate") {
+      o.pid_rate_hz = Number("--pid-rate", v);
+    } else if (k == "--max-wheel-speed") {
+      o.max_wheel_radps = Number("--max-wheel-speed", v);
+    } else {
+      Usage(("unknown option " + k).c_str());
+    }
+  }
+  if (o.path_file.empty() || o.nav.empty() || o.base.empty())
+    Usage("--path, --nav and --base are required");
+  return o;
+}
+
+int OpenBase(const std::string& tty) {
+  const int fd = open(tty.c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC);
+  if (fd < 0) return -1;
+  termios t{};
+  if (tcgetattr(fd, &t) == 0) {
+    cfmakeraw(&t);
+    cfsetispeed(&t, B57600);
+    cfsetospeed(&t, B57600);
+    tcsetattr(fd, TCSANOW, &t);
+  }
+  return fd;
+}
+
+// HDT "$GNHDT,123.45,T*hh": true heading in degrees (checksum verified).
+std::optional<double> ParseHdt(std::string_view s) {
+  if (s.size() < 12 || s.substr(3, 4) != "HDT,") return std::nullopt;
+  const std::size_t star = s.find('*');
+  if (star == std::string_view::npos || star + 3 > s.size()) return std::nullopt;
+  unsigned x = 0;
+  for (std::size_t i = 1; i < star; ++i) x ^= static_cast<unsigned char>(s[i]);
+  if (std::strtoul(std::string(s.substr(star + 1, 2)).c_str(), nullptr, 16) != x)
+    return std::nullopt;
+  char* end = nullptr;
+  const std::string field(s.substr(7, star - 7));
+  const double h = std::strtod(field.c_str(), &end);
+  if (end == field.c_str()) return std::nullopt;
+  return h;
+}
+
+// The controller's state between solutions.
+class Controller {
+ public:
+  Controller(const Options& o, g::PlannedPath path, int base_fd)
+      : o_(o), path_(std::move(path)), frame_(o.origin), pp_(Config(o)), base_fd_(base_fd),
+        platform_{o.track_m, o.wheel_radius_m, o.max_wheel_radps} {}
+
+  // One NMEA sentence of the solution (without CR LF).
+  void OnSentence(std::string_view s) {
+    if (const std::optional<double> h = ParseHdt(s)) {
+      heading_deg_ = *h;
+      if (have_fix_) Command();
+      return;
+    }
+    const std::optional<est::drivers::NmeaFix> f = est::drivers::NmeaDecoder::ParseSentence(s, &stats_);
+    if (!f || !f->valid || !f->lat_deg || !f->lon_deg) return;
+    if (f->kind == est::drivers::NmeaFix::Kind::kRmc) {
+      speed_mps_ = f->speed_mps.value_or(0.0);
+      return;
+    }
+    const double h = f->msl_altitude_m.value_or(0.0) + f->geoid_separation_m.value_or(0.0);
+    p_EN_m_ = frame_.ToLocal({*f->lat_deg, *f->lon_deg, h}).head<2>();
+    have_fix_ = true;
+  }
+  std::uint64_t commands() const { return commands_; }
+
+ private:
+  static g::PurePursuitConfig Config(const Options& o) {
+    g::PurePursuitConfig c;
+    c.lookahead_m = o.lookahead_m;
+    return c;
+  }
+  void Command() {
+    g::VehiclePose2d pose;
+    pose.p_EN_m = p_EN_m_;
+    pose.yaw_rad = (90.0 - heading_deg_) * std::numbers::pi / 180.0;
+    pose.speed_mps = speed_mps_;
+    const g::TrackingCommand c = pp_.Update(path_, pose);
+    const double v = c.end_of_path ? 0.0 : o_.speed_mps;
+    const g::WheelSpeeds w = platform_.FromSpeedAndCurvature(v, c.curvature_left_per_m);
+    const g::BaseCommandLine line =
+        g::FormatMotorSpeeds(g::TicksPerFrame(w.left_radps, o_.counts_per_rev, o_.pid_rate_hz),
+                             g::TicksPerFrame(w.right_radps, o_.counts_per_rev, o_.pid_rate_hz));
+    if (write(base_fd_, line.bytes.data(), line.size) == static_cast<ssize_t>(line.size))
+      ++commands_;
+  }
+
+  Options o_;
+  g::PlannedPath path_;
+  est::LocalTangentFrame frame_;
+  g::PurePursuit pp_;
+  int base_fd_;
+  g::DiffDrivePlatform platform_;
+  Eigen::Vector2d p_EN_m_{0, 0};
+  double heading_deg_ = 0, speed_mps_ = 0;
+  bool have_fix_ = false;
+  est::drivers::NmeaDecoderStats stats_;
+  std::uint64_t commands_ = 0;
+};
+
+// Splits the NMEA stream into sentences in a fixed buffer.
+class LineSplitter {
+ public:
+  template <typename F>
+  void Feed(const char* p, std::size_t n, F&& on_line) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const char c = p[i];
+      if (c == '\r' || c == '\n') {
+        if (size_ > 0 && !overflow_) on_line(std::string_view(buf_.data(), size_));
+        size_ = 0;
+        overflow_ = false;
+      } else if (size_ < buf_.size()) {
+        buf_[size_++] = c;
+      } else {
+        overflow_ = true;
+      }
+    }
+  }
+
+ private:
+  std::array<char, 128> buf_{};
+  std::size_t size_ = 0;
+  bool overflow_ = false;
+};
+
+int Loop(Controller& ctl, int nav_fd, int base_fd) {
+  LineSplitter nav;
+  g::BaseReplyReader replies;
+  std::array<char, 4096> buf{};
+  pollfd fds[2] = {{nav_fd, POLLIN, 0}, {base_fd, POLLIN, 0}};
+  for (;;) {
+    if (poll(fds, 2, -1) < 0) {
+      if (errno == EINTR) continue;
+      return 1;
+    }
+    if (fds[0].revents) {
+      const ssize_t n = read(nav_fd, buf.data(), buf.size());
+      if (n == 0) return 0;  // the estimator's output ended
+      if (n > 0) nav.Feed(buf.data(), static_cast<std::size_t>(n), [&](std::string_view s) { ctl.OnSentence(s); });
+    }
+    if (fds[1].revents) {
+      const ssize_t n = read(base_fd, buf.data(), buf.size());
+      if (n <= 0 && errno != EINTR && errno != EAGAIN) return 0;  // the base's port closed
+      for (ssize_t i = 0; i < n; ++i) replies.Feed(buf[static_cast<std::size_t>(i)]);
+    }
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Options o = Parse(argc, argv);
+  g::PlannedPath path;
+  try {
+    path = g::ReadPathFile(o.path_file);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "guidanced: %s\n", e.what());
+    return 2;
+  }
+  const int base_fd = OpenBase(o.base);
+  if (base_fd < 0) {
+    std::fprintf(stderr, "guidanced: cannot open the base %s: %s\n", o.base.c_str(), std::strerror(errno));
+    return 1;
+  }
+  const int nav_fd = open(o.nav.c_str(), O_RDONLY | O_CLOEXEC);
+  if (nav_fd < 0) {
+    std::fprintf(stderr, "guidanced: cannot open the solution input %s: %s\n", o.nav.c_str(), std::strerror(errno));
+    return 1;
+  }
+  Controller ctl(o, std::move(path), base_fd);
+  const int rc = Loop(ctl, nav_fd, base_fd);
+  std::fprintf(stderr, "guidanced: stopped; commands=%llu\n", static_cast<unsigned long long>(ctl.commands()));
+  return rc;
+}

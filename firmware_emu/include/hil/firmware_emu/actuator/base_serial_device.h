@@ -1,0 +1,90 @@
+#pragma once
+/// @file
+/// The differential-drive base as a device of the scheduler (closed loop): the ROSArduinoBridge
+/// session (base_serial_session.h) on one serial port, driving the wheel motors
+/// (wheel_motors.h), which drive the truth vehicle.
+///
+/// - Host lines (`m L R`, `e`, …) are executed at their emulated arrival time; a speed command
+///   takes effect at its arrival plus the motors' `command_latency`.
+/// - The device's events lie on the truth's command grid (`grid`, 10 ms): at each it advances the
+///   motors and hands their axle speed and yaw rate to the truth for the next grid instant.
+/// - Control ticks (every `control_period`, from `control_period` on): a tick at which the last
+///   speed command is older than `command_timeout` (or none came yet after the first one was
+///   due) counts one missing command. The motors' own watchdog (2 s, the firmware's auto-stop)
+///   decides what the base does about it.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "hil/firmware_emu/actuator/base_serial_session.h"
+#include "hil/firmware_emu/actuator/wheel_motors.h"
+#include "hil/firmware_emu/device.h"
+
+namespace hil::actuator {
+
+struct BaseSerialDeviceConfig {
+  std::string name = "base";
+  WheelMotorsConfig motors;
+  BaseSerialConfig serial;
+  Duration grid = std::chrono::milliseconds(10);            ///< the truth's command grid
+  Duration control_period = std::chrono::milliseconds(100);  ///< the controller's tick
+  Duration command_timeout = std::chrono::milliseconds(300);  ///< a tick's command is missing
+  /// Controllers need a solution first: ticks before this time count no missing command.
+  Time first_command_due{std::chrono::seconds(3)};
+  /// Command-link loss: host bytes arriving in [first, second) never reach the base (a cut cable).
+  std::vector<std::pair<Time, Time>> link_loss;
+};
+
+/// One control tick's record, for the report's plots and figures.
+struct BaseTickRecord {
+  Time t{};
+  double commanded_yaw_rate_radps = 0;  ///< of the wheel targets last commanded
+  double yaw_rate_radps = 0;            ///< of the wheels' speeds
+  double speed_mps = 0;
+  bool missing = false;
+};
+
+struct BaseSerialDeviceCounters {
+  std::uint64_t ticks = 0;
+  std::uint64_t missing_commands = 0;
+  std::optional<Time> first_missing;  ///< the first tick of the latest run of missing commands
+  std::optional<Time> last_command;   ///< arrival of the latest speed command
+  std::uint64_t bytes_lost = 0;       ///< host bytes lost to a command-link loss
+};
+
+class BaseSerialDevice : public Device {
+ public:
+  explicit BaseSerialDevice(const BaseSerialDeviceConfig& config);
+
+  const std::string& name() const override { return cfg_.name; }
+  Time next_event_time() const override { return next_; }
+  void OnEvent(const TruthSample& truth, DeviceOutput& out) override;
+  void OnHostBytes(int port, Time t, std::string_view bytes, DeviceOutput& out) override;
+  int baud(int port) const override;
+  std::optional<VehicleCommand> TakeVehicleCommand() override;
+
+  const WheelMotors& motors() const { return motors_; }
+  const BaseSerialSession& session() const { return session_; }
+  const BaseSerialDeviceCounters& counters() const { return counters_; }
+  /// One record per control tick (ReserveTicks: room for a whole run, reserved once).
+  const std::vector<BaseTickRecord>& ticks() const { return ticks_; }
+  void ReserveTicks(std::size_t n) { ticks_.reserve(n); }
+
+ private:
+  void ControlTick(Time t);
+
+  BaseSerialDeviceConfig cfg_;
+  WheelMotors motors_;
+  BaseSerialSession session_;
+  Time next_{};
+  Time next_tick_{};
+  std::optional<VehicleCommand> pending_;
+  std::uint64_t seen_motor_commands_ = 0;
+  BaseSerialDeviceCounters counters_;
+  std::vector<BaseTickRecord> ticks_;
+};
+
+}  // namespace hil::actuator

@@ -1,0 +1,56 @@
+#pragma once
+/// @file
+/// Closed loop: how well the truth vehicle followed the planned path (report.json `tracking`).
+/// The vehicle's reference point (truth, 10 Hz) against the path file's polyline: signed
+/// cross-track by interpolation onto the nearest edge (ISO 12188-2's lateral deviation, + = left
+/// of the direction of travel), heading error against the edge's direction, settling after the
+/// start (the first time |XTE| stays below `settle_band_m` for good), and figures per segment
+/// (each edge of the polyline; kind "straight").
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "hil/firmware_emu/sim_time.h"
+
+namespace hil::harness {
+
+/// One truth sample of the vehicle's reference point.
+struct TrackSample {
+  Time t{};
+  Eigen::Vector2d p_N_m{0, 0};
+  double yaw_rad = 0;  ///< ENU, counter-clockwise from east
+  double speed_mps = 0;
+};
+
+struct XteStats {
+  std::size_t samples = 0;
+  double mean_abs_m = 0, rmse_m = 0, p95_abs_m = 0, max_abs_m = 0, heading_rmse_deg = 0;
+};
+
+struct SegmentTracking {
+  int index = 0;
+  std::string kind = "straight";
+  double start_s_m = 0, end_s_m = 0;  ///< along the path
+  XteStats stats;
+};
+
+struct TrackingMetrics {
+  /// The whole evaluated run; after an initial offset beyond the band, from settling on.
+  XteStats all;
+  std::optional<double> settling_distance_m, settling_time_s;
+  double initial_cross_track_m = 0;
+  double settle_band_m = 0.05;
+  double distance_travelled_m = 0;
+  std::vector<SegmentTracking> segments;
+  /// The series for the plots: along-path distance and signed XTE of every sample.
+  std::vector<double> s_m, xte_m;
+};
+
+/// Scores `track` (time order) against the polyline `path`.
+TrackingMetrics ScoreTracking(const std::vector<Eigen::Vector2d>& path,
+                              const std::vector<TrackSample>& track, double settle_band_m = 0.05);
+
+}  // namespace hil::harness

@@ -1,0 +1,115 @@
+#include "hil/harness/eval/path_tracking.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace hil::harness {
+namespace {
+
+struct Foot {
+  std::size_t edge = 0;
+  double s_m = 0, xte_m = 0, yaw_rad = 0;
+};
+
+Foot Project(const std::vector<Eigen::Vector2d>& v, const std::vector<double>& s0,
+             const Eigen::Vector2d& p) {
+  Foot best;
+  double best_d = INFINITY;
+  for (std::size_t i = 0; i + 1 < v.size(); ++i) {
+    const Eigen::Vector2d d = v[i + 1] - v[i];
+    const double len = d.norm();
+    const Eigen::Vector2d u = d / len;
+    const bool first = i == 0, last = i + 2 == v.size();
+    double a = (p - v[i]).dot(u);
+    if (!(first && a < 0) && !(last && a > len)) a = std::clamp(a, 0.0, len);  // ends extend
+    const Eigen::Vector2d q = v[i] + a * u;
+    const double dist = (p - q).norm();
+    if (dist < best_d - 1e-9) {
+      best_d = dist;
+      best.edge = i;
+      best.s_m = s0[i] + a;
+      best.xte_m = u.x() * (p - v[i]).y() - u.y() * (p - v[i]).x();
+      best.yaw_rad = std::atan2(u.y(), u.x());
+    }
+  }
+  return best;
+}
+
+double Wrap(double a) { return std::remainder(a, 2 * std::numbers::pi); }
+
+XteStats Stats(const std::vector<double>& xte, const std::vector<double>& heading) {
+  XteStats s;
+  s.samples = xte.size();
+  if (xte.empty()) return s;
+  std::vector<double> absv;
+  double sum = 0, sq = 0, hsq = 0;
+  for (std::size_t i = 0; i < xte.size(); ++i) {
+    absv.push_back(std::fabs(xte[i]));
+    sum += absv.back();
+    sq += xte[i] * xte[i];
+    hsq += heading[i] * heading[i];
+  }
+  const double n = static_cast<double>(xte.size());
+  s.mean_abs_m = sum / n;
+  s.rmse_m = std::sqrt(sq / n);
+  s.heading_rmse_deg = std::sqrt(hsq / n) * 180 / std::numbers::pi;
+  std::sort(absv.begin(), absv.end());
+  s.max_abs_m = absv.back();
+  s.p95_abs_m = absv[std::min(absv.size() - 1, static_cast<std::size_t>(std::ceil(0.95 * n)) - 1)];
+  return s;
+}
+
+}  // namespace
+
+TrackingMetrics ScoreTracking(const std::vector<Eigen::Vector2d>& path,
+                              const std::vector<TrackSample>& track, double settle_band_m) {
+  TrackingMetrics m;
+  m.settle_band_m = settle_band_m;
+  if (path.size() < 2 || track.empty()) return m;
+  std::vector<double> s0{0};
+  for (std::size_t i = 1; i < path.size(); ++i) s0.push_back(s0.back() + (path[i] - path[i - 1]).norm());
+  std::vector<Foot> feet;
+  for (std::size_t i = 0; i < track.size(); ++i) {
+    feet.push_back(Project(path, s0, track[i].p_N_m));
+    m.s_m.push_back(feet.back().s_m);
+    m.xte_m.push_back(feet.back().xte_m);
+    if (i > 0) m.distance_travelled_m += (track[i].p_N_m - track[i - 1].p_N_m).norm();
+  }
+  m.initial_cross_track_m = feet.front().xte_m;
+  // settled: from the first sample after which |XTE| stays inside the band (while moving)
+  std::size_t settle = track.size();
+  for (std::size_t i = track.size(); i-- > 0;) {
+    if (std::fabs(feet[i].xte_m) > settle_band_m) break;
+    settle = i;
+  }
+  std::size_t from = 0;
+  if (settle < track.size()) {
+    // after an initial offset the figures are those of the settled vehicle
+    if (std::fabs(m.initial_cross_track_m) > settle_band_m) from = settle;
+    m.settling_time_s = ToSeconds(track[settle].t - track.front().t);
+    m.settling_distance_m = feet[settle].s_m - feet.front().s_m;
+  }
+  std::vector<double> xte, head;
+  std::vector<std::vector<double>> seg_xte(path.size() - 1), seg_head(path.size() - 1);
+  for (std::size_t i = from; i < track.size(); ++i) {
+    if (track[i].speed_mps < 0.05) continue;  // a parked vehicle tracks nothing
+    const double he = Wrap(feet[i].yaw_rad - track[i].yaw_rad);
+    xte.push_back(feet[i].xte_m);
+    head.push_back(he);
+    seg_xte[feet[i].edge].push_back(feet[i].xte_m);
+    seg_head[feet[i].edge].push_back(he);
+  }
+  m.all = Stats(xte, head);
+  for (std::size_t e = 0; e + 1 < path.size(); ++e) {
+    SegmentTracking st;
+    st.index = static_cast<int>(e);
+    st.start_s_m = s0[e];
+    st.end_s_m = s0[e + 1];
+    st.stats = Stats(seg_xte[e], seg_head[e]);
+    m.segments.push_back(st);
+  }
+  return m;
+}
+
+}  // namespace hil::harness

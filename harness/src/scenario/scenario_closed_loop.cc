@@ -1,0 +1,88 @@
+// The closed_loop section: the actuator, its link, the controller and the planned path.
+#include <filesystem>
+
+#include "hil/harness/eval/path_file_reader.h"
+
+#include "scenario_sections.h"
+
+namespace hil::harness {
+namespace {
+
+Duration Seconds(double s) { return DurationFromSeconds(s); }
+
+void ReadActuator(const YamlReader& r, ClosedLoopSpec& c) {
+  r.CheckKeys({"wheel_radius_m", "encoder_counts_per_rev", "max_wheel_speed_radps",
+               "max_wheel_accel_radps2", "time_constant_s", "slip", "command_latency_s",
+               "watchdog_timeout_s", "pid_rate_hz"});
+  actuator::WheelMotorsConfig& m = c.motors;
+  m.wheel_radius_m = r.DoubleIn("wheel_radius_m", m.wheel_radius_m, 0.01, 2);
+  m.encoder_counts_per_rev =
+      static_cast<int>(r.Int("encoder_counts_per_rev", m.encoder_counts_per_rev, 1, 1 << 20));
+  m.max_wheel_speed_radps = r.DoubleIn("max_wheel_speed_radps", m.max_wheel_speed_radps, 0.1, 500);
+  m.max_wheel_accel_radps2 =
+      r.DoubleIn("max_wheel_accel_radps2", m.max_wheel_accel_radps2, 0.1, 1e4);
+  m.time_constant_s = r.DoubleIn("time_constant_s", m.time_constant_s, 0.001, 10);
+  const std::vector<double> slip = r.Doubles("slip", 2, {m.slip[0], m.slip[1]});
+  for (double x : slip) {
+    if (x < 0 || x >= 1) r.Fail("slip", "each wheel's slip is a fraction in [0, 1)");
+  }
+  m.slip = {slip[0], slip[1]};
+  m.command_latency =
+      Seconds(r.DoubleIn("command_latency_s", ToSeconds(m.command_latency), 0, 5));
+  m.command_timeout =
+      Seconds(r.DoubleIn("watchdog_timeout_s", ToSeconds(m.command_timeout), 0.01, 60));
+  c.pid_rate_hz = r.DoubleIn("pid_rate_hz", c.pid_rate_hz, 1, 1000);
+}
+
+}  // namespace
+
+const std::vector<std::string> kClosedLoopSectionKeys{"closed_loop"};
+
+void ReadClosedLoopSection(const YamlReader& root, Scenario& s) {
+  const std::optional<YamlReader> r = root.OptionalChild("closed_loop");
+  if (!r) return;
+  r->CheckKeys({"channel", "link", "path_file", "controller", "control_period_s",
+                "command_timeout_s", "first_command_due_s", "start_enu_m", "start_heading_deg",
+                "initial_speed_mps", "actuator"});
+  ClosedLoopSpec& c = s.closed_loop;
+  c.enabled = true;
+  r->Choice("channel", "serial_base", {"serial_base"});
+  if (root.Has("path"))
+    root.Fail("path", "a closed-loop scenario's path is closed_loop.path_file, not path");
+  if (s.truth.vehicle.model != truth::VehicleParams::Model::kDiffDrive)
+    r->Fail("channel", "the serial base protocol drives a vehicle of model diff_drive");
+  c.link = r->String("link", c.link);
+  const std::filesystem::path base = std::filesystem::path(r->file()).parent_path();
+  const std::filesystem::path file = r->String("path_file");
+  c.path_file = std::filesystem::absolute(file.is_absolute() ? file : base / file).string();
+  try {
+    ReadPathVertices(c.path_file);
+  } catch (const PathFileReadError& e) {
+    r->Fail("path_file", e.what());
+  }
+  c.controller = r->String("controller");
+  c.control_period_s = r->DoubleIn("control_period_s", c.control_period_s, 0.01, 10);
+  c.command_timeout_s = r->DoubleIn("command_timeout_s", c.command_timeout_s, 0.01, 60);
+  c.first_command_due_s = r->DoubleIn("first_command_due_s", c.first_command_due_s, 0, 600);
+  const std::vector<double> p = r->Doubles("start_enu_m", 2, {0, 0});
+  c.start_p_N_m = {p[0], p[1]};
+  c.start_heading_deg = r->DoubleIn("start_heading_deg", 0, -360, 360);
+  c.initial_speed_mps = r->DoubleIn("initial_speed_mps", 0, 0, 10);
+  c.motors.track_m = s.truth.vehicle.track_m;
+  if (auto a = r->OptionalChild("actuator")) ReadActuator(*a, c);
+  c.motors.initial_wheel_speed_radps = c.initial_speed_mps / c.motors.wheel_radius_m;
+  // the truth obeys the wheels: its own lags are made negligible (the wheel motors are the model)
+  truth::TruthConfig& t = s.truth;
+  t.external_commands = true;
+  t.command_period_s = 0.01;
+  t.path.reset();
+  t.start_p_N_m = c.start_p_N_m;
+  t.heading_deg = c.start_heading_deg;
+  t.speed_mps = c.initial_speed_mps;
+  t.start_at_speed = true;
+  t.vehicle.speed_lag_s = 1e-3;
+  t.vehicle.yaw_rate_lag_s = 1e-3;
+  t.vehicle.max_yaw_rate_dps = 1000;
+}
+
+}  // namespace hil::harness

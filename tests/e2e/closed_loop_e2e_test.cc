@@ -1,0 +1,68 @@
+// Closed loop end to end (issue 16): hil runs the scenario, navd estimates, guidanced steers the
+// differential-drive base over the ROSArduinoBridge serial protocol, and the truth follows the
+// wheels. The short form of vectors/scenarios/closed_loop/diff_drive_serial.yaml passes its
+// criteria; killing the controller mid-run stops the base on its 2 s watchdog and the report
+// says when, and how far the vehicle went.
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.h"
+
+namespace hil::test {
+namespace {
+
+std::string Hil() { return BinDir() + "/hil"; }
+std::string Scenario(const std::string& name) {
+  return SourceDir() + "/vectors/scenarios/closed_loop/" + name;
+}
+
+TEST(ClosedLoopE2eTest, DiffDriveOverTheSerialBaseProtocolPasses) {
+  TempDir dir("e2e_closed_loop_serial");
+  const CommandResult r =
+      RunCommand(Hil() + " run " + Scenario("diff_drive_serial.yaml") + " --short --out " + dir / "r");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const auto rep = nlohmann::json::parse(ReadFile(dir / "r/report.json"));
+  EXPECT_TRUE(rep["pass"].get<bool>()) << rep.dump(2);
+  const auto& tr = rep["tracking"];
+  EXPECT_GT(tr["samples"].get<int>(), 150) << "10 Hz from 25 s to 45 s";
+  EXPECT_LT(tr["cross_track_mean_abs_m"].get<double>(), 0.05) << tr.dump(2);
+  const auto& cl = rep["closed_loop"];
+  EXPECT_EQ(cl["missing_commands"].get<int>(), 0) << cl.dump(2);
+  EXPECT_EQ(cl["watchdog_trips"].get<int>(), 0);
+  EXPECT_GT(cl["motor_commands"].get<int>(), 350) << "10 Hz commands from about 5.3 s to 45 s";
+  // the commands are in the base link's capture, as received bytes
+  const std::string cap = ReadFile(dir / "r/captures/ttyBASE.cap");
+  EXPECT_NE(cap.find("rx "), std::string::npos);
+}
+
+TEST(ClosedLoopE2eTest, KillingTheControllerStopsTheBaseOnItsWatchdog) {
+  TempDir dir("e2e_closed_loop_kill");
+  const CommandResult r = RunCommand(Hil() + " run " + Scenario("diff_drive_command_loss.yaml") +
+                                     " --short --out " + dir / "r");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const auto rep = nlohmann::json::parse(ReadFile(dir / "r/report.json"));
+  EXPECT_TRUE(rep["pass"].get<bool>()) << rep.dump(2);
+  const auto& cl = rep["closed_loop"];
+  EXPECT_EQ(cl["controller_exit"].get<std::string>(), "killed by hil");
+  EXPECT_EQ(cl["watchdog_trips"].get<int>(), 1) << cl.dump(2);
+  const double last = cl["last_command_s"].get<double>();
+  EXPECT_NEAR(last, 15.0, 0.25) << "the controller was killed at 15 s";
+  // ROSArduinoBridge's auto-stop: 2 s after the last `m` command, exactly
+  EXPECT_NEAR(cl["watchdog_trip_s"].get<double>(), last + 2.0, 1e-9);
+  EXPECT_TRUE(cl["stopped"].get<bool>());
+  // 2 s at 0.5 m/s, then the deceleration through the wheels' acceleration limit
+  const double coast = cl["distance_after_last_command_m"].get<double>();
+  EXPECT_GT(coast, 0.95);
+  EXPECT_LT(coast, 1.2);
+  EXPECT_GE(cl["missing_commands"].get<int>(), 100) << "every tick after the kill (15 s of 10 Hz)";
+  bool noted = false;
+  for (const auto& f : rep["fault_injections"]) {
+    if (f["kind"] == "controller_stop") noted = f.dump().find("15") != std::string::npos;
+  }
+  EXPECT_TRUE(noted) << rep["fault_injections"].dump(2);
+}
+
+}  // namespace
+}  // namespace hil::test
