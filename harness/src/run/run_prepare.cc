@@ -146,9 +146,12 @@ void Prepare(RunContext& ctx) {
   ctx.set = BuildDevices(scenario, ctx.seed, ctx.dir);
   const std::string raw_command = opt.estimator_command.value_or(scenario.estimator.command);
   // virtual mode: navd merges its inputs by device time, so the gate may hand the links over in
-  // batches (virtual_gate.h, input_merge.h); a scenario's own merge_window_s is kept as it is
+  // batches (virtual_gate.h, input_merge.h); a scenario's own merge_window_s is kept as it is. Not
+  // in a closed loop: the merge holds navd's solutions back by the window, and the controller
+  // steers from them.
   const double own_window_s = NavdMergeWindowS(scenario);
   const bool navd_virtual = opt.mode == RunMode::kVirtual && !opt.emulate_only &&
+                            !scenario.closed_loop.enabled &&
                             raw_command.find("{navd}") != std::string::npos;
   ctx.navd_merge_window_s =
       own_window_s >= 0 ? own_window_s : (navd_virtual ? kNavdMergeWindowS : 0.0);
