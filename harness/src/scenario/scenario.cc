@@ -116,9 +116,9 @@ Scenario FromReader(const YamlReader& root) {
   std::vector<std::string> keys{"name",    "description", "start_utc", "duration_s",
                                 "seed",    "estimator",   "criteria",  "faults",
                                 "include", "evaluation"};
-  for (const auto* section : {&kTruthSectionKeys, &kGnssSectionKeys, &kMcuSectionKeys,
-                              &kCanSectionKeys, &kGreenhouseSectionKeys, &kRangeSensorSectionKeys,
-                              &kSuiteSectionKeys}) {
+  for (const auto* section :
+       {&kTruthSectionKeys, &kGnssSectionKeys, &kMcuSectionKeys, &kCanSectionKeys,
+        &kGreenhouseSectionKeys, &kRangeSensorSectionKeys, &kSuiteSectionKeys}) {
     keys.insert(keys.end(), section->begin(), section->end());
   }
   root.CheckKeys(keys);
