@@ -102,8 +102,8 @@ TEST(ScenarioRangeSensors, DefaultsAndTheLibraryLayout) {
   ASSERT_TRUE(s.lidar.enabled);
   EXPECT_DOUBLE_EQ(s.lidar.config.rotation_hz, 10);
   EXPECT_DOUBLE_EQ(s.lidar.config.mount.z_m, 0.5);
-  const Scenario lib =
-      ParseScenario(std::string(kMinimal) + "include: [greenhouse/seed001_greenhouse.yaml]\n", "g.yaml");
+  const Scenario lib = ParseScenario(
+      std::string(kMinimal) + "include: [greenhouse/seed001_greenhouse.yaml]\n", "g.yaml");
   ASSERT_TRUE(lib.greenhouse);
   EXPECT_EQ(lib.greenhouse->ridge_count, 4);
   EXPECT_EQ(lib.rangefinders.units.size(), 4u);
