@@ -350,6 +350,28 @@ struct McuInput {
   }
 };
 
+// A decoded GNSS epoch for the merge, with the receivers' counters when the merge holds it.
+est::MergeItem GnssItem(const est::GnssSample& g, const hil::navd::GnssReceivers& receivers,
+                        bool with_counters) {
+  est::MergeItem m;
+  m.kind = est::MergeItem::Kind::kGnss;
+  m.t = g.t;
+  m.link = g.antenna;
+  m.gnss = g;
+  if (with_counters) m.nmea = receivers.nmea_stats(), m.ubx = receivers.ubx_stats();
+  return m;
+}
+
+// A J1939 IMU sample for the merge, with the decoder's counters.
+est::MergeItem CanImuItem(const est::ImuSample& s, const hil::navd::CanImuInput& can_imu) {
+  est::MergeItem m;
+  m.kind = est::MergeItem::Kind::kImu;
+  m.t = s.t;
+  m.imu = s;
+  m.j1939 = can_imu.decoder().stats();
+  return m;
+}
+
 // The health object's sources: the decoders' live counters, or with the input merge the counters
 // of the items it released.
 est::HealthSources HealthSourcesOf(const est::InputMerge& merge,
@@ -394,10 +416,9 @@ int Run(const est::NavdConfig& cfg, SolutionOutputs& outputs) {
     if (o.valid && o.t != outputs.last_emitted) emit(o);
   };
   const est::Nanoseconds period{std::llround(1e9 / cfg.output_rate_hz)};
-  const auto on_imu = [&](const est::ImuSample& s) {
-    nav.Push(s);
+  const auto on_imu = [&](const est::ImuSample& s) {  // each sample: the filter to the horizon,
+    nav.Push(s);                                      // one solution per output period
     if (!imu_mode) return;
-    // each sample as it is decoded: run the filter to the horizon, one solution per output period
     nav.Update();
     if (!nav.aligned()) return;
     const std::optional<est::GpsTime>& last_emitted = outputs.last_emitted;
@@ -409,21 +430,14 @@ int Run(const est::NavdConfig& cfg, SolutionOutputs& outputs) {
       emit(o);  // (a fix stands in for the filter after an IMU loss)
   };
   // every decoded input, in device-time order with [input] merge_window_s, else as it is read
-  est::InputMerge merge(razor_text ? est::Nanoseconds{0} : cfg.merge_window, 2048,
-                        [&](const est::MergeItem& m) {
-                          if (m.kind == est::MergeItem::Kind::kGnss) return use_gnss(m.gnss);
-                          if (m.from_mcu) health.OnMcuFrame(m.frame);
-                          if (m.imu) on_imu(*m.imu);
-                        });
-  hil::navd::GnssReceivers receivers(cfg, [&](const est::GnssSample& g) {
-    est::MergeItem m;
-    m.kind = est::MergeItem::Kind::kGnss;
-    m.t = g.t;
-    m.link = g.antenna;
-    m.gnss = g;
-    if (merge.enabled()) m.nmea = receivers.nmea_stats(), m.ubx = receivers.ubx_stats();
-    merge.Add(std::move(m));
-  });
+  const auto use = [&](const est::MergeItem& m) {
+    if (m.kind == est::MergeItem::Kind::kGnss) return use_gnss(m.gnss);
+    if (m.from_mcu) health.OnMcuFrame(m.frame);
+    if (m.imu) on_imu(*m.imu);
+  };
+  est::InputMerge merge(razor_text ? est::Nanoseconds{0} : cfg.merge_window, 2048, use);
+  hil::navd::GnssReceivers receivers(
+      cfg, [&](const est::GnssSample& g) { merge.Add(GnssItem(g, receivers, merge.enabled())); });
   McuInput mcu_in;
   est::drivers::McuFrameDecoder mcu(
       [&](const est::drivers::McuFrame& f) { merge.Add(mcu_in.Item(f, mcu.stats())); });
@@ -432,15 +446,7 @@ int Run(const est::NavdConfig& cfg, SolutionOutputs& outputs) {
   });
   std::unique_ptr<hil::navd::CanImuInput> can_imu;
   if (!OpenCanImu(cfg, can_imu)) return 2;
-  const auto on_can_imu = [&](const est::ImuSample& s) {
-    est::MergeItem m;
-    m.kind = est::MergeItem::Kind::kImu;
-    m.t = s.t;
-    m.imu = s;
-    m.j1939 = can_imu->decoder().stats();
-    merge.Add(std::move(m));
-  };
-
+  const auto on_can_imu = [&](const est::ImuSample& s) { merge.Add(CanImuItem(s, *can_imu)); };
   health.set_sources(HealthSourcesOf(merge, receivers, mcu, mcu_in, nav, can_imu.get()));
   // every input device with what its bytes are fed to
   hil::navd::SerialDevice imu(cfg.imu_device, cfg.imu_baud);

@@ -1,10 +1,11 @@
 #include "hil/harness/run/machine_load.h"
 
-#include <sys/utsname.h>
 #include <unistd.h>
 
 #include <fstream>
 #include <sstream>
+
+#include <sys/utsname.h>
 
 namespace hil::harness {
 namespace {
