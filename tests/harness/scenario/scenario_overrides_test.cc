@@ -69,7 +69,8 @@ TEST(ScenarioOverridesTest, BadOverridesNameTheField) {
     }
   };
   expect({"gnss.nosuch.x", "1"}, "no 'gnss.nosuch'");
-  expect({"criteria[3].max", "1"}, "no element [3]");
+  expect({"criteria[3].max", "1"}, "no 'criteria[3]'");
+  expect({"criteria[3]", "1"}, "no element [3]");
   expect({"duration_s", "-4"}, "duration_s");  // checked like the file's own value
   expect({"gnss.bad_key", "1"}, "gnss.bad_key");
 }
