@@ -35,7 +35,8 @@ odo: unused
 )";
 
 TEST(KfginsConfig, ReadsEveryKeyInTheFilesUnits) {
-  const std::string dir = testing::TempDir();
+  const testing::ScopedTempDir tmp;
+  const std::string& dir = tmp.path;
   const KfginsConfig c = LoadKfginsConfig(testing::WriteFile(dir, "kf-gins.yaml", kConfig));
   EXPECT_EQ(c.imupath, "dataset/IMU.txt");
   EXPECT_EQ(c.gnsspath, "dataset/GNSS.txt");
@@ -53,7 +54,8 @@ TEST(KfginsConfig, ReadsEveryKeyInTheFilesUnits) {
 }
 
 TEST(KfginsConfig, BadValuesNameFileLineAndKey) {
-  const std::string dir = testing::TempDir();
+  const testing::ScopedTempDir tmp;
+  const std::string& dir = tmp.path;
   std::string text = kConfig;
   text.replace(text.find("[ 0.136, -0.301, -0.184 ]"), 25, "[0.1, 0.2]");
   const std::string path = testing::WriteFile(dir, "short.yaml", text);

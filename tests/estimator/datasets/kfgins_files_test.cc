@@ -27,7 +27,8 @@ std::string ErrorOf(const std::string& path, bool imu) {
 }
 
 TEST(KfginsImuReader, ReadsIncrementsInFrd) {
-  const std::string dir = testing::TempDir();
+  const testing::ScopedTempDir tmp;
+  const std::string& dir = tmp.path;
   KfginsImuReader r(testing::WriteFile(dir, "imu.txt",
                                        "456300.005 1e-5 -2e-5 3e-5 0.001 -0.002 -0.049\n"
                                        "456300.010,1e-5,-2e-5,3e-5,0.001,-0.002,-0.049\n"),
@@ -43,7 +44,8 @@ TEST(KfginsImuReader, ReadsIncrementsInFrd) {
 }
 
 TEST(KfginsImuReader, BadLinesNameFileLineAndField) {
-  const std::string dir = testing::TempDir();
+  const testing::ScopedTempDir tmp;
+  const std::string& dir = tmp.path;
   const std::string good = "1.000 0 0 0 0 0 -0.049\n";
   std::string p = testing::WriteFile(dir, "short.txt", good + "1.005 0 0 0 0 0\n");
   EXPECT_EQ(ErrorOf(p, true), p + ":2: dvel_z: short line (6 of 7 columns)");
@@ -56,7 +58,8 @@ TEST(KfginsImuReader, BadLinesNameFileLineAndField) {
 }
 
 TEST(KfginsGnssReader, ReadsPositionAndOptionalVelocity) {
-  const std::string dir = testing::TempDir();
+  const testing::ScopedTempDir tmp;
+  const std::string& dir = tmp.path;
   KfginsGnssReader r(
       testing::WriteFile(dir, "gnss.txt",
                          "456300 30.44 114.47 20.9 0.01 0.02 0.03\n"
@@ -72,7 +75,8 @@ TEST(KfginsGnssReader, ReadsPositionAndOptionalVelocity) {
 }
 
 TEST(KfginsGnssReader, BadLinesNameFileLineAndField) {
-  const std::string dir = testing::TempDir();
+  const testing::ScopedTempDir tmp;
+  const std::string& dir = tmp.path;
   const std::string good = "10 30 114 20 0.01 0.01 0.02\n";
   std::string p = testing::WriteFile(dir, "short.txt", good + "11 30 114 20 0.01\n");
   EXPECT_EQ(ErrorOf(p, false), p + ":2: std_e: short line (5 columns; 7, or 13 with velocity)");

@@ -20,7 +20,8 @@ std::string ReadAll(const std::string& path) {
 }
 
 TEST(KfginsOutputWriter, WritesTheThreeFilesOneLineEach) {
-  const std::string dir = testing::TempDir();
+  const testing::ScopedTempDir tmp;
+  const std::string& dir = tmp.path;
   KfginsOutputWriter w(dir);
   KfginsEpoch e;
   e.sow = 456300.005;

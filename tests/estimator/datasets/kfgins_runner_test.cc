@@ -66,7 +66,8 @@ std::vector<std::vector<double>> ReadRows(const std::string& path) {
 }
 
 TEST(KfginsRunner, StationaryDatasetStaysPutWithOneLinePerImuEpoch) {
-  const std::string dir = testing::TempDir();
+  const testing::ScopedTempDir tmp;
+  const std::string& dir = tmp.path;
   const KfginsConfig c = LoadKfginsConfig(WriteStationaryDataset(dir));
   const KfginsRunResult r = RunKfgins(c, NavigatorParamsFromKfgins(c));
   EXPECT_EQ(r.imu_epochs, 4000u);
@@ -86,7 +87,8 @@ TEST(KfginsRunner, StationaryDatasetStaysPutWithOneLinePerImuEpoch) {
 }
 
 TEST(KfginsRunner, EndTimeStopsTheRunAndMissingFilesAreErrors) {
-  const std::string dir = testing::TempDir();
+  const testing::ScopedTempDir tmp;
+  const std::string& dir = tmp.path;
   const KfginsConfig c = LoadKfginsConfig(WriteStationaryDataset(dir, "endtime: 1010\n"));
   EXPECT_EQ(RunKfgins(c, NavigatorParamsFromKfgins(c)).imu_epochs, 2000u);
   KfginsConfig bad = c;

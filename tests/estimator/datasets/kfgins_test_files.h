@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 
 namespace hil::estimator::datasets::testing {
@@ -13,6 +14,12 @@ inline std::string TempDir() {
   const char* d = mkdtemp(tmpl);
   return d ? std::string(d) : std::string("/tmp");
 }
+
+/// A temporary folder removed with everything in it at the end of the scope.
+struct ScopedTempDir {
+  std::string path = TempDir();
+  ~ScopedTempDir() { std::filesystem::remove_all(path); }
+};
 
 inline std::string WriteFile(const std::string& dir, const std::string& name,
                              const std::string& text) {

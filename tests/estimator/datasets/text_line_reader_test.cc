@@ -8,7 +8,8 @@ namespace hil::estimator::datasets {
 namespace {
 
 TEST(TextLineReader, SkipsBlankAndCommentLinesAndCountsLines) {
-  const std::string dir = testing::TempDir();
+  const testing::ScopedTempDir tmp;
+  const std::string& dir = tmp.path;
   TextLineReader r(testing::WriteFile(dir, "a.txt", "# header\n\n  1 2,3\r\n% matlab\n4\t5\n"));
   std::string_view line;
   double v[4];
@@ -23,7 +24,8 @@ TEST(TextLineReader, SkipsBlankAndCommentLinesAndCountsLines) {
 }
 
 TEST(TextLineReader, NamesFileLineAndFieldOfABadNumber) {
-  const std::string dir = testing::TempDir();
+  const testing::ScopedTempDir tmp;
+  const std::string& dir = tmp.path;
   const std::string path = testing::WriteFile(dir, "b.txt", "1 2\n1 nan\n1 x2\n");
   TextLineReader r(path);
   std::string_view line;

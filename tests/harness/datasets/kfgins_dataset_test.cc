@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -16,10 +17,15 @@
 namespace hil::harness {
 namespace {
 
-std::string TempDir() {
-  char tmpl[] = "/tmp/kfgins_dataset_XXXXXX";
-  return mkdtemp(tmpl);
-}
+// a temporary folder removed with its files at the end of the scope
+struct TempDir {
+  std::string path;
+  TempDir() {
+    char tmpl[] = "/tmp/kfgins_dataset_XXXXXX";
+    path = mkdtemp(tmpl);
+  }
+  ~TempDir() { std::filesystem::remove_all(path); }
+};
 
 std::string ReadAll(const std::string& path) {
   std::ifstream in(path);
@@ -38,7 +44,8 @@ KfginsDatasetOptions ShortSet() {
 }
 
 TEST(KfginsDataset, SameSeedSameBytesAndNavdReadsEveryLine) {
-  const std::string a = TempDir(), b = TempDir();
+  const TempDir ta, tb;
+  const std::string &a = ta.path, &b = tb.path;
   const KfginsDatasetResult r = WriteKfginsDataset(ShortSet(), a);
   WriteKfginsDataset(ShortSet(), b);
   EXPECT_EQ(r.imu_lines, 8000u);
@@ -56,7 +63,8 @@ TEST(KfginsDataset, SameSeedSameBytesAndNavdReadsEveryLine) {
 }
 
 TEST(KfginsDataset, NavdOnTheGeneratedSetFollowsTheTruth) {
-  const std::string dir = TempDir();
+  const TempDir tmp;
+  const std::string& dir = tmp.path;
   WriteKfginsDataset(ShortSet(), dir);
   const auto cfg = estimator::datasets::LoadKfginsConfig(dir + "/kf-gins.yaml");
   const auto run =
