@@ -85,7 +85,8 @@ void ReadCapture(const std::string& text, std::vector<Chunk>& chunks, bool& ubx,
     std::int64_t t = 0, period = 0, wall = 0;
     if (!(f >> dir >> t >> period >> wall >> name >> hex)) continue;
     if (dir == "ftx") {  // a CAN capture: the frames the emulated devices put on the bus
-      ds::CandumpRecord r = ds::ParseCandumpLine("(0.0) " + span.interface + " " + hex, span.path, n);
+      ds::CandumpRecord r =
+          ds::ParseCandumpLine("(0.0) " + span.interface + " " + hex, span.path, n);
       Chunk c;
       c.t_ns = t;
       c.can = true;
@@ -153,9 +154,8 @@ LogSpan ReadLog(const std::string& path, std::vector<Chunk>& chunks, bool& ubx) 
 // with a candump log, every log goes on Unix time: captures through their recorded start; raw
 // logs have no receive times and cannot be merged
 void ToUnixTime(const std::vector<LogSpan>& spans, std::vector<Chunk>& chunks) {
-  const bool have_candump = std::any_of(spans.begin(), spans.end(), [](const LogSpan& s) {
-    return s.kind == LogSpan::kCandump;
-  });
+  const bool have_candump = std::any_of(
+      spans.begin(), spans.end(), [](const LogSpan& s) { return s.kind == LogSpan::kCandump; });
   if (!have_candump) return;
   for (const LogSpan& s : spans) {
     if (s.kind == LogSpan::kRaw)
@@ -366,8 +366,8 @@ int Replay(const ReplayArgs& r) {
   const std::vector<Chunk> chunks = ReadLogs(r, ubx);
   const bool have_can =
       std::any_of(chunks.begin(), chunks.end(), [](const Chunk& c) { return c.can; });
-  const bool have_imu = have_can || std::any_of(chunks.begin(), chunks.end(),
-                                                [](const Chunk& c) { return c.imu; });
+  const bool have_imu =
+      have_can || std::any_of(chunks.begin(), chunks.end(), [](const Chunk& c) { return c.imu; });
   const est::NavdConfig cfg = ReplayConfig(r, have_imu, ubx);
   // a navd.conf reading CAN names its interface: other interfaces' frames are not navd's
   const std::string can_iface = cfg.imu.from_can() ? cfg.imu.can_interface : std::string();
