@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <optional>
 #include <sstream>
@@ -151,7 +152,30 @@ LogSpan ReadLog(const std::string& path, std::vector<Chunk>& chunks, bool& ubx) 
   return span;
 }
 
-// with a candump log, every log goes on Unix time: captures through their recorded start; raw
+// a capture's `# start_unix_ns` header line (0: none in its first lines)
+std::int64_t HeaderStartUnixNs(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  for (int i = 0; i < 8 && std::getline(in, line); ++i)
+    if (line.rfind("# start_unix_ns ", 0) == 0) return std::stoll(line.substr(16));
+  return 0;
+}
+
+// a run's serial captures carry no start time, its CAN capture does: the start from a capture of
+// the set, else from one beside it in its folder (RUN/captures/vcan0.cap); 0 when none knows it
+std::int64_t RunStartUnixNs(const std::vector<LogSpan>& spans, const LogSpan& s) {
+  for (const LogSpan& o : spans)
+    if (o.kind == LogSpan::kCapture && o.start_unix_ns != 0) return o.start_unix_ns;
+  std::error_code ec;
+  const std::filesystem::path dir = std::filesystem::path(s.path).parent_path();
+  for (const auto& e : std::filesystem::directory_iterator(dir.empty() ? "." : dir, ec)) {
+    if (e.path().extension() != ".cap") continue;
+    if (const std::int64_t t = HeaderStartUnixNs(e.path().string())) return t;
+  }
+  return 0;
+}
+
+// with a candump log, every log goes on Unix time: captures through their run's start time; raw
 // logs have no receive times and cannot be merged
 void ToUnixTime(const std::vector<LogSpan>& spans, std::vector<Chunk>& chunks) {
   const bool have_candump = std::any_of(
@@ -163,11 +187,12 @@ void ToUnixTime(const std::vector<LogSpan>& spans, std::vector<Chunk>& chunks) {
                                ": a raw log has no recorded receive times and cannot be merged "
                                "with a candump log (replay the run's capture of that link)");
     if (s.kind != LogSpan::kCapture) continue;
-    if (s.start_unix_ns == 0)
+    const std::int64_t start = s.start_unix_ns != 0 ? s.start_unix_ns : RunStartUnixNs(spans, s);
+    if (start == 0)
       throw std::runtime_error(s.path +
-                               ": no '# start_unix_ns' header: its times cannot be merged with a "
-                               "candump log's Unix times");
-    for (std::size_t i = s.first; i < s.end; ++i) chunks[i].t_ns += s.start_unix_ns;
+                               ": no '# start_unix_ns' header (nor in a capture beside it): its "
+                               "times cannot be merged with a candump log's Unix times");
+    for (std::size_t i = s.first; i < s.end; ++i) chunks[i].t_ns += start;
   }
 }
 

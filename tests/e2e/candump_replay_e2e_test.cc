@@ -110,11 +110,21 @@ TEST(CandumpReplay, MergesWithACaptureAndMatchesTheCanCapturePath) {
   EXPECT_EQ(a.out, b.out);
   EXPECT_EQ(ReadFile(dir.str() + "/a/KF_GINS_Navresult.nav"),
             ReadFile(dir.str() + "/b/KF_GINS_Navresult.nav"));
-  // a capture without its start time cannot go on the candump's Unix time
-  const std::string nostart = dir.str() + "/nostart.cap";
-  WriteFile(nostart, "# hil capture v2\n# link ttyGPS serial 9600\n");
+  // a run's serial capture has no start time: the CAN capture beside it has it (as in a run)
+  std::string gps_nostart = GnssCapture();
+  gps_nostart.erase(gps_nostart.find("# start_unix_ns"), 36);
+  WriteFile(dir.str() + "/ttyGPS_nostart.cap", gps_nostart);
+  const CommandResult d =
+      RunCommand(BinDir() + "/navd --replay " + dir.str() + "/ttyGPS_nostart.cap " +
+                 GoldenCandump() + " --out " + dir.str() + "/d");
+  ASSERT_EQ(d.exit_code, 0) << d.out;
+  EXPECT_EQ(d.out, a.out);
+  // without any capture that knows the start, it cannot go on the candump's Unix time
+  TempDir alone("candump_replay_alone");
+  const std::string nostart = alone.str() + "/nostart.cap";
+  WriteFile(nostart, gps_nostart);
   const CommandResult c = RunCommand(BinDir() + "/navd --replay " + nostart + " " +
-                                     GoldenCandump() + " --out " + dir.str() + "/c");
+                                     GoldenCandump() + " --out " + alone.str() + "/c");
   EXPECT_EQ(c.exit_code, 2);
   EXPECT_NE(c.out.find(nostart + ": no '# start_unix_ns' header"), std::string::npos) << c.out;
 }
