@@ -86,7 +86,8 @@ std::vector<Criterion> ReadCriteria(const YamlReader& r) {
     if (std::find(kCriterionMetrics.begin(), kCriterionMetrics.end(), k.metric) ==
             kCriterionMetrics.end() &&
         k.metric.rfind("navd.", 0) != 0 && k.metric.rfind("tracking.", 0) != 0 &&
-        k.metric.rfind("closed_loop.", 0) != 0) {  // navd.<health counter>, navd.flag.<flag> (fault_report.h)
+        k.metric.rfind("closed_loop.", 0) !=
+            0) {  // navd.<health counter>, navd.flag.<flag> (fault_report.h)
       std::string msg = "unknown metric '" + k.metric + "' (one of:";
       for (const auto& m : kCriterionMetrics) msg += " " + m;
       c.Fail("metric", msg + ")");
