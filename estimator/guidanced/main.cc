@@ -69,8 +69,8 @@ Options Parse(int argc, char** argv) {
     } else if (k == "--base") {
       o.base = v;
     } else if (k == "--origin") {
-      if (std::sscanf(v, "%lf,%lf,%lf", &o.origin.lat_deg, &o.origin.lon_deg,
-                      &o.origin.height_m) != 3)
+      if (std::sscanf(v, "%lf,%lf,%lf", &o.origin.lat_deg, &o.origin.lon_deg, &o.origin.height_m) !=
+          3)
         Usage("--origin: expected LAT,LON,H");
     } else if (k == "--speed") {
       o.speed_mps = Number("--speed", v);
@@ -128,7 +128,11 @@ std::optional<double> ParseHdt(std::string_view s) {
 class Controller {
  public:
   Controller(const Options& o, g::PlannedPath path, int base_fd)
-      : o_(o), path_(std::move(path)), frame_(o.origin), pp_(Config(o)), base_fd_(base_fd),
+      : o_(o),
+        path_(std::move(path)),
+        frame_(o.origin),
+        pp_(Config(o)),
+        base_fd_(base_fd),
         platform_{o.track_m, o.wheel_radius_m, o.max_wheel_radps} {}
 
   // One NMEA sentence of the solution (without CR LF).
@@ -138,7 +142,8 @@ class Controller {
       if (have_fix_) Command();
       return;
     }
-    const std::optional<est::drivers::NmeaFix> f = est::drivers::NmeaDecoder::ParseSentence(s, &stats_);
+    const std::optional<est::drivers::NmeaFix> f =
+        est::drivers::NmeaDecoder::ParseSentence(s, &stats_);
     if (!f || !f->valid || !f->lat_deg || !f->lon_deg) return;
     if (f->kind == est::drivers::NmeaFix::Kind::kRmc) {
       speed_mps_ = f->speed_mps.value_or(0.0);
@@ -222,7 +227,9 @@ int Loop(Controller& ctl, int nav_fd, int base_fd) {
     if (fds[0].revents) {
       const ssize_t n = read(nav_fd, buf.data(), buf.size());
       if (n == 0) return 0;  // the estimator's output ended
-      if (n > 0) nav.Feed(buf.data(), static_cast<std::size_t>(n), [&](std::string_view s) { ctl.OnSentence(s); });
+      if (n > 0)
+        nav.Feed(buf.data(), static_cast<std::size_t>(n),
+                 [&](std::string_view s) { ctl.OnSentence(s); });
     }
     if (fds[1].revents) {
       const ssize_t n = read(base_fd, buf.data(), buf.size());
@@ -245,16 +252,19 @@ int main(int argc, char** argv) {
   }
   const int base_fd = OpenBase(o.base);
   if (base_fd < 0) {
-    std::fprintf(stderr, "guidanced: cannot open the base %s: %s\n", o.base.c_str(), std::strerror(errno));
+    std::fprintf(stderr, "guidanced: cannot open the base %s: %s\n", o.base.c_str(),
+                 std::strerror(errno));
     return 1;
   }
   const int nav_fd = open(o.nav.c_str(), O_RDONLY | O_CLOEXEC);
   if (nav_fd < 0) {
-    std::fprintf(stderr, "guidanced: cannot open the solution input %s: %s\n", o.nav.c_str(), std::strerror(errno));
+    std::fprintf(stderr, "guidanced: cannot open the solution input %s: %s\n", o.nav.c_str(),
+                 std::strerror(errno));
     return 1;
   }
   Controller ctl(o, std::move(path), base_fd);
   const int rc = Loop(ctl, nav_fd, base_fd);
-  std::fprintf(stderr, "guidanced: stopped; commands=%llu\n", static_cast<unsigned long long>(ctl.commands()));
+  std::fprintf(stderr, "guidanced: stopped; commands=%llu\n",
+               static_cast<unsigned long long>(ctl.commands()));
   return rc;
 }

@@ -20,8 +20,8 @@ std::string Scenario(const std::string& name) {
 
 TEST(ClosedLoopE2eTest, DiffDriveOverTheSerialBaseProtocolPasses) {
   TempDir dir("e2e_closed_loop_serial");
-  const CommandResult r =
-      RunCommand(Hil() + " run " + Scenario("diff_drive_serial.yaml") + " --short --out " + dir / "r");
+  const CommandResult r = RunCommand(Hil() + " run " + Scenario("diff_drive_serial.yaml") +
+                                     " --short --out " + dir / "r");
   ASSERT_EQ(r.exit_code, 0) << r.out;
   const auto rep = nlohmann::json::parse(ReadFile(dir / "r/report.json"));
   EXPECT_TRUE(rep["pass"].get<bool>()) << rep.dump(2);

@@ -29,8 +29,9 @@ void BaseSerialDevice::OnHostBytes(int port, Time t, std::string_view bytes, Dev
 
 void BaseSerialDevice::ControlTick(Time t) {
   ++counters_.ticks;
-  const bool missing = t >= cfg_.first_command_due &&
-                       (!counters_.last_command || t - *counters_.last_command > cfg_.command_timeout);
+  const bool missing =
+      t >= cfg_.first_command_due &&
+      (!counters_.last_command || t - *counters_.last_command > cfg_.command_timeout);
   if (missing) {
     if (counters_.missing_commands == 0 || (!ticks_.empty() && !ticks_.back().missing))
       counters_.first_missing = t;

@@ -15,7 +15,8 @@ namespace hil::harness {
 ControllerProcess::ControllerProcess(const std::string& command, int pgid,
                                      const std::string& log_path) {
   const int log_fd = open(log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (log_fd < 0) throw std::runtime_error("cannot write " + log_path + ": " + std::strerror(errno));
+  if (log_fd < 0)
+    throw std::runtime_error("cannot write " + log_path + ": " + std::strerror(errno));
   pid_ = fork();
   if (pid_ < 0) {
     close(log_fd);

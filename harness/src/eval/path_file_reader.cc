@@ -72,7 +72,8 @@ std::vector<Eigen::Vector2d> ReadPathVertices(const std::string& file) {
     v = {a, b + (b - a).normalized() * extend};
   } else if (shape.keyword == "polyline") {
     for (std::size_t i = 2; i < lines.size(); ++i) {
-      if (lines[i].keyword != "vertex") Fail(file, lines[i].number, lines[i].keyword, "not a vertex");
+      if (lines[i].keyword != "vertex")
+        Fail(file, lines[i].number, lines[i].keyword, "not a vertex");
       v.push_back(Point(file, lines[i], "p_m"));
     }
     if (v.size() < 2) Fail(file, shape.number, "vertex", "a polyline needs at least 2 vertices");

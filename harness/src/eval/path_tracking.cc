@@ -68,7 +68,8 @@ TrackingMetrics ScoreTracking(const std::vector<Eigen::Vector2d>& path,
   m.settle_band_m = settle_band_m;
   if (path.size() < 2 || track.empty()) return m;
   std::vector<double> s0{0};
-  for (std::size_t i = 1; i < path.size(); ++i) s0.push_back(s0.back() + (path[i] - path[i - 1]).norm());
+  for (std::size_t i = 1; i < path.size(); ++i)
+    s0.push_back(s0.back() + (path[i] - path[i - 1]).norm());
   std::vector<Foot> feet;
   for (std::size_t i = 0; i < track.size(); ++i) {
     feet.push_back(Project(path, s0, track[i].p_N_m));

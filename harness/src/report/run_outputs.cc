@@ -88,7 +88,8 @@ void WriteNavdConfig(const std::string& path, const Scenario& s, const std::stri
   }
   // closed loop: the controller reads the solution as NMEA 0183 from this FIFO (run_prepare.cc)
   if (s.closed_loop.enabled)
-    out << "nmea_device = " << (std::filesystem::path(gnss_device).parent_path() / kNavNmeaFifo).string() << "\n";
+    out << "nmea_device = "
+        << (std::filesystem::path(gnss_device).parent_path() / kNavNmeaFifo).string() << "\n";
 }
 
 std::vector<Time> TruthCsvTimes(const Scenario& s) {

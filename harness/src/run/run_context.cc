@@ -1,6 +1,6 @@
-#include <unistd.h>
-
 #include "hil/harness/run/run_context.h"
+
+#include <unistd.h>
 
 #include <algorithm>
 #include <csignal>

@@ -131,7 +131,8 @@ void Execute(RunContext& ctx, RunWatchdog& watchdog) {
         std::string("the run failed at t = ") + SecondsText(ctx.t_now) + " s: " + e.what();
   }
   if (!ctx.hang && !ctx.Interrupted()) ctx.scheduler->Flush();
-  if (scenario.closed_loop.enabled) ctx.truth_builder->SetCommands(ctx.scheduler->vehicle_commands());
+  if (scenario.closed_loop.enabled)
+    ctx.truth_builder->SetCommands(ctx.scheduler->vehicle_commands());
   for (const auto& ports : ctx.set.endpoints) {
     for (const auto& ep : ports) ep->FlushCapture();
   }

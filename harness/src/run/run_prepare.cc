@@ -3,15 +3,13 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <cstring>
-
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
-
-#include <sys/stat.h>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
+#include <sys/stat.h>
 
 #include "hil/harness/report/run_outputs.h"
 #include "hil/harness/run/can_run.h"
@@ -126,10 +124,12 @@ void StartController(RunContext& ctx) {
   const truth::Geodetic& o = ctx.scenario.truth.origin;
   char origin[96];
   std::snprintf(origin, sizeof origin, "%.9f,%.9f,%.3f", o.lat_deg, o.lon_deg, o.height_m);
-  std::vector<std::pair<std::string, std::string>> vars{
-      {"guidanced", ctx.options.guidanced_path}, {"path_file", c.path_file},
-      {"nav_nmea", ctx.dir + "/" + kNavNmeaFifo}, {"origin", origin},
-      {"run_dir", ctx.dir}, {"seed", std::to_string(ctx.seed)}};
+  std::vector<std::pair<std::string, std::string>> vars{{"guidanced", ctx.options.guidanced_path},
+                                                        {"path_file", c.path_file},
+                                                        {"nav_nmea", ctx.dir + "/" + kNavNmeaFifo},
+                                                        {"origin", origin},
+                                                        {"run_dir", ctx.dir},
+                                                        {"seed", std::to_string(ctx.seed)}};
   vars.insert(vars.end(), ctx.set.links.begin(), ctx.set.links.end());
   const std::string command = Substitute(c.controller, vars);
   ctx.report.controller_command = command;

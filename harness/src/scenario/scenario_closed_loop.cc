@@ -27,8 +27,7 @@ void ReadActuator(const YamlReader& r, ClosedLoopSpec& c) {
     if (x < 0 || x >= 1) r.Fail("slip", "each wheel's slip is a fraction in [0, 1)");
   }
   m.slip = {slip[0], slip[1]};
-  m.command_latency =
-      Seconds(r.DoubleIn("command_latency_s", ToSeconds(m.command_latency), 0, 5));
+  m.command_latency = Seconds(r.DoubleIn("command_latency_s", ToSeconds(m.command_latency), 0, 5));
   m.command_timeout =
       Seconds(r.DoubleIn("watchdog_timeout_s", ToSeconds(m.command_timeout), 0.01, 60));
   c.pid_rate_hz = r.DoubleIn("pid_rate_hz", c.pid_rate_hz, 1, 1000);

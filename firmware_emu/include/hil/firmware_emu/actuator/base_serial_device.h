@@ -29,8 +29,8 @@ struct BaseSerialDeviceConfig {
   std::string name = "base";
   WheelMotorsConfig motors;
   BaseSerialConfig serial;
-  Duration grid = std::chrono::milliseconds(10);            ///< the truth's command grid
-  Duration control_period = std::chrono::milliseconds(100);  ///< the controller's tick
+  Duration grid = std::chrono::milliseconds(10);              ///< the truth's command grid
+  Duration control_period = std::chrono::milliseconds(100);   ///< the controller's tick
   Duration command_timeout = std::chrono::milliseconds(300);  ///< a tick's command is missing
   /// Controllers need a solution first: ticks before this time count no missing command.
   Time first_command_due{std::chrono::seconds(3)};

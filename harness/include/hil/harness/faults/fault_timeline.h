@@ -49,8 +49,9 @@ enum class FaultKind {
   kFrameTruncate,   ///< a serial message cut short at a random byte (with `probability`)
   kCanReorder,      ///< two consecutive CAN frames of one device swap places (with `probability`)
   kGnssOverload,  ///< the receiver outputs every message it knows: more bytes than its baud carries
-  kControllerStop,  ///< closed loop: the controller process is killed (SIGKILL) at start_s
-  kCommandLinkLoss,  ///< closed loop: the controller's bytes do not reach the actuator in [start, end)
+  kControllerStop,   ///< closed loop: the controller process is killed (SIGKILL) at start_s
+  kCommandLinkLoss,  ///< closed loop: the controller's bytes do not reach the actuator in [start,
+                     ///< end)
 };
 
 /// The scenario-file name of a kind ("gnss_outage", …).

@@ -60,7 +60,7 @@ struct RunReport {
   std::vector<CriterionResult> criteria;
   std::string estimator_command, estimator_output, estimator_exit;
   std::string controller_command;  ///< closed loop: the controller's command (substituted)
-  int estimator_pid = 0;  ///< process (and process group) id of the estimator, 0 when none
+  int estimator_pid = 0;           ///< process (and process group) id of the estimator, 0 when none
   double wall_time_s = 0, sim_time_s = 0, speed = 1.0;
   std::uint64_t gnss_bytes = 0, gnss_messages_dropped = 0;
   std::uint64_t fault_messages_dropped = 0, fault_bytes_corrupted = 0;
@@ -71,8 +71,8 @@ struct RunReport {
   EstimatorHealth estimator_health;  ///< navd's detections (fault_report.h)
   std::string
       incomplete_reason;  ///< why the run stopped early (signal, output folder, link), if it did
-  std::optional<CanBusReport> can;  ///< the scenario's CAN bus (can_run.h), when it has one
-  std::optional<TrackingMetrics> tracking;       ///< closed loop: the truth against the path
+  std::optional<CanBusReport> can;          ///< the scenario's CAN bus (can_run.h), when it has one
+  std::optional<TrackingMetrics> tracking;  ///< closed loop: the truth against the path
   std::optional<ClosedLoopReport> closed_loop;  ///< closed loop: controller and actuator
   bool pass() const;
 };

@@ -71,8 +71,8 @@ class TruthTableBuilder {
   std::mutex mu_;
   std::condition_variable cv_;
   std::priority_queue<Time, std::vector<Time>, std::greater<>>
-      asked_;               // not yet taken by the thread
-  std::vector<Time> late_;  // asked behind the thread's position
+      asked_;                             // not yet taken by the thread
+  std::vector<Time> late_;                // asked behind the thread's position
   std::vector<VehicleCommand> commands_;  // closed loop, complete once finishing_
   Time watermark_{};
   bool has_watermark_ = false;
