@@ -99,6 +99,8 @@ struct Wt901cDeviceSpec {
   std::string link = "ttyWIT";  ///< symlink name in the run folder
   std::size_t tx_buffer_bytes = 1024;
   wit::Wt901cConfig config;
+};
+
 /// One laser rangefinder of the `rangefinders:` section: its name, pty link and mount.
 struct RangefinderUnitSpec {
   std::string name, link;
