@@ -287,7 +287,7 @@ TEST(HilSuiteE2eTest, SuiteRunsEveryScenarioIntoOneSummary) {
   ASSERT_EQ(summary["runs"].size(), 3u);
   for (int i = 0; i < 3; ++i)
     EXPECT_EQ(summary["runs"][static_cast<std::size_t>(i)]["seed"].get<int>(), 11 + i);
-  EXPECT_TRUE(std::filesystem::exists(dir / "out_good/a-seed13/report.json"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "out_good/runs/a-seed13/report.json"));
 
   EXPECT_EQ(RunCommand(Hil() + " suite " + dir / "empty" + " --out " + dir / "out_empty").exit_code,
             2);
