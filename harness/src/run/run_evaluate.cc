@@ -116,7 +116,8 @@ std::vector<TrackSample> TruthTrack(const RunContext& ctx, const TruthTable& tru
 }
 
 // Distance along the track from time `from` to its end.
-std::optional<double> DistanceAfter(const std::vector<TrackSample>& track, std::optional<Time> from) {
+std::optional<double> DistanceAfter(const std::vector<TrackSample>& track,
+                                    std::optional<Time> from) {
   if (!from) return std::nullopt;
   double d = 0;
   for (std::size_t i = 1; i < track.size(); ++i) {

@@ -10,15 +10,15 @@
 #include <string>
 #include <vector>
 
-#include "hil/firmware_emu/attitude/wt901c_config.h"
 #include "hil/firmware_emu/actuator/wheel_motors.h"
+#include "hil/firmware_emu/attitude/wt901c_config.h"
 #include "hil/firmware_emu/gnss/neo5m_device.h"
 #include "hil/firmware_emu/gnss/receiver_model.h"
 #include "hil/firmware_emu/lidar/rplidar_device.h"
 #include "hil/firmware_emu/mcu/mcu_config.h"
 #include "hil/firmware_emu/rangefinder/tf_luna_device.h"
-#include "hil/firmware_emu/world/greenhouse_world.h"
 #include "hil/firmware_emu/uwb/uwb_tag_device.h"
+#include "hil/firmware_emu/world/greenhouse_world.h"
 #include "hil/harness/faults/fault_timeline.h"
 #include "hil/harness/scenario/estimator_kinds.h"
 #include "hil/harness/scenario/scenario_overrides.h"
