@@ -12,39 +12,15 @@
 
 #include <gtest/gtest.h>
 
+#include "vector_files.h"
+
 namespace hil::estimator::drivers {
 namespace {
 
-std::string Path(const std::string& rel) {
-  const char* src = std::getenv("HIL_SOURCE_DIR");
-  return std::string(src ? src : ".") + "/" + rel;
-}
-
-std::string ReadBin() {
-  std::ifstream f(Path("vectors/uwb/linktrack_tag_frame0.bin"), std::ios::binary);
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
+std::string ReadBin() { return hil::test::ReadVectorBytes("vectors/uwb/linktrack_tag_frame0.bin"); }
 
 std::vector<std::vector<double>> ReadExpected() {
-  std::ifstream in(Path("vectors/uwb/linktrack_tag_frame0.expected.csv"));
-  std::vector<std::vector<double>> rows;
-  std::string line;
-  bool header = true;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) {
-      header = false;
-      continue;
-    }
-    std::vector<double> r;
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, ',')) r.push_back(std::stod(cell));
-    rows.push_back(r);
-  }
-  return rows;
+  return hil::test::ReadCsvNumbers("vectors/uwb/linktrack_tag_frame0.expected.csv");
 }
 
 std::vector<LinkTrackTagFrame> Decode(const std::string& b, std::size_t chunk,

@@ -17,38 +17,15 @@
 #include "hil/estimator/drivers/linktrack_decoder.h"
 #include "hil/estimator/uwb/tdoa_solver.h"
 
+#include "vector_files.h"
+
 namespace hil::estimator::drivers {
 namespace {
 
-std::string Path(const std::string& rel) {
-  const char* src = std::getenv("HIL_SOURCE_DIR");
-  return std::string(src ? src : ".") + "/" + rel;
-}
-
-std::string ReadBin() {
-  std::ifstream f(Path("vectors/uwb/uwb_tag_session.bin"), std::ios::binary);
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
+std::string ReadBin() { return hil::test::ReadVectorBytes("vectors/uwb/uwb_tag_session.bin"); }
 
 std::vector<std::vector<double>> ReadExpected() {
-  std::ifstream in(Path("vectors/uwb/uwb_tag_session.expected.csv"));
-  std::vector<std::vector<double>> rows;
-  std::string line;
-  bool header = true;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) {
-      header = false;
-      continue;
-    }
-    std::vector<double> r;
-    std::stringstream ss(line);
-    for (std::string c; std::getline(ss, c, ',');) r.push_back(std::stod(c));
-    rows.push_back(r);
-  }
-  return rows;
+  return hil::test::ReadCsvNumbers("vectors/uwb/uwb_tag_session.expected.csv");
 }
 
 TEST(UwbTdoaDecoderTest, GoldenSessionDecodesAndSolves) {

@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "csv_rows.h"
+#include "vector_files.h"
 
 namespace hil::estimator::uwb {
 namespace {
@@ -17,7 +17,8 @@ constexpr double kPaperTolerance_m = 0.01;
 constexpr double kFormulaTolerance_m = 0.0005 + 1e-9;  // the Python column has 3 decimals
 
 TEST(ErrorFieldCorrectionTest, Table2RowsReproduceThePaperExceptItsFlaggedInconsistencies) {
-  const auto rows = test::ReadCsvRows(test::VectorPath("vectors/uwb/table2_correction.csv"));
+  const auto rows =
+      hil::test::ReadCsvRows(hil::test::VectorPath("vectors/uwb/table2_correction.csv"));
   ASSERT_EQ(rows.size(), 20u);
   const ErrorFieldCorrection corr;
   int agreeing_axes = 0, flagged_axes = 0;
@@ -47,7 +48,8 @@ TEST(ErrorFieldCorrectionTest, Table2RowsReproduceThePaperExceptItsFlaggedIncons
 
 TEST(ErrorFieldCorrectionTest, CorrectionReducesTheMeanErrorAsTable3Says) {
   // Table 3 (before 0.12 / 0.16 m): the measured column's mean |error|; after: at most 0.06 m.
-  const auto rows = test::ReadCsvRows(test::VectorPath("vectors/uwb/table2_correction.csv"));
+  const auto rows =
+      hil::test::ReadCsvRows(hil::test::VectorPath("vectors/uwb/table2_correction.csv"));
   ASSERT_EQ(rows.size(), 20u);
   const ErrorFieldCorrection corr;
   Eigen::Vector2d before = Eigen::Vector2d::Zero(), after = Eigen::Vector2d::Zero();

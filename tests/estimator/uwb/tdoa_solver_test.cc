@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "csv_rows.h"
+#include "vector_files.h"
 
 namespace hil::estimator::uwb {
 namespace {
@@ -23,7 +23,8 @@ TdoaSolverConfig VectorAnchors() {
 }
 
 TEST(TdoaSolverTest, GoldenVectorSolvesEveryPointAndFlagsEveryBaselinePoint) {
-  const auto rows = test::ReadCsvRows(test::VectorPath("vectors/uwb/tdoa_closed_form.csv"));
+  const auto rows =
+      hil::test::ReadCsvRows(hil::test::VectorPath("vectors/uwb/tdoa_closed_form.csv"));
   ASSERT_EQ(rows.size(), 76u);
   const TdoaSolver solver(VectorAnchors());
   int ok = 0, flagged = 0;
