@@ -7,6 +7,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <initializer_list>
 #include <sstream>
 #include <string>
 
@@ -46,31 +47,41 @@ pid_t StartBusyProcess() {
   return pid;
 }
 
+// Runs `hil run ARGS --out DIR/a`, then the same into DIR/b beside a busy process; both must pass.
+void RunTwiceSecondUnderLoad(const std::string& args, const TempDir& dir) {
+  CommandResult r = RunCommand(Hil() + " run " + args + " --out " + dir / "a");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const pid_t busy = StartBusyProcess();
+  ASSERT_GT(busy, 0);
+  r = RunCommand(Hil() + " run " + args + " --out " + dir / "b");
+  kill(busy, SIGKILL);
+  waitpid(busy, nullptr, 0);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+}
+
+// Each of the run-folder files is the same bytes in DIR/a and DIR/b.
+void ExpectSameFiles(const TempDir& dir, std::initializer_list<const char*> files) {
+  for (const char* f : files) {
+    EXPECT_EQ(FirstDifference(ReadFile(dir / ("a/" + std::string(f))),
+                              ReadFile(dir / ("b/" + std::string(f)))),
+              "")
+        << f;
+  }
+}
+
 TEST(VirtualDeterminismE2eTest, TwoLinksGiveByteIdenticalSolutionsUnderLoad) {
   TempDir dir("e2e_virtual_determinism");
   WriteFile(dir / "s.yaml",
             "name: determinism\ninclude: [rigs/seed004_tractor_rtk.yaml]\nduration_s: 60\nseed: 4\n"
             "faults:\n  - {kind: gnss_data_gap, start_s: 40, end_s: 45}\n");
   const std::string s = dir / "s.yaml";
-  CommandResult r = RunCommand(Hil() + " run " + s + " --seed 1 --out " + dir / "a");
-  ASSERT_EQ(r.exit_code, 0) << r.out;
-  const pid_t busy = StartBusyProcess();
-  ASSERT_GT(busy, 0);
-  r = RunCommand(Hil() + " run " + s + " --seed 1 --out " + dir / "b");
-  kill(busy, SIGKILL);
-  waitpid(busy, nullptr, 0);
-  ASSERT_EQ(r.exit_code, 0) << r.out;
+  RunTwiceSecondUnderLoad(s + " --seed 1", dir);
+  if (HasFatalFailure()) return;
 
   const std::string a = ReadFile(dir / "a/estimate.jsonl");
   ASSERT_GT(std::count(a.begin(), a.end(), '\n'), 500) << "10 Hz solutions for most of the 60 s";
   EXPECT_EQ(FirstDifference(a, ReadFile(dir / "b/estimate.jsonl")), "");
-  for (const char* f :
-       {"captures/ttyGPS.cap", "captures/ttyIMU.cap", "estimate.csv", "truth.csv"}) {
-    EXPECT_EQ(FirstDifference(ReadFile(dir / ("a/" + std::string(f))),
-                              ReadFile(dir / ("b/" + std::string(f)))),
-              "")
-        << f;
-  }
+  ExpectSameFiles(dir, {"captures/ttyGPS.cap", "captures/ttyIMU.cap", "estimate.csv", "truth.csv"});
   const auto ra = nlohmann::json::parse(ReadFile(dir / "a/report.json"));
   const auto rb = nlohmann::json::parse(ReadFile(dir / "b/report.json"));
   EXPECT_EQ(ra["metrics"], rb["metrics"]);
@@ -121,23 +132,12 @@ TEST(VirtualDeterminismE2eTest, UbxConfigurationSessionIsTheSameInEveryRun) {
 TEST(VirtualDeterminismE2eTest, ClosedLoopRunsGiveTheSameBytes) {
   TempDir dir("e2e_virtual_closed_loop");
   const std::string s = SourceDir() + "/vectors/scenarios/closed_loop/diff_drive_serial.yaml";
-  CommandResult r = RunCommand(Hil() + " run " + s + " --short --out " + dir / "a");
-  ASSERT_EQ(r.exit_code, 0) << r.out;
-  const pid_t busy = StartBusyProcess();
-  ASSERT_GT(busy, 0);
-  r = RunCommand(Hil() + " run " + s + " --short --out " + dir / "b");
-  kill(busy, SIGKILL);
-  waitpid(busy, nullptr, 0);
-  ASSERT_EQ(r.exit_code, 0) << r.out;
+  RunTwiceSecondUnderLoad(s + " --short", dir);
+  if (HasFatalFailure()) return;
   const std::string base = ReadFile(dir / "a/captures/ttyBASE.cap");
   EXPECT_GT(std::count(base.begin(), base.end(), '\n'), 400) << "commands and replies";
-  for (const char* f : {"captures/ttyBASE.cap", "captures/ttyGPS.cap", "captures/ttyIMU.cap",
-                        "estimate.jsonl", "truth.csv"}) {
-    EXPECT_EQ(FirstDifference(ReadFile(dir / ("a/" + std::string(f))),
-                              ReadFile(dir / ("b/" + std::string(f)))),
-              "")
-        << f;
-  }
+  ExpectSameFiles(dir, {"captures/ttyBASE.cap", "captures/ttyGPS.cap", "captures/ttyIMU.cap",
+                        "estimate.jsonl", "truth.csv"});
   const auto ra = nlohmann::json::parse(ReadFile(dir / "a/report.json"));
   const auto rb = nlohmann::json::parse(ReadFile(dir / "b/report.json"));
   EXPECT_EQ(ra["tracking"], rb["tracking"]);
