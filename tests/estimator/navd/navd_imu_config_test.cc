@@ -6,21 +6,13 @@
 
 #include "hil/estimator/navd/navd_config.h"
 
+#include "navd_conf_text.h"
+
 namespace hil::estimator {
 namespace {
 
-NavdConfig Load(const std::string& text) {
-  return NavdConfig::FromFile(ConfigFile::Parse(text, "n.conf"));
-}
-
-std::string Error(const std::string& text) {
-  try {
-    Load(text);
-  } catch (const ConfigError& e) {
-    return e.what();
-  }
-  return "no error";
-}
+using test::Error;
+using test::Load;
 
 TEST(NavdImuConfigTest, DefaultsAreTheSerialMcu) {
   const NavdConfig c = Load("[input]\nimu_device = /dev/ttyIMU\n");
