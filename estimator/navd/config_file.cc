@@ -55,4 +55,6 @@ ConfigFile ConfigFile::Parse(const std::string& text, const std::string& name) {
   return cf;
 }
 
+std::string FieldName(const ConfigEntry& e) { return "[" + e.section + "] " + e.key; }
+
 }  // namespace hil::estimator

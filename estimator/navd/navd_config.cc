@@ -10,16 +10,14 @@
 namespace hil::estimator {
 namespace {
 
-std::string Field(const ConfigEntry& e) { return "[" + e.section + "] " + e.key; }
-
 int ToInt(const ConfigFile& f, const ConfigEntry& e, int lo, int hi) {
   int v = 0;
   const auto r = std::from_chars(e.value.data(), e.value.data() + e.value.size(), v);
   if (r.ec != std::errc() || r.ptr != e.value.data() + e.value.size()) {
-    throw ConfigError(f.name(), e.line, Field(e), "expected an integer, got '" + e.value + "'");
+    throw ConfigError(f.name(), e.line, FieldName(e), "expected an integer, got '" + e.value + "'");
   }
   if (v < lo || v > hi) {
-    throw ConfigError(f.name(), e.line, Field(e),
+    throw ConfigError(f.name(), e.line, FieldName(e),
                       "value " + e.value + " out of range [" + std::to_string(lo) + ", " +
                           std::to_string(hi) + "]");
   }
@@ -30,12 +28,12 @@ double ToDouble(const ConfigFile& f, const ConfigEntry& e, double lo, double hi)
   char* end = nullptr;
   const double v = std::strtod(e.value.c_str(), &end);
   if (e.value.empty() || end != e.value.c_str() + e.value.size() || !std::isfinite(v)) {
-    throw ConfigError(f.name(), e.line, Field(e), "expected a number, got '" + e.value + "'");
+    throw ConfigError(f.name(), e.line, FieldName(e), "expected a number, got '" + e.value + "'");
   }
   if (v < lo || v > hi) {
     std::ostringstream m;
     m << "value " << e.value << " out of range [" << lo << ", " << hi << "]";
-    throw ConfigError(f.name(), e.line, Field(e), m.str());
+    throw ConfigError(f.name(), e.line, FieldName(e), m.str());
   }
   return v;
 }
@@ -45,7 +43,7 @@ int ToBaud(const ConfigFile& f, const ConfigEntry& e) {
   const int baud = ToInt(f, e, 1, 4'000'000);
   if (!hil::navd::SerialSpeed(baud)) {
     throw ConfigError(
-        f.name(), e.line, Field(e),
+        f.name(), e.line, FieldName(e),
         "unsupported baud rate " + e.value + " (supported: " + hil::navd::SerialBaudList() + ")");
   }
   return baud;
@@ -71,7 +69,7 @@ Eigen::Vector3d ToVector3(const ConfigFile& f, const ConfigEntry& e, double limi
     v[n++] = ToDouble(f, one, -limit, limit);
   }
   if (n != 3 || std::getline(in, part, ',')) {
-    throw ConfigError(f.name(), e.line, Field(e),
+    throw ConfigError(f.name(), e.line, FieldName(e),
                       "expected three comma-separated numbers 'x, y, z', got '" + e.value + "'");
   }
   return v;
@@ -87,12 +85,12 @@ bool ReadInputKey(const ConfigFile& f, const ConfigEntry& e, NavdConfig& c) {
     c.gnss_baud = ToBaud(f, e);
   else if (k == "gnss_protocol") {
     if (e.value != "nmea" && e.value != "ubx")
-      throw ConfigError(f.name(), e.line, Field(e),
+      throw ConfigError(f.name(), e.line, FieldName(e),
                         "unknown protocol '" + e.value + "' (known: nmea, ubx)");
     c.gnss_protocol = e.value;
   } else if (k == "gnss_configure") {
     if (e.value != "true" && e.value != "false")
-      throw ConfigError(f.name(), e.line, Field(e), "expected true or false");
+      throw ConfigError(f.name(), e.line, FieldName(e), "expected true or false");
     c.gnss_configure = e.value == "true";
   } else if (k == "gnss_rate_hz")
     c.gnss_rate_hz = ToDouble(f, e, 0.0, 10.0);
@@ -104,7 +102,7 @@ bool ReadInputKey(const ConfigFile& f, const ConfigEntry& e, NavdConfig& c) {
     c.imu_baud = ToBaud(f, e);
   else if (k == "imu_format") {
     if (e.value != "mcu" && e.value != "razor_text")
-      throw ConfigError(f.name(), e.line, Field(e),
+      throw ConfigError(f.name(), e.line, FieldName(e),
                         "unknown IMU format '" + e.value + "' (known: mcu, razor_text)");
     c.imu_format = e.value;
   } else
@@ -173,7 +171,7 @@ bool ReadFilterKey(const ConfigFile& f, const ConfigEntry& e, NavdConfig& c, int
     const auto m = NavModeFromName(e.value.c_str());
     if (!m)
       throw ConfigError(
-          f.name(), e.line, Field(e),
+          f.name(), e.line, FieldName(e),
           "unknown mode '" + e.value + "' (known: ekf, planar2d, gnss_only, imu_only, multi_gnss)");
     c.nav.mode = *m;
     mode_line = e.line;
@@ -184,7 +182,7 @@ bool ReadFilterKey(const ConfigFile& f, const ConfigEntry& e, NavdConfig& c, int
     latency_line = e.line;
   } else if (k == "use_gnss_velocity") {
     if (e.value != "true" && e.value != "false")
-      throw ConfigError(f.name(), e.line, Field(e), "expected true or false");
+      throw ConfigError(f.name(), e.line, FieldName(e), "expected true or false");
     c.nav.use_gnss_velocity = e.value == "true";
   } else
     return false;
@@ -259,7 +257,7 @@ NavdConfig NavdConfig::FromFile(const ConfigFile& f) {
     else if (c.gnss_receivers.Read(f, e))
       continue;  // gnss_device_N, antenna_N_m
     else
-      throw ConfigError(f.name(), e.line, Field(e), "unknown key");
+      throw ConfigError(f.name(), e.line, FieldName(e), "unknown key");
   }
   CheckAcrossKeys(f, c, mode_line, latency_line);
   return c;

@@ -8,8 +8,6 @@
 namespace hil::estimator {
 namespace {
 
-std::string Field(const ConfigEntry& e) { return "[" + e.section + "] " + e.key; }
-
 // The N of `<prefix>N<suffix>`, or -1 when the key does not have that form.
 int IndexOf(const std::string& key, const std::string& prefix, const std::string& suffix) {
   if (key.size() <= prefix.size() + suffix.size() || key.compare(0, prefix.size(), prefix) != 0 ||
@@ -38,7 +36,7 @@ Eigen::Vector3d ParseVector(const ConfigFile& f, const ConfigEntry& e) {
     if (part.empty() || end != part.c_str() + part.size() || !std::isfinite(x) ||
         std::abs(x) > 100.0 || n >= 3) {
       throw ConfigError(
-          f.name(), e.line, Field(e),
+          f.name(), e.line, FieldName(e),
           "expected three comma-separated numbers 'x, y, z' (metres, |value| <= 100), got '" + s +
               "'");
     }
@@ -47,7 +45,7 @@ Eigen::Vector3d ParseVector(const ConfigFile& f, const ConfigEntry& e) {
     pos = comma + 1;
   }
   if (n != 3) {
-    throw ConfigError(f.name(), e.line, Field(e),
+    throw ConfigError(f.name(), e.line, FieldName(e),
                       "expected three comma-separated numbers 'x, y, z', got '" + s + "'");
   }
   return v;
@@ -61,7 +59,7 @@ bool GnssReceiversConfig::Read(const ConfigFile& f, const ConfigEntry& e) {
     const int i = IndexOf(e.key, "gnss_device_", "");
     if (i < 0) return false;
     if (i < 1 || i > max_index) {
-      throw ConfigError(f.name(), e.line, Field(e),
+      throw ConfigError(f.name(), e.line, FieldName(e),
                         "receiver index out of range [1, " + std::to_string(max_index) +
                             "] (gnss_device is receiver 0; navd reads at most " +
                             std::to_string(kMaxGnssReceivers) + " receivers)");
@@ -70,10 +68,11 @@ bool GnssReceiversConfig::Read(const ConfigFile& f, const ConfigEntry& e) {
     if (extra_devices.size() <= k) extra_devices.resize(k + 1), extra_device_lines.resize(k + 1, 0);
     if (extra_device_lines[k] != 0) {
       throw ConfigError(
-          f.name(), e.line, Field(e),
+          f.name(), e.line, FieldName(e),
           "given twice (first on line " + std::to_string(extra_device_lines[k]) + ")");
     }
-    if (e.value.empty()) throw ConfigError(f.name(), e.line, Field(e), "expected a device path");
+    if (e.value.empty())
+      throw ConfigError(f.name(), e.line, FieldName(e), "expected a device path");
     extra_devices[k] = e.value;
     extra_device_lines[k] = e.line;
     return true;
@@ -82,13 +81,13 @@ bool GnssReceiversConfig::Read(const ConfigFile& f, const ConfigEntry& e) {
     const int i = IndexOf(e.key, "antenna_", "_m");
     if (i < 0) return false;
     if (i > max_index) {
-      throw ConfigError(f.name(), e.line, Field(e),
+      throw ConfigError(f.name(), e.line, FieldName(e),
                         "receiver index out of range [0, " + std::to_string(max_index) + "]");
     }
     const auto k = static_cast<std::size_t>(i);
     if (antenna_B_m.size() <= k) antenna_B_m.resize(k + 1), antenna_lines.resize(k + 1, 0);
     if (antenna_lines[k] != 0) {
-      throw ConfigError(f.name(), e.line, Field(e),
+      throw ConfigError(f.name(), e.line, FieldName(e),
                         "given twice (first on line " + std::to_string(antenna_lines[k]) + ")");
     }
     antenna_B_m[k] = ParseVector(f, e);

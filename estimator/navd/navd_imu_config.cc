@@ -4,14 +4,10 @@
 #include <cstdlib>
 
 namespace hil::estimator {
-namespace {
-
-std::string Field(const ConfigEntry& e) { return "[" + e.section + "] " + e.key; }
-
-}  // namespace
-
 void ReadNavdImuKey(const ConfigFile& f, const ConfigEntry& e, NavdImuConfig& imu) {
-  const auto fail = [&](const std::string& m) { throw ConfigError(f.name(), e.line, Field(e), m); };
+  const auto fail = [&](const std::string& m) {
+    throw ConfigError(f.name(), e.line, FieldName(e), m);
+  };
   if (e.key == "source") {
     if (e.value != "serial" && e.value != "can")
       fail("unknown IMU source '" + e.value + "' (known: serial, can)");

@@ -10,10 +10,8 @@
 namespace hil::estimator {
 namespace {
 
-std::string Field(const ConfigEntry& e) { return "[" + e.section + "] " + e.key; }
-
 [[noreturn]] void Fail(const ConfigFile& f, const ConfigEntry& e, const std::string& m) {
-  throw ConfigError(f.name(), e.line, Field(e), m);
+  throw ConfigError(f.name(), e.line, FieldName(e), m);
 }
 
 double Number(const ConfigFile& f, const ConfigEntry& e, const std::string& text, double lo,

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "hil/estimator/angles.h"
 #include "hil/estimator/drivers/linktrack_decoder.h"
 #include "hil/estimator/drivers/uwb_tdoa_decoder.h"
 #include "hil/estimator/drivers/wt901c_decoder.h"
@@ -26,7 +27,7 @@ namespace hil::navd {
 namespace {
 
 namespace est = hil::estimator;
-constexpr double kDeg = std::numbers::pi / 180.0;
+using estimator::kDeg;
 constexpr std::size_t kStatuses = 5;
 constexpr double kFieldHalf_m = 7.5;  // paper 003 §B.5: the error field was fitted on 15 m × 15 m
 

@@ -3,10 +3,10 @@
 #include <cmath>
 #include <numbers>
 
+#include "hil/estimator/angles.h"
+
 namespace hil::estimator {
-namespace {
-constexpr double kDeg = std::numbers::pi / 180.0;
-}  // namespace
+namespace {}  // namespace
 
 Eigen::Vector3d EcefFromLla(const Lla& g) {
   const double lat = g.lat_deg * kDeg, lon = g.lon_deg * kDeg;

@@ -10,6 +10,7 @@
 
 #include <sys/stat.h>
 
+#include "hil/estimator/angles.h"
 #include "hil/estimator/datasets/kfgins_files.h"
 #include "hil/estimator/datasets/kfgins_frames.h"
 #include "hil/estimator/datasets/kfgins_output.h"
@@ -17,7 +18,6 @@
 namespace hil::estimator::datasets {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kMgal = 1e-5;  // m/s²
 constexpr double kDegPerHr = kDeg / 3600.0;
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstring>
 
+#include "hil/estimator/drivers/little_endian.h"
+
 namespace hil::estimator::drivers {
 namespace {
 
@@ -13,10 +15,6 @@ std::uint8_t SumOf(const unsigned char* p, std::size_t n) {
   unsigned s = 0;
   for (std::size_t k = 0; k < n; ++k) s += p[k];
   return static_cast<std::uint8_t>(s & 0xFFu);
-}
-
-std::uint16_t Le16(const unsigned char* p) {
-  return static_cast<std::uint16_t>(p[0] | (p[1] << 8));
 }
 
 }  // namespace
@@ -70,9 +68,9 @@ void BenewakeDecoder::Emit(std::size_t len) {
     return;
   }
   BenewakeRange r;
-  r.dist_raw = Le16(&buf_[2]);
-  r.amp = Le16(&buf_[4]);
-  r.temp_raw = Le16(&buf_[6]);
+  r.dist_raw = LeU16(&buf_[2]);
+  r.amp = LeU16(&buf_[4]);
+  r.temp_raw = LeU16(&buf_[6]);
   r.temperature_c = r.temp_raw / 8.0 - 256.0;
   if (model_ == BenewakeModel::kTfLuna) {
     r.valid = r.dist_raw != 0 && r.amp >= 100 && r.amp != 0xFFFF;

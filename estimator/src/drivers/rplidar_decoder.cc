@@ -3,18 +3,12 @@
 #include <algorithm>
 #include <cstring>
 
+#include "hil/estimator/drivers/little_endian.h"
+
 namespace hil::estimator::drivers {
 namespace {
 
 constexpr std::size_t kDesc = 7, kNode = 5, kCap = 84;
-
-std::uint16_t Le16(const unsigned char* p) {
-  return static_cast<std::uint16_t>(p[0] | (p[1] << 8));
-}
-std::uint32_t Le32(const unsigned char* p) {
-  return static_cast<std::uint32_t>(p[0]) | (static_cast<std::uint32_t>(p[1]) << 8) |
-         (static_cast<std::uint32_t>(p[2]) << 16) | (static_cast<std::uint32_t>(p[3]) << 24);
-}
 
 // The descriptors a host may meet: (length, multiple, type).
 bool KnownDescriptor(std::uint32_t len, bool multiple, std::uint8_t type) {
@@ -53,7 +47,7 @@ void RplidarDecoder::Drop(std::size_t n) {
 
 bool RplidarDecoder::TryDescriptor() {
   if (len_ < 2 || buf_[0] != 0xA5 || buf_[1] != 0x5A || len_ < kDesc) return false;
-  const std::uint32_t word = Le32(&buf_[2]);
+  const std::uint32_t word = LeU32(&buf_[2]);
   const std::uint32_t length = word & 0x3FFFFFFFu;
   const bool multiple = (word >> 30) == 1;
   if (!KnownDescriptor(length, multiple, buf_[6])) {
@@ -105,11 +99,11 @@ void RplidarDecoder::Single() {
     r.info.hardware = p[3];
     std::copy_n(p + 4, 16, r.info.serial.begin());
   } else if (type_ == 0x06) {
-    r.health_status = p[0], r.health_error = Le16(p + 1);
+    r.health_status = p[0], r.health_error = LeU16(p + 1);
   } else if (type_ == 0x15) {
-    r.standard_us = Le16(p), r.express_us = Le16(p + 2);
+    r.standard_us = LeU16(p), r.express_us = LeU16(p + 2);
   } else {
-    r.acc_board_flag = Le32(p);
+    r.acc_board_flag = LeU32(p);
   }
   ++stats_.responses;
   Drop(single_len_);
@@ -128,8 +122,8 @@ bool RplidarDecoder::Node() {
   LidarPoint p;
   p.quality = static_cast<std::uint8_t>(buf_[0] >> 2);
   p.start = s == 1;
-  p.angle_deg = (Le16(&buf_[1]) >> 1) / 64.0;
-  p.distance_m = Le16(&buf_[3]) / 4000.0;
+  p.angle_deg = (LeU16(&buf_[1]) >> 1) / 64.0;
+  p.distance_m = LeU16(&buf_[3]) / 4000.0;
   ++stats_.nodes;
   Drop(kNode);
   on_point_(p);
@@ -157,7 +151,7 @@ bool RplidarDecoder::Capsule() {
     Drop(1);
     return true;
   }
-  const std::uint16_t start = Le16(&buf_[2]);
+  const std::uint16_t start = LeU16(&buf_[2]);
   if (start & 0x8000u) have_prev_ = false;  // a new scan: no previous capsule to pair with
   if (have_prev_) EmitCapsule(start & 0x7FFFu);
   std::copy_n(buf_.begin(), kCap, prev_capsule_.begin());
@@ -169,12 +163,12 @@ bool RplidarDecoder::Capsule() {
 
 void RplidarDecoder::EmitCapsule(std::uint16_t next_start_q6) {
   const unsigned char* c = prev_capsule_.data();
-  const double a0 = (Le16(c + 2) & 0x7FFFu) / 64.0;
+  const double a0 = (LeU16(c + 2) & 0x7FFFu) / 64.0;
   double diff = next_start_q6 / 64.0 - a0;
   if (diff < 0) diff += 360.0;
   for (std::size_t k = 0; k < 32; ++k) {
     const unsigned char* cabin = c + 4 + 5 * (k / 2);
-    const std::uint16_t word = Le16(cabin + 2 * (k % 2));
+    const std::uint16_t word = LeU16(cabin + 2 * (k % 2));
     // the 6-bit signed q3 offset: low 4 bits in the offsets byte, top 2 in the distance word
     const unsigned nibble = (k % 2 == 0) ? (cabin[4] & 0x0Fu) : (cabin[4] >> 4);
     int offset_q3 = static_cast<int>(nibble | ((word & 0x3u) << 4));

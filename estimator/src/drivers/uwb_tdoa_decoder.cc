@@ -2,16 +2,13 @@
 
 #include <cstring>
 
+#include "hil/estimator/drivers/little_endian.h"
+
 namespace hil::estimator::drivers {
 namespace {
 
 constexpr unsigned char kHeader = 0x55, kMark = 0xD7;
 constexpr double kFrameSpeedOfLight_mps = 3.0e8;
-
-std::uint32_t Le32(const unsigned char* p) {
-  return static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 |
-         static_cast<std::uint32_t>(p[2]) << 16 | static_cast<std::uint32_t>(p[3]) << 24;
-}
 
 }  // namespace
 
@@ -48,9 +45,9 @@ void UwbTdoaDecoder::Scan() {
     }
     UwbTdoaSample s;
     s.id = p[2];
-    s.system_time_ms = Le32(p + 4);
+    s.system_time_ms = LeU32(p + 4);
     for (std::size_t k = 0; k < 3; ++k) {
-      s.t_i1_ps[k] = static_cast<std::int32_t>(Le32(p + 8 + 4 * k));
+      s.t_i1_ps[k] = static_cast<std::int32_t>(LeU32(p + 8 + 4 * k));
       s.r_i1_m[static_cast<Eigen::Index>(k)] =
           kFrameSpeedOfLight_mps * static_cast<double>(s.t_i1_ps[k]) * 1e-12;
     }

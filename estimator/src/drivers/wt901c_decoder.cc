@@ -2,12 +2,11 @@
 
 #include <cstring>
 
+#include "hil/estimator/drivers/little_endian.h"
+
 namespace hil::estimator::drivers {
 namespace {
 
-std::int16_t Le16(const unsigned char* p) {
-  return static_cast<std::int16_t>(static_cast<std::uint16_t>(p[0] | (p[1] << 8)));
-}
 bool CanStart(const unsigned char* p, std::size_t n) {
   return p[0] == 0x55 && (n < 2 || (p[1] >= 0x50 && p[1] <= 0x5F));
 }
@@ -50,7 +49,7 @@ void Wt901cDecoder::Scan() {
 void Wt901cDecoder::Emit(const unsigned char* p) {
   WitPacket w;
   w.type = p[1];
-  for (int k = 0; k < 4; ++k) w.raw[k] = Le16(p + 2 + 2 * k);
+  for (int k = 0; k < 4; ++k) w.raw[k] = LeI16(p + 2 + 2 * k);
   const Eigen::Vector3d v(w.raw[0], w.raw[1], w.raw[2]);
   const double t_c = w.raw[3] / 100.0;
   switch (w.type) {

@@ -4,11 +4,12 @@
 #include <cmath>
 #include <numbers>
 
+#include "hil/firmware_emu/angles.h"
+
 namespace hil::lidar {
 namespace {
 
 constexpr Time kNever = Time::max();
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kWhite = 0.9;
 
 }  // namespace

@@ -12,17 +12,10 @@
 #include <sys/inotify.h>
 #include <sys/ioctl.h>
 
+#include "hil/firmware_emu/link/sys_error.h"
 #include "hil/firmware_emu/link/tty_port.h"
 
 namespace hil::link {
-namespace {
-
-std::runtime_error SysError(const std::string& what) {
-  return std::runtime_error(what + ": " + std::strerror(errno));
-}
-
-}  // namespace
-
 unsigned BaudToSpeed(int baud) {
   for (const BaudSpeed& b : kBaudSpeeds) {
     if (b.baud == baud) return b.speed;

@@ -16,6 +16,7 @@
 #include <sys/socket.h>
 
 #include "hil/firmware_emu/link/realtime_pacer.h"
+#include "hil/firmware_emu/link/sys_error.h"
 
 #ifndef SO_RXQ_OVFL
 #define SO_RXQ_OVFL 40
@@ -23,10 +24,6 @@
 
 namespace hil::link {
 namespace {
-
-std::runtime_error SysError(const std::string& what) {
-  return std::runtime_error(what + ": " + std::strerror(errno));
-}
 
 // The kernel's frame layout is the API here; the payload is copied byte by byte.
 canfd_frame ToKernel(const CanWireFrame& f) {

@@ -3,13 +3,13 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "hil/firmware_emu/angles.h"
 #include "hil/firmware_emu/truth_sample.h"
 
 namespace hil::mcu {
 namespace {
 
 constexpr double kG = kStandardGravity_mps2;
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kDegPerHour = kDeg / 3600.0;
 constexpr double kMicroG = 1e-6 * kG;
 

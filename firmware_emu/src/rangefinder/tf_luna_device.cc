@@ -5,11 +5,12 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "hil/firmware_emu/angles.h"
+
 namespace hil::rangefinder {
 namespace {
 
 constexpr Time kNever = Time::max();
-constexpr double kDeg = std::numbers::pi / 180.0;
 bool ValidRate(std::uint16_t hz) { return hz <= 250; }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "hil/harness/campaign/campaign_stats.h"
+#include "hil/harness/report/markdown.h"
 #include "hil/harness/report/report.h"
 #include "hil/harness/suite/suite_report.h"
 
@@ -16,14 +17,6 @@ std::string Num(const json& v) {
   char b[32];
   std::snprintf(b, sizeof b, "%.4g", v.get<double>());
   return b;
-}
-
-std::string Cell(std::string s) {
-  for (char& c : s) {
-    if (c == '|') c = '/';
-    if (c == '\n') c = ' ';
-  }
-  return s;
 }
 
 std::string Joined(const json& ids, std::size_t most) {
@@ -76,7 +69,7 @@ std::string MdTable(const std::vector<std::string>& head,
   s += "\n" + sep + "\n";
   for (const auto& r : rows) {
     s += "|";
-    for (const auto& c : r) s += " " + Cell(c) + " |";
+    for (const auto& c : r) s += " " + MarkdownCell(c) + " |";
     s += "\n";
   }
   return s;

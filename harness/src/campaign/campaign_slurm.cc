@@ -23,7 +23,7 @@ struct Output {
   std::string text;
 };
 
-Output Capture(const std::string& cmd) {
+Output RunCommand(const std::string& cmd) {
   Output o;
   FILE* p = popen((cmd + " 2>&1").c_str(), "r");
   if (!p) return o;
@@ -94,14 +94,14 @@ SlurmSubmission SubmitSlurm(const CampaignFolder& f, const std::vector<int>& sha
   std::string list;
   for (int k : shards) list += (list.empty() ? "" : ",") + std::to_string(k);
   const std::string dir = Absolute(f.dir);
-  const Output a =
-      Capture("sbatch --parsable --array=" + list + " " + ShellQuote(dir + "/slurm/shards.sbatch"));
+  const Output a = RunCommand("sbatch --parsable --array=" + list + " " +
+                              ShellQuote(dir + "/slurm/shards.sbatch"));
   if (a.status != 0 || a.text.empty())
     throw std::runtime_error("sbatch of the shard array failed: " + a.text);
   s.array_job = a.text.substr(0, a.text.find(';'));
   const Output m =
-      Capture("sbatch --parsable --kill-on-invalid-dep=yes --dependency=afterok:" + s.array_job +
-              " " + ShellQuote(dir + "/slurm/merge.sbatch"));
+      RunCommand("sbatch --parsable --kill-on-invalid-dep=yes --dependency=afterok:" + s.array_job +
+                 " " + ShellQuote(dir + "/slurm/merge.sbatch"));
   if (m.status != 0 || m.text.empty())
     throw std::runtime_error("sbatch of the merge job failed: " + m.text);
   s.merge_job = m.text.substr(0, m.text.find(';'));
@@ -118,7 +118,7 @@ SlurmSubmission SubmitSlurm(const CampaignFolder& f, const std::vector<int>& sha
 }
 
 std::string SlurmJobState(const std::string& job) {
-  const Output o = Capture("scontrol show job -o " + ShellQuote(job));
+  const Output o = RunCommand("scontrol show job -o " + ShellQuote(job));
   if (o.status == 127 || o.status < 0) return "";
   const std::size_t at = o.text.find("JobState=");
   if (o.status != 0 || at == std::string::npos) return "GONE";

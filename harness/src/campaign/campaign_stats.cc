@@ -54,7 +54,7 @@ json EvaluateGroup(const CampaignCriterion& c, const json& group, const json& ru
 
 }  // namespace
 
-double Percentile(const std::vector<double>& sorted, double p) {
+double SortedQuantile(const std::vector<double>& sorted, double p) {
   const double h = static_cast<double>(sorted.size() - 1) * p;
   const auto lo = static_cast<std::size_t>(std::floor(h));
   const std::size_t hi = std::min(lo + 1, sorted.size() - 1);
@@ -74,8 +74,8 @@ json MetricStats(const std::vector<json>& values) {
   for (double v : x) sum += v;
   return {{"n", x.size()},
           {"mean", sum / static_cast<double>(x.size())},
-          {"p50", Percentile(x, 0.5)},
-          {"p95", Percentile(x, 0.95)},
+          {"p50", SortedQuantile(x, 0.5)},
+          {"p95", SortedQuantile(x, 0.95)},
           {"min", x.front()},
           {"max", x.back()}};
 }

@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 #include <sys/stat.h>
 
+#include "hil/firmware_emu/angles.h"
 #include "hil/harness/datasets/kfgins_text.h"
 #include "hil/truth/path.h"
 #include "hil/truth/truth_integrator.h"
@@ -16,7 +17,6 @@
 namespace hil::harness {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 // antenna in the body (FLU): 0.2 m ahead, 0.1 m to the right, 0.6 m up
 const Eigen::Vector3d kLeverFlu(0.2, -0.1, 0.6);
 

@@ -5,10 +5,10 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "hil/firmware_emu/angles.h"
+
 namespace hil::harness {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 // north and east metres between two nearby geodetic points (WGS-84 meridian and prime-vertical
 // radii at the first)

@@ -8,10 +8,10 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "hil/firmware_emu/angles.h"
+
 namespace hil::harness {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 std::FILE* Create(const std::string& path) {
   std::FILE* f = std::fopen(path.c_str(), "w");

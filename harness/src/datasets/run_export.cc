@@ -13,13 +13,13 @@
 #include <Eigen/Geometry>
 #include <sys/stat.h>
 
+#include "hil/firmware_emu/angles.h"
 #include "hil/harness/datasets/capture_imu.h"
 #include "hil/harness/datasets/kfgins_text.h"
 
 namespace hil::harness {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kWeek_s = 604800.0;
 
 // a CSV with a header row: each row's values by column name

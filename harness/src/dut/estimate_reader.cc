@@ -14,7 +14,6 @@ namespace hil::harness {
 namespace {
 
 constexpr double kKnotToMps = 1852.0 / 3600.0;
-constexpr std::int64_t kDayNs = 86400LL * 1000000000LL;
 
 Time FromUnixSeconds(double unix_s, std::int64_t start_unix_ns) {
   const auto sec = static_cast<std::int64_t>(std::floor(unix_s));

@@ -6,7 +6,6 @@
 namespace hil::harness {
 namespace {
 
-constexpr std::int64_t kDayNs = 86400LL * 1000000000LL;
 constexpr double kRadToDeg = 180.0 / M_PI;
 
 std::uint64_t Le(std::string_view b, std::size_t at, int n) {

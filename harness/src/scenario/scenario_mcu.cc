@@ -5,12 +5,12 @@
 
 #include <Eigen/Geometry>
 
+#include "hil/firmware_emu/angles.h"
+
 #include "scenario_sections.h"
 
 namespace hil::harness {
 namespace {
-
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 Eigen::Vector3d Vec(const YamlReader& r, const std::string& key, const Eigen::Vector3d& fallback) {
   const auto v = r.Doubles(key, 3, {fallback.x(), fallback.y(), fallback.z()});

@@ -1,13 +1,14 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "hil/firmware_emu/angles.h"
+
 #include "scenario_sections.h"
 
 namespace hil::harness {
 namespace {
 
 constexpr double kKmhToMps = 1.0 / 3.6;
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 void ReadOrigin(const YamlReader& r, truth::TruthConfig& t) {
   r.CheckKeys({"lat_deg", "lon_deg", "height_m"});

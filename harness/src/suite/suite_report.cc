@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <map>
 
+#include "hil/harness/report/markdown.h"
+
 namespace hil::harness {
 namespace {
 
@@ -44,14 +46,6 @@ std::string FmtSpread(const std::string& metric, const json& s) {
   if (n == 1) return Fmt(metric, s["mean"]);
   return Fmt(metric, s["mean"]) + " ± " + Fmt(metric, s["std"]) + " (" + Fmt(metric, s["min"]) +
          " – " + Fmt(metric, s["max"]) + ", " + std::to_string(n) + " seeds)";
-}
-
-std::string Cell(std::string s) {  // Markdown table cell: no pipes or newlines
-  for (char& c : s) {
-    if (c == '|') c = '/';
-    if (c == '\n') c = ' ';
-  }
-  return s;
 }
 
 json Lookup(const json& run, const char* table, const std::string& key) {
@@ -156,9 +150,10 @@ void AppendPaperMd(std::string& md, const json& scenarios) {
       if (!paper.empty() && rel == "above") paper = "> " + paper;
       const std::string finding = p.value("finding", "");
       if (!finding.empty()) paper += (paper.empty() ? "" : " — ") + finding;
-      md += "| " + Cell(s.value("scenario", "")) + " | " + Cell(p.value("source", "")) + " | `" +
-            metric + "` | " + Cell(paper) + " | " + FmtSpread(metric, p["ours"]) + " | " +
-            FmtSpread(metric, p["raw_gnss"]) + " | " + Cell(p.value("note", "")) + " |\n";
+      md += "| " + MarkdownCell(s.value("scenario", "")) + " | " +
+            MarkdownCell(p.value("source", "")) + " | `" + metric + "` | " + MarkdownCell(paper) +
+            " | " + FmtSpread(metric, p["ours"]) + " | " + FmtSpread(metric, p["raw_gnss"]) +
+            " | " + MarkdownCell(p.value("note", "")) + " |\n";
     }
   }
   if (!any_paper) md += "| (no scenario has a `paper:` section) | | | | | | |\n";
@@ -180,7 +175,7 @@ void AppendOutagesMd(std::string& md, const json& scenarios) {
       for (const auto& o : s.value("outages", json::array())) {
         std::snprintf(line, sizeof line, "%.0f–%.0f s", o.value("start_s", 0.0),
                       o.value("end_s", 0.0));
-        md += "| " + Cell(s.value("scenario", "")) + " | " + line + " | " +
+        md += "| " + MarkdownCell(s.value("scenario", "")) + " | " + line + " | " +
               FmtSpread("e_m", o["max_east_error_m"]) + " | " +
               FmtSpread("e_m", o["max_north_error_m"]) + " | " +
               FmtSpread("e_m", o["max_up_error_m"]) + " | " +
@@ -198,9 +193,9 @@ void AppendCriteriaMd(std::string& md, const json& scenarios) {
       "\n## Criteria\n\n| scenario | criterion | value | threshold | seeds passed | result "
       "|\n|---|---|---|---|---|---|\n";
   for (const auto& s : scenarios) {
-    const std::string name = Cell(s.value("scenario", ""));
+    const std::string name = MarkdownCell(s.value("scenario", ""));
     if (s.contains("error")) {
-      md += "| " + name + " | invalid scenario | " + Cell(s.value("error", "")) +
+      md += "| " + name + " | invalid scenario | " + MarkdownCell(s.value("error", "")) +
             " | | | **INVALID** |\n";
       continue;
     }
@@ -212,13 +207,13 @@ void AppendCriteriaMd(std::string& md, const json& scenarios) {
       const std::string cname = c.value("name", "");
       const std::string metric = c.value("metric", "");
       std::snprintf(line, sizeof line, "%d/%d", c.value("passed", 0), c.value("runs", 0));
-      md += "| " + name + " | " + Cell(cname) + " | " + FmtSpread(metric, c["value"]) + " | " +
-            FmtSpread(metric, c["threshold"]) + " | " + line + " | " +
+      md += "| " + name + " | " + MarkdownCell(cname) + " | " + FmtSpread(metric, c["value"]) +
+            " | " + FmtSpread(metric, c["threshold"]) + " | " + line + " | " +
             (c.value("pass", false) ? "PASS" : "**FAIL**") + " |\n";
     }
     for (const auto& p : s.value("problems", json::array())) {
       md += "| " + name + " | run problem | " +
-            Cell(p.is_string() ? p.get<std::string>() : p.dump()) + " | | | **FAIL** |\n";
+            MarkdownCell(p.is_string() ? p.get<std::string>() : p.dump()) + " | | | **FAIL** |\n";
     }
   }
 }
@@ -314,7 +309,8 @@ std::string SuiteMarkdown(const json& summary) {
   md += "\n## Runs\n\n| run | seed | result |\n|---|---|---|\n";
   for (const auto& r : summary.value("runs", json::array())) {
     const int code = r.value("exit_code", -1);
-    md += "| " + Cell(std::filesystem::path(r.value("run_dir", "")).filename().string()) + " | " +
+    md += "| " + MarkdownCell(std::filesystem::path(r.value("run_dir", "")).filename().string()) +
+          " | " +
           (r.contains("seed") && r.at("seed").is_number()
                ? std::to_string(r.at("seed").get<std::uint64_t>())
                : std::string("-")) +

@@ -21,7 +21,7 @@ namespace hil::harness {
 namespace {
 
 // The device's bytes of a hil capture (any version, see capture_format.h), with emulated times.
-ByteStream ReadCapture(const std::string& text, const std::string& source) {
+ByteStream ByteStreamOfCapture(const std::string& text, const std::string& source) {
   ByteStream s;
   std::istringstream in(text);
   std::string line;
@@ -94,7 +94,7 @@ ByteStream ReadByteSource(const std::string& source, double listen_s, int baud) 
   std::stringstream ss;
   ss << in.rdbuf();
   std::string text = ss.str();
-  if (text.rfind("# hil capture v", 0) == 0) return ReadCapture(text, source);
+  if (text.rfind("# hil capture v", 0) == 0) return ByteStreamOfCapture(text, source);
   // a raw log: drop the leading comment block (gpsd logs carry their metadata there)
   std::size_t pos = 0;
   while (pos < text.size() && text[pos] == '#') {

@@ -6,9 +6,10 @@
 #include <stdexcept>
 #include <string>
 
+#include "hil/firmware_emu/angles.h"
+
 namespace hil::truth {
 namespace {
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 Eigen::Vector2d Rotate(const Eigen::Vector2d& v, double angle_rad) {
   const double c = std::cos(angle_rad), s = std::sin(angle_rad);

@@ -4,10 +4,11 @@
 #include <numbers>
 #include <random>
 
+#include "hil/firmware_emu/angles.h"
+
 namespace hil::truth {
 
 Terrain::Terrain(const TerrainConfig& c) : z0_m_(c.height_m) {
-  constexpr double kDeg = std::numbers::pi / 180.0;
   if (c.type != TerrainConfig::Type::kFlat) {
     const double g = std::tan(c.slope_deg * kDeg);
     const double az = c.uphill_heading_deg * kDeg;  // clockwise from north: (sin, cos) in ENU

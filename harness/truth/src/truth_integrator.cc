@@ -14,13 +14,13 @@
 #include <nvector/nvector_serial.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
+#include "hil/firmware_emu/angles.h"
 #include "hil/truth/body_motion.h"
 
 namespace hil::truth {
 namespace {
 
 constexpr double kEarthRate_radps = 7.2921150e-5;
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kFreeRunHorizon_s = 1e4;  // tout for CVODE when no event is scheduled
 enum StateIndex { kE = 0, kN = 1, kYaw = 2, kV = 3, kU = 4, kStateSize = 5 };

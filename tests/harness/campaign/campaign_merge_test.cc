@@ -112,9 +112,9 @@ TEST_F(CampaignMergeTest, ShardsMergeToTheBytesOfOneLocalRun) {
 }
 
 TEST_F(CampaignMergeTest, StatisticsAndCriteriaAcrossSeedsNameTheRunsThatBreakThem) {
-  EXPECT_DOUBLE_EQ(Percentile({1, 2, 3, 4}, 0.5), 2.5);
+  EXPECT_DOUBLE_EQ(SortedQuantile({1, 2, 3, 4}, 0.5), 2.5);
   EXPECT_NEAR(
-      Percentile({1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20}, 0.95),
+      SortedQuantile({1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20}, 0.95),
       19.05, 1e-12);
   const CampaignPlan plan = Plan(8);
   const CampaignFolder f = PrepareCampaignFolder((root_ / "c").string(), plan, 1);

@@ -21,6 +21,9 @@ struct SimClock {
 using Duration = std::chrono::nanoseconds;
 using Time = SimClock::time_point;
 
+/// Nanoseconds in a (UTC, leap-second-free) day, for time-of-day fields on the wire.
+inline constexpr std::int64_t kDayNs = 86400LL * 1000000000LL;
+
 /// Time from integer nanoseconds since scenario start.
 constexpr Time TimeFromNs(std::int64_t ns) { return Time{Duration{ns}}; }
 /// Nanoseconds since scenario start.

@@ -15,7 +15,7 @@
 namespace hil::harness {
 
 /// The p-quantile (0 ≤ p ≤ 1) of sorted values (at least one).
-double Percentile(const std::vector<double>& sorted, double p);
+double SortedQuantile(const std::vector<double>& sorted, double p);
 
 /// {"n", "mean", "p50", "p95", "min", "max"} of the numbers among `values` (nulls when none).
 nlohmann::json MetricStats(const std::vector<nlohmann::json>& values);

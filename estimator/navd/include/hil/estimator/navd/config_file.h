@@ -25,6 +25,9 @@ struct ConfigEntry {
   int line = 0;
 };
 
+/// How errors name an entry's field: `[section] key`.
+std::string FieldName(const ConfigEntry& e);
+
 /// The parsed text of a configuration file, in file order.
 class ConfigFile {
  public:
