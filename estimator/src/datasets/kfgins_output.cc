@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "hil/estimator/datasets/dataset_error.h"
+#include "hil/estimator/datasets/fixed_decimal.h"
 
 namespace hil::estimator::datasets {
 namespace {
@@ -14,8 +15,8 @@ class LineBuffer {
  public:
   void Add(double v, int decimals) {
     if (p_ != buf_) *p_++ = ' ';
-    const auto r = std::to_chars(p_, end_ - 2, v, std::chars_format::fixed, decimals);
-    p_ = r.ptr;  // a value too long for the rest of the line is left out (never happens here)
+    // a value too long for the rest of the line is left out (never happens here)
+    p_ = FormatFixed(p_, end_ - 2, v, decimals);
   }
   void Add(const Eigen::Vector3d& v, int decimals) {
     for (int i = 0; i < 3; ++i) Add(v[i], decimals);
@@ -40,6 +41,7 @@ std::FILE* Create(const std::string& dir, const char* name) {
   const std::string path = dir + "/" + name;
   std::FILE* f = std::fopen(path.c_str(), "w");
   if (!f) throw DatasetError(path, 0, std::string("cannot create: ") + std::strerror(errno));
+  std::setvbuf(f, nullptr, _IOFBF, 1 << 18);  // one line per IMU epoch: written in large blocks
   return f;
 }
 
