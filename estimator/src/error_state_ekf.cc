@@ -79,7 +79,11 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& delta_angle_B_rad,
         p.speed_dev_std_mps * p.speed_dev_std_mps * (1.0 - dev_decay * dev_decay);
   e_gnss_ *= gm_decay;
   speed_dev_ *= dev_decay;
-  Symmetrize();
+  // PropagateCovariance made the off-diagonal blocks exact transposes: only the two diagonal
+  // blocks need ½ (P + Pᵀ) (the same values a full Symmetrize gives)
+  SymmetrizeBlock(0, kAccelBias);
+  SymmetrizeBlock(kAccelBias, kNumStates);
+  RepairDiagonal();
 }
 
 void ErrorStateEkf::PropagateCovariance(const Eigen::Matrix3d& C, double dt, double gm_decay,
@@ -328,14 +332,22 @@ void ErrorStateEkf::ResetPositionVelocity(const Eigen::Vector3d& p, const Eigen:
 }
 
 void ErrorStateEkf::Symmetrize() {
-  // P ← ½ (P + Pᵀ), in place over the pairs below the diagonal (the same sums, no copy)
-  for (int j = 0; j < kNumStates; ++j) {
-    for (int i = j + 1; i < kNumStates; ++i) {
+  SymmetrizeBlock(0, kNumStates);
+  RepairDiagonal();
+}
+
+void ErrorStateEkf::SymmetrizeBlock(int first, int end) {
+  // P ← ½ (P + Pᵀ) on the block [first, end)², in place over its pairs below the diagonal
+  for (int j = first; j < end; ++j) {
+    for (int i = j + 1; i < end; ++i) {
       const double m = 0.5 * (P_(i, j) + P_(j, i));
       P_(i, j) = m;
       P_(j, i) = m;
     }
   }
+}
+
+void ErrorStateEkf::RepairDiagonal() {
   for (int i = 0; i < kNumStates; ++i) {
     if (!(P_(i, i) >= 0) || !std::isfinite(P_(i, i))) {
       P_.row(i).setZero();

@@ -181,6 +181,9 @@ class ErrorStateEkf {
   /// P ← Φ P Φᵀ for one IMU interval, by Φ's blocks (no dense 20 × 20 product).
   void PropagateCovariance(const Eigen::Matrix3d& C, double dt, double gm_decay, double dev_decay);
   void Symmetrize();
+  void SymmetrizeBlock(int first, int end);
+  /// A negative or non-finite variance: its row and column restart (counted in repairs_).
+  void RepairDiagonal();
   /// Stationary variances (E, N, U) of the correlated GNSS error for a horizontal σ.
   Eigen::Vector3d GnssErrorVariance(double horizontal_std_m) const;
 
