@@ -54,29 +54,15 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& delta_angle_B_rad,
   f_N_ = C * dv / dt;
   Propagate(earth_, dth, dv, dt, memory_, state_);
 
-  // error-state transition Φ = I + F·dt (only the non-zero blocks are touched)
-  EkfMatrix Phi = EkfMatrix::Identity();
-  const Eigen::Matrix3d W = Skew(earth_.w_IE_N_radps);
-  Phi.block<3, 3>(kPos, kVel) = Eigen::Matrix3d::Identity() * dt;
-  Phi.block<3, 3>(kVel, kVel) -= 2.0 * W * dt;
-  Phi.block<3, 3>(kVel, kAtt) = -Skew(f_N_) * dt;
-  Phi.block<3, 3>(kVel, kAccelBias) = -C * dt;
-  Phi.block<3, 3>(kAtt, kAtt) -= W * dt;
-  Phi.block<3, 3>(kAtt, kGyroBias) = -C * dt;
   const auto& p = params_;
   double gm_decay = 1.0;
   Eigen::Vector3d gm_q = Eigen::Vector3d::Zero();
   if (p.gnss_error_tau_s > 0) {
     gm_decay = std::exp(-dt / gm_tau_s_);
     gm_q = GnssErrorVariance(gm_std_m_) * (1.0 - gm_decay * gm_decay);
-    Phi.block<3, 3>(kGnssError, kGnssError).diagonal().setConstant(gm_decay);
   }
-  double dev_decay = 1.0;
-  if (SpeedDevState(p)) {
-    dev_decay = std::exp(-dt / p.speed_dev_tau_s);
-    Phi(kSpeedDev, kSpeedDev) = dev_decay;
-  }
-  P_ = Phi * P_ * Phi.transpose();
+  const double dev_decay = SpeedDevState(p) ? std::exp(-dt / p.speed_dev_tau_s) : 1.0;
+  PropagateCovariance(C, dt, gm_decay, dev_decay);
   // process noise: isotropic densities are invariant under the rotation C
   P_.block<3, 3>(kVel, kVel).diagonal().array() +=
       p.accel_noise_mps2_rthz * p.accel_noise_mps2_rthz * dt;
@@ -93,7 +79,55 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& delta_angle_B_rad,
         p.speed_dev_std_mps * p.speed_dev_std_mps * (1.0 - dev_decay * dev_decay);
   e_gnss_ *= gm_decay;
   speed_dev_ *= dev_decay;
-  Symmetrize();
+  // PropagateCovariance made the off-diagonal blocks exact transposes: only the two diagonal
+  // blocks need ½ (P + Pᵀ) (the same values a full Symmetrize gives)
+  SymmetrizeBlock(0, kAccelBias);
+  SymmetrizeBlock(kAccelBias, kNumStates);
+  RepairDiagonal();
+}
+
+void ErrorStateEkf::PropagateCovariance(const Eigen::Matrix3d& C, double dt, double gm_decay,
+                                        double dev_decay) {
+  // P ← Φ P Φᵀ with Φ = I + F·dt, by its blocks (3 × 3; the last five states are scalars):
+  //   row δp: [I  I·dt  0  0   0  ]        rows δb_a, δb_g, δs: identity
+  //   row δv: [0  A     B  −Cdt 0 ]        rows e: gm_decay·I; row δd: dev_decay
+  //   row φ:  [0  0     D  0   −Cdt]
+  // A = I − 2[ω_IE×]dt, B = −[f_N×]dt, D = I − [ω_IE×]dt. Only the rows of δp, δv, φ need
+  // products; the rest of P is scaled by Φ's diagonal, and P's symmetry gives the lower-left part.
+  constexpr int kTail = kNumStates - kAccelBias;  // δb_a … δd
+  using Rows3 = Eigen::Matrix<double, 3, kNumStates>;
+  const Eigen::Matrix3d W_dt = Skew(earth_.w_IE_N_radps) * dt;
+  const Eigen::Matrix3d A = Eigen::Matrix3d::Identity() - 2.0 * W_dt;
+  const Eigen::Matrix3d B = -Skew(f_N_) * dt;
+  const Eigen::Matrix3d D = Eigen::Matrix3d::Identity() - W_dt;
+  const Eigen::Matrix3d G = -C * dt;
+  // M = Φ P, rows of δp, δv, φ
+  const Rows3 Mp = P_.middleRows<3>(kPos) + dt * P_.middleRows<3>(kVel);
+  const Rows3 Mv =
+      A * P_.middleRows<3>(kVel) + B * P_.middleRows<3>(kAtt) + G * P_.middleRows<3>(kAccelBias);
+  const Rows3 Ma = D * P_.middleRows<3>(kAtt) + G * P_.middleRows<3>(kGyroBias);
+  // Φ's diagonal on the tail: P_tail ← Φ_tail P_tail Φ_tailᵀ
+  Eigen::Matrix<double, kTail, 1> tail = Eigen::Matrix<double, kTail, 1>::Ones();
+  tail.segment<3>(kGnssError - kAccelBias).setConstant(gm_decay);
+  tail[kSpeedDev - kAccelBias] = dev_decay;
+  P_.bottomRightCorner<kTail, kTail>() =
+      tail.asDiagonal() * P_.bottomRightCorner<kTail, kTail>() * tail.asDiagonal();
+  // P' rows of δp, δv, φ = M Φᵀ (column operations)
+  const auto post = [&](const Rows3& M) {
+    Rows3 R;
+    R.middleCols<3>(kPos) = M.middleCols<3>(kPos) + dt * M.middleCols<3>(kVel);
+    R.middleCols<3>(kVel) = M.middleCols<3>(kVel) * A.transpose() +
+                            M.middleCols<3>(kAtt) * B.transpose() +
+                            M.middleCols<3>(kAccelBias) * G.transpose();
+    R.middleCols<3>(kAtt) =
+        M.middleCols<3>(kAtt) * D.transpose() + M.middleCols<3>(kGyroBias) * G.transpose();
+    R.rightCols<kTail>() = M.rightCols<kTail>() * tail.asDiagonal();
+    return R;
+  };
+  P_.middleRows<3>(kPos) = post(Mp);
+  P_.middleRows<3>(kVel) = post(Mv);
+  P_.middleRows<3>(kAtt) = post(Ma);
+  P_.bottomLeftCorner<kTail, kAccelBias>() = P_.topRightCorner<kAccelBias, kTail>().transpose();
 }
 
 Eigen::Vector3d ErrorStateEkf::AntennaPosition() const {
@@ -226,9 +260,12 @@ UpdateResult ErrorStateEkf::Update(const Eigen::Matrix<double, M, 1>& innovation
   const Eigen::Matrix<double, M, M> S_inv = ldlt.solve(Eigen::Matrix<double, M, M>::Identity());
   const Eigen::Matrix<double, kNumStates, M> K = PHt * S_inv;
   const EkfVector dx = K * innovation;
-  // Joseph form keeps P symmetric positive semi-definite
-  const EkfMatrix IKH = EkfMatrix::Identity() - K * H;
-  P_ = IKH * P_ * IKH.transpose() + K * R * K.transpose();
+  // Joseph form (I − KH) P (I − KH)ᵀ + K R Kᵀ keeps P symmetric positive semi-definite; its
+  // products are taken through the rank-M factors (no 20 × 20 × 20 product): X = (I − KH) P =
+  // P − K (HP) with HP = (PHᵀ)ᵀ (P is symmetric), then X (I − KH)ᵀ = X − (XHᵀ) Kᵀ
+  const EkfMatrix X = P_ - K * PHt.transpose();
+  const Eigen::Matrix<double, kNumStates, M> XHt = X * H.transpose();
+  P_ = X - XHt * K.transpose() + K * R * K.transpose();
   Symmetrize();
   InjectError(dx);
   r.accepted = true;
@@ -295,7 +332,22 @@ void ErrorStateEkf::ResetPositionVelocity(const Eigen::Vector3d& p, const Eigen:
 }
 
 void ErrorStateEkf::Symmetrize() {
-  P_ = 0.5 * (P_ + P_.transpose()).eval();
+  SymmetrizeBlock(0, kNumStates);
+  RepairDiagonal();
+}
+
+void ErrorStateEkf::SymmetrizeBlock(int first, int end) {
+  // P ← ½ (P + Pᵀ) on the block [first, end)², in place over its pairs below the diagonal
+  for (int j = first; j < end; ++j) {
+    for (int i = j + 1; i < end; ++i) {
+      const double m = 0.5 * (P_(i, j) + P_(j, i));
+      P_(i, j) = m;
+      P_(j, i) = m;
+    }
+  }
+}
+
+void ErrorStateEkf::RepairDiagonal() {
   for (int i = 0; i < kNumStates; ++i) {
     if (!(P_(i, i) >= 0) || !std::isfinite(P_(i, i))) {
       P_.row(i).setZero();

@@ -18,17 +18,23 @@ Eigen::Vector3d EcefFromLla(const Lla& g) {
 
 Lla LlaFromEcef(const Eigen::Vector3d& p) {
   const double r_xy = std::hypot(p.x(), p.y());
-  double lat = std::atan2(p.z(), r_xy * (1.0 - kWgs84E2));
-  double h = 0;
-  // fixed-point iteration on latitude and height
-  for (int i = 0; i < 6; ++i) {
-    const double s = std::sin(lat);
-    const double n = kWgs84A_m / std::sqrt(1.0 - kWgs84E2 * s * s);
-    h = std::abs(std::cos(lat)) > 1e-9 ? r_xy / std::cos(lat) - n
-                                       : std::abs(p.z()) - n * (1.0 - kWgs84E2);
-    lat = std::atan2(p.z(), r_xy * (1.0 - kWgs84E2 * n / (n + h)));
+  const double lon = std::atan2(p.y(), p.x()) / kDeg;
+  if (r_xy < 1e-3) {  // on the polar axis (within a millimetre)
+    const double n = kWgs84A_m / std::sqrt(1.0 - kWgs84E2);
+    return {std::copysign(90.0, p.z()), lon, std::abs(p.z()) - n * (1.0 - kWgs84E2)};
   }
-  return {lat / kDeg, std::atan2(p.y(), p.x()) / kDeg, h};
+  // fixed-point iteration on latitude and height, carried in t = tan(lat) so that it needs
+  // square roots only (sin² = t²/(1 + t²), 1/cos = √(1 + t²)): a profile of navd's output
+  // found the trigonometric form's sin, cos and atan2 in every iteration costly
+  double t = p.z() / (r_xy * (1.0 - kWgs84E2));
+  double h = 0;
+  for (int i = 0; i < 6; ++i) {
+    const double sec2 = 1.0 + t * t;
+    const double n = kWgs84A_m / std::sqrt(1.0 - kWgs84E2 * (t * t / sec2));
+    h = r_xy * std::sqrt(sec2) - n;
+    t = p.z() / (r_xy * (1.0 - kWgs84E2 * n / (n + h)));
+  }
+  return {std::atan(t) / kDeg, lon, h};
 }
 
 double NormalGravity(double lat_deg, double height_m) {

@@ -434,10 +434,7 @@ NavOutput Navigator::Output() const {
   // output predictor: the delayed filter state carried through the IMU samples not yet fused
   NavState st = ekf_.state();
   MechanizationMemory mem;
-  EarthModel earth;
-  earth.g_N_mps2 =
-      Eigen::Vector3d(0, 0, -NormalGravity(frame_.origin().lat_deg, frame_.origin().height_m));
-  earth.w_IE_N_radps = frame_.w_IE_N();
+  const EarthModel& earth = ekf_.earth();  // the frame origin's (EnsureFrame)
   for (std::size_t i = 0; i < imu_.size(); ++i) {
     const ImuSample& s = imu_[i];
     if (s.t <= o.t) continue;

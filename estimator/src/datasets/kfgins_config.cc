@@ -113,6 +113,15 @@ class Keys {
     for (int i = 0; i < 3; ++i) out[i] = ParseNumber(key, items[static_cast<std::size_t>(i)]);
     return out;
   }
+  /// KF-GINS's per-axis noise lists ([x, y, z]) or one number for the three axes; navd's noise
+  /// is isotropic, so it takes the largest of the three
+  double AxesNumber(const std::string& key) const {
+    const std::string t = Trim(Required(key).text);
+    return !t.empty() && t.front() == '[' ? Vector(key).maxCoeff() : Number(key);
+  }
+  double AxesNumberOr(const std::string& key, double fallback) const {
+    return Has(key) ? AxesNumber(key) : fallback;
+  }
   std::optional<Eigen::Vector3d> OptionalVector(const std::string& key) const {
     if (!Has(key)) return std::nullopt;
     return Vector(key);
@@ -173,12 +182,12 @@ KfginsConfig LoadKfginsConfig(const std::string& path) {
   c.initaccbias_mgal = k.OptionalVector("initaccbias");
   c.initbgstd_deg_hr = k.OptionalVector("initbgstd");
   c.initbastd_mgal = k.OptionalVector("initbastd");
-  c.imunoise.arw_deg_rthr = k.Number("imunoise.arw");
-  c.imunoise.vrw_mps_rthr = k.Number("imunoise.vrw");
-  c.imunoise.gbstd_deg_hr = k.Number("imunoise.gbstd");
-  c.imunoise.abstd_mgal = k.Number("imunoise.abstd");
-  c.imunoise.gsstd_ppm = k.NumberOr("imunoise.gsstd", 0);
-  c.imunoise.asstd_ppm = k.NumberOr("imunoise.asstd", 0);
+  c.imunoise.arw_deg_rthr = k.AxesNumber("imunoise.arw");
+  c.imunoise.vrw_mps_rthr = k.AxesNumber("imunoise.vrw");
+  c.imunoise.gbstd_deg_hr = k.AxesNumber("imunoise.gbstd");
+  c.imunoise.abstd_mgal = k.AxesNumber("imunoise.abstd");
+  c.imunoise.gsstd_ppm = k.AxesNumberOr("imunoise.gsstd", 0);
+  c.imunoise.asstd_ppm = k.AxesNumberOr("imunoise.asstd", 0);
   c.imunoise.corrtime_hr = k.Number("imunoise.corrtime");
   if (!(c.imunoise.corrtime_hr > 0))
     throw DatasetError(path, k.Required("imunoise.corrtime").line,

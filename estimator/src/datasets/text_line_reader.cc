@@ -10,6 +10,7 @@ namespace hil::estimator::datasets {
 TextLineReader::TextLineReader(const std::string& path) : path_(path) {
   f_ = std::fopen(path.c_str(), "r");
   if (!f_) throw DatasetError(path, 0, std::string("cannot open: ") + std::strerror(errno));
+  std::setvbuf(f_, nullptr, _IOFBF, 1 << 18);  // a dataset is read in large blocks
 }
 
 TextLineReader::~TextLineReader() {

@@ -7,6 +7,7 @@
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "hil/firmware_emu/angles.h"
 
@@ -95,11 +96,15 @@ void KfginsTextFiles::WriteConfig(const KfginsYaml& y, const std::string& gnss_f
   WriteVector(f, "initposstd", y.initposstd_m);
   WriteVector(f, "initvelstd", y.initvelstd_mps);
   WriteVector(f, "initattstd", y.initattstd_deg);
-  std::fprintf(f,
-               "imunoise:\n  arw: %.12g\n  vrw: %.12g\n  gbstd: %.12g\n  abstd: %.12g\n"
-               "  gsstd: %.12g\n  asstd: %.12g\n  corrtime: %.12g\n",
-               y.arw_deg_rthr, y.vrw_mps_rthr, y.gbstd_deg_hr, y.abstd_mgal, y.gsstd_ppm,
-               y.asstd_ppm, y.corrtime_hr);
+  // KF-GINS requires the initial IMU errors and takes the noise per axis ([x, y, z])
+  for (const char* key : {"initgyrbias", "initaccbias", "initgyrscale", "initaccscale"})
+    std::fprintf(f, "%s: [0, 0, 0]\n", key);
+  std::fprintf(f, "imunoise:\n");
+  const std::pair<const char*, double> noise[] = {
+      {"arw", y.arw_deg_rthr}, {"vrw", y.vrw_mps_rthr}, {"gbstd", y.gbstd_deg_hr},
+      {"abstd", y.abstd_mgal}, {"gsstd", y.gsstd_ppm},  {"asstd", y.asstd_ppm}};
+  for (const auto& [key, v] : noise) std::fprintf(f, "  %s: [%.12g, %.12g, %.12g]\n", key, v, v, v);
+  std::fprintf(f, "  corrtime: %.12g\n", y.corrtime_hr);
   const Eigen::Vector3d& l = y.antlever_flu_m;
   WriteVector(f, "antlever", {l.x(), -l.y(), -l.z()});
   if (std::fclose(f) != 0) throw std::runtime_error(dir_ + "/" + name + ": write error");

@@ -170,6 +170,7 @@ class ErrorStateEkf {
   double speed_deviation_mps() const { return speed_dev_; }
   const Eigen::Vector3d& last_gyro_rate_B() const { return w_B_; }
   const EkfParams& params() const { return params_; }
+  const EarthModel& earth() const { return earth_; }
   std::uint32_t repairs() const { return repairs_; }
 
  private:
@@ -177,7 +178,12 @@ class ErrorStateEkf {
   UpdateResult Update(const Eigen::Matrix<double, M, 1>& innovation,
                       const Eigen::Matrix<double, M, ekf_index::kNumStates>& H,
                       const Eigen::Matrix<double, M, M>& R);
+  /// P ← Φ P Φᵀ for one IMU interval, by Φ's blocks (no dense 20 × 20 product).
+  void PropagateCovariance(const Eigen::Matrix3d& C, double dt, double gm_decay, double dev_decay);
   void Symmetrize();
+  void SymmetrizeBlock(int first, int end);
+  /// A negative or non-finite variance: its row and column restart (counted in repairs_).
+  void RepairDiagonal();
   /// Stationary variances (E, N, U) of the correlated GNSS error for a horizontal σ.
   Eigen::Vector3d GnssErrorVariance(double horizontal_std_m) const;
 

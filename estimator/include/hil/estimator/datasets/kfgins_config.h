@@ -17,7 +17,8 @@
 
 namespace hil::estimator::datasets {
 
-/// imunoise: the IMU error model (KF-GINS units).
+/// imunoise: the IMU error model (KF-GINS units). KF-GINS gives arw … asstd per axis ([x, y, z]);
+/// navd's noise is the same on the three axes, so it keeps the largest (one number is read too).
 struct KfginsImuNoise {
   double arw_deg_rthr = 0;  ///< gyro angle random walk, °/√h
   double vrw_mps_rthr = 0;  ///< accelerometer velocity random walk, m/s/√h

@@ -11,6 +11,7 @@
 
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -50,10 +51,16 @@ class KfginsOutputWriter {
   static constexpr const char* kStdFile = "KF_GINS_STD.txt";
 
  private:
+  /// a file's lines, formatted straight into one block that goes out whole (no stdio copy)
+  struct Block {
+    std::FILE* file = nullptr;
+    std::vector<char> bytes;
+    std::size_t used = 0;
+    char* Line();  ///< room for one more line (the block goes out first when it has none)
+    void Flush();
+  };
   std::string dir_;
-  std::FILE* nav_ = nullptr;
-  std::FILE* err_ = nullptr;
-  std::FILE* std_ = nullptr;
+  Block nav_, err_, std_;
 };
 
 }  // namespace hil::estimator::datasets
