@@ -86,7 +86,7 @@ TEST(IsobusSteeringDeviceTest, BadCommandsAreRefusedAndCountedWithTheExitReason)
   d.OnHostBytes(0, Ms(80), "T0CAD1C80GG\r", out);                 // not a record: BEL
   RunTo(d, Ms(90), out);
   EXPECT_TRUE(d.ecu().engaged()) << "ignored frames do not disengage";
-  d.OnHostBytes(0, Ms(95), "T0CAD1C8080FBFDFFFFFFFFFF\r", out);  // raw 64256: out of range
+  d.OnHostBytes(0, Ms(95), "T0CAD1C80880FBFDFFFFFFFFFF\r", out);  // raw 64384: out of range
   RunTo(d, Ms(200), out);
   EXPECT_FALSE(d.ecu().engaged());
   EXPECT_EQ(d.ecu().exit_reason(), ExitReason::kRemoteCommandOutOfRange);
