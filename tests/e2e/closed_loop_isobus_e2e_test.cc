@@ -40,7 +40,7 @@ TEST(ClosedLoopIsobusE2eTest, TractorAutosteerOverSlcanPasses) {
   const auto& tr = rep["tracking"];
   EXPECT_LT(tr["cross_track_mean_abs_m"].get<double>(), 0.05) << tr.dump(2);
   const std::string cap = ReadFile(dir / "r/captures/ttyCAN.cap");
-    // the capture's data are hex: "T0CAD1C808" (guidanced's commands, received) and "T0CACFF1C8"
+  // the capture's data are hex: "T0CAD1C808" (guidanced's commands, received) and "T0CACFF1C8"
   // (the ECU's Machine Info, sent)
   EXPECT_NE(cap.find("rx "), std::string::npos);
   EXPECT_NE(cap.find("54304341443143383038"), std::string::npos) << "T0CAD1C808";

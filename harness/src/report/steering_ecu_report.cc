@@ -55,7 +55,9 @@ SteeringEcuReport MakeSteeringEcuReport(const actuator::IsobusSteeringDevice& de
     sum += e * e;
     ++n;
   }
-  if (n > 0) r.commanded_steer_rms_error_deg = std::sqrt(sum / static_cast<double>(n)) * 180.0 / std::numbers::pi;
+  if (n > 0)
+    r.commanded_steer_rms_error_deg =
+        std::sqrt(sum / static_cast<double>(n)) * 180.0 / std::numbers::pi;
   if (slcan) {
     const link::SlcanAdapterCounters& a = device.adapter().counters();
     r.slcan_records = a.records;

@@ -90,7 +90,8 @@ class Device {
     (void)port, (void)t, (void)bytes, (void)out;
   }
   /// Closed loop: a frame another node (the controller under test) put on the run's CAN bus,
-  /// arriving at emulated time `t`; the device may answer. Devices that listen to nothing ignore it.
+  /// arriving at emulated time `t`; the device may answer. Devices that listen to nothing ignore
+  /// it.
   virtual void OnBusFrame(Time t, const CanFrame& frame, DeviceOutput& out) {
     (void)t, (void)frame, (void)out;
   }

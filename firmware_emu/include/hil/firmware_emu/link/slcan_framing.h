@@ -24,10 +24,11 @@ std::string EncodeSlcanFrame(const CanFrame& frame);
 
 enum class SlcanFrameError : std::uint8_t {
   kNone = 0,
-  kNotAFrame,    ///< the record does not start with t, T, r or R
-  kBadId,        ///< too few or non-hex identifier digits, or an 11-bit id above 0x7FF / 29-bit above 0x1FFFFFFF
-  kBadLength,    ///< the length digit is not 0–8
-  kBadData,      ///< the data digits are not 2·L hex digits
+  kNotAFrame,  ///< the record does not start with t, T, r or R
+  kBadId,      ///< too few or non-hex identifier digits, or an 11-bit id above 0x7FF / 29-bit above
+               ///< 0x1FFFFFFF
+  kBadLength,  ///< the length digit is not 0–8
+  kBadData,    ///< the data digits are not 2·L hex digits
 };
 
 /// Decodes one record (without its CR). On success `out` holds the frame (its time untouched).

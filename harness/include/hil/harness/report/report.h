@@ -41,7 +41,7 @@ struct ClosedLoopReport {
   /// Distance the truth vehicle went after the last command arrived, and after the watchdog.
   std::optional<double> distance_after_last_command_m, distance_after_watchdog_m;
   double final_speed_mps = 0;
-  bool stopped = false;  ///< final speed below 1 cm/s
+  bool stopped = false;                           ///< final speed below 1 cm/s
   std::optional<SteeringEcuReport> steering_ecu;  ///< the isobus channel's ECU
 };
 

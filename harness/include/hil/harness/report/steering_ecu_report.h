@@ -19,9 +19,9 @@ struct SteeringEcuReport {
   std::uint64_t frames_from_controller = 0, frames_lost = 0;
   std::uint64_t commands_accepted = 0, wrong_length = 0, unknown_source = 0, out_of_range = 0;
   std::uint64_t not_addressed = 0, engagements = 0, watchdog_trips = 0;
-  bool engaged = false;          ///< at the end of the run
-  int exit_reason_code = 0;      ///< the last exit reason (0 all clear)
-  std::string exit_reason;       ///< its name
+  bool engaged = false;                      ///< at the end of the run
+  int exit_reason_code = 0;                  ///< the last exit reason (0 all clear)
+  std::string exit_reason;                   ///< its name
   double commanded_steer_rms_error_deg = 0;  ///< actual − target road-wheel angle over the ticks
   /// slcan: the adapter's session
   std::uint64_t slcan_records = 0, slcan_refused = 0, slcan_frames_to_host = 0;
