@@ -173,7 +173,7 @@ void Scheduler::Serve(Time t_event, const TruthSample& truth, SchedulerMonitor& 
   // for
   if (pacer_ || !gate_) PollHosts(t_event, out);
   PollBus();
-  if (pacer_) RouteBusFrames(t_event, out);
+  if (pacer_ && set_.steering) RouteBusFrames(t_event, out);
 }
 
 void Scheduler::Run(SchedulerMonitor& monitor, const truth::TruthConfig* truth) {
@@ -244,6 +244,7 @@ void Scheduler::HostTurn(Time t) {
       if (!rx.empty()) arrivals_.push_back({t_rx, d, p, std::move(rx)});
     }
   }
+  if (!set_.steering) return;  // nothing listens to the bus: open-loop runs read it as before
   PollBus();
   DeviceOutput none;
   RouteBusFrames(t_rx, none);

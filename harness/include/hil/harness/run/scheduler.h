@@ -129,9 +129,10 @@ class Scheduler {
   void HostTurn(Time t);
   /// Virtual mode: host bytes reach their device, which may answer.
   void DeliverHostBytes(const HostBytes& h, DeviceOutput& out);
-  /// Closed loop on CAN: the frames others put on the bus since the last call reach every device
-  /// (Device::OnBusFrame): in virtual mode queued at a host turn's time `t_rx` (as host bytes
-  /// are), in real time delivered at once with their bus time (never before the last event).
+  /// Closed loop on CAN (a steering ECU in the set): the frames others put on the bus since the
+  /// last call reach every device (Device::OnBusFrame): in virtual mode queued at a host turn's
+  /// time `t_rx` (as host bytes are), in real time delivered at once with their bus time (never
+  /// before the last event).
   void RouteBusFrames(Time t_rx, DeviceOutput& out);
   void DeliverBusFrame(Time t, const CanFrame& frame, DeviceOutput& out);
 
