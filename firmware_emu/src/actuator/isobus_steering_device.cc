@@ -92,8 +92,11 @@ void IsobusSteeringDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) 
   Send(scratch_, out);
   distance_m_ += std::fabs(v) * ToSeconds(cfg_.grid);
   // the road wheels drive the truth from the next grid instant on (the first, at t = 0, from the
-  // start); the ECU's angle is positive right, the truth's left
-  const Time t_effect = t == Time{} ? t : t + Duration(1);
+  // start), stamped exactly on it: an instant between grid points (t + 1 ns) is applied one grid
+  // step apart by the truth integrated online and by its replay for the evaluation (the online
+  // truth and truth.csv then differ by centimetres after a turn). The ECU's angle is positive
+  // right, the truth's left.
+  const Time t_effect = t == Time{} ? t : t + cfg_.grid;
   pending_ = VehicleCommand{t_effect, cfg_.speed_mps, -ecu_.steer_angle_rad()};
   next_ = t + cfg_.grid;
 }

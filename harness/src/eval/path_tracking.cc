@@ -115,7 +115,10 @@ TrackingMetrics ScoreTracking(const std::vector<Eigen::Vector2d>& path,
   std::size_t from = 0;
   if (settle < track.size()) {
     // after an initial offset the figures are those of the settled vehicle
-    if (std::fabs(m.initial_cross_track_m) > settle_band_m) from = settle;
+    // (a path with turns leaves the band in every turn: its figures are those of the whole run)
+    bool turns = false;
+    for (const PathSpan& sp : spans) turns = turns || sp.turn;
+    if (std::fabs(m.initial_cross_track_m) > settle_band_m && !turns) from = settle;
     m.settling_time_s = ToSeconds(track[settle].t - track.front().t);
     m.settling_distance_m = feet[settle].s_m - feet.front().s_m;
   }

@@ -39,7 +39,8 @@ struct SegmentTracking {
 };
 
 struct TrackingMetrics {
-  /// The whole evaluated run; after an initial offset beyond the band, from settling on.
+  /// The whole evaluated run; after an initial offset beyond the band, from settling on (a path
+  /// with turns, which leaves the band in every turn: the whole run).
   XteStats all;
   std::optional<double> settling_distance_m, settling_time_s;
   double initial_cross_track_m = 0;
