@@ -5,7 +5,7 @@
 /// cross-track by interpolation onto the nearest edge (ISO 12188-2's lateral deviation, + = left
 /// of the direction of travel), heading error against the edge's direction, settling after the
 /// start (the first time |XTE| stays below `settle_band_m` for good), and figures per segment
-/// (each edge of the polyline; kind "straight").
+/// (each edge of the polyline, kind "straight", or the path file's rows and turns).
 
 #include <optional>
 #include <string>
@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 
 #include "hil/firmware_emu/sim_time.h"
+#include "hil/harness/eval/path_file_reader.h"
 
 namespace hil::harness {
 
@@ -38,19 +39,24 @@ struct SegmentTracking {
 };
 
 struct TrackingMetrics {
-  /// The whole evaluated run; after an initial offset beyond the band, from settling on.
+  /// The whole evaluated run; after an initial offset beyond the band, from settling on (a path
+  /// with turns, which leaves the band in every turn: the whole run).
   XteStats all;
   std::optional<double> settling_distance_m, settling_time_s;
   double initial_cross_track_m = 0;
   double settle_band_m = 0.05;
   double distance_travelled_m = 0;
   std::vector<SegmentTracking> segments;
+  /// The samples on straight segments (rows, AB lines, edges) and on turns, each together.
+  XteStats straight, turns;
   /// The series for the plots: along-path distance and signed XTE of every sample.
   std::vector<double> s_m, xte_m;
 };
 
-/// Scores `track` (time order) against the polyline `path`.
+/// Scores `track` (time order) against the polyline `path`. `spans` group its edges into
+/// segments (a boustrophedon's rows and turns); empty: each edge is a straight segment.
 TrackingMetrics ScoreTracking(const std::vector<Eigen::Vector2d>& path,
-                              const std::vector<TrackSample>& track, double settle_band_m = 0.05);
+                              const std::vector<TrackSample>& track, double settle_band_m = 0.05,
+                              const std::vector<PathSpan>& spans = {});
 
 }  // namespace hil::harness
