@@ -2,6 +2,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <numbers>
 
 #include "hil/harness/eval/cross_track.h"
 #include "hil/harness/eval/outage_metrics.h"
@@ -160,6 +161,18 @@ void EvaluateClosedLoop(RunContext& ctx, const TruthTable& truth) {
   report.closed_loop = c;
 }
 
+// Closed loop: the planned path and the base's control ticks, for the plots.
+void AddClosedLoopSeries(const RunContext& ctx, ReportSeries& series) {
+  series.path_en_m = ReadPathVertices(ctx.scenario.closed_loop.path_file);  // read at load
+  if (!ctx.set.base) return;
+  constexpr double kDeg = 180.0 / std::numbers::pi;
+  for (const actuator::BaseTickRecord& k : ctx.set.base->ticks()) {
+    series.tick_t_s.push_back(ToSeconds(k.t));
+    series.commanded_yaw_rate_dps.push_back(k.commanded_yaw_rate_radps * kDeg);
+    series.actual_yaw_rate_dps.push_back(k.yaw_rate_radps * kDeg);
+  }
+}
+
 }  // namespace
 
 RunEvaluation Evaluate(RunContext& ctx) {
@@ -201,6 +214,7 @@ void WriteRunFolder(RunContext& ctx, RunEvaluation& ev) {
   });
   Attempt(report, [&] { WriteScheduleErrors(ctx.set, dir + "/schedule_error.json"); });
   if (ctx.options.html) {
+    if (ctx.scenario.closed_loop.enabled) AddClosedLoopSeries(ctx, series);
     series.estimate_errors = std::move(ev.estimate_errors);
     series.fix_errors = std::move(ev.fix_errors);
     Attempt(report, [&] { WriteReportHtml(report, series, dir); });
