@@ -13,6 +13,7 @@
 #include "hil/harness/eval/path_tracking.h"
 #include "hil/harness/faults/fault_report.h"
 #include "hil/harness/links/can_bus_report.h"
+#include "hil/harness/report/closed_loop_faults_report.h"
 #include "hil/harness/scenario/scenario.h"
 
 namespace hil::harness {
@@ -40,7 +41,8 @@ struct ClosedLoopReport {
   /// Distance the truth vehicle went after the last command arrived, and after the watchdog.
   std::optional<double> distance_after_last_command_m, distance_after_watchdog_m;
   double final_speed_mps = 0;
-  bool stopped = false;  ///< final speed below 1 cm/s
+  bool stopped = false;           ///< final speed below 1 cm/s
+  ClosedLoopFaultsReport faults;  ///< what the actuator faults did
 };
 
 /// Everything report.json holds.
@@ -74,6 +76,8 @@ struct RunReport {
   std::optional<CanBusReport> can;          ///< the scenario's CAN bus (can_run.h), when it has one
   std::optional<TrackingMetrics> tracking;  ///< closed loop: the truth against the path
   std::optional<ClosedLoopReport> closed_loop;  ///< closed loop: controller and actuator
+  /// closed loop: each fault's effect on the path tracking (report.json `tracking.faults`)
+  std::vector<FaultPathDeviation> tracking_faults;
   bool pass() const;
 };
 
