@@ -64,6 +64,18 @@ XteStats Stats(const std::vector<double>& xte, const std::vector<double>& headin
 
 TrackingMetrics ScoreTracking(const std::vector<Eigen::Vector2d>& path,
                               const std::vector<TrackSample>& track, double settle_band_m) {
+  PathGeometry g;
+  g.vertices = path;
+  for (std::size_t e = 0; e + 1 < path.size(); ++e) {
+    g.edge_segment.push_back(static_cast<int>(e));
+    g.segment_is_turn.push_back(false);
+  }
+  return ScoreTracking(g, track, settle_band_m);
+}
+
+TrackingMetrics ScoreTracking(const PathGeometry& geometry, const std::vector<TrackSample>& track,
+                              double settle_band_m) {
+  const std::vector<Eigen::Vector2d>& path = geometry.vertices;
   TrackingMetrics m;
   m.settle_band_m = settle_band_m;
   if (path.size() < 2 || track.empty()) return m;
@@ -92,22 +104,30 @@ TrackingMetrics ScoreTracking(const std::vector<Eigen::Vector2d>& path,
     m.settling_distance_m = feet[settle].s_m - feet.front().s_m;
   }
   std::vector<double> xte, head;
-  std::vector<std::vector<double>> seg_xte(path.size() - 1), seg_head(path.size() - 1);
+  const std::size_t segments = geometry.segment_is_turn.size();
+  std::vector<std::vector<double>> seg_xte(segments), seg_head(segments);
   for (std::size_t i = from; i < track.size(); ++i) {
     if (track[i].speed_mps < 0.05) continue;  // a parked vehicle tracks nothing
     const double he = Wrap(feet[i].yaw_rad - track[i].yaw_rad);
     xte.push_back(feet[i].xte_m);
     head.push_back(he);
-    seg_xte[feet[i].edge].push_back(feet[i].xte_m);
-    seg_head[feet[i].edge].push_back(he);
+    const auto seg = static_cast<std::size_t>(geometry.edge_segment[feet[i].edge]);
+    seg_xte[seg].push_back(feet[i].xte_m);
+    seg_head[seg].push_back(he);
   }
   m.all = Stats(xte, head);
-  for (std::size_t e = 0; e + 1 < path.size(); ++e) {
+  for (std::size_t k = 0; k < segments; ++k) {
     SegmentTracking st;
-    st.index = static_cast<int>(e);
-    st.start_s_m = s0[e];
-    st.end_s_m = s0[e + 1];
-    st.stats = Stats(seg_xte[e], seg_head[e]);
+    st.index = static_cast<int>(k);
+    st.kind = geometry.segment_is_turn[k] ? "turn" : "straight";
+    bool any = false;
+    for (std::size_t e = 0; e + 1 < path.size(); ++e) {
+      if (static_cast<std::size_t>(geometry.edge_segment[e]) != k) continue;
+      if (!any) st.start_s_m = s0[e];
+      st.end_s_m = s0[e + 1];
+      any = true;
+    }
+    st.stats = Stats(seg_xte[k], seg_head[k]);
     m.segments.push_back(st);
   }
   return m;

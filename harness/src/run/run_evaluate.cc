@@ -162,7 +162,7 @@ ClosedLoopFaultsReport ActuatorFaults(const actuator::WheelMotors& motors, Fault
 // Closed loop: the truth against the planned path, and what the controller and the base did.
 void EvaluateClosedLoop(RunContext& ctx, const TruthTable& truth) {
   RunReport& report = ctx.report;
-  report.tracking = ScoreTracking(ReadPathVertices(ctx.scenario.closed_loop.path_file),
+  report.tracking = ScoreTracking(ReadPathGeometry(ctx.scenario.closed_loop.path_file),
                                   TruthTrack(ctx, truth, ctx.t_from));
   const std::vector<TrackSample> track = TruthTrack(ctx, truth, Time{});  // the whole run
   report.tracking_faults = ScoreFaultPathDeviations(

@@ -5,7 +5,7 @@
 /// cross-track by interpolation onto the nearest edge (ISO 12188-2's lateral deviation, + = left
 /// of the direction of travel), heading error against the edge's direction, settling after the
 /// start (the first time |XTE| stays below `settle_band_m` for good), and figures per segment
-/// (each edge of the polyline; kind "straight").
+/// (the path file's segments, path_file_reader.h: a row, a side, a headland turn, a corner).
 
 #include <optional>
 #include <string>
@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 
 #include "hil/firmware_emu/sim_time.h"
+#include "hil/harness/eval/path_file_reader.h"
 
 namespace hil::harness {
 
@@ -49,8 +50,11 @@ struct TrackingMetrics {
   std::vector<double> s_m, xte_m;
 };
 
-/// Scores `track` (time order) against the polyline `path`.
+/// Scores `track` (time order) against the polyline `path`, each edge its own straight segment.
 TrackingMetrics ScoreTracking(const std::vector<Eigen::Vector2d>& path,
                               const std::vector<TrackSample>& track, double settle_band_m = 0.05);
+/// The same with the path file's segments (rows, sides, turns: kind "straight" or "turn").
+TrackingMetrics ScoreTracking(const PathGeometry& path, const std::vector<TrackSample>& track,
+                              double settle_band_m = 0.05);
 
 }  // namespace hil::harness
