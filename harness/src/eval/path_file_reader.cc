@@ -54,7 +54,8 @@ class Fields {
  public:
   Fields(const std::string& file, const Line& l, std::initializer_list<const char*> known)
       : file_(file), l_(l) {
-    for (const auto& [key, value] : l.fields) {
+    for (const auto& field : l.fields) {
+      const std::string& key = field.first;
       if (std::none_of(known.begin(), known.end(), [&](const char* k) { return key == k; }))
         Fail(key, "not a field of '" + l.keyword + "'");
     }

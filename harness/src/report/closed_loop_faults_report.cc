@@ -11,13 +11,13 @@ nlohmann::json Opt(const std::optional<double>& v) {
 
 }  // namespace
 
-void AddClosedLoopFaultsJson(const ClosedLoopFaultsReport& r, nlohmann::json& j) {
-  j["saturated_time_s"] = r.saturated_time_s;
-  j["delayed_commands"] = r.delayed_commands;
-  j["added_latency_mean_s"] = Opt(r.added_latency_mean_s);
-  j["added_latency_max_s"] = Opt(r.added_latency_max_s);
-  j["stuck_time_s"] = r.stuck_time_s;
-  j["commands_not_followed"] = r.commands_not_followed;
+void AddClosedLoopFaultsJson(const ClosedLoopFaultsReport& r, nlohmann::json& closed_loop) {
+  closed_loop["saturated_time_s"] = r.saturated_time_s;
+  closed_loop["delayed_commands"] = r.delayed_commands;
+  closed_loop["added_latency_mean_s"] = Opt(r.added_latency_mean_s);
+  closed_loop["added_latency_max_s"] = Opt(r.added_latency_max_s);
+  closed_loop["stuck_time_s"] = r.stuck_time_s;
+  closed_loop["commands_not_followed"] = r.commands_not_followed;
 }
 
 nlohmann::json FaultPathDeviationsJson(const std::vector<FaultPathDeviation>& d) {
@@ -39,16 +39,16 @@ nlohmann::json FaultPathDeviationsJson(const std::vector<FaultPathDeviation>& d)
 
 void AddClosedLoopFaultsMetrics(const ClosedLoopFaultsReport& r,
                                 const std::vector<FaultPathDeviation>& d,
-                                std::map<std::string, std::optional<double>>& t) {
-  t["closed_loop.saturated_time_s"] = r.saturated_time_s;
-  t["closed_loop.stuck_time_s"] = r.stuck_time_s;
-  t["closed_loop.delayed_commands"] = static_cast<double>(r.delayed_commands);
-  t["closed_loop.added_latency_max_s"] = r.added_latency_max_s;
+                                std::map<std::string, std::optional<double>>& table) {
+  table["closed_loop.saturated_time_s"] = r.saturated_time_s;
+  table["closed_loop.stuck_time_s"] = r.stuck_time_s;
+  table["closed_loop.delayed_commands"] = static_cast<double>(r.delayed_commands);
+  table["closed_loop.added_latency_max_s"] = r.added_latency_max_s;
   std::optional<double> worst;
   for (const FaultPathDeviation& f : d) {
     if (f.max_deviation_m) worst = std::max(worst.value_or(0.0), *f.max_deviation_m);
   }
-  t["tracking.fault_deviation_max_m"] = worst;
+  table["tracking.fault_deviation_max_m"] = worst;
 }
 
 }  // namespace hil::harness

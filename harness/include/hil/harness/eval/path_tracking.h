@@ -54,7 +54,7 @@ struct TrackingMetrics {
 TrackingMetrics ScoreTracking(const std::vector<Eigen::Vector2d>& path,
                               const std::vector<TrackSample>& track, double settle_band_m = 0.05);
 /// The same with the path file's segments (rows, sides, turns: kind "straight" or "turn").
-TrackingMetrics ScoreTracking(const PathGeometry& path, const std::vector<TrackSample>& track,
+TrackingMetrics ScoreTracking(const PathGeometry& geometry, const std::vector<TrackSample>& track,
                               double settle_band_m = 0.05);
 
 }  // namespace hil::harness
