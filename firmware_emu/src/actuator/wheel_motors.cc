@@ -8,7 +8,8 @@
 
 namespace hil::actuator {
 
-WheelMotors::WheelMotors(const WheelMotorsConfig& config) : cfg_(config) {
+WheelMotors::WheelMotors(const WheelMotorsConfig& config)
+    : cfg_(config), faults_(cfg_.faults, cfg_.fault_seed) {
   speed_radps_ = {cfg_.initial_wheel_speed_radps, cfg_.initial_wheel_speed_radps};
   target_radps_ = speed_radps_;
 }
@@ -19,14 +20,19 @@ void WheelMotors::Command(Time t, double left_radps, double right_radps) {
   last_command_ = t;
   ever_commanded_ = true;
   tripped_ = false;
-  const double m = cfg_.max_wheel_speed_radps;
-  if (std::fabs(left_radps) > m || std::fabs(right_radps) > m) ++counters_.saturated_commands;
+  const double m = faults_.SpeedLimit(t, cfg_.max_wheel_speed_radps);
+  const bool beyond = std::fabs(left_radps) > m || std::fabs(right_radps) > m;
+  if (beyond) ++counters_.saturated_commands;
+  if (!faults_.empty()) faults_.NoteCommand(t, beyond);
+  const Duration added = faults_.empty() ? Duration{} : faults_.AddedLatency(t, counters_.commands);
   if (queue_size_ == static_cast<int>(queue_.size())) {
     ++counters_.queue_overflow;
     return;
   }
-  queue_[(queue_head_ + queue_size_) % queue_.size()] = Pending{
-      t + cfg_.command_latency, {std::clamp(left_radps, -m, m), std::clamp(right_radps, -m, m)}};
+  // the limit applies as the wheels turn (Integrate); the line delivers in order
+  last_effect_ = std::max(t + cfg_.command_latency + added, last_effect_);
+  queue_[(queue_head_ + queue_size_) % queue_.size()] =
+      Pending{last_effect_, {left_radps, right_radps}};
   ++queue_size_;
 }
 
@@ -35,6 +41,7 @@ void WheelMotors::AdvanceTo(Time t) {
     Time next = t;
     if (queue_size_ > 0) next = std::min(next, queue_[queue_head_].t_effect);
     const Time deadline = last_command_ + cfg_.command_timeout;
+    if (!faults_.empty()) next = std::min(next, faults_.NextBoundaryAfter(now_));
     const bool watchdog_due = ever_commanded_ && !tripped_ && deadline <= next;
     if (watchdog_due) next = deadline;
     if (next > now_) {
@@ -60,12 +67,23 @@ void WheelMotors::AdvanceTo(Time t) {
 }
 
 void WheelMotors::Integrate(double dt_s) {
+  const double m = faults_.SpeedLimit(now_, cfg_.max_wheel_speed_radps);
+  const bool stuck = faults_.Stuck(now_);  // the drive holds its output
+  bool clamped = false;
   for (int w = 0; w < 2; ++w) {
-    const LagStep s = AdvanceFirstOrderRateLimited(
-        speed_radps_[w], target_radps_[w], cfg_.time_constant_s, cfg_.max_wheel_accel_radps2, dt_s);
+    const double target = std::clamp(target_radps_[w], -m, m);
+    clamped = clamped || target != target_radps_[w];
+    if (stuck) {
+      angle_rad_[w] += speed_radps_[w] * dt_s;
+      continue;
+    }
+    const LagStep s = AdvanceFirstOrderRateLimited(speed_radps_[w], target, cfg_.time_constant_s,
+                                                   cfg_.max_wheel_accel_radps2, dt_s);
     speed_radps_[w] = s.x;
     angle_rad_[w] += s.integral;
   }
+  if (clamped) counters_.saturated_s += dt_s;
+  if (!faults_.empty()) faults_.NoteInterval(now_, dt_s, clamped);
 }
 
 void WheelMotors::ResetEncoders() { angle_rad_ = {0.0, 0.0}; }

@@ -60,38 +60,22 @@ XteStats Stats(const std::vector<double>& xte, const std::vector<double>& headin
   return s;
 }
 
-// Per segment: the samples of its edges together (each edge alone without spans).
-std::vector<SegmentTracking> SegmentFigures(const std::vector<double>& s0,
-                                            const std::vector<std::vector<double>>& seg_xte,
-                                            const std::vector<std::vector<double>>& seg_head,
-                                            std::vector<PathSpan> spans) {
-  if (spans.empty()) {
-    for (std::size_t e = 0; e < seg_xte.size(); ++e) spans.push_back({e, e + 1, false});
-  }
-  std::vector<SegmentTracking> out;
-  for (std::size_t k = 0; k < spans.size(); ++k) {
-    const PathSpan& sp = spans[k];
-    std::vector<double> xte, head;
-    for (std::size_t e = sp.first_edge; e < sp.end_edge && e < seg_xte.size(); ++e) {
-      xte.insert(xte.end(), seg_xte[e].begin(), seg_xte[e].end());
-      head.insert(head.end(), seg_head[e].begin(), seg_head[e].end());
-    }
-    SegmentTracking st;
-    st.index = static_cast<int>(k);
-    st.kind = sp.turn ? "turn" : "straight";
-    st.start_s_m = s0[std::min(sp.first_edge, s0.size() - 1)];
-    st.end_s_m = s0[std::min(sp.end_edge, s0.size() - 1)];
-    st.stats = Stats(xte, head);
-    out.push_back(st);
-  }
-  return out;
-}
-
 }  // namespace
 
 TrackingMetrics ScoreTracking(const std::vector<Eigen::Vector2d>& path,
-                              const std::vector<TrackSample>& track, double settle_band_m,
-                              const std::vector<PathSpan>& spans) {
+                              const std::vector<TrackSample>& track, double settle_band_m) {
+  PathGeometry g;
+  g.vertices = path;
+  for (std::size_t e = 0; e + 1 < path.size(); ++e) {
+    g.edge_segment.push_back(static_cast<int>(e));
+    g.segment_is_turn.push_back(false);
+  }
+  return ScoreTracking(g, track, settle_band_m);
+}
+
+TrackingMetrics ScoreTracking(const PathGeometry& geometry, const std::vector<TrackSample>& track,
+                              double settle_band_m) {
+  const std::vector<Eigen::Vector2d>& path = geometry.vertices;
   TrackingMetrics m;
   m.settle_band_m = settle_band_m;
   if (path.size() < 2 || track.empty()) return m;
@@ -114,33 +98,44 @@ TrackingMetrics ScoreTracking(const std::vector<Eigen::Vector2d>& path,
   }
   std::size_t from = 0;
   if (settle < track.size()) {
-    // after an initial offset the figures are those of the settled vehicle
-    // (a path with turns leaves the band in every turn: its figures are those of the whole run)
-    bool turns = false;
-    for (const PathSpan& sp : spans) turns = turns || sp.turn;
+    // after an initial offset the figures are those of the settled vehicle (a path with turns
+    // leaves the band in every turn: its figures are those of the whole run)
+    const bool turns = std::find(geometry.segment_is_turn.begin(), geometry.segment_is_turn.end(),
+                                 true) != geometry.segment_is_turn.end();
     if (std::fabs(m.initial_cross_track_m) > settle_band_m && !turns) from = settle;
     m.settling_time_s = ToSeconds(track[settle].t - track.front().t);
     m.settling_distance_m = feet[settle].s_m - feet.front().s_m;
   }
   std::vector<double> xte, head;
-  std::vector<std::vector<double>> seg_xte(path.size() - 1), seg_head(path.size() - 1);
+  const std::size_t segments = geometry.segment_is_turn.size();
+  std::vector<std::vector<double>> seg_xte(segments), seg_head(segments);
   for (std::size_t i = from; i < track.size(); ++i) {
     if (track[i].speed_mps < 0.05) continue;  // a parked vehicle tracks nothing
     const double he = Wrap(feet[i].yaw_rad - track[i].yaw_rad);
     xte.push_back(feet[i].xte_m);
     head.push_back(he);
-    seg_xte[feet[i].edge].push_back(feet[i].xte_m);
-    seg_head[feet[i].edge].push_back(he);
+    const auto seg = static_cast<std::size_t>(geometry.edge_segment[feet[i].edge]);
+    seg_xte[seg].push_back(feet[i].xte_m);
+    seg_head[seg].push_back(he);
   }
   m.all = Stats(xte, head);
-  m.segments = SegmentFigures(s0, seg_xte, seg_head, spans);
   std::vector<double> kind_xte[2], kind_head[2];  // straight, turn
-  for (std::size_t e = 0; e < seg_xte.size(); ++e) {
-    bool turn = false;
-    for (const PathSpan& sp : spans)
-      turn = turn || (sp.turn && e >= sp.first_edge && e < sp.end_edge);
-    kind_xte[turn].insert(kind_xte[turn].end(), seg_xte[e].begin(), seg_xte[e].end());
-    kind_head[turn].insert(kind_head[turn].end(), seg_head[e].begin(), seg_head[e].end());
+  for (std::size_t k = 0; k < segments; ++k) {
+    SegmentTracking st;
+    st.index = static_cast<int>(k);
+    st.kind = geometry.segment_is_turn[k] ? "turn" : "straight";
+    bool any = false;
+    for (std::size_t e = 0; e + 1 < path.size(); ++e) {
+      if (static_cast<std::size_t>(geometry.edge_segment[e]) != k) continue;
+      if (!any) st.start_s_m = s0[e];
+      st.end_s_m = s0[e + 1];
+      any = true;
+    }
+    st.stats = Stats(seg_xte[k], seg_head[k]);
+    m.segments.push_back(st);
+    const bool turn = geometry.segment_is_turn[k];
+    kind_xte[turn].insert(kind_xte[turn].end(), seg_xte[k].begin(), seg_xte[k].end());
+    kind_head[turn].insert(kind_head[turn].end(), seg_head[k].begin(), seg_head[k].end());
   }
   m.straight = Stats(kind_xte[0], kind_head[0]);
   m.turns = Stats(kind_xte[1], kind_head[1]);

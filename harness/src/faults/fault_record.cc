@@ -30,6 +30,12 @@ const char* FaultUnit(FaultKind kind) {
       return "controller processes killed";
     case FaultKind::kCommandLinkLoss:
       return "command bytes lost";
+    case FaultKind::kCommandLatency:
+      return "commands delayed";
+    case FaultKind::kActuatorSaturation:
+      return "commands beyond the limit";
+    case FaultKind::kActuatorStuck:
+      return "commands not followed (output held)";
   }
   return "?";
 }

@@ -45,6 +45,17 @@ const std::vector<KindSpec>& Kinds() {
       {FaultKind::kGnssOverload, "gnss_overload", false, false, {}},
       {FaultKind::kControllerStop, "controller_stop", true, false, {}},
       {FaultKind::kCommandLinkLoss, "command_link_loss", false, false, {}},
+      {FaultKind::kCommandLatency,
+       "command_latency",
+       false,
+       false,
+       {{"latency_s", 0, 1, 0.1}, {"jitter_s", 0, 0.5, 0}}},
+      {FaultKind::kActuatorSaturation,
+       "actuator_saturation",
+       false,
+       false,
+       {{"max_wheel_speed_radps", 0, 500, 4}}},
+      {FaultKind::kActuatorStuck, "actuator_stuck", false, false, {}},
   };
   return kinds;
 }

@@ -138,6 +138,7 @@ MetricTable RunMetricTable(const RunReport& r) {
     t["closed_loop.watchdog_trips"] = static_cast<double>(r.closed_loop->watchdog_trips);
     t["closed_loop.final_speed_mps"] = r.closed_loop->final_speed_mps;
     t["closed_loop.distance_after_last_command_m"] = r.closed_loop->distance_after_last_command_m;
+    AddClosedLoopFaultsMetrics(r.closed_loop->faults, r.tracking_faults, t);
   }
   t["output_rate_hz"] =
       r.metrics.samples >= 2 ? std::optional<double>(r.output_rate_hz) : std::nullopt;
@@ -240,22 +241,25 @@ nlohmann::json TrackingJson(const TrackingMetrics& m) {
 }
 
 nlohmann::json ClosedLoopJson(const ClosedLoopReport& c) {
-  return {{"controller_command", c.controller_command},
-          {"controller_exit", c.controller_exit},
-          {"control_ticks", c.control_ticks},
-          {"missing_commands", c.missing_commands},
-          {"first_missing_s", OptionalJson(c.first_missing_s)},
-          {"motor_commands", c.motor_commands},
-          {"saturated_commands", c.saturated_commands},
-          {"invalid_lines", c.invalid_lines},
-          {"command_bytes_lost", c.command_bytes_lost},
-          {"last_command_s", OptionalJson(c.last_command_s)},
-          {"watchdog_trips", c.watchdog_trips},
-          {"watchdog_trip_s", OptionalJson(c.watchdog_trip_s)},
-          {"distance_after_last_command_m", OptionalJson(c.distance_after_last_command_m)},
-          {"distance_after_watchdog_m", OptionalJson(c.distance_after_watchdog_m)},
-          {"final_speed_mps", c.final_speed_mps},
-          {"stopped", c.stopped}};
+  nlohmann::json j = {
+      {"controller_command", c.controller_command},
+      {"controller_exit", c.controller_exit},
+      {"control_ticks", c.control_ticks},
+      {"missing_commands", c.missing_commands},
+      {"first_missing_s", OptionalJson(c.first_missing_s)},
+      {"motor_commands", c.motor_commands},
+      {"saturated_commands", c.saturated_commands},
+      {"invalid_lines", c.invalid_lines},
+      {"command_bytes_lost", c.command_bytes_lost},
+      {"last_command_s", OptionalJson(c.last_command_s)},
+      {"watchdog_trips", c.watchdog_trips},
+      {"watchdog_trip_s", OptionalJson(c.watchdog_trip_s)},
+      {"distance_after_last_command_m", OptionalJson(c.distance_after_last_command_m)},
+      {"distance_after_watchdog_m", OptionalJson(c.distance_after_watchdog_m)},
+      {"final_speed_mps", c.final_speed_mps},
+      {"stopped", c.stopped}};
+  AddClosedLoopFaultsJson(c.faults, j);
+  return j;
 }
 
 }  // namespace
@@ -320,7 +324,10 @@ void WriteReportJson(const RunReport& r, const std::string& path) {
   j["sim_time_s"] = r.sim_time_s;
   j["links"] = {{"gnss_bytes", r.gnss_bytes}, {"gnss_messages_dropped", r.gnss_messages_dropped}};
   if (r.can) j["can"] = CanBusJson(*r.can);
-  if (r.tracking) j["tracking"] = TrackingJson(*r.tracking);
+  if (r.tracking) {
+    j["tracking"] = TrackingJson(*r.tracking);
+    j["tracking"]["faults"] = FaultPathDeviationsJson(r.tracking_faults);
+  }
   if (r.closed_loop) {
     j["closed_loop"] = ClosedLoopJson(*r.closed_loop);
     if (r.closed_loop->steering_ecu)

@@ -133,6 +133,7 @@ std::vector<std::string> WritePlots(const RunReport& r, const ReportSeries& s,
     WriteFile(dir + "/plots/latency_histogram.svg", RenderSvg(c));
     files.push_back("plots/latency_histogram.svg");
   }
+  if (r.tracking) WriteClosedLoopPlots(r, s, dir, files);
   return files;
 }
 

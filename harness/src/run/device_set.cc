@@ -19,7 +19,8 @@ enum SeedStream : std::uint64_t {
   kUwbStream = 3,
   kWitStream = 4,
   kRangefinderStream = 5,
-  kLidarStream = 6
+  kLidarStream = 6,
+  kBaseStream = 7
 };
 constexpr std::uint64_t kUnitStride = 104729;        // each rangefinder unit's own stream
 constexpr std::uint64_t kGnssCommonOffset = 0x5151;  // the error part shared by all receivers
@@ -134,12 +135,41 @@ void AddRangeSensors(const Scenario& s, std::uint64_t seed, const std::string& d
   }
 }
 
+// Closed loop: the wheel-motor faults of the scenario's fault timeline (wheel_motor_faults.h).
+std::vector<actuator::WheelMotorFault> WheelMotorFaultsOf(const FaultTimeline& timeline) {
+  using K = actuator::WheelMotorFault::Kind;
+  std::vector<actuator::WheelMotorFault> out;
+  for (std::size_t i = 0; i < timeline.faults.size(); ++i) {
+    const Fault& f = timeline.faults[i];
+    actuator::WheelMotorFault w;
+    if (f.kind == FaultKind::kCommandLatency) {
+      w.kind = K::kCommandLatency;
+      w.latency = DurationFromSeconds(f.Param("latency_s", 0));
+      w.jitter = DurationFromSeconds(f.Param("jitter_s", 0));
+    } else if (f.kind == FaultKind::kActuatorSaturation) {
+      w.kind = K::kSaturation;
+      w.max_wheel_speed_radps = f.Param("max_wheel_speed_radps", 0);
+    } else if (f.kind == FaultKind::kActuatorStuck) {
+      w.kind = K::kStuck;
+    } else {
+      continue;
+    }
+    w.start = f.start;
+    w.end = f.end;
+    w.timeline_index = i;
+    out.push_back(w);
+  }
+  return out;
+}
+
 // Closed loop: the differential-drive base on its serial link (RUN_DIR/<link>, e.g. ttyBASE).
-void AddBase(const Scenario& s, const std::string& dir, DeviceSet& set) {
+void AddBase(const Scenario& s, std::uint64_t seed, const std::string& dir, DeviceSet& set) {
   const ClosedLoopSpec& c = s.closed_loop;
   if (!c.enabled || c.channel != ClosedLoopSpec::Channel::kSerialBase) return;
   actuator::BaseSerialDeviceConfig cfg;
   cfg.motors = c.motors;
+  cfg.motors.faults = WheelMotorFaultsOf(s.faults);
+  cfg.motors.fault_seed = seed * kSeedStride + kBaseStream;
   cfg.serial.pid_rate_hz = c.pid_rate_hz;
   cfg.control_period = DurationFromSeconds(c.control_period_s);
   cfg.command_timeout = DurationFromSeconds(c.command_timeout_s);
@@ -165,7 +195,7 @@ DeviceSet BuildDevices(const Scenario& scenario, std::uint64_t seed, const std::
   AddPaper003Devices(scenario, seed * kSeedStride + kUwbStream, seed * kSeedStride + kWitStream,
                      run_dir, set);
   AddRangeSensors(scenario, seed, run_dir, set);
-  AddBase(scenario, run_dir, set);
+  AddBase(scenario, seed, run_dir, set);
   AddIsobusSteering(scenario, run_dir, set);
   return set;
 }

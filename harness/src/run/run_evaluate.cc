@@ -1,9 +1,12 @@
 // Phases 4 and 5 of a run: the evaluation against the truth, and the run folder's files.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <numbers>
 
 #include "hil/harness/eval/cross_track.h"
+#include "hil/harness/eval/fault_path_deviation.h"
 #include "hil/harness/eval/outage_metrics.h"
 #include "hil/harness/eval/path_file_reader.h"
 #include "hil/harness/eval/path_tracking.h"
@@ -126,13 +129,45 @@ std::optional<double> DistanceAfter(const std::vector<TrackSample>& track,
   return d;
 }
 
+// Closed loop: what the wheel motors' faults did; each fault's count goes to its injection record.
+ClosedLoopFaultsReport ActuatorFaults(const actuator::WheelMotors& motors, FaultRecorder& rec) {
+  ClosedLoopFaultsReport r;
+  r.saturated_time_s = motors.counters().saturated_s;
+  Duration total{}, max{};
+  const auto& faults = motors.faults().faults();
+  for (std::size_t i = 0; i < faults.size(); ++i) {
+    const actuator::WheelMotorFaultCounters& k = motors.faults().counters()[i];
+    rec.Note(faults[i].timeline_index, faults[i].start, k.events);
+    switch (faults[i].kind) {
+      case actuator::WheelMotorFault::Kind::kCommandLatency:
+        r.delayed_commands += k.events;
+        total += k.added_latency_total;
+        max = std::max(max, k.added_latency_max);
+        break;
+      case actuator::WheelMotorFault::Kind::kSaturation:
+        break;
+      case actuator::WheelMotorFault::Kind::kStuck:
+        r.stuck_time_s += k.held_s;
+        r.commands_not_followed += k.events;
+        break;
+    }
+  }
+  if (r.delayed_commands > 0) {
+    r.added_latency_mean_s = ToSeconds(total) / static_cast<double>(r.delayed_commands);
+    r.added_latency_max_s = ToSeconds(max);
+  }
+  return r;
+}
+
 // Closed loop: the truth against the planned path, and what the controller and the base did.
 void EvaluateClosedLoop(RunContext& ctx, const TruthTable& truth) {
   RunReport& report = ctx.report;
-  const PathFileShape path = ReadPathFile(ctx.scenario.closed_loop.path_file);
-  report.tracking =
-      ScoreTracking(path.vertices, TruthTrack(ctx, truth, ctx.t_from), 0.05, path.spans);
+  report.tracking = ScoreTracking(ReadPathGeometry(ctx.scenario.closed_loop.path_file),
+                                  TruthTrack(ctx, truth, ctx.t_from));
   const std::vector<TrackSample> track = TruthTrack(ctx, truth, Time{});  // the whole run
+  report.tracking_faults = ScoreFaultPathDeviations(
+      PlannedPath(ReadPathVertices(ctx.scenario.closed_loop.path_file)), track, ctx.scenario.faults,
+      DurationFromSeconds(ctx.scenario.closed_loop.fault_window_s));
   ClosedLoopReport c;
   c.controller_command = report.controller_command;
   if (ctx.controller) {
@@ -155,6 +190,7 @@ void EvaluateClosedLoop(RunContext& ctx, const TruthTable& truth) {
     c.distance_after_last_command_m = DistanceAfter(track, k.last_command);
     if (m.watchdog_trips > 0)
       c.distance_after_watchdog_m = DistanceAfter(track, m.last_watchdog_trip);
+    c.faults = ActuatorFaults(base->motors(), ctx.fault_recorder);
   }
   if (const actuator::IsobusSteeringDevice* ecu = ctx.set.steering) {
     const auto& k = ecu->counters();
@@ -176,6 +212,18 @@ void EvaluateClosedLoop(RunContext& ctx, const TruthTable& truth) {
   if (!track.empty()) c.final_speed_mps = track.back().speed_mps;
   c.stopped = std::fabs(c.final_speed_mps) < 0.01;
   report.closed_loop = c;
+}
+
+// Closed loop: the planned path and the base's control ticks, for the plots.
+void AddClosedLoopSeries(const RunContext& ctx, ReportSeries& series) {
+  series.path_en_m = ReadPathVertices(ctx.scenario.closed_loop.path_file);  // read at load
+  if (!ctx.set.base) return;
+  constexpr double kDeg = 180.0 / std::numbers::pi;
+  for (const actuator::BaseTickRecord& k : ctx.set.base->ticks()) {
+    series.tick_t_s.push_back(ToSeconds(k.t));
+    series.commanded_yaw_rate_dps.push_back(k.commanded_yaw_rate_radps * kDeg);
+    series.actual_yaw_rate_dps.push_back(k.yaw_rate_radps * kDeg);
+  }
 }
 
 }  // namespace
@@ -219,6 +267,7 @@ void WriteRunFolder(RunContext& ctx, RunEvaluation& ev) {
   });
   Attempt(report, [&] { WriteScheduleErrors(ctx.set, dir + "/schedule_error.json"); });
   if (ctx.options.html) {
+    if (ctx.scenario.closed_loop.enabled) AddClosedLoopSeries(ctx, series);
     series.estimate_errors = std::move(ev.estimate_errors);
     series.fix_errors = std::move(ev.fix_errors);
     Attempt(report, [&] { WriteReportHtml(report, series, dir); });

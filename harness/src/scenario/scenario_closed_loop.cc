@@ -37,16 +37,35 @@ void ReadActuator(const YamlReader& r, ClosedLoopSpec& c) {
   c.pid_rate_hz = r.DoubleIn("pid_rate_hz", c.pid_rate_hz, 1, 1000);
 }
 
+// A closed-loop fault in a scenario without a closed_loop section would do nothing: refused.
+void RefuseClosedLoopFaults(const YamlReader& root) {
+  const std::optional<YamlReader> faults = root.OptionalChild("faults");
+  if (!faults) return;
+  for (const YamlReader& e : faults->Elements()) {
+    if (!e.IsMap() || !e.Has("kind")) continue;  // the fault reader names these
+    const std::string kind = e.String("kind");
+    for (const char* k : {"controller_stop", "command_link_loss", "command_latency",
+                          "actuator_saturation", "actuator_stuck"}) {
+      if (kind == k)
+        e.Fail("kind", kind + " acts on a closed loop: the scenario has no closed_loop");
+    }
+  }
+}
+
 }  // namespace
 
 const std::vector<std::string> kClosedLoopSectionKeys{"closed_loop"};
 
 void ReadClosedLoopSection(const YamlReader& root, Scenario& s) {
   const std::optional<YamlReader> r = root.OptionalChild("closed_loop");
-  if (!r) return;
+  if (!r) {
+    RefuseClosedLoopFaults(root);
+    return;
+  }
   r->CheckKeys({"channel", "link", "path_file", "controller", "control_period_s",
                 "command_timeout_s", "first_command_due_s", "start_enu_m", "start_heading_deg",
-                "initial_speed_mps", "actuator", "transport", "speed_mps", "slcan_baud"});
+                "initial_speed_mps", "actuator", "transport", "speed_mps", "slcan_baud",
+                "fault_window_s"});
   ClosedLoopSpec& c = s.closed_loop;
   c.enabled = true;
   c.channel = r->Choice("channel", ClosedLoopSpec::Channel::kSerialBase, kChannels);
@@ -73,6 +92,7 @@ void ReadClosedLoopSection(const YamlReader& root, Scenario& s) {
   c.control_period_s = r->DoubleIn("control_period_s", c.control_period_s, 0.01, 10);
   c.command_timeout_s = r->DoubleIn("command_timeout_s", c.command_timeout_s, 0.01, 60);
   c.first_command_due_s = r->DoubleIn("first_command_due_s", c.first_command_due_s, 0, 600);
+  c.fault_window_s = r->DoubleIn("fault_window_s", c.fault_window_s, 0, 3600);
   const std::vector<double> p = r->Doubles("start_enu_m", 2, {0, 0});
   c.start_p_N_m = {p[0], p[1]};
   c.start_heading_deg = r->DoubleIn("start_heading_deg", 0, -360, 360);

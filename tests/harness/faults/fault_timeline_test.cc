@@ -1,5 +1,7 @@
 #include "hil/harness/faults/fault_timeline.h"
 
+#include <cstdlib>
+
 #include <gtest/gtest.h>
 
 #include "hil/harness/faults/byte_faults.h"
@@ -70,6 +72,58 @@ TEST(FaultTimelineTest, ErrorsNameLineAndField) {
               "faults[0].link", "unknown key");
   ExpectError("faults:\n  - {kind: gnss_outage, end_s: 2}\n", 5, "faults[0]", "start_s");
   ExpectError("faults:\n  - {kind: gnss_outage, start_s: 1}\n", 5, "faults[0]", "end_s");
+}
+
+// A closed-loop scenario around `faults` (its faults list starts on line 9).
+std::string ClosedLoop(const std::string& faults) {
+  const char* src = std::getenv("HIL_SOURCE_DIR");
+  return std::string(kBase) +
+         "vehicle: {model: diff_drive}\nclosed_loop:\n  path_file: " + (src ? src : "..") +
+         "/vectors/paths/ab_line_east_300m.path\n  controller: x\n" + faults;
+}
+
+void ExpectClosedLoopError(const std::string& faults, const std::string& field,
+                           const std::string& fragment) {
+  try {
+    ParseScenario(ClosedLoop(faults), "s.yaml");
+    FAIL() << "expected a ScenarioError for:\n" << faults;
+  } catch (const ScenarioError& e) {
+    EXPECT_EQ(e.line(), 9) << e.what();
+    EXPECT_EQ(e.field(), field) << e.what();
+    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+  }
+}
+
+TEST(FaultTimelineTest, ClosedLoopActuatorFaultsAndTheirErrors) {
+  const Scenario s = ParseScenario(
+      ClosedLoop(
+          "faults:\n"
+          "  - {kind: command_latency, start_s: 10, end_s: 40, latency_s: 0.15, jitter_s: 0.1}\n"
+          "  - {kind: actuator_saturation, start_s: 20, end_s: 30, max_wheel_speed_radps: 4}\n"
+          "  - {kind: actuator_stuck, start_s: 20, end_s: 23}\n"),
+      "s.yaml");
+  ASSERT_EQ(s.faults.faults.size(), 3u);
+  EXPECT_EQ(s.faults.faults[0].kind, FaultKind::kCommandLatency);
+  EXPECT_DOUBLE_EQ(s.faults.faults[0].Param("latency_s", 0), 0.15);
+  EXPECT_DOUBLE_EQ(s.faults.faults[0].Param("jitter_s", 0), 0.1);
+  EXPECT_DOUBLE_EQ(s.faults.faults[1].Param("max_wheel_speed_radps", 0), 4.0);
+  EXPECT_EQ(s.faults.faults[2].kind, FaultKind::kActuatorStuck);
+  EXPECT_DOUBLE_EQ(ToSeconds(s.faults.faults[2].end), 23.0);
+  ExpectClosedLoopError(
+      "faults:\n  - {kind: command_latency, start_s: 1, end_s: 2, latency_s: 3}\n",
+      "faults[0].latency_s", "out of range");
+  ExpectClosedLoopError(
+      "faults:\n  - {kind: command_latency, start_s: 1, end_s: 2, jitter_s: -1}\n",
+      "faults[0].jitter_s", "out of range");
+  ExpectClosedLoopError(
+      "faults:\n  - {kind: actuator_saturation, start_s: 1, end_s: 2, max_speed: 3}\n",
+      "faults[0].max_speed", "unknown key");
+  ExpectClosedLoopError("faults:\n  - {kind: actuator_stuck, start_s: 3}\n", "faults[0]", "end_s");
+  ExpectClosedLoopError("faults:\n  - {kind: actuator_stuck, start_s: 3, end_s: 2}\n",
+                        "faults[0].end_s", "must be after");
+  // without a closed_loop section they would do nothing: refused
+  ExpectError("faults:\n  - {kind: actuator_stuck, start_s: 3, end_s: 4}\n", 5, "faults[0].kind",
+              "no closed_loop");
 }
 
 SerialMessage Msg(double t_s, const std::string& bytes) {

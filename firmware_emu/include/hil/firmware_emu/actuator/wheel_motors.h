@@ -10,7 +10,9 @@
 
 #include <array>
 #include <cstdint>
+#include <vector>
 
+#include "hil/firmware_emu/actuator/wheel_motor_faults.h"
 #include "hil/firmware_emu/sim_time.h"
 
 namespace hil::actuator {
@@ -31,11 +33,15 @@ struct WheelMotorsConfig {
   /// Both wheels turn at this speed at t = 0 (a base already rolling when the run starts); the
   /// watchdog counts from the first command.
   double initial_wheel_speed_radps = 0.0;
+  /// Scripted faults (wheel_motor_faults.h): latency and jitter, saturation, a stuck drive.
+  std::vector<WheelMotorFault> faults;
+  std::uint64_t fault_seed = 0;  ///< the jitter's draws
 };
 
 struct WheelMotorsCounters {
   std::uint64_t commands = 0;
-  std::uint64_t saturated_commands = 0;  ///< clamped to ± max_wheel_speed_radps
+  std::uint64_t saturated_commands = 0;  ///< beyond ± the speed limit at their arrival
+  double saturated_s = 0;  ///< time a wheel's target was beyond the speed limit (clamped)
   std::uint64_t queue_overflow = 0;
   std::uint64_t watchdog_trips = 0;
   Time last_watchdog_trip{};  ///< valid when watchdog_trips > 0
@@ -54,7 +60,8 @@ class WheelMotors {
 
   Time now() const { return now_; }
   double wheel_speed_radps(int wheel) const { return speed_radps_[wheel]; }
-  /// The speed the wheel's loop steers to now (the latest command in effect; 0 after a trip).
+  /// The speed last commanded for the wheel, in effect now (0 after a trip); the loop steers to
+  /// it clamped to the speed limit.
   double target_speed_radps(int wheel) const { return target_radps_[wheel]; }
   double ground_speed_mps(int wheel) const;
   /// Forward speed (m/s) and yaw rate (rad/s, positive = left) of the midpoint of the axle.
@@ -64,6 +71,7 @@ class WheelMotors {
   bool stopped_by_watchdog() const { return tripped_; }
   const WheelMotorsCounters& counters() const { return counters_; }
   const WheelMotorsConfig& config() const { return cfg_; }
+  const WheelMotorFaults& faults() const { return faults_; }
 
  private:
   struct Pending {
@@ -83,7 +91,9 @@ class WheelMotors {
   std::array<Pending, 16> queue_{};
   int queue_head_ = 0;
   int queue_size_ = 0;
+  Time last_effect_{};  ///< of the latest command queued (the line keeps its order)
   WheelMotorsCounters counters_;
+  WheelMotorFaults faults_;
 };
 
 }  // namespace hil::actuator

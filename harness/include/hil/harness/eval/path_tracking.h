@@ -5,7 +5,7 @@
 /// cross-track by interpolation onto the nearest edge (ISO 12188-2's lateral deviation, + = left
 /// of the direction of travel), heading error against the edge's direction, settling after the
 /// start (the first time |XTE| stays below `settle_band_m` for good), and figures per segment
-/// (each edge of the polyline, kind "straight", or the path file's rows and turns).
+/// (the path file's segments, path_file_reader.h: a row, a side, a headland turn, a corner).
 
 #include <optional>
 #include <string>
@@ -39,24 +39,24 @@ struct SegmentTracking {
 };
 
 struct TrackingMetrics {
-  /// The whole evaluated run; after an initial offset beyond the band, from settling on (a path
-  /// with turns, which leaves the band in every turn: the whole run).
+  /// The whole evaluated run; after an initial offset beyond the band, from settling on.
   XteStats all;
   std::optional<double> settling_distance_m, settling_time_s;
   double initial_cross_track_m = 0;
   double settle_band_m = 0.05;
   double distance_travelled_m = 0;
   std::vector<SegmentTracking> segments;
-  /// The samples on straight segments (rows, AB lines, edges) and on turns, each together.
+  /// The samples on straight segments (rows, AB lines, sides) and on turns, each together.
   XteStats straight, turns;
   /// The series for the plots: along-path distance and signed XTE of every sample.
   std::vector<double> s_m, xte_m;
 };
 
-/// Scores `track` (time order) against the polyline `path`. `spans` group its edges into
-/// segments (a boustrophedon's rows and turns); empty: each edge is a straight segment.
+/// Scores `track` (time order) against the polyline `path`, each edge its own straight segment.
 TrackingMetrics ScoreTracking(const std::vector<Eigen::Vector2d>& path,
-                              const std::vector<TrackSample>& track, double settle_band_m = 0.05,
-                              const std::vector<PathSpan>& spans = {});
+                              const std::vector<TrackSample>& track, double settle_band_m = 0.05);
+/// The same with the path file's segments (rows, sides, turns: kind "straight" or "turn").
+TrackingMetrics ScoreTracking(const PathGeometry& geometry, const std::vector<TrackSample>& track,
+                              double settle_band_m = 0.05);
 
 }  // namespace hil::harness

@@ -15,6 +15,11 @@
 ///     - {kind: frame_truncate, start_s: 30, end_s: 35, probability: 0.2, link: ttyGPS}
 ///     - {kind: can_reorder, start_s: 30, end_s: 35, probability: 0.5}
 ///     - {kind: gnss_overload, start_s: 40, end_s: 60}
+///     - {kind: controller_stop, start_s: 15}                          # closed loop
+///     - {kind: command_link_loss, start_s: 15, end_s: 18}
+///     - {kind: command_latency, start_s: 10, end_s: 40, latency_s: 0.15, jitter_s: 0.1}
+///     - {kind: actuator_saturation, start_s: 20, end_s: 30, max_wheel_speed_radps: 4}
+///     - {kind: actuator_stuck, start_s: 20, end_s: 23}
 ///
 /// mcu_reset takes an optional end_s: the MCU is silent from start_s to end_s (its reboot time;
 /// without end_s the mcu section's reboot time). byte_corruption takes either `probability` (per
@@ -52,6 +57,11 @@ enum class FaultKind {
   kControllerStop,   ///< closed loop: the controller process is killed (SIGKILL) at start_s
   kCommandLinkLoss,  ///< closed loop: the controller's bytes do not reach the actuator in [start,
                      ///< end)
+  /// closed loop, the actuator (wheel_motor_faults.h): commands arriving in [start, end) act
+  /// `latency_s` plus a seeded uniform [0, `jitter_s`) late
+  kCommandLatency,
+  kActuatorSaturation,  ///< closed loop: the drive's speed limit is `max_wheel_speed_radps`
+  kActuatorStuck,       ///< closed loop: the drive holds its output from start to end
 };
 
 /// The scenario-file name of a kind ("gnss_outage", …).

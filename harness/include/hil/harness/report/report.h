@@ -14,6 +14,7 @@
 #include "hil/harness/faults/fault_report.h"
 #include "hil/harness/links/can_bus_report.h"
 #include "hil/harness/report/steering_ecu_report.h"
+#include "hil/harness/report/closed_loop_faults_report.h"
 #include "hil/harness/scenario/scenario.h"
 
 namespace hil::harness {
@@ -43,6 +44,7 @@ struct ClosedLoopReport {
   double final_speed_mps = 0;
   bool stopped = false;                           ///< final speed below 1 cm/s
   std::optional<SteeringEcuReport> steering_ecu;  ///< the isobus channel's ECU
+  ClosedLoopFaultsReport faults;                  ///< what the actuator faults did
 };
 
 /// Everything report.json holds.
@@ -76,6 +78,8 @@ struct RunReport {
   std::optional<CanBusReport> can;          ///< the scenario's CAN bus (can_run.h), when it has one
   std::optional<TrackingMetrics> tracking;  ///< closed loop: the truth against the path
   std::optional<ClosedLoopReport> closed_loop;  ///< closed loop: controller and actuator
+  /// closed loop: each fault's effect on the path tracking (report.json `tracking.faults`)
+  std::vector<FaultPathDeviation> tracking_faults;
   bool pass() const;
 };
 

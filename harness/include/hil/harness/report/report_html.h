@@ -22,7 +22,15 @@ struct ReportSeries {
   std::vector<double> truth_t_s;
   std::vector<Eigen::Vector2d> truth_en_m;
   std::vector<double> latency_ms;  ///< empty outside real-time mode
+  /// Closed loop: the planned path, and per control tick the commanded and actual yaw rate.
+  std::vector<Eigen::Vector2d> path_en_m;
+  std::vector<double> tick_t_s, commanded_yaw_rate_dps, actual_yaw_rate_dps;
 };
+
+/// Closed loop: path + truth + estimate, XTE against distance, commanded against actual steering
+/// (report_closed_loop_plots.cc). Appends the files written to `files`.
+void WriteClosedLoopPlots(const RunReport& report, const ReportSeries& series,
+                          const std::string& run_dir, std::vector<std::string>& files);
 
 /// The plot files written, relative to the run folder.
 std::vector<std::string> WritePlots(const RunReport& report, const ReportSeries& series,

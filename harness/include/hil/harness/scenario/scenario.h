@@ -176,9 +176,11 @@ struct ClosedLoopSpec {
   /// its NMEA 0183 solution into), {origin} ("lat,lon,h"), {run_dir} and the link names are
   /// substituted. It runs in the estimator's process group (the lockstep waits for both).
   std::string controller;
-  double control_period_s = 0.1;      ///< the controller's tick: a host turn each
-  double command_timeout_s = 0.3;     ///< a tick whose last command is older: missing
-  double first_command_due_s = 3;     ///< ticks before this count no missing command
+  double control_period_s = 0.1;   ///< the controller's tick: a host turn each
+  double command_timeout_s = 0.3;  ///< a tick whose last command is older: missing
+  double first_command_due_s = 3;  ///< ticks before this count no missing command
+  /// tracking.faults scores each fault from its start to this long after its end (recovery)
+  double fault_window_s = 10;
   Eigen::Vector2d start_p_N_m{0, 0};  ///< where the vehicle starts (ENU, m)
   double start_heading_deg = 0;       ///< its heading, clockwise from north
   /// The vehicle rolls straight at this speed when the run starts (the operator drove it onto
