@@ -11,6 +11,7 @@
 #include "hil/harness/eval/evaluator.h"
 #include "hil/harness/eval/outage_metrics.h"
 #include "hil/harness/eval/path_tracking.h"
+#include "hil/harness/eval/row_deviation.h"
 #include "hil/harness/faults/fault_report.h"
 #include "hil/harness/links/can_bus_report.h"
 #include "hil/harness/scenario/scenario.h"
@@ -74,6 +75,7 @@ struct RunReport {
   std::optional<CanBusReport> can;          ///< the scenario's CAN bus (can_run.h), when it has one
   std::optional<TrackingMetrics> tracking;  ///< closed loop: the truth against the path
   std::optional<ClosedLoopReport> closed_loop;  ///< closed loop: controller and actuator
+  std::optional<RowDeviation> row_following;    ///< closed loop in a greenhouse (paper 001)
   bool pass() const;
 };
 
