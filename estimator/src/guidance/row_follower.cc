@@ -43,6 +43,15 @@ void RowFollower::OnEstimate(GpsTime t, const VehiclePose2d& estimate) {
 
 void RowFollower::OnRanges(const RangeSet& r) {
   if (!config_.correction) return;
+  const double lim = config_.max_ridge_range_m;
+  const bool beside = r.right_front_ok && r.right_rear_ok && r.left_front_ok && r.left_rear_ok &&
+                      r.right_front_m <= lim && r.right_rear_m <= lim && r.left_front_m <= lim &&
+                      r.left_rear_m <= lim;
+  if (!beside) {  // out of the rows: no correction, none carried on (and no re-anchoring)
+    corrector_.Abandon();
+    was_correcting_ = false;
+    return;
+  }
   corrector_.OnRanges(r);
   const CorrectionMode m = corrector_.state().mode;
   const bool correcting = m == CorrectionMode::kHeading || m == CorrectionMode::kLateral ||

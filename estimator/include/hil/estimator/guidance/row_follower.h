@@ -34,6 +34,9 @@ struct RowFollowerConfig {
   double speed_mps = 0.4;
   PurePursuitConfig pursuit;
   bool correction = true;
+  /// A range beyond this sees no ridge beside the vehicle (the headland, a far wall): the set is
+  /// not used, and a correction under way is abandoned (ours: 3 × D_set).
+  double max_ridge_range_m = 1.5;
   DeviationCorrectorConfig corrector;
 };
 
