@@ -50,9 +50,15 @@ void RowFollower::OnRanges(const RangeSet& r) {
   if (!beside) {  // out of the rows: no correction, none carried on (and no re-anchoring)
     corrector_.Abandon();
     was_correcting_ = false;
+    anchor_fill_ = 0, anchor_pos_ = 0;
     return;
   }
   corrector_.OnRanges(r);
+  const int n = std::clamp(config_.anchor_samples, 1, kMaxAnchorSamples);
+  dp_ring_[static_cast<std::size_t>(anchor_pos_)] = corrector_.state().dp_m;
+  ap_ring_[static_cast<std::size_t>(anchor_pos_)] = corrector_.state().ap_rad;
+  anchor_pos_ = (anchor_pos_ + 1) % n;
+  anchor_fill_ = std::min(anchor_fill_ + 1, n);
   const CorrectionMode m = corrector_.state().mode;
   const bool correcting = m == CorrectionMode::kHeading || m == CorrectionMode::kLateral ||
                           m == CorrectionMode::kRealign;
@@ -67,11 +73,17 @@ void RowFollower::ReAnchor() {
   const VehiclePose2d a = Anchored(estimate_);
   const PathProjection f = path_.Project(a.p_EN_m);
   if (path_.edge_kind(f.edge) != SegmentKind::kStraight) return;
-  const DeviationState& d = corrector_.state();
-  const double dyaw = WrapPi(f.path_yaw_rad + d.ap_rad - a.yaw_rad);
+  double dp = 0, ap = 0;
+  for (int i = 0; i < anchor_fill_; ++i) {
+    dp += dp_ring_[static_cast<std::size_t>(i)];
+    ap += ap_ring_[static_cast<std::size_t>(i)];
+  }
+  dp /= std::max(anchor_fill_, 1);
+  ap /= std::max(anchor_fill_, 1);
+  const double dyaw = WrapPi(f.path_yaw_rad + ap - a.yaw_rad);
   // rotate about the vehicle, then shift across the path
   const Eigen::Vector2d normal_left(-f.tangent_EN.y(), f.tangent_EN.x());
-  const Eigen::Vector2d shift = normal_left * (d.dp_m - f.cross_track_m);
+  const Eigen::Vector2d shift = normal_left * (dp - f.cross_track_m);
   state_.anchor_yaw_rad = WrapPi(state_.anchor_yaw_rad + dyaw);
   state_.anchor_shift_m = Rotate(state_.anchor_shift_m - a.p_EN_m, dyaw) + a.p_EN_m + shift;
   ++state_.anchors;
