@@ -14,12 +14,18 @@ namespace drv = hil::estimator::drivers;
 
 speed_t Speed(int baud) {
   switch (baud) {
-    case 9600: return B9600;
-    case 57600: return B57600;
-    case 230400: return B230400;
-    case 460800: return B460800;
-    case 921600: return B921600;
-    default: return B115200;
+    case 9600:
+      return B9600;
+    case 57600:
+      return B57600;
+    case 230400:
+      return B230400;
+    case 460800:
+      return B460800;
+    case 921600:
+      return B921600;
+    default:
+      return B115200;
   }
 }
 

@@ -20,15 +20,14 @@ class RangeInputs {
  public:
   static constexpr std::size_t kUnits = 4;  // right front, right rear, left front, left rear
   /// Opens the four ports (raw, `baud`); false (with errno set) when one cannot be opened.
-  bool Open(const std::array<std::string, kUnits>& paths, int baud, bool tfmini_s,
-            double rate_hz);
+  bool Open(const std::array<std::string, kUnits>& paths, int baud, bool tfmini_s, double rate_hz);
   /// Reads what port k holds into its queue (the newest kQueue frames are kept): the ports are
   /// read whenever they have bytes, so that a lockstep harness sees them read.
   void Read(std::size_t k);
   /// Reads what every port holds and hands one RangeSet per queued right-front frame to `on_set`,
   /// the last one at `t`; empties the queues.
-  void Drain(estimator::GpsTime t, const std::function<void(const estimator::guidance::RangeSet&)>&
-                                       on_set);
+  void Drain(estimator::GpsTime t,
+             const std::function<void(const estimator::guidance::RangeSet&)>& on_set);
   std::array<int, kUnits> fds() const { return fds_; }
   std::uint64_t bad_bytes() const;
 

@@ -1,8 +1,8 @@
 // navd's gyro + wheel-odometry mode (paper 001). The IMU's samples drive the filter and the
 // solution clock; the encoder sentences are stamped with the solution they answer. At each
 // solution after the first sentence navd first waits (up to [odometry] wait_s) for the sentence
-// answering the solution before the previous one, so that every run applies the same encoder intervals before
-// the same solutions whatever order the processes were scheduled in.
+// answering the solution before the previous one, so that every run applies the same encoder
+// intervals before the same solutions whatever order the processes were scheduled in.
 #include "odometry_mode.h"
 
 #include <poll.h>

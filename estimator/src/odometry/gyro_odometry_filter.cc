@@ -40,8 +40,8 @@ void GyroOdometryFilter::MovePosition(double distance_m, double yaw_mid_rad) {
   // along-track and sideways noise, rotated into E, N
   Eigen::Matrix2d R;
   R << c, -s, s, c;
-  const Eigen::Matrix2d Q = R * Eigen::Vector2d(along * along, side * side).asDiagonal() *
-                            R.transpose();
+  const Eigen::Matrix2d Q =
+      R * Eigen::Vector2d(along * along, side * side).asDiagonal() * R.transpose();
   P_.topLeftCorner<2, 2>() += Q;
 }
 

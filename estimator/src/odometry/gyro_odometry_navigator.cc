@@ -72,8 +72,7 @@ void GyroOdometryNavigator::OnEncoders(const EncoderSample& e) {
     return static_cast<std::int32_t>(static_cast<std::uint32_t>(now) -
                                      static_cast<std::uint32_t>(before));
   };
-  const double per_count =
-      2.0 * std::numbers::pi * config_.wheel_radius_m / config_.counts_per_rev;
+  const double per_count = 2.0 * std::numbers::pi * config_.wheel_radius_m / config_.counts_per_rev;
   const double dl = delta(e.left_counts, prev->left_counts) * per_count,
                dr = delta(e.right_counts, prev->right_counts) * per_count;
   const double ds = 0.5 * (dl + dr), dpsi = (dr - dl) / config_.track_m;
@@ -95,9 +94,8 @@ std::optional<PlanarSolution> GyroOdometryNavigator::Output(GpsTime t) const {
   s.yaw_rad = filter_.yaw_rad();
   s.speed_mps = speed_mps_;
   s.yaw_rate_radps = last_rate_radps_;
-  const double ahead = last_encoders_ && t > last_encoders_->t
-                           ? Seconds(t - last_encoders_->t) * speed_mps_
-                           : 0.0;
+  const double ahead =
+      last_encoders_ && t > last_encoders_->t ? Seconds(t - last_encoders_->t) * speed_mps_ : 0.0;
   s.p_EN_m = filter_.position() + ahead * Eigen::Vector2d(std::cos(s.yaw_rad), std::sin(s.yaw_rad));
   s.position_std_m = filter_.position_std_m();
   s.yaw_std_rad = filter_.yaw_std_rad();

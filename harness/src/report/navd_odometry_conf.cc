@@ -8,8 +8,9 @@ namespace hil::harness {
 
 void WriteNavdOdometry(std::ostream& out, const Scenario& s, const std::string& run_dir) {
   if (!s.closed_loop.enabled)
-    throw std::runtime_error(s.file + ": estimator.navd_mode gyro_odometry needs a closed_loop: "
-                                      "section (the base's encoders)");
+    throw std::runtime_error(s.file +
+                             ": estimator.navd_mode gyro_odometry needs a closed_loop: "
+                             "section (the base's encoders)");
   const actuator::WheelMotorsConfig& m = s.closed_loop.motors;
   char origin[200];
   std::snprintf(origin, sizeof origin,

@@ -319,10 +319,11 @@ void WriteReportJson(const RunReport& r, const std::string& path) {
   if (r.tracking) j["tracking"] = TrackingJson(*r.tracking);
   if (r.closed_loop) j["closed_loop"] = ClosedLoopJson(*r.closed_loop);
   if (r.row_following)
-    j["row_following"] = {{"samples", r.row_following->samples},
-                          {"max_lateral_deviation_m", r.row_following->max_lateral_deviation_m},
-                          {"mean_abs_lateral_deviation_m", r.row_following->mean_abs_lateral_m},
-                          {"max_heading_deviation_deg", r.row_following->max_heading_deviation_deg}};
+    j["row_following"] = {
+        {"samples", r.row_following->samples},
+        {"max_lateral_deviation_m", r.row_following->max_lateral_deviation_m},
+        {"mean_abs_lateral_deviation_m", r.row_following->mean_abs_lateral_m},
+        {"max_heading_deviation_deg", r.row_following->max_heading_deviation_deg}};
   auto out = OpenOut(path);
   out << j.dump(2) << "\n";
   if (!out) throw std::runtime_error("cannot write " + path);

@@ -12,9 +12,9 @@
 #include <sys/stat.h>
 
 #include "hil/harness/report/run_outputs.h"
-#include "../report/navd_odometry_conf.h"
 #include "hil/harness/run/can_run.h"
 
+#include "../report/navd_odometry_conf.h"
 #include "run_phases.h"
 
 namespace hil::harness {
@@ -139,14 +139,14 @@ void StartController(RunContext& ctx) {
   const truth::Geodetic& o = ctx.scenario.truth.origin;
   char origin[96];
   std::snprintf(origin, sizeof origin, "%.9f,%.9f,%.3f", o.lat_deg, o.lon_deg, o.height_m);
-  std::vector<std::pair<std::string, std::string>> vars{{"guidanced", ctx.options.guidanced_path},
-                                                        {"path_file", c.path_file},
-                                                        {"nav_nmea", ctx.dir + "/" + kNavNmeaFifo},
-                                                        {"origin", origin},
-                                                        {"run_dir", ctx.dir},
-                                                        {"seed", std::to_string(ctx.seed)},
-                                                        {"odometry_fifo",
-                                                         ctx.dir + "/" + kOdometryFifo}};
+  std::vector<std::pair<std::string, std::string>> vars{
+      {"guidanced", ctx.options.guidanced_path},
+      {"path_file", c.path_file},
+      {"nav_nmea", ctx.dir + "/" + kNavNmeaFifo},
+      {"origin", origin},
+      {"run_dir", ctx.dir},
+      {"seed", std::to_string(ctx.seed)},
+      {"odometry_fifo", ctx.dir + "/" + kOdometryFifo}};
   vars.insert(vars.end(), ctx.set.links.begin(), ctx.set.links.end());
   const std::string command = Substitute(c.controller, vars);
   ctx.report.controller_command = command;

@@ -72,7 +72,8 @@ Result DriveAisle(bool correction) {
     p.yaw += cmd.w_radps * kDt_s;
     p.e += cmd.v_mps * kDt_s * std::cos(p.yaw);
     p.n += cmd.v_mps * kDt_s * std::sin(p.yaw);
-    if (p.n > 20) out.max_abs_offset_last_10_m_m = std::max(out.max_abs_offset_last_10_m_m, std::abs(p.e));
+    if (p.n > 20)
+      out.max_abs_offset_last_10_m_m = std::max(out.max_abs_offset_last_10_m_m, std::abs(p.e));
   }
   out.final_offset_m = p.e;
   out.anchors = f.state().anchors;

@@ -118,10 +118,11 @@ TEST(GyroOdometryNavigator, FollowsARectangleWithQuantisedEncoders) {
   GyroOdometryNavigator nav(Config());
   Drive(sim, nav, 2.1, 0, 0);
   for (int side = 0; side < 4; ++side) {
-    Drive(sim, nav, 20, 0.4, 0);                    // 8 m straight
+    Drive(sim, nav, 20, 0.4, 0);                   // 8 m straight
     Drive(sim, nav, 5, 0, std::numbers::pi / 10);  // a quarter turn in place
   }
-  const std::optional<PlanarSolution> s = nav.Output(GpsTimeFromNs(std::llround(sim.truth().t_s * 1e9)));
+  const std::optional<PlanarSolution> s =
+      nav.Output(GpsTimeFromNs(std::llround(sim.truth().t_s * 1e9)));
   ASSERT_TRUE(s);
   const double dyaw = std::remainder(s->yaw_rad - sim.truth().yaw, 2 * std::numbers::pi);
   EXPECT_LT(std::abs(dyaw), 0.2 * std::numbers::pi / 180);  // 0.2°
@@ -140,7 +141,7 @@ TEST(GyroOdometryNavigator, DifferentialSlipBiasesTheOdometryYaw) {
   Drive(sim, nav, 2.1, 0, 0);
   Drive(sim, nav, 30, 0.4, 0);
   const double odo_rate_error = 0.4 / (1 - 0.01) * 0.01 / kTrack_m;  // 8.1 mrad/s
-  EXPECT_LT(nav.filter().bias_radps(), -0.1 * odo_rate_error);  // the gyro seems to read low
+  EXPECT_LT(nav.filter().bias_radps(), -0.1 * odo_rate_error);       // the gyro seems to read low
   EXPECT_GT(nav.filter().bias_radps(), -1.1 * odo_rate_error);
 }
 

@@ -24,11 +24,11 @@
 namespace hil::estimator::odometry {
 
 struct GyroOdometryParams {
-  double gyro_arw_rad_per_sqrt_s = 1.5e-4;  ///< gyro angle random walk (white rate noise)
+  double gyro_arw_rad_per_sqrt_s = 1.5e-4;      ///< gyro angle random walk (white rate noise)
   double gyro_bias_rw_radps_per_sqrt_s = 1e-5;  ///< bias random walk
   double init_bias_std_radps = 0.005;           ///< after the static alignment's mean
   double init_yaw_std_rad = 0.005, init_position_std_m = 0.01;
-  double odo_yaw_std_rad = 0.004;        ///< Δψ_odo 1σ per interval (quantisation, slip)
+  double odo_yaw_std_rad = 0.004;           ///< Δψ_odo 1σ per interval (quantisation, slip)
   double odo_distance_std_fraction = 0.01;  ///< Δs 1σ as a fraction of Δs (scale, slip)
   double odo_lateral_std_fraction = 0.002;  ///< sideways slip, fraction of Δs
   double gate_chi2 = 25.0;  ///< a Δψ_odo innovation beyond this (1 dof) is rejected (wheel spin)

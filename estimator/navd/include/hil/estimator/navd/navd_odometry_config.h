@@ -15,8 +15,8 @@
 ///   odo_yaw_std_rad (0.004 per interval), odo_distance_std_fraction (0.01),
 ///   odo_lateral_std_fraction (0.002): the filter's noise;
 ///   wait_s (0.5): at each solution after the first encoder sentence, how long navd waits for
-///   the sentence that answers the solution before the previous one (wall time; a lockstep harness delivers it
-///   within a turn; late ones are counted and used when they come).
+///   the sentence that answers the solution before the previous one (wall time; a lockstep harness
+///   delivers it within a turn; late ones are counted and used when they come).
 
 #include <string>
 
