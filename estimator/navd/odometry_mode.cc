@@ -133,6 +133,8 @@ class OdometryNavd {
   std::optional<est::GpsTime> last_emitted_, previous_emitted_;
   bool encoders_started_ = false, answered_ = false, previous_answered_ = false;
   Lines lines_;
+  std::array<odo::EncoderSample, 16> queue_{};
+  std::size_t queue_first_ = 0, queued_ = 0;
   OdometryModeStats stats_;
 };
 
@@ -159,11 +161,22 @@ void OdometryNavd::OnSentence(std::string_view line) {
     t = *previous_emitted_;
     previous_answered_ = true;
   }
-  nav_.OnEncoders({t, e->left_counts, e->right_counts});
+  // held until the solution after next (Emit): applied at the same point of every run
+  if (queued_ < queue_.size()) {
+    queue_[(queue_first_ + queued_) % queue_.size()] = {t, e->left_counts, e->right_counts};
+    ++queued_;
+  }
   encoders_started_ = true;
 }
 
 void OdometryNavd::Emit() {
+  // the encoder samples answering the solution before the last (and older ones), never newer:
+  // whichever order the processes ran in, each sample enters the filter at the same solution
+  while (queued_ > 0 && previous_emitted_ && queue_[queue_first_].t <= *previous_emitted_) {
+    nav_.OnEncoders(queue_[queue_first_]);
+    queue_first_ = (queue_first_ + 1) % queue_.size();
+    --queued_;
+  }
   const std::optional<odo::PlanarSolution> p = nav_.Output(last_imu_t_);
   if (!p) return;
   if (AwaitingAnswer()) ++stats_.unanswered;
