@@ -27,9 +27,12 @@
 #include "hil/estimator/guidance/base_serial_client.h"
 #include "hil/estimator/guidance/path_file.h"
 #include "hil/estimator/guidance/path_tracker.h"
+#include "hil/estimator/guidance/row_follower.h"
 #include "hil/estimator/guidance/vehicle.h"
+#include "hil/estimator/odometry/encoder_sentence.h"
 
 #include "isobus_link.h"
+#include "range_inputs.h"
 
 namespace {
 
@@ -37,9 +40,12 @@ namespace est = hil::estimator;
 namespace g = hil::estimator::guidance;
 
 struct Options {
-  std::string path_file, nav, base;
+  std::string path_file, nav, base, odometry, rangefinders, rangefinder_model = "tf_luna";
   std::string isobus;  // a CAN interface, or the SLCAN adapter's tty (isobus_slcan)
   bool isobus_slcan = false;
+  int rangefinder_baud = 115200;
+  double rangefinder_rate_hz = 100, p_dist_m = 0.4, d_set_m = 0.5;
+  bool correction = true;
   est::Lla origin;
   double speed_mps = 0.5, lookahead_m = 1.0;
   double track_m = 0.5, wheel_radius_m = 0.1, max_wheel_radps = 20, pid_rate_hz = 30;
@@ -55,7 +61,10 @@ struct Options {
       "(--base TTY | --isobus-can IFACE | --isobus-slcan TTY) [--speed M/S] [--lookahead M] "
       "[--track M] [--wheel-radius M] [--counts-per-rev N] [--pid-rate HZ] "
       "[--max-wheel-speed RAD/S] [--wheelbase M] [--max-steer-deg DEG] "
-      "[--guidance-address N] [--ecu-address N]\n",
+      "[--guidance-address N] [--ecu-address N] [--odometry OUT] "
+      "[--rangefinders RF,RR,LF,LR [--rangefinder-model tf_luna|tfmini_s] "
+      "[--rangefinder-baud B] [--rangefinder-rate HZ] [--correction on|off] [--p-dist M] "
+      "[--d-set M]]\n",
       why);
   std::exit(2);
 }
@@ -95,6 +104,48 @@ bool ParseIsobusOption(const std::string& k, const char* v, Options& o) {
   return true;
 }
 
+// Paper 001's options (row following, rangefinders, odometry forwarding); false if `k` is none.
+bool ParseRowOption(const std::string& k, const char* v, Options& o) {
+  if (k == "--odometry") {
+    o.odometry = v;
+  } else if (k == "--rangefinders") {
+    o.rangefinders = v;
+  } else if (k == "--rangefinder-model") {
+    o.rangefinder_model = v;
+    if (o.rangefinder_model != "tf_luna" && o.rangefinder_model != "tfmini_s")
+      Usage("--rangefinder-model: tf_luna or tfmini_s");
+  } else if (k == "--rangefinder-baud") {
+    o.rangefinder_baud = static_cast<int>(Number("--rangefinder-baud", v));
+  } else if (k == "--rangefinder-rate") {
+    o.rangefinder_rate_hz = Number("--rangefinder-rate", v);
+    if (!(o.rangefinder_rate_hz > 0)) Usage("--rangefinder-rate: must be positive");
+  } else if (k == "--correction") {
+    if (std::string_view(v) != "on" && std::string_view(v) != "off")
+      Usage("--correction: on or off");
+    o.correction = std::string_view(v) == "on";
+  } else if (k == "--p-dist") {
+    o.p_dist_m = Number("--p-dist", v);
+  } else if (k == "--d-set") {
+    o.d_set_m = Number("--d-set", v);
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// "A,B,C,D": the four rangefinder ports.
+std::array<std::string, 4> SplitFour(const std::string& s) {
+  std::array<std::string, 4> out;
+  std::size_t pos = 0;
+  for (std::size_t k = 0; k < 4; ++k) {
+    const std::size_t comma = s.find(',', pos);
+    if ((k < 3) == (comma == std::string::npos)) Usage("--rangefinders: expected RF,RR,LF,LR");
+    out[k] = s.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
+    pos = comma + 1;
+  }
+  return out;
+}
+
 Options Parse(int argc, char** argv) {
   Options o;
   for (int i = 1; i < argc; ++i) {
@@ -125,7 +176,7 @@ Options Parse(int argc, char** argv) {
       o.pid_rate_hz = Number("--pid-rate", v);
     } else if (k == "--max-wheel-speed") {
       o.max_wheel_radps = Number("--max-wheel-speed", v);
-    } else if (!ParseIsobusOption(k, v, o)) {
+    } else if (!ParseIsobusOption(k, v, o) && !ParseRowOption(k, v, o)) {
       Usage(("unknown option " + k).c_str());
     }
   }
@@ -166,15 +217,35 @@ std::optional<double> ParseHdt(std::string_view s) {
 // The controller's state between solutions.
 class Controller {
  public:
-  Controller(const Options& o, g::PlannedPath path, int base_fd, hil::guidanced::IsobusLink* isobus)
+  Controller(const Options& o, g::PlannedPath path, int base_fd, hil::guidanced::IsobusLink* isobus,
+             int odometry_fd, hil::guidanced::RangeInputs* ranges)
       : o_(o),
         path_(std::move(path)),
         frame_(o.origin),
         pp_(Config(o)),
         base_fd_(base_fd),
         isobus_(isobus),
+        odometry_fd_(odometry_fd),
+        ranges_(ranges),
         platform_{o.track_m, o.wheel_radius_m, o.max_wheel_radps},
-        steering_{o.wheelbase_m, o.max_steer_deg * std::numbers::pi / 180.0} {}
+        steering_{o.wheelbase_m, o.max_steer_deg * std::numbers::pi / 180.0} {
+    if (ranges_) row_.emplace(RowConfig(o), path_);
+  }
+
+  // One reply line of the base: an encoder reply goes on to navd, stamped with the solution that
+  // asked for it (replies come in the order of the requests).
+  void OnBaseLine(std::string_view line) {
+    std::int32_t left = 0, right = 0;
+    if (odometry_fd_ < 0 || !g::ParseEncoderReply(line, left, right) || asked_count_ == 0) return;
+    const std::int64_t tod = asked_tod_ns_[asked_first_];
+    asked_first_ = (asked_first_ + 1) % asked_tod_ns_.size();
+    --asked_count_;
+    const hil::estimator::odometry::EncoderSentenceLine l =
+        hil::estimator::odometry::FormatEncoderSentence({tod, left, right});
+    if (write(odometry_fd_, l.bytes.data(), l.size) == static_cast<ssize_t>(l.size)) ++forwarded_;
+  }
+  std::uint64_t forwarded() const { return forwarded_; }
+  const std::optional<g::RowFollower>& row() const { return row_; }
 
   // One NMEA sentence of the solution (without CR LF).
   void OnSentence(std::string_view s) {
@@ -190,6 +261,7 @@ class Controller {
       speed_mps_ = f->speed_mps.value_or(0.0);
       return;
     }
+    tod_ns_ = f->utc_time_of_day_ns.value_or(0);
     const double h = f->msl_altitude_m.value_or(0.0) + f->geoid_separation_m.value_or(0.0);
     p_EN_m_ = frame_.ToLocal({*f->lat_deg, *f->lon_deg, h}).head<2>();
     have_fix_ = true;
@@ -207,18 +279,43 @@ class Controller {
     pose.p_EN_m = p_EN_m_;
     pose.yaw_rad = (90.0 - heading_deg_) * std::numbers::pi / 180.0;
     pose.speed_mps = speed_mps_;
-    const g::TrackingCommand c = pp_.Update(path_, pose);
     if (isobus_) {
-      SteerCommand(c);
+      SteerCommand(pp_.Update(path_, pose));
       return;
     }
-    const double v = c.end_of_path ? 0.0 : o_.speed_mps;
-    const g::WheelSpeeds w = platform_.FromSpeedAndCurvature(v, c.curvature_left_per_m);
+    const g::WheelSpeeds w = row_ ? RowCommand(pose) : PursuitCommand(pose);
     const g::BaseCommandLine line =
         g::FormatMotorSpeeds(g::TicksPerFrame(w.left_radps, o_.counts_per_rev, o_.pid_rate_hz),
                              g::TicksPerFrame(w.right_radps, o_.counts_per_rev, o_.pid_rate_hz));
     if (write(base_fd_, line.bytes.data(), line.size) == static_cast<ssize_t>(line.size))
       ++commands_;
+    if (odometry_fd_ < 0 || asked_count_ == asked_tod_ns_.size()) return;
+    const g::BaseCommandLine e = g::FormatReadEncoders();
+    if (write(base_fd_, e.bytes.data(), e.size) != static_cast<ssize_t>(e.size)) return;
+    asked_tod_ns_[(asked_first_ + asked_count_) % asked_tod_ns_.size()] = tod_ns_;
+    ++asked_count_;
+  }
+  g::WheelSpeeds PursuitCommand(const g::VehiclePose2d& pose) {
+    const g::TrackingCommand c = pp_.Update(path_, pose);
+    const double v = c.end_of_path ? 0.0 : o_.speed_mps;
+    return platform_.FromSpeedAndCurvature(v, c.curvature_left_per_m);
+  }
+  // Paper 001: the base row navigation with the deviation corrector over it (row_follower.h).
+  g::WheelSpeeds RowCommand(const g::VehiclePose2d& pose) {
+    const est::GpsTime t = est::GpsTimeFromNs(tod_ns_);
+    row_->OnEstimate(t, pose);
+    ranges_->Drain(t, [&](const g::RangeSet& r) { row_->OnRanges(r); });
+    const g::VelocityCommand c = row_->Command();
+    return g::WheelSpeedsFromSpeedAndYawRate(platform_, c.v_mps, c.w_radps);
+  }
+  static g::RowFollowerConfig RowConfig(const Options& o) {
+    g::RowFollowerConfig c;
+    c.speed_mps = o.speed_mps;
+    c.pursuit = Config(o);
+    c.correction = o.correction;
+    c.corrector.p_dist_m = o.p_dist_m;
+    c.corrector.d_set_m = o.d_set_m;
+    return c;
   }
 
   // ISOBUS: the curvature (the reachable one) to the steering ECU; "not intended to steer" at the
@@ -241,8 +338,15 @@ class Controller {
   g::PurePursuit pp_;
   int base_fd_;
   hil::guidanced::IsobusLink* isobus_;
-  g::DiffDrivePlatform platform_;
   g::FrontSteeredPlatform steering_;
+  int odometry_fd_;
+  hil::guidanced::RangeInputs* ranges_;
+  g::DiffDrivePlatform platform_;
+  std::optional<g::RowFollower> row_;
+  std::array<std::int64_t, 8> asked_tod_ns_{};
+  std::size_t asked_first_ = 0, asked_count_ = 0;
+  std::int64_t tod_ns_ = 0;
+  std::uint64_t forwarded_ = 0;
   Eigen::Vector2d p_EN_m_{0, 0};
   double heading_deg_ = 0, speed_mps_ = 0;
   bool have_fix_ = false;
@@ -275,13 +379,19 @@ class LineSplitter {
   bool overflow_ = false;
 };
 
-int Loop(Controller& ctl, int nav_fd, int base_fd, hil::guidanced::IsobusLink* isobus) {
+int Loop(Controller& ctl, int nav_fd, int base_fd, hil::guidanced::IsobusLink* isobus,
+         hil::guidanced::RangeInputs* ranges) {
   LineSplitter nav;
   g::BaseReplyReader replies;
   std::array<char, 4096> buf{};
-  pollfd fds[2] = {{nav_fd, POLLIN, 0}, {base_fd, POLLIN, 0}};
+  std::array<pollfd, 6> fds{};
+  fds[0] = {nav_fd, POLLIN, 0};
+  fds[1] = {base_fd, POLLIN, 0};
+  nfds_t n_fds = 2;
+  if (ranges)
+    for (const int fd : ranges->fds()) fds[n_fds++] = {fd, POLLIN, 0};
   for (;;) {
-    if (poll(fds, 2, -1) < 0) {
+    if (poll(fds.data(), n_fds, -1) < 0) {
       if (errno == EINTR) continue;
       return 1;
     }
@@ -297,8 +407,34 @@ int Loop(Controller& ctl, int nav_fd, int base_fd, hil::guidanced::IsobusLink* i
     } else if (fds[1].revents) {
       const ssize_t n = read(base_fd, buf.data(), buf.size());
       if (n <= 0 && errno != EINTR && errno != EAGAIN) return 0;  // the base's port closed
-      for (ssize_t i = 0; i < n; ++i) replies.Feed(buf[static_cast<std::size_t>(i)]);
+      for (ssize_t i = 0; i < n; ++i)
+        if (replies.Feed(buf[static_cast<std::size_t>(i)])) ctl.OnBaseLine(replies.line());
     }
+    for (nfds_t k = 2; k < n_fds; ++k)
+      if (fds[k].revents) ranges->Read(k - 2);
+  }
+}
+
+// The counters on stderr when the controller stops.
+void PrintCounters(const Controller& ctl, const hil::guidanced::IsobusLink* isobus,
+                   const hil::guidanced::RangeInputs& ranges) {
+  std::fprintf(stderr, "guidanced: stopped; commands=%llu encoder_sentences=%llu\n",
+               static_cast<unsigned long long>(ctl.commands()),
+               static_cast<unsigned long long>(ctl.forwarded()));
+  if (isobus)
+    std::fprintf(stderr, "guidanced: machine_infos=%llu refusals=%llu\n",
+                 static_cast<unsigned long long>(isobus->machine_infos()),
+                 static_cast<unsigned long long>(isobus->refusals()));
+  if (const auto& row = ctl.row()) {
+    const g::DeviationState& d = row->corrector().state();
+    std::fprintf(stderr,
+                 "guidanced: row following; lateral_corrections=%llu heading_corrections=%llu "
+                 "turns=%llu anchors=%llu range_bad_bytes=%llu\n",
+                 static_cast<unsigned long long>(d.lateral_corrections),
+                 static_cast<unsigned long long>(d.heading_corrections),
+                 static_cast<unsigned long long>(d.turns),
+                 static_cast<unsigned long long>(row->state().anchors),
+                 static_cast<unsigned long long>(ranges.bad_bytes()));
   }
 }
 
@@ -333,13 +469,20 @@ int main(int argc, char** argv) {
                  std::strerror(errno));
     return 1;
   }
-  Controller ctl(o, std::move(path), base_fd, on_isobus ? &isobus : nullptr);
-  const int rc = Loop(ctl, nav_fd, base_fd, on_isobus ? &isobus : nullptr);
-  std::fprintf(stderr, "guidanced: stopped; commands=%llu\n",
-               static_cast<unsigned long long>(ctl.commands()));
-  if (on_isobus)
-    std::fprintf(stderr, "guidanced: machine_infos=%llu refusals=%llu\n",
-                 static_cast<unsigned long long>(isobus.machine_infos()),
-                 static_cast<unsigned long long>(isobus.refusals()));
+  const int odometry_fd = o.odometry.empty() ? -2 : open(o.odometry.c_str(), O_WRONLY | O_CLOEXEC);
+  hil::guidanced::RangeInputs ranges;
+  const bool with_ranges = !o.rangefinders.empty();
+  if (odometry_fd == -1 ||
+      (with_ranges && !ranges.Open(SplitFour(o.rangefinders), o.rangefinder_baud,
+                                   o.rangefinder_model == "tfmini_s", o.rangefinder_rate_hz))) {
+    std::fprintf(stderr, "guidanced: cannot open the odometry output or a rangefinder: %s\n",
+                 std::strerror(errno));
+    return 1;
+  }
+  Controller ctl(o, std::move(path), base_fd, on_isobus ? &isobus : nullptr,
+                 odometry_fd < 0 ? -1 : odometry_fd, with_ranges ? &ranges : nullptr);
+  const int rc =
+      Loop(ctl, nav_fd, base_fd, on_isobus ? &isobus : nullptr, with_ranges ? &ranges : nullptr);
+  PrintCounters(ctl, on_isobus ? &isobus : nullptr, ranges);
   return rc;
 }

@@ -46,6 +46,7 @@
 #include "can_output.h"
 #include "gnss_receivers.h"
 #include "kfgins_mode.h"
+#include "odometry_mode.h"
 #include "replay_mode.h"
 #include "serial_device.h"
 #include "uwb_mode.h"
@@ -491,5 +492,7 @@ int main(int argc, char** argv) {
   if (!outputs.Open(cfg)) return 2;
   InstallSignalHandlers();
   if (cfg.uwb.enabled()) return hil::navd::RunUwbMode(cfg, outputs.out, &g_stop);  // paper 003
+  if (cfg.odometry.enabled())                                                      // paper 001
+    return hil::navd::RunOdometryMode(cfg, outputs.out, outputs.nmea_fd, &g_stop);
   return Run(cfg, outputs);
 }

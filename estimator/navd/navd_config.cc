@@ -254,6 +254,8 @@ NavdConfig NavdConfig::FromFile(const ConfigFile& f) {
       ReadNavdImuKey(f, e, c.imu);
     else if (e.section == "uwb")
       ReadNavdUwbKey(f, e, c.uwb);
+    else if (e.section == "odometry")
+      ReadNavdOdometryKey(f, e, c.odometry);
     else if (c.gnss_receivers.Read(f, e))
       continue;  // gnss_device_N, antenna_N_m
     else

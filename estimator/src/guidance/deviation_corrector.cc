@@ -22,6 +22,11 @@ DeviationCorrector::DeviationCorrector(const DeviationCorrectorConfig& config) :
 
 void DeviationCorrector::OnGyro(const GyroHeading& g) { gyro_ = g; }
 
+void DeviationCorrector::Abandon() {
+  state_.mode = CorrectionMode::kFollow;
+  ring_fill_ = 0, ring_pos_ = 0, state_.within = 0;
+}
+
 void DeviationCorrector::PushWithin(bool within) {
   if (ring_fill_ == config_.window) state_.within -= within_ring_[ring_pos_] ? 1 : 0;
   within_ring_[ring_pos_] = within;

@@ -133,6 +133,10 @@ MetricTable RunMetricTable(const RunReport& r) {
     t["tracking.settling_distance_m"] = r.tracking->settling_distance_m;
     t["tracking.settling_time_s"] = r.tracking->settling_time_s;
   }
+  if (r.row_following && r.row_following->samples > 0) {
+    t["max_lateral_deviation_m"] = r.row_following->max_lateral_deviation_m;
+    t["max_heading_deviation_deg"] = r.row_following->max_heading_deviation_deg;
+  }
   if (r.closed_loop) {
     t["closed_loop.missing_commands"] = static_cast<double>(r.closed_loop->missing_commands);
     t["closed_loop.watchdog_trips"] = static_cast<double>(r.closed_loop->watchdog_trips);
@@ -333,6 +337,12 @@ void WriteReportJson(const RunReport& r, const std::string& path) {
     if (r.closed_loop->steering_ecu)
       j["closed_loop"]["steering_ecu"] = SteeringEcuJson(*r.closed_loop->steering_ecu);
   }
+  if (r.row_following)
+    j["row_following"] = {
+        {"samples", r.row_following->samples},
+        {"max_lateral_deviation_m", r.row_following->max_lateral_deviation_m},
+        {"mean_abs_lateral_deviation_m", r.row_following->mean_abs_lateral_m},
+        {"max_heading_deviation_deg", r.row_following->max_heading_deviation_deg}};
   auto out = OpenOut(path);
   out << j.dump(2) << "\n";
   if (!out) throw std::runtime_error("cannot write " + path);

@@ -14,6 +14,7 @@
 #include "hil/harness/run/machine_load.h"
 #include "hil/truth/truth_integrator.h"
 
+#include "navd_odometry_conf.h"
 #include "navd_uwb_conf.h"
 
 namespace hil::harness {
@@ -71,12 +72,16 @@ void WriteNavdConfig(const std::string& path, const Scenario& s, const std::stri
       << "\n\n"
       << "[filter]\n";
   // navd's UWB mode is chosen by the [uwb] section (WriteNavdUwb), not by [filter] mode
-  if (s.estimator.navd_mode != NavdMode::kUwb)
+  const bool odometry = s.estimator.navd_mode == NavdMode::kGyroOdometry;  // [odometry] instead
+  if (s.estimator.navd_mode != NavdMode::kUwb && !odometry)
     out << "mode = " << Name(s.estimator.navd_mode) << "\n";
   // navd's body origin is the IMU: the antenna relative to the board
   const Eigen::Vector3d lever = s.gnss.model.p_BA_B_m - s.mcu.config.mounting.p_BI_B_m;
-  if (imu) out << "lever_arm_m = " << lever.x() << ", " << lever.y() << ", " << lever.z() << "\n";
-  for (const auto& [key, value] : s.estimator.navd_filter) out << key << " = " << value << "\n";
+  if (imu && !odometry)
+    out << "lever_arm_m = " << lever.x() << ", " << lever.y() << ", " << lever.z() << "\n";
+  if (!odometry)
+    for (const auto& [key, value] : s.estimator.navd_filter) out << key << " = " << value << "\n";
+  if (odometry) WriteNavdOdometry(out, s, std::filesystem::path(gnss_device).parent_path());
   if (s.estimator.navd_mode == NavdMode::kMultiGnss) WriteNavdReceivers(out, s, gnss_device);
   if (s.estimator.navd_mode == NavdMode::kUwb) WriteNavdUwb(out, s, gnss_device);
   // n2k_socketcan: the solution is read from navd's NMEA 2000 frames on the bus; its JSON lines

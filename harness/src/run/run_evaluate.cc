@@ -18,6 +18,10 @@
 namespace hil::harness {
 namespace {
 
+// Row following is scored this far inside both ridge ends (row_deviation.h): the headland turns
+// and the entries into a row are not row following. Our choice (the paper gives none).
+constexpr double kRowMargin_m = 1.0;
+
 // The point the estimate describes: navd fusing the IMU board reports the board (its body origin
 // is the IMU); a GNSS-only navd reports the antenna.
 Eigen::Vector3d EstimatedPoint(const Scenario& scenario, const RunOptions& opt) {
@@ -210,6 +214,9 @@ void EvaluateClosedLoop(RunContext& ctx, const TruthTable& truth) {
     c.steering_ecu = MakeSteeringEcuReport(*ecu);
   }
   if (!track.empty()) c.final_speed_mps = track.back().speed_mps;
+  if (ctx.set.world)  // paper 001: the deviation from the aisles, against the world's ridges
+    report.row_following =
+        ScoreRowDeviation(*ctx.set.world, TruthTrack(ctx, truth, ctx.t_from), kRowMargin_m);
   c.stopped = std::fabs(c.final_speed_mps) < 0.01;
   report.closed_loop = c;
 }

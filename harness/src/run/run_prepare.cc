@@ -14,6 +14,7 @@
 #include "hil/harness/report/run_outputs.h"
 #include "hil/harness/run/can_run.h"
 
+#include "../report/navd_odometry_conf.h"
 #include "run_phases.h"
 
 namespace hil::harness {
@@ -33,10 +34,17 @@ std::set<std::string> HostLinks(const Scenario& s, const std::string& raw_comman
   std::set<std::string> used;
   for (const auto& [name, path] : set.links) {
     if (raw_command.find("{" + name + "}") != std::string::npos) used.insert(name);
+    // paper 001: the controller reads the rangefinders (and the base's replies) in the lockstep
+    if (s.estimator.navd_mode == NavdMode::kGyroOdometry &&
+        s.closed_loop.controller.find("{" + name + "}") != std::string::npos)
+      used.insert(name);
   }
   if (raw_command.find("{navd}") != std::string::npos && s.estimator.navd_mode == NavdMode::kUwb) {
     used.insert(s.uwb.link);  // navd's UWB mode reads the tag and the WT901C only
     if (s.wt901c.enabled) used.insert(s.wt901c.link);
+  } else if (raw_command.find("{navd}") != std::string::npos &&
+             s.estimator.navd_mode == NavdMode::kGyroOdometry) {
+    used.insert(s.mcu.link);  // navd's odometry mode reads the IMU board (and the FIFO) only
   } else if (raw_command.find("{navd}") != std::string::npos) {
     used.insert(s.gnss.link);
     if (s.estimator.navd_mode == NavdMode::kMultiGnss) {
@@ -106,15 +114,22 @@ void StartEstimator(RunContext& ctx, const std::string& command) {
 
 // Closed loop: the FIFO navd writes its NMEA solution into, held open (read and write) by the run
 // so that navd's non-blocking open finds a reader and the controller's open finds a writer.
-void MakeNavFifo(RunContext& ctx) {
-  if (!ctx.scenario.closed_loop.enabled || ctx.options.emulate_only) return;
-  const std::string path = ctx.dir + "/" + kNavNmeaFifo;
+void MakeFifo(const std::string& path, OwnedFd& held) {
   unlink(path.c_str());
   if (mkfifo(path.c_str(), 0600) != 0)
     throw std::runtime_error("cannot make the FIFO " + path + ": " + std::strerror(errno));
-  ctx.nav_fifo.fd = open(path.c_str(), O_RDWR | O_NONBLOCK | O_CLOEXEC);
-  if (ctx.nav_fifo.fd < 0)
+  held.fd = open(path.c_str(), O_RDWR | O_NONBLOCK | O_CLOEXEC);
+  if (held.fd < 0)
     throw std::runtime_error("cannot open the FIFO " + path + ": " + std::strerror(errno));
+}
+
+// ... and with navd_mode gyro_odometry the FIFO the controller forwards the base's encoder counts
+// into for navd ({odometry_fifo}).
+void MakeNavFifo(RunContext& ctx) {
+  if (!ctx.scenario.closed_loop.enabled || ctx.options.emulate_only) return;
+  MakeFifo(ctx.dir + "/" + kNavNmeaFifo, ctx.nav_fifo);
+  if (ctx.scenario.estimator.navd_mode == NavdMode::kGyroOdometry)
+    MakeFifo(ctx.dir + "/" + kOdometryFifo, ctx.odometry_fifo);
 }
 
 // Closed loop: the controller, in the estimator's process group.
@@ -124,12 +139,14 @@ void StartController(RunContext& ctx) {
   const truth::Geodetic& o = ctx.scenario.truth.origin;
   char origin[96];
   std::snprintf(origin, sizeof origin, "%.9f,%.9f,%.3f", o.lat_deg, o.lon_deg, o.height_m);
-  std::vector<std::pair<std::string, std::string>> vars{{"guidanced", ctx.options.guidanced_path},
-                                                        {"path_file", c.path_file},
-                                                        {"nav_nmea", ctx.dir + "/" + kNavNmeaFifo},
-                                                        {"origin", origin},
-                                                        {"run_dir", ctx.dir},
-                                                        {"seed", std::to_string(ctx.seed)}};
+  std::vector<std::pair<std::string, std::string>> vars{
+      {"guidanced", ctx.options.guidanced_path},
+      {"path_file", c.path_file},
+      {"nav_nmea", ctx.dir + "/" + kNavNmeaFifo},
+      {"origin", origin},
+      {"run_dir", ctx.dir},
+      {"seed", std::to_string(ctx.seed)},
+      {"odometry_fifo", ctx.dir + "/" + kOdometryFifo}};
   vars.insert(vars.end(), ctx.set.links.begin(), ctx.set.links.end());
   const std::string command = Substitute(c.controller, vars);
   ctx.report.controller_command = command;

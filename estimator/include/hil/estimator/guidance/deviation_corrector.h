@@ -80,6 +80,8 @@ class DeviationCorrector {
   void OnRanges(const RangeSet& r);
   /// The command to send: the base navigation's, or the correction's in its place.
   VelocityCommand Command(const VelocityCommand& base) const;
+  /// Ends a correction under way without finishing it (the vehicle left the rows): follow.
+  void Abandon();
   const DeviationState& state() const { return state_; }
 
  private:

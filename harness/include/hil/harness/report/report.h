@@ -11,10 +11,11 @@
 #include "hil/harness/eval/evaluator.h"
 #include "hil/harness/eval/outage_metrics.h"
 #include "hil/harness/eval/path_tracking.h"
+#include "hil/harness/eval/row_deviation.h"
 #include "hil/harness/faults/fault_report.h"
 #include "hil/harness/links/can_bus_report.h"
-#include "hil/harness/report/steering_ecu_report.h"
 #include "hil/harness/report/closed_loop_faults_report.h"
+#include "hil/harness/report/steering_ecu_report.h"
 #include "hil/harness/scenario/scenario.h"
 
 namespace hil::harness {
@@ -80,6 +81,7 @@ struct RunReport {
   std::optional<ClosedLoopReport> closed_loop;  ///< closed loop: controller and actuator
   /// closed loop: each fault's effect on the path tracking (report.json `tracking.faults`)
   std::vector<FaultPathDeviation> tracking_faults;
+  std::optional<RowDeviation> row_following;  ///< closed loop in a greenhouse (paper 001)
   bool pass() const;
 };
 

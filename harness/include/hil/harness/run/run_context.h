@@ -70,6 +70,7 @@ struct RunContext {
   /// NMEA solution into, held open by the run so that neither side waits for the other.
   std::optional<ControllerProcess> controller;
   OwnedFd nav_fifo;
+  OwnedFd odometry_fifo;  ///< navd_mode gyro_odometry: the controller forwards the encoders here
   std::int64_t estimator_start_ns = 0;
   std::optional<link::RealtimePacer> pacer;  ///< real time or scaled; none in virtual mode
   std::optional<EstimateCollector> collector;

@@ -25,9 +25,9 @@ inline constexpr std::array<std::string_view, 6> kEstimatorOutputNames{
 
 /// navd's filter mode (scenario key estimator.navd_mode, navd.conf [filter] mode).
 /// kUwb: navd's UWB mode (paper 003), selected by the generated navd.conf's [uwb] section.
-enum class NavdMode { kGnssOnly, kEkf, kPlanar2d, kImuOnly, kMultiGnss, kUwb };
-inline constexpr std::array<std::string_view, 6> kNavdModeNames{
-    "gnss_only", "ekf", "planar2d", "imu_only", "multi_gnss", "uwb"};
+enum class NavdMode { kGnssOnly, kEkf, kPlanar2d, kImuOnly, kMultiGnss, kUwb, kGyroOdometry };
+inline constexpr std::array<std::string_view, 7> kNavdModeNames{
+    "gnss_only", "ekf", "planar2d", "imu_only", "multi_gnss", "uwb", "gyro_odometry"};
 
 /// The point of the vehicle the estimate describes (scenario key estimator.reference_point).
 enum class ReferencePoint {

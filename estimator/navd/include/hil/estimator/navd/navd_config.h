@@ -10,6 +10,7 @@
 #include "hil/estimator/navd/config_file.h"
 #include "hil/estimator/navd/navd_gnss_receivers.h"
 #include "hil/estimator/navd/navd_imu_config.h"
+#include "hil/estimator/navd/navd_odometry_config.h"
 #include "hil/estimator/navd/navd_uwb_config.h"
 #include "hil/estimator/navigator.h"
 
@@ -50,6 +51,8 @@ struct NavdConfig {
   NavdImuConfig imu;
   // [uwb]: navd's UWB mode when uwb.device is set (navd_uwb_config.h)
   NavdUwbConfig uwb;
+  // [odometry]: navd's gyro + wheel-odometry mode when odometry.device is set
+  NavdOdometryConfig odometry;
   // [time]
   int leap_seconds = 18;  ///< GPS − UTC until the receiver reports it
   // [filter]: mode and the estimator parameters (navigator.h, error_state_ekf.h)
