@@ -338,10 +338,10 @@ class Controller {
   g::PurePursuit pp_;
   int base_fd_;
   hil::guidanced::IsobusLink* isobus_;
-  g::FrontSteeredPlatform steering_;
   int odometry_fd_;
   hil::guidanced::RangeInputs* ranges_;
   g::DiffDrivePlatform platform_;
+  g::FrontSteeredPlatform steering_;
   std::optional<g::RowFollower> row_;
   std::array<std::int64_t, 8> asked_tod_ns_{};
   std::size_t asked_first_ = 0, asked_count_ = 0;

@@ -57,4 +57,8 @@ ConfigFile ConfigFile::Parse(const std::string& text, const std::string& name) {
 
 std::string FieldName(const ConfigEntry& e) { return "[" + e.section + "] " + e.key; }
 
+void FailAt(const ConfigFile& f, const ConfigEntry& e, const std::string& m) {
+  throw ConfigError(f.name(), e.line, FieldName(e), m);
+}
+
 }  // namespace hil::estimator

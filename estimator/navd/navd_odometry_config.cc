@@ -9,19 +9,15 @@
 namespace hil::estimator {
 namespace {
 
-[[noreturn]] void Fail(const ConfigFile& f, const ConfigEntry& e, const std::string& m) {
-  throw ConfigError(f.name(), e.line, "[" + e.section + "] " + e.key, m);
-}
-
 double Number(const ConfigFile& f, const ConfigEntry& e, double lo, double hi) {
   char* end = nullptr;
   const double v = std::strtod(e.value.c_str(), &end);
   if (e.value.empty() || end != e.value.c_str() + e.value.size() || !std::isfinite(v))
-    Fail(f, e, "expected a number, got '" + e.value + "'");
+    FailAt(f, e, "expected a number, got '" + e.value + "'");
   if (v < lo || v > hi) {
     std::ostringstream m;
     m << "value " << e.value << " out of range [" << lo << ", " << hi << "]";
-    Fail(f, e, m.str());
+    FailAt(f, e, m.str());
   }
   return v;
 }
@@ -59,13 +55,14 @@ const std::vector<NumberKey>& NumberKeys() {
 
 void ReadNavdOdometryKey(const ConfigFile& f, const ConfigEntry& e, NavdOdometryConfig& o) {
   if (e.key == "device") {
-    if (e.value.empty()) Fail(f, e, "expected a device path");
+    if (e.value.empty()) FailAt(f, e, "expected a device path");
     o.device = e.value;
     return;
   }
   if (e.key == "counts_per_rev") {
     const double v = Number(f, e, 1, 1e7);
-    if (v != std::floor(v)) Fail(f, e, "expected a whole number of counts, got '" + e.value + "'");
+    if (v != std::floor(v))
+      FailAt(f, e, "expected a whole number of counts, got '" + e.value + "'");
     o.counts_per_rev = static_cast<int>(v);
     return;
   }
@@ -75,7 +72,7 @@ void ReadNavdOdometryKey(const ConfigFile& f, const ConfigEntry& e, NavdOdometry
       return;
     }
   }
-  Fail(f, e, "unknown key");
+  FailAt(f, e, "unknown key");
 }
 
 }  // namespace hil::estimator

@@ -10,20 +10,16 @@
 namespace hil::estimator {
 namespace {
 
-[[noreturn]] void Fail(const ConfigFile& f, const ConfigEntry& e, const std::string& m) {
-  throw ConfigError(f.name(), e.line, FieldName(e), m);
-}
-
 double Number(const ConfigFile& f, const ConfigEntry& e, const std::string& text, double lo,
               double hi) {
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
   if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(v))
-    Fail(f, e, "expected a number, got '" + text + "'");
+    FailAt(f, e, "expected a number, got '" + text + "'");
   if (v < lo || v > hi) {
     std::ostringstream m;
     m << "value " << text << " out of range [" << lo << ", " << hi << "]";
-    Fail(f, e, m.str());
+    FailAt(f, e, m.str());
   }
   return v;
 }
@@ -32,8 +28,9 @@ int Baud(const ConfigFile& f, const ConfigEntry& e) {
   const double v = Number(f, e, e.value, 1, 4'000'000);
   const int baud = static_cast<int>(v);
   if (baud != v || !hil::navd::SerialSpeed(baud))
-    Fail(f, e,
-         "unsupported baud rate " + e.value + " (supported: " + hil::navd::SerialBaudList() + ")");
+    FailAt(
+        f, e,
+        "unsupported baud rate " + e.value + " (supported: " + hil::navd::SerialBaudList() + ")");
   return baud;
 }
 
@@ -45,10 +42,10 @@ std::array<double, 8> Anchors(const ConfigFile& f, const ConfigEntry& e) {
   while (std::getline(in, part, ',')) {
     const auto b = part.find_first_not_of(" \t"), en = part.find_last_not_of(" \t");
     part = b == std::string::npos ? "" : part.substr(b, en - b + 1);
-    if (n == a.size()) Fail(f, e, "expected eight numbers x1, y1, … x4, y4 (m)");
+    if (n == a.size()) FailAt(f, e, "expected eight numbers x1, y1, … x4, y4 (m)");
     a[n++] = Number(f, e, part, -1e4, 1e4);
   }
-  if (n != a.size()) Fail(f, e, "expected eight numbers x1, y1, … x4, y4 (m)");
+  if (n != a.size()) FailAt(f, e, "expected eight numbers x1, y1, … x4, y4 (m)");
   return a;
 }
 
@@ -57,17 +54,17 @@ std::array<double, 8> Anchors(const ConfigFile& f, const ConfigEntry& e) {
 void ReadNavdUwbKey(const ConfigFile& f, const ConfigEntry& e, NavdUwbConfig& u) {
   const std::string& k = e.key;
   if (k == "device" || k == "attitude_device") {
-    if (e.value.empty()) Fail(f, e, "expected a device path");
+    if (e.value.empty()) FailAt(f, e, "expected a device path");
     (k == "device" ? u.device : u.attitude_device) = e.value;
   } else if (k == "baud" || k == "attitude_baud") {
     (k == "baud" ? u.baud : u.attitude_baud) = Baud(f, e);
   } else if (k == "format") {
     if (e.value != "tdoa" && e.value != "tag_frame0")
-      Fail(f, e, "unknown format '" + e.value + "' (known: tdoa, tag_frame0)");
+      FailAt(f, e, "unknown format '" + e.value + "' (known: tdoa, tag_frame0)");
     u.format = e.value;
   } else if (k == "correction") {
     if (e.value != "paper003" && e.value != "none")
-      Fail(f, e, "unknown correction '" + e.value + "' (known: paper003, none)");
+      FailAt(f, e, "unknown correction '" + e.value + "' (known: paper003, none)");
     u.correction = e.value == "paper003";
   } else if (k == "anchors_m") {
     u.anchors_m = Anchors(f, e);
@@ -81,7 +78,7 @@ void ReadNavdUwbKey(const ConfigFile& f, const ConfigEntry& e, NavdUwbConfig& u)
     std::int64_t v = 0;
     const auto r = std::from_chars(e.value.data(), e.value.data() + e.value.size(), v);
     if (r.ec != std::errc() || r.ptr != e.value.data() + e.value.size() || v < 0)
-      Fail(f, e, "expected non-negative integer nanoseconds, got '" + e.value + "'");
+      FailAt(f, e, "expected non-negative integer nanoseconds, got '" + e.value + "'");
     u.time_zero_unix_ns = v;
   } else if (k == "attitude_rate_hz") {
     u.attitude_rate_hz = Number(f, e, e.value, 0.1, 1000);
@@ -92,7 +89,7 @@ void ReadNavdUwbKey(const ConfigFile& f, const ConfigEntry& e, NavdUwbConfig& u)
   } else if (k == "yaw_std_deg") {
     u.yaw_std_deg = Number(f, e, e.value, 0.001, 180);
   } else {
-    Fail(f, e, "unknown key");
+    FailAt(f, e, "unknown key");
   }
 }
 

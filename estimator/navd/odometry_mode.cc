@@ -17,6 +17,7 @@
 
 #include <Eigen/Geometry>
 
+#include "hil/estimator/angles.h"
 #include "hil/estimator/drivers/mcu_frame_decoder.h"
 #include "hil/estimator/drivers/mcu_imu_adapter.h"
 #include "hil/estimator/geodesy.h"
@@ -32,7 +33,7 @@ namespace {
 
 namespace est = hil::estimator;
 namespace odo = hil::estimator::odometry;
-constexpr double kDeg = std::numbers::pi / 180.0;
+using estimator::kDeg;
 constexpr std::int64_t kDayNs = 86400LL * 1'000'000'000LL;
 
 odo::WheelOdometryConfig NavigatorConfig(const est::NavdOdometryConfig& c) {

@@ -58,8 +58,10 @@ void BaseSerialDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
     next_tick_ += cfg_.control_period;
   }
   // the wheels' state now drives the truth from the next grid instant on (the first, at t = 0,
-  // from the start: the truth has no input before it)
-  const Time t_effect = t == Time{} ? t : t + Duration(1);
+  // from the start: the truth has no input before it), stamped exactly on it, as the steering
+  // ECU's: an instant between grid points (t + 1 ns) is applied one grid step apart by the truth
+  // integrated online and by its replay for the evaluation (truth.csv)
+  const Time t_effect = t == Time{} ? t : t + cfg_.grid;
   pending_ = VehicleCommand{t_effect, motors_.body_speed_mps(), motors_.body_yaw_rate_radps()};
   next_ = t + cfg_.grid;
 }

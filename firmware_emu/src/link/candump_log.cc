@@ -4,21 +4,12 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "hil/firmware_emu/link/hex_text.h"
+
 namespace hil::link {
 namespace {
 
 constexpr char kHexUpper[] = "0123456789ABCDEF";
-
-int HexValue(char c) {
-  if (c >= '0' && c <= '9') return c - '0';
-  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-  return -1;
-}
-
-void PutHex(std::string& out, std::uint32_t v, int digits) {
-  for (int i = digits - 1; i >= 0; --i) out += kHexUpper[(v >> (4 * i)) & 0xF];
-}
 
 // Reads `digits` hex digits at the front of `s`; nothing if any is not hex.
 std::optional<std::uint32_t> TakeHex(std::string_view& s, std::size_t digits) {

@@ -1,20 +1,9 @@
 #include "hil/firmware_emu/link/slcan_framing.h"
 
+#include "hil/firmware_emu/link/hex_text.h"
+
 namespace hil::link {
 namespace {
-
-constexpr char kHex[] = "0123456789ABCDEF";
-
-int HexValue(char c) {
-  if (c >= '0' && c <= '9') return c - '0';
-  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-  return -1;
-}
-
-void PutHex(std::string& s, std::uint32_t v, int digits) {
-  for (int i = digits - 1; i >= 0; --i) s.push_back(kHex[(v >> (4 * i)) & 0xF]);
-}
 
 // Parses `digits` hex digits at `at`; false on a non-hex digit or a short record.
 bool ParseHex(std::string_view s, std::size_t at, int digits, std::uint32_t& out) {

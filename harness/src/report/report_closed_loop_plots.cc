@@ -17,7 +17,7 @@ void Write(const std::string& path, const std::string& text) {
   if (!out) throw std::runtime_error("cannot write " + path);
 }
 
-PlotSeries Line(const char* label, const char* color) {
+PlotSeries NamedSeries(const char* label, const char* color) {
   return {label, color, PlotSeries::Style::kLine, {}, {}, 0};
 }
 
@@ -31,8 +31,8 @@ void WriteClosedLoopPlots(const RunReport& r, const ReportSeries& s, const std::
     c.x_label = "east (m)";
     c.y_label = "north (m)";
     c.equal_aspect = true;
-    PlotSeries path = Line("planned path", "#2ca02c"), truth = Line("truth", "#222222"),
-               est = Line("estimate", "#1f77b4");
+    PlotSeries path = NamedSeries("planned path", "#2ca02c"),
+               truth = NamedSeries("truth", "#222222"), est = NamedSeries("estimate", "#1f77b4");
     for (const auto& p : s.path_en_m) path.x.push_back(p.x()), path.y.push_back(p.y());
     for (const auto& p : s.truth_en_m) truth.x.push_back(p.x()), truth.y.push_back(p.y());
     for (const auto& e : s.estimate_errors)
@@ -46,7 +46,7 @@ void WriteClosedLoopPlots(const RunReport& r, const ReportSeries& s, const std::
     c.title = "Cross-track error of the truth against the distance along the path";
     c.x_label = "distance along the path (m)";
     c.y_label = "cross-track, + left (m)";
-    PlotSeries x = Line("truth XTE", "#222222");
+    PlotSeries x = NamedSeries("truth XTE", "#222222");
     x.x = r.tracking->s_m;
     x.y = r.tracking->xte_m;
     c.series = {x};
@@ -58,7 +58,7 @@ void WriteClosedLoopPlots(const RunReport& r, const ReportSeries& s, const std::
     c.title = "Steering: commanded against actual yaw rate (control ticks)";
     c.x_label = "time (s)";
     c.y_label = "yaw rate, + left (deg/s)";
-    PlotSeries cmd = Line("commanded", "#d62728"), act = Line("actual", "#1f77b4");
+    PlotSeries cmd = NamedSeries("commanded", "#d62728"), act = NamedSeries("actual", "#1f77b4");
     cmd.x = s.tick_t_s;
     cmd.y = s.commanded_yaw_rate_dps;
     act.x = s.tick_t_s;

@@ -44,4 +44,7 @@ class ConfigFile {
   std::vector<ConfigEntry> entries_;
 };
 
+/// Throws the ConfigError of entry `e` of file `f` with message `m`.
+[[noreturn]] void FailAt(const ConfigFile& f, const ConfigEntry& e, const std::string& m);
+
 }  // namespace hil::estimator
