@@ -1,6 +1,7 @@
 // guidanced: the guidance controller of a closed-loop run (estimator/guidanced/README.md). Reads
 // the estimator's solution as NMEA 0183 (GGA position, RMC speed, HDT heading: navd's
-// [output] nmea_device) and the planned path, runs pure pursuit at each solution, and commands a
+// [output] nmea_device) and the planned path, runs the selected tracker (pure pursuit or paper
+// 003's fuzzy controller, --controller) at each solution, and commands a
 // differential-drive base over the ROSArduinoBridge serial protocol (`m L R`). Event-driven: one
 // command per solution, no timers, so that a lockstep harness sees the same commands every run.
 // Fixed buffers after start-up; no allocation per solution.
@@ -25,6 +26,7 @@
 #include "hil/estimator/guidance/base_serial_client.h"
 #include "hil/estimator/guidance/path_file.h"
 #include "hil/estimator/guidance/path_tracker.h"
+#include "hil/estimator/guidance/selected_tracker.h"
 
 namespace {
 
@@ -35,6 +37,9 @@ struct Options {
   std::string path_file, nav, base;
   est::Lla origin;
   double speed_mps = 0.5, lookahead_m = 1.0;
+  g::TrackerKind controller = g::TrackerKind::kPurePursuit;
+  double wheelbase_m = 0, max_steer_deg = 32;  // front-steered platform (0: none)
+  g::FuzzyTrackerConfig fuzzy;                 // --controller fuzzy
   double track_m = 0.5, wheel_radius_m = 0.1, max_wheel_radps = 20, pid_rate_hz = 30;
   int counts_per_rev = 1200;
 };
@@ -42,7 +47,9 @@ struct Options {
 [[noreturn]] void Usage(const char* why) {
   std::fprintf(stderr,
                "guidanced: %s\nusage: guidanced --path FILE --origin LAT,LON,H --nav NMEA_IN "
-               "--base TTY [--speed M/S] [--lookahead M] [--track M] [--wheel-radius M] "
+               "--base TTY [--controller pure_pursuit|fuzzy] [--speed M/S] [--lookahead M] "
+               "[--wheelbase M] [--max-steer-deg DEG] [--fuzzy-k-alpha-deg DEG] "
+               "[--fuzzy-heading-preview M] [--track M] [--wheel-radius M] "
                "[--counts-per-rev N] [--pid-rate HZ] [--max-wheel-speed RAD/S]\n",
                why);
   std::exit(2);
@@ -76,6 +83,18 @@ Options Parse(int argc, char** argv) {
       o.speed_mps = Number("--speed", v);
     } else if (k == "--lookahead") {
       o.lookahead_m = Number("--lookahead", v);
+    } else if (k == "--controller") {
+      const std::optional<g::TrackerKind> kind = g::ParseTrackerKind(v);
+      if (!kind) Usage("--controller: expected pure_pursuit or fuzzy");
+      o.controller = *kind;
+    } else if (k == "--wheelbase") {
+      o.wheelbase_m = Number("--wheelbase", v);
+    } else if (k == "--max-steer-deg") {
+      o.max_steer_deg = Number("--max-steer-deg", v);
+    } else if (k == "--fuzzy-k-alpha-deg") {
+      o.fuzzy.k_alpha_deg = Number("--fuzzy-k-alpha-deg", v);
+    } else if (k == "--fuzzy-heading-preview") {
+      o.fuzzy.heading_preview_m = Number("--fuzzy-heading-preview", v);
     } else if (k == "--track") {
       o.track_m = Number("--track", v);
     } else if (k == "--wheel-radius") {
@@ -131,7 +150,7 @@ class Controller {
       : o_(o),
         path_(std::move(path)),
         frame_(o.origin),
-        pp_(Config(o)),
+        tracker_(Config(o)),
         base_fd_(base_fd),
         platform_{o.track_m, o.wheel_radius_m, o.max_wheel_radps} {}
 
@@ -156,9 +175,13 @@ class Controller {
   std::uint64_t commands() const { return commands_; }
 
  private:
-  static g::PurePursuitConfig Config(const Options& o) {
-    g::PurePursuitConfig c;
-    c.lookahead_m = o.lookahead_m;
+  static g::SelectedTrackerConfig Config(const Options& o) {
+    g::SelectedTrackerConfig c;
+    c.kind = o.controller;
+    c.pure_pursuit.lookahead_m = o.lookahead_m;
+    c.fuzzy = o.fuzzy;
+    c.wheelbase_m = o.wheelbase_m;
+    c.max_steer_deg = o.max_steer_deg;
     return c;
   }
   void Command() {
@@ -166,7 +189,7 @@ class Controller {
     pose.p_EN_m = p_EN_m_;
     pose.yaw_rad = (90.0 - heading_deg_) * std::numbers::pi / 180.0;
     pose.speed_mps = speed_mps_;
-    const g::TrackingCommand c = pp_.Update(path_, pose);
+    const g::TrackingCommand c = tracker_.Update(path_, pose);
     const double v = c.end_of_path ? 0.0 : o_.speed_mps;
     const g::WheelSpeeds w = platform_.FromSpeedAndCurvature(v, c.curvature_left_per_m);
     const g::BaseCommandLine line =
@@ -179,7 +202,7 @@ class Controller {
   Options o_;
   g::PlannedPath path_;
   est::LocalTangentFrame frame_;
-  g::PurePursuit pp_;
+  g::SelectedTracker tracker_;
   int base_fd_;
   g::DiffDrivePlatform platform_;
   Eigen::Vector2d p_EN_m_{0, 0};

@@ -490,6 +490,7 @@ int main(int argc, char** argv) {
   SolutionOutputs outputs;
   if (!outputs.Open(cfg)) return 2;
   InstallSignalHandlers();
-  if (cfg.uwb.enabled()) return hil::navd::RunUwbMode(cfg, outputs.out, &g_stop);  // paper 003
+  if (cfg.uwb.enabled())
+    return hil::navd::RunUwbMode(cfg, outputs.out, outputs.nmea_fd, &g_stop);  // paper 003
   return Run(cfg, outputs);
 }
