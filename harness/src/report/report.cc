@@ -126,6 +126,13 @@ MetricTable RunMetricTable(const RunReport& r) {
     t["tracking.heading_error_rms_deg"] = v(x.heading_rmse_deg);
     t["tracking.settling_distance_m"] = r.tracking->settling_distance_m;
     t["tracking.settling_time_s"] = r.tracking->settling_time_s;
+    const XteStats& f = r.tracking->from_start;
+    t["tracking.from_start_mean_abs_m"] =
+        f.samples ? std::optional<double>(f.mean_abs_m) : std::nullopt;
+    t["tracking.from_start_max_abs_m"] =
+        f.samples ? std::optional<double>(f.max_abs_m) : std::nullopt;
+    t["tracking.stable_distance_m"] = r.tracking->stable_distance_m;
+    t["tracking.steady_state_mean_abs_m"] = r.tracking->steady_state_mean_abs_m;
   }
   if (r.closed_loop) {
     t["closed_loop.missing_commands"] = static_cast<double>(r.closed_loop->missing_commands);
@@ -219,6 +226,9 @@ nlohmann::json TrackingJson(const TrackingMetrics& m) {
   j["settling_distance_m"] = OptionalJson(m.settling_distance_m);
   j["settling_time_s"] = OptionalJson(m.settling_time_s);
   j["distance_travelled_m"] = m.distance_travelled_m;
+  j["from_start"] = XteJson(m.from_start);
+  j["stable_distance_m"] = OptionalJson(m.stable_distance_m);
+  j["steady_state_mean_abs_m"] = OptionalJson(m.steady_state_mean_abs_m);
   j["segments"] = nlohmann::json::array();
   for (const SegmentTracking& s : m.segments) {
     nlohmann::json e = XteJson(s.stats);
