@@ -166,5 +166,20 @@ TEST(VirtualDeterminismE2eTest, UwbAndWt901cRunsGiveTheSameBytes) {
       << "the WT901C's heading reaches navd with the UWB fix of its time";
 }
 
+// Paper 003 in the closed loop: navd's UWB solution as NMEA into guidanced (fuzzy), its commands
+// to the base at the control ticks: the same commands, sensor bytes and truth both ways.
+TEST(VirtualDeterminismE2eTest, UwbClosedLoopRunsGiveTheSameBytes) {
+  TempDir dir("e2e_virtual_uwb_closed_loop");
+  const std::string s = SourceDir() + "/vectors/scenarios/seed003_rectangle_fuzzy.yaml";
+  RunTwiceSecondUnderLoad(s + " --short", dir);
+  if (HasFatalFailure()) return;
+  const std::string base = ReadFile(dir / "a/captures/ttyBASE.cap");
+  EXPECT_GT(std::count(base.begin(), base.end(), '\n'), 300) << "5 Hz commands and replies";
+  ExpectSameFiles(dir, {"captures/ttyBASE.cap", "captures/ttyUWB.cap", "captures/ttyWIT.cap",
+                        "estimate.jsonl", "truth.csv"});
+  const auto ra = nlohmann::json::parse(ReadFile(dir / "a/report.json"));
+  EXPECT_EQ(ra["closed_loop"]["missing_commands"].get<int>(), 0);
+}
+
 }  // namespace
 }  // namespace hil::test
