@@ -1,10 +1,11 @@
 // guidanced: the guidance controller of a closed-loop run (estimator/guidanced/README.md). Reads
 // the estimator's solution as NMEA 0183 (GGA position, RMC speed, HDT heading: navd's
 // [output] nmea_device) and the planned path, runs the selected tracker (pure pursuit or paper
-// 003's fuzzy controller, --controller) at each solution, and commands a
-// differential-drive base over the ROSArduinoBridge serial protocol (`m L R`). Event-driven: one
-// command per solution, no timers, so that a lockstep harness sees the same commands every run.
-// Fixed buffers after start-up; no allocation per solution.
+// 003's fuzzy controller, --controller) at each solution, and commands a differential-drive base
+// over the ROSArduinoBridge serial protocol (`m L R`), or a front-steered vehicle's steering ECU
+// over ISO 11783-7 (Guidance System Command, on SocketCAN or a serial SLCAN adapter:
+// isobus_link.h). Event-driven: one command per solution, no timers, so that a lockstep harness
+// sees the same commands every run. Fixed buffers after start-up; no allocation per solution.
 #include <fcntl.h>
 #include <poll.h>
 #include <termios.h>
@@ -27,6 +28,9 @@
 #include "hil/estimator/guidance/path_file.h"
 #include "hil/estimator/guidance/path_tracker.h"
 #include "hil/estimator/guidance/selected_tracker.h"
+#include "hil/estimator/guidance/vehicle.h"
+
+#include "isobus_link.h"
 
 namespace {
 
@@ -35,23 +39,29 @@ namespace g = hil::estimator::guidance;
 
 struct Options {
   std::string path_file, nav, base;
+  std::string isobus;  // a CAN interface, or the SLCAN adapter's tty (isobus_slcan)
+  bool isobus_slcan = false;
   est::Lla origin;
   double speed_mps = 0.5, lookahead_m = 1.0;
   g::TrackerKind controller = g::TrackerKind::kPurePursuit;
-  double wheelbase_m = 0, max_steer_deg = 32;  // front-steered platform (0: none)
-  g::FuzzyTrackerConfig fuzzy;                 // --controller fuzzy
+  g::FuzzyTrackerConfig fuzzy;  // --controller fuzzy
   double track_m = 0.5, wheel_radius_m = 0.1, max_wheel_radps = 20, pid_rate_hz = 30;
   int counts_per_rev = 1200;
+  double wheelbase_m = 2.5, max_steer_deg = 35;
+  bool steering_given = false;  // --wheelbase: trackers limited to it (a diff base too)
+  int guidance_address = 0x80, ecu_address = 0x1C;
 };
 
 [[noreturn]] void Usage(const char* why) {
-  std::fprintf(stderr,
-               "guidanced: %s\nusage: guidanced --path FILE --origin LAT,LON,H --nav NMEA_IN "
-               "--base TTY [--controller pure_pursuit|fuzzy] [--speed M/S] [--lookahead M] "
-               "[--wheelbase M] [--max-steer-deg DEG] [--fuzzy-k-alpha-deg DEG] "
-               "[--fuzzy-heading-preview M] [--track M] [--wheel-radius M] "
-               "[--counts-per-rev N] [--pid-rate HZ] [--max-wheel-speed RAD/S]\n",
-               why);
+  std::fprintf(
+      stderr,
+      "guidanced: %s\nusage: guidanced --path FILE --origin LAT,LON,H --nav NMEA_IN "
+      "(--base TTY | --isobus-can IFACE | --isobus-slcan TTY) [--controller pure_pursuit|fuzzy] "
+      "[--speed M/S] [--lookahead M] [--fuzzy-k-alpha-deg DEG] [--fuzzy-heading-preview M] "
+      "[--track M] [--wheel-radius M] [--counts-per-rev N] [--pid-rate HZ] "
+      "[--max-wheel-speed RAD/S] [--wheelbase M] [--max-steer-deg DEG] "
+      "[--guidance-address N] [--ecu-address N]\n",
+      why);
   std::exit(2);
 }
 
@@ -61,6 +71,34 @@ double Number(const char* key, const char* v) {
   if (end == v || *end != '\0' || !std::isfinite(x))
     Usage((std::string(key) + ": not a number: " + v).c_str());
   return x;
+}
+
+int Address(const char* key, const char* v) {
+  char* end = nullptr;
+  const long a = std::strtol(v, &end, 0);
+  if (end == v || *end != '\0' || a < 0 || a > 253)
+    Usage((std::string(key) + ": not a source address 0-253: " + v).c_str());
+  return static_cast<int>(a);
+}
+
+// The ISOBUS channel's options; false for an option that is none of them.
+bool ParseIsobusOption(const std::string& k, const char* v, Options& o) {
+  if (k == "--isobus-can" || k == "--isobus-slcan") {
+    o.isobus = v;
+    o.isobus_slcan = k == "--isobus-slcan";
+  } else if (k == "--wheelbase") {
+    o.wheelbase_m = Number("--wheelbase", v);
+    o.steering_given = true;
+  } else if (k == "--max-steer-deg") {
+    o.max_steer_deg = Number("--max-steer-deg", v);
+  } else if (k == "--guidance-address") {
+    o.guidance_address = Address("--guidance-address", v);
+  } else if (k == "--ecu-address") {
+    o.ecu_address = Address("--ecu-address", v);
+  } else {
+    return false;
+  }
+  return true;
 }
 
 Options Parse(int argc, char** argv) {
@@ -87,10 +125,6 @@ Options Parse(int argc, char** argv) {
       const std::optional<g::TrackerKind> kind = g::ParseTrackerKind(v);
       if (!kind) Usage("--controller: expected pure_pursuit or fuzzy");
       o.controller = *kind;
-    } else if (k == "--wheelbase") {
-      o.wheelbase_m = Number("--wheelbase", v);
-    } else if (k == "--max-steer-deg") {
-      o.max_steer_deg = Number("--max-steer-deg", v);
     } else if (k == "--fuzzy-k-alpha-deg") {
       o.fuzzy.k_alpha_deg = Number("--fuzzy-k-alpha-deg", v);
     } else if (k == "--fuzzy-heading-preview") {
@@ -105,12 +139,12 @@ Options Parse(int argc, char** argv) {
       o.pid_rate_hz = Number("--pid-rate", v);
     } else if (k == "--max-wheel-speed") {
       o.max_wheel_radps = Number("--max-wheel-speed", v);
-    } else {
+    } else if (!ParseIsobusOption(k, v, o)) {
       Usage(("unknown option " + k).c_str());
     }
   }
-  if (o.path_file.empty() || o.nav.empty() || o.base.empty())
-    Usage("--path, --nav and --base are required");
+  if (o.path_file.empty() || o.nav.empty() || o.base.empty() == o.isobus.empty())
+    Usage("--path, --nav and one of --base, --isobus-can, --isobus-slcan are required");
   return o;
 }
 
@@ -146,13 +180,15 @@ std::optional<double> ParseHdt(std::string_view s) {
 // The controller's state between solutions.
 class Controller {
  public:
-  Controller(const Options& o, g::PlannedPath path, int base_fd)
+  Controller(const Options& o, g::PlannedPath path, int base_fd, hil::guidanced::IsobusLink* isobus)
       : o_(o),
         path_(std::move(path)),
         frame_(o.origin),
         tracker_(Config(o)),
         base_fd_(base_fd),
-        platform_{o.track_m, o.wheel_radius_m, o.max_wheel_radps} {}
+        isobus_(isobus),
+        platform_{o.track_m, o.wheel_radius_m, o.max_wheel_radps},
+        steering_{o.wheelbase_m, o.max_steer_deg * std::numbers::pi / 180.0} {}
 
   // One NMEA sentence of the solution (without CR LF).
   void OnSentence(std::string_view s) {
@@ -180,7 +216,8 @@ class Controller {
     c.kind = o.controller;
     c.pure_pursuit.lookahead_m = o.lookahead_m;
     c.fuzzy = o.fuzzy;
-    c.wheelbase_m = o.wheelbase_m;
+    // a front-steered vehicle's limits (on ISOBUS, or given for a base standing in for one)
+    c.wheelbase_m = o.steering_given || !o.isobus.empty() ? o.wheelbase_m : 0.0;
     c.max_steer_deg = o.max_steer_deg;
     return c;
   }
@@ -190,6 +227,10 @@ class Controller {
     pose.yaw_rad = (90.0 - heading_deg_) * std::numbers::pi / 180.0;
     pose.speed_mps = speed_mps_;
     const g::TrackingCommand c = tracker_.Update(path_, pose);
+    if (isobus_) {
+      SteerCommand(c);
+      return;
+    }
     const double v = c.end_of_path ? 0.0 : o_.speed_mps;
     const g::WheelSpeeds w = platform_.FromSpeedAndCurvature(v, c.curvature_left_per_m);
     const g::BaseCommandLine line =
@@ -199,12 +240,28 @@ class Controller {
       ++commands_;
   }
 
+  // ISOBUS: the curvature (the reachable one) to the steering ECU; "not intended to steer" at the
+  // path's end, and once when the ECU asks for it after an exit (request reset).
+  void SteerCommand(const g::TrackingCommand& c) {
+    std::uint8_t status = g::kIntendedToSteer;
+    if (c.end_of_path || isobus_->reset_requested()) status = g::kNotIntendedToSteer;
+    isobus_->clear_reset_request();
+    const double kappa = c.end_of_path ? 0.0 : steering_.Reachable(c.curvature_left_per_m);
+    g::SystemCommandAddress a;
+    a.source = static_cast<std::uint8_t>(o_.guidance_address);
+    a.destination = static_cast<std::uint8_t>(o_.ecu_address);
+    if (isobus_->Send(g::EncodeSystemCommand(a, g::IsobusCurvatureFromLeft(kappa), status)))
+      ++commands_;
+  }
+
   Options o_;
   g::PlannedPath path_;
   est::LocalTangentFrame frame_;
   g::SelectedTracker tracker_;
   int base_fd_;
+  hil::guidanced::IsobusLink* isobus_;
   g::DiffDrivePlatform platform_;
+  g::FrontSteeredPlatform steering_;
   Eigen::Vector2d p_EN_m_{0, 0};
   double heading_deg_ = 0, speed_mps_ = 0;
   bool have_fix_ = false;
@@ -237,7 +294,7 @@ class LineSplitter {
   bool overflow_ = false;
 };
 
-int Loop(Controller& ctl, int nav_fd, int base_fd) {
+int Loop(Controller& ctl, int nav_fd, int base_fd, hil::guidanced::IsobusLink* isobus) {
   LineSplitter nav;
   g::BaseReplyReader replies;
   std::array<char, 4096> buf{};
@@ -254,7 +311,9 @@ int Loop(Controller& ctl, int nav_fd, int base_fd) {
         nav.Feed(buf.data(), static_cast<std::size_t>(n),
                  [&](std::string_view s) { ctl.OnSentence(s); });
     }
-    if (fds[1].revents) {
+    if (fds[1].revents && isobus) {
+      if (!isobus->OnReadable()) return 0;  // the link ended
+    } else if (fds[1].revents) {
       const ssize_t n = read(base_fd, buf.data(), buf.size());
       if (n <= 0 && errno != EINTR && errno != EAGAIN) return 0;  // the base's port closed
       for (ssize_t i = 0; i < n; ++i) replies.Feed(buf[static_cast<std::size_t>(i)]);
@@ -273,7 +332,15 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "guidanced: %s\n", e.what());
     return 2;
   }
-  const int base_fd = OpenBase(o.base);
+  hil::guidanced::IsobusLink isobus;
+  const bool on_isobus = !o.isobus.empty();
+  if (on_isobus &&
+      !isobus.Open(o.isobus, o.isobus_slcan, static_cast<std::uint8_t>(o.ecu_address))) {
+    std::fprintf(stderr, "guidanced: cannot open the ISOBUS link %s: %s\n", o.isobus.c_str(),
+                 std::strerror(errno));
+    return 1;
+  }
+  const int base_fd = on_isobus ? isobus.fd() : OpenBase(o.base);
   if (base_fd < 0) {
     std::fprintf(stderr, "guidanced: cannot open the base %s: %s\n", o.base.c_str(),
                  std::strerror(errno));
@@ -285,9 +352,13 @@ int main(int argc, char** argv) {
                  std::strerror(errno));
     return 1;
   }
-  Controller ctl(o, std::move(path), base_fd);
-  const int rc = Loop(ctl, nav_fd, base_fd);
+  Controller ctl(o, std::move(path), base_fd, on_isobus ? &isobus : nullptr);
+  const int rc = Loop(ctl, nav_fd, base_fd, on_isobus ? &isobus : nullptr);
   std::fprintf(stderr, "guidanced: stopped; commands=%llu\n",
                static_cast<unsigned long long>(ctl.commands()));
+  if (on_isobus)
+    std::fprintf(stderr, "guidanced: machine_infos=%llu refusals=%llu\n",
+                 static_cast<unsigned long long>(isobus.machine_infos()),
+                 static_cast<unsigned long long>(isobus.refusals()));
   return rc;
 }

@@ -179,7 +179,24 @@ TEST(VirtualDeterminismE2eTest, UwbClosedLoopRunsGiveTheSameBytes) {
                         "estimate.jsonl", "truth.csv"});
   const auto ra = nlohmann::json::parse(ReadFile(dir / "a/report.json"));
   EXPECT_EQ(ra["closed_loop"]["missing_commands"].get<int>(), 0);
-}
+  // The ISOBUS closed loop (tractor over a serial SLCAN adapter): guidanced's Guidance System
+  // Commands and the steering ECU's Machine Info / Wheel-based Speed records on ttyCAN, the
+  // sensors' bytes and the truth the road wheels drove are the same both ways.
+  TEST(VirtualDeterminismE2eTest, IsobusClosedLoopRunsGiveTheSameBytes) {
+    TempDir dir("e2e_virtual_closed_loop_isobus");
+    const std::string s =
+        SourceDir() + "/vectors/scenarios/closed_loop/tractor_autosteer_slcan.yaml";
+    RunTwiceSecondUnderLoad(s + " --short --no-html", dir);
+    if (HasFatalFailure()) return;
+    const std::string can = ReadFile(dir / "a/captures/ttyCAN.cap");
+    EXPECT_GT(std::count(can.begin(), can.end(), '\n'), 700) << "commands and status records";
+    ExpectSameFiles(dir, {"captures/ttyCAN.cap", "captures/ttyGPS.cap", "captures/ttyIMU.cap",
+                          "estimate.jsonl", "truth.csv"});
+    const auto ra = nlohmann::json::parse(ReadFile(dir / "a/report.json"));
+    const auto rb = nlohmann::json::parse(ReadFile(dir / "b/report.json"));
+    EXPECT_EQ(ra["tracking"], rb["tracking"]);
+    EXPECT_EQ(ra["closed_loop"]["steering_ecu"], rb["closed_loop"]["steering_ecu"]);
+  }
 
 }  // namespace
 }  // namespace hil::test

@@ -4,6 +4,8 @@
 #include <map>
 #include <sstream>
 
+#include "path_file_boustrophedon.h"
+
 namespace hil::harness {
 namespace {
 
@@ -57,11 +59,19 @@ std::vector<Line> Lines(const std::string& file) {
 }  // namespace
 
 std::vector<Eigen::Vector2d> ReadPathVertices(const std::string& file) {
+  return ReadPathFile(file).vertices;
+}
+
+PathFileShape ReadPathFile(const std::string& file) {
   const std::vector<Line> lines = Lines(file);
   if (lines.empty() || lines[0].keyword != "hil-path" || !lines[0].fields.count("1"))
     Fail(file, lines.empty() ? 1 : lines[0].number, "hil-path", "the header 'hil-path 1' first");
   if (lines.size() < 2) Fail(file, lines[0].number, "shape", "no shape after the header");
   const Line& shape = lines[1];
+  if (shape.keyword == "boustrophedon") {
+    if (lines.size() > 2) Fail(file, lines[2].number, lines[2].keyword, "one shape per file");
+    return BoustrophedonShape(file, shape.number, shape.fields);
+  }
   std::vector<Eigen::Vector2d> v;
   if (shape.keyword == "ab_line") {
     const Eigen::Vector2d a = Point(file, shape, "a_m"), b = Point(file, shape, "b_m");
@@ -79,9 +89,12 @@ std::vector<Eigen::Vector2d> ReadPathVertices(const std::string& file) {
     if (v.size() < 2) Fail(file, shape.number, "vertex", "a polyline needs at least 2 vertices");
   } else {
     Fail(file, shape.number, shape.keyword,
-         "the evaluator scores ab_line and polyline paths (arcs are not read here)");
+         "the evaluator scores ab_line, polyline and boustrophedon paths");
   }
-  return v;
+  PathFileShape out;
+  for (std::size_t e = 0; e + 1 < v.size(); ++e) out.spans.push_back({e, e + 1, false});
+  out.vertices = std::move(v);
+  return out;
 }
 
 }  // namespace hil::harness

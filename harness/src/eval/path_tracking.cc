@@ -81,10 +81,38 @@ void ScoreFromStart(const std::vector<Foot>& feet, const std::vector<TrackSample
   m.steady_state_mean_abs_m = sum / static_cast<double>(track.size() - *stable);
 }
 
+// Per segment: the samples of its edges together (each edge alone without spans).
+std::vector<SegmentTracking> SegmentFigures(const std::vector<double>& s0,
+                                            const std::vector<std::vector<double>>& seg_xte,
+                                            const std::vector<std::vector<double>>& seg_head,
+                                            std::vector<PathSpan> spans) {
+  if (spans.empty()) {
+    for (std::size_t e = 0; e < seg_xte.size(); ++e) spans.push_back({e, e + 1, false});
+  }
+  std::vector<SegmentTracking> out;
+  for (std::size_t k = 0; k < spans.size(); ++k) {
+    const PathSpan& sp = spans[k];
+    std::vector<double> xte, head;
+    for (std::size_t e = sp.first_edge; e < sp.end_edge && e < seg_xte.size(); ++e) {
+      xte.insert(xte.end(), seg_xte[e].begin(), seg_xte[e].end());
+      head.insert(head.end(), seg_head[e].begin(), seg_head[e].end());
+    }
+    SegmentTracking st;
+    st.index = static_cast<int>(k);
+    st.kind = sp.turn ? "turn" : "straight";
+    st.start_s_m = s0[std::min(sp.first_edge, s0.size() - 1)];
+    st.end_s_m = s0[std::min(sp.end_edge, s0.size() - 1)];
+    st.stats = Stats(xte, head);
+    out.push_back(st);
+  }
+  return out;
+}
+
 }  // namespace
 
 TrackingMetrics ScoreTracking(const std::vector<Eigen::Vector2d>& path,
-                              const std::vector<TrackSample>& track, double settle_band_m) {
+                              const std::vector<TrackSample>& track, double settle_band_m,
+                              const std::vector<PathSpan>& spans) {
   TrackingMetrics m;
   m.settle_band_m = settle_band_m;
   if (path.size() < 2 || track.empty()) return m;
@@ -124,14 +152,17 @@ TrackingMetrics ScoreTracking(const std::vector<Eigen::Vector2d>& path,
   }
   m.all = Stats(xte, head);
   ScoreFromStart(feet, track, m);
-  for (std::size_t e = 0; e + 1 < path.size(); ++e) {
-    SegmentTracking st;
-    st.index = static_cast<int>(e);
-    st.start_s_m = s0[e];
-    st.end_s_m = s0[e + 1];
-    st.stats = Stats(seg_xte[e], seg_head[e]);
-    m.segments.push_back(st);
+  m.segments = SegmentFigures(s0, seg_xte, seg_head, spans);
+  std::vector<double> kind_xte[2], kind_head[2];  // straight, turn
+  for (std::size_t e = 0; e < seg_xte.size(); ++e) {
+    bool turn = false;
+    for (const PathSpan& sp : spans)
+      turn = turn || (sp.turn && e >= sp.first_edge && e < sp.end_edge);
+    kind_xte[turn].insert(kind_xte[turn].end(), seg_xte[e].begin(), seg_xte[e].end());
+    kind_head[turn].insert(kind_head[turn].end(), seg_head[e].begin(), seg_head[e].end());
   }
+  m.straight = Stats(kind_xte[0], kind_head[0]);
+  m.turns = Stats(kind_xte[1], kind_head[1]);
   return m;
 }
 

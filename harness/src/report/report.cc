@@ -124,6 +124,12 @@ MetricTable RunMetricTable(const RunReport& r) {
     t["tracking.cross_track_p95_abs_m"] = v(x.p95_abs_m);
     t["tracking.cross_track_max_abs_m"] = v(x.max_abs_m);
     t["tracking.heading_error_rms_deg"] = v(x.heading_rmse_deg);
+    const XteStats& st = r.tracking->straight;
+    const auto vs = [&st](double d) {
+      return st.samples > 0 ? std::optional<double>(d) : std::nullopt;
+    };
+    t["tracking.straight.cross_track_mean_abs_m"] = vs(st.mean_abs_m);
+    t["tracking.straight.cross_track_p95_abs_m"] = vs(st.p95_abs_m);
     t["tracking.settling_distance_m"] = r.tracking->settling_distance_m;
     t["tracking.settling_time_s"] = r.tracking->settling_time_s;
     const XteStats& f = r.tracking->from_start;
@@ -229,6 +235,8 @@ nlohmann::json TrackingJson(const TrackingMetrics& m) {
   j["from_start"] = XteJson(m.from_start);
   j["stable_distance_m"] = OptionalJson(m.stable_distance_m);
   j["steady_state_mean_abs_m"] = OptionalJson(m.steady_state_mean_abs_m);
+  j["straight"] = XteJson(m.straight);
+  j["turns"] = XteJson(m.turns);
   j["segments"] = nlohmann::json::array();
   for (const SegmentTracking& s : m.segments) {
     nlohmann::json e = XteJson(s.stats);
@@ -323,7 +331,11 @@ void WriteReportJson(const RunReport& r, const std::string& path) {
   j["links"] = {{"gnss_bytes", r.gnss_bytes}, {"gnss_messages_dropped", r.gnss_messages_dropped}};
   if (r.can) j["can"] = CanBusJson(*r.can);
   if (r.tracking) j["tracking"] = TrackingJson(*r.tracking);
-  if (r.closed_loop) j["closed_loop"] = ClosedLoopJson(*r.closed_loop);
+  if (r.closed_loop) {
+    j["closed_loop"] = ClosedLoopJson(*r.closed_loop);
+    if (r.closed_loop->steering_ecu)
+      j["closed_loop"]["steering_ecu"] = SteeringEcuJson(*r.closed_loop->steering_ecu);
+  }
   auto out = OpenOut(path);
   out << j.dump(2) << "\n";
   if (!out) throw std::runtime_error("cannot write " + path);

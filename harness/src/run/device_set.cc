@@ -5,6 +5,7 @@
 #include "hil/firmware_emu/mcu/mcu_device.h"
 #include "hil/firmware_emu/rangefinder/tf_luna_device.h"
 
+#include "device_set_isobus.h"
 #include "device_set_paper003.h"
 
 namespace hil::harness {
@@ -136,7 +137,7 @@ void AddRangeSensors(const Scenario& s, std::uint64_t seed, const std::string& d
 // Closed loop: the differential-drive base on its serial link (RUN_DIR/<link>, e.g. ttyBASE).
 void AddBase(const Scenario& s, const std::string& dir, DeviceSet& set) {
   const ClosedLoopSpec& c = s.closed_loop;
-  if (!c.enabled) return;
+  if (!c.enabled || c.channel != ClosedLoopSpec::Channel::kSerialBase) return;
   actuator::BaseSerialDeviceConfig cfg;
   cfg.motors = c.motors;
   cfg.serial.pid_rate_hz = c.pid_rate_hz;
@@ -165,6 +166,7 @@ DeviceSet BuildDevices(const Scenario& scenario, std::uint64_t seed, const std::
                      run_dir, set);
   AddRangeSensors(scenario, seed, run_dir, set);
   AddBase(scenario, run_dir, set);
+  AddIsobusSteering(scenario, run_dir, set);
   return set;
 }
 

@@ -129,8 +129,9 @@ std::optional<double> DistanceAfter(const std::vector<TrackSample>& track,
 // Closed loop: the truth against the planned path, and what the controller and the base did.
 void EvaluateClosedLoop(RunContext& ctx, const TruthTable& truth) {
   RunReport& report = ctx.report;
-  report.tracking = ScoreTracking(ReadPathVertices(ctx.scenario.closed_loop.path_file),
-                                  TruthTrack(ctx, truth, ctx.t_from));
+  const PathFileShape path = ReadPathFile(ctx.scenario.closed_loop.path_file);
+  report.tracking =
+      ScoreTracking(path.vertices, TruthTrack(ctx, truth, ctx.t_from), 0.05, path.spans);
   const std::vector<TrackSample> track = TruthTrack(ctx, truth, Time{});  // the whole run
   ClosedLoopReport c;
   c.controller_command = report.controller_command;
@@ -154,6 +155,23 @@ void EvaluateClosedLoop(RunContext& ctx, const TruthTable& truth) {
     c.distance_after_last_command_m = DistanceAfter(track, k.last_command);
     if (m.watchdog_trips > 0)
       c.distance_after_watchdog_m = DistanceAfter(track, m.last_watchdog_trip);
+  }
+  if (const actuator::IsobusSteeringDevice* ecu = ctx.set.steering) {
+    const auto& k = ecu->counters();
+    const auto& e = ecu->ecu().counters();
+    c.control_ticks = k.ticks;
+    c.missing_commands = k.missing_commands;
+    if (k.first_missing) c.first_missing_s = ToSeconds(*k.first_missing);
+    if (k.last_command) c.last_command_s = ToSeconds(*k.last_command);
+    c.command_bytes_lost = k.frames_lost;
+    c.motor_commands = e.commands_accepted;
+    c.invalid_lines = e.wrong_length + e.unknown_source + e.out_of_range;
+    c.watchdog_trips = e.watchdog_trips;
+    if (e.watchdog_trips > 0) c.watchdog_trip_s = ToSeconds(e.last_watchdog_trip);
+    c.distance_after_last_command_m = DistanceAfter(track, k.last_command);
+    if (e.watchdog_trips > 0)
+      c.distance_after_watchdog_m = DistanceAfter(track, e.last_watchdog_trip);
+    c.steering_ecu = MakeSteeringEcuReport(*ecu);
   }
   if (!track.empty()) c.final_speed_mps = track.back().speed_mps;
   c.stopped = std::fabs(c.final_speed_mps) < 0.01;

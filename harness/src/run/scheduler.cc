@@ -143,6 +143,11 @@ bool Scheduler::HostStep(Time t_event, SchedulerMonitor& monitor, DeviceOutput& 
     arrivals_.pop_front();
     return true;
   }
+  if (!bus_arrivals_.empty() && bus_arrivals_.front().t <= std::min(t_event, t_end_)) {
+    DeliverBusFrame(bus_arrivals_.front().t, bus_arrivals_.front().frame, out);
+    bus_arrivals_.pop_front();
+    return true;
+  }
   const Time t_turn = NextHostTurn();
   if (t_turn > t_event || t_turn > t_end_) return false;
   HostTurn(t_turn);
@@ -168,6 +173,7 @@ void Scheduler::Serve(Time t_event, const TruthSample& truth, SchedulerMonitor& 
   // for
   if (pacer_ || !gate_) PollHosts(t_event, out);
   PollBus();
+  if (pacer_) RouteBusFrames(t_event, out);
 }
 
 void Scheduler::Run(SchedulerMonitor& monitor, const truth::TruthConfig* truth) {
@@ -241,6 +247,27 @@ void Scheduler::HostTurn(Time t) {
       std::string rx = set_.endpoints[d][p]->PollHost(t_rx, true);
       if (!rx.empty()) arrivals_.push_back({t_rx, d, p, std::move(rx)});
     }
+  }
+  PollBus();
+  DeviceOutput none;
+  RouteBusFrames(t_rx, none);
+}
+
+void Scheduler::RouteBusFrames(Time t_rx, DeviceOutput& out) {
+  for (; bus_routed_ < bus_frames_.size(); ++bus_routed_) {
+    const CanFrame& f = bus_frames_[bus_routed_];
+    if (pacer_) {
+      DeliverBusFrame(std::max(f.t, t_last_event_), f, out);
+    } else {
+      bus_arrivals_.push_back({t_rx, f});
+    }
+  }
+}
+
+void Scheduler::DeliverBusFrame(Time t, const CanFrame& frame, DeviceOutput& out) {
+  for (std::size_t d = 0; d < set_.devices.size(); ++d) {
+    set_.devices[d]->OnBusFrame(t, frame, out);
+    Dispatch(d, out);
   }
 }
 

@@ -1,5 +1,7 @@
 // The closed_loop section: the actuator, its link, the controller and the planned path.
+#include <array>
 #include <filesystem>
+#include <string_view>
 
 #include "hil/harness/eval/path_file_reader.h"
 
@@ -9,6 +11,8 @@ namespace hil::harness {
 namespace {
 
 Duration Seconds(double s) { return DurationFromSeconds(s); }
+
+constexpr std::array<std::string_view, 2> kChannels{"serial_base", "isobus"};
 
 void ReadActuator(const YamlReader& r, ClosedLoopSpec& c) {
   r.CheckKeys({"wheel_radius_m", "encoder_counts_per_rev", "max_wheel_speed_radps",
@@ -42,15 +46,21 @@ void ReadClosedLoopSection(const YamlReader& root, Scenario& s) {
   if (!r) return;
   r->CheckKeys({"channel", "link", "path_file", "controller", "control_period_s",
                 "command_timeout_s", "first_command_due_s", "start_enu_m", "start_heading_deg",
-                "initial_speed_mps", "actuator"});
+                "initial_speed_mps", "actuator", "transport", "speed_mps", "slcan_baud"});
   ClosedLoopSpec& c = s.closed_loop;
   c.enabled = true;
-  r->Choice("channel", "serial_base", {"serial_base"});
+  c.channel = r->Choice("channel", ClosedLoopSpec::Channel::kSerialBase, kChannels);
   if (root.Has("path"))
     root.Fail("path", "a closed-loop scenario's path is closed_loop.path_file, not path");
-  if (s.truth.vehicle.model != truth::VehicleParams::Model::kDiffDrive)
+  const bool isobus = c.channel == ClosedLoopSpec::Channel::kIsobus;
+  if (!isobus) {
+    for (const char* key : {"transport", "speed_mps", "slcan_baud"}) {
+      if (r->Has(key)) r->Fail(key, "a key of the isobus channel");
+    }
+  }
+  if (!isobus && s.truth.vehicle.model != truth::VehicleParams::Model::kDiffDrive)
     r->Fail("channel", "the serial base protocol drives a vehicle of model diff_drive");
-  c.link = r->String("link", c.link);
+  c.link = r->String("link", isobus ? "ttyCAN" : c.link);
   const std::filesystem::path base = std::filesystem::path(r->file()).parent_path();
   const std::filesystem::path file = r->String("path_file");
   c.path_file = std::filesystem::absolute(file.is_absolute() ? file : base / file).string();
@@ -67,6 +77,10 @@ void ReadClosedLoopSection(const YamlReader& root, Scenario& s) {
   c.start_p_N_m = {p[0], p[1]};
   c.start_heading_deg = r->DoubleIn("start_heading_deg", 0, -360, 360);
   c.initial_speed_mps = r->DoubleIn("initial_speed_mps", 0, 0, 10);
+  if (isobus) {
+    ReadIsobusChannel(root, *r, s);
+    return;
+  }
   c.motors.track_m = s.truth.vehicle.track_m;
   if (auto a = r->OptionalChild("actuator")) ReadActuator(*a, c);
   c.motors.initial_wheel_speed_radps = c.initial_speed_mps / c.motors.wheel_radius_m;

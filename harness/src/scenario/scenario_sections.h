@@ -43,6 +43,9 @@ extern const std::vector<std::string> kClosedLoopSectionKeys;
 /// Reads the closed_loop section (optional; scenario_closed_loop.cc) and makes the truth take
 /// the actuator's commands.
 void ReadClosedLoopSection(const YamlReader& root, Scenario& s);
+/// The closed_loop section's keys of the ISOBUS channel (scenario_closed_loop_isobus.cc): the
+/// transport, the set speed and the steering ECU (`actuator:`); sets up the bicycle truth.
+void ReadIsobusChannel(const YamlReader& root, const YamlReader& closed_loop, Scenario& s);
 
 extern const std::vector<std::string> kSuiteSectionKeys;
 /// Reads `paper:` into s.paper and checks `short:` (scenario_suite.cc); `top_level_keys` are the

@@ -89,6 +89,12 @@ class Device {
   virtual void OnHostBytes(int port, Time t, std::string_view bytes, DeviceOutput& out) {
     (void)port, (void)t, (void)bytes, (void)out;
   }
+  /// Closed loop: a frame another node (the controller under test) put on the run's CAN bus,
+  /// arriving at emulated time `t`; the device may answer. Devices that listen to nothing ignore
+  /// it.
+  virtual void OnBusFrame(Time t, const CanFrame& frame, DeviceOutput& out) {
+    (void)t, (void)frame, (void)out;
+  }
   /// Current line rate of serial port `port` in bit/s (configuration may change it).
   virtual int baud(int port) const = 0;
   /// Number of serial ports the device has.

@@ -5,7 +5,7 @@
 /// cross-track by interpolation onto the nearest edge (ISO 12188-2's lateral deviation, + = left
 /// of the direction of travel), heading error against the edge's direction, settling after the
 /// start (the first time |XTE| stays below `settle_band_m` for good), and figures per segment
-/// (each edge of the polyline; kind "straight").
+/// (each edge of the polyline, kind "straight", or the path file's rows and turns).
 
 #include <optional>
 #include <string>
@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 
 #include "hil/firmware_emu/sim_time.h"
+#include "hil/harness/eval/path_file_reader.h"
 
 namespace hil::harness {
 
@@ -52,12 +53,16 @@ struct TrackingMetrics {
   /// reaches 0 (changes sign); the along-path distance to it ("stable distance") and the mean
   /// |XTE| from it on ("steady-state deviation"). Empty without an offset or a crossing.
   std::optional<double> stable_distance_m, steady_state_mean_abs_m;
+  /// The samples on straight segments (rows, AB lines, edges) and on turns, each together.
+  XteStats straight, turns;
   /// The series for the plots: along-path distance and signed XTE of every sample.
   std::vector<double> s_m, xte_m;
 };
 
-/// Scores `track` (time order) against the polyline `path`.
+/// Scores `track` (time order) against the polyline `path`. `spans` group its edges into
+/// segments (a boustrophedon's rows and turns); empty: each edge is a straight segment.
 TrackingMetrics ScoreTracking(const std::vector<Eigen::Vector2d>& path,
-                              const std::vector<TrackSample>& track, double settle_band_m = 0.05);
+                              const std::vector<TrackSample>& track, double settle_band_m = 0.05,
+                              const std::vector<PathSpan>& spans = {});
 
 }  // namespace hil::harness

@@ -13,6 +13,7 @@
 #include "hil/harness/eval/path_tracking.h"
 #include "hil/harness/faults/fault_report.h"
 #include "hil/harness/links/can_bus_report.h"
+#include "hil/harness/report/steering_ecu_report.h"
 #include "hil/harness/scenario/scenario.h"
 
 namespace hil::harness {
@@ -40,7 +41,8 @@ struct ClosedLoopReport {
   /// Distance the truth vehicle went after the last command arrived, and after the watchdog.
   std::optional<double> distance_after_last_command_m, distance_after_watchdog_m;
   double final_speed_mps = 0;
-  bool stopped = false;  ///< final speed below 1 cm/s
+  bool stopped = false;                           ///< final speed below 1 cm/s
+  std::optional<SteeringEcuReport> steering_ecu;  ///< the isobus channel's ECU
 };
 
 /// Everything report.json holds.

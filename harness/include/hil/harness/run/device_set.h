@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "hil/firmware_emu/actuator/base_serial_device.h"
+#include "hil/firmware_emu/actuator/isobus_steering_device.h"
 #include "hil/firmware_emu/device.h"
 #include "hil/firmware_emu/gnss/gnss_fix.h"
 #include "hil/harness/links/can_endpoint.h"
@@ -37,6 +38,8 @@ struct DeviceSet {
   std::unique_ptr<CanEndpoint> can;
   /// Closed loop: the differential-drive base (owned by `devices`), null otherwise.
   const actuator::BaseSerialDevice* base = nullptr;
+  /// Closed loop on the isobus channel: the steering ECU (owned by `devices`), null otherwise.
+  const actuator::IsobusSteeringDevice* steering = nullptr;
   /// Real time: the scheduling the run's threads really got ({"events" | "pacing", …}).
   std::vector<std::pair<std::string, link::ThreadSchedule>> threads;
   /// Real time: /proc/stat when the pacing started (schedule_error.json: what the machine gave).

@@ -129,6 +129,11 @@ class Scheduler {
   void HostTurn(Time t);
   /// Virtual mode: host bytes reach their device, which may answer.
   void DeliverHostBytes(const HostBytes& h, DeviceOutput& out);
+  /// Closed loop on CAN: the frames others put on the bus since the last call reach every device
+  /// (Device::OnBusFrame): in virtual mode queued at a host turn's time `t_rx` (as host bytes
+  /// are), in real time delivered at once with their bus time (never before the last event).
+  void RouteBusFrames(Time t_rx, DeviceOutput& out);
+  void DeliverBusFrame(Time t, const CanFrame& frame, DeviceOutput& out);
 
   DeviceSet& set_;
   const link::RealtimePacer* pacer_;
@@ -147,8 +152,14 @@ class Scheduler {
   Time next_control_turn_{};
   std::optional<truth::TruthIntegrator> integrator_;
   std::vector<VehicleCommand> vehicle_commands_;
-  std::vector<Time> answer_turns_;        // host turns at the ends of devices' answers
-  std::deque<HostBytes> arrivals_;        // read at turns, in time order, not yet delivered
+  std::vector<Time> answer_turns_;  // host turns at the ends of devices' answers
+  std::deque<HostBytes> arrivals_;  // read at turns, in time order, not yet delivered
+  struct BusArrival {
+    Time t{};
+    CanFrame frame;
+  };
+  std::deque<BusArrival> bus_arrivals_;   // virtual mode: others' frames read at turns
+  std::size_t bus_routed_ = 0;            // bus_frames_ handed to the devices or queued
   std::vector<pollfd> host_fds_;          // one per serial endpoint, in device and port order
   std::unique_ptr<PacingThread> pacing_;  // real time: writes the bytes and frames
 };

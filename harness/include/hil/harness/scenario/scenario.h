@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "hil/firmware_emu/actuator/isobus_steering_device.h"
 #include "hil/firmware_emu/actuator/wheel_motors.h"
 #include "hil/firmware_emu/attitude/wt901c_config.h"
 #include "hil/firmware_emu/gnss/neo5m_device.h"
@@ -166,7 +167,9 @@ struct CanLinkSpec {
 /// steers the truth vehicle through an emulated actuator (vectors/scenarios/closed_loop/README.md).
 struct ClosedLoopSpec {
   bool enabled = false;  ///< the scenario has a `closed_loop:` section
-  enum class Channel { kSerialBase } channel = Channel::kSerialBase;
+  /// kSerialBase: the ROSArduinoBridge base (diff drive); kIsobus: ISO 11783-7 guidance to the
+  /// steering ECU of a front-steered vehicle (scenario_closed_loop_isobus.cc)
+  enum class Channel { kSerialBase, kIsobus } channel = Channel::kSerialBase;
   std::string link = "ttyBASE";  ///< the actuator's serial link (symlink in the run folder)
   std::string path_file;         ///< the planned path (absolute), {path_file} in the command
   /// The controller's shell command; {guidanced}, {path_file}, {nav_nmea} (the FIFO navd writes
@@ -183,6 +186,9 @@ struct ClosedLoopSpec {
   double initial_speed_mps = 0;
   actuator::WheelMotorsConfig motors;  ///< the base's wheels (track_m from the vehicle)
   double pid_rate_hz = 30;             ///< ROSArduinoBridge's PID frame rate
+  /// kIsobus: the steering ECU, its transport (socketcan: the `can:` bus; slcan: a serial CAN
+  /// adapter on the pty `link`) and the vehicle's set speed.
+  actuator::IsobusSteeringDeviceConfig isobus;
 };
 
 /// UTC of t = 0 when a scenario gives no start_utc. Not the paper's 2013-06-10: gpsd 3.22 (Debian

@@ -1,0 +1,77 @@
+// The closed_loop section's ISOBUS channel (vectors/scenarios/closed_loop/README.md): a
+// front-steered vehicle whose steering ECU takes ISO 11783-7 curvature commands over SocketCAN
+// (the scenario's `can:` bus) or over a serial SLCAN adapter on a pty.
+#include <array>
+#include <string_view>
+
+#include "scenario_sections.h"
+
+namespace hil::harness {
+namespace {
+
+constexpr std::array<std::string_view, 2> kTransports{"socketcan", "slcan"};
+
+void ReadSteeringEcu(const YamlReader& r, actuator::SteeringEcuConfig& e) {
+  r.CheckKeys({"max_steer_deg", "max_steer_rate_dps", "time_constant_s", "deadband_deg",
+               "command_latency_s", "watchdog_timeout_s", "status_period_s", "ecu_address",
+               "guidance_address", "min_engage_speed_mps", "max_engage_speed_mps",
+               "center_on_disengage"});
+  e.max_steer_deg = r.DoubleIn("max_steer_deg", e.max_steer_deg, 1, 60);
+  e.max_steer_rate_dps = r.DoubleIn("max_steer_rate_dps", e.max_steer_rate_dps, 1, 1000);
+  e.time_constant_s = r.DoubleIn("time_constant_s", e.time_constant_s, 0.001, 10);
+  e.deadband_deg = r.DoubleIn("deadband_deg", e.deadband_deg, 0, 5);
+  e.command_latency =
+      DurationFromSeconds(r.DoubleIn("command_latency_s", ToSeconds(e.command_latency), 0, 5));
+  e.command_timeout =
+      DurationFromSeconds(r.DoubleIn("watchdog_timeout_s", ToSeconds(e.command_timeout), 0.01, 60));
+  e.status_period =
+      DurationFromSeconds(r.DoubleIn("status_period_s", ToSeconds(e.status_period), 0.01, 10));
+  e.source_address = static_cast<std::uint8_t>(r.Int("ecu_address", e.source_address, 0, 253));
+  const auto guidance =
+      static_cast<std::uint8_t>(r.Int("guidance_address", e.accepted_sources[0], 0, 253));
+  e.accepted_sources.fill(guidance);
+  e.min_engage_speed_mps = r.DoubleIn("min_engage_speed_mps", e.min_engage_speed_mps, 0, 50);
+  e.max_engage_speed_mps = r.DoubleIn("max_engage_speed_mps", e.max_engage_speed_mps, 0.1, 50);
+  e.center_on_disengage = r.Bool("center_on_disengage", e.center_on_disengage);
+}
+
+}  // namespace
+
+void ReadIsobusChannel(const YamlReader& root, const YamlReader& r, Scenario& s) {
+  ClosedLoopSpec& c = s.closed_loop;
+  actuator::IsobusSteeringDeviceConfig& d = c.isobus;
+  if (s.truth.vehicle.model != truth::VehicleParams::Model::kBicycle)
+    r.Fail("channel", "ISOBUS guidance steers a front-steered vehicle (model bicycle or tractor)");
+  d.transport = r.Choice("transport", actuator::IsobusTransport::kSocketCan, kTransports);
+  if (d.transport == actuator::IsobusTransport::kSocketCan && !root.Has("can"))
+    r.Fail("transport", "socketcan needs the scenario's can: {interface: …} bus");
+  d.slcan_baud = static_cast<int>(r.Int("slcan_baud", d.slcan_baud, 1200, 4000000));
+  d.speed_mps = r.DoubleIn("speed_mps", d.speed_mps, 0, 15);
+  d.ecu.wheelbase_m = s.truth.vehicle.wheelbase_m;
+  // the vehicle's steering (limit, rate, lag) is the ECU's unless its actuator says otherwise
+  d.ecu.max_steer_deg = s.truth.vehicle.max_steer_deg;
+  d.ecu.max_steer_rate_dps = s.truth.vehicle.max_steer_rate_dps;
+  d.ecu.time_constant_s = s.truth.vehicle.steer_lag_s;
+  if (auto a = r.OptionalChild("actuator")) ReadSteeringEcu(*a, d.ecu);
+  d.control_period = DurationFromSeconds(c.control_period_s);
+  d.command_timeout = DurationFromSeconds(c.command_timeout_s);
+  d.first_command_due = TimeFromSeconds(c.first_command_due_s);
+  if (!r.Has("initial_speed_mps")) c.initial_speed_mps = d.speed_mps;
+  // the truth obeys the road wheels: its own steering lag and rate limit are made negligible (the
+  // steering ECU is the model: 10 ms and 200 °/s, against its 0.3 s and 20 °/s; 1 ms made the
+  // integration 3× slower); κ = tan δ / L at the rear axle
+  truth::TruthConfig& t = s.truth;
+  t.external_commands = true;
+  t.command_period_s = 0.01;
+  t.path.reset();
+  t.start_p_N_m = c.start_p_N_m;
+  t.heading_deg = c.start_heading_deg;
+  t.speed_mps = c.initial_speed_mps;
+  t.start_at_speed = true;
+  t.vehicle.speed_lag_s = 1e-3;
+  t.vehicle.steer_lag_s = 0.01;
+  t.vehicle.max_steer_rate_dps = 200;
+  t.vehicle.max_steer_deg = d.ecu.max_steer_deg;
+}
+
+}  // namespace hil::harness
