@@ -1,11 +1,11 @@
 // guidanced: the guidance controller of a closed-loop run (estimator/guidanced/README.md). Reads
 // the estimator's solution as NMEA 0183 (GGA position, RMC speed, HDT heading: navd's
-// [output] nmea_device) and the planned path, runs pure pursuit at each solution, and commands a
-// differential-drive base over the ROSArduinoBridge serial protocol (`m L R`), or a front-steered
-// vehicle's steering ECU over ISO 11783-7 (Guidance System Command, on SocketCAN or a serial SLCAN
-// adapter: isobus_link.h). Event-driven: one command per solution, no timers, so that a lockstep
-// harness sees the same commands every run. Fixed buffers after start-up; no allocation per
-// solution.
+// [output] nmea_device) and the planned path, runs the selected tracker (pure pursuit or paper
+// 003's fuzzy controller, --controller) at each solution, and commands a differential-drive base
+// over the ROSArduinoBridge serial protocol (`m L R`), or a front-steered vehicle's steering ECU
+// over ISO 11783-7 (Guidance System Command, on SocketCAN or a serial SLCAN adapter:
+// isobus_link.h). Event-driven: one command per solution, no timers, so that a lockstep harness
+// sees the same commands every run. Fixed buffers after start-up; no allocation per solution.
 #include <fcntl.h>
 #include <poll.h>
 #include <termios.h>
@@ -28,6 +28,7 @@
 #include "hil/estimator/guidance/path_file.h"
 #include "hil/estimator/guidance/path_tracker.h"
 #include "hil/estimator/guidance/row_follower.h"
+#include "hil/estimator/guidance/selected_tracker.h"
 #include "hil/estimator/guidance/vehicle.h"
 #include "hil/estimator/odometry/encoder_sentence.h"
 
@@ -48,9 +49,12 @@ struct Options {
   bool correction = true;
   est::Lla origin;
   double speed_mps = 0.5, lookahead_m = 1.0;
+  g::TrackerKind controller = g::TrackerKind::kPurePursuit;
+  g::FuzzyTrackerConfig fuzzy;  // --controller fuzzy
   double track_m = 0.5, wheel_radius_m = 0.1, max_wheel_radps = 20, pid_rate_hz = 30;
   int counts_per_rev = 1200;
   double wheelbase_m = 2.5, max_steer_deg = 35;
+  bool steering_given = false;  // --wheelbase: trackers limited to it (a diff base too)
   int guidance_address = 0x80, ecu_address = 0x1C;
 };
 
@@ -58,7 +62,8 @@ struct Options {
   std::fprintf(
       stderr,
       "guidanced: %s\nusage: guidanced --path FILE --origin LAT,LON,H --nav NMEA_IN "
-      "(--base TTY | --isobus-can IFACE | --isobus-slcan TTY) [--speed M/S] [--lookahead M] "
+      "(--base TTY | --isobus-can IFACE | --isobus-slcan TTY) [--controller pure_pursuit|fuzzy] "
+      "[--speed M/S] [--lookahead M] [--fuzzy-k-alpha-deg DEG] [--fuzzy-heading-preview M] "
       "[--track M] [--wheel-radius M] [--counts-per-rev N] [--pid-rate HZ] "
       "[--max-wheel-speed RAD/S] [--wheelbase M] [--max-steer-deg DEG] "
       "[--guidance-address N] [--ecu-address N] [--odometry OUT] "
@@ -92,6 +97,7 @@ bool ParseIsobusOption(const std::string& k, const char* v, Options& o) {
     o.isobus_slcan = k == "--isobus-slcan";
   } else if (k == "--wheelbase") {
     o.wheelbase_m = Number("--wheelbase", v);
+    o.steering_given = true;
   } else if (k == "--max-steer-deg") {
     o.max_steer_deg = Number("--max-steer-deg", v);
   } else if (k == "--guidance-address") {
@@ -166,6 +172,14 @@ Options Parse(int argc, char** argv) {
       o.speed_mps = Number("--speed", v);
     } else if (k == "--lookahead") {
       o.lookahead_m = Number("--lookahead", v);
+    } else if (k == "--controller") {
+      const std::optional<g::TrackerKind> kind = g::ParseTrackerKind(v);
+      if (!kind) Usage("--controller: expected pure_pursuit or fuzzy");
+      o.controller = *kind;
+    } else if (k == "--fuzzy-k-alpha-deg") {
+      o.fuzzy.k_alpha_deg = Number("--fuzzy-k-alpha-deg", v);
+    } else if (k == "--fuzzy-heading-preview") {
+      o.fuzzy.heading_preview_m = Number("--fuzzy-heading-preview", v);
     } else if (k == "--track") {
       o.track_m = Number("--track", v);
     } else if (k == "--wheel-radius") {
@@ -222,7 +236,7 @@ class Controller {
       : o_(o),
         path_(std::move(path)),
         frame_(o.origin),
-        pp_(Config(o)),
+        tracker_(Config(o)),
         base_fd_(base_fd),
         isobus_(isobus),
         odometry_fd_(odometry_fd),
@@ -269,9 +283,14 @@ class Controller {
   std::uint64_t commands() const { return commands_; }
 
  private:
-  static g::PurePursuitConfig Config(const Options& o) {
-    g::PurePursuitConfig c;
-    c.lookahead_m = o.lookahead_m;
+  static g::SelectedTrackerConfig Config(const Options& o) {
+    g::SelectedTrackerConfig c;
+    c.kind = o.controller;
+    c.pure_pursuit.lookahead_m = o.lookahead_m;
+    c.fuzzy = o.fuzzy;
+    // a front-steered vehicle's limits (on ISOBUS, or given for a base standing in for one)
+    c.wheelbase_m = o.steering_given || !o.isobus.empty() ? o.wheelbase_m : 0.0;
+    c.max_steer_deg = o.max_steer_deg;
     return c;
   }
   void Command() {
@@ -280,7 +299,7 @@ class Controller {
     pose.yaw_rad = (90.0 - heading_deg_) * std::numbers::pi / 180.0;
     pose.speed_mps = speed_mps_;
     if (isobus_) {
-      SteerCommand(pp_.Update(path_, pose));
+      SteerCommand(tracker_.Update(path_, pose));
       return;
     }
     const g::WheelSpeeds w = row_ ? RowCommand(pose) : PursuitCommand(pose);
@@ -296,7 +315,7 @@ class Controller {
     ++asked_count_;
   }
   g::WheelSpeeds PursuitCommand(const g::VehiclePose2d& pose) {
-    const g::TrackingCommand c = pp_.Update(path_, pose);
+    const g::TrackingCommand c = tracker_.Update(path_, pose);
     const double v = c.end_of_path ? 0.0 : o_.speed_mps;
     return platform_.FromSpeedAndCurvature(v, c.curvature_left_per_m);
   }
@@ -311,7 +330,7 @@ class Controller {
   static g::RowFollowerConfig RowConfig(const Options& o) {
     g::RowFollowerConfig c;
     c.speed_mps = o.speed_mps;
-    c.pursuit = Config(o);
+    c.pursuit.lookahead_m = o.lookahead_m;
     c.correction = o.correction;
     c.corrector.p_dist_m = o.p_dist_m;
     c.corrector.d_set_m = o.d_set_m;
@@ -335,7 +354,7 @@ class Controller {
   Options o_;
   g::PlannedPath path_;
   est::LocalTangentFrame frame_;
-  g::PurePursuit pp_;
+  g::SelectedTracker tracker_;
   int base_fd_;
   hil::guidanced::IsobusLink* isobus_;
   int odometry_fd_;

@@ -491,8 +491,9 @@ int main(int argc, char** argv) {
   SolutionOutputs outputs;
   if (!outputs.Open(cfg)) return 2;
   InstallSignalHandlers();
-  if (cfg.uwb.enabled()) return hil::navd::RunUwbMode(cfg, outputs.out, &g_stop);  // paper 003
-  if (cfg.odometry.enabled())                                                      // paper 001
+  if (cfg.uwb.enabled())
+    return hil::navd::RunUwbMode(cfg, outputs.out, outputs.nmea_fd, &g_stop);  // paper 003
+  if (cfg.odometry.enabled())                                                  // paper 001
     return hil::navd::RunOdometryMode(cfg, outputs.out, outputs.nmea_fd, &g_stop);
   return Run(cfg, outputs);
 }

@@ -11,12 +11,15 @@
 #include <cmath>
 #include <numbers>
 
+#include <Eigen/Geometry>
+
 #include "hil/estimator/angles.h"
 #include "hil/estimator/drivers/linktrack_decoder.h"
 #include "hil/estimator/drivers/uwb_tdoa_decoder.h"
 #include "hil/estimator/drivers/wt901c_decoder.h"
 #include "hil/estimator/geodesy.h"
 #include "hil/estimator/navd/nav_solution.h"
+#include "hil/estimator/outputs/nmea0183_writer.h"
 #include "hil/estimator/uwb/error_field_correction.h"
 #include "hil/estimator/uwb/tdoa_solver.h"
 #include "hil/estimator/uwb/uwb_planar_filter.h"
@@ -48,9 +51,10 @@ est::uwb::UwbPlanarFilterParams FilterParams(const est::NavdUwbConfig& u) {
 // The mode's state between fixes: the latest WT901C values and the filter.
 class UwbNavigator {
  public:
-  UwbNavigator(const est::NavdUwbConfig& cfg, std::FILE* out)
+  UwbNavigator(const est::NavdUwbConfig& cfg, std::FILE* out, int nmea_fd)
       : cfg_(cfg),
         out_(out),
+        nmea_fd_(nmea_fd),
         solver_(SolverConfig(cfg)),
         filter_(FilterParams(cfg)),
         frame_(est::Lla{cfg.origin_lat_deg, cfg.origin_lon_deg, cfg.origin_height_m}) {}
@@ -83,9 +87,12 @@ class UwbNavigator {
  private:
   void OnFix(std::uint32_t system_time_ms, const Eigen::Vector2d& p_measured_W_m);
   void Emit(std::uint32_t system_time_ms);
+  void EmitNmea(std::int64_t tov_unix_ns, const est::Lla& g, double yaw_rad, double speed_mps);
 
   const est::NavdUwbConfig& cfg_;
   std::FILE* out_;
+  int nmea_fd_;
+  std::uint64_t nmea_write_errors_ = 0;
   est::uwb::TdoaSolver solver_;
   est::uwb::ErrorFieldCorrection correction_;
   est::uwb::UwbPlanarFilter filter_;
@@ -141,7 +148,21 @@ void UwbNavigator::Emit(std::uint32_t system_time_ms) {
   const std::string line = est::ToJsonLine(s);
   std::fwrite(line.data(), 1, line.size(), out_);
   std::fflush(out_);
+  if (nmea_fd_ >= 0) EmitNmea(s.tov_unix_ns, g, psi, v);
   ++solutions_;
+}
+
+// The solution as NMEA 0183 (RMC, GGA, HDT): a guidance controller's input in a closed loop.
+void UwbNavigator::EmitNmea(std::int64_t tov_unix_ns, const est::Lla& g, double yaw_rad,
+                            double speed_mps) {
+  est::NavOutput o;
+  o.valid = true;
+  o.position = g;
+  o.v_N_mps = Eigen::Vector3d(speed_mps * std::cos(yaw_rad), speed_mps * std::sin(yaw_rad), 0.0);
+  o.q_NB = Eigen::Quaterniond(Eigen::AngleAxisd(yaw_rad, Eigen::Vector3d::UnitZ()));
+  o.has_attitude = true;
+  const std::string s = est::outputs::FormatNmea0183(o, tov_unix_ns);
+  if (write(nmea_fd_, s.data(), s.size()) != static_cast<ssize_t>(s.size())) ++nmea_write_errors_;
 }
 
 void UwbNavigator::PrintStats(const est::drivers::UwbTdoaDecoderStats& tdoa,
@@ -153,19 +174,21 @@ void UwbNavigator::PrintStats(const est::drivers::UwbTdoaDecoderStats& tdoa,
                "navd: stopped (uwb); solutions=%llu tdoa ok=%llu bad_checksum=%llu garbage=%llu; "
                "tag_frame0 ok=%llu bad_checksum=%llu; solver ok=%llu bad_input=%llu "
                "collinear=%llu on_baseline=%llu no_root=%llu; wit ok=%llu bad_checksum=%llu "
-               "garbage=%llu; filter position=%llu rejected=%llu resets=%llu yaw=%llu\n",
+               "garbage=%llu; filter position=%llu rejected=%llu resets=%llu yaw=%llu; "
+               "nmea_write_errors=%llu\n",
                u(solutions_), u(tdoa.frames_ok), u(tdoa.bad_checksum), u(tdoa.garbage_bytes),
                u(tag.frames_ok), u(tag.bad_checksum), u(status_count_[0]), u(status_count_[1]),
                u(status_count_[2]), u(status_count_[3]), u(status_count_[4]), u(wit.packets_ok),
                u(wit.bad_checksum), u(wit.garbage_bytes), u(f.position_updates),
-               u(f.position_rejected), u(f.resets), u(f.yaw_updates));
+               u(f.position_rejected), u(f.resets), u(f.yaw_updates), u(nmea_write_errors_));
 }
 
 }  // namespace
 
-int RunUwbMode(const est::NavdConfig& cfg, std::FILE* out, volatile std::sig_atomic_t* stop) {
+int RunUwbMode(const est::NavdConfig& cfg, std::FILE* out, int nmea_fd,
+               volatile std::sig_atomic_t* stop) {
   const est::NavdUwbConfig& u = cfg.uwb;
-  UwbNavigator nav(u, out);
+  UwbNavigator nav(u, out, nmea_fd);
   est::drivers::UwbTdoaDecoder tdoa([&](const est::drivers::UwbTdoaSample& s) { nav.OnTdoa(s); });
   est::drivers::LinkTrackDecoder tag(
       [&](const est::drivers::LinkTrackTagFrame& f) { nav.OnTagFrame(f); });

@@ -33,10 +33,17 @@ TrackingCommand FuzzyTracker::Update(const PlannedPath& path, const VehiclePose2
   have_hint_ = true;
   TrackingCommand c;
   c.cross_track_m = foot.cross_track_m;
+  double tracking_yaw_rad = foot.path_yaw_rad;
+  if (cfg_.heading_preview_m > 0) {
+    const Eigen::Vector2d goal = path.PointAt(foot.s_m + cfg_.heading_preview_m, foot.edge);
+    const Eigen::Vector2d to_goal = goal - pose.p_EN_m;
+    if (to_goal.norm() > 1e-6) tracking_yaw_rad = std::atan2(to_goal.y(), to_goal.x());
+  }
   c.heading_error_rad = WrapPi(foot.path_yaw_rad - pose.yaw_rad);
+  const double theta_rad = WrapPi(tracking_yaw_rad - pose.yaw_rad);
   c.s_m = foot.s_m;
   c.end_of_path = foot.s_m >= path.length_m() - 1e-6;
-  last_steer_rad_ = FuzzySteerAngle_rad(cfg_, c.cross_track_m, c.heading_error_rad);
+  last_steer_rad_ = FuzzySteerAngle_rad(cfg_, c.cross_track_m, theta_rad);
   c.curvature_left_per_m = std::tan(last_steer_rad_) / cfg_.wheelbase_m;
   return c;
 }

@@ -60,6 +60,27 @@ XteStats Stats(const std::vector<double>& xte, const std::vector<double>& headin
   return s;
 }
 
+// Paper 003's figures from the start: every moving sample, and the stable point (the first
+// sign change of the deviation after an initial offset) with the mean |XTE| after it.
+void ScoreFromStart(const std::vector<Foot>& feet, const std::vector<TrackSample>& track,
+                    TrackingMetrics& m) {
+  std::vector<double> xte, head;
+  std::optional<std::size_t> stable;
+  const double x0 = feet.front().xte_m;
+  for (std::size_t i = 0; i < track.size(); ++i) {
+    if (!stable && std::fabs(x0) > m.settle_band_m && feet[i].xte_m * x0 <= 0) stable = i;
+    if (track[i].speed_mps < 0.05) continue;
+    xte.push_back(feet[i].xte_m);
+    head.push_back(Wrap(feet[i].yaw_rad - track[i].yaw_rad));
+  }
+  m.from_start = Stats(xte, head);
+  if (!stable) return;
+  m.stable_distance_m = feet[*stable].s_m - feet.front().s_m;
+  double sum = 0;
+  for (std::size_t i = *stable; i < track.size(); ++i) sum += std::fabs(feet[i].xte_m);
+  m.steady_state_mean_abs_m = sum / static_cast<double>(track.size() - *stable);
+}
+
 }  // namespace
 
 TrackingMetrics ScoreTracking(const std::vector<Eigen::Vector2d>& path,
@@ -119,6 +140,7 @@ TrackingMetrics ScoreTracking(const PathGeometry& geometry, const std::vector<Tr
     seg_head[seg].push_back(he);
   }
   m.all = Stats(xte, head);
+  ScoreFromStart(feet, track, m);
   std::vector<double> kind_xte[2], kind_head[2];  // straight, turn
   for (std::size_t k = 0; k < segments; ++k) {
     SegmentTracking st;

@@ -132,6 +132,13 @@ MetricTable RunMetricTable(const RunReport& r) {
     t["tracking.straight.cross_track_p95_abs_m"] = vs(st.p95_abs_m);
     t["tracking.settling_distance_m"] = r.tracking->settling_distance_m;
     t["tracking.settling_time_s"] = r.tracking->settling_time_s;
+    const XteStats& f = r.tracking->from_start;
+    t["tracking.from_start_mean_abs_m"] =
+        f.samples ? std::optional<double>(f.mean_abs_m) : std::nullopt;
+    t["tracking.from_start_max_abs_m"] =
+        f.samples ? std::optional<double>(f.max_abs_m) : std::nullopt;
+    t["tracking.stable_distance_m"] = r.tracking->stable_distance_m;
+    t["tracking.steady_state_mean_abs_m"] = r.tracking->steady_state_mean_abs_m;
   }
   if (r.row_following && r.row_following->samples > 0) {
     t["max_lateral_deviation_m"] = r.row_following->max_lateral_deviation_m;
@@ -230,6 +237,9 @@ nlohmann::json TrackingJson(const TrackingMetrics& m) {
   j["settling_distance_m"] = OptionalJson(m.settling_distance_m);
   j["settling_time_s"] = OptionalJson(m.settling_time_s);
   j["distance_travelled_m"] = m.distance_travelled_m;
+  j["from_start"] = XteJson(m.from_start);
+  j["stable_distance_m"] = OptionalJson(m.stable_distance_m);
+  j["steady_state_mean_abs_m"] = OptionalJson(m.steady_state_mean_abs_m);
   j["straight"] = XteJson(m.straight);
   j["turns"] = XteJson(m.turns);
   j["segments"] = nlohmann::json::array();

@@ -166,9 +166,14 @@ void Prepare(RunContext& ctx) {
   // batches (virtual_gate.h, input_merge.h); a scenario's own merge_window_s is kept as it is. Not
   // in a closed loop: the merge holds navd's solutions back by the window, and the controller
   // steers from them.
+  // Nor in navd's UWB mode: it does not merge by device time (the WT901C's packets carry no time;
+  // it fuses the latest heading and the rates read since the last fix), so its links must reach
+  // it in emulated-time order, or which WT901C packets a fix sees depends on when navd woke
+  // between two links' writes (same-seed runs then differed by millimetres).
   const double own_window_s = NavdMergeWindowS(scenario);
   const bool navd_virtual = opt.mode == RunMode::kVirtual && !opt.emulate_only &&
                             !scenario.closed_loop.enabled &&
+                            scenario.estimator.navd_mode != NavdMode::kUwb &&
                             raw_command.find("{navd}") != std::string::npos;
   ctx.navd_merge_window_s =
       own_window_s >= 0 ? own_window_s : (navd_virtual ? kNavdMergeWindowS : 0.0);

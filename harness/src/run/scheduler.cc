@@ -232,11 +232,15 @@ void Scheduler::HostTurn(Time t) {
     write_refused_ = true;
     return;
   }
-  // What the host wrote may answer any byte written so far (virtual mode writes bytes when they
-  // are made, ahead of their UART times): it arrives once the last of them has left its UART.
+  // What the host wrote may answer any byte it has read (virtual mode writes bytes when they are
+  // made, ahead of their UART times): it arrives once the last of them has left its UART. Links
+  // the host does not read do not count (paper 003's UWB navd leaves the 9600 Bd GNSS link
+  // unread: its NMEA epochs held a controller's commands back by up to 0.66 s).
   Time t_rx = t;
   for (const auto& ports : set_.endpoints) {
-    for (const auto& ep : ports) t_rx = std::max(t_rx, ep->last_queued_end());
+    for (const auto& ep : ports) {
+      if (gate_->Reads(*ep)) t_rx = std::max(t_rx, ep->last_queued_end());
+    }
   }
   for (std::size_t d = 0; d < set_.devices.size(); ++d) {
     for (std::size_t p = 0; p < set_.endpoints[d].size(); ++p) {

@@ -44,6 +44,13 @@ VirtualGate::VirtualGate(std::vector<SerialEndpoint*> host_links,
   prctl(PR_SET_TIMERSLACK, 1000UL, 0UL, 0UL, 0UL);
 }
 
+bool VirtualGate::Reads(const SerialEndpoint& ep) const {
+  for (const Link& l : links_) {
+    if (l.ep == &ep) return true;
+  }
+  return false;
+}
+
 VirtualGate::Link* VirtualGate::Find(const SerialEndpoint& ep) {
   for (Link& l : links_) {
     if (l.ep == &ep) return &l;

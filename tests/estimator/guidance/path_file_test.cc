@@ -65,6 +65,21 @@ TEST(PathFile, PolylineAndCircle) {
   EXPECT_NEAR(c.Project({0.0, 19.0}).cross_track_m, 1.0, 1e-3);  // inside a ccw circle = left
 }
 
+TEST(PathFile, Paper003RectangleAndLine) {
+  // 15 m x 15 m from A(-7, -7), clockwise: north first, then east; four sharp corners
+  const PlannedPath r = ReadPathFile(Vectors("seed003_rectangle_15m.path"));
+  ASSERT_EQ(r.vertex_count(), 5u);
+  EXPECT_DOUBLE_EQ(r.length_m(), 60.0);
+  EXPECT_EQ(r.vertex(0), r.vertex(4));
+  EXPECT_DOUBLE_EQ(r.vertex(1).y(), 8.0);
+  EXPECT_DOUBLE_EQ(r.vertex(2).x(), 8.0);
+  EXPECT_NEAR(r.Project({-7.5, 0.0}).cross_track_m, 0.5, 1e-12);  // west of a northward side: left
+  // 15 m north at x = 0 through the field, 5 m beyond B
+  const PlannedPath l = ReadPathFile(Vectors("seed003_line_north_15m.path"));
+  EXPECT_DOUBLE_EQ(l.length_m(), 20.0);
+  EXPECT_NEAR(l.Project({-1.795, -7.5}).cross_track_m, 1.795, 1e-12);  // state 1's start
+}
+
 void ExpectError(const std::string& text, int line, const std::string& field) {
   try {
     ParsePathText(text, "field.path");

@@ -70,5 +70,36 @@ TEST(ScenarioFilesTest, PapersFiguresComeFromTheScenarioFiles) {
   }
 }
 
+// Paper 003 in the closed loop: each initial state and the rectangle with both controllers, the
+// paper's figures as tracking metrics, the fuzzy rectangle held to the paper's 14.4 cm.
+TEST(ScenarioFilesTest, Paper003ClosedLoopScenariosCarryThePapersFigures) {
+  const std::map<std::string, double> mean_m{
+      {"line1_fuzzy", 0.287},        {"line2_fuzzy", 0.238},
+      {"line3_fuzzy", 0.169},        {"line4_fuzzy", 0.201},
+      {"line1_pure_pursuit", 0.372}, {"line2_pure_pursuit", 0.353},
+      {"line3_pure_pursuit", 0.244}, {"line4_pure_pursuit", 0.283},
+      {"rectangle_fuzzy", 0.144},    {"rectangle_pure_pursuit", 0.369}};
+  for (const auto& [name, value] : mean_m) {
+    const Scenario s = LoadScenario(Dir() + "/seed003_" + name + ".yaml");
+    EXPECT_TRUE(s.closed_loop.enabled) << name;
+    EXPECT_EQ(s.estimator.navd_mode, NavdMode::kUwb) << name;
+    const bool fuzzy = name.find("fuzzy") != std::string::npos;
+    EXPECT_NE(s.closed_loop.controller.find(fuzzy ? "--controller fuzzy" : "--lookahead 2.0"),
+              std::string::npos)
+        << name;
+    ASSERT_FALSE(s.paper.empty()) << name;
+    EXPECT_EQ(s.paper[0].metric, name.rfind("line", 0) == 0 ? "tracking.from_start_mean_abs_m"
+                                                            : "tracking.cross_track_mean_abs_m")
+        << name;
+    ASSERT_TRUE(s.paper[0].value) << name;
+    EXPECT_DOUBLE_EQ(*s.paper[0].value, value) << name;
+  }
+  const Scenario r = LoadScenario(Dir() + "/seed003_rectangle_fuzzy.yaml");
+  ASSERT_FALSE(r.criteria.empty());
+  EXPECT_EQ(r.criteria[0].metric, "tracking.cross_track_mean_abs_m");
+  ASSERT_TRUE(r.criteria[0].max);
+  EXPECT_DOUBLE_EQ(*r.criteria[0].max, 0.144);
+}
+
 }  // namespace
 }  // namespace hil::harness

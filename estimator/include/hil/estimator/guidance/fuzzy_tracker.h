@@ -36,6 +36,11 @@ struct FuzzyTrackerConfig {
   bool quantise_levels = false;  ///< round A to whole fuzzy levels (−6 … 6) before scaling
   double wheelbase_m = 0.84;     ///< paper 003's platform
   double search_window_m = 5.0;  ///< projection search around the previous foot
+  /// The "tracking heading" θ is measured against (the paper does not define it): 0, the path's
+  /// direction at the foot; > 0, the bearing from the reference point to the path point this far
+  /// (arc length) ahead of the foot, which turns before a corner does (paper 003's scenarios: 2 m,
+  /// the baseline pure pursuit's look-ahead, estimator/src/guidance/README.md).
+  double heading_preview_m = 0.0;
 };
 
 /// n = k·|d/M|^p clamped to [0, 1] (eq. 10).

@@ -46,7 +46,14 @@ struct TrackingMetrics {
   double settle_band_m = 0.05;
   double distance_travelled_m = 0;
   std::vector<SegmentTracking> segments;
-  /// The samples on straight segments (rows, AB lines, sides) and on turns, each together.
+  /// Every moving sample from the start (the approach after an offset included): paper 003's
+  /// "mean deviation from start to end" and "largest deviation in the run".
+  XteStats from_start;
+  /// Paper 003's stable point: after an initial offset beyond the band, where the deviation first
+  /// reaches 0 (changes sign); the along-path distance to it ("stable distance") and the mean
+  /// |XTE| from it on ("steady-state deviation"). Empty without an offset or a crossing.
+  std::optional<double> stable_distance_m, steady_state_mean_abs_m;
+  /// The samples on straight segments (rows, AB lines, edges) and on turns, each together.
   XteStats straight, turns;
   /// The series for the plots: along-path distance and signed XTE of every sample.
   std::vector<double> s_m, xte_m;

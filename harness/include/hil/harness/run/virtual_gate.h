@@ -57,6 +57,8 @@ class VirtualGate {
   bool TryWrite(const SerialEndpoint& ep, std::size_t bytes, Time t_first = Time{},
                 Time t_last = Time{});
   Duration max_skew() const { return max_skew_; }
+  /// Whether the host reads `ep` (one of the links given at construction).
+  bool Reads(const SerialEndpoint& ep) const;
   /// Waits until the host has read every byte of every link it reads.
   bool WaitAllRead();
   /// Bytes not yet read on the host links (exact when 0), for the drain and hang reports.
