@@ -13,7 +13,6 @@
 namespace hil::gnss {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kMu_m3ps2 = 3.986005e14;
 constexpr double kEarthRate_radps = 7.2921151467e-5;
 constexpr double kGpsA_m = 26559700.0;
