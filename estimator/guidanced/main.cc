@@ -22,6 +22,7 @@
 #include <string>
 #include <string_view>
 
+#include "hil/estimator/drivers/line_splitter.h"
 #include "hil/estimator/drivers/nmea_decoder.h"
 #include "hil/estimator/geodesy.h"
 #include "hil/estimator/guidance/base_serial_client.h"
@@ -373,34 +374,9 @@ class Controller {
   std::uint64_t commands_ = 0;
 };
 
-// Splits the NMEA stream into sentences in a fixed buffer.
-class LineSplitter {
- public:
-  template <typename F>
-  void Feed(const char* p, std::size_t n, F&& on_line) {
-    for (std::size_t i = 0; i < n; ++i) {
-      const char c = p[i];
-      if (c == '\r' || c == '\n') {
-        if (size_ > 0 && !overflow_) on_line(std::string_view(buf_.data(), size_));
-        size_ = 0;
-        overflow_ = false;
-      } else if (size_ < buf_.size()) {
-        buf_[size_++] = c;
-      } else {
-        overflow_ = true;
-      }
-    }
-  }
-
- private:
-  std::array<char, 128> buf_{};
-  std::size_t size_ = 0;
-  bool overflow_ = false;
-};
-
 int Loop(Controller& ctl, int nav_fd, int base_fd, hil::guidanced::IsobusLink* isobus,
          hil::guidanced::RangeInputs* ranges) {
-  LineSplitter nav;
+  est::drivers::LineSplitter<128> nav;  // the NMEA sentences of the solution
   g::BaseReplyReader replies;
   std::array<char, 4096> buf{};
   std::array<pollfd, 6> fds{};
@@ -418,7 +394,7 @@ int Loop(Controller& ctl, int nav_fd, int base_fd, hil::guidanced::IsobusLink* i
       const ssize_t n = read(nav_fd, buf.data(), buf.size());
       if (n == 0) return 0;  // the estimator's output ended
       if (n > 0)
-        nav.Feed(buf.data(), static_cast<std::size_t>(n),
+        nav.Feed(std::string_view(buf.data(), static_cast<std::size_t>(n)),
                  [&](std::string_view s) { ctl.OnSentence(s); });
     }
     if (fds[1].revents && isobus) {

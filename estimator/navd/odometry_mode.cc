@@ -18,6 +18,7 @@
 #include <Eigen/Geometry>
 
 #include "hil/estimator/angles.h"
+#include "hil/estimator/drivers/line_splitter.h"
 #include "hil/estimator/drivers/mcu_frame_decoder.h"
 #include "hil/estimator/drivers/mcu_imu_adapter.h"
 #include "hil/estimator/geodesy.h"
@@ -58,30 +59,6 @@ std::int64_t MonotonicNs() {
   clock_gettime(CLOCK_MONOTONIC, &ts);
   return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000LL + ts.tv_nsec;
 }
-
-// Splits a byte stream into lines in a fixed buffer (CR and LF end a line; overlong ones dropped).
-class Lines {
- public:
-  template <typename F>
-  void Feed(std::string_view bytes, F&& on_line) {
-    for (const char c : bytes) {
-      if (c == '\r' || c == '\n') {
-        if (size_ > 0 && !overflow_) on_line(std::string_view(buf_.data(), size_));
-        size_ = 0;
-        overflow_ = false;
-      } else if (size_ < buf_.size()) {
-        buf_[size_++] = c;
-      } else {
-        overflow_ = true;
-      }
-    }
-  }
-
- private:
-  std::array<char, 96> buf_{};
-  std::size_t size_ = 0;
-  bool overflow_ = false;
-};
 
 struct OdometryModeStats {
   std::uint64_t solutions = 0, sentences = 0, bad_sentences = 0, late = 0, unanswered = 0;
@@ -133,7 +110,7 @@ class OdometryNavd {
   est::GpsTime last_imu_t_{};
   std::optional<est::GpsTime> last_emitted_, previous_emitted_;
   bool encoders_started_ = false, answered_ = false, previous_answered_ = false;
-  Lines lines_;
+  est::drivers::LineSplitter<96> lines_;
   std::array<odo::EncoderSample, 16> queue_{};
   std::size_t queue_first_ = 0, queued_ = 0;
   OdometryModeStats stats_;
