@@ -32,7 +32,9 @@ Lla LlaFromEcef(const Eigen::Vector3d& p) {
     const double sec2 = 1.0 + t * t;
     const double n = kWgs84A_m / std::sqrt(1.0 - kWgs84E2 * (t * t / sec2));
     h = r_xy * std::sqrt(sec2) - n;
-    t = p.z() / (r_xy * (1.0 - kWgs84E2 * n / (n + h)));
+    const double next = p.z() / (r_xy * (1.0 - kWgs84E2 * n / (n + h)));
+    if (next == t) break;  // the exact fixed point: further iterations give the same bits
+    t = next;
   }
   return {std::atan(t) / kDeg, lon, h};
 }
