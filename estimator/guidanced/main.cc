@@ -65,6 +65,7 @@ struct Options {
       "guidanced: %s\nusage: guidanced --path FILE --origin LAT,LON,H --nav NMEA_IN "
       "(--base TTY | --isobus-can IFACE | --isobus-slcan TTY) [--controller pure_pursuit|fuzzy] "
       "[--speed M/S] [--lookahead M] [--fuzzy-k-alpha-deg DEG] [--fuzzy-heading-preview M] "
+      "[--fuzzy-n-max N] [--fuzzy-steer-rate-deg-s DEG/S] "
       "[--track M] [--wheel-radius M] [--counts-per-rev N] [--pid-rate HZ] "
       "[--max-wheel-speed RAD/S] [--wheelbase M] [--max-steer-deg DEG] "
       "[--guidance-address N] [--ecu-address N] [--odometry OUT] "
@@ -181,6 +182,10 @@ Options Parse(int argc, char** argv) {
       o.fuzzy.k_alpha_deg = Number("--fuzzy-k-alpha-deg", v);
     } else if (k == "--fuzzy-heading-preview") {
       o.fuzzy.heading_preview_m = Number("--fuzzy-heading-preview", v);
+    } else if (k == "--fuzzy-n-max") {
+      o.fuzzy.weight_n_max = Number("--fuzzy-n-max", v);
+    } else if (k == "--fuzzy-steer-rate-deg-s") {
+      o.fuzzy.steer_rate_limit_deg_s = Number("--fuzzy-steer-rate-deg-s", v);
     } else if (k == "--track") {
       o.track_m = Number("--track", v);
     } else if (k == "--wheel-radius") {

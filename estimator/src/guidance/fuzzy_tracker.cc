@@ -11,7 +11,8 @@ constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 
 double FuzzyWeight(const FuzzyTrackerConfig& c, double d_m) {
   const double n = c.weight_k * std::pow(std::fabs(d_m / c.weight_m_m), c.weight_p);
-  return std::isfinite(n) ? std::clamp(n, 0.0, 1.0) : 1.0;
+  const double n_max = std::clamp(c.weight_n_max, 0.0, 1.0);
+  return std::isfinite(n) ? std::clamp(n, 0.0, n_max) : n_max;
 }
 
 double FuzzySteerAngle_rad(const FuzzyTrackerConfig& c, double d_m, double theta_rad) {
@@ -43,7 +44,12 @@ TrackingCommand FuzzyTracker::Update(const PlannedPath& path, const VehiclePose2
   const double theta_rad = WrapPi(tracking_yaw_rad - pose.yaw_rad);
   c.s_m = foot.s_m;
   c.end_of_path = foot.s_m >= path.length_m() - 1e-6;
-  last_steer_rad_ = FuzzySteerAngle_rad(cfg_, c.cross_track_m, theta_rad);
+  double steer_rad = FuzzySteerAngle_rad(cfg_, c.cross_track_m, theta_rad);
+  if (cfg_.steer_rate_limit_deg_s > 0) {
+    const double step_rad = cfg_.steer_rate_limit_deg_s / kDegPerRad * cfg_.control_period_s;
+    steer_rad = std::clamp(steer_rad, last_steer_rad_ - step_rad, last_steer_rad_ + step_rad);
+  }
+  last_steer_rad_ = steer_rad;
   c.curvature_left_per_m = std::tan(last_steer_rad_) / cfg_.wheelbase_m;
   return c;
 }

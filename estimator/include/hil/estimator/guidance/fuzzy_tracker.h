@@ -41,6 +41,15 @@ struct FuzzyTrackerConfig {
   /// (arc length) ahead of the foot, which turns before a corner does (paper 003's scenarios: 2 m,
   /// the baseline pure pursuit's look-ahead, estimator/src/guidance/README.md).
   double heading_preview_m = 0.0;
+  /// Upper bound of the weight n (the paper: 1). Below 1 the heading term keeps a share
+  /// (1 − n_max) of the rule at every lateral deviation: without it the rule is heading-blind
+  /// beyond |d| = 0.533 m and has no damping there (a scenario parameter, not the paper's).
+  double weight_n_max = 1.0;
+  /// Anti-windup at the steering actuator: the commanded α moves at most this fast (°/s, 0 = no
+  /// limit), by steps of control_period_s, so the command never runs ahead of a rate-limited push
+  /// rod and the rule sees the angle the wheels can actually hold (a scenario parameter).
+  double steer_rate_limit_deg_s = 0.0;
+  double control_period_s = 0.2;  ///< the interval between Updates (paper 003: 5 Hz)
 };
 
 /// n = k·|d/M|^p clamped to [0, 1] (eq. 10).
@@ -53,7 +62,10 @@ class FuzzyTracker {
  public:
   explicit FuzzyTracker(const FuzzyTrackerConfig& config) : cfg_(config) {}
   TrackingCommand Update(const PlannedPath& path, const VehiclePose2d& pose);
-  void Reset() { have_hint_ = false; }
+  void Reset() {
+    have_hint_ = false;
+    last_steer_rad_ = 0;
+  }
   /// The front-wheel angle of the last Update (rad, + = left).
   double last_steer_rad() const { return last_steer_rad_; }
 
