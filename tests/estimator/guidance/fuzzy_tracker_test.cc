@@ -45,6 +45,17 @@ TEST(FuzzyTrackerTest, SteerAnglesByHand) {
   EXPECT_NEAR(FuzzySteerAngle_rad(q, 0.3, 0.0) / kDeg, -10.666667, 1e-5);
 }
 
+TEST(FuzzyTrackerTest, WeightCapKeepsAHeadingShareBeyondTheDomain) {
+  FuzzyTrackerConfig c;
+  c.weight_n_max = 0.6;
+  EXPECT_NEAR(FuzzyWeight(c, 0.05), 0.151, 5e-4);  // below the cap: eq. 10 unchanged
+  EXPECT_DOUBLE_EQ(FuzzyWeight(c, 0.54), 0.6);
+  EXPECT_DOUBLE_EQ(FuzzyWeight(c, -2.0), 0.6);
+  // d = 0.6 m (D = 6), θ = 30° (Θ = 3): A = −0.6 × 6 + 0.4 × 3 = −2.4 → α = −12.8°,
+  // where the uncapped rule gives the full −32° and ignores the heading
+  EXPECT_NEAR(FuzzySteerAngle_rad(c, 0.6, 30 * kDeg) / kDeg, -12.8, 1e-9);
+}
+
 PlannedPath EastLine() {
   PlannedPath p;
   p.Append({0, 0}, SegmentKind::kStraight, 0);
@@ -66,6 +77,25 @@ TEST(FuzzyTrackerTest, SignsThroughThePath) {
   pose.p_EN_m = {6, 0};
   pose.yaw_rad = -10 * kDeg;  // heading right of the path: θ = +10°, steer left
   EXPECT_NEAR(t.Update(path, pose).curvature_left_per_m, 0.111136, 1e-6);
+}
+
+TEST(FuzzyTrackerTest, SteerRateLimitHoldsTheCommandToThePushRod) {
+  const PlannedPath path = EastLine();
+  FuzzyTrackerConfig c;
+  c.steer_rate_limit_deg_s = 16;  // 3.2° per 0.2 s update
+  FuzzyTracker t{c};
+  VehiclePose2d pose;
+  pose.p_EN_m = {5, 1.0};  // far left: the rule asks for the full −32°
+  pose.speed_mps = 0.5;
+  t.Update(path, pose);
+  EXPECT_NEAR(t.last_steer_rad() / kDeg, -3.2, 1e-9);
+  t.Update(path, pose);
+  EXPECT_NEAR(t.last_steer_rad() / kDeg, -6.4, 1e-9);
+  pose.p_EN_m = {5, 0.0};  // on the line: the rule asks for 0°, the command comes back by 3.2°
+  t.Update(path, pose);
+  EXPECT_NEAR(t.last_steer_rad() / kDeg, -3.2, 1e-9);
+  t.Reset();
+  EXPECT_DOUBLE_EQ(t.last_steer_rad(), 0.0);
 }
 
 // Rear-axle kinematic bicycle at 0.5 m/s, the command held between 5 Hz updates.
