@@ -36,11 +36,13 @@ std::optional<std::int64_t> ScaledRound(double abs_v, int decimals) {
 
 // Writes the `count` low decimal digits of `value` (zero-padded) ending just before `end`, two
 // at a time from a table of the pairs 00..99.
-void WriteFractionDigits(char* end, std::uint64_t value, int count) {
+template <int Count>
+void WriteFractionDigits(char* end, std::uint64_t value) {
   static constexpr char kPairs[] =
       "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
       "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
       "8081828384858687888990919293949596979899";
+  int count = Count;  // a constant: the loop unrolls
   for (; count >= 2; count -= 2) {
     const auto pair = static_cast<unsigned>(value % 100) * 2;
     value /= 100;
@@ -64,7 +66,7 @@ char* WriteSplitDigits(char* p, char* last, std::uint64_t scaled) {
     return p;
   } else {
     *p++ = '.';
-    WriteFractionDigits(p + Decimals, scaled % kScale, Decimals);
+    WriteFractionDigits<Decimals>(p + Decimals, scaled % kScale);
     return p + Decimals;
   }
 }
