@@ -34,7 +34,7 @@ std::optional<std::int64_t> ScaledRound(double abs_v, int decimals) {
   return n;
 }
 
-// Writes the `count` low decimal digits of `value` (zero-padded) ending just before `end`, two
+// Writes the `Count` low decimal digits of `value` (zero-padded) ending just before `end`, two
 // at a time from a table of the pairs 00..99.
 template <int Count>
 void WriteFractionDigits(char* end, std::uint64_t value) {
@@ -42,25 +42,20 @@ void WriteFractionDigits(char* end, std::uint64_t value) {
       "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
       "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
       "8081828384858687888990919293949596979899";
-  int count = Count;  // a constant: the loop unrolls
-  for (; count >= 2; count -= 2) {
+  for (int count = Count; count >= 2; count -= 2) {  // a constant count: the loop unrolls
     const auto pair = static_cast<unsigned>(value % 100) * 2;
     value /= 100;
     *--end = kPairs[pair + 1];
     *--end = kPairs[pair];
   }
-  if (count == 1) *--end = static_cast<char>('0' + value % 10);
+  if constexpr (Count % 2 == 1) *--end = static_cast<char>('0' + value % 10);
 }
 
 // `scaled` / 10^Decimals written as "integer.fraction"; the compile-time divisor lets the
 // compiler divide by multiplication (a profile found the run-time 64-bit division dominant).
 template <int Decimals>
 char* WriteSplitDigits(char* p, char* last, std::uint64_t scaled) {
-  constexpr auto kScale = [] {
-    std::uint64_t s = 1;
-    for (int k = 0; k < Decimals; ++k) s *= 10;
-    return s;
-  }();
+  constexpr auto kScale = static_cast<std::uint64_t>(kPow10[Decimals]);
   p = std::to_chars(p, last, scaled / kScale).ptr;  // the integer part, "0" when below one
   if constexpr (Decimals == 0) {
     return p;
