@@ -292,5 +292,56 @@ TEST(ErrorStateEkfGnssModelTest, SwitchIsIgnoredWithoutCorrelatedStates) {
   EXPECT_EQ(ekf.covariance(), before);
 }
 
+// The classic filter (augmented states off) propagates and updates only P's first 15 states:
+// its other rows and columns stay exact zeros, and one interval equals the dense Φ P Φᵀ + Q
+// written out here from the error dynamics in the header.
+TEST(ErrorStateEkfClassicTest, PropagationEqualsTheDenseProductAndKeepsTheTailZero) {
+  EkfParams p;
+  p.lever_arm_B_m = Eigen::Vector3d(0.3, 0.1, 0.9);
+  p.nhc_std_mps = 0.05;
+  EarthModel earth;
+  earth.w_IE_N_radps = Eigen::Vector3d(0.0, 6.3e-5, 3.7e-5);
+  ErrorStateEkf ekf(p, earth);
+  NavState s;
+  s.v_N_mps = Eigen::Vector3d(1.0, 0.2, 0.0);
+  s.q_NB = Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitZ()) * Eigen::Quaterniond::Identity();
+  ekf.Initialize(s);
+  const Eigen::Vector3d dth(0.001, -0.0005, 0.003), dv(0.02, 0.01, 0.0981);
+  for (int k = 0; k < 50; ++k) {  // correlations between every classic state
+    ekf.Predict(dth, dv, 0.01);
+    if (k % 10 == 9) {
+      ekf.UpdatePosition(ekf.AntennaPosition() + Eigen::Vector3d(0.02, -0.01, 0.03),
+                         Eigen::Vector3d(0.05, 0.05, 0.1));
+      ekf.UpdateNonHolonomic();
+    }
+  }
+  const double dt = 0.01;
+  const EkfMatrix P0 = ekf.covariance();
+  const Eigen::Matrix3d C = ekf.state().q_NB.toRotationMatrix();
+  const Eigen::Vector3d f_N = C * (dv - ekf.accel_bias() * dt) / dt;
+  ekf.Predict(dth, dv, dt);
+  EkfMatrix Phi = EkfMatrix::Identity();
+  const Eigen::Matrix3d W = Skew(earth.w_IE_N_radps);
+  Phi.block<3, 3>(kPos, kVel) = Eigen::Matrix3d::Identity() * dt;
+  Phi.block<3, 3>(kVel, kVel) -= 2.0 * W * dt;
+  Phi.block<3, 3>(kVel, kAtt) = -Skew(f_N) * dt;
+  Phi.block<3, 3>(kVel, kAccelBias) = -C * dt;
+  Phi.block<3, 3>(kAtt, kAtt) -= W * dt;
+  Phi.block<3, 3>(kAtt, kGyroBias) = -C * dt;
+  EkfMatrix Q = EkfMatrix::Zero();
+  for (int i = 0; i < 3; ++i) {
+    Q(kVel + i, kVel + i) = p.accel_noise_mps2_rthz * p.accel_noise_mps2_rthz * dt;
+    Q(kAtt + i, kAtt + i) = p.gyro_noise_radps_rthz * p.gyro_noise_radps_rthz * dt;
+    Q(kAccelBias + i, kAccelBias + i) = p.accel_bias_rw_mps3_rthz * p.accel_bias_rw_mps3_rthz * dt;
+    Q(kGyroBias + i, kGyroBias + i) = p.gyro_bias_rw_radps2_rthz * p.gyro_bias_rw_radps2_rthz * dt;
+  }
+  const EkfMatrix expected = Phi * P0 * Phi.transpose() + Q;
+  const EkfMatrix& P = ekf.covariance();
+  EXPECT_LE((P - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff());
+  EXPECT_GT(std::abs(P(kPos, kGyroBias)), 0.0);  // the test saw real cross-covariances
+  EXPECT_TRUE(P.bottomRows<kNumStates - kNumClassicStates>().isZero(0.0));
+  EXPECT_TRUE(P.rightCols<kNumStates - kNumClassicStates>().isZero(0.0));
+}
+
 }  // namespace
 }  // namespace hil::estimator

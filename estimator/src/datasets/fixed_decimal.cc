@@ -34,21 +34,62 @@ std::optional<std::int64_t> ScaledRound(double abs_v, int decimals) {
   return n;
 }
 
-// Writes the `Count` low decimal digits of `value` (zero-padded) ending just before `end`, two
-// at a time from a table of the pairs 00..99.
-template <int Count>
-void WriteFractionDigits(char* end, std::uint64_t value) {
-  static constexpr char kPairs[] =
-      "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
-      "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
-      "8081828384858687888990919293949596979899";
-  for (int count = Count; count >= 2; count -= 2) {  // a constant count: the loop unrolls
-    const auto pair = static_cast<unsigned>(value % 100) * 2;
-    value /= 100;
-    *--end = kPairs[pair + 1];
-    *--end = kPairs[pair];
+constexpr char kDigitPairs[] =
+    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+    "8081828384858687888990919293949596979899";
+
+// Writes x < 10^(2·Pairs) as 2·Pairs digits (zero-padded), leading pair first, by fixed-point
+// multiplication: y = x·⌈2^57 / 10^(2·Pairs − 2)⌉ has the leading pair in its top bits, and each
+// ×100 of the 57-bit fraction brings up the next one (no division). Checked against printf for
+// every x below 10^8 (all Pairs ≤ 4); the tests compare the whole formatter with std::to_chars.
+template <int Pairs>
+void WriteDigitPairs(char* out, std::uint32_t x) {
+  static_assert(Pairs >= 1 && Pairs <= 4);
+  constexpr int kShift = 57;
+  constexpr auto kDivisor = static_cast<std::uint64_t>(kPow10[2 * Pairs - 2]);
+  constexpr std::uint64_t kMagic = ((std::uint64_t{1} << kShift) + kDivisor - 1) / kDivisor;
+  constexpr std::uint64_t kMask = (std::uint64_t{1} << kShift) - 1;
+  std::uint64_t y = x * kMagic;
+  for (int i = 0; i < Pairs; ++i) {  // a constant count: the loop unrolls
+    const auto pair = static_cast<unsigned>(y >> kShift) * 2;
+    out[2 * i] = kDigitPairs[pair];
+    out[2 * i + 1] = kDigitPairs[pair + 1];
+    y = (y & kMask) * 100;
   }
-  if constexpr (Count % 2 == 1) *--end = static_cast<char>('0' + value % 10);
+}
+
+// Writes value < 10^Count as exactly `Count` digits (zero-padded) from `out` on: eight at a time
+// from the right, an odd leading digit on its own.
+template <int Count>
+void WriteFractionDigits(char* out, std::uint64_t value) {
+  static_assert(Count >= 1 && Count <= kMaxFastDecimals);
+  if constexpr (Count > 8) {
+    constexpr std::uint64_t kLow = 100000000;
+    WriteFractionDigits<Count - 8>(out, value / kLow);
+    WriteDigitPairs<4>(out + Count - 8, static_cast<std::uint32_t>(value % kLow));
+  } else if constexpr (Count % 2 == 1) {
+    constexpr auto kRest = static_cast<std::uint32_t>(kPow10[Count - 1]);
+    const auto v = static_cast<std::uint32_t>(value);
+    out[0] = static_cast<char>('0' + v / kRest);
+    if constexpr (Count > 1) WriteDigitPairs<Count / 2>(out + 1, v % kRest);
+  } else {
+    WriteDigitPairs<Count / 2>(out, static_cast<std::uint32_t>(value));
+  }
+}
+
+// The integer part: one or two digits from the table (most of navd's columns), else to_chars.
+char* WriteIntegerPart(char* p, char* last, std::uint64_t v) {
+  if (v < 10) {
+    *p = static_cast<char>('0' + v);
+    return p + 1;
+  }
+  if (v < 100) {
+    p[0] = kDigitPairs[2 * v];
+    p[1] = kDigitPairs[2 * v + 1];
+    return p + 2;
+  }
+  return std::to_chars(p, last, v).ptr;
 }
 
 // `scaled` / 10^Decimals written as "integer.fraction"; the compile-time divisor lets the
@@ -56,12 +97,12 @@ void WriteFractionDigits(char* end, std::uint64_t value) {
 template <int Decimals>
 char* WriteSplitDigits(char* p, char* last, std::uint64_t scaled) {
   constexpr auto kScale = static_cast<std::uint64_t>(kPow10[Decimals]);
-  p = std::to_chars(p, last, scaled / kScale).ptr;  // the integer part, "0" when below one
+  p = WriteIntegerPart(p, last, scaled / kScale);  // "0" when below one
   if constexpr (Decimals == 0) {
     return p;
   } else {
     *p++ = '.';
-    WriteFractionDigits<Decimals>(p + Decimals, scaled % kScale);
+    WriteFractionDigits<Decimals>(p, scaled % kScale);
     return p + Decimals;
   }
 }

@@ -25,6 +25,12 @@ class LineBuffer {
   void Add(const Eigen::Vector3d& v, int decimals) {
     for (int i = 0; i < 3; ++i) Add(v[i], decimals);
   }
+  void AddText(const char* text, std::size_t length) {
+    if (static_cast<std::size_t>(end_ - 2 - p_) < length + 1) return;  // as Add: left out
+    if (p_ != start_) *p_++ = ' ';
+    std::memcpy(p_, text, length);
+    p_ += length;
+  }
   void AddInt(int v) {
     if (p_ != start_) *p_++ = ' ';
     p_ = std::to_chars(p_, end_ - 2, v).ptr;
@@ -76,9 +82,12 @@ KfginsOutputWriter::~KfginsOutputWriter() {
 }
 
 void KfginsOutputWriter::Write(const KfginsEpoch& e) {
+  char sow[512];  // formatted once for the three files (room for any double)
+  const auto sow_length =
+      static_cast<std::size_t>(FormatFixed(sow, sow + sizeof sow, e.sow, 6) - sow);
   LineBuffer n(nav_.Line());
   n.AddInt(e.week);
-  n.Add(e.sow, 6);
+  n.AddText(sow, sow_length);
   n.Add(e.lat_deg, 11);
   n.Add(e.lon_deg, 11);
   n.Add(e.height_m, 6);
@@ -86,12 +95,12 @@ void KfginsOutputWriter::Write(const KfginsEpoch& e) {
   n.Add(e.rpy_deg, 8);
   nav_.used += n.End();
   LineBuffer b(err_.Line());
-  b.Add(e.sow, 6);
+  b.AddText(sow, sow_length);
   b.Add(e.gyro_bias_frd_deg_hr, 6);
   b.Add(e.accel_bias_frd_mgal, 6);
   err_.used += b.End();
   LineBuffer s(std_.Line());
-  s.Add(e.sow, 6);
+  s.AddText(sow, sow_length);
   s.Add(e.pos_std_ned_m, 6);
   s.Add(e.vel_std_ned_mps, 6);
   s.Add(e.att_std_deg, 8);

@@ -28,12 +28,12 @@ TEST(FormatFixed, GivesToCharsBytesForTheColumnsNavdWrites) {
   int checked = 0;
   for (int k = 0; k < 200000; ++k) {
     const double v = unit(rng) * scales[k % 8];
-    for (const int d : {0, 3, 6, 8, 11, 12}) {
+    for (int d = 0; d <= 12; ++d) {  // every count has its own digit writer
       ASSERT_EQ(Ours(v, d), Std(v, d)) << "v=" << v << " decimals=" << d;
       ++checked;
     }
   }
-  EXPECT_EQ(checked, 1200000);
+  EXPECT_EQ(checked, 2600000);
 }
 
 TEST(FormatFixed, EdgeCases) {

@@ -49,6 +49,7 @@ inline constexpr int kVel = 3;
 inline constexpr int kAtt = 6;
 inline constexpr int kAccelBias = 9;
 inline constexpr int kGyroBias = 12;
+inline constexpr int kNumClassicStates = 15;  ///< δp … δb_g: the states that are always on
 inline constexpr int kGnssError = 15;
 inline constexpr int kSpeed = 18;
 inline constexpr int kSpeedDev = 19;
@@ -178,8 +179,20 @@ class ErrorStateEkf {
   UpdateResult Update(const Eigen::Matrix<double, M, 1>& innovation,
                       const Eigen::Matrix<double, M, ekf_index::kNumStates>& H,
                       const Eigen::Matrix<double, M, M>& R);
+  /// The update over P's first N states (N = 15 when the augmented states are off).
+  template <int N, int M>
+  UpdateResult UpdateOf(const Eigen::Matrix<double, M, 1>& innovation,
+                        const Eigen::Matrix<double, M, N>& H, const Eigen::Matrix<double, M, M>& R);
   /// P ← Φ P Φᵀ for one IMU interval, by Φ's blocks (no dense 20 × 20 product).
   void PropagateCovariance(const Eigen::Matrix3d& C, double dt, double gm_decay, double dev_decay);
+  /// The same over P's first N states (N = 15 when the augmented states are off).
+  template <int N>
+  void PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, double gm_decay,
+                             double dev_decay);
+  /// The correlated-GNSS-error or speed-model states are on: P's last five rows may be non-zero.
+  bool AugmentedStatesOn() const {
+    return params_.gnss_error_tau_s > 0 || params_.speed_rw_mps_rthz > 0;
+  }
   void Symmetrize();
   void SymmetrizeBlock(int first, int end);
   /// A negative or non-finite variance: its row and column restart (counted in repairs_).
