@@ -103,22 +103,25 @@ void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, d
   //   row δv: [0  A     B  −Cdt 0 ]        rows e: gm_decay·I; row δd: dev_decay
   //   row φ:  [0  0     D  0   −Cdt]
   // A = I − 2[ω_IE×]dt, B = −[f_N×]dt, D = I − [ω_IE×]dt. Only the rows of δp, δv, φ need
-  // products; the rest of P is scaled by Φ's diagonal, and P's symmetry gives the lower-left part.
+  // products; the rest of P is scaled by Φ's diagonal, and P's symmetry gives the other part.
+  // P is symmetric, so the products run on its columns (contiguous in Eigen's column-major
+  // storage; a profile found the strided row blocks' products the costliest part):
+  // (Φ P)ᵀ's columns = P Φᵀ's, then P' = Φ (P Φᵀ) by rows of that N × 3 block.
   // N = 15 when the augmented states are off: their rows and columns of P are exact zeros, which
   // Φ keeps, so only the classic block is propagated (the same bits as the whole matrix).
   constexpr int kTail = N - kAccelBias;  // δb_a … (δd)
-  using Rows3 = Eigen::Matrix<double, 3, N>;
+  using Cols3 = Eigen::Matrix<double, N, 3>;
   auto P = P_.template topLeftCorner<N, N>();
   const Eigen::Matrix3d W_dt = Skew(earth_.w_IE_N_radps) * dt;
-  const Eigen::Matrix3d A = Eigen::Matrix3d::Identity() - 2.0 * W_dt;
-  const Eigen::Matrix3d B = -Skew(f_N_) * dt;
-  const Eigen::Matrix3d D = Eigen::Matrix3d::Identity() - W_dt;
-  const Eigen::Matrix3d G = -C * dt;
-  // M = Φ P, rows of δp, δv, φ
-  const Rows3 Mp = P.template middleRows<3>(kPos) + dt * P.template middleRows<3>(kVel);
-  const Rows3 Mv = A * P.template middleRows<3>(kVel) + B * P.template middleRows<3>(kAtt) +
-                   G * P.template middleRows<3>(kAccelBias);
-  const Rows3 Ma = D * P.template middleRows<3>(kAtt) + G * P.template middleRows<3>(kGyroBias);
+  const Eigen::Matrix3d At = (Eigen::Matrix3d::Identity() - 2.0 * W_dt).transpose();
+  const Eigen::Matrix3d Bt = (-Skew(f_N_) * dt).transpose();
+  const Eigen::Matrix3d Dt = (Eigen::Matrix3d::Identity() - W_dt).transpose();
+  const Eigen::Matrix3d Gt = (-C * dt).transpose();
+  // Mᵀ = P Φᵀ, the columns of δp, δv, φ
+  const Cols3 Mp = P.template middleCols<3>(kPos) + dt * P.template middleCols<3>(kVel);
+  const Cols3 Mv = P.template middleCols<3>(kVel) * At + P.template middleCols<3>(kAtt) * Bt +
+                   P.template middleCols<3>(kAccelBias) * Gt;
+  const Cols3 Ma = P.template middleCols<3>(kAtt) * Dt + P.template middleCols<3>(kGyroBias) * Gt;
   // Φ's diagonal on the tail: P_tail ← Φ_tail P_tail Φ_tailᵀ
   Eigen::Matrix<double, kTail, 1> tail = Eigen::Matrix<double, kTail, 1>::Ones();
   if constexpr (N == kNumStates) {
@@ -127,24 +130,24 @@ void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, d
   }
   P.template bottomRightCorner<kTail, kTail>() =
       tail.asDiagonal() * P.template bottomRightCorner<kTail, kTail>() * tail.asDiagonal();
-  // P' rows of δp, δv, φ = M Φᵀ (column operations)
-  const auto post = [&](const Rows3& M) {
-    Rows3 R;
-    R.template middleCols<3>(kPos) =
-        M.template middleCols<3>(kPos) + dt * M.template middleCols<3>(kVel);
-    R.template middleCols<3>(kVel) = M.template middleCols<3>(kVel) * A.transpose() +
-                                     M.template middleCols<3>(kAtt) * B.transpose() +
-                                     M.template middleCols<3>(kAccelBias) * G.transpose();
-    R.template middleCols<3>(kAtt) = M.template middleCols<3>(kAtt) * D.transpose() +
-                                     M.template middleCols<3>(kGyroBias) * G.transpose();
-    R.template rightCols<kTail>() = M.template rightCols<kTail>() * tail.asDiagonal();
+  // P' columns of δp, δv, φ = Φ Mᵀ (row operations on the N × 3 blocks)
+  const auto pre = [&](const Cols3& M) {
+    Cols3 R;
+    R.template middleRows<3>(kPos) =
+        M.template middleRows<3>(kPos) + dt * M.template middleRows<3>(kVel);
+    R.template middleRows<3>(kVel) = At.transpose() * M.template middleRows<3>(kVel) +
+                                     Bt.transpose() * M.template middleRows<3>(kAtt) +
+                                     Gt.transpose() * M.template middleRows<3>(kAccelBias);
+    R.template middleRows<3>(kAtt) = Dt.transpose() * M.template middleRows<3>(kAtt) +
+                                     Gt.transpose() * M.template middleRows<3>(kGyroBias);
+    R.template bottomRows<kTail>() = tail.asDiagonal() * M.template bottomRows<kTail>();
     return R;
   };
-  P.template middleRows<3>(kPos) = post(Mp);
-  P.template middleRows<3>(kVel) = post(Mv);
-  P.template middleRows<3>(kAtt) = post(Ma);
-  P.template bottomLeftCorner<kTail, kAccelBias>() =
-      P.template topRightCorner<kAccelBias, kTail>().transpose();
+  P.template middleCols<3>(kPos) = pre(Mp);
+  P.template middleCols<3>(kVel) = pre(Mv);
+  P.template middleCols<3>(kAtt) = pre(Ma);
+  P.template topRightCorner<kAccelBias, kTail>() =
+      P.template bottomLeftCorner<kTail, kAccelBias>().transpose();
 }
 
 Eigen::Vector3d ErrorStateEkf::AntennaPosition() const {

@@ -45,17 +45,19 @@ int TextLineReader::ParseNumbers(std::string_view line, double* out, int max,
     while (p < end && separator(*p)) ++p;
     if (p == end) break;
     const char* start = p;
-    while (p < end && !separator(*p)) ++p;
     double v = 0;
-    // from_chars does not take a leading '+'
+    // from_chars does not take a leading '+'; it stops where the number ends, which must be a
+    // separator or the line's end (one pass over the text: no separate scan for the field's end)
     const char* num = (*start == '+') ? start + 1 : start;
-    const auto [ptr, ec] = std::from_chars(num, p, v);
-    if (ec != std::errc() || ptr != p || !std::isfinite(v)) {
+    const auto [ptr, ec] = std::from_chars(num, end, v);
+    const bool whole = ec == std::errc() && (ptr == end || separator(*ptr));
+    if (!whole || !std::isfinite(v)) {
+      while (p < end && !separator(*p)) ++p;
       const std::string field =
           field_names ? std::string(field_names[count]) : "column " + std::to_string(count + 1);
-      Fail(field + (ec == std::errc() && ptr == p ? ": not finite: '" : ": not a number: '") +
-           std::string(start, p) + "'");
+      Fail(field + (whole ? ": not finite: '" : ": not a number: '") + std::string(start, p) + "'");
     }
+    p = ptr;
     out[count++] = v;
   }
   return count;
