@@ -52,6 +52,7 @@ struct Options {
   bool isobus_slcan = false;
   int rangefinder_baud = 115200;
   double rangefinder_rate_hz = 100, p_dist_m = 0.4, d_set_m = 0.5;
+  g::DeviationCorrectorConfig corrector;  // the laws the paper does not give (--correction-*)
   std::optional<est::GpsTime> rangefinder_start;  // UTC time of day (ns) of the first period
   bool correction = true;
   est::Lla origin;
@@ -77,8 +78,8 @@ struct Options {
       "[--guidance-address N] [--ecu-address N] [--odometry OUT] "
       "[--rangefinders RF,RR,LF,LR [--rangefinder-model tf_luna|tfmini_s] "
       "[--rangefinder-baud B] [--rangefinder-rate HZ] [--rangefinder-start-tod S] "
-      "[--correction on|off] [--p-dist M] "
-      "[--d-set M]]\n",
+      "[--correction on|off] [--correction-taper M] [--correction-gain 1/S] "
+      "[--correction-max-rate RAD/S] [--p-dist M] [--d-set M]]\n",
       why);
   std::exit(2);
 }
@@ -143,6 +144,15 @@ bool ParseRowOption(const std::string& k, const char* v, Options& o) {
     if (std::string_view(v) != "on" && std::string_view(v) != "off")
       Usage("--correction: on or off");
     o.correction = std::string_view(v) == "on";
+  } else if (k == "--correction-taper") {
+    o.corrector.taper_offset_m = Number("--correction-taper", v);
+    if (!(o.corrector.taper_offset_m > 0)) Usage("--correction-taper: must be positive");
+  } else if (k == "--correction-gain") {
+    o.corrector.heading_gain_per_s = Number("--correction-gain", v);
+    if (!(o.corrector.heading_gain_per_s > 0)) Usage("--correction-gain: must be positive");
+  } else if (k == "--correction-max-rate") {
+    o.corrector.max_turn_rate_radps = Number("--correction-max-rate", v);
+    if (!(o.corrector.max_turn_rate_radps > 0)) Usage("--correction-max-rate: must be positive");
   } else if (k == "--p-dist") {
     o.p_dist_m = Number("--p-dist", v);
   } else if (k == "--d-set") {
@@ -350,6 +360,7 @@ class Controller {
     c.speed_mps = o.speed_mps;
     c.pursuit.lookahead_m = o.lookahead_m;
     c.correction = o.correction;
+    c.corrector = o.corrector;
     c.corrector.p_dist_m = o.p_dist_m;
     c.corrector.d_set_m = o.d_set_m;
     return c;
