@@ -8,6 +8,7 @@
 // sees the same commands every run. Fixed buffers after start-up; no allocation per solution.
 #include <fcntl.h>
 #include <poll.h>
+#include <signal.h>
 #include <termios.h>
 #include <unistd.h>
 
@@ -41,12 +42,18 @@ namespace {
 namespace est = hil::estimator;
 namespace g = hil::estimator::guidance;
 
+// SIGTERM/SIGINT (the run's end): the loop returns and the counters are printed.
+volatile sig_atomic_t guidanced_stop_requested = 0;
+void OnStopSignal(int) { guidanced_stop_requested = 1; }
+
 struct Options {
   std::string path_file, nav, base, odometry, rangefinders, rangefinder_model = "tf_luna";
   std::string isobus;  // a CAN interface, or the SLCAN adapter's tty (isobus_slcan)
   bool isobus_slcan = false;
   int rangefinder_baud = 115200;
   double rangefinder_rate_hz = 100, p_dist_m = 0.4, d_set_m = 0.5;
+  g::DeviationCorrectorConfig corrector;  // the laws the paper does not give (--correction-*)
+  std::optional<est::GpsTime> rangefinder_start;  // UTC time of day (ns) of the first period
   bool correction = true;
   est::Lla origin;
   double speed_mps = 0.5, lookahead_m = 1.0;
@@ -70,8 +77,9 @@ struct Options {
       "[--max-wheel-speed RAD/S] [--wheelbase M] [--max-steer-deg DEG] "
       "[--guidance-address N] [--ecu-address N] [--odometry OUT] "
       "[--rangefinders RF,RR,LF,LR [--rangefinder-model tf_luna|tfmini_s] "
-      "[--rangefinder-baud B] [--rangefinder-rate HZ] [--correction on|off] [--p-dist M] "
-      "[--d-set M]]\n",
+      "[--rangefinder-baud B] [--rangefinder-rate HZ] [--rangefinder-start-tod S] "
+      "[--correction on|off] [--correction-taper M] [--correction-gain 1/S] "
+      "[--correction-max-rate RAD/S] [--p-dist M] [--d-set M]]\n",
       why);
   std::exit(2);
 }
@@ -124,13 +132,27 @@ bool ParseRowOption(const std::string& k, const char* v, Options& o) {
       Usage("--rangefinder-model: tf_luna or tfmini_s");
   } else if (k == "--rangefinder-baud") {
     o.rangefinder_baud = static_cast<int>(Number("--rangefinder-baud", v));
+    if (o.rangefinder_baud <= 0) Usage("--rangefinder-baud: must be positive");
   } else if (k == "--rangefinder-rate") {
     o.rangefinder_rate_hz = Number("--rangefinder-rate", v);
     if (!(o.rangefinder_rate_hz > 0)) Usage("--rangefinder-rate: must be positive");
+  } else if (k == "--rangefinder-start-tod") {
+    const double tod_s = Number("--rangefinder-start-tod", v);
+    if (tod_s < 0 || tod_s >= 86400) Usage("--rangefinder-start-tod: seconds of the UTC day");
+    o.rangefinder_start = est::GpsTimeFromNs(std::llround(tod_s * 1e9));
   } else if (k == "--correction") {
     if (std::string_view(v) != "on" && std::string_view(v) != "off")
       Usage("--correction: on or off");
     o.correction = std::string_view(v) == "on";
+  } else if (k == "--correction-taper") {
+    o.corrector.taper_offset_m = Number("--correction-taper", v);
+    if (!(o.corrector.taper_offset_m > 0)) Usage("--correction-taper: must be positive");
+  } else if (k == "--correction-gain") {
+    o.corrector.heading_gain_per_s = Number("--correction-gain", v);
+    if (!(o.corrector.heading_gain_per_s > 0)) Usage("--correction-gain: must be positive");
+  } else if (k == "--correction-max-rate") {
+    o.corrector.max_turn_rate_radps = Number("--correction-max-rate", v);
+    if (!(o.corrector.max_turn_rate_radps > 0)) Usage("--correction-max-rate: must be positive");
   } else if (k == "--p-dist") {
     o.p_dist_m = Number("--p-dist", v);
   } else if (k == "--d-set") {
@@ -338,6 +360,7 @@ class Controller {
     c.speed_mps = o.speed_mps;
     c.pursuit.lookahead_m = o.lookahead_m;
     c.correction = o.correction;
+    c.corrector = o.corrector;
     c.corrector.p_dist_m = o.p_dist_m;
     c.corrector.d_set_m = o.d_set_m;
     return c;
@@ -391,6 +414,7 @@ int Loop(Controller& ctl, int nav_fd, int base_fd, hil::guidanced::IsobusLink* i
   if (ranges)
     for (const int fd : ranges->fds()) fds[n_fds++] = {fd, POLLIN, 0};
   for (;;) {
+    if (guidanced_stop_requested) return 0;
     if (poll(fds.data(), n_fds, -1) < 0) {
       if (errno == EINTR) continue;
       return 1;
@@ -429,12 +453,13 @@ void PrintCounters(const Controller& ctl, const hil::guidanced::IsobusLink* isob
     const g::DeviationState& d = row->corrector().state();
     std::fprintf(stderr,
                  "guidanced: row following; lateral_corrections=%llu heading_corrections=%llu "
-                 "turns=%llu anchors=%llu range_bad_bytes=%llu\n",
+                 "turns=%llu anchors=%llu range_bad_bytes=%llu range_overflows=%llu\n",
                  static_cast<unsigned long long>(d.lateral_corrections),
                  static_cast<unsigned long long>(d.heading_corrections),
                  static_cast<unsigned long long>(d.turns),
                  static_cast<unsigned long long>(row->state().anchors),
-                 static_cast<unsigned long long>(ranges.bad_bytes()));
+                 static_cast<unsigned long long>(ranges.bad_bytes()),
+                 static_cast<unsigned long long>(ranges.overflows()));
   }
 }
 
@@ -442,6 +467,10 @@ void PrintCounters(const Controller& ctl, const hil::guidanced::IsobusLink* isob
 
 int main(int argc, char** argv) {
   const Options o = Parse(argc, argv);
+  struct sigaction sa {};
+  sa.sa_handler = OnStopSignal;  // no SA_RESTART: poll() returns EINTR
+  sigaction(SIGTERM, &sa, nullptr);
+  sigaction(SIGINT, &sa, nullptr);
   g::PlannedPath path;
   try {
     path = g::ReadPathFile(o.path_file);
@@ -474,7 +503,8 @@ int main(int argc, char** argv) {
   const bool with_ranges = !o.rangefinders.empty();
   if (odometry_fd == -1 ||
       (with_ranges && !ranges.Open(SplitFour(o.rangefinders), o.rangefinder_baud,
-                                   o.rangefinder_model == "tfmini_s", o.rangefinder_rate_hz))) {
+                                   o.rangefinder_model == "tfmini_s", o.rangefinder_rate_hz,
+                                   o.rangefinder_start))) {
     std::fprintf(stderr, "guidanced: cannot open the odometry output or a rangefinder: %s\n",
                  std::strerror(errno));
     return 1;

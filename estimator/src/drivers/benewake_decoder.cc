@@ -35,6 +35,7 @@ int BenewakeDecoder::FrameLength() const {
 void BenewakeDecoder::Feed(std::string_view bytes) {
   for (const char c : bytes) {
     buf_[len_++] = static_cast<unsigned char>(c);
+    ++stream_bytes_;
     while (len_ > 0) {
       const int n = FrameLength();
       if (n == 0 || (n > 0 && len_ < static_cast<std::size_t>(n))) break;
@@ -44,6 +45,7 @@ void BenewakeDecoder::Feed(std::string_view bytes) {
       } else if (SumOf(buf_.data(), static_cast<std::size_t>(n) - 1) != buf_[n - 1]) {
         ++stats_.bad_checksum;
       } else {
+        frame_end_bytes_ = stream_bytes_ - (len_ - static_cast<std::size_t>(n));
         Emit(static_cast<std::size_t>(n));
         drop = static_cast<std::size_t>(n);
       }

@@ -53,9 +53,11 @@ bool DeviationCorrector::RecogniseTurn(const RangeSet& r) {
   left_ring_[rate_pos_] = left, right_ring_[rate_pos_] = right, time_ring_[rate_pos_] = r.t;
   rate_pos_ = (rate_pos_ + 1) % kMaxRateSamples;
   rate_fill_ = std::min(rate_fill_ + 1, kMaxRateSamples);
-  const bool correcting =
-      state_.mode == CorrectionMode::kHeading || state_.mode == CorrectionMode::kRealign;
-  // the corrector's own turns in place also change the sides oppositely: not a road turn
+  const bool correcting = state_.mode == CorrectionMode::kHeading ||
+                          state_.mode == CorrectionMode::kRealign ||
+                          state_.mode == CorrectionMode::kLateral;
+  // the corrector's own turns in place and its oblique swerves also change the sides oppositely
+  // at a high yaw rate: not a road turn
   if (!correcting && opposite && std::abs(gyro_.yaw_rate_radps) > config_.turn_rate_radps) {
     if (r.t >= turn_until_) ++state_.turns;
     turn_until_ = r.t + config_.turn_hold;

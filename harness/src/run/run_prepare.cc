@@ -139,7 +139,15 @@ void StartController(RunContext& ctx) {
   const truth::Geodetic& o = ctx.scenario.truth.origin;
   char origin[96];
   std::snprintf(origin, sizeof origin, "%.9f,%.9f,%.3f", o.lat_deg, o.lon_deg, o.height_m);
+  // the UTC time of day (s) of emulated t = 0, when the devices' first periods begin
+  constexpr std::int64_t kDayNs = 86'400'000'000'000LL;
+  const std::int64_t tod_ns = ((ctx.scenario.start_unix_ns % kDayNs) + kDayNs) % kDayNs;
+  char start_tod[32];
+  std::snprintf(start_tod, sizeof start_tod, "%lld.%09lld",
+                static_cast<long long>(tod_ns / 1'000'000'000LL),
+                static_cast<long long>(tod_ns % 1'000'000'000LL));
   std::vector<std::pair<std::string, std::string>> vars{
+      {"start_tod", start_tod},
       {"guidanced", ctx.options.guidanced_path},
       {"path_file", c.path_file},
       {"nav_nmea", ctx.dir + "/" + kNavNmeaFifo},

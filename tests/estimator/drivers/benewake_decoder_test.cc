@@ -128,5 +128,24 @@ TEST(BenewakeDecoder, SurvivesCorruptionAndKnowsTfminiCodes) {
   EXPECT_EQ(dec.stats().garbage_bytes, 1u + 8u);
 }
 
+// A frame's place in its stream is its time (guidanced's RangeInputs): each handler call knows
+// where the frame's last byte was, across pieces and after garbage and a bad frame.
+TEST(BenewakeDecoder, KnowsWhereEachFrameEnds) {
+  std::vector<std::uint64_t> ends;
+  const BenewakeDecoder* self = nullptr;
+  BenewakeDecoder dec(BenewakeModel::kTfLuna,
+                      [&](const BenewakeRange&) { ends.push_back(self->frame_end_bytes()); });
+  self = &dec;
+  const std::string ok("\x59\x59\x32\x00\xE8\x03\x40\x09\x18", 9);
+  std::string bad = ok;
+  bad[3] = 0x01;
+  const std::string stream = ok + "\x13" + bad + ok + ok;
+  dec.Feed(stream.substr(0, 4));
+  dec.Feed(stream.substr(4, 17));
+  dec.Feed(stream.substr(21));
+  EXPECT_EQ(ends, (std::vector<std::uint64_t>{9, 28, 37}));
+  EXPECT_EQ(dec.stream_bytes(), stream.size());
+}
+
 }  // namespace
 }  // namespace hil::estimator::drivers

@@ -136,5 +136,28 @@ TEST(DeviationCorrector, TurnsAreRecognisedAndLeftAlone) {
   EXPECT_EQ(steady.state().turns, 0u);
 }
 
+// seed001_corrected (issue 18): a lateral correction's swerve turns the vehicle at up to 0.6 rad/s
+// while one side's ranges fall and the other's rise, which is a turn's signature; recognised as
+// one, the corrector handed the vehicle back to the base navigation mid-swerve and it crossed the
+// aisle to 41 and 55 mm. The swerve is the corrector's own: it goes on.
+TEST(DeviationCorrector, ItsOwnSwerveIsNotATurn) {
+  DeviationCorrector dc({});
+  RangeSet r;
+  r.right_front_ok = r.right_rear_ok = r.left_front_ok = r.left_rear_ok = true;
+  for (int k = 0; k < 60; ++k) {
+    // 0.1 s at DP = +0.05 m (a lateral correction starts), then the swerve: right ranges fall,
+    // left ones rise at 0.3 m/s with a 30 °/s yaw rate
+    const double ramp = k < 10 ? 0 : (k - 10) * 0.003;
+    r.t = GpsTimeFromNs(k * 10'000'000LL);
+    r.right_front_m = r.right_rear_m = 0.55 - ramp;
+    r.left_front_m = r.left_rear_m = 0.65 + ramp;
+    dc.OnGyro({r.t, 0, k < 10 ? 0 : -30 * kDeg});
+    dc.OnRanges(r);
+  }
+  EXPECT_EQ(dc.state().lateral_corrections, 1u);
+  EXPECT_EQ(dc.state().turns, 0u);
+  EXPECT_EQ(dc.state().mode, CorrectionMode::kLateral);
+}
+
 }  // namespace
 }  // namespace hil::estimator::guidance

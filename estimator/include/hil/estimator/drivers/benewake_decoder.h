@@ -48,6 +48,11 @@ class BenewakeDecoder {
   void set_unit(BenewakeUnit unit) { unit_ = unit; }
   BenewakeUnit unit() const { return unit_; }
   const BenewakeDecoderStats& stats() const { return stats_; }
+  /// The bytes fed so far.
+  std::uint64_t stream_bytes() const { return stream_bytes_; }
+  /// Inside a handler: the stream offset just past the frame's last byte (a module sends a frame
+  /// per period, so its place in the stream is its time).
+  std::uint64_t frame_end_bytes() const { return frame_end_bytes_; }
 
  private:
   /// Bytes of a complete frame at the buffer's start, 0 when more are needed, −1 for garbage.
@@ -61,6 +66,7 @@ class BenewakeDecoder {
   BenewakeDecoderStats stats_;
   std::array<unsigned char, 2 * kMax> buf_{};
   std::size_t len_ = 0;
+  std::uint64_t stream_bytes_ = 0, frame_end_bytes_ = 0;
 };
 
 }  // namespace hil::estimator::drivers

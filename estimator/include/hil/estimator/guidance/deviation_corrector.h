@@ -19,7 +19,9 @@
 /// - Only on straight segments: a turn is recognised when the gyro's yaw rate exceeds
 ///   `turn_rate_radps` while the left and right mean ranges change in opposite directions
 ///   (left falling and right rising: a left turn), and is held `turn_hold` after; corrections
-///   neither start nor run during one. No correction starts without four valid ranges.
+///   neither start nor run during one. The corrector's own motions (its turns in place and its
+///   oblique swerves, which show the same signs) are not recognised as turns. No correction
+///   starts without four valid ranges.
 /// The paper's missing laws (ω_t, V_t, ω_t′ and their combination with V_d, ω_d) are this
 /// project's: the gains below are scenario parameters. Fixed-size state, no allocation.
 
