@@ -5,6 +5,8 @@
 #include "hil/estimator/guidance/fuzzy_tracker.h"
 
 #include <cmath>
+#include <cstdint>
+#include <optional>
 #include <numbers>
 
 #include <gtest/gtest.h>
@@ -79,23 +81,64 @@ TEST(FuzzyTrackerTest, SignsThroughThePath) {
   EXPECT_NEAR(t.Update(path, pose).curvature_left_per_m, 0.111136, 1e-6);
 }
 
-TEST(FuzzyTrackerTest, SteerRateLimitHoldsTheCommandToThePushRod) {
+constexpr std::int64_t kMs = 1'000'000;
+
+TEST(FuzzyTrackerTest, UpdateIntervalComesFromTheSolutionTimes) {
+  const FuzzyTrackerConfig c;  // fallback 0.2 s
+  EXPECT_DOUBLE_EQ(FuzzyUpdateInterval_s(c, 1000 * kMs, 1200 * kMs), 0.2);
+  EXPECT_DOUBLE_EQ(FuzzyUpdateInterval_s(c, 1000 * kMs, 1100 * kMs), 0.1);   // 10 Hz
+  EXPECT_DOUBLE_EQ(FuzzyUpdateInterval_s(c, 1000 * kMs, 1000 * kMs), 0.0);   // repeated
+  EXPECT_DOUBLE_EQ(FuzzyUpdateInterval_s(c, 1000 * kMs, 2600 * kMs), 1.6);   // a gap
+  constexpr std::int64_t kDay = 86'400'000 * kMs;
+  EXPECT_NEAR(FuzzyUpdateInterval_s(c, kDay - 100 * kMs, 100 * kMs), 0.2, 1e-12);  // midnight
+  EXPECT_DOUBLE_EQ(FuzzyUpdateInterval_s(c, 1200 * kMs, 1000 * kMs), 0.2);  // backwards
+  EXPECT_DOUBLE_EQ(FuzzyUpdateInterval_s(c, std::nullopt, 1000 * kMs), 0.2);
+  EXPECT_DOUBLE_EQ(FuzzyUpdateInterval_s(c, 1000 * kMs, std::nullopt), 0.2);
+}
+
+TEST(FuzzyTrackerTest, SteerRateLimitStepsByTheSolutionInterval) {
   const PlannedPath path = EastLine();
   FuzzyTrackerConfig c;
-  c.steer_rate_limit_deg_s = 16;  // 3.2° per 0.2 s update
+  c.steer_rate_limit_deg_s = 16;
   FuzzyTracker t{c};
   VehiclePose2d pose;
   pose.p_EN_m = {5, 1.0};  // far left: the rule asks for the full −32°
   pose.speed_mps = 0.5;
-  t.Update(path, pose);
+  pose.t_ns = 1000 * kMs;
+  t.Update(path, pose);  // the first Update: no previous time, the 0.2 s fallback
   EXPECT_NEAR(t.last_steer_rad() / kDeg, -3.2, 1e-9);
+  pose.t_ns = 1100 * kMs;  // 0.1 s later: 1.6°
   t.Update(path, pose);
-  EXPECT_NEAR(t.last_steer_rad() / kDeg, -6.4, 1e-9);
+  EXPECT_NEAR(t.last_steer_rad() / kDeg, -4.8, 1e-9);
+  t.Update(path, pose);  // the same solution again: no time, no step
+  EXPECT_NEAR(t.last_steer_rad() / kDeg, -4.8, 1e-9);
+  pose.t_ns = 1600 * kMs;  // 0.5 s: 8°
+  t.Update(path, pose);
+  EXPECT_NEAR(t.last_steer_rad() / kDeg, -12.8, 1e-9);
   pose.p_EN_m = {5, 0.0};  // on the line: the rule asks for 0°, the command comes back by 3.2°
+  pose.t_ns = 1800 * kMs;
   t.Update(path, pose);
-  EXPECT_NEAR(t.last_steer_rad() / kDeg, -3.2, 1e-9);
+  EXPECT_NEAR(t.last_steer_rad() / kDeg, -9.6, 1e-9);
   t.Reset();
   EXPECT_DOUBLE_EQ(t.last_steer_rad(), 0.0);
+  pose.p_EN_m = {5, 1.0};
+  pose.t_ns = 1810 * kMs;  // after Reset the previous time is forgotten: the fallback again
+  t.Update(path, pose);
+  EXPECT_NEAR(t.last_steer_rad() / kDeg, -3.2, 1e-9);
+}
+
+TEST(FuzzyTrackerTest, SteerRateLimitWithoutTimesUsesTheFallbackPeriod) {
+  const PlannedPath path = EastLine();
+  FuzzyTrackerConfig c;
+  c.steer_rate_limit_deg_s = 16;
+  c.fallback_period_s = 0.1;
+  FuzzyTracker t{c};
+  VehiclePose2d pose;  // no t_ns
+  pose.p_EN_m = {5, 1.0};
+  pose.speed_mps = 0.5;
+  t.Update(path, pose);
+  t.Update(path, pose);
+  EXPECT_NEAR(t.last_steer_rad() / kDeg, -3.2, 1e-9);  // 2 × 1.6°
 }
 
 // Rear-axle kinematic bicycle at 0.5 m/s, the command held between 5 Hz updates.
