@@ -303,7 +303,8 @@ class Controller {
       speed_mps_ = f->speed_mps.value_or(0.0);
       return;
     }
-    tod_ns_ = f->utc_time_of_day_ns.value_or(0);
+    fix_tod_ns_ = f->utc_time_of_day_ns;
+    tod_ns_ = fix_tod_ns_.value_or(0);
     const double h = f->msl_altitude_m.value_or(0.0) + f->geoid_separation_m.value_or(0.0);
     p_EN_m_ = frame_.ToLocal({*f->lat_deg, *f->lon_deg, h}).head<2>();
     have_fix_ = true;
@@ -326,6 +327,7 @@ class Controller {
     pose.p_EN_m = p_EN_m_;
     pose.yaw_rad = (90.0 - heading_deg_) * std::numbers::pi / 180.0;
     pose.speed_mps = speed_mps_;
+    pose.t_ns = fix_tod_ns_;  // the fuzzy tracker's steering-rate limit steps by the interval
     if (isobus_) {
       SteerCommand(tracker_.Update(path_, pose));
       return;
@@ -394,6 +396,7 @@ class Controller {
   std::array<std::int64_t, 8> asked_tod_ns_{};
   std::size_t asked_first_ = 0, asked_count_ = 0;
   std::int64_t tod_ns_ = 0;
+  std::optional<std::int64_t> fix_tod_ns_;  // the last GGA's time of day, when it had one
   std::uint64_t forwarded_ = 0;
   Eigen::Vector2d p_EN_m_{0, 0};
   double heading_deg_ = 0, speed_mps_ = 0;

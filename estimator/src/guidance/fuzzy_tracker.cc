@@ -26,6 +26,15 @@ double FuzzySteerAngle_rad(const FuzzyTrackerConfig& c, double d_m, double theta
   return alpha_deg / kDegPerRad;
 }
 
+double FuzzyUpdateInterval_s(const FuzzyTrackerConfig& c, std::optional<std::int64_t> prev_t_ns,
+                             std::optional<std::int64_t> t_ns) {
+  constexpr std::int64_t kDay_ns = 86'400'000'000'000;
+  if (!prev_t_ns || !t_ns) return c.fallback_period_s;
+  const std::int64_t dt_ns = ((*t_ns - *prev_t_ns) % kDay_ns + kDay_ns) % kDay_ns;
+  if (dt_ns >= kDay_ns / 2) return c.fallback_period_s;
+  return static_cast<double>(dt_ns) * 1e-9;
+}
+
 TrackingCommand FuzzyTracker::Update(const PlannedPath& path, const VehiclePose2d& pose) {
   if (path.vertex_count() < 2) return {};
   const PathProjection foot = have_hint_ ? path.Project(pose.p_EN_m, hint_, cfg_.search_window_m)
@@ -46,9 +55,11 @@ TrackingCommand FuzzyTracker::Update(const PlannedPath& path, const VehiclePose2
   c.end_of_path = foot.s_m >= path.length_m() - 1e-6;
   double steer_rad = FuzzySteerAngle_rad(cfg_, c.cross_track_m, theta_rad);
   if (cfg_.steer_rate_limit_deg_s > 0) {
-    const double step_rad = cfg_.steer_rate_limit_deg_s / kDegPerRad * cfg_.control_period_s;
+    const double dt_s = FuzzyUpdateInterval_s(cfg_, last_t_ns_, pose.t_ns);
+    const double step_rad = cfg_.steer_rate_limit_deg_s / kDegPerRad * dt_s;
     steer_rad = std::clamp(steer_rad, last_steer_rad_ - step_rad, last_steer_rad_ + step_rad);
   }
+  last_t_ns_ = pose.t_ns;
   last_steer_rad_ = steer_rad;
   c.curvature_left_per_m = std::tan(last_steer_rad_) / cfg_.wheelbase_m;
   return c;

@@ -4,8 +4,11 @@
 // 5 Hz as in the paper's tests): it converges from a 1 m offset and a 30° heading error.
 #include "hil/estimator/guidance/fuzzy_tracker.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
+#include <optional>
 
 #include <gtest/gtest.h>
 
@@ -79,23 +82,64 @@ TEST(FuzzyTrackerTest, SignsThroughThePath) {
   EXPECT_NEAR(t.Update(path, pose).curvature_left_per_m, 0.111136, 1e-6);
 }
 
-TEST(FuzzyTrackerTest, SteerRateLimitHoldsTheCommandToThePushRod) {
+constexpr std::int64_t kMs = 1'000'000;
+
+TEST(FuzzyTrackerTest, UpdateIntervalComesFromTheSolutionTimes) {
+  const FuzzyTrackerConfig c;  // fallback 0.2 s
+  EXPECT_DOUBLE_EQ(FuzzyUpdateInterval_s(c, 1000 * kMs, 1200 * kMs), 0.2);
+  EXPECT_DOUBLE_EQ(FuzzyUpdateInterval_s(c, 1000 * kMs, 1100 * kMs), 0.1);  // 10 Hz
+  EXPECT_DOUBLE_EQ(FuzzyUpdateInterval_s(c, 1000 * kMs, 1000 * kMs), 0.0);  // repeated
+  EXPECT_DOUBLE_EQ(FuzzyUpdateInterval_s(c, 1000 * kMs, 2600 * kMs), 1.6);  // a gap
+  constexpr std::int64_t kDay = 86'400'000 * kMs;
+  EXPECT_NEAR(FuzzyUpdateInterval_s(c, kDay - 100 * kMs, 100 * kMs), 0.2, 1e-12);  // midnight
+  EXPECT_DOUBLE_EQ(FuzzyUpdateInterval_s(c, 1200 * kMs, 1000 * kMs), 0.2);         // backwards
+  EXPECT_DOUBLE_EQ(FuzzyUpdateInterval_s(c, std::nullopt, 1000 * kMs), 0.2);
+  EXPECT_DOUBLE_EQ(FuzzyUpdateInterval_s(c, 1000 * kMs, std::nullopt), 0.2);
+}
+
+TEST(FuzzyTrackerTest, SteerRateLimitStepsByTheSolutionInterval) {
   const PlannedPath path = EastLine();
   FuzzyTrackerConfig c;
-  c.steer_rate_limit_deg_s = 16;  // 3.2° per 0.2 s update
+  c.steer_rate_limit_deg_s = 16;
   FuzzyTracker t{c};
   VehiclePose2d pose;
   pose.p_EN_m = {5, 1.0};  // far left: the rule asks for the full −32°
   pose.speed_mps = 0.5;
-  t.Update(path, pose);
+  pose.t_ns = 1000 * kMs;
+  t.Update(path, pose);  // the first Update: no previous time, the 0.2 s fallback
   EXPECT_NEAR(t.last_steer_rad() / kDeg, -3.2, 1e-9);
+  pose.t_ns = 1100 * kMs;  // 0.1 s later: 1.6°
   t.Update(path, pose);
-  EXPECT_NEAR(t.last_steer_rad() / kDeg, -6.4, 1e-9);
+  EXPECT_NEAR(t.last_steer_rad() / kDeg, -4.8, 1e-9);
+  t.Update(path, pose);  // the same solution again: no time, no step
+  EXPECT_NEAR(t.last_steer_rad() / kDeg, -4.8, 1e-9);
+  pose.t_ns = 1600 * kMs;  // 0.5 s: 8°
+  t.Update(path, pose);
+  EXPECT_NEAR(t.last_steer_rad() / kDeg, -12.8, 1e-9);
   pose.p_EN_m = {5, 0.0};  // on the line: the rule asks for 0°, the command comes back by 3.2°
+  pose.t_ns = 1800 * kMs;
   t.Update(path, pose);
-  EXPECT_NEAR(t.last_steer_rad() / kDeg, -3.2, 1e-9);
+  EXPECT_NEAR(t.last_steer_rad() / kDeg, -9.6, 1e-9);
   t.Reset();
   EXPECT_DOUBLE_EQ(t.last_steer_rad(), 0.0);
+  pose.p_EN_m = {5, 1.0};
+  pose.t_ns = 1810 * kMs;  // after Reset the previous time is forgotten: the fallback again
+  t.Update(path, pose);
+  EXPECT_NEAR(t.last_steer_rad() / kDeg, -3.2, 1e-9);
+}
+
+TEST(FuzzyTrackerTest, SteerRateLimitWithoutTimesUsesTheFallbackPeriod) {
+  const PlannedPath path = EastLine();
+  FuzzyTrackerConfig c;
+  c.steer_rate_limit_deg_s = 16;
+  c.fallback_period_s = 0.1;
+  FuzzyTracker t{c};
+  VehiclePose2d pose;  // no t_ns
+  pose.p_EN_m = {5, 1.0};
+  pose.speed_mps = 0.5;
+  t.Update(path, pose);
+  t.Update(path, pose);
+  EXPECT_NEAR(t.last_steer_rad() / kDeg, -3.2, 1e-9);  // 2 × 1.6°
 }
 
 // Rear-axle kinematic bicycle at 0.5 m/s, the command held between 5 Hz updates.
@@ -134,6 +178,45 @@ TEST(FuzzyTrackerTest, ConvergesOnTheGreenhousePlatform) {
   b.speed_mps = 0.5;
   MeanAbsDeviation(b, &final_m);
   EXPECT_LT(final_m, 0.02);
+}
+
+// The greenhouse platform with its push rod (first-order lag 0.1 s, at most 16°/s, as the seed003
+// rig) under the scenarios' gains (k_α 9.7403, heading preview 2 m), from 0.668 m left of the
+// line (straight-line state 3); returns the largest |d| of the last 10 s of 30 s.
+double LateMaxDeviationOnThePushRod(double weight_n_max) {
+  const PlannedPath path = EastLine();
+  FuzzyTrackerConfig c;
+  c.k_alpha_deg = 9.7403;
+  c.heading_preview_m = 2.0;
+  c.weight_n_max = weight_n_max;
+  FuzzyTracker t{c};
+  VehiclePose2d pose;
+  pose.p_EN_m = {2, 0.668};
+  pose.speed_mps = 0.5;
+  constexpr double kRodRate_radps = 16 * kDeg, kRodLag_s = 0.1, kStep_s = 0.01;
+  double delta_rad = 0, late_max_m = 0;
+  for (int k = 0; k < 5 * 30; ++k) {
+    pose.t_ns = k * 200 * kMs;
+    const TrackingCommand cmd = t.Update(path, pose);
+    if (k >= 5 * 20) late_max_m = std::max(late_max_m, std::fabs(cmd.cross_track_m));
+    const double target_rad = std::atan(cmd.curvature_left_per_m * c.wheelbase_m);
+    for (int j = 0; j < 20; ++j) {
+      const double rate =
+          std::clamp((target_rad - delta_rad) / kRodLag_s, -kRodRate_radps, kRodRate_radps);
+      delta_rad += rate * kStep_s;
+      pose.p_EN_m += pose.speed_mps * kStep_s *
+                     Eigen::Vector2d(std::cos(pose.yaw_rad), std::sin(pose.yaw_rad));
+      pose.yaw_rad += pose.speed_mps * std::tan(delta_rad) / c.wheelbase_m * kStep_s;
+    }
+  }
+  return late_max_m;
+}
+
+TEST(FuzzyTrackerTest, WeightCapKeepsTheLoopDampedOnTheRateLimitedPushRod) {
+  // n up to 1 (the paper's clamp): heading-blind beyond 0.533 m, a full-lock limit cycle
+  // (metres off the line 20 s later); n ≤ 0.3 (the seed003 scenarios): settled within 5 cm
+  EXPECT_GT(LateMaxDeviationOnThePushRod(1.0), 1.0);
+  EXPECT_LT(LateMaxDeviationOnThePushRod(0.3), 0.05);
 }
 
 }  // namespace

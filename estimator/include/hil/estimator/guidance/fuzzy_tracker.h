@@ -21,6 +21,8 @@
 /// Allocation-free.
 
 #include <cstddef>
+#include <cstdint>
+#include <optional>
 
 #include "hil/estimator/guidance/path_tracker.h"
 
@@ -46,10 +48,14 @@ struct FuzzyTrackerConfig {
   /// beyond |d| = 0.533 m and has no damping there (a scenario parameter, not the paper's).
   double weight_n_max = 1.0;
   /// Anti-windup at the steering actuator: the commanded α moves at most this fast (°/s, 0 = no
-  /// limit), by steps of control_period_s, so the command never runs ahead of a rate-limited push
-  /// rod and the rule sees the angle the wheels can actually hold (a scenario parameter).
+  /// limit), so the command never runs ahead of a rate-limited push rod and the rule sees the
+  /// angle the wheels can actually hold (a scenario parameter). The step of one Update is this
+  /// rate times the interval between the poses' solution times (VehiclePose2d::t_ns), see
+  /// FuzzyUpdateInterval_s.
   double steer_rate_limit_deg_s = 0.0;
-  double control_period_s = 0.2;  ///< the interval between Updates (paper 003: 5 Hz)
+  /// The interval assumed when the solution times cannot give one: the first Update after
+  /// construction or Reset, a pose without t_ns, or a time that goes backwards (paper 003: 5 Hz).
+  double fallback_period_s = 0.2;
 };
 
 /// n = k·|d/M|^p clamped to [0, 1] (eq. 10).
@@ -57,6 +63,12 @@ double FuzzyWeight(const FuzzyTrackerConfig& c, double d_m);
 /// The front-wheel angle α (rad, + = left) for lateral deviation d (m, + = left of the line) and
 /// heading deviation θ (rad, path minus vehicle, + = counter-clockwise).
 double FuzzySteerAngle_rad(const FuzzyTrackerConfig& c, double d_m, double theta_rad);
+/// The interval (s) between two solution times (ns): t_ns − prev_t_ns taken modulo one day, so
+/// that a UTC time of day works across midnight; 0 for a repeated time (the rod has had no time
+/// to move). c.fallback_period_s when either time is missing or the difference, so wrapped, is
+/// 12 h or more (a time that went backwards).
+double FuzzyUpdateInterval_s(const FuzzyTrackerConfig& c, std::optional<std::int64_t> prev_t_ns,
+                             std::optional<std::int64_t> t_ns);
 
 class FuzzyTracker {
  public:
@@ -65,6 +77,7 @@ class FuzzyTracker {
   void Reset() {
     have_hint_ = false;
     last_steer_rad_ = 0;
+    last_t_ns_.reset();
   }
   /// The front-wheel angle of the last Update (rad, + = left).
   double last_steer_rad() const { return last_steer_rad_; }
@@ -74,6 +87,7 @@ class FuzzyTracker {
   std::size_t hint_ = 0;
   bool have_hint_ = false;
   double last_steer_rad_ = 0;
+  std::optional<std::int64_t> last_t_ns_;  ///< the previous Update's solution time
 };
 
 }  // namespace hil::estimator::guidance

@@ -5,6 +5,9 @@
 /// curvature = tan δ / L at the rear axle) and a differential-drive base (curvature = ω / v at the
 /// axle midpoint). Curvature is positive to the left (ENU, counter-clockwise).
 
+#include <cstdint>
+#include <optional>
+
 #include <Eigen/Core>
 
 namespace hil::estimator::guidance {
@@ -15,6 +18,9 @@ struct VehiclePose2d {
   Eigen::Vector2d p_EN_m{0, 0};
   double yaw_rad = 0;  ///< direction of travel, ENU (0 = east, + counter-clockwise)
   double speed_mps = 0;
+  /// The solution's time (ns; guidanced: the UTC time of day of its GGA), for trackers that
+  /// need the interval between updates (FuzzyTracker's steering-rate limit); nullopt: unknown.
+  std::optional<std::int64_t> t_ns;
 };
 
 struct FrontSteeredPlatform {
