@@ -165,6 +165,12 @@ struct SolutionOutputs {
   std::unique_ptr<hil::navd::CanOutput> can;
   std::uint64_t nmea_write_errors = 0;
   std::optional<est::GpsTime> last_emitted;
+  // CLOCK_MONOTONIC time of the oldest JSON line not flushed yet (-1: none). The lines go out in
+  // one write when navd is about to wait for input (FlushHeld), or once the oldest has waited
+  // kMaxJsonHoldNs: one write per batch of input, not per solution, and never a late line.
+  std::int64_t json_held_since_ns = -1;
+  static constexpr std::int64_t kMaxJsonHoldNs = 2'000'000;
+  static constexpr std::size_t kJsonBufferBytes = 1 << 16;
 
   // Opens every configured output; false, after a message naming it, when one cannot be opened.
   bool Open(const est::NavdConfig& cfg) {
@@ -176,6 +182,7 @@ struct SolutionOutputs {
         return false;
       }
     }
+    std::setvbuf(out, nullptr, _IOFBF, kJsonBufferBytes);  // before any output (FlushHeld)
     if (!cfg.nmea_device.empty()) {
       nmea_fd = open(cfg.nmea_device.c_str(), O_WRONLY | O_NOCTTY | O_NONBLOCK | O_CREAT | O_APPEND,
                      0644);
@@ -202,7 +209,9 @@ struct SolutionOutputs {
     std::string line = est::ToJsonLine(ToSolution(o, nav, leap_s));
     health.AppendTo(line, o.t);
     std::fwrite(line.data(), 1, line.size(), out);
-    std::fflush(out);
+    const std::int64_t now = MonotonicNs();
+    if (json_held_since_ns < 0) json_held_since_ns = now;
+    if (now - json_held_since_ns >= kMaxJsonHoldNs) FlushHeld();
     if (nmea_fd >= 0) {
       const std::string s = est::outputs::FormatNmea0183(o, est::UnixNsFromGpsTime(o.t, leap_s));
       if (write(nmea_fd, s.data(), s.size()) != static_cast<ssize_t>(s.size())) ++nmea_write_errors;
@@ -211,7 +220,15 @@ struct SolutionOutputs {
     last_emitted = o.t;
   }
 
+  // The JSON lines written since the last flush, out now (navd waits for input next).
+  void FlushHeld() {
+    if (json_held_since_ns < 0) return;
+    std::fflush(out);
+    json_held_since_ns = -1;
+  }
+
   void Close() {
+    FlushHeld();
     if (out != stdout) std::fclose(out);
     if (nmea_fd >= 0) close(nmea_fd);
   }
@@ -244,13 +261,16 @@ bool OpenCanImu(const est::NavdConfig& cfg, std::unique_ptr<hil::navd::CanImuInp
 // A serial input device with what its bytes are fed to.
 using SerialInput = std::pair<hil::navd::SerialDevice*, std::function<void(const std::string&)>>;
 
-// Polls the inputs (and the CAN IMU socket) until SIGTERM/SIGINT, feeding what each one reads.
+// Polls the inputs (and the CAN IMU socket) until SIGTERM/SIGINT, feeding what each one reads;
+// `before_wait` runs before every poll() that may wait.
 void PollInputs(const std::vector<SerialInput>& inputs, hil::navd::CanImuInput* can_imu,
                 hil::navd::GnssReceivers& receivers,
-                const std::function<void(const est::ImuSample&)>& on_imu) {
+                const std::function<void(const est::ImuSample&)>& on_imu,
+                const std::function<void()>& before_wait) {
   std::vector<pollfd> p;
   std::vector<std::size_t> polled;
   std::string buf;
+  bool drained = true;  // the last reads took every byte their devices had
   while (!g_stop) {
     receivers.Service(MonotonicNs());  // start-up CFG
     p.clear();
@@ -266,10 +286,18 @@ void PollInputs(const std::vector<SerialInput>& inputs, hil::navd::CanImuInput* 
       polled.push_back(inputs.size());  // past the serial inputs: the CAN socket
     }
     if (p.empty()) {
+      before_wait();
       usleep(100000);
       continue;
     }
-    if (poll(p.data(), p.size(), 200) <= 0) continue;
+    // every device read to its last byte: poll() will probably wait (else a look first)
+    int ready = drained ? 0 : poll(p.data(), p.size(), 0);
+    if (ready == 0) {
+      before_wait();
+      ready = poll(p.data(), p.size(), 200);
+    }
+    drained = true;
+    if (ready <= 0) continue;
     for (std::size_t i = 0; i < p.size(); ++i) {
       if (!(p[i].revents & (POLLIN | POLLHUP | POLLERR))) continue;
       if (polled[i] == inputs.size()) {
@@ -278,6 +306,7 @@ void PollInputs(const std::vector<SerialInput>& inputs, hil::navd::CanImuInput* 
       }
       buf.clear();
       const bool alive = inputs[polled[i]].first->Read(buf);
+      drained = drained && inputs[polled[i]].first->drained();
       inputs[polled[i]].second(buf);
       if (!alive) usleep(100000);
     }
@@ -465,7 +494,7 @@ int Run(const est::NavdConfig& cfg, SolutionOutputs& outputs) {
     else
       mcu.Feed(b);
   });
-  PollInputs(inputs, can_imu.get(), receivers, on_can_imu);
+  PollInputs(inputs, can_imu.get(), receivers, on_can_imu, [&] { outputs.FlushHeld(); });
   merge.ReleaseAll();  // what the merge still holds goes on (and out) before navd stops
   PrintStopStats(receivers, mcu, nav, outputs);
   if (razor_text) PrintRazorStats(razor, razor_adapter);

@@ -39,17 +39,21 @@ int SerialDevice::EnsureOpen() {
 bool SerialDevice::Read(std::string& out) {
   if (fd_ < 0) return false;
   char buf[kMaxReadBytes];
+  drained_ = true;
   for (std::size_t total = 0; total < kMaxReadBytes;) {
-    const ssize_t n = read(fd_, buf, kMaxReadBytes - total);
+    const std::size_t want = kMaxReadBytes - total;
+    const ssize_t n = read(fd_, buf, want);
     if (n > 0) {
       out.append(buf, static_cast<std::size_t>(n));
       total += static_cast<std::size_t>(n);
+      if (static_cast<std::size_t>(n) < want) return true;  // all it had
       continue;
     }
     if (n < 0 && (errno == EAGAIN || errno == EINTR)) return true;
     Close();  // EOF or EIO: the peer went away
     return false;
   }
+  drained_ = false;
   return true;  // more may be waiting: poll() reports it again at once
 }
 

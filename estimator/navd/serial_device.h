@@ -24,8 +24,13 @@ class SerialDevice {
   /// backlog first would run the IMU seconds ahead of GNSS fixes still queued on the other
   /// device, which then arrive too late to fuse. Returns false when the device closed or failed,
   /// in which case it is closed and will be reopened by the next EnsureOpen().
+  /// A read shorter than asked for ends the call: the device had no more bytes then (one read
+  /// per call instead of a last one that finds nothing; poll() reports what comes later).
   bool Read(std::string& out);
   static constexpr std::size_t kMaxReadBytes = 512;
+  /// Whether the last Read() took every byte the device had (false: it stopped at
+  /// kMaxReadBytes, and more are probably waiting).
+  bool drained() const { return drained_; }
   int fd() const { return fd_; }
   const std::string& path() const { return path_; }
   std::uint64_t reopen_count() const { return reopens_; }
@@ -37,6 +42,7 @@ class SerialDevice {
   int fd_ = -1;
   std::uint64_t reopens_ = 0;
   bool opened_once_ = false;
+  bool drained_ = true;
 };
 
 }  // namespace hil::navd

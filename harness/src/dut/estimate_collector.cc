@@ -23,9 +23,8 @@ EstimateCollector::EstimateCollector(std::unique_ptr<EstimateReader> reader,
 
 void EstimateCollector::Consume(const std::string& line, std::int64_t wall_ns,
                                 const nlohmann::json* parsed) {
-  raw_ << line << "\n";
-  raw_.flush();  // everything captured so far survives an interrupted run
-  if (!raw_) NoteWriteFailure(raw_path_);
+  raw_ << line << "\n";  // flushed once per Poll()
+  raw_unflushed_ = true;
   ++lines_;
   std::optional<EstimateRecord> r;
   if (json_observer_ && reader_->reads_json()) {
@@ -56,6 +55,14 @@ std::map<std::uint32_t, std::uint64_t> EstimateCollector::bus_frames_per_pgn() c
 }
 
 void EstimateCollector::Poll() {
+  Take();
+  if (!raw_unflushed_) return;
+  raw_unflushed_ = false;
+  raw_.flush();  // everything captured so far survives an interrupted run
+  if (!raw_) NoteWriteFailure(raw_path_);
+}
+
+void EstimateCollector::Take() {
   if (poll_bus_) {
     const std::vector<CanFrame>& frames = poll_bus_();
     const std::int64_t now = link::RealtimePacer::MonotonicNs();
@@ -72,7 +79,7 @@ void EstimateCollector::Poll() {
     for (const OutputLine& l : process_->TakeLines()) {
       // with a pty output, stdout is only kept (diagnostics), never parsed as solutions
       if (nav_pty_)
-        raw_ << "# stdout: " << l.text << "\n";
+        raw_ << "# stdout: " << l.text << "\n", raw_unflushed_ = true;
       else
         Consume(l.text, l.wall_ns, l.json.get());
     }

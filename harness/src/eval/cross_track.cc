@@ -1,5 +1,6 @@
 #include "hil/harness/eval/cross_track.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -10,25 +11,48 @@ PlannedPath::PlannedPath(std::vector<Eigen::Vector2d> vertices_enu_m)
     : vertices_(std::move(vertices_enu_m)) {
   if (vertices_.size() < 2)
     throw std::invalid_argument("a planned path needs at least two vertices");
+  for (std::size_t first = 0; first + 1 < vertices_.size(); first += kBlockSegments) {
+    SegmentBlock b;
+    b.first = first;
+    b.end = std::min(first + kBlockSegments, vertices_.size() - 1);
+    Eigen::Vector2d lo = vertices_[first], hi = lo;
+    for (std::size_t j = first; j <= b.end; ++j) {
+      lo = lo.cwiseMin(vertices_[j]);
+      hi = hi.cwiseMax(vertices_[j]);
+    }
+    b.centre = (lo + hi) / 2;
+    for (std::size_t j = first; j <= b.end; ++j)
+      b.radius_m = std::max(b.radius_m, (vertices_[j] - b.centre).norm());
+    blocks_.push_back(b);
+  }
+}
+
+void PlannedPath::CrossTrackOnSegment(std::size_t i, const Eigen::Vector2d& p, double& best_d,
+                                      double& best_signed) const {
+  const Eigen::Vector2d a = vertices_[i];
+  const Eigen::Vector2d ab = vertices_[i + 1] - a;
+  const double len2 = ab.squaredNorm();
+  if (len2 <= 0) return;
+  const double f = std::clamp((p - a).dot(ab) / len2, 0.0, 1.0);
+  const Eigen::Vector2d q = a + f * ab;
+  const double d = (p - q).norm();
+  if (d < best_d) {
+    best_d = d;
+    // left of travel: cross product of direction and offset is positive
+    const double cross = ab.x() * (p - a).y() - ab.y() * (p - a).x();
+    best_signed = cross >= 0 ? d : -d;
+  }
 }
 
 double PlannedPath::CrossTrack(const Eigen::Vector2d& p) const {
+  // the segments in order, as a full scan takes them; a run is skipped only when even its circle
+  // lies beyond the best distance, with a margin far above the rounding of either distance
+  constexpr double kMargin_m = 1e-6;
   double best_d = std::numeric_limits<double>::infinity();
   double best_signed = 0;
-  for (std::size_t i = 0; i + 1 < vertices_.size(); ++i) {
-    const Eigen::Vector2d a = vertices_[i];
-    const Eigen::Vector2d ab = vertices_[i + 1] - a;
-    const double len2 = ab.squaredNorm();
-    if (len2 <= 0) continue;
-    const double f = std::clamp((p - a).dot(ab) / len2, 0.0, 1.0);
-    const Eigen::Vector2d q = a + f * ab;
-    const double d = (p - q).norm();
-    if (d < best_d) {
-      best_d = d;
-      // left of travel: cross product of direction and offset is positive
-      const double cross = ab.x() * (p - a).y() - ab.y() * (p - a).x();
-      best_signed = cross >= 0 ? d : -d;
-    }
+  for (const SegmentBlock& b : blocks_) {
+    if ((p - b.centre).norm() - b.radius_m - kMargin_m > best_d) continue;
+    for (std::size_t i = b.first; i < b.end; ++i) CrossTrackOnSegment(i, p, best_d, best_signed);
   }
   return best_signed;
 }

@@ -36,14 +36,33 @@ std::vector<std::string_view> Fields(std::string_view line) {
 
 std::string_view CaptureDirName(CaptureDir d) { return kDirNames[static_cast<int>(d)]; }
 
-std::string ToHex(std::string_view bytes) {
+namespace {
+
+// Appends the lowercase hex digits of `bytes` to `o`.
+void AppendCaptureHex(std::string& o, std::string_view bytes) {
   static constexpr char kHex[] = "0123456789abcdef";
-  std::string o;
-  o.reserve(bytes.size() * 2);
-  for (unsigned char c : bytes) {
-    o += kHex[c >> 4];
-    o += kHex[c & 15];
+  const std::size_t at = o.size();
+  o.resize(at + bytes.size() * 2);
+  char* w = o.data() + at;
+  for (const unsigned char c : bytes) {
+    *w++ = kHex[c >> 4];
+    *w++ = kHex[c & 15];
   }
+}
+
+// Appends a decimal integer and a space to `o` (std::to_string's digits).
+void AppendCaptureInt(std::string& o, std::int64_t v) {
+  char buf[24];
+  const auto res = std::to_chars(buf, buf + sizeof buf, v);
+  o.append(buf, res.ptr);
+  o += ' ';
+}
+
+}  // namespace
+
+std::string ToHex(std::string_view bytes) {
+  std::string o;
+  AppendCaptureHex(o, bytes);
   return o;
 }
 
@@ -65,11 +84,22 @@ std::optional<std::string> FromHex(std::string_view hex) {
 }
 
 std::string FormatCaptureLine(const CaptureRecord& r) {
-  std::string o(CaptureDirName(r.dir));
-  o += ' ' + std::to_string(r.t_emu_ns) + ' ' + std::to_string(r.byte_period_ns) + ' ' +
-       std::to_string(r.t_wall_ns) + ' ' + (r.name.empty() ? std::string("-") : r.name) + ' ';
-  o += r.is_frame() ? link::FormatCanFrameText(r.frame)
-                    : (r.bytes.empty() ? std::string("-") : ToHex(r.bytes));
+  std::string o;
+  o.reserve(80 + r.name.size() + 2 * r.bytes.size() + 12 * r.wall_offsets_ns.size());
+  o += CaptureDirName(r.dir);
+  o += ' ';
+  AppendCaptureInt(o, r.t_emu_ns);
+  AppendCaptureInt(o, r.byte_period_ns);
+  AppendCaptureInt(o, r.t_wall_ns);
+  o += r.name.empty() ? std::string_view("-") : std::string_view(r.name);
+  o += ' ';
+  if (r.is_frame()) {
+    o += link::FormatCanFrameText(r.frame);
+  } else if (r.bytes.empty()) {
+    o += '-';
+  } else {
+    AppendCaptureHex(o, r.bytes);
+  }
   if (!r.wall_offsets_ns.empty()) {
     o += ' ';
     for (std::size_t k = 0; k < r.wall_offsets_ns.size(); ++k) {

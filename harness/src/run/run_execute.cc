@@ -124,6 +124,11 @@ void Execute(RunContext& ctx, RunWatchdog& watchdog) {
   // the truth for the evaluation, sampled on a thread of its own as the run goes (truth_table.h)
   ctx.truth_builder.emplace(scenario.truth);
   ctx.truth_builder->Ask(TruthCsvTimes(scenario));
+  // open loop: the run's own samples serve the times they have (closed loop replays commands)
+  if (!scenario.closed_loop.enabled) {
+    ctx.scheduler->set_truth_tap(
+        [&builder = *ctx.truth_builder](const TruthSample& s) { builder.Offer(s); });
+  }
   try {
     ctx.scheduler->Run(watchdog, &scenario.truth);
   } catch (const std::exception& e) {

@@ -207,6 +207,7 @@ bool Scheduler::RunEvents(SchedulerMonitor& monitor, const truth::TruthConfig* t
     TruthSample sample;
     if (integrator) {
       sample = integrator->Sample(*t_event);
+      if (truth_tap_) truth_tap_(sample);
     } else {
       sample.t = *t_event;
     }

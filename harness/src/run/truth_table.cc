@@ -1,6 +1,7 @@
 #include "hil/harness/run/truth_table.h"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 
 namespace hil::harness {
@@ -73,12 +74,26 @@ void TruthTableBuilder::Advance(Time t) {
   cv_.notify_one();
 }
 
+void TruthTableBuilder::Offer(const TruthSample& sample) {
+  const std::lock_guard<std::mutex> lock(mu_);
+  while (!offered_.empty() && sample.t - offered_.front().t > kOfferedKeep) offered_.pop_front();
+  offered_.push_back(sample);
+}
+
+const TruthSample* TruthTableBuilder::FindOffered(Time t) const {
+  const auto it = std::lower_bound(offered_.begin(), offered_.end(), t,
+                                   [](const TruthSample& s, Time x) { return s.t < x; });
+  return it != offered_.end() && it->t == t ? &*it : nullptr;
+}
+
 void TruthTableBuilder::Work() {
-  truth::TruthIntegrator truth(config_);
+  std::optional<truth::TruthIntegrator> truth;  // for the times no offered sample has
   bool replayed = false;
   std::vector<Time> batch;
+  std::vector<std::optional<TruthSample>> offered;
   for (;;) {
     batch.clear();
+    offered.clear();
     {
       std::unique_lock<std::mutex> lock(mu_);
       cv_.wait(lock, [&] {
@@ -94,15 +109,31 @@ void TruthTableBuilder::Work() {
         position_ = batch.back();
       }
       if (batch.empty() && finishing_) return;
-      if (config_.external_commands && !replayed) {
-        Replay(truth, commands_);  // finishing_: the commands are complete
-        replayed = true;
+      for (const Time t : batch) {
+        const TruthSample* o = FindOffered(t);
+        offered.push_back(o ? std::optional<TruthSample>(*o) : std::nullopt);
       }
+      // the thread has passed these: no time before the batch's last will be asked of it again
+      while (!offered_.empty() && offered_.front().t < position_) offered_.pop_front();
     }
-    for (const Time t : batch) {
+    for (std::size_t i = 0; i < batch.size(); ++i) {
+      const Time t = batch[i];
       if (!done_times_.empty() && done_times_.back() == t) continue;
       done_times_.push_back(t);
-      done_samples_.push_back(truth.Sample(t));
+      if (offered[i]) {
+        done_samples_.push_back(*offered[i]);
+        ++offered_hits_;
+        continue;
+      }
+      if (!truth) {
+        truth.emplace(config_);
+        if (config_.external_commands && !replayed) {
+          Replay(*truth, commands_);  // finishing_ (closed loop): the commands are complete
+          replayed = true;
+        }
+      }
+      done_samples_.push_back(truth->Sample(t));
+      ++integrated_;
     }
   }
 }

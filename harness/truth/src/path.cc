@@ -1,5 +1,6 @@
 #include "hil/truth/path.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -33,6 +34,21 @@ Path::Path(std::vector<PathVertex> vertices) : v_(std::move(vertices)) {
     u_.push_back(d / len);
     s_.push_back(s_.back() + len);
   }
+  // the bounding circles of runs of interior segments (the end segments extend without limit)
+  for (std::size_t first = 1; first + 1 < u_.size(); first += kBlockSegments) {
+    SegmentBlock b;
+    b.first = first;
+    b.end = std::min(first + kBlockSegments, u_.size() - 1);
+    Eigen::Vector2d lo = v_[first].p_N_m, hi = lo;
+    for (std::size_t j = first; j <= b.end; ++j) {
+      lo = lo.cwiseMin(v_[j].p_N_m);
+      hi = hi.cwiseMax(v_[j].p_N_m);
+    }
+    b.centre = (lo + hi) / 2;
+    for (std::size_t j = first; j <= b.end; ++j)
+      b.radius_m = std::max(b.radius_m, (v_[j].p_N_m - b.centre).norm());
+    blocks_.push_back(b);
+  }
 }
 
 Eigen::Vector2d Path::PointAt(double s) const {
@@ -51,26 +67,39 @@ double Path::AlongOnSegment(std::size_t i, const Eigen::Vector2d& p) const {
   return s_[i] + (p - v_[i].p_N_m).dot(u_[i]);
 }
 
+void Path::ProjectOnSegment(std::size_t i, const Eigen::Vector2d& p, double& best_d2,
+                            PathProjection& best) const {
+  const Eigen::Vector2d r = p - v_[i].p_N_m;
+  const double len = s_[i + 1] - s_[i];
+  // the end segments extend without limit, like the follower's view of the path
+  double a = r.dot(u_[i]);
+  if (i > 0) a = std::max(a, 0.0);
+  if (i + 1 < u_.size()) a = std::min(a, len);
+  const Eigen::Vector2d off = r - a * u_[i];
+  const double d2 = off.squaredNorm();
+  if (d2 < best_d2) {
+    best_d2 = d2;
+    best.segment = i;
+    best.along_m = s_[i] + a;
+    const double cross = u_[i].x() * r.y() - u_[i].y() * r.x();  // u × r, left positive
+    best.cross_track_m = (cross >= 0 ? 1.0 : -1.0) * std::sqrt(d2);
+  }
+}
+
 PathProjection Path::Project(const Eigen::Vector2d& p) const {
+  // the segments in order, as a full scan takes them (ties go to the first); a run of segments
+  // is skipped only when even its circle lies beyond the best distance, with a margin far above
+  // the rounding of either distance
+  constexpr double kMargin_m = 1e-6;
   PathProjection best;
   double best_d2 = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < u_.size(); ++i) {
-    const Eigen::Vector2d r = p - v_[i].p_N_m;
-    const double len = s_[i + 1] - s_[i];
-    // the end segments extend without limit, like the follower's view of the path
-    double a = r.dot(u_[i]);
-    if (i > 0) a = std::max(a, 0.0);
-    if (i + 1 < u_.size()) a = std::min(a, len);
-    const Eigen::Vector2d off = r - a * u_[i];
-    const double d2 = off.squaredNorm();
-    if (d2 < best_d2) {
-      best_d2 = d2;
-      best.segment = i;
-      best.along_m = s_[i] + a;
-      const double cross = u_[i].x() * r.y() - u_[i].y() * r.x();  // u × r, left positive
-      best.cross_track_m = (cross >= 0 ? 1.0 : -1.0) * std::sqrt(d2);
-    }
+  ProjectOnSegment(0, p, best_d2, best);
+  for (const SegmentBlock& b : blocks_) {
+    const double gap_m = (p - b.centre).norm() - b.radius_m - kMargin_m;
+    if (gap_m > 0 && gap_m * gap_m > best_d2) continue;
+    for (std::size_t i = b.first; i < b.end; ++i) ProjectOnSegment(i, p, best_d2, best);
   }
+  if (u_.size() > 1) ProjectOnSegment(u_.size() - 1, p, best_d2, best);
   return best;
 }
 

@@ -1,6 +1,9 @@
 #include "hil/harness/eval/cross_track.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -41,6 +44,42 @@ TEST(CrossTrackTest, PlannedPathOfTheScenario) {
   EXPECT_NEAR(circle.CrossTrack({10, 20.5}), 0.5, 1e-6);
   // a quarter turn later the vehicle heads north at (10 + R, 20 + R)
   EXPECT_NEAR(circle.CrossTrack({10 + radius + 0.3, 20 + radius}), -0.3, 1e-3);
+}
+
+// Every segment in order, the nearest wins (CrossTrack's definition, without pruning).
+double ScanAllSegments(const std::vector<Eigen::Vector2d>& v, const Eigen::Vector2d& p) {
+  double best_d = std::numeric_limits<double>::infinity(), best_signed = 0;
+  for (std::size_t i = 0; i + 1 < v.size(); ++i) {
+    const Eigen::Vector2d ab = v[i + 1] - v[i];
+    if (ab.squaredNorm() <= 0) continue;
+    const double f = std::clamp((p - v[i]).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+    const double d = (p - (v[i] + f * ab)).norm();
+    if (d < best_d) {
+      best_d = d;
+      best_signed = ab.x() * (p - v[i]).y() - ab.y() * (p - v[i]).x() >= 0 ? d : -d;
+    }
+  }
+  return best_signed;
+}
+
+TEST(CrossTrackTest, PrunedScanGivesTheFullScansDistanceBitForBit) {
+  // GIVEN a circle of thousands of vertices (constant steering), with a repeated vertex, and
+  // points inside, on and outside it
+  truth::TruthConfig c;
+  c.speed_mps = 1;
+  c.steer_deg = 12;
+  std::vector<Eigen::Vector2d> v = PlannedPathOf(c, 400).vertices();
+  ASSERT_GT(v.size(), 1000u);
+  v.insert(v.begin() + 100, v[100]);
+  const PlannedPath path(v);
+  // THEN CrossTrack, which skips runs of segments that cannot be nearer, agrees with the scan
+  for (double x = -30; x <= 30; x += 0.37) {
+    for (double y = -45; y <= 15; y += 0.41) {
+      const Eigen::Vector2d p(x, y);
+      ASSERT_EQ(path.CrossTrack(p), ScanAllSegments(v, p)) << p.transpose();
+    }
+  }
+  for (const Eigen::Vector2d& p : v) ASSERT_EQ(path.CrossTrack(p), ScanAllSegments(v, p));
 }
 
 ErrorSample Err(double t_s, double horizontal_m) {

@@ -1,5 +1,8 @@
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -67,6 +70,51 @@ TEST(TruthPathTest, BoustrophedonRowsAreParallelSpacedAndJoinedByTangentTurns) {
   // rows are straight north–south lines at e = 0, 8, 16
   EXPECT_NEAR(CrossTrackError(p, {0, 25, 0}), 0, 1e-12);
   EXPECT_NEAR(std::abs(CrossTrackError(p, {8, 25, 0})), 0, 1e-12);
+}
+
+// The nearest point by scanning every segment in order (Project's definition, without pruning).
+PathProjection ScanAllSegments(const Path& path, const Eigen::Vector2d& p) {
+  PathProjection best;
+  double best_d2 = std::numeric_limits<double>::infinity();
+  const std::size_t n = path.segments();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector2d r = p - path.vertices()[i].p_N_m;
+    const Eigen::Vector2d& u = path.direction(i);
+    double a = r.dot(u);
+    if (i > 0) a = std::max(a, 0.0);
+    if (i + 1 < n) a = std::min(a, path.s_at_vertex(i + 1) - path.s_at_vertex(i));
+    const double d2 = (r - a * u).squaredNorm();
+    if (d2 < best_d2) {
+      best_d2 = d2;
+      best.segment = i;
+      best.along_m = path.s_at_vertex(i) + a;
+      best.cross_track_m = (u.x() * r.y() - u.y() * r.x() >= 0 ? 1.0 : -1.0) * std::sqrt(d2);
+    }
+  }
+  return best;
+}
+
+TEST(TruthPathTest, ProjectGivesTheFullScansNearestPointBitForBit) {
+  // GIVEN a field pattern of 10 rows (arcs of 5° steps: hundreds of segments) and points on,
+  // near and far from it, also exactly on vertices and beyond both ends
+  BoustrophedonSpec b;
+  b.row_length_m = 170;
+  b.rows = 10;
+  const Path path = MakeBoustrophedon(b);
+  ASSERT_GT(path.segments(), 100u);
+  std::vector<Eigen::Vector2d> points;
+  for (double x = -30; x <= 110; x += 0.73) {
+    for (double y = -40; y <= 220; y += 1.31) points.emplace_back(x, y);
+  }
+  for (const PathVertex& v : path.vertices()) points.push_back(v.p_N_m);
+  points.emplace_back(1e4, -1e4);
+  // THEN Project (which skips runs of segments that cannot be nearer) agrees with the scan
+  for (const Eigen::Vector2d& p : points) {
+    const PathProjection a = path.Project(p), e = ScanAllSegments(path, p);
+    ASSERT_EQ(a.segment, e.segment) << p.transpose();
+    ASSERT_EQ(a.along_m, e.along_m) << p.transpose();
+    ASSERT_EQ(a.cross_track_m, e.cross_track_m) << p.transpose();
+  }
 }
 
 TEST(TruthPathTest, CircleVerticesLieOnTheCircle) {

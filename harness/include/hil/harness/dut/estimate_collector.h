@@ -50,6 +50,8 @@ class EstimateCollector {
   }
 
  private:
+  /// Poll's work, without the flush of the raw lines.
+  void Take();
   /// `parsed`: the line already parsed as JSON (EstimatorProcess's reader thread), or null.
   void Consume(const std::string& line, std::int64_t wall_ns,
                const nlohmann::json* parsed = nullptr);
@@ -57,6 +59,7 @@ class EstimateCollector {
   EstimatorProcess* process_;
   link::PtyPort* nav_pty_;
   std::ofstream raw_;
+  bool raw_unflushed_ = false;  // lines written to raw_ since its last flush
   std::string pty_partial_;
   std::int64_t pty_last_ns_ = 0;
   std::vector<EstimateRecord> records_;

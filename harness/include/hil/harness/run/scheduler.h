@@ -22,6 +22,7 @@
 #include <poll.h>
 
 #include <deque>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -82,6 +83,10 @@ class Scheduler {
   /// Closed loop: the commands the actuators gave the truth so far, in time order (the
   /// evaluation replays them).
   const std::vector<VehicleCommand>& vehicle_commands() const { return vehicle_commands_; }
+
+  /// Called with every truth sample the devices are given (e.g. TruthTableBuilder::Offer), in
+  /// time order.
+  void set_truth_tap(std::function<void(const TruthSample&)> tap) { truth_tap_ = std::move(tap); }
 
   /// Runs from t = 0 to t_end. The devices sample `truth` (integrated with CVODE); without one
   /// (devices that read no truth, a replay) each event's sample holds only its time.
@@ -152,6 +157,7 @@ class Scheduler {
   Duration control_period_{};  // closed loop: control ticks are host turns (zero: none)
   Time next_control_turn_{};
   std::optional<truth::TruthIntegrator> integrator_;
+  std::function<void(const TruthSample&)> truth_tap_;
   std::vector<VehicleCommand> vehicle_commands_;
   std::vector<Time> answer_turns_;  // host turns at the ends of devices' answers
   std::deque<HostBytes> arrivals_;  // read at turns, in time order, not yet delivered
