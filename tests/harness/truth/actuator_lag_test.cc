@@ -3,6 +3,7 @@
 #include "hil/truth/actuator_lag.h"
 
 #include <cmath>
+#include <numbers>
 
 #include <gtest/gtest.h>
 
@@ -35,7 +36,7 @@ TEST(ActuatorLagTest, FirstOrderLagMatchesItsEquation) {
 TEST(ActuatorLagTest, RateLimitedLagMatchesItsEquationFromLinearToSaturated) {
   // GIVEN a steering lag of 1 ms with a rate limit of 1000 deg/s (a = τ r = 0.0175 rad), and
   // steps from 1e-4 rad (linear) to 0.6 rad (|z₀| = 34: the rate limit for 33 ms)
-  const double tau = 1e-3, r = 1000 * M_PI / 180;
+  const double tau = 1e-3, r = 1000 * std::numbers::pi / 180;
   for (const double step : {1e-4, 0.01, 0.1, 0.6, -0.6}) {
     for (const double s : {1e-4, 1e-3, 0.01, 0.03, 0.05}) {
       // THEN it agrees with the integrated equation
