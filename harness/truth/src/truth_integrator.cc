@@ -15,6 +15,7 @@
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
 #include "hil/firmware_emu/angles.h"
+#include "hil/truth/actuator_lag.h"
 #include "hil/truth/body_motion.h"
 
 namespace hil::truth {
@@ -102,6 +103,24 @@ struct TruthIntegrator::Impl {
   bool restart_needed = false;
   long late_restarts = 0;
 
+  // closed loop: the lags of v and u in closed form from (lag_t0, lag_v0, lag_u0) under the held
+  // inputs; CVODE integrates e, n, ψ only (n_ode components of y)
+  bool closed_form_lags = false;
+  int n_ode = kStateSize;
+  double lag_t0 = 0, lag_v0 = 0, lag_u0 = 0;
+
+  /// The full state at t from CVODE's components `ode` (all five, or e, n, ψ and the lags).
+  void FullState(double t, const double* ode, double* s) const {
+    std::copy(ode, ode + n_ode, s);
+    if (!closed_form_lags) return;
+    const VehicleParams& p = c->vehicle;
+    const double dt = t - lag_t0;
+    s[kV] = FirstOrderLagAt(lag_v0, in.v_cmd, p.speed_lag_s, dt);
+    s[kU] = diff_drive ? FirstOrderLagAt(lag_u0, in.u_cmd, p.yaw_rate_lag_s, dt)
+                       : RateLimitedLagAt(lag_u0, in.u_cmd, p.steer_lag_s,
+                                          p.max_steer_rate_dps * kDeg, dt);
+  }
+
   /// The external command in force at t (zero before the first).
   Inputs Scheduled(double t) const {
     const auto it = std::upper_bound(schedule.begin(), schedule.end(), t,
@@ -173,9 +192,12 @@ struct TruthIntegrator::Impl {
     return h;
   }
 
-  static int Rhs(sunrealtype /*t*/, N_Vector y, N_Vector ydot, void* user) {
+  static int Rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
     const auto* self = static_cast<const Impl*>(user);
-    self->Derivs(N_VGetArrayPointer(y), self->in, N_VGetArrayPointer(ydot));
+    double s[kStateSize], d[kStateSize];
+    self->FullState(t, N_VGetArrayPointer(y), s);
+    self->Derivs(s, self->in, d);
+    std::copy(d, d + self->n_ode, N_VGetArrayPointer(ydot));
     return 0;
   }
 
@@ -187,8 +209,11 @@ struct TruthIntegrator::Impl {
     return r.dot(switch_n[k]);
   }
 
-  static int Roots(sunrealtype /*t*/, N_Vector y, sunrealtype* g, void* user) {
-    g[0] = static_cast<const Impl*>(user)->SwitchFunction(N_VGetArrayPointer(y));
+  static int Roots(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
+    const auto* self = static_cast<const Impl*>(user);
+    double s[kStateSize];
+    self->FullState(t, N_VGetArrayPointer(y), s);
+    g[0] = self->SwitchFunction(s);
     return 0;
   }
 
@@ -322,6 +347,8 @@ struct TruthIntegrator::Impl {
       tick_s = 1.0 / c->guidance.rate_hz;  // open loop too: the speed varies
     w_IE_N = c->earth_rotation ? EarthRateIn(*frame) : Eigen::Vector3d::Zero();
     if (c->external_commands) tick_s = c->command_period_s;
+    closed_form_lags = c->external_commands;
+    n_ode = closed_form_lags ? kYaw + 1 : kStateSize;
     if (c->path && !c->external_commands) {
       const Path& path = *c->path;
       const std::size_t nv = path.vertices().size();
@@ -355,10 +382,10 @@ struct TruthIntegrator::Impl {
   void Init() {
     Free();
     Check(SUNContext_Create(nullptr, &ctx), "SUNContext_Create");
-    y = N_VNew_Serial(kStateSize, ctx);
-    work = N_VNew_Serial(kStateSize, ctx);
-    atol = N_VNew_Serial(kStateSize, ctx);
-    double* s = N_VGetArrayPointer(y);
+    y = N_VNew_Serial(n_ode, ctx);
+    work = N_VNew_Serial(n_ode, ctx);
+    atol = N_VNew_Serial(n_ode, ctx);
+    double s[kStateSize];
     const Path* path = c->path ? &*c->path : nullptr;
     const Eigen::Vector2d start =
         c->start_p_N_m.value_or(path ? path->vertices().front().p_N_m : Eigen::Vector2d::Zero());
@@ -380,11 +407,16 @@ struct TruthIntegrator::Impl {
       s[kU] = in.u_cmd;
       in = Guide(0.0, s, in);
     }
-    double* a = N_VGetArrayPointer(atol);
+    std::copy(s, s + n_ode, N_VGetArrayPointer(y));
+    lag_t0 = 0;
+    lag_v0 = s[kV];
+    lag_u0 = s[kU];
+    double a[kStateSize];
     a[kE] = a[kN] = c->atol_m;
     a[kYaw] = c->atol_m * 0.1;
     a[kV] = c->atol_m;
     a[kU] = c->atol_m * 0.1;
+    std::copy(a, a + n_ode, N_VGetArrayPointer(atol));
     cvode = CVodeCreate(CV_ADAMS, ctx);
     Check(CVodeInit(cvode, Rhs, 0.0, y), "CVodeInit");
     Check(CVodeSetUserData(cvode, this), "CVodeSetUserData");
@@ -413,13 +445,17 @@ struct TruthIntegrator::Impl {
   /// Handles the event at t_cur: mode transitions, new commands, and a restart if they changed.
   void HandleEvent() {
     // the state at t_cur: fresh y, or the value CVODE returned at the root/stop time
-    double* s = N_VGetArrayPointer(y);
+    double s[kStateSize];
+    FullState(t_cur, N_VGetArrayPointer(y), s);
     const Mode old_mode = mode;
     while (tick_s * static_cast<double>(next_tick) <= t_cur) ++next_tick;
     Transition(t_cur, s, pending_root);
     const Inputs next = Guide(t_cur, s, in);
     if (!(next == in) || !(mode == old_mode) || pending_root) {
       in = next;
+      lag_t0 = t_cur;  // the lags go on from their values at t_cur under the new inputs
+      lag_v0 = s[kV];
+      lag_u0 = s[kU];
       long n = 0;
       CVodeGetNumSteps(cvode, &n);
       steps_before += n;
@@ -533,12 +569,10 @@ TruthSample TruthIntegrator::Sample(Time t) {
   double s[kStateSize], d[kStateSize];
   if (m.fresh || ts == m.t_cur) {
     // at t_cur, y holds the state exactly (initial state, or CVODE's value at a root/stop time)
-    const double* y = N_VGetArrayPointer(m.y);
-    std::copy(y, y + kStateSize, s);
+    m.FullState(ts, N_VGetArrayPointer(m.y), s);
   } else {
     m.Check(CVodeGetDky(m.cvode, ts, 0, m.work), "CVodeGetDky");
-    const double* w = N_VGetArrayPointer(m.work);
-    std::copy(w, w + kStateSize, s);
+    m.FullState(ts, N_VGetArrayPointer(m.work), s);
   }
   m.Derivs(s, m.in, d);
   const HorizontalJets h = m.Jets(s, d);

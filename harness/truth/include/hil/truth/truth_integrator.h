@@ -39,6 +39,12 @@
 /// instant (the lockstep guarantees it); a late command is still honoured, by re-integrating from
 /// t = 0 with the whole command history (deterministic, slower). A `path`, if given, is then used
 /// for the samples' cross-track only.
+/// In this mode the lags of v and u (speed, steering or yaw-rate lag, vehicle.h) are not
+/// integrated: under a held command each has a closed form (actuator_lag.h), evaluated from its
+/// value at the last re-initialisation, and CVODE integrates y = [e, n, ψ] only. The closed-loop
+/// lags are made negligible (1 ms: the emulated actuators are the model); integrated, their
+/// eigenvalue −1/τ bounded Adams' steps by stability to about τ (1615 steps per simulated second
+/// on diff_drive_serial, against 293 with the closed form).
 ///
 /// **Sampling**: requests must come in non-decreasing time order; each is read from the
 /// interpolating polynomial of the last step (CVodeGetDky), so the step sequence does not depend
