@@ -11,20 +11,8 @@ PlannedPath::PlannedPath(std::vector<Eigen::Vector2d> vertices_enu_m)
     : vertices_(std::move(vertices_enu_m)) {
   if (vertices_.size() < 2)
     throw std::invalid_argument("a planned path needs at least two vertices");
-  for (std::size_t first = 0; first + 1 < vertices_.size(); first += kBlockSegments) {
-    SegmentBlock b;
-    b.first = first;
-    b.end = std::min(first + kBlockSegments, vertices_.size() - 1);
-    Eigen::Vector2d lo = vertices_[first], hi = lo;
-    for (std::size_t j = first; j <= b.end; ++j) {
-      lo = lo.cwiseMin(vertices_[j]);
-      hi = hi.cwiseMax(vertices_[j]);
-    }
-    b.centre = (lo + hi) / 2;
-    for (std::size_t j = first; j <= b.end; ++j)
-      b.radius_m = std::max(b.radius_m, (vertices_[j] - b.centre).norm());
-    blocks_.push_back(b);
-  }
+  blocks_ = truth::BoundSegmentRuns(0, vertices_.size() - 1, kBlockSegments,
+                                    [this](std::size_t j) { return vertices_[j]; });
 }
 
 void PlannedPath::CrossTrackOnSegment(std::size_t i, const Eigen::Vector2d& p, double& best_d,
@@ -50,7 +38,7 @@ double PlannedPath::CrossTrack(const Eigen::Vector2d& p) const {
   constexpr double kMargin_m = 1e-6;
   double best_d = std::numeric_limits<double>::infinity();
   double best_signed = 0;
-  for (const SegmentBlock& b : blocks_) {
+  for (const truth::SegmentRun& b : blocks_) {
     if ((p - b.centre).norm() - b.radius_m - kMargin_m > best_d) continue;
     for (std::size_t i = b.first; i < b.end; ++i) CrossTrackOnSegment(i, p, best_d, best_signed);
   }

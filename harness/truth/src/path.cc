@@ -35,20 +35,9 @@ Path::Path(std::vector<PathVertex> vertices) : v_(std::move(vertices)) {
     s_.push_back(s_.back() + len);
   }
   // the bounding circles of runs of interior segments (the end segments extend without limit)
-  for (std::size_t first = 1; first + 1 < u_.size(); first += kBlockSegments) {
-    SegmentBlock b;
-    b.first = first;
-    b.end = std::min(first + kBlockSegments, u_.size() - 1);
-    Eigen::Vector2d lo = v_[first].p_N_m, hi = lo;
-    for (std::size_t j = first; j <= b.end; ++j) {
-      lo = lo.cwiseMin(v_[j].p_N_m);
-      hi = hi.cwiseMax(v_[j].p_N_m);
-    }
-    b.centre = (lo + hi) / 2;
-    for (std::size_t j = first; j <= b.end; ++j)
-      b.radius_m = std::max(b.radius_m, (v_[j].p_N_m - b.centre).norm());
-    blocks_.push_back(b);
-  }
+  if (u_.size() > 2)
+    blocks_ = BoundSegmentRuns(1, u_.size() - 1, kBlockSegments,
+                               [this](std::size_t j) { return v_[j].p_N_m; });
 }
 
 Eigen::Vector2d Path::PointAt(double s) const {
@@ -94,7 +83,7 @@ PathProjection Path::Project(const Eigen::Vector2d& p) const {
   PathProjection best;
   double best_d2 = std::numeric_limits<double>::infinity();
   ProjectOnSegment(0, p, best_d2, best);
-  for (const SegmentBlock& b : blocks_) {
+  for (const SegmentRun& b : blocks_) {
     const double gap_m = (p - b.centre).norm() - b.radius_m - kMargin_m;
     if (gap_m > 0 && gap_m * gap_m > best_d2) continue;
     for (std::size_t i = b.first; i < b.end; ++i) ProjectOnSegment(i, p, best_d2, best);

@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 
 #include "hil/harness/eval/evaluator.h"
+#include "hil/truth/segment_runs.h"
 #include "hil/truth/truth_integrator.h"
 
 namespace hil::harness {
@@ -25,21 +26,17 @@ class PlannedPath {
   double CrossTrack(const Eigen::Vector2d& p_enu_m) const;
   const std::vector<Eigen::Vector2d>& vertices() const { return vertices_; }
 
-  /// CrossTrack's pruning: runs of kBlockSegments segments, each inside a circle; a run whose
-  /// circle lies beyond the nearest point found so far is skipped (the result is the full scan's).
+  /// CrossTrack's pruning: runs of kBlockSegments segments, each inside a circle (segment_runs.h);
+  /// a run whose circle lies beyond the nearest point found so far is skipped (the result is the
+  /// full scan's).
   static constexpr std::size_t kBlockSegments = 8;
 
  private:
-  struct SegmentBlock {
-    std::size_t first = 0, end = 0;  // segments [first, end)
-    Eigen::Vector2d centre = Eigen::Vector2d::Zero();
-    double radius_m = 0;
-  };
   /// CrossTrack's step for segment i: a nearer point than `best_d` updates both.
   void CrossTrackOnSegment(std::size_t i, const Eigen::Vector2d& p, double& best_d,
                            double& best_signed) const;
   std::vector<Eigen::Vector2d> vertices_;
-  std::vector<SegmentBlock> blocks_;
+  std::vector<truth::SegmentRun> blocks_;
 };
 
 /// The path the scenario commands: a straight line from the start along the heading, or (constant

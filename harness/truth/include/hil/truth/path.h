@@ -9,6 +9,8 @@
 
 #include <Eigen/Core>
 
+#include "hil/truth/segment_runs.h"
+
 namespace hil::truth {
 
 /// One vertex of a planned path.
@@ -51,16 +53,11 @@ class Path {
   std::vector<PathVertex> v_;
   std::vector<double> s_;           // arc length at each vertex
   std::vector<Eigen::Vector2d> u_;  // unit direction of each segment
-  /// Project's pruning: the segments between the two end segments in runs of kBlockSegments,
-  /// each run inside a circle (centre, radius); a run whose circle lies farther than the nearest
-  /// segment found so far cannot hold a nearer one and is skipped (the result is the full scan's).
-  struct SegmentBlock {
-    std::size_t first = 0, end = 0;  // segments [first, end)
-    Eigen::Vector2d centre = Eigen::Vector2d::Zero();
-    double radius_m = 0;
-  };
+  /// Project's pruning: the segments between the two end segments in runs of kBlockSegments
+  /// (segment_runs.h); a run whose circle lies farther than the nearest segment found so far
+  /// cannot hold a nearer one and is skipped (the result is the full scan's).
   static constexpr std::size_t kBlockSegments = 8;
-  std::vector<SegmentBlock> blocks_;
+  std::vector<SegmentRun> blocks_;
   /// Project's step for segment i: a nearer point than `best_d2` (squared distance) updates both.
   void ProjectOnSegment(std::size_t i, const Eigen::Vector2d& p, double& best_d2,
                         PathProjection& best) const;
