@@ -47,5 +47,54 @@ TEST(ClosedLoopIsobusE2eTest, TractorAutosteerOverSlcanPasses) {
   EXPECT_NE(cap.find("54304341434646314338"), std::string::npos) << "T0CACFF1C8";
 }
 
+// guidanced killed at 15 s: the ECU's watchdog (0.3 s, three missed commands) disengages with exit
+// reason 5 (remote command timeout) and the report says when and how far the tractor went.
+TEST(ClosedLoopIsobusE2eTest, ControllerKillDisengagesTheEcuByItsWatchdog) {
+  TempDir dir("e2e_closed_loop_isobus_kill");
+  const CommandResult r = RunCommand(
+      BinDir() + "/hil run " + SourceDir() +
+      "/vectors/scenarios/closed_loop/tractor_autosteer_controller_stop.yaml --short --out " +
+      dir / "r" + " --no-html");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const auto rep = nlohmann::json::parse(ReadFile(dir / "r/report.json"));
+  const auto& cl = rep["closed_loop"];
+  EXPECT_EQ(cl["controller_exit"], "killed by hil") << cl.dump(2);
+  const double last = cl["last_command_s"].get<double>();
+  EXPECT_GE(last, 14.9);
+  EXPECT_LT(last, 15.2);
+  EXPECT_NEAR(cl["watchdog_trip_s"].get<double>() - last, 0.3, 1e-6) << "the ECU's 0.3 s timeout";
+  EXPECT_GT(cl["distance_after_watchdog_m"].get<double>(), 9.0) << "the tractor keeps its speed";
+  const auto& ecu = cl["steering_ecu"];
+  EXPECT_FALSE(ecu["engaged"].get<bool>());
+  EXPECT_EQ(ecu["exit_reason_code"].get<int>(), 5);
+  EXPECT_EQ(ecu["exit_reason"], "remote_command_timeout");
+  EXPECT_EQ(ecu["watchdog_trips"].get<int>(), 1);
+}
+
+// guidanced's frames cut for 1 s from 15 s: the ECU counts the 10 lost frames, trips its watchdog,
+// and re-engages on the first command after the cut; the fault's record counts what it cut.
+TEST(ClosedLoopIsobusE2eTest, CommandLinkLossTripsAndReengages) {
+  TempDir dir("e2e_closed_loop_isobus_loss");
+  const CommandResult r = RunCommand(
+      BinDir() + "/hil run " + SourceDir() +
+      "/vectors/scenarios/closed_loop/tractor_autosteer_command_loss.yaml --short --out " +
+      dir / "r" + " --no-html");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const auto rep = nlohmann::json::parse(ReadFile(dir / "r/report.json"));
+  const auto& cl = rep["closed_loop"];
+  EXPECT_EQ(cl["command_bytes_lost"].get<int>(), 10) << cl.dump(2);
+  const double trip = cl["watchdog_trip_s"].get<double>();
+  EXPECT_GT(trip, 15.2);
+  EXPECT_LT(trip, 15.4);
+  const auto& ecu = cl["steering_ecu"];
+  EXPECT_EQ(ecu["frames_lost"].get<int>(), 10);
+  EXPECT_EQ(ecu["engagements"].get<int>(), 2);
+  EXPECT_TRUE(ecu["engaged"].get<bool>());
+  EXPECT_EQ(ecu["exit_reason"], "all_clear");
+  ASSERT_EQ(rep["fault_injections"].size(), 1U);
+  EXPECT_EQ(rep["fault_injections"][0]["kind"], "command_link_loss");
+  EXPECT_EQ(rep["fault_injections"][0]["count"].get<int>(), 10);
+}
+
 }  // namespace
 }  // namespace hil::test

@@ -5,6 +5,7 @@ namespace hil::actuator {
 BaseSerialDevice::BaseSerialDevice(const BaseSerialDeviceConfig& config)
     : cfg_(config), motors_(cfg_.motors), session_(cfg_.serial, motors_) {
   next_tick_ = Time{} + cfg_.control_period;
+  counters_.lost_per_window.assign(cfg_.link_loss.size(), 0);
 }
 
 int BaseSerialDevice::baud(int port) const {
@@ -14,9 +15,10 @@ int BaseSerialDevice::baud(int port) const {
 
 void BaseSerialDevice::OnHostBytes(int port, Time t, std::string_view bytes, DeviceOutput& out) {
   (void)port;
-  for (const auto& [from, to] : cfg_.link_loss) {
-    if (t >= from && t < to) {
+  for (std::size_t i = 0; i < cfg_.link_loss.size(); ++i) {
+    if (t >= cfg_.link_loss[i].first && t < cfg_.link_loss[i].second) {
       counters_.bytes_lost += bytes.size();
+      counters_.lost_per_window[i] += bytes.size();
       return;
     }
   }

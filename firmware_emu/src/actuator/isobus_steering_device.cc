@@ -8,6 +8,7 @@ IsobusSteeringDevice::IsobusSteeringDevice(const IsobusSteeringDeviceConfig& con
     : cfg_(config), ecu_(cfg_.ecu) {
   next_tick_ = Time{} + cfg_.control_period;
   host_frames_.reserve(16);
+  counters_.lost_per_window.assign(cfg_.link_loss.size(), 0);
 }
 
 int IsobusSteeringDevice::baud(int port) const {
@@ -16,9 +17,10 @@ int IsobusSteeringDevice::baud(int port) const {
 }
 
 void IsobusSteeringDevice::FromController(Time t, const CanFrame& frame) {
-  for (const auto& [from, to] : cfg_.link_loss) {
-    if (t >= from && t < to) {
+  for (std::size_t i = 0; i < cfg_.link_loss.size(); ++i) {
+    if (t >= cfg_.link_loss[i].first && t < cfg_.link_loss[i].second) {
       ++counters_.frames_lost;
+      ++counters_.lost_per_window[i];
       return;
     }
   }

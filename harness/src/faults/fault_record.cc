@@ -29,7 +29,7 @@ const char* FaultUnit(FaultKind kind) {
     case FaultKind::kControllerStop:
       return "controller processes killed";
     case FaultKind::kCommandLinkLoss:
-      return "command bytes lost";
+      return "command bytes (serial) or frames (CAN) lost";
     case FaultKind::kCommandLatency:
       return "commands delayed";
     case FaultKind::kActuatorSaturation:

@@ -149,6 +149,9 @@ MetricTable RunMetricTable(const RunReport& r) {
     t["closed_loop.watchdog_trips"] = static_cast<double>(r.closed_loop->watchdog_trips);
     t["closed_loop.final_speed_mps"] = r.closed_loop->final_speed_mps;
     t["closed_loop.distance_after_last_command_m"] = r.closed_loop->distance_after_last_command_m;
+    t["closed_loop.distance_after_watchdog_m"] = r.closed_loop->distance_after_watchdog_m;
+    t["closed_loop.command_bytes_lost"] = static_cast<double>(r.closed_loop->command_bytes_lost);
+    AddSteeringEcuMetrics(r.closed_loop->steering_ecu, t);
     AddClosedLoopFaultsMetrics(r.closed_loop->faults, r.tracking_faults, t);
   }
   t["output_rate_hz"] =

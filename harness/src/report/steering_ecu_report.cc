@@ -96,4 +96,20 @@ nlohmann::json SteeringEcuJson(const SteeringEcuReport& r) {
   return j;
 }
 
+void AddSteeringEcuMetrics(const std::optional<SteeringEcuReport>& r,
+                           std::map<std::string, std::optional<double>>& table) {
+  if (!r) return;
+  const auto put = [&table](const char* key, double v) {
+    table[std::string("closed_loop.steering_ecu.") + key] = v;
+  };
+  put("engaged", r->engaged ? 1.0 : 0.0);
+  put("exit_reason_code", r->exit_reason_code);
+  put("engagements", static_cast<double>(r->engagements));
+  put("watchdog_trips", static_cast<double>(r->watchdog_trips));
+  put("frames_lost", static_cast<double>(r->frames_lost));
+  put("wrong_length", static_cast<double>(r->wrong_length));
+  put("unknown_source", static_cast<double>(r->unknown_source));
+  put("out_of_range", static_cast<double>(r->out_of_range));
+}
+
 }  // namespace hil::harness

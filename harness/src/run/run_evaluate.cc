@@ -133,6 +133,18 @@ std::optional<double> DistanceAfter(const std::vector<TrackSample>& track,
   return d;
 }
 
+// Command-link loss: what each window cut (bytes on the serial base, frames on ISOBUS) goes to its
+// injection record; the devices count in the order of the scenario's command_link_loss faults.
+void NoteLinkLoss(const FaultTimeline& timeline, const std::vector<std::uint64_t>& lost_per_window,
+                  FaultRecorder& rec) {
+  std::size_t w = 0;
+  for (std::size_t i = 0; i < timeline.faults.size() && w < lost_per_window.size(); ++i) {
+    if (timeline.faults[i].kind != FaultKind::kCommandLinkLoss) continue;
+    if (lost_per_window[w] > 0) rec.Note(i, timeline.faults[i].start, lost_per_window[w]);
+    ++w;
+  }
+}
+
 // Closed loop: what the wheel motors' faults did; each fault's count goes to its injection record.
 ClosedLoopFaultsReport ActuatorFaults(const actuator::WheelMotors& motors, FaultRecorder& rec) {
   ClosedLoopFaultsReport r;
@@ -186,6 +198,7 @@ void EvaluateClosedLoop(RunContext& ctx, const TruthTable& truth) {
     if (k.first_missing) c.first_missing_s = ToSeconds(*k.first_missing);
     if (k.last_command) c.last_command_s = ToSeconds(*k.last_command);
     c.command_bytes_lost = k.bytes_lost;
+    NoteLinkLoss(ctx.scenario.faults, k.lost_per_window, ctx.fault_recorder);
     c.motor_commands = base->session().counters().motor_commands;
     c.invalid_lines = base->session().counters().invalid;
     c.saturated_commands = m.saturated_commands;
@@ -204,6 +217,7 @@ void EvaluateClosedLoop(RunContext& ctx, const TruthTable& truth) {
     if (k.first_missing) c.first_missing_s = ToSeconds(*k.first_missing);
     if (k.last_command) c.last_command_s = ToSeconds(*k.last_command);
     c.command_bytes_lost = k.frames_lost;
+    NoteLinkLoss(ctx.scenario.faults, k.lost_per_window, ctx.fault_recorder);
     c.motor_commands = e.commands_accepted;
     c.invalid_lines = e.wrong_length + e.unknown_source + e.out_of_range;
     c.watchdog_trips = e.watchdog_trips;

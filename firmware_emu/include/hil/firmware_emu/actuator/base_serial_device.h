@@ -53,6 +53,7 @@ struct BaseSerialDeviceCounters {
   std::optional<Time> first_missing;  ///< the first tick of the latest run of missing commands
   std::optional<Time> last_command;   ///< arrival of the latest speed command
   std::uint64_t bytes_lost = 0;       ///< host bytes lost to a command-link loss
+  std::vector<std::uint64_t> lost_per_window;  ///< bytes lost, one count per link_loss window
 };
 
 class BaseSerialDevice : public Device {

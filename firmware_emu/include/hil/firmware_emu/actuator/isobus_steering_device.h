@@ -61,6 +61,7 @@ struct IsobusSteeringCounters {
   std::optional<Time> first_missing;
   std::optional<Time> last_command;  ///< arrival of the latest valid Guidance System Command
   std::uint64_t frames_lost = 0;     ///< controller frames lost to a command-link loss
+  std::vector<std::uint64_t> lost_per_window;  ///< frames lost, one count per link_loss window
   std::uint64_t frames_from_controller = 0;
 };
 

@@ -4,6 +4,8 @@
 /// `closed_loop.steering_ecu`; vectors/scenarios/closed_loop/README.md).
 
 #include <cstdint>
+#include <map>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json_fwd.hpp>
@@ -32,5 +34,10 @@ struct SteeringEcuReport {
 /// The report of a run's steering ECU.
 SteeringEcuReport MakeSteeringEcuReport(const actuator::IsobusSteeringDevice& device);
 nlohmann::json SteeringEcuJson(const SteeringEcuReport& r);
+/// Its figures for the criteria, `closed_loop.steering_ecu.*` (engaged as 0/1, exit_reason_code,
+/// engagements, watchdog_trips, frames_lost, wrong_length, unknown_source, out_of_range); none
+/// without an ECU.
+void AddSteeringEcuMetrics(const std::optional<SteeringEcuReport>& r,
+                           std::map<std::string, std::optional<double>>& table);
 
 }  // namespace hil::harness
