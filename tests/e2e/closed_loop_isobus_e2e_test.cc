@@ -14,6 +14,15 @@
 namespace hil::test {
 namespace {
 
+// Runs the short form of vectors/scenarios/closed_loop/NAME.yaml into DIR/r; it must pass.
+nlohmann::json RunShortPassing(const TempDir& dir, const std::string& name) {
+  const CommandResult r =
+      RunCommand(BinDir() + "/hil run " + SourceDir() + "/vectors/scenarios/closed_loop/" + name +
+                 ".yaml --short --out " + dir / "r" + " --no-html");
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  return nlohmann::json::parse(ReadFile(dir / "r/report.json"));
+}
+
 TEST(ClosedLoopIsobusE2eTest, TractorAutosteerOverSlcanPasses) {
   TempDir dir("e2e_closed_loop_isobus");
   const CommandResult r =
@@ -51,12 +60,7 @@ TEST(ClosedLoopIsobusE2eTest, TractorAutosteerOverSlcanPasses) {
 // reason 5 (remote command timeout) and the report says when and how far the tractor went.
 TEST(ClosedLoopIsobusE2eTest, ControllerKillDisengagesTheEcuByItsWatchdog) {
   TempDir dir("e2e_closed_loop_isobus_kill");
-  const CommandResult r = RunCommand(
-      BinDir() + "/hil run " + SourceDir() +
-      "/vectors/scenarios/closed_loop/tractor_autosteer_controller_stop.yaml --short --out " +
-      dir / "r" + " --no-html");
-  ASSERT_EQ(r.exit_code, 0) << r.out;
-  const auto rep = nlohmann::json::parse(ReadFile(dir / "r/report.json"));
+  const auto rep = RunShortPassing(dir, "tractor_autosteer_controller_stop");
   const auto& cl = rep["closed_loop"];
   EXPECT_EQ(cl["controller_exit"], "killed by hil") << cl.dump(2);
   const double last = cl["last_command_s"].get<double>();
@@ -75,12 +79,7 @@ TEST(ClosedLoopIsobusE2eTest, ControllerKillDisengagesTheEcuByItsWatchdog) {
 // and re-engages on the first command after the cut; the fault's record counts what it cut.
 TEST(ClosedLoopIsobusE2eTest, CommandLinkLossTripsAndReengages) {
   TempDir dir("e2e_closed_loop_isobus_loss");
-  const CommandResult r = RunCommand(
-      BinDir() + "/hil run " + SourceDir() +
-      "/vectors/scenarios/closed_loop/tractor_autosteer_command_loss.yaml --short --out " +
-      dir / "r" + " --no-html");
-  ASSERT_EQ(r.exit_code, 0) << r.out;
-  const auto rep = nlohmann::json::parse(ReadFile(dir / "r/report.json"));
+  const auto rep = RunShortPassing(dir, "tractor_autosteer_command_loss");
   const auto& cl = rep["closed_loop"];
   EXPECT_EQ(cl["command_bytes_lost"].get<int>(), 10) << cl.dump(2);
   const double trip = cl["watchdog_trip_s"].get<double>();
