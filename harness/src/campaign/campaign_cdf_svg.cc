@@ -6,6 +6,7 @@
 
 #include "hil/harness/campaign/campaign_report.h"
 #include "hil/harness/report/report.h"
+#include "hil/harness/report/svg_plot.h"
 
 namespace hil::harness {
 namespace {
@@ -36,16 +37,10 @@ std::vector<Line> Lines(const json& summary, const std::string& metric) {
   return lines;
 }
 
-std::string Num(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.2f", v);
-  return b;
-}
-
 std::string Axes(double lo, double hi, const std::string& metric, double height) {
   const double plot_h = height - kTop - kBottom;
-  std::string s = "<rect x=\"" + Num(kLeft) + "\" y=\"" + Num(kTop) + "\" width=\"" +
-                  Num(kW - kLeft - kRight) + "\" height=\"" + Num(plot_h) +
+  std::string s = "<rect x=\"" + SvgNum(kLeft) + "\" y=\"" + SvgNum(kTop) + "\" width=\"" +
+                  SvgNum(kW - kLeft - kRight) + "\" height=\"" + SvgNum(plot_h) +
                   "\" fill=\"none\" stroke=\"#333\"/>\n";
   char b[256];
   for (int i = 0; i <= 4; ++i) {
@@ -61,9 +56,9 @@ std::string Axes(double lo, double hi, const std::string& metric, double height)
                   kLeft - 5, fy + 4, i / 4.0);
     s += b;
   }
-  s += "<text x=\"" + Num(kW / 2) + "\" y=\"" + Num(kTop + plot_h + 32) +
+  s += "<text x=\"" + SvgNum(kW / 2) + "\" y=\"" + SvgNum(kTop + plot_h + 32) +
        "\" font-size=\"12\" text-anchor=\"middle\">" + XmlEscape(metric) + "</text>\n";
-  s += "<text x=\"" + Num(kW / 2) +
+  s += "<text x=\"" + SvgNum(kW / 2) +
        "\" y=\"18\" font-size=\"13\" text-anchor=\"middle\">CDF over "
        "seeds: " +
        XmlEscape(metric) + "</text>\n";
@@ -83,24 +78,24 @@ std::string CdfSvg(const json& summary, const std::string& metric) {
   const double plot_h = kH - kTop - kBottom, plot_w = kW - kLeft - kRight;
   const auto px = [&](double x) { return kLeft + plot_w * (x - lo) / (hi - lo); };
   const auto py = [&](double f) { return kTop + plot_h * (1.0 - f); };
-  std::string s = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + Num(kW) + "\" height=\"" +
-                  Num(height) + "\" viewBox=\"0 0 " + Num(kW) + " " + Num(height) + "\">\n";
+  std::string s = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + SvgNum(kW) + "\" height=\"" +
+                  SvgNum(height) + "\" viewBox=\"0 0 " + SvgNum(kW) + " " + SvgNum(height) + "\">\n";
   s += Axes(lo, hi, metric, kH);
   for (std::size_t i = 0; i < lines.size(); ++i) {
     const Line& l = lines[i];
     const char* colour = kColours[i % (sizeof kColours / sizeof kColours[0])];
     const double n = static_cast<double>(l.x.size());
-    std::string d = "M" + Num(px(lo)) + "," + Num(py(0));
+    std::string d = "M" + SvgNum(px(lo)) + "," + SvgNum(py(0));
     for (std::size_t k = 0; k < l.x.size(); ++k) {
-      d += " H" + Num(px(l.x[k])) + " V" + Num(py(static_cast<double>(k + 1) / n));
+      d += " H" + SvgNum(px(l.x[k])) + " V" + SvgNum(py(static_cast<double>(k + 1) / n));
     }
-    d += " H" + Num(px(hi));
+    d += " H" + SvgNum(px(hi));
     s += std::string("<path fill=\"none\" stroke=\"") + colour + "\" stroke-width=\"1.5\" d=\"" +
          d + "\"/>\n";
     const double ly = kH + 14.0 * static_cast<double>(i);
-    s += std::string("<rect x=\"") + Num(kLeft) + "\" y=\"" + Num(ly - 8) +
-         "\" width=\"12\" height=\"3\" fill=\"" + colour + "\"/><text x=\"" + Num(kLeft + 18) +
-         "\" y=\"" + Num(ly) + "\" font-size=\"11\">" + XmlEscape(l.label) + " (" +
+    s += std::string("<rect x=\"") + SvgNum(kLeft) + "\" y=\"" + SvgNum(ly - 8) +
+         "\" width=\"12\" height=\"3\" fill=\"" + colour + "\"/><text x=\"" + SvgNum(kLeft + 18) +
+         "\" y=\"" + SvgNum(ly) + "\" font-size=\"11\">" + XmlEscape(l.label) + " (" +
          std::to_string(l.x.size()) + " runs)</text>\n";
   }
   return s + "</svg>\n";

@@ -9,13 +9,13 @@
 #include "hil/harness/report/report.h"
 
 namespace hil::harness {
-namespace {
-
-std::string Num(double v) {
+std::string SvgNum(double v) {
   char b[32];
   std::snprintf(b, sizeof b, "%.2f", v);
   return b;
 }
+
+namespace {
 
 std::string TickLabel(double v, double step) {
   char b[32];
@@ -98,13 +98,13 @@ void WriteSeries(std::ostream& o, const PlotSeries& s, const PlotFrame& f) {
     o << "<polyline fill=\"none\" stroke=\"" << s.color << "\" stroke-width=\"1.6\" points=\"";
     for (std::size_t i = 0; i < n; ++i) {
       if (std::isfinite(s.x[i]) && std::isfinite(s.y[i]))
-        o << Num(X(s.x[i])) << "," << Num(Y(s.y[i])) << " ";
+        o << SvgNum(X(s.x[i])) << "," << SvgNum(Y(s.y[i])) << " ";
     }
     o << "\"/>\n";
   } else if (s.style == PlotSeries::Style::kPoints) {
     for (std::size_t i = 0; i < n; ++i) {
       if (std::isfinite(s.x[i]) && std::isfinite(s.y[i])) {
-        o << "<circle cx=\"" << Num(X(s.x[i])) << "\" cy=\"" << Num(Y(s.y[i]))
+        o << "<circle cx=\"" << SvgNum(X(s.x[i])) << "\" cy=\"" << SvgNum(Y(s.y[i]))
           << "\" r=\"2\" fill=\"" << s.color << "\" fill-opacity=\"0.7\"/>\n";
       }
     }
@@ -112,8 +112,8 @@ void WriteSeries(std::ostream& o, const PlotSeries& s, const PlotFrame& f) {
     for (std::size_t i = 0; i < n; ++i) {
       const double xa = X(s.x[i] - s.bar_width / 2), xb = X(s.x[i] + s.bar_width / 2);
       const double ya = Y(std::max(s.y[i], y0)), yb = Y(std::max(0.0, y0));
-      o << "<rect x=\"" << Num(xa) << "\" y=\"" << Num(ya) << "\" width=\""
-        << Num(std::max(0.5, xb - xa - 1)) << "\" height=\"" << Num(std::max(0.0, yb - ya))
+      o << "<rect x=\"" << SvgNum(xa) << "\" y=\"" << SvgNum(ya) << "\" width=\""
+        << SvgNum(std::max(0.5, xb - xa - 1)) << "\" height=\"" << SvgNum(std::max(0.0, yb - ya))
         << "\" fill=\"" << s.color << "\"/>\n";
     }
   }
@@ -135,38 +135,38 @@ std::string RenderSvg(const PlotChart& c) {
     << c.height_px << "\" viewBox=\"0 0 " << c.width_px << " " << c.height_px
     << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
   o << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  o << "<text x=\"" << Num(W / 2) << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">"
+  o << "<text x=\"" << SvgNum(W / 2) << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">"
     << XmlEscape(c.title) << "</text>\n";
-  o << "<defs><clipPath id=\"plot\"><rect x=\"" << Num(ml) << "\" y=\"" << Num(mt) << "\" width=\""
-    << Num(pw) << "\" height=\"" << Num(ph) << "\"/></clipPath></defs>\n";
+  o << "<defs><clipPath id=\"plot\"><rect x=\"" << SvgNum(ml) << "\" y=\"" << SvgNum(mt) << "\" width=\""
+    << SvgNum(pw) << "\" height=\"" << SvgNum(ph) << "\"/></clipPath></defs>\n";
   for (const auto& b : c.bands) {
-    o << "<rect x=\"" << Num(X(b.x0)) << "\" y=\"" << Num(mt) << "\" width=\""
-      << Num(X(b.x1) - X(b.x0)) << "\" height=\"" << Num(ph)
+    o << "<rect x=\"" << SvgNum(X(b.x0)) << "\" y=\"" << SvgNum(mt) << "\" width=\""
+      << SvgNum(X(b.x1) - X(b.x0)) << "\" height=\"" << SvgNum(ph)
       << "\" fill=\"#f4b183\" fill-opacity=\"0.35\"><title>" << XmlEscape(b.label)
       << "</title></rect>\n";
   }
   const auto xt = NiceTicks(x0, x1, 8), yt = NiceTicks(y0, y1, 6);
   const double xstep = xt.size() > 1 ? xt[1] - xt[0] : 1, ystep = yt.size() > 1 ? yt[1] - yt[0] : 1;
   for (const double v : xt) {
-    o << "<line x1=\"" << Num(X(v)) << "\" y1=\"" << Num(mt) << "\" x2=\"" << Num(X(v))
-      << "\" y2=\"" << Num(mt + ph) << "\" stroke=\"#e0e0e0\"/>\n<text x=\"" << Num(X(v))
-      << "\" y=\"" << Num(mt + ph + 16) << "\" text-anchor=\"middle\">" << TickLabel(v, xstep)
+    o << "<line x1=\"" << SvgNum(X(v)) << "\" y1=\"" << SvgNum(mt) << "\" x2=\"" << SvgNum(X(v))
+      << "\" y2=\"" << SvgNum(mt + ph) << "\" stroke=\"#e0e0e0\"/>\n<text x=\"" << SvgNum(X(v))
+      << "\" y=\"" << SvgNum(mt + ph + 16) << "\" text-anchor=\"middle\">" << TickLabel(v, xstep)
       << "</text>\n";
   }
   for (const double v : yt) {
-    o << "<line x1=\"" << Num(ml) << "\" y1=\"" << Num(Y(v)) << "\" x2=\"" << Num(ml + pw)
-      << "\" y2=\"" << Num(Y(v)) << "\" stroke=\"#e0e0e0\"/>\n<text x=\"" << Num(ml - 6)
-      << "\" y=\"" << Num(Y(v) + 4) << "\" text-anchor=\"end\">" << TickLabel(v, ystep)
+    o << "<line x1=\"" << SvgNum(ml) << "\" y1=\"" << SvgNum(Y(v)) << "\" x2=\"" << SvgNum(ml + pw)
+      << "\" y2=\"" << SvgNum(Y(v)) << "\" stroke=\"#e0e0e0\"/>\n<text x=\"" << SvgNum(ml - 6)
+      << "\" y=\"" << SvgNum(Y(v) + 4) << "\" text-anchor=\"end\">" << TickLabel(v, ystep)
       << "</text>\n";
   }
-  o << "<rect x=\"" << Num(ml) << "\" y=\"" << Num(mt) << "\" width=\"" << Num(pw) << "\" height=\""
-    << Num(ph) << "\" fill=\"none\" stroke=\"#444\"/>\n";
-  o << "<text x=\"" << Num(ml + pw / 2) << "\" y=\"" << Num(mt + ph + 34)
+  o << "<rect x=\"" << SvgNum(ml) << "\" y=\"" << SvgNum(mt) << "\" width=\"" << SvgNum(pw) << "\" height=\""
+    << SvgNum(ph) << "\" fill=\"none\" stroke=\"#444\"/>\n";
+  o << "<text x=\"" << SvgNum(ml + pw / 2) << "\" y=\"" << SvgNum(mt + ph + 34)
     << "\" text-anchor=\"middle\">" << XmlEscape(c.x_label) << "</text>\n";
-  o << "<text transform=\"translate(16," << Num(mt + ph / 2)
+  o << "<text transform=\"translate(16," << SvgNum(mt + ph / 2)
     << ") rotate(-90)\" text-anchor=\"middle\">" << XmlEscape(c.y_label) << "</text>\n";
   if (empty) {
-    o << "<text x=\"" << Num(ml + pw / 2) << "\" y=\"" << Num(mt + ph / 2)
+    o << "<text x=\"" << SvgNum(ml + pw / 2) << "\" y=\"" << SvgNum(mt + ph / 2)
       << "\" text-anchor=\"middle\" fill=\"#888\">" << XmlEscape(c.empty_note) << "</text>\n";
   }
   o << "<g clip-path=\"url(#plot)\">\n";
@@ -176,17 +176,17 @@ std::string RenderSvg(const PlotChart& c) {
   for (std::size_t i = 0; i < c.series.size(); ++i) {
     const double lx = ml + static_cast<double>(i % 3) * (pw / 3),
                  ly = mt + ph + 52 + static_cast<double>(i / 3) * 18;
-    o << "<rect x=\"" << Num(lx) << "\" y=\"" << Num(ly - 9)
+    o << "<rect x=\"" << SvgNum(lx) << "\" y=\"" << SvgNum(ly - 9)
       << "\" width=\"14\" height=\"10\" fill=\"" << c.series[i].color << "\"/><text x=\""
-      << Num(lx + 20) << "\" y=\"" << Num(ly) << "\">" << XmlEscape(c.series[i].label)
+      << SvgNum(lx + 20) << "\" y=\"" << SvgNum(ly) << "\">" << XmlEscape(c.series[i].label)
       << "</text>\n";
   }
   if (!c.bands.empty()) {
     const double lx = ml + static_cast<double>(c.series.size() % 3) * (pw / 3),
                  ly = mt + ph + 52 + static_cast<double>(c.series.size() / 3) * 18;
-    o << "<rect x=\"" << Num(lx) << "\" y=\"" << Num(ly - 9)
+    o << "<rect x=\"" << SvgNum(lx) << "\" y=\"" << SvgNum(ly - 9)
       << "\" width=\"14\" height=\"10\" fill=\"#f4b183\"/>"
-      << "<text x=\"" << Num(lx + 20) << "\" y=\"" << Num(ly) << "\">GNSS outage</text>\n";
+      << "<text x=\"" << SvgNum(lx + 20) << "\" y=\"" << SvgNum(ly) << "\">GNSS outage</text>\n";
   }
   o << "</svg>\n";
   return o.str();

@@ -39,4 +39,7 @@ std::string RenderSvg(const PlotChart& chart);
 /// "Nice" tick positions (1, 2, 5 × 10^k steps) covering [lo, hi].
 std::vector<double> NiceTicks(double lo, double hi, int target_count);
 
+/// An SVG coordinate or length: two decimals.
+std::string SvgNum(double v);
+
 }  // namespace hil::harness
