@@ -3,9 +3,8 @@
 namespace hil::actuator {
 
 BaseSerialDevice::BaseSerialDevice(const BaseSerialDeviceConfig& config)
-    : cfg_(config), motors_(cfg_.motors), session_(cfg_.serial, motors_) {
+    : cfg_(config), motors_(cfg_.motors), session_(cfg_.serial, motors_), loss_(cfg_.link_loss) {
   next_tick_ = Time{} + cfg_.control_period;
-  counters_.lost_per_window.assign(cfg_.link_loss.size(), 0);
 }
 
 int BaseSerialDevice::baud(int port) const {
@@ -15,13 +14,7 @@ int BaseSerialDevice::baud(int port) const {
 
 void BaseSerialDevice::OnHostBytes(int port, Time t, std::string_view bytes, DeviceOutput& out) {
   (void)port;
-  for (std::size_t i = 0; i < cfg_.link_loss.size(); ++i) {
-    if (t >= cfg_.link_loss[i].first && t < cfg_.link_loss[i].second) {
-      counters_.bytes_lost += bytes.size();
-      counters_.lost_per_window[i] += bytes.size();
-      return;
-    }
-  }
+  if (loss_.Cuts(t, bytes.size())) return;
   session_.OnHostBytes(t, bytes, out);
   if (session_.counters().motor_commands != seen_motor_commands_) {
     seen_motor_commands_ = session_.counters().motor_commands;

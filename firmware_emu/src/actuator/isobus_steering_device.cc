@@ -5,10 +5,9 @@
 namespace hil::actuator {
 
 IsobusSteeringDevice::IsobusSteeringDevice(const IsobusSteeringDeviceConfig& config)
-    : cfg_(config), ecu_(cfg_.ecu) {
+    : cfg_(config), ecu_(cfg_.ecu), loss_(cfg_.link_loss) {
   next_tick_ = Time{} + cfg_.control_period;
   host_frames_.reserve(16);
-  counters_.lost_per_window.assign(cfg_.link_loss.size(), 0);
 }
 
 int IsobusSteeringDevice::baud(int port) const {
@@ -17,13 +16,7 @@ int IsobusSteeringDevice::baud(int port) const {
 }
 
 void IsobusSteeringDevice::FromController(Time t, const CanFrame& frame) {
-  for (std::size_t i = 0; i < cfg_.link_loss.size(); ++i) {
-    if (t >= cfg_.link_loss[i].first && t < cfg_.link_loss[i].second) {
-      ++counters_.frames_lost;
-      ++counters_.lost_per_window[i];
-      return;
-    }
-  }
+  if (loss_.Cuts(t, 1)) return;
   ++counters_.frames_from_controller;
   ecu_.OnFrame(t, frame);
   if (ecu_.counters().commands_accepted != seen_accepted_) {

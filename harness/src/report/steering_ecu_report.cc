@@ -35,7 +35,7 @@ SteeringEcuReport MakeSteeringEcuReport(const actuator::IsobusSteeringDevice& de
   const bool slcan = device.serial_port_count() > 0;
   r.transport = slcan ? "slcan" : "socketcan";
   r.frames_from_controller = device.counters().frames_from_controller;
-  r.frames_lost = device.counters().frames_lost;
+  r.frames_lost = device.link_loss().total();
   const actuator::SteeringEcuCounters& k = device.ecu().counters();
   r.commands_accepted = k.commands_accepted;
   r.wrong_length = k.wrong_length;

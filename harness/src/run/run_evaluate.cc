@@ -197,8 +197,8 @@ void EvaluateClosedLoop(RunContext& ctx, const TruthTable& truth) {
     c.missing_commands = k.missing_commands;
     if (k.first_missing) c.first_missing_s = ToSeconds(*k.first_missing);
     if (k.last_command) c.last_command_s = ToSeconds(*k.last_command);
-    c.command_bytes_lost = k.bytes_lost;
-    NoteLinkLoss(ctx.scenario.faults, k.lost_per_window, ctx.fault_recorder);
+    c.command_bytes_lost = base->link_loss().total();
+    NoteLinkLoss(ctx.scenario.faults, base->link_loss().per_window(), ctx.fault_recorder);
     c.motor_commands = base->session().counters().motor_commands;
     c.invalid_lines = base->session().counters().invalid;
     c.saturated_commands = m.saturated_commands;
@@ -216,8 +216,8 @@ void EvaluateClosedLoop(RunContext& ctx, const TruthTable& truth) {
     c.missing_commands = k.missing_commands;
     if (k.first_missing) c.first_missing_s = ToSeconds(*k.first_missing);
     if (k.last_command) c.last_command_s = ToSeconds(*k.last_command);
-    c.command_bytes_lost = k.frames_lost;
-    NoteLinkLoss(ctx.scenario.faults, k.lost_per_window, ctx.fault_recorder);
+    c.command_bytes_lost = ecu->link_loss().total();
+    NoteLinkLoss(ctx.scenario.faults, ecu->link_loss().per_window(), ctx.fault_recorder);
     c.motor_commands = e.commands_accepted;
     c.invalid_lines = e.wrong_length + e.unknown_source + e.out_of_range;
     c.watchdog_trips = e.watchdog_trips;

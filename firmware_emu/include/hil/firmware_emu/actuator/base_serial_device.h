@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "hil/firmware_emu/actuator/base_serial_session.h"
+#include "hil/firmware_emu/actuator/command_link_loss.h"
 #include "hil/firmware_emu/actuator/wheel_motors.h"
 #include "hil/firmware_emu/device.h"
 
@@ -52,8 +53,6 @@ struct BaseSerialDeviceCounters {
   std::uint64_t missing_commands = 0;
   std::optional<Time> first_missing;  ///< the first tick of the latest run of missing commands
   std::optional<Time> last_command;   ///< arrival of the latest speed command
-  std::uint64_t bytes_lost = 0;       ///< host bytes lost to a command-link loss
-  std::vector<std::uint64_t> lost_per_window;  ///< bytes lost, one count per link_loss window
 };
 
 class BaseSerialDevice : public Device {
@@ -70,6 +69,8 @@ class BaseSerialDevice : public Device {
   const WheelMotors& motors() const { return motors_; }
   const BaseSerialSession& session() const { return session_; }
   const BaseSerialDeviceCounters& counters() const { return counters_; }
+  /// Host bytes lost to the command-link loss windows.
+  const CommandLinkLoss& link_loss() const { return loss_; }
   /// One record per control tick (ReserveTicks: room for a whole run, reserved once).
   const std::vector<BaseTickRecord>& ticks() const { return ticks_; }
   void ReserveTicks(std::size_t n) { ticks_.reserve(n); }
@@ -85,6 +86,7 @@ class BaseSerialDevice : public Device {
   std::optional<VehicleCommand> pending_;
   std::uint64_t seen_motor_commands_ = 0;
   BaseSerialDeviceCounters counters_;
+  CommandLinkLoss loss_;
   std::vector<BaseTickRecord> ticks_;
 };
 

@@ -24,6 +24,7 @@
 #include <utility>
 #include <vector>
 
+#include "hil/firmware_emu/actuator/command_link_loss.h"
 #include "hil/firmware_emu/actuator/steering_ecu.h"
 #include "hil/firmware_emu/device.h"
 #include "hil/firmware_emu/link/slcan_adapter.h"
@@ -60,8 +61,6 @@ struct IsobusSteeringCounters {
   std::uint64_t missing_commands = 0;
   std::optional<Time> first_missing;
   std::optional<Time> last_command;  ///< arrival of the latest valid Guidance System Command
-  std::uint64_t frames_lost = 0;     ///< controller frames lost to a command-link loss
-  std::vector<std::uint64_t> lost_per_window;  ///< frames lost, one count per link_loss window
   std::uint64_t frames_from_controller = 0;
 };
 
@@ -83,6 +82,8 @@ class IsobusSteeringDevice : public Device {
   const SteeringEcu& ecu() const { return ecu_; }
   const link::SlcanAdapter& adapter() const { return adapter_; }
   const IsobusSteeringCounters& counters() const { return counters_; }
+  /// Controller frames lost to the command-link loss windows.
+  const CommandLinkLoss& link_loss() const { return loss_; }
   const std::vector<SteeringTickRecord>& ticks() const { return ticks_; }
   void ReserveTicks(std::size_t n) { ticks_.reserve(n); }
 
@@ -101,6 +102,7 @@ class IsobusSteeringDevice : public Device {
   std::optional<VehicleCommand> pending_;
   std::uint64_t seen_accepted_ = 0;
   IsobusSteeringCounters counters_;
+  CommandLinkLoss loss_;
   std::vector<SteeringTickRecord> ticks_;
   DeviceOutput scratch_;
   std::vector<CanFrame> host_frames_;
