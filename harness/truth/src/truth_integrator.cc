@@ -103,16 +103,16 @@ struct TruthIntegrator::Impl {
   bool restart_needed = false;
   long late_restarts = 0;
 
-  // closed loop: the lags of v and u in closed form from (lag_t0, lag_v0, lag_u0) under the held
-  // inputs; CVODE integrates e, n, ψ only (n_ode components of y)
-  bool closed_form_lags = false;
-  int n_ode = kStateSize;
+  // The lags of v and u in closed form from (lag_t0, lag_v0, lag_u0) under the held inputs;
+  // CVODE integrates e, n, ψ only (kOdeSize components of y). Their right-hand side stays
+  // continuous when the inputs change (v and u do not jump), so a new input needs no restart:
+  // CVODE's error control takes the kink in v̇ and u̇; a mode change or a root restarts it.
+  static constexpr int kOdeSize = kYaw + 1;
   double lag_t0 = 0, lag_v0 = 0, lag_u0 = 0;
 
   /// The full state at t from CVODE's components `ode` (all five, or e, n, ψ and the lags).
   void FullState(double t, const double* ode, double* s) const {
-    std::copy(ode, ode + n_ode, s);
-    if (!closed_form_lags) return;
+    std::copy(ode, ode + kOdeSize, s);
     const VehicleParams& p = c->vehicle;
     const double dt = t - lag_t0;
     s[kV] = FirstOrderLagAt(lag_v0, in.v_cmd, p.speed_lag_s, dt);
@@ -197,7 +197,7 @@ struct TruthIntegrator::Impl {
     double s[kStateSize], d[kStateSize];
     self->FullState(t, N_VGetArrayPointer(y), s);
     self->Derivs(s, self->in, d);
-    std::copy(d, d + self->n_ode, N_VGetArrayPointer(ydot));
+    std::copy(d, d + kOdeSize, N_VGetArrayPointer(ydot));
     return 0;
   }
 
@@ -347,8 +347,6 @@ struct TruthIntegrator::Impl {
       tick_s = 1.0 / c->guidance.rate_hz;  // open loop too: the speed varies
     w_IE_N = c->earth_rotation ? EarthRateIn(*frame) : Eigen::Vector3d::Zero();
     if (c->external_commands) tick_s = c->command_period_s;
-    closed_form_lags = c->external_commands;
-    n_ode = closed_form_lags ? kYaw + 1 : kStateSize;
     if (c->path && !c->external_commands) {
       const Path& path = *c->path;
       const std::size_t nv = path.vertices().size();
@@ -382,9 +380,9 @@ struct TruthIntegrator::Impl {
   void Init() {
     Free();
     Check(SUNContext_Create(nullptr, &ctx), "SUNContext_Create");
-    y = N_VNew_Serial(n_ode, ctx);
-    work = N_VNew_Serial(n_ode, ctx);
-    atol = N_VNew_Serial(n_ode, ctx);
+    y = N_VNew_Serial(kOdeSize, ctx);
+    work = N_VNew_Serial(kOdeSize, ctx);
+    atol = N_VNew_Serial(kOdeSize, ctx);
     double s[kStateSize];
     const Path* path = c->path ? &*c->path : nullptr;
     const Eigen::Vector2d start =
@@ -407,16 +405,13 @@ struct TruthIntegrator::Impl {
       s[kU] = in.u_cmd;
       in = Guide(0.0, s, in);
     }
-    std::copy(s, s + n_ode, N_VGetArrayPointer(y));
+    std::copy(s, s + kOdeSize, N_VGetArrayPointer(y));
     lag_t0 = 0;
     lag_v0 = s[kV];
     lag_u0 = s[kU];
-    double a[kStateSize];
+    double* a = N_VGetArrayPointer(atol);
     a[kE] = a[kN] = c->atol_m;
     a[kYaw] = c->atol_m * 0.1;
-    a[kV] = c->atol_m;
-    a[kU] = c->atol_m * 0.1;
-    std::copy(a, a + n_ode, N_VGetArrayPointer(atol));
     cvode = CVodeCreate(CV_ADAMS, ctx);
     Check(CVodeInit(cvode, Rhs, 0.0, y), "CVodeInit");
     Check(CVodeSetUserData(cvode, this), "CVodeSetUserData");
@@ -451,11 +446,16 @@ struct TruthIntegrator::Impl {
     while (tick_s * static_cast<double>(next_tick) <= t_cur) ++next_tick;
     Transition(t_cur, s, pending_root);
     const Inputs next = Guide(t_cur, s, in);
-    if (!(next == in) || !(mode == old_mode) || pending_root) {
+    const bool restart = !(mode == old_mode) || pending_root;
+    const bool changed = !(next == in);
+    if (changed || restart) {
       in = next;
       lag_t0 = t_cur;  // the lags go on from their values at t_cur under the new inputs
       lag_v0 = s[kV];
       lag_u0 = s[kU];
+      t_lo = t_cur;  // dense output before t_cur would take the new inputs' lags
+    }
+    if (restart) {
       long n = 0;
       CVodeGetNumSteps(cvode, &n);
       steps_before += n;
