@@ -78,8 +78,9 @@ std::string CdfSvg(const json& summary, const std::string& metric) {
   const double plot_h = kH - kTop - kBottom, plot_w = kW - kLeft - kRight;
   const auto px = [&](double x) { return kLeft + plot_w * (x - lo) / (hi - lo); };
   const auto py = [&](double f) { return kTop + plot_h * (1.0 - f); };
-  std::string s = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + SvgNum(kW) + "\" height=\"" +
-                  SvgNum(height) + "\" viewBox=\"0 0 " + SvgNum(kW) + " " + SvgNum(height) + "\">\n";
+  std::string s = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + SvgNum(kW) +
+                  "\" height=\"" + SvgNum(height) + "\" viewBox=\"0 0 " + SvgNum(kW) + " " +
+                  SvgNum(height) + "\">\n";
   s += Axes(lo, hi, metric, kH);
   for (std::size_t i = 0; i < lines.size(); ++i) {
     const Line& l = lines[i];

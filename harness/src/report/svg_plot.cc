@@ -137,8 +137,8 @@ std::string RenderSvg(const PlotChart& c) {
   o << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   o << "<text x=\"" << SvgNum(W / 2) << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">"
     << XmlEscape(c.title) << "</text>\n";
-  o << "<defs><clipPath id=\"plot\"><rect x=\"" << SvgNum(ml) << "\" y=\"" << SvgNum(mt) << "\" width=\""
-    << SvgNum(pw) << "\" height=\"" << SvgNum(ph) << "\"/></clipPath></defs>\n";
+  o << "<defs><clipPath id=\"plot\"><rect x=\"" << SvgNum(ml) << "\" y=\"" << SvgNum(mt)
+    << "\" width=\"" << SvgNum(pw) << "\" height=\"" << SvgNum(ph) << "\"/></clipPath></defs>\n";
   for (const auto& b : c.bands) {
     o << "<rect x=\"" << SvgNum(X(b.x0)) << "\" y=\"" << SvgNum(mt) << "\" width=\""
       << SvgNum(X(b.x1) - X(b.x0)) << "\" height=\"" << SvgNum(ph)
@@ -159,8 +159,8 @@ std::string RenderSvg(const PlotChart& c) {
       << "\" y=\"" << SvgNum(Y(v) + 4) << "\" text-anchor=\"end\">" << TickLabel(v, ystep)
       << "</text>\n";
   }
-  o << "<rect x=\"" << SvgNum(ml) << "\" y=\"" << SvgNum(mt) << "\" width=\"" << SvgNum(pw) << "\" height=\""
-    << SvgNum(ph) << "\" fill=\"none\" stroke=\"#444\"/>\n";
+  o << "<rect x=\"" << SvgNum(ml) << "\" y=\"" << SvgNum(mt) << "\" width=\"" << SvgNum(pw)
+    << "\" height=\"" << SvgNum(ph) << "\" fill=\"none\" stroke=\"#444\"/>\n";
   o << "<text x=\"" << SvgNum(ml + pw / 2) << "\" y=\"" << SvgNum(mt + ph + 34)
     << "\" text-anchor=\"middle\">" << XmlEscape(c.x_label) << "</text>\n";
   o << "<text transform=\"translate(16," << SvgNum(mt + ph / 2)

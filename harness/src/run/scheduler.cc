@@ -55,7 +55,12 @@ void Scheduler::Dispatch(std::size_t d, DeviceOutput& out) {
     }
     for (const SerialMessage& c : carried) {
       if (ep.Queue(c)) {
-        if (!pacer_) writes_.Add(ep, c.bytes.size(), c.t_ready);
+        if (pacer_) continue;
+        if (gate_ && control_period_ > Duration{} && Actuator(d)) {
+          held_.push_back({&ep, c.bytes.size(), c.t_ready});  // to the controller at a turn
+        } else {
+          writes_.Add(ep, c.bytes.size(), c.t_ready);
+        }
         continue;
       }
       if (!recorder_) continue;
@@ -233,6 +238,19 @@ void Scheduler::HostTurn(Time t) {
     write_refused_ = true;
     return;
   }
+  // The actuators' replies and status reach the controller now, with the host asleep: which of
+  // them it has read when a solution makes it compute a command does not depend on the machine
+  // (written when made, a status frame could be read before or after the solution that came
+  // meanwhile; guidanced's reset request after an ECU exit then went out one command early or
+  // late in some runs).
+  if (!held_.empty()) {
+    for (const Held& h : held_) writes_.Add(*h.ep, h.bytes, h.t);
+    held_.clear();
+    if (!writes_.Pump(true)) {
+      write_refused_ = true;
+      return;
+    }
+  }
   // What the host wrote may answer any byte it has read (virtual mode writes bytes when they are
   // made, ahead of their UART times): it arrives once the last of them has left its UART. Links
   // the host does not read do not count (paper 003's UWB navd leaves the 9600 Bd GNSS link
@@ -299,8 +317,15 @@ const std::vector<CanFrame>& Scheduler::PollBus() {
   return bus_frames_;
 }
 
+bool Scheduler::Actuator(std::size_t d) const {
+  const Device* dev = set_.devices[d].get();
+  return dev == set_.base || dev == set_.steering;
+}
+
 void Scheduler::Flush() {
   if (!pacer_) {
+    for (const Held& h : held_) writes_.Add(*h.ep, h.bytes, h.t);
+    held_.clear();
     if (!write_refused_ && !writes_.Pump(true)) write_refused_ = true;
     return;
   }

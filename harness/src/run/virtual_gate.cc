@@ -179,7 +179,7 @@ bool VirtualGate::WaitHostIdle() {
       return false;
     }
     if (!links_opened_) {
-      links_opened_ = HostHoldsLinks() || MonotonicNs() - start > kBusyHostLimitNs;
+      links_opened_ = HostHoldsLinks() || MonotonicNs() - start > kHostStartLimitNs;
       if (!links_opened_) return false;
     }
     // every byte read: the host has been running since; asleep now, it has finished with them

@@ -30,7 +30,9 @@ class CommandLinkLoss {
   /// What each window cut, in the windows' order.
   const std::vector<std::uint64_t>& per_window() const { return lost_; }
   /// What all windows cut.
-  std::uint64_t total() const { return std::accumulate(lost_.begin(), lost_.end(), std::uint64_t{0}); }
+  std::uint64_t total() const {
+    return std::accumulate(lost_.begin(), lost_.end(), std::uint64_t{0});
+  }
 
  private:
   std::vector<std::pair<Time, Time>> windows_;

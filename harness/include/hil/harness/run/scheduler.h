@@ -123,6 +123,8 @@ class Scheduler {
   bool PollHosts(Time t_host, DeviceOutput& out);
   /// Virtual mode: the next host turn.
   Time NextHostTurn() const;
+  /// Whether devices[d] is the closed loop's actuator (the base or the steering ECU).
+  bool Actuator(std::size_t d) const;
   /// Bytes a host wrote, read at a host turn, and when they reach their device.
   struct HostBytes {
     Time t{};
@@ -161,6 +163,14 @@ class Scheduler {
   std::vector<VehicleCommand> vehicle_commands_;
   std::vector<Time> answer_turns_;  // host turns at the ends of devices' answers
   std::deque<HostBytes> arrivals_;  // read at turns, in time order, not yet delivered
+  /// Closed loop, virtual mode: the actuators' bytes queued on their links since the last host
+  /// turn, written to the controller at the next one.
+  struct Held {
+    SerialEndpoint* ep;
+    std::size_t bytes;
+    Time t;
+  };
+  std::vector<Held> held_;
   struct BusArrival {
     Time t{};
     CanFrame frame;
