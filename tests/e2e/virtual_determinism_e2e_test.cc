@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <initializer_list>
+#include <map>
 #include <sstream>
 #include <string>
 
@@ -45,6 +46,30 @@ pid_t StartBusyProcess() {
     for (;;) n = n + 1;
   }
   return pid;
+}
+
+// Run 0's `files` (in the run folder `out`) are the reference; each later run's must equal them.
+void ExpectSameAsFirstRun(int run, const std::string& out, std::initializer_list<const char*> files,
+                          std::map<std::string, std::string>& first) {
+  for (const char* f : files) {
+    const std::string text = ReadFile(out + "/" + f);
+    if (run == 0) {
+      first[f] = text;
+    } else {
+      EXPECT_EQ(FirstDifference(first[f], text), "") << "run " << run << ": " << f;
+    }
+  }
+}
+
+// Runs `hil run ARGS`, beside a busy process when `loaded`.
+CommandResult RunHil(const std::string& args, bool loaded) {
+  const pid_t busy = loaded ? StartBusyProcess() : 0;
+  const CommandResult r = RunCommand(Hil() + " run " + args);
+  if (busy > 0) {
+    kill(busy, SIGKILL);
+    waitpid(busy, nullptr, 0);
+  }
+  return r;
 }
 
 // Runs `hil run ARGS --out DIR/a`, then the same into DIR/b beside a busy process; both must pass.
@@ -100,19 +125,14 @@ TEST(VirtualDeterminismE2eTest, TwoLinksGiveByteIdenticalSolutionsUnderLoad) {
 TEST(VirtualDeterminismE2eTest, UbxConfigurationSessionIsTheSameInEveryRun) {
   TempDir dir("e2e_virtual_ubx_configure");
   const std::string s = SourceDir() + "/vectors/scenarios/default_ubx_configure.yaml";
-  std::string first_capture, first_estimate;
+  std::map<std::string, std::string> first;
   for (int run = 0; run < 10; ++run) {
     const std::string out = dir / ("r" + std::to_string(run));
-    const pid_t busy = run % 2 == 1 ? StartBusyProcess() : 0;
     // the last run's navd starts 3 s late (a loaded machine): the first turn waits for it (with
     // a 2 s limit its first CFG-MSG came 1 s late and one solution was lost)
     const std::string slow_start =
         run == 9 ? " --estimator 'sleep 3; exec {navd} --config {run_dir}/navd.conf'" : "";
-    const CommandResult r = RunCommand(Hil() + " run " + s + slow_start + " --out " + out);
-    if (busy > 0) {
-      kill(busy, SIGKILL);
-      waitpid(busy, nullptr, 0);
-    }
+    const CommandResult r = RunHil(s + slow_start + " --out " + out, run % 2 == 1);
     ASSERT_EQ(r.exit_code, 0) << "run " << run << ":\n" << r.out;
     const std::string estimate = ReadFile(out + "/estimate.jsonl");
     EXPECT_EQ(std::count(estimate.begin(), estimate.end(), '\n'), 120) << "run " << run;
@@ -121,13 +141,7 @@ TEST(VirtualDeterminismE2eTest, UbxConfigurationSessionIsTheSameInEveryRun) {
     EXPECT_NE(capture.find("\nrx "), std::string::npos) << "run " << run;
     EXPECT_NE(capture.find("ACK-ACK"), std::string::npos) << "run " << run;
     EXPECT_NE(capture.find("NAV-POSLLH"), std::string::npos) << "run " << run;
-    if (run == 0) {
-      first_capture = capture;
-      first_estimate = estimate;
-      continue;
-    }
-    EXPECT_EQ(FirstDifference(first_capture, capture), "") << "run " << run << ": ttyGPS.cap";
-    EXPECT_EQ(FirstDifference(first_estimate, estimate), "") << "run " << run << ": estimate";
+    ExpectSameAsFirstRun(run, out, {"captures/ttyGPS.cap", "estimate.jsonl"}, first);
   }
 }
 
@@ -215,25 +229,12 @@ TEST(VirtualDeterminismE2eTest, IsobusCommandLossRunsGiveTheSameBytes) {
   TempDir dir("e2e_virtual_isobus_command_loss");
   const std::string s =
       SourceDir() + "/vectors/scenarios/closed_loop/tractor_autosteer_command_loss.yaml";
-  std::string first_can, first_truth;
+  std::map<std::string, std::string> first;
   for (int run = 0; run < 4; ++run) {
     const std::string out = dir / ("r" + std::to_string(run));
-    const pid_t busy = run % 2 == 1 ? StartBusyProcess() : 0;
-    const CommandResult r = RunCommand(Hil() + " run " + s + " --short --no-html --out " + out);
-    if (busy > 0) {
-      kill(busy, SIGKILL);
-      waitpid(busy, nullptr, 0);
-    }
+    const CommandResult r = RunHil(s + " --short --no-html --out " + out, run % 2 == 1);
     ASSERT_EQ(r.exit_code, 0) << "run " << run << ":\n" << r.out;
-    const std::string can = ReadFile(out + "/captures/ttyCAN.cap");
-    const std::string truth = ReadFile(out + "/truth.csv");
-    if (run == 0) {
-      first_can = can;
-      first_truth = truth;
-      continue;
-    }
-    EXPECT_EQ(FirstDifference(first_can, can), "") << "run " << run << ": ttyCAN.cap";
-    EXPECT_EQ(FirstDifference(first_truth, truth), "") << "run " << run << ": truth.csv";
+    ExpectSameAsFirstRun(run, out, {"captures/ttyCAN.cap", "truth.csv"}, first);
   }
 }
 
