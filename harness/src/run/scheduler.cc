@@ -244,8 +244,7 @@ void Scheduler::HostTurn(Time t) {
   // meanwhile; guidanced's reset request after an ECU exit then went out one command early or
   // late in some runs).
   if (!held_.empty()) {
-    for (const Held& h : held_) writes_.Add(*h.ep, h.bytes, h.t);
-    held_.clear();
+    ReleaseHeld();
     if (!writes_.Pump(true)) {
       write_refused_ = true;
       return;
@@ -322,10 +321,14 @@ bool Scheduler::Actuator(std::size_t d) const {
   return dev == set_.base || dev == set_.steering;
 }
 
+void Scheduler::ReleaseHeld() {
+  for (const Held& h : held_) writes_.Add(*h.ep, h.bytes, h.t);
+  held_.clear();
+}
+
 void Scheduler::Flush() {
   if (!pacer_) {
-    for (const Held& h : held_) writes_.Add(*h.ep, h.bytes, h.t);
-    held_.clear();
+    ReleaseHeld();
     if (!write_refused_ && !writes_.Pump(true)) write_refused_ = true;
     return;
   }

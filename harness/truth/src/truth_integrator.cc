@@ -110,7 +110,7 @@ struct TruthIntegrator::Impl {
   static constexpr int kOdeSize = kYaw + 1;
   double lag_t0 = 0, lag_v0 = 0, lag_u0 = 0;
 
-  /// The full state at t from CVODE's components `ode` (all five, or e, n, ψ and the lags).
+  /// The full state at t from CVODE's components `ode` (e, n, ψ) and the lags' closed forms.
   void FullState(double t, const double* ode, double* s) const {
     std::copy(ode, ode + kOdeSize, s);
     const VehicleParams& p = c->vehicle;
@@ -463,7 +463,6 @@ struct TruthIntegrator::Impl {
       t_init = t_cur;
       ++reinits;
       fresh = true;
-      t_lo = t_cur;
     }
     pending = pending_root = false;
     const double t_next = NextTimeEvent();

@@ -125,6 +125,8 @@ class Scheduler {
   Time NextHostTurn() const;
   /// Whether devices[d] is the closed loop's actuator (the base or the steering ECU).
   bool Actuator(std::size_t d) const;
+  /// Virtual mode: queues the actuators' held bytes for writing (held_).
+  void ReleaseHeld();
   /// Bytes a host wrote, read at a host turn, and when they reach their device.
   struct HostBytes {
     Time t{};

@@ -71,13 +71,13 @@ class VirtualGate {
   /// The host was found never to sleep (its host-to-device bytes are then stamped when they are
   /// seen, not deterministically).
   bool busy_host() const { return busy_host_; }
+  /// A host that has read everything but is not asleep this long (wall) is a busy host.
+  static constexpr std::int64_t kBusyHostLimitNs = 2'000'000'000;
   /// The host's first turn waits also until a process of its group holds every host link open
   /// (a host that is still starting may sleep before it has opened its devices and written its
-  /// start-up commands), at most kHostStartLimitNs.
-  static constexpr std::int64_t kBusyHostLimitNs = 2'000'000'000;
-  /// How long (wall) the first turn waits for the host to open its links: a loaded machine (a
-  /// parallel test suite, a TCG VM beside) took navd over 2 s, and its first UBX command then came
-  /// a turn late; below the silence timeout's default (10 s), which would end the run as a hang.
+  /// start-up commands), at most this long (wall): a loaded machine (a parallel test suite, a TCG
+  /// VM beside) took navd over 2 s, and its first UBX command then came a turn late; below the
+  /// silence timeout's default (10 s), which would end the run as a hang.
   static constexpr std::int64_t kHostStartLimitNs = 6'000'000'000;
 
  private:
