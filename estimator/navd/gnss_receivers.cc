@@ -6,7 +6,7 @@ namespace est = hil::estimator;
 
 GnssReceivers::Receiver::Receiver(const std::string& path, int baud, int index,
                                   const est::NavdConfig& cfg, const Handler& h)
-    : device(path, baud),
+    : device(path, baud, cfg.gnss_configure ? SerialDevice::kReadWrite : SerialDevice::kReadOnly),
       setup(cfg),
       nmea([this, index, leap = cfg.leap_seconds, acc = cfg.nmea_accuracy(),
             h](const est::drivers::NmeaFix& fix) {

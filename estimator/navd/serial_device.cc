@@ -18,7 +18,8 @@ void SerialDevice::Close() {
 
 int SerialDevice::EnsureOpen() {
   if (fd_ >= 0) return fd_;
-  fd_ = open(path_.c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+  const int mode = access_ == kReadWrite ? O_RDWR : O_RDONLY;
+  fd_ = open(path_.c_str(), mode | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
   if (fd_ < 0) return -1;
   termios tio{};
   if (tcgetattr(fd_, &tio) == 0) {

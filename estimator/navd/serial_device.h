@@ -1,7 +1,9 @@
 #pragma once
 /// @file
 /// navd's serial input: opens a tty or pty in raw mode, reads what is there, and reopens the
-/// device when it goes away (the peer closed it, the USB adapter was unplugged).
+/// device when it goes away (the peer closed it, the USB adapter was unplugged). A device navd
+/// only listens to is opened read-only: the harness's virtual mode then knows it never has to
+/// wait for bytes from navd on that link (harness/include/hil/harness/run/virtual_gate.h).
 
 #include <cstddef>
 #include <cstdint>
@@ -11,7 +13,9 @@ namespace hil::navd {
 
 class SerialDevice {
  public:
-  SerialDevice(std::string path, int baud) : path_(std::move(path)), baud_(baud) {}
+  enum Access { kReadOnly, kReadWrite };
+  SerialDevice(std::string path, int baud, Access access = kReadOnly)
+      : path_(std::move(path)), baud_(baud), access_(access) {}
   ~SerialDevice();
   SerialDevice(const SerialDevice&) = delete;
   SerialDevice& operator=(const SerialDevice&) = delete;
@@ -39,6 +43,7 @@ class SerialDevice {
   void Close();
   std::string path_;
   int baud_;
+  Access access_;
   int fd_ = -1;
   std::uint64_t reopens_ = 0;
   bool opened_once_ = false;

@@ -1,5 +1,6 @@
 #include "hil/harness/run/virtual_gate.h"
 
+#include <fcntl.h>
 #include <sched.h>
 #include <time.h>
 
@@ -24,6 +25,20 @@ std::int64_t MonotonicNs() {
   timespec ts{};
   clock_gettime(CLOCK_MONOTONIC, &ts);
   return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000LL + ts.tv_nsec;
+}
+
+// Whether /proc/PID/fdinfo/FD says the descriptor was opened O_WRONLY or O_RDWR (unreadable:
+// assumed so, the cautious answer).
+bool OpenForWriting(const std::string& fdinfo) {
+  std::FILE* f = std::fopen(fdinfo.c_str(), "r");
+  if (!f) return true;
+  unsigned long flags = O_RDWR;
+  char line[128];
+  while (std::fgets(line, sizeof line, f)) {
+    if (std::sscanf(line, "flags: %lo", &flags) == 1) break;
+  }
+  std::fclose(f);
+  return (flags & O_ACCMODE) != O_RDONLY;
 }
 
 void SleepNs(long ns) {
@@ -150,23 +165,36 @@ bool VirtualGate::WaitAllRead() {
 
 std::size_t VirtualGate::Unread() { return Refresh(nullptr, nullptr, true); }
 
-bool VirtualGate::HostHoldsLinks() const {
+VirtualGate::LinkHolding VirtualGate::ScanHostLinks() const {
   std::vector<std::string> devices;
   for (const Link& l : links_) {
     std::error_code ec;
     const auto target = std::filesystem::canonical(l.ep->link_path(), ec);
     if (!ec) devices.push_back(target.string());
   }
+  std::vector<std::string> unheld = devices;
+  bool writable = false;
   for (const int pid : LiveGroupMembers(host_pgid_)) {
     std::error_code ec;
-    const std::string fd_dir = "/proc/" + std::to_string(pid) + "/fd";
-    for (const auto& e : std::filesystem::directory_iterator(fd_dir, ec)) {
+    const std::string proc = "/proc/" + std::to_string(pid);
+    for (const auto& e : std::filesystem::directory_iterator(proc + "/fd", ec)) {
       std::error_code ec2;
-      const auto target = std::filesystem::read_symlink(e.path(), ec2);
-      if (!ec2) std::erase(devices, target.string());
+      const std::string target = std::filesystem::read_symlink(e.path(), ec2).string();
+      if (ec2 || std::find(devices.begin(), devices.end(), target) == devices.end()) continue;
+      std::erase(unheld, target);
+      writable = writable || OpenForWriting(proc + "/fdinfo/" + e.path().filename().string());
     }
   }
-  return devices.empty();
+  return {unheld.empty(), writable};
+}
+
+void VirtualGate::NoteHostWrote() {
+  if (!HostReadsOnly()) return;
+  host_writes_ = true;
+  std::fprintf(stderr,
+               "hil: the estimator wrote to a link although it held them all read-only at its "
+               "first turn: from now on every host turn waits for it (the turn that read these "
+               "bytes depended on the machine)\n");
 }
 
 bool VirtualGate::WaitHostIdle() {
@@ -179,7 +207,7 @@ bool VirtualGate::WaitHostIdle() {
       return false;
     }
     if (!links_opened_) {
-      links_opened_ = HostHoldsLinks() || MonotonicNs() - start > kHostStartLimitNs;
+      links_opened_ = ScanHostLinks().all_held || MonotonicNs() - start > kHostStartLimitNs;
       if (!links_opened_) return false;
     }
     // every byte read: the host has been running since; asleep now, it has finished with them
@@ -195,7 +223,11 @@ bool VirtualGate::WaitHostIdle() {
                  static_cast<double>(kBusyHostLimitNs) * 1e-9);
     return true;
   };
-  return Wait(idle, nullptr, nullptr);
+  if (!Wait(idle, nullptr, nullptr)) return false;
+  // the first turn ended with the host asleep after its start-up: whether it can write at all
+  if (!writes_scanned_ && !busy_host_) host_writes_ = ScanHostLinks().writable;
+  writes_scanned_ = true;
+  return true;
 }
 
 void VirtualWriteQueue::Add(SerialEndpoint& ep, std::size_t bytes, Time t) {

@@ -18,6 +18,9 @@
 /// they are made, ahead of their UART times), or at the turn's time if that is later. A
 /// configuration dialogue (command, ACK, next command …) thus runs at the pace of the emulated
 /// UARTs, and an unsolicited command arrives after the next turn, the same in every run.
+/// In open loop, a host whose first turn found every host link held read-only (it cannot write
+/// to them: navd opens its devices O_RDONLY unless it configures a receiver) is not waited for at
+/// the periodic turns; the turns resume if bytes come from it all the same.
 
 #include <poll.h>
 
@@ -121,6 +124,10 @@ class Scheduler {
   /// Hands the bytes hosts wrote since the last call to their devices, at `t_host` (virtual) or at
   /// their wall arrival time (real time). Returns true when a device queued a reply.
   bool PollHosts(Time t_host, DeviceOutput& out);
+  /// One poll() of every endpoint's host side (host_fds_'s revents).
+  void PollHostFds();
+  /// Whether a host has bytes waiting on an endpoint.
+  bool HostWrote();
   /// Virtual mode: the next host turn.
   Time NextHostTurn() const;
   /// Whether devices[d] is the closed loop's actuator (the base or the steering ECU).

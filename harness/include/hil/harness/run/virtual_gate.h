@@ -68,6 +68,14 @@ class VirtualGate {
   /// polls without blocking) cannot be waited for: from then on the turns wait only for its
   /// reads, and busy_host() says so. False: the wait was given up (the run stops).
   bool WaitHostIdle();
+  /// After the first host turn: no process of the host's group holds a host link open for
+  /// writing (it opened them O_RDONLY, as navd does where it sends nothing): the host cannot
+  /// write what a turn waits for, so the scheduler's periodic turns need not wait for it.
+  bool HostReadsOnly() const { return writes_scanned_ && !host_writes_; }
+  /// Bytes came from a host that held its links read-only (it opened one for writing since):
+  /// HostReadsOnly() is false from now on, and a message says that this once the turn that read
+  /// them depended on the machine.
+  void NoteHostWrote();
   /// The host was found never to sleep (its host-to-device bytes are then stamped when they are
   /// seen, not deterministically).
   bool busy_host() const { return busy_host_; }
@@ -102,14 +110,21 @@ class VirtualGate {
   std::vector<Link> links_;
   std::size_t max_backlog_;
   WaitStep on_wait_;
-  /// Whether a process of the host's group has every host link open.
-  bool HostHoldsLinks() const;
+  /// Whether a process of the host's group has every host link open, and whether one holds a
+  /// host link open for writing.
+  struct LinkHolding {
+    bool all_held;
+    bool writable;
+  };
+  LinkHolding ScanHostLinks() const;
 
   Duration max_skew_{0};
   std::optional<GroupSleepProbe> host_;
   int host_pgid_ = -1;
   bool busy_host_ = false;
   bool links_opened_ = false;
+  bool writes_scanned_ = false;  // the first WaitHostIdle() has looked at the host's descriptors
+  bool host_writes_ = true;      // a host link is open for writing (or the host could not be seen)
 };
 
 /// Virtual mode's writes: every chunk queued on a serial endpoint, in emulated-time order across

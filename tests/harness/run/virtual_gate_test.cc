@@ -1,0 +1,90 @@
+// VirtualGate's first host turn (virtual_gate.h): it waits until the host holds its links and
+// sleeps, and then knows whether the host holds any of them open for writing. A read-only host
+// cannot write what a periodic turn waits for (Scheduler::HostTurn then does not wait).
+#include "hil/harness/run/virtual_gate.h"
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include "hil/harness/links/serial_endpoint.h"
+
+namespace hil::harness {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A host in its own process group, as a run starts one (exec'd: it holds only what it opens):
+// a shell that opens both links with `redirect` ("<" read-only, "<>" read-write), then sleeps.
+pid_t StartHost(const fs::path& a, const fs::path& b, const std::string& redirect) {
+  const std::string script =
+      "exec 3" + redirect + a.string() + " 4" + redirect + b.string() + "; exec sleep 60";
+  const pid_t pid = fork();
+  if (pid == 0) {
+    setpgid(0, 0);
+    execl("/bin/sh", "sh", "-c", script.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  setpgid(pid, pid);
+  return pid;
+}
+
+void Stop(pid_t pgid) {
+  kill(-pgid, SIGKILL);
+  while (waitpid(-pgid, nullptr, 0) > 0) {
+  }
+}
+
+struct Links {
+  fs::path dir;
+  SerialEndpoint imu, gps;
+  explicit Links(const std::string& tag)
+      : dir(fs::temp_directory_path() / ("hil_vg_" + tag + std::to_string(getpid()))),
+        imu("ttyI", Make(dir, "ttyI"), 115200, 1 << 16, (dir / "ttyI.cap").string()),
+        gps("ttyG", Make(dir, "ttyG"), 115200, 1 << 16, (dir / "ttyG.cap").string()) {}
+  ~Links() { fs::remove_all(dir); }
+  static std::string Make(const fs::path& dir, const char* name) {
+    fs::create_directories(dir);
+    return (dir / name).string();
+  }
+};
+
+// The gate after the host's first turn: HostReadsOnly().
+bool ReadsOnlyAfterFirstTurn(Links& l, const std::string& redirect) {
+  const pid_t host = StartHost(l.dir / "ttyI", l.dir / "ttyG", redirect);
+  VirtualGate gate({&l.imu, &l.gps}, 4096, [](std::size_t, bool) { return true; }, host);
+  EXPECT_FALSE(gate.HostReadsOnly()) << "nothing is known before the first turn";
+  EXPECT_TRUE(gate.WaitHostIdle());
+  const bool reads_only = gate.HostReadsOnly();
+  if (reads_only) {
+    gate.NoteHostWrote();  // bytes came all the same: the turns wait again
+    EXPECT_FALSE(gate.HostReadsOnly());
+  }
+  Stop(host);
+  return reads_only;
+}
+
+TEST(VirtualGateTest, AHostHoldingItsLinksReadOnlyCannotWrite) {
+  Links l("ro");
+  EXPECT_TRUE(ReadsOnlyAfterFirstTurn(l, "<"));
+}
+
+TEST(VirtualGateTest, AHostHoldingALinkReadWriteMayWrite) {
+  Links l("rw");
+  EXPECT_FALSE(ReadsOnlyAfterFirstTurn(l, "<>"));
+}
+
+TEST(VirtualGateTest, WithoutAHostGroupEveryTurnWaits) {
+  Links l("none");
+  VirtualGate gate({&l.imu, &l.gps}, 4096, [](std::size_t, bool) { return true; });
+  EXPECT_TRUE(gate.WaitHostIdle());
+  EXPECT_FALSE(gate.HostReadsOnly());
+}
+
+}  // namespace
+}  // namespace hil::harness
