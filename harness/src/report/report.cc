@@ -7,6 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "hil/harness/report/fixed_text.h"
+
 namespace hil::harness {
 namespace {
 
@@ -397,14 +399,16 @@ void WriteErrorsCsv(const std::vector<ErrorSample>& errors, const std::string& p
   auto out = OpenOut(path);
   out << "t_s,truth_e_m,truth_n_m,truth_u_m,est_e_m,est_n_m,est_u_m,err_e_m,err_n_m,err_u_m,err_h_"
          "m\n";
-  char line[512];
+  std::string text;
+  text.reserve(errors.size() * 120);
   for (const auto& e : errors) {
-    std::snprintf(line, sizeof line, "%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f\n",
-                  ToSeconds(e.t), e.truth_enu_m.x(), e.truth_enu_m.y(), e.truth_enu_m.z(),
-                  e.est_enu_m.x(), e.est_enu_m.y(), e.est_enu_m.z(), e.err_enu_m.x(),
-                  e.err_enu_m.y(), e.err_enu_m.z(), e.horizontal());
-    out << line;
+    AppendFixedRow(text, 6, ToSeconds(e.t), e.truth_enu_m.x(), e.truth_enu_m.y(),
+                   e.truth_enu_m.z(), e.est_enu_m.x(), e.est_enu_m.y(), e.est_enu_m.z(),
+                   e.err_enu_m.x(), e.err_enu_m.y(), e.err_enu_m.z(), e.horizontal());
+    text.push_back('\n');
   }
+  out.write(text.data(), static_cast<std::streamsize>(text.size()));
+  if (!out) throw std::runtime_error("cannot write " + path);
 }
 
 }  // namespace hil::harness

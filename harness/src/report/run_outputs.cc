@@ -11,6 +11,7 @@
 
 #include "hil/firmware_emu/gnss/gps_time.h"
 #include "hil/harness/eval/evaluator.h"
+#include "hil/harness/report/fixed_text.h"
 #include "hil/harness/run/machine_load.h"
 #include "hil/truth/truth_integrator.h"
 
@@ -116,27 +117,44 @@ void WriteTruthCsv(const TruthTable& truth, const Scenario& s, const std::string
   truth_csv << "t_s,lat_deg,lon_deg,height_m,e_m,n_m,u_m,v_e_mps,v_n_mps,v_u_mps,yaw_deg,speed_mps,"
                "roll_deg,pitch_deg,w_x_radps,w_y_radps,w_z_radps,f_x_mps2,f_y_mps2,f_z_mps2,steer_"
                "deg,cross_track_m\n";
-  char line[640];
-  for (const Time t : TruthCsvTimes(s)) {
+  std::string text;
+  const std::vector<Time> times = TruthCsvTimes(s);
+  text.reserve(times.size() * 230);
+  for (const Time t : times) {
     const TruthSample& x = truth.At(t);
     const Eigen::Matrix3d R = x.q_NB.toRotationMatrix();
     const Eigen::Vector3d fwd = R.col(0);
     // roll and pitch of the body (z-y-x Euler angles of FLU in ENU)
     const double pitch_deg = -std::asin(std::clamp(R(2, 0), -1.0, 1.0)) * 180.0 / M_PI;
     const double roll_deg = std::atan2(R(2, 1), R(2, 2)) * 180.0 / M_PI;
-    std::snprintf(line, sizeof line,
-                  "%.3f,%.10f,%.10f,%.4f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.5f,%.6f,%.5f,%.5f,%.8f,%."
-                  "8f,%.8f,%.6f,%.6f,%.6f,"
-                  "%.4f,%.6f\n",
-                  ToSeconds(t), x.lat_deg, x.lon_deg, x.height_m, x.p_NB_N_m.x(), x.p_NB_N_m.y(),
-                  x.p_NB_N_m.z(), x.v_NB_N_mps.x(), x.v_NB_N_mps.y(), x.v_NB_N_mps.z(),
-                  std::atan2(fwd.x(), fwd.y()) * 180.0 / M_PI, x.speed_mps, roll_deg, pitch_deg,
-                  x.w_IB_B_radps.x(), x.w_IB_B_radps.y(), x.w_IB_B_radps.z(), x.f_B_mps2.x(),
-                  x.f_B_mps2.y(), x.f_B_mps2.z(), x.steer_rad * 180.0 / M_PI, x.cross_track_m);
-    truth_csv << line;
+    AppendFixed(text, ToSeconds(t), 3);
+    text.push_back(',');
+    AppendFixedRow(text, 10, x.lat_deg, x.lon_deg);
+    text.push_back(',');
+    AppendFixed(text, x.height_m, 4);
+    text.push_back(',');
+    AppendFixedRow(text, 6, x.p_NB_N_m.x(), x.p_NB_N_m.y(), x.p_NB_N_m.z(), x.v_NB_N_mps.x(),
+                   x.v_NB_N_mps.y(), x.v_NB_N_mps.z());
+    text.push_back(',');
+    AppendFixed(text, std::atan2(fwd.x(), fwd.y()) * 180.0 / M_PI, 5);
+    text.push_back(',');
+    AppendFixed(text, x.speed_mps, 6);
+    text.push_back(',');
+    AppendFixedRow(text, 5, roll_deg, pitch_deg);
+    text.push_back(',');
+    AppendFixedRow(text, 8, x.w_IB_B_radps.x(), x.w_IB_B_radps.y(), x.w_IB_B_radps.z());
+    text.push_back(',');
+    AppendFixedRow(text, 6, x.f_B_mps2.x(), x.f_B_mps2.y(), x.f_B_mps2.z());
+    text.push_back(',');
+    AppendFixed(text, x.steer_rad * 180.0 / M_PI, 4);
+    text.push_back(',');
+    AppendFixed(text, x.cross_track_m, 6);
+    text.push_back('\n');
     t_s.push_back(ToSeconds(t));
     en_m.emplace_back(x.p_NB_N_m.x(), x.p_NB_N_m.y());
   }
+  truth_csv.write(text.data(), static_cast<std::streamsize>(text.size()));
+  if (!truth_csv) throw std::runtime_error("cannot write " + path);
 }
 
 void WriteFixCsvHeader(std::ostream& out) {

@@ -6,13 +6,14 @@
 #include <limits>
 #include <sstream>
 
+#include "hil/harness/report/fixed_text.h"
 #include "hil/harness/report/report.h"
 
 namespace hil::harness {
 std::string SvgNum(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.2f", v);
-  return b;
+  std::string s;
+  AppendFixed(s, v, 2);
+  return s;
 }
 
 namespace {
