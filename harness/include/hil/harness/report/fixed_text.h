@@ -6,25 +6,21 @@
 /// these (seed004: about 800 000 in its three CSV files).
 
 #include <charconv>
-#include <cstdio>
+#include <stdexcept>
 #include <string>
 
 namespace hil::harness {
 
-/// Appends `v` with `decimals` digits after the point.
+/// Appends `v` with `decimals` (0 to kMaxDecimals) digits after the point.
+inline constexpr int kMaxDecimals = 60;
 inline void AppendFixed(std::string& out, double v, int decimals) {
-  char buf[128];
+  if (decimals < 0 || decimals > kMaxDecimals)
+    throw std::out_of_range("AppendFixed: " + std::to_string(decimals) + " decimals");
+  // the longest: a sign, 309 integer digits (DBL_MAX), the point and kMaxDecimals decimals
+  char buf[1 + 309 + 1 + kMaxDecimals];
   const std::to_chars_result r =
       std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals);
-  if (r.ec == std::errc{}) {
-    out.append(buf, r.ptr);
-    return;
-  }
-  // beyond 10^100 (never a metre or a second here): printf's own digits, however many
-  const int n = std::snprintf(nullptr, 0, "%.*f", decimals, v);
-  std::string wide(static_cast<std::size_t>(n) + 1, '\0');
-  std::snprintf(wide.data(), wide.size(), "%.*f", decimals, v);
-  out.append(wide.data(), static_cast<std::size_t>(n));
+  out.append(buf, r.ptr);
 }
 
 /// Appends the values with `decimals` digits each, a comma before every one but the first.
