@@ -111,17 +111,31 @@ std::string ReadAgain(int fd) {
   return n > 0 ? std::string(buf, static_cast<std::size_t>(n)) : std::string();
 }
 
+// Fields 3 (state) and 20 (num_threads) of proc(5)'s stat line, read by hand: the sleep probe
+// parses one per host thread at every check of a host turn (sscanf's format parsing was a sixth
+// of the probe's time).
 StatFields ParseStateAndThreads(char* buf, long* threads) {
   StatFields f;
-  const char* close = std::strrchr(buf, ')');
-  if (!close) return f;
-  char state = ' ';
-  // fields 3 (state) to 20 (num_threads) of proc(5)
-  if (std::sscanf(close + 1,
-                  " %c %*d %*d %*d %*d %*d %*u %*u %*u %*u %*u %*u %*u %*d %*d %*d %*d %ld", &state,
-                  threads) != 2)
-    return f;
-  f.state = state;
+  const char* p = std::strrchr(buf, ')');
+  if (!p) return f;
+  const auto next_field = [&p] {
+    while (*p == ' ') ++p;
+    const char* start = p;
+    while (*p != ' ' && *p != '\0' && *p != '\n') ++p;
+    return p > start ? start : nullptr;
+  };
+  ++p;
+  const char* state = next_field();
+  if (!state) return f;
+  const char* field = nullptr;
+  for (int k = 4; k <= 20; ++k) {
+    if (!(field = next_field())) return f;
+  }
+  char* end = nullptr;
+  const long n = std::strtol(field, &end, 10);
+  if (end == field) return f;
+  *threads = n;
+  f.state = *state;
   return f;
 }
 
