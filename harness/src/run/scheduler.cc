@@ -174,6 +174,7 @@ void Scheduler::Serve(Time t_event, const TruthSample& truth, SchedulerMonitor& 
                       DeviceOutput& out) {
   for (std::size_t d = 0; d < set_.devices.size(); ++d) {
     if (set_.devices[d]->next_event_time() != t_event) continue;
+    if (ahead_) last_event_[d] = t_event;
     set_.devices[d]->OnEvent(truth, out);
     if (const std::optional<VehicleCommand> c = set_.devices[d]->TakeVehicleCommand()) {
       if (integrator_) integrator_->SetCommand(c->t, c->speed_mps, c->steer_or_yaw_rate);
@@ -204,7 +205,12 @@ void Scheduler::Run(SchedulerMonitor& monitor, const truth::TruthConfig* truth) 
 
 bool Scheduler::RunEvents(SchedulerMonitor& monitor, const truth::TruthConfig* truth) {
   std::optional<truth::TruthIntegrator>& integrator = integrator_;
-  if (truth) integrator.emplace(*truth);
+  // virtual mode, open loop: the truth is a function of time alone, sampled ahead on a thread
+  if (truth && !pacer_ && !truth->external_commands) {
+    ahead_.emplace(*truth);
+  } else if (truth) {
+    integrator.emplace(*truth);
+  }
   if (pacer_ && !pacing_) StartPacing();  // before the first event: its bytes leave on time
   DeviceOutput out;
   for (;;) {
@@ -220,8 +226,8 @@ bool Scheduler::RunEvents(SchedulerMonitor& monitor, const truth::TruthConfig* t
     }
     if (*t_event > t_end_) return true;
     TruthSample sample;
-    if (integrator) {
-      sample = integrator->Sample(*t_event);
+    if (ahead_ || integrator) {
+      sample = ahead_ ? AheadSample(*t_event) : integrator->Sample(*t_event);
       if (truth_tap_) truth_tap_(sample);
     } else {
       sample.t = *t_event;
@@ -229,6 +235,18 @@ bool Scheduler::RunEvents(SchedulerMonitor& monitor, const truth::TruthConfig* t
     Serve(*t_event, sample, monitor, out);
     if (write_refused_ || !monitor.KeepGoing(*t_event)) return false;
   }
+}
+
+TruthSample Scheduler::AheadSample(Time t) {
+  schedule_.resize(set_.devices.size());
+  last_event_.resize(set_.devices.size());
+  for (std::size_t d = 0; d < set_.devices.size(); ++d) {
+    const Time next = set_.devices[d]->next_event_time();
+    const Duration period = last_event_[d] ? next - *last_event_[d] : Duration{};
+    schedule_[d] = {next, period > Duration{0} ? period : Duration{}};
+  }
+  ahead_->Plan(schedule_);
+  return ahead_->Sample(t);
 }
 
 Time Scheduler::NextHostTurn() const {

@@ -37,6 +37,7 @@
 #include "hil/harness/faults/fault_record.h"
 #include "hil/harness/run/device_set.h"
 #include "hil/harness/run/pacing_thread.h"
+#include "hil/harness/run/truth_ahead.h"
 #include "hil/harness/run/virtual_gate.h"
 #include "hil/truth/truth_integrator.h"
 
@@ -128,6 +129,8 @@ class Scheduler {
   void PollHostFds();
   /// Whether a host has bytes waiting on an endpoint.
   bool HostWrote();
+  /// The truth at `t` from ahead_, after telling it the devices' schedules.
+  TruthSample AheadSample(Time t);
   /// Virtual mode: the next host turn.
   Time NextHostTurn() const;
   /// Whether devices[d] is the closed loop's actuator (the base or the steering ECU).
@@ -168,6 +171,11 @@ class Scheduler {
   Duration control_period_{};  // closed loop: control ticks are host turns (zero: none)
   Time next_control_turn_{};
   std::optional<truth::TruthIntegrator> integrator_;
+  /// Virtual mode, open loop: the truth sampled ahead (truth_ahead.h), with each device's next
+  /// event and the event it served last, the schedule it predicts from.
+  std::optional<TruthAhead> ahead_;
+  std::vector<TruthAhead::DeviceSchedule> schedule_;
+  std::vector<std::optional<Time>> last_event_;
   std::function<void(const TruthSample&)> truth_tap_;
   std::vector<VehicleCommand> vehicle_commands_;
   std::vector<Time> answer_turns_;  // host turns at the ends of devices' answers

@@ -1,0 +1,82 @@
+#pragma once
+/// @file
+/// Virtual mode, open loop: the truth integrated on a thread of its own, ahead of the devices.
+///
+/// The open-loop truth is a function of time alone: TruthIntegrator takes its steps whatever times
+/// it is asked for (CV_ONE_STEP towards the next time event, never towards a request) and
+/// interpolates a request in the step that covers it, so the sample at t is the same bits from
+/// any integrator that is asked for t after earlier times only. The scheduler tells TruthAhead,
+/// at every event, when each device's next event is and how far its last one lay before it
+/// (Plan); the worker thread samples the times that schedule predicts (every device's next event
+/// and its period's multiples after it, up to `kAheadEvents` events ahead) while the main thread
+/// runs the devices. Sample(t) takes the worker's sample for t, waiting for it if the worker is
+/// still at it; a time the worker did not predict (a host changed a device's rate) comes from a
+/// second integrator on the calling thread, which catches up from its own last time. Either way
+/// the sample is the one TruthIntegrator::Sample(t) gives in a single sequence of requests.
+
+#include <condition_variable>
+#include <cstddef>
+#include <deque>
+#include <exception>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <vector>
+
+#include "hil/firmware_emu/truth_sample.h"
+#include "hil/truth/truth_integrator.h"
+
+namespace hil::harness {
+
+class TruthAhead {
+ public:
+  /// One device's schedule: its next event, and the time from its last event to that one (zero:
+  /// not known yet, only the next event is predicted).
+  struct DeviceSchedule {
+    Time next{};
+    Duration period{};
+  };
+
+  explicit TruthAhead(const truth::TruthConfig& config);
+  ~TruthAhead();
+  TruthAhead(const TruthAhead&) = delete;
+  TruthAhead& operator=(const TruthAhead&) = delete;
+
+  /// The devices' schedules now (called before every Sample; only a change wakes the worker).
+  void Plan(const std::vector<DeviceSchedule>& schedule);
+  /// The truth at `t` (times asked in non-decreasing order). Throws what the integrator threw.
+  TruthSample Sample(Time t);
+
+  /// How many Sample() calls the worker answered, and how many the calling thread computed.
+  std::size_t ahead_hits() const { return hits_; }
+  std::size_t misses() const { return misses_; }
+
+  /// The worker stays at most this many predicted events ahead of the last time asked for.
+  static constexpr std::size_t kAheadEvents = 256;
+
+ private:
+  void Work();
+  /// The earliest predicted time after `after` (lock held), or none.
+  std::optional<Time> NextPredicted(Time after) const;
+  /// Whether the worker has a time to sample now (lock held).
+  bool HasWork();
+
+  truth::TruthConfig config_;
+  truth::TruthIntegrator worker_truth_;
+  std::optional<truth::TruthIntegrator> own_truth_;  // the misses, on the calling thread
+
+  std::mutex mu_;
+  std::condition_variable worker_cv_, caller_cv_;
+  std::vector<DeviceSchedule> plan_;
+  std::deque<TruthSample> ready_;  // the worker's samples, in time order
+  std::optional<Time> working_on_;  // the time the worker is sampling now
+  std::optional<Time> last_done_;   // the worker's last sampled time
+  std::exception_ptr worker_error_;
+  bool stop_ = false;
+  bool worker_asleep_ = false;
+  bool filling_ = true;
+  std::size_t hits_ = 0, misses_ = 0;
+  std::thread worker_;  // last: started once the rest exists
+};
+
+}  // namespace hil::harness

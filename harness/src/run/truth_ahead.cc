@@ -1,0 +1,122 @@
+#include "hil/harness/run/truth_ahead.h"
+
+#include <algorithm>
+
+namespace hil::harness {
+
+TruthAhead::TruthAhead(const truth::TruthConfig& config)
+    : config_(config), worker_truth_(config), worker_([this] { Work(); }) {}
+
+TruthAhead::~TruthAhead() {
+  {
+    const std::lock_guard<std::mutex> lock(mu_);
+    stop_ = true;
+  }
+  worker_cv_.notify_all();
+  worker_.join();
+}
+
+void TruthAhead::Plan(const std::vector<DeviceSchedule>& schedule) {
+  {
+    const std::lock_guard<std::mutex> lock(mu_);
+    const bool same = std::equal(
+        schedule.begin(), schedule.end(), plan_.begin(), plan_.end(),
+        [](const DeviceSchedule& a, const DeviceSchedule& b) {
+          return a.next == b.next && a.period == b.period;
+        });
+    if (same) return;
+    plan_ = schedule;
+    if (!worker_asleep_ || !HasWork()) return;
+  }
+  worker_cv_.notify_one();
+}
+
+bool TruthAhead::HasWork() {
+  // hysteresis: a full worker sleeps until half its samples are taken (one wake-up per
+  // kAheadEvents / 2 samples, not one per sample)
+  if (ready_.size() >= kAheadEvents) filling_ = false;
+  if (!filling_ && ready_.size() <= kAheadEvents / 2) filling_ = true;
+  return filling_ && NextPredicted(last_done_.value_or(Time{})).has_value();
+}
+
+std::optional<Time> TruthAhead::NextPredicted(Time after) const {
+  std::optional<Time> best;
+  const bool strict = last_done_.has_value();  // nothing sampled yet: `after` (t = 0) counts
+  for (const DeviceSchedule& d : plan_) {
+    Time t = d.next;
+    const bool early = strict ? t <= after : t < after;
+    if (early) {
+      if (d.period <= Duration{0}) continue;
+      // the first of next + j·period after `after` (or at it)
+      const auto j = (after - t) / d.period;
+      t += d.period * j;
+      if (strict ? t <= after : t < after) t += d.period;
+    }
+    if (!best || t < *best) best = t;
+  }
+  return best;
+}
+
+void TruthAhead::Work() {
+  std::unique_lock<std::mutex> lock(mu_);
+  for (;;) {
+    worker_asleep_ = true;
+    worker_cv_.wait(lock, [&] { return stop_ || HasWork(); });
+    worker_asleep_ = false;
+    if (stop_) return;
+    const std::optional<Time> next = NextPredicted(last_done_.value_or(Time{}));
+    working_on_ = *next;
+    lock.unlock();
+    TruthSample s;
+    std::exception_ptr error;
+    try {
+      s = worker_truth_.Sample(*next);
+    } catch (...) {
+      error = std::current_exception();
+    }
+    lock.lock();
+    working_on_.reset();
+    if (error) {
+      worker_error_ = error;  // the calling thread computes from here on (and meets it too)
+      caller_cv_.notify_all();
+      return;
+    }
+    ready_.push_back(s);
+    last_done_ = *next;
+    caller_cv_.notify_all();
+  }
+}
+
+TruthSample TruthAhead::Sample(Time t) {
+  {
+    std::unique_lock<std::mutex> lock(mu_);
+    for (;;) {
+      while (!ready_.empty() && ready_.front().t < t) ready_.pop_front();  // predicted, not asked
+      if (!ready_.empty()) {
+        if (ready_.front().t != t) break;  // the worker is past t without it: a miss
+        TruthSample s = ready_.front();
+        ready_.pop_front();
+        ++hits_;
+        const bool wake = worker_asleep_ && HasWork();
+        lock.unlock();
+        if (wake) worker_cv_.notify_one();
+        return s;
+      }
+      if (worker_error_) break;
+      // nothing ready: wait if the worker is at t or will come to it
+      const std::optional<Time> next =
+          working_on_ ? working_on_ : NextPredicted(last_done_.value_or(Time{}));
+      if (!next || *next > t) break;
+      if (worker_asleep_) {
+        filling_ = true;  // t is the next it predicts: it must wake whatever it holds
+        worker_cv_.notify_one();
+      }
+      caller_cv_.wait(lock);
+    }
+    ++misses_;
+  }
+  if (!own_truth_) own_truth_.emplace(config_);
+  return own_truth_->Sample(t);
+}
+
+}  // namespace hil::harness
