@@ -61,7 +61,8 @@ void TruthAhead::Work() {
   std::unique_lock<std::mutex> lock(mu_);
   for (;;) {
     worker_asleep_ = true;
-    worker_cv_.wait(lock, [&] { return stop_ || HasWork(); });
+    // not while the caller samples on this integrator itself (SampleInPlace)
+    worker_cv_.wait(lock, [&] { return stop_ || (!working_on_ && HasWork()); });
     worker_asleep_ = false;
     if (stop_) return;
     const std::optional<Time> next = NextPredicted(last_done_.value_or(Time{}));
@@ -103,20 +104,41 @@ TruthSample TruthAhead::Sample(Time t) {
         return s;
       }
       if (worker_error_) break;
-      // nothing ready: wait if the worker is at t or will come to it
-      const std::optional<Time> next =
-          working_on_ ? working_on_ : NextPredicted(last_done_.value_or(Time{}));
-      if (!next || *next > t) break;
-      if (worker_asleep_) {
-        filling_ = true;  // t is the next it predicts: it must wake whatever it holds
-        worker_cv_.notify_one();
-      }
-      caller_cv_.wait(lock);
+      if (!working_on_) return SampleInPlace(t, lock);
+      if (*working_on_ > t) break;  // it is past t: a miss
+      caller_cv_.wait(lock);        // it is at t (or before): one sample away
     }
     ++misses_;
   }
   if (!own_truth_) own_truth_.emplace(config_);
   return own_truth_->Sample(t);
+}
+
+TruthSample TruthAhead::SampleInPlace(Time t, std::unique_lock<std::mutex>& lock) {
+  // The worker is behind and idle (a loaded machine did not run it): the caller takes its
+  // integrator for t rather than waiting for the worker to be scheduled; t is after its last
+  // time, so the samples stay the same bits.
+  working_on_ = t;
+  ++taken_;
+  lock.unlock();
+  TruthSample s;
+  std::exception_ptr error;
+  try {
+    s = worker_truth_.Sample(t);
+  } catch (...) {
+    error = std::current_exception();
+  }
+  lock.lock();
+  working_on_.reset();
+  if (error) {
+    worker_error_ = error;
+    std::rethrow_exception(error);
+  }
+  last_done_ = t;
+  const bool wake = worker_asleep_ && HasWork();
+  lock.unlock();
+  if (wake) worker_cv_.notify_one();
+  return s;
 }
 
 }  // namespace hil::harness

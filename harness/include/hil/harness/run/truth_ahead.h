@@ -9,10 +9,12 @@
 /// at every event, when each device's next event is and how far its last one lay before it
 /// (Plan); the worker thread samples the times that schedule predicts (every device's next event
 /// and its period's multiples after it, up to `kAheadEvents` events ahead) while the main thread
-/// runs the devices. Sample(t) takes the worker's sample for t, waiting for it if the worker is
-/// still at it; a time the worker did not predict (a host changed a device's rate) comes from a
-/// second integrator on the calling thread, which catches up from its own last time. Either way
-/// the sample is the one TruthIntegrator::Sample(t) gives in a single sequence of requests.
+/// runs the devices. Sample(t) takes the worker's sample for t, waits for it if the worker is at
+/// it, and computes it on the worker's integrator itself if the worker is behind and idle (a
+/// loaded machine did not run it); a time the worker passed without sampling it (a host changed a
+/// device's rate) comes from a second integrator on the calling thread, which catches up from its
+/// own last time. Either way the sample is the one TruthIntegrator::Sample(t) gives in a single
+/// sequence of requests.
 
 #include <condition_variable>
 #include <cstddef>
@@ -47,8 +49,10 @@ class TruthAhead {
   /// The truth at `t` (times asked in non-decreasing order). Throws what the integrator threw.
   TruthSample Sample(Time t);
 
-  /// How many Sample() calls the worker answered, and how many the calling thread computed.
+  /// How many Sample() calls the worker answered, how many the caller computed on the worker's
+  /// integrator (the worker was behind), and how many on its own (the worker was past them).
   std::size_t ahead_hits() const { return hits_; }
+  std::size_t taken() const { return taken_; }
   std::size_t misses() const { return misses_; }
 
   /// The worker stays at most this many predicted events ahead of the last time asked for.
@@ -60,6 +64,8 @@ class TruthAhead {
   std::optional<Time> NextPredicted(Time after) const;
   /// Whether the worker has a time to sample now (lock held).
   bool HasWork();
+  /// Sample(t) on the worker's integrator, on the calling thread (lock held, released on return).
+  TruthSample SampleInPlace(Time t, std::unique_lock<std::mutex>& lock);
 
   truth::TruthConfig config_;
   truth::TruthIntegrator worker_truth_;
@@ -75,7 +81,7 @@ class TruthAhead {
   bool stop_ = false;
   bool worker_asleep_ = false;
   bool filling_ = true;
-  std::size_t hits_ = 0, misses_ = 0;
+  std::size_t hits_ = 0, taken_ = 0, misses_ = 0;
   std::thread worker_;  // last: started once the rest exists
 };
 
