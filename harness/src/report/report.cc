@@ -402,9 +402,9 @@ void WriteErrorsCsv(const std::vector<ErrorSample>& errors, const std::string& p
   std::string text;
   text.reserve(errors.size() * 120);
   for (const auto& e : errors) {
-    AppendFixedRow(text, 6, ToSeconds(e.t), e.truth_enu_m.x(), e.truth_enu_m.y(),
-                   e.truth_enu_m.z(), e.est_enu_m.x(), e.est_enu_m.y(), e.est_enu_m.z(),
-                   e.err_enu_m.x(), e.err_enu_m.y(), e.err_enu_m.z(), e.horizontal());
+    AppendFixedRow(text, 6, ToSeconds(e.t), e.truth_enu_m.x(), e.truth_enu_m.y(), e.truth_enu_m.z(),
+                   e.est_enu_m.x(), e.est_enu_m.y(), e.est_enu_m.z(), e.err_enu_m.x(),
+                   e.err_enu_m.y(), e.err_enu_m.z(), e.horizontal());
     text.push_back('\n');
   }
   out.write(text.data(), static_cast<std::streamsize>(text.size()));

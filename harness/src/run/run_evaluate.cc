@@ -2,8 +2,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <functional>
 #include <exception>
+#include <functional>
 #include <numbers>
 #include <thread>
 #include <utility>

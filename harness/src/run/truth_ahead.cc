@@ -19,11 +19,10 @@ TruthAhead::~TruthAhead() {
 void TruthAhead::Plan(const std::vector<DeviceSchedule>& schedule) {
   {
     const std::lock_guard<std::mutex> lock(mu_);
-    const bool same = std::equal(
-        schedule.begin(), schedule.end(), plan_.begin(), plan_.end(),
-        [](const DeviceSchedule& a, const DeviceSchedule& b) {
-          return a.next == b.next && a.period == b.period;
-        });
+    const bool same = std::equal(schedule.begin(), schedule.end(), plan_.begin(), plan_.end(),
+                                 [](const DeviceSchedule& a, const DeviceSchedule& b) {
+                                   return a.next == b.next && a.period == b.period;
+                                 });
     if (same) return;
     plan_ = schedule;
     if (!worker_asleep_ || !HasWork()) return;

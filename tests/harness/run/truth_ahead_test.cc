@@ -61,14 +61,16 @@ void RunAndCompare(long long t_end_ms, GnssPeriod gnss_period_ms, std::size_t* m
 
 TEST(TruthAheadTest, APeriodicScheduleIsSampledAheadBitForBit) {
   std::size_t misses = 0;
-  RunAndCompare(60'000, [](long long) { return 200; }, &misses);
+  RunAndCompare(
+      60'000, [](long long) { return 200; }, &misses);
   EXPECT_EQ(misses, 0u) << "every time of a periodic schedule is predicted";
 }
 
 TEST(TruthAheadTest, RateChangesAreMissedAndComputedBitForBit) {
   // the receiver's period changes every 7 s (5 Hz, then 3 Hz with an offset, then 4 Hz ...)
   std::size_t misses = 0;
-  RunAndCompare(60'000, [](long long t) { return t / 7000 % 2 ? 333 : 250; }, &misses);
+  RunAndCompare(
+      60'000, [](long long t) { return t / 7000 % 2 ? 333 : 250; }, &misses);
   EXPECT_GT(misses, 0u) << "the first times after a change are not predicted";
 }
 

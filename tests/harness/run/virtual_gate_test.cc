@@ -57,7 +57,8 @@ struct Links {
 // The gate after the host's first turn: HostReadsOnly().
 bool ReadsOnlyAfterFirstTurn(Links& l, const std::string& redirect) {
   const pid_t host = StartHost(l.dir / "ttyI", l.dir / "ttyG", redirect);
-  VirtualGate gate({&l.imu, &l.gps}, 4096, [](std::size_t, bool) { return true; }, host);
+  VirtualGate gate(
+      {&l.imu, &l.gps}, 4096, [](std::size_t, bool) { return true; }, host);
   EXPECT_FALSE(gate.HostReadsOnly()) << "nothing is known before the first turn";
   EXPECT_TRUE(gate.WaitHostIdle());
   const bool reads_only = gate.HostReadsOnly();

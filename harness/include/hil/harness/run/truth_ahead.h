@@ -74,7 +74,7 @@ class TruthAhead {
   std::mutex mu_;
   std::condition_variable worker_cv_, caller_cv_;
   std::vector<DeviceSchedule> plan_;
-  std::deque<TruthSample> ready_;  // the worker's samples, in time order
+  std::deque<TruthSample> ready_;   // the worker's samples, in time order
   std::optional<Time> working_on_;  // the time the worker is sampling now
   std::optional<Time> last_done_;   // the worker's last sampled time
   std::exception_ptr worker_error_;
