@@ -162,11 +162,17 @@ void WriteFixCsvHeader(std::ostream& out) {
 }
 
 void WriteFixCsvLine(std::ostream& out, const gnss::GnssFix& fix) {
-  char line[256];
-  std::snprintf(line, sizeof line, "%.3f,%.9f,%.9f,%.4f,%.4f,%.4f,%.4f,%d,%.2f\n",
-                ToSeconds(fix.t_validity), fix.lat_deg, fix.lon_deg, fix.height_m, fix.vel_n_mps,
-                fix.vel_e_mps, fix.vel_d_mps, fix.num_sv, fix.hdop);
-  out << line;
+  std::string line;
+  line.reserve(96);
+  AppendFixed(line, ToSeconds(fix.t_validity), 3);
+  line.push_back(',');
+  AppendFixedRow(line, 9, fix.lat_deg, fix.lon_deg);
+  line.push_back(',');
+  AppendFixedRow(line, 4, fix.height_m, fix.vel_n_mps, fix.vel_e_mps, fix.vel_d_mps);
+  line += ',' + std::to_string(fix.num_sv) + ',';
+  AppendFixed(line, fix.hdop, 2);
+  line.push_back('\n');
+  out.write(line.data(), static_cast<std::streamsize>(line.size()));
 }
 
 namespace {
