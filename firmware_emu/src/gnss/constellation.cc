@@ -62,13 +62,19 @@ std::vector<SatelliteView> Constellation::Sky(double gps_s, double lat_deg, doub
   const Eigen::Vector3d rx_e = EcefFromGeodetic(lat_deg, lon_deg, height_m);
   const Eigen::Matrix3d r_en = RotationEcefFromEnu(lat_deg, lon_deg);
   const double n = std::sqrt(kMu_m3ps2 / (kGpsA_m * kGpsA_m * kGpsA_m));
+  // the same for every orbit (hoisted: the same arithmetic, so the same bits)
+  const double orbit_s = std::fmod(gps_s, 86400.0 * 365.25 * 4);
+  const double sidereal_s = std::fmod(gps_s, 86164.0905);
+  const Eigen::Matrix3d r_incl =
+      Eigen::AngleAxisd(kGpsIncl_rad, Eigen::Vector3d::UnitX()).toRotationMatrix();
   std::vector<SatelliteView> out;
+  out.reserve(gps_.size() + sbas_.size());
   for (const Orbit& o : gps_) {
-    const double u = o.anomaly0_rad + n * std::fmod(gps_s, 86400.0 * 365.25 * 4);
-    const double raan = o.raan0_rad - kEarthRate_radps * std::fmod(gps_s, 86164.0905);
+    const double u = o.anomaly0_rad + n * orbit_s;
+    const double raan = o.raan0_rad - kEarthRate_radps * sidereal_s;
     const Eigen::Vector3d p_orb(kGpsA_m * std::cos(u), kGpsA_m * std::sin(u), 0.0);
-    const Eigen::Vector3d p_e = Eigen::AngleAxisd(raan, Eigen::Vector3d::UnitZ()) *
-                                (Eigen::AngleAxisd(kGpsIncl_rad, Eigen::Vector3d::UnitX()) * p_orb);
+    const Eigen::Vector3d p_e =
+        Eigen::AngleAxisd(raan, Eigen::Vector3d::UnitZ()).toRotationMatrix() * (r_incl * p_orb);
     SatelliteView s;
     s.svid = o.svid;
     LookAngles(p_e, rx_e, r_en, s.elev_deg, s.azim_deg);
