@@ -30,6 +30,16 @@ void TruthAhead::Plan(const std::vector<DeviceSchedule>& schedule) {
   worker_cv_.notify_one();
 }
 
+TruthAhead::Counts TruthAhead::counts() {
+  const std::lock_guard<std::mutex> lock(mu_);
+  return counts_;
+}
+
+std::size_t TruthAhead::ready() {
+  const std::lock_guard<std::mutex> lock(mu_);
+  return ready_.size();
+}
+
 bool TruthAhead::HasWork() {
   // hysteresis: a full worker sleeps until half its samples are taken (one wake-up per
   // kAheadEvents / 2 samples, not one per sample)
@@ -96,7 +106,7 @@ TruthSample TruthAhead::Sample(Time t) {
         if (ready_.front().t != t) break;  // the worker is past t without it: a miss
         TruthSample s = ready_.front();
         ready_.pop_front();
-        ++hits_;
+        ++counts_.hits;
         const bool wake = worker_asleep_ && HasWork();
         lock.unlock();
         if (wake) worker_cv_.notify_one();
@@ -107,7 +117,7 @@ TruthSample TruthAhead::Sample(Time t) {
       if (*working_on_ > t) break;  // it is past t: a miss
       caller_cv_.wait(lock);        // it is at t (or before): one sample away
     }
-    ++misses_;
+    ++counts_.misses;
   }
   if (!own_truth_) own_truth_.emplace(config_);
   return own_truth_->Sample(t);
@@ -118,7 +128,7 @@ TruthSample TruthAhead::SampleInPlace(Time t, std::unique_lock<std::mutex>& lock
   // integrator for t rather than waiting for the worker to be scheduled; t is after its last
   // time, so the samples stay the same bits.
   working_on_ = t;
-  ++taken_;
+  ++counts_.taken;
   lock.unlock();
   TruthSample s;
   std::exception_ptr error;

@@ -51,9 +51,12 @@ class TruthAhead {
 
   /// How many Sample() calls the worker answered, how many the caller computed on the worker's
   /// integrator (the worker was behind), and how many on its own (the worker was past them).
-  std::size_t ahead_hits() const { return hits_; }
-  std::size_t taken() const { return taken_; }
-  std::size_t misses() const { return misses_; }
+  struct Counts {
+    std::size_t hits = 0, taken = 0, misses = 0;
+  };
+  Counts counts();
+  /// The worker's samples not taken yet.
+  std::size_t ready();
 
   /// The worker stays at most this many predicted events ahead of the last time asked for.
   static constexpr std::size_t kAheadEvents = 256;
@@ -81,7 +84,7 @@ class TruthAhead {
   bool stop_ = false;
   bool worker_asleep_ = false;
   bool filling_ = true;
-  std::size_t hits_ = 0, taken_ = 0, misses_ = 0;
+  Counts counts_;
   std::thread worker_;  // last: started once the rest exists
 };
 
