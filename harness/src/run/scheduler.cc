@@ -208,6 +208,8 @@ bool Scheduler::RunEvents(SchedulerMonitor& monitor, const truth::TruthConfig* t
   // virtual mode, open loop: the truth is a function of time alone, sampled ahead on a thread
   if (truth && !pacer_ && !truth->external_commands) {
     ahead_.emplace(*truth);
+    schedule_.resize(set_.devices.size());
+    last_event_.resize(set_.devices.size());
   } else if (truth) {
     integrator.emplace(*truth);
   }
@@ -238,8 +240,6 @@ bool Scheduler::RunEvents(SchedulerMonitor& monitor, const truth::TruthConfig* t
 }
 
 TruthSample Scheduler::AheadSample(Time t) {
-  schedule_.resize(set_.devices.size());
-  last_event_.resize(set_.devices.size());
   for (std::size_t d = 0; d < set_.devices.size(); ++d) {
     const Time next = set_.devices[d]->next_event_time();
     const Duration period = last_event_[d] ? next - *last_event_[d] : Duration{};

@@ -45,12 +45,14 @@ bool TruthAhead::HasWork() {
   // kAheadEvents / 2 samples, not one per sample)
   if (ready_.size() >= kAheadEvents) filling_ = false;
   if (!filling_ && ready_.size() <= kAheadEvents / 2) filling_ = true;
-  return filling_ && NextPredicted(last_done_.value_or(Time{})).has_value();
+  return filling_ && NextPredicted().has_value();
 }
 
-std::optional<Time> TruthAhead::NextPredicted(Time after) const {
+std::optional<Time> TruthAhead::NextPredicted() const {
   std::optional<Time> best;
-  const bool strict = last_done_.has_value();  // nothing sampled yet: `after` (t = 0) counts
+  // after the worker's last time; before its first, from t = 0 on (t = 0 included)
+  const Time after = last_done_.value_or(Time{});
+  const bool strict = last_done_.has_value();
   for (const DeviceSchedule& d : plan_) {
     Time t = d.next;
     const bool early = strict ? t <= after : t < after;
@@ -66,6 +68,27 @@ std::optional<Time> TruthAhead::NextPredicted(Time after) const {
   return best;
 }
 
+std::optional<TruthSample> TruthAhead::SampleWorkerTruth(Time t,
+                                                         std::unique_lock<std::mutex>& lock) {
+  working_on_ = t;
+  lock.unlock();
+  std::optional<TruthSample> s;
+  std::exception_ptr error;
+  try {
+    s = worker_truth_.Sample(t);
+  } catch (...) {
+    error = std::current_exception();
+  }
+  lock.lock();
+  working_on_.reset();
+  if (error) {
+    worker_error_ = error;  // the caller computes from here on (and meets it too)
+    return std::nullopt;
+  }
+  last_done_ = t;
+  return s;
+}
+
 void TruthAhead::Work() {
   std::unique_lock<std::mutex> lock(mu_);
   for (;;) {
@@ -74,26 +97,10 @@ void TruthAhead::Work() {
     worker_cv_.wait(lock, [&] { return stop_ || (!working_on_ && HasWork()); });
     worker_asleep_ = false;
     if (stop_) return;
-    const std::optional<Time> next = NextPredicted(last_done_.value_or(Time{}));
-    working_on_ = *next;
-    lock.unlock();
-    TruthSample s;
-    std::exception_ptr error;
-    try {
-      s = worker_truth_.Sample(*next);
-    } catch (...) {
-      error = std::current_exception();
-    }
-    lock.lock();
-    working_on_.reset();
-    if (error) {
-      worker_error_ = error;  // the calling thread computes from here on (and meets it too)
-      caller_cv_.notify_all();
-      return;
-    }
-    ready_.push_back(s);
-    last_done_ = *next;
+    const std::optional<TruthSample> s = SampleWorkerTruth(*NextPredicted(), lock);
+    if (s) ready_.push_back(*s);
     caller_cv_.notify_all();
+    if (!s) return;
   }
 }
 
@@ -107,9 +114,7 @@ TruthSample TruthAhead::Sample(Time t) {
         TruthSample s = ready_.front();
         ready_.pop_front();
         ++counts_.hits;
-        const bool wake = worker_asleep_ && HasWork();
-        lock.unlock();
-        if (wake) worker_cv_.notify_one();
+        WakeWorkerIfDue(lock);
         return s;
       }
       if (worker_error_) break;
@@ -127,27 +132,17 @@ TruthSample TruthAhead::SampleInPlace(Time t, std::unique_lock<std::mutex>& lock
   // The worker is behind and idle (a loaded machine did not run it): the caller takes its
   // integrator for t rather than waiting for the worker to be scheduled; t is after its last
   // time, so the samples stay the same bits.
-  working_on_ = t;
   ++counts_.taken;
-  lock.unlock();
-  TruthSample s;
-  std::exception_ptr error;
-  try {
-    s = worker_truth_.Sample(t);
-  } catch (...) {
-    error = std::current_exception();
-  }
-  lock.lock();
-  working_on_.reset();
-  if (error) {
-    worker_error_ = error;
-    std::rethrow_exception(error);
-  }
-  last_done_ = t;
+  const std::optional<TruthSample> s = SampleWorkerTruth(t, lock);
+  if (!s) std::rethrow_exception(worker_error_);
+  WakeWorkerIfDue(lock);
+  return *s;
+}
+
+void TruthAhead::WakeWorkerIfDue(std::unique_lock<std::mutex>& lock) {
   const bool wake = worker_asleep_ && HasWork();
   lock.unlock();
   if (wake) worker_cv_.notify_one();
-  return s;
 }
 
 }  // namespace hil::harness

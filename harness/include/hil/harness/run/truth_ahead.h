@@ -63,12 +63,17 @@ class TruthAhead {
 
  private:
   void Work();
-  /// The earliest predicted time after `after` (lock held), or none.
-  std::optional<Time> NextPredicted(Time after) const;
+  /// The earliest predicted time after the worker's last one (lock held), or none.
+  std::optional<Time> NextPredicted() const;
   /// Whether the worker has a time to sample now (lock held).
   bool HasWork();
+  /// Samples t on the worker's integrator with the lock released meanwhile (held on entry and
+  /// return); none when it threw (kept in worker_error_).
+  std::optional<TruthSample> SampleWorkerTruth(Time t, std::unique_lock<std::mutex>& lock);
   /// Sample(t) on the worker's integrator, on the calling thread (lock held, released on return).
   TruthSample SampleInPlace(Time t, std::unique_lock<std::mutex>& lock);
+  /// Releases the lock, waking the sleeping worker if it has work now.
+  void WakeWorkerIfDue(std::unique_lock<std::mutex>& lock);
 
   truth::TruthConfig config_;
   truth::TruthIntegrator worker_truth_;
