@@ -69,6 +69,7 @@ std::optional<Time> CanEndpoint::next_frame_time() const {
 
 void CanEndpoint::Capture(CaptureDir dir, Time t, std::int64_t wall_ns,
                           const link::CanWireFrame& f) {
+  CaptureArrivalsUpTo(t);
   t = std::max(t, t_last_capture_);
   t_last_capture_ = t;
   CaptureRecord r;
@@ -155,8 +156,35 @@ void CanEndpoint::ReadBus(Time t_now, const link::RealtimePacer* pacer, Duration
       OnEcho(*r, t, mono);
       continue;
     }
+    if (stamp_at_turns_ && !pacer) {
+      unstamped_.push_back(r->frame);
+      continue;
+    }
     Capture(CaptureDir::kFrameRx, t, mono, r->frame);
     if (!r->frame.error) inbox_.push_back(link::ToDeviceFrame(r->frame, t));
+  }
+}
+
+std::vector<CanFrame> CanEndpoint::TakeArrivals(Time t_arrival) {
+  ReadBus(t_arrival, nullptr, Duration::zero());
+  std::vector<CanFrame> out;
+  for (const link::CanWireFrame& f : unstamped_) {
+    if (t_arrival <= t_last_capture_) {
+      Capture(CaptureDir::kFrameRx, t_arrival, 0, f);  // the capture is there already: now
+    } else {
+      arrivals_.emplace_back(t_arrival, f);
+    }
+    if (!f.error) out.push_back(link::ToDeviceFrame(f, t_arrival));
+  }
+  unstamped_.clear();
+  return out;
+}
+
+void CanEndpoint::CaptureArrivalsUpTo(Time t) {
+  while (!arrivals_.empty() && arrivals_.front().first <= t) {
+    const auto [t_arrival, f] = arrivals_.front();
+    arrivals_.pop_front();
+    Capture(CaptureDir::kFrameRx, t_arrival, 0, f);
   }
 }
 
@@ -175,6 +203,12 @@ void CanEndpoint::FinishCapture(Duration timeout) {
             awaiting_echo_.empty() ? Duration::zero() : timeout);
   }
   while (!awaiting_echo_.empty()) CaptureUnechoed();
+  if (stamp_at_turns_) {
+    // what the host sent after the run's last turn reached no device: captured after the rest
+    const Time t_end = arrivals_.empty() ? t_last_capture_ : arrivals_.back().first;
+    TakeArrivals(t_end);
+    CaptureArrivalsUpTo(t_end);
+  }
 }
 
 }  // namespace hil::harness

@@ -119,8 +119,11 @@ void Execute(RunContext& ctx, RunWatchdog& watchdog) {
   }
   MakeGate(ctx, watchdog);
   // closed loop: every control tick is a host turn (lockstep with the controller)
-  if (scenario.closed_loop.enabled && ctx.gate)
+  if (scenario.closed_loop.enabled && ctx.gate) {
     ctx.scheduler->set_control_period(DurationFromSeconds(scenario.closed_loop.control_period_s));
+    // the controller's frames on a bus: stamped at the turn that hands them to the ECU
+    if (ctx.set.can && ctx.set.steering) ctx.set.can->set_stamp_at_turns(true);
+  }
   // the truth for the evaluation, sampled on a thread of its own as the run goes (truth_table.h)
   ctx.truth_builder.emplace(scenario.truth);
   ctx.truth_builder->Ask(TruthCsvTimes(scenario));

@@ -303,6 +303,12 @@ void Scheduler::HostTurn(Time t) {
   }
   if (!set_.steering) return;  // nothing listens to the bus: open-loop runs read it as before
   PollBus();
+  // the controller's frames arrive now: the capture says so (read between turns, they would be
+  // stamped whenever the run happened to look)
+  if (set_.can) {
+    const std::unique_lock<std::mutex> lock = LinksLock();
+    for (const CanFrame& f : set_.can->TakeArrivals(t_rx)) bus_frames_.push_back(f);
+  }
   DeviceOutput none;
   RouteBusFrames(t_rx, none);
 }

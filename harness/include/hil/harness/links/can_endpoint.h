@@ -7,7 +7,8 @@
 ///    so can-utils' canplayer replays it and `hil replay` plays it;
 ///  - `captures/<iface>.cap`: the hil capture (ftx/frx lines with emulated and wall-clock times).
 /// Virtual mode sends every queued frame at once and captures it at its emulated time (the same
-/// bytes in every run); frames from others get the emulated time they were read at.
+/// bytes in every run); frames from others get the emulated time they were read at, or, in a
+/// closed loop (set_stamp_at_turns), the time of the host turn that hands them to the devices.
 /// Real-time mode sends each frame at its wall time and records the schedule error; the captures
 /// then say when each frame was on the bus, as candump does: the socket receives its own frames
 /// back (CAN_RAW_RECV_OWN_MSGS) and every frame, ours and others', is captured in the order the
@@ -51,6 +52,14 @@ class CanEndpoint {
   /// the last call (error frames are counted, not returned). `pacer` null (virtual mode): they are
   /// stamped `t_now`; otherwise with the emulated time of their kernel receive time.
   std::vector<CanFrame> PollBus(Time t_now, const link::RealtimePacer* pacer);
+  /// Virtual mode's closed loop: frames others send are not stamped when read (that moment
+  /// depends on the machine) but by TakeArrivals at the scheduler's host turns, with the emulated
+  /// time the devices take them at; PollBus then returns none of them.
+  void set_stamp_at_turns(bool on) { stamp_at_turns_ = on; }
+  /// Reads the bus and returns every frame others sent since the last call, stamped `t_arrival`
+  /// (error frames are captured, not returned). Their capture records wait until the capture
+  /// reaches that time, so the captures stay in time order and say when each frame arrived.
+  std::vector<CanFrame> TakeArrivals(Time t_arrival);
   /// Real time: waits up to `timeout` for the echoes of the frames sent, reading the bus meanwhile
   /// (PollBus returns what others sent), then captures any frame still without an echo at its
   /// write time. The destructor does the same without waiting, after capturing what the socket
@@ -80,6 +89,8 @@ class CanEndpoint {
   void OnEcho(const link::ReceivedCanFrame& r, Time t, std::int64_t mono_ns);
   /// Captures the oldest frame still awaiting its echo at its write time.
   void CaptureUnechoed();
+  /// Writes the arrivals whose capture waits (TakeArrivals) up to emulated time `t`.
+  void CaptureArrivalsUpTo(Time t);
   /// Emulated time and CLOCK_MONOTONIC of a received frame: its kernel stamp (real time).
   std::pair<Time, std::int64_t> BusTime(const link::ReceivedCanFrame& r,
                                         const link::RealtimePacer& pacer);
@@ -91,6 +102,9 @@ class CanEndpoint {
   std::deque<CanFrame> pending_;
   std::deque<Sent> awaiting_echo_;
   std::vector<CanFrame> inbox_;               // others' frames read, not yet returned by PollBus
+  bool stamp_at_turns_ = false;
+  std::vector<link::CanWireFrame> unstamped_;  // others' frames read, awaiting TakeArrivals
+  std::deque<std::pair<Time, link::CanWireFrame>> arrivals_;  // stamped, capture not yet written
   std::optional<link::RealtimePacer> pacer_;  // real time: a copy of the run's clock mapping
   std::int64_t realtime_minus_mono_ns_ = 0;   // CLOCK_REALTIME − CLOCK_MONOTONIC at start
   Time t_last_capture_{};                     // captures never go back in time
