@@ -24,6 +24,13 @@ void RunWatchdog::StopController(Time t) {
   }
 }
 
+bool RunWatchdog::EstimatorStillRunning() {
+  const std::int64_t now = NowNs();
+  if (now - running_checked_ns_ < 1'000'000) return true;
+  running_checked_ns_ = now;
+  return ctx_.EstimatorRunning();
+}
+
 bool RunWatchdog::KeepGoing(Time t) {
   ctx_.t_now = t;
   ctx_.collector->Poll();
@@ -37,12 +44,7 @@ bool RunWatchdog::KeepGoing(Time t) {
   if (ctx_.Interrupted()) return false;
   ctx_.progress->Update(ToSeconds(t), ctx_.scenario.duration_s, records.size());
   if (ctx_.options.emulate_only) return true;
-  // whether the estimator still runs: a wait4() per event costs more than the event in virtual
-  // mode, so at most once per millisecond of wall time
-  if (const std::int64_t now = NowNs(); now - running_checked_ns_ >= 1'000'000) {
-    running_checked_ns_ = now;
-    if (!ctx_.EstimatorRunning()) return false;
-  }
+  if (!EstimatorStillRunning()) return false;
   if (ctx_.pacer && ctx_.SilentForNs() > ctx_.silence_ns) {
     ctx_.hang = "no output for " + SecondsText(ctx_.silence_s) + " s";
     return false;
@@ -54,7 +56,7 @@ bool RunWatchdog::OnGateWait(std::size_t unread, bool new_wait) {
   if (new_wait || unread < wait_unread_) wait_progress_ns_ = NowNs();
   wait_unread_ = unread;
   ctx_.collector->Poll();
-  if (ctx_.Interrupted() || !ctx_.EstimatorRunning()) return false;
+  if (ctx_.Interrupted() || !EstimatorStillRunning()) return false;
   if (NowNs() - wait_progress_ns_ <= ctx_.silence_ns) return true;
   const std::string unread_text =
       std::to_string(unread) + " bytes unread for " + SecondsText(ctx_.silence_s) + " s";

@@ -295,8 +295,12 @@ void Scheduler::HostTurn(Time t) {
       if (gate_->Reads(*ep)) t_rx = std::max(t_rx, ep->last_queued_end());
     }
   }
+  PollHostFds();  // one poll() instead of a read() per port (it hands over bytes in flight too)
+  std::size_t k = 0;
   for (std::size_t d = 0; d < set_.devices.size(); ++d) {
     for (std::size_t p = 0; p < set_.endpoints[d].size(); ++p) {
+      const pollfd& pf = host_fds_[k++];
+      if (pf.fd >= 0 && pf.revents == 0) continue;  // nothing from the host on this port
       std::string rx = set_.endpoints[d][p]->PollHost(t_rx, true);
       if (!rx.empty()) arrivals_.push_back({t_rx, d, p, std::move(rx)});
     }

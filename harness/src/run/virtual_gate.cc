@@ -202,7 +202,8 @@ bool VirtualGate::WaitHostIdle() {
   const std::int64_t start = MonotonicNs();
   std::int64_t all_read_since = -1;
   const auto idle = [&] {
-    if (Refresh(nullptr, nullptr, true) != 0) {
+    // a link found read with nothing written since stays read: only the others are asked
+    if (Refresh(nullptr, nullptr) != 0) {
       all_read_since = -1;
       return false;
     }

@@ -29,6 +29,9 @@ class RunWatchdog final : public SchedulerMonitor {
  private:
   /// Kills the controller for the controller_stop faults due at `t`.
   void StopController(Time t);
+  /// Whether the estimator still runs, asked of the kernel at most once per millisecond of wall
+  /// time (a wait4() per event or wait step costs more than the event in virtual mode).
+  bool EstimatorStillRunning();
   RunContext& ctx_;
   std::int64_t running_checked_ns_ = 0;  // the last wall time the estimator was seen running
   std::size_t wait_unread_ = 0;          // unread bytes at the last gate wait step
