@@ -76,13 +76,15 @@ void EstimateCollector::Take() {
     }
   }
   if (process_) {
-    for (const OutputLine& l : process_->TakeLines()) {
+    std::vector<OutputLine> lines = process_->TakeLines();
+    for (const OutputLine& l : lines) {
       // with a pty output, stdout is only kept (diagnostics), never parsed as solutions
       if (nav_pty_)
         raw_ << "# stdout: " << l.text << "\n", raw_unflushed_ = true;
       else
         Consume(l.text, l.wall_ns, l.json.get());
     }
+    process_->ReturnLines(std::move(lines));
   }
   if (nav_pty_) {
     const std::string rx = nav_pty_->ReadAvailable();

@@ -88,9 +88,14 @@ void EstimatorProcess::ReadLoop() {
       got.push_back(std::move(l));
     }
     if (got.empty()) continue;
-    std::lock_guard<std::mutex> lock(mu_);
-    for (OutputLine& l : got) lines_.push_back(std::move(l));
-    last_output_wall_ns_ = now;
+    std::vector<OutputLine> used;
+    {
+      std::lock_guard<std::mutex> lock(mu_);
+      for (OutputLine& l : got) lines_.push_back(std::move(l));
+      last_output_wall_ns_ = now;
+      used.swap(used_);
+    }
+    // `used` frees here, on the thread that allocated its lines, outside the lock
   }
 }
 
@@ -118,6 +123,16 @@ std::vector<OutputLine> EstimatorProcess::TakeLines() {
   std::vector<OutputLine> out;
   out.swap(lines_);
   return out;
+}
+
+void EstimatorProcess::ReturnLines(std::vector<OutputLine> used) {
+  if (used.empty()) return;
+  std::lock_guard<std::mutex> lock(mu_);
+  if (used_.empty()) {
+    used_.swap(used);  // the caller's vector goes back empty, freed where it was made
+  } else {
+    for (OutputLine& l : used) used_.push_back(std::move(l));
+  }
 }
 
 // A zombie of the group (the shell's child, reparented to an init that may reap it seconds later)

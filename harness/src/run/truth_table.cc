@@ -63,21 +63,36 @@ void TruthTableBuilder::Ask(const std::vector<Time>& times) {
 }
 
 void TruthTableBuilder::Advance(Time t) {
+  if (caller_has_watermark_ && t <= caller_watermark_) return;
+  caller_watermark_ = t;
+  caller_has_watermark_ = true;
+  if (t - notified_watermark_ < std::chrono::seconds(1)) return;
+  notified_watermark_ = t;
+  FlushOffers();  // the samples up to the watermark are the thread's before it may pass them
   {
     std::lock_guard<std::mutex> lock(mu_);
-    if (has_watermark_ && t <= watermark_) return;
     watermark_ = t;
     has_watermark_ = true;
-    if (t - notified_watermark_ < std::chrono::seconds(1)) return;
-    notified_watermark_ = t;
   }
   cv_.notify_one();
 }
 
 void TruthTableBuilder::Offer(const TruthSample& sample) {
-  const std::lock_guard<std::mutex> lock(mu_);
-  while (!offered_.empty() && sample.t - offered_.front().t > kOfferedKeep) offered_.pop_front();
-  offered_.push_back(sample);
+  offer_buffer_.push_back(sample);
+  if (offer_buffer_.size() >= kOfferBatch) FlushOffers();
+}
+
+void TruthTableBuilder::FlushOffers() {
+  if (offer_buffer_.empty()) return;
+  {
+    const std::lock_guard<std::mutex> lock(mu_);
+    for (const TruthSample& sample : offer_buffer_) {
+      while (!offered_.empty() && sample.t - offered_.front().t > kOfferedKeep)
+        offered_.pop_front();
+      offered_.push_back(sample);
+    }
+  }
+  offer_buffer_.clear();
 }
 
 const TruthSample* TruthTableBuilder::FindOffered(Time t) const {
@@ -139,6 +154,7 @@ void TruthTableBuilder::Work() {
 }
 
 TruthTable TruthTableBuilder::Finish() {
+  FlushOffers();
   {
     std::lock_guard<std::mutex> lock(mu_);
     finishing_ = true;

@@ -244,17 +244,19 @@ void VirtualWriteQueue::Add(SerialEndpoint& ep, std::size_t bytes, Time t) {
 
 bool VirtualWriteQueue::Pump(bool all, bool hold_tail) {
   // Held back: the last batch, which may still grow; with a max_skew (the host orders its inputs
-  // itself) every batch until kBatchBytes wait, and then all go: fewer, larger hand-overs.
+  // itself) every batch until kSkewBatchBytes wait, and then all go: fewer, larger hand-overs.
   const bool skew = gate_ && gate_->max_skew() > Duration{0};
+  const std::size_t batch_bytes = skew ? kSkewBatchBytes : kBatchBytes;
+  const std::size_t max_deferred = skew ? std::max(max_deferred_, 4 * batch_bytes) : max_deferred_;
   const bool flush =
-      !hold_tail || all || deferred_ > max_deferred_ || (skew && deferred_ >= kBatchBytes);
+      !hold_tail || all || deferred_ > max_deferred || (skew && deferred_ >= batch_bytes);
   if (skew && flush && !fifo_.empty() &&
       fifo_.back().t_last - fifo_.front().t_first <= gate_->max_skew())
     return PumpPerLink();
   while (!fifo_.empty()) {
     const Batch b = fifo_.front();
-    const bool forced = all || deferred_ > max_deferred_;
-    if (!flush && (skew || fifo_.size() == 1) && b.bytes < kBatchBytes) break;
+    const bool forced = all || deferred_ > max_deferred;
+    if (!flush && (skew || fifo_.size() == 1) && b.bytes < batch_bytes) break;
     if (gate_) {
       if (forced) {
         if (!gate_->BeforeWrite(*b.ep, b.bytes, b.t_first, b.t_last)) return false;

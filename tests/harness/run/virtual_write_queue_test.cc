@@ -5,6 +5,7 @@
 #include <poll.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -35,13 +36,14 @@ struct Reader {
   }
 };
 
-void Queue(SerialEndpoint& ep, VirtualWriteQueue& q, double t_s, const std::string& bytes) {
+void Queue(SerialEndpoint& ep, VirtualWriteQueue& q, double t_s, const std::string& bytes,
+           bool timed = false) {
   SerialMessage m;
   m.t_ready = TimeFromSeconds(t_s);
   m.bytes = bytes;
   m.name = "M";
   ASSERT_TRUE(ep.Queue(m));
-  q.Add(ep, bytes.size());
+  q.Add(ep, bytes.size(), timed ? m.t_ready : Time{});
 }
 
 TEST(VirtualWriteQueueTest, HoldTailHandsARunOfOneLinkOverInOneWriteAndKeepsTheOrderAcrossLinks) {
@@ -93,6 +95,52 @@ TEST(VirtualWriteQueueTest, HoldTailHandsARunOfOneLinkOverInOneWriteAndKeepsTheO
   ASSERT_TRUE(q.Pump(false, true));
   EXPECT_EQ(q.deferred_bytes(), 0u);
   EXPECT_EQ(ri.Drain().size(), big.size());
+  close(ri.fd);
+  close(rg.fd);
+  fs::remove_all(dir);
+}
+
+// A host that orders its inputs by device time (a gate with a max_skew, navd's merge window):
+// what lies within the skew waits until kSkewBatchBytes are queued, then every link's runs go
+// (each link's in one write: each write wakes the kernel's hand-over worker, which preempts the
+// writer).
+TEST(VirtualWriteQueueTest, WithASkewRunsWaitForTheSkewBatchAndGoInOneWritePerLink) {
+  const fs::path dir = fs::temp_directory_path() / ("hil_vwq_skew_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  SerialEndpoint imu("ttyI", (dir / "ttyI").string(), 115200, 1 << 20, (dir / "ttyI.cap").string());
+  SerialEndpoint gps("ttyG", (dir / "ttyG").string(), 115200, 1 << 20, (dir / "ttyG.cap").string());
+  Reader ri{open((dir / "ttyI").c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY), {}};
+  Reader rg{open((dir / "ttyG").c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY), {}};
+  ASSERT_GE(ri.fd, 0);
+  ASSERT_GE(rg.fd, 0);
+  VirtualGate gate({&imu, &gps}, 65536, [](std::size_t, bool) { return true; }, -1,
+                   std::chrono::seconds(1));
+  VirtualWriteQueue q(&gate, 8192);
+  static_assert(VirtualWriteQueue::kSkewBatchBytes > VirtualWriteQueue::kBatchBytes);
+
+  // 100-byte IMU frames at 100 Hz and a 200-byte epoch every 0.1 s, all within the skew: more
+  // than kBatchBytes queued, less than kSkewBatchBytes, and nothing written yet
+  const std::string frame(100, 'i'), epoch(200, 'g');
+  std::size_t queued = 0, imu_bytes = 0, gps_bytes = 0;
+  for (int k = 0; queued + frame.size() + epoch.size() < VirtualWriteQueue::kSkewBatchBytes; ++k) {
+    Queue(imu, q, 0.01 * k, frame, true);
+    imu_bytes += frame.size();
+    if (k % 10 == 9) {
+      Queue(gps, q, 0.01 * k + 0.005, epoch, true);
+      gps_bytes += epoch.size();
+    }
+    queued = imu_bytes + gps_bytes;
+    ASSERT_TRUE(q.Pump(false, true));
+  }
+  EXPECT_GT(queued, VirtualWriteQueue::kBatchBytes);
+  EXPECT_EQ(q.deferred_bytes(), queued);
+  EXPECT_EQ(imu.PendingToHost() + gps.PendingToHost(), 0u);
+  // the frame that fills the batch: both links go
+  Queue(imu, q, 0.9, std::string(VirtualWriteQueue::kSkewBatchBytes - queued, 'j'), true);
+  ASSERT_TRUE(q.Pump(false, true));
+  EXPECT_EQ(q.deferred_bytes(), 0u);
+  EXPECT_EQ(ri.Drain().size(), VirtualWriteQueue::kSkewBatchBytes - gps_bytes);
+  EXPECT_EQ(rg.Drain().size(), gps_bytes);
   close(ri.fd);
   close(rg.fd);
   fs::remove_all(dir);

@@ -49,6 +49,11 @@ class EstimatorProcess {
   bool Running();
   /// Lines received so far (moves them out).
   std::vector<OutputLine> TakeLines();
+  /// Gives lines taken back once they are used: the reader thread, which allocated them, frees
+  /// them (freed on the caller's thread, each line's memory went back to the reader's malloc
+  /// arena under that arena's lock, which the reader held as often as not: seed004 waited for it
+  /// about 900 times).
+  void ReturnLines(std::vector<OutputLine> used);
   /// CLOCK_MONOTONIC time of the last output line (0 if none yet).
   std::int64_t last_output_wall_ns() const { return last_output_wall_ns_.load(); }
   /// Stops the process and every process of its group (also when the estimator itself has already
@@ -70,6 +75,7 @@ class EstimatorProcess {
   std::thread reader_;
   std::mutex mu_;
   std::vector<OutputLine> lines_;
+  std::vector<OutputLine> used_;  // given back by ReturnLines, freed by the reader thread
   std::atomic<std::int64_t> last_output_wall_ns_{0};
   std::atomic<bool> stdout_closed_{false};  // the reader saw end of file
   std::atomic<bool> parse_json_{false};

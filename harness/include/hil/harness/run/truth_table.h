@@ -85,6 +85,10 @@ class TruthTableBuilder {
   void Work();
   /// The offered sample at `t`, if kept (mu_ held).
   const TruthSample* FindOffered(Time t) const;
+  /// Hands the samples offered since the last call to the thread (one lock for many: a lock per
+  /// device event contended with the thread's, and each wait cost the run a CPU on a busy machine).
+  void FlushOffers();
+  static constexpr std::size_t kOfferBatch = 256;
 
   const truth::TruthConfig& config_;
   std::mutex mu_;
@@ -95,7 +99,12 @@ class TruthTableBuilder {
   std::vector<VehicleCommand> commands_;  // closed loop, complete once finishing_
   Time watermark_{};
   bool has_watermark_ = false;
-  Time notified_watermark_{};  // the thread is woken for every second of watermark, not every event
+  // the caller's: the thread is woken (and the watermark passed on) for every second of
+  // watermark, not every event
+  Time notified_watermark_{};
+  Time caller_watermark_{};
+  bool caller_has_watermark_ = false;
+  std::vector<TruthSample> offer_buffer_;  // the caller's: offered, not yet handed over
   bool finishing_ = false;
   Time position_{};  // the latest time the thread has sampled (or taken)
   bool started_ = false;
