@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include <sys/prctl.h>
@@ -73,11 +74,23 @@ VirtualGate::Link* VirtualGate::Find(const SerialEndpoint& ep) {
   return nullptr;
 }
 
+void VirtualGate::Ask(Link& l) {
+  // The kernel's count (FIONREAD) is the line discipline's: at most 4095 bytes, and without the
+  // bytes still in the pty's flip buffers (those beyond what the line discipline holds, or a
+  // write its worker has not handed over yet). Only its 0 is exact (PendingToHost hands over
+  // what is in flight first): any other count is a lower bound, and the bound of what is unread
+  // stays until the host has read everything. (Taken for the count, a backlog of 16 KB looked
+  // like 4 KB: more went in than the pty holds, and the write stalled.)
+  l.seen_unread = l.ep->PendingToHost();
+  if (l.seen_unread == 0) l.unread_bound = 0;
+  l.unread_bound = std::max(l.unread_bound, l.seen_unread);
+}
+
 std::size_t VirtualGate::Refresh(const Link* except, const Link* only, bool ask_all) {
   std::size_t unread = 0;
   for (Link& l : links_) {
     if (&l == except || (only && &l != only) || (l.unread_bound == 0 && !ask_all)) continue;
-    l.unread_bound = l.ep->PendingToHost();
+    Ask(l);
     unread += l.unread_bound;
   }
   return unread;
@@ -89,7 +102,7 @@ bool VirtualGate::Wait(const std::function<bool()>& done, const Link* except, co
     if (done()) return true;
     std::size_t unread = 0;
     for (const Link& l : links_) {
-      if (&l != except && (!only || &l == only)) unread += l.unread_bound;
+      if (&l != except && (!only || &l == only)) unread += l.seen_unread;
     }
     if (!on_wait_(unread, step == 0)) return false;
     if (step < kYieldSteps) {
@@ -106,7 +119,7 @@ bool VirtualGate::OthersReadUpTo(const Link* self, Time t) {
     if (&l == self) continue;
     if (l.runs.empty() || l.runs.front().second > t) continue;
     // ask the kernel how far the host has read, and forget the runs it has read entirely
-    l.unread_bound = l.ep->PendingToHost();
+    Ask(l);
     const std::size_t read = l.written - std::min(l.unread_bound, l.written);
     while (!l.runs.empty() && l.runs.front().first <= read) l.runs.pop_front();
     if (!l.runs.empty() && l.runs.front().second <= t) return false;
@@ -116,6 +129,7 @@ bool VirtualGate::OthersReadUpTo(const Link* self, Time t) {
 
 void VirtualGate::Counted(Link& self, std::size_t bytes, Time t_first) {
   self.unread_bound += bytes;
+  self.seen_unread += bytes;
   if (max_skew_ <= Duration{0}) return;
   self.written += bytes;
   self.runs.emplace_back(self.written, t_first);
@@ -250,9 +264,14 @@ bool VirtualWriteQueue::Pump(bool all, bool hold_tail) {
   const std::size_t max_deferred = skew ? std::max(max_deferred_, 4 * batch_bytes) : max_deferred_;
   const bool flush =
       !hold_tail || all || deferred_ > max_deferred || (skew && deferred_ >= batch_bytes);
-  if (skew && flush && !fifo_.empty() &&
-      fifo_.back().t_last - fifo_.front().t_first <= gate_->max_skew())
-    return PumpPerLink();
+  if (skew && flush) {
+    while (!fifo_.empty()) {
+      const std::optional<bool> wrote = PumpFrontPerLink(all || deferred_ > max_deferred);
+      if (!wrote) return false;
+      if (!*wrote) break;  // the host has not read far enough: the rest waits for the next Pump
+    }
+    return true;
+  }
   while (!fifo_.empty()) {
     const Batch b = fifo_.front();
     const bool forced = all || deferred_ > max_deferred;
@@ -271,11 +290,17 @@ bool VirtualWriteQueue::Pump(bool all, bool hold_tail) {
   return true;
 }
 
-bool VirtualWriteQueue::PumpPerLink() {
-  // everything queued lies within max_skew: the links may be written in any order, each link's
-  // runs in one write (the gate still waits for what the host must have read before)
+std::optional<bool> VirtualWriteQueue::PumpFrontPerLink(bool forced) {
+  // The batches at the front that lie within max_skew: their links may be written in any order,
+  // each link's runs in one write (the gate still waits for what the host must have read before).
+  // Unforced, a link the gate does not let through yet stays queued (at the front: its bytes still
+  // come before its later ones) and the others go: the run does not wait for the host.
+  const Time t0 = fifo_.front().t_first;
+  std::size_t n = 1;
+  while (n < fifo_.size() && fifo_[n].t_last - t0 <= gate_->max_skew()) ++n;
   std::vector<Batch> per_link;
-  for (const Batch& b : fifo_) {
+  for (std::size_t i = 0; i < n; ++i) {
+    const Batch& b = fifo_[i];
     auto it = std::find_if(per_link.begin(), per_link.end(),
                            [&](const Batch& p) { return p.ep == b.ep; });
     if (it == per_link.end()) {
@@ -286,13 +311,21 @@ bool VirtualWriteQueue::PumpPerLink() {
       it->t_last = std::max(it->t_last, b.t_last);
     }
   }
+  std::vector<Batch> left;
   for (const Batch& b : per_link) {
-    if (!gate_->BeforeWrite(*b.ep, b.bytes, b.t_first, b.t_last)) return false;
+    if (forced) {
+      if (!gate_->BeforeWrite(*b.ep, b.bytes, b.t_first, b.t_last)) return std::nullopt;
+    } else if (!gate_->TryWrite(*b.ep, b.bytes, b.t_first, b.t_last)) {
+      left.push_back(b);
+      continue;
+    }
     b.ep->WriteChunks(b.chunks);
+    deferred_ -= b.bytes;
   }
-  fifo_.clear();
-  deferred_ = 0;
-  return true;
+  const bool wrote = left.size() < per_link.size();
+  fifo_.erase(fifo_.begin(), fifo_.begin() + static_cast<std::ptrdiff_t>(n));
+  fifo_.insert(fifo_.begin(), left.begin(), left.end());
+  return wrote;
 }
 
 }  // namespace hil::harness

@@ -146,5 +146,42 @@ TEST(VirtualWriteQueueTest, WithASkewRunsWaitForTheSkewBatchAndGoInOneWritePerLi
   fs::remove_all(dir);
 }
 
+// The kernel counts a pty's unread bytes only up to what its line discipline holds (4095): a
+// backlog beyond that, partly read, looks smaller than it is. The gate's bound of the unread bytes
+// falls only when the kernel says 0 (exact), so the link's backlog never passes its limit: taken
+// for the count, 8000 bytes with 3000 read looked like 1095, and 5000 more went in.
+TEST(VirtualWriteQueueTest, APartlyReadBacklogBeyondTheLineDisciplineStillCountsInFull) {
+  const fs::path dir = fs::temp_directory_path() / ("hil_vwq_big_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  SerialEndpoint imu("ttyI", (dir / "ttyI").string(), 115200, 1 << 20, (dir / "ttyI.cap").string());
+  Reader ri{open((dir / "ttyI").c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY), {}};
+  ASSERT_GE(ri.fd, 0);
+  VirtualGate gate({&imu}, 8192, [](std::size_t, bool) { return true; });
+  VirtualWriteQueue q(&gate, 1 << 20);
+  Queue(imu, q, 0.0, std::string(8000, 'a'));
+  ASSERT_TRUE(q.Pump(false, false));
+  EXPECT_EQ(q.deferred_bytes(), 0u);
+  char buf[3000];
+  for (std::size_t got = 0; got < sizeof buf;) {  // the host reads 3000 bytes (however they come)
+    pollfd p{ri.fd, POLLIN, 0};
+    ASSERT_EQ(poll(&p, 1, 1000), 1);
+    const ssize_t n = read(ri.fd, buf + got, sizeof buf - got);
+    ASSERT_GT(n, 0);
+    got += static_cast<std::size_t>(n);
+  }
+  EXPECT_LT(imu.PendingToHost(), 5000u) << "the kernel's count is a lower bound here";
+  // 5000 unread + 5000 would pass the 8192 limit: they wait
+  Queue(imu, q, 0.1, std::string(5000, 'b'));
+  ASSERT_TRUE(q.Pump(false, false));
+  EXPECT_EQ(q.deferred_bytes(), 5000u);
+  EXPECT_EQ(ri.Drain(), std::string(5000, 'a'));
+  // all read (the kernel's 0 is exact): they go
+  ASSERT_TRUE(q.Pump(false, false));
+  EXPECT_EQ(q.deferred_bytes(), 0u);
+  EXPECT_EQ(ri.Drain(), std::string(5000, 'b'));
+  close(ri.fd);
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace hil::harness

@@ -50,7 +50,9 @@ class PtyPort final : public SerialPort {
   /// Bytes written by the emulator that the host has not read yet. A pty hands written bytes to
   /// the reader's line discipline later, from a kernel work item; when the line discipline is empty
   /// this first waits for that hand-over, so 0 means exactly "the host has read every byte".
-  /// (With bytes already waiting there, bytes still in the hand-over are not counted.)
+  /// Any other count is a lower bound: bytes still in the hand-over are not counted, nor those
+  /// beyond the 4095 the line discipline holds (a 10 000-byte backlog reads 4095; after the host
+  /// reads 3000 of it, 1095).
   std::size_t PendingToHost() const override;
 
   const std::string& path() const override { return symlink_path_; }

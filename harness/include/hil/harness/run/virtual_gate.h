@@ -91,8 +91,9 @@ class VirtualGate {
  private:
   struct Link {
     const SerialEndpoint* ep;
-    std::size_t
-        unread_bound;  // ≥ the bytes unread: last PendingToHost() plus the bytes written since
+    // ≥ the bytes unread: 0 when the kernel last said 0, else what was written since (Ask)
+    std::size_t unread_bound;
+    std::size_t seen_unread = 0;  // ≤ the bytes unread: the kernel's last count (waits' progress)
     // with a max_skew: the bytes written so far, and the runs not known to be read yet (the
     // byte count at their end, the time of their first byte)
     std::size_t written = 0;
@@ -105,6 +106,8 @@ class VirtualGate {
   /// Unread bytes on the links selected (refreshing their bounds); `except` is skipped, and a
   /// link known to be read (bound 0) is not asked again unless `ask_all`.
   std::size_t Refresh(const Link* except, const Link* only, bool ask_all = false);
+  /// Asks the kernel about `l`'s unread bytes (see the bounds in Link).
+  void Ask(Link& l);
   bool Wait(const std::function<bool()>& done, const Link* except, const Link* only);
 
   std::vector<Link> links_;
@@ -163,8 +166,10 @@ class VirtualWriteQueue {
     std::size_t bytes;
     Time t_first, t_last;
   };
-  /// With a max_skew, when all that is queued lies within it: every link's runs in one write.
-  bool PumpPerLink();
+  /// With a max_skew: the batches at the front that lie within it, each link's runs in one
+  /// write; `forced`, waiting for the host, else only the links the gate lets through now.
+  /// Whether any went (nullopt: the gate gave up a wait).
+  std::optional<bool> PumpFrontPerLink(bool forced);
   VirtualGate* gate_;
   std::size_t max_deferred_;
   std::deque<Batch> fifo_;
