@@ -113,8 +113,8 @@ TEST(VirtualWriteQueueTest, WithASkewRunsWaitForTheSkewBatchAndGoInOneWritePerLi
   Reader rg{open((dir / "ttyG").c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY), {}};
   ASSERT_GE(ri.fd, 0);
   ASSERT_GE(rg.fd, 0);
-  VirtualGate gate({&imu, &gps}, 65536, [](std::size_t, bool) { return true; }, -1,
-                   std::chrono::seconds(1));
+  VirtualGate gate(
+      {&imu, &gps}, 65536, [](std::size_t, bool) { return true; }, -1, std::chrono::seconds(1));
   VirtualWriteQueue q(&gate, 8192);
   static_assert(VirtualWriteQueue::kSkewBatchBytes > VirtualWriteQueue::kBatchBytes);
 

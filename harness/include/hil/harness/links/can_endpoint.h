@@ -101,7 +101,7 @@ class CanEndpoint {
   CaptureWriter capture_;
   std::deque<CanFrame> pending_;
   std::deque<Sent> awaiting_echo_;
-  std::vector<CanFrame> inbox_;               // others' frames read, not yet returned by PollBus
+  std::vector<CanFrame> inbox_;  // others' frames read, not yet returned by PollBus
   bool stamp_at_turns_ = false;
   std::vector<link::CanWireFrame> unstamped_;  // others' frames read, awaiting TakeArrivals
   std::deque<std::pair<Time, link::CanWireFrame>> arrivals_;  // stamped, capture not yet written
