@@ -46,15 +46,36 @@ void Queue(SerialEndpoint& ep, VirtualWriteQueue& q, double t_s, const std::stri
   q.Add(ep, bytes.size(), timed ? m.t_ready : Time{});
 }
 
+// Two links in a folder of their own, each read by this process as the host.
+struct Links {
+  fs::path dir;
+  SerialEndpoint imu, gps;
+  Reader ri, rg;
+  explicit Links(const std::string& tag)
+      : dir(Folder(tag)),
+        imu("ttyI", (dir / "ttyI").string(), 115200, 1 << 20, (dir / "ttyI.cap").string()),
+        gps("ttyG", (dir / "ttyG").string(), 115200, 1 << 20, (dir / "ttyG.cap").string()),
+        ri{Open(dir / "ttyI"), {}},
+        rg{Open(dir / "ttyG"), {}} {}
+  ~Links() {
+    close(ri.fd);
+    close(rg.fd);
+    fs::remove_all(dir);
+  }
+  static fs::path Folder(const std::string& tag) {
+    const fs::path d = fs::temp_directory_path() / ("hil_vwq_" + tag + std::to_string(getpid()));
+    fs::create_directories(d);
+    return d;
+  }
+  bool opened() const { return ri.fd >= 0 && rg.fd >= 0; }
+  static int Open(const fs::path& p) { return open(p.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY); }
+};
+
 TEST(VirtualWriteQueueTest, HoldTailHandsARunOfOneLinkOverInOneWriteAndKeepsTheOrderAcrossLinks) {
-  const fs::path dir = fs::temp_directory_path() / ("hil_vwq_" + std::to_string(getpid()));
-  fs::create_directories(dir);
-  SerialEndpoint imu("ttyI", (dir / "ttyI").string(), 115200, 1 << 20, (dir / "ttyI.cap").string());
-  SerialEndpoint gps("ttyG", (dir / "ttyG").string(), 115200, 1 << 20, (dir / "ttyG.cap").string());
-  Reader ri{open((dir / "ttyI").c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY), {}};
-  Reader rg{open((dir / "ttyG").c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY), {}};
-  ASSERT_GE(ri.fd, 0);
-  ASSERT_GE(rg.fd, 0);
+  Links l("order_");
+  SerialEndpoint &imu = l.imu, &gps = l.gps;
+  Reader &ri = l.ri, &rg = l.rg;
+  ASSERT_TRUE(l.opened());
   VirtualGate gate({&imu, &gps}, 4096, [](std::size_t, bool) { return true; });
   VirtualWriteQueue q(&gate, 8192);
 
@@ -95,9 +116,6 @@ TEST(VirtualWriteQueueTest, HoldTailHandsARunOfOneLinkOverInOneWriteAndKeepsTheO
   ASSERT_TRUE(q.Pump(false, true));
   EXPECT_EQ(q.deferred_bytes(), 0u);
   EXPECT_EQ(ri.Drain().size(), big.size());
-  close(ri.fd);
-  close(rg.fd);
-  fs::remove_all(dir);
 }
 
 // A host that orders its inputs by device time (a gate with a max_skew, navd's merge window):
@@ -105,14 +123,10 @@ TEST(VirtualWriteQueueTest, HoldTailHandsARunOfOneLinkOverInOneWriteAndKeepsTheO
 // (each link's in one write: each write wakes the kernel's hand-over worker, which preempts the
 // writer).
 TEST(VirtualWriteQueueTest, WithASkewRunsWaitForTheSkewBatchAndGoInOneWritePerLink) {
-  const fs::path dir = fs::temp_directory_path() / ("hil_vwq_skew_" + std::to_string(getpid()));
-  fs::create_directories(dir);
-  SerialEndpoint imu("ttyI", (dir / "ttyI").string(), 115200, 1 << 20, (dir / "ttyI.cap").string());
-  SerialEndpoint gps("ttyG", (dir / "ttyG").string(), 115200, 1 << 20, (dir / "ttyG.cap").string());
-  Reader ri{open((dir / "ttyI").c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY), {}};
-  Reader rg{open((dir / "ttyG").c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY), {}};
-  ASSERT_GE(ri.fd, 0);
-  ASSERT_GE(rg.fd, 0);
+  Links l("skew_");
+  SerialEndpoint &imu = l.imu, &gps = l.gps;
+  Reader &ri = l.ri, &rg = l.rg;
+  ASSERT_TRUE(l.opened());
   VirtualGate gate(
       {&imu, &gps}, 65536, [](std::size_t, bool) { return true; }, -1, std::chrono::seconds(1));
   VirtualWriteQueue q(&gate, 8192);
@@ -141,9 +155,6 @@ TEST(VirtualWriteQueueTest, WithASkewRunsWaitForTheSkewBatchAndGoInOneWritePerLi
   EXPECT_EQ(q.deferred_bytes(), 0u);
   EXPECT_EQ(ri.Drain().size(), VirtualWriteQueue::kSkewBatchBytes - gps_bytes);
   EXPECT_EQ(rg.Drain().size(), gps_bytes);
-  close(ri.fd);
-  close(rg.fd);
-  fs::remove_all(dir);
 }
 
 // The kernel counts a pty's unread bytes only up to what its line discipline holds (4095): a
@@ -151,11 +162,10 @@ TEST(VirtualWriteQueueTest, WithASkewRunsWaitForTheSkewBatchAndGoInOneWritePerLi
 // falls only when the kernel says 0 (exact), so the link's backlog never passes its limit: taken
 // for the count, 8000 bytes with 3000 read looked like 1095, and 5000 more went in.
 TEST(VirtualWriteQueueTest, APartlyReadBacklogBeyondTheLineDisciplineStillCountsInFull) {
-  const fs::path dir = fs::temp_directory_path() / ("hil_vwq_big_" + std::to_string(getpid()));
-  fs::create_directories(dir);
-  SerialEndpoint imu("ttyI", (dir / "ttyI").string(), 115200, 1 << 20, (dir / "ttyI.cap").string());
-  Reader ri{open((dir / "ttyI").c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY), {}};
-  ASSERT_GE(ri.fd, 0);
+  Links l("big_");
+  SerialEndpoint& imu = l.imu;
+  Reader& ri = l.ri;
+  ASSERT_TRUE(l.opened());
   VirtualGate gate({&imu}, 8192, [](std::size_t, bool) { return true; });
   VirtualWriteQueue q(&gate, 1 << 20);
   Queue(imu, q, 0.0, std::string(8000, 'a'));
@@ -179,8 +189,6 @@ TEST(VirtualWriteQueueTest, APartlyReadBacklogBeyondTheLineDisciplineStillCounts
   ASSERT_TRUE(q.Pump(false, false));
   EXPECT_EQ(q.deferred_bytes(), 0u);
   EXPECT_EQ(ri.Drain(), std::string(5000, 'b'));
-  close(ri.fd);
-  fs::remove_all(dir);
 }
 
 }  // namespace
