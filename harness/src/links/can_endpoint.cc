@@ -169,11 +169,7 @@ std::vector<CanFrame> CanEndpoint::TakeArrivals(Time t_arrival) {
   ReadBus(t_arrival, nullptr, Duration::zero());
   std::vector<CanFrame> out;
   for (const link::CanWireFrame& f : unstamped_) {
-    if (t_arrival <= t_last_capture_) {
-      Capture(CaptureDir::kFrameRx, t_arrival, 0, f);  // the capture is there already: now
-    } else {
-      arrivals_.emplace_back(t_arrival, f);
-    }
+    arrivals_.emplace_back(t_arrival, f);  // turns come in time order: the queue stays sorted
     if (!f.error) out.push_back(link::ToDeviceFrame(f, t_arrival));
   }
   unstamped_.clear();

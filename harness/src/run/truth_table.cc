@@ -63,9 +63,8 @@ void TruthTableBuilder::Ask(const std::vector<Time>& times) {
 }
 
 void TruthTableBuilder::Advance(Time t) {
-  if (caller_has_watermark_ && t <= caller_watermark_) return;
+  if (caller_watermark_ && t <= *caller_watermark_) return;
   caller_watermark_ = t;
-  caller_has_watermark_ = true;
   if (t - notified_watermark_ < std::chrono::seconds(1)) return;
   notified_watermark_ = t;
   FlushOffers();  // the samples up to the watermark are the thread's before it may pass them

@@ -10,6 +10,7 @@
 #include <deque>
 #include <functional>
 #include <mutex>
+#include <optional>
 #include <queue>
 #include <thread>
 #include <vector>
@@ -102,8 +103,7 @@ class TruthTableBuilder {
   // the caller's: the thread is woken (and the watermark passed on) for every second of
   // watermark, not every event
   Time notified_watermark_{};
-  Time caller_watermark_{};
-  bool caller_has_watermark_ = false;
+  std::optional<Time> caller_watermark_;
   std::vector<TruthSample> offer_buffer_;  // the caller's: offered, not yet handed over
   bool finishing_ = false;
   Time position_{};  // the latest time the thread has sampled (or taken)
