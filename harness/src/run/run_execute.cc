@@ -127,11 +127,10 @@ void Execute(RunContext& ctx, RunWatchdog& watchdog) {
   // the truth for the evaluation, sampled on a thread of its own as the run goes (truth_table.h)
   ctx.truth_builder.emplace(scenario.truth);
   ctx.truth_builder->Ask(TruthCsvTimes(scenario));
-  // open loop: the run's own samples serve the times they have (closed loop replays commands)
-  if (!scenario.closed_loop.enabled) {
-    ctx.scheduler->set_truth_tap(
-        [&builder = *ctx.truth_builder](const TruthSample& s) { builder.Offer(s); });
-  }
+  // the run's own samples serve the times they have (closed loop: the times they miss are
+  // sampled after the run, from its commands replayed)
+  ctx.scheduler->set_truth_tap(
+      [&builder = *ctx.truth_builder](const TruthSample& s) { builder.Offer(s); });
   try {
     ctx.scheduler->Run(watchdog, &scenario.truth);
   } catch (const std::exception& e) {
@@ -139,8 +138,10 @@ void Execute(RunContext& ctx, RunWatchdog& watchdog) {
         std::string("the run failed at t = ") + SecondsText(ctx.t_now) + " s: " + e.what();
   }
   if (!ctx.hang && !ctx.Interrupted()) ctx.scheduler->Flush();
-  if (scenario.closed_loop.enabled)
+  if (scenario.closed_loop.enabled) {
     ctx.truth_builder->SetCommands(ctx.scheduler->vehicle_commands());
+    if (ctx.scheduler->late_command_restarts() > 0) ctx.truth_builder->DiscardOffered();
+  }
   for (const auto& ports : ctx.set.endpoints) {
     for (const auto& ep : ports) ep->FlushCapture();
   }

@@ -38,7 +38,7 @@ bool RunWatchdog::KeepGoing(Time t) {
   // an estimator's solutions come in time order, about as late as its input: what lies a second
   // behind both will not be asked for any more (a straggler only costs Finish a pass)
   const std::vector<EstimateRecord>& records = ctx_.collector->records();
-  if (!records.empty() && !ctx_.scenario.closed_loop.enabled) {
+  if (!records.empty()) {
     ctx_.truth_builder->Advance(std::min(records.back().t_validity, t) - std::chrono::seconds(1));
   }
   if (ctx_.Interrupted()) return false;

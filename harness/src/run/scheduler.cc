@@ -230,11 +230,14 @@ bool Scheduler::RunEvents(SchedulerMonitor& monitor, const truth::TruthConfig* t
     TruthSample sample;
     if (ahead_ || integrator) {
       sample = ahead_ ? AheadSample(*t_event) : integrator->Sample(*t_event);
-      if (truth_tap_) truth_tap_(sample);
     } else {
       sample.t = *t_event;
     }
     Serve(*t_event, sample, monitor, out);
+    // closed loop: a command the event gave that acts at its instant (the first, at t = 0)
+    // re-integrates the truth, and the sample taken before it is not the truth's any more
+    if (truth_tap_ && (ahead_ || integrator) && !(integrator && integrator->restart_pending()))
+      truth_tap_(sample);
     if (write_refused_ || !monitor.KeepGoing(*t_event)) return false;
   }
 }

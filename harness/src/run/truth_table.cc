@@ -105,6 +105,7 @@ void TruthTableBuilder::Work() {
   bool replayed = false;
   std::vector<Time> batch;
   std::vector<std::optional<TruthSample>> offered;
+  bool commands_final = false;
   for (;;) {
     batch.clear();
     offered.clear();
@@ -123,6 +124,7 @@ void TruthTableBuilder::Work() {
         position_ = batch.back();
       }
       if (batch.empty() && finishing_) return;
+      commands_final = finishing_;
       for (const Time t : batch) {
         const TruthSample* o = FindOffered(t);
         offered.push_back(o ? std::optional<TruthSample>(*o) : std::nullopt);
@@ -133,6 +135,10 @@ void TruthTableBuilder::Work() {
     for (std::size_t i = 0; i < batch.size(); ++i) {
       const Time t = batch[i];
       if (!done_times_.empty() && done_times_.back() == t) continue;
+      if (!offered[i] && config_.external_commands && !commands_final) {
+        deferred_.push_back(t);  // the commands up to t are not all known yet: Finish replays
+        continue;
+      }
       done_times_.push_back(t);
       if (offered[i]) {
         done_samples_.push_back(*offered[i]);
@@ -162,6 +168,12 @@ TruthTable TruthTableBuilder::Finish() {
   if (worker_.joinable()) worker_.join();
   std::vector<Time> times = std::move(done_times_);
   std::vector<TruthSample> samples = std::move(done_samples_);
+  late_.insert(late_.end(), deferred_.begin(), deferred_.end());
+  if (discard_offered_) {
+    late_.insert(late_.end(), times.begin(), times.end());
+    times.clear();
+    samples.clear();
+  }
   // stragglers (asked behind the thread): one more pass for them, merged in time order
   std::erase_if(late_, [&](Time t) { return std::binary_search(times.begin(), times.end(), t); });
   if (!late_.empty()) {

@@ -555,6 +555,7 @@ void TruthIntegrator::SetCommand(Time t, double speed_mps, double steer_or_yaw_r
   }
 }
 long TruthIntegrator::root_events() const { return impl_->roots; }
+bool TruthIntegrator::restart_pending() const { return impl_->restart_needed; }
 
 TruthSample TruthIntegrator::Sample(Time t) {
   Impl& m = *impl_;

@@ -58,5 +58,83 @@ TEST(TruthTableBuilderTest, WithoutOffersTheThreadIntegratesEveryTime) {
   EXPECT_EQ(builder.integrated(), times.size());
 }
 
+TEST(TruthTableBuilderTest, ClosedLoopCopiesTheRunsSamplesAndReplaysTheCommandsForTheRest) {
+  // GIVEN a closed-loop truth whose steering command changes every 100 ms as a run sets it (the
+  // first command at t = 0, acting from the start), a table asked for the 10 Hz grid and for times
+  // between the run's samples, and the run's 100 Hz samples offered except the one taken at t = 0
+  // before the first command (it re-integrates: restart_pending)
+  truth::TruthConfig config;
+  config.origin = {35.4796096, 50.5979765, 1300};
+  config.vehicle = truth::VehicleParams::Tractor();
+  config.heading_deg = 90;
+  config.external_commands = true;
+  config.command_period_s = 0.01;
+  std::vector<Time> grid, between;
+  for (int k = 0; k <= 100; ++k) grid.push_back(TimeFromNs(k * 100'000'000LL));
+  for (int k = 0; k < 10; ++k) between.push_back(TimeFromNs(k * 1'000'000'000LL + 3'000'000));
+  TruthTableBuilder builder(config);
+  builder.Ask(grid);
+  builder.Ask(between);
+  truth::TruthIntegrator run(config);
+  std::vector<VehicleCommand> commands;
+  std::size_t offered = 0;
+  for (int k = 0; k <= 1000; ++k) {
+    const Time t = TimeFromNs(k * 10'000'000LL);
+    const TruthSample s = run.Sample(t);
+    if (k % 10 == 0) {
+      const Time t_effect = k == 0 ? t : t + std::chrono::milliseconds(10);
+      const double steer_rad = (k / 50) % 2 ? 0.05 : -0.05;
+      commands.push_back({t_effect, 1.0, steer_rad});
+      run.SetCommand(t_effect, 1.0, steer_rad);
+    }
+    if (!run.restart_pending()) {
+      builder.Offer(s);
+      ++offered;
+    }
+    if (k % 50 == 0) builder.Advance(t - std::chrono::seconds(1));
+  }
+  // WHEN the run ends and gives its commands
+  builder.SetCommands(commands);
+  const TruthTable table = builder.Finish();
+  // THEN every time is the replay's bit for bit; the run's samples served the grid but t = 0,
+  // whose sample preceded the first command
+  std::vector<Time> all = grid;
+  all.insert(all.end(), between.begin(), between.end());
+  const TruthTable replay(config, all, commands);
+  for (const Time t : all) {
+    ASSERT_TRUE(table.Has(t));
+    ExpectSameSample(table.At(t), replay.At(t));
+  }
+  EXPECT_EQ(run.late_command_restarts(), 0);
+  EXPECT_EQ(offered, 1000u);
+  EXPECT_EQ(builder.offered_hits(), grid.size() - 1);
+}
+
+TEST(TruthTableBuilderTest, DiscardedOffersAreAllReplayed) {
+  // GIVEN offered samples of a run that did not obey its commands (as if a late command had
+  // re-integrated it after they were taken)
+  truth::TruthConfig config;
+  config.origin = {35.4796096, 50.5979765, 1300};
+  config.heading_deg = 90;
+  config.external_commands = true;
+  std::vector<Time> times;
+  for (int k = 0; k <= 30; ++k) times.push_back(TimeFromNs(k * 100'000'000LL));
+  const std::vector<VehicleCommand> commands{{Time{}, 2.0, 0.0}};
+  TruthTableBuilder builder(config);
+  builder.Ask(times);
+  truth::TruthIntegrator stale(config);
+  stale.SetCommand(Time{}, 1.0, 0.0);
+  for (const Time t : times) builder.Offer(stale.Sample(t));
+  builder.Advance(times.back());
+  // WHEN they are discarded before Finish
+  builder.SetCommands(commands);
+  builder.DiscardOffered();
+  const TruthTable table = builder.Finish();
+  // THEN the table is the replay of the commands, not the stale samples
+  const TruthTable replay(config, times, commands);
+  for (const Time t : times) ExpectSameSample(table.At(t), replay.At(t));
+  EXPECT_NEAR(table.At(times.back()).p_NB_N_m.x(), 6.0, 1e-6);  // 3 s at 2 m/s, east
+}
+
 }  // namespace
 }  // namespace hil::harness

@@ -87,6 +87,11 @@ class Scheduler {
   /// Closed loop: the commands the actuators gave the truth so far, in time order (the
   /// evaluation replays them).
   const std::vector<VehicleCommand>& vehicle_commands() const { return vehicle_commands_; }
+  /// Closed loop: how often the truth was re-integrated from t = 0 for a command that came after
+  /// it had passed the command's instant (TruthIntegrator::late_command_restarts).
+  long late_command_restarts() const {
+    return integrator_ ? integrator_->late_command_restarts() : 0;
+  }
 
   /// Called with every truth sample the devices are given (e.g. TruthTableBuilder::Offer), in
   /// time order.

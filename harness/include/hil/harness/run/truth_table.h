@@ -67,12 +67,18 @@ class TruthTableBuilder {
   void Ask(const std::vector<Time>& times);
   /// No time before `t` will be asked for any more (except stragglers, see the class comment).
   void Advance(Time t);
-  /// Closed loop: the actuators' commands of the whole run, before Finish (the thread samples
-  /// nothing before Finish then: Advance is not called in a closed-loop run).
+  /// Closed loop: the actuators' commands of the whole run, before Finish. Until then the thread
+  /// copies offered samples only; a time none of them has waits for Finish, which replays the
+  /// commands for it.
   void SetCommands(std::vector<VehicleCommand> commands) { commands_ = std::move(commands); }
   /// A sample the run took (times not decreasing from one call to the next), kept for
-  /// kOfferedKeep of emulated time or until the thread has passed it. Not in closed loop.
+  /// kOfferedKeep of emulated time or until the thread has passed it. In closed loop the run's
+  /// samples are the replay's bit for bit as long as no command came after the truth had passed
+  /// its instant (TruthIntegrator::late_command_restarts() is 0).
   void Offer(const TruthSample& sample);
+  /// Closed loop: the run's truth was re-integrated for a late command, so samples it offered
+  /// before may not be the replay's: Finish samples every time from the replay instead.
+  void DiscardOffered() { discard_offered_ = true; }
   /// Samples everything asked for and returns the table.
   TruthTable Finish();
   /// Times sampled so far from offered samples and by the thread's own integrator (the
@@ -95,8 +101,10 @@ class TruthTableBuilder {
   std::mutex mu_;
   std::condition_variable cv_;
   std::priority_queue<Time, std::vector<Time>, std::greater<>>
-      asked_;                             // not yet taken by the thread
-  std::vector<Time> late_;                // asked behind the thread's position
+      asked_;                   // not yet taken by the thread
+  std::vector<Time> late_;      // asked behind the thread's position
+  std::vector<Time> deferred_;  // the thread's: closed loop, no offered sample, commands not final
+  bool discard_offered_ = false;
   std::vector<VehicleCommand> commands_;  // closed loop, complete once finishing_
   Time watermark_{};
   bool has_watermark_ = false;

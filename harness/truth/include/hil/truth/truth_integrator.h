@@ -139,6 +139,10 @@ class TruthIntegrator {
   /// Commands given so far, and re-integrations from t = 0 forced by late commands.
   long commands() const;
   long late_command_restarts() const;
+  /// A command set since the last sample acts at or before that sample's instant (a late one, or
+  /// the first at t = 0): the samples taken so far do not all hold for the commands as they now
+  /// are, and the next Sample re-integrates from t = 0.
+  bool restart_pending() const;
   /// CVODE internal steps taken so far, over all re-initialisations (for benchmarks).
   long steps() const;
   /// Re-initialisations (input discontinuities) so far.
