@@ -22,6 +22,18 @@ constexpr std::int64_t kStdoutEndWaitNs =
 
 }  // namespace
 
+std::string ShellCommandLine(const std::string& command) {
+  const std::size_t first = command.find_first_not_of(" \t");
+  if (first == std::string::npos) return command;
+  const std::size_t end = command.find_first_of(" \t", first);
+  const std::string program = command.substr(first, end - first);
+  // a path to a program (not a builtin, keyword or assignment), then plain words
+  const bool path =
+      program.find('/') != std::string::npos && program.find('=') == std::string::npos;
+  const bool plain = command.find_first_of(";&|<>()$`\\\n*?[]{}~#!\"'") == std::string::npos;
+  return path && plain ? "exec " + command : command;
+}
+
 std::string ExitInfo::Describe() const {
   if (signal != 0)
     return std::string("ended by signal ") + std::to_string(signal) + " (" + strsignal(signal) +
@@ -47,7 +59,7 @@ EstimatorProcess::EstimatorProcess(const std::string& command, const std::string
     dup2(err_fd, STDERR_FILENO);
     const int devnull = open("/dev/null", O_RDONLY);
     if (devnull >= 0) dup2(devnull, STDIN_FILENO);
-    execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    execl("/bin/sh", "sh", "-c", ShellCommandLine(command).c_str(), static_cast<char*>(nullptr));
     _exit(127);
   }
   setpgid(pid_, pid_);

@@ -36,9 +36,15 @@ struct ExitInfo {
   std::string Describe() const;
 };
 
+/// The shell command line that starts `command`: with `exec ` before it when it is one program
+/// run by its path with arguments (no operator, redirection, substitution or glob), so the
+/// program replaces the shell: the estimator is the process hil started, its exit status is its
+/// own, and a host turn has one process fewer to look at. Anything else is left as it is.
+std::string ShellCommandLine(const std::string& command);
+
 class EstimatorProcess {
  public:
-  /// Starts `command` with /bin/sh -c; stderr goes to `stderr_path`.
+  /// Starts `command` with /bin/sh -c (see ShellCommandLine); stderr goes to `stderr_path`.
   /// @throws std::runtime_error if the process cannot be started.
   EstimatorProcess(const std::string& command, const std::string& stderr_path);
   ~EstimatorProcess();
