@@ -215,6 +215,7 @@ bool VirtualGate::WaitHostIdle() {
   if (!host_ || busy_host_) return WaitAllRead();
   const std::int64_t start = MonotonicNs();
   std::int64_t all_read_since = -1;
+  std::int64_t last_scan = start - kHostScanPeriodNs;
   const auto idle = [&] {
     // a link found read with nothing written since stays read: only the others are asked
     if (Refresh(nullptr, nullptr) != 0) {
@@ -222,7 +223,12 @@ bool VirtualGate::WaitHostIdle() {
       return false;
     }
     if (!links_opened_) {
-      links_opened_ = ScanHostLinks().all_held || MonotonicNs() - start > kHostStartLimitNs;
+      // a scan of /proc for the host's descriptors at most every kHostScanPeriodNs: the host
+      // is starting, and needs the CPU more than this wait does
+      const std::int64_t now = MonotonicNs();
+      if (now - last_scan < kHostScanPeriodNs) return false;
+      last_scan = now;
+      links_opened_ = ScanHostLinks().all_held || now - start > kHostStartLimitNs;
       if (!links_opened_) return false;
     }
     // every byte read: the host has been running since; asleep now, it has finished with them

@@ -87,6 +87,8 @@ class VirtualGate {
   /// VM beside) took navd over 2 s, and its first UBX command then came a turn late; below the
   /// silence timeout's default (10 s), which would end the run as a hang.
   static constexpr std::int64_t kHostStartLimitNs = 6'000'000'000;
+  /// How often (wall) that first turn looks for the host's descriptors while it waits.
+  static constexpr std::int64_t kHostScanPeriodNs = 1'000'000;
 
  private:
   struct Link {
