@@ -32,6 +32,11 @@ TEST(ClosedLoopE2eTest, DiffDriveOverTheSerialBaseProtocolPasses) {
   EXPECT_EQ(cl["missing_commands"].get<int>(), 0) << cl.dump(2);
   EXPECT_EQ(cl["watchdog_trips"].get<int>(), 0);
   EXPECT_GT(cl["motor_commands"].get<int>(), 350) << "10 Hz commands from about 5.3 s to 45 s";
+  // guidanced's command on an epoch is read at the turn after the epoch's previous answer, before
+  // the tick: from the first command on, only the ticks on a whole second take a turn of their own
+  const int skipped = cl["answered_ticks_without_turn"].get<int>();
+  EXPECT_GT(skipped, 300) << cl.dump(2);
+  EXPECT_LT(skipped, 360) << "about 9 of every 10 ticks from 6 s to 45 s";
   // the commands are in the base link's capture, as received bytes
   const std::string cap = ReadFile(dir / "r/captures/ttyBASE.cap");
   EXPECT_NE(cap.find("rx "), std::string::npos);
@@ -57,6 +62,8 @@ TEST(ClosedLoopE2eTest, KillingTheControllerStopsTheBaseOnItsWatchdog) {
   EXPECT_GT(coast, 0.95);
   EXPECT_LT(coast, 1.2);
   EXPECT_GE(cl["missing_commands"].get<int>(), 100) << "every tick after the kill (15 s of 10 Hz)";
+  // without a controller no answer is in hand: every tick after the kill takes its turn
+  EXPECT_LT(cl["answered_ticks_without_turn"].get<int>(), 90) << "only from about 6 s to 15 s";
   bool noted = false;
   for (const auto& f : rep["fault_injections"]) {
     if (f["kind"] == "controller_stop") noted = f.dump().find("15") != std::string::npos;

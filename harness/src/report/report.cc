@@ -272,6 +272,7 @@ nlohmann::json ClosedLoopJson(const ClosedLoopReport& c) {
       {"command_bytes_lost", c.command_bytes_lost},
       {"last_command_s", OptionalJson(c.last_command_s)},
       {"watchdog_trips", c.watchdog_trips},
+      {"answered_ticks_without_turn", c.answered_ticks_without_turn},
       {"watchdog_trip_s", OptionalJson(c.watchdog_trip_s)},
       {"distance_after_last_command_m", OptionalJson(c.distance_after_last_command_m)},
       {"distance_after_watchdog_m", OptionalJson(c.distance_after_watchdog_m)},

@@ -261,6 +261,7 @@ void EvaluateClosedLoop(RunContext& ctx, const TruthTable& truth) {
     report.row_following =
         ScoreRowDeviation(*ctx.set.world, TruthTrack(ctx, truth, ctx.t_from), kRowMargin_m);
   c.stopped = std::fabs(c.final_speed_mps) < 0.01;
+  if (ctx.scheduler) c.answered_ticks_without_turn = ctx.scheduler->skipped_control_turns();
   report.closed_loop = c;
 }
 

@@ -13,6 +13,15 @@ void RunWatchdog::OnDeviceEvents(Time t) {
 
 void RunWatchdog::OnHostTurn(Time t) { StopController(t); }
 
+bool RunWatchdog::ActsAtTurn(Time t) {
+  if (!ctx_.controller) return false;
+  for (const Fault& f : ctx_.scenario.faults.faults) {
+    if (f.kind == FaultKind::kControllerStop && f.start <= t && ctx_.controller->Running())
+      return true;
+  }
+  return false;
+}
+
 void RunWatchdog::StopController(Time t) {
   if (!ctx_.controller) return;
   const std::vector<Fault>& faults = ctx_.scenario.faults.faults;

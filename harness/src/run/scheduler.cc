@@ -165,6 +165,11 @@ bool Scheduler::HostStep(Time t_event, SchedulerMonitor& monitor, DeviceOutput& 
   }
   const Time t_turn = NextHostTurn();
   if (t_turn > t_event || t_turn > t_end_) return false;
+  if (ControlTickAnswered(t_turn) && !monitor.ActsAtTurn(t_turn)) {
+    ++skipped_control_turns_;
+    while (next_control_turn_ <= t_turn) next_control_turn_ += control_period_;
+    return true;
+  }
   HostTurn(t_turn);
   if (!write_refused_) monitor.OnHostTurn(t_turn);
   return true;
@@ -257,6 +262,14 @@ Time Scheduler::NextHostTurn() const {
   if (control_period_ > Duration{}) t = std::min(t, next_control_turn_);
   for (const Time a : answer_turns_) t = std::min(t, a);
   return t;
+}
+
+bool Scheduler::ControlTickAnswered(Time t) const {
+  if (control_period_ == Duration{} || next_control_turn_ != t || next_periodic_turn_ <= t)
+    return false;
+  if (std::any_of(answer_turns_.begin(), answer_turns_.end(), [t](Time a) { return a <= t; }))
+    return false;
+  return !arrivals_.empty();
 }
 
 void Scheduler::HostTurn(Time t) {

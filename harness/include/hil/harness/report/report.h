@@ -39,6 +39,8 @@ struct ClosedLoopReport {
   std::uint64_t saturated_commands = 0, invalid_lines = 0, command_bytes_lost = 0;
   std::optional<double> first_missing_s, last_command_s;
   std::uint64_t watchdog_trips = 0;
+  /// Virtual mode: control ticks whose answer was in hand before them (no host turn of their own).
+  std::uint64_t answered_ticks_without_turn = 0;
   std::optional<double> watchdog_trip_s;
   /// Distance the truth vehicle went after the last command arrived, and after the watchdog.
   std::optional<double> distance_after_last_command_m, distance_after_watchdog_m;

@@ -23,6 +23,7 @@ class RunWatchdog final : public SchedulerMonitor {
   /// Closed loop: a `controller_stop` fault kills the controller at the first host turn at or
   /// after its start (the host is idle there: the same point of the run every time).
   void OnHostTurn(Time t) override;
+  bool ActsAtTurn(Time t) override;
   /// VirtualGate::WaitStep: false gives the wait (and the run) up.
   bool OnGateWait(std::size_t unread, bool new_wait);
 

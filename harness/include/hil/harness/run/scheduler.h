@@ -55,6 +55,12 @@ class SchedulerMonitor {
   /// Virtual mode: a host turn at `t` is over (the host was idle and what it wrote is read); the
   /// host is idle now, so what is done to it here is done at a deterministic point of the run.
   virtual void OnHostTurn(Time t) { (void)t; }
+  /// Whether OnHostTurn would act at a turn at `t` (e.g. a controller stop is due): such a turn
+  /// is always taken (see Scheduler::set_control_period).
+  virtual bool ActsAtTurn(Time t) {
+    (void)t;
+    return false;
+  }
 };
 
 class Scheduler {
@@ -79,7 +85,12 @@ class Scheduler {
   static constexpr Duration kHostTurnPeriod = std::chrono::seconds(1);
   /// Closed loop (virtual mode): a host turn also at every control tick (every `period` from
   /// `period` on): the controller has read everything made before the tick and answered before
-  /// emulated time passes it (lockstep); its command reaches the actuator at the turn.
+  /// emulated time passes it (lockstep); its command reaches the actuator at the turn. A tick
+  /// whose answer is already in hand (host bytes read at an earlier turn wait to reach their
+  /// device, at or after the tick: a controller answering a GNSS epoch is read at the turn that
+  /// ends the epoch's last byte, before the tick) makes no turn of its own, unless another turn
+  /// falls on it or the monitor acts at it; what the host writes meanwhile is read at the next
+  /// turn. Every tick's turn is taken or skipped the same way in every run.
   void set_control_period(Duration period) {
     control_period_ = period;
     next_control_turn_ = Time{} + period;
@@ -92,6 +103,9 @@ class Scheduler {
   long late_command_restarts() const {
     return integrator_ ? integrator_->late_command_restarts() : 0;
   }
+  /// Closed loop (virtual mode): control ticks that made no turn of their own, their answer in
+  /// hand (set_control_period).
+  std::uint64_t skipped_control_turns() const { return skipped_control_turns_; }
 
   /// Called with every truth sample the devices are given (e.g. TruthTableBuilder::Offer), in
   /// time order.
@@ -138,6 +152,9 @@ class Scheduler {
   TruthSample AheadSample(Time t);
   /// Virtual mode: the next host turn.
   Time NextHostTurn() const;
+  /// Virtual mode: whether the turn at `t` is a control tick's alone and the host's answer to
+  /// it is already queued (set_control_period).
+  bool ControlTickAnswered(Time t) const;
   /// Whether devices[d] is the closed loop's actuator (the base or the steering ECU).
   bool Actuator(std::size_t d) const;
   /// Virtual mode: queues the actuators' held bytes for writing (held_).
@@ -185,6 +202,7 @@ class Scheduler {
   std::vector<VehicleCommand> vehicle_commands_;
   std::vector<Time> answer_turns_;  // host turns at the ends of devices' answers
   std::deque<HostBytes> arrivals_;  // read at turns, in time order, not yet delivered
+  std::uint64_t skipped_control_turns_ = 0;
   /// Closed loop, virtual mode: the actuators' bytes queued on their links since the last host
   /// turn, written to the controller at the next one.
   struct Held {
