@@ -13,16 +13,37 @@ namespace {
 
 using testing::ExpectSameSample;
 
+// The 10 Hz grid over `seconds` and, in each of its first `seconds` seconds, a time 3 ms after the
+// whole second (between a 100 Hz run's samples); both asked of `builder`.
+struct AskedTimes {
+  std::vector<Time> grid, between;
+};
+AskedTimes AskGridAndBetween(TruthTableBuilder& builder, int seconds) {
+  AskedTimes a;
+  for (int k = 0; k <= 10 * seconds; ++k) a.grid.push_back(TimeFromNs(k * 100'000'000LL));
+  for (int k = 0; k < seconds; ++k)
+    a.between.push_back(TimeFromNs(k * 1'000'000'000LL + 3'000'000));
+  builder.Ask(a.grid);
+  builder.Ask(a.between);
+  return a;
+}
+
+truth::TruthConfig ClosedLoopConfig() {
+  truth::TruthConfig config;
+  config.origin = {35.4796096, 50.5979765, 1300};
+  config.vehicle = truth::VehicleParams::Tractor();
+  config.heading_deg = 90;
+  config.external_commands = true;
+  config.command_period_s = 0.01;
+  return config;
+}
+
 TEST(TruthTableBuilderTest, OfferedSamplesServeTheirTimesAndTheThreadIntegratesTheRest) {
   // GIVEN the rough-ground rectangle, a run that samples its truth at 100 Hz and offers every
   // sample, and a table asked for the 10 Hz grid plus times between the run's samples
   const truth::TruthConfig config = truth::testing::RoughTurningConfig();
-  std::vector<Time> grid, between;
-  for (int k = 0; k <= 200; ++k) grid.push_back(TimeFromNs(k * 100'000'000LL));
-  for (int k = 0; k < 20; ++k) between.push_back(TimeFromNs(k * 1'000'000'000LL + 3'000'000));
   TruthTableBuilder builder(config);
-  builder.Ask(grid);
-  builder.Ask(between);
+  const auto [grid, between] = AskGridAndBetween(builder, 20);
   // WHEN the run goes on, its samples offered and the watermark a second behind
   truth::TruthIntegrator run(config);
   for (int k = 0; k <= 2000; ++k) {
@@ -63,18 +84,9 @@ TEST(TruthTableBuilderTest, ClosedLoopCopiesTheRunsSamplesAndReplaysTheCommandsF
   // first command at t = 0, acting from the start), a table asked for the 10 Hz grid and for times
   // between the run's samples, and the run's 100 Hz samples offered except the one taken at t = 0
   // before the first command (it re-integrates: restart_pending)
-  truth::TruthConfig config;
-  config.origin = {35.4796096, 50.5979765, 1300};
-  config.vehicle = truth::VehicleParams::Tractor();
-  config.heading_deg = 90;
-  config.external_commands = true;
-  config.command_period_s = 0.01;
-  std::vector<Time> grid, between;
-  for (int k = 0; k <= 100; ++k) grid.push_back(TimeFromNs(k * 100'000'000LL));
-  for (int k = 0; k < 10; ++k) between.push_back(TimeFromNs(k * 1'000'000'000LL + 3'000'000));
+  const truth::TruthConfig config = ClosedLoopConfig();
   TruthTableBuilder builder(config);
-  builder.Ask(grid);
-  builder.Ask(between);
+  const auto [grid, between] = AskGridAndBetween(builder, 10);
   truth::TruthIntegrator run(config);
   std::vector<VehicleCommand> commands;
   std::size_t offered = 0;
@@ -113,10 +125,7 @@ TEST(TruthTableBuilderTest, ClosedLoopCopiesTheRunsSamplesAndReplaysTheCommandsF
 TEST(TruthTableBuilderTest, DiscardedOffersAreAllReplayed) {
   // GIVEN offered samples of a run that did not obey its commands (as if a late command had
   // re-integrated it after they were taken)
-  truth::TruthConfig config;
-  config.origin = {35.4796096, 50.5979765, 1300};
-  config.heading_deg = 90;
-  config.external_commands = true;
+  const truth::TruthConfig config = ClosedLoopConfig();
   std::vector<Time> times;
   for (int k = 0; k <= 30; ++k) times.push_back(TimeFromNs(k * 100'000'000LL));
   const std::vector<VehicleCommand> commands{{Time{}, 2.0, 0.0}};
