@@ -21,18 +21,39 @@ EstimateCollector::EstimateCollector(std::unique_ptr<EstimateReader> reader,
   if (process_ && !nav_pty_ && reader_->reads_json()) process_->set_parse_json(true);
 }
 
-void EstimateCollector::Consume(const std::string& line, std::int64_t wall_ns,
-                                const nlohmann::json* parsed) {
+void EstimateCollector::set_json_observer(JsonObserver f) {
+  json_observer_ = std::move(f);
+  // navd's lines scanned on the process's reader thread, where both can take the scan
+  if (process_ && !nav_pty_ && reader_->reads_scanned_lines() && json_observer_.scanned)
+    process_->set_scan_solutions(true);
+}
+
+void EstimateCollector::Keep(const std::string& line) {
   raw_ << line << "\n";  // flushed once per Poll()
   raw_unflushed_ = true;
   ++lines_;
+}
+
+void EstimateCollector::ConsumeScanned(const std::string& line, std::int64_t wall_ns,
+                                       const JsonSolutionLine& scan) {
+  Keep(line);
+  json_observer_.scanned(scan);
+  if (auto r = reader_->ScannedLine(scan, wall_ns))
+    records_.push_back(*r);
+  else
+    ++unparsed_;
+}
+
+void EstimateCollector::Consume(const std::string& line, std::int64_t wall_ns,
+                                const nlohmann::json* parsed) {
+  Keep(line);
   std::optional<EstimateRecord> r;
-  if (json_observer_ && reader_->reads_json()) {
+  if (json_observer_.parsed && reader_->reads_json()) {
     // parsed once for both, on the process's reader thread when it could
     const nlohmann::json j =
         parsed ? nlohmann::json() : nlohmann::json::parse(line, nullptr, false);
     const nlohmann::json& doc = parsed ? *parsed : j;
-    json_observer_(doc);
+    json_observer_.parsed(doc);
     r = reader_->JsonLine(doc, wall_ns);
   } else {
     if (observer_) observer_(line);
@@ -81,6 +102,8 @@ void EstimateCollector::Take() {
       // with a pty output, stdout is only kept (diagnostics), never parsed as solutions
       if (nav_pty_)
         raw_ << "# stdout: " << l.text << "\n", raw_unflushed_ = true;
+      else if (l.scanned)
+        ConsumeScanned(l.text, l.wall_ns, *l.scanned);
       else
         Consume(l.text, l.wall_ns, l.json.get());
     }

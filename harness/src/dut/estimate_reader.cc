@@ -61,6 +61,26 @@ class JsonLinesReader final : public EstimateReader {
     r.wall_rx_ns = wall_ns;
     return r;
   }
+  bool reads_scanned_lines() const override { return true; }
+  std::optional<EstimateRecord> ScannedLine(const JsonSolutionLine& l,
+                                            std::int64_t wall_ns) override {
+    if (!l.lat_deg || !l.lon_deg) return std::nullopt;
+    EstimateRecord r;
+    if (l.tov_unix_ns)
+      r.t_validity = TimeFromNs(*l.tov_unix_ns - start_);
+    else if (l.tov_utc_s)
+      r.t_validity = FromUnixSeconds(*l.tov_utc_s, start_);
+    else
+      return std::nullopt;
+    r.lat_deg = *l.lat_deg;
+    r.lon_deg = *l.lon_deg;
+    if (l.height_m) r.height_m = *l.height_m;
+    r.vel_enu_mps = l.vel_enu_mps;
+    r.pos_std_enu_m = l.pos_std_enu_m;
+    r.yaw_deg = l.yaw_deg;
+    r.wall_rx_ns = wall_ns;
+    return r;
+  }
 
  private:
   std::int64_t start_;

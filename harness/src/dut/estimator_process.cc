@@ -91,9 +91,13 @@ void EstimatorProcess::ReadLoop() {
     got.clear();
     std::size_t pos;
     while ((pos = partial.find('\n')) != std::string::npos) {
-      OutputLine l{partial.substr(0, pos), now, nullptr};
+      OutputLine l{partial.substr(0, pos), now, nullptr, nullptr};
       partial.erase(0, pos + 1);
-      if (parse_json_ && !l.text.empty() && l.text.front() == '{') {
+      if (scan_solutions_ && !l.text.empty() && l.text.front() == '{') {
+        if (auto scan = scanner_.Scan(l.text))
+          l.scanned = std::make_shared<const JsonSolutionLine>(std::move(*scan));
+      }
+      if (!l.scanned && parse_json_ && !l.text.empty() && l.text.front() == '{') {
         l.json =
             std::make_shared<const nlohmann::json>(nlohmann::json::parse(l.text, nullptr, false));
       }

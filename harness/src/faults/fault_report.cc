@@ -28,6 +28,16 @@ void EstimatorHealth::AddJson(const nlohmann::json& j) {
   }
 }
 
+void EstimatorHealth::AddScanned(const JsonSolutionLine& line) {
+  if (!line.health) return;
+  present = true;
+  const std::vector<std::string>& keys = *line.health_keys;
+  for (std::size_t i = 0; i < line.health_values.size(); ++i) {
+    if (line.health_values[i]) counters[keys[i]] = *line.health_values[i];
+  }
+  flags_seen.insert(line.health_flags.begin(), line.health_flags.end());
+}
+
 void ComputeRecoveryTimes(std::vector<FaultInjection>& faults,
                           const std::vector<ErrorSample>& errors, double threshold_m) {
   constexpr double kStayS = 2.0;

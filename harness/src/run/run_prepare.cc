@@ -206,7 +206,9 @@ void Prepare(RunContext& ctx) {
                         ctx.dir + (ctx.nav_pty ? "/estimate.nmea" : "/estimate.jsonl"));
   EstimatorHealth& health = ctx.health;
   ctx.collector->set_line_observer([&health](const std::string& line) { health.AddLine(line); });
-  ctx.collector->set_json_observer([&health](const nlohmann::json& line) { health.AddJson(line); });
+  ctx.collector->set_json_observer(
+      {[&health](const nlohmann::json& line) { health.AddJson(line); },
+       [&health](const JsonSolutionLine& line) { health.AddScanned(line); }});
 }
 
 }  // namespace hil::harness

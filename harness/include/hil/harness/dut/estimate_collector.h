@@ -45,9 +45,12 @@ class EstimateCollector {
   void set_line_observer(std::function<void(const std::string&)> f) { observer_ = std::move(f); }
   /// For a JSON output format, the observer of each line parsed (parsed once for both the reader
   /// and the observer); then set_line_observer's observer is not called for those lines.
-  void set_json_observer(std::function<void(const nlohmann::json&)> f) {
-    json_observer_ = std::move(f);
-  }
+  struct JsonObserver {
+    std::function<void(const nlohmann::json&)> parsed;
+    /// The lines the reader thread scanned instead (JsonSolutionScanner; json_stdout).
+    std::function<void(const JsonSolutionLine&)> scanned;
+  };
+  void set_json_observer(JsonObserver f);
 
  private:
   /// Poll's work, without the flush of the raw lines.
@@ -55,6 +58,10 @@ class EstimateCollector {
   /// `parsed`: the line already parsed as JSON (EstimatorProcess's reader thread), or null.
   void Consume(const std::string& line, std::int64_t wall_ns,
                const nlohmann::json* parsed = nullptr);
+  /// Consume() for a line the reader thread scanned.
+  void ConsumeScanned(const std::string& line, std::int64_t wall_ns, const JsonSolutionLine& scan);
+  /// Lines counted and kept in the raw file.
+  void Keep(const std::string& line);
   std::unique_ptr<EstimateReader> reader_;
   EstimatorProcess* process_;
   link::PtyPort* nav_pty_;
@@ -66,7 +73,7 @@ class EstimateCollector {
   std::size_t lines_ = 0, unparsed_ = 0;
   std::string raw_path_;
   std::function<void(const std::string&)> observer_;
-  std::function<void(const nlohmann::json&)> json_observer_;
+  JsonObserver json_observer_;
   std::function<const std::vector<CanFrame>&()> poll_bus_;
   std::unique_ptr<N2kBusReader> bus_reader_;
   std::size_t bus_seen_ = 0;

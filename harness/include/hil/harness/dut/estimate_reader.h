@@ -19,6 +19,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "hil/harness/dut/json_solution_line.h"
 #include "hil/harness/eval/evaluator.h"
 #include "hil/harness/scenario/estimator_kinds.h"
 
@@ -34,6 +35,13 @@ class EstimateReader {
   /// Line() for a line already parsed (the parse result, possibly discarded).
   virtual std::optional<EstimateRecord> JsonLine(const nlohmann::json& /*line*/,
                                                  std::int64_t /*wall_ns*/) {
+    return std::nullopt;
+  }
+  /// True when a line's JsonSolutionScanner scan holds all Line() reads (json_stdout): then
+  /// ScannedLine() takes the scan and gives what JsonLine() gives for the parsed line.
+  virtual bool reads_scanned_lines() const { return false; }
+  virtual std::optional<EstimateRecord> ScannedLine(const JsonSolutionLine& /*line*/,
+                                                    std::int64_t /*wall_ns*/) {
     return std::nullopt;
   }
   /// False when the solutions come from elsewhere (n2k_socketcan: the bus) and every line is a

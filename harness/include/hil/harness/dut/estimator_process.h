@@ -16,6 +16,8 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "hil/harness/dut/json_solution_line.h"
+
 namespace hil::harness {
 
 /// One line the estimator wrote, with its CLOCK_MONOTONIC arrival time.
@@ -25,6 +27,9 @@ struct OutputLine {
   /// With set_parse_json(true), a line that starts with '{' parsed on the reader thread (possibly
   /// discarded as invalid); otherwise null.
   std::shared_ptr<const nlohmann::json> json;
+  /// With set_scan_solutions(true), a line that starts with '{' scanned on the reader thread
+  /// (json_solution_line.h), when the scanner answers it (json stays null then); otherwise null.
+  std::shared_ptr<const JsonSolutionLine> scanned;
 };
 
 /// How the process ended.
@@ -71,6 +76,9 @@ class EstimatorProcess {
   /// Parse JSON lines on the reader thread (see OutputLine::json): the output of a fast
   /// estimator is then decoded beside the run, not in its thread.
   void set_parse_json(bool on) { parse_json_ = on; }
+  /// Scan JSON lines on the reader thread first (see OutputLine::scanned); the lines the scanner
+  /// does not answer are parsed as set_parse_json says.
+  void set_scan_solutions(bool on) { scan_solutions_ = on; }
 
  private:
   void ReadLoop();
@@ -85,6 +93,8 @@ class EstimatorProcess {
   std::atomic<std::int64_t> last_output_wall_ns_{0};
   std::atomic<bool> stdout_closed_{false};  // the reader saw end of file
   std::atomic<bool> parse_json_{false};
+  std::atomic<bool> scan_solutions_{false};
+  JsonSolutionScanner scanner_;  // the reader thread's
   std::optional<ExitInfo> exit_;
 };
 

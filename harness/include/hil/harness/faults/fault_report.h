@@ -21,6 +21,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "hil/harness/dut/json_solution_line.h"
 #include "hil/harness/eval/evaluator.h"
 #include "hil/harness/faults/fault_record.h"
 
@@ -35,6 +36,8 @@ struct EstimatorHealth {
   void AddLine(const std::string& line);
   /// The same for a line already parsed (a JSON object; anything else is ignored).
   void AddJson(const nlohmann::json& j);
+  /// The same for a line scanned instead (JsonSolutionScanner): the same counters and flags.
+  void AddScanned(const JsonSolutionLine& line);
 };
 
 /// The flags navd knows (navd.flag.<name> is 0 for these when never raised).
