@@ -71,5 +71,45 @@ TEST(ClosedLoopE2eTest, KillingTheControllerStopsTheBaseOnItsWatchdog) {
   EXPECT_TRUE(noted) << rep["fault_injections"].dump(2);
 }
 
+// Lockstep in real time and scaled mode (issue 16): the run is virtual mode's, each action held to
+// its wall-clock time, so a closed loop gives virtual mode's bytes both ways, and its truth and
+// estimate, in every mode (the controller's kill at 15 s included).
+void ExpectSameRun(const std::string& a, const std::string& b) {
+  for (const char* f : {"truth.csv", "estimate.jsonl", "captures/ttyBASE.cap",
+                        "captures/ttyGPS.cap", "captures/ttyIMU.cap"}) {
+    EXPECT_EQ(ReadFile(a + "/" + f), ReadFile(b + "/" + f)) << f << " differs: " << a << " " << b;
+  }
+}
+
+TEST(ClosedLoopE2eTest, RealTimeAndScaledRunsGiveVirtualModesBytes) {
+  TempDir dir("e2e_closed_loop_modes");
+  const std::string kill = Hil() + " run " + Scenario("diff_drive_command_loss.yaml") + " --short";
+  ASSERT_EQ(RunCommand(kill + " --out " + dir / "v").exit_code, 0);
+  const CommandResult scaled = RunCommand(kill + " --mode scaled --speed 12 --out " + dir / "s");
+  ASSERT_EQ(scaled.exit_code, 0) << scaled.out;
+  ExpectSameRun(dir / "v", dir / "s");
+  const auto rep = nlohmann::json::parse(ReadFile(dir / "s/report.json"));
+  EXPECT_EQ(rep["mode"], "scaled");
+  const auto& cl = rep["closed_loop"];
+  EXPECT_EQ(cl["stepping"], "lockstep") << cl.dump(2);
+  const double sim_s = rep["sim_time_s"].get<double>();
+  EXPECT_GT(cl["lockstep_pace"]["actions"].get<double>(), sim_s * 100) << "IMU events at 100 Hz";
+  EXPECT_GT(rep["wall_time_s"].get<double>(), sim_s / 12) << "held to the pace";
+  // real time, 12 s of the serial base (too short for its criteria: exit 1 both ways)
+  const std::string serial = Hil() + " run " + Scenario("diff_drive_serial.yaml") +
+                             " --set duration_s=12 --set evaluation.from_s=6";
+  const int v12 = RunCommand(serial + " --out " + dir / "v12").exit_code;
+  ASSERT_LE(v12, 1);
+  const CommandResult rt = RunCommand(serial + " --mode realtime --out " + dir / "r12");
+  ASSERT_EQ(rt.exit_code, v12) << rt.out;
+  ExpectSameRun(dir / "v12", dir / "r12");
+  // --free-running: bytes at their UART times, commands at their arrival (no lockstep)
+  const CommandResult fr =
+      RunCommand(kill + " --mode scaled --speed 12 --free-running --out " + dir / "f");
+  ASSERT_EQ(fr.exit_code, 0) << fr.out;
+  EXPECT_EQ(nlohmann::json::parse(ReadFile(dir / "f/report.json"))["closed_loop"]["stepping"],
+            "free_running");
+}
+
 }  // namespace
 }  // namespace hil::test

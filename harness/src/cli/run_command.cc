@@ -72,7 +72,7 @@ struct RunArgs {
   std::uint64_t seed = 0;
   double speed = 1.0, silence_timeout_s = 0;
   CLI::Option *seed_opt = nullptr, *est_opt = nullptr, *speed_opt = nullptr, *silence_opt = nullptr;
-  bool no_html = false, short_form = false;
+  bool no_html = false, short_form = false, free_running = false;
   std::vector<std::string> sets;
 };
 
@@ -100,6 +100,10 @@ void Declare(CLI::App& app, RunArgs& a) {
               "seconds without estimator output that count as a hang (overrides the scenario)")
           ->check(CLI::Range(0.1, 3600.0));
   a.cmd->add_flag("--no-html", a.no_html, "skip report.html and the plots");
+  a.cmd->add_flag("--free-running", a.free_running,
+                  "realtime/scaled closed loop without lockstep: bytes leave at their UART times "
+                  "and commands act when they arrive (runs then differ); by default a closed "
+                  "loop runs lockstep, as in virtual mode, each step held to its wall-clock time");
   a.cmd->add_flag("--short", a.short_form,
                   "the scenario's quick form: its `short:` keys replace the top-level ones");
   a.cmd->add_option("--set", a.sets,
@@ -132,6 +136,7 @@ int Execute(const RunArgs& a) {
   opt.guidanced_path = SiblingExecutable("guidanced");
   opt.progress = isatty(STDERR_FILENO);
   opt.html = !a.no_html;
+  opt.free_running = a.free_running;
   try {
     const hil::harness::RunReport report = hil::harness::RunScenario(*scenario, opt);
     PrintSummary(report, opt.out_dir);

@@ -277,7 +277,12 @@ nlohmann::json ClosedLoopJson(const ClosedLoopReport& c) {
       {"distance_after_last_command_m", OptionalJson(c.distance_after_last_command_m)},
       {"distance_after_watchdog_m", OptionalJson(c.distance_after_watchdog_m)},
       {"final_speed_mps", c.final_speed_mps},
-      {"stopped", c.stopped}};
+      {"stopped", c.stopped},
+      {"stepping", c.stepping}};
+  if (c.stepping == "lockstep")
+    j["lockstep_pace"] = {{"actions", c.paced_actions},
+                          {"late_actions", c.late_actions},
+                          {"max_late_ms", c.max_late_ms}};
   AddClosedLoopFaultsJson(c.faults, j);
   return j;
 }

@@ -262,6 +262,13 @@ void EvaluateClosedLoop(RunContext& ctx, const TruthTable& truth) {
         ScoreRowDeviation(*ctx.set.world, TruthTrack(ctx, truth, ctx.t_from), kRowMargin_m);
   c.stopped = std::fabs(c.final_speed_mps) < 0.01;
   if (ctx.scheduler) c.answered_ticks_without_turn = ctx.scheduler->skipped_control_turns();
+  c.stepping = !ctx.pacer ? "virtual" : ctx.lockstep ? "lockstep" : "free_running";
+  if (ctx.lockstep && ctx.scheduler) {
+    const Scheduler::PaceLateness& p = ctx.scheduler->pace_lateness();
+    c.paced_actions = p.actions;
+    c.late_actions = p.late;
+    c.max_late_ms = static_cast<double>(p.max_late_ns) * 1e-6;
+  }
   report.closed_loop = c;
 }
 

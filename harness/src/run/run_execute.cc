@@ -23,11 +23,11 @@ constexpr std::size_t kSkewLinkBacklogBytes = 16384;
 constexpr int kIdleChecks = 3;
 constexpr useconds_t kIdleCheckUs = 1000;
 
-// Virtual mode with an estimator: the host sees its links' bytes in emulated-time order
-// (virtual_gate.h); a wait that sees no byte read for the silence timeout ends the run as a hang
-// or a closed port (RunWatchdog::OnGateWait).
+// Virtual mode (or lockstep) with an estimator: the host sees its links' bytes in emulated-time
+// order (virtual_gate.h); a wait that sees no byte read for the silence timeout ends the run as a
+// hang or a closed port (RunWatchdog::OnGateWait).
 void MakeGate(RunContext& ctx, RunWatchdog& watchdog) {
-  if (ctx.pacer || ctx.options.emulate_only) return;
+  if ((ctx.pacer && !ctx.lockstep) || ctx.options.emulate_only) return;
   std::vector<SerialEndpoint*> read_by_host;
   for (const auto& ports : ctx.set.endpoints) {
     for (const auto& ep : ports) {
@@ -107,7 +107,8 @@ void Execute(RunContext& ctx, RunWatchdog& watchdog) {
   const Scenario& scenario = ctx.scenario;
   ctx.byte_faults.emplace(scenario.faults, ctx.seed, &ctx.fault_recorder);
   ctx.progress.emplace(ctx.options.progress);
-  ctx.scheduler.emplace(ctx.set, ctx.pacer ? &*ctx.pacer : nullptr, ctx.t_end);
+  ctx.scheduler.emplace(ctx.set, ctx.pacer && !ctx.lockstep ? &*ctx.pacer : nullptr, ctx.t_end);
+  if (ctx.lockstep) ctx.scheduler->set_lockstep_pace(&*ctx.pacer);
   ctx.scheduler->set_byte_faults(&*ctx.byte_faults);
   ctx.scheduler->set_recorder(&ctx.fault_recorder);
   ctx.baseline.emplace(ctx.set, &ctx.fault_recorder, ctx.fixes_csv);

@@ -200,6 +200,10 @@ void Prepare(RunContext& ctx) {
   if (opt.mode == RunMode::kRealtime) {
     link::RealtimePacer::RequestRealtimeScheduling();
     ctx.pacer.emplace(opt.speed);
+    // a closed loop runs lockstep (the same bytes as in virtual mode), except where frames carry
+    // no time and must arrive at their own (CheckCanRunMode)
+    ctx.lockstep = scenario.closed_loop.enabled && !opt.emulate_only &&
+                   !scenario.can.imu_to_estimator && !opt.free_running;
   }
   ctx.collector.emplace(MakeEstimateReader(scenario.estimator.output, scenario.start_unix_ns),
                         ctx.estimator ? &*ctx.estimator : nullptr, ctx.nav_pty.get(),

@@ -8,7 +8,7 @@ namespace hil::harness {
 
 void RunWatchdog::OnDeviceEvents(Time t) {
   ctx_.baseline->Record(t);
-  if (ctx_.pacer) StopController(t);  // real time: no host turns
+  if (ctx_.pacer && !ctx_.lockstep) StopController(t);  // free-running real time: no host turns
 }
 
 void RunWatchdog::OnHostTurn(Time t) { StopController(t); }

@@ -151,6 +151,23 @@ bool Scheduler::PaceTowards(Time t_event, DeviceOutput& out) {
   return true;
 }
 
+void Scheduler::PaceLockstep(Time t_event) {
+  Time t = std::min(t_event, t_end_);
+  if (!arrivals_.empty()) t = std::min(t, arrivals_.front().t);
+  if (!bus_arrivals_.empty()) t = std::min(t, bus_arrivals_.front().t);
+  if (gate_) t = std::min(t, NextHostTurn());
+  const std::int64_t due = lockstep_pace_->WallNsOf(t);
+  const std::int64_t now = link::RealtimePacer::MonotonicNs();
+  ++lateness_.actions;
+  if (due > now) {
+    std::this_thread::sleep_until(
+        std::chrono::steady_clock::time_point(std::chrono::nanoseconds(due)));
+    return;
+  }
+  if (now - due > 1'000'000) ++lateness_.late;
+  lateness_.max_late_ns = std::max(lateness_.max_late_ns, now - due);
+}
+
 bool Scheduler::HostStep(Time t_event, SchedulerMonitor& monitor, DeviceOutput& out) {
   // host bytes arriving, then a host turn, due before (or at) this event come first
   if (!arrivals_.empty() && arrivals_.front().t <= std::min(t_event, t_end_)) {
@@ -227,6 +244,7 @@ bool Scheduler::RunEvents(SchedulerMonitor& monitor, const truth::TruthConfig* t
     }
     if (!t_event) return true;
     if (pacer_ && PaceTowards(*t_event, out)) continue;
+    if (lockstep_pace_) PaceLockstep(*t_event);
     if (gate_ && !pacer_ && HostStep(*t_event, monitor, out)) {
       if (write_refused_) return false;
       continue;
@@ -243,6 +261,8 @@ bool Scheduler::RunEvents(SchedulerMonitor& monitor, const truth::TruthConfig* t
     // re-integrates the truth, and the sample taken before it is not the truth's any more
     if (truth_tap_ && (ahead_ || integrator) && !(integrator && integrator->restart_pending()))
       truth_tap_(sample);
+    // lockstep: what the event made leaves now, at its time (virtual mode may hold it back)
+    if (lockstep_pace_ && !write_refused_ && !writes_.Pump(true)) write_refused_ = true;
     if (write_refused_ || !monitor.KeepGoing(*t_event)) return false;
   }
 }

@@ -42,6 +42,13 @@ struct ClosedLoopReport {
   /// Virtual mode: control ticks whose answer was in hand before them (no host turn of their own).
   std::uint64_t answered_ticks_without_turn = 0;
   std::optional<double> watchdog_trip_s;
+  /// Real time or scaled: "lockstep" (paced virtual-mode run: the same bytes as virtual mode) or
+  /// "free_running" (--free-running); "virtual" in virtual mode.
+  std::string stepping = "virtual";
+  /// Lockstep: actions paced, those served over 1 ms after their wall-clock time, the largest
+  /// delay (a slow host holds the run back instead of changing it).
+  std::uint64_t paced_actions = 0, late_actions = 0;
+  double max_late_ms = 0;
   /// Distance the truth vehicle went after the last command arrived, and after the watchdog.
   std::optional<double> distance_after_last_command_m, distance_after_watchdog_m;
   double final_speed_mps = 0;

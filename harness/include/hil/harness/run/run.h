@@ -41,6 +41,9 @@ struct RunOptions {
   std::optional<double>
       silence_timeout_s;  ///< overrides the scenario's estimator.silence_timeout_s
   bool html = true;       ///< write report.html and plots/
+  /// Real time or scaled, closed loop: no lockstep; bytes leave at their UART times and the
+  /// hosts' commands act at their arrival (not deterministic; RunContext::lockstep).
+  bool free_running = false;
 };
 
 /// "virtual", "realtime" or "scaled" (real time with a speed-up other than 1).

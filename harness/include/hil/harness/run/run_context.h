@@ -73,6 +73,9 @@ struct RunContext {
   OwnedFd odometry_fifo;  ///< navd_mode gyro_odometry: the controller forwards the encoders here
   std::int64_t estimator_start_ns = 0;
   std::optional<link::RealtimePacer> pacer;  ///< real time or scaled; none in virtual mode
+  /// Real time or scaled, closed loop: lockstep paced by `pacer` (Scheduler::set_lockstep_pace):
+  /// virtual mode's run, gate and host turns, each action held until its wall-clock time.
+  bool lockstep = false;
   std::optional<EstimateCollector> collector;
   EstimatorHealth health;
 
@@ -80,7 +83,7 @@ struct RunContext {
   std::optional<ByteFaultInjector> byte_faults;
   std::optional<ProgressLine> progress;
   std::optional<Scheduler> scheduler;
-  std::optional<VirtualGate> gate;  ///< virtual mode with an estimator
+  std::optional<VirtualGate> gate;  ///< virtual mode (or lockstep) with an estimator
   std::optional<FixBaseline> baseline;
   std::optional<TruthTableBuilder> truth_builder;
   std::size_t estimates_asked = 0, fixes_asked = 0;  ///< records handed to the truth builder

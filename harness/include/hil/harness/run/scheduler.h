@@ -95,6 +95,20 @@ class Scheduler {
     control_period_ = period;
     next_control_turn_ = Time{} + period;
   }
+  /// Closed loop in real time or scaled mode (lockstep, as PX4's SITL lockstep with a speed
+  /// factor): the scheduler runs as in virtual mode (pacer null, a gate, host turns, the same
+  /// decisions in emulated time, so the same bytes both ways), and each action (an event, a host
+  /// turn, host bytes reaching their device) waits until `pace` says its wall-clock time has
+  /// come; a message is written when it is made, at its first byte's time, not byte by byte.
+  /// A host slower than the pace delays the run (lockstep) instead of changing it.
+  void set_lockstep_pace(const link::RealtimePacer* pace) { lockstep_pace_ = pace; }
+  /// Lockstep: the actions paced, those served more than 1 ms after their wall-clock time, and
+  /// the largest delay (wall-clock ns).
+  struct PaceLateness {
+    std::uint64_t actions = 0, late = 0;
+    std::int64_t max_late_ns = 0;
+  };
+  const PaceLateness& pace_lateness() const { return lateness_; }
   /// Closed loop: the commands the actuators gave the truth so far, in time order (the
   /// evaluation replays them).
   const std::vector<VehicleCommand>& vehicle_commands() const { return vehicle_commands_; }
@@ -138,6 +152,8 @@ class Scheduler {
   /// Real time: sleeps towards `t_event` (computed kEventLeadNs ahead) while reading host bytes.
   /// True when it slept and the next action must be picked again.
   bool PaceTowards(Time t_event, DeviceOutput& out);
+  /// Lockstep: sleeps until the wall-clock time of the next action at or before `t_event`.
+  void PaceLockstep(Time t_event);
   /// Virtual mode: host bytes due, or a host turn due, before (or at) `t_event`. True when it did
   /// one and the next action must be picked again.
   bool HostStep(Time t_event, SchedulerMonitor& monitor, DeviceOutput& out);
@@ -179,6 +195,8 @@ class Scheduler {
 
   DeviceSet& set_;
   const link::RealtimePacer* pacer_;
+  const link::RealtimePacer* lockstep_pace_ = nullptr;
+  PaceLateness lateness_;
   Time t_end_;
   ByteFaultInjector* faults_ = nullptr;
   FaultRecorder* recorder_ = nullptr;
