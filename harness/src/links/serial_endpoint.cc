@@ -138,14 +138,15 @@ void SerialEndpoint::WriteChunks(std::size_t chunks) {
     pending_offset_ = 0;
   }
   port_->Write(write_buffer_);
+  // virtual mode: no wall time, so a scenario and seed give an identical capture
+  const std::int64_t wall = wall_stamps_ ? link::RealtimePacer::MonotonicNs() : 0;
   for (std::size_t i = 0; i < chunks; ++i) {
     const auto& [c, name] = pending_.front();
     CaptureRecord r;
     r.dir = CaptureDir::kTx;
     r.t_emu_ns = ToNs(c.t_first);
     r.byte_period_ns = c.byte_period.count();
-    r.t_wall_ns =
-        0;  // virtual mode: no wall time, so a scenario and seed give an identical capture
+    r.t_wall_ns = wall;
     r.name = name;
     r.bytes = c.bytes;
     capture_.Write(r);
@@ -165,7 +166,7 @@ std::string SerialEndpoint::PollHost(Time t_now, bool virtual_time) {
     CaptureRecord r;
     r.dir = CaptureDir::kRx;
     r.t_emu_ns = ToNs(t_now);
-    r.t_wall_ns = virtual_time ? 0 : link::RealtimePacer::MonotonicNs();
+    r.t_wall_ns = virtual_time && !wall_stamps_ ? 0 : link::RealtimePacer::MonotonicNs();
     r.name = "host";
     r.bytes = rx;
     capture_.Write(r);

@@ -108,7 +108,12 @@ void Execute(RunContext& ctx, RunWatchdog& watchdog) {
   ctx.byte_faults.emplace(scenario.faults, ctx.seed, &ctx.fault_recorder);
   ctx.progress.emplace(ctx.options.progress);
   ctx.scheduler.emplace(ctx.set, ctx.pacer && !ctx.lockstep ? &*ctx.pacer : nullptr, ctx.t_end);
-  if (ctx.lockstep) ctx.scheduler->set_lockstep_pace(&*ctx.pacer);
+  if (ctx.lockstep) {
+    ctx.scheduler->set_lockstep_pace(&*ctx.pacer);
+    for (const auto& ports : ctx.set.endpoints) {
+      for (const auto& ep : ports) ep->set_wall_stamps(true);
+    }
+  }
   ctx.scheduler->set_byte_faults(&*ctx.byte_faults);
   ctx.scheduler->set_recorder(&ctx.fault_recorder);
   ctx.baseline.emplace(ctx.set, &ctx.fault_recorder, ctx.fixes_csv);

@@ -64,6 +64,9 @@ class SerialEndpoint {
   /// With `virtual_time` the capture gives no wall time (0, as for virtual mode's tx bytes).
   std::string PollHost(Time t_now, bool virtual_time = false);
   void set_baud(int baud) { uart_.set_baud(baud); }
+  /// Lockstep (a closed loop in real time or scaled, Scheduler::set_lockstep_pace): the capture's
+  /// records carry the wall-clock time of their write or read, which virtual mode leaves 0.
+  void set_wall_stamps(bool on) { wall_stamps_ = on; }
   std::size_t PendingToHost() const { return port_->PendingToHost(); }
   const link::UartTxQueue& uart() const { return uart_; }
   const std::string& link_name() const { return link_name_; }
@@ -92,6 +95,7 @@ class SerialEndpoint {
   std::uint64_t bytes_dropped_unread_ = 0;
   std::vector<double> schedule_error_us_;
   std::string write_buffer_;  // virtual mode: the waiting chunks joined for one write
+  bool wall_stamps_ = false;
 };
 
 /// The capture file name of a link: `<link>.cap`, with a device path reduced to its base name
