@@ -254,22 +254,19 @@ Member MemberOf(std::string_view key) {
   return kOther;
 }
 
+// The members read as numbers, kTovUtcS to kYawDeg in order.
+constexpr std::array<std::optional<double> JsonSolutionLine::*, kYawDeg - kTovUtcS + 1> kNumbers = {
+    &JsonSolutionLine::tov_utc_s, &JsonSolutionLine::lat_deg, &JsonSolutionLine::lon_deg,
+    &JsonSolutionLine::height_m, &JsonSolutionLine::yaw_deg};
+
 bool ReadMember(Cursor& c, Member m, JsonSolutionLine& out, HealthScan& health) {
+  if (m >= kTovUtcS && m <= kYawDeg)
+    return NumberMember(c, out.*kNumbers[static_cast<std::size_t>(m - kTovUtcS)]);
   switch (m) {
     case kTovUnixNs: {
       std::optional<double> unused;
       return NumberMember(c, unused, &out.tov_unix_ns);
     }
-    case kTovUtcS:
-      return NumberMember(c, out.tov_utc_s);
-    case kLatDeg:
-      return NumberMember(c, out.lat_deg);
-    case kLonDeg:
-      return NumberMember(c, out.lon_deg);
-    case kHeightM:
-      return NumberMember(c, out.height_m);
-    case kYawDeg:
-      return NumberMember(c, out.yaw_deg);
     case kVelEnu:
       return Vec3Member(c, out.vel_enu_mps);
     case kPosStdEnu:
@@ -278,10 +275,9 @@ bool ReadMember(Cursor& c, Member m, JsonSolutionLine& out, HealthScan& health) 
       if (c.Peek() != '{') return c.Skip(1);
       out.health = true;
       return HealthMembers(c, health);
-    case kOther:
-      break;
+    default:
+      return c.Skip(1);
   }
-  return c.Skip(1);
 }
 
 // Whether the object's members are all read (the '{' taken) with no key the readers use twice.
