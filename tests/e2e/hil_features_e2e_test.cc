@@ -101,6 +101,11 @@ TEST(HilRunModesE2eTest, BytesIdenticalInVirtualScaledAndRealtimeModes) {
       nlohmann::json::parse(ReadFile(dir / "v/report.json"))["metrics"]["latency_ms"].is_null());
   // scaled needs a speed
   EXPECT_EQ(RunCommand(Hil() + " run " + s + " --mode scaled --out " + dir / "x").exit_code, 2);
+  // virtual mode has no free-running form
+  const CommandResult fr = RunCommand(Hil() + " run " + s + " --free-running --out " + dir / "y");
+  EXPECT_EQ(fr.exit_code, 2);
+  EXPECT_NE(fr.out.find("--free-running needs --mode realtime or scaled"), std::string::npos)
+      << fr.out;
 }
 
 TEST(HilRunEstimatorE2eTest, HungEstimatorIsDetectedReportedAndStopped) {

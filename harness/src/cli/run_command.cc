@@ -125,6 +125,11 @@ int Execute(const RunArgs& a) {
     std::fprintf(stderr, "hil: --mode scaled needs --speed (see hil run --help)\n");
     return kExitBadInput;
   }
+  if (a.mode == "virtual" && a.free_running) {
+    std::fprintf(stderr,
+                 "hil: --free-running needs --mode realtime or scaled (see hil run --help)\n");
+    return kExitBadInput;
+  }
   hil::harness::RunOptions opt;
   opt.out_dir = a.out.empty() ? "runs/" + scenario->name : a.out;
   if (*a.seed_opt) opt.seed = a.seed;
