@@ -15,11 +15,22 @@ namespace {
 
 constexpr double kKnotToMps = 1852.0 / 3600.0;
 
-Time FromUnixSeconds(double unix_s, std::int64_t start_unix_ns) {
+// A solution's integer time of validity (ns since 1970) to the run's time; none when the
+// difference does not fit an int64 (a garbled line).
+std::optional<Time> FromUnixNs(std::int64_t unix_ns, std::int64_t start_unix_ns) {
+  std::int64_t d = 0;
+  if (__builtin_sub_overflow(unix_ns, start_unix_ns, &d)) return std::nullopt;
+  return TimeFromNs(d);
+}
+
+// Seconds since 1970 to the run's time, read to the microsecond; none beyond ±9e9 s (about
+// 285 years: no solution time, and its nanoseconds would not fit an int64).
+std::optional<Time> FromUnixSeconds(double unix_s, std::int64_t start_unix_ns) {
+  if (!std::isfinite(unix_s) || std::fabs(unix_s) > 9e9) return std::nullopt;
   const auto sec = static_cast<std::int64_t>(std::floor(unix_s));
   const auto ns =
       static_cast<std::int64_t>(std::llround((unix_s - static_cast<double>(sec)) * 1e6)) * 1000;
-  return TimeFromNs(sec * 1000000000LL + ns - start_unix_ns);
+  return FromUnixNs(sec * 1000000000LL + ns, start_unix_ns);
 }
 
 std::optional<Eigen::Vector3d> Vec3(const nlohmann::json& j, const char* key) {
@@ -44,13 +55,14 @@ class JsonLinesReader final : public EstimateReader {
     }
     EstimateRecord r;
     // navd's integer time of validity; other estimators may give only seconds (`tov_utc_s`)
+    std::optional<Time> t;
     if (j.contains("tov_unix_ns") && j["tov_unix_ns"].is_number_integer()) {
-      r.t_validity = TimeFromNs(j["tov_unix_ns"].get<std::int64_t>() - start_);
+      t = FromUnixNs(j["tov_unix_ns"].get<std::int64_t>(), start_);
     } else if (j.contains("tov_utc_s") && j["tov_utc_s"].is_number()) {
-      r.t_validity = FromUnixSeconds(j["tov_utc_s"].get<double>(), start_);
-    } else {
-      return std::nullopt;
+      t = FromUnixSeconds(j["tov_utc_s"].get<double>(), start_);
     }
+    if (!t) return std::nullopt;
+    r.t_validity = *t;
     r.lat_deg = j["lat_deg"].get<double>();
     r.lon_deg = j["lon_deg"].get<double>();
     if (j.contains("height_m") && j["height_m"].is_number())
@@ -66,12 +78,13 @@ class JsonLinesReader final : public EstimateReader {
                                             std::int64_t wall_ns) override {
     if (!l.lat_deg || !l.lon_deg) return std::nullopt;
     EstimateRecord r;
+    std::optional<Time> t;
     if (l.tov_unix_ns)
-      r.t_validity = TimeFromNs(*l.tov_unix_ns - start_);
+      t = FromUnixNs(*l.tov_unix_ns, start_);
     else if (l.tov_utc_s)
-      r.t_validity = FromUnixSeconds(*l.tov_utc_s, start_);
-    else
-      return std::nullopt;
+      t = FromUnixSeconds(*l.tov_utc_s, start_);
+    if (!t) return std::nullopt;
+    r.t_validity = *t;
     r.lat_deg = *l.lat_deg;
     r.lon_deg = *l.lon_deg;
     if (l.height_m) r.height_m = *l.height_m;

@@ -111,7 +111,10 @@ TEST(JsonSolutionLineTest, LeavesToTheDocumentWhatItDoesNotAnswerExactly) {
        R"({"lat_deg":1,"lon_deg":2,"tov_unix_ns":-5,"health":[1],"yaw_deg":null})",
        R"({"lat_deg":1E+2,"lon_deg":2,"tov_unix_ns":5,"health":{"flags":["a",1,["b"],"c"],"flags2":{"x":[]}}})",
        R"({"lat_deg":1,"lon_deg":2,"tov_unix_ns":5,"health":{"flags":7,"n":true}})", "{}",
-       " { \"lat_deg\" : 1 , \"lon_deg\" : 2 , \"tov_unix_ns\" : 5 }\r"}) {
+       " { \"lat_deg\" : 1 , \"lon_deg\" : 2 , \"tov_unix_ns\" : 5 }\r",
+       // times no solution has (their nanoseconds beyond int64): no record either way
+       R"({"lat_deg":1,"lon_deg":2,"tov_utc_s":15577799205.25})",
+       R"({"lat_deg":1,"lon_deg":2,"tov_unix_ns":-9223372036854775807})"}) {
     EXPECT_TRUE(CompareWithDom(scanner, line)) << line;
   }
 }
