@@ -41,6 +41,26 @@ std::optional<Eigen::Vector3d> Vec3(const nlohmann::json& j, const char* key) {
   return Eigen::Vector3d(j[key][0].get<double>(), j[key][1].get<double>(), j[key][2].get<double>());
 }
 
+// The members of a parsed line that the json_stdout reader uses, as the scanner gives them (the
+// health object aside): one reading of the solution whichever way the line was read.
+JsonSolutionLine SolutionFieldsOf(const nlohmann::json& j) {
+  JsonSolutionLine l;
+  const auto number = [&j](const char* key) -> std::optional<double> {
+    if (j.contains(key) && j[key].is_number()) return j[key].get<double>();
+    return std::nullopt;
+  };
+  if (j.contains("tov_unix_ns") && j["tov_unix_ns"].is_number_integer())
+    l.tov_unix_ns = j["tov_unix_ns"].get<std::int64_t>();
+  l.tov_utc_s = number("tov_utc_s");
+  l.lat_deg = number("lat_deg");
+  l.lon_deg = number("lon_deg");
+  l.height_m = number("height_m");
+  l.yaw_deg = number("yaw_deg");
+  l.vel_enu_mps = Vec3(j, "vel_enu_mps");
+  l.pos_std_enu_m = Vec3(j, "pos_std_enu_m");
+  return l;
+}
+
 class JsonLinesReader final : public EstimateReader {
  public:
   explicit JsonLinesReader(std::int64_t start) : start_(start) {}
@@ -50,34 +70,14 @@ class JsonLinesReader final : public EstimateReader {
   bool reads_json() const override { return true; }
   std::optional<EstimateRecord> JsonLine(const nlohmann::json& j, std::int64_t wall_ns) override {
     if (j.is_discarded() || !j.is_object()) return std::nullopt;
-    for (const char* k : {"lat_deg", "lon_deg"}) {
-      if (!j.contains(k) || !j[k].is_number()) return std::nullopt;
-    }
-    EstimateRecord r;
-    // navd's integer time of validity; other estimators may give only seconds (`tov_utc_s`)
-    std::optional<Time> t;
-    if (j.contains("tov_unix_ns") && j["tov_unix_ns"].is_number_integer()) {
-      t = FromUnixNs(j["tov_unix_ns"].get<std::int64_t>(), start_);
-    } else if (j.contains("tov_utc_s") && j["tov_utc_s"].is_number()) {
-      t = FromUnixSeconds(j["tov_utc_s"].get<double>(), start_);
-    }
-    if (!t) return std::nullopt;
-    r.t_validity = *t;
-    r.lat_deg = j["lat_deg"].get<double>();
-    r.lon_deg = j["lon_deg"].get<double>();
-    if (j.contains("height_m") && j["height_m"].is_number())
-      r.height_m = j["height_m"].get<double>();
-    r.vel_enu_mps = Vec3(j, "vel_enu_mps");
-    r.pos_std_enu_m = Vec3(j, "pos_std_enu_m");
-    if (j.contains("yaw_deg") && j["yaw_deg"].is_number()) r.yaw_deg = j["yaw_deg"].get<double>();
-    r.wall_rx_ns = wall_ns;
-    return r;
+    return ScannedLine(SolutionFieldsOf(j), wall_ns);
   }
   bool reads_scanned_lines() const override { return true; }
   std::optional<EstimateRecord> ScannedLine(const JsonSolutionLine& l,
                                             std::int64_t wall_ns) override {
     if (!l.lat_deg || !l.lon_deg) return std::nullopt;
     EstimateRecord r;
+    // navd's integer time of validity; other estimators may give only seconds (`tov_utc_s`)
     std::optional<Time> t;
     if (l.tov_unix_ns)
       t = FromUnixNs(*l.tov_unix_ns, start_);
