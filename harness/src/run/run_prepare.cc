@@ -34,9 +34,13 @@ std::set<std::string> HostLinks(const Scenario& s, const std::string& raw_comman
   std::set<std::string> used;
   for (const auto& [name, path] : set.links) {
     if (raw_command.find("{" + name + "}") != std::string::npos) used.insert(name);
-    // paper 001: the controller reads the rangefinders (and the base's replies) in the lockstep
-    if (s.estimator.navd_mode == NavdMode::kGyroOdometry &&
-        s.closed_loop.controller.find("{" + name + "}") != std::string::npos)
+    // a closed loop's controller reads its links in the lockstep too: the actuators' replies and
+    // status (released at host turns) are read before the next sensor bytes reach the estimator,
+    // so which of them the controller has seen when a solution comes does not depend on the
+    // machine (paper 001's rangefinders and base; the ISOBUS steering ECU's status on ttyCAN,
+    // whose exit and reset request, read after the solution in some loaded runs, sent
+    // "not intended to steer" one command late)
+    if (s.closed_loop.enabled && s.closed_loop.controller.find("{" + name + "}") != std::string::npos)
       used.insert(name);
   }
   if (raw_command.find("{navd}") != std::string::npos && s.estimator.navd_mode == NavdMode::kUwb) {
