@@ -121,7 +121,10 @@ TEST(VirtualDeterminismE2eTest, TwoLinksGiveByteIdenticalSolutionsUnderLoad) {
 // ACK of the one before has arrived; before host turns (scheduler.h) the commands arrived whenever
 // the run happened to look, and runs ended with anything from 0 to 95 of 120 solutions. Ten runs,
 // every second one beside a busy process, the last with a navd that starts 3 s late: all 120
-// solutions, and the same bytes both ways.
+// solutions, and the same bytes both ways. (The late navd's run once ended with 44: the first
+// turn's look at the host's open files saw the shell's forked copy of hil, not yet exec'd,
+// holding the ptys, took the links for opened, and never waited for navd; SpawnShell now returns
+// after the exec.)
 TEST(VirtualDeterminismE2eTest, UbxConfigurationSessionIsTheSameInEveryRun) {
   TempDir dir("e2e_virtual_ubx_configure");
   const std::string s = SourceDir() + "/vectors/scenarios/default_ubx_configure.yaml";
@@ -224,7 +227,9 @@ TEST(VirtualDeterminismE2eTest, IsobusClosedLoopRunsGiveTheSameBytes) {
 // ECU's status frames guidanced had read when a solution came used to depend on the machine
 // (they were written when made): the reset went out one command early or late in about one run
 // in three beside busy processes, and the truth parted. The actuators' bytes now reach the
-// controller at host turns. Four runs, every second one beside a busy process: the same bytes.
+// controller at host turns, on a link of the gate (read before the next sensor bytes reach navd:
+// without that, one run in six beside three busy processes still sent the reset a command late).
+// Four runs, every second one beside a busy process: the same bytes.
 TEST(VirtualDeterminismE2eTest, IsobusCommandLossRunsGiveTheSameBytes) {
   TempDir dir("e2e_virtual_isobus_command_loss");
   const std::string s =

@@ -10,6 +10,8 @@
 
 #include <sys/wait.h>
 
+#include "hil/harness/dut/shell_spawn.h"
+
 namespace hil::harness {
 
 ControllerProcess::ControllerProcess(const std::string& command, int pgid,
@@ -17,21 +19,12 @@ ControllerProcess::ControllerProcess(const std::string& command, int pgid,
   const int log_fd = open(log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (log_fd < 0)
     throw std::runtime_error("cannot write " + log_path + ": " + std::strerror(errno));
-  pid_ = fork();
-  if (pid_ < 0) {
+  try {
+    pid_ = SpawnShell("exec " + command, {pgid, log_fd, log_fd});
+  } catch (...) {
     close(log_fd);
-    throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
+    throw;
   }
-  if (pid_ == 0) {
-    setpgid(0, pgid);
-    dup2(log_fd, STDOUT_FILENO);
-    dup2(log_fd, STDERR_FILENO);
-    const int devnull = open("/dev/null", O_RDONLY);
-    if (devnull >= 0) dup2(devnull, STDIN_FILENO);
-    execl("/bin/sh", "sh", "-c", ("exec " + command).c_str(), static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  setpgid(pid_, pgid);
   close(log_fd);
 }
 

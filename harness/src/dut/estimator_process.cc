@@ -13,6 +13,7 @@
 
 #include "hil/firmware_emu/link/realtime_pacer.h"
 #include "hil/harness/dut/process_group.h"
+#include "hil/harness/dut/shell_spawn.h"
 
 namespace hil::harness {
 namespace {
@@ -51,18 +52,15 @@ EstimatorProcess::EstimatorProcess(const std::string& command, const std::string
     close(fds[1]);
     throw std::runtime_error("cannot write " + stderr_path + ": " + std::strerror(errno));
   }
-  pid_ = fork();
-  if (pid_ < 0) throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
-  if (pid_ == 0) {
-    setpgid(0, 0);  // own process group, so Stop() reaches the shell's children too
-    dup2(fds[1], STDOUT_FILENO);
-    dup2(err_fd, STDERR_FILENO);
-    const int devnull = open("/dev/null", O_RDONLY);
-    if (devnull >= 0) dup2(devnull, STDIN_FILENO);
-    execl("/bin/sh", "sh", "-c", ShellCommandLine(command).c_str(), static_cast<char*>(nullptr));
-    _exit(127);
+  try {
+    // its own process group, so Stop() reaches the shell's children too
+    pid_ = SpawnShell(ShellCommandLine(command), {0, fds[1], err_fd});
+  } catch (...) {
+    close(fds[0]);
+    close(fds[1]);
+    close(err_fd);
+    throw;
   }
-  setpgid(pid_, pid_);
   close(fds[1]);
   close(err_fd);
   stdout_fd_ = fds[0];

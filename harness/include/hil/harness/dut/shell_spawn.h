@@ -1,0 +1,27 @@
+#pragma once
+/// @file
+/// Starting a host process (the estimator, the controller) as `/bin/sh -c LINE` in a process
+/// group, returning only once the child runs the shell.
+
+#include <string>
+
+#include <sys/types.h>
+
+namespace hil::harness {
+
+/// Where a spawned shell's output goes, and which process group it joins.
+struct SpawnTarget {
+  pid_t pgid = 0;      ///< the group to join; 0: a new group led by the child
+  int stdout_fd = -1;  ///< becomes the child's stdout (-1: /dev/null)
+  int stderr_fd = -1;  ///< becomes the child's stderr (-1: /dev/null)
+};
+
+/// Forks, puts the child in `target.pgid`, gives it stdin from /dev/null and the target's stdout
+/// and stderr, and execs `/bin/sh -c shell_line`. Returns the child's pid once the exec has
+/// happened: until then the child is a copy of hil holding every descriptor hil holds (the ptys'
+/// slaves too), and a look at the group's open files, as the first host turn takes, would count
+/// hil's links as opened by the host (a navd started late was then never waited for). Throws
+/// std::runtime_error when the fork or the exec fails (the child is reaped).
+pid_t SpawnShell(const std::string& shell_line, const SpawnTarget& target);
+
+}  // namespace hil::harness

@@ -1,0 +1,58 @@
+#include "hil/harness/dut/shell_spawn.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+
+#include <sys/wait.h>
+
+namespace hil::harness {
+namespace {
+
+// In the child, between fork and exec: async-signal-safe calls only. Sends errno on `report_fd`
+// (closed by a successful exec) when the exec fails.
+[[noreturn]] void ExecShell(const char* line, const SpawnTarget& t, int report_fd) {
+  setpgid(0, t.pgid);
+  const int devnull = open("/dev/null", O_RDWR);
+  if (devnull >= 0) dup2(devnull, STDIN_FILENO);
+  dup2(t.stdout_fd >= 0 ? t.stdout_fd : devnull, STDOUT_FILENO);
+  dup2(t.stderr_fd >= 0 ? t.stderr_fd : devnull, STDERR_FILENO);
+  if (devnull > STDERR_FILENO) close(devnull);
+  execl("/bin/sh", "sh", "-c", line, static_cast<char*>(nullptr));
+  const int err = errno;
+  [[maybe_unused]] const ssize_t n = write(report_fd, &err, sizeof err);
+  _exit(127);
+}
+
+}  // namespace
+
+pid_t SpawnShell(const std::string& shell_line, const SpawnTarget& target) {
+  int report[2];
+  if (pipe2(report, O_CLOEXEC) != 0)
+    throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
+  const pid_t pid = fork();
+  if (pid < 0) {
+    const int err = errno;
+    close(report[0]);
+    close(report[1]);
+    throw std::runtime_error(std::string("fork: ") + std::strerror(err));
+  }
+  if (pid == 0) ExecShell(shell_line.c_str(), target, report[1]);
+  setpgid(pid, target.pgid == 0 ? pid : target.pgid);  // either side may run first
+  close(report[1]);
+  // the exec closes the pipe's write end (end of file); a failed exec sends its errno first
+  int err = 0;
+  ssize_t n;
+  while ((n = read(report[0], &err, sizeof err)) < 0 && errno == EINTR) {
+  }
+  close(report[0]);
+  if (n <= 0) return pid;
+  while (waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {
+  }
+  throw std::runtime_error(std::string("cannot run /bin/sh: ") + std::strerror(err));
+}
+
+}  // namespace hil::harness
