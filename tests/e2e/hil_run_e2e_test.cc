@@ -54,6 +54,29 @@ TEST(HilRunE2eTest, SameSeedSameBytes) {
   EXPECT_NE(ReadFile(dir / "a/captures/ttyGPS.cap"), ReadFile(dir / "c/captures/ttyGPS.cap"));
 }
 
+// The run's processes get the nice value asked for (hil's default −10 where the kernel grants
+// it); the estimator inherits it, and report.json says what was asked and given. `--nice 0`
+// leaves the priority as it was.
+TEST(HilRunE2eTest, TheRunAndItsEstimatorGetTheNiceValueAskedFor) {
+  TempDir dir("e2e_nice");
+  const std::string est =
+      " --estimator 'nice > {run_dir}/estimator_nice.txt; exec {navd} --config "
+      "{run_dir}/navd.conf'";
+  for (const int nice : {3, 0}) {
+    const std::string out = dir / ("n" + std::to_string(nice));
+    const CommandResult r = RunCommand("nice -n 1 " + BinDir() + "/hil run --nice " +
+                                       std::to_string(nice) + est + " --no-html --out " + out);
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    const int expected = nice == 0 ? 1 : nice;  // 0: the nice 1 it was started with
+    EXPECT_EQ(std::stoi(ReadFile(out + "/estimator_nice.txt")), expected) << "--nice " << nice;
+    const auto report = nlohmann::json::parse(ReadFile(out + "/report.json"));
+    EXPECT_EQ(report["priority"]["nice_requested"].get<int>(), nice);
+    EXPECT_EQ(report["priority"]["nice"].get<int>(), expected);
+    EXPECT_FALSE(report["priority"].contains("refused")) << report["priority"].dump();
+  }
+  EXPECT_NE(RunCommand(BinDir() + "/hil run --nice 20 --out " + dir / "bad").exit_code, 0);
+}
+
 TEST(HilRunE2eTest, FailingCriterionExitsOne) {
   TempDir dir("e2e_fail");
   WriteFile(dir / "strict.yaml",

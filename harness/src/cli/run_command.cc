@@ -71,6 +71,7 @@ struct RunArgs {
   std::string scenario, out, mode = "virtual", estimator;
   std::uint64_t seed = 0;
   double speed = 1.0, silence_timeout_s = 0;
+  int nice = harness::kDefaultRunNice;
   CLI::Option *seed_opt = nullptr, *est_opt = nullptr, *speed_opt = nullptr, *silence_opt = nullptr;
   bool no_html = false, short_form = false, free_running = false;
   std::vector<std::string> sets;
@@ -104,6 +105,12 @@ void Declare(CLI::App& app, RunArgs& a) {
                   "realtime/scaled closed loop without lockstep: bytes leave at their UART times "
                   "and commands act when they arrive (runs then differ); by default a closed "
                   "loop runs lockstep, as in virtual mode, each step held to its wall-clock time");
+  a.cmd
+      ->add_option("--nice", a.nice,
+                   "nice value of hil and the processes it starts (every wake-up of a hand-over "
+                   "gets the CPU at once on a busy machine); 0 leaves it, a refusal is reported")
+      ->capture_default_str()
+      ->check(CLI::Range(-20, 19));
   a.cmd->add_flag("--short", a.short_form,
                   "the scenario's quick form: its `short:` keys replace the top-level ones");
   a.cmd->add_option("--set", a.sets,
@@ -142,6 +149,7 @@ int Execute(const RunArgs& a) {
   opt.progress = isatty(STDERR_FILENO);
   opt.html = !a.no_html;
   opt.free_running = a.free_running;
+  opt.nice = a.nice;
   try {
     const hil::harness::RunReport report = hil::harness::RunScenario(*scenario, opt);
     PrintSummary(report, opt.out_dir);

@@ -347,6 +347,8 @@ void WriteReportJson(const RunReport& r, const std::string& path) {
                         {"bytes_corrupted", r.fault_bytes_corrupted}};
   j["wall_time_s"] = r.wall_time_s;
   j["sim_time_s"] = r.sim_time_s;
+  j["priority"] = {{"nice_requested", r.nice_requested}, {"nice", r.nice}};
+  if (!r.nice_refused.empty()) j["priority"]["refused"] = r.nice_refused;
   j["links"] = {{"gnss_bytes", r.gnss_bytes}, {"gnss_messages_dropped", r.gnss_messages_dropped}};
   if (r.can) j["can"] = CanBusJson(*r.can);
   if (r.tracking) {

@@ -1,6 +1,7 @@
 #include "hil/harness/run/run.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "hil/harness/run/run_context.h"
 #include "hil/harness/run/run_guard.h"
@@ -34,6 +35,16 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& options) {
   const InterruptGuard interrupt_guard;
   RunContext ctx(scenario, options);
   ClearWriteFailures();
+  // before the run's threads and hosts start: they inherit it
+  const RunPriority priority = SetProcessNice(options.nice);
+  ctx.report.nice_requested = priority.requested;
+  ctx.report.nice = priority.nice;
+  ctx.report.nice_refused = priority.refused;
+  if (!priority.refused.empty())
+    std::fprintf(stderr,
+                 "hil: nice %d not granted (%s; it needs CAP_SYS_NICE or RLIMIT_NICE): the run "
+                 "goes on at nice %d (--nice 0 asks for nothing)\n",
+                 options.nice, priority.refused.c_str(), priority.nice);
   Prepare(ctx);
   RunWatchdog watchdog(ctx);
   Execute(ctx, watchdog);

@@ -76,6 +76,8 @@ struct RunReport {
   std::string controller_command;  ///< closed loop: the controller's command (substituted)
   int estimator_pid = 0;           ///< process (and process group) id of the estimator, 0 when none
   double wall_time_s = 0, sim_time_s = 0, speed = 1.0;
+  int nice_requested = 0, nice = 0;  ///< the run's processes' nice value (run_priority.h)
+  std::string nice_refused;          ///< why the nice value asked for was not granted
   std::uint64_t gnss_bytes = 0, gnss_messages_dropped = 0;
   std::uint64_t fault_messages_dropped = 0, fault_bytes_corrupted = 0;
   std::vector<std::pair<std::string, std::string>>

@@ -22,6 +22,7 @@
 #include <string>
 
 #include "hil/harness/report/report.h"
+#include "hil/harness/run/run_priority.h"
 #include "hil/harness/scenario/scenario.h"
 
 namespace hil::harness {
@@ -44,6 +45,8 @@ struct RunOptions {
   /// Real time or scaled, closed loop: no lockstep; bytes leave at their UART times and the
   /// hosts' commands act at their arrival (not deterministic; RunContext::lockstep).
   bool free_running = false;
+  /// Nice value of hil and the hosts it starts (run_priority.h); 0 leaves it as it is.
+  int nice = kDefaultRunNice;
 };
 
 /// "virtual", "realtime" or "scaled" (real time with a speed-up other than 1).
