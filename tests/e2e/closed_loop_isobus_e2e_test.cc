@@ -75,6 +75,35 @@ TEST(ClosedLoopIsobusE2eTest, ControllerKillDisengagesTheEcuByItsWatchdog) {
   EXPECT_EQ(ecu["watchdog_trips"].get<int>(), 1);
 }
 
+// A controller that ends on its own (here: it opens the SLCAN adapter, reads for 0.3 s of wall
+// time and exits) leaves its link unread. The run goes on to its end: the gate stops waiting for
+// that link, the report says how the controller ended and that commands went missing, and the
+// estimator is not taken for hung (before, the wait for ttyCAN's status frames to be read held
+// the run until the silence timeout and failed it as "the estimator hung").
+TEST(ClosedLoopIsobusE2eTest, AControllerThatEndsOnItsOwnDoesNotHoldTheRun) {
+  TempDir dir("e2e_closed_loop_isobus_ends");
+  const std::string controller =
+      R"(sh -c "printf \"S5\\rO\\r\" > {ttyCAN}; timeout 0.3 cat {ttyCAN} > /dev/null")";
+  const CommandResult r = RunCommand(
+      BinDir() + "/hil run " + SourceDir() +
+      "/vectors/scenarios/closed_loop/tractor_autosteer_slcan.yaml --short --no-html --out " +
+      dir / "r" + " --set 'closed_loop.controller=" + controller + "'");
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  const auto rep = nlohmann::json::parse(ReadFile(dir / "r/report.json"));
+  const auto& cl = rep["closed_loop"];
+  EXPECT_EQ(cl["controller_exit"], "exited with code 124") << cl.dump(2);
+  EXPECT_GT(cl["missing_commands"].get<int>(), 300) << cl.dump(2);
+  for (const auto& p : rep["problems"]) {
+    EXPECT_EQ(p.get<std::string>().find("hung"), std::string::npos) << p;
+  }
+  EXPECT_FALSE(rep.contains("incomplete_reason")) << rep["incomplete_reason"];
+  // the ECU's status went on to the end: its last record is from the run's last second
+  const std::string cap = ReadFile(dir / "r/captures/ttyCAN.cap");
+  const std::size_t last = cap.rfind("\ntx ");
+  ASSERT_NE(last, std::string::npos);
+  EXPECT_GT(std::stod(cap.substr(last + 4, cap.find(' ', last + 4) - last - 4)), 39e9);
+}
+
 // guidanced's frames cut for 1 s from 15 s: the ECU counts the 10 lost frames, trips its watchdog,
 // and re-engages on the first command after the cut; the fault's record counts what it cut.
 TEST(ClosedLoopIsobusE2eTest, CommandLinkLossTripsAndReengages) {

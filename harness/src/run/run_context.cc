@@ -60,6 +60,23 @@ std::int64_t RunContext::SilentForNs() const {
   return NowNs() - std::max(collector->last_output_wall_ns(), estimator_start_ns);
 }
 
+bool RunContext::HostReads(const SerialEndpoint& ep) const {
+  const std::string& name = ep.link_name();
+  if (controller_gone && controller_links.count(name)) return false;
+  return host_links.empty() || host_links.count(name) > 0;
+}
+
+void RunContext::ControllerGone() {
+  if (controller_gone) return;
+  controller_gone = true;
+  if (!gate) return;
+  for (const auto& ports : set.endpoints) {
+    for (const auto& ep : ports) {
+      if (controller_links.count(ep->link_name())) gate->StopReading(*ep);
+    }
+  }
+}
+
 void RunContext::AskTruth() {
   const std::vector<EstimateRecord>& est = collector->records();
   const std::vector<EstimateRecord>& fixes = baseline->fixes();

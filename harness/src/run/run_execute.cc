@@ -31,8 +31,7 @@ void MakeGate(RunContext& ctx, RunWatchdog& watchdog) {
   std::vector<SerialEndpoint*> read_by_host;
   for (const auto& ports : ctx.set.endpoints) {
     for (const auto& ep : ports) {
-      if (ctx.host_links.empty() || ctx.host_links.count(ep->link_name()))
-        read_by_host.push_back(ep.get());
+      if (ctx.HostReads(*ep)) read_by_host.push_back(ep.get());
     }
   }
   const Duration skew = TimeFromSeconds(ctx.navd_merge_window_s / 2) - Time{};
@@ -50,7 +49,7 @@ std::size_t UnreadByHost(const RunContext& ctx) {
   std::size_t n = 0;
   for (const auto& ports : ctx.set.endpoints) {
     for (const auto& ep : ports) {
-      if (ctx.host_links.empty() || ctx.host_links.count(ep->link_name())) n += ep->PendingToHost();
+      if (ctx.HostReads(*ep)) n += ep->PendingToHost();
     }
   }
   return n;

@@ -34,14 +34,6 @@ std::set<std::string> HostLinks(const Scenario& s, const std::string& raw_comman
   std::set<std::string> used;
   for (const auto& [name, path] : set.links) {
     if (raw_command.find("{" + name + "}") != std::string::npos) used.insert(name);
-    // a closed loop's controller reads its links in the lockstep too: the actuators' replies and
-    // status (released at host turns) are read before the next sensor bytes reach the estimator,
-    // so which of them the controller has seen when a solution comes does not depend on the
-    // machine (paper 001's rangefinders and base; the ISOBUS steering ECU's status on ttyCAN,
-    // whose exit and reset request, read after the solution in some loaded runs, sent
-    // "not intended to steer" one command late)
-    if (s.closed_loop.enabled && s.closed_loop.controller.find("{" + name + "}") != std::string::npos)
-      used.insert(name);
   }
   if (raw_command.find("{navd}") != std::string::npos && s.estimator.navd_mode == NavdMode::kUwb) {
     used.insert(s.uwb.link);  // navd's UWB mode reads the tag and the WT901C only
@@ -58,6 +50,27 @@ std::set<std::string> HostLinks(const Scenario& s, const std::string& raw_comman
       used.insert(s.mcu.link);
   }
   return used;
+}
+
+// A closed loop's controller reads its links in the lockstep too: the actuators' replies and
+// status (released at host turns) are read before the next sensor bytes reach the estimator, so
+// which of them the controller has seen when a solution comes does not depend on the machine
+// (paper 001's rangefinders and base; the ISOBUS steering ECU's status on ttyCAN, whose exit and
+// reset request, read after the solution in some loaded runs, sent "not intended to steer" one
+// command late). The links only the controller reads leave the gate when it ends
+// (RunContext::ControllerGone).
+void AddControllerLinks(RunContext& ctx) {
+  const ClosedLoopSpec& c = ctx.scenario.closed_loop;
+  if (!c.enabled || ctx.options.emulate_only) return;
+  const bool all = ctx.host_links.empty();  // the estimator reads every link
+  std::set<std::string> added;
+  for (const auto& [name, path] : ctx.set.links) {
+    if (c.controller.find("{" + name + "}") == std::string::npos) continue;
+    if (!all && ctx.host_links.count(name)) continue;  // the estimator reads it too
+    ctx.controller_links.insert(name);
+    added.insert(name);
+  }
+  if (!all) ctx.host_links.insert(added.begin(), added.end());
 }
 
 void MakeRunFolder(const RunContext& ctx) {
@@ -194,6 +207,7 @@ void Prepare(RunContext& ctx) {
                   navd_virtual && own_window_s < 0 ? kNavdMergeWindowS : 0.0);
   const std::string command = EstimatorCommand(ctx, raw_command);
   ctx.host_links = HostLinks(scenario, raw_command, ctx.set);
+  AddControllerLinks(ctx);
   ctx.report.estimator_command = opt.emulate_only ? "" : command;
   ctx.fixes_csv.open(ctx.dir + "/gnss_fixes.csv");
   WriteFixCsvHeader(ctx.fixes_csv);

@@ -29,6 +29,7 @@ void RunWatchdog::StopController(Time t) {
     if (faults[i].kind != FaultKind::kControllerStop || faults[i].start > t) continue;
     if (!ctx_.controller->Running()) continue;
     ctx_.controller->Kill();
+    ctx_.ControllerGone();
     ctx_.fault_recorder.Note(i, t);
   }
 }
@@ -37,6 +38,9 @@ bool RunWatchdog::EstimatorStillRunning() {
   const std::int64_t now = NowNs();
   if (now - running_checked_ns_ < 1'000'000) return true;
   running_checked_ns_ = now;
+  // a controller that ended on its own: the gate stops waiting for its links
+  if (ctx_.controller && !ctx_.controller_gone && !ctx_.controller->Running())
+    ctx_.ControllerGone();
   return ctx_.EstimatorRunning();
 }
 
@@ -77,8 +81,7 @@ bool RunWatchdog::OnGateWait(std::size_t unread, bool new_wait) {
   std::string links;
   for (const auto& ports : ctx_.set.endpoints) {
     for (const auto& ep : ports) {
-      const bool read = ctx_.host_links.empty() || ctx_.host_links.count(ep->link_name()) > 0;
-      if (read && ep->PendingToHost() > 0) links += " " + ep->link_name();
+      if (ctx_.HostReads(*ep) && ep->PendingToHost() > 0) links += " " + ep->link_name();
     }
   }
   ctx_.stop_reason = "the estimator stopped reading" + links +

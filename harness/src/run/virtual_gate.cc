@@ -62,14 +62,24 @@ VirtualGate::VirtualGate(std::vector<SerialEndpoint*> host_links,
 
 bool VirtualGate::Reads(const SerialEndpoint& ep) const {
   for (const Link& l : links_) {
-    if (l.ep == &ep) return true;
+    if (l.ep == &ep) return l.read;
   }
   return false;
 }
 
+void VirtualGate::StopReading(const SerialEndpoint& ep) {
+  // marked, not erased: a wait in progress may hold a pointer to any link
+  for (Link& l : links_) {
+    if (l.ep != &ep) continue;
+    l.read = false;
+    l.unread_bound = l.seen_unread = 0;
+    l.runs.clear();
+  }
+}
+
 VirtualGate::Link* VirtualGate::Find(const SerialEndpoint& ep) {
   for (Link& l : links_) {
-    if (l.ep == &ep) return &l;
+    if (l.ep == &ep) return l.read ? &l : nullptr;
   }
   return nullptr;
 }
@@ -89,7 +99,8 @@ void VirtualGate::Ask(Link& l) {
 std::size_t VirtualGate::Refresh(const Link* except, const Link* only, bool ask_all) {
   std::size_t unread = 0;
   for (Link& l : links_) {
-    if (&l == except || (only && &l != only) || (l.unread_bound == 0 && !ask_all)) continue;
+    if (!l.read || &l == except || (only && &l != only) || (l.unread_bound == 0 && !ask_all))
+      continue;
     Ask(l);
     unread += l.unread_bound;
   }
@@ -102,7 +113,7 @@ bool VirtualGate::Wait(const std::function<bool()>& done, const Link* except, co
     if (done()) return true;
     std::size_t unread = 0;
     for (const Link& l : links_) {
-      if (&l != except && (!only || &l == only)) unread += l.seen_unread;
+      if (l.read && &l != except && (!only || &l == only)) unread += l.seen_unread;
     }
     if (!on_wait_(unread, step == 0)) return false;
     if (step < kYieldSteps) {
@@ -116,7 +127,7 @@ bool VirtualGate::Wait(const std::function<bool()>& done, const Link* except, co
 
 bool VirtualGate::OthersReadUpTo(const Link* self, Time t) {
   for (Link& l : links_) {
-    if (&l == self) continue;
+    if (&l == self || !l.read) continue;
     if (l.runs.empty() || l.runs.front().second > t) continue;
     // ask the kernel how far the host has read, and forget the runs it has read entirely
     Ask(l);
@@ -182,6 +193,7 @@ std::size_t VirtualGate::Unread() { return Refresh(nullptr, nullptr, true); }
 VirtualGate::LinkHolding VirtualGate::ScanHostLinks() const {
   std::vector<std::string> devices;
   for (const Link& l : links_) {
+    if (!l.read) continue;
     std::error_code ec;
     const auto target = std::filesystem::canonical(l.ep->link_path(), ec);
     if (!ec) devices.push_back(target.string());

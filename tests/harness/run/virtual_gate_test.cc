@@ -87,5 +87,31 @@ TEST(VirtualGateTest, WithoutAHostGroupEveryTurnWaits) {
   EXPECT_FALSE(gate.HostReadsOnly());
 }
 
+// A link whose reader has gone (a closed loop's controller that ended) leaves the gate: bytes
+// left unread on it no longer hold the other links back, and its own go without a wait.
+TEST(VirtualGateTest, ALinkNoLongerReadHoldsNothingBack) {
+  Links l("stop");
+  int waits = 0;
+  VirtualGate gate({&l.imu, &l.gps}, 4096, [&waits](std::size_t, bool) { return ++waits < 50; });
+  SerialMessage m;
+  m.t_ready = TimeFromSeconds(1.0);
+  m.bytes = "$GPGGA,,,,,,0,,,,,,,,*66\r\n";
+  ASSERT_TRUE(l.gps.Queue(m));
+  ASSERT_TRUE(gate.BeforeWrite(l.gps, m.bytes.size(), m.t_ready, m.t_ready));
+  l.gps.WriteChunks(1);
+  const Time t_imu = TimeFromSeconds(1.01);
+  EXPECT_FALSE(gate.BeforeWrite(l.imu, 25, t_imu, t_imu)) << "nobody reads ttyG: the IMU waits";
+  EXPECT_GT(waits, 1);
+  EXPECT_TRUE(gate.Reads(l.gps));
+  gate.StopReading(l.gps);
+  EXPECT_FALSE(gate.Reads(l.gps));
+  EXPECT_TRUE(gate.Reads(l.imu));
+  waits = 0;
+  EXPECT_TRUE(gate.BeforeWrite(l.imu, 25, t_imu, t_imu));
+  EXPECT_EQ(waits, 0) << "the unread GNSS bytes hold nothing back";
+  EXPECT_TRUE(gate.BeforeWrite(l.gps, 10, t_imu, t_imu));
+  EXPECT_EQ(waits, 0);
+}
+
 }  // namespace
 }  // namespace hil::harness

@@ -60,7 +60,10 @@ struct RunContext {
   FaultRecorder fault_recorder;
   DeviceSet set;
   std::unique_ptr<link::PtyPort> nav_pty;  ///< output nmea_pty: the pty the estimator writes
-  std::set<std::string> host_links;        ///< the links the estimator reads (none named: all)
+  std::set<std::string> host_links;  ///< the links the host reads (none named: all; HostReads)
+  /// Closed loop: the links only the controller reads (read in the lockstep while it runs).
+  std::set<std::string> controller_links;
+  bool controller_gone = false;  ///< the controller has ended: its links are no longer read
   /// navd's [input] merge_window_s as navd.conf sets it (0: off; virtual mode sets it for navd,
   /// and the gate then lets the links run apart by half of it: kNavdMergeWindowS)
   double navd_merge_window_s = 0;
@@ -96,6 +99,12 @@ struct RunContext {
   /// stop_reason the first time).
   bool Interrupted();
   bool EstimatorRunning() { return estimator && estimator->Running(); }
+  /// Whether the host reads `ep` now: one of host_links (all when none is named), and not a link
+  /// only the controller read once it has ended.
+  bool HostReads(const SerialEndpoint& ep) const;
+  /// The controller has ended (a controller_stop fault, or on its own): the gate no longer waits
+  /// for the links only it read, so the run goes on and the actuators see the commands stop.
+  void ControllerGone();
   /// Wall time since the estimator's last output (or its start).
   std::int64_t SilentForNs() const;
   /// Asks the truth builder for the times of the solutions and fixes that came since last time.

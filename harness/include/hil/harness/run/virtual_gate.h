@@ -59,6 +59,9 @@ class VirtualGate {
   Duration max_skew() const { return max_skew_; }
   /// Whether the host reads `ep` (one of the links given at construction).
   bool Reads(const SerialEndpoint& ep) const;
+  /// The host no longer reads `ep` (its reader, a closed loop's controller, has ended): the gate
+  /// neither waits for its bytes to be read nor orders the other links after them.
+  void StopReading(const SerialEndpoint& ep);
   /// Waits until the host has read every byte of every link it reads.
   bool WaitAllRead();
   /// Bytes not yet read on the host links (exact when 0), for the drain and hang reports.
@@ -100,6 +103,7 @@ class VirtualGate {
     // byte count at their end, the time of their first byte)
     std::size_t written = 0;
     std::deque<std::pair<std::size_t, Time>> runs{};
+    bool read = true;  // false once its reader has gone (StopReading): no order kept for it
   };
   /// With a max_skew: whether the host has read every other link's bytes made up to `t`.
   bool OthersReadUpTo(const Link* self, Time t);
