@@ -172,7 +172,12 @@ bool VirtualGate::TryWrite(const SerialEndpoint& ep, std::size_t bytes, Time t_f
   Link* self = Find(ep);
   if (!self) return true;
   if (max_skew_ > Duration{0}) {
-    if (!OthersReadUpTo(self, t_last - max_skew_)) return false;
+    const std::int64_t now = MonotonicNs();
+    if (now - self->refused_at_ns < kRetryAfterRefusalNs) return false;
+    if (!OthersReadUpTo(self, t_last - max_skew_)) {
+      self->refused_at_ns = now;
+      return false;
+    }
   } else if (Refresh(self, nullptr) != 0) {
     return false;
   }
