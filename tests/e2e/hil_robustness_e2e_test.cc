@@ -10,7 +10,6 @@
 
 #include <cerrno>
 #include <chrono>
-#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <thread>
@@ -20,6 +19,8 @@
 #include <nlohmann/json.hpp>
 #include <sys/resource.h>
 #include <sys/wait.h>
+
+#include "hil/harness/dut/process_group.h"
 
 #include "cli_runner.h"
 
@@ -92,23 +93,6 @@ bool WaitForFile(const std::string& path, double timeout_s) {
   return false;
 }
 
-// Pids of the live (not zombie) processes of process group `pgid`, from /proc.
-std::vector<int> LiveMembers(int pgid) {
-  std::vector<int> pids;
-  for (const auto& e : fs::directory_iterator("/proc")) {
-    const std::string name = e.path().filename().string();
-    if (name.empty() || name[0] < '0' || name[0] > '9') continue;
-    const std::string stat = ReadFile(e.path().string() + "/stat");
-    const std::size_t close = stat.rfind(')');
-    if (close == std::string::npos) continue;
-    char state = ' ';
-    long ppid = 0, pgrp = 0;
-    if (std::sscanf(stat.c_str() + close + 1, " %c %ld %ld", &state, &ppid, &pgrp) != 3) continue;
-    if (pgrp == pgid && state != 'Z' && state != 'X') pids.push_back(std::stoi(name));
-  }
-  return pids;
-}
-
 // No process of the estimator's process group (its id is the estimator's pid) runs any more. A
 // zombie does not count: it runs nothing and holds no file, and one killed at the very end stays
 // a zombie until its new parent, the machine's init, reaps it (on a busy machine that took more
@@ -116,10 +100,10 @@ std::vector<int> LiveMembers(int pgid) {
 void ExpectNoOrphans(const nlohmann::json& report) {
   const int pgid = report["estimator"]["pid"].get<int>();
   ASSERT_GT(pgid, 0);
-  std::vector<int> live = LiveMembers(pgid);
+  std::vector<int> live = harness::LiveGroupMembers(pgid);
   for (int i = 0; i < 40 && !live.empty(); ++i) {
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    live = LiveMembers(pgid);
+    live = harness::LiveGroupMembers(pgid);
   }
   EXPECT_TRUE(live.empty()) << "processes of the estimator's group " << pgid
                             << " are still running, e.g. " << live.front();

@@ -63,14 +63,12 @@ void AddControllerLinks(RunContext& ctx) {
   const ClosedLoopSpec& c = ctx.scenario.closed_loop;
   if (!c.enabled || ctx.options.emulate_only) return;
   const bool all = ctx.host_links.empty();  // the estimator reads every link
-  std::set<std::string> added;
   for (const auto& [name, path] : ctx.set.links) {
     if (c.controller.find("{" + name + "}") == std::string::npos) continue;
     if (!all && ctx.host_links.count(name)) continue;  // the estimator reads it too
     ctx.controller_links.insert(name);
-    added.insert(name);
   }
-  if (!all) ctx.host_links.insert(added.begin(), added.end());
+  if (!all) ctx.host_links.insert(ctx.controller_links.begin(), ctx.controller_links.end());
 }
 
 void MakeRunFolder(const RunContext& ctx) {
