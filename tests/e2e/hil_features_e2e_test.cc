@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.h"
+#include "shared_vectors.h"
 
 namespace hil::test {
 namespace {
@@ -17,9 +18,7 @@ const std::string kOrigin =
     "origin: {lat_deg: 35.4796096, lon_deg: 50.5979765, height_m: 1312.0}\n";
 
 std::string Hil() { return BinDir() + "/hil"; }
-std::string Vector(const std::string& name) {
-  return SourceDir() + "/../shared/vectors/gpsd-ublox5/" + name;
-}
+std::string Vector(const std::string& name) { return GpsdVector(name); }
 
 // The bytes the devices produced with their emulated times, one line per byte: emulated time,
 // message name, byte. tx and drop lines alike (in real time a byte nobody could take at its time
@@ -55,6 +54,7 @@ bool ProcessWithArgsExists(const std::string& a0, const std::string& a1) {
 }
 
 TEST(HilValidateE2eTest, RealReceiverCapturesConformAndBrokenOnesDoNot) {
+  HIL_SKIP_WITHOUT_GPSD_VECTORS();
   TempDir dir("e2e_validate");
   for (const char* log : {"ublox-lea-5h.log", "nl551e.log", "nl402u.log", "ublox-lea-5q.log"}) {
     const CommandResult r = RunCommand(Hil() + " validate --protocol neo5m " + Vector(log));

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.h"
+#include "shared_vectors.h"
 
 namespace hil::test {
 namespace {
@@ -150,8 +151,8 @@ TEST(KfginsNhc, NonHolonomicConstraintNarrowsTheErrors) {
 }
 
 TEST(KfginsReplay, RealUbloxLogGivesAConsistencyReport) {
-  const std::string log = SourceDir() + "/../shared/vectors/gpsd-ublox5/ublox-lea-5h.log";
-  if (!std::ifstream(log)) GTEST_SKIP() << "gpsd vectors absent";
+  HIL_SKIP_WITHOUT_GPSD_VECTORS();
+  const std::string log = GpsdVector("ublox-lea-5h.log");
   TempDir dir("kfgins_ublox");
   const CommandResult r = RunCommand(BinDir() + "/navd --replay " + log + " --out " + dir.str());
   ASSERT_EQ(r.exit_code, 0) << r.out;
