@@ -45,6 +45,11 @@ class GnssReceivers {
   const estimator::drivers::NmeaDecoderStats& nmea_totals() const { return nmea_totals_; }
   const estimator::drivers::UbxDecoderStats& ubx_totals() const { return ubx_totals_; }
   std::uint64_t reopens() const;
+  /// GPS − UTC for the solutions' UTC times: in UBX mode the first receiver's own value once it
+  /// reported a valid one (NAV-TIMEGPS), else `configured` ([time] leap_seconds).
+  int UtcLeapSeconds(int configured) const {
+    return ubx_ && !rx_.empty() ? rx_.front()->ubx_epochs.UtcLeapSeconds(configured) : configured;
+  }
 
  private:
   struct Receiver {

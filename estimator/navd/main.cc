@@ -427,8 +427,9 @@ int Run(const est::NavdConfig& cfg, SolutionOutputs& outputs) {
   est::Navigator nav(cfg.nav);
   const bool imu_mode = est::UsesImu(cfg.mode());
   est::NavdHealth health;  // fault detection: counters and flags in every JSON line
+  const hil::navd::GnssReceivers* gnss = nullptr;  // set once the receivers exist
   const auto emit = [&](const est::NavOutput& o) {
-    outputs.Emit(o, nav, health, cfg.leap_seconds);
+    outputs.Emit(o, nav, health, gnss ? gnss->UtcLeapSeconds(cfg.leap_seconds) : cfg.leap_seconds);
   };
 
   // the Razor text lines carry no time: stamped on arrival, mapped through the GNSS fixes' arrivals
@@ -468,6 +469,7 @@ int Run(const est::NavdConfig& cfg, SolutionOutputs& outputs) {
   est::InputMerge merge(razor_text ? est::Nanoseconds{0} : cfg.merge_window, 2048, use);
   hil::navd::GnssReceivers receivers(
       cfg, [&](const est::GnssSample& g) { merge.Add(GnssItem(g, receivers, merge.enabled())); });
+  gnss = &receivers;
   McuInput mcu_in;
   est::drivers::McuFrameDecoder mcu(
       [&](const est::drivers::McuFrame& f) { merge.Add(mcu_in.Item(f, mcu.stats())); });

@@ -172,7 +172,10 @@ UbxEpochs UbxEpochAssembler::Add(const UbxMessage& m) {
   if (m.cls != 0x01) return out;
   if (m.id == 0x20) {
     if (m.flags & 0x02) week_ = m.week;
-    if (m.flags & 0x04) leap_s_ = m.leap_s;
+    if (m.flags & 0x04) {
+      leap_s_ = m.leap_s;
+      leap_reported_ = true;
+    }
     return out;
   }
   const std::uint8_t kind = m.id == 0x02 ? kPos : m.id == 0x12 ? kVel : m.id == 0x06 ? kSol : 0;

@@ -173,5 +173,34 @@ TEST(UbxDecoderTest, NavSolWithGpsFixOkClearIsNoFix) {
   EXPECT_EQ(ToNs(out[1].t) % (604800LL * kNsPerSecond), 3000 * 1'000'000LL);
 }
 
+// Issue 40 (minor): navd in UBX mode stamped its solutions' UTC with its configured leap seconds
+// even when the receiver reported a valid value. NAV-TIMEGPS with the leapS valid flag decides;
+// without the flag (a receiver that has not decoded the almanac yet) the configured value stays.
+TEST(UbxDecoderTest, ReceiverLeapSecondsOverrideTheConfiguredOnceValid) {
+  UbxEpochAssembler a;
+  EXPECT_EQ(a.UtcLeapSeconds(18), 18);
+  const auto time_gps = [](int leap_s, std::uint8_t valid) {
+    std::string p;
+    Le(p, 1000, 4);
+    Le(p, 0, 4);
+    Le(p, 1744, 2);
+    Le(p, static_cast<std::uint64_t>(leap_s), 1);
+    Le(p, valid, 1);
+    Le(p, 20, 4);
+    return Frame(0x01, 0x20, p);
+  };
+  std::vector<UbxMessage> msgs;
+  UbxDecoder dec([&](const UbxMessage& m) { msgs.push_back(m); });
+  dec.Feed(time_gps(14, 0x03));  // tow and week valid, leap seconds the firmware's default
+  ASSERT_EQ(msgs.size(), 1u);
+  a.Add(msgs[0]);
+  EXPECT_EQ(a.UtcLeapSeconds(18), 18) << "not valid yet: the configured value";
+  dec.Feed(time_gps(16, 0x07));
+  ASSERT_EQ(msgs.size(), 2u);
+  a.Add(msgs[1]);
+  EXPECT_EQ(a.UtcLeapSeconds(18), 16) << "the receiver's valid value";
+  EXPECT_EQ(a.UtcLeapSeconds(17), 16);
+}
+
 }  // namespace
 }  // namespace hil::estimator::drivers

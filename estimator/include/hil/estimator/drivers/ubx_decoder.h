@@ -85,6 +85,9 @@ class UbxEpochAssembler {
  public:
   UbxEpochs Add(const UbxMessage& m);
   int leap_seconds() const { return leap_s_; }
+  /// GPS − UTC for the solutions' UTC times: the receiver's own value once a NAV-TIMEGPS said it
+  /// is valid (leapS valid flag), else `configured` (navd's [time] leap_seconds).
+  int UtcLeapSeconds(int configured) const { return leap_reported_ ? leap_s_ : configured; }
   /// Vertical 1σ given for a 2-D fix, whose height the receiver holds instead of measuring.
   static constexpr double kHeldHeightStd_m = 1000.0;
 
@@ -99,6 +102,7 @@ class UbxEpochAssembler {
   std::uint8_t expected_ = 0;  // messages this receiver sends per epoch (0: not yet known)
   UbxMessage pos_, vel_, sol_;
   int week_ = -1, leap_s_ = 18;
+  bool leap_reported_ = false;  // leap_s_ came from the receiver
 };
 
 }  // namespace hil::estimator::drivers
