@@ -27,13 +27,15 @@ struct Child {
 };
 
 std::vector<std::string> RunArgv(const CampaignFolder& f, const CampaignRun& r,
-                                 const std::string& hil_exe) {
+                                 const RunnerOptions& o) {
+  const std::string& hil_exe = o.hil_exe;
   const CampaignGroup& g = f.plan.groups[r.group];
   std::vector<std::string> args{hil_exe, "run", g.scenario_file, "--out", f.dir + "/runs/" + r.id};
   if (r.seed) args.insert(args.end(), {"--seed", std::to_string(*r.seed)});
   if (f.plan.spec.short_form) args.emplace_back("--short");
   for (const auto& s : g.settings) args.insert(args.end(), {"--set", s.field + "=" + s.value});
   args.insert(args.end(), f.plan.spec.run_args.begin(), f.plan.spec.run_args.end());
+  if (o.nice) args.insert(args.end(), {"--nice", std::to_string(*o.nice)});
   args.emplace_back("--no-html");
   return args;
 }
@@ -188,7 +190,7 @@ RunnerResult RunCampaignRuns(const CampaignFolder& f, const std::vector<std::siz
       const fs::path run_dir = fs::path(f.dir) / "runs" / r.id;
       fs::remove_all(run_dir);  // what a killed attempt left
       fs::create_directories(run_dir);
-      running[Start(RunArgv(f, r, o.hil_exe), (run_dir / "hil.log").string())] = {
+      running[Start(RunArgv(f, r, o), (run_dir / "hil.log").string())] = {
           todo[next], link::RealtimePacer::MonotonicNs()};
       ++next;
     }

@@ -25,7 +25,8 @@ struct CampaignArgs {
   CLI::App *cmd = nullptr, *status = nullptr, *merge = nullptr;
   std::string file, out, shard, dir;
   bool local = false, slurm = false, wait = false, allow_partial = false;
-  int jobs = 2;
+  int jobs = 2, nice = 0;
+  CLI::Option* nice_opt = nullptr;
   harness::SlurmOptions so;
 };
 
@@ -60,6 +61,11 @@ void Declare(CLI::App& app, CampaignArgs& a) {
                     "run shard I of N (I/N, 1-based): runs k with k mod N = I-1");
   a.cmd->add_option("-j,--jobs", a.jobs, "runs at the same time (--local, --shard)")
       ->check(CLI::Range(1, 256));
+  a.nice_opt = a.cmd
+                   ->add_option("--nice", a.nice,
+                                "nice value of every run (hil run --nice; default: hil run's "
+                                "-10), also in the Slurm tasks; 0 leaves the priority as it is")
+                   ->check(CLI::Range(-20, 19));
   DeclareSlurm(a.cmd, a);
   a.status = a.cmd->add_subcommand("status",
                                    "Progress of a campaign folder: runs done, and each "
@@ -114,6 +120,7 @@ int RunPart(const CampaignFolder& f, const std::vector<std::size_t>& indices, in
   ro.label = st["shard"].get<std::string>() == "local" ? "local"
                                                        : "shard " + st["shard"].get<std::string>();
   ro.live = isatty(STDERR_FILENO) != 0;
+  if (*a.nice_opt) ro.nice = a.nice;
   const harness::RunnerResult r = harness::RunCampaignRuns(f, indices, ro);
   st["state"] = "finished";
   st["exit_code"] = 0;
@@ -172,6 +179,8 @@ int RunSlurm(const harness::CampaignPlan& plan, const std::string& dir, Campaign
   }
   a.so.hil_exe = SelfExecutable();
   a.so.campaign_args = {a.file};
+  if (*a.nice_opt)
+    a.so.campaign_args.insert(a.so.campaign_args.end(), {"--nice", std::to_string(a.nice)});
   harness::WriteSlurmScripts(f, a.so);
   const harness::SlurmSubmission sub = harness::SubmitSlurm(f, todo);
   std::printf(

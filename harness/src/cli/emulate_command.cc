@@ -14,6 +14,7 @@ struct EmulateArgs {
   CLI::App* cmd = nullptr;
   std::string scenario, out;
   double speed = 1.0;
+  int nice = harness::kDefaultRunNice;
 };
 
 void Declare(CLI::App& app, EmulateArgs& a) {
@@ -26,6 +27,12 @@ void Declare(CLI::App& app, EmulateArgs& a) {
   a.cmd->add_option("--out", a.out,
                     "run folder holding the links and captures (default: runs/<name>-emulate)");
   a.cmd->add_option("--speed", a.speed, "speed-up factor")->check(CLI::Range(0.01, 1000.0));
+  a.cmd
+      ->add_option("--nice", a.nice,
+                   "nice value of hil; below 0 its pacing threads also ask for SCHED_FIFO, 0 or "
+                   "more leaves them at SCHED_OTHER (0 leaves the priority as it is)")
+      ->capture_default_str()
+      ->check(CLI::Range(-20, 19));
 }
 
 int Execute(const EmulateArgs& a) {
@@ -37,6 +44,7 @@ int Execute(const EmulateArgs& a) {
   opt.speed = a.speed;
   opt.emulate_only = true;
   opt.html = false;
+  opt.nice = a.nice;
   try {
     hil::harness::RunScenario(*scenario, opt);
     return kExitPass;

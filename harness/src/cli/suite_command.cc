@@ -14,11 +14,12 @@ namespace fs = std::filesystem;
 struct SuiteArgs {
   CLI::App* cmd = nullptr;
   std::string dir, out, estimator, mode;
-  int jobs = 2, repeat = 1;
+  int jobs = 2, repeat = 1, nice = 0;
   std::uint64_t seed = 1;
   double speed = 1.0;
   bool short_form = false;
-  CLI::Option *seed_opt = nullptr, *est_opt = nullptr, *mode_opt = nullptr, *speed_opt = nullptr;
+  CLI::Option *seed_opt = nullptr, *est_opt = nullptr, *mode_opt = nullptr, *speed_opt = nullptr,
+              *nice_opt = nullptr;
 };
 
 void Declare(CLI::App& app, SuiteArgs& a) {
@@ -46,6 +47,11 @@ void Declare(CLI::App& app, SuiteArgs& a) {
                    ->check(CLI::IsMember({"virtual", "realtime", "scaled"}));
   a.speed_opt = a.cmd->add_option("--speed", a.speed, "speed-up factor for realtime/scaled runs")
                     ->check(CLI::Range(0.01, 1000.0));
+  a.nice_opt = a.cmd
+                   ->add_option("--nice", a.nice,
+                                "nice value of every run (hil run --nice; default: hil run's "
+                                "-10); 0 leaves the priority as it is")
+                   ->check(CLI::Range(-20, 19));
 }
 
 int Execute(const SuiteArgs& a) {
@@ -61,6 +67,7 @@ int Execute(const SuiteArgs& a) {
   if (*a.est_opt) opt.run_args.insert(opt.run_args.end(), {"--estimator", a.estimator});
   if (*a.mode_opt) opt.run_args.insert(opt.run_args.end(), {"--mode", a.mode});
   if (*a.speed_opt) opt.run_args.insert(opt.run_args.end(), {"--speed", std::to_string(a.speed)});
+  if (*a.nice_opt) opt.run_args.insert(opt.run_args.end(), {"--nice", std::to_string(a.nice)});
   opt.short_form = a.short_form;
   try {
     if (hil::harness::SuiteScenarios(a.dir).empty()) {

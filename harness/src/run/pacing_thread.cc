@@ -52,7 +52,9 @@ bool PacingThread::Earliest(int& serial_index, Time& t) const {
 }
 
 void PacingThread::Loop() {
-  const link::ThreadSchedule granted = link::RealtimePacer::RequestRealtimeScheduling(kPriority);
+  const link::ThreadSchedule granted =
+      pacer_.realtime_threads() ? link::RealtimePacer::RequestRealtimeScheduling(kPriority)
+                                : link::RealtimePacer::CurrentThreadSchedule();
   std::unique_lock<std::mutex> lock(mutex_);
   schedule_ = granted;
   started_ = true;

@@ -214,8 +214,10 @@ void Prepare(RunContext& ctx) {
   StartController(ctx);
   ctx.estimator_start_ns = NowNs();
   if (opt.mode == RunMode::kRealtime) {
-    link::RealtimePacer::RequestRealtimeScheduling();
+    const bool fifo = opt.nice < 0;  // a priority raise asked for: the pacing takes FIFO too
+    if (fifo) link::RealtimePacer::RequestRealtimeScheduling();
     ctx.pacer.emplace(opt.speed);
+    ctx.pacer->set_realtime_threads(fifo);
     // a closed loop runs lockstep (the same bytes as in virtual mode), except where frames carry
     // no time and must arrive at their own (CheckCanRunMode)
     ctx.lockstep = scenario.closed_loop.enabled && !opt.emulate_only &&

@@ -42,9 +42,14 @@ class RealtimePacer {
   static ThreadSchedule CurrentThreadSchedule();
   /// CLOCK_MONOTONIC now, in nanoseconds.
   static std::int64_t MonotonicNs();
+  /// Whether the threads pacing by this clock ask for SCHED_FIFO (RequestRealtimeScheduling) or
+  /// keep the scheduling they inherit (the run asked for no priority: `--nice` 0 or more).
+  bool realtime_threads() const { return realtime_threads_; }
+  void set_realtime_threads(bool on) { realtime_threads_ = on; }
 
  private:
   double speed_;
+  bool realtime_threads_ = true;
   std::int64_t wall_start_ns_;
 };
 

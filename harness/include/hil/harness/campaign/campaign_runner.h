@@ -7,6 +7,7 @@
 /// place on a terminal, one line per finished run otherwise (a Slurm log).
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,7 @@ struct RunnerOptions {
   int jobs = 2;
   std::string label = "local";  ///< what the progress line calls this process ("shard 2/4")
   bool live = false;            ///< rewrite the progress line in place (stderr is a terminal)
+  std::optional<int> nice;      ///< `--nice` of every run (unset: hil run's default)
 };
 
 struct RunnerResult {

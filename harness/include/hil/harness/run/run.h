@@ -45,7 +45,10 @@ struct RunOptions {
   /// Real time or scaled, closed loop: no lockstep; bytes leave at their UART times and the
   /// hosts' commands act at their arrival (not deterministic; RunContext::lockstep).
   bool free_running = false;
-  /// Nice value of hil and the hosts it starts (run_priority.h); 0 leaves it as it is.
+  /// Nice value of hil and the hosts it starts (run_priority.h); 0 leaves it as it is. Real time:
+  /// only a raised priority (below 0) has the run's threads ask for SCHED_FIFO as well; at 0 or
+  /// more they stay SCHED_OTHER at that nice value (`nice -n 19 hil emulate --nice 0` takes
+  /// nothing from its neighbours).
   int nice = kDefaultRunNice;
 };
 
