@@ -84,6 +84,7 @@ void DeclareImport(DatasetArgs& a) {
   c->add_option("--reference", o.reference_pos, "RTKLIB .pos: the truth")->required();
   c->add_option("--gnss-pos", o.gnss_pos, "RTKLIB .pos as the GNSS input (default: --reference)");
   c->add_option("--gnss-ubx", o.gnss_ubx, "u-blox UBX log (NAV-PVT or NAV-POSLLH+VELNED) as input");
+  c->add_flag("--ubx-height-msl", o.ubx_height_msl, "UBX: hMSL, not the ellipsoidal height");
   c->add_option("--imu-csv", o.imu_csv, "IMU CSV: ax ay az gx gy gz tick")->required();
   c->add_option("--imu-tag", o.imu_tag, "its RTKLIB time tag (default: CSV.tag)");
   c->add_option("--tag-fpos-bytes", o.tag_fpos_bytes, "file position size in the tag (4 or 8)");

@@ -55,23 +55,24 @@ std::vector<ImportGnssEpoch> FromPos(const std::string& path, int max_q, std::si
 }
 
 // UBX gives seconds of week only: the week is the reference's (the nearest sow)
-std::vector<ImportGnssEpoch> FromUbx(const std::string& path, double ref_t_s, std::string& report) {
+std::vector<ImportGnssEpoch> FromUbx(const std::string& path, double ref_t_s, bool msl,
+                                     std::string& report) {
   const UbxNavLog log = ReadUbxNavLog(path);
   ImportAppendf(report,
                 "GNSS input %s: %llu frames (%llu NAV-PVT, %llu NAV-POSLLH, %llu NAV-VELNED), "
-                "%llu bad checksums, %llu cut, %llu epochs without a 3-D fix\n",
+                "%llu bad checksums, %llu cut, %llu epochs without a 3-D fix, %llu repeated iTOW\n",
                 path.c_str(), (unsigned long long)log.frames, (unsigned long long)log.nav_pvt,
                 (unsigned long long)log.posllh, (unsigned long long)log.velned,
                 (unsigned long long)log.bad_checksum, (unsigned long long)log.cut_frames,
-                (unsigned long long)log.not_fixed);
+                (unsigned long long)log.not_fixed, (unsigned long long)log.duplicates);
   const double week0 = std::floor(ref_t_s / kImportWeek_s) * kImportWeek_s;
   std::vector<ImportGnssEpoch> out;
   for (const UbxNavFix& f : log.fixes) {
     double t = week0 + f.sow;
     if (t - ref_t_s > kImportWeek_s / 2) t -= kImportWeek_s;
     if (ref_t_s - t > kImportWeek_s / 2) t += kImportWeek_s;
-    out.push_back({t, f.lat_deg, f.lon_deg, f.height_m, f.std_ned_m, f.has_velocity, f.v_ned_mps,
-                   f.v_std_ned_mps,
+    out.push_back({t, f.lat_deg, f.lon_deg, msl ? f.height_msl_m : f.height_m, f.std_ned_m,
+                   f.has_velocity, f.v_ned_mps, f.v_std_ned_mps,
                    f.carrier_solution == 2   ? 1
                    : f.carrier_solution == 1 ? 2
                                              : 5});
@@ -292,19 +293,13 @@ void ReportAlignment(const ImuAlignment& a, const ImportSpan& s, std::string& re
                 a.mount_yaw_epochs, a.mount_yaw_rad / kImportDeg);
 }
 
-}  // namespace
-
-DatasetImportResult ImportDataset(const DatasetImportOptions& o, const std::string& dir) {
-  DatasetImportResult r;
-  std::string& rep = r.report;
-  std::size_t dropped = 0;
-  const std::vector<ImportGnssEpoch> ref = FromPos(o.reference_pos, o.reference_max_q, dropped);
-  ImportAppendf(rep, "reference %s: %zu epochs with Q ≤ %d (%zu others left out)\n",
-                o.reference_pos.c_str(), ref.size(), o.reference_max_q, dropped);
+// the GNSS input: a UBX log or a .pos file (the reference by default), by quality
+std::vector<ImportGnssEpoch> LoadGnssInput(const DatasetImportOptions& o, double ref_t_s,
+                                           std::string& rep) {
   std::vector<ImportGnssEpoch> gnss;
-  dropped = 0;
+  std::size_t dropped = 0;
   if (!o.gnss_ubx.empty()) {
-    for (const ImportGnssEpoch& e : FromUbx(o.gnss_ubx, ref.front().t_s, rep))
+    for (const ImportGnssEpoch& e : FromUbx(o.gnss_ubx, ref_t_s, o.ubx_height_msl, rep))
       if (e.quality <= o.gnss_max_q)
         gnss.push_back(e);
       else
@@ -314,6 +309,19 @@ DatasetImportResult ImportDataset(const DatasetImportOptions& o, const std::stri
   }
   ImportAppendf(rep, "GNSS input: %zu epochs with quality ≤ %d (%zu others left out)\n",
                 gnss.size(), o.gnss_max_q, dropped);
+  return gnss;
+}
+
+}  // namespace
+
+DatasetImportResult ImportDataset(const DatasetImportOptions& o, const std::string& dir) {
+  DatasetImportResult r;
+  std::string& rep = r.report;
+  std::size_t dropped = 0;
+  const std::vector<ImportGnssEpoch> ref = FromPos(o.reference_pos, o.reference_max_q, dropped);
+  ImportAppendf(rep, "reference %s: %zu epochs with Q ≤ %d (%zu others left out)\n",
+                o.reference_pos.c_str(), ref.size(), o.reference_max_q, dropped);
+  const std::vector<ImportGnssEpoch> gnss = LoadGnssInput(o, ref.front().t_s, rep);
   std::vector<TimedImuSample> imu = LoadImu(o, r.tick_fit, rep);
   const std::vector<CourseEpoch> courses = CoursesOf(ref);
   if (courses.size() < 2)

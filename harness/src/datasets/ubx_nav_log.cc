@@ -36,10 +36,11 @@ void OnNavPvt(const unsigned char* p, UbxNavLog& log) {
     return;
   }
   UbxNavFix f;
-  f.sow = UbxLe<std::uint32_t>(p) * 1e-3 + UbxLe<std::int32_t>(p + 16) * 1e-9;
+  f.sow = UbxLe<std::uint32_t>(p) * 1e-3;  // nano (p + 16) belongs to the UTC fields, not iTOW
   f.lon_deg = UbxLe<std::int32_t>(p + 24) * 1e-7;
   f.lat_deg = UbxLe<std::int32_t>(p + 28) * 1e-7;
   f.height_m = UbxLe<std::int32_t>(p + 32) * 1e-3;
+  f.height_msl_m = UbxLe<std::int32_t>(p + 36) * 1e-3;
   const double h_acc = UbxLe<std::uint32_t>(p + 40) * 1e-3,
                v_acc = UbxLe<std::uint32_t>(p + 44) * 1e-3;
   f.std_ned_m = {h_acc / std::sqrt(2.0), h_acc / std::sqrt(2.0), v_acc};
@@ -65,6 +66,7 @@ void OnPosLlh(const unsigned char* p, UbxPosVelParts& parts, UbxNavLog& log) {
   f.lon_deg = UbxLe<std::int32_t>(p + 4) * 1e-7;
   f.lat_deg = UbxLe<std::int32_t>(p + 8) * 1e-7;
   f.height_m = UbxLe<std::int32_t>(p + 12) * 1e-3;
+  f.height_msl_m = UbxLe<std::int32_t>(p + 16) * 1e-3;
   const double h_acc = UbxLe<std::uint32_t>(p + 20) * 1e-3,
                v_acc = UbxLe<std::uint32_t>(p + 24) * 1e-3;
   f.std_ned_m = {h_acc / std::sqrt(2.0), h_acc / std::sqrt(2.0), v_acc};
@@ -133,8 +135,12 @@ UbxNavLog ReadUbxNavLog(const std::string& path) {
   if (log.nav_pvt == 0)
     for (const auto& [itow, f] : parts.by_itow)
       if (parts.has_pos.count(itow)) log.fixes.push_back(f);
-  std::sort(log.fixes.begin(), log.fixes.end(),
-            [](const UbxNavFix& a, const UbxNavFix& c) { return a.sow < c.sow; });
+  std::stable_sort(log.fixes.begin(), log.fixes.end(),
+                   [](const UbxNavFix& a, const UbxNavFix& c) { return a.sow < c.sow; });
+  const auto same = [](const UbxNavFix& a, const UbxNavFix& c) { return a.sow == c.sow; };
+  const auto last = std::unique(log.fixes.begin(), log.fixes.end(), same);
+  log.duplicates = static_cast<std::uint64_t>(log.fixes.end() - last);
+  log.fixes.erase(last, log.fixes.end());
   if (log.fixes.empty()) throw ImportInputError(path, 0, "", "no NAV-PVT or NAV-POSLLH fix");
   return log;
 }

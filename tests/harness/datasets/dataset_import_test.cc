@@ -199,9 +199,10 @@ std::string NavPvt(std::uint32_t itow, std::uint8_t fix, std::uint8_t flags) {
   Put<std::int32_t>(p, 24, -1051471665);
   Put<std::int32_t>(p, 28, 400966916);
   Put<std::int32_t>(p, 32, 1601435);
-  Put<std::uint32_t>(p, 40, 14);   // hAcc mm
-  Put<std::uint32_t>(p, 44, 10);   // vAcc mm
-  Put<std::int32_t>(p, 48, 1000);  // velN mm/s
+  Put<std::int32_t>(p, 36, 1580048);  // hMSL
+  Put<std::uint32_t>(p, 40, 14);      // hAcc mm
+  Put<std::uint32_t>(p, 44, 10);      // vAcc mm
+  Put<std::int32_t>(p, 48, 1000);     // velN mm/s
   Put<std::int32_t>(p, 52, -500);
   Put<std::int32_t>(p, 56, 20);
   Put<std::uint32_t>(p, 68, 50);  // sAcc mm/s
@@ -216,17 +217,20 @@ TEST(UbxNavLog, ReadsNavPvtAmongOtherMessagesAndCountsDamage) {
   WriteFile(p, "$GPGGA,junk\r\n" + UbxFrame(0x02, 0x15, std::string(16, 'r')) +
                    UbxFrame(0x01, 0x07, NavPvt(408639750, 3, 0x81)) + bad +
                    UbxFrame(0x01, 0x07, NavPvt(408640250, 1, 0x00)) +
+                   UbxFrame(0x01, 0x07, NavPvt(408639750, 3, 0x01)) +  // iTOW repeated
                    UbxFrame(0x01, 0x07, NavPvt(408640500, 3, 0x41)).substr(0, 30));
   const UbxNavLog log = ReadUbxNavLog(p);
   EXPECT_EQ(log.bad_checksum, 1u);
   EXPECT_EQ(log.cut_frames, 1u);
-  EXPECT_EQ(log.nav_pvt, 2u);
+  EXPECT_EQ(log.nav_pvt, 3u);
   EXPECT_EQ(log.not_fixed, 1u);
+  EXPECT_EQ(log.duplicates, 1u);
   ASSERT_EQ(log.fixes.size(), 1u);
   const UbxNavFix& f = log.fixes[0];
-  EXPECT_NEAR(f.sow, 408639.74975, 1e-9);
+  EXPECT_DOUBLE_EQ(f.sow, 408639.75);  // iTOW alone (nano is the UTC time's)
   EXPECT_DOUBLE_EQ(f.lat_deg, 40.0966916);
   EXPECT_DOUBLE_EQ(f.lon_deg, -105.1471665);
+  EXPECT_DOUBLE_EQ(f.height_msl_m, 1580.048);
   EXPECT_NEAR(f.std_ned_m.x(), 0.014 / std::sqrt(2.0), 1e-12);
   EXPECT_DOUBLE_EQ(f.v_ned_mps.y(), -0.5);
   EXPECT_EQ(f.carrier_solution, 2);

@@ -38,6 +38,7 @@ struct ImportNoise {
 struct DatasetImportOptions {
   std::string reference_pos;       ///< RTKLIB .pos: the truth
   std::string gnss_pos, gnss_ubx;  ///< GNSS input: one of them (default: reference_pos)
+  bool ubx_height_msl = false;     ///< UBX: hMSL instead of the height above the ellipsoid
   std::string imu_csv, imu_tag;    ///< imu_tag default: imu_csv + ".tag"
   int tag_fpos_bytes = 4;
   ImuCsvOptions csv;

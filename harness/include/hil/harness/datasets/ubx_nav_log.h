@@ -21,8 +21,9 @@
 namespace hil::harness {
 
 struct UbxNavFix {
-  double sow = 0;  ///< iTOW (+ nano for NAV-PVT), GPS seconds of week
-  double lat_deg = 0, lon_deg = 0, height_m = 0;
+  double sow = 0;                                 ///< iTOW, GPS seconds of week
+  double lat_deg = 0, lon_deg = 0, height_m = 0;  ///< height above the ellipsoid
+  double height_msl_m = 0;                        ///< hMSL (above the receiver's geoid model)
   Eigen::Vector3d std_ned_m = Eigen::Vector3d::Zero();
   bool has_velocity = false;
   Eigen::Vector3d v_ned_mps = Eigen::Vector3d::Zero();
@@ -34,6 +35,7 @@ struct UbxNavLog {
   std::vector<UbxNavFix> fixes;
   std::uint64_t frames = 0, bad_checksum = 0, cut_frames = 0, nav_pvt = 0, posllh = 0, velned = 0,
                 not_fixed = 0;
+  std::uint64_t duplicates = 0;  ///< fixes of a repeated iTOW (the first kept)
 };
 
 /// @throws ImportInputError for an unreadable file or a NAV message of the wrong length.
