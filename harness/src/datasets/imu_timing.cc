@@ -7,16 +7,16 @@
 
 namespace hil::harness {
 
-ImuTickFit FitImuTicks(const std::vector<double>& tick, const std::vector<double>& tag) {
-  if (tick.size() != tag.size() || tick.size() < 2)
+ImuTickFit FitImuTicks(const std::vector<double>& tick_s, const std::vector<double>& tag_s) {
+  if (tick_s.size() != tag_s.size() || tick_s.size() < 2)
     throw std::runtime_error("tick fit: need at least two tagged samples");
   ImuTickFit f;
-  f.tick0_s = tick.front();
-  const double n = static_cast<double>(tick.size());
+  f.tick0_s = tick_s.front();
+  const double n = static_cast<double>(tick_s.size());
   double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double y0 = tag.front();
-  for (std::size_t i = 0; i < tick.size(); ++i) {
-    const double x = tick[i] - f.tick0_s, y = tag[i] - y0;
+  const double y0 = tag_s.front();
+  for (std::size_t i = 0; i < tick_s.size(); ++i) {
+    const double x = tick_s[i] - f.tick0_s, y = tag_s[i] - y0;
     sx += x, sy += y, sxx += x * x, sxy += x * y;
   }
   const double den = n * sxx - sx * sx;
@@ -26,8 +26,8 @@ ImuTickFit FitImuTicks(const std::vector<double>& tick, const std::vector<double
   double s2 = 0;
   f.residual_min_s = 1e300;
   f.residual_max_s = -1e300;
-  for (std::size_t i = 0; i < tick.size(); ++i) {
-    const double r = tag[i] - f.At(tick[i]);
+  for (std::size_t i = 0; i < tick_s.size(); ++i) {
+    const double r = tag_s[i] - f.At(tick_s[i]);
     s2 += r * r;
     f.residual_min_s = std::min(f.residual_min_s, r);
     f.residual_max_s = std::max(f.residual_max_s, r);
@@ -76,10 +76,11 @@ double LagCorrelation(const HeadingIntegral& psi, const std::vector<CourseInterv
 
 }  // namespace
 
-ImuLagEstimate EstimateImuLag(const std::vector<double>& imu_t, const std::vector<double>& rate,
+ImuLagEstimate EstimateImuLag(const std::vector<double>& imu_t_s,
+                              const std::vector<double>& yaw_rate_radps,
                               const std::vector<CourseEpoch>& gnss, double max_lag_s,
                               double min_speed_mps) {
-  const HeadingIntegral psi(imu_t, rate);
+  const HeadingIntegral psi(imu_t_s, yaw_rate_radps);
   std::vector<CourseInterval> iv;
   for (std::size_t k = 1; k < gnss.size(); ++k) {
     const Eigen::Vector3d &a = gnss[k - 1].v_ned_mps, &b = gnss[k].v_ned_mps;
