@@ -97,8 +97,13 @@ void KfginsTextFiles::WriteConfig(const KfginsYaml& y, const std::string& gnss_f
   WriteVector(f, "initvelstd", y.initvelstd_mps);
   WriteVector(f, "initattstd", y.initattstd_deg);
   // KF-GINS requires the initial IMU errors and takes the noise per axis ([x, y, z])
-  for (const char* key : {"initgyrbias", "initaccbias", "initgyrscale", "initaccscale"})
-    std::fprintf(f, "%s: [0, 0, 0]\n", key);
+  WriteVector(f, "initgyrbias", y.initgyrbias_deg_hr);
+  WriteVector(f, "initaccbias", y.initaccbias_mgal);
+  for (const char* key : {"initgyrscale", "initaccscale"}) std::fprintf(f, "%s: [0, 0, 0]\n", key);
+  if (y.initbgstd_deg_hr > 0)
+    WriteVector(f, "initbgstd", Eigen::Vector3d::Constant(y.initbgstd_deg_hr));
+  if (y.initbastd_mgal > 0)
+    WriteVector(f, "initbastd", Eigen::Vector3d::Constant(y.initbastd_mgal));
   std::fprintf(f, "imunoise:\n");
   const std::pair<const char*, double> noise[] = {
       {"arw", y.arw_deg_rthr}, {"vrw", y.vrw_mps_rthr}, {"gbstd", y.gbstd_deg_hr},

@@ -40,6 +40,10 @@ struct KfginsYaml {
   Eigen::Vector3d antlever_flu_m = Eigen::Vector3d::Zero();
   double arw_deg_rthr = 0.3, vrw_mps_rthr = 0.1, gbstd_deg_hr = 200, abstd_mgal = 5000;
   double gsstd_ppm = 1000, asstd_ppm = 1000, corrtime_hr = 1;
+  /// initial IMU errors (body FRD, KF-GINS's units) and their σ (written when > 0)
+  Eigen::Vector3d initgyrbias_deg_hr = Eigen::Vector3d::Zero();
+  Eigen::Vector3d initaccbias_mgal = Eigen::Vector3d::Zero();
+  double initbgstd_deg_hr = 0, initbastd_mgal = 0;
 };
 
 /// KF-GINS's roll, pitch, yaw (degrees, NED/FRD, yaw in (−180, 180]) of an ENU/FLU attitude.
