@@ -335,7 +335,8 @@ void WriteReportJson(const RunReport& r, const std::string& path) {
   j["estimator"] = {{"command", r.estimator_command},
                     {"output", r.estimator_output},
                     {"exit", r.estimator_exit},
-                    {"pid", r.estimator_pid}};
+                    {"pid", r.estimator_pid},
+                    {"solutions_outside_run", r.solutions_outside_run}};
   j["estimator_exit"] = r.estimator_exit;
   j["speed"] = r.speed;
   j["faults"] = nlohmann::json::array();
