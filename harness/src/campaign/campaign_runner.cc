@@ -1,6 +1,7 @@
 #include "hil/harness/campaign/campaign_runner.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <sys/prctl.h>
 #include <sys/wait.h>
 
 #include "hil/firmware_emu/link/realtime_pacer.h"
@@ -41,9 +43,14 @@ std::vector<std::string> RunArgv(const CampaignFolder& f, const CampaignRun& r,
 }
 
 pid_t Start(std::vector<std::string> args, const std::string& log) {
+  const pid_t parent = getpid();
   const pid_t pid = fork();
   if (pid < 0) throw std::runtime_error("fork failed");
   if (pid == 0) {
+    // a run ends (as interrupted: its processes stopped, its report written) when the campaign
+    // dies, however; the calling thread is the campaign's main thread
+    prctl(PR_SET_PDEATHSIG, SIGTERM);
+    if (getppid() != parent) _exit(127);
     const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (fd >= 0) {
       dup2(fd, STDOUT_FILENO);

@@ -12,6 +12,7 @@
 #include "hil/harness/campaign/campaign_runner.h"
 #include "hil/harness/campaign/campaign_slurm.h"
 #include "hil/harness/cli/commands.h"
+#include "hil/harness/run/folder_lock.h"
 #include "hil/harness/scenario/yaml_reader.h"
 
 namespace hil::cli {
@@ -219,6 +220,7 @@ int RunFile(CampaignArgs& a) {
   if (a.slurm) return RunSlurm(*plan, dir, a);
   if (a.local) {
     const CampaignFolder f = harness::PrepareCampaignFolder(dir, *plan, 0);
+    const harness::FolderLock lock(dir, harness::kCampaignLockName);  // alone in the folder
     std::vector<std::size_t> all(plan->runs.size());
     for (std::size_t k = 0; k < all.size(); ++k) all[k] = k;
     RunPart(f, all, 0, a);
@@ -230,6 +232,9 @@ int RunFile(CampaignArgs& a) {
     return kExitBadInput;
   }
   const CampaignFolder f = harness::PrepareCampaignFolder(dir, *plan, shard->second);
+  // beside the other shards (each alone with its runs), never beside --local or a merge
+  const harness::FolderLock folder(dir, harness::kCampaignLockName, false);
+  const harness::FolderLock own(dir + "/shards", "shard-" + std::to_string(shard->first) + ".lock");
   return RunPart(f, harness::ShardRuns(f.plan, shard->first, shard->second), shard->first, a);
 }
 
@@ -243,6 +248,7 @@ int Execute(CampaignArgs& a) {
     }
     if (a.merge->parsed()) {
       const CampaignFolder f = harness::LoadCampaignFolder(a.dir);
+      const harness::FolderLock lock(a.dir, harness::kCampaignLockName);
       return ReportMerge(f, harness::MergeCampaign(f, a.allow_partial));
     }
     return RunFile(a);

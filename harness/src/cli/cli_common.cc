@@ -1,6 +1,10 @@
 // What the subcommands share: finding executables and loading a scenario.
+#include <cerrno>
 #include <cstdio>
 #include <filesystem>
+#include <stdexcept>
+
+#include <sys/stat.h>
 
 #include "hil/harness/cli/commands.h"
 #include "hil/harness/scenario/yaml_reader.h"
@@ -19,6 +23,28 @@ std::string SiblingExecutable(const std::string& name) {
   const fs::path candidate = fs::path(SelfExecutable()).parent_path() / name;
   std::error_code ec;
   return fs::exists(candidate, ec) ? candidate.string() : name;  // else rely on PATH
+}
+
+std::string DefaultRunFolder(const std::string& scenario_name, std::uint64_t seed) {
+  std::string name;
+  for (const char c : scenario_name) {
+    const bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                       c == '-' || c == '_' || c == '.' || c == '+';
+    name += plain ? c : '_';
+  }
+  if (name.empty() || name.find_first_not_of('.') == std::string::npos) name = "_" + name;
+  const std::string base = "runs/" + name + "-seed" + std::to_string(seed);
+  std::error_code ec;
+  fs::create_directories("runs", ec);
+  // mkdir claims the folder: two runs started at once never get the same one
+  for (int k = 1; k <= kMaxRunFolderSuffix; ++k) {
+    const std::string dir = k == 1 ? base : base + "-" + std::to_string(k);
+    if (mkdir(dir.c_str(), 0755) == 0) return dir;
+    if (errno != EEXIST) break;
+  }
+  throw std::runtime_error("cannot make a new run folder " + base + "[-N] (" +
+                           std::to_string(kMaxRunFolderSuffix) +
+                           " taken, or runs/ is not writable): give one with --out");
 }
 
 std::optional<harness::Scenario> LoadOrReport(

@@ -81,7 +81,9 @@ void Declare(CLI::App& app, RunArgs& a) {
   a.cmd = app.add_subcommand("run", "Run a scenario end to end and evaluate the estimator");
   a.cmd->add_option("SCENARIO", a.scenario,
                     "scenario file (YAML); omitted: the embedded default scenario");
-  a.cmd->add_option("--out", a.out, "run folder (default: runs/<scenario name>)");
+  a.cmd->add_option("--out", a.out,
+                    "run folder (default: runs/<scenario name>-seed<N>, with -2, -3, ... added "
+                    "when it exists)");
   a.seed_opt = a.cmd->add_option("--seed", a.seed, "random seed (overrides the scenario's)");
   a.cmd
       ->add_option("--mode", a.mode,
@@ -138,7 +140,6 @@ int Execute(const RunArgs& a) {
     return kExitBadInput;
   }
   hil::harness::RunOptions opt;
-  opt.out_dir = a.out.empty() ? "runs/" + scenario->name : a.out;
   if (*a.seed_opt) opt.seed = a.seed;
   opt.mode = a.mode == "virtual" ? RunMode::kVirtual : RunMode::kRealtime;
   opt.speed = a.speed;
@@ -151,6 +152,8 @@ int Execute(const RunArgs& a) {
   opt.free_running = a.free_running;
   opt.nice = a.nice;
   try {
+    opt.out_dir =
+        a.out.empty() ? DefaultRunFolder(scenario->name, opt.seed.value_or(scenario->seed)) : a.out;
     const hil::harness::RunReport report = hil::harness::RunScenario(*scenario, opt);
     PrintSummary(report, opt.out_dir);
     return report.pass() ? kExitPass : kExitFail;

@@ -29,9 +29,18 @@ void EstimateCollector::set_json_observer(JsonObserver f) {
 }
 
 void EstimateCollector::Keep(const std::string& line) {
+  ++lines_;
+  if (kept_bytes_ + line.size() + 1 > keep_limit_) {
+    ++not_kept_;
+    return;
+  }
+  kept_bytes_ += line.size() + 1;
   raw_ << line << "\n";  // flushed once per Poll()
   raw_unflushed_ = true;
-  ++lines_;
+}
+
+std::uint64_t EstimateCollector::output_bytes() const {
+  return (process_ ? process_->output_bytes() : 0) + pty_bytes_;
 }
 
 void EstimateCollector::ConsumeScanned(const std::string& line, std::int64_t wall_ns,
@@ -101,7 +110,7 @@ void EstimateCollector::Take() {
     for (const OutputLine& l : lines) {
       // with a pty output, stdout is only kept (diagnostics), never parsed as solutions
       if (nav_pty_)
-        raw_ << "# stdout: " << l.text << "\n", raw_unflushed_ = true;
+        Keep("# stdout: " + l.text);
       else if (l.scanned)
         ConsumeScanned(l.text, l.wall_ns, *l.scanned);
       else
@@ -114,6 +123,7 @@ void EstimateCollector::Take() {
     if (!rx.empty()) {
       const std::int64_t now = link::RealtimePacer::MonotonicNs();
       pty_last_ns_ = now;
+      pty_bytes_ += rx.size();
       pty_partial_ += rx;
       std::size_t pos;
       while ((pos = pty_partial_.find('\n')) != std::string::npos) {
@@ -121,6 +131,10 @@ void EstimateCollector::Take() {
         if (!line.empty() && line.back() == '\r') line.pop_back();
         pty_partial_.erase(0, pos + 1);
         if (!line.empty()) Consume(line, now);
+      }
+      if (pty_partial_.size() > EstimatorProcess::kMaxLineBytes) {  // no line: kept cut short
+        Consume(pty_partial_.substr(0, EstimatorProcess::kMaxLineBytes), now);
+        pty_partial_.clear();
       }
     }
   }

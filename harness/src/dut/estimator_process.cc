@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
@@ -77,6 +78,7 @@ void EstimatorProcess::ReadLoop() {
   std::string partial;
   char buf[4096];
   std::vector<OutputLine> got;
+  bool skip_to_newline = false;  // the rest of an overlong line
   for (;;) {
     const ssize_t n = read(stdout_fd_, buf, sizeof buf);
     if (n < 0 && errno == EINTR) continue;
@@ -85,32 +87,60 @@ void EstimatorProcess::ReadLoop() {
       break;
     }
     const std::int64_t now = link::RealtimePacer::MonotonicNs();
-    partial.append(buf, static_cast<std::size_t>(n));
+    output_bytes_ += static_cast<std::uint64_t>(n);
+    std::string_view in(buf, static_cast<std::size_t>(n));
+    if (skip_to_newline) {
+      const std::size_t nl = in.find('\n');
+      if (nl == std::string_view::npos) continue;
+      in.remove_prefix(nl + 1);
+      skip_to_newline = false;
+    }
+    partial.append(in);
     got.clear();
     std::size_t pos;
     while ((pos = partial.find('\n')) != std::string::npos) {
-      OutputLine l{partial.substr(0, pos), now, nullptr, nullptr};
+      got.push_back(MakeLine(partial.substr(0, pos), now));
       partial.erase(0, pos + 1);
-      if (scan_solutions_ && !l.text.empty() && l.text.front() == '{') {
-        if (auto scan = scanner_.Scan(l.text))
-          l.scanned = std::make_shared<const JsonSolutionLine>(std::move(*scan));
-      }
-      if (!l.scanned && parse_json_ && !l.text.empty() && l.text.front() == '{') {
-        l.json =
-            std::make_shared<const nlohmann::json>(nlohmann::json::parse(l.text, nullptr, false));
-      }
-      got.push_back(std::move(l));
+    }
+    if (partial.size() > kMaxLineBytes) {  // kept cut short; the rest of it is skipped
+      got.push_back(MakeLine(partial.substr(0, kMaxLineBytes), now));
+      partial.clear();
+      skip_to_newline = true;
+      ++overlong_lines_;
     }
     if (got.empty()) continue;
-    std::vector<OutputLine> used;
-    {
-      std::lock_guard<std::mutex> lock(mu_);
-      for (OutputLine& l : got) lines_.push_back(std::move(l));
-      last_output_wall_ns_ = now;
-      used.swap(used_);
-    }
-    // `used` frees here, on the thread that allocated its lines, outside the lock
+    Queue(got, now);
   }
+}
+
+OutputLine EstimatorProcess::MakeLine(std::string text, std::int64_t now) {
+  OutputLine l{std::move(text), now, nullptr, nullptr};
+  if (scan_solutions_ && !l.text.empty() && l.text.front() == '{') {
+    if (auto scan = scanner_.Scan(l.text))
+      l.scanned = std::make_shared<const JsonSolutionLine>(std::move(*scan));
+  }
+  if (!l.scanned && parse_json_ && !l.text.empty() && l.text.front() == '{') {
+    l.json = std::make_shared<const nlohmann::json>(nlohmann::json::parse(l.text, nullptr, false));
+  }
+  return l;
+}
+
+void EstimatorProcess::Queue(std::vector<OutputLine>& got, std::int64_t now) {
+  std::vector<OutputLine> used;
+  {
+    std::lock_guard<std::mutex> lock(mu_);
+    for (OutputLine& l : got) {
+      if (queued_bytes_ + l.text.size() > kMaxQueuedBytes) {  // the run cannot keep up: dropped
+        dropped_bytes_ += l.text.size() + 1;
+        continue;
+      }
+      queued_bytes_ += l.text.size() + 1;
+      lines_.push_back(std::move(l));
+    }
+    last_output_wall_ns_ = now;
+    used.swap(used_);
+  }
+  // `used` frees here, on the thread that allocated its lines, outside the lock
 }
 
 void EstimatorProcess::Reap(int status) {
@@ -136,6 +166,7 @@ std::vector<OutputLine> EstimatorProcess::TakeLines() {
   std::lock_guard<std::mutex> lock(mu_);
   std::vector<OutputLine> out;
   out.swap(lines_);
+  queued_bytes_ = 0;
   return out;
 }
 

@@ -1,12 +1,14 @@
 #include "hil/harness/dut/shell_spawn.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
 
+#include <sys/prctl.h>
 #include <sys/wait.h>
 
 namespace hil::harness {
@@ -14,7 +16,11 @@ namespace {
 
 // In the child, between fork and exec: async-signal-safe calls only. Sends errno on `report_fd`
 // (closed by a successful exec) when the exec fails.
-[[noreturn]] void ExecShell(const char* line, const SpawnTarget& t, int report_fd) {
+[[noreturn]] void ExecShell(const char* line, const SpawnTarget& t, int report_fd, pid_t parent) {
+  // dies with hil's main thread (which spawns every host process and lives as long as the run),
+  // even by SIGKILL; a parent already gone before the call left it an orphan: end now
+  prctl(PR_SET_PDEATHSIG, SIGKILL);
+  if (getppid() != parent) _exit(127);
   setpgid(0, t.pgid);
   const int devnull = open("/dev/null", O_RDWR);
   if (devnull >= 0) dup2(devnull, STDIN_FILENO);
@@ -33,6 +39,7 @@ pid_t SpawnShell(const std::string& shell_line, const SpawnTarget& target) {
   int report[2];
   if (pipe2(report, O_CLOEXEC) != 0)
     throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
+  const pid_t parent = getpid();
   const pid_t pid = fork();
   if (pid < 0) {
     const int err = errno;
@@ -40,7 +47,7 @@ pid_t SpawnShell(const std::string& shell_line, const SpawnTarget& target) {
     close(report[1]);
     throw std::runtime_error(std::string("fork: ") + std::strerror(err));
   }
-  if (pid == 0) ExecShell(shell_line.c_str(), target, report[1]);
+  if (pid == 0) ExecShell(shell_line.c_str(), target, report[1], parent);
   setpgid(pid, target.pgid == 0 ? pid : target.pgid);  // either side may run first
   close(report[1]);
   // the exec closes the pipe's write end (end of file); a failed exec sends its errno first

@@ -287,6 +287,14 @@ nlohmann::json ClosedLoopJson(const ClosedLoopReport& c) {
   return j;
 }
 
+nlohmann::json EstimatorJson(const RunReport& r) {
+  return {{"command", r.estimator_command},
+          {"output", r.estimator_output},
+          {"exit", r.estimator_exit},
+          {"pid", r.estimator_pid},
+          {"solutions_outside_run", r.solutions_outside_run}};
+}
+
 }  // namespace
 
 void WriteReportJson(const RunReport& r, const std::string& path) {
@@ -332,10 +340,7 @@ void WriteReportJson(const RunReport& r, const std::string& path) {
                              {"value", OptionalJson(c.value)},
                              {"pass", c.pass}});
   }
-  j["estimator"] = {{"command", r.estimator_command},
-                    {"output", r.estimator_output},
-                    {"exit", r.estimator_exit},
-                    {"pid", r.estimator_pid}};
+  j["estimator"] = EstimatorJson(r);
   j["estimator_exit"] = r.estimator_exit;
   j["speed"] = r.speed;
   j["faults"] = nlohmann::json::array();

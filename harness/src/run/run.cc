@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "hil/harness/dut/group_reaper.h"
+#include "hil/harness/run/folder_lock.h"
 #include "hil/harness/run/run_context.h"
 #include "hil/harness/run/run_guard.h"
 #include "hil/harness/run/run_watchdog.h"
@@ -16,24 +18,17 @@ std::string ModeName(RunMode mode, double speed) {
   return std::abs(speed - 1.0) < 1e-12 ? "realtime" : "scaled";
 }
 
-std::string Substitute(const std::string& text,
-                       const std::vector<std::pair<std::string, std::string>>& vars) {
-  std::string out = text;
-  for (const auto& [key, value] : vars) {
-    const std::string pattern = "{" + key + "}";
-    for (std::size_t pos = 0; (pos = out.find(pattern, pos)) != std::string::npos;
-         pos += value.size()) {
-      out.replace(pos, pattern.size(), value);
-    }
-  }
-  return out;
-}
-
 RunReport RunScenario(const Scenario& scenario, const RunOptions& options) {
   // Ctrl-C / SIGTERM: stop the estimator, write an incomplete report. Made before the context
   // and gone after it: the captures' last writes (the endpoints' destructors) happen under it.
   const InterruptGuard interrupt_guard;
+  // the folder, locked; the reaper (forked here, before the run's threads) keeps the lock until
+  // every process the run started has ended, even when hil is killed (group_reaper.h)
+  MakeRunFolder(options.out_dir);
+  const FolderLock lock(options.out_dir, kRunLockName);
+  GroupReaper reaper(lock.fd());
   RunContext ctx(scenario, options);
+  ctx.reaper = &reaper;
   ClearWriteFailures();
   // before the run's threads and hosts start: they inherit it
   const RunPriority priority = SetProcessNice(options.nice);
@@ -50,6 +45,7 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& options) {
   Execute(ctx, watchdog);
   Drain(ctx);
   StopEstimator(ctx);
+  if (ctx.estimator) reaper.Release(ctx.estimator->pid());
   RunEvaluation evaluation = Evaluate(ctx);
   WriteRunFolder(ctx, evaluation);
   return ctx.report;

@@ -15,6 +15,11 @@ OwnedFd::~OwnedFd() {
   if (fd >= 0) close(fd);
 }
 
+std::uint64_t OutputBudgetBytes(double t_s) {
+  return kOutputBaseBytes + static_cast<std::uint64_t>(
+                                std::max(0.0, t_s) * static_cast<double>(kOutputBytesPerEmulatedS));
+}
+
 std::string SecondsText(double s) {
   char b[32];
   std::snprintf(b, sizeof b, "%g", s);
@@ -48,6 +53,14 @@ bool RunContext::Interrupted() {
                                     : "SIGHUP") +
                   " at t = " + SecondsText(t_now) + " s of " + SecondsText(scenario.duration_s) +
                   " s";
+  } else if (collector && collector->output_bytes() > OutputBudgetBytes(ToSeconds(t_now))) {
+    stop_reason = "the estimator floods its output: " + std::to_string(collector->output_bytes()) +
+                  " bytes by t = " + SecondsText(t_now) + " s, more than the " +
+                  std::to_string(OutputBudgetBytes(ToSeconds(t_now))) + " allowed by then (" +
+                  std::to_string(kOutputBaseBytes) + " + " +
+                  std::to_string(kOutputBytesPerEmulatedS) +
+                  " per emulated second); the rest of its output was not kept";
+    collector->set_keep_limit(collector->bytes_kept());
   } else if (const auto file = FirstWriteFailure()) {
     stop_reason = "cannot write " + *file +
                   " (disk full, file size limit or folder removed) at t = " + SecondsText(t_now) +

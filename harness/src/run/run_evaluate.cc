@@ -25,6 +25,43 @@ namespace {
 // and the entries into a row are not row following. Our choice (the paper gives none).
 constexpr double kRowMargin_m = 1.0;
 
+// A solution dated more than this before the run's start or after its end describes no time of
+// the run (its clock or its time stamps are wrong). Our choice: 1 s, far beyond any estimator's
+// latency, so that no solution of a working estimator is counted.
+constexpr double kOutOfRunMarginS = 1.0;
+
+// Solutions dated outside the run are not scored; they are a problem, not silence (issue 40.5:
+// solutions ten years ahead, or at the largest time stamp, left a run "complete" and passing).
+void CheckSolutionDates(RunContext& ctx, const std::vector<EstimateRecord>& estimates,
+                        std::size_t scored) {
+  RunReport& report = ctx.report;
+  const Time first = TimeFromSeconds(-kOutOfRunMarginS);
+  const Time last = ctx.t_end + DurationFromSeconds(kOutOfRunMarginS);
+  std::size_t outside = 0;
+  std::optional<double> example_s;
+  for (const EstimateRecord& e : estimates) {
+    if (e.t_validity >= first && e.t_validity <= last) continue;
+    if (!example_s) example_s = ToSeconds(e.t_validity);
+    ++outside;
+  }
+  report.solutions_outside_run = outside;
+  if (outside > 0) {
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "%zu of %zu solutions are dated outside the run (before t = %g s or after t = "
+                  "%g s; the first at t = %.6g s): they were not scored",
+                  outside, estimates.size(), -kOutOfRunMarginS,
+                  ToSeconds(ctx.t_end) + kOutOfRunMarginS, *example_s);
+    report.problems.emplace_back(text);
+  }
+  if (!estimates.empty() && scored == 0) {
+    report.problems.push_back(
+        "no solution was scored: none of the " + std::to_string(estimates.size()) +
+        " solutions is dated within the evaluated span (" + SecondsText(ToSeconds(ctx.t_from)) +
+        " to " + SecondsText(ToSeconds(ctx.t_end)) + " s) with a truth to compare");
+  }
+}
+
 // The point the estimate describes: navd fusing the IMU board reports the board (its body origin
 // is the IMU); a GNSS-only navd reports the antenna.
 Eigen::Vector3d EstimatedPoint(const Scenario& scenario, const RunOptions& opt) {
@@ -68,10 +105,17 @@ void EvaluateTiming(RunContext& ctx, const std::vector<EstimateRecord>& estimate
 // counted k resets.
 void CountLinksAndDevices(RunContext& ctx) {
   RunReport& report = ctx.report;
+  // real time (not lockstep) has no gate to notice a host that does not read: a link it never
+  // took a byte of is that (a few bytes lost while it starts are a UART's with no listener yet)
+  const bool free_running = ctx.pacer && !ctx.lockstep && ctx.estimator;
   for (const auto& ports : ctx.set.endpoints) {
     for (const auto& ep : ports) {
       report.gnss_bytes += ep->uart().bytes_sent();
       report.gnss_messages_dropped += ep->uart().messages_dropped();
+      const std::uint64_t dropped = ep->bytes_dropped_unread();
+      if (free_running && ctx.HostReads(*ep) && dropped > 0 && ep->schedule_error_us().empty())
+        report.problems.push_back("the estimator never read " + ep->link_name() + " (all " +
+                                  std::to_string(dropped) + " bytes sent were dropped unread)");
     }
   }
   if (ctx.set.can) AddCanBusReport(*ctx.set.can, ctx.collector->bus_frames_per_pgn(), report);
@@ -96,6 +140,19 @@ void EvaluateFaultsAndCriteria(RunContext& ctx, const std::vector<ErrorSample>& 
   report.fault_messages_dropped = ctx.byte_faults->messages_dropped();
   report.fault_bytes_corrupted = ctx.byte_faults->bytes_corrupted();
   report.wall_time_s = static_cast<double>(NowNs() - ctx.wall_start_ns) * 1e-9;
+  const std::uint64_t dropped = ctx.estimator ? ctx.estimator->dropped_bytes() : 0;
+  if (dropped > 0 || ctx.collector->lines_not_kept() > 0) {
+    report.problems.push_back(
+        "the estimator's output was not all kept: " + std::to_string(dropped) +
+        " bytes dropped unread by the run, " + std::to_string(ctx.collector->lines_not_kept()) +
+        " lines not written to " + (ctx.nav_pty ? "estimate.nmea" : "estimate.jsonl") +
+        " (it keeps " + std::to_string(ctx.collector->bytes_kept()) + " bytes)");
+  }
+  if (ctx.estimator && ctx.estimator->overlong_lines() > 0) {
+    std::fprintf(stderr, "hil: %llu estimator output line(s) longer than %zu bytes were cut\n",
+                 static_cast<unsigned long long>(ctx.estimator->overlong_lines()),
+                 EstimatorProcess::kMaxLineBytes);
+  }
   if (ctx.collector->unparsed_lines() > 0) {
     std::fprintf(stderr, "hil: %zu estimator output line(s) were not solutions (kept in %s)\n",
                  ctx.collector->unparsed_lines(), ctx.nav_pty ? "estimate.nmea" : "estimate.jsonl");
@@ -304,6 +361,7 @@ RunEvaluation Evaluate(RunContext& ctx) {
   AddCrossTrack(ev.estimate_errors, path);
   AddCrossTrack(ev.fix_errors, path);
   report.metrics = ComputeAccuracy(ev.estimate_errors);
+  if (!ctx.options.emulate_only) CheckSolutionDates(ctx, estimates, report.metrics.samples);
   report.baselines = ComputeAccuracy(ev.fix_errors);
   EvaluateTiming(ctx, estimates, ev.series);
   report.outages =

@@ -96,6 +96,8 @@ void DrainOutput(RunContext& ctx) {
         ctx.hang = "no output for " + SecondsText(ctx.silence_s) + " s";
       break;
     }
+    // an estimator that keeps talking once its input is read has had the silence timeout to end
+    if (NowNs() - drain_start > ctx.silence_ns) break;
     usleep(ctx.gate ? kIdleCheckUs : 10000);
   }
 }

@@ -7,8 +7,11 @@
 
 namespace hil::harness {
 
-/// The run folder, the report's header, the devices and their links, navd.conf, the process
-/// under test and the reader of its output. @throws std::runtime_error for setup failures.
+/// Creates the run folder `out_dir` (and its parents). @throws std::runtime_error when it cannot
+/// be written.
+void MakeRunFolder(const std::string& out_dir);
+/// The run folder's captures/, the report's header, the devices and their links, navd.conf, the
+/// process under test and the reader of its output. @throws std::runtime_error for setup failures.
 void Prepare(RunContext& ctx);
 /// The scheduler from t = 0 to the end (or an early stop), watched by `watchdog`; then the bytes
 /// still queued and the captures go out.

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <sys/stat.h>
 
+#include "hil/harness/dut/shell_substitute.h"
 #include "hil/harness/report/run_outputs.h"
 #include "hil/harness/run/can_run.h"
 
@@ -71,14 +72,7 @@ void AddControllerLinks(RunContext& ctx) {
   if (!all) ctx.host_links.insert(ctx.controller_links.begin(), ctx.controller_links.end());
 }
 
-void MakeRunFolder(const RunContext& ctx) {
-  const std::string& out_dir = ctx.options.out_dir;
-  std::error_code ec;
-  fs::create_directories(out_dir, ec);
-  if (ec || access(out_dir.c_str(), W_OK) != 0) {
-    throw std::runtime_error("cannot write the output folder " + out_dir +
-                             (ec ? ": " + ec.message() : ""));
-  }
+void MakeCapturesFolder(const RunContext& ctx) {
   CheckCanRunMode(ctx.scenario, ctx.options);
   fs::create_directories(ctx.dir + "/captures");
 }
@@ -122,6 +116,7 @@ void StartEstimator(RunContext& ctx, const std::string& command) {
   }
   ctx.estimator.emplace(command, ctx.dir + "/estimator.stderr");
   ctx.report.estimator_pid = ctx.estimator->pid();
+  if (ctx.reaper) ctx.reaper->Watch(ctx.estimator->pid());  // its group dies with hil
   // time for the program to open its devices (gpsd flushes a tty's input when it opens it)
   if (ctx.scenario.estimator.startup_s > 0)
     usleep(static_cast<useconds_t>(ctx.scenario.estimator.startup_s * 1e6));
@@ -178,10 +173,19 @@ void StartController(RunContext& ctx) {
 
 }  // namespace
 
+void MakeRunFolder(const std::string& out_dir) {
+  std::error_code ec;
+  fs::create_directories(out_dir, ec);
+  if (ec || access(out_dir.c_str(), W_OK) != 0) {
+    throw std::runtime_error("cannot write the output folder " + out_dir +
+                             (ec ? ": " + ec.message() : ""));
+  }
+}
+
 void Prepare(RunContext& ctx) {
   const Scenario& scenario = ctx.scenario;
   const RunOptions& opt = ctx.options;
-  MakeRunFolder(ctx);
+  MakeCapturesFolder(ctx);
   StartReport(ctx);
   ctx.set = BuildDevices(scenario, ctx.seed, ctx.dir);
   const std::string raw_command = opt.estimator_command.value_or(scenario.estimator.command);
@@ -226,6 +230,8 @@ void Prepare(RunContext& ctx) {
   ctx.collector.emplace(MakeEstimateReader(scenario.estimator.output, scenario.start_unix_ns),
                         ctx.estimator ? &*ctx.estimator : nullptr, ctx.nav_pty.get(),
                         ctx.dir + (ctx.nav_pty ? "/estimate.nmea" : "/estimate.jsonl"));
+  // the raw output kept: at most what a whole run may write (a flood stops the run sooner)
+  ctx.collector->set_keep_limit(OutputBudgetBytes(scenario.duration_s));
   EstimatorHealth& health = ctx.health;
   ctx.collector->set_line_observer([&health](const std::string& line) { health.AddLine(line); });
   ctx.collector->set_json_observer(

@@ -4,6 +4,7 @@
 /// app and returns how to run it; main() only parses and dispatches. Exit codes: 0 every
 /// criterion passed (validate: conforms), 1 one failed, 2 bad input.
 
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
@@ -36,6 +37,13 @@ Subcommand AddCampaign(CLI::App& app);  ///< hil campaign (and its status, merge
 std::string SelfExecutable();
 /// `name` beside this executable if it is there, else `name` (found on PATH).
 std::string SiblingExecutable(const std::string& name);
+/// How many runs of one scenario and seed the default folders tell apart (runs/NAME-seedN-999).
+inline constexpr int kMaxRunFolderSuffix = 999;
+/// `hil run`'s default folder, made here: runs/<name>-seed<seed>, or the first of
+/// runs/<name>-seed<seed>-2, -3, ... that does not exist yet (a rerun never overwrites an earlier
+/// run). Characters of the name other than letters, digits and `-_.+` become `_`.
+/// @throws std::runtime_error when no folder can be made.
+std::string DefaultRunFolder(const std::string& scenario_name, std::uint64_t seed);
 /// The scenario at `path` (empty: the embedded default); an invalid one is reported on stderr.
 std::optional<harness::Scenario> LoadOrReport(
     const std::string& path, bool short_form = false,

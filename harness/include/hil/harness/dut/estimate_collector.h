@@ -51,6 +51,13 @@ class EstimateCollector {
     std::function<void(const JsonSolutionLine&)> scanned;
   };
   void set_json_observer(JsonObserver f);
+  /// The raw file keeps at most `bytes` (lines past it are counted, not written).
+  void set_keep_limit(std::uint64_t bytes) { keep_limit_ = bytes; }
+  /// Bytes of output so far (stdout, or the pty of output nmea_pty), kept or not.
+  std::uint64_t output_bytes() const;
+  /// Lines not written to the raw file: past the keep limit, or dropped before they were taken.
+  std::uint64_t lines_not_kept() const { return not_kept_; }
+  std::uint64_t bytes_kept() const { return kept_bytes_; }
 
  private:
   /// Poll's work, without the flush of the raw lines.
@@ -71,6 +78,7 @@ class EstimateCollector {
   std::int64_t pty_last_ns_ = 0;
   std::vector<EstimateRecord> records_;
   std::size_t lines_ = 0, unparsed_ = 0;
+  std::uint64_t keep_limit_ = UINT64_MAX, kept_bytes_ = 0, not_kept_ = 0, pty_bytes_ = 0;
   std::string raw_path_;
   std::function<void(const std::string&)> observer_;
   JsonObserver json_observer_;

@@ -49,6 +49,12 @@ std::string ShellCommandLine(const std::string& command);
 
 class EstimatorProcess {
  public:
+  /// A line longer than this is kept cut to it (the rest of it is skipped and counted).
+  static constexpr std::size_t kMaxLineBytes = 64 * 1024;
+  /// Lines read but not yet taken are held up to this many bytes; more are dropped and counted
+  /// (an estimator writing faster than the run takes its lines: RunWatchdog stops such a flood).
+  static constexpr std::size_t kMaxQueuedBytes = 64 * 1024 * 1024;
+
   /// Starts `command` with /bin/sh -c (see ShellCommandLine); stderr goes to `stderr_path`.
   /// @throws std::runtime_error if the process cannot be started.
   EstimatorProcess(const std::string& command, const std::string& stderr_path);
@@ -79,9 +85,16 @@ class EstimatorProcess {
   /// Scan JSON lines on the reader thread first (see OutputLine::scanned); the lines the scanner
   /// does not answer are parsed as set_parse_json says.
   void set_scan_solutions(bool on) { scan_solutions_ = on; }
+  /// Bytes read from its stdout so far (all of them, kept or not).
+  std::uint64_t output_bytes() const { return output_bytes_.load(); }
+  /// Bytes of lines dropped because the queue was full; lines cut at kMaxLineBytes.
+  std::uint64_t dropped_bytes() const { return dropped_bytes_.load(); }
+  std::uint64_t overlong_lines() const { return overlong_lines_.load(); }
 
  private:
   void ReadLoop();
+  OutputLine MakeLine(std::string text, std::int64_t now);
+  void Queue(std::vector<OutputLine>& got, std::int64_t now);
   bool GroupAlive() const;
   void Reap(int status);
   int pid_ = -1;
@@ -90,6 +103,8 @@ class EstimatorProcess {
   std::mutex mu_;
   std::vector<OutputLine> lines_;
   std::vector<OutputLine> used_;  // given back by ReturnLines, freed by the reader thread
+  std::size_t queued_bytes_ = 0;  // of lines_ (under mu_)
+  std::atomic<std::uint64_t> output_bytes_{0}, dropped_bytes_{0}, overlong_lines_{0};
   std::atomic<std::int64_t> last_output_wall_ns_{0};
   std::atomic<bool> stdout_closed_{false};  // the reader saw end of file
   std::atomic<bool> parse_json_{false};

@@ -16,12 +16,14 @@ struct SpawnTarget {
   int stderr_fd = -1;  ///< becomes the child's stderr (-1: /dev/null)
 };
 
-/// Forks, puts the child in `target.pgid`, gives it stdin from /dev/null and the target's stdout
-/// and stderr, and execs `/bin/sh -c shell_line`. Returns the child's pid once the exec has
-/// happened: until then the child is a copy of hil holding every descriptor hil holds (the ptys'
-/// slaves too), and a look at the group's open files, as the first host turn takes, would count
-/// hil's links as opened by the host (a navd started late was then never waited for). Throws
-/// std::runtime_error when the fork or the exec fails (the child is reaped).
+/// Forks, gives the child PR_SET_PDEATHSIG SIGKILL (it dies with the calling thread, which must
+/// live as long as the run: hil's main thread; group_reaper.h), puts it in `target.pgid`, gives it
+/// stdin from /dev/null and the target's stdout and stderr, and execs `/bin/sh -c shell_line`.
+/// Returns the child's pid once the exec has happened: until then the child is a copy of hil
+/// holding every descriptor hil holds (the ptys' slaves too), and a look at the group's open files,
+/// as the first host turn takes, would count hil's links as opened by the host (a navd started late
+/// was then never waited for). Throws std::runtime_error when the fork or the exec fails (the child
+/// is reaped).
 pid_t SpawnShell(const std::string& shell_line, const SpawnTarget& target);
 
 }  // namespace hil::harness

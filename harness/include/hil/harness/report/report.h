@@ -75,6 +75,9 @@ struct RunReport {
   std::string estimator_command, estimator_output, estimator_exit;
   std::string controller_command;  ///< closed loop: the controller's command (substituted)
   int estimator_pid = 0;           ///< process (and process group) id of the estimator, 0 when none
+  /// Solutions dated more than 1 s before the run's start or after its end (not scored; a
+  /// problem when any).
+  std::size_t solutions_outside_run = 0;
   double wall_time_s = 0, sim_time_s = 0, speed = 1.0;
   int nice_requested = 0, nice = 0;  ///< the run's processes' nice value (run_priority.h)
   std::string nice_refused;          ///< why the nice value asked for was not granted

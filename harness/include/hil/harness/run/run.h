@@ -59,8 +59,4 @@ std::string ModeName(RunMode mode, double speed);
 /// @throws std::runtime_error for setup failures (unwritable folder, estimator cannot start).
 RunReport RunScenario(const Scenario& scenario, const RunOptions& options);
 
-/// Replaces every "{key}" in `text` whose key is in the map.
-std::string Substitute(const std::string& text,
-                       const std::vector<std::pair<std::string, std::string>>& vars);
-
 }  // namespace hil::harness

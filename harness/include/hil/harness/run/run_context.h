@@ -18,6 +18,7 @@
 #include "hil/harness/dut/controller_process.h"
 #include "hil/harness/dut/estimate_collector.h"
 #include "hil/harness/dut/estimator_process.h"
+#include "hil/harness/dut/group_reaper.h"
 #include "hil/harness/faults/byte_faults.h"
 #include "hil/harness/faults/fault_record.h"
 #include "hil/harness/faults/fault_report.h"
@@ -55,6 +56,9 @@ struct RunContext {
   std::int64_t silence_ns;
   Time t_end, t_from;  ///< the scenario's end; the first time evaluated
   RunReport report;
+
+  /// Kills the run's process groups if hil dies (group_reaper.h); set by RunScenario.
+  GroupReaper* reaper = nullptr;
 
   // prepare
   FaultRecorder fault_recorder;
@@ -112,6 +116,17 @@ struct RunContext {
   /// Nothing stopped the run early so far and the estimator still runs.
   bool Healthy() { return !hang && !stop_reason && EstimatorRunning(); }
 };
+
+/// An estimator's output (stdout, or its NMEA pty) may reach kOutputBaseBytes plus
+/// kOutputBytesPerEmulatedS per emulated second so far; more is a flood that stops the run
+/// (issue 40.2: `cat /dev/urandom` as the estimator froze a virtual run at t = 0.6 s and wrote
+/// 4.2 GB). Our choice: navd fusing GNSS and IMU at 10 Hz writes 8.6 kB per emulated second
+/// (seed000_gps_imu --short: 1 028 945 bytes in 120 s), so the budget leaves it 7x; the base
+/// covers a verbose start.
+inline constexpr std::uint64_t kOutputBaseBytes = 16ull << 20;
+inline constexpr std::uint64_t kOutputBytesPerEmulatedS = 64ull << 10;
+/// The output allowed by emulated time `t_s` (s).
+std::uint64_t OutputBudgetBytes(double t_s);
 
 /// Wall-clock now (CLOCK_MONOTONIC, ns).
 inline std::int64_t NowNs() { return link::RealtimePacer::MonotonicNs(); }
