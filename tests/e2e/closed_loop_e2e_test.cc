@@ -72,6 +72,31 @@ TEST(ClosedLoopE2eTest, KillingTheControllerStopsTheBaseOnItsWatchdog) {
   EXPECT_TRUE(noted) << rep["fault_injections"].dump(2);
 }
 
+// A controller that cannot start (`exec: …: not found`) left the vehicle unguided: the run is a
+// FAIL with a problem that quotes controller.log, not a pass with `problems: []` (issue 43)
+TEST(ClosedLoopE2eTest, AControllerThatWasNotFoundFailsTheRun) {
+  TempDir dir("e2e_closed_loop_no_controller");
+  const CommandResult r =
+      RunCommand(Hil() + " run " + Scenario("diff_drive_serial.yaml") +
+                 " --short --set duration_s=12 --set evaluation.from_s=6"
+                 " --set 'closed_loop.controller=no_such_guidanced --base {ttyBASE}' --out " +
+                 dir / "r");
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  const auto rep = nlohmann::json::parse(ReadFile(dir / "r/report.json"));
+  EXPECT_FALSE(rep["pass"].get<bool>());
+  const std::string problems = rep["problems"].dump();
+  EXPECT_NE(problems.find("the controller ended before the scenario did: exited with code 127"),
+            std::string::npos)
+      << problems;
+  EXPECT_NE(problems.find("not found"), std::string::npos) << problems;
+  EXPECT_NE(problems.find("the controller sent no command"), std::string::npos) << problems;
+  bool default_judged = false;  // and the default criterion on commanding fails, named
+  for (const auto& c : rep["criteria"]) {
+    if (c.value("default", "") == "controller_commanding") default_judged = !c["pass"].get<bool>();
+  }
+  EXPECT_TRUE(default_judged) << rep["criteria"].dump(2);
+}
+
 // Lockstep in real time and scaled mode (issue 16): the run is virtual mode's, each action held to
 // its wall-clock time, so a closed loop gives virtual mode's bytes both ways, and its truth and
 // estimate, in every mode (the controller's kill at 15 s included).

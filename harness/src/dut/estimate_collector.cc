@@ -32,6 +32,13 @@ void EstimateCollector::Keep(const std::string& line) {
   raw_ << line << "\n";  // flushed once per Poll()
   raw_unflushed_ = true;
   ++lines_;
+  ++raw_lines_;
+}
+
+void EstimateCollector::NotASolution(const std::string& line) {
+  if (unparsed_++ > 0) return;
+  first_unparsed_line_ = raw_lines_;
+  first_unparsed_reason_ = reader_->WhyNotASolution(line);
 }
 
 void EstimateCollector::ConsumeScanned(const std::string& line, std::int64_t wall_ns,
@@ -41,7 +48,7 @@ void EstimateCollector::ConsumeScanned(const std::string& line, std::int64_t wal
   if (auto r = reader_->ScannedLine(scan, wall_ns))
     records_.push_back(*r);
   else
-    ++unparsed_;
+    NotASolution(line);
 }
 
 void EstimateCollector::Consume(const std::string& line, std::int64_t wall_ns,
@@ -62,7 +69,7 @@ void EstimateCollector::Consume(const std::string& line, std::int64_t wall_ns,
   if (r)
     records_.push_back(*r);
   else if (reader_->SolutionsInLines())
-    ++unparsed_;
+    NotASolution(line);
 }
 
 void EstimateCollector::AttachBus(std::function<const std::vector<CanFrame>&()> poll_bus,
@@ -100,12 +107,15 @@ void EstimateCollector::Take() {
     std::vector<OutputLine> lines = process_->TakeLines();
     for (const OutputLine& l : lines) {
       // with a pty output, stdout is only kept (diagnostics), never parsed as solutions
-      if (nav_pty_)
-        raw_ << "# stdout: " << l.text << "\n", raw_unflushed_ = true;
-      else if (l.scanned)
+      if (nav_pty_) {
+        raw_ << "# stdout: " << l.text << "\n";
+        raw_unflushed_ = true;
+        ++raw_lines_;
+      } else if (l.scanned) {
         ConsumeScanned(l.text, l.wall_ns, *l.scanned);
-      else
+      } else {
         Consume(l.text, l.wall_ns, l.json.get());
+      }
     }
     process_->ReturnLines(std::move(lines));
   }
