@@ -97,7 +97,9 @@ TEST(ClosedLoopE2eTest, AControllerThatWasNotFoundFailsTheRun) {
   }
   EXPECT_TRUE(missing_failed) << rep["criteria"].dump(2);
   for (const auto& d : rep["default_criteria"]) {
-    if (d["key"] == "controller_commanding") EXPECT_EQ(d["status"], "superseded") << d.dump();
+    if (d["key"] == "controller_commanding") {
+      EXPECT_EQ(d["status"], "superseded") << d.dump();
+    }
   }
 }
 
@@ -172,7 +174,9 @@ TEST(ClosedLoopE2eTest, RealTimeAndScaledRunsGiveVirtualModesBytes) {
   EXPECT_EQ(frep["closed_loop"]["stepping"], "free_running");
   EXPECT_TRUE(frep["problems"].empty()) << frep["problems"].dump();
   for (const auto& c : frep["criteria"]) {
-    if (!c.contains("default")) EXPECT_TRUE(c["pass"].get<bool>()) << c.dump();
+    if (!c.contains("default")) {
+      EXPECT_TRUE(c["pass"].get<bool>()) << c.dump();
+    }
   }
 }
 
