@@ -72,6 +72,37 @@ TEST(ClosedLoopE2eTest, KillingTheControllerStopsTheBaseOnItsWatchdog) {
   EXPECT_TRUE(noted) << rep["fault_injections"].dump(2);
 }
 
+// A controller that cannot start (`exec: …: not found`) left the vehicle unguided: the run is a
+// FAIL with a problem that quotes controller.log, not a pass with `problems: []` (issue 43)
+TEST(ClosedLoopE2eTest, AControllerThatWasNotFoundFailsTheRun) {
+  TempDir dir("e2e_closed_loop_no_controller");
+  const CommandResult r =
+      RunCommand(Hil() + " run " + Scenario("diff_drive_serial.yaml") +
+                 " --short --set duration_s=12 --set evaluation.from_s=6"
+                 " --set 'closed_loop.controller=no_such_guidanced --base {ttyBASE}' --out " +
+                 dir / "r");
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  const auto rep = nlohmann::json::parse(ReadFile(dir / "r/report.json"));
+  EXPECT_FALSE(rep["pass"].get<bool>());
+  const std::string problems = rep["problems"].dump();
+  EXPECT_NE(problems.find("the controller ended before the scenario did: exited with code 127"),
+            std::string::npos)
+      << problems;
+  EXPECT_NE(problems.find("not found"), std::string::npos) << problems;
+  EXPECT_NE(problems.find("the controller sent no command"), std::string::npos) << problems;
+  // the scenario's own criterion on the missing commands judges them (the default steps aside)
+  bool missing_failed = false;
+  for (const auto& c : rep["criteria"]) {
+    if (c["name"] == "closed_loop.missing_commands <= 0") missing_failed = !c["pass"].get<bool>();
+  }
+  EXPECT_TRUE(missing_failed) << rep["criteria"].dump(2);
+  for (const auto& d : rep["default_criteria"]) {
+    if (d["key"] == "controller_commanding") {
+      EXPECT_EQ(d["status"], "superseded") << d.dump();
+    }
+  }
+}
+
 // Lockstep in real time and scaled mode (issue 16): the run is virtual mode's, each action held to
 // its wall-clock time, so a closed loop gives virtual mode's bytes both ways, and its truth and
 // estimate, in every mode (the controller's kill at 15 s included).
@@ -132,12 +163,21 @@ TEST(ClosedLoopE2eTest, RealTimeAndScaledRunsGiveVirtualModesBytes) {
   const CommandResult rt = RunCommand(serial + " --mode realtime --out " + dir / "r12");
   ASSERT_EQ(rt.exit_code, v12) << rt.out;
   ExpectSameRun(dir / "v12", dir / "r12");
-  // --free-running: bytes at their UART times, commands at their arrival (no lockstep)
+  // --free-running: bytes at their UART times, commands at their arrival (no lockstep). The
+  // estimate then depends on the machine's timing (navd's inputs arrive when the host runs), so the
+  // default criteria on it may go either way on a loaded machine; the scenario's own criteria (the
+  // controller's kill and the base's watchdog) pass
   const CommandResult fr =
       RunCommand(kill + " --mode scaled --speed 12 --free-running --out " + dir / "f");
-  ASSERT_EQ(fr.exit_code, 0) << fr.out;
-  EXPECT_EQ(nlohmann::json::parse(ReadFile(dir / "f/report.json"))["closed_loop"]["stepping"],
-            "free_running");
+  ASSERT_LE(fr.exit_code, 1) << fr.out;
+  const auto frep = nlohmann::json::parse(ReadFile(dir / "f/report.json"));
+  EXPECT_EQ(frep["closed_loop"]["stepping"], "free_running");
+  EXPECT_TRUE(frep["problems"].empty()) << frep["problems"].dump();
+  for (const auto& c : frep["criteria"]) {
+    if (!c.contains("default")) {
+      EXPECT_TRUE(c["pass"].get<bool>()) << c.dump();
+    }
+  }
 }
 
 }  // namespace

@@ -96,11 +96,15 @@ TEST(SuiteShortE2eTest, ReportPutsPapersBesideOursAndPaper000Passes) {
        {"| 39.1 cm |", "| 31.3 cm |", "diverges", "| 23.4 cm |", "| < 11.0 cm |", "max east"}) {
     EXPECT_NE(md.find(figure), std::string::npos) << figure << "\n" << md;
   }
-  // junit: one testsuite per run
+  // junit: one testsuite per run, and one for the criteria across seeds (seed000_gps_imu's
+  // statistical claim, judged here over the two seeds given)
   const std::string junit = ReadFile(dir / "out/junit.xml");
   std::size_t suites = 0;
   for (std::size_t p = 0; (p = junit.find("<testsuite ", p)) != std::string::npos; ++p) ++suites;
-  EXPECT_EQ(suites, 2 * files.size());
+  EXPECT_EQ(suites, 2 * files.size() + 1);
+  ASSERT_EQ(summary["criteria"].size(), 3u) << summary["criteria"].dump(1);
+  EXPECT_EQ(summary["criteria"][0]["scenarios"], "seed000_gps_imu");
+  EXPECT_EQ(summary["criteria"][0]["groups"][0]["n"].get<int>(), 2);
 }
 
 }  // namespace

@@ -102,7 +102,10 @@ TEST(VirtualDeterminismE2eTest, TwoLinksGiveByteIdenticalSolutionsUnderLoad) {
   TempDir dir("e2e_virtual_determinism");
   WriteFile(dir / "s.yaml",
             "name: determinism\ninclude: [rigs/seed004_tractor_rtk.yaml]\nduration_s: 60\nseed: 4\n"
-            "faults:\n  - {kind: gnss_data_gap, start_s: 40, end_s: 45}\n");
+            "faults:\n  - {kind: gnss_data_gap, start_s: 40, end_s: 45}\n"
+            // the same bytes are the point, not the estimate, whose 60 s would fail two defaults:
+            // navd's start-up leaves 8.7 % of the solutions missing, its vertical NEES is 24
+            "default_criteria: {completeness: off, nees_vertical: off}\n");
   const std::string s = dir / "s.yaml";
   RunTwiceSecondUnderLoad(s + " --seed 1", dir);
   if (HasFatalFailure()) return;

@@ -24,14 +24,17 @@ CampaignPlan PlanCampaign(const CampaignSpec& spec) {
     }
   }
   for (std::size_t g = 0; g < plan.groups.size(); ++g) {
-    const std::size_t n = std::max<std::size_t>(1, spec.seeds.size());
+    const auto own = spec.file_seeds.find(plan.groups[g].scenario_file);
+    const std::vector<std::uint64_t>& seeds =
+        own != spec.file_seeds.end() ? own->second : spec.seeds;
+    const std::size_t n = std::max<std::size_t>(1, seeds.size());
     for (std::size_t s = 0; s < n; ++s) {
       CampaignRun r;
       r.index = plan.runs.size();
       r.group = g;
       r.id = plan.groups[g].id;
-      if (!spec.seeds.empty()) {
-        r.seed = spec.seeds[s];
+      if (!seeds.empty()) {
+        r.seed = seeds[s];
         r.id += "-seed" + std::to_string(*r.seed);
       }
       plan.runs.push_back(r);
@@ -60,6 +63,7 @@ json PlanToJson(const CampaignPlan& plan) {
           {"scenario_files", s.scenario_files},
           {"short_form", s.short_form},
           {"seeds", s.seeds},
+          {"file_seeds", s.file_seeds},
           {"combine", s.zip ? "zip" : "cartesian"},
           {"sweep", sweep},
           {"criteria", criteria},
@@ -77,6 +81,8 @@ CampaignPlan PlanFromJson(const json& j) {
     s.scenario_files = j.at("scenario_files").get<std::vector<std::string>>();
     s.short_form = j.at("short_form").get<bool>();
     s.seeds = j.at("seeds").get<std::vector<std::uint64_t>>();
+    if (j.contains("file_seeds"))
+      s.file_seeds = j.at("file_seeds").get<std::map<std::string, std::vector<std::uint64_t>>>();
     s.zip = j.at("combine").get<std::string>() == "zip";
     for (const auto& f : j.at("sweep"))
       s.sweep.push_back(

@@ -123,7 +123,9 @@ void ReadSweep(const YamlReader& root, CampaignSpec& spec) {
   if (spec.sweep.empty()) sw.Fail("fields", "expected at least one swept field");
 }
 
-CampaignCriterion ReadCriterion(const YamlReader& c) {
+}  // namespace
+
+CampaignCriterion ReadCampaignCriterion(const YamlReader& c) {
   c.CheckKeys({"name", "metric", "stat", "max", "min", "pass_fraction", "scenarios"});
   CampaignCriterion k;
   k.scenarios = c.String("scenarios", "");
@@ -153,6 +155,8 @@ CampaignCriterion ReadCriterion(const YamlReader& c) {
   k.name = c.String("name", buf);
   return k;
 }
+
+namespace {
 
 void ReadRunSection(const YamlReader& root, CampaignSpec& spec) {
   const YamlReader r = root.Child("run");
@@ -214,7 +218,7 @@ CampaignSpec ReadCampaignFile(const std::string& path) {
   if (root.Has("sweep")) ReadSweep(root, spec);
   if (root.Has("criteria")) {
     for (const YamlReader& c : root.Child("criteria").Elements())
-      spec.criteria.push_back(ReadCriterion(c));
+      spec.criteria.push_back(ReadCampaignCriterion(c));
   }
   if (root.Has("run")) ReadRunSection(root, spec);
   const auto points = SweepPoints(spec).size();

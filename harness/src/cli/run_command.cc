@@ -62,6 +62,11 @@ void PrintSummary(const hil::harness::RunReport& r, const std::string& dir) {
     std::printf("  [%s] %s (value %s)\n", c.pass ? "PASS" : "FAIL", c.name.c_str(),
                 c.value ? std::to_string(*c.value).c_str() : "n/a");
   }
+  for (const auto& d : r.default_criteria) {
+    if (d.status != "judged" && d.status != "relaxed" && d.status != "tightened")
+      std::printf("  [----] default %s: %s (%s)\n", d.key.c_str(), d.status.c_str(),
+                  d.detail.c_str());
+  }
   for (const auto& p : r.problems) std::printf("  [FAIL] %s\n", p.c_str());
   std::printf("%s  report: %s/report.html\n", r.pass() ? "PASS" : "FAIL", dir.c_str());
 }

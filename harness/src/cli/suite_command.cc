@@ -76,10 +76,10 @@ int Execute(const SuiteArgs& a) {
     }
     const hil::harness::SuiteResult r = hil::harness::RunSuite(opt);
     std::printf(
-        "%s  %zu run(s): %zu passed, %zu failed, %zu invalid  report: %s/report.md, summary.json, "
-        "junit.xml\n",
+        "%s  %zu run(s): %zu passed, %zu failed, %zu invalid; %zu criteria across seeds failed  "
+        "report: %s/report.md, summary.json, junit.xml\n",
         r.exit_code() == 0 ? "PASS" : "FAIL", r.runs, r.passed, r.failed, r.invalid,
-        opt.out_dir.c_str());
+        r.criteria_failed, opt.out_dir.c_str());
     return r.exit_code();
   } catch (const std::exception& e) {
     std::fprintf(stderr, "hil: %s\n", e.what());

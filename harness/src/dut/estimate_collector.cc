@@ -30,6 +30,10 @@ void EstimateCollector::set_json_observer(JsonObserver f) {
 
 void EstimateCollector::Keep(const std::string& line) {
   ++lines_;
+  Store(line);
+}
+
+void EstimateCollector::Store(const std::string& line) {
   if (kept_bytes_ + line.size() + 1 > keep_limit_) {
     ++not_kept_;
     return;
@@ -37,10 +41,17 @@ void EstimateCollector::Keep(const std::string& line) {
   kept_bytes_ += line.size() + 1;
   raw_ << line << "\n";  // flushed once per Poll()
   raw_unflushed_ = true;
+  ++raw_lines_;
 }
 
 std::uint64_t EstimateCollector::output_bytes() const {
   return (process_ ? process_->output_bytes() : 0) + pty_bytes_;
+}
+
+void EstimateCollector::NotASolution(const std::string& line) {
+  if (unparsed_++ > 0) return;
+  first_unparsed_line_ = raw_lines_;
+  first_unparsed_reason_ = reader_->WhyNotASolution(line);
 }
 
 void EstimateCollector::ConsumeScanned(const std::string& line, std::int64_t wall_ns,
@@ -50,7 +61,7 @@ void EstimateCollector::ConsumeScanned(const std::string& line, std::int64_t wal
   if (auto r = reader_->ScannedLine(scan, wall_ns))
     records_.push_back(*r);
   else
-    ++unparsed_;
+    NotASolution(line);
 }
 
 void EstimateCollector::Consume(const std::string& line, std::int64_t wall_ns,
@@ -71,7 +82,7 @@ void EstimateCollector::Consume(const std::string& line, std::int64_t wall_ns,
   if (r)
     records_.push_back(*r);
   else if (reader_->SolutionsInLines())
-    ++unparsed_;
+    NotASolution(line);
 }
 
 void EstimateCollector::AttachBus(std::function<const std::vector<CanFrame>&()> poll_bus,
@@ -109,12 +120,13 @@ void EstimateCollector::Take() {
     std::vector<OutputLine> lines = process_->TakeLines();
     for (const OutputLine& l : lines) {
       // with a pty output, stdout is only kept (diagnostics), never parsed as solutions
-      if (nav_pty_)
-        Keep("# stdout: " + l.text);
-      else if (l.scanned)
+      if (nav_pty_) {
+        Store("# stdout: " + l.text);
+      } else if (l.scanned) {
         ConsumeScanned(l.text, l.wall_ns, *l.scanned);
-      else
+      } else {
         Consume(l.text, l.wall_ns, l.json.get());
+      }
     }
     process_->ReturnLines(std::move(lines));
   }

@@ -61,6 +61,29 @@ JsonSolutionLine SolutionFieldsOf(const nlohmann::json& j) {
   return l;
 }
 
+// Why a json_stdout line is no solution: the first field it lacks or gives wrongly.
+std::string WhyNotAJsonSolution(const std::string& text, std::int64_t start_unix_ns) {
+  const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
+  if (j.is_discarded()) return "not JSON";
+  if (!j.is_object()) return "not a JSON object";
+  for (const char* key : {"lat_deg", "lon_deg"}) {
+    if (!j.contains(key)) return std::string("no \"") + key + "\"";
+    if (!j[key].is_number()) return std::string("\"") + key + "\" is not a number";
+  }
+  if (j.contains("tov_unix_ns")) {
+    if (!j["tov_unix_ns"].is_number_integer())
+      return "\"tov_unix_ns\" is not an integer (UTC nanoseconds)";
+    if (!FromUnixNs(j["tov_unix_ns"].get<std::int64_t>(), start_unix_ns))
+      return "\"tov_unix_ns\" is out of range";
+    return "a solution field is malformed";
+  }
+  if (!j.contains("tov_utc_s")) return "neither \"tov_unix_ns\" nor \"tov_utc_s\"";
+  if (!j["tov_utc_s"].is_number()) return "\"tov_utc_s\" is not a number";
+  if (!FromUnixSeconds(j["tov_utc_s"].get<double>(), start_unix_ns))
+    return "\"tov_utc_s\" is out of range";
+  return "a solution field is malformed";
+}
+
 class JsonLinesReader final : public EstimateReader {
  public:
   explicit JsonLinesReader(std::int64_t start) : start_(start) {}
@@ -73,6 +96,9 @@ class JsonLinesReader final : public EstimateReader {
     return ScannedLine(SolutionFieldsOf(j), wall_ns);
   }
   bool reads_scanned_lines() const override { return true; }
+  std::string WhyNotASolution(const std::string& text) const override {
+    return WhyNotAJsonSolution(text, start_);
+  }
   std::optional<EstimateRecord> ScannedLine(const JsonSolutionLine& l,
                                             std::int64_t wall_ns) override {
     if (!l.lat_deg || !l.lon_deg) return std::nullopt;
@@ -234,6 +260,10 @@ class NoLinesReader final : public EstimateReader {
 };
 
 }  // namespace
+
+std::string EstimateReader::WhyNotASolution(const std::string& /*text*/) const {
+  return "not a solution in the scenario's estimator.output format";
+}
 
 std::unique_ptr<EstimateReader> MakeEstimateReader(EstimatorOutput output,
                                                    std::int64_t start_unix_ns) {

@@ -60,7 +60,10 @@ std::vector<ErrorSample> CompareWithTruth(const TruthTable& truth,
       e.yaw_err_deg = d;
     }
     if (r.pos_std_enu_m && (r.pos_std_enu_m->array() > 0).all()) {
-      e.nees = (e.err_enu_m.array() / r.pos_std_enu_m->array()).square().sum();
+      const Eigen::Array3d z2 = (e.err_enu_m.array() / r.pos_std_enu_m->array()).square();
+      e.nees = z2.sum();
+      e.nees_horizontal = z2.x() + z2.y();
+      e.nees_vertical = z2.z();
     }
     out.push_back(e);
   }
@@ -97,7 +100,7 @@ AccuracyMetrics ComputeAccuracy(const std::vector<ErrorSample>& errors) {
   if (nvel) m.velocity_rmse_mps = std::sqrt(svel / static_cast<double>(nvel));
   if (nyaw) m.heading_rmse_deg = std::sqrt(syaw / static_cast<double>(nyaw));
   std::vector<double> xte;
-  double sxte = 0, snees = 0;
+  double sxte = 0, snees = 0, snees_h = 0, snees_v = 0;
   std::size_t nnees = 0;
   for (const ErrorSample& e : errors) {
     if (e.xte_m) {
@@ -106,6 +109,8 @@ AccuracyMetrics ComputeAccuracy(const std::vector<ErrorSample>& errors) {
     }
     if (e.nees) {
       snees += *e.nees;
+      snees_h += e.nees_horizontal.value_or(0.0);
+      snees_v += e.nees_vertical.value_or(0.0);
       ++nnees;
     }
   }
@@ -114,7 +119,12 @@ AccuracyMetrics ComputeAccuracy(const std::vector<ErrorSample>& errors) {
     m.cross_track_p95_m = Percentile(xte, 95);
     m.cross_track_max_m = Percentile(xte, 100);
   }
-  if (nnees) m.nees_mean = snees / static_cast<double>(nnees);
+  if (nnees) {
+    const auto n_nees = static_cast<double>(nnees);
+    m.nees_mean = snees / n_nees;
+    m.nees_horizontal_mean = snees_h / n_nees;
+    m.nees_vertical_mean = snees_v / n_nees;
+  }
   return m;
 }
 

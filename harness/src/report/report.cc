@@ -112,11 +112,18 @@ MetricTable AccuracyTable(const AccuracyMetrics& m) {
   t["cross_track_p95_m"] = m.cross_track_p95_m;
   t["cross_track_max_m"] = m.cross_track_max_m;
   t["nees_mean"] = m.nees_mean;
+  t["nees_horizontal_mean"] = m.nees_horizontal_mean;
+  t["nees_vertical_mean"] = m.nees_vertical_mean;
   return t;
 }
 
 MetricTable RunMetricTable(const RunReport& r) {
   MetricTable t = AccuracyTable(r.metrics);
+  // the fused estimate's horizontal RMSE over the raw fixes' (a claim across seeds judges it)
+  t["horizontal_rmse_to_raw"] =
+      r.metrics.samples && r.baselines.samples && r.baselines.horizontal_rmse_m > 0
+          ? std::optional<double>(r.metrics.horizontal_rmse_m / r.baselines.horizontal_rmse_m)
+          : std::nullopt;
   if (r.tracking) {
     const XteStats& x = r.tracking->all;
     const bool any = x.samples > 0;
@@ -199,6 +206,7 @@ std::vector<CriterionResult> EvaluateCriteria(const std::vector<Criterion>& crit
   for (const Criterion& c : criteria) {
     CriterionResult r;
     r.name = c.name;
+    r.default_key = c.default_key;
     r.value = lookup(metrics, c.metric);
     if (c.max) {
       r.threshold = *c.max;
@@ -310,6 +318,8 @@ void WriteReportJson(const RunReport& r, const std::string& path) {
   m["output_rate_hz"] = r.output_rate_hz;
   m["solutions_missing_fraction"] = r.timing.missing_fraction;
   m["nees_mean"] = OptionalJson(r.metrics.nees_mean);
+  m["nees_horizontal_mean"] = OptionalJson(r.metrics.nees_horizontal_mean);
+  m["nees_vertical_mean"] = OptionalJson(r.metrics.nees_vertical_mean);
   if (r.timing.jitter_p99_ms) {
     m["jitter_ms"] = {{"p50", *r.timing.jitter_p50_ms},
                       {"p99", *r.timing.jitter_p99_ms},
@@ -339,6 +349,15 @@ void WriteReportJson(const RunReport& r, const std::string& path) {
                              {"threshold", c.threshold},
                              {"value", OptionalJson(c.value)},
                              {"pass", c.pass}});
+    if (!c.default_key.empty()) j["criteria"].back()["default"] = c.default_key;
+  }
+  j["default_criteria"] = nlohmann::json::array();
+  for (const auto& d : r.default_criteria) {
+    j["default_criteria"].push_back({{"key", d.key},
+                                     {"metric", d.metric},
+                                     {"status", d.status},
+                                     {"detail", d.detail},
+                                     {"bound", OptionalJson(d.bound)}});
   }
   j["estimator"] = EstimatorJson(r);
   j["estimator_exit"] = r.estimator_exit;

@@ -242,6 +242,13 @@ void WriteReportHtml(const RunReport& r, const ReportSeries& s, const std::strin
   for (const auto& p : r.problems)
     h += "<tr><td colspan=\"3\">" + XmlEscape(p) + "</td><td class=\"fail\">FAIL</td></tr>\n";
   h += "</table>\n";
+  h += "<p>Default criteria (every run is judged on them unless its scenario's "
+       "<code>default_criteria:</code> says otherwise):</p>\n<table><tr><th>key</th><th>metric</"
+       "th><th>status</th><th>bound or reason</th></tr>\n";
+  for (const auto& d : r.default_criteria)
+    h += "<tr><td>" + XmlEscape(d.key) + "</td><td>" + XmlEscape(d.metric) + "</td><td>" +
+         XmlEscape(d.status) + "</td><td>" + XmlEscape(d.detail) + "</td></tr>\n";
+  h += "</table>\n";
   h += "<h2>Accuracy against truth</h2>\n<table><tr><th>metric</th><th>estimate</th><th>raw "
        "GNSS</th></tr>\n";
   const MetricTable est = AccuracyTable(r.metrics), raw = AccuracyTable(r.baselines);

@@ -135,8 +135,14 @@ void EvaluateFaultsAndCriteria(RunContext& ctx, const std::vector<ErrorSample>& 
   report.fault_injections = ctx.fault_recorder.records();
   ComputeRecoveryTimes(report.fault_injections, est_err, ctx.scenario.reconverged_error_m);
   report.estimator_health = ctx.health;
-  report.criteria = EvaluateCriteria(ctx.scenario.criteria, RunMetricTable(report),
-                                     AccuracyTable(report.baselines));
+  std::vector<Criterion> criteria = ctx.scenario.criteria;
+  if (!ctx.options.emulate_only) {
+    const std::vector<Criterion> defaults =
+        DefaultCriteriaFor(ctx.scenario, report, report.default_criteria);
+    criteria.insert(criteria.end(), defaults.begin(), defaults.end());
+  }
+  report.criteria =
+      EvaluateCriteria(criteria, RunMetricTable(report), AccuracyTable(report.baselines));
   report.fault_messages_dropped = ctx.byte_faults->messages_dropped();
   report.fault_bytes_corrupted = ctx.byte_faults->bytes_corrupted();
   report.wall_time_s = static_cast<double>(NowNs() - ctx.wall_start_ns) * 1e-9;
@@ -154,8 +160,12 @@ void EvaluateFaultsAndCriteria(RunContext& ctx, const std::vector<ErrorSample>& 
                  EstimatorProcess::kMaxLineBytes);
   }
   if (ctx.collector->unparsed_lines() > 0) {
-    std::fprintf(stderr, "hil: %zu estimator output line(s) were not solutions (kept in %s)\n",
-                 ctx.collector->unparsed_lines(), ctx.nav_pty ? "estimate.nmea" : "estimate.jsonl");
+    std::fprintf(stderr,
+                 "hil: %zu estimator output line(s) were not solutions (kept in %s); the first, "
+                 "line %zu: %s\n",
+                 ctx.collector->unparsed_lines(), ctx.nav_pty ? "estimate.nmea" : "estimate.jsonl",
+                 ctx.collector->first_unparsed_line(),
+                 ctx.collector->first_unparsed_reason().c_str());
   }
 }
 
@@ -326,6 +336,10 @@ void EvaluateClosedLoop(RunContext& ctx, const TruthTable& truth) {
     c.late_actions = p.late;
     c.max_late_ms = static_cast<double>(p.max_late_ns) * 1e-6;
   }
+  if (c.control_ticks > 0 && c.motor_commands == 0)  // a controller that never answered
+    report.problems.push_back("the controller sent no command in " +
+                              std::to_string(c.control_ticks) +
+                              " control ticks (see controller.log)");
   report.closed_loop = c;
 }
 

@@ -2,6 +2,8 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <fstream>
+#include <string>
 
 #include "hil/harness/dut/process_group.h"
 #include "hil/harness/report/run_outputs.h"
@@ -102,6 +104,29 @@ void DrainOutput(RunContext& ctx) {
   }
 }
 
+// The last line of a file that holds more than white space, at most 200 characters ("" if none).
+std::string LastLine(const std::string& path) {
+  std::ifstream in(path);
+  std::string line, last;
+  while (std::getline(in, line)) {
+    if (line.find_first_not_of(" \t\r") != std::string::npos) last = line;
+  }
+  return last.size() > 200 ? last.substr(0, 200) + "..." : last;
+}
+
+// Closed loop: a controller that ended by itself before the scenario did left the vehicle
+// unguided (`exec: guidanced: not found` ends it at once): a problem, never a pass. One that hil
+// ended (the controller_stop fault) is the scenario's doing.
+void NoteControllerEnded(RunContext& ctx) {
+  if (!ctx.controller || ctx.options.emulate_only || ctx.stop_reason || ctx.hang) return;
+  if (ctx.controller->Running() || ctx.controller->Describe() == "killed by hil") return;
+  const std::string last = LastLine(ctx.dir + "/controller.log");
+  ctx.report.problems.push_back(
+      "the controller ended before the scenario did: " + ctx.controller->Describe() +
+      (last.empty() ? " (controller.log is empty)"
+                    : " (controller.log's last line: \"" + last + "\")"));
+}
+
 }  // namespace
 
 void Execute(RunContext& ctx, RunWatchdog& watchdog) {
@@ -171,6 +196,7 @@ void StopEstimator(RunContext& ctx) {
   ctx.progress->Finish();
   const bool crashed =
       !ctx.options.emulate_only && !ctx.hang && !ctx.stop_reason && !ctx.EstimatorRunning();
+  NoteControllerEnded(ctx);
   const ExitInfo exit_info = ctx.estimator ? ctx.estimator->Stop() : ExitInfo{};
   ctx.collector->Poll();
   report.estimator_exit = ctx.estimator ? exit_info.Describe() : "none (emulator only)";

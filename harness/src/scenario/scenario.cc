@@ -17,6 +17,7 @@ namespace hil::harness {
 extern const char* const kDefaultScenarioYaml;  // generated from vectors/scenarios/default.yaml
 
 const std::vector<std::string> kCriterionMetrics{"horizontal_rmse_m",
+                                                 "horizontal_rmse_to_raw",
                                                  "cep50_m",
                                                  "cep95_m",
                                                  "max_horizontal_error_m",
@@ -34,6 +35,8 @@ const std::vector<std::string> kCriterionMetrics{"horizontal_rmse_m",
                                                  "outage_max_horizontal_error_m",
                                                  "reconvergence_time_s",
                                                  "nees_mean",
+                                                 "nees_horizontal_mean",
+                                                 "nees_vertical_mean",
                                                  "solutions_missing_fraction",
                                                  "fault_recovery_time_s",
                                                  "fault_injections_min",
@@ -116,10 +119,29 @@ std::vector<Criterion> ReadCriteria(const YamlReader& r) {
   return out;
 }
 
+// `default_criteria: {KEY: off | NUMBER}` (default_criteria.h).
+std::map<std::string, DefaultCriterionSetting> ReadDefaultCriteria(const YamlReader& r) {
+  if (!r.IsMap()) r.Fail("expected a mapping of default criterion keys to `off` or a number");
+  std::vector<std::string> keys;
+  for (const DefaultCriterionSpec& d : kDefaultCriteria) keys.emplace_back(d.key);
+  r.CheckKeys(keys);
+  std::map<std::string, DefaultCriterionSetting> out;
+  for (const std::string& key : keys) {
+    if (!r.Has(key)) continue;
+    DefaultCriterionSetting setting;
+    if (r.String(key) == "off")
+      setting.off = true;
+    else
+      setting.bound = r.DoubleIn(key, 0, 0, 1e9);
+    out[key] = setting;
+  }
+  return out;
+}
+
 Scenario FromReader(const YamlReader& root) {
-  std::vector<std::string> keys{"name",    "description", "start_utc", "duration_s",
-                                "seed",    "estimator",   "criteria",  "faults",
-                                "include", "evaluation"};
+  std::vector<std::string> keys{"name",    "description", "start_utc",       "duration_s",
+                                "seed",    "estimator",   "criteria",        "faults",
+                                "include", "evaluation",  "default_criteria"};
   for (const auto* section : {&kTruthSectionKeys, &kGnssSectionKeys, &kMcuSectionKeys,
                               &kCanSectionKeys, &kGreenhouseSectionKeys, &kRangeSensorSectionKeys,
                               &kSuiteSectionKeys, &kPaper003SectionKeys, &kClosedLoopSectionKeys}) {
@@ -152,6 +174,7 @@ Scenario FromReader(const YamlReader& root) {
   if (auto e = root.OptionalChild("estimator")) ReadEstimator(*e, s.estimator);
   CheckCanUse(root, s);
   if (auto c = root.OptionalChild("criteria")) s.criteria = ReadCriteria(*c);
+  if (auto d = root.OptionalChild("default_criteria")) s.default_criteria = ReadDefaultCriteria(*d);
   if (auto f = root.OptionalChild("faults")) s.faults = ReadFaultTimeline(*f, s.duration_s);
   if (auto ev = root.OptionalChild("evaluation")) {
     ev->CheckKeys({"from_s", "reconverged_error_m"});

@@ -45,7 +45,7 @@ PaperFigure ReadFigure(const YamlReader& r) {
 
 }  // namespace
 
-const std::vector<std::string> kSuiteSectionKeys{"paper", "short"};
+const std::vector<std::string> kSuiteSectionKeys{"paper", "short", "statistical"};
 
 void ReadSuiteSections(const YamlReader& root, const std::vector<std::string>& top_level_keys,
                        Scenario& s) {
@@ -56,6 +56,18 @@ void ReadSuiteSections(const YamlReader& root, const std::vector<std::string>& t
       for (const YamlReader& item : p->Elements()) s.paper.push_back(ReadFigure(item));
     } else {
       s.paper.push_back(ReadFigure(*p));
+    }
+  }
+  if (auto st = root.OptionalChild("statistical")) {
+    st->CheckKeys({"seeds", "criteria"});
+    s.statistical_seeds = static_cast<int>(st->Int("seeds", 20, 2, 1000));
+    const YamlReader c = st->Child("criteria");
+    if (c.Elements().empty()) c.Fail("expected at least one criterion across the seeds");
+    for (const YamlReader& item : c.Elements()) {
+      CampaignCriterion k = ReadCampaignCriterion(item);
+      if (item.Has("scenarios")) item.Fail("scenarios", "a scenario's criteria judge it alone");
+      k.scenarios = s.name;
+      s.statistical_criteria.push_back(k);
     }
   }
   if (auto sh = root.OptionalChild("short")) {

@@ -6,15 +6,39 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 
 #include "hil/harness/campaign/campaign_merge.h"
 #include "hil/harness/campaign/campaign_runner.h"
+#include "hil/harness/scenario/scenario.h"
 
 namespace hil::harness {
 namespace {
 
 namespace fs = std::filesystem;
+
+// A scenario whose figure is a claim about a distribution (its `statistical:` section) runs over
+// its seeds (unless --seed/--seeds name the seeds of every scenario) and its criteria across them
+// join the campaign's. An invalid file is left to the runs, which report it.
+void AddStatisticalClaims(CampaignSpec& spec, const SuiteOptions& opt) {
+  for (const std::string& file : spec.scenario_files) {
+    std::optional<Scenario> s;
+    try {
+      s = LoadScenario(file, opt.short_form);
+    } catch (const std::exception&) {
+      continue;
+    }
+    if (s->statistical_seeds == 0) continue;
+    if (spec.seeds.empty()) {
+      std::vector<std::uint64_t>& seeds = spec.file_seeds[file];
+      for (int i = 0; i < s->statistical_seeds; ++i)
+        seeds.push_back(s->seed + static_cast<std::uint64_t>(i));
+    }
+    spec.criteria.insert(spec.criteria.end(), s->statistical_criteria.begin(),
+                         s->statistical_criteria.end());
+  }
+}
 
 CampaignSpec SuiteSpec(const std::vector<std::string>& files, const SuiteOptions& opt) {
   CampaignSpec spec;
@@ -28,6 +52,7 @@ CampaignSpec SuiteSpec(const std::vector<std::string>& files, const SuiteOptions
       spec.seeds.push_back(opt.seed.value_or(1) + static_cast<std::uint64_t>(i));
   }
   spec.run_args = opt.run_args;
+  AddStatisticalClaims(spec, opt);
   return spec;
 }
 
@@ -69,6 +94,8 @@ SuiteResult RunSuite(const SuiteOptions& opt) {
   result.passed = m.summary.value("passed", 0UL);
   result.failed = m.summary.value("failed", 0UL);
   result.invalid = m.summary.value("invalid", 0UL);
+  for (const auto& c : m.summary.value("criteria", nlohmann::json::array()))
+    result.criteria_failed += c.value("pass", false) ? 0 : 1;
   return result;
 }
 

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "hil/harness/campaign/campaign_plan.h"
+#include "hil/harness/scenario/scenario.h"
 #include "hil/harness/scenario/yaml_reader.h"
 
 namespace hil::harness {
@@ -142,6 +143,40 @@ TEST_F(CampaignSpecTest, ErrorsNameFileLineAndField) {
       5, "sweep.fields[0].values[0]", "no 'gnss.nosuch'");
   ExpectError("name: has space\nscenarios: [sc/*.yaml]\n", 1, "name", "without spaces");
   ExpectError("name: x\nscenarios: [sc/*.yaml]\nsweeps: {}\n", 3, "sweeps", "did you mean");
+}
+
+// A scenario's statistical claim (issue 43): its `statistical:` section gives the seeds and the
+// criteria across them (campaign criteria, on this scenario alone); the plan runs that file over
+// its own seeds and the others once, and the plan survives campaign.json
+TEST_F(CampaignSpecTest, ScenarioStatisticalClaimPlansItsOwnSeeds) {
+  const Scenario sc =
+      ParseScenario(std::string(kScenario) +
+                        "seed: 7\n"
+                        "statistical:\n"
+                        "  seeds: 20\n"
+                        "  criteria:\n"
+                        "    - {metric: horizontal_rmse_to_raw, stat: mean, max: 0.65}\n"
+                        "    - {metric: horizontal_rmse_to_raw, stat: p95, max: 0.8}\n",
+                    "s.yaml");
+  EXPECT_EQ(sc.statistical_seeds, 20);
+  ASSERT_EQ(sc.statistical_criteria.size(), 2U);
+  EXPECT_EQ(sc.statistical_criteria[0].stat, "mean");
+  EXPECT_EQ(sc.statistical_criteria[0].scenarios, "s");
+  EXPECT_EQ(sc.statistical_criteria[1].name, "p95 of horizontal_rmse_to_raw <= 0.8");
+  CampaignSpec spec;
+  spec.scenario_files = {"a.yaml", "b.yaml"};
+  for (std::uint64_t k = 7; k < 27; ++k) spec.file_seeds["b.yaml"].push_back(k);
+  const CampaignPlan plan = PlanCampaign(spec);
+  ASSERT_EQ(plan.runs.size(), 21U);
+  EXPECT_EQ(plan.runs[0].id, "a");
+  EXPECT_FALSE(plan.runs[0].seed);
+  EXPECT_EQ(plan.runs[1].id, "b-seed7");
+  EXPECT_EQ(plan.runs[20].id, "b-seed26");
+  EXPECT_EQ(PlanFromJson(PlanToJson(plan)).runs.size(), 21U);
+  EXPECT_THROW(ParseScenario(std::string(kScenario) +
+                                 "statistical: {seeds: 20, criteria: [{metric: x, max: 1}]}\n",
+                             "s.yaml"),
+               ScenarioError);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 /// ScenarioError naming the campaign file, the line and the field (exit code 2).
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +15,8 @@
 #include "hil/harness/scenario/scenario_overrides.h"
 
 namespace hil::harness {
+
+class YamlReader;
 
 /// One swept scenario field and the values it takes (each as YAML text).
 struct SweepField {
@@ -42,7 +45,10 @@ struct CampaignSpec {
   std::vector<std::string> scenario_files;  ///< in run order, each once
   bool short_form = false;
   std::vector<std::uint64_t> seeds;  ///< empty: each scenario's own seed, one run
-  bool zip = false;                  ///< sweep values zipped (i-th with i-th) instead of crossed
+  /// A scenario file's own seeds, instead of `seeds` (`hil suite`: a scenario's `statistical:`
+  /// section asks for its seeds).
+  std::map<std::string, std::vector<std::uint64_t>> file_seeds;
+  bool zip = false;  ///< sweep values zipped (i-th with i-th) instead of crossed
   std::vector<SweepField> sweep;
   std::vector<CampaignCriterion> criteria;
   std::vector<std::string> run_args;  ///< passed to every `hil run` (--mode, --speed, --estimator)
@@ -51,6 +57,12 @@ struct CampaignSpec {
 /// Reads and validates a campaign file, including every sweep value against every scenario (a
 /// value the scenario rejects is reported at the value's line). @throws ScenarioError.
 CampaignSpec ReadCampaignFile(const std::string& path);
+
+/// One criterion across runs (a campaign file's `criteria` item, a scenario's
+/// `statistical.criteria` item): {metric, stat, max | min, name, scenarios} or {pass_fraction,
+/// name, scenarios}.
+/// @throws ScenarioError.
+CampaignCriterion ReadCampaignCriterion(const YamlReader& item);
 
 /// The sweep's points in order: each the overrides of one point (one empty point without sweeps).
 std::vector<std::vector<ScenarioOverride>> SweepPoints(const CampaignSpec& spec);

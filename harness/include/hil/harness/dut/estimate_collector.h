@@ -41,6 +41,10 @@ class EstimateCollector {
   const std::vector<EstimateRecord>& records() const { return records_; }
   std::size_t lines() const { return lines_; }
   std::size_t unparsed_lines() const { return unparsed_; }
+  /// The first line that was not a solution: its number in the raw output file (1-based; 0 when
+  /// every line was one) and why (EstimateReader::WhyNotASolution).
+  std::size_t first_unparsed_line() const { return first_unparsed_line_; }
+  const std::string& first_unparsed_reason() const { return first_unparsed_reason_; }
   /// Called with every raw line as it arrives (e.g. to read navd's health object).
   void set_line_observer(std::function<void(const std::string&)> f) { observer_ = std::move(f); }
   /// For a JSON output format, the observer of each line parsed (parsed once for both the reader
@@ -69,6 +73,10 @@ class EstimateCollector {
   void ConsumeScanned(const std::string& line, std::int64_t wall_ns, const JsonSolutionLine& scan);
   /// Lines counted and kept in the raw file.
   void Keep(const std::string& line);
+  /// Writes one line to the raw file while the kept output is within its bound (else counts it).
+  void Store(const std::string& line);
+  /// Counts `line` (the last kept) as not a solution.
+  void NotASolution(const std::string& line);
   std::unique_ptr<EstimateReader> reader_;
   EstimatorProcess* process_;
   link::PtyPort* nav_pty_;
@@ -77,7 +85,9 @@ class EstimateCollector {
   std::string pty_partial_;
   std::int64_t pty_last_ns_ = 0;
   std::vector<EstimateRecord> records_;
-  std::size_t lines_ = 0, unparsed_ = 0;
+  std::size_t lines_ = 0, unparsed_ = 0, first_unparsed_line_ = 0;
+  std::size_t raw_lines_ = 0;  // lines of the raw file (with the pty case's "# stdout:" lines)
+  std::string first_unparsed_reason_;
   std::uint64_t keep_limit_ = UINT64_MAX, kept_bytes_ = 0, not_kept_ = 0, pty_bytes_ = 0;
   std::string raw_path_;
   std::function<void(const std::string&)> observer_;

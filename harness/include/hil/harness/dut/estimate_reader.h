@@ -47,6 +47,9 @@ class EstimateReader {
   /// False when the solutions come from elsewhere (n2k_socketcan: the bus) and every line is a
   /// diagnostic, so a line that is no solution is not worth a warning.
   virtual bool SolutionsInLines() const { return true; }
+  /// Why Line() gives no record for `text`, in a few words naming the field (for the message on
+  /// the first line that was not a solution).
+  virtual std::string WhyNotASolution(const std::string& text) const;
 };
 
 /// The reader for an output format (parsed from the scenario's estimator.output).

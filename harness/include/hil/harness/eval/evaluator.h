@@ -40,6 +40,8 @@ struct ErrorSample {
   std::optional<double> xte_m;
   /// Normalised estimation error squared with the reported diagonal covariance (3 DOF).
   std::optional<double> nees;
+  /// The same split by dimension: east and north (2 DOF), up (1 DOF); set with `nees`.
+  std::optional<double> nees_horizontal, nees_vertical;
   double horizontal() const { return err_enu_m.head<2>().norm(); }
 };
 
@@ -52,6 +54,8 @@ struct AccuracyMetrics {
   std::optional<double> cross_track_rmse_m, cross_track_p95_m,
       cross_track_max_m;            ///< |xte| statistics
   std::optional<double> nees_mean;  ///< mean NEES (≈3 for a consistent 3-D position covariance)
+  /// Mean NEES of the horizontal position (≈2 when consistent) and of the height (≈1).
+  std::optional<double> nees_horizontal_mean, nees_vertical_mean;
 };
 
 /// Compares records with truth. `p_BX_B_m` is the lever arm of the point the records refer to

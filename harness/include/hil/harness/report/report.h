@@ -30,6 +30,19 @@ struct CriterionResult {
   double threshold = 0;
   std::optional<double> value;  ///< absent when the metric could not be computed (fails)
   bool pass = false;
+  std::string default_key;  ///< a default criterion's key (default_criteria.h); else empty
+};
+
+/// The verdict's line for one default criterion (report.json `default_criteria`): whether this run
+/// was judged on it and, when not, why.
+struct DefaultCriterionStatus {
+  std::string key, metric;
+  /// "judged" (the default bound), "relaxed" or "tightened" (the scenario's bound), "off" (the
+  /// scenario turned it off), "superseded" (the scenario's own criterion on the metric judges it),
+  /// "not applicable"
+  std::string status;
+  std::string detail;  ///< the bound, or why it was not judged
+  std::optional<double> bound;
 };
 
 /// Closed loop: what the controller and the actuator did (report.json `closed_loop`).
@@ -72,6 +85,7 @@ struct RunReport {
   std::vector<OutageMetrics> outages;
   AccuracyMetrics baselines;
   std::vector<CriterionResult> criteria;
+  std::vector<DefaultCriterionStatus> default_criteria;  ///< each default criterion's status
   std::string estimator_command, estimator_output, estimator_exit;
   std::string controller_command;  ///< closed loop: the controller's command (substituted)
   int estimator_pid = 0;           ///< process (and process group) id of the estimator, 0 when none
@@ -107,6 +121,15 @@ MetricTable RunMetricTable(const RunReport& r);
 
 /// Escapes text for XML and HTML (attributes and content): < > & ".
 std::string XmlEscape(const std::string& s);
+
+/// The default criteria (default_criteria.h) that judge this run, as criteria, after the
+/// scenario's; `status` gets one line per default criterion. A default applies unless the scenario
+/// turns it off or has its own criterion on the same metric (of the same kind: a ratio to the
+/// baseline for fused_vs_raw), and only where its metric exists: fused_vs_raw with raw fixes in the
+/// evaluated window, the NEES with a position σ reported, controller_commanding in closed loop
+/// without a controller_stop or command_link_loss fault.
+std::vector<Criterion> DefaultCriteriaFor(const Scenario& scenario, const RunReport& report,
+                                          std::vector<DefaultCriterionStatus>& status);
 
 /// Evaluates the scenario's criteria against the metrics.
 std::vector<CriterionResult> EvaluateCriteria(const std::vector<Criterion>& criteria,

@@ -5,6 +5,7 @@
 /// and reports errors as ScenarioError (file, line, field).
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -20,7 +21,9 @@
 #include "hil/firmware_emu/rangefinder/tf_luna_device.h"
 #include "hil/firmware_emu/uwb/uwb_tag_device.h"
 #include "hil/firmware_emu/world/greenhouse_world.h"
+#include "hil/harness/campaign/campaign_spec.h"
 #include "hil/harness/faults/fault_timeline.h"
+#include "hil/harness/scenario/default_criteria.h"
 #include "hil/harness/scenario/estimator_kinds.h"
 #include "hil/harness/scenario/scenario_overrides.h"
 #include "hil/truth/truth_integrator.h"
@@ -37,6 +40,7 @@ struct Criterion {
   std::optional<double> max;
   std::optional<double> min;
   std::optional<double> max_ratio_to_baseline;
+  std::string default_key;  ///< a default criterion (default_criteria.h): its key; else empty
 };
 
 /// A published reference figure (section `paper:`, scenario_suite.cc): a suite report puts the
@@ -218,6 +222,8 @@ struct Scenario {
   RangefinderSpec rangefinders;
   LidarSpec lidar;
   std::vector<Criterion> criteria;
+  /// Section `default_criteria:`: what the scenario says of each default criterion, by key.
+  std::map<std::string, DefaultCriterionSetting> default_criteria;
   FaultTimeline faults;
   /// Seconds after the end of an outage within which the horizontal error must return below
   /// `reconverged_error_m` (reconvergence time is measured against this).
@@ -226,6 +232,11 @@ struct Scenario {
   double evaluate_from_s = 0.0;
   /// Reference figures from publications (section `paper:`), for suite reports.
   std::vector<PaperFigure> paper;
+  /// Section `statistical:` (scenario_suite.cc): the scenario's figure is a claim about a
+  /// distribution; `hil suite` runs it with `statistical_seeds` seeds from its own on and judges
+  /// these criteria across them, as a campaign does (0: one run, no criteria across runs).
+  int statistical_seeds = 0;
+  std::vector<CampaignCriterion> statistical_criteria;
   /// The file has a `short:` section (a quicker form for CI, see LoadScenario), and it was applied.
   bool has_short_form = false, short_form = false;
 };

@@ -28,8 +28,13 @@ struct SuiteOptions {
 
 struct SuiteResult {
   std::size_t runs = 0, passed = 0, failed = 0, invalid = 0;
-  /// 0 every run passed, 1 a run failed, 2 bad input (no scenarios, an invalid scenario).
-  int exit_code() const { return invalid > 0 || runs == 0 ? 2 : failed > 0 ? 1 : 0; }
+  /// criteria across runs (scenarios' `statistical:` sections) that failed
+  std::size_t criteria_failed = 0;
+  /// 0 every run and every criterion across runs passed, 1 one failed, 2 bad input (no scenarios,
+  /// an invalid scenario).
+  int exit_code() const {
+    return invalid > 0 || runs == 0 ? 2 : failed > 0 || criteria_failed > 0 ? 1 : 0;
+  }
 };
 
 /// Runs the suite. @throws std::runtime_error when DIR cannot be read or OUT cannot be written.
