@@ -31,6 +31,7 @@ Subcommand AddReplay(CLI::App& app);    ///< hil replay
 Subcommand AddDataset(CLI::App& app);   ///< hil dataset
 Subcommand AddExport(CLI::App& app);    ///< hil export
 Subcommand AddCampaign(CLI::App& app);  ///< hil campaign (and its status, merge)
+Subcommand AddCharacterize(CLI::App& app);  ///< hil characterize
 
 /// This executable's path ("hil" when /proc cannot tell).
 std::string SelfExecutable();
