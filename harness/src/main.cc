@@ -26,8 +26,8 @@ int main(int argc, char** argv) {
       "  hil characterize runs/x/captures/ttyIMU.cap --json n.json --svg plots   Allan, PSD\n"
       "Exit codes: 0 every criterion passed (validate: conforms), 1 one failed, 2 bad input.");
   const std::vector<hil::cli::Subcommand> commands{
-      hil::cli::AddRun(app),    hil::cli::AddEmulate(app), hil::cli::AddValidate(app),
-      hil::cli::AddSuite(app),  hil::cli::AddReplay(app),  hil::cli::AddDataset(app),
+      hil::cli::AddRun(app),    hil::cli::AddEmulate(app),  hil::cli::AddValidate(app),
+      hil::cli::AddSuite(app),  hil::cli::AddReplay(app),   hil::cli::AddDataset(app),
       hil::cli::AddExport(app), hil::cli::AddCampaign(app), hil::cli::AddCharacterize(app)};
   try {
     app.parse(argc, argv);

@@ -102,7 +102,8 @@ Characterization Characterize(const ImuSeries& log, const CharacterizeOptions& o
                 c.psd_white_accel[axis], m, c.psd_segment);
   }
   for (std::size_t k = 0; k <= c.psd_segment / 2; ++k)
-    c.psd_freq_hz.push_back(static_cast<double>(k) / (c.step_s * static_cast<double>(c.psd_segment)));
+    c.psd_freq_hz.push_back(static_cast<double>(k) /
+                            (c.step_s * static_cast<double>(c.psd_segment)));
   c.psd_segments = (count - c.psd_segment) / (c.psd_segment / 2) + 1;
   return c;
 }

@@ -18,12 +18,8 @@ constexpr double kRadpsToDegph = kRadToDeg * 3600.0;
 constexpr const char* kAxes[] = {"x", "y", "z"};
 constexpr const char* kColors[] = {"#1f77b4", "#d62728", "#2ca02c"};
 
-nlohmann::json Xyz(const AxisLists& v) {
-  return {{"x", v[0]}, {"y", v[1]}, {"z", v[2]}};
-}
-nlohmann::json Xyz(const Eigen::Vector3d& v) {
-  return {{"x", v.x()}, {"y", v.y()}, {"z", v.z()}};
-}
+nlohmann::json Xyz(const AxisLists& v) { return {{"x", v[0]}, {"y", v[1]}, {"z", v[2]}}; }
+nlohmann::json Xyz(const Eigen::Vector3d& v) { return {{"x", v.x()}, {"y", v.y()}, {"z", v.z()}}; }
 template <typename F>
 nlohmann::json PerAxis(const std::array<NoiseTerms, 3>& t, F f) {
   nlohmann::json o;
@@ -36,13 +32,13 @@ nlohmann::json Optional(const std::optional<double>& v) {
 
 nlohmann::json FitDetails(const std::array<NoiseTerms, 3>& t) {
   return PerAxis(t, [](const NoiseTerms& n) {
-    return nlohmann::json{{"white_tau_s", n.white_tau_s},
-                          {"white_local_slope", n.white_slope},
-                          {"bias_instability_tau_s", n.bias_instability_tau_s},
-                          {"bias_instability_resolved", n.bias_instability_resolved},
-                          {"rate_random_walk_tau_s", n.rate_random_walk
-                                                         ? nlohmann::json(n.rate_random_walk_tau_s)
-                                                         : nlohmann::json(nullptr)}};
+    return nlohmann::json{
+        {"white_tau_s", n.white_tau_s},
+        {"white_local_slope", n.white_slope},
+        {"bias_instability_tau_s", n.bias_instability_tau_s},
+        {"bias_instability_resolved", n.bias_instability_resolved},
+        {"rate_random_walk_tau_s",
+         n.rate_random_walk ? nlohmann::json(n.rate_random_walk_tau_s) : nlohmann::json(nullptr)}};
   });
 }
 
@@ -110,15 +106,16 @@ nlohmann::json CharacterizationJson(const Characterization& c, const std::string
   j["max_gap_s"] = c.max_gap_s;
   j["window"] = {{"from_s", c.from_s}, {"to_s", c.to_s}, {"samples", c.samples}};
   nlohmann::json still = nlohmann::json::array();
-  for (const StillPeriod& p : c.still_periods) still.push_back({{"from_s", p.from_s}, {"to_s", p.to_s}});
+  for (const StillPeriod& p : c.still_periods)
+    still.push_back({{"from_s", p.from_s}, {"to_s", p.to_s}});
   j["still_periods"] = still;
   j["mean_gyro_radps"] = Xyz(c.mean_gyro_radps);
   j["mean_accel_mps2"] = Xyz(c.mean_accel_mps2);
   j["tau_s"] = c.tau_s;
   j["allan_gyro_radps"] = Xyz(c.adev_gyro_radps);
   j["allan_accel_mps2"] = Xyz(c.adev_accel_mps2);
-  j["arw_deg_per_rthr"] =
-      PerAxis(c.gyro_terms, [](const NoiseTerms& n) { return n.white * kRadToDeg * kRtHourPerRtS; });
+  j["arw_deg_per_rthr"] = PerAxis(
+      c.gyro_terms, [](const NoiseTerms& n) { return n.white * kRadToDeg * kRtHourPerRtS; });
   j["vrw_mps_per_rthr"] =
       PerAxis(c.accel_terms, [](const NoiseTerms& n) { return n.white * kRtHourPerRtS; });
   j["gyro_bias_instability_degph"] =
@@ -158,15 +155,17 @@ void WriteCharacterizationSvgs(const Characterization& c, const CharacterizeRefe
   if (ec) throw std::runtime_error(dir + ": cannot create: " + ec.message());
   PlotChart g = AllanChart(c, c.adev_gyro_radps, kRadpsToDegph, "Gyro", "deg/h");
   if (ref.arw_deg_per_rthr)  // σ(τ) = N/√τ, N in °/√h → °/h·√s: × 60
-    g.series.push_back(Reference(ref.label + " ARW " + std::to_string(*ref.arw_deg_per_rthr).substr(0, 6) + " deg/rt-h",
-                                 c.tau_s, *ref.arw_deg_per_rthr * kRtHourPerRtS, -0.5));
+    g.series.push_back(Reference(
+        ref.label + " ARW " + std::to_string(*ref.arw_deg_per_rthr).substr(0, 6) + " deg/rt-h",
+        c.tau_s, *ref.arw_deg_per_rthr * kRtHourPerRtS, -0.5));
   if (ref.gyro_bias_instability_degph)
     g.series.push_back(Reference(ref.label + " bias instability floor (0.664 B)", c.tau_s,
                                  *ref.gyro_bias_instability_degph * kBiasInstabilityFloor, 0));
   PlotChart a = AllanChart(c, c.adev_accel_mps2, 1.0, "Accelerometer", "m/s^2");
   if (ref.vrw_mps_per_rthr)
-    a.series.push_back(Reference(ref.label + " VRW " + std::to_string(*ref.vrw_mps_per_rthr).substr(0, 6) + " m/s/rt-h",
-                                 c.tau_s, *ref.vrw_mps_per_rthr / kRtHourPerRtS, -0.5));
+    a.series.push_back(Reference(
+        ref.label + " VRW " + std::to_string(*ref.vrw_mps_per_rthr).substr(0, 6) + " m/s/rt-h",
+        c.tau_s, *ref.vrw_mps_per_rthr / kRtHourPerRtS, -0.5));
   if (ref.accel_bias_instability_mps2)
     a.series.push_back(Reference(ref.label + " bias instability floor (0.664 B)", c.tau_s,
                                  *ref.accel_bias_instability_mps2 * kBiasInstabilityFloor, 0));
@@ -205,10 +204,11 @@ void WriteAnalysedSamplesCsv(const Characterization& c, const std::string& path)
 std::string CharacterizationSummary(const Characterization& c) {
   std::string out;
   char b[400];
-  std::snprintf(b, sizeof b,
-                "%s log, %.1f s; analysed %.2f..%.2f s (%zu samples of %.2f ms), tau %.3g..%.3g s\n",
-                c.format.c_str(), c.log_length_s, c.from_s, c.to_s, c.samples, c.step_s * 1e3,
-                c.tau_s.front(), c.tau_s.back());
+  std::snprintf(
+      b, sizeof b,
+      "%s log, %.1f s; analysed %.2f..%.2f s (%zu samples of %.2f ms), tau %.3g..%.3g s\n",
+      c.format.c_str(), c.log_length_s, c.from_s, c.to_s, c.samples, c.step_s * 1e3,
+      c.tau_s.front(), c.tau_s.back());
   out += b;
   for (std::size_t a = 0; a < 3; ++a) {
     const NoiseTerms& g = c.gyro_terms[a];
@@ -218,8 +218,8 @@ std::string CharacterizationSummary(const Characterization& c) {
                   "accel bias instability %s%.3g m/s^2\n",
                   kAxes[a], g.white * kRadToDeg * kRtHourPerRtS,
                   g.bias_instability_resolved ? "" : "<= ", g.bias_instability * kRadpsToDegph,
-                  f.white * kRtHourPerRtS, f.bias_instability_resolved ? "" : "<= ",
-                  f.bias_instability);
+                  f.white * kRtHourPerRtS,
+                  f.bias_instability_resolved ? "" : "<= ", f.bias_instability);
     out += b;
   }
   return out;

@@ -12,13 +12,14 @@
 #include <vector>
 
 #include "hil/harness/characterize/imu_log_readers.h"
+
 #include "log_fields.h"
 
 namespace hil::harness {
 namespace {
 
-constexpr std::size_t kTagHeaderBytes = 64;                 // text id, start tick in the last 4
-constexpr std::size_t kTagTimeBytes = 4 + 8;                // uint32 seconds + double fraction
+constexpr std::size_t kTagHeaderBytes = 64;   // text id, start tick in the last 4
+constexpr std::size_t kTagTimeBytes = 4 + 8;  // uint32 seconds + double fraction
 constexpr const char kTagId[] = "TIMETAG RTKLIB";
 constexpr const char* kCsvFields[] = {"ax", "ay", "az", "gx", "gy", "gz", "tick"};
 
@@ -70,7 +71,8 @@ std::vector<TagRecord> ReadTag(const std::string& tag_path, std::size_t data_siz
   std::vector<TagRecord> r = TagRecords(b, t0, 4, data_size);
   if (r.empty()) r = TagRecords(b, t0, 8, data_size);
   if (r.empty())
-    throw std::runtime_error(tag_path + ": records: neither 8- nor 12-byte records with file "
+    throw std::runtime_error(tag_path +
+                             ": records: neither 8- nor 12-byte records with file "
                              "positions that grow and stay within the data file");
   return r;
 }
@@ -117,7 +119,8 @@ std::vector<CsvSample> ReadCsv(const std::string& path, const std::string& data,
       notes.push_back(where + ": " + (n == 1 ? "first" : "unterminated last") +
                       " line is a fragment, skipped");
     } else if (!ok) {
-      throw std::runtime_error(where + ": expected 7 comma-separated fields (ax,ay,az [g], "
+      throw std::runtime_error(where +
+                               ": expected 7 comma-separated fields (ax,ay,az [g], "
                                "gx,gy,gz [deg/s], tick [ms])");
     } else {
       if (s.v[6] < 0 || s.v[6] != std::floor(s.v[6]))

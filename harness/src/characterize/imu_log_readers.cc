@@ -8,20 +8,21 @@
 #include <vector>
 
 #include "hil/harness/datasets/capture_imu.h"
+
 #include "log_fields.h"
 
 namespace hil::harness {
 namespace {
 
-constexpr const char* kKfginsFields[] = {"sow", "dtheta_x", "dtheta_y", "dtheta_z",
-                                         "dvel_x", "dvel_y", "dvel_z", "odo"};
+constexpr const char* kKfginsFields[] = {"sow",    "dtheta_x", "dtheta_y", "dtheta_z",
+                                         "dvel_x", "dvel_y",   "dvel_z",   "odo"};
 
 std::vector<std::string_view> SplitBlankTabComma(std::string_view line) {
   std::vector<std::string_view> out;
   std::size_t i = 0;
   while (i < line.size()) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == ',' ||
-                               line[i] == '\r'))
+    while (i < line.size() &&
+           (line[i] == ' ' || line[i] == '\t' || line[i] == ',' || line[i] == '\r'))
       ++i;
     const std::size_t b = i;
     while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != ',' &&
@@ -68,7 +69,8 @@ ImuSeries ReadKfginsImuText(const std::string& path) {
       throw std::runtime_error(where + ": expected 7 or 8 columns (sow dθxyz dvxyz [odo]), found " +
                                std::to_string(f.size()));
     double v[8];
-    for (std::size_t k = 0; k < f.size(); ++k) v[k] = ParseFiniteField(f[k], where, kKfginsFields[k]);
+    for (std::size_t k = 0; k < f.size(); ++k)
+      v[k] = ParseFiniteField(f[k], where, kKfginsFields[k]);
     if (!s.t_s.empty() && !(v[0] > s.t_s.back()))
       throw std::runtime_error(where + ": field sow: time does not increase");
     if (!s.t_s.empty()) {
@@ -102,10 +104,12 @@ ImuSeries ReadCaptureImuSeries(const std::string& cap_path) {
     last_a = p.a_flu_mps2;
   }
   if (s.size() < 2) throw std::runtime_error(cap_path + ": fewer than 3 timed IMU samples");
-  s.notes.push_back("MCU capture: IMU_SAMPLE point samples on GPS time (TIME_PULSE), FLU, each held "
-                    "until the next; " + std::to_string(cap.frames) + " frames, " +
-                    std::to_string(cap.bad_frames) + " bad, " + std::to_string(cap.resets) +
-                    " resets, " + std::to_string(dropped) + " samples without a later time");
+  s.notes.push_back(
+      "MCU capture: IMU_SAMPLE point samples on GPS time (TIME_PULSE), FLU, each held "
+      "until the next; " +
+      std::to_string(cap.frames) + " frames, " + std::to_string(cap.bad_frames) + " bad, " +
+      std::to_string(cap.resets) + " resets, " + std::to_string(dropped) +
+      " samples without a later time");
   return s;
 }
 

@@ -13,6 +13,10 @@ double LocalSlope(const std::vector<double>& t, const std::vector<double>& s, st
   return std::log(s[b] / s[a]) / std::log(t[b] / t[a]);
 }
 
+// a rise steeper than this after the floor is read as rate random walk (+1/2); flatter ones are
+// the floor's own scatter or the shoulder of a correlated bias (a choice, not a source's)
+constexpr double kRandomWalkMinSlope = 0.35;
+
 }  // namespace
 
 NoiseTerms FitNoiseTerms(const std::vector<double>& tau_s, const std::vector<double>& adev) {
@@ -20,12 +24,17 @@ NoiseTerms FitNoiseTerms(const std::vector<double>& tau_s, const std::vector<dou
     throw std::invalid_argument("noise fit needs at least two (tau, sigma) points");
   NoiseTerms r;
   const std::size_t n = tau_s.size();
-  const auto min_it = std::min_element(adev.begin(), adev.end());
-  const auto i_min = static_cast<std::size_t>(min_it - adev.begin());
-  // white noise: slope nearest −1/2 at or before the minimum
-  std::size_t i_white = 0;
+  // past an initial rise (a tone or a filter at the shortest τ), the floor is the first local
+  // minimum (where the white-noise decline ends), else the last point
+  std::size_t i_start = 0;
+  while (i_start + 1 < n && adev[i_start + 1] >= adev[i_start]) ++i_start;
+  if (i_start + 1 == n) i_start = 0;  // a curve that only rises: no decline to skip to
+  std::size_t i_min = i_start;
+  while (i_min + 1 < n && adev[i_min + 1] < adev[i_min]) ++i_min;
+  // white noise: slope nearest −1/2 from the decline's start to the floor
+  std::size_t i_white = i_start;
   double best = 1e300;
-  for (std::size_t i = 0; i <= i_min; ++i) {
+  for (std::size_t i = i_start; i <= i_min; ++i) {
     const double d = std::abs(LocalSlope(tau_s, adev, i) + 0.5);
     if (d < best) best = d, i_white = i;
   }
@@ -33,15 +42,16 @@ NoiseTerms FitNoiseTerms(const std::vector<double>& tau_s, const std::vector<dou
   r.white_tau_s = tau_s[i_white];
   r.white_slope = LocalSlope(tau_s, adev, i_white);
   // bias instability: the floor
-  r.bias_instability = *min_it / kBiasInstabilityFloor;
+  r.bias_instability = adev[i_min] / kBiasInstabilityFloor;
   r.bias_instability_tau_s = tau_s[i_min];
-  const double last_slope = std::log(adev[n - 1] / adev[n - 2]) / std::log(tau_s[n - 1] / tau_s[n - 2]);
+  const double last_slope =
+      std::log(adev[n - 1] / adev[n - 2]) / std::log(tau_s[n - 1] / tau_s[n - 2]);
   r.bias_instability_resolved = i_min + 1 < n || last_slope > -0.25;
   // rate random walk: slope nearest +1/2 after the minimum, if it rises at all
   best = 1e300;
   for (std::size_t i = i_min + 1; i < n; ++i) {
     const double slope = LocalSlope(tau_s, adev, i);
-    if (slope > 0.25 && std::abs(slope - 0.5) < best) {
+    if (slope > kRandomWalkMinSlope && std::abs(slope - 0.5) < best) {
       best = std::abs(slope - 0.5);
       r.rate_random_walk = adev[i] * std::sqrt(3.0 / tau_s[i]);
       r.rate_random_walk_tau_s = tau_s[i];
@@ -52,12 +62,13 @@ NoiseTerms FitNoiseTerms(const std::vector<double>& tau_s, const std::vector<dou
 
 double WhiteNoiseFromPsd(const std::vector<double>& freq_hz, const std::vector<double>& density,
                          double f_lo_hz, double f_hi_hz) {
-  double sum = 0;
-  std::size_t count = 0;
+  std::vector<double> band;
   for (std::size_t k = 0; k < freq_hz.size() && k < density.size(); ++k)
-    if (freq_hz[k] >= f_lo_hz && freq_hz[k] <= f_hi_hz) sum += density[k], ++count;
-  if (count == 0) throw std::invalid_argument("no PSD bin in the white-noise band");
-  return std::sqrt(sum / static_cast<double>(count) / 2.0);
+    if (freq_hz[k] >= f_lo_hz && freq_hz[k] <= f_hi_hz) band.push_back(density[k]);
+  if (band.empty()) throw std::invalid_argument("no PSD bin in the white-noise band");
+  const auto mid = band.begin() + static_cast<std::ptrdiff_t>(band.size() / 2);
+  std::nth_element(band.begin(), mid, band.end());
+  return std::sqrt(*mid / 2.0);
 }
 
 }  // namespace hil::harness

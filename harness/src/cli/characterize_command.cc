@@ -76,22 +76,27 @@ Subcommand AddCharacterize(CLI::App& app) {
       "  hil characterize IMU.txt --from 100 --to 700 --reference-arw 0.3\n"
       "Exit codes: 0 done, 1 --still found no still period, 2 bad input (file, line, field).");
   a->cmd->add_option("LOG", a->log, "IMU log")->required();
-  a->cmd->add_option("--format", a->format, "auto (default: .cap, a CSV with LOG.tag, else KF-GINS)")
+  a->cmd
+      ->add_option("--format", a->format, "auto (default: .cap, a CSV with LOG.tag, else KF-GINS)")
       ->check(CLI::IsMember({"auto", "kfgins", "csv-timetag", "capture"}));
   a->cmd->add_option("--from", a->opt.from_s, "window start, s from the log's first sample");
   a->cmd->add_option("--to", a->opt.to_s, "window end, s from the log's first sample");
   a->cmd->add_flag("--still", a->opt.still, "analyse the longest still period (in the window)");
-  a->cmd->add_option("--still-gyro-dps", a->still_gyro_dps,
-                     "still: largest gyro std per axis in a window (default 0.5 deg/s)")
+  a->cmd
+      ->add_option("--still-gyro-dps", a->still_gyro_dps,
+                   "still: largest gyro std per axis in a window (default 0.5 deg/s)")
       ->check(CLI::PositiveNumber);
-  a->cmd->add_option("--still-accel-mps2", a->opt.still_options.accel_std_mps2,
-                     "still: largest accelerometer std per axis in a window (default 0.1 m/s^2)")
+  a->cmd
+      ->add_option("--still-accel-mps2", a->opt.still_options.accel_std_mps2,
+                   "still: largest accelerometer std per axis in a window (default 0.1 m/s^2)")
       ->check(CLI::PositiveNumber);
-  a->cmd->add_option("--still-window-s", a->opt.still_options.window_s,
-                     "still: window length (default 1 s)")
+  a->cmd
+      ->add_option("--still-window-s", a->opt.still_options.window_s,
+                   "still: window length (default 1 s)")
       ->check(CLI::PositiveNumber);
-  a->cmd->add_option("--still-min-s", a->opt.still_options.min_length_s,
-                     "still: shortest period kept (default 5 s)")
+  a->cmd
+      ->add_option("--still-min-s", a->opt.still_options.min_length_s,
+                   "still: shortest period kept (default 5 s)")
       ->check(CLI::NonNegativeNumber);
   a->cmd->add_option("--step-s", a->opt.step_s, "grid step (default: the median sample interval)")
       ->check(CLI::PositiveNumber);

@@ -81,7 +81,8 @@ TEST(AllanDeviationTest, AgreesWithTheDefinitionComputedDirectly) {
   double walk = 0;
   for (std::size_t k = 0; k < y.size(); ++k) {
     walk += rw[k];
-    y[k] += 9.81 + walk + 0.3 * std::sin(2 * 3.14159265358979 * 23.0 * static_cast<double>(k) * tau0);
+    y[k] +=
+        9.81 + walk + 0.3 * std::sin(2 * 3.14159265358979 * 23.0 * static_cast<double>(k) * tau0);
   }
   const std::vector<std::size_t> m = OctaveClusterSizes(y.size());
   const std::vector<double> adev = OverlappingAllanDeviation(y, tau0, m);
@@ -91,14 +92,16 @@ TEST(AllanDeviationTest, AgreesWithTheDefinitionComputedDirectly) {
 }
 
 TEST(AllanDeviationTest, RejectsClustersLongerThanHalfTheSeries) {
-  EXPECT_THROW(OverlappingAllanDeviation(std::vector<double>(10, 1.0), 1, {6}), std::invalid_argument);
-  EXPECT_THROW(OverlappingAllanDeviation(std::vector<double>(10, 1.0), 1, {0}), std::invalid_argument);
+  EXPECT_THROW(OverlappingAllanDeviation(std::vector<double>(10, 1.0), 1, {6}),
+               std::invalid_argument);
+  EXPECT_THROW(OverlappingAllanDeviation(std::vector<double>(10, 1.0), 1, {0}),
+               std::invalid_argument);
 }
 
 // the real walk_0827 log's longest still period: hil characterize against the direct definition
 TEST(AllanDeviationTest, RealLogStillPeriodAgreesWithTheDefinition) {
-  const std::filesystem::path csv = std::filesystem::path(HIL_SHARED_DIR) /
-                                    "vectors/real_imu/walk_0827/imu_1730.csv";
+  const std::filesystem::path csv =
+      std::filesystem::path(HIL_SHARED_DIR) / "vectors/real_imu/walk_0827/imu_1730.csv";
   if (!std::filesystem::exists(csv)) GTEST_SKIP() << csv << " absent";
   CharacterizeOptions o;
   o.still = true;

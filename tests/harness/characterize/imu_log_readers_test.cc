@@ -2,8 +2,6 @@
 // input names the file, the line (or record) and the field; the hil command exits 2 on it.
 #include "hil/harness/characterize/imu_log_readers.h"
 
-#include <sys/wait.h>
-
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -14,6 +12,7 @@
 #include <sstream>
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 namespace hil::harness {
 namespace {
@@ -103,8 +102,8 @@ TEST_F(ImuLogReadersTest, CsvLinesAreTimedByTheirTickAndPutOnGpstByTheTag) {
     return static_cast<std::uint32_t>(e);
   };
   // ticks since the open: sample 5000 ms is written at host tick 1000 + 20
-  const std::string tag = Tag("imu.csv.tag", 1000, 0.5,
-                              {{5, end(1)}, {1020, end(2)}, {1030, end(3)}, {1040, end(4)}});
+  const std::string tag =
+      Tag("imu.csv.tag", 1000, 0.5, {{5, end(1)}, {1020, end(2)}, {1030, end(3)}, {1040, end(4)}});
   const ImuSeries s = ReadImuLog(csv);
   EXPECT_EQ(s.format, "csv-timetag");
   ASSERT_EQ(s.size(), 2u);  // three samples: two held intervals

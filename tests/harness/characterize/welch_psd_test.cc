@@ -29,7 +29,8 @@ TEST(WelchPsdTest, WhiteNoiseHasTheOneSidedLevelTwoSigmaSquaredOverFs) {
   EXPECT_EQ(p.segments, (y.size() - 1024) / 512 + 1);
   double sum = 0;
   for (std::size_t k = 1; k + 1 < p.density.size(); ++k) sum += p.density[k];
-  EXPECT_NEAR(sum / static_cast<double>(p.density.size() - 2) / (2 * sigma * sigma / fs), 1.0, 0.02);
+  EXPECT_NEAR(sum / static_cast<double>(p.density.size() - 2) / (2 * sigma * sigma / fs), 1.0,
+              0.02);
   // and N read from the PSD is σ·√τ0
   EXPECT_NEAR(WhiteNoiseFromPsd(p.freq_hz, p.density, fs / 50, fs / 10) / (sigma / std::sqrt(fs)),
               1.0, 0.03);

@@ -40,9 +40,9 @@ struct Characterization {
   std::vector<std::string> notes;
   double log_start_s = 0, log_length_s = 0;  ///< the log's own time scale
   double step_s = 0, max_gap_s = 0;
-  double from_s = 0, to_s = 0;  ///< the analysed window, seconds from the log's start
-  std::size_t samples = 0;      ///< grid cells analysed
-  UniformImu window;            ///< those cells (t0_s on the log's time scale)
+  double from_s = 0, to_s = 0;             ///< the analysed window, seconds from the log's start
+  std::size_t samples = 0;                 ///< grid cells analysed
+  UniformImu window;                       ///< those cells (t0_s on the log's time scale)
   std::vector<StillPeriod> still_periods;  ///< of the whole log
   Eigen::Vector3d mean_gyro_radps = Eigen::Vector3d::Zero();
   Eigen::Vector3d mean_accel_mps2 = Eigen::Vector3d::Zero();

@@ -15,7 +15,7 @@
 namespace hil::harness {
 
 struct ImuSeries {
-  std::string format;     ///< kfgins, csv-timetag, capture
+  std::string format;       ///< kfgins, csv-timetag, capture
   std::vector<double> t_s;  ///< interval boundaries (n + 1), seconds on the log's own time scale
   std::vector<Eigen::Vector3d> gyro_radps;  ///< n interval means, sensor axes
   std::vector<Eigen::Vector3d> accel_mps2;  ///< n interval means, sensor axes
