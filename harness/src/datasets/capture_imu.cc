@@ -92,6 +92,7 @@ class Decoder {
         ++out_.before_first_pulse;
         continue;
       }
+      out_.points.push_back({*t, s.w, s.a});
       if (prev) {
         CaptureImuSample o;
         o.t_gps_s = *t;

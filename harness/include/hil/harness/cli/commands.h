@@ -24,14 +24,15 @@ struct Subcommand {
   std::function<int()> run;
 };
 
-Subcommand AddRun(CLI::App& app);       ///< hil run
-Subcommand AddEmulate(CLI::App& app);   ///< hil emulate
-Subcommand AddValidate(CLI::App& app);  ///< hil validate
-Subcommand AddSuite(CLI::App& app);     ///< hil suite
-Subcommand AddReplay(CLI::App& app);    ///< hil replay
-Subcommand AddDataset(CLI::App& app);   ///< hil dataset
-Subcommand AddExport(CLI::App& app);    ///< hil export
-Subcommand AddCampaign(CLI::App& app);  ///< hil campaign (and its status, merge)
+Subcommand AddRun(CLI::App& app);           ///< hil run
+Subcommand AddEmulate(CLI::App& app);       ///< hil emulate
+Subcommand AddValidate(CLI::App& app);      ///< hil validate
+Subcommand AddSuite(CLI::App& app);         ///< hil suite
+Subcommand AddReplay(CLI::App& app);        ///< hil replay
+Subcommand AddDataset(CLI::App& app);       ///< hil dataset
+Subcommand AddExport(CLI::App& app);        ///< hil export
+Subcommand AddCampaign(CLI::App& app);      ///< hil campaign (and its status, merge)
+Subcommand AddCharacterize(CLI::App& app);  ///< hil characterize
 
 /// This executable's path ("hil" when /proc cannot tell).
 std::string SelfExecutable();

@@ -23,8 +23,18 @@ struct CaptureImuSample {
   Eigen::Vector3d dvel_flu_mps = Eigen::Vector3d::Zero();
 };
 
+/// One IMU_SAMPLE as the device sent it (a point sample at its tick), on GPS time.
+struct CaptureImuPoint {
+  double t_gps_s = 0;
+  Eigen::Vector3d w_flu_radps = Eigen::Vector3d::Zero();
+  Eigen::Vector3d a_flu_mps2 = Eigen::Vector3d::Zero();
+};
+
 struct CaptureImu {
   std::vector<CaptureImuSample> samples;
+  /// the samples themselves (every one with a GPS time, reset segments one after the other), for
+  /// analyses that must not see the trapezoidal increments' smoothing (hil characterize)
+  std::vector<CaptureImuPoint> points;
   std::uint64_t frames = 0, bad_frames = 0, pulses = 0, resets = 0, before_first_pulse = 0;
   /// GPS seconds since the epoch of emulated time 0 (from the first pulse, whose edge lies on a
   /// whole second of both clocks)
