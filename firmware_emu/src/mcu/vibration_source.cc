@@ -1,5 +1,6 @@
 #include "hil/firmware_emu/mcu/vibration_source.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -24,15 +25,21 @@ VibrationSource::VibrationSource(const RoughImuSpec& spec, std::uint64_t seed) :
     }
     orders_.push_back(o);
   }
+  double f_top = 0;
   for (const RideBand& r : spec.ride) {
     if (!(r.f_low_hz > 0 && r.f_low_hz < r.f_high_hz && r.f_high_hz < 0.5 * fs))
       throw std::invalid_argument("vibration: a ride band must satisfy 0 < f_low < f_high < fs/2");
+    f_top = std::max(f_top, r.f_high_hz);
+  }
+  if (f_top > 0) ride_decimation_ = std::max(1, static_cast<int>(fs / (16.0 * f_top)));
+  const double fs_ride = fs / ride_decimation_;
+  for (const RideBand& r : spec.ride) {
     Band b{};
-    // white noise of one-sided PSD S sampled at fs has variance S·fs/2
-    b.accel_sigma = (r.accel_psd_mps2_sq_per_hz * (0.5 * fs)).cwiseSqrt();
-    b.gyro_sigma = (r.gyro_psd_radps_sq_per_hz * (0.5 * fs)).cwiseSqrt();
-    b.accel_hp = b.gyro_hp = Biquad3::ButterworthHighPass(r.f_low_hz, fs);
-    b.accel_lp = b.gyro_lp = Biquad3::ButterworthLowPass(r.f_high_hz, fs);
+    // white noise of one-sided PSD S sampled at fs_ride has variance S·fs_ride/2
+    b.accel_sigma = (r.accel_psd_mps2_sq_per_hz * (0.5 * fs_ride)).cwiseSqrt();
+    b.gyro_sigma = (r.gyro_psd_radps_sq_per_hz * (0.5 * fs_ride)).cwiseSqrt();
+    b.accel_hp = b.gyro_hp = Biquad3::ButterworthHighPass(r.f_low_hz, fs_ride);
+    b.accel_lp = b.gyro_lp = Biquad3::ButterworthLowPass(r.f_high_hz, fs_ride);
     bands_.push_back(b);
   }
   if (spec.mount.frequency_hz > 0) {
@@ -57,6 +64,20 @@ double VibrationSource::UniformUnitVariance() {
   return (2.0 * rng_.Uniform() - 1.0) * std::numbers::sqrt3;
 }
 
+void VibrationSource::NextRideSample() {
+  ride_f_prev_ = ride_f_next_;
+  ride_w_prev_ = ride_w_next_;
+  ride_f_next_.setZero();
+  ride_w_next_.setZero();
+  for (Band& b : bands_) {
+    Eigen::Vector3d na, ng;
+    for (int i = 0; i < 3; ++i) na[i] = UniformUnitVariance();
+    for (int i = 0; i < 3; ++i) ng[i] = UniformUnitVariance();
+    ride_f_next_ += b.accel_lp.Step(b.accel_hp.Step(b.accel_sigma.cwiseProduct(na)));
+    ride_w_next_ += b.gyro_lp.Step(b.gyro_hp.Step(b.gyro_sigma.cwiseProduct(ng)));
+  }
+}
+
 void VibrationSource::Step(Eigen::Vector3d& f_I_mps2, Eigen::Vector3d& w_I_radps) {
   crank_rad_ += crank_radps_ * dt_s_;
   f_I_mps2.setZero();
@@ -65,18 +86,22 @@ void VibrationSource::Step(Eigen::Vector3d& f_I_mps2, Eigen::Vector3d& w_I_radps
   const bool turning = crank_radps_ != 0;
   for (Order& o : orders_) {
     if (!turning) break;
-    o.phasor *= o.rotation;
+    // written out: std::complex's operator* calls __muldc3 (NaN rules) without -ffast-math
+    const double re = o.phasor.real() * o.rotation.real() - o.phasor.imag() * o.rotation.imag();
+    const double im = o.phasor.real() * o.rotation.imag() + o.phasor.imag() * o.rotation.real();
+    o.phasor = {re, im};
     const double c = o.phasor.real(), s = o.phasor.imag();
     // Im(e^{ja} · A e^{jφ}) = A sin(a + φ)
     f_I_mps2 += c * o.accel_im + s * o.accel_re;
     w_I_radps += c * o.gyro_im + s * o.gyro_re;
   }
-  for (Band& b : bands_) {
-    Eigen::Vector3d na, ng;
-    for (int i = 0; i < 3; ++i) na[i] = UniformUnitVariance();
-    for (int i = 0; i < 3; ++i) ng[i] = UniformUnitVariance();
-    f_I_mps2 += b.accel_lp.Step(b.accel_hp.Step(b.accel_sigma.cwiseProduct(na)));
-    w_I_radps += b.gyro_lp.Step(b.gyro_hp.Step(b.gyro_sigma.cwiseProduct(ng)));
+  if (!bands_.empty()) {
+    if (ride_phase_ == 0) NextRideSample();
+    ++ride_phase_;
+    const double u = static_cast<double>(ride_phase_) / ride_decimation_;
+    f_I_mps2 += ride_f_prev_ + u * (ride_f_next_ - ride_f_prev_);
+    w_I_radps += ride_w_prev_ + u * (ride_w_next_ - ride_w_prev_);
+    if (ride_phase_ == ride_decimation_) ride_phase_ = 0;
   }
   if (mount_enabled_) {
     f_I_mps2 = accel_mount_.Step(f_I_mps2);

@@ -8,7 +8,10 @@
 /// @endsystem
 /// Engine orders are phasors rotated by order × crank angle (phases per axis drawn from the seed);
 /// ride vibration is white noise of the band's PSD through Butterworth high- and low-pass
-/// sections; both then pass the mount's transmissibility. Every draw comes from the seed.
+/// sections, generated at a sub-rate of at least 16 × its highest band edge and interpolated
+/// linearly onto the internal steps (ride vibration lies far below the internal rate; this keeps
+/// the model's cost within issue 41's budget); both then pass the mount's transmissibility. Every
+/// draw comes from the seed.
 
 #include <complex>
 #include <cstdint>
@@ -46,6 +49,7 @@ class VibrationSource {
     Biquad3 accel_hp, accel_lp, gyro_hp, gyro_lp;
   };
   double UniformUnitVariance();
+  void NextRideSample();
 
   Rng rng_;
   double crank_rad_ = 0;
@@ -53,6 +57,10 @@ class VibrationSource {
   double dt_s_ = 0;
   std::vector<Order> orders_;
   std::vector<Band> bands_;
+  int ride_decimation_ = 1;  ///< internal steps per ride sample
+  int ride_phase_ = 0;
+  Eigen::Vector3d ride_f_prev_ = Eigen::Vector3d::Zero(), ride_f_next_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d ride_w_prev_ = Eigen::Vector3d::Zero(), ride_w_next_ = Eigen::Vector3d::Zero();
   bool mount_enabled_ = false;
   Biquad3 accel_mount_, gyro_mount_;
 };
