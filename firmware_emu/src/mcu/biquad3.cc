@@ -8,7 +8,8 @@
 namespace hil::mcu {
 namespace {
 
-// Bilinear transform of the analog section (n2 s² + n1 s + n0)/(s² + d1 s + d0) with s = k(z−1)/(z+1).
+// Bilinear transform of the analog section (n2 s² + n1 s + n0)/(s² + d1 s + d0) with s =
+// k(z−1)/(z+1).
 Biquad3 BilinearSection(double n2, double n1, double n0, double d1, double d0, double k) {
   const double a0 = k * k + d1 * k + d0;
   return {(n2 * k * k + n1 * k + n0) / a0, (2.0 * n0 - 2.0 * n2 * k * k) / a0,

@@ -75,24 +75,24 @@ ImuProfile Icm42688() {
   ImuProfile s = ProfileByName("consumer-mems");
   s.name = "icm-42688-p";
   auto& a = s.accel.error;
-  a.noise_density = Eigen::Vector3d::Constant(75 * kMicroG0);        // table: 75 µg/√Hz
-  a.bias_instability = 40 * kMicroG0;                                // scenario choice
-  a.turn_on_bias_sigma = Eigen::Vector3d::Constant(20e-3 * kG0);     // scenario choice
-  a.bias_temperature_coeff_per_c = 0.15e-3 * kG0;                    // table: ±0.15 mg/K
-  a.scale_factor_sigma_ppm = 5000;                                   // scenario choice
-  a.scale_temperature_ppm_per_c = 100;                               // scenario choice
+  a.noise_density = Eigen::Vector3d::Constant(75 * kMicroG0);     // table: 75 µg/√Hz
+  a.bias_instability = 40 * kMicroG0;                             // scenario choice
+  a.turn_on_bias_sigma = Eigen::Vector3d::Constant(20e-3 * kG0);  // scenario choice
+  a.bias_temperature_coeff_per_c = 0.15e-3 * kG0;                 // table: ±0.15 mg/K
+  a.scale_factor_sigma_ppm = 5000;                                // scenario choice
+  a.scale_temperature_ppm_per_c = 100;                            // scenario choice
   a.bandwidth_hz = 258;  // AAF setting (scenario choice within the chip's programmable AAF)
   Flicker(a, 5, 500);
   s.accel.counts.count_lsb = kG0 / 8192.0;  // ±4 g full scale (configuration choice)
   s.accel.counts.range = 4 * kG0;
   auto& g = s.gyro.error;
-  g.noise_density = Eigen::Vector3d::Constant(0.0028 * kDeg);        // table: 0.0028 °/s/√Hz
-  g.bias_instability = 5 * kDegPerHr;                                // scenario choice
-  g.turn_on_bias_sigma = Eigen::Vector3d::Constant(0.5 * kDeg);      // table: ZRO 0.5 °/s typ
-  g.bias_temperature_coeff_per_c = 0.005 * kDeg;                     // table: 0.005 °/s/K
-  g.scale_factor_sigma_ppm = 5000;                                   // scenario choice
-  g.scale_temperature_ppm_per_c = 100;                               // scenario choice
-  g.g_sensitivity_radps_per_mps2 = 0.01 * kDeg / kG0;                // scenario choice
+  g.noise_density = Eigen::Vector3d::Constant(0.0028 * kDeg);    // table: 0.0028 °/s/√Hz
+  g.bias_instability = 5 * kDegPerHr;                            // scenario choice
+  g.turn_on_bias_sigma = Eigen::Vector3d::Constant(0.5 * kDeg);  // table: ZRO 0.5 °/s typ
+  g.bias_temperature_coeff_per_c = 0.005 * kDeg;                 // table: 0.005 °/s/K
+  g.scale_factor_sigma_ppm = 5000;                               // scenario choice
+  g.scale_temperature_ppm_per_c = 100;                           // scenario choice
+  g.g_sensitivity_radps_per_mps2 = 0.01 * kDeg / kG0;            // scenario choice
   g.bandwidth_hz = 258;
   Flicker(g, 5, 500);
   s.gyro.counts.count_lsb = kDeg / 131.0;  // ±250 °/s full scale (configuration choice)
@@ -116,7 +116,7 @@ std::vector<EngineOrder> FourCylinderOrders(const Eigen::Vector3d& o2_mps2,
 FieldProfile ConsumerMemsCar() {
   FieldProfile p{"consumer_mems_car", Icm42688(), {}};
   RoughImuSpec& r = p.rough;
-  r.internal_rate_hz = 1000;  // the chip's own ODR (1 kHz) that the MCU decimates
+  r.internal_rate_hz = 1000;    // the chip's own ODR (1 kHz) that the MCU decimates
   r.rpm_profile = {{0, 2200}};  // scenario choice: cruising
   // scenario choice: a board on the centre console
   r.engine_orders = FourCylinderOrders(V(0.6, 0.4, 1.2), V(0.3, 0.3, 0.2));
@@ -151,7 +151,7 @@ FieldProfile IndustrialMemsTractor() {
   // 1 kHz: above twice the 300 Hz anti-alias cutoff and 6 × order 4 at 2500 RPM (scenario choice;
   // the cost of 2 kHz is twice that, issue 41's budget is 10 % of seed004's run time)
   r.internal_rate_hz = 1000;
-  r.accel_aaf_hz = 300;       // the profile's bandwidth_hz
+  r.accel_aaf_hz = 300;  // the profile's bandwidth_hz
   r.gyro_aaf_hz = 300;
   r.rpm_profile = {{0, 2000}};
   // on the tractor's frame next to the engine: stronger orders than in the cab (scenario choice)

@@ -32,17 +32,15 @@ double InterpolateProfile(const std::vector<ProfilePoint>& profile, double t_s, 
   return a.value + u * (b.value - a.value);
 }
 
-ImuFrontEnd::ImuFrontEnd(const RoughImuSpec& spec, const FrontEndLimits& limits,
-                         std::uint64_t seed)
+ImuFrontEnd::ImuFrontEnd(const RoughImuSpec& spec, const FrontEndLimits& limits, std::uint64_t seed)
     : spec_(spec),
       limits_(limits),
       vibration_(spec, seed),
       accel_aaf_(AntiAliasLowPass(limits.accel_aaf_hz, spec.internal_rate_hz, "accel")),
       gyro_aaf_(AntiAliasLowPass(limits.gyro_aaf_hz, spec.internal_rate_hz, "gyro")) {}
 
-void ImuFrontEnd::Advance(Time t, const Eigen::Vector3d& f_I_mps2,
-                          const Eigen::Vector3d& w_I_radps, Eigen::Vector3d& f_out,
-                          Eigen::Vector3d& w_out) {
+void ImuFrontEnd::Advance(Time t, const Eigen::Vector3d& f_I_mps2, const Eigen::Vector3d& w_I_radps,
+                          Eigen::Vector3d& f_out, Eigen::Vector3d& w_out) {
   if (first_) {
     first_ = false;
     accel_aaf_.Settle(ClipToRange(f_I_mps2, limits_.accel_range_mps2));

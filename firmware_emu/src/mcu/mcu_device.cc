@@ -88,7 +88,8 @@ McuDevice::McuDevice(const McuConfig& config, std::uint64_t seed)
           1.0 / (config.mag_rate_hz * (1.0 + config.mag_oscillator_ppm * 1e-6)))),
       tag_rng_(DeriveSeed(seed, 6)) {
   if (config_.rough.front_end_enabled())
-    front_end_.emplace(config_.rough, LimitsFor(config_, GyroSpecFor(config_)), DeriveSeed(seed, 5));
+    front_end_.emplace(config_.rough, LimitsFor(config_, GyroSpecFor(config_)),
+                       DeriveSeed(seed, 5));
   accel_.SetVibration(config_.vibration, true);
   gyro_.SetVibration(config_.vibration, false);
   for (const McuFault& f : config_.faults)
@@ -139,9 +140,10 @@ void McuDevice::ScheduleImu() {
   const double first_ticks = std::round(config_.first_sample_delay_s * 1e6);
   const double tick = first_ticks + static_cast<double>(imu_index_) * imu_period_ticks_;
   // the sample timer runs on the MCU's crystal, or on the IMU's own oscillator when it has one
-  const double sample_clock_hz = config_.rough.time_tag.imu_clock_ppm != 0
-                                     ? kNominalTickHz * (1.0 + config_.rough.time_tag.imu_clock_ppm * 1e-6)
-                                     : tick_hz_;
+  const double sample_clock_hz =
+      config_.rough.time_tag.imu_clock_ppm != 0
+          ? kNominalTickHz * (1.0 + config_.rough.time_tag.imu_clock_ppm * 1e-6)
+          : tick_hz_;
   const auto offset_ns = static_cast<std::int64_t>(std::llround(tick * 1e9 / sample_clock_hz));
   const auto jitter_ns =
       static_cast<std::int64_t>(std::llround(timing_rng_.Uniform() * config_.jitter_us * 1e3));

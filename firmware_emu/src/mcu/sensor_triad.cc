@@ -72,9 +72,9 @@ void SensorTriad::InitFlicker(std::uint64_t seed) {
   constexpr int kGrid = 33;
   double mean = 0;
   for (int g = 0; g < kGrid; ++g) {
-    const double tau = 1.8926 * e.flicker_tau_min_s *
-                       std::pow(e.flicker_tau_max_s / e.flicker_tau_min_s,
-                                static_cast<double>(g) / (kGrid - 1));
+    const double tau =
+        1.8926 * e.flicker_tau_min_s *
+        std::pow(e.flicker_tau_max_s / e.flicker_tau_min_s, static_cast<double>(g) / (kGrid - 1));
     double avar = 0;
     for (double tc : tau_c) avar += GaussMarkovAllanVariance(tau, tc);
     mean += std::sqrt(avar) / kGrid;

@@ -99,9 +99,10 @@ void ReadMcu(const YamlReader& r, McuDeviceSpec& m) {
   if (r.Has("imu_profile")) {
     // issue 41: a named field profile (sensor + its rough terms + the vehicle's vibration)
     if (r.Has("profile")) r.Fail("imu_profile", "give either profile or imu_profile, not both");
-    const mcu::FieldProfile fp = mcu::FieldProfileByName(r.Choice(
-        "imu_profile", "", {"razor_small_engine_robot", "consumer_mems_car",
-                            "consumer_mems_tractor_cab", "industrial_mems_tractor"}));
+    const mcu::FieldProfile fp =
+        mcu::FieldProfileByName(r.Choice("imu_profile", "",
+                                         {"razor_small_engine_robot", "consumer_mems_car",
+                                          "consumer_mems_tractor_cab", "industrial_mems_tractor"}));
     c.profile = fp.sensor;
     c.rough = fp.rough;
   } else {

@@ -109,12 +109,18 @@ double Scaled(const YamlReader& r, const char* key, double current, double scale
 }
 
 void ReadTriadTerms(const YamlReader& r, const TriadUnits& u, bool gyro, mcu::TriadSpec& t) {
-  std::vector<std::string> keys{u.density_key,   u.instability_key,
-                                u.rrw_key,       u.turn_on_key,
-                                u.temp_bias_key, u.range_key,
-                                u.lsb_key,       "flicker_terms",
-                                "flicker_tau_s", "scale_factor_ppm",
-                                "scale_temperature_ppm_per_c", "misalignment_deg",
+  std::vector<std::string> keys{u.density_key,
+                                u.instability_key,
+                                u.rrw_key,
+                                u.turn_on_key,
+                                u.temp_bias_key,
+                                u.range_key,
+                                u.lsb_key,
+                                "flicker_terms",
+                                "flicker_tau_s",
+                                "scale_factor_ppm",
+                                "scale_temperature_ppm_per_c",
+                                "misalignment_deg",
                                 "bandwidth_hz"};
   if (gyro) keys.emplace_back("g_sensitivity_dps_per_g");
   r.CheckKeys(keys);
@@ -124,7 +130,8 @@ void ReadTriadTerms(const YamlReader& r, const TriadUnits& u, bool gyro, mcu::Tr
   e.bias_instability = Scaled(r, u.instability_key, e.bias_instability, u.instability, 1e6);
   e.bias_random_walk = Scaled(r, u.rrw_key, e.bias_random_walk, u.rrw, 1e6);
   if (r.Has(u.turn_on_key))
-    e.turn_on_bias_sigma = Eigen::Vector3d::Constant(r.DoubleIn(u.turn_on_key, 0, 0, 1e6) * u.turn_on);
+    e.turn_on_bias_sigma =
+        Eigen::Vector3d::Constant(r.DoubleIn(u.turn_on_key, 0, 0, 1e6) * u.turn_on);
   if (r.Has(u.temp_bias_key))
     e.bias_temperature_coeff_per_c = r.DoubleIn(u.temp_bias_key, 0, -1e3, 1e3) * u.temp_bias;
   e.flicker_terms = static_cast<int>(r.Int("flicker_terms", e.flicker_terms, 0, 8));
@@ -135,15 +142,14 @@ void ReadTriadTerms(const YamlReader& r, const TriadUnits& u, bool gyro, mcu::Tr
   e.scale_factor_sigma_ppm = r.DoubleIn("scale_factor_ppm", e.scale_factor_sigma_ppm, 0, 1e5);
   e.scale_temperature_ppm_per_c =
       r.DoubleIn("scale_temperature_ppm_per_c", e.scale_temperature_ppm_per_c, -1e4, 1e4);
-  e.misalignment_sigma_rad =
-      Scaled(r, "misalignment_deg", e.misalignment_sigma_rad, kDeg, 10);
+  e.misalignment_sigma_rad = Scaled(r, "misalignment_deg", e.misalignment_sigma_rad, kDeg, 10);
   e.bandwidth_hz = r.DoubleIn("bandwidth_hz", e.bandwidth_hz, 0, 20000);
   if (gyro && r.Has("g_sensitivity_dps_per_g"))
     e.g_sensitivity_radps_per_mps2 =
         r.DoubleIn("g_sensitivity_dps_per_g", 0, -100, 100) * kDeg / kG0Rough;
   t.counts.range = Scaled(r, u.range_key, t.counts.range, u.range, 1e6);
-  t.counts.count_lsb = r.Has(u.lsb_key) ? r.DoubleIn(u.lsb_key, 0, 1e-9, 1e6) * u.lsb
-                                        : t.counts.count_lsb;
+  t.counts.count_lsb =
+      r.Has(u.lsb_key) ? r.DoubleIn(u.lsb_key, 0, 1e-9, 1e6) * u.lsb : t.counts.count_lsb;
 }
 
 }  // namespace
@@ -182,7 +188,8 @@ void ReadMcuRough(const YamlReader& r, mcu::McuConfig& c) {
   const double accel_aaf = s.accel_aaf_hz > 0 ? s.accel_aaf_hz : c.profile.accel.error.bandwidth_hz;
   const double gyro_aaf = s.gyro_aaf_hz > 0 ? s.gyro_aaf_hz : c.profile.gyro.error.bandwidth_hz;
   if (s.internal_rate_hz > 0 && !(accel_aaf > 0 && accel_aaf < half))
-    r.Fail("accel_aaf_hz", "the accelerometer's anti-alias cutoff must be in (0, internal_rate_hz/2)");
+    r.Fail("accel_aaf_hz",
+           "the accelerometer's anti-alias cutoff must be in (0, internal_rate_hz/2)");
   if (s.internal_rate_hz > 0 && !(gyro_aaf > 0 && gyro_aaf < half))
     r.Fail("gyro_aaf_hz", "the gyro's anti-alias cutoff must be in (0, internal_rate_hz/2)");
   for (const mcu::RideBand& b : s.ride)

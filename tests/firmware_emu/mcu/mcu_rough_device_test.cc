@@ -50,7 +50,8 @@ TEST(McuRoughDeviceTest, ALaggedTimeTagCarriesTheSameCountsLater) {
   ASSERT_GT(a.size(), 250u);
   ASSERT_GT(b.size(), 250u);
   for (std::size_t i = 0; i < b.size(); ++i) {
-    EXPECT_EQ(a[i].frame.payload, b[i].frame.payload) << i;  // the sample sensed at the same instant
+    EXPECT_EQ(a[i].frame.payload, b[i].frame.payload)
+        << i;  // the sample sensed at the same instant
     EXPECT_NEAR(static_cast<double>(b[i].frame.tick - a[i].frame.tick), 100000.0, 1.0);
     EXPECT_EQ((b[i].t_ready - a[i].t_ready).count(), 100000000);
   }

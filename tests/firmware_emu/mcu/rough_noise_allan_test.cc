@@ -78,7 +78,8 @@ TEST(RoughNoiseAllanTest, FlickerSumIsFlatAtTheBiasInstabilityFloor) {
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
     const auto a = test::AllanDeviation(StillX(s, 600000, seed), kDtR);
     if (mean.empty()) mean.assign(a.size(), {0.0, 0.0});
-    for (std::size_t i = 0; i < a.size(); ++i) mean[i] = {a[i].first, mean[i].second + a[i].second / 3};
+    for (std::size_t i = 0; i < a.size(); ++i)
+      mean[i] = {a[i].first, mean[i].second + a[i].second / 3};
   }
   EXPECT_NEAR(Slope(mean, 6.4, 204.8), 0.0, 0.15);
   double worst = 0;

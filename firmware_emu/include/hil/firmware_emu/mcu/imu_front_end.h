@@ -1,9 +1,10 @@
 #pragma once
 /// @file
 /// @system
-/// name: ImuFrontEnd (the analog side of an IMU chip, between the board's motion and its ADC output)
-/// input: the ideal specific force and angular rate at each output sample instant (IMU frame I)
-/// output: the band-limited specific force and angular rate at that instant, before the sensor's
+/// name: ImuFrontEnd (the analog side of an IMU chip, between the board's motion and its ADC
+/// output) input: the ideal specific force and angular rate at each output sample instant (IMU
+/// frame I) output: the band-limited specific force and angular rate at that instant, before the
+/// sensor's
 ///         errors (scale, bias, noise) and quantisation
 /// rate: an internal loop at RoughImuSpec::internal_rate_hz between two output samples
 /// @endsystem

@@ -2,13 +2,14 @@
 /// @file
 /// Configuration of the field-rough IMU model (issue 41): what the board feels besides the
 /// vehicle's rigid-body motion (engine orders from an RPM profile, broadband ride vibration from a
-/// PSD, a mount resonance), the sensor's own front end (ADC clipping at its range and a second-order
-/// anti-alias low-pass, run at an internal rate well above the output rate so that vibration
-/// aliases as on a real board), the temperature profile, and the sample's time tag (latency,
-/// jitter, IMU oscillator drift against the MCU). The sensor error terms themselves (noise, bias
-/// instability, scale, misalignment, g-sensitivity …) live in TriadErrorSpec (sensor_spec.h).
-/// Every member defaults to "off": a scenario without the new keys runs the previous model, byte
-/// for byte. Named field profiles (field_profiles.h) fill this from data sheets and papers.
+/// PSD, a mount resonance), the sensor's own front end (ADC clipping at its range and a
+/// second-order anti-alias low-pass, run at an internal rate well above the output rate so that
+/// vibration aliases as on a real board), the temperature profile, and the sample's time tag
+/// (latency, jitter, IMU oscillator drift against the MCU). The sensor error terms themselves
+/// (noise, bias instability, scale, misalignment, g-sensitivity …) live in TriadErrorSpec
+/// (sensor_spec.h). Every member defaults to "off": a scenario without the new keys runs the
+/// previous model, byte for byte. Named field profiles (field_profiles.h) fill this from data
+/// sheets and papers.
 ///
 /// Frames: amplitudes are in the IMU case frame I (x, y, z of the board).
 
@@ -54,9 +55,9 @@ struct MountResonance {
 
 /// The sample's time tag: the MCU tags a sample later than the instant it measured.
 struct TimeTagSpec {
-  double latency_s = 0;         ///< constant: sense instant → tagged (read) instant
-  double jitter_s = 0;          ///< extra tag delay, uniform in [0, jitter_s], per sample
-  double imu_clock_ppm = 0;     ///< the IMU's own output-rate oscillator, against nominal
+  double latency_s = 0;      ///< constant: sense instant → tagged (read) instant
+  double jitter_s = 0;       ///< extra tag delay, uniform in [0, jitter_s], per sample
+  double imu_clock_ppm = 0;  ///< the IMU's own output-rate oscillator, against nominal
   bool enabled() const { return latency_s > 0 || jitter_s > 0 || imu_clock_ppm != 0; }
 };
 

@@ -45,7 +45,7 @@ class VibrationSource {
     Eigen::Vector3d accel_re, accel_im, gyro_re, gyro_im;  ///< amplitude · e^{jφ} per axis
   };
   struct Band {
-    Eigen::Vector3d accel_sigma, gyro_sigma;     ///< per-step std of the white drive
+    Eigen::Vector3d accel_sigma, gyro_sigma;  ///< per-step std of the white drive
     Biquad3 accel_hp, accel_lp, gyro_hp, gyro_lp;
   };
   double UniformUnitVariance();
