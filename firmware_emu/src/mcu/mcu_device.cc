@@ -32,6 +32,10 @@ const McuConfig& Validated(const McuConfig& c) {
     throw std::invalid_argument("mcu: mag_rate_hz must be in (0, 1000]");
   if (std::abs(c.crystal_ppm) > 10000) throw std::invalid_argument("mcu: crystal_ppm out of range");
   if (c.baud <= 0) throw std::invalid_argument("mcu: baud must be positive");
+  if (c.rough.front_end_enabled() && c.rough.internal_rate_hz < 4 * c.imu_rate_hz)
+    throw std::invalid_argument("mcu: rough.internal_rate_hz must be >= 4 x imu_rate_hz");
+  if (c.rough.time_tag.latency_s < 0 || c.rough.time_tag.jitter_s < 0)
+    throw std::invalid_argument("mcu: time tag latency and jitter must be >= 0");
   if (c.can.ari_every < 1 || c.can.accs_every < 1 || c.can.ssi2_every < 1)
     throw std::invalid_argument("mcu: CAN dividers must be >= 1");
   return c;
@@ -42,6 +46,16 @@ TriadSpec GyroSpecFor(const McuConfig& c) {
   // the stock Razor firmware reads each gyro with one analogRead per sample
   if (c.format != SerialFormat::kBinary) g.counts.oversample = 1;
   return g;
+}
+
+FrontEndLimits LimitsFor(const McuConfig& c, const TriadSpec& gyro) {
+  FrontEndLimits l;
+  l.accel_range_mps2 = c.profile.accel.counts.range;
+  l.gyro_range_radps = gyro.counts.range;
+  l.accel_aaf_hz =
+      c.rough.accel_aaf_hz > 0 ? c.rough.accel_aaf_hz : c.profile.accel.error.bandwidth_hz;
+  l.gyro_aaf_hz = c.rough.gyro_aaf_hz > 0 ? c.rough.gyro_aaf_hz : gyro.error.bandwidth_hz;
+  return l;
 }
 
 std::array<int, 3> Ints(const TriadCounts& c, int add = 0) {
@@ -71,7 +85,11 @@ McuDevice::McuDevice(const McuConfig& config, std::uint64_t seed)
       tick_hz_(kNominalTickHz * (1.0 + config.crystal_ppm * 1e-6)),
       imu_period_ticks_(static_cast<std::uint32_t>(std::lround(1e6 / config.imu_rate_hz))),
       mag_period_(DurationFromSeconds(
-          1.0 / (config.mag_rate_hz * (1.0 + config.mag_oscillator_ppm * 1e-6)))) {
+          1.0 / (config.mag_rate_hz * (1.0 + config.mag_oscillator_ppm * 1e-6)))),
+      tag_rng_(DeriveSeed(seed, 6)) {
+  if (config_.rough.front_end_enabled())
+    front_end_.emplace(config_.rough, LimitsFor(config_, GyroSpecFor(config_)),
+                       DeriveSeed(seed, 5));
   accel_.SetVibration(config_.vibration, true);
   gyro_.SetVibration(config_.vibration, false);
   for (const McuFault& f : config_.faults)
@@ -103,6 +121,7 @@ Time McuDevice::next_event_time() const {
   if (config_.time_pulse) t = std::min(t, next_pps_);
   if (pending_boot_) t = std::min(t, *pending_boot_);
   if (!resets_.empty()) t = std::min(t, resets_.front().first);
+  if (!pending_imu_.empty()) t = std::min(t, pending_imu_.front().t_tag);
   return t;
 }
 
@@ -113,13 +132,19 @@ void McuDevice::Boot(Time t_boot) {
   sequence_ = 0;
   last_pulse_.reset();  // RAM is cleared by a reset
   imu_index_ = 0;
+  pending_imu_.clear();  // samples read but not yet sent are lost with the RAM
   ScheduleImu();
 }
 
 void McuDevice::ScheduleImu() {
   const double first_ticks = std::round(config_.first_sample_delay_s * 1e6);
   const double tick = first_ticks + static_cast<double>(imu_index_) * imu_period_ticks_;
-  const auto offset_ns = static_cast<std::int64_t>(std::llround(tick * 1e9 / tick_hz_));
+  // the sample timer runs on the MCU's crystal, or on the IMU's own oscillator when it has one
+  const double sample_clock_hz =
+      config_.rough.time_tag.imu_clock_ppm != 0
+          ? kNominalTickHz * (1.0 + config_.rough.time_tag.imu_clock_ppm * 1e-6)
+          : tick_hz_;
+  const auto offset_ns = static_cast<std::int64_t>(std::llround(tick * 1e9 / sample_clock_hz));
   const auto jitter_ns =
       static_cast<std::int64_t>(std::llround(timing_rng_.Uniform() * config_.jitter_us * 1e3));
   next_imu_ = boot_ + Duration{offset_ns + jitter_ns};
@@ -131,6 +156,7 @@ void McuDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
     pending_boot_ = t + resets_.front().second;
     resets_.erase(resets_.begin());
     up_ = false;
+    pending_imu_.clear();
     reset_cause_ = kResetCauseExternal;
     ++reset_count_;
     ++stats_.resets;
@@ -142,6 +168,11 @@ void McuDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
   if (config_.time_pulse && next_pps_ == t) {
     if (up_) OnTimePulse(t, out);
     next_pps_ += std::chrono::seconds(1);
+  }
+  while (up_ && !pending_imu_.empty() && pending_imu_.front().t_tag == t) {
+    const PendingImu p = pending_imu_.front();
+    pending_imu_.pop_front();
+    EmitImu(t, p.accel, p.gyro, p.index, out);
   }
   if (up_ && next_imu_ == t) {
     OnImuSample(truth, out);
@@ -209,19 +240,46 @@ void McuDevice::SendSerial(Time t_sample, std::string bytes, const char* what, D
       {t_sample + DurationFromSeconds(config_.output_latency_s), 0, std::move(bytes), what});
 }
 
+double McuDevice::TemperatureAt(double t_s) const {
+  return InterpolateProfile(
+      config_.rough.temperature_profile, t_s,
+      config_.temperature_c + config_.temperature_rate_c_per_h * t_s / 3600.0);
+}
+
 void McuDevice::OnImuSample(const TruthSample& truth, DeviceOutput& out) {
   const Time t = truth.t;
-  const double t_s = ToSeconds(t);
-  const double temp = config_.temperature_c + config_.temperature_rate_c_per_h * t_s / 3600.0;
+  const double temp = TemperatureAt(ToSeconds(t));
   const IdealImu ideal = IdealImuFromTruth(truth, config_.mounting, config_.magnetic);
-  TriadCounts a = accel_.Sample(ideal.f_I_mps2, t, temp);
-  TriadCounts g = gyro_.Sample(ideal.w_I_radps, t, temp);
+  const double g_sens = gyro_.spec().error.g_sensitivity_radps_per_mps2;
+  TriadCounts a, g;
+  if (front_end_) {
+    Eigen::Vector3d f_bl, w_bl;
+    front_end_->Advance(t, ideal.f_I_mps2, ideal.w_I_radps, f_bl, w_bl);
+    a = accel_.Quantise(accel_.MeasureBandLimited(f_bl, Eigen::Vector3d::Zero(), temp));
+    g = gyro_.Quantise(gyro_.MeasureBandLimited(w_bl, g_sens * f_bl, temp));
+  } else {
+    a = accel_.Sample(ideal.f_I_mps2, t, temp);
+    g = g_sens != 0 ? gyro_.Sample(ideal.w_I_radps + g_sens * ideal.f_I_mps2, t, temp)
+                    : gyro_.Sample(ideal.w_I_radps, t, temp);
+  }
   if (have_accel_ && Stuck("accel", t)) a = last_accel_;
   if (have_gyro_ && Stuck("gyro", t)) g = last_gyro_;
   last_accel_ = a, last_gyro_ = g;
   have_accel_ = have_gyro_ = true;
   ++stats_.imu_samples;
+  const TimeTagSpec& tag = config_.rough.time_tag;
+  if (tag.latency_s > 0 || tag.jitter_s > 0) {
+    // the sample is read (and tagged) later than it was sensed; tags never go backwards
+    Time t_tag = t + DurationFromSeconds(tag.latency_s + tag.jitter_s * tag_rng_.Uniform());
+    if (!pending_imu_.empty()) t_tag = std::max(t_tag, pending_imu_.back().t_tag);
+    pending_imu_.push_back({t_tag, a, g, imu_index_});
+    return;
+  }
+  EmitImu(t, a, g, imu_index_, out);
+}
 
+void McuDevice::EmitImu(Time t, const TriadCounts& a, const TriadCounts& g, std::uint64_t index,
+                        DeviceOutput& out) {
   switch (config_.format) {
     case SerialFormat::kBinary: {
       ImuSamplePayload p;
@@ -248,11 +306,11 @@ void McuDevice::OnImuSample(const TruthSample& truth, DeviceOutput& out) {
   const Time t_bus = t + DurationFromSeconds(c.latency_s);
   const Eigen::Vector3d f = Engineering(a, accel_.output_lsb());
   const Eigen::Vector3d w = Engineering(g, gyro_.output_lsb());
-  if (imu_index_ % static_cast<std::uint64_t>(c.ari_every) == 0)
+  if (index % static_cast<std::uint64_t>(c.ari_every) == 0)
     out.can.push_back(EncodeAri(t_bus, c.address, w, Fom(g), c.latency_s));
-  if (imu_index_ % static_cast<std::uint64_t>(c.accs_every) == 0)
+  if (index % static_cast<std::uint64_t>(c.accs_every) == 0)
     out.can.push_back(EncodeAccs(t_bus, c.address, f, Fom(a), c.latency_s));
-  if (imu_index_ % static_cast<std::uint64_t>(c.ssi2_every) == 0) {
+  if (index % static_cast<std::uint64_t>(c.ssi2_every) == 0) {
     const std::uint8_t fom = (a.saturated[0] || a.saturated[1] || a.saturated[2]) ? 1 : 0;
     out.can.push_back(EncodeSsi2(t_bus, c.address, f, fom, fom, c.latency_s));
   }
@@ -260,8 +318,7 @@ void McuDevice::OnImuSample(const TruthSample& truth, DeviceOutput& out) {
 
 void McuDevice::OnMagSample(const TruthSample& truth) {
   const Time t = truth.t;
-  const double t_s = ToSeconds(t);
-  const double temp = config_.temperature_c + config_.temperature_rate_c_per_h * t_s / 3600.0;
+  const double temp = TemperatureAt(ToSeconds(t));
   const IdealImu ideal = IdealImuFromTruth(truth, config_.mounting, config_.magnetic);
   TriadCounts m = mag_.Sample(ideal.mag_I_uT, t, temp);
   if (have_mag_ && Stuck("mag", t)) m = last_mag_;

@@ -31,7 +31,9 @@ SensorTriad::SensorTriad(const TriadSpec& spec, double sample_period_s, std::uin
       if (i != j) scale_misalignment_(i, j) = e.misalignment_sigma_rad * rng_.Normal();
   for (int i = 0; i < 3; ++i) turn_on_bias_[i] = e.turn_on_bias_sigma[i] * rng_.Normal();
 
-  if (e.bias_instability > 0) {
+  if (e.bias_instability > 0 && e.flicker_terms > 0) {
+    InitFlicker(seed);
+  } else if (e.bias_instability > 0) {
     const double sigma = e.bias_instability * kFlickerFloor / kGaussMarkovAllanPeak;
     gm_phi_ = std::exp(-period_s_ / e.bias_correlation_time_s);
     gm_drive_ = sigma * std::sqrt(1.0 - gm_phi_ * gm_phi_);
@@ -45,6 +47,76 @@ SensorTriad::SensorTriad(const TriadSpec& spec, double sample_period_s, std::uin
         e.bandwidth_hz > 0 ? std::numbers::pi / 2.0 * e.bandwidth_hz : 0.5 / period_s_;
     white_sigma_scale_ = std::sqrt(noise_bw_hz);
   }
+}
+
+double GaussMarkovAllanVariance(double tau_s, double tau_c_s) {
+  const double x = tau_s / tau_c_s;
+  return 2.0 / x * (1.0 - (3.0 - 4.0 * std::exp(-x) + std::exp(-2.0 * x)) / (2.0 * x));
+}
+
+void SensorTriad::InitFlicker(std::uint64_t seed) {
+  const TriadErrorSpec& e = spec_.error;
+  if (!(e.flicker_tau_min_s > 0 && e.flicker_tau_max_s >= e.flicker_tau_min_s))
+    throw std::invalid_argument("SensorTriad: flicker correlation times must be 0 < min <= max");
+  // a stream of its own, so that the other draws of the triad keep their order
+  flicker_rng_ = Rng(seed ^ 0xF11C4E5A5EEDULL);
+  const int n = e.flicker_terms;
+  std::vector<double> tau_c(static_cast<std::size_t>(n));
+  for (int j = 0; j < n; ++j) {
+    const double u = n > 1 ? static_cast<double>(j) / (n - 1) : 0.5;
+    tau_c[static_cast<std::size_t>(j)] =
+        e.flicker_tau_min_s * std::pow(e.flicker_tau_max_s / e.flicker_tau_min_s, u);
+  }
+  // one σ for all terms, scaled so that the summed Allan deviation, averaged over log τ across the
+  // terms' peaks (1.89 τc_min … 1.89 τc_max), equals the flicker floor B·√(2 ln2/π)
+  constexpr int kGrid = 33;
+  double mean = 0;
+  for (int g = 0; g < kGrid; ++g) {
+    const double tau =
+        1.8926 * e.flicker_tau_min_s *
+        std::pow(e.flicker_tau_max_s / e.flicker_tau_min_s, static_cast<double>(g) / (kGrid - 1));
+    double avar = 0;
+    for (double tc : tau_c) avar += GaussMarkovAllanVariance(tau, tc);
+    mean += std::sqrt(avar) / kGrid;
+  }
+  const double sigma = e.bias_instability * kFlickerFloor / mean;
+  for (double tc : tau_c) {
+    const double phi = std::exp(-period_s_ / tc);
+    flicker_phi_.push_back(phi);
+    flicker_drive_.push_back(sigma * std::sqrt(1.0 - phi * phi));
+    Eigen::Vector3d x0;
+    for (int i = 0; i < 3; ++i) x0[i] = sigma * flicker_rng_.Normal();  // stationary start
+    flicker_state_.push_back(x0);
+  }
+}
+
+void SensorTriad::AdvanceBiases() {
+  const TriadErrorSpec& e = spec_.error;
+  for (std::size_t j = 0; j < flicker_state_.size(); ++j)
+    for (int i = 0; i < 3; ++i)
+      flicker_state_[j][i] =
+          flicker_phi_[j] * flicker_state_[j][i] + flicker_drive_[j] * flicker_rng_.Normal();
+  for (int i = 0; i < 3; ++i) {
+    if (gm_drive_ > 0) gm_bias_[i] = gm_phi_ * gm_bias_[i] + gm_drive_ * rng_.Normal();
+    if (e.bias_random_walk > 0)
+      rw_bias_[i] += e.bias_random_walk * std::sqrt(period_s_) * rng_.Normal();
+  }
+}
+
+Eigen::Vector3d SensorTriad::MeasureBandLimited(const Eigen::Vector3d& band_limited_I,
+                                                const Eigen::Vector3d& extra_I,
+                                                double temperature_c) {
+  const TriadErrorSpec& e = spec_.error;
+  if (!first_) AdvanceBiases();
+  first_ = false;
+  const double dtemp = temperature_c - kReferenceTemperature_c;
+  const double scale_temp = 1.0 + e.scale_temperature_ppm_per_c * 1e-6 * dtemp;
+  Eigen::Vector3d value = scale_temp * (scale_misalignment_ * (band_limited_I + extra_I));
+  value += turn_on_bias_ + gm_bias_ + rw_bias_;
+  for (const Eigen::Vector3d& f : flicker_state_) value += f;
+  value += Eigen::Vector3d::Constant(e.bias_temperature_coeff_per_c * dtemp);
+  for (int i = 0; i < 3; ++i) value[i] += e.noise_density[i] * white_sigma_scale_ * rng_.Normal();
+  return value;
 }
 
 void SensorTriad::SetVibration(const std::vector<VibrationTone>& tones, bool accel) {
@@ -97,16 +169,14 @@ Eigen::Vector3d SensorTriad::Measure(const Eigen::Vector3d& true_I, Time t, doub
     filtered_ += a * (true_I - filtered_);
   }
   // bias processes advance once per sample (not on the first)
-  if (!first_) {
-    for (int i = 0; i < 3; ++i) {
-      if (gm_drive_ > 0) gm_bias_[i] = gm_phi_ * gm_bias_[i] + gm_drive_ * rng_.Normal();
-      if (e.bias_random_walk > 0)
-        rw_bias_[i] += e.bias_random_walk * std::sqrt(period_s_) * rng_.Normal();
-    }
-  }
+  if (!first_) AdvanceBiases();
   first_ = false;
-  Eigen::Vector3d value = scale_misalignment_ * (filtered_ + VibrationAt(ToSeconds(t)));
+  const double scale_temp =
+      1.0 + e.scale_temperature_ppm_per_c * 1e-6 * (temperature_c - kReferenceTemperature_c);
+  Eigen::Vector3d value =
+      scale_temp * (scale_misalignment_ * (filtered_ + VibrationAt(ToSeconds(t))));
   value += turn_on_bias_ + gm_bias_ + rw_bias_;
+  for (const Eigen::Vector3d& f : flicker_state_) value += f;
   value += Eigen::Vector3d::Constant(e.bias_temperature_coeff_per_c *
                                      (temperature_c - kReferenceTemperature_c));
   for (int i = 0; i < 3; ++i) value[i] += e.noise_density[i] * white_sigma_scale_ * rng_.Normal();

@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 
 #include "hil/firmware_emu/angles.h"
+#include "hil/firmware_emu/mcu/field_profiles.h"
 
 #include "scenario_sections.h"
 
@@ -72,6 +73,8 @@ void ReadVibration(const YamlReader& r, std::vector<mcu::VibrationTone>& tones) 
 
 void ReadMcu(const YamlReader& r, McuDeviceSpec& m) {
   r.CheckKeys({"profile",
+               "imu_profile",
+               "rough",
                "baud",
                "link",
                "format",
@@ -93,9 +96,20 @@ void ReadMcu(const YamlReader& r, McuDeviceSpec& m) {
                "faults"});
   m.enabled = true;
   mcu::McuConfig& c = m.config;
-  const std::string profile = r.Choice(
-      "profile", "razor-v13", {"razor-v13", "consumer-mems", "industrial-mems", "tactical"});
-  c.profile = mcu::ProfileByName(profile);
+  if (r.Has("imu_profile")) {
+    // issue 41: a named field profile (sensor + its rough terms + the vehicle's vibration)
+    if (r.Has("profile")) r.Fail("imu_profile", "give either profile or imu_profile, not both");
+    const mcu::FieldProfile fp =
+        mcu::FieldProfileByName(r.Choice("imu_profile", "",
+                                         {"razor_small_engine_robot", "consumer_mems_car",
+                                          "consumer_mems_tractor_cab", "industrial_mems_tractor"}));
+    c.profile = fp.sensor;
+    c.rough = fp.rough;
+  } else {
+    const std::string profile = r.Choice(
+        "profile", "razor-v13", {"razor-v13", "consumer-mems", "industrial-mems", "tactical"});
+    c.profile = mcu::ProfileByName(profile);
+  }
   c.baud = static_cast<int>(r.Int("baud", c.profile.default_baud, 1200, 4000000));
   m.link = r.String("link", m.link);
   if (m.link.empty() || m.link.find('/') != std::string::npos)
@@ -135,6 +149,7 @@ void ReadMcu(const YamlReader& r, McuDeviceSpec& m) {
   }
   if (auto cn = r.OptionalChild("can")) ReadCan(*cn, c.can);
   if (auto f = r.OptionalChild("faults")) ReadFaults(*f, c.faults);
+  if (auto rough = r.OptionalChild("rough")) ReadMcuRough(*rough, c);
 }
 
 }  // namespace

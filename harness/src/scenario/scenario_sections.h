@@ -21,6 +21,9 @@ void ReadGnssSection(const YamlReader& root, GnssDeviceSpec& g);
 extern const std::vector<std::string> kMcuSectionKeys;
 /// Reads the mcu section (optional; scenario_mcu.cc). Without it the scenario has no IMU board.
 void ReadMcuSection(const YamlReader& root, McuDeviceSpec& m);
+/// Reads the mcu section's `rough` mapping (issue 41; scenario_mcu_rough.cc) into `c`, over what
+/// its `imu_profile` (if any) set.
+void ReadMcuRough(const YamlReader& r, mcu::McuConfig& c);
 extern const std::vector<std::string> kPaper003SectionKeys;
 /// Reads the uwb and wt901c sections (optional; scenario_paper003.cc).
 void ReadPaper003Sections(const YamlReader& root, UwbDeviceSpec& u, Wt901cDeviceSpec& w);

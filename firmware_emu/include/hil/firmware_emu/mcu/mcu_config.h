@@ -10,6 +10,7 @@
 
 #include "hil/firmware_emu/mcu/imu_kinematics.h"
 #include "hil/firmware_emu/mcu/j1939_imu.h"
+#include "hil/firmware_emu/mcu/rough_imu_spec.h"
 #include "hil/firmware_emu/mcu/sensor_spec.h"
 #include "hil/firmware_emu/sim_time.h"
 
@@ -72,6 +73,9 @@ struct McuConfig {
   std::vector<VibrationTone> vibration;
   double temperature_c = 25;            ///< board temperature at t = 0
   double temperature_rate_c_per_h = 0;  ///< linear warm-up
+  /// Issue 41's field-rough model: vibration front end, temperature profile, time tag (off by
+  /// default; field_profiles.h names calibrated sets).
+  RoughImuSpec rough;
   CanOutputConfig can;
   std::vector<McuFault> faults;
 };

@@ -14,12 +14,14 @@
 /// tick there. Every random draw derives from the seed given at construction.
 
 #include <cstdint>
+#include <deque>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "hil/firmware_emu/device.h"
+#include "hil/firmware_emu/mcu/imu_front_end.h"
 #include "hil/firmware_emu/mcu/mcu_config.h"
 #include "hil/firmware_emu/mcu/rng.h"
 #include "hil/firmware_emu/mcu/sensor_triad.h"
@@ -54,6 +56,10 @@ class McuDevice final : public Device {
   void Boot(Time t_boot);
   void ScheduleImu();
   void OnImuSample(const TruthSample& truth, DeviceOutput& out);
+  /// Frames of one IMU sample, tagged (tick) and sent at `t_tag`.
+  void EmitImu(Time t_tag, const TriadCounts& a, const TriadCounts& g, std::uint64_t index,
+               DeviceOutput& out);
+  double TemperatureAt(double t_s) const;
   void OnMagSample(const TruthSample& truth);
   void OnTimePulse(Time t, DeviceOutput& out);
   void SendStatus(Time t, DeviceOutput& out);
@@ -85,6 +91,15 @@ class McuDevice final : public Device {
   TriadCounts last_accel_{}, last_gyro_{}, last_mag_{};
   bool have_accel_ = false, have_gyro_ = false, have_mag_ = false;
   McuStats stats_;
+  // issue 41: the vibration front end and the time tag of samples sensed earlier than tagged
+  std::optional<ImuFrontEnd> front_end_;
+  Rng tag_rng_;
+  struct PendingImu {
+    Time t_tag;
+    TriadCounts accel, gyro;
+    std::uint64_t index;
+  };
+  std::deque<PendingImu> pending_imu_;
 };
 
 }  // namespace hil::mcu

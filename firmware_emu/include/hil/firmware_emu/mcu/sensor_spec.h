@@ -38,6 +38,17 @@ struct TriadErrorSpec {
   double misalignment_sigma_rad = 0;  ///< each off-diagonal axis coupling (1σ, non-orthogonal)
   double bandwidth_hz = 0;            ///< first-order low-pass before sampling; 0 = none
   double bias_temperature_coeff_per_c = 0;  ///< bias change per °C away from 25 °C, unit/°C
+  // ---- issue 41 terms (all off by default: the previous model, byte for byte) ----
+  /// When > 0, the bias instability B is a sum of this many first-order Gauss–Markov processes of
+  /// one σ with correlation times log-spaced over [flicker_tau_min_s, flicker_tau_max_s] (a flat
+  /// flicker floor 0.664 B over that band) instead of the single process above.
+  int flicker_terms = 0;
+  double flicker_tau_min_s = 1;
+  double flicker_tau_max_s = 1000;
+  double scale_temperature_ppm_per_c = 0;  ///< scale factor change per °C away from 25 °C
+  /// Gyro only: rate error per m/s² of specific force on the same axis (g-sensitivity), rad/s per
+  /// m/s². Applied by the MCU (which knows the specific force), not by the triad itself.
+  double g_sensitivity_radps_per_mps2 = 0;
 };
 
 /// From the (erroneous) physical value to the integer counts of one sample. Digital sensors use

@@ -42,6 +42,13 @@ class SensorTriad {
   /// The erroneous continuous value (engineering units) of the sample at `t` for true input
   /// `true_I`: everything except quantisation. Advances the random processes by one sample.
   Eigen::Vector3d Measure(const Eigen::Vector3d& true_I, Time t, double temperature_c);
+  /// The rough-model path (issue 41): the erroneous continuous value of the sample whose
+  /// band-limited physical input (after the front end's clipping and anti-alias filter, vibration
+  /// included) is `band_limited_I`; `extra_I` is added before the scale factor (the gyro's
+  /// g-sensitivity term). Applies scale (with its temperature term), misalignment, turn-on bias,
+  /// bias instability, rate random walk, temperature bias and white noise. Advances one sample.
+  Eigen::Vector3d MeasureBandLimited(const Eigen::Vector3d& band_limited_I,
+                                     const Eigen::Vector3d& extra_I, double temperature_c);
   /// Quantises a continuous value into counts (ADC path, oversampling, saturation).
   TriadCounts Quantise(const Eigen::Vector3d& value);
   /// Measure then Quantise.
@@ -63,6 +70,8 @@ class SensorTriad {
     Eigen::Vector3d phase_rad;
   };
   Eigen::Vector3d VibrationAt(double t_s) const;
+  void InitFlicker(std::uint64_t seed);
+  void AdvanceBiases();
 
   TriadSpec spec_;
   double period_s_;
@@ -75,6 +84,14 @@ class SensorTriad {
   bool first_ = true;
   double gm_phi_ = 0, gm_drive_ = 0, white_sigma_scale_ = 0;
   std::vector<Tone> tones_;
+  // flicker: a sum of Gauss–Markov processes (flicker_terms > 0), drawn from their own stream
+  Rng flicker_rng_{0};
+  std::vector<double> flicker_phi_, flicker_drive_;
+  std::vector<Eigen::Vector3d> flicker_state_;
 };
+
+/// Allan variance of a first-order Gauss–Markov process of variance σ² = 1 and correlation time
+/// tau_c_s at averaging time tau_s.
+double GaussMarkovAllanVariance(double tau_s, double tau_c_s);
 
 }  // namespace hil::mcu
