@@ -117,7 +117,6 @@ void CheckLinks(RunContext& ctx) {
   for (const LinkIntegrity& r : report.link_integrity) {
     if (!r.intact) report.problems.push_back(r.problem);
   }
-  report.realtime_threads = ctx.set.threads;
 }
 
 void EvaluateFaultsAndCriteria(RunContext& ctx, const std::vector<ErrorSample>& est_err) {
@@ -126,6 +125,7 @@ void EvaluateFaultsAndCriteria(RunContext& ctx, const std::vector<ErrorSample>& 
   ComputeRecoveryTimes(report.fault_injections, est_err, ctx.scenario.reconverged_error_m);
   report.estimator_health = ctx.health;
   CheckLinks(ctx);
+  report.realtime_threads = ctx.set.threads;
   report.criteria = EvaluateCriteria(ctx.scenario.criteria, RunMetricTable(report),
                                      AccuracyTable(report.baselines));
   report.fault_messages_dropped = ctx.byte_faults->messages_dropped();

@@ -61,6 +61,8 @@ class RealtimePacer {
   static ThreadSchedule CurrentThreadSchedule();
   /// CLOCK_MONOTONIC now, in nanoseconds.
   static std::int64_t MonotonicNs();
+  /// SleepUntil sleeps to this long before the instant and spins the rest.
+  static constexpr std::int64_t kSpinNs = 30000;
 
  private:
   double speed_;
