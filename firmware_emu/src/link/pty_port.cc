@@ -95,7 +95,7 @@ bool PtyPort::HostAttached() {
   return host_opens_ > 0;
 }
 
-bool PtyPort::Write(std::string_view bytes) {
+long PtyPort::Write(std::string_view bytes) {
   std::size_t done = 0;
   int waited_ms = 0;
   while (done < bytes.size()) {
@@ -110,17 +110,17 @@ bool PtyPort::Write(std::string_view bytes) {
       if (stalled_ || waited_ms >= kStallTimeoutMs) {
         stalled_ = true;
         bytes_dropped_unread_ += bytes.size() - done;
-        return true;
+        return static_cast<long>(done);
       }
       pollfd p{master_fd_, POLLOUT, 0};
       poll(&p, 1, 50);
       waited_ms += 50;
     } else {
-      return false;
+      return -1;
     }
   }
   stalled_ = false;
-  return true;
+  return static_cast<long>(done);
 }
 
 std::string PtyPort::ReadAvailable() {

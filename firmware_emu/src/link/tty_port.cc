@@ -69,8 +69,8 @@ bool TtyPort::Reopen() {
   return true;
 }
 
-bool TtyPort::Write(std::string_view bytes) {
-  if (fd_ < 0 && !Reopen()) return false;
+long TtyPort::Write(std::string_view bytes) {
+  if (fd_ < 0 && !Reopen()) return -1;
   std::size_t done = 0;
   while (done < bytes.size()) {
     const ssize_t n = write(fd_, bytes.data() + done, bytes.size() - done);
@@ -81,10 +81,10 @@ bool TtyPort::Write(std::string_view bytes) {
       poll(&p, 1, 50);
     } else {
       // the device went away (EIO, ENXIO): try once to get it back
-      if (!Reopen()) return false;
+      if (!Reopen()) return -1;
     }
   }
-  return true;
+  return static_cast<long>(done);
 }
 
 long TtyPort::WriteNow(std::string_view bytes) {

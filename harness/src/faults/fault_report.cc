@@ -17,9 +17,11 @@ void EstimatorHealth::AddLine(const std::string& line) {
 void EstimatorHealth::AddJson(const nlohmann::json& j) {
   if (j.is_discarded() || !j.is_object() || !j.contains("health") || !j["health"].is_object())
     return;
+  const bool first = !present;
   present = true;
   for (const auto& [key, value] : j["health"].items()) {
     if (value.is_number()) counters[key] = value.get<double>();
+    if (value.is_number() && first) first_counters[key] = value.get<double>();
     if (key == "flags" && value.is_array()) {
       for (const auto& f : value) {
         if (f.is_string()) flags_seen.insert(f.get<std::string>());
@@ -30,10 +32,12 @@ void EstimatorHealth::AddJson(const nlohmann::json& j) {
 
 void EstimatorHealth::AddScanned(const JsonSolutionLine& line) {
   if (!line.health) return;
+  const bool first = !present;
   present = true;
   const std::vector<std::string>& keys = *line.health_keys;
   for (std::size_t i = 0; i < line.health_values.size(); ++i) {
     if (line.health_values[i]) counters[keys[i]] = *line.health_values[i];
+    if (line.health_values[i] && first) first_counters[keys[i]] = *line.health_values[i];
   }
   flags_seen.insert(line.health_flags.begin(), line.health_flags.end());
 }

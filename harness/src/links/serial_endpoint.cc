@@ -113,12 +113,15 @@ void SerialEndpoint::WriteNextByte(const link::RealtimePacer& pacer) {
   // a UART sends whether or not anyone listens: a byte nobody can take now is dropped, never
   // waited for (that would stall every link of the run), and captured as a drop
   const std::string_view byte = std::string_view(c.bytes).substr(pending_offset_, 1);
-  const bool left = port_->HostAttached() && port_->WriteNow(byte) == 1;
+  const bool attached = port_->HostAttached();
+  const bool left = attached && port_->WriteNow(byte) == 1;
   const std::int64_t wall = link::RealtimePacer::MonotonicNs();
   if (left) {
+    ++bytes_sent_;
     schedule_error_us_.push_back(static_cast<double>(wall - scheduled) * 1e-3);
   } else {
     ++bytes_dropped_unread_;
+    if (attached) ++bytes_dropped_attached_;  // its input queue was full
   }
   RecordRealtimeByte(left, t, wall, c.byte_period, name, byte[0]);
   if (++pending_offset_ == c.bytes.size()) {
@@ -128,30 +131,62 @@ void SerialEndpoint::WriteNextByte(const link::RealtimePacer& pacer) {
   }
 }
 
-void SerialEndpoint::WriteChunks(std::size_t chunks) {
+void SerialEndpoint::Consume(std::size_t bytes, CaptureDir dir, std::int64_t wall) {
+  while (bytes > 0 && !pending_.empty()) {
+    const auto& [c, name] = pending_.front();
+    const std::size_t n = std::min(bytes, c.bytes.size() - pending_offset_);
+    CaptureRecord r;
+    r.dir = dir;
+    r.t_emu_ns = ToNs(c.t_byte(pending_offset_));
+    r.byte_period_ns = c.byte_period.count();
+    r.t_wall_ns = dir == CaptureDir::kTx ? wall : 0;
+    r.name = name;
+    r.bytes = c.bytes.substr(pending_offset_, n);
+    capture_.Write(r);
+    if (dir == CaptureDir::kTx) bytes_sent_ += n;
+    bytes -= n;
+    pending_offset_ += n;
+    if (pending_offset_ == c.bytes.size()) {
+      pending_.pop_front();
+      pending_offset_ = 0;
+    }
+  }
+}
+
+bool SerialEndpoint::WriteChunks(std::size_t chunks, const RoomWait& wait_for_room) {
   chunks = std::min(chunks, pending_.size());
-  if (chunks == 0) return;
+  if (chunks == 0) return true;
   // one write for the chunks: the host reads a byte stream, the chunking is not its business
   write_buffer_.clear();
-  for (std::size_t i = 0; i < chunks; ++i) {
-    write_buffer_.append(pending_[i].first.bytes, pending_offset_, std::string::npos);
-    pending_offset_ = 0;
+  for (std::size_t i = 0; i < chunks; ++i)
+    write_buffer_.append(pending_[i].first.bytes, i == 0 ? pending_offset_ : 0, std::string::npos);
+  std::size_t sent = 0, lost = 0;
+  bool all = true;
+  if (wait_for_room) {
+    // a host that reads this link loses nothing: while its input queue is full (a pty holds
+    // 12-20 kB) the caller waits for it to read, with the run's watchdog
+    bool failed = false;
+    const auto write_more = [&]() -> std::size_t {
+      if (failed) return 0;
+      const long n = port_->WriteNow(std::string_view(write_buffer_).substr(sent));
+      if (n < 0) failed = true;
+      sent += n > 0 ? static_cast<std::size_t>(n) : 0;
+      return failed ? 0 : write_buffer_.size() - sent;
+    };
+    all = wait_for_room(write_more);
+    if (failed) lost = write_buffer_.size() - sent;
+    bytes_dropped_attached_ += lost;  // the host reads this link: a failed port lost them
+  } else {
+    // nobody paces this link: what a pty nobody reads cannot take is dropped (PtyPort::Write)
+    const long n = port_->Write(write_buffer_);
+    sent = n > 0 ? static_cast<std::size_t>(n) : 0;
+    lost = write_buffer_.size() - sent;
   }
-  port_->Write(write_buffer_);
+  bytes_dropped_unread_ += lost;
   // virtual mode: no wall time, so a scenario and seed give an identical capture
-  const std::int64_t wall = wall_stamps_ ? link::RealtimePacer::MonotonicNs() : 0;
-  for (std::size_t i = 0; i < chunks; ++i) {
-    const auto& [c, name] = pending_.front();
-    CaptureRecord r;
-    r.dir = CaptureDir::kTx;
-    r.t_emu_ns = ToNs(c.t_first);
-    r.byte_period_ns = c.byte_period.count();
-    r.t_wall_ns = wall;
-    r.name = name;
-    r.bytes = c.bytes;
-    capture_.Write(r);
-    pending_.pop_front();
-  }
+  Consume(sent, CaptureDir::kTx, wall_stamps_ ? link::RealtimePacer::MonotonicNs() : 0);
+  Consume(lost, CaptureDir::kDrop, 0);
+  return all;
 }
 
 std::size_t SerialEndpoint::queued_bytes() const {

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "hil/harness/report/fixed_text.h"
+#include "hil/harness/report/run_outputs.h"
 
 namespace hil::harness {
 namespace {
@@ -314,6 +315,8 @@ void WriteReportJson(const RunReport& r, const std::string& path) {
   j["pass"] = r.pass();
   j["complete"] = r.complete;
   j["problems"] = r.problems;
+  j["link_integrity"] = LinkIntegrityJson(r.link_integrity);
+  if (!r.realtime_threads.empty()) j["realtime_threads"] = RealtimeThreadsJson(r.realtime_threads);
   nlohmann::json m = AccuracyJson(r.metrics);
   m["output_rate_hz"] = r.output_rate_hz;
   m["solutions_missing_fraction"] = r.timing.missing_fraction;

@@ -205,6 +205,29 @@ nlohmann::json MachineJson(const DeviceSet& set) {
 
 }  // namespace
 
+nlohmann::json RealtimeThreadsJson(
+    const std::vector<std::pair<std::string, link::ThreadSchedule>>& threads) {
+  // what each thread of the real-time run really got, read back from the kernel, and the CPU it
+  // used while the run paced
+  nlohmann::json a = nlohmann::json::array();
+  for (const auto& [name, t] : threads) {
+    nlohmann::json j = {{"thread", name},
+                        {"tid", t.tid},
+                        {"policy", t.policy},
+                        {"priority", t.priority},
+                        {"timer_slack_ns", t.timer_slack_ns}};
+    if (!t.refused.empty()) j["realtime_refused"] = t.refused;
+    if (t.usage) {
+      j["cpu_user_s"] = t.usage->user_s;
+      j["cpu_system_s"] = t.usage->system_s;
+      j["wall_s"] = t.usage->wall_s;
+      j["cpu_pct"] = t.usage->cpu_pct();
+    }
+    a.push_back(j);
+  }
+  return a;
+}
+
 void WriteScheduleErrors(const DeviceSet& set, const std::string& path) {
   nlohmann::json links = nlohmann::json::array();
   for (const auto& ports : set.endpoints) {
@@ -228,18 +251,7 @@ void WriteScheduleErrors(const DeviceSet& set, const std::string& path) {
                      {"max_us", Percentile(e, 100)}});
   }
   if (links.empty() && set.threads.empty()) return;
-  // what each thread of the real-time run really got, read back from the kernel
-  nlohmann::json threads = nlohmann::json::array();
-  for (const auto& [name, t] : set.threads) {
-    nlohmann::json j = {{"thread", name},
-                        {"tid", t.tid},
-                        {"policy", t.policy},
-                        {"priority", t.priority},
-                        {"timer_slack_ns", t.timer_slack_ns}};
-    if (!t.refused.empty()) j["realtime_refused"] = t.refused;
-    threads.push_back(j);
-  }
-  nlohmann::json out{{"threads", threads}, {"links", links}};
+  nlohmann::json out{{"threads", RealtimeThreadsJson(set.threads)}, {"links", links}};
   if (!set.threads.empty()) out["machine"] = MachineJson(set);
   std::ofstream(path) << out.dump(2) << "\n";
 }

@@ -130,11 +130,46 @@ void CountLinksAndDevices(RunContext& ctx) {
   }
 }
 
+// Which of navd's counters speak for a link: "gnss" for the receivers', "imu" for the MCU's; any
+// other link is its own role (no counters: only the run's drops are judged).
+std::string LinkRole(const Scenario& s, const std::string& link) {
+  for (const GnssReceiverSpec& r : s.gnss.receivers) {
+    if (r.link == link) return "gnss";
+  }
+  if (s.mcu.enabled && s.mcu.link == link) return "imu";
+  return link;
+}
+
+// What the estimator says it received against what the run sent (link_integrity.h): each link it
+// reads that lost bytes is a problem. Free-running real time starts from the counters of the
+// estimator's first solution (it may have opened a port mid-message).
+void CheckLinks(RunContext& ctx) {
+  if (ctx.options.emulate_only) return;
+  RunReport& report = ctx.report;
+  std::vector<LinkSent> sent;
+  for (const auto& ports : ctx.set.endpoints) {
+    for (const auto& ep : ports) {
+      if (!ctx.HostReads(*ep)) continue;
+      sent.push_back({ep->link_name(), LinkRole(ctx.scenario, ep->link_name()), ep->bytes_sent(),
+                      ep->bytes_dropped_attached()});
+    }
+  }
+  const bool free_running = ctx.pacer && !ctx.lockstep;
+  report.link_integrity = CheckLinkIntegrity(
+      sent, ctx.health, free_running ? ctx.health.first_counters : std::map<std::string, double>{},
+      ctx.scenario.faults);
+  for (const LinkIntegrity& r : report.link_integrity) {
+    if (!r.intact) report.problems.push_back(r.problem);
+  }
+}
+
 void EvaluateFaultsAndCriteria(RunContext& ctx, const std::vector<ErrorSample>& est_err) {
   RunReport& report = ctx.report;
   report.fault_injections = ctx.fault_recorder.records();
   ComputeRecoveryTimes(report.fault_injections, est_err, ctx.scenario.reconverged_error_m);
   report.estimator_health = ctx.health;
+  CheckLinks(ctx);
+  report.realtime_threads = ctx.set.threads;
   std::vector<Criterion> criteria = ctx.scenario.criteria;
   if (!ctx.options.emulate_only) {
     const std::vector<Criterion> defaults =

@@ -36,10 +36,25 @@ void Scheduler::StartPacing() {
   for (auto& ports : set_.endpoints) {
     for (auto& ep : ports) serial.push_back(ep.get());
   }
+  events_cpu_start_ = link::ThreadCpuReading::Now();
   pacing_ = std::make_unique<PacingThread>(serial, set_.can.get(), *pacer_);
   set_.threads = {{"events", link::RealtimePacer::CurrentThreadSchedule()},
                   {"pacing", pacing_->schedule()}};
   set_.cpu_at_start = ReadCpuTicks();
+}
+
+void Scheduler::EndPacing(bool drain) {
+  if (!pacing_) return;
+  if (drain) {
+    pacing_->Drain();
+  } else {
+    pacing_->Stop();
+  }
+  for (auto& [name, schedule] : set_.threads) {
+    if (name == "events") schedule.usage = link::ThreadCpuReading::Now().Since(events_cpu_start_);
+    if (name == "pacing") schedule.usage = pacing_->usage();
+  }
+  pacing_.reset();
 }
 
 void Scheduler::Dispatch(std::size_t d, DeviceOutput& out) {
@@ -218,10 +233,10 @@ void Scheduler::Run(SchedulerMonitor& monitor, const truth::TruthConfig* truth) 
   try {
     to_the_end = RunEvents(monitor, truth);
   } catch (...) {
-    pacing_.reset();  // a run that failed writes nothing more
+    EndPacing(false);  // a run that failed writes nothing more
     throw;
   }
-  if (!to_the_end) pacing_.reset();  // stopped early: what is queued stays unsent
+  if (!to_the_end) EndPacing(false);  // stopped early: what is queued stays unsent
 }
 
 bool Scheduler::RunEvents(SchedulerMonitor& monitor, const truth::TruthConfig* truth) {
@@ -429,10 +444,7 @@ void Scheduler::Flush() {
     if (!write_refused_ && !writes_.Pump(true)) write_refused_ = true;
     return;
   }
-  if (pacing_) {
-    pacing_->Drain();  // every byte and frame still queued leaves at its time
-    pacing_.reset();
-  }
+  EndPacing(true);  // every byte and frame still queued leaves at its time
   if (set_.can) {
     set_.can->FinishCapture(std::chrono::milliseconds(100));  // the last frames' echoes
     PollBus();

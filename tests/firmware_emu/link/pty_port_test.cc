@@ -34,7 +34,7 @@ TEST(PtyPortTest, BytesCrossBothWaysThroughTheSymlink) {
   ASSERT_GE(host, 0);
   // raw mode: CR/LF and binary bytes arrive untouched, nothing is echoed back
   const std::string msg = std::string("$GPGGA,1*00\r\n") + std::string("\xB5\x62\x00\xFF", 4);
-  ASSERT_TRUE(port.Write(msg));
+  ASSERT_EQ(port.Write(msg), static_cast<long>(msg.size()));
   EXPECT_EQ(ReadSome(host, msg.size()), msg);
   EXPECT_EQ(port.ReadAvailable(), "");
   ASSERT_EQ(write(host, "\xB5\x62\x0A\x04", 4), 4);
@@ -44,7 +44,7 @@ TEST(PtyPortTest, BytesCrossBothWaysThroughTheSymlink) {
   // the host closing and reopening the port is survived
   const int again = open(link.c_str(), O_RDWR | O_NOCTTY);
   ASSERT_GE(again, 0);
-  ASSERT_TRUE(port.Write("abc"));
+  ASSERT_EQ(port.Write("abc"), 3);
   EXPECT_EQ(ReadSome(again, 3), "abc");
   close(again);
 }

@@ -54,7 +54,7 @@ TEST(TtyPortTest, DrivesAnExistingDeviceRaw8N1BothWays) {
   EXPECT_EQ(tio.c_cflag & (PARENB | CSTOPB), 0u);
   EXPECT_EQ(tio.c_lflag & (ICANON | ECHO), 0u);
   const std::string msg("$GPRMC,x*00\r\n\xB5\x62\x00\xFF", 17);
-  ASSERT_TRUE(port.Write(msg));
+  ASSERT_EQ(port.Write(msg), static_cast<long>(msg.size()));
   EXPECT_EQ(ReadSome(cable.far, msg.size()), msg);
   ASSERT_EQ(write(cable.far, "\xB5\x62\x06\x00", 4), 4);
   std::string got;

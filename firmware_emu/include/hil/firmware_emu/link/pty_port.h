@@ -33,8 +33,10 @@ class PtyPort final : public SerialPort {
   /// Writes all bytes to the master, waiting while the host's input queue is full. A host that
   /// reads nothing for kStallTimeoutMs marks the port stalled: from then on bytes that do not fit
   /// are dropped at once (counted in bytes_dropped_unread()) until a write goes through whole.
-  /// Returns false if the pty failed (it never throws in the data path).
-  bool Write(std::string_view bytes) override;
+  /// Returns the bytes written (the rest were dropped), -1 if the pty failed (it never throws in
+  /// the data path). A caller that must not lose bytes (a host that reads this link in virtual
+  /// mode) writes with WriteNow() and waits for the host itself (VirtualGate::WaitForRoom).
+  long Write(std::string_view bytes) override;
   /// Writes what the host's input queue has room for, without waiting (real time). Returns the
   /// bytes written (0 when the queue is full), -1 if the pty failed.
   long WriteNow(std::string_view bytes) override;

@@ -13,9 +13,10 @@ namespace hil::link {
 class SerialPort {
  public:
   virtual ~SerialPort() = default;
-  /// Writes all bytes, waiting while the line's output queue is full. False if the port failed
-  /// (never throws in the data path).
-  virtual bool Write(std::string_view bytes) = 0;
+  /// Writes all bytes, waiting while the line's output queue is full. Returns the bytes that
+  /// reached the line: all of them, or fewer when a pty nobody reads dropped the rest (PtyPort);
+  /// -1 if the port failed (never throws in the data path).
+  virtual long Write(std::string_view bytes) = 0;
   /// Writes what the line takes now, never waiting (real time: a UART does not wait for its
   /// listener). Returns the bytes accepted; the rest is the caller's to drop. -1 if the port
   /// failed.

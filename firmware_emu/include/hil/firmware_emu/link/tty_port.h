@@ -19,7 +19,7 @@ class TtyPort final : public SerialPort {
   TtyPort(const TtyPort&) = delete;
   TtyPort& operator=(const TtyPort&) = delete;
 
-  bool Write(std::string_view bytes) override;
+  long Write(std::string_view bytes) override;
   /// Writes what the output queue takes now (the UART paces it); a full queue takes nothing.
   long WriteNow(std::string_view bytes) override;
   /// A device's line always has its far end (whatever is wired to it).

@@ -31,6 +31,7 @@ namespace hil::harness {
 struct EstimatorHealth {
   bool present = false;
   std::map<std::string, double> counters;
+  std::map<std::string, double> first_counters;  ///< the counters of the first health object
   std::set<std::string> flags_seen;
   /// Takes one output line of the estimator (lines without a health object are ignored).
   void AddLine(const std::string& line);

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -49,11 +50,19 @@ class SerialEndpoint {
   /// dropped at the UART and captured as a drop, as a real UART loses what nobody reads; this
   /// never waits beyond the byte's time.
   void WriteNextByte(const link::RealtimePacer& pacer);
+  /// Waits until the host's input queue takes more: calls `write_more` (which writes what the
+  /// port takes now and returns the bytes still to write) until it returns 0. False: the wait was
+  /// given up (the run stops).
+  using RoomWait = std::function<bool(const std::function<std::size_t()>& write_more)>;
   /// Writes every waiting byte at once, in one write (virtual mode). The order in which the host
   /// sees several links is kept by VirtualGate / VirtualWriteQueue, before this is called.
   void WriteAll() { WriteChunks(pending_.size()); }
-  /// Writes the first `chunks` waiting chunks in one write (virtual mode).
-  void WriteChunks(std::size_t chunks);
+  /// Writes the first `chunks` waiting chunks in one write (virtual mode). With `wait_for_room`
+  /// (a host that reads this link) nothing is dropped: while the port is full the caller waits;
+  /// if it gives up, the bytes not written stay queued and this returns false. Without, a port
+  /// nobody reads drops what it cannot take (PtyPort::Write). The capture records what was
+  /// written as `tx` and what was dropped as `drop` (counted in bytes_dropped_unread()).
+  bool WriteChunks(std::size_t chunks, const RoomWait& wait_for_room = {});
   /// Bytes waiting to be written.
   std::size_t queued_bytes() const;
   /// Writes out the capture's buffer (a failed write is noted, run_guard.h).
@@ -85,8 +94,14 @@ class SerialEndpoint {
   const link::UartTxQueue& uart() const { return uart_; }
   const std::string& link_name() const { return link_name_; }
   const std::string& link_path() const { return port_->path(); }
-  /// Real time: bytes dropped because nobody had the port open or its input queue was full.
+  /// Bytes dropped because nobody had the port open or its input queue was full (real time), or
+  /// because a port nobody reads stalled or the port failed (virtual mode).
   std::uint64_t bytes_dropped_unread() const { return bytes_dropped_unread_; }
+  /// Real time: of these, the bytes dropped while the host had the port open (its input queue was
+  /// full: it did not read them in time).
+  std::uint64_t bytes_dropped_attached() const { return bytes_dropped_attached_; }
+  /// Bytes the capture records as written to the host.
+  std::uint64_t bytes_sent() const { return bytes_sent_; }
   /// Schedule errors (µs) of bytes written in real time: wall time written − scheduled wall time.
   const std::vector<double>& schedule_error_us() const { return schedule_error_us_; }
 
@@ -96,6 +111,9 @@ class SerialEndpoint {
                           const std::string& name, char byte);
   /// Real time: writes the capture lines being built.
   void FinishRealtimeRecords();
+  /// Virtual mode: takes `bytes` waiting bytes off the queue into the capture as `dir` records
+  /// (one per chunk or part of a chunk), `wall` their write time for tx.
+  void Consume(std::size_t bytes, CaptureDir dir, std::int64_t wall);
 
   std::string link_name_;
   std::unique_ptr<link::SerialPort> port_;
@@ -108,6 +126,8 @@ class SerialEndpoint {
   CaptureRecord current_;           // real time: capture line of the bytes of a chunk that left
   CaptureRecord current_drop_;      // real time: capture line of its bytes dropped unread
   std::uint64_t bytes_dropped_unread_ = 0;
+  std::uint64_t bytes_dropped_attached_ = 0;
+  std::uint64_t bytes_sent_ = 0;
   std::vector<double> schedule_error_us_;
   std::string write_buffer_;  // virtual mode: the waiting chunks joined for one write
   bool wall_stamps_ = false;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "hil/firmware_emu/link/realtime_pacer.h"
 #include "hil/harness/eval/evaluator.h"
 #include "hil/harness/eval/outage_metrics.h"
 #include "hil/harness/eval/path_tracking.h"
@@ -15,6 +16,7 @@
 #include "hil/harness/faults/fault_report.h"
 #include "hil/harness/links/can_bus_report.h"
 #include "hil/harness/report/closed_loop_faults_report.h"
+#include "hil/harness/report/link_integrity.h"
 #include "hil/harness/report/steering_ecu_report.h"
 #include "hil/harness/scenario/scenario.h"
 
@@ -110,6 +112,10 @@ struct RunReport {
   /// closed loop: each fault's effect on the path tracking (report.json `tracking.faults`)
   std::vector<FaultPathDeviation> tracking_faults;
   std::optional<RowDeviation> row_following;  ///< closed loop in a greenhouse (paper 001)
+  /// What the estimator says it received against what was sent (link_integrity.h).
+  std::vector<LinkIntegrity> link_integrity;
+  /// Real time: each real-time thread's scheduling and the CPU it used (run_outputs.h).
+  std::vector<std::pair<std::string, link::ThreadSchedule>> realtime_threads;
   bool pass() const;
 };
 

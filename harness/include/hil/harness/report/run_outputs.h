@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <nlohmann/json_fwd.hpp>
 
 #include "hil/harness/run/device_set.h"
 #include "hil/harness/run/truth_table.h"
@@ -39,9 +40,15 @@ std::vector<Time> TruthCsvTimes(const Scenario& s);
 void WriteFixCsvHeader(std::ostream& out);
 void WriteFixCsvLine(std::ostream& out, const gnss::GnssFix& fix);
 
-/// Real time: `{"threads": [{thread, tid, policy, priority, timer_slack_ns}], "links": [{link,
-/// bytes, bytes_dropped_unread, p50_us, p99_us, max_us}]}`, the scheduling each thread really got
-/// and the schedule error per link; nothing in virtual mode.
+/// Real time: `{"threads": [RealtimeThreadsJson], "links": [{link, bytes, bytes_dropped_unread,
+/// p50_us, p99_us, max_us}]}`, the scheduling each thread really got and the schedule error per
+/// link; nothing in virtual mode.
 void WriteScheduleErrors(const DeviceSet& set, const std::string& path);
+/// `[{thread, tid, policy, priority, timer_slack_ns, cpu_user_s, cpu_system_s, wall_s, cpu_pct}]`:
+/// each real-time thread's scheduling as the kernel reported it and the CPU it used while the run
+/// paced (getrusage RUSAGE_THREAD; cpu_pct = 100 × CPU / wall). Also report.json's
+/// `realtime_threads`.
+nlohmann::json RealtimeThreadsJson(
+    const std::vector<std::pair<std::string, link::ThreadSchedule>>& threads);
 
 }  // namespace hil::harness

@@ -13,6 +13,7 @@
 
 #include <condition_variable>
 #include <mutex>
+#include <optional>
 #include <thread>
 #include <vector>
 
@@ -32,6 +33,8 @@ class PacingThread {
                const link::RealtimePacer& pacer);
   /// Stops the thread (what is still queued stays queued).
   ~PacingThread();
+  /// The same, keeping the object (usage() is then known).
+  void Stop();
   PacingThread(const PacingThread&) = delete;
   PacingThread& operator=(const PacingThread&) = delete;
 
@@ -43,6 +46,9 @@ class PacingThread {
   void Drain();
   /// The pacing thread's scheduling as the kernel reported it once it had asked for it.
   link::ThreadSchedule schedule();
+  /// The CPU the thread used from its start to its end (after Drain() or the destructor's stop;
+  /// empty before).
+  std::optional<link::ThreadUsage> usage() const { return usage_; }
 
  private:
   void Loop();
@@ -56,6 +62,7 @@ class PacingThread {
   std::condition_variable cv_;
   bool stop_ = false, drain_ = false, started_ = false;
   link::ThreadSchedule schedule_;
+  std::optional<link::ThreadUsage> usage_;  // written by the thread as it ends
   std::thread thread_;
 };
 

@@ -147,6 +147,9 @@ class Scheduler {
   void Serve(Time t_event, const TruthSample& truth, SchedulerMonitor& monitor, DeviceOutput& out);
   /// Real time: starts the pacing thread (pacing_thread.h) and notes the threads' scheduling.
   void StartPacing();
+  /// Real time: ends the pacing thread (`drain`: once every byte and frame has left, else at once)
+  /// and notes the CPU each real-time thread used meanwhile (DeviceSet::threads).
+  void EndPacing(bool drain);
   /// The endpoints' lock while the pacing thread runs (an empty lock otherwise).
   std::unique_lock<std::mutex> LinksLock();
   /// Real time: sleeps towards `t_event` (computed kEventLeadNs ahead) while reading host bytes.
@@ -234,6 +237,8 @@ class Scheduler {
     Time t;
   };
   std::vector<Held> held_;
+  /// Real time: this thread's CPU when the pacing began.
+  link::ThreadCpuReading events_cpu_start_;
   struct BusArrival {
     Time t{};
     CanFrame frame;

@@ -66,6 +66,10 @@ class VirtualGate {
   /// The host no longer reads `ep` (its reader, a closed loop's controller, has ended): the gate
   /// neither waits for its bytes to be read nor orders the other links after them.
   void StopReading(const SerialEndpoint& ep);
+  /// Waits while a link the host reads has no room: calls `write_more` (it writes what the link
+  /// takes and returns the bytes still to write) until it returns 0, the run's watchdog seeing
+  /// those bytes as unread. False: the wait was given up (the run stops).
+  bool WaitForRoom(const std::function<std::size_t()>& write_more);
   /// Waits until the host has read every byte of every link it reads.
   bool WaitAllRead();
   /// Bytes not yet read on the host links (exact when 0), for the drain and hang reports.
@@ -183,6 +187,9 @@ class VirtualWriteQueue {
   /// write; `forced`, waiting for the host, else only the links the gate lets through now.
   /// Whether any went (nullopt: the gate gave up a wait).
   std::optional<bool> PumpFrontPerLink(bool forced);
+  /// Writes a batch; a link the host reads waits for room instead of dropping (WaitForRoom).
+  /// False: the wait was given up.
+  bool Write(const Batch& b);
   VirtualGate* gate_;
   std::size_t max_deferred_;
   std::deque<Batch> fifo_;
