@@ -40,7 +40,8 @@ expect 1 '^ci/layering: 1 layering errors' "$tree"
 restore "$f"
 
 # An emulator includes the harness: across parts, back up
-f="$(cd "$tree" && ls firmware_emu/src/gnss/*.cc | head -1)"
+first=("$tree"/firmware_emu/src/gnss/*.cc)
+f="${first[0]#"$tree"/}"
 sed -i '1i #include "hil/harness/scenario/scenario.h"' "$tree/$f"
 expect 1 "^$f:1: #include \"hil/harness/scenario/scenario.h\": goes back up: harness/scenario" "$tree"
 restore "$f"
@@ -51,7 +52,8 @@ f=harness/src/links/capture_format.cc
 sed -i '1i #include "hil/harness/validate/validate.h"' "$tree/$f"
 expect 1 "^$f:1: .*harness/validate/validate.h\": goes back up: harness/validate" "$tree"
 restore "$f"
-f=firmware_emu/src/lidar/$(cd "$tree/firmware_emu/src/lidar" && ls *.cc | head -1)
+first=("$tree"/firmware_emu/src/lidar/*.cc)
+f="${first[0]#"$tree"/}"
 sed -i '1i #include "hil/firmware_emu/link/pty_port.h"' "$tree/$f"
 expect 1 "^$f:1: .*: firmware_emu/lidar may not include firmware_emu/link" "$tree"
 restore "$f"
