@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# ci/layering passes on the checkout and fails, naming file:line, the include and the rule, on a
+# copy of the stage folders with a deliberately wrong include (back up, across parts, from an
+# undeclared stage), on a known exception that is gone, and (exit 2) on rules with a cycle.
+# Usage: layering_check_test.sh SOURCE_DIR
+set -euo pipefail
+src="$1"
+check="$src/ci/layering"
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+fail() { echo "layering_check_test: FAIL: $*" >&2; exit 1; }
+
+# expect STATUS PATTERN ARGS...: ci/layering ARGS exits STATUS and its output matches PATTERN
+expect() {
+  local want="$1" pattern="$2" status=0
+  shift 2
+  "$check" "$@" >"$tmp/out" 2>&1 || status=$?
+  ((status == want)) || { cat "$tmp/out" >&2; fail "exit $status, expected $want ($pattern)"; }
+  grep -Eq -- "$pattern" "$tmp/out" || { cat "$tmp/out" >&2; fail "no line matches: $pattern"; }
+}
+
+# The checkout itself: clean, its known exceptions all found
+expect 0 '^ci/layering: clean; .* known wrong-way includes' "$src"
+
+# A copy of the stage folders' sources and the rules
+tree="$tmp/tree"
+mkdir -p "$tree/ci"
+(cd "$src" && find harness firmware_emu estimator \( -name '*.cc' -o -name '*.h' \) -print0 |
+  tar --null -cf - -T -) | tar -xf - -C "$tree"
+cp "$src/ci/layering.rules" "$tree/ci/"
+expect 0 '^ci/layering: clean' "$tree"
+restore() { cp "$src/$1" "$tree/$1"; }
+
+# The ground truth includes the engine: back up, and run reaches truth, so it closes a cycle
+f=harness/truth/src/path.cc
+echo '#include "hil/harness/run/scheduler.h"' >>"$tree/$f"
+line=$(wc -l <"$tree/$f")
+expect 1 "^$f:$line: #include \"hil/harness/run/scheduler.h\": goes back up: harness/run .*closes a cycle" "$tree"
+expect 1 '^ci/layering: 1 layering errors' "$tree"
+restore "$f"
+
+# An emulator includes the harness: across parts, back up
+first=("$tree"/firmware_emu/src/gnss/*.cc)
+f="${first[0]#"$tree"/}"
+sed -i '1i #include "hil/harness/scenario/scenario.h"' "$tree/$f"
+expect 1 "^$f:1: #include \"hil/harness/scenario/scenario.h\": goes back up: harness/scenario" "$tree"
+restore "$f"
+
+# An include of a stage declared above (not yet reached), and one of a stage below that the
+# including stage does not declare
+f=harness/src/links/capture_format.cc
+sed -i '1i #include "hil/harness/validate/validate.h"' "$tree/$f"
+expect 1 "^$f:1: .*harness/validate/validate.h\": goes back up: harness/validate" "$tree"
+restore "$f"
+first=("$tree"/firmware_emu/src/lidar/*.cc)
+f="${first[0]#"$tree"/}"
+sed -i '1i #include "hil/firmware_emu/link/pty_port.h"' "$tree/$f"
+expect 1 "^$f:1: .*: firmware_emu/lidar may not include firmware_emu/link" "$tree"
+restore "$f"
+
+# A stage the rules do not know
+mkdir -p "$tree/harness/src/newstage"
+echo '#include "hil/harness/run/scheduler.h"' >"$tree/harness/src/newstage/new.cc"
+expect 1 '^harness/src/newstage/new.cc:1: .*stage harness/newstage is not in' "$tree"
+rm -r "$tree/harness/src/newstage"
+
+# A known exception fixed in the code but still listed
+f=harness/src/links/capture_format.cc
+sed -i '/#include "hil\/harness\/run\/run_guard.h"/d' "$tree/$f"
+expect 1 "layering.rules:[0-9]+: known exception $f -> hil/harness/run/run_guard.h is no longer found" "$tree"
+restore "$f"
+expect 0 '^ci/layering: clean' "$tree"
+
+# Rules that list a stage above the one declaring it (a cycle in the table): exit 2
+printf 'a/x: a/y\na/y:\n' >"$tmp/bad.rules"
+expect 2 'bad.rules:1: a/x lists a/y, which is not declared above it' --rules "$tmp/bad.rules" "$tree"
+
+echo "layering_check_test: all cases pass"
