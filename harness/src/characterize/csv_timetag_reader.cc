@@ -12,15 +12,14 @@
 #include <vector>
 
 #include "hil/harness/characterize/imu_log_readers.h"
+#include "hil/harness/datasets/import_fields.h"
+#include "hil/harness/datasets/rtklib_timetag.h"
 
 #include "log_fields.h"
 
 namespace hil::harness {
 namespace {
 
-constexpr std::size_t kTagHeaderBytes = 64;   // text id, start tick in the last 4
-constexpr std::size_t kTagTimeBytes = 4 + 8;  // uint32 seconds + double fraction
-constexpr const char kTagId[] = "TIMETAG RTKLIB";
 constexpr const char* kCsvFields[] = {"ax", "ay", "az", "gx", "gy", "gz", "tick"};
 
 std::string ReadAll(const std::string& path) {
@@ -29,47 +28,36 @@ std::string ReadAll(const std::string& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-std::uint64_t Le(const std::string& b, std::size_t at, int bytes) {
-  std::uint64_t v = 0;
-  for (int k = bytes - 1; k >= 0; --k)
-    v = (v << 8) | static_cast<unsigned char>(b[at + static_cast<std::size_t>(k)]);
-  return v;
-}
-
 struct TagRecord {
   double t_s;          // GPST (time_t form) of the write
   std::uint64_t fpos;  // file position after the write
 };
 
-// the records with `fpos_bytes`-byte positions, or empty when they are not non-decreasing and
-// within the data file
-std::vector<TagRecord> TagRecords(const std::string& b, double t0, int fpos_bytes,
+// the tag's records read with `fpos_bytes`-byte positions (the datasets' reader), or empty when
+// that layout does not fit or the positions pass the end of the data file
+std::vector<TagRecord> TagRecords(const std::string& tag_path, int fpos_bytes,
                                   std::size_t data_size) {
-  const std::size_t rec = 4 + static_cast<std::size_t>(fpos_bytes);
-  const std::size_t first = kTagHeaderBytes + kTagTimeBytes;
+  RtklibTimeTag tag;
+  try {
+    tag = ReadRtklibTimeTag(tag_path, fpos_bytes);
+  } catch (const ImportInputError& e) {
+    const std::string what = e.what();
+    // the header's problems are the same in both layouts: say them at once
+    if (what.find("header") != std::string::npos || what.find("cannot open") != std::string::npos)
+      throw std::runtime_error(what);
+    return {};
+  }
   std::vector<TagRecord> out;
-  if ((b.size() - first) % rec != 0) return out;
-  for (std::size_t at = first; at < b.size(); at += rec) {
-    const TagRecord r{t0 + static_cast<double>(Le(b, at, 4)) * 1e-3, Le(b, at + 4, fpos_bytes)};
-    if (r.fpos > data_size || (!out.empty() && r.fpos < out.back().fpos)) return {};
-    out.push_back(r);
+  for (const RtklibTimeTagRecord& r : tag.records) {
+    if (r.file_pos > data_size) return {};
+    out.push_back({tag.open_gpst_s + r.tick_ms * 1e-3, r.file_pos});
   }
   return out;
 }
 
 std::vector<TagRecord> ReadTag(const std::string& tag_path, std::size_t data_size) {
-  const std::string b = ReadAll(tag_path);
-  if (b.size() < kTagHeaderBytes + kTagTimeBytes || b.compare(0, std::strlen(kTagId), kTagId) != 0)
-    throw std::runtime_error(tag_path + ": header: not an RTKLIB TIMETAG file (no '" +
-                             std::string(kTagId) + "' id or shorter than 76 bytes)");
-  double frac = 0;
-  const std::uint64_t bits = Le(b, kTagHeaderBytes + 4, 8);
-  std::memcpy(&frac, &bits, sizeof frac);
-  if (!std::isfinite(frac) || frac < 0 || frac >= 1)
-    throw std::runtime_error(tag_path + ": header: time fraction is not in [0, 1)");
-  const double t0 = static_cast<double>(Le(b, kTagHeaderBytes, 4)) + frac;
-  std::vector<TagRecord> r = TagRecords(b, t0, 4, data_size);
-  if (r.empty()) r = TagRecords(b, t0, 8, data_size);
+  std::vector<TagRecord> r = TagRecords(tag_path, 4, data_size);
+  if (r.empty()) r = TagRecords(tag_path, 8, data_size);
   if (r.empty())
     throw std::runtime_error(tag_path +
                              ": records: neither 8- nor 12-byte records with file "
