@@ -125,11 +125,13 @@ void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, d
   const Eigen::Matrix3d Bt = (-Skew(f_N_) * dt).transpose();
   const Eigen::Matrix3d Dt = (Eigen::Matrix3d::Identity() - W_dt).transpose();
   const Eigen::Matrix3d Gt = (-C * dt).transpose();
+  // attitude hold: the attitude does not integrate the gyro, so its error owes nothing to δb_g
+  const Eigen::Matrix3d Ggt = attitude_hold_ ? Eigen::Matrix3d::Zero() : Gt;
   // Mᵀ = P Φᵀ, the columns of δp, δv, φ
   const Cols3 Mp = P.template middleCols<3>(kPos) + dt * P.template middleCols<3>(kVel);
   const Cols3 Mv = P.template middleCols<3>(kVel) * At + P.template middleCols<3>(kAtt) * Bt +
                    P.template middleCols<3>(kAccelBias) * Gt;
-  const Cols3 Ma = P.template middleCols<3>(kAtt) * Dt + P.template middleCols<3>(kGyroBias) * Gt;
+  const Cols3 Ma = P.template middleCols<3>(kAtt) * Dt + P.template middleCols<3>(kGyroBias) * Ggt;
   // Φ's diagonal on the tail: P_tail ← Φ_tail P_tail Φ_tailᵀ
   Eigen::Matrix<double, kTail, 1> tail = Eigen::Matrix<double, kTail, 1>::Ones();
   if constexpr (N == kNumStates) {
@@ -147,7 +149,7 @@ void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, d
                                      Bt.transpose() * M.template middleRows<3>(kAtt) +
                                      Gt.transpose() * M.template middleRows<3>(kAccelBias);
     R.template middleRows<3>(kAtt) = Dt.transpose() * M.template middleRows<3>(kAtt) +
-                                     Gt.transpose() * M.template middleRows<3>(kGyroBias);
+                                     Ggt.transpose() * M.template middleRows<3>(kGyroBias);
     R.template bottomRows<kTail>() = tail.asDiagonal() * M.template bottomRows<kTail>();
     return R;
   };

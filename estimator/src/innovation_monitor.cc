@@ -60,6 +60,15 @@ double InnovationMonitor::window_mean_nis_per_dof() const {
   return sum / static_cast<double>(window_dof_);
 }
 
+double InnovationMonitor::window_median_nis_per_dof() const {
+  if (count_ == 0) return 0.0;
+  std::array<double, kInnovationWindow> v{};
+  for (int i = 0; i < count_; ++i) v[i] = nis_[i] / static_cast<double>(dof_[i]);
+  const auto mid = v.begin() + count_ / 2;
+  std::nth_element(v.begin(), mid, v.begin() + count_);
+  return *mid;
+}
+
 double InnovationMonitor::window_mean_excess() const {
   if (count_ == 0) return 1.0;
   double sum = 0;

@@ -50,7 +50,8 @@ UpdateResult Navigator::ControlGnssPosition(const GnssSample& g, const Eigen::Ve
   UpdateResult r = ekf_.UpdatePosition(p, g.pos_std_enu_m);
   if (!r.accepted && r.dof > 0 && rp.adaptive && std::isfinite(r.nis)) {
     const bool persistent =
-        monitors_[kAidGnssPosition].consecutive_rejected() + 1 >= rp.reject_fade_count;
+        monitors_[kAidGnssPosition].consecutive_rejected() + 1 >= rp.reject_fade_count &&
+        first_rejected_t_ && g.t - *first_rejected_t_ >= rp.reject_fade_after;
     // fading memory to this fix: P ← λ P with λ the factor that makes its innovation consistent
     const double lambda = std::min(r.excess, rp.max_fading_factor);
     if ((after_gap || persistent) && lambda > 1.0) {
@@ -67,9 +68,10 @@ UpdateResult Navigator::ControlGnssPosition(const GnssSample& g, const Eigen::Ve
 }
 
 void Navigator::AdaptToInnovations() {
-  // innovation-based adaptation (Mohamed and Schwarz 1999) in the fading-memory form of Xia et
-  // al. 1994: a window whose mean NIS lies above its χ² band fades the covariance by the window's
-  // mean excess factor and scales the IMU noise by the window's mean NIS per degree of freedom;
+  // innovation-based adaptation of the process noise (Mohamed and Schwarz 1999): a window whose
+  // mean NIS lies above its χ² band scales the IMU noise by the window's mean NIS per degree of
+  // freedom (the covariance is faded only for a fix after a gap or a run of rejections: fading
+  // it for a window, too, cost seed004 0.015 -> 0.136 m RMSE);
   // a window whose mean is below 1 scales that noise back down (never below the configured
   // noise).
   InnovationMonitor& m = monitors_[kAidGnssPosition];
@@ -77,12 +79,9 @@ void Navigator::AdaptToInnovations() {
   const RobustnessParams& rp = params_.robust;
   const double mean = m.window_mean_nis_per_dof();
   double q = ekf_.process_noise_scale();
-  if (m.window_above_band()) {
-    const double lambda = std::clamp(m.window_mean_excess(), 1.0, rp.max_fading_factor);
-    if (lambda > 1.0) {
-      ekf_.InflateCovariance(lambda);
-      ++stats_.fadings;
-    }
+  // persistently above: the mean above the band and most updates above their expectation (a
+  // few outliers in a window of a pessimistic filter are not a wrong model)
+  if (m.window_above_band() && m.window_median_nis_per_dof() > 1.0) {
     q = std::min(q * std::min(mean, rp.max_scale_step), rp.max_process_noise_scale);
     m.ClearWindow();
   } else if (mean < 1.0 && q > 1.0) {

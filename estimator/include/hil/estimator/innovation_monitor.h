@@ -11,7 +11,8 @@
 /// time-average NIS test). Quantiles from the Wilson–Hilferty approximation (Wilson and Hilferty
 /// 1931), within 0.5 % of the exact quantiles from 30 degrees of freedom on.
 /// Each update's NIS is clipped at `clip_per_dof` per degree of freedom before it enters the mean,
-/// so one wild outlier cannot move the mean far (a persistent excess still does).
+/// so one wild outlier cannot move the mean far (a persistent excess still does); the median is
+/// there for a test that a few outliers cannot pass at all.
 
 #include <array>
 #include <cstdint>
@@ -39,6 +40,8 @@ class InnovationMonitor {
   bool window_full() const { return count_ == kInnovationWindow; }
   /// Mean NIS per degree of freedom over the window (≈ 1 when consistent); 0 when empty.
   double window_mean_nis_per_dof() const;
+  /// Median NIS per degree of freedom over the window (0 when empty): robust to a few outliers.
+  double window_median_nis_per_dof() const;
   /// Mean of the excess factors over the window (1 when empty).
   double window_mean_excess() const;
   /// The 95 % band of the window's mean NIS per degree of freedom.
