@@ -20,6 +20,33 @@ void Add(std::string& s, const char* key, std::uint64_t v) {
   s += b;
 }
 
+// the filter's consistency: each aid source's innovation window against its χ² band, the
+// adapted process-noise scale, fadings, standstill
+void AppendConsistency(std::string& s, const NavigatorStats& n) {
+  char b[256];
+  s += ",\"aid\":{";
+  for (int i = 0; i < kNumAidSources; ++i) {
+    const NavigatorStats::Aid& a = n.aid[i];
+    std::snprintf(b, sizeof b,
+                  "%s\"%s\":{\"accepted\":%llu,\"rejected\":%llu,\"last_nis\":%.3g,"
+                  "\"window_nis_per_dof\":%.3g,\"window_count\":%d,\"band\":[%.3g,%.3g],"
+                  "\"windows_above\":%llu,\"windows_below\":%llu}",
+                  i ? "," : "", AidSourceName(i), static_cast<unsigned long long>(a.accepted),
+                  static_cast<unsigned long long>(a.rejected), a.last_nis, a.window_nis_per_dof,
+                  a.window_count, a.band_low, a.band_high,
+                  static_cast<unsigned long long>(a.windows_above),
+                  static_cast<unsigned long long>(a.windows_below));
+    s += b;
+  }
+  std::snprintf(b, sizeof b, "},\"process_noise_scale\":%.4g", n.process_noise_scale);
+  s += b;
+  Add(s, "fadings", n.fadings);
+  Add(s, "gap_fadings", n.gap_fadings);
+  Add(s, "reject_fadings", n.reject_fadings);
+  Add(s, "stationary_periods", n.stationary_periods);
+  s += n.stationary ? ",\"stationary\":true" : ",\"stationary\":false";
+}
+
 }  // namespace
 
 void NavdHealth::OnGnss(const GnssSample& g) {
@@ -150,6 +177,7 @@ std::string NavdHealth::Field(GpsTime t) {
   Add(s, "imu_can_unpaired", j ? j->unpaired : 0);
   Add(s, "imu_can_bad_length", j ? j->bad_length : 0);
   Add(s, "imu_can_out_of_order", j ? j->out_of_order : 0);
+  if (src_.nav != nullptr) AppendConsistency(s, *src_.nav);
   s += "}";
   return s;
 }

@@ -1,5 +1,6 @@
 #include "hil/estimator/error_state_ekf.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace hil::estimator {
@@ -17,6 +18,8 @@ void ErrorStateEkf::Initialize(const NavState& s) {
   ba_.setZero();
   bg_.setZero();
   e_gnss_.setZero();
+  q_scale_ = 1.0;
+  attitude_hold_ = false;
   set_speed_ = (s.q_NB.conjugate() * s.v_N_mps).x();
   speed_dev_ = 0.0;
   gm_tau_s_ = params_.gnss_error_tau_s;
@@ -47,9 +50,12 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& delta_angle_B_rad,
                             const Eigen::Vector3d& delta_velocity_B_mps, double dt) {
   if (!(dt > 0) || dt > 1.0 || !AllFinite(delta_angle_B_rad) || !AllFinite(delta_velocity_B_mps))
     return;
-  const Eigen::Vector3d dth = delta_angle_B_rad - bg_ * dt;
-  const Eigen::Vector3d dv = delta_velocity_B_mps - ba_ * dt;
   const Eigen::Matrix3d C = state_.q_NB.toRotationMatrix();
+  // attitude hold: a standing vehicle turns with the Earth only
+  const Eigen::Vector3d dth = attitude_hold_
+                                  ? Eigen::Vector3d(C.transpose() * earth_.w_IE_N_radps * dt)
+                                  : Eigen::Vector3d(delta_angle_B_rad - bg_ * dt);
+  const Eigen::Vector3d dv = delta_velocity_B_mps - ba_ * dt;
   w_B_ = dth / dt;
   f_N_ = C * dv / dt;
   Propagate(earth_, dth, dv, dt, memory_, state_);
@@ -65,9 +71,11 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& delta_angle_B_rad,
   PropagateCovariance(C, dt, gm_decay, dev_decay);
   // process noise: isotropic densities are invariant under the rotation C
   P_.block<3, 3>(kVel, kVel).diagonal().array() +=
-      p.accel_noise_mps2_rthz * p.accel_noise_mps2_rthz * dt;
-  P_.block<3, 3>(kAtt, kAtt).diagonal().array() +=
-      p.gyro_noise_radps_rthz * p.gyro_noise_radps_rthz * dt;
+      q_scale_ * p.accel_noise_mps2_rthz * p.accel_noise_mps2_rthz * dt;
+  if (!attitude_hold_) {
+    P_.block<3, 3>(kAtt, kAtt).diagonal().array() +=
+        q_scale_ * p.gyro_noise_radps_rthz * p.gyro_noise_radps_rthz * dt;
+  }
   P_.block<3, 3>(kAccelBias, kAccelBias).diagonal().array() +=
       p.accel_bias_rw_mps3_rthz * p.accel_bias_rw_mps3_rthz * dt;
   P_.block<3, 3>(kGyroBias, kGyroBias).diagonal().array() +=
@@ -117,11 +125,13 @@ void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, d
   const Eigen::Matrix3d Bt = (-Skew(f_N_) * dt).transpose();
   const Eigen::Matrix3d Dt = (Eigen::Matrix3d::Identity() - W_dt).transpose();
   const Eigen::Matrix3d Gt = (-C * dt).transpose();
+  // attitude hold: the attitude does not integrate the gyro, so its error owes nothing to δb_g
+  const Eigen::Matrix3d Ggt = attitude_hold_ ? Eigen::Matrix3d::Zero() : Gt;
   // Mᵀ = P Φᵀ, the columns of δp, δv, φ
   const Cols3 Mp = P.template middleCols<3>(kPos) + dt * P.template middleCols<3>(kVel);
   const Cols3 Mv = P.template middleCols<3>(kVel) * At + P.template middleCols<3>(kAtt) * Bt +
                    P.template middleCols<3>(kAccelBias) * Gt;
-  const Cols3 Ma = P.template middleCols<3>(kAtt) * Dt + P.template middleCols<3>(kGyroBias) * Gt;
+  const Cols3 Ma = P.template middleCols<3>(kAtt) * Dt + P.template middleCols<3>(kGyroBias) * Ggt;
   // Φ's diagonal on the tail: P_tail ← Φ_tail P_tail Φ_tailᵀ
   Eigen::Matrix<double, kTail, 1> tail = Eigen::Matrix<double, kTail, 1>::Ones();
   if constexpr (N == kNumStates) {
@@ -139,7 +149,7 @@ void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, d
                                      Bt.transpose() * M.template middleRows<3>(kAtt) +
                                      Gt.transpose() * M.template middleRows<3>(kAccelBias);
     R.template middleRows<3>(kAtt) = Dt.transpose() * M.template middleRows<3>(kAtt) +
-                                     Gt.transpose() * M.template middleRows<3>(kGyroBias);
+                                     Ggt.transpose() * M.template middleRows<3>(kGyroBias);
     R.template bottomRows<kTail>() = tail.asDiagonal() * M.template bottomRows<kTail>();
     return R;
   };
@@ -288,6 +298,8 @@ UpdateResult ErrorStateEkf::UpdateOf(const Eigen::Matrix<double, M, 1>& innovati
   const Eigen::LDLT<Eigen::Matrix<double, M, M>> ldlt(S);
   if (ldlt.info() != Eigen::Success || !innovation.allFinite()) return r;
   r.nis = innovation.dot(ldlt.solve(innovation));
+  const double tr_hph = (S - R).trace();
+  r.excess = tr_hph > 0 ? std::max(0.0, (innovation.squaredNorm() - R.trace()) / tr_hph) : 0.0;
   if (!std::isfinite(r.nis) || r.nis > params_.gate_sigma * params_.gate_sigma * M) return r;
   const Eigen::Matrix<double, M, M> S_inv = ldlt.solve(Eigen::Matrix<double, M, M>::Identity());
   const Eigen::Matrix<double, N, M> K = PHt * S_inv;
@@ -348,6 +360,42 @@ void ErrorStateEkf::SetGnssErrorModel(double tau_s, double std_m, bool new_sourc
   }
   gm_tau_s_ = tau_s;
   gm_std_m_ = std_m;
+}
+
+UpdateResult ErrorStateEkf::UpdateZeroVelocity(double std_mps) {
+  if (!(std_mps > 0)) return {};
+  Eigen::Matrix<double, 3, kNumStates> H = Eigen::Matrix<double, 3, kNumStates>::Zero();
+  H.block<3, 3>(0, kVel).setIdentity();
+  const Eigen::Matrix3d R = Eigen::Matrix3d::Identity() * std_mps * std_mps;
+  return Update<3>(-state_.v_N_mps, H, R);
+}
+
+UpdateResult ErrorStateEkf::UpdateZeroAngularRate(const Eigen::Vector3d& mean_raw_rate_B_radps,
+                                                  double std_radps) {
+  if (!AllFinite(mean_raw_rate_B_radps) || !(std_radps > 0)) return {};
+  // raw rate = b_g + Cᵀ ω_IE (+ noise) for a standing body; the attitude's part of Cᵀ ω_IE is
+  // below 1e-7 rad/s per mrad and left out of H
+  const Eigen::Vector3d w_IE_B = state_.q_NB.conjugate() * earth_.w_IE_N_radps;
+  Eigen::Matrix<double, 3, kNumStates> H = Eigen::Matrix<double, 3, kNumStates>::Zero();
+  H.block<3, 3>(0, kGyroBias).setIdentity();
+  const Eigen::Matrix3d R = Eigen::Matrix3d::Identity() * std_radps * std_radps;
+  return Update<3>(mean_raw_rate_B_radps - w_IE_B - bg_, H, R);
+}
+
+void ErrorStateEkf::InflateCovariance(double factor) {
+  if (!(factor > 1.0) || !std::isfinite(factor)) return;
+  P_.topLeftCorner<kNumClassicStates, kNumClassicStates>() *= factor;
+  if (AugmentedStatesOn()) {
+    const double s = std::sqrt(factor);
+    P_.topRightCorner<kNumClassicStates, kNumStates - kNumClassicStates>() *= s;
+    P_.bottomLeftCorner<kNumStates - kNumClassicStates, kNumClassicStates>() *= s;
+  }
+}
+
+void ErrorStateEkf::SetBiases(const Eigen::Vector3d& accel_bias_B_mps2,
+                              const Eigen::Vector3d& gyro_bias_B_radps) {
+  if (AllFinite(accel_bias_B_mps2)) ba_ = accel_bias_B_mps2;
+  if (AllFinite(gyro_bias_B_radps)) bg_ = gyro_bias_B_radps;
 }
 
 void ErrorStateEkf::ResetPositionVelocity(const Eigen::Vector3d& p, const Eigen::Vector3d& v,

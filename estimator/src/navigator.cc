@@ -45,7 +45,11 @@ std::optional<NavMode> NavModeFromName(const char* name) {
   return std::nullopt;
 }
 
-Navigator::Navigator(const NavigatorParams& params) : params_(params), planar_(params.planar) {}
+Navigator::Navigator(const NavigatorParams& params)
+    : params_(params),
+      planar_(params.planar),
+      stationary_(params.stationary, params.ekf.accel_noise_mps2_rthz,
+                  params.ekf.gyro_noise_radps_rthz) {}
 
 void Navigator::EnsureFrame(const Lla& origin) {
   if (frame_set_) return;
@@ -188,12 +192,14 @@ void Navigator::ProcessImu(const ImuSample& s) {
     filter_t_ = s.t;
     return;
   }
+  DetectStationary(s);
   ekf_.Predict(s.delta_angle_B_rad, s.delta_velocity_B_mps, s.dt_s);
   filter_t_ = s.t;
+  ControlZeroMotion();
   if (params_.mode == NavMode::kEkf &&
       (params_.ekf.nhc_std_mps > 0 || params_.ekf.speed_rw_mps_rthz > 0) &&
       filter_t_ - last_nhc_t_ >= params_.nhc_period - std::chrono::microseconds(1)) {
-    ekf_.UpdateNonHolonomic();
+    Record(kAidNonHolonomic, ekf_.UpdateNonHolonomic());
     ekf_.UpdateSpeedModel();
     last_nhc_t_ = filter_t_;
   }
@@ -281,7 +287,11 @@ void Navigator::ProcessGnss(const GnssSample& g) {
                            is_float != gnss_float_);
     gnss_float_ = is_float;
   }
-  const UpdateResult rp = ekf_.UpdatePosition(p, g.pos_std_enu_m);
+  if (g.has_velocity) {
+    last_gnss_vel_t_ = g.t;
+    last_gnss_speed_mps_ = g.vel_enu_mps.head<2>().norm();
+  }
+  const UpdateResult rp = ControlGnssPosition(g, p);
   stats_.last_nis_pos = rp.nis;
   if (rp.accepted) {
     ++stats_.gnss_fused;
@@ -293,6 +303,7 @@ void Navigator::ProcessGnss(const GnssSample& g) {
         (status_ | kStatusGnssFused) & ~(kStatusGnssRejected | kStatusDeadReckoning | kStatusReset);
     if (g.has_velocity && params_.use_gnss_velocity) {
       const UpdateResult rv = ekf_.UpdateVelocity(g.vel_enu_mps, g.vel_std_enu_mps);
+      Record(kAidGnssVelocity, rv);
       stats_.last_nis_vel = rv.nis;
     }
     return;

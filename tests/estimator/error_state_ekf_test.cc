@@ -126,6 +126,51 @@ TEST_F(ErrorStateEkfTest, GateRejectsAnOutlierAndAcceptsAConsistentFix) {
   EXPECT_LT((Pos(ekf_) - (p + Eigen::Vector3d(0.2, -0.1, 0.1))).norm(), 0.2);
 }
 
+// issue 39: the fading factor of a rejected fix, applied, makes that fix consistent
+TEST_F(ErrorStateEkfTest, FadingByTheExcessFactorMakesARejectedFixAcceptable) {
+  const Eigen::Vector3d p = Pos(ekf_) + Eigen::Vector3d(8, -6, 3);
+  ErrorStateEkf faded = ekf_;
+  const UpdateResult bad = faded.UpdatePosition(p, Eigen::Vector3d::Constant(0.1));
+  ASSERT_FALSE(bad.accepted);
+  EXPECT_GT(bad.excess, 10.0);
+  const EkfMatrix before = faded.covariance();
+  faded.InflateCovariance(bad.excess);
+  // the classic block scales by λ, its cross terms with the augmented states by √λ, the rest not
+  EXPECT_NEAR(faded.covariance()(kAtt + 2, kGyroBias + 2),
+              before(kAtt + 2, kGyroBias + 2) * bad.excess, 1e-12);
+  EXPECT_NEAR(faded.covariance()(kPos, kGnssError),
+              before(kPos, kGnssError) * std::sqrt(bad.excess), 1e-12);
+  EXPECT_EQ(faded.covariance()(kGnssError, kGnssError), before(kGnssError, kGnssError));
+  const UpdateResult retry = faded.UpdatePosition(p, Eigen::Vector3d::Constant(0.1));
+  EXPECT_TRUE(retry.accepted);
+  EXPECT_LT(retry.nis, 25.0 * 3);
+}
+
+// issue 39: a standing body's mean raw rate is the gyro bias plus the Earth's rate
+TEST(ErrorStateEkfStandstillTest, ZeroAngularRateEstimatesTheGyroBiasAndHoldHoldsTheAttitude) {
+  EarthModel earth;
+  earth.w_IE_N_radps = Eigen::Vector3d(0, 7.292115e-5 * std::cos(0.8), 7.292115e-5 * std::sin(0.8));
+  earth.g_N_mps2 = Eigen::Vector3d(0, 0, -9.81);
+  ErrorStateEkf ekf(EkfParams{}, earth);
+  NavState s;
+  s.q_NB = Eigen::AngleAxisd(1.0, Eigen::Vector3d::UnitZ());
+  ekf.Initialize(s);
+  const Eigen::Vector3d bias(1e-3, -2e-3, 5e-4);
+  const Eigen::Vector3d raw = bias + s.q_NB.conjugate() * earth.w_IE_N_radps;
+  ekf.SetAttitudeHold(true);
+  for (int k = 0; k < 200; ++k) {
+    ekf.Predict(raw * 0.01, Eigen::Vector3d(0, 0, 9.81) * 0.01, 0.01);
+    if (k % 50 == 49) {
+      EXPECT_TRUE(ekf.UpdateZeroAngularRate(raw, 1e-5).accepted);
+      EXPECT_TRUE(ekf.UpdateZeroVelocity(0.01).accepted);
+    }
+  }
+  EXPECT_LT((ekf.gyro_bias() - bias).norm(), 1e-5);
+  // held: the attitude turned with the Earth only, not by the (biased) gyro
+  EXPECT_LT(Eigen::AngleAxisd(ekf.state().q_NB.conjugate() * s.q_NB).angle(), 1e-6);
+  EXPECT_LT(ekf.state().v_N_mps.norm(), 0.01);
+}
+
 TEST_F(ErrorStateEkfTest, NonFiniteInputsAreIgnored) {
   const NavState before = ekf_.state();
   ekf_.Predict(Eigen::Vector3d::Constant(std::nan("")), Eigen::Vector3d::Zero(), 0.01);

@@ -72,6 +72,10 @@ void StartAt(const KfginsConfig& c, double sow, Navigator& nav) {
   nav.InitializeAt(TimeOfSow(sow),
                    {c.initpos_deg_deg_m.x(), c.initpos_deg_deg_m.y(), c.initpos_deg_deg_m.z()},
                    SwapNedEnu(c.initvel_ned_mps), QuatEnuFluFromEulerNed(rpy));
+  // the configuration's initial biases (FRD, °/h and mGal), zero where it gives none
+  const Eigen::Vector3d bg = c.initgyrbias_deg_hr.value_or(Eigen::Vector3d::Zero()) * kDegPerHr;
+  const Eigen::Vector3d ba = c.initaccbias_mgal.value_or(Eigen::Vector3d::Zero()) * kMgal;
+  nav.SetImuBiases(FlipBody(ba), FlipBody(bg));
 }
 
 void EnsureDirectory(const std::string& dir) {

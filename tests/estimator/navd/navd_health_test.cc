@@ -173,5 +173,30 @@ TEST(NavdHealthTest, FlagsTheImuLostWhileTheNavigatorSaysSo) {
   EXPECT_NE(back.find("\"imu_losses\":1"), std::string::npos) << back;
 }
 
+// issue 39: each aid source's innovation window against its χ² band, and the adaptation's state
+TEST(NavdHealthTest, ReportsEachAidSourcesInnovationWindowAndTheAdaptation) {
+  NavigatorStats nav;
+  nav.aid[kAidGnssPosition].accepted = 40;
+  nav.aid[kAidGnssPosition].rejected = 2;
+  nav.aid[kAidGnssPosition].window_nis_per_dof = 1.5;
+  nav.aid[kAidGnssPosition].window_count = 20;
+  nav.aid[kAidGnssPosition].band_low = 0.675;
+  nav.aid[kAidGnssPosition].band_high = 1.39;
+  nav.process_noise_scale = 4;
+  nav.fadings = 3;
+  nav.stationary = true;
+  NavdHealth h(HealthSources{nullptr, nullptr, nullptr, nullptr, &nav});
+  const std::string f = h.Field(Ns(1));
+  EXPECT_NE(f.find("\"aid\":{\"gnss_pos\":{\"accepted\":40,\"rejected\":2,\"last_nis\":0,"
+                   "\"window_nis_per_dof\":1.5,\"window_count\":20,\"band\":[0.675,1.39],"),
+            std::string::npos)
+      << f;
+  for (const char* key : {"\"gnss_vel\":{", "\"nhc\":{", "\"zupt\":{", "\"zaru\":{",
+                          "\"process_noise_scale\":4,", "\"fadings\":3,", "\"stationary\":true}"})
+    EXPECT_NE(f.find(key), std::string::npos) << key << " in " << f;
+  // the keys that were there before stay
+  EXPECT_NE(f.find("\"imu_can_out_of_order\":0,"), std::string::npos) << f;
+}
+
 }  // namespace
 }  // namespace hil::estimator

@@ -109,6 +109,10 @@ struct UpdateResult {
   bool accepted = false;
   double nis = 0;  ///< innovationᵀ S⁻¹ innovation
   int dof = 0;
+  /// The fading factor that would make this innovation consistent: (νᵀν − tr R) / tr(H P Hᵀ)
+  /// (Xia, Rao, Ying and Shen 1994, the adaptive fading Kalman filter's one-step estimate);
+  /// ≤ 1 when the covariance explains the innovation.
+  double excess = 0;
 };
 
 /// The error-state EKF. No allocation after construction.
@@ -144,6 +148,27 @@ class ErrorStateEkf {
   /// its covariance rows are rescaled by the ratio of the σ. No effect when the augmented states
   /// are off (gnss_error_tau_s = 0) or the model is unchanged.
   void SetGnssErrorModel(double tau_s, double std_m, bool new_source);
+  /// Zero-velocity update (the vehicle stands): v_N = 0 with σ per axis.
+  UpdateResult UpdateZeroVelocity(double std_mps);
+  /// Zero-angular-rate update (the vehicle stands): the mean raw gyro rate over a still interval
+  /// is the gyro bias plus the Earth's rate in B, with σ per axis.
+  UpdateResult UpdateZeroAngularRate(const Eigen::Vector3d& mean_raw_rate_B_radps,
+                                     double std_radps);
+  /// Attitude hold: while on, the vehicle is known to stand, so Predict turns the body with the
+  /// Earth only (the gyro reading is bias and noise) and adds no angle random walk.
+  void SetAttitudeHold(bool on) { attitude_hold_ = on; }
+  bool attitude_hold() const { return attitude_hold_; }
+  /// Fading memory (Fagin 1964; Sorenson and Sacks 1971): multiplies the covariance of the 15
+  /// classic states (position … gyro bias) by `factor` ≥ 1; their cross-covariances with the
+  /// augmented states by √factor (P ← D P D, D = diag(√factor·I₁₅, I₅): positive semi-definite).
+  void InflateCovariance(double factor);
+  /// Multiplies the IMU's white-noise densities' variances (accelerometer, gyro) in Predict (≥ 1;
+  /// adapted by the navigator from its innovation statistics).
+  void SetProcessNoiseScale(double scale) { q_scale_ = scale; }
+  double process_noise_scale() const { return q_scale_; }
+  /// Starts the bias estimates at known values (a dataset's initial biases), after Initialize.
+  void SetBiases(const Eigen::Vector3d& accel_bias_B_mps2,
+                 const Eigen::Vector3d& gyro_bias_B_radps);
   /// Resets position/velocity to a measurement after a long rejection (keeps attitude and biases).
   void ResetPositionVelocity(const Eigen::Vector3d& p_N_m, const Eigen::Vector3d& v_N_mps,
                              double pos_std_m, double vel_std_mps);
@@ -214,6 +239,8 @@ class ErrorStateEkf {
   Eigen::Vector3d f_N_ = Eigen::Vector3d::Zero();  // last specific force in N
   EkfMatrix P_ = EkfMatrix::Identity();
   std::uint32_t repairs_ = 0;
+  double q_scale_ = 1.0;        // process-noise scale (SetProcessNoiseScale)
+  bool attitude_hold_ = false;  // SetAttitudeHold
 };
 
 }  // namespace hil::estimator

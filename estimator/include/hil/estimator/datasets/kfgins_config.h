@@ -42,8 +42,9 @@ struct KfginsConfig {
   Eigen::Vector3d initposstd_ned_m = Eigen::Vector3d::Zero();
   Eigen::Vector3d initvelstd_ned_mps = Eigen::Vector3d::Zero();
   Eigen::Vector3d initattstd_deg = Eigen::Vector3d::Zero();
-  /// optional initial bias σ (default: imunoise gbstd / abstd)
+  /// optional initial biases (FRD; the runner starts the filter's estimates there, zero without)
   std::optional<Eigen::Vector3d> initgyrbias_deg_hr, initaccbias_mgal;
+  /// optional initial bias σ (default: imunoise gbstd / abstd)
   std::optional<Eigen::Vector3d> initbgstd_deg_hr, initbastd_mgal;
   KfginsImuNoise imunoise;
   Eigen::Vector3d antlever_frd_m = Eigen::Vector3d::Zero();  ///< GNSS antenna in the IMU frame
