@@ -304,19 +304,7 @@ nlohmann::json EstimatorJson(const RunReport& r) {
           {"solutions_outside_run", r.solutions_outside_run}};
 }
 
-}  // namespace
-
-void WriteReportJson(const RunReport& r, const std::string& path) {
-  nlohmann::json j;
-  j["scenario"] = r.scenario;
-  j["scenario_file"] = r.scenario_file;
-  j["seed"] = r.seed;
-  j["mode"] = r.mode;
-  j["pass"] = r.pass();
-  j["complete"] = r.complete;
-  j["problems"] = r.problems;
-  j["link_integrity"] = LinkIntegrityJson(r.link_integrity);
-  if (!r.realtime_threads.empty()) j["realtime_threads"] = RealtimeThreadsJson(r.realtime_threads);
+nlohmann::json MetricsJson(const RunReport& r) {
   nlohmann::json m = AccuracyJson(r.metrics);
   m["output_rate_hz"] = r.output_rate_hz;
   m["solutions_missing_fraction"] = r.timing.missing_fraction;
@@ -337,7 +325,47 @@ void WriteReportJson(const RunReport& r, const std::string& path) {
     m["latency_ms"] = nullptr;  // measured in real-time mode only
   }
   m["outages"] = OutagesJson(r.outages);
-  j["metrics"] = m;
+  return m;
+}
+
+nlohmann::json CriteriaJson(const RunReport& r) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& c : r.criteria) {
+    out.push_back({{"name", c.name},
+                   {"threshold", c.threshold},
+                   {"value", OptionalJson(c.value)},
+                   {"pass", c.pass}});
+    if (!c.default_key.empty()) out.back()["default"] = c.default_key;
+  }
+  return out;
+}
+
+nlohmann::json DefaultCriteriaJson(const RunReport& r) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& d : r.default_criteria) {
+    out.push_back({{"key", d.key},
+                   {"metric", d.metric},
+                   {"status", d.status},
+                   {"detail", d.detail},
+                   {"bound", OptionalJson(d.bound)}});
+  }
+  return out;
+}
+
+}  // namespace
+
+void WriteReportJson(const RunReport& r, const std::string& path) {
+  nlohmann::json j;
+  j["scenario"] = r.scenario;
+  j["scenario_file"] = r.scenario_file;
+  j["seed"] = r.seed;
+  j["mode"] = r.mode;
+  j["pass"] = r.pass();
+  j["complete"] = r.complete;
+  j["problems"] = r.problems;
+  j["link_integrity"] = LinkIntegrityJson(r.link_integrity);
+  if (!r.realtime_threads.empty()) j["realtime_threads"] = RealtimeThreadsJson(r.realtime_threads);
+  j["metrics"] = MetricsJson(r);
   j["baselines"] = AccuracyJson(r.baselines);
   // every criterion metric by name (null when it cannot be computed), for suites and reference
   // figures
@@ -346,22 +374,8 @@ void WriteReportJson(const RunReport& r, const std::string& path) {
   j["baseline_table"] = nlohmann::json::object();
   for (const auto& [name, value] : AccuracyTable(r.baselines))
     j["baseline_table"][name] = OptionalJson(value);
-  j["criteria"] = nlohmann::json::array();
-  for (const auto& c : r.criteria) {
-    j["criteria"].push_back({{"name", c.name},
-                             {"threshold", c.threshold},
-                             {"value", OptionalJson(c.value)},
-                             {"pass", c.pass}});
-    if (!c.default_key.empty()) j["criteria"].back()["default"] = c.default_key;
-  }
-  j["default_criteria"] = nlohmann::json::array();
-  for (const auto& d : r.default_criteria) {
-    j["default_criteria"].push_back({{"key", d.key},
-                                     {"metric", d.metric},
-                                     {"status", d.status},
-                                     {"detail", d.detail},
-                                     {"bound", OptionalJson(d.bound)}});
-  }
+  j["criteria"] = CriteriaJson(r);
+  j["default_criteria"] = DefaultCriteriaJson(r);
   j["estimator"] = EstimatorJson(r);
   j["estimator_exit"] = r.estimator_exit;
   j["speed"] = r.speed;

@@ -208,6 +208,27 @@ void AppendHealthHtml(std::string& h, const RunReport& r) {
   }
 }
 
+void AppendVerdictHtml(std::string& h, const RunReport& r) {
+  char buf[64];
+  h += "<h2>Verdict</h2>\n<table><tr><th>criterion</th><th>threshold</th><th>value</th><th>result</"
+       "th></tr>\n";
+  for (const auto& c : r.criteria) {
+    std::snprintf(buf, sizeof buf, "%.4g", c.threshold);
+    h += "<tr><td>" + XmlEscape(c.name) + "</td><td>" + buf + "</td><td>" + Fmt(c.value) +
+         "</td><td class=\"" + (c.pass ? "pass\">PASS" : "fail\">FAIL") + "</td></tr>\n";
+  }
+  for (const auto& p : r.problems)
+    h += "<tr><td colspan=\"3\">" + XmlEscape(p) + "</td><td class=\"fail\">FAIL</td></tr>\n";
+  h += "</table>\n";
+  h += "<p>Default criteria (every run is judged on them unless its scenario's "
+       "<code>default_criteria:</code> says otherwise):</p>\n<table><tr><th>key</th><th>metric</"
+       "th><th>status</th><th>bound or reason</th></tr>\n";
+  for (const auto& d : r.default_criteria)
+    h += "<tr><td>" + XmlEscape(d.key) + "</td><td>" + XmlEscape(d.metric) + "</td><td>" +
+         XmlEscape(d.status) + "</td><td>" + XmlEscape(d.detail) + "</td></tr>\n";
+  h += "</table>\n";
+}
+
 }  // namespace
 
 void WriteReportHtml(const RunReport& r, const ReportSeries& s, const std::string& dir) {
@@ -232,23 +253,7 @@ void WriteReportHtml(const RunReport& r, const ReportSeries& s, const std::strin
   h += buf;
   h += "<p>Estimator: <code>" + XmlEscape(r.estimator_command) + "</code> (output " +
        XmlEscape(r.estimator_output) + ", " + XmlEscape(r.estimator_exit) + ").</p>\n";
-  h += "<h2>Verdict</h2>\n<table><tr><th>criterion</th><th>threshold</th><th>value</th><th>result</"
-       "th></tr>\n";
-  for (const auto& c : r.criteria) {
-    std::snprintf(buf, sizeof buf, "%.4g", c.threshold);
-    h += "<tr><td>" + XmlEscape(c.name) + "</td><td>" + buf + "</td><td>" + Fmt(c.value) +
-         "</td><td class=\"" + (c.pass ? "pass\">PASS" : "fail\">FAIL") + "</td></tr>\n";
-  }
-  for (const auto& p : r.problems)
-    h += "<tr><td colspan=\"3\">" + XmlEscape(p) + "</td><td class=\"fail\">FAIL</td></tr>\n";
-  h += "</table>\n";
-  h += "<p>Default criteria (every run is judged on them unless its scenario's "
-       "<code>default_criteria:</code> says otherwise):</p>\n<table><tr><th>key</th><th>metric</"
-       "th><th>status</th><th>bound or reason</th></tr>\n";
-  for (const auto& d : r.default_criteria)
-    h += "<tr><td>" + XmlEscape(d.key) + "</td><td>" + XmlEscape(d.metric) + "</td><td>" +
-         XmlEscape(d.status) + "</td><td>" + XmlEscape(d.detail) + "</td></tr>\n";
-  h += "</table>\n";
+  AppendVerdictHtml(h, r);
   h += "<h2>Accuracy against truth</h2>\n<table><tr><th>metric</th><th>estimate</th><th>raw "
        "GNSS</th></tr>\n";
   const MetricTable est = AccuracyTable(r.metrics), raw = AccuracyTable(r.baselines);

@@ -62,7 +62,7 @@ CampaignSpec ReadCampaignFile(const std::string& path);
 /// `statistical.criteria` item): {metric, stat, max | min, name, scenarios} or {pass_fraction,
 /// name, scenarios}.
 /// @throws ScenarioError.
-CampaignCriterion ReadCampaignCriterion(const YamlReader& item);
+CampaignCriterion ReadCampaignCriterion(const YamlReader& c);
 
 /// The sweep's points in order: each the overrides of one point (one empty point without sweeps).
 std::vector<std::vector<ScenarioOverride>> SweepPoints(const CampaignSpec& spec);
