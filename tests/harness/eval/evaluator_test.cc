@@ -40,8 +40,8 @@ TEST(EvaluatorTest, CriteriaAgainstAbsoluteAndBaselineThresholds) {
   est.samples = base.samples = 5;
   est.horizontal_rmse_m = 0.22;
   base.horizontal_rmse_m = 0.40;
-  Criterion abs{"abs", "horizontal_rmse_m", 0.2, std::nullopt, std::nullopt};
-  Criterion rel{"rel", "horizontal_rmse_m", std::nullopt, std::nullopt, 0.6};
+  Criterion abs{"abs", "horizontal_rmse_m", 0.2, std::nullopt, std::nullopt, {}};
+  Criterion rel{"rel", "horizontal_rmse_m", std::nullopt, std::nullopt, 0.6, {}};
   const auto r = EvaluateCriteria({abs, rel}, est, base);
   EXPECT_FALSE(r[0].pass);
   EXPECT_TRUE(r[1].pass);

@@ -102,10 +102,10 @@ TEST(CriteriaTest, MinimumThresholdsAndRunMetrics) {
   o.max_horizontal_error_m = 2.5;
   o.reconvergence_time_s = 3.0;
   r.outages = {o};
-  Criterion rate{"rate", "output_rate_hz", std::nullopt, 10.0, std::nullopt};
-  Criterion outage{"outage", "outage_max_horizontal_error_m", 3.0, std::nullopt, std::nullopt};
-  Criterion reconv{"reconv", "reconvergence_time_s", 2.0, std::nullopt, std::nullopt};
-  Criterion latency{"latency", "latency_p99_ms", 100.0, std::nullopt, std::nullopt};
+  Criterion rate{"rate", "output_rate_hz", std::nullopt, 10.0, std::nullopt, {}};
+  Criterion outage{"outage", "outage_max_horizontal_error_m", 3.0, std::nullopt, std::nullopt, {}};
+  Criterion reconv{"reconv", "reconvergence_time_s", 2.0, std::nullopt, std::nullopt, {}};
+  Criterion latency{"latency", "latency_p99_ms", 100.0, std::nullopt, std::nullopt, {}};
   const auto res =
       EvaluateCriteria({rate, outage, reconv, latency}, RunMetricTable(r), MetricTable{});
   EXPECT_FALSE(res[0].pass) << "9.5 Hz is below the 10 Hz minimum";
