@@ -131,8 +131,7 @@ TEST_F(ImuLogReadersTest, CsvBadInputNamesFileLineAndField) {
   EXPECT_EQ(Message([&] { ReadImuLog(c); }), c + ":3: field tick: does not increase");
   const std::string d = Write("d.csv", good + "0,0,1,0,0,0,3\n");
   Write("d.csv.tag", "not a tag file, but long enough to hold the header and the time stamp...");
-  EXPECT_NE(Message([&] { ReadImuLog(d); }).find("d.csv.tag: header: not an RTKLIB TIMETAG"),
-            std::string::npos);
+  EXPECT_NE(Message([&] { ReadImuLog(d); }).find("d.csv.tag: header: "), std::string::npos);
   const std::string e = Write("e.csv", good + "0,0,1,0,0,0,3\n");
   Tag("e.csv.tag", 1, 0, {{1, 30}, {2, 10}});
   EXPECT_NE(Message([&] { ReadImuLog(e); }).find("e.csv.tag: records:"), std::string::npos);
