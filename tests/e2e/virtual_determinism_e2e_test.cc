@@ -127,11 +127,11 @@ TEST(VirtualDeterminismE2eTest, TwoLinksGiveByteIdenticalSolutionsUnderLoad) {
 // every run. navd switches a stock NEO-5M from NMEA to UBX with CFG commands, each sent when the
 // ACK of the one before has arrived; before host turns (scheduler.h) the commands arrived whenever
 // the run happened to look, and runs ended with anything from 0 to 95 of 120 solutions. Ten runs,
-// every second one beside a busy process, the last with a navd that starts 3 s late: all 119
-// solutions (one per epoch output inside the run), and the same bytes both ways. (The late navd's
-// run once ended with 44: the first turn's look at the host's open files saw the shell's forked
-// copy of hil, not yet exec'd, holding the ptys, took the links for opened, and never waited for
-// navd; SpawnShell now returns after the exec.)
+// every second one beside a busy process, the last with a navd that starts 3 s late: all 120
+// solutions, and the same bytes both ways. (The late navd's run once ended with 44: the first
+// turn's look at the host's open files saw the shell's forked copy of hil, not yet exec'd,
+// holding the ptys, took the links for opened, and never waited for navd; SpawnShell now returns
+// after the exec.)
 TEST(VirtualDeterminismE2eTest, UbxConfigurationSessionIsTheSameInEveryRun) {
   TempDir dir("e2e_virtual_ubx_configure");
   const std::string s = SourceDir() + "/vectors/scenarios/default_ubx_configure.yaml";
@@ -145,9 +145,7 @@ TEST(VirtualDeterminismE2eTest, UbxConfigurationSessionIsTheSameInEveryRun) {
     const CommandResult r = RunHil(s + slow_start + " --out " + out, run % 2 == 1);
     ASSERT_EQ(r.exit_code, 0) << "run " << run << ":\n" << r.out;
     const std::string estimate = ReadFile(out + "/estimate.jsonl");
-    // epochs 1 to 119 s: the 120 s epoch's output is ready 100 ms after the run's end and is not
-    // sent (issue 40.7: an epoch's messages enter the UART queue when they are ready)
-    EXPECT_EQ(std::count(estimate.begin(), estimate.end(), '\n'), 119) << "run " << run;
+    EXPECT_EQ(std::count(estimate.begin(), estimate.end(), '\n'), 120) << "run " << run;
     const std::string capture = ReadFile(out + "/captures/ttyGPS.cap");
     // the commands went both ways: CFG from navd (rx), ACKs and UBX navigation back (tx)
     EXPECT_NE(capture.find("\nrx "), std::string::npos) << "run " << run;
