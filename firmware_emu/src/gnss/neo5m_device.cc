@@ -101,15 +101,6 @@ std::vector<int> UsedInChannelOrder(const std::vector<SatelliteView>& sats) {
   return svids;
 }
 
-// Whether message (cls, id) goes out with the `count`-th epoch: its rate counts epochs; under an
-// overload fault everything goes, every epoch.
-bool Due(const ubx::ReceiverSettings& cfg, bool overload, std::uint64_t count, std::uint8_t cls,
-         std::uint8_t id) {
-  if (overload) return true;
-  const int r = cfg.Rate(cls, id);
-  return r > 0 && (count - 1) % static_cast<std::uint64_t>(r) == 0;
-}
-
 }  // namespace
 
 Neo5mDevice::Neo5mDevice(const Neo5mConfig& config, std::uint64_t seed)
@@ -118,7 +109,7 @@ Neo5mDevice::Neo5mDevice(const Neo5mConfig& config, std::uint64_t seed)
       model_(profile_.model, seed, config.common_seed != 0 ? config.common_seed : seed + 1),
       constellation_(seed),
       fix_state_(profile_.fix_state),
-      session_(DefaultSettings(profile_), profile_.cfg_rate_max_hz) {
+      session_(DefaultSettings(profile_), profile_.max_rate_hz) {
   if (profile_.rate_hz > profile_.max_rate_hz) {
     throw std::invalid_argument("GNSS rate " + std::to_string(profile_.rate_hz) +
                                 " Hz is above the " + profile_.name + " maximum of " +
@@ -157,27 +148,7 @@ void Neo5mDevice::Push(DeviceOutput& out, Time t, std::string bytes, std::string
   out.serial.push_back({t, 0, std::move(bytes), std::move(name)});
 }
 
-Time Neo5mDevice::next_event_time() const {
-  return pending_.empty() ? next_epoch_ : std::min(next_epoch_, pending_.front().t_ready);
-}
-
 void Neo5mDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
-  // outputs ready now go first (an earlier epoch's), then the epoch due now, then its output if
-  // it is ready at once (output_lag 0)
-  EmitDue(truth.t, out);
-  if (truth.t == next_epoch_) ComputeEpoch(truth);
-  EmitDue(truth.t, out);
-}
-
-void Neo5mDevice::EmitDue(Time t, DeviceOutput& out) {
-  while (!pending_.empty() && pending_.front().t_ready <= t) {
-    EmitEpoch(pending_.front(), out);
-    last_output_epoch_ = pending_.front().epoch;
-    pending_.pop_front();
-  }
-}
-
-void Neo5mDevice::ComputeEpoch(const TruthSample& truth) {
   const Time t = truth.t;
   const double dt_s = first_epoch_ ? 0.0 : ToSeconds(t - last_epoch_time_);
   first_epoch_ = false;
@@ -198,6 +169,7 @@ void Neo5mDevice::ComputeEpoch(const TruthSample& truth) {
   cond.max_sbas = cfg.sbas[2];
   ErrorInputs in;
   const ActiveFaults active = ApplyFaults(config_.faults, t, cond, in);
+  overload_ = active.overload;
   const bool data_gap = active.data_gap;
   const double gps_s = static_cast<double>(e.gps.week) * 604800.0 + e.gps.tow_s();
   e.sats = constellation_.Sky(gps_s, truth.lat_deg, truth.lon_deg, truth.height_m, cond);
@@ -253,16 +225,17 @@ void Neo5mDevice::ComputeEpoch(const TruthSample& truth) {
   e.f_acc_psps = valid ? 500.0 : 1.0e5;
   last_epoch_ = e;
   ++epoch_count_;
-  if (!data_gap) pending_.push_back({t + config_.output_lag, e, epoch_count_, active.overload});
+  if (!data_gap) EmitEpoch(t + config_.output_lag, out);
 }
 
-void Neo5mDevice::EmitEpoch(const PendingOutput& p, DeviceOutput& out) {
+void Neo5mDevice::EmitEpoch(Time t_ready, DeviceOutput& out) {
   const ubx::ReceiverSettings& cfg = session_.current();
-  const NavEpoch& e = p.epoch;
-  const Time t_ready = p.t_ready;
-  if (p.overload) ++overloaded_epochs_;
+  const NavEpoch& e = last_epoch_;
+  if (overload_) ++overloaded_epochs_;
   const auto due = [&](std::uint8_t cls, std::uint8_t id) {
-    return Due(cfg, p.overload, p.count, cls, id);
+    if (overload_) return true;  // everything, every epoch
+    const int r = cfg.Rate(cls, id);
+    return r > 0 && (epoch_count_ - 1) % static_cast<std::uint64_t>(r) == 0;
   };
   if (banner_pending_ && OutputEnabled(ubx::kProtoNmea)) {
     for (const auto& line : profile_.banner) Push(out, t_ready, nmea::EncodeTxt(line), "NMEA-TXT");
@@ -279,16 +252,7 @@ void Neo5mDevice::EmitEpoch(const PendingOutput& p, DeviceOutput& out) {
            "UBX-MON-HW");
     }
   }
-  if (OutputEnabled(ubx::kProtoNmea)) EmitNmea(p, out);
-}
-
-void Neo5mDevice::EmitNmea(const PendingOutput& p, DeviceOutput& out) {
-  const ubx::ReceiverSettings& cfg = session_.current();
-  const NavEpoch& e = p.epoch;
-  const Time t_ready = p.t_ready;
-  const auto due = [&](std::uint8_t cls, std::uint8_t id) {
-    return Due(cfg, p.overload, p.count, cls, id);
-  };
+  if (!OutputEnabled(ubx::kProtoNmea)) return;
   nmea::NmeaFormat fmt = profile_.format;
   fmt.mode_indicator = cfg.nmea_v23();
   const bool tk = e.status.time_known;
@@ -354,7 +318,6 @@ void Neo5mDevice::HandleUbx(const ubx::InputMessage& m, Time t, DeviceOutput& ou
       if (fx.hardware_reset) {
         session_.LoadSaved();
         banner_pending_ = true;
-        pending_.clear();  // a solution not output yet is lost with the reset
         epoch_count_ = 0;
         next_epoch_ = NextGridEpoch(last_epoch_time_);
       }
@@ -363,7 +326,7 @@ void Neo5mDevice::HandleUbx(const ubx::InputMessage& m, Time t, DeviceOutput& ou
       if (*fx.restart == StartKind::kCold) position_known_ = false;
     }
   } else if (m.payload.empty() && m.cls == ubx::kNav) {
-    auto p = ubx::EncodeNav(m.id, last_output_epoch_);
+    auto p = ubx::EncodeNav(m.id, last_epoch_);
     if (!p.empty()) replies.push_back({ubx::Frame(m.cls, m.id, p), ubx::MessageName(m.cls, m.id)});
   } else if (m.payload.empty() && m.cls == ubx::kMon && m.id == ubx::kMonVer) {
     replies.push_back({ubx::Frame(m.cls, m.id,
@@ -387,9 +350,9 @@ void Neo5mDevice::HandleNmea(const ubx::InputMessage& m, Time t, DeviceOutput& o
   if (!OutputEnabled(ubx::kProtoNmea)) return;
   const Time t_reply = t + config_.response_delay;
   if (s == "PUBX,00")
-    Push(out, t_reply, nmea::EncodePubx00(last_output_epoch_), "NMEA-PUBX00");
+    Push(out, t_reply, nmea::EncodePubx00(last_epoch_), "NMEA-PUBX00");
   else if (s == "PUBX,04")
-    Push(out, t_reply, nmea::EncodePubx04(last_output_epoch_), "NMEA-PUBX04");
+    Push(out, t_reply, nmea::EncodePubx04(last_epoch_), "NMEA-PUBX04");
 }
 
 }  // namespace hil::gnss

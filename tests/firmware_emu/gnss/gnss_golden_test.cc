@@ -13,9 +13,7 @@
 
 #include <gtest/gtest.h>
 
-#include "hil/firmware_emu/gnss/gps_time.h"
 #include "hil/firmware_emu/gnss/nav_epoch.h"
-#include "hil/firmware_emu/gnss/neo5m_device.h"
 #include "hil/firmware_emu/gnss/nmea_encoder.h"
 #include "hil/firmware_emu/gnss/nmea_sky_sentences.h"
 #include "hil/firmware_emu/gnss/nmea_ublox_sentences.h"
@@ -23,7 +21,6 @@
 #include "hil/firmware_emu/gnss/ubx_cfg_session.h"
 #include "hil/firmware_emu/gnss/ubx_frame.h"
 #include "hil/firmware_emu/gnss/ubx_messages.h"
-#include "hil/firmware_emu/link/uart_tx_queue.h"
 
 #include "golden_file.h"
 
@@ -310,7 +307,7 @@ std::string Generate() {
   o += DescribeUbx("UBX-ACK-ACK", ubx::Ack(true, 0x06, 0x01));
   o += DescribeUbx("UBX-ACK-NAK", ubx::Ack(false, 0x06, 0x31));
   ubx::UbxCfgSession session(ubx::ReceiverSettings::Defaults(9600, 1000, p.nmea_rates),
-                             p.cfg_rate_max_hz);
+                             p.max_rate_hz);
   const std::vector<std::pair<std::uint8_t, std::vector<std::uint8_t>>> polls = {
       {0x00, {1}}, {0x01, {0xF0, 0x00}}, {0x08, {}}, {0x24, {}},
       {0x16, {}},  {0x07, {}},           {0x17, {}}};
@@ -325,75 +322,6 @@ std::string Generate() {
 
 TEST(GnssGoldenTest, VectorsMatchTheEmulator) {
   hil::test::CheckOrWriteGolden("vectors/gnss/neo5m_messages.golden", Generate());
-}
-
-// The timeline of a NEO-5M on a 9600 Bd line asked twice per epoch, at x.026 s (CFG-PRT poll)
-// and x.068 s (CFG-MSG), as PX4's driver asked it (issue 40.7): each message with the time it was
-// ready, its first byte's start and its last byte's end, in ms of emulated time, through the UART
-// queue in the order the device hands them over. Each answer ends within 50 ms of its question,
-// ahead of its epoch's output, which follows it without a gap.
-std::string PollTimeline() {
-  Neo5mConfig cfg;
-  cfg.start_unix_ns = ParseIsoUtc("2013-06-10T08:00:00Z");
-  Neo5mDevice dev(cfg, 3);
-  link::UartTxQueue uart(9600, 1024);
-  std::ostringstream o;
-  o << "# message,ready_ms,first_byte_ms,end_ms\n";
-  const auto ms = [](Time t) { return static_cast<double>(ToNs(t)) * 1e-6; };
-  const auto submit = [&](const DeviceOutput& out) {
-    for (const SerialMessage& m : out.serial) {
-      const auto c = uart.Submit(m.t_ready, m.bytes);
-      if (!c) {
-        o << m.name << ",dropped\n";
-        continue;
-      }
-      o << m.name << "," << ms(m.t_ready) << "," << ms(c->t_first) << "," << ms(c->t_end()) << "\n";
-    }
-  };
-  const auto run_to = [&](Time t) {
-    while (dev.next_event_time() <= t) {
-      TruthSample truth;
-      truth.t = dev.next_event_time();
-      truth.lat_deg = 35.4796096, truth.lon_deg = 50.5979765, truth.height_m = 1312.0;
-      DeviceOutput out;
-      dev.OnEvent(truth, out);
-      submit(out);
-    }
-  };
-  ubx::Writer prt_poll;
-  prt_poll.U1(1);
-  const std::vector<std::pair<int, std::string>> questions = {
-      {26, ubx::Frame(0x06, 0x00, prt_poll)},
-      {68, ubx::Frame(0x06, 0x01, std::vector<std::uint8_t>{0x01, 0x06, 0x01})}};
-  for (int k = 1; k <= 3; ++k) {
-    for (const auto& [at_ms, bytes] : questions) {
-      const Time asked = TimeFromSeconds(k) + std::chrono::milliseconds(at_ms);
-      run_to(asked);
-      o << "asked," << ms(asked) << "\n";
-      DeviceOutput reply;
-      dev.OnHostBytes(0, asked, bytes, reply);
-      submit(reply);
-    }
-  }
-  run_to(TimeFromSeconds(4));
-  return o.str();
-}
-
-TEST(GnssGoldenTest, PollTimelineMatchesTheVector) {
-  const std::string timeline = PollTimeline();
-  // every answer's last byte within 50 ms of its question
-  std::istringstream in(timeline);
-  double asked_ms = -1;
-  int answers = 0;
-  for (std::string line; std::getline(in, line);) {
-    if (line.rfind("asked,", 0) == 0) asked_ms = std::stod(line.substr(6));
-    if (line.rfind("UBX-ACK-ACK,", 0) != 0) continue;
-    const double end_ms = std::stod(line.substr(line.rfind(',') + 1));
-    EXPECT_LT(end_ms - asked_ms, 50.0) << line;
-    ++answers;
-  }
-  EXPECT_EQ(answers, 6);
-  hil::test::CheckOrWriteGolden("vectors/gnss/neo5m_poll_timing.golden", timeline);
 }
 
 // The decoded values agree with the inputs (so the vectors cannot silently encode wrong values).

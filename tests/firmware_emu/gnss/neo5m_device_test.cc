@@ -1,6 +1,5 @@
 #include "hil/firmware_emu/gnss/neo5m_device.h"
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -13,7 +12,6 @@
 #include "hil/firmware_emu/gnss/gps_time.h"
 #include "hil/firmware_emu/gnss/ubx_frame.h"
 #include "hil/firmware_emu/gnss/ubx_messages.h"
-#include "hil/firmware_emu/link/uart_tx_queue.h"
 
 namespace hil::gnss {
 namespace {
@@ -30,22 +28,15 @@ TruthSample Truth(Time t, double lat = 35.4796096, double lon = 50.5979765, doub
 
 struct Harness {
   explicit Harness(Neo5mConfig cfg, std::uint64_t seed = 3) : dev(cfg, seed) {}
-  /// Runs epochs up to `t_end_s`, and their output (`output_lag` later), and returns what came
-  /// out.
+  /// Runs epochs up to `t_end_s` and returns what came out.
   std::vector<SerialMessage> RunUntil(double t_end_s, double lat = 35.4796096,
                                       double lon = 50.5979765) {
     std::vector<SerialMessage> got;
-    // then the output of the last epoch (output_lag later; computing the next may come with it)
-    const Time t_end = TimeFromSeconds(t_end_s);
-    const Duration lag = Neo5mConfig{}.output_lag;
-    while (
-        dev.next_event_time() <= t_end ||
-        (dev.last_epoch_time() <= t_end && dev.next_event_time() <= dev.last_epoch_time() + lag)) {
+    while (dev.next_event_time() <= TimeFromSeconds(t_end_s)) {
       DeviceOutput out;
-      const Time t = dev.next_event_time();
-      dev.OnEvent(Truth(t, lat, lon), out);
+      dev.OnEvent(Truth(dev.next_event_time(), lat, lon), out);
       got.insert(got.end(), out.serial.begin(), out.serial.end());
-      if (dev.last_epoch_time() == t) fixes.push_back(dev.last_fix());
+      fixes.push_back(dev.last_fix());
     }
     return got;
   }
@@ -318,7 +309,7 @@ TEST(Neo5mDeviceTest, ReportedAccuracyMatchesTheActualError) {
     const TruthSample t = Truth(h.dev.next_event_time());
     h.dev.OnEvent(t, out);
     const GnssFix& f = h.dev.last_fix();
-    if (h.dev.last_epoch_time() != t.t || !f.valid()) continue;  // an output event
+    if (!f.valid()) continue;
     const double de =
         (f.lon_deg - t.lon_deg) * 111320.0 * std::cos(t.lat_deg * std::numbers::pi / 180);
     const double dn = (f.lat_deg - t.lat_deg) * 110950.0;
@@ -402,68 +393,6 @@ TEST(Neo5mDeviceTest, DataGapSilencesTheOutputButKeepsTheRtkFix) {
       << "still RTK fixed, no re-acquisition: " << gga[0];
   for (const auto& f : h.fixes)
     EXPECT_TRUE(ToSeconds(f.t_validity) < 6 || f.valid()) << "the receiver keeps its fix";
-}
-
-}  // namespace
-}  // namespace hil::gnss
-
-namespace hil::gnss {
-namespace {
-
-// Issue 40.7: a poll arriving between an epoch and its output (x.026 and x.068 s, as PX4's driver
-// sent them) is answered within a few tens of ms, ahead of that epoch's messages: they enter the
-// one transmit queue when they are ready, in that order. Before, the epoch's messages entered the
-// queue at the epoch and the answers left after them, 616-644 ms late (PX4 waits 250 ms for an
-// ACK). The device's output goes through a UART queue in the order the scheduler dispatches it.
-TEST(Neo5mDeviceTest, PollsBetweenAnEpochAndItsOutputAreAnsweredWithinTensOfMs) {
-  Neo5mDevice dev(Config(), 3);
-  link::UartTxQueue uart(9600, 1024);  // the scenario's default transmit buffer
-  std::vector<std::pair<std::string, link::TimedChunk>> sent;
-  const auto submit = [&](const DeviceOutput& out) {
-    for (const SerialMessage& m : out.serial) {
-      auto c = uart.Submit(m.t_ready, m.bytes);
-      ASSERT_TRUE(c) << m.name;
-      sent.emplace_back(m.name, *c);
-    }
-  };
-  const auto run_to = [&](Time t) {
-    while (dev.next_event_time() <= t) {
-      DeviceOutput out;
-      dev.OnEvent(Truth(dev.next_event_time()), out);
-      submit(out);
-    }
-  };
-  ubx::Writer prt_poll;
-  prt_poll.U1(1);
-  const std::string cfg_msg = ubx::Frame(0x06, 0x01, std::vector<std::uint8_t>{0x01, 0x06, 0x01});
-  for (int k = 2; k <= 4; ++k) {
-    for (const auto& [ms, bytes] :
-         {std::pair{26, ubx::Frame(0x06, 0x00, prt_poll)}, std::pair{68, cfg_msg}}) {
-      const Time asked = TimeFromSeconds(k) + std::chrono::milliseconds(ms);
-      run_to(asked);
-      DeviceOutput reply;
-      dev.OnHostBytes(0, asked, bytes, reply);
-      ASSERT_FALSE(reply.serial.empty());
-      EXPECT_EQ(reply.serial.back().name, "UBX-ACK-ACK");
-      const std::size_t first = sent.size();
-      submit(reply);
-      const double answered_ms = ToSeconds(sent.back().second.t_end() - asked) * 1e3;
-      EXPECT_LT(answered_ms, 50.0) << "asked at " << ToSeconds(asked) << " s";
-      EXPECT_GE(sent[first].second.t_first, asked + std::chrono::milliseconds(10));
-    }
-    run_to(TimeFromSeconds(k) + std::chrono::milliseconds(900));
-  }
-  // epoch 4's messages (ready at 4.1 s) follow the answer to 4.068 s's question, once both the
-  // answer has left and the messages are ready
-  const auto ack = std::find_if(sent.rbegin(), sent.rend(), [](const auto& s) {
-    return s.first == "UBX-ACK-ACK" && s.second.t_first < TimeFromSeconds(4.2);
-  });
-  ASSERT_NE(ack, sent.rend());
-  const auto next = ack.base();  // the message after it
-  ASSERT_NE(next, sent.end());
-  EXPECT_EQ(next->first, "UBX-NAV-SOL") << "the epoch's first message, NAV-SOL being enabled";
-  EXPECT_EQ(next->second.t_first,
-            std::max(ack->second.t_end(), TimeFromSeconds(4) + std::chrono::milliseconds(100)));
 }
 
 }  // namespace

@@ -13,15 +13,6 @@
 /// (protocol-neutral) → UBX / NMEA encoders → whole SerialMessages for the UART queue of port 0
 /// (UART1). The UART queue drops whole messages that do not fit, as the receiver does.
 ///
-/// Output queue: an epoch's solution is computed at the epoch (the event at its time) and its
-/// messages enter the UART queue only when they are ready, `output_lag` later (a second event of
-/// the device); a host command is answered `response_delay` after it arrived. Both go into the
-/// one transmit queue in the order they become ready, as the receiver's output buffer fills: a poll
-/// arriving between an epoch and its output is answered before that epoch's messages (within a
-/// few tens of ms at 9600 Bd, inside PX4's 250 ms ACK timeout), one arriving while they are on the
-/// wire after the bytes already queued. A polled NAV message carries the last solution output (the
-/// one being computed is not available yet).
-///
 /// Faults (self-contained; scripted in the scenario's `gnss.faults`): each {kind, start_s, end_s}
 /// with kind `outage` (sky blocked: no satellites, no fix, re-acquisition afterwards),
 /// `obstruction` (nothing received below `elevation_deg`: fewer satellites, worse DOP, 2D or no
@@ -34,7 +25,6 @@
 /// drops whole messages; `overloaded_epochs()` counts the epochs).
 
 #include <cstdint>
-#include <deque>
 #include <optional>
 #include <string>
 #include <vector>
@@ -90,7 +80,7 @@ class Neo5mDevice final : public Device {
  public:
   Neo5mDevice(const Neo5mConfig& config, std::uint64_t seed);
   const std::string& name() const override { return config_.name; }
-  Time next_event_time() const override;
+  Time next_event_time() const override { return next_epoch_; }
   void OnEvent(const TruthSample& truth, DeviceOutput& out) override;
   void OnHostBytes(int port, Time t, std::string_view bytes, DeviceOutput& out) override;
   int baud(int port) const override;
@@ -98,29 +88,15 @@ class Neo5mDevice final : public Device {
   /// The fix of the last epoch (invalid ones included; the raw-fix baseline keeps valid ones).
   const GnssFix& last_fix() const { return last_epoch_.fix; }
   const NavEpoch& last_epoch() const { return last_epoch_; }
-  /// The time of the last navigation epoch computed (events also come at output times).
-  Time last_epoch_time() const { return last_epoch_time_; }
-  /// The time of the next navigation epoch.
-  Time next_epoch_time() const { return next_epoch_; }
   const ubx::ReceiverSettings& settings() const { return session_.current(); }
   const ReceiverProfile& profile() const { return profile_; }
   /// Epochs output under an `overload` fault.
   std::uint64_t overloaded_epochs() const { return overloaded_epochs_; }
 
  private:
-  /// An epoch computed, its messages not yet in the UART queue.
-  struct PendingOutput {
-    Time t_ready{};
-    NavEpoch epoch;
-    std::uint64_t count = 0;  ///< epoch_count_ of the epoch (message rates count epochs)
-    bool overload = false;    ///< an overload fault was active at the epoch
-  };
   Duration Period() const;
   Time NextGridEpoch(Time after) const;
-  void ComputeEpoch(const TruthSample& truth);
-  void EmitDue(Time t, DeviceOutput& out);
-  void EmitEpoch(const PendingOutput& p, DeviceOutput& out);
-  void EmitNmea(const PendingOutput& p, DeviceOutput& out);
+  void EmitEpoch(Time t_ready, DeviceOutput& out);
   void Push(DeviceOutput& out, Time t, std::string bytes, std::string name) const;
   void HandleUbx(const ubx::InputMessage& m, Time t, DeviceOutput& out);
   void HandleNmea(const ubx::InputMessage& m, Time t, DeviceOutput& out);
@@ -144,8 +120,7 @@ class Neo5mDevice final : public Device {
   bool had_fix_last_ = false;
   double clk_bias_ns_ = 0, clk_drift_nsps_ = 0;
   NavEpoch last_epoch_;
-  NavEpoch last_output_epoch_;  // the solution polls answer with
-  std::deque<PendingOutput> pending_;
+  bool overload_ = false;  // an overload fault is active at this epoch
   std::uint64_t overloaded_epochs_ = 0;
 };
 

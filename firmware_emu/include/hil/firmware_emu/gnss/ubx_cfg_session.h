@@ -82,8 +82,7 @@ class CfgReplies;  // the replies to one CFG message (ubx_cfg_session.cc)
 
 class UbxCfgSession {
  public:
-  /// @param max_rate_hz highest navigation rate CFG-RATE is acknowledged and run at (a shorter
-  ///        measRate is NAKed)
+  /// @param max_rate_hz highest navigation rate the receiver supports (CFG-RATE refuses more)
   UbxCfgSession(const ReceiverSettings& defaults, double max_rate_hz);
 
   /// Handles CFG message `id` arriving on port `port_id`; returns its replies in order.
