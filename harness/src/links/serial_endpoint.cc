@@ -209,22 +209,4 @@ std::string SerialEndpoint::PollHost(Time t_now, bool virtual_time) {
   return rx;
 }
 
-SerialEndpoint::HostChunk SerialEndpoint::PollHostPaced(Time t_now) {
-  HostChunk c;
-  c.bytes = port_->ReadAvailable();
-  if (c.bytes.empty()) return c;
-  c.t_first = std::max(t_now, host_line_free_);
-  c.byte_period = uart_.byte_period();
-  host_line_free_ = c.t_arrived(c.bytes.size() - 1);
-  CaptureRecord r;
-  r.dir = CaptureDir::kRx;
-  r.t_emu_ns = ToNs(c.t_first);
-  r.byte_period_ns = c.byte_period.count();
-  r.t_wall_ns = wall_stamps_ ? link::RealtimePacer::MonotonicNs() : 0;
-  r.name = "host";
-  r.bytes = c.bytes;
-  capture_.Write(r);
-  return c;
-}
-
 }  // namespace hil::harness

@@ -168,7 +168,7 @@ bool Scheduler::PaceTowards(Time t_event, DeviceOutput& out) {
 
 void Scheduler::PaceLockstep(Time t_event) {
   Time t = std::min(t_event, t_end_);
-  if (!arrivals_.empty()) t = std::min(t, arrivals_.front().t());
+  if (!arrivals_.empty()) t = std::min(t, arrivals_.front().t);
   if (!bus_arrivals_.empty()) t = std::min(t, bus_arrivals_.front().t);
   if (gate_) t = std::min(t, NextHostTurn());
   const std::int64_t due = lockstep_pace_->WallNsOf(t);
@@ -185,8 +185,9 @@ void Scheduler::PaceLockstep(Time t_event) {
 
 bool Scheduler::HostStep(Time t_event, SchedulerMonitor& monitor, DeviceOutput& out) {
   // host bytes arriving, then a host turn, due before (or at) this event come first
-  if (!arrivals_.empty() && arrivals_.front().t() <= std::min(t_event, t_end_)) {
-    DeliverHostBytes(std::min(t_event, t_end_), out);
+  if (!arrivals_.empty() && arrivals_.front().t <= std::min(t_event, t_end_)) {
+    DeliverHostBytes(arrivals_.front(), out);
+    arrivals_.pop_front();
     return true;
   }
   if (!bus_arrivals_.empty() && bus_arrivals_.front().t <= std::min(t_event, t_end_)) {
@@ -351,8 +352,8 @@ void Scheduler::HostTurn(Time t) {
     for (std::size_t p = 0; p < set_.endpoints[d].size(); ++p) {
       const pollfd& pf = host_fds_[k++];
       if (pf.fd >= 0 && pf.revents == 0) continue;  // nothing from the host on this port
-      SerialEndpoint::HostChunk rx = set_.endpoints[d][p]->PollHostPaced(t_rx);
-      if (!rx.bytes.empty()) QueueArrival({d, p, std::move(rx), 0});
+      std::string rx = set_.endpoints[d][p]->PollHost(t_rx, true);
+      if (!rx.empty()) arrivals_.push_back({t_rx, d, p, std::move(rx)});
     }
   }
   if (!set_.steering) return;  // nothing listens to the bus: open-loop runs read it as before
@@ -385,37 +386,20 @@ void Scheduler::DeliverBusFrame(Time t, const CanFrame& frame, DeviceOutput& out
   }
 }
 
-void Scheduler::QueueArrival(HostBytes h) {
-  const Time t = h.t();
-  const auto at = std::upper_bound(arrivals_.begin(), arrivals_.end(), t,
-                                   [](Time a, const HostBytes& b) { return a < b.t(); });
-  arrivals_.insert(at, std::move(h));
-}
-
-void Scheduler::DeliverHostBytes(Time t_limit, DeviceOutput& out) {
-  HostBytes h = std::move(arrivals_.front());
-  arrivals_.pop_front();
+void Scheduler::DeliverHostBytes(const HostBytes& h, DeviceOutput& out) {
   const int port = static_cast<int>(h.port);
-  Device& dev = *set_.devices[h.device];
+  set_.devices[h.device]->OnHostBytes(port, h.t, h.bytes, out);
   SerialEndpoint& ep = *set_.endpoints[h.device][h.port];
-  // byte by byte, each when its stop bit has arrived: a command is complete at its last byte
-  // (a 48-byte CFG-PRT takes 50 ms at 9600 Bd), and its answer counts from then
-  Time t_last = h.t();
-  for (; h.next < h.chunk.bytes.size() && h.t() <= t_limit; ++h.next) {
-    t_last = h.t();
-    dev.OnHostBytes(port, t_last, std::string_view(h.chunk.bytes).substr(h.next, 1), out);
-    ep.set_baud(dev.baud(port));
-  }
+  ep.set_baud(set_.devices[h.device]->baud(port));
   const bool answered = !out.serial.empty();
   Dispatch(h.device, out);
   if (!write_refused_ && !writes_.Pump(true)) write_refused_ = true;
   // the host's next turn: when the answer has left the UART (it is written at once)
   if (answered) {
     for (const auto& e : set_.endpoints[h.device]) {
-      if (e->last_queued_end() > t_last) answer_turns_.push_back(e->last_queued_end());
+      if (e->last_queued_end() > h.t) answer_turns_.push_back(e->last_queued_end());
     }
   }
-  if (h.next < h.chunk.bytes.size()) QueueArrival(std::move(h));
 }
 
 const std::vector<CanFrame>& Scheduler::PollBus() {

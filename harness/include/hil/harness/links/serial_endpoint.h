@@ -72,20 +72,6 @@ class SerialEndpoint {
   /// Reads host bytes (non-blocking), captures them with emulated time `t_now`, returns them.
   /// With `virtual_time` the capture gives no wall time (0, as for virtual mode's tx bytes).
   std::string PollHost(Time t_now, bool virtual_time = false);
-  /// What a host wrote, read in virtual time: its bytes cross the line to the device at the
-  /// port's baud, after what it sent before. The first starts at `t_first`; byte k has arrived
-  /// (its stop bit) at t_arrived(k), and the device sees it then.
-  struct HostChunk {
-    std::string bytes;
-    Time t_first{};
-    Duration byte_period{};
-    Time t_arrived(std::size_t k) const {
-      return t_first + byte_period * static_cast<std::int64_t>(k + 1);
-    }
-  };
-  /// Virtual mode: reads host bytes written by `t_now` (non-blocking) and times them on the line
-  /// (HostChunk); the capture's rx record gives their first byte's time and the byte period.
-  HostChunk PollHostPaced(Time t_now);
   void set_baud(int baud) { uart_.set_baud(baud); }
   /// Lockstep (a closed loop in real time or scaled, Scheduler::set_lockstep_pace): the capture's
   /// records carry the wall-clock time of their write or read, which virtual mode leaves 0.
@@ -121,7 +107,6 @@ class SerialEndpoint {
   CaptureWriter capture_;
   std::deque<std::pair<link::TimedChunk, std::string>> pending_;  // chunk, message name
   Time last_queued_end_{};
-  Time host_line_free_{};           // virtual mode: the host's last byte has arrived by then
   std::size_t pending_offset_ = 0;  // bytes of pending_.front() already written
   CaptureRecord current_;           // real time: capture line of the bytes of a chunk that left
   CaptureRecord current_drop_;      // real time: capture line of its bytes dropped unread

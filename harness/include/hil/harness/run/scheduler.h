@@ -178,22 +178,17 @@ class Scheduler {
   bool Actuator(std::size_t d) const;
   /// Virtual mode: queues the actuators' held bytes for writing (held_).
   void ReleaseHeld();
-  /// Bytes a host wrote, read at a host turn, as they cross the line at the port's baud: byte k
-  /// reaches the device at chunk.t_arrived(k); `next` bytes of them have.
+  /// Bytes a host wrote, read at a host turn, and when they reach their device.
   struct HostBytes {
+    Time t{};
     std::size_t device = 0, port = 0;
-    SerialEndpoint::HostChunk chunk;
-    std::size_t next = 0;
-    Time t() const { return chunk.t_arrived(next); }  ///< when the next byte arrives
+    std::string bytes;
   };
   /// Virtual mode: a host turn at `t` (every byte written, the host read and asleep); what it
   /// wrote is captured and queued in arrivals_.
   void HostTurn(Time t);
-  /// Queues what a host wrote in arrivals_, in the order of the arrival of their next byte.
-  void QueueArrival(HostBytes h);
-  /// Virtual mode: the bytes of arrivals_.front() that have arrived by `t_limit` reach their
-  /// device, each at its arrival time, which may answer; the rest is queued again.
-  void DeliverHostBytes(Time t_limit, DeviceOutput& out);
+  /// Virtual mode: host bytes reach their device, which may answer.
+  void DeliverHostBytes(const HostBytes& h, DeviceOutput& out);
   /// Closed loop on CAN (a steering ECU in the set): the frames others put on the bus since the
   /// last call reach every device (Device::OnBusFrame): in virtual mode queued at a host turn's
   /// time `t_rx` (as host bytes are), in real time delivered at once with their bus time (never
@@ -227,7 +222,7 @@ class Scheduler {
   std::function<void(const TruthSample&)> truth_tap_;
   std::vector<VehicleCommand> vehicle_commands_;
   std::vector<Time> answer_turns_;  // host turns at the ends of devices' answers
-  std::deque<HostBytes> arrivals_;  // read at turns, by next byte's time, not yet delivered
+  std::deque<HostBytes> arrivals_;  // read at turns, in time order, not yet delivered
   std::uint64_t skipped_control_turns_ = 0;
   /// Closed loop, virtual mode: the actuators' bytes queued on their links since the last host
   /// turn, written to the controller at the next one.
