@@ -1,5 +1,8 @@
 #pragma once
 // Test helper: runs a command line through /bin/sh and collects its exit code and output.
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <array>
 #include <cstdio>
 #include <cstdlib>
@@ -7,7 +10,9 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
+#include <sys/resource.h>
 #include <sys/wait.h>
 
 namespace hil::test {
@@ -65,6 +70,32 @@ inline std::string ReadFile(const std::string& path) {
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();
+}
+
+/// Starts `program args...` in `cwd` (empty: this folder) with stdout and stderr into `log` and,
+/// when given, a file size limit; returns its pid (the caller waits for it).
+inline pid_t SpawnLogged(const std::string& program, const std::vector<std::string>& args,
+                         const std::string& log, const std::string& cwd = "",
+                         rlim_t fsize_limit = RLIM_INFINITY) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    if (!cwd.empty() && chdir(cwd.c_str()) != 0) _exit(127);
+    const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    dup2(fd, STDOUT_FILENO);
+    dup2(fd, STDERR_FILENO);
+    if (fsize_limit != RLIM_INFINITY) {
+      rlimit r{fsize_limit, fsize_limit};
+      setrlimit(RLIMIT_FSIZE, &r);
+    }
+    std::vector<std::string> a{program};
+    a.insert(a.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for (auto& s : a) argv.push_back(s.data());
+    argv.push_back(nullptr);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  return pid;
 }
 
 }  // namespace hil::test

@@ -49,23 +49,7 @@ struct Child {
 Child StartHil(const std::vector<std::string>& args, const std::string& log,
                rlim_t fsize_limit = RLIM_INFINITY) {
   Child c;
-  c.pid = fork();
-  if (c.pid == 0) {
-    const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    dup2(fd, STDOUT_FILENO);
-    dup2(fd, STDERR_FILENO);
-    if (fsize_limit != RLIM_INFINITY) {
-      rlimit r{fsize_limit, fsize_limit};
-      setrlimit(RLIMIT_FSIZE, &r);
-    }
-    std::vector<std::string> a{Hil()};
-    a.insert(a.end(), args.begin(), args.end());
-    std::vector<char*> argv;
-    for (auto& s : a) argv.push_back(s.data());
-    argv.push_back(nullptr);
-    execv(argv[0], argv.data());
-    _exit(127);
-  }
+  c.pid = SpawnLogged(Hil(), args, log, "", fsize_limit);
   return c;
 }
 

@@ -42,21 +42,7 @@ std::string Scenario(double duration_s, const std::string& name = "safety") {
 // Starts hil with `args` in `cwd` (stdout+stderr into `log`); returns its pid.
 pid_t StartHil(const std::vector<std::string>& args, const std::string& log,
                const std::string& cwd = "") {
-  const pid_t pid = fork();
-  if (pid == 0) {
-    if (!cwd.empty() && chdir(cwd.c_str()) != 0) _exit(127);
-    const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    dup2(fd, STDOUT_FILENO);
-    dup2(fd, STDERR_FILENO);
-    std::vector<std::string> a{Hil()};
-    a.insert(a.end(), args.begin(), args.end());
-    std::vector<char*> argv;
-    for (auto& s : a) argv.push_back(s.data());
-    argv.push_back(nullptr);
-    execv(argv[0], argv.data());
-    _exit(127);
-  }
-  return pid;
+  return SpawnLogged(Hil(), args, log, cwd);
 }
 
 int WaitExit(pid_t pid, double timeout_s) {
