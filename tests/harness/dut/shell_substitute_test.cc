@@ -58,8 +58,8 @@ class SubstituteTest : public ::testing::Test {
 
 TEST_F(SubstituteTest, PlainValuesGoInAsTheyAre) {
   EXPECT_EQ(Substitute("{navd} --config {run_dir}/navd.conf",
-                       {{"navd", "/opt/hil/bin/navd"}, {"run_dir", "/work/runs/a-seed1"}}),
-            "/opt/hil/bin/navd --config /work/runs/a-seed1/navd.conf");
+                       {{"navd", "/opt/hil/bin/navd"}, {"run_dir", "/srv/runs/a-seed1"}}),
+            "/opt/hil/bin/navd --config /srv/runs/a-seed1/navd.conf");
   EXPECT_EQ(Substitute("sh -c 'cat {ttyGPS}'", {{"ttyGPS", "/r/ttyGPS"}}), "sh -c 'cat /r/ttyGPS'");
   EXPECT_EQ(Substitute("{unknown} {seed}", {{"seed", "7"}}), "{unknown} 7");
 }
