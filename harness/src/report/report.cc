@@ -390,6 +390,7 @@ void WriteReportJson(const RunReport& r, const std::string& path) {
   j["sim_time_s"] = r.sim_time_s;
   j["priority"] = {{"nice_requested", r.nice_requested}, {"nice", r.nice}};
   if (!r.nice_refused.empty()) j["priority"]["refused"] = r.nice_refused;
+  if (r.host_open_wait_s) j["host_open_wait_s"] = *r.host_open_wait_s;
   j["links"] = {{"gnss_bytes", r.gnss_bytes}, {"gnss_messages_dropped", r.gnss_messages_dropped}};
   if (r.can) j["can"] = CanBusJson(*r.can);
   if (r.tracking) {

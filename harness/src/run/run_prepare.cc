@@ -28,6 +28,7 @@ constexpr const char* kNavLink = "ttyNAV";  // pty the estimator writes NMEA int
 // which leaves the other half for a GNSS epoch's bytes to be made after its time of validity
 // (RTK NMEA at 115200 Bd: tens of ms; a NEO-5M's epoch at 9600 Bd: about 0.5 s).
 constexpr double kNavdMergeWindowS = 2.0;
+constexpr useconds_t kHostOpenPollUs = 2000;  // how often the start checks the host's opens
 
 // The links the estimator reads: those named in its command ({ttyGPS}) or, for navd, in navd.conf.
 std::set<std::string> HostLinks(const Scenario& s, const std::string& raw_command,
@@ -120,6 +121,34 @@ void StartEstimator(RunContext& ctx, const std::string& command) {
   // time for the program to open its devices (gpsd flushes a tty's input when it opens it)
   if (ctx.scenario.estimator.startup_s > 0)
     usleep(static_cast<useconds_t>(ctx.scenario.estimator.startup_s * 1e6));
+}
+
+// Real time and scaled: a UART sends whether anyone listens, so the bytes of a link the host has
+// not opened yet are lost (SerialEndpoint::WriteNextByte). The run's clock starts once the host
+// has opened every serial link it reads, so a slow start (a cold cache, a loaded machine, 20x
+// speed) loses no epoch. Gives up after the silence timeout, or when the estimator ended; what
+// then goes unread is captured as drops and judged as such.
+void AwaitHostLinksOpen(RunContext& ctx) {
+  const std::int64_t start = NowNs();
+  const std::int64_t limit_ns = ctx.silence_ns;
+  for (;;) {
+    bool all_open = true;
+    for (const auto& ports : ctx.set.endpoints) {
+      for (const auto& ep : ports) {
+        if (ctx.HostReads(*ep) && !ep->HostAttached()) all_open = false;
+      }
+    }
+    const double waited_s = static_cast<double>(NowNs() - start) * 1e-9;
+    ctx.report.host_open_wait_s = waited_s;
+    if (all_open || !ctx.EstimatorRunning() || ctx.Interrupted()) return;
+    if (NowNs() - start > limit_ns) {
+      ctx.report.problems.push_back("the estimator had not opened every link it reads " +
+                                    SecondsText(waited_s) +
+                                    " s after it started: the run began without it");
+      return;
+    }
+    usleep(kHostOpenPollUs);
+  }
 }
 
 // Closed loop: the FIFO navd writes its NMEA solution into, held open (read and write) by the run
@@ -216,6 +245,7 @@ void Prepare(RunContext& ctx) {
   MakeNavFifo(ctx);
   StartEstimator(ctx, command);
   StartController(ctx);
+  if (opt.mode == RunMode::kRealtime && ctx.estimator) AwaitHostLinksOpen(ctx);
   ctx.estimator_start_ns = NowNs();
   if (opt.mode == RunMode::kRealtime) {
     const bool fifo = opt.nice < 0;  // a priority raise asked for: the pacing takes FIFO too

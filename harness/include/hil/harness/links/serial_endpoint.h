@@ -77,6 +77,9 @@ class SerialEndpoint {
   /// records carry the wall-clock time of their write or read, which virtual mode leaves 0.
   void set_wall_stamps(bool on) { wall_stamps_ = on; }
   std::size_t PendingToHost() const { return port_->PendingToHost(); }
+  /// The host has the port open (a pty: it opened the link and has not closed it since; a real
+  /// device cannot tell and says true).
+  bool HostAttached() { return port_->HostAttached(); }
   const link::UartTxQueue& uart() const { return uart_; }
   const std::string& link_name() const { return link_name_; }
   const std::string& link_path() const { return port_->path(); }

@@ -97,6 +97,9 @@ struct RunReport {
   double wall_time_s = 0, sim_time_s = 0, speed = 1.0;
   int nice_requested = 0, nice = 0;  ///< the run's processes' nice value (run_priority.h)
   std::string nice_refused;          ///< why the nice value asked for was not granted
+  /// Real time and scaled: wall seconds from the estimator's start until it had opened every
+  /// serial link it reads (the run's clock starts then; run_prepare.cc AwaitHostLinksOpen).
+  std::optional<double> host_open_wait_s;
   std::uint64_t gnss_bytes = 0, gnss_messages_dropped = 0;
   std::uint64_t fault_messages_dropped = 0, fault_bytes_corrupted = 0;
   std::vector<std::pair<std::string, std::string>>
