@@ -224,8 +224,9 @@ TEST(CanPacingVcanTest, ReplayedCaptureMatchesTheOriginalFrameForFrame) {
   // the timing error itself is a figure (benchmarks and reports, not a timed test): a TCG VM
   // beside busy neighbours gave p99 from 0.3 to over 20 ms; a replay that waited too long shows as
   // a span far beyond the recording's
-  const double span_s = static_cast<double>(rx.frames.back().t_kernel_unix_ns -
-                                            rx.frames.front().t_kernel_unix_ns) * 1e-9;
+  const double span_s =
+      static_cast<double>(rx.frames.back().t_kernel_unix_ns - rx.frames.front().t_kernel_unix_ns) *
+      1e-9;
   const double want_span_s = ToSeconds(schedule.back().t - schedule.front().t);
   EXPECT_LT(span_s, want_span_s * 3 + 2.0) << "the replay stalled";
 }
