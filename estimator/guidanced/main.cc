@@ -66,22 +66,41 @@ struct Options {
   int guidance_address = 0x80, ecu_address = 0x1C;
 };
 
+constexpr const char* kUsage =
+    "usage: guidanced --path FILE --origin LAT,LON,H --nav NMEA_IN "
+    "(--base TTY | --isobus-can IFACE | --isobus-slcan TTY) [--controller pure_pursuit|fuzzy] "
+    "[--speed M/S] [--lookahead M] [--fuzzy-k-alpha-deg DEG] [--fuzzy-heading-preview M] "
+    "[--fuzzy-n-max N] [--fuzzy-steer-rate-deg-s DEG/S] "
+    "[--track M] [--wheel-radius M] [--counts-per-rev N] [--pid-rate HZ] "
+    "[--max-wheel-speed RAD/S] [--wheelbase M] [--max-steer-deg DEG] "
+    "[--guidance-address N] [--ecu-address N] [--odometry OUT] "
+    "[--rangefinders RF,RR,LF,LR [--rangefinder-model tf_luna|tfmini_s] "
+    "[--rangefinder-baud B] [--rangefinder-rate HZ] [--rangefinder-start-tod S] "
+    "[--correction on|off] [--correction-taper M] [--correction-gain 1/S] "
+    "[--correction-max-rate RAD/S] [--p-dist M] [--d-set M]]\n";
+
 [[noreturn]] void Usage(const char* why) {
-  std::fprintf(
-      stderr,
-      "guidanced: %s\nusage: guidanced --path FILE --origin LAT,LON,H --nav NMEA_IN "
-      "(--base TTY | --isobus-can IFACE | --isobus-slcan TTY) [--controller pure_pursuit|fuzzy] "
-      "[--speed M/S] [--lookahead M] [--fuzzy-k-alpha-deg DEG] [--fuzzy-heading-preview M] "
-      "[--fuzzy-n-max N] [--fuzzy-steer-rate-deg-s DEG/S] "
-      "[--track M] [--wheel-radius M] [--counts-per-rev N] [--pid-rate HZ] "
-      "[--max-wheel-speed RAD/S] [--wheelbase M] [--max-steer-deg DEG] "
-      "[--guidance-address N] [--ecu-address N] [--odometry OUT] "
-      "[--rangefinders RF,RR,LF,LR [--rangefinder-model tf_luna|tfmini_s] "
-      "[--rangefinder-baud B] [--rangefinder-rate HZ] [--rangefinder-start-tod S] "
-      "[--correction on|off] [--correction-taper M] [--correction-gain 1/S] "
-      "[--correction-max-rate RAD/S] [--p-dist M] [--d-set M]]\n",
-      why);
+  std::fprintf(stderr, "guidanced: %s\n%s", why, kUsage);
   std::exit(2);
+}
+
+// --help: what it is, the usage line and where the interface is documented (also the source of
+// its manual page, help2man).
+[[noreturn]] void Help() {
+  std::printf(
+      "Usage:%s\n"
+      "The guidance controller of a hil closed-loop run. Reads the navigation solution as\n"
+      "NMEA 0183 (RMC, GGA, HDT once per solution) from NMEA_IN and the planned path (a\n"
+      "hil-path 1 file), runs pure pursuit or paper 003's fuzzy controller at each solution,\n"
+      "and commands a differential-drive base over the ROSArduinoBridge serial protocol\n"
+      "(--base) or a steering ECU over ISO 11783-7 (--isobus-can, --isobus-slcan). One\n"
+      "command per solution, no timers.\n"
+      "hil run starts it as a closed-loop scenario's controller ({guidanced}); the interface and\n"
+      "every option: estimator/guidanced/README.md in the hil sources.\n\n"
+      "Exit status: 0 when the solution input ends or on SIGTERM/SIGINT, 1 when a link cannot\n"
+      "be opened or fails, 2 on bad arguments or a bad path file.\n",
+      kUsage + 6);  // kUsage without its "usage:", which help2man's "Usage:" replaces
+  std::exit(0);
 }
 
 double Number(const char* key, const char* v) {
@@ -180,6 +199,7 @@ Options Parse(int argc, char** argv) {
   Options o;
   for (int i = 1; i < argc; ++i) {
     const std::string k = argv[i];
+    if (k == "--help" || k == "-h") Help();
     if (i + 1 >= argc) Usage(("missing the value of " + k).c_str());
     const char* v = argv[++i];
     if (k == "--path") {

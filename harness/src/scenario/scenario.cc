@@ -194,13 +194,14 @@ std::vector<std::string> ScenarioLibraryDirs() {
       if (!d.empty()) dirs.push_back(d);
     }
   }
-  dirs.emplace_back(HIL_SCENARIO_LIB_DIR);
-  // an installed hil (cmake --install, the Debian package): PREFIX/share/hil/scenarios/lib
+  // an installed hil (cmake --install, the Debian package): PREFIX/share/hil/scenarios/lib, ahead
+  // of the build's checkout (an installed hil reads its own pieces, whatever checkout is left)
   std::error_code ec;
   const std::filesystem::path installed =
       std::filesystem::read_symlink("/proc/self/exe", ec).parent_path().parent_path() /
       "share/hil/scenarios/lib";
   if (!ec && std::filesystem::is_directory(installed, ec)) dirs.push_back(installed.string());
+  dirs.emplace_back(HIL_SCENARIO_LIB_DIR);
   return dirs;
 }
 
