@@ -11,6 +11,7 @@ namespace {
 
 struct ValidateArgs {
   CLI::App* cmd = nullptr;
+  CLI::Option* baud_opt = nullptr;
   std::string protocol, source, report;
   int baud = 9600;
   double listen_s = 10.0;
@@ -35,35 +36,37 @@ void Declare(CLI::App& app, ValidateArgs& a) {
                    "serial device "
                    "(e.g. /dev/ttyUSB0, RUN_DIR/ttyGPS)")
       ->required();
-  a.cmd
-      ->add_option("--baud", a.baud,
-                   "line rate of a serial device, and the neo5m per-epoch byte budget")
-      ->check(CLI::Range(300, 921600));
+  a.baud_opt = a.cmd
+                   ->add_option("--baud", a.baud,
+                                "line rate of a serial device or a raw log: the neo5m per-epoch "
+                                "byte budget (a capture's own rate, from its header, is used; "
+                                "another --baud is an error)")
+                   ->check(CLI::Range(300, 921600));
   a.cmd->add_option("--listen", a.listen_s, "seconds to listen to a serial device or CAN interface")
       ->check(CLI::Range(0.1, 86400.0));
   a.cmd->add_option("--report", a.report, "write the conformance report as JSON to this file");
   a.cmd->add_flag("--quiet", a.quiet, "print only the verdict line");
 }
 
+hil::harness::ValidationReport Validate(const ValidateArgs& a) {
+  namespace h = hil::harness;
+  if (a.protocol == "can" && h::IsNetworkInterface(a.source))
+    return h::ValidateCanInterface(a.source, a.listen_s);
+  const h::ByteStream s = h::ReadByteSource(a.source, a.listen_s, a.baud);
+  if (a.protocol == "can") return h::ValidateCanLog(s.bytes);
+  // a capture is judged at the rate it records (its timing checks: line_rate, line_budget)
+  const int baud = h::ValidationBaud(s, a.baud, a.baud_opt->count() > 0);
+  if (a.protocol == "mcu") return h::ValidateMcuStream(s);
+  const h::ValidateProtocol p = a.protocol == "ubx"    ? h::ValidateProtocol::kUbx
+                                : a.protocol == "nmea" ? h::ValidateProtocol::kNmea
+                                                       : h::ValidateProtocol::kNeo5m;
+  return h::ValidateStream(p, s, baud);
+}
+
 int Execute(const ValidateArgs& a) {
-  using hil::harness::ValidateProtocol;
   hil::harness::ValidationReport rep;
   try {
-    if (a.protocol == "can" && hil::harness::IsNetworkInterface(a.source)) {
-      rep = hil::harness::ValidateCanInterface(a.source, a.listen_s);
-    } else if (a.protocol == "can") {
-      const hil::harness::ByteStream s = hil::harness::ReadByteSource(a.source, a.listen_s, a.baud);
-      rep = hil::harness::ValidateCanLog(s.bytes);
-    } else if (a.protocol == "mcu") {
-      rep = hil::harness::ValidateMcuStream(
-          hil::harness::ReadByteSource(a.source, a.listen_s, a.baud));
-    } else {
-      const ValidateProtocol p = a.protocol == "ubx"    ? ValidateProtocol::kUbx
-                                 : a.protocol == "nmea" ? ValidateProtocol::kNmea
-                                                        : ValidateProtocol::kNeo5m;
-      rep = hil::harness::ValidateStream(
-          p, hil::harness::ReadByteSource(a.source, a.listen_s, a.baud), a.baud);
-    }
+    rep = Validate(a);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "hil: %s\n", e.what());
     return kExitBadInput;

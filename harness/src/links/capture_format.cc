@@ -181,6 +181,37 @@ void CaptureWriter::Flush() {
 
 CaptureWriter::~CaptureWriter() { Flush(); }
 
+bool ParseCaptureHeaderLine(std::string_view line, CaptureHeader& hdr) {
+  if (line.empty() || line.front() != '#') return false;
+  std::istringstream h{std::string(line.substr(1))};
+  std::string word;
+  h >> word;
+  if (word == "hil") {
+    std::string cap, v;
+    h >> cap >> v;  // "capture v2" or "capture v1:" followed by "link NAME, baud N"
+    if (cap != "capture" || v.size() < 2 || v[0] != 'v') return false;
+    hdr.version = v[1] - '0';
+    if (hdr.version == 1) {
+      std::string link_word, name, baud_word;
+      h >> link_word >> name >> baud_word >> hdr.baud;
+      if (!name.empty() && name.back() == ',') name.pop_back();
+      hdr.link = name;
+      hdr.kind = "serial";
+    }
+  } else if (word == "link") {
+    h >> hdr.link >> hdr.kind;
+    if (hdr.kind == "can")
+      h >> hdr.iface;
+    else
+      h >> hdr.baud;
+  } else if (word == "start_unix_ns") {
+    h >> hdr.start_unix_ns;
+  } else {
+    return false;
+  }
+  return true;
+}
+
 Capture ReadCapture(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error("cannot read the capture " + path);
@@ -190,29 +221,7 @@ Capture ReadCapture(const std::string& path) {
   while (std::getline(in, line)) {
     if (line.empty()) continue;
     if (line.front() == '#') {
-      std::istringstream h(line.substr(1));
-      std::string word;
-      h >> word;
-      if (word == "hil") {
-        std::string cap, v;
-        h >> cap >> v;  // "capture v2" or "capture v1:" followed by "link NAME, baud N"
-        if (v.size() >= 2 && v[0] == 'v') c.header.version = v[1] - '0';
-        if (c.header.version == 1) {
-          std::string link_word, name, baud_word;
-          h >> link_word >> name >> baud_word >> c.header.baud;
-          if (!name.empty() && name.back() == ',') name.pop_back();
-          c.header.link = name;
-          c.header.kind = "serial";
-        }
-      } else if (word == "link") {
-        h >> c.header.link >> c.header.kind;
-        if (c.header.kind == "can")
-          h >> c.header.iface;
-        else
-          h >> c.header.baud;
-      } else if (word == "start_unix_ns") {
-        h >> c.header.start_unix_ns;
-      }
+      ParseCaptureHeaderLine(line, c.header);
       continue;
     }
     if (auto r = ParseCaptureLine(line))

@@ -196,6 +196,7 @@ ValidationReport ValidateMcuStream(const ByteStream& s) {
   }
   flush(pos < b.size() ? pos : b.size());
   CheckRates(st, rep);
+  CheckLineRate(s, rep);
   rep.epochs = rep.messages.count("TIME_PULSE") ? rep.messages["TIME_PULSE"].count : 0;
   if (rep.frames == 0) rep.findings.push_back({true, "empty", "no valid frame in the stream", -1});
   return rep;

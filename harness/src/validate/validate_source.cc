@@ -20,18 +20,19 @@
 namespace hil::harness {
 namespace {
 
-// The device's bytes of a hil capture (any version, see capture_format.h), with emulated times.
+// The device's bytes of a hil capture (any version, see capture_format.h), with emulated times
+// and the line rate of its header.
 ByteStream ByteStreamOfCapture(const std::string& text, const std::string& source) {
   ByteStream s;
   std::istringstream in(text);
   std::string line;
   std::size_t line_no = 0;
-  std::string header;
+  CaptureHeader header;
   while (std::getline(in, line)) {
     ++line_no;
     if (line.empty()) continue;
     if (line[0] == '#') {
-      if (header.empty()) header = line;
+      ParseCaptureHeaderLine(line, header);
       continue;
     }
     const auto rec = ParseCaptureLine(line);
@@ -44,8 +45,11 @@ ByteStream ByteStreamOfCapture(const std::string& text, const std::string& sourc
       s.t_ns.push_back(ToNs(rec->t_byte(i)));
     }
   }
-  s.description =
-      "hil capture (" + header.substr(std::min<std::size_t>(header.size(), 2)) + "), device bytes";
+  if (header.kind == "serial") s.line_baud = header.baud;
+  s.description = "hil capture v" + std::to_string(header.version) + " (link " + header.link +
+                  ", " + header.kind +
+                  (header.kind == "serial" ? ", " + std::to_string(header.baud) + " baud" : "") +
+                  "), device bytes";
   return s;
 }
 

@@ -672,6 +672,7 @@ ValidationReport ValidateStream(ValidateProtocol protocol, const ByteStream& str
   const bool neo5m = protocol == ValidateProtocol::kNeo5m;
   if (want_nmea) CheckNmea(fr, neo5m, neo5m ? baud : 0, rep);
   if (want_ubx) CheckUbx(fr, neo5m, rep);
+  CheckLineRate(stream, rep);
   if (rep.frames == 0) rep.findings.push_back({true, "empty", "no valid frame in the stream", -1});
   return rep;
 }

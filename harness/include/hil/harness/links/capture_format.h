@@ -98,6 +98,11 @@ class CaptureWriter {
   std::string path_;
 };
 
+/// Reads one header comment line (`# hil capture v2`, `# link ttyGPS serial 9600`,
+/// `# start_unix_ns …`, or v1's `# hil capture v1: link NAME, baud N`) into `h`; other lines leave
+/// it as it was. True when the line was a header line.
+bool ParseCaptureHeaderLine(std::string_view line, CaptureHeader& h);
+
 /// Reads a capture (v1 or v2). @throws std::runtime_error naming the path when unreadable.
 Capture ReadCapture(const std::string& path);
 
