@@ -1,26 +1,33 @@
 // The harness itself under trouble, through the real hil binary: Ctrl-C (SIGINT) and SIGTERM to
 // hil, the estimator killed mid-run, the port closed by the peer, an output folder that fills up
-// (RLIMIT_FSIZE: the tests run as root, so permissions cannot make a folder unwritable) and one
-// that cannot be created. Each must give a clear message, stop every process of the estimator's
+// (RLIMIT_FSIZE: the tests run as root, so permissions cannot make a folder unwritable; and a
+// real full disk, a 2 MB tmpfs) and one that cannot be created, and the descriptors the estimator
+// inherits. Each must give a clear message, stop every process of the estimator's
 // process group (no orphans), and leave report.json marked "complete": false with what was captured
 // so far.
 #include <fcntl.h>
+#include <sched.h>
 #include <signal.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <filesystem>
+#include <set>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <sys/mount.h>
 #include <sys/resource.h>
+#include <sys/statvfs.h>
 #include <sys/wait.h>
 
 #include "hil/harness/dut/process_group.h"
+#include "hil/harness/links/capture_format.h"
 
 #include "cli_runner.h"
 
@@ -93,6 +100,29 @@ void ExpectNoOrphans(const nlohmann::json& report) {
                             << " are still running, e.g. " << live.front();
 }
 
+// Every capture in `folder` ends on a whole record: each line is a comment or a record that parses,
+// and the file ends with a newline.
+void ExpectWholeRecords(const std::string& folder) {
+  for (const auto& e : fs::directory_iterator(folder)) {
+    const std::string text = ReadFile(e.path().string());
+    ASSERT_FALSE(text.empty()) << e.path();
+    EXPECT_EQ(text.back(), '\n') << e.path() << " ends mid-record";
+    const harness::Capture cap = harness::ReadCapture(e.path().string());
+    EXPECT_EQ(cap.unreadable_lines, 0u) << e.path() << " holds a cut record";
+  }
+}
+
+// The targets of the descriptors of process `pid` (/proc/PID/fd).
+std::set<std::string> FdTargets(const std::string& pid) {
+  std::set<std::string> t;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator("/proc/" + pid + "/fd", ec)) {
+    const fs::path target = fs::read_symlink(e.path(), ec);
+    if (!ec) t.insert(target.string());
+  }
+  return t;
+}
+
 nlohmann::json Report(const std::string& run_dir) {
   const std::string text = ReadFile(run_dir + "/report.json");
   EXPECT_FALSE(text.empty()) << "no report.json in " << run_dir;
@@ -119,7 +149,7 @@ TEST(HilRobustnessE2eTest, SigintAndSigtermStopTheRunAndLeaveAnIncompleteReport)
     kill(c.pid, sig);
     const int code = WaitExit(c, 30);
     const std::string log = ReadFile(dir / "log");
-    EXPECT_EQ(code, 1) << log;
+    EXPECT_EQ(code, 128 + sig) << log;  // not 1, a failed criterion's code
     const std::string name = sig == SIGINT ? "SIGINT" : "SIGTERM";
     EXPECT_NE(log.find("interrupted by " + name), std::string::npos) << log;
     const nlohmann::json r = Report(run);
@@ -127,6 +157,11 @@ TEST(HilRobustnessE2eTest, SigintAndSigtermStopTheRunAndLeaveAnIncompleteReport)
     EXPECT_FALSE(r["pass"].get<bool>());
     EXPECT_NE(r["incomplete_reason"].get<std::string>().find("interrupted by " + name),
               std::string::npos);
+    EXPECT_EQ(r.value("interrupted_by", ""), name);
+    // the emulated time simulated, not the scenario's 120 s
+    const double sim_s = r["sim_time_s"].get<double>();
+    EXPECT_GT(sim_s, 1.0);
+    EXPECT_LT(sim_s, 119.0);
     ExpectNoOrphans(r);
     // everything captured so far is on disk: some seconds of receiver bytes and navd solutions
     EXPECT_GT(fs::file_size(run + "/captures/ttyGPS.cap"), 2000u);
@@ -192,13 +227,99 @@ TEST(HilRobustnessE2eTest, AFullOutputFolderStopsTheRunWithTheFileNamed) {
                      dir / "log", 64 * 1024);
   const int code = WaitExit(c, 60);
   const std::string log = ReadFile(dir / "log");
-  EXPECT_EQ(code, 1) << log;
+  EXPECT_EQ(code, 4) << log;  // a write failure: neither bad input (2) nor a failed criterion (1)
   EXPECT_NE(log.find("cannot write " + run + "/captures/"), std::string::npos) << log;
   const nlohmann::json r = Report(run);
   EXPECT_FALSE(r["complete"].get<bool>());
   EXPECT_NE(r["incomplete_reason"].get<std::string>().find("file size limit"), std::string::npos);
+  EXPECT_NE(r.value("write_failure", "").find(run + "/captures/"), std::string::npos) << r;
   ExpectNoOrphans(r);
   EXPECT_GT(fs::file_size(run + "/captures/ttyIMU.cap"), 60u * 1024u);
+  ExpectWholeRecords(run + "/captures");
+}
+
+// Issue 40, disk full: hil into a 2 MB tmpfs (a mount namespace of this test's own, so nothing
+// outside sees it). A first run fits and passes; the second, into the same folder with the tmpfs
+// nearly full, stops with exit 4 (a write failure, not 2, bad input), its captures end on whole
+// records (or a `# cut` line), and report.json and junit.xml are never left half-written: each is
+// either the first run's, byte for byte, or a whole new one naming the failure.
+TEST(HilRobustnessE2eTest, ADiskFullTmpfsKeepsWholeReportsAndCapturesAndExitsFour) {
+  TempDir dir("e2e_tmpfs");
+  const std::string mnt = dir / "mnt";
+  fs::create_directories(mnt);
+  if (unshare(CLONE_NEWNS) != 0 || mount("none", "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0 ||
+      mount("tmpfs", mnt.c_str(), "tmpfs", 0, "size=2m") != 0)
+    GTEST_SKIP() << "no tmpfs in a mount namespace here (" << std::strerror(errno)
+                 << "): AFullOutputFolderStopsTheRunWithTheFileNamed covers a full file";
+  struct Unmount {
+    std::string path;
+    ~Unmount() { umount2(path.c_str(), MNT_DETACH); }
+  } unmount{mnt};
+  WriteFile(dir / "short.yaml", Scenario(10));
+  WriteFile(dir / "long.yaml", Scenario(600));
+  const std::string run = mnt + "/run";
+  const CommandResult good = RunCommand(Hil() + " run " + dir / "short.yaml" + " --out " + run);
+  ASSERT_EQ(good.exit_code, 0) << good.out;
+  const std::string report = ReadFile(run + "/report.json");
+  const std::string junit = ReadFile(run + "/junit.xml");
+  // leave 96 kB: the long run's receiver capture (about 1.2 kB per emulated second) fills it
+  struct statvfs fsinfo {};
+  ASSERT_EQ(statvfs(mnt.c_str(), &fsinfo), 0);
+  const std::uint64_t free_bytes = fsinfo.f_bavail * fsinfo.f_frsize;
+  ASSERT_GT(free_bytes, 96u * 1024u);
+  WriteFile(mnt + "/filler", std::string(free_bytes - 96 * 1024, 'x'));
+  const CommandResult full = RunCommand(Hil() + " run " + dir / "long.yaml" + " --out " + run);
+  EXPECT_EQ(full.exit_code, 4) << full.out;
+  EXPECT_NE(full.out.find("cannot write " + run), std::string::npos) << full.out;
+  const std::string report2 = ReadFile(run + "/report.json");
+  if (report2 != report) {
+    const nlohmann::json r = nlohmann::json::parse(report2, nullptr, false);
+    ASSERT_FALSE(r.is_discarded()) << "report.json is half-written:\n" << report2;
+    EXPECT_FALSE(r.value("write_failure", "").empty()) << r;
+    EXPECT_FALSE(r["complete"].get<bool>());
+  }
+  const std::string junit2 = ReadFile(run + "/junit.xml");
+  if (junit2 != junit) {
+    EXPECT_NE(junit2.find("</testsuites>\n"), std::string::npos) << junit2;
+  }
+  ExpectWholeRecords(run + "/captures");
+  for (const auto& e : fs::recursive_directory_iterator(run))
+    EXPECT_NE(e.path().extension(), ".tmp") << e.path() << " left behind";
+}
+
+// Issue 40: navd inherited hil's capture files (and every other descriptor hil had open). The
+// estimator's /proc/PID/fd may hold only its stdin, stdout and stderr and what it opened itself:
+// its serial links (ptys) and its own sockets and pipes, none of them one of hil's.
+TEST(HilRobustnessE2eTest, TheEstimatorInheritsNoDescriptorOfHil) {
+  TempDir dir("e2e_fds");
+  WriteFile(dir / "s.yaml", Scenario(120));
+  const std::string run = dir / "run";
+  Child c = StartHil(
+      {"run", dir / "s.yaml", "--out", run, "--mode", "scaled", "--speed", "10", "--estimator",
+       "sh -c 'echo $$ > {run_dir}/est.pid; exec {navd} --config "
+       "{run_dir}/navd.conf'"},
+      dir / "log");
+  ASSERT_TRUE(WaitForFile(run + "/est.pid", 20));
+  const std::string pid = std::to_string(std::stoi(ReadFile(run + "/est.pid")));
+  // navd has replaced the shell and opened its link once it has written a solution
+  ASSERT_TRUE(WaitForFile(run + "/estimate.jsonl", 20)) << ReadFile(dir / "log");
+  const std::set<std::string> hil_files = FdTargets(std::to_string(c.pid));
+  std::vector<std::string> inherited;
+  for (const auto& e : fs::directory_iterator("/proc/" + pid + "/fd")) {
+    if (std::stoi(e.path().filename().string()) <= 2) continue;
+    std::error_code ec;
+    const std::string target = fs::read_symlink(e.path(), ec).string();
+    if (ec) continue;
+    const bool own_link = target.rfind("/dev/pts/", 0) == 0;
+    const bool own_channel = (target.rfind("socket:[", 0) == 0 || target.rfind("pipe:[", 0) == 0) &&
+                             hil_files.count(target) == 0;
+    if (!own_link && !own_channel)
+      inherited.push_back(e.path().filename().string() + " -> " + target);
+  }
+  kill(c.pid, SIGTERM);
+  WaitExit(c, 30);
+  EXPECT_TRUE(inherited.empty()) << "navd holds descriptors it did not open: "
+                                 << ::testing::PrintToString(inherited);
 }
 
 TEST(HilRobustnessE2eTest, AnOutputFolderThatCannotBeCreatedIsAClearError) {

@@ -8,6 +8,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <string>
@@ -20,6 +21,7 @@
 #include <sys/wait.h>
 
 #include "hil/harness/dut/process_group.h"
+#include "hil/harness/links/capture_format.h"
 
 #include "cli_runner.h"
 
@@ -145,8 +147,8 @@ TEST(HilRunSafetyE2eTest, ASecondRunIntoABusyFolderIsRefusedNamingTheFirst) {
             std::string::npos)
       << second.out;
   kill(first, SIGTERM);
-  EXPECT_EQ(WaitExit(first, 30), 1);
-  EXPECT_FALSE(Report(run).empty());  // the first run's report, not disturbed
+  EXPECT_EQ(WaitExit(first, 30), 128 + SIGTERM);  // interrupted, README exit codes
+  EXPECT_FALSE(Report(run).empty());              // the first run's report, not disturbed
 }
 
 // Issue 40.3: two seeds of one scenario shared runs/<name>; a rerun overwrote the last run.
@@ -294,6 +296,43 @@ TEST_F(Injection, ThroughThePathFileOfAClosedLoop) {
       << rep["closed_loop"];
   EXPECT_GT(rep["closed_loop"].value("motor_commands", 0), 10)
       << ReadFile(dir / "run/controller.log");
+}
+
+// Issue 40: an interrupted closed loop claimed the whole duration simulated and scored the path
+// tracking past the stop (the truth's replay of commands never given). It exits 130, reports the
+// emulated time it reached, and scores at most the truth samples (10 Hz) up to there.
+TEST(HilRunSafetyE2eTest, AnInterruptedClosedLoopScoresNothingPastTheStop) {
+  TempDir dir("e2e_interrupt_loop");
+  const std::string scenario =
+      SourceDir() + "/vectors/scenarios/closed_loop/diff_drive_serial.yaml";
+  const std::string run = dir / "run";
+  const pid_t hil =
+      StartHil({"run", scenario, "--no-html", "--mode", "scaled", "--speed", "10", "--set",
+                "duration_s=400", "--set", "evaluation.from_s=0", "--out", run},
+               dir / "log");
+  // stopped once the loop runs: the base has answered some control ticks
+  ASSERT_TRUE(WaitFor([&] { return NonEmpty(run + "/estimate.jsonl"); }, 30))
+      << ReadFile(dir / "log");
+  std::this_thread::sleep_for(std::chrono::seconds(2));
+  kill(hil, SIGINT);
+  const int code = WaitExit(hil, 60);
+  EXPECT_EQ(code, 130) << ReadFile(dir / "log");
+  const nlohmann::json r = Report(run);
+  const double sim_s = r.value("sim_time_s", 0.0);
+  EXPECT_GT(sim_s, 0.0);
+  EXPECT_LT(sim_s, 399.0) << "the report claims the whole duration simulated";
+  ASSERT_TRUE(r.contains("tracking")) << r;
+  // the emulated time the run reached, from what it sent: the captures' last records
+  double reached_s = 0;
+  for (const auto& e : fs::directory_iterator(run + "/captures")) {
+    for (const harness::CaptureRecord& rec : harness::ReadCapture(e.path().string()).records)
+      reached_s = std::max(reached_s, static_cast<double>(rec.t_emu_ns) * 1e-9);
+  }
+  EXPECT_LE(sim_s, reached_s + 1.0);
+  const int samples = r["tracking"].value("samples", -1);
+  EXPECT_GE(samples, 0) << r["tracking"];
+  EXPECT_LE(samples, static_cast<int>(reached_s * 10) + 11)
+      << "tracking scored past the stop at t = " << reached_s << " s";
 }
 
 // Issue 40.5: solutions dated ten years ahead, or at the largest time stamp, were dropped without

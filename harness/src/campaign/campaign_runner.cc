@@ -16,6 +16,7 @@
 #include <sys/wait.h>
 
 #include "hil/firmware_emu/link/realtime_pacer.h"
+#include "hil/harness/dut/shell_spawn.h"
 
 namespace hil::harness {
 namespace {
@@ -51,11 +52,12 @@ pid_t Start(std::vector<std::string> args, const std::string& log) {
     // dies, however; the calling thread is the campaign's main thread
     prctl(PR_SET_PDEATHSIG, SIGTERM);
     if (getppid() != parent) _exit(127);
-    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     if (fd >= 0) {
       dup2(fd, STDOUT_FILENO);
       dup2(fd, STDERR_FILENO);
     }
+    CloseOnExecFrom(STDERR_FILENO + 1);  // the run inherits none of the campaign's files
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);

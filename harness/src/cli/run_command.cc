@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "hil/harness/cli/commands.h"
+#include "hil/harness/report/output_file.h"
 #include "hil/harness/run/run.h"
 
 namespace hil::cli {
@@ -69,6 +70,18 @@ void PrintSummary(const hil::harness::RunReport& r, const std::string& dir) {
   }
   for (const auto& p : r.problems) std::printf("  [FAIL] %s\n", p.c_str());
   std::printf("%s  report: %s/report.html\n", r.pass() ? "PASS" : "FAIL", dir.c_str());
+}
+
+// A run folder not all written, then an interrupted run, come before the verdict: neither is a
+// run that failed its criteria.
+int RunExitCode(const hil::harness::RunReport& r) {
+  if (!r.write_failure.empty()) {
+    std::fprintf(stderr, "hil: %s (the run's outputs are not all written)\n",
+                 r.write_failure.c_str());
+    return kExitWriteFailure;
+  }
+  if (r.interrupt_signal != 0) return kExitInterruptedBase + r.interrupt_signal;
+  return r.pass() ? kExitPass : kExitFail;
 }
 
 struct RunArgs {
@@ -161,7 +174,10 @@ int Execute(const RunArgs& a) {
         a.out.empty() ? DefaultRunFolder(scenario->name, opt.seed.value_or(scenario->seed)) : a.out;
     const hil::harness::RunReport report = hil::harness::RunScenario(*scenario, opt);
     PrintSummary(report, opt.out_dir);
-    return report.pass() ? kExitPass : kExitFail;
+    return RunExitCode(report);
+  } catch (const harness::OutputWriteError& e) {
+    std::fprintf(stderr, "hil: %s (the run's outputs are not all written)\n", e.what());
+    return kExitWriteFailure;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "hil: %s\n", e.what());
     return kExitBadInput;

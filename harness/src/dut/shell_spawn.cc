@@ -8,7 +8,10 @@
 #include <cstring>
 #include <stdexcept>
 
+#include <linux/close_range.h>
 #include <sys/prctl.h>
+#include <sys/resource.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 
 namespace hil::harness {
@@ -27,6 +30,7 @@ namespace {
   dup2(t.stdout_fd >= 0 ? t.stdout_fd : devnull, STDOUT_FILENO);
   dup2(t.stderr_fd >= 0 ? t.stderr_fd : devnull, STDERR_FILENO);
   if (devnull > STDERR_FILENO) close(devnull);
+  CloseOnExecFrom(STDERR_FILENO + 1);  // report_fd too: it is closed by the exec
   execl("/bin/sh", "sh", "-c", line, static_cast<char*>(nullptr));
   const int err = errno;
   [[maybe_unused]] const ssize_t n = write(report_fd, &err, sizeof err);
@@ -34,6 +38,18 @@ namespace {
 }
 
 }  // namespace
+
+void CloseOnExecFrom(int first_fd) {
+  if (syscall(SYS_close_range, first_fd, ~0U, CLOSE_RANGE_CLOEXEC) == 0) return;
+  rlimit r{};
+  const rlim_t last = getrlimit(RLIMIT_NOFILE, &r) == 0 && r.rlim_cur != RLIM_INFINITY
+                          ? r.rlim_cur
+                          : static_cast<rlim_t>(65536);
+  for (rlim_t fd = static_cast<rlim_t>(first_fd); fd < last; ++fd) {
+    const int flags = fcntl(static_cast<int>(fd), F_GETFD);
+    if (flags >= 0) fcntl(static_cast<int>(fd), F_SETFD, flags | FD_CLOEXEC);
+  }
+}
 
 pid_t SpawnShell(const std::string& shell_line, const SpawnTarget& target) {
   int report[2];

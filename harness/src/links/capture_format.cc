@@ -1,6 +1,11 @@
 #include "hil/harness/links/capture_format.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <charconv>
+#include <cstring>
 #include <sstream>
 #include <stdexcept>
 
@@ -152,34 +157,68 @@ std::optional<CaptureRecord> ParseCaptureLine(std::string_view line) {
   return r;
 }
 
-CaptureWriter::CaptureWriter(const std::string& path, const CaptureHeader& h)
-    : out_(path), path_(path) {
-  if (!out_) throw std::runtime_error("cannot write the capture " + path);
-  out_ << "# hil capture v2\n# link " << h.link << ' ' << h.kind << ' ';
+CaptureWriter::CaptureWriter(const std::string& path, const CaptureHeader& h) : path_(path) {
+  fd_ = open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd_ < 0)
+    throw std::runtime_error("cannot write the capture " + path + ": " + std::strerror(errno));
+  std::ostringstream out;
+  out << "# hil capture v2\n# link " << h.link << ' ' << h.kind << ' ';
   if (h.kind == "can")
-    out_ << h.iface;
+    out << h.iface;
   else
-    out_ << h.baud;
-  out_ << "\n";
-  if (h.start_unix_ns != 0) out_ << "# start_unix_ns " << h.start_unix_ns << "\n";
-  out_ << "# columns: dir t_emu_ns byte_period_ns t_wall_ns name data [wall_offsets_ns]"
-          " (format: vectors/captures/README.md)\n";
-  out_.flush();
+    out << h.baud;
+  out << "\n";
+  if (h.start_unix_ns != 0) out << "# start_unix_ns " << h.start_unix_ns << "\n";
+  out << "# columns: dir t_emu_ns byte_period_ns t_wall_ns name data [wall_offsets_ns]"
+         " (format: vectors/captures/README.md)\n";
+  buf_ = out.str();
+  Flush();
 }
 
 void CaptureWriter::Write(const CaptureRecord& r) {
-  // buffered (no flush per record: a 100 Hz link would cost a write per message); a failed write
-  // shows when the buffer goes out
-  out_ << FormatCaptureLine(r) << '\n';
-  if (!out_) NoteWriteFailure(path_);
+  // buffered (no write per record: a 100 Hz link would cost a system call per message)
+  if (failed_) return;
+  buf_ += FormatCaptureLine(r);
+  buf_ += '\n';
+  if (buf_.size() >= kBufferBytes) Flush();
 }
 
 void CaptureWriter::Flush() {
-  out_.flush();
-  if (!out_) NoteWriteFailure(path_);
+  std::size_t done = 0;
+  while (!failed_ && done < buf_.size()) {
+    const ssize_t n = write(fd_, buf_.data() + done, buf_.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      Cut(done, n < 0 ? errno : ENOSPC);
+      break;
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  if (!failed_) size_ += static_cast<std::int64_t>(done);
+  buf_.clear();
 }
 
-CaptureWriter::~CaptureWriter() { Flush(); }
+void CaptureWriter::Cut(std::size_t written, int err) {
+  failed_ = true;
+  NoteWriteFailure(path_);
+  // keep the whole lines that reached the file, drop the part of a line after them
+  const std::size_t nl = written == 0 ? std::string::npos : buf_.rfind('\n', written - 1);
+  size_ += nl == std::string::npos ? 0 : static_cast<std::int64_t>(nl + 1);
+  if (ftruncate(fd_, size_) != 0) return;
+  const std::string mark =
+      std::string("# cut: ") + std::strerror(err) + "; the records after this line are lost\n";
+  const ssize_t n = pwrite(fd_, mark.data(), mark.size(), size_);
+  if (n == static_cast<ssize_t>(mark.size())) {
+    size_ += n;
+  } else if (n > 0) {
+    [[maybe_unused]] const int r = ftruncate(fd_, size_);  // a partial mark is no record either
+  }
+}
+
+CaptureWriter::~CaptureWriter() {
+  Flush();
+  if (fd_ >= 0) close(fd_);
+}
 
 bool ParseCaptureHeaderLine(std::string_view line, CaptureHeader& hdr) {
   if (line.empty() || line.front() != '#') return false;

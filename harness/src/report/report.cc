@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
+#include <cstring>
+#include <sstream>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
 #include "hil/harness/report/fixed_text.h"
+#include "hil/harness/report/output_file.h"
 #include "hil/harness/report/run_outputs.h"
 
 namespace hil::harness {
@@ -57,12 +59,6 @@ nlohmann::json OutagesJson(const std::vector<OutageMetrics>& outages) {
                  {"error_growth", growth}});
   }
   return a;
-}
-
-std::ofstream OpenOut(const std::string& path) {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error("cannot write " + path);
-  return out;
 }
 
 }  // namespace
@@ -384,6 +380,9 @@ void WriteReportJson(const RunReport& r, const std::string& path) {
   j["fault_injections"] = FaultInjectionsJson(r.fault_injections);
   j["estimator_health"] = EstimatorHealthJson(r.estimator_health);
   if (!r.incomplete_reason.empty()) j["incomplete_reason"] = r.incomplete_reason;
+  if (r.interrupt_signal != 0)
+    j["interrupted_by"] = std::string("SIG") + sigabbrev_np(r.interrupt_signal);
+  if (!r.write_failure.empty()) j["write_failure"] = r.write_failure;
   j["fault_effects"] = {{"messages_dropped", r.fault_messages_dropped},
                         {"bytes_corrupted", r.fault_bytes_corrupted}};
   j["wall_time_s"] = r.wall_time_s;
@@ -408,15 +407,13 @@ void WriteReportJson(const RunReport& r, const std::string& path) {
         {"max_lateral_deviation_m", r.row_following->max_lateral_deviation_m},
         {"mean_abs_lateral_deviation_m", r.row_following->mean_abs_lateral_m},
         {"max_heading_deviation_deg", r.row_following->max_heading_deviation_deg}};
-  auto out = OpenOut(path);
-  out << j.dump(2) << "\n";
-  if (!out) throw std::runtime_error("cannot write " + path);
+  WriteOutputFile(path, j.dump(2) + "\n");
 }
 
 void WriteJunitXml(const RunReport& r, const std::string& path) {
   std::size_t failures = r.problems.size();
   for (const auto& c : r.criteria) failures += c.pass ? 0 : 1;
-  auto out = OpenOut(path);
+  std::ostringstream out;
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   out << "<testsuites>\n";
   out << "  <testsuite name=\"" << XmlEscape(r.scenario) << "\" tests=\""
@@ -442,23 +439,21 @@ void WriteJunitXml(const RunReport& r, const std::string& path) {
         << "\" name=\"run\"><failure message=\"" << XmlEscape(p) << "\"/></testcase>\n";
   }
   out << "  </testsuite>\n</testsuites>\n";
-  if (!out) throw std::runtime_error("cannot write " + path);
+  WriteOutputFile(path, out.str());
 }
 
 void WriteErrorsCsv(const std::vector<ErrorSample>& errors, const std::string& path) {
-  auto out = OpenOut(path);
-  out << "t_s,truth_e_m,truth_n_m,truth_u_m,est_e_m,est_n_m,est_u_m,err_e_m,err_n_m,err_u_m,err_h_"
-         "m\n";
-  std::string text;
-  text.reserve(errors.size() * 120);
+  std::string text =
+      "t_s,truth_e_m,truth_n_m,truth_u_m,est_e_m,est_n_m,est_u_m,err_e_m,err_n_m,err_u_m,err_h_"
+      "m\n";
+  text.reserve(text.size() + errors.size() * 120);
   for (const auto& e : errors) {
     AppendFixedRow(text, 6, ToSeconds(e.t), e.truth_enu_m.x(), e.truth_enu_m.y(), e.truth_enu_m.z(),
                    e.est_enu_m.x(), e.est_enu_m.y(), e.est_enu_m.z(), e.err_enu_m.x(),
                    e.err_enu_m.y(), e.err_enu_m.z(), e.horizontal());
     text.push_back('\n');
   }
-  out.write(text.data(), static_cast<std::streamsize>(text.size()));
-  if (!out) throw std::runtime_error("cannot write " + path);
+  WriteOutputFile(path, text);
 }
 
 }  // namespace hil::harness

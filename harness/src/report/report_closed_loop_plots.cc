@@ -5,17 +5,14 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "hil/harness/report/output_file.h"
 #include "hil/harness/report/report_html.h"
 #include "hil/harness/report/svg_plot.h"
 
 namespace hil::harness {
 namespace {
 
-void Write(const std::string& path, const std::string& text) {
-  std::ofstream out(path);
-  out << text;
-  if (!out) throw std::runtime_error("cannot write " + path);
-}
+void Write(const std::string& path, const std::string& text) { WriteOutputFile(path, text); }
 
 PlotSeries NamedSeries(const char* label, const char* color) {
   return {label, color, PlotSeries::Style::kLine, {}, {}, 0};

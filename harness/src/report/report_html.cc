@@ -7,6 +7,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "hil/harness/report/output_file.h"
 #include "hil/harness/report/svg_plot.h"
 
 namespace hil::harness {
@@ -23,11 +24,7 @@ std::string Fmt(const std::optional<double>& v, const char* unit = "") {
   return b;
 }
 
-void WriteFile(const std::string& path, const std::string& text) {
-  std::ofstream out(path);
-  out << text;
-  if (!out) throw std::runtime_error("cannot write " + path);
-}
+void WriteFile(const std::string& path, const std::string& text) { WriteOutputFile(path, text); }
 
 PlotSeries Cdf(const std::vector<ErrorSample>& errors, const std::string& label,
                const char* color) {

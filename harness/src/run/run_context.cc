@@ -47,6 +47,7 @@ RunContext::RunContext(const Scenario& s, const RunOptions& o)
 bool RunContext::Interrupted() {
   if (stop_reason) return true;
   if (const int sig = InterruptGuard::received()) {
+    report.interrupt_signal = sig;
     stop_reason = std::string("interrupted by ") +
                   (sig == SIGINT    ? "SIGINT"
                    : sig == SIGTERM ? "SIGTERM"
@@ -62,6 +63,7 @@ bool RunContext::Interrupted() {
                   " per emulated second); the rest of its output was not kept";
     collector->set_keep_limit(collector->bytes_kept());
   } else if (const auto file = FirstWriteFailure()) {
+    report.write_failure = "cannot write " + *file;
     stop_reason = "cannot write " + *file +
                   " (disk full, file size limit or folder removed) at t = " + SecondsText(t_now) +
                   " s";

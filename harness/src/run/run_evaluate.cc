@@ -13,6 +13,7 @@
 #include "hil/harness/eval/outage_metrics.h"
 #include "hil/harness/eval/path_file_reader.h"
 #include "hil/harness/eval/path_tracking.h"
+#include "hil/harness/report/output_file.h"
 #include "hil/harness/report/run_outputs.h"
 #include "hil/harness/run/can_run.h"
 
@@ -208,6 +209,11 @@ void EvaluateFaultsAndCriteria(RunContext& ctx, const std::vector<ErrorSample>& 
 void Attempt(RunReport& report, const std::function<void()>& write) {
   try {
     write();
+  } catch (const OutputWriteError& e) {
+    if (report.write_failure.empty()) report.write_failure = e.what();
+    report.problems.push_back(std::string("the run folder is incomplete: ") + e.what());
+    report.complete = false;
+    if (report.incomplete_reason.empty()) report.incomplete_reason = report.problems.back();
   } catch (const std::exception& e) {
     report.problems.push_back(std::string("the run folder is incomplete: ") + e.what());
     report.complete = false;

@@ -1,6 +1,7 @@
 // Phases 2 and 3 of a run: the scheduler executes the scenario; the drain lets the host finish.
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -219,6 +220,12 @@ void StopEstimator(RunContext& ctx) {
   }
   if (!report.complete && !report.problems.empty())
     report.incomplete_reason = report.problems.front();
+  // a run stopped early simulated up to its last event: the report says so, and nothing after it
+  // (the scenario's truth beyond the stop, a closed loop's path not driven) is scored
+  if (crashed || ctx.hang || ctx.stop_reason) {
+    ctx.t_end = std::min(ctx.t_end, ctx.t_now);
+    report.sim_time_s = ToSeconds(ctx.t_end);
+  }
 }
 
 }  // namespace hil::harness

@@ -17,6 +17,12 @@
 namespace hil::cli {
 
 inline constexpr int kExitPass = 0, kExitFail = 1, kExitBadInput = 2;
+/// A file of the run folder could not be written (disk full, EIO, a file size limit): the run's
+/// figures are not all on disk (README, exit codes). 3 is the campaign's "runs missing".
+inline constexpr int kExitWriteFailure = 4;
+/// A run interrupted by a signal exits 128 + the signal (130 for SIGINT, 143 for SIGTERM, 129 for
+/// SIGHUP), as a shell reports a command the signal ended.
+inline constexpr int kExitInterruptedBase = 128;
 
 /// A declared subcommand: run() is called when the command line chose it.
 struct Subcommand {

@@ -78,7 +78,11 @@ std::string FormatCaptureLine(const CaptureRecord& r);
 /// Parses a record line; nothing for comments and lines that do not parse.
 std::optional<CaptureRecord> ParseCaptureLine(std::string_view line);
 
-/// Writes one link's capture, line by line (flushed, so a crashed run keeps what it had).
+/// Writes one link's capture, line by line (buffered, flushed every kBufferBytes and at the end, so
+/// a crashed run keeps what it had). The file is opened close-on-exec (the estimator does not
+/// inherit it). A write that fails part-way (disk full, EIO, a file size limit) leaves the file
+/// ending on a record boundary followed, when it fits, by a comment line `# cut: ...` naming the
+/// reason; the records after it are not written and the failure is noted (run_guard.h).
 class CaptureWriter {
  public:
   /// @throws std::runtime_error naming the path.
@@ -93,9 +97,18 @@ class CaptureWriter {
   /// Writes out what is buffered.
   void Flush();
 
+  static constexpr std::size_t kBufferBytes = 64 * 1024;
+
  private:
-  std::ofstream out_;
+  /// Cuts the file back to its last whole record and marks it after a write that failed with
+  /// `err` having written `written` bytes of the buffer.
+  void Cut(std::size_t written, int err);
+
+  int fd_ = -1;
   std::string path_;
+  std::string buf_;        ///< whole records not written yet
+  std::int64_t size_ = 0;  ///< bytes in the file, all of them whole lines
+  bool failed_ = false;
 };
 
 /// Reads one header comment line (`# hil capture v2`, `# link ttyGPS serial 9600`,

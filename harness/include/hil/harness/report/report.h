@@ -109,6 +109,12 @@ struct RunReport {
   EstimatorHealth estimator_health;  ///< navd's detections (fault_report.h)
   std::string
       incomplete_reason;  ///< why the run stopped early (signal, output folder, link), if it did
+  /// The signal (SIGINT, SIGTERM, SIGHUP) that interrupted the run, 0 when none (report.json
+  /// `interrupted_by`; `hil run` then exits 128 + the signal).
+  int interrupt_signal = 0;
+  /// The first file of the run folder that could not be written and why (report.json
+  /// `write_failure`; `hil run` then exits kExitWriteFailure), empty when every file was.
+  std::string write_failure;
   std::optional<CanBusReport> can;          ///< the scenario's CAN bus (can_run.h), when it has one
   std::optional<TrackingMetrics> tracking;  ///< closed loop: the truth against the path
   std::optional<ClosedLoopReport> closed_loop;  ///< closed loop: controller and actuator
