@@ -32,15 +32,9 @@
 
 #include "hil/harness/eval/path_file_reader.h"
 #include "hil/harness/eval/path_tracking.h"
+#include "hil/harness/scenario/pass_to_pass_spec.h"
 
 namespace hil::harness {
-
-struct PassToPassConfig {
-  double window_s = 900;        ///< 15 min: the window pass-to-pass accuracy is quoted over
-  double margin_m = 10;         ///< left out at each end of a pass (settling after the turn)
-  double max_angle_deg = 5;     ///< two straight segments this parallel are adjacent passes
-  double min_speed_mps = 0.05;  ///< slower samples are a parked vehicle, not a pass
-};
 
 /// Figures of a set of signed errors (metres).
 struct PassErrorStats {

@@ -22,10 +22,10 @@
 #include "hil/firmware_emu/uwb/uwb_tag_device.h"
 #include "hil/firmware_emu/world/greenhouse_world.h"
 #include "hil/harness/campaign/campaign_spec.h"
-#include "hil/harness/eval/pass_to_pass.h"
 #include "hil/harness/faults/fault_timeline.h"
 #include "hil/harness/scenario/default_criteria.h"
 #include "hil/harness/scenario/estimator_kinds.h"
+#include "hil/harness/scenario/pass_to_pass_spec.h"
 #include "hil/harness/scenario/scenario_overrides.h"
 #include "hil/truth/truth_integrator.h"
 
