@@ -10,6 +10,7 @@
 
 #include "hil/harness/report/fixed_text.h"
 #include "hil/harness/report/output_file.h"
+#include "hil/harness/report/pass_to_pass_report.h"
 #include "hil/harness/report/run_outputs.h"
 
 namespace hil::harness {
@@ -146,6 +147,7 @@ MetricTable RunMetricTable(const RunReport& r) {
     t["tracking.stable_distance_m"] = r.tracking->stable_distance_m;
     t["tracking.steady_state_mean_abs_m"] = r.tracking->steady_state_mean_abs_m;
   }
+  AddPassToPassMetrics(r.pass_to_pass, t);
   if (r.row_following && r.row_following->samples > 0) {
     t["max_lateral_deviation_m"] = r.row_following->max_lateral_deviation_m;
     t["max_heading_deviation_deg"] = r.row_following->max_heading_deviation_deg;
@@ -396,6 +398,7 @@ void WriteReportJson(const RunReport& r, const std::string& path) {
     j["tracking"] = TrackingJson(*r.tracking);
     j["tracking"]["faults"] = FaultPathDeviationsJson(r.tracking_faults);
   }
+  if (r.pass_to_pass) j["pass_to_pass"] = PassToPassJson(*r.pass_to_pass);
   if (r.closed_loop) {
     j["closed_loop"] = ClosedLoopJson(*r.closed_loop);
     if (r.closed_loop->steering_ecu)

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "hil/harness/report/output_file.h"
+#include "hil/harness/report/pass_to_pass_report.h"
 #include "hil/harness/report/svg_plot.h"
 
 namespace hil::harness {
@@ -285,6 +286,7 @@ void WriteReportHtml(const RunReport& r, const ReportSeries& s, const std::strin
     h += buf;
   }
   h += "</table>\n";
+  if (r.pass_to_pass) AppendPassToPassHtml(h, *r.pass_to_pass);
   AppendOutagesHtml(h, r);
   AppendFaultsHtml(h, r);
   AppendHealthHtml(h, r);

@@ -11,6 +11,7 @@
 #include "hil/harness/eval/cross_track.h"
 #include "hil/harness/eval/fault_path_deviation.h"
 #include "hil/harness/eval/outage_metrics.h"
+#include "hil/harness/eval/pass_to_pass.h"
 #include "hil/harness/eval/path_file_reader.h"
 #include "hil/harness/eval/path_tracking.h"
 #include "hil/harness/report/output_file.h"
@@ -315,8 +316,10 @@ ClosedLoopFaultsReport ActuatorFaults(const actuator::WheelMotors& motors, Fault
 // Closed loop: the truth against the planned path, and what the controller and the base did.
 void EvaluateClosedLoop(RunContext& ctx, const TruthTable& truth) {
   RunReport& report = ctx.report;
-  report.tracking = ScoreTracking(ReadPathGeometry(ctx.scenario.closed_loop.path_file),
-                                  TruthTrack(ctx, truth, ctx.t_from));
+  const PathGeometry geometry = ReadPathGeometry(ctx.scenario.closed_loop.path_file);
+  const std::vector<TrackSample> evaluated = TruthTrack(ctx, truth, ctx.t_from);
+  report.tracking = ScoreTracking(geometry, evaluated);
+  report.pass_to_pass = ScorePassToPass(geometry, evaluated, ctx.scenario.closed_loop.pass_to_pass);
   const std::vector<TrackSample> track = TruthTrack(ctx, truth, Time{});  // the whole run
   report.tracking_faults = ScoreFaultPathDeviations(
       PlannedPath(ReadPathVertices(ctx.scenario.closed_loop.path_file)), track, ctx.scenario.faults,

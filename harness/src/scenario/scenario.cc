@@ -92,6 +92,7 @@ std::vector<Criterion> ReadCriteria(const YamlReader& r) {
     if (std::find(kCriterionMetrics.begin(), kCriterionMetrics.end(), k.metric) ==
             kCriterionMetrics.end() &&
         k.metric.rfind("navd.", 0) != 0 && k.metric.rfind("tracking.", 0) != 0 &&
+        k.metric.rfind("pass_to_pass.", 0) != 0 &&
         k.metric.rfind("closed_loop.", 0) !=
             0) {  // navd.<health counter>, navd.flag.<flag> (fault_report.h)
       std::string msg = "unknown metric '" + k.metric + "' (one of:";

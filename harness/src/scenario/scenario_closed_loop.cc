@@ -52,6 +52,14 @@ void RefuseClosedLoopFaults(const YamlReader& root) {
   }
 }
 
+// `closed_loop.pass_to_pass:` the ISO 12188-2 style evaluation's parameters (pass_to_pass.h).
+void ReadPassToPass(const YamlReader& r, PassToPassConfig& c) {
+  r.CheckKeys({"window_s", "margin_m", "max_angle_deg"});
+  c.window_s = r.DoubleIn("window_s", c.window_s, 1, 86400);
+  c.margin_m = r.DoubleIn("margin_m", c.margin_m, 0, 1e4);
+  c.max_angle_deg = r.DoubleIn("max_angle_deg", c.max_angle_deg, 0, 45);
+}
+
 }  // namespace
 
 const std::vector<std::string> kClosedLoopSectionKeys{"closed_loop"};
@@ -65,7 +73,7 @@ void ReadClosedLoopSection(const YamlReader& root, Scenario& s) {
   r->CheckKeys({"channel", "link", "path_file", "controller", "control_period_s",
                 "command_timeout_s", "first_command_due_s", "start_enu_m", "start_heading_deg",
                 "initial_speed_mps", "actuator", "transport", "speed_mps", "slcan_baud",
-                "fault_window_s"});
+                "fault_window_s", "pass_to_pass"});
   ClosedLoopSpec& c = s.closed_loop;
   c.enabled = true;
   c.channel = r->Choice("channel", ClosedLoopSpec::Channel::kSerialBase, kChannels);
@@ -93,6 +101,7 @@ void ReadClosedLoopSection(const YamlReader& root, Scenario& s) {
   c.command_timeout_s = r->DoubleIn("command_timeout_s", c.command_timeout_s, 0.01, 60);
   c.first_command_due_s = r->DoubleIn("first_command_due_s", c.first_command_due_s, 0, 600);
   c.fault_window_s = r->DoubleIn("fault_window_s", c.fault_window_s, 0, 3600);
+  if (auto p2p = r->OptionalChild("pass_to_pass")) ReadPassToPass(*p2p, c.pass_to_pass);
   const std::vector<double> p = r->Doubles("start_enu_m", 2, {0, 0});
   c.start_p_N_m = {p[0], p[1]};
   c.start_heading_deg = r->DoubleIn("start_heading_deg", 0, -360, 360);

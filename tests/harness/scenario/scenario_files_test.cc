@@ -2,7 +2,9 @@
 // scenarios carry the papers' reference figures the suite report shows.
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <map>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
@@ -99,6 +101,31 @@ TEST(ScenarioFilesTest, Paper003ClosedLoopScenariosCarryThePapersFigures) {
   EXPECT_EQ(r.criteria[0].metric, "tracking.cross_track_mean_abs_m");
   ASSERT_TRUE(r.criteria[0].max);
   EXPECT_DOUBLE_EQ(*r.criteria[0].max, 0.144);
+}
+
+// closed_loop.pass_to_pass: its keys are read (here a margin changed in the 1 m/s scenario's
+// text), an unknown one names its line and field.
+TEST(ScenarioFilesTest, PassToPassSettingsAreReadAndCheckedByName) {
+  const std::string file = Dir() + "/closed_loop/tractor_autosteer_p2p_1p0.yaml";
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string yaml = text.str();
+  const Scenario s = ParseScenario(yaml, file);
+  EXPECT_DOUBLE_EQ(s.closed_loop.pass_to_pass.window_s, 900);
+  std::string changed = yaml;
+  const std::size_t at = changed.find("margin_m: 10");
+  ASSERT_NE(at, std::string::npos);
+  changed.replace(at, 12, "margin_m: 12.5");
+  EXPECT_DOUBLE_EQ(ParseScenario(changed, file).closed_loop.pass_to_pass.margin_m, 12.5);
+  std::string bad = yaml;
+  bad.replace(bad.find("margin_m: 10"), 12, "margin: 10");
+  try {
+    ParseScenario(bad, file);
+    FAIL() << "an unknown key of closed_loop.pass_to_pass was accepted";
+  } catch (const ScenarioError& e) {
+    EXPECT_EQ(e.field(), "closed_loop.pass_to_pass.margin") << e.what();
+  }
 }
 
 }  // namespace

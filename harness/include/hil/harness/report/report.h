@@ -11,6 +11,7 @@
 #include "hil/firmware_emu/link/realtime_pacer.h"
 #include "hil/harness/eval/evaluator.h"
 #include "hil/harness/eval/outage_metrics.h"
+#include "hil/harness/eval/pass_to_pass.h"
 #include "hil/harness/eval/path_tracking.h"
 #include "hil/harness/eval/row_deviation.h"
 #include "hil/harness/faults/fault_report.h"
@@ -117,6 +118,8 @@ struct RunReport {
   std::string write_failure;
   std::optional<CanBusReport> can;          ///< the scenario's CAN bus (can_run.h), when it has one
   std::optional<TrackingMetrics> tracking;  ///< closed loop: the truth against the path
+  /// closed loop: pass-to-pass cross-track error, ISO 12188-2 style (report.json `pass_to_pass`)
+  std::optional<PassToPassMetrics> pass_to_pass;
   std::optional<ClosedLoopReport> closed_loop;  ///< closed loop: controller and actuator
   /// closed loop: each fault's effect on the path tracking (report.json `tracking.faults`)
   std::vector<FaultPathDeviation> tracking_faults;

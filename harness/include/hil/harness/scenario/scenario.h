@@ -25,6 +25,7 @@
 #include "hil/harness/faults/fault_timeline.h"
 #include "hil/harness/scenario/default_criteria.h"
 #include "hil/harness/scenario/estimator_kinds.h"
+#include "hil/harness/scenario/pass_to_pass_spec.h"
 #include "hil/harness/scenario/scenario_overrides.h"
 #include "hil/truth/truth_integrator.h"
 
@@ -185,6 +186,8 @@ struct ClosedLoopSpec {
   double first_command_due_s = 3;  ///< ticks before this count no missing command
   /// tracking.faults scores each fault from its start to this long after its end (recovery)
   double fault_window_s = 10;
+  /// report.json `pass_to_pass` (ISO 12188-2 style, eval/pass_to_pass.h): window, margins
+  PassToPassConfig pass_to_pass;
   Eigen::Vector2d start_p_N_m{0, 0};  ///< where the vehicle starts (ENU, m)
   double start_heading_deg = 0;       ///< its heading, clockwise from north
   /// The vehicle rolls straight at this speed when the run starts (the operator drove it onto
