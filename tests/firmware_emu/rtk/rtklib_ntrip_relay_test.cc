@@ -2,9 +2,9 @@
 // NTRIP caster on localhost: base stream → TCP → str2str (tcpsvr in, ntripc caster out, mount
 // HIL) → str2str (NTRIP client in, file out). The relayed file must hold a whole copy of the
 // stream, byte for byte, with no CRC error. The stream is fed again and again until a copy has gone
-// through (the client may connect after the first bytes), within a bounded wait; both str2str
-// processes are started here in their own process group and killed at the end. Skips without
-// str2str.
+// through (the client may connect after the first bytes; it retries every 0.3 s, not str2str's
+// default 10 s), within a bounded wait; both str2str processes are started here in their own
+// process group and killed at the end. Skips without str2str.
 #include <signal.h>
 #include <unistd.h>
 
@@ -96,9 +96,9 @@ TEST(RtklibNtripRelay, StreamCrossesStr2strCasterAndClientByteForByte) {
   const pid_t caster = Spawn("str2str -in tcpsvr://:" + std::to_string(in_port) +
                              " -out ntripc://:" + std::to_string(caster_port) + "/HIL > " +
                              (dir / "caster.log").string() + " 2>&1");
-  const pid_t client =
-      Spawn("str2str -in ntrip://localhost:" + std::to_string(caster_port) + "/HIL -out file://" +
-            relay.string() + " > " + (dir / "client.log").string() + " 2>&1");
+  const pid_t client = Spawn("str2str -in ntrip://localhost:" + std::to_string(caster_port) +
+                             "/HIL -r 300 -out file://" + relay.string() + " > " +
+                             (dir / "client.log").string() + " 2>&1");
   const auto deadline = Clock::now() + std::chrono::seconds(30);
   const int fd = Connect(in_port, deadline);
   bool relayed = false;
