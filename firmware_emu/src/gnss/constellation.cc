@@ -32,6 +32,38 @@ void LookAngles(const Eigen::Vector3d& sat_e, const Eigen::Vector3d& rx_e,
 
 }  // namespace
 
+struct Constellation::OrbitClock {
+  double n_radps, orbit_s, sidereal_s;
+  Eigen::Matrix3d r_incl;
+  explicit OrbitClock(double gps_s)
+      : n_radps(std::sqrt(kMu_m3ps2 / (kGpsA_m * kGpsA_m * kGpsA_m))),
+        // the same for every orbit (hoisted: the same arithmetic, so the same bits)
+        orbit_s(std::fmod(gps_s, 86400.0 * 365.25 * 4)),
+        sidereal_s(std::fmod(gps_s, 86164.0905)),
+        r_incl(Eigen::AngleAxisd(kGpsIncl_rad, Eigen::Vector3d::UnitX()).toRotationMatrix()) {}
+};
+
+Eigen::Vector3d Constellation::PositionEcef(const Orbit& o, const OrbitClock& clock) {
+  const double u = o.anomaly0_rad + clock.n_radps * clock.orbit_s;
+  const double raan = o.raan0_rad - kEarthRate_radps * clock.sidereal_s;
+  const Eigen::Vector3d p_orb(kGpsA_m * std::cos(u), kGpsA_m * std::sin(u), 0.0);
+  return Eigen::AngleAxisd(raan, Eigen::Vector3d::UnitZ()).toRotationMatrix() *
+         (clock.r_incl * p_orb);
+}
+
+std::vector<SatelliteEcef> Constellation::GpsPositionsEcef(double gps_s) const {
+  const OrbitClock clock(gps_s);
+  std::vector<SatelliteEcef> out;
+  out.reserve(gps_.size());
+  for (const Orbit& o : gps_) out.push_back({o.svid, PositionEcef(o, clock)});
+  return out;
+}
+
+SatelliteEcef Constellation::GpsPositionEcef(std::size_t index, double gps_s) const {
+  const Orbit& o = gps_.at(index);
+  return {o.svid, PositionEcef(o, OrbitClock(gps_s))};
+}
+
 Constellation::Constellation(std::uint64_t seed) {
   // PRN assignment: a fixed permutation of 1..32 without two PRNs, so the sky looks like a real
   // one (not 1..30 in plane order). The seed varies only C/N0 offsets, not the geometry.
@@ -61,20 +93,11 @@ std::vector<SatelliteView> Constellation::Sky(double gps_s, double lat_deg, doub
                                               double height_m, const SkyConditions& cond) const {
   const Eigen::Vector3d rx_e = EcefFromGeodetic(lat_deg, lon_deg, height_m);
   const Eigen::Matrix3d r_en = RotationEcefFromEnu(lat_deg, lon_deg);
-  const double n = std::sqrt(kMu_m3ps2 / (kGpsA_m * kGpsA_m * kGpsA_m));
-  // the same for every orbit (hoisted: the same arithmetic, so the same bits)
-  const double orbit_s = std::fmod(gps_s, 86400.0 * 365.25 * 4);
-  const double sidereal_s = std::fmod(gps_s, 86164.0905);
-  const Eigen::Matrix3d r_incl =
-      Eigen::AngleAxisd(kGpsIncl_rad, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  const OrbitClock clock(gps_s);
   std::vector<SatelliteView> out;
   out.reserve(gps_.size() + sbas_.size());
   for (const Orbit& o : gps_) {
-    const double u = o.anomaly0_rad + n * orbit_s;
-    const double raan = o.raan0_rad - kEarthRate_radps * sidereal_s;
-    const Eigen::Vector3d p_orb(kGpsA_m * std::cos(u), kGpsA_m * std::sin(u), 0.0);
-    const Eigen::Vector3d p_e =
-        Eigen::AngleAxisd(raan, Eigen::Vector3d::UnitZ()).toRotationMatrix() * (r_incl * p_orb);
+    const Eigen::Vector3d p_e = PositionEcef(o, clock);
     SatelliteView s;
     s.svid = o.svid;
     LookAngles(p_e, rx_e, r_en, s.elev_deg, s.azim_deg);

@@ -7,6 +7,7 @@
 
 #include "device_set_isobus.h"
 #include "device_set_paper003.h"
+#include "device_set_rtk.h"
 
 namespace hil::harness {
 namespace {
@@ -20,7 +21,8 @@ enum SeedStream : std::uint64_t {
   kWitStream = 4,
   kRangefinderStream = 5,
   kLidarStream = 6,
-  kBaseStream = 7
+  kBaseStream = 7,
+  kRtkBaseStream = 8
 };
 constexpr std::uint64_t kUnitStride = 104729;        // each rangefinder unit's own stream
 constexpr std::uint64_t kGnssCommonOffset = 0x5151;  // the error part shared by all receivers
@@ -195,6 +197,7 @@ DeviceSet BuildDevices(const Scenario& scenario, std::uint64_t seed, const std::
   AddPaper003Devices(scenario, seed * kSeedStride + kUwbStream, seed * kSeedStride + kWitStream,
                      run_dir, set);
   AddRangeSensors(scenario, seed, run_dir, set);
+  AddRtkBase(scenario, seed * kSeedStride + kRtkBaseStream, run_dir, set);
   AddBase(scenario, seed, run_dir, set);
   AddIsobusSteering(scenario, run_dir, set);
   return set;

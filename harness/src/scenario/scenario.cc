@@ -143,9 +143,10 @@ Scenario FromReader(const YamlReader& root) {
   std::vector<std::string> keys{"name",    "description", "start_utc",       "duration_s",
                                 "seed",    "estimator",   "criteria",        "faults",
                                 "include", "evaluation",  "default_criteria"};
-  for (const auto* section : {&kTruthSectionKeys, &kGnssSectionKeys, &kMcuSectionKeys,
-                              &kCanSectionKeys, &kGreenhouseSectionKeys, &kRangeSensorSectionKeys,
-                              &kSuiteSectionKeys, &kPaper003SectionKeys, &kClosedLoopSectionKeys}) {
+  for (const auto* section :
+       {&kTruthSectionKeys, &kGnssSectionKeys, &kMcuSectionKeys, &kCanSectionKeys,
+        &kGreenhouseSectionKeys, &kRangeSensorSectionKeys, &kSuiteSectionKeys,
+        &kPaper003SectionKeys, &kClosedLoopSectionKeys, &kRtkBaseSectionKeys}) {
     keys.insert(keys.end(), section->begin(), section->end());
   }
   root.CheckKeys(keys);
@@ -167,6 +168,7 @@ Scenario FromReader(const YamlReader& root) {
   // seed 000: the IMU runs 10 times as fast as the GPS
   if (s.mcu.imu_rate_is_default) s.mcu.config.imu_rate_hz = 10.0 * s.gnss.rate_hz;
   ReadPaper003Sections(root, s.uwb, s.wt901c);
+  ReadRtkBaseSection(root, s);
   ReadCanSection(root, s.can);
   ReadGreenhouseSection(root, s);
   ReadRangeSensorSections(root, s);

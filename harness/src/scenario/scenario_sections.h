@@ -27,6 +27,9 @@ void ReadMcuRough(const YamlReader& r, mcu::McuConfig& c);
 extern const std::vector<std::string> kPaper003SectionKeys;
 /// Reads the uwb and wt901c sections (optional; scenario_paper003.cc).
 void ReadPaper003Sections(const YamlReader& root, UwbDeviceSpec& u, Wt901cDeviceSpec& w);
+extern const std::vector<std::string> kRtkBaseSectionKeys;
+/// Reads the rtk_base section (optional; scenario_rtk_base.cc), after the origin and start_utc.
+void ReadRtkBaseSection(const YamlReader& root, Scenario& s);
 extern const std::vector<std::string> kCanSectionKeys;
 /// Reads the can section (optional; scenario_can.cc).
 void ReadCanSection(const YamlReader& root, CanLinkSpec& c);

@@ -55,12 +55,25 @@ struct SkyConditions {
   int max_channels = 16;            ///< tracking channels (u-blox 5: 16 for GPS/SBAS, UNVERIFIED)
 };
 
+/// One GPS satellite's position in ECEF (WGS-84, Earth-fixed at the instant asked).
+struct SatelliteEcef {
+  int svid = 0;  ///< GPS PRN 1–32
+  Eigen::Vector3d p_E_m = Eigen::Vector3d::Zero();
+};
+
 class Constellation {
  public:
   explicit Constellation(std::uint64_t seed);
   /// The sky at GPS time `gps_s` (seconds since 1980-01-06) over the antenna, sorted by svid.
   std::vector<SatelliteView> Sky(double gps_s, double lat_deg, double lon_deg, double height_m,
                                  const SkyConditions& cond) const;
+  /// ECEF positions of every GPS satellite at GPS time `gps_s` (above and below any horizon), in
+  /// the order of the orbit table. The positions Sky() derives its elevations from (same bits).
+  std::vector<SatelliteEcef> GpsPositionsEcef(double gps_s) const;
+  /// Number of GPS orbits (the index range of GpsPositionEcef).
+  std::size_t gps_count() const { return gps_.size(); }
+  /// ECEF position of the GPS satellite of orbit `index` at GPS time `gps_s`.
+  SatelliteEcef GpsPositionEcef(std::size_t index, double gps_s) const;
 
  private:
   struct Orbit {
@@ -68,6 +81,8 @@ class Constellation {
     double raan0_rad, anomaly0_rad;
     int cno_offset;
   };
+  struct OrbitClock;  // the per-epoch terms shared by every orbit
+  static Eigen::Vector3d PositionEcef(const Orbit& o, const OrbitClock& clock);
   std::vector<Orbit> gps_;
   std::vector<std::pair<int, double>> sbas_;  // svid, longitude deg
 };

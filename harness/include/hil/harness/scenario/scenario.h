@@ -19,6 +19,7 @@
 #include "hil/firmware_emu/lidar/rplidar_device.h"
 #include "hil/firmware_emu/mcu/mcu_config.h"
 #include "hil/firmware_emu/rangefinder/tf_luna_device.h"
+#include "hil/firmware_emu/rtk/rtk_base_device.h"
 #include "hil/firmware_emu/uwb/uwb_tag_device.h"
 #include "hil/firmware_emu/world/greenhouse_world.h"
 #include "hil/harness/campaign/campaign_spec.h"
@@ -105,6 +106,15 @@ struct Wt901cDeviceSpec {
   std::string link = "ttyWIT";  ///< symlink name in the run folder
   std::size_t tx_buffer_bytes = 1024;
   wit::Wt901cConfig config;
+};
+
+/// An RTK reference station and its correction radio (section `rtk_base:`,
+/// scenario_rtk_base.cc; absent → none): RTCM 3 on its own pty.
+struct RtkBaseDeviceSpec {
+  bool enabled = false;
+  std::string link = "ttyRTCM";  ///< symlink name in the run folder
+  std::size_t tx_buffer_bytes = 4096;
+  rtk::RtkBaseConfig config;  ///< start_unix_ns is filled from the scenario's start_utc
 };
 
 /// One laser rangefinder of the `rangefinders:` section: its name, pty link and mount.
@@ -217,6 +227,7 @@ struct Scenario {
   McuDeviceSpec mcu;
   UwbDeviceSpec uwb;
   Wt901cDeviceSpec wt901c;
+  RtkBaseDeviceSpec rtk_base;
   CanLinkSpec can;
   ClosedLoopSpec closed_loop;
   EstimatorSpec estimator;

@@ -1,0 +1,107 @@
+#pragma once
+/// @file
+/// @system
+/// name: BaseObservables (GNSS observations of a surveyed reference station)
+/// input: GPS time; the constellation (the same satellite positions the rover emulator uses)
+/// output: per GPS satellite above the mask, per signal: pseudorange, carrier phase with an
+///         integer ambiguity held while the satellite stays tracked, range rate, lock time, CNR
+/// rate: on demand (each base epoch)
+/// @endsystem
+///
+/// Model: the geometric range from the antenna to the satellite at signal emission (light-time
+/// iteration, the Earth's rotation during the flight), plus a tropospheric delay (zenith delay ×
+/// Black-Eisner mapping), plus an ionospheric delay (vertical L1 delay × thin-shell mapping ×
+/// (f_L1/f)², on the code; the same advance on the phase), plus white noise. The base clock is
+/// steered to GPS time and the synthetic satellites have no clock error, so neither appears.
+/// Every number below is ours (no source gives them for this synthetic sky); the reasons are
+/// beside each.
+
+#include <cstdint>
+#include <map>
+#include <random>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "hil/firmware_emu/gnss/constellation.h"
+
+namespace hil::rtk {
+
+/// One signal a GPS satellite broadcasts and the base tracks.
+struct SignalSpec {
+  int msm_signal_id = 2;  ///< RTCM MSM signal id (GPS: 2 = L1 C/A "1C", 10 = L2 P(Y) "2W")
+  double frequency_hz = 1575.42e6;
+  double code_noise_m = 0.3;  ///< 1σ code noise at the zenith
+  double cnr_offset_db = 0;   ///< relative to the L1 C/A CNR
+};
+
+struct BaseObservablesConfig {
+  /// Satellites below are not tracked: 10° is the cut-off reference stations commonly use to
+  /// keep low, multipath-prone signals out of the corrections.
+  double elevation_mask_deg = 10.0;
+  /// Zenith tropospheric delay at the antenna: 2.3 m, the standard-atmosphere value near sea level.
+  double zenith_tropo_m = 2.3;
+  /// Vertical ionospheric delay on L1: 2.0 m (≈ 12 TECU), a moderate mid-latitude daytime value.
+  double vertical_iono_l1_m = 2.0;
+  /// Height of the ionosphere's thin shell: 350 km, the value broadcast-model users take.
+  double iono_shell_height_m = 350e3;
+  /// Carrier phase noise 1σ (m): 2 mm, a geodetic receiver's PLL at good CNR.
+  double phase_noise_m = 0.002;
+  /// Ambiguities are drawn uniformly in ±span cycles at acquisition: receivers start the phase
+  /// near the code range with an arbitrary integer; ±1000 cycles keeps the phaserange within the
+  /// MSM fine field (±1171 m) of the code range.
+  int ambiguity_span_cycles = 1000;
+  /// CNR of L1 C/A at the horizon and the zenith: 38 and 50 dBHz, a geodetic antenna's range.
+  double cnr_horizon_dbhz = 38.0, cnr_zenith_dbhz = 50.0;
+  /// Signals: L1 C/A and L2 P(Y) semi-codeless (every GPS satellite broadcasts both; survey bases
+  /// report L2 as 2W), 6 dB weaker as semi-codeless tracking is; L2 code noise 0.5 m.
+  std::vector<SignalSpec> signals = {{2, 1575.42e6, 0.3, 0.0}, {10, 1227.60e6, 0.5, -6.0}};
+};
+
+/// One signal's observation.
+struct SignalObservation {
+  int msm_signal_id = 0;
+  double wavelength_m = 0;
+  double pseudorange_m = 0;
+  double carrier_cycles = 0;  ///< includes the held integer ambiguity
+  double range_rate_mps = 0;  ///< phaserange rate (−Doppler × wavelength)
+  double lock_time_s = 0;     ///< since this satellite was acquired
+  double cnr_dbhz = 0;
+};
+
+/// One satellite's observations at an epoch.
+struct SatelliteObservation {
+  int prn = 0;
+  double elevation_deg = 0, azimuth_deg = 0;
+  double geometric_range_m = 0;  ///< at emission, with the Earth's rotation (the truth)
+  std::vector<SignalObservation> signals;
+};
+
+class BaseObservables {
+ public:
+  /// The antenna (its phase centre, taken at the ARP: no antenna model) at a WGS-84 position.
+  BaseObservables(const BaseObservablesConfig& config, double lat_deg, double lon_deg,
+                  double height_m, std::uint64_t seed);
+  const Eigen::Vector3d& antenna_E_m() const { return antenna_E_m_; }
+  /// Observations at GPS time `gps_s` (s since the GPS epoch), sorted by PRN. Call with
+  /// non-decreasing times: tracking state (ambiguities, lock times) carries over.
+  std::vector<SatelliteObservation> Observe(const gnss::Constellation& sky, double gps_s);
+
+ private:
+  struct Track {
+    double acquired_gps_s = 0;
+    std::vector<std::int64_t> ambiguity;  // per signal
+  };
+  double GeometricRange(const gnss::Constellation& sky, std::size_t index, double gps_s,
+                        Eigen::Vector3d& sat_E_m) const;
+  SatelliteObservation Satellite(const gnss::Constellation& sky, std::size_t index, double gps_s,
+                                 double elev_deg, double azim_deg);
+
+  BaseObservablesConfig config_;
+  Eigen::Vector3d antenna_E_m_;
+  double lat_deg_ = 0, lon_deg_ = 0, height_m_ = 0;
+  std::mt19937_64 rng_;
+  std::map<int, Track> tracks_;  // by PRN
+};
+
+}  // namespace hil::rtk
