@@ -12,11 +12,12 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <linux/close_range.h>
 #include <sys/prctl.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 
 #include "hil/firmware_emu/link/realtime_pacer.h"
-#include "hil/harness/dut/shell_spawn.h"
 
 namespace hil::harness {
 namespace {
@@ -57,7 +58,8 @@ pid_t Start(std::vector<std::string> args, const std::string& log) {
       dup2(fd, STDOUT_FILENO);
       dup2(fd, STDERR_FILENO);
     }
-    CloseOnExecFrom(STDERR_FILENO + 1);  // the run inherits none of the campaign's files
+    // the run inherits none of the campaign's files (as SpawnShell's hosts: shell_spawn.h)
+    syscall(SYS_close_range, STDERR_FILENO + 1, ~0U, CLOSE_RANGE_CLOEXEC);
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);

@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <utility>
 
 namespace hil::harness {
 namespace {
@@ -40,6 +41,40 @@ void WriteOutputFile(const std::string& path, std::string_view text) {
   if (err != 0) {
     unlink(tmp.c_str());
     throw OutputWriteError(WriteFailureText(path, err));
+  }
+}
+
+OutputFile::OutputFile(std::string path) : path_(std::move(path)), tmp_(path_ + ".tmp") {
+  fd_ = open(tmp_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd_ < 0) throw OutputWriteError(WriteFailureText(path_, errno));
+  text_.reserve(kChunkBytes + kChunkBytes / 4);
+}
+
+OutputFile::~OutputFile() {
+  if (fd_ < 0) return;
+  close(fd_);
+  unlink(tmp_.c_str());
+}
+
+void OutputFile::WriteOut() {
+  const int err = WriteAll(fd_, text_);
+  text_.clear();
+  if (err != 0) throw OutputWriteError(WriteFailureText(path_, err));
+}
+
+void OutputFile::Pass() {
+  if (text_.size() >= kChunkBytes) WriteOut();
+}
+
+void OutputFile::Commit() {
+  WriteOut();
+  int err = fdatasync(fd_) != 0 ? errno : 0;
+  if (close(fd_) != 0 && err == 0) err = errno;
+  fd_ = -1;
+  if (err == 0 && std::rename(tmp_.c_str(), path_.c_str()) != 0) err = errno;
+  if (err != 0) {
+    unlink(tmp_.c_str());
+    throw OutputWriteError(WriteFailureText(path_, err));
   }
 }
 

@@ -113,12 +113,13 @@ void WriteTruthCsv(const Scenario& s, const std::string& path, std::vector<doubl
 
 void WriteTruthCsv(const TruthTable& truth, const Scenario& s, const std::string& path,
                    std::vector<double>& t_s, std::vector<Eigen::Vector2d>& en_m) {
-  std::string text =
+  OutputFile out(path);
+  std::string& text = out.text();
+  text +=
       "t_s,lat_deg,lon_deg,height_m,e_m,n_m,u_m,v_e_mps,v_n_mps,v_u_mps,yaw_deg,speed_mps,"
       "roll_deg,pitch_deg,w_x_radps,w_y_radps,w_z_radps,f_x_mps2,f_y_mps2,f_z_mps2,steer_"
       "deg,cross_track_m\n";
   const std::vector<Time> times = TruthCsvTimes(s);
-  text.reserve(text.size() + times.size() * 230);
   for (const Time t : times) {
     const TruthSample& x = truth.At(t);
     const Eigen::Matrix3d R = x.q_NB.toRotationMatrix();
@@ -149,10 +150,11 @@ void WriteTruthCsv(const TruthTable& truth, const Scenario& s, const std::string
     text.push_back(',');
     AppendFixed(text, x.cross_track_m, 6);
     text.push_back('\n');
+    out.Pass();
     t_s.push_back(ToSeconds(t));
     en_m.emplace_back(x.p_NB_N_m.x(), x.p_NB_N_m.y());
   }
-  WriteOutputFile(path, text);
+  out.Commit();
 }
 
 void WriteFixCsvHeader(std::ostream& out) {

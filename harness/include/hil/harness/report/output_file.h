@@ -21,6 +21,32 @@ class OutputWriteError : public std::runtime_error {
 /// Writes `text` to `path` through `path`.tmp and a rename. @throws OutputWriteError.
 void WriteOutputFile(const std::string& path, std::string_view text);
 
+/// A large run output (a CSV of every solution) written as it is made: the text goes out to
+/// `path`.tmp in pieces, so a long run's file is never held in memory whole (an 8 h run's
+/// truth.csv is 63 MB), and Commit() renames it over `path`. Destroyed uncommitted, the temporary
+/// file is removed and `path` left as it was.
+class OutputFile {
+ public:
+  /// @throws OutputWriteError when the temporary file cannot be made.
+  explicit OutputFile(std::string path);
+  ~OutputFile();
+  OutputFile(const OutputFile&) = delete;
+  OutputFile& operator=(const OutputFile&) = delete;
+  /// The text not yet written: append to it, then call Pass().
+  std::string& text() { return text_; }
+  /// Writes the text out once it holds kChunkBytes or more. @throws OutputWriteError.
+  void Pass();
+  /// Writes the rest, syncs and renames. @throws OutputWriteError.
+  void Commit();
+  static constexpr std::size_t kChunkBytes = 1 << 20;
+
+ private:
+  void WriteOut();
+  std::string path_, tmp_;
+  std::string text_;
+  int fd_ = -1;
+};
+
 /// "cannot write PATH: REASON" for errno `err`.
 std::string WriteFailureText(const std::string& path, int err);
 
