@@ -390,6 +390,17 @@ void ErrorStateEkf::InflateCovariance(double factor) {
     P_.topRightCorner<kNumClassicStates, kNumStates - kNumClassicStates>() *= s;
     P_.bottomLeftCorner<kNumStates - kNumClassicStates, kNumClassicStates>() *= s;
   }
+  // a bias is never less known than before its first measurement: a bias variance above its
+  // initial one is scaled back to it, with its row and column (P <- D P D, D diagonal)
+  for (int i = kAccelBias; i < kGyroBias + 3; ++i) {
+    const double init_std =
+        i < kGyroBias ? params_.init_accel_bias_std_mps2 : params_.init_gyro_bias_std_radps;
+    const double var_max = init_std * init_std;
+    if (!(P_(i, i) > var_max) || !(var_max > 0)) continue;
+    const double c = std::sqrt(var_max / P_(i, i));
+    P_.row(i) *= c;
+    P_.col(i) *= c;
+  }
 }
 
 void ErrorStateEkf::SetBiases(const Eigen::Vector3d& accel_bias_B_mps2,

@@ -49,7 +49,8 @@ Navigator::Navigator(const NavigatorParams& params)
     : params_(params),
       planar_(params.planar),
       stationary_(params.stationary, params.ekf.accel_noise_mps2_rthz,
-                  params.ekf.gyro_noise_radps_rthz) {}
+                  params.ekf.gyro_noise_radps_rthz),
+      step_(params.robust.step) {}
 
 void Navigator::EnsureFrame(const Lla& origin) {
   if (frame_set_) return;
@@ -310,6 +311,11 @@ void Navigator::ProcessGnss(const GnssSample& g) {
   }
   ++stats_.gnss_rejected;
   status_ = (status_ | kStatusGnssRejected) & ~kStatusGnssFused;
+  if (InGnssGlitch(g.t)) {
+    // a receiver glitch (GnssStepCheck): its fixes are no evidence against the filter
+    first_rejected_t_.reset();
+    return;
+  }
   if (!first_rejected_t_) first_rejected_t_ = g.t;
   // recovery: a long run of rejections means the filter, not the receiver, is wrong
   if (g.t - *first_rejected_t_ >= params_.reset_after_rejected) ResetToFix(g, p);
@@ -322,6 +328,8 @@ void Navigator::ResetToFix(const GnssSample& g, const Eigen::Vector3d& p_antenna
   ekf_.ResetSetSpeed(vel_std);
   ++stats_.gnss_resets;
   first_rejected_t_.reset();
+  glitch_since_.reset();
+  step_.Remember(g.t, p_antenna_N_m, g.pos_std_enu_m, ekf_.AntennaPosition());
   last_gnss_fused_t_ = g.t;
   status_ |= kStatusReset;
 }

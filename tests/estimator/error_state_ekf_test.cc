@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
 namespace hil::estimator {
@@ -135,15 +136,32 @@ TEST_F(ErrorStateEkfTest, FadingByTheExcessFactorMakesARejectedFixAcceptable) {
   EXPECT_GT(bad.excess, 10.0);
   const EkfMatrix before = faded.covariance();
   faded.InflateCovariance(bad.excess);
-  // the classic block scales by λ, its cross terms with the augmented states by √λ, the rest not
-  EXPECT_NEAR(faded.covariance()(kAtt + 2, kGyroBias + 2),
-              before(kAtt + 2, kGyroBias + 2) * bad.excess, 1e-12);
+  // the classic block scales by λ (biases up to their initial variance), its cross terms with the
+  // augmented states by √λ, the rest not
+  EXPECT_NEAR(faded.covariance()(kAtt + 2, kPos), before(kAtt + 2, kPos) * bad.excess, 1e-12);
   EXPECT_NEAR(faded.covariance()(kPos, kGnssError),
               before(kPos, kGnssError) * std::sqrt(bad.excess), 1e-12);
   EXPECT_EQ(faded.covariance()(kGnssError, kGnssError), before(kGnssError, kGnssError));
   const UpdateResult retry = faded.UpdatePosition(p, Eigen::Vector3d::Constant(0.1));
   EXPECT_TRUE(retry.accepted);
   EXPECT_LT(retry.nis, 25.0 * 3);
+}
+
+// Fading never leaves a bias less known than its initial σ (a huge λ on a fix far off).
+TEST_F(ErrorStateEkfTest, FadingCapsTheBiasVariancesAtTheirInitialOnes) {
+  const EkfMatrix before = ekf_.covariance();
+  ekf_.InflateCovariance(1e6);
+  const EkfMatrix& P = ekf_.covariance();
+  const EkfParams& p = ekf_.params();
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(P(kAccelBias + i, kAccelBias + i), std::pow(p.init_accel_bias_std_mps2, 2), 1e-15);
+    EXPECT_NEAR(P(kGyroBias + i, kGyroBias + i), std::pow(p.init_gyro_bias_std_radps, 2), 1e-15);
+  }
+  EXPECT_NEAR(P(kPos, kPos), before(kPos, kPos) * 1e6, 1e-6);
+  // still a covariance: symmetric, positive semi-definite
+  EXPECT_TRUE(P.isApprox(P.transpose()));
+  EXPECT_GE(Eigen::SelfAdjointEigenSolver<EkfMatrix>(P).eigenvalues().minCoeff(),
+            -1e-12 * P.diagonal().maxCoeff());
 }
 
 // issue 39: a standing body's mean raw rate is the gyro bias plus the Earth's rate

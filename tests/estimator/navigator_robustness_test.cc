@@ -1,6 +1,7 @@
 // The navigator when its noise model is wrong (issue 39): innovation monitoring, fading to fixes
 // after rejections and gaps, the adaptive process noise, standing still for an hour. A level
 // vehicle on a circle or parked, its IMU and GNSS generated here with a seeded noise.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -80,7 +81,7 @@ struct Rig {
   void Fix(GpsTime t, double at_s) {
     GnssSample g;
     g.t = t;
-    Eigen::Vector3d p = truth.Position(at_s);
+    Eigen::Vector3d p = truth.Position(at_s) + glitch_N_m;
     for (int i = 0; i < 3; ++i) p[i] += fix_std_m * n01(rng);
     g.position = frame.ToLla(p);
     g.pos_std_enu_m.setConstant(fix_std_m);
@@ -105,6 +106,7 @@ struct Rig {
   double accel_noise, gyro_noise;
   Eigen::Vector3d bias_B;
   double fix_std_m = 0.02;
+  Eigen::Vector3d glitch_N_m = Eigen::Vector3d::Zero();  // the receiver's jump, added to its fixes
   LocalTangentFrame frame{kOrigin};
   std::mt19937 rng{39};
   std::normal_distribution<double> n01{0.0, 1.0};
@@ -220,6 +222,94 @@ TEST(NavigatorRobustnessTest, ParkedVehicleHoldsPositionAndHeading) {
       EXPECT_GT(std::abs(rig.YawErrorDeg()), 1.0) << "the plain filter holds its heading now";
     }
   }
+}
+
+}  // namespace
+}  // namespace hil::estimator
+
+namespace hil::estimator {
+namespace {
+
+// Runs the rig to t_end_s and returns the largest horizontal error at its 10 Hz fixes.
+double RunMaxError(Rig& rig, double t_end_s, const Eigen::Vector3d& offset_N_m) {
+  double worst = 0;
+  while (rig.t_s < t_end_s - 1e-9) {
+    rig.Run(rig.t_s + 0.1, 0.1);
+    const Eigen::Vector3d e = rig.nav.Output().p_N_m - rig.truth.Position(rig.t_s) - offset_N_m;
+    worst = std::max(worst, e.head<2>().norm());
+  }
+  return worst;
+}
+
+// A receiver that jumps 5 m for 3 s (variant_glitch_5m's glitch: RTK at 10 Hz, a tractor at
+// 1 m/s) is a wrong receiver, not a wrong model: the adaptive filter must bridge it on the INS, not
+// fade to it nor scale its IMU noise (before the GNSS step check it followed the jump).
+TEST(NavigatorRobustnessTest, ReceiverGlitchIsNotTakenForAWrongModel) {
+  const Truth truth{1.0, 0.01};
+  Rig rig(Params(true), truth, 0.005, 5e-5, Eigen::Vector3d::Zero());
+  rig.Run(100.0, 0.1);
+  rig.glitch_N_m = Eigen::Vector3d(4.0, 3.0, 0.0);
+  const double during = RunMaxError(rig, 103.0, Eigen::Vector3d::Zero());
+  rig.glitch_N_m.setZero();
+  const double after = RunMaxError(rig, 150.0, Eigen::Vector3d::Zero());
+  const NavigatorStats& st = rig.nav.stats();
+  EXPECT_LT(during, 0.10);
+  EXPECT_LT(after, 0.10);
+  EXPECT_EQ(st.gnss_glitches, 1u);
+  EXPECT_GE(st.gnss_glitch_rejected, 29u);
+  EXPECT_EQ(st.fadings, 0u);
+  EXPECT_EQ(st.gnss_resets, 0u);
+  EXPECT_LT(st.process_noise_scale, 1.5);
+  RecordProperty("max_error_during_glitch_m", std::to_string(during));
+}
+
+// A jump that lasts is believed once it has lasted glitch_hold (persistent evidence): the filter
+// then follows the fixes (a receiver that changed its datum or base station).
+TEST(NavigatorRobustnessTest, LastingJumpIsBelievedAfterTheHold) {
+  const Truth truth{1.0, 0.01};
+  Rig rig(Params(true), truth, 0.005, 5e-5, Eigen::Vector3d::Zero());
+  rig.Run(100.0, 0.1);
+  const Eigen::Vector3d jump(4.0, 3.0, 0.0);
+  rig.glitch_N_m = jump;
+  const double held = RunMaxError(rig, 109.0, Eigen::Vector3d::Zero());
+  RunMaxError(rig, 130.0, jump);
+  const double followed = RunMaxError(rig, 160.0, jump);
+  EXPECT_LT(held, 0.5);  // 9 s on the INS alone
+  EXPECT_LT(followed, 0.10);
+  EXPECT_EQ(rig.nav.stats().gnss_glitches, 1u);
+}
+
+// The defaults adapt (navd's [filter] adaptive = true) and still bridge a receiver glitch.
+TEST(NavigatorRobustnessTest, DefaultsAdaptAndBridgeAGlitch) {
+  NavigatorParams p = Params(true);
+  p.robust = RobustnessParams{};
+  ASSERT_TRUE(p.robust.adaptive);
+  const Truth truth{1.0, 0.01};
+  Rig rig(p, truth, 0.005, 5e-5, Eigen::Vector3d::Zero());
+  rig.Run(100.0, 0.1);
+  rig.glitch_N_m = Eigen::Vector3d(4.0, 3.0, 0.0);
+  EXPECT_LT(RunMaxError(rig, 103.0, Eigen::Vector3d::Zero()), 0.10);
+  rig.glitch_N_m.setZero();
+  EXPECT_LT(RunMaxError(rig, 150.0, Eigen::Vector3d::Zero()), 0.10);
+  EXPECT_EQ(rig.nav.stats().gnss_glitches, 1u);
+}
+
+// The step check itself: a wrong model's displacement error is no step, a receiver's jump is.
+TEST(GnssStepCheckTest, StepsOfTheFixesNotOfTheIns) {
+  GnssStepCheck check;
+  const Eigen::Vector3d sd(0.02, 0.02, 0.02), vvar(1e-4, 1e-4, 1e-4);
+  check.Remember(kT0, Eigen::Vector3d::Zero(), sd, Eigen::Vector3d::Zero());
+  // the INS mis-predicts by 0.3 m over 0.25 s (a wrong model): no step
+  EXPECT_FALSE(check.IsStep(kT0 + 250ms, {0.3, 0, 0}, sd, {0.6, 0, 0}, vvar));
+  // the fixes jump 5 m the INS did not move: a step
+  EXPECT_TRUE(check.IsStep(kT0 + 250ms, {5.3, 0, 0}, sd, {0.3, 0, 0}, vvar));
+  // fixes 2 s apart are not compared
+  EXPECT_FALSE(check.IsStep(kT0 + 2s, {5.3, 0, 0}, sd, {0.3, 0, 0}, vvar));
+  // a receiver of 0.5 m σ: a 3 m step is within 5σ of the two fixes' difference
+  const Eigen::Vector3d wide(0.5, 0.5, 1.0);
+  check.Remember(kT0, Eigen::Vector3d::Zero(), wide, Eigen::Vector3d::Zero());
+  EXPECT_FALSE(check.IsStep(kT0 + 1s, {3, 0, 0}, wide, Eigen::Vector3d::Zero(), vvar));
+  EXPECT_TRUE(check.IsStep(kT0 + 1s, {8, 0, 0}, wide, Eigen::Vector3d::Zero(), vvar));
 }
 
 }  // namespace

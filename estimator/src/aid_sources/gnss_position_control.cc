@@ -42,12 +42,37 @@ void Navigator::Record(int source, const UpdateResult& r) {
   a.band_high = band.high;
 }
 
+bool Navigator::CheckGnssStep(const GnssSample& g, const Eigen::Vector3d& p) {
+  const Eigen::Vector3d vel_var = ekf_.covariance().diagonal().segment<3>(ekf_index::kVel);
+  const bool step = step_.IsStep(g.t, p, g.pos_std_enu_m, ekf_.AntennaPosition(), vel_var);
+  if (step) ++stats_.gnss_steps;
+  return step;
+}
+
 UpdateResult Navigator::ControlGnssPosition(const GnssSample& g, const Eigen::Vector3d& p) {
   const RobustnessParams& rp = params_.robust;
   // a fix after a gap meets a covariance the configured noise may have grown too little
-  const bool after_gap = last_fix_seen_t_ && g.t - *last_fix_seen_t_ > rp.gap_after;
+  bool after_gap = last_fix_seen_t_ && g.t - *last_fix_seen_t_ > rp.gap_after;
   last_fix_seen_t_ = g.t;
+  const bool step = rp.adaptive && CheckGnssStep(g, p);
   UpdateResult r = ekf_.UpdatePosition(p, g.pos_std_enu_m);
+  if (rp.adaptive && r.dof > 0) {
+    // the GNSS consistency check: a rejected step is the receiver's, not the model's
+    if (glitch_since_ && (r.accepted || !InGnssGlitch(g.t))) {
+      glitch_since_.reset();  // over, or lasting long enough to be believed
+    } else if (glitch_since_ && step) {
+      glitch_since_.reset();  // the fixes stepped back: fade to them as after a gap
+      after_gap = true;
+    } else if (!r.accepted && step && std::isfinite(r.nis)) {
+      glitch_since_ = g.t;
+      ++stats_.gnss_glitches;
+    }
+    if (InGnssGlitch(g.t)) {
+      ++stats_.gnss_glitch_rejected;
+      step_.Remember(g.t, p, g.pos_std_enu_m, ekf_.AntennaPosition());
+      return r;
+    }
+  }
   if (!r.accepted && r.dof > 0 && rp.adaptive && std::isfinite(r.nis)) {
     const bool persistent =
         monitors_[kAidGnssPosition].consecutive_rejected() + 1 >= rp.reject_fade_count &&
@@ -62,6 +87,7 @@ UpdateResult Navigator::ControlGnssPosition(const GnssSample& g, const Eigen::Ve
       r.accepted = retry.accepted;
     }
   }
+  step_.Remember(g.t, p, g.pos_std_enu_m, ekf_.AntennaPosition());
   Record(kAidGnssPosition, r);
   if (rp.adaptive) AdaptToInnovations();
   return r;

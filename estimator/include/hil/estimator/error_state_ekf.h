@@ -161,6 +161,9 @@ class ErrorStateEkf {
   /// Fading memory (Fagin 1964; Sorenson and Sacks 1971): multiplies the covariance of the 15
   /// classic states (position … gyro bias) by `factor` ≥ 1; their cross-covariances with the
   /// augmented states by √factor (P ← D P D, D = diag(√factor·I₁₅, I₅): positive semi-definite).
+  /// A bias variance that ends above its initial one (init_*_bias_std²) is scaled back to it with
+  /// its row and column (again D P D): fading explains a wrong model, not a bias beyond its
+  /// turn-on range (an unbounded gyro-bias σ let a standing vehicle's heading drift by 1°/s).
   void InflateCovariance(double factor);
   /// Multiplies the IMU's white-noise densities' variances (accelerometer, gyro) in Predict (≥ 1;
   /// adapted by the navigator from its innovation statistics).

@@ -37,6 +37,7 @@
 
 #include "hil/estimator/error_state_ekf.h"
 #include "hil/estimator/geodesy.h"
+#include "hil/estimator/gnss_step_check.h"
 #include "hil/estimator/innovation_monitor.h"
 #include "hil/estimator/planar_filter.h"
 #include "hil/estimator/ring_buffer.h"
@@ -70,9 +71,9 @@ struct RobustnessParams {
   /// position NIS runs above its χ² band, fade to fixes that keep being rejected or return
   /// after a gap. Off: the filter of the configured noise alone (a gate, a reset after
   /// reset_after_rejected).
-  /// Off by default: with it on, variant_glitch_5m (a 5 m receiver jump that lasts) failed, the
-  /// jump being taken as a wrong model (4.4 m RMSE against 0.022 m); see estimator.md.
-  bool adaptive = false;
+  /// On by default since the GNSS step check (below) keeps a receiver jump from being taken
+  /// as a wrong model (variant_glitch_5m: 4.4 m RMSE before it); see estimator.md.
+  bool adaptive = true;
   int reject_fade_count = 3;                     ///< this many rejected fixes in a row …
   Nanoseconds reject_fade_after{2'000'000'000};  ///< … over this long: fade to the next one
   /// a fix after this long without any fix is gated against a covariance faded to it
@@ -81,6 +82,14 @@ struct RobustnessParams {
   double max_process_noise_scale = 1e4;  ///< largest process-noise scale (σ ×100)
   double max_scale_step = 10.0;          ///< largest change of that scale per window
   double nis_clip_per_dof = 9.0;         ///< NIS per degree of freedom is clipped here (3σ)
+  /// GNSS consistency (adaptive only): a rejected fix whose increment from the previous fix the
+  /// INS displacement does not explain (GnssStepCheck) starts a receiver glitch. Its fixes are
+  /// rejected without feeding the adaptation (no fading, no window, no reset) until a fix passes
+  /// the gate, the fixes step back (the filter then fades to them as after a gap), or the glitch
+  /// has lasted glitch_hold: then it is persistent evidence, and the fixes are handled as any
+  /// rejected fixes (fading after reject_fade_after, the reset as the last resort).
+  GnssStepParams step;
+  Nanoseconds glitch_hold{10'000'000'000};
 };
 
 /// The aid sources whose innovations are monitored.
@@ -139,7 +148,10 @@ struct NavigatorStats {
   std::uint64_t fadings = 0;         ///< covariance fadings (all causes)
   std::uint64_t gap_fadings = 0;     ///< of which for a fix after a gap
   std::uint64_t reject_fadings = 0;  ///< of which for fixes rejected in a row
-  bool stationary = false;           ///< the vehicle stands (zero-velocity updates in use)
+  std::uint64_t gnss_steps = 0;      ///< fixes that stepped where the INS did not (GnssStepCheck)
+  std::uint64_t gnss_glitches = 0;   ///< receiver glitches (a rejected step) begun
+  std::uint64_t gnss_glitch_rejected = 0;  ///< fixes rejected as part of a glitch
+  bool stationary = false;                 ///< the vehicle stands (zero-velocity updates in use)
   std::uint64_t stationary_periods = 0;
 };
 
@@ -207,6 +219,12 @@ class Navigator {
   /// adaptation to its innovation window (aid_sources/gnss_position_control.cc).
   UpdateResult ControlGnssPosition(const GnssSample& g, const Eigen::Vector3d& p_antenna_N_m);
   void AdaptToInnovations();
+  /// The GNSS consistency check before a fix's update: is this fix a step the INS did not make?
+  bool CheckGnssStep(const GnssSample& g, const Eigen::Vector3d& p_antenna_N_m);
+  /// A glitch is going on at t (begun, not yet over, not older than glitch_hold).
+  bool InGnssGlitch(GpsTime t) const {
+    return glitch_since_ && t - *glitch_since_ < params_.robust.glitch_hold;
+  }
   /// Stationary detection before a prediction; zero-velocity and zero-angular-rate updates after
   /// it (aid_sources/zero_motion_control.cc).
   void DetectStationary(const ImuSample& s);
@@ -244,6 +262,8 @@ class Navigator {
   bool stationary_now_ = false;
   GpsTime last_zupt_t_{};
   std::optional<GpsTime> last_fix_seen_t_;  // the newest fix the filter processed
+  GnssStepCheck step_;                      // GNSS increments against the INS displacement
+  std::optional<GpsTime> glitch_since_;     // the current receiver glitch's first fix
   std::optional<GpsTime> last_gnss_vel_t_;  // the newest fix with a velocity, and its speed
   double last_gnss_speed_mps_ = 0;
   // GNSS-only and multi-receiver modes: the last fix
