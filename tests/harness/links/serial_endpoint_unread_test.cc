@@ -118,5 +118,36 @@ TEST(SerialEndpointUnreadTest, BytesNobodyTakesAreDroppedAtTheUartWithoutStallin
   fs::remove_all(dir);
 }
 
+// Virtual mode, a link no process has open (e.g. a base's corrections nobody reads): every byte is
+// a drop at once, never parked in the pty's buffer until a wall-clock stall timeout decides, so two
+// runs of one seed capture the same records. A reader that opens later gets what follows.
+TEST(SerialEndpointUnreadTest, VirtualModeDropsEverythingWhileNobodyHasTheLinkOpen) {
+  const fs::path dir = fs::temp_directory_path() / ("hil_unread_v_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  const std::string link = (dir / "ttyV").string(), cap = (dir / "ttyV.cap").string();
+  std::string read_late;
+  {
+    SerialEndpoint ep("ttyV", link, kBaud, 1 << 20, cap);
+    int reader = -1;
+    for (int k = 0; k < 120; ++k) {  // 96 kB: far more than a pty holds
+      if (k == 100) reader = open(link.c_str(), O_RDONLY | O_NOCTTY | O_NONBLOCK);
+      SerialMessage m;
+      m.t_ready = TimeFromSeconds(0.1 * k);
+      m.bytes = Message(k);
+      m.name = "MSG";
+      ASSERT_TRUE(ep.Queue(m));
+      ep.WriteAll();
+    }
+    read_late = ReadAll(reader);
+    close(reader);
+  }
+  const Capture c = ReadCapture(cap);
+  EXPECT_TRUE(Bytes(c, CaptureDir::kTx, 0, 10.0).empty()) << "nobody had it open before 10 s";
+  EXPECT_EQ(Bytes(c, CaptureDir::kDrop, 0, 10.0).size(), 100u * 800u);
+  EXPECT_EQ(read_late, Bytes(c, CaptureDir::kTx, 10.0, 99));
+  EXPECT_EQ(read_late.substr(0, 8), "$MSG,100");
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace hil::harness
