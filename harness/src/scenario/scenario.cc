@@ -217,14 +217,7 @@ Scenario LoadScenario(const std::string& path, bool short_form,
 }
 
 Scenario ParseScenario(const std::string& text, const std::string& name) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::ParserException& e) {
-    throw ScenarioError(name, e.mark.line + 1, "", "YAML syntax error: " + e.msg);
-  }
-  if (!root.IsMap()) throw ScenarioError(name, 1, "", "the document must be a mapping of keys");
-  YamlReader reader(root, name, "");
+  YamlReader reader = YamlReader::FromText(text, name);
   reader.ResolveIncludes(".", ScenarioLibraryDirs());
   return FromReader(reader);
 }
