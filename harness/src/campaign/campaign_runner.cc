@@ -16,6 +16,7 @@
 #include <sys/wait.h>
 
 #include "hil/firmware_emu/link/realtime_pacer.h"
+#include "hil/harness/run/folder_lock.h"
 
 namespace hil::harness {
 namespace {
@@ -197,6 +198,9 @@ RunnerResult RunCampaignRuns(const CampaignFolder& f, const std::vector<std::siz
       const fs::path run_dir = fs::path(f.dir) / "runs" / r.id;
       fs::remove_all(run_dir);  // what a killed attempt left
       fs::create_directories(run_dir);
+      // hil.log goes in first: the lock file marks the folder as the run's (run_folder.h), so
+      // `hil run --out` takes a folder that is not empty
+      std::ofstream((run_dir / kRunLockName).string()).flush();
       running[Start(RunArgv(f, r, o), (run_dir / "hil.log").string())] = {
           todo[next], link::RealtimePacer::MonotonicNs()};
       ++next;

@@ -158,7 +158,7 @@ Scenario FromReader(const YamlReader& root) {
     root.Fail("start_utc", e.what());
   }
   s.duration_s = root.DoubleIn("duration_s", s.duration_s, 1, 7 * 86400);
-  s.seed = static_cast<std::uint64_t>(root.Int("seed", 1, 0, INT64_MAX));
+  s.seed = static_cast<std::uint64_t>(root.Int("seed", 1, 0, kMaxSeed));
   ReadTruthSections(root, s.truth);
   ReadGnssSection(root, s.gnss);
   ReadMcuSection(root, s.mcu);

@@ -4,7 +4,6 @@
 #include <stdexcept>
 
 #include "hil/harness/scenario/yaml_reader.h"
-
 #include "hil/harness/scenario/yaml_text_checks.h"
 
 namespace hil::harness {
