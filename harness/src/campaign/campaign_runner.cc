@@ -16,13 +16,16 @@
 #include <sys/wait.h>
 
 #include "hil/firmware_emu/link/realtime_pacer.h"
-#include "hil/harness/run/folder_lock.h"
 
 namespace hil::harness {
 namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
+
+// A run folder's lock file (run/folder_lock.h kRunLockName; campaign may not include run/):
+// made empty before `hil run --out`, it marks the folder, which then holds hil.log, as the run's.
+constexpr const char* kRunFolderMark = ".hil-run.lock";
 
 struct Child {
   std::size_t index = 0;
@@ -200,7 +203,7 @@ RunnerResult RunCampaignRuns(const CampaignFolder& f, const std::vector<std::siz
       fs::create_directories(run_dir);
       // hil.log goes in first: the lock file marks the folder as the run's (run_folder.h), so
       // `hil run --out` takes a folder that is not empty
-      std::ofstream((run_dir / kRunLockName).string()).flush();
+      std::ofstream((run_dir / kRunFolderMark).string()).flush();
       running[Start(RunArgv(f, r, o), (run_dir / "hil.log").string())] = {
           todo[next], link::RealtimePacer::MonotonicNs()};
       ++next;

@@ -193,7 +193,8 @@ void CheckSweepValues(const YamlReader& root, const CampaignSpec& spec) {
       const auto values = fields[f].Child("values").Elements();
       for (std::size_t v = 0; v < spec.sweep[f].values.size(); ++v) {
         try {
-          LoadScenario(file, spec.short_form, {SweepOverride(spec.sweep[f].field, spec.sweep[f].values[v])});
+          LoadScenario(file, spec.short_form,
+                       {SweepOverride(spec.sweep[f].field, spec.sweep[f].values[v])});
         } catch (const ScenarioError& e) {
           values[v].Fail("scenario " + file + " rejects " + spec.sweep[f].field + " = " +
                          spec.sweep[f].values[v] + ": " + e.what());
