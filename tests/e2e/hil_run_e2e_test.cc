@@ -135,5 +135,34 @@ TEST(HilRunE2eTest, UnknownOptionAndUnwritableFolderExitTwoWithOneLine) {
   EXPECT_EQ(r.out.find("terminate called"), std::string::npos) << r.out;
 }
 
+// Issue 40: with output nmea_stdout the NMEA went to estimate.jsonl (README: estimate.nmea) and
+// every run warned that its RMC, GSA, GSV... "were not solutions"; they are the rest of a valid
+// NMEA stream, counted in report.json instead.
+TEST(HilRunE2eTest, NmeaOnStdoutIsKeptAsNmeaWithoutAWarning) {
+  TempDir dir("e2e_nmea_stdout");
+  WriteFile(dir / "s.yaml",
+            "name: nmea_stdout\nduration_s: 10\n"
+            "origin: {lat_deg: 35.4796096, lon_deg: 50.5979765, height_m: 1312.0}\n"
+            "path: {type: line, heading_deg: 30.0, speed_kmh: 1.6}\n"
+            "estimator: {command: 'cat {ttyGPS}', output: nmea_stdout}\n"
+            "criteria:\n  - {metric: output_rate_hz, min: 0.9}\n");
+  const CommandResult r =
+      RunCommand(BinDir() + "/hil run " + dir / "s.yaml" + " --no-html --out " + dir / "run");
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_EQ(r.out.find("were not solutions"), std::string::npos) << r.out;
+  EXPECT_FALSE(std::filesystem::exists(dir / "run/estimate.jsonl"));
+  const std::string nmea = ReadFile(dir / "run/estimate.nmea");
+  EXPECT_NE(nmea.find("GGA,"), std::string::npos);
+  EXPECT_NE(nmea.find("RMC,"), std::string::npos);
+  const auto report = nlohmann::json::parse(ReadFile(dir / "run/report.json"));
+  const auto solutions = report["metrics"]["samples"].get<std::size_t>();
+  EXPECT_GE(solutions, 9u);
+  // every line is a solution (GGA with a fix) or another sentence of the stream
+  std::size_t lines = 0;
+  for (const char c : nmea) lines += c == '\n' ? 1 : 0;
+  EXPECT_GE(report["estimator_other_records"].get<std::size_t>(), solutions) << "an RMC per GGA";
+  EXPECT_LE(report["estimator_other_records"].get<std::size_t>(), lines);
+}
+
 }  // namespace
 }  // namespace hil::test

@@ -166,6 +166,34 @@ TEST(HilRunSafetyE2eTest, TheDefaultFolderIsOnePerSeedAndRun) {
   EXPECT_EQ(Report(dir / "runs/dflt-seed7")["seed"], 7);
 }
 
+// Issue 40: `--out /` was accepted and overwrote files. A folder of other files and the home
+// folder are refused with exit 2 before anything is written; a previous run's folder
+// (report.json) takes a rerun.
+TEST(HilRunSafetyE2eTest, AnOutputFolderOfOtherFilesIsRefused) {
+  TempDir dir("e2e_out_refused");
+  WriteFile(dir / "s.yaml", Scenario(10, "outref"));
+  fs::create_directories(dir / "mine");
+  WriteFile(dir / "mine/notes.txt", "precious");
+  fs::create_directories(dir / "home");
+  const std::string env = "HOME=" + dir / "home" + " ";
+  // (`/` itself is checked in run_folder_test: a regression here would write into /)
+  for (const std::string& out : {dir / "mine", dir / "home"}) {
+    const CommandResult r =
+        RunCommand(env + Hil() + " run " + dir / "s.yaml" + " --no-html --out " + out);
+    EXPECT_EQ(r.exit_code, 2) << out << "\n" << r.out;
+    EXPECT_NE(r.out.find("refusing the output folder " + out), std::string::npos) << r.out;
+  }
+  EXPECT_EQ(ReadFile(dir / "mine/notes.txt"), "precious");
+  EXPECT_FALSE(fs::exists(dir / "mine/report.json"));
+  EXPECT_TRUE(fs::is_empty(dir / "home"));
+  // a run's own folder takes a rerun
+  for (int k = 0; k < 2; ++k) {
+    const CommandResult r =
+        RunCommand(Hil() + " run " + dir / "s.yaml" + " --no-html --out " + dir / "run");
+    EXPECT_EQ(r.exit_code, 0) << r.out;
+  }
+}
+
 // Issue 40.3: two `campaign --local` into one folder ran everything twice.
 TEST(HilRunSafetyE2eTest, ASecondCampaignIntoABusyFolderIsRefused) {
   TempDir dir("e2e_busy_campaign");

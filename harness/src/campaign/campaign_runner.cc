@@ -25,6 +25,10 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
+// A run folder's lock file (run/folder_lock.h kRunLockName; campaign may not include run/):
+// made empty before `hil run --out`, it marks the folder, which then holds hil.log, as the run's.
+constexpr const char* kRunFolderMark = ".hil-run.lock";
+
 struct Child {
   std::size_t index = 0;
   std::int64_t started_ns = 0;
@@ -201,6 +205,9 @@ RunnerResult RunCampaignRuns(const CampaignFolder& f, const std::vector<std::siz
       const fs::path run_dir = fs::path(f.dir) / "runs" / r.id;
       fs::remove_all(run_dir);  // what a killed attempt left
       fs::create_directories(run_dir);
+      // hil.log goes in first: the lock file marks the folder as the run's (run_folder.h), so
+      // `hil run --out` takes a folder that is not empty
+      std::ofstream((run_dir / kRunFolderMark).string()).flush();
       running[Start(RunArgv(f, r, o), (run_dir / "hil.log").string())] = {
           todo[next], link::RealtimePacer::MonotonicNs()};
       ++next;

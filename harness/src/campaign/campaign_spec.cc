@@ -174,6 +174,11 @@ void ReadRunSection(const YamlReader& root, CampaignSpec& spec) {
     spec.run_args.insert(spec.run_args.end(), {"--estimator", r.String("estimator")});
 }
 
+// One sweep point's field: errors in it name the sweep, not `--set` nor the scenario's line.
+ScenarioOverride SweepOverride(const std::string& field, const std::string& value) {
+  return {field, value, "campaign sweep " + field + "=" + value};
+}
+
 // Every sweep value against every scenario: a value a scenario rejects is the campaign's error.
 void CheckSweepValues(const YamlReader& root, const CampaignSpec& spec) {
   if (spec.sweep.empty()) return;
@@ -188,7 +193,8 @@ void CheckSweepValues(const YamlReader& root, const CampaignSpec& spec) {
       const auto values = fields[f].Child("values").Elements();
       for (std::size_t v = 0; v < spec.sweep[f].values.size(); ++v) {
         try {
-          LoadScenario(file, spec.short_form, {{spec.sweep[f].field, spec.sweep[f].values[v]}});
+          LoadScenario(file, spec.short_form,
+                       {SweepOverride(spec.sweep[f].field, spec.sweep[f].values[v])});
         } catch (const ScenarioError& e) {
           values[v].Fail("scenario " + file + " rejects " + spec.sweep[f].field + " = " +
                          spec.sweep[f].values[v] + ": " + e.what());
@@ -237,7 +243,7 @@ std::vector<std::vector<ScenarioOverride>> SweepPoints(const CampaignSpec& spec)
   if (spec.zip) {
     points.assign(spec.sweep.front().values.size(), {});
     for (std::size_t i = 0; i < points.size(); ++i) {
-      for (const auto& f : spec.sweep) points[i].push_back({f.field, f.values[i]});
+      for (const auto& f : spec.sweep) points[i].push_back(SweepOverride(f.field, f.values[i]));
     }
     return points;
   }
@@ -246,7 +252,7 @@ std::vector<std::vector<ScenarioOverride>> SweepPoints(const CampaignSpec& spec)
     for (const auto& p : points) {
       for (const auto& v : f.values) {
         next.push_back(p);
-        next.back().push_back({f.field, v});
+        next.back().push_back(SweepOverride(f.field, v));
       }
     }
     points = std::move(next);

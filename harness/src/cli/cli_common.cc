@@ -1,6 +1,7 @@
 // What the subcommands share: finding executables and loading a scenario.
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <stdexcept>
 
@@ -45,6 +46,23 @@ std::string DefaultRunFolder(const std::string& scenario_name, std::uint64_t see
   throw std::runtime_error("cannot make a new run folder " + base + "[-N] (" +
                            std::to_string(kMaxRunFolderSuffix) +
                            " taken, or runs/ is not writable): give one with --out");
+}
+
+CLI::Validator SeedValidator() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        const std::string range = "a seed is a whole number from 0 to " +
+                                  std::to_string(harness::kMaxSeed) +
+                                  ", as a scenario's seed key holds";
+        if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos)
+          return "'" + text + "' is not a seed (" + range + ")";
+        errno = 0;
+        const unsigned long long v = std::strtoull(text.c_str(), nullptr, 10);
+        if (errno == ERANGE || v > static_cast<unsigned long long>(harness::kMaxSeed))
+          return text + " is out of range (" + range + ")";
+        return "";
+      },
+      "SEED");
 }
 
 std::optional<harness::Scenario> LoadOrReport(

@@ -102,7 +102,8 @@ void Declare(CLI::App& app, RunArgs& a) {
   a.cmd->add_option("--out", a.out,
                     "run folder (default: runs/<scenario name>-seed<N>, with -2, -3, ... added "
                     "when it exists)");
-  a.seed_opt = a.cmd->add_option("--seed", a.seed, "random seed (overrides the scenario's)");
+  a.seed_opt = a.cmd->add_option("--seed", a.seed, "random seed (overrides the scenario's)")
+                   ->check(SeedValidator());
   a.cmd
       ->add_option("--mode", a.mode,
                    "virtual (as fast as possible), realtime (bytes at their wall-clock UART times) "

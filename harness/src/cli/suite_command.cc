@@ -40,8 +40,10 @@ void Declare(CLI::App& app, SuiteArgs& a) {
   a.cmd->add_flag("--short", a.short_form,
                   "each scenario's quick form (its `short:` section: shorter runs, for CI); "
                   "scenarios without one run whole");
-  a.seed_opt = a.cmd->add_option("--seed", a.seed,
-                                 "first seed (default: each scenario's own, or 1 with --seeds)");
+  a.seed_opt = a.cmd
+                   ->add_option("--seed", a.seed,
+                                "first seed (default: each scenario's own, or 1 with --seeds)")
+                   ->check(SeedValidator());
   a.est_opt = a.cmd->add_option("--estimator", a.estimator, "estimator command for every run");
   a.mode_opt = a.cmd->add_option("--mode", a.mode, "run mode for every run")
                    ->check(CLI::IsMember({"virtual", "realtime", "scaled"}));

@@ -81,6 +81,8 @@ void EstimateCollector::Consume(const std::string& line, std::int64_t wall_ns,
   }
   if (r)
     records_.push_back(*r);
+  else if (reader_->OtherRecordOfTheStream(line))
+    ++other_records_;
   else if (reader_->SolutionsInLines())
     NotASolution(line);
 }

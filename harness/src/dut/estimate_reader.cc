@@ -216,6 +216,9 @@ class NmeaReader final : public EstimateReader {
     r.wall_rx_ns = wall_ns;
     return r;
   }
+  bool OtherRecordOfTheStream(const std::string& text) const override {
+    return ParseNmeaSentence(text).sentence.has_value();
+  }
 
  private:
   std::int64_t start_;
@@ -263,6 +266,11 @@ class NoLinesReader final : public EstimateReader {
 
 std::string EstimateReader::WhyNotASolution(const std::string& /*text*/) const {
   return "not a solution in the scenario's estimator.output format";
+}
+
+const char* RawEstimateFileName(EstimatorOutput output) {
+  const bool nmea = output == EstimatorOutput::kNmeaStdout || output == EstimatorOutput::kNmeaPty;
+  return nmea ? "estimate.nmea" : "estimate.jsonl";
 }
 
 std::unique_ptr<EstimateReader> MakeEstimateReader(EstimatorOutput output,

@@ -376,6 +376,7 @@ void WriteReportJson(const RunReport& r, const std::string& path) {
   j["default_criteria"] = DefaultCriteriaJson(r);
   j["estimator"] = EstimatorJson(r);
   j["estimator_exit"] = r.estimator_exit;
+  j["estimator_other_records"] = r.estimator_other_records;
   j["speed"] = r.speed;
   j["faults"] = nlohmann::json::array();
   for (const auto& [kind, when] : r.faults) j["faults"].push_back({{"kind", kind}, {"when", when}});

@@ -181,6 +181,7 @@ void EvaluateFaultsAndCriteria(RunContext& ctx, const std::vector<ErrorSample>& 
   report.criteria =
       EvaluateCriteria(criteria, RunMetricTable(report), AccuracyTable(report.baselines));
   report.fault_messages_dropped = ctx.byte_faults->messages_dropped();
+  report.estimator_other_records = ctx.collector->other_records();
   report.fault_bytes_corrupted = ctx.byte_faults->bytes_corrupted();
   report.wall_time_s = static_cast<double>(NowNs() - ctx.wall_start_ns) * 1e-9;
   const std::uint64_t dropped = ctx.estimator ? ctx.estimator->dropped_bytes() : 0;
@@ -188,7 +189,7 @@ void EvaluateFaultsAndCriteria(RunContext& ctx, const std::vector<ErrorSample>& 
     report.problems.push_back(
         "the estimator's output was not all kept: " + std::to_string(dropped) +
         " bytes dropped unread by the run, " + std::to_string(ctx.collector->lines_not_kept()) +
-        " lines not written to " + (ctx.nav_pty ? "estimate.nmea" : "estimate.jsonl") +
+        " lines not written to " + RawEstimateFileName(ctx.scenario.estimator.output) +
         " (it keeps " + std::to_string(ctx.collector->bytes_kept()) + " bytes)");
   }
   if (ctx.estimator && ctx.estimator->overlong_lines() > 0) {
@@ -197,12 +198,12 @@ void EvaluateFaultsAndCriteria(RunContext& ctx, const std::vector<ErrorSample>& 
                  EstimatorProcess::kMaxLineBytes);
   }
   if (ctx.collector->unparsed_lines() > 0) {
-    std::fprintf(stderr,
-                 "hil: %zu estimator output line(s) were not solutions (kept in %s); the first, "
-                 "line %zu: %s\n",
-                 ctx.collector->unparsed_lines(), ctx.nav_pty ? "estimate.nmea" : "estimate.jsonl",
-                 ctx.collector->first_unparsed_line(),
-                 ctx.collector->first_unparsed_reason().c_str());
+    std::fprintf(
+        stderr,
+        "hil: %zu estimator output line(s) were not solutions (kept in %s); the first, "
+        "line %zu: %s\n",
+        ctx.collector->unparsed_lines(), RawEstimateFileName(ctx.scenario.estimator.output),
+        ctx.collector->first_unparsed_line(), ctx.collector->first_unparsed_reason().c_str());
   }
 }
 

@@ -3,13 +3,11 @@
 
 #include "hil/harness/report/report_html.h"
 #include "hil/harness/run/run_context.h"
+#include "hil/harness/run/run_folder.h"
 #include "hil/harness/run/run_watchdog.h"
 
 namespace hil::harness {
 
-/// Creates the run folder `out_dir` (and its parents). @throws std::runtime_error when it cannot
-/// be written.
-void MakeRunFolder(const std::string& out_dir);
 /// The run folder's captures/, the report's header, the devices and their links, navd.conf, the
 /// process under test and the reader of its output. @throws std::runtime_error for setup failures.
 void Prepare(RunContext& ctx);

@@ -202,15 +202,6 @@ void StartController(RunContext& ctx) {
 
 }  // namespace
 
-void MakeRunFolder(const std::string& out_dir) {
-  std::error_code ec;
-  fs::create_directories(out_dir, ec);
-  if (ec || access(out_dir.c_str(), W_OK) != 0) {
-    throw std::runtime_error("cannot write the output folder " + out_dir +
-                             (ec ? ": " + ec.message() : ""));
-  }
-}
-
 void Prepare(RunContext& ctx) {
   const Scenario& scenario = ctx.scenario;
   const RunOptions& opt = ctx.options;
@@ -259,7 +250,7 @@ void Prepare(RunContext& ctx) {
   }
   ctx.collector.emplace(MakeEstimateReader(scenario.estimator.output, scenario.start_unix_ns),
                         ctx.estimator ? &*ctx.estimator : nullptr, ctx.nav_pty.get(),
-                        ctx.dir + (ctx.nav_pty ? "/estimate.nmea" : "/estimate.jsonl"));
+                        ctx.dir + "/" + RawEstimateFileName(scenario.estimator.output));
   // the raw output kept: at most what a whole run may write (a flood stops the run sooner)
   ctx.collector->set_keep_limit(OutputBudgetBytes(scenario.duration_s));
   EstimatorHealth& health = ctx.health;

@@ -160,7 +160,7 @@ Scenario FromReader(const YamlReader& root) {
     root.Fail("start_utc", e.what());
   }
   s.duration_s = root.DoubleIn("duration_s", s.duration_s, 1, 7 * 86400);
-  s.seed = static_cast<std::uint64_t>(root.Int("seed", 1, 0, INT64_MAX));
+  s.seed = static_cast<std::uint64_t>(root.Int("seed", 1, 0, kMaxSeed));
   ReadTruthSections(root, s.truth);
   ReadGnssSection(root, s.gnss);
   ReadMcuSection(root, s.mcu);
@@ -221,14 +221,7 @@ Scenario LoadScenario(const std::string& path, bool short_form,
 }
 
 Scenario ParseScenario(const std::string& text, const std::string& name) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::ParserException& e) {
-    throw ScenarioError(name, e.mark.line + 1, "", "YAML syntax error: " + e.msg);
-  }
-  if (!root.IsMap()) throw ScenarioError(name, 1, "", "the document must be a mapping of keys");
-  YamlReader reader(root, name, "");
+  YamlReader reader = YamlReader::FromText(text, name);
   reader.ResolveIncludes(".", ScenarioLibraryDirs());
   return FromReader(reader);
 }

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "hil/harness/scenario/yaml_reader.h"
+#include "hil/harness/scenario/yaml_text_checks.h"
 
 namespace hil::harness {
 namespace {
@@ -14,12 +15,15 @@ std::size_t IndexOf(const std::string& seg) {
   return static_cast<std::size_t>(std::stoul(seg.substr(1, seg.size() - 2)));
 }
 
-YAML::Node ParseValue(const ScenarioOverride& o, const std::string& file) {
+YAML::Node ParseValue(const ScenarioOverride& o, const std::string& origin) {
+  YAML::Node value;
   try {
-    return YAML::Load(o.value);
+    value = YAML::Load(o.value);
   } catch (const YAML::ParserException& e) {
-    throw ScenarioError(file, 0, o.field, "value '" + o.value + "' is not YAML: " + e.msg);
+    throw ScenarioError(origin, 0, o.field, "value '" + o.value + "' is not YAML: " + e.msg);
   }
+  CheckNoDuplicateKeys(value, origin, o.field);
+  return value;
 }
 
 }  // namespace
@@ -56,25 +60,26 @@ ScenarioOverride ParseOverride(const std::string& text) {
   const std::size_t eq = text.find('=');
   if (eq == std::string::npos || eq == 0)
     throw std::invalid_argument("expected FIELD=VALUE (e.g. gnss.baud=38400), got '" + text + "'");
-  ScenarioOverride o{text.substr(0, eq), text.substr(eq + 1)};
+  ScenarioOverride o{text.substr(0, eq), text.substr(eq + 1), ""};
   SplitFieldPath(o.field);  // throws for a malformed path
   return o;
 }
 
 void ApplyOverrides(YamlReader& root, const std::vector<ScenarioOverride>& overrides) {
   for (const ScenarioOverride& o : overrides) {
+    // errors name the override, never a line of the scenario file it did not come from
+    const std::string origin = o.origin.empty() ? "--set " + o.field + "=" + o.value : o.origin;
     std::vector<std::string> segs;
     try {
       segs = SplitFieldPath(o.field);
     } catch (const std::invalid_argument& e) {
-      throw ScenarioError(root.file(), 0, o.field, e.what());
+      throw ScenarioError(origin, 0, o.field, e.what());
     }
-    const YAML::Node value = ParseValue(o, root.file());
+    const YAML::Node value = ParseValue(o, origin);
     YAML::Node node = root.node();  // shares the document: assignments change the root
     std::string walked;
     for (std::size_t k = 0; k + 1 < segs.size(); ++k) {
       const std::string& s = segs[k];
-      const int line = node.Mark().line + 1;
       const YAML::Node& view = node;  // const lookups: never add a key while looking
       YAML::Node next;
       if (IsIndex(s) && view.IsSequence() && IndexOf(s) < view.size())
@@ -82,8 +87,8 @@ void ApplyOverrides(YamlReader& root, const std::vector<ScenarioOverride>& overr
       else if (!IsIndex(s) && view.IsMap() && view[s])
         next.reset(view[s]);
       else
-        throw ScenarioError(root.file(), line, o.field,
-                            "cannot set it: the scenario has no '" + walked +
+        throw ScenarioError(origin, 0, o.field,
+                            "cannot set it: the scenario " + root.file() + " has no '" + walked +
                                 (IsIndex(s) || walked.empty() ? "" : ".") + s + "'");
       walked += (IsIndex(s) || walked.empty() ? "" : ".") + s;
       node.reset(next);
@@ -91,15 +96,17 @@ void ApplyOverrides(YamlReader& root, const std::vector<ScenarioOverride>& overr
     const std::string& last = segs.back();
     if (IsIndex(last)) {
       if (!node.IsSequence() || IndexOf(last) >= node.size())
-        throw ScenarioError(root.file(), node.Mark().line + 1, o.field,
+        throw ScenarioError(origin, 0, o.field,
                             "cannot set it: '" + walked + "' has no element " + last);
       node[IndexOf(last)] = value;
+      root.NoteOrigin(value, origin);
     } else {
       if (!node.IsMap())
         throw ScenarioError(
-            root.file(), node.Mark().line + 1, o.field,
+            origin, 0, o.field,
             "cannot set it: '" + (walked.empty() ? "the document" : walked) + "' is not a mapping");
       node[last] = value;
+      root.NoteOrigin(value, origin);
     }
   }
 }

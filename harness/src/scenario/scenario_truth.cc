@@ -83,6 +83,10 @@ std::vector<truth::PathVertex> ReadWaypoints(const YamlReader& list) {
       } catch (const YAML::Exception&) {
         w.Fail("expected two numbers");
       }
+      if (!v.p_N_m.allFinite())
+        w.Fail("expected two finite numbers, got [" + n[0].Scalar() + ", " + n[1].Scalar() + "]");
+      if (!(v.p_N_m.cwiseAbs().maxCoeff() <= 1e6))
+        w.Fail("coordinates must be within 1000 km of the origin");
     } else {
       w.CheckKeys({"enu_m", "speed_mps", "speed_kmh", "stop_s"});
       if (!w.Has("enu_m")) w.Fail("missing required key 'enu_m'");

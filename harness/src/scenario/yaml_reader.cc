@@ -1,12 +1,18 @@
 #include "hil/harness/scenario/yaml_reader.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
+#include <cstring>
 #include <optional>
+
+#include <sys/stat.h>
+
+#include "hil/harness/scenario/yaml_text_checks.h"
 
 namespace hil::harness {
 
@@ -17,44 +23,6 @@ ScenarioError::ScenarioError(std::string file, int line, std::string field,
       file_(std::move(file)),
       line_(line),
       field_(std::move(field)) {}
-
-namespace {
-
-struct NonText {
-  int line = 0;
-  std::string message;
-};
-
-// The first byte that cannot be in a YAML text file (a control character other than tab and line
-// ends, or a byte that does not start or continue valid UTF-8), named by its line, column and
-// value: yaml-cpp's own message would print the byte itself, which a terminal does not show.
-std::optional<NonText> FirstNonText(const std::string& text) {
-  int line = 1, column = 1;
-  for (std::size_t i = 0; i < text.size(); ++column) {
-    const auto c = static_cast<unsigned char>(text[i]);
-    std::size_t len = c < 0x80             ? 1
-                      : (c & 0xE0) == 0xC0 ? 2
-                      : (c & 0xF0) == 0xE0 ? 3
-                      : (c & 0xF8) == 0xF0 ? 4
-                                           : 0;
-    bool ok = len > 0 && (c >= 0x20 || c == '\t' || c == '\n' || c == '\r') && c != 0x7F &&
-              i + len <= text.size() && !(len == 2 && c < 0xC2);
-    for (std::size_t k = 1; ok && k < len; ++k)
-      ok = (static_cast<unsigned char>(text[i + k]) & 0xC0) == 0x80;
-    if (!ok) {
-      char hex[8];
-      std::snprintf(hex, sizeof hex, "0x%02X", c);
-      return NonText{line, "column " + std::to_string(column) + ": byte " + hex +
-                               " is not text (a scenario is a UTF-8 YAML text file; is this a "
-                               "binary file?)"};
-    }
-    if (c == '\n') ++line, column = 0;
-    i += len;
-  }
-  return std::nullopt;
-}
-
-}  // namespace
 
 int EditDistance(const std::string& a, const std::string& b) {
   std::vector<int> prev(b.size() + 1), cur(b.size() + 1);
@@ -73,24 +41,66 @@ int EditDistance(const std::string& a, const std::string& b) {
 YamlReader::YamlReader(YAML::Node node, std::string file, std::string path)
     : node_(std::move(node)), file_(std::move(file)), path_(std::move(path)) {}
 
+namespace {
+
+constexpr std::size_t kMaxScenarioBytes = 16u << 20;
+
+// The whole of a regular file, refusing a folder, a FIFO, a device or a socket at once: opened
+// without blocking and checked before a byte is read.
+std::string ReadRegularFile(const std::string& file) {
+  const int fd = open(file.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0)
+    throw ScenarioError(file, 0, "",
+                        std::string("cannot read the file (") + std::strerror(errno) + ")");
+  struct stat st {};
+  std::string why;
+  if (fstat(fd, &st) != 0)
+    why = std::string("cannot read the file (") + std::strerror(errno) + ")";
+  else if (S_ISDIR(st.st_mode))
+    why = "is a folder, not a scenario file";
+  else if (!S_ISREG(st.st_mode))
+    why = "is not a regular file (a FIFO, device or socket is never read as a scenario)";
+  else if (static_cast<std::size_t>(st.st_size) > kMaxScenarioBytes)
+    why = "is larger than 16 MiB: not a scenario file";
+  std::string text;
+  if (why.empty()) {
+    text.resize(static_cast<std::size_t>(st.st_size));
+    std::size_t got = 0;
+    while (got < text.size()) {
+      const ssize_t n = read(fd, text.data() + got, text.size() - got);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) break;
+      got += static_cast<std::size_t>(n);
+    }
+    text.resize(got);
+  }
+  close(fd);
+  if (!why.empty()) throw ScenarioError(file, 0, "", why);
+  return text;
+}
+
+}  // namespace
+
 YamlReader YamlReader::LoadFile(const std::string& file) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(file, ec))
-    throw ScenarioError(file, 0, "", "is a folder, not a scenario file");
-  std::ifstream probe(file, std::ios::binary);
-  if (!probe) throw ScenarioError(file, 0, "", "cannot read the file (missing or not readable)");
-  const std::string text{std::istreambuf_iterator<char>(probe), std::istreambuf_iterator<char>()};
+  return FromText(ReadRegularFile(file), file);
+}
+
+YamlReader YamlReader::FromText(const std::string& text, const std::string& file) {
   if (const auto bad = FirstNonText(text)) throw ScenarioError(file, bad->line, "", bad->message);
+  YAML::Node root;
   try {
-    YAML::Node root = YAML::Load(text);
-    if (root.IsNull() || !root.IsDefined())
-      throw ScenarioError(file, 1, "", "the file is empty (a scenario is a mapping of keys)");
-    if (!root.IsMap())
-      throw ScenarioError(file, root.Mark().line + 1, "", "the document must be a mapping of keys");
-    return YamlReader(root, file, "");
+    root = YAML::Load(text);
   } catch (const YAML::ParserException& e) {
+    if (const auto tab = FirstTabIndent(text))
+      throw ScenarioError(file, tab->line, "", tab->message);
     throw ScenarioError(file, e.mark.line + 1, "", "YAML syntax error: " + e.msg);
   }
+  if (root.IsNull() || !root.IsDefined())
+    throw ScenarioError(file, 1, "", "the file is empty (a scenario is a mapping of keys)");
+  if (!root.IsMap())
+    throw ScenarioError(file, root.Mark().line + 1, "", "the document must be a mapping of keys");
+  CheckNoDuplicateKeys(root, file, "");
+  return YamlReader(root, file, "");
 }
 
 const std::string& YamlReader::FileOf(const std::string& key) const {
@@ -98,60 +108,36 @@ const std::string& YamlReader::FileOf(const std::string& key) const {
   return it == key_file_.end() ? file_ : it->second;
 }
 
-void YamlReader::ResolveIncludes(const std::string& base_dir_in,
-                                 const std::vector<std::string>& lib_dirs, int depth) {
-  namespace fs = std::filesystem;
-  // a scenario named without a folder ("my.yaml") lives in the current one
-  const std::string base_dir = base_dir_in.empty() ? "." : base_dir_in;
-  const auto inc = Get("include");
-  if (!inc) return;
-  if (depth > 8) Fail("include", "includes nested more than 8 deep (a cycle?)");
-  std::vector<std::string> names;
-  if (inc->IsScalar()) {
-    names.push_back(inc->Scalar());
-  } else if (inc->IsSequence()) {
-    for (const auto& el : *inc) {
-      if (!el.IsScalar())
-        throw ScenarioError(file_, el.Mark().line + 1, FieldOf("include"), "expected a file name");
-      names.push_back(el.Scalar());
-    }
-  } else {
-    Fail("include", "expected a file name or a list of file names");
+void YamlReader::NoteOrigin(const YAML::Node& value, const std::string& origin) {
+  if (!origins_) origins_ = std::make_shared<std::vector<std::pair<YAML::Node, std::string>>>();
+  origins_->emplace_back(value, origin);
+}
+
+const std::string* YamlReader::OriginOf(const YAML::Node& n) const {
+  if (!origins_) return nullptr;
+  for (const auto& [node, origin] : *origins_) {
+    if (node.is(n)) return &origin;
   }
-  std::map<std::string, std::string> added;  // key -> the include that added it
-  for (const std::string& name : names) {
-    std::vector<fs::path> candidates{fs::path(base_dir) / name};
-    for (const auto& d : lib_dirs) candidates.push_back(fs::path(d) / name);
-    std::string found;
-    for (const auto& c : candidates) {
-      std::error_code ec;
-      if (fs::is_regular_file(c, ec)) {
-        found = c.lexically_normal().string();
-        break;
-      }
-    }
-    if (found.empty()) {
-      std::string where = base_dir;
-      for (const auto& d : lib_dirs) where += ", " + d;
-      Fail("include", "cannot find included file '" + name + "' (looked in " + where + ")");
-    }
-    YamlReader sub = LoadFile(found);
-    sub.ResolveIncludes(fs::path(found).parent_path().string(), lib_dirs, depth + 1);
-    for (const auto& kv : sub.node_) {
-      const std::string key = kv.first.Scalar();
-      if (key == "include" || Has(key)) {
-        if (added.count(key)) {
-          throw ScenarioError(found, kv.first.Mark().line + 1, key,
-                              "also defined by the included file " + added[key] +
-                                  " (give it in the scenario itself)");
-        }
-        continue;  // the including document wins
-      }
-      node_[key] = kv.second;
-      key_file_[key] = sub.FileOf(key);
-      added[key] = found;
-    }
+  return nullptr;
+}
+
+YamlReader YamlReader::Sub(const YAML::Node& n, const std::string& file,
+                           const std::string& path) const {
+  YamlReader r(n, file, path);
+  r.origins_ = origins_;
+  r.from_origin_ = from_origin_;
+  if (const std::string* o = OriginOf(n)) {
+    r.file_ = *o;
+    r.from_origin_ = true;
   }
+  return r;
+}
+
+ScenarioError YamlReader::ErrorAt(const YAML::Node& n, const std::string& file,
+                                  const std::string& field, const std::string& message) const {
+  if (from_origin_) return ScenarioError(file_, 0, field, message);
+  if (const std::string* o = OriginOf(n)) return ScenarioError(*o, 0, field, message);
+  return ScenarioError(file, n.Mark().line + 1, field, message);
 }
 
 int YamlReader::line() const { return node_.Mark().line + 1; }
@@ -161,13 +147,13 @@ std::string YamlReader::FieldOf(const std::string& key) const {
 }
 
 void YamlReader::Fail(const std::string& message) const {
-  throw ScenarioError(file_, line(), path_, message);
+  throw ErrorAt(node_, file_, path_, message);
 }
 
 void YamlReader::Fail(const std::string& key, const std::string& message) const {
   const auto n = Get(key);
-  const int ln = n ? n->Mark().line + 1 : line();
-  throw ScenarioError(n ? FileOf(key) : file_, ln, FieldOf(key), message);
+  if (!n) throw ErrorAt(node_, file_, FieldOf(key), message);
+  throw ErrorAt(*n, FileOf(key), FieldOf(key), message);
 }
 
 std::optional<YAML::Node> YamlReader::Get(const std::string& key) const {
@@ -185,8 +171,18 @@ void YamlReader::CheckKeys(std::initializer_list<const char*> allowed) const {
 void YamlReader::CheckKeys(const std::vector<std::string>& allowed) const {
   if (!node_.IsMap()) Fail("expected a mapping of keys");
   for (const auto& kv : node_) {
-    const std::string key = kv.first.Scalar();
+    const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : std::string();
     if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
+    if (key.empty()) {
+      throw ErrorAt(kv.first.Mark().line >= 0 ? kv.first : kv.second, FileOf(key), path_,
+                    "an empty key (a line starting with ':', or a key that is not a name)");
+    }
+    if (!IsPlainKey(key)) {
+      throw ErrorAt(kv.first.Mark().line >= 0 ? kv.first : kv.second, FileOf(key), path_,
+                    "a key that is not a scenario key name (" + std::to_string(key.size()) +
+                        " characters; keys are letters, digits and '_'); is this a scenario "
+                        "file?");
+    }
     std::string best;
     int best_d = 3;
     for (const auto& a : allowed) {
@@ -204,7 +200,7 @@ void YamlReader::CheckKeys(const std::vector<std::string>& allowed) const {
       for (const auto& a : allowed) msg += " " + a;
       msg += ")";
     }
-    throw ScenarioError(FileOf(key), kv.first.Mark().line + 1, FieldOf(key), msg);
+    throw ErrorAt(kv.first.Mark().line >= 0 ? kv.first : kv.second, FileOf(key), FieldOf(key), msg);
   }
 }
 
@@ -213,20 +209,21 @@ bool YamlReader::Has(const std::string& key) const { return Get(key).has_value()
 YamlReader YamlReader::Child(const std::string& key) const {
   const auto n = Get(key);
   if (!n) Fail("missing required key '" + key + "'");
-  return YamlReader(*n, FileOf(key), FieldOf(key));
+  return Sub(*n, FileOf(key), FieldOf(key));
 }
 
 std::optional<YamlReader> YamlReader::OptionalChild(const std::string& key) const {
   const auto n = Get(key);
   if (!n || n->IsNull()) return std::nullopt;
-  return YamlReader(*n, FileOf(key), FieldOf(key));
+  return Sub(*n, FileOf(key), FieldOf(key));
 }
 
 std::vector<YamlReader> YamlReader::Elements() const {
   if (!node_.IsSequence()) Fail("expected a list");
   std::vector<YamlReader> out;
   std::size_t i = 0;
-  for (const auto& el : node_) out.emplace_back(el, file_, path_ + "[" + std::to_string(i++) + "]");
+  for (const auto& el : node_)
+    out.push_back(Sub(el, file_, path_ + "[" + std::to_string(i++) + "]"));
   return out;
 }
 
@@ -339,9 +336,11 @@ std::vector<double> YamlReader::Doubles(const std::string& key, std::size_t n,
     try {
       out.push_back(el.as<double>());
     } catch (const YAML::Exception&) {
-      throw ScenarioError(FileOf(key), el.Mark().line + 1, FieldOf(key),
-                          "expected a number, got '" + el.Scalar() + "'");
+      throw ErrorAt(el, FileOf(key), FieldOf(key), "expected a number, got '" + el.Scalar() + "'");
     }
+    if (!std::isfinite(out.back()))
+      throw ErrorAt(el, FileOf(key), FieldOf(key),
+                    "expected a finite number, got '" + el.Scalar() + "'");
   }
   return out;
 }

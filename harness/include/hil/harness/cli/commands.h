@@ -51,6 +51,9 @@ inline constexpr int kMaxRunFolderSuffix = 999;
 /// run). Characters of the name other than letters, digits and `-_.+` become `_`.
 /// @throws std::runtime_error when no folder can be made.
 std::string DefaultRunFolder(const std::string& scenario_name, std::uint64_t seed);
+/// Checks a `--seed` value: a whole number in [0, harness::kMaxSeed], the range a scenario's
+/// `seed` key holds (CLI11 alone took -1 and 2^64 and ran them as 2^64 - 1).
+CLI::Validator SeedValidator();
 /// The scenario at `path` (empty: the embedded default); an invalid one is reported on stderr.
 std::optional<harness::Scenario> LoadOrReport(
     const std::string& path, bool short_form = false,

@@ -41,6 +41,9 @@ class EstimateCollector {
   const std::vector<EstimateRecord>& records() const { return records_; }
   std::size_t lines() const { return lines_; }
   std::size_t unparsed_lines() const { return unparsed_; }
+  /// Lines that were valid records of the output's stream but no solution (NMEA: RMC, GSA, GSV,
+  /// a GGA without a fix...; EstimateReader::OtherRecordOfTheStream).
+  std::size_t other_records() const { return other_records_; }
   /// The first line that was not a solution: its number in the raw output file (1-based; 0 when
   /// every line was one) and why (EstimateReader::WhyNotASolution).
   std::size_t first_unparsed_line() const { return first_unparsed_line_; }
@@ -85,7 +88,7 @@ class EstimateCollector {
   std::string pty_partial_;
   std::int64_t pty_last_ns_ = 0;
   std::vector<EstimateRecord> records_;
-  std::size_t lines_ = 0, unparsed_ = 0, first_unparsed_line_ = 0;
+  std::size_t lines_ = 0, unparsed_ = 0, first_unparsed_line_ = 0, other_records_ = 0;
   std::size_t raw_lines_ = 0;  // lines of the raw file (with the pty case's "# stdout:" lines)
   std::string first_unparsed_reason_;
   std::uint64_t keep_limit_ = UINT64_MAX, kept_bytes_ = 0, not_kept_ = 0, pty_bytes_ = 0;

@@ -50,7 +50,15 @@ class EstimateReader {
   /// Why Line() gives no record for `text`, in a few words naming the field (for the message on
   /// the first line that was not a solution).
   virtual std::string WhyNotASolution(const std::string& text) const;
+  /// True for a line that is no solution but a valid record of the format's stream (NMEA: a
+  /// sentence with a good checksum other than a GGA with a fix, e.g. RMC, GSA, GSV, VTG, or a GGA
+  /// without a fix): counted in the report, never warned about.
+  virtual bool OtherRecordOfTheStream(const std::string& /*text*/) const { return false; }
 };
+
+/// The run folder's file of the estimator's raw output: estimate.nmea for the NMEA outputs
+/// (nmea_stdout, nmea_pty), else estimate.jsonl.
+const char* RawEstimateFileName(EstimatorOutput output);
 
 /// The reader for an output format (parsed from the scenario's estimator.output).
 std::unique_ptr<EstimateReader> MakeEstimateReader(EstimatorOutput output,

@@ -103,6 +103,9 @@ struct RunReport {
   std::optional<double> host_open_wait_s;
   std::uint64_t gnss_bytes = 0, gnss_messages_dropped = 0;
   std::uint64_t fault_messages_dropped = 0, fault_bytes_corrupted = 0;
+  /// Lines of the estimator's output that were valid records of its format but no solution
+  /// (NMEA: RMC, GSA, GSV, a GGA without a fix...): counted, not warned about.
+  std::size_t estimator_other_records = 0;
   std::vector<std::pair<std::string, std::string>>
       faults;  ///< {kind, "start–end s"} for the report
   std::vector<FaultInjection>

@@ -32,6 +32,10 @@
 
 namespace hil::harness {
 
+/// The largest seed a scenario's `seed` key (and `--seed`) takes: the key is read as a signed
+/// 64-bit YAML integer.
+inline constexpr std::int64_t kMaxSeed = INT64_MAX;
+
 /// An acceptance criterion on one metric of report.json. Passes when value ≤ threshold, where the
 /// threshold is `max`, or `max_ratio_to_baseline` × the same metric of the raw GNSS baseline; or,
 /// with `min`, when value ≥ min (e.g. output_rate_hz).

@@ -15,6 +15,8 @@ class YamlReader;
 struct ScenarioOverride {
   std::string field;  ///< dotted path: `gnss.model.horizontal_sigma_m`, `faults[1].start_s`
   std::string value;  ///< YAML text of the value (`38400`, `[1, 2]`, `{a: 1}`)
+  /// What errors in it name instead of a file and line; empty: `--set FIELD=VALUE`.
+  std::string origin;
 };
 
 /// "FIELD=VALUE" as an override. @throws std::invalid_argument naming what is wrong.
@@ -26,7 +28,8 @@ std::vector<std::string> SplitFieldPath(const std::string& field);
 
 /// Sets each override's field in the root mapping (in order). The parent of the last segment
 /// must exist (a mapping, or a list holding the index); the last key may be new.
-/// @throws ScenarioError naming the scenario file, the deepest line found and the field.
+/// @throws ScenarioError naming the override (its origin) and the field; a value the scenario
+/// then rejects names the override too (YamlReader::NoteOrigin), not the scenario file's line.
 void ApplyOverrides(YamlReader& root, const std::vector<ScenarioOverride>& overrides);
 
 }  // namespace hil::harness

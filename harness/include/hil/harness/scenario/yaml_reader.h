@@ -8,6 +8,7 @@
 #include <functional>
 #include <initializer_list>
 #include <map>
+#include <memory>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -38,16 +39,26 @@ class YamlReader {
  public:
   YamlReader(YAML::Node node, std::string file, std::string path);
 
-  /// Loads a file. @throws ScenarioError for a missing/unreadable file or a YAML syntax error.
+  /// Loads a file. @throws ScenarioError for a missing/unreadable file, a folder, a FIFO or
+  /// other non-regular file (refused before any read, so never blocks), a YAML syntax error, a
+  /// tab in the indentation or a key given twice in one mapping (at any depth).
   static YamlReader LoadFile(const std::string& file);
+  /// The same checks on a document's text; `file` names it in errors.
+  static YamlReader FromText(const std::string& text, const std::string& file);
 
   /// Resolves `include: [a.yaml, vehicles/tractor.yaml]` in a root mapping: each named file is
   /// looked up beside `base_dir`, then in each of `lib_dirs` (e.g. vectors/scenarios/lib); its
   /// top-level keys are added where this document does not define them (the document wins), and
   /// errors in them name the included file. Included files may include others (depth ≤ 8).
-  /// @throws ScenarioError for a missing include, a cycle or a key two includes both define.
-  void ResolveIncludes(const std::string& base_dir, const std::vector<std::string>& lib_dirs,
-                       int depth = 0);
+  /// An included file, its symbolic links followed, must lie under `base_dir` (the folder of the
+  /// scenario named on the command line) or under one of `lib_dirs`.
+  /// @throws ScenarioError for a missing include, a folder, a non-regular file, a file outside
+  /// those folders, a cycle or a key two includes both define.
+  void ResolveIncludes(const std::string& base_dir, const std::vector<std::string>& lib_dirs);
+
+  /// Marks `value` (a node set into this document from outside, e.g. `--set seed=abc`) so that
+  /// an error in it, or below it, names `origin` instead of this file and a line.
+  void NoteOrigin(const YAML::Node& value, const std::string& origin);
 
   /// Fails on any key of this mapping that is not in `allowed` (suggesting the closest one).
   void CheckKeys(std::initializer_list<const char*> allowed) const;
@@ -98,14 +109,31 @@ class YamlReader {
   std::string Scalar() const;
 
  private:
+  void ResolveIncludes(const std::string& base_dir, const std::vector<std::string>& lib_dirs,
+                       const std::vector<std::string>& roots, int depth);
+  std::string FindInclude(const std::string& name, const std::string& base_dir,
+                          const std::vector<std::string>& lib_dirs,
+                          const std::vector<std::string>& roots) const;
   std::string FieldOf(const std::string& key) const;
   std::optional<YAML::Node> Get(const std::string& key) const;
   const std::string& FileOf(const std::string& key) const;
+  const std::string* OriginOf(const YAML::Node& n) const;
+  /// A reader of a node below this one (keeping the origins of set values).
+  YamlReader Sub(const YAML::Node& n, const std::string& file, const std::string& path) const;
+  /// An error located at `n`: its origin when it was set from outside, else `file` and its line.
+  ScenarioError ErrorAt(const YAML::Node& n, const std::string& file, const std::string& field,
+                        const std::string& message) const;
   YAML::Node node_;
   std::map<std::string, std::string> key_file_;  // top-level keys that came from an included file
   std::string file_;
   std::string path_;
+  std::shared_ptr<std::vector<std::pair<YAML::Node, std::string>>> origins_;
+  bool from_origin_ = false;  // this node lies inside a value set from outside
 };
+
+/// The folders (canonical) an include may be read from: the libraries and `base_dir`.
+std::vector<std::string> IncludeRoots(const std::string& base_dir,
+                                      const std::vector<std::string>& lib_dirs);
 
 /// Edit distance, for "did you mean" suggestions.
 int EditDistance(const std::string& a, const std::string& b);
