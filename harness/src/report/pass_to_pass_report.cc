@@ -30,7 +30,7 @@ void AddStats(const std::string& prefix, const PassErrorStats& s,
   t[prefix + ".max_abs_m"] = v(s.max_abs_m);
 }
 
-std::string Row(const char* name, const PassErrorStats& s) {
+std::string PassErrorRow(const char* name, const PassErrorStats& s) {
   char buf[256];
   if (s.samples == 0) {
     std::snprintf(buf, sizeof buf,
@@ -97,9 +97,9 @@ void AppendPassToPassHtml(std::string& h, const PassToPassMetrics& m) {
   h += buf;
   h += "<table><tr><th>method</th><th>samples</th><th>mean</th><th>mean |e|</th><th>p95 |e|</th>"
        "<th>max |e|</th></tr>\n";
-  h += Row("nearest point", m.nearest_point);
-  h += Row("interpolated", m.interpolated);
-  h += Row("absolute (against the planned rows)", m.absolute);
+  h += PassErrorRow("nearest point", m.nearest_point);
+  h += PassErrorRow("interpolated", m.interpolated);
+  h += PassErrorRow("absolute (against the planned rows)", m.absolute);
   h += "</table>\n";
   if (m.interpolated.samples) {
     std::snprintf(buf, sizeof buf,
