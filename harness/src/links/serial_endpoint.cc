@@ -43,7 +43,7 @@ SerialEndpoint::~SerialEndpoint() {
     const auto& [chunk, name] = pending_[i];
     const std::size_t from = i == 0 ? pending_offset_ : 0;  // the bytes that did not leave
     CaptureRecord r;
-    r.dir = CaptureDir::kTx;
+    r.dir = CaptureDir::kDrop;  // nobody got them: the reader went away or the run stopped early
     r.t_emu_ns = ToNs(chunk.t_byte(from));
     r.byte_period_ns = chunk.byte_period.count();
     r.name = name;

@@ -31,7 +31,8 @@ class SerialEndpoint {
   /// @throws std::runtime_error when the port or the capture cannot be opened.
   SerialEndpoint(std::string link_name, const std::string& link_path, int baud,
                  std::size_t tx_buffer_bytes, const std::string& capture_path);
-  /// Writes the bytes still queued (never sent) into the capture with t_wall_ns = 0.
+  /// Writes the bytes still queued (never written to the host: it closed the link or the run
+  /// stopped early) into the capture as `drop` records with t_wall_ns = 0.
   ~SerialEndpoint();
   SerialEndpoint(const SerialEndpoint&) = delete;
   SerialEndpoint& operator=(const SerialEndpoint&) = delete;
