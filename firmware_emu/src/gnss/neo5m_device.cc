@@ -109,7 +109,7 @@ Neo5mDevice::Neo5mDevice(const Neo5mConfig& config, std::uint64_t seed)
       model_(profile_.model, seed, config.common_seed != 0 ? config.common_seed : seed + 1),
       constellation_(seed),
       fix_state_(profile_.fix_state),
-      session_(DefaultSettings(profile_), profile_.max_rate_hz) {
+      session_(DefaultSettings(profile_), profile_.cfg_rate_max_hz) {
   if (profile_.rate_hz > profile_.max_rate_hz) {
     throw std::invalid_argument("GNSS rate " + std::to_string(profile_.rate_hz) +
                                 " Hz is above the " + profile_.name + " maximum of " +
@@ -144,8 +144,11 @@ bool Neo5mDevice::OutputEnabled(std::uint16_t proto) const {
   return (session_.current().ports[ubx::kUart1].out_mask & proto) != 0;
 }
 
-void Neo5mDevice::Push(DeviceOutput& out, Time t, std::string bytes, std::string name) const {
-  out.serial.push_back({t, 0, std::move(bytes), std::move(name)});
+void Neo5mDevice::Push(DeviceOutput& out, Time t, std::string bytes, std::string name,
+                       bool reply) const {
+  SerialMessage m{t, 0, std::move(bytes), std::move(name)};
+  m.reply = reply;
+  out.serial.push_back(std::move(m));
 }
 
 void Neo5mDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
@@ -291,12 +294,19 @@ void Neo5mDevice::EmitEpoch(Time t_ready, DeviceOutput& out) {
 
 void Neo5mDevice::OnHostBytes(int port, Time t, std::string_view bytes, DeviceOutput& out) {
   if (port != 0) return;
-  for (const ubx::InputMessage& m : parser_.Feed(bytes)) {
-    if (m.kind == ubx::InputMessage::Kind::kUbx)
-      HandleUbx(m, t, out);
-    else
-      HandleNmea(m, t, out);
+  // the bytes come over the line at the port's baud, after what the host wrote before: a
+  // message is whole when its last byte's stop bit has arrived (10 bit times a byte, 8N1)
+  Time t_byte_end = std::max(t, rx_line_free_);
+  for (std::size_t k = 0; k < bytes.size(); ++k) {
+    t_byte_end += Duration{(1000000000LL * 10 + baud(0) / 2) / baud(0)};
+    for (const ubx::InputMessage& m : parser_.Feed(bytes.substr(k, 1))) {
+      if (m.kind == ubx::InputMessage::Kind::kUbx)
+        HandleUbx(m, t_byte_end, out);
+      else
+        HandleNmea(m, t_byte_end, out);
+    }
   }
+  rx_line_free_ = t_byte_end;
 }
 
 void Neo5mDevice::HandleUbx(const ubx::InputMessage& m, Time t, DeviceOutput& out) {
@@ -337,7 +347,7 @@ void Neo5mDevice::HandleUbx(const ubx::InputMessage& m, Time t, DeviceOutput& ou
     replies.push_back({ubx::Frame(m.cls, m.id, ubx::EncodeMonHw(0x0001FFFF)), "UBX-MON-HW"});
   }
   if (!OutputEnabled(ubx::kProtoUbx)) return;
-  for (auto& r : replies) Push(out, t_reply, std::move(r.bytes), std::move(r.name));
+  for (auto& r : replies) Push(out, t_reply, std::move(r.bytes), std::move(r.name), true);
 }
 
 void Neo5mDevice::HandleNmea(const ubx::InputMessage& m, Time t, DeviceOutput& out) {
@@ -350,9 +360,9 @@ void Neo5mDevice::HandleNmea(const ubx::InputMessage& m, Time t, DeviceOutput& o
   if (!OutputEnabled(ubx::kProtoNmea)) return;
   const Time t_reply = t + config_.response_delay;
   if (s == "PUBX,00")
-    Push(out, t_reply, nmea::EncodePubx00(last_epoch_), "NMEA-PUBX00");
+    Push(out, t_reply, nmea::EncodePubx00(last_epoch_), "NMEA-PUBX00", true);
   else if (s == "PUBX,04")
-    Push(out, t_reply, nmea::EncodePubx04(last_epoch_), "NMEA-PUBX04");
+    Push(out, t_reply, nmea::EncodePubx04(last_epoch_), "NMEA-PUBX04", true);
 }
 
 }  // namespace hil::gnss

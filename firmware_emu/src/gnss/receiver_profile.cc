@@ -25,6 +25,7 @@ ReceiverProfile ProfileByName(const std::string& name) {
     p.baud = 115200;
     p.rate_hz = 10.0;
     p.max_rate_hz = 20.0;
+    p.cfg_rate_max_hz = 20.0;
     p.nmea_rates = {{0x00, 1}, {0x04, 1}, {0x05, 1}, {0x02, 10}, {0x03, 10}};
     p.sw_version = "RTK 1.00";
     p.hw_version = "00000000";

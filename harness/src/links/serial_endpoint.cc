@@ -43,7 +43,7 @@ SerialEndpoint::~SerialEndpoint() {
     const auto& [chunk, name] = pending_[i];
     const std::size_t from = i == 0 ? pending_offset_ : 0;  // the bytes that did not leave
     CaptureRecord r;
-    r.dir = CaptureDir::kTx;
+    r.dir = CaptureDir::kDrop;  // nobody got them: the reader went away or the run stopped early
     r.t_emu_ns = ToNs(chunk.t_byte(from));
     r.byte_period_ns = chunk.byte_period.count();
     r.name = name;
@@ -52,25 +52,51 @@ SerialEndpoint::~SerialEndpoint() {
   }
 }
 
+void SerialEndpoint::RecordOverflow(const SerialMessage& msg) {
+  CaptureRecord r;
+  r.dir = CaptureDir::kDrop;
+  r.t_emu_ns = ToNs(msg.t_ready);
+  r.name = msg.name;
+  r.bytes = msg.bytes;
+  capture_.Write(r);
+}
+
 bool SerialEndpoint::Queue(const SerialMessage& msg) {
+  const std::string name = msg.name.empty() ? "-" : msg.name;
   if (msg.byte_period) {  // timed already (a replay): the bytes keep their recorded times
-    pending_.emplace_back(link::TimedChunk{msg.t_ready, *msg.byte_period, msg.bytes},
-                          msg.name.empty() ? "-" : msg.name);
+    pending_.emplace_back(link::TimedChunk{msg.t_ready, *msg.byte_period, msg.bytes}, name);
+    return true;
+  }
+  if (msg.reply) {
+    // a chunk partly written to the host cannot move: the reply may only go behind it
+    const std::size_t first = pending_offset_ > 0 ? 1 : 0;
+    std::vector<link::TimedChunk*> waiting;
+    for (std::size_t i = first; i < pending_.size(); ++i) waiting.push_back(&pending_[i].first);
+    const Time line_free = first == 1 ? pending_.front().first.t_end() : written_end_;
+    auto placed = uart_.SubmitAhead(msg.t_ready, msg.bytes, line_free, waiting);
+    if (!placed) {
+      RecordOverflow(msg);
+      return false;
+    }
+    const auto at = pending_.begin() + static_cast<std::ptrdiff_t>(first + placed->index);
+    pending_.emplace(at, std::move(placed->chunk), name);
+    last_queued_end_ = std::max(last_queued_end_, pending_.back().first.t_end());
     return true;
   }
   auto chunk = uart_.Submit(msg.t_ready, msg.bytes);
   if (!chunk) {
-    CaptureRecord r;
-    r.dir = CaptureDir::kDrop;
-    r.t_emu_ns = ToNs(msg.t_ready);
-    r.name = msg.name;
-    r.bytes = msg.bytes;
-    capture_.Write(r);
+    RecordOverflow(msg);
     return false;
   }
   last_queued_end_ = std::max(last_queued_end_, chunk->t_end());
-  pending_.emplace_back(std::move(*chunk), msg.name.empty() ? "-" : msg.name);
+  pending_.emplace_back(std::move(*chunk), name);
   return true;
+}
+
+void SerialEndpoint::PopFront() {
+  written_end_ = std::max(written_end_, pending_.front().first.t_end());
+  pending_.pop_front();
+  pending_offset_ = 0;
 }
 
 std::optional<Time> SerialEndpoint::next_byte_time() const {
@@ -126,8 +152,7 @@ void SerialEndpoint::WriteNextByte(const link::RealtimePacer& pacer) {
   RecordRealtimeByte(left, t, wall, c.byte_period, name, byte[0]);
   if (++pending_offset_ == c.bytes.size()) {
     FinishRealtimeRecords();
-    pending_.pop_front();
-    pending_offset_ = 0;
+    PopFront();
   }
 }
 
@@ -146,10 +171,7 @@ void SerialEndpoint::Consume(std::size_t bytes, CaptureDir dir, std::int64_t wal
     if (dir == CaptureDir::kTx) bytes_sent_ += n;
     bytes -= n;
     pending_offset_ += n;
-    if (pending_offset_ == c.bytes.size()) {
-      pending_.pop_front();
-      pending_offset_ = 0;
-    }
+    if (pending_offset_ == c.bytes.size()) PopFront();
   }
 }
 

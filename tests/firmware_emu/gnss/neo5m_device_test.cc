@@ -254,6 +254,40 @@ TEST(Neo5mDeviceTest, CfgPrtChangesTheBaudBeforeTheAck) {
   EXPECT_EQ(r[0].name, "UBX-ACK-ACK");
 }
 
+// Issue 40 (minor): host bytes reach the receiver at its baud. Two commands in one write are
+// whole after their own bytes and those before them have arrived (10 bit times a byte at 9600
+// Bd); a write while the line still carries the last one queues behind it. Each answer is ready
+// `response_delay` after its command is whole (before: 10 ms after the write, whatever its length).
+TEST(Neo5mDeviceTest, HostBytesArriveAtTheBaud) {
+  Harness h(Config());
+  h.RunUntil(1);
+  const std::string msg = ubx::Frame(0x06, 0x01, std::vector<std::uint8_t>{0x01, 0x06, 0x01});
+  const std::string rate =
+      ubx::Frame(0x06, 0x08, std::vector<std::uint8_t>{0xE8, 0x03, 0x01, 0x00, 0x01, 0x00});
+  ASSERT_EQ(msg.size() + rate.size(), 25u);
+  const Time t0 = TimeFromSeconds(1.5);
+  const Duration byte{1041667};  // 10 / 9600 s
+  const Duration delay = Neo5mConfig{}.response_delay;
+  DeviceOutput out;
+  h.dev.OnHostBytes(0, t0, msg + rate, out);
+  ASSERT_EQ(out.serial.size(), 2u);
+  EXPECT_EQ(out.serial[0].name, "UBX-ACK-ACK");
+  EXPECT_EQ(out.serial[0].t_ready, t0 + byte * 11 + delay);
+  EXPECT_EQ(out.serial[1].t_ready, t0 + byte * 25 + delay);
+  EXPECT_TRUE(out.serial[0].reply);
+  DeviceOutput poll;
+  h.dev.OnHostBytes(0, t0 + std::chrono::milliseconds(5),
+                    ubx::Frame(0x0A, 0x04, std::vector<std::uint8_t>{}), poll);
+  ASSERT_EQ(poll.serial.size(), 1u);
+  EXPECT_EQ(poll.serial[0].t_ready, t0 + byte * 33 + delay) << "behind the 25 bytes on the line";
+  // a write on an idle line: its own length only
+  DeviceOutput later;
+  const Time t1 = TimeFromSeconds(1.7);
+  h.dev.OnHostBytes(0, t1, msg, later);
+  ASSERT_EQ(later.serial.size(), 1u);
+  EXPECT_EQ(later.serial[0].t_ready, t1 + byte * 11 + delay);
+}
+
 TEST(Neo5mDeviceTest, CfgRateRaisesTheEpochRate) {
   Harness h(Config());
   h.RunUntil(2);

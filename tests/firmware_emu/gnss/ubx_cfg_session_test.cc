@@ -23,7 +23,7 @@ class CfgSessionTest : public ::testing::Test {
   static std::vector<std::uint8_t> PayloadOf(const std::string& frame) {
     return std::vector<std::uint8_t>(frame.begin() + 6, frame.end() - 2);
   }
-  UbxCfgSession session{Neo5mDefaults(), 4.0};
+  UbxCfgSession session{Neo5mDefaults(), ProfileByName("neo-5m").cfg_rate_max_hz};
   CfgEffects fx;
 };
 
@@ -68,17 +68,25 @@ TEST_F(CfgSessionTest, MsgAllThreeFormsAndPoll) {
   EXPECT_EQ(Send(0x01, {0x01, 0x07, 0x01})[0].bytes, Ack(false, 0x06, 0x01));
 }
 
-TEST_F(CfgSessionTest, RateKeepsNavRateOneAndTheReceiverMaximum) {
+// Issue 40 (minor): PX4 asks every receiver for 5 Hz (200 ms) and got a NAK (the profile's 4 Hz
+// data-sheet maximum was enforced). The NEO-5M profile acknowledges and runs it
+// (receiver_profile.h says why); periods shorter than its 100 ms floor are NAKed, navRate stays 1.
+TEST_F(CfgSessionTest, RateAcksAndRunsPx4sFiveHertzKeepsNavRateOne) {
   EXPECT_EQ(Send(0x08, {0xFA, 0x00, 0x01, 0x00, 0x01, 0x00})[0].bytes,
             Ack(true, 0x06, 0x08));  // 250 ms
   EXPECT_EQ(session.current().meas_rate_ms, 250);
+  EXPECT_EQ(Send(0x08, {0xC8, 0x00, 0x01, 0x00, 0x01, 0x00})[0].bytes,
+            Ack(true, 0x06, 0x08));  // 200 ms, PX4's 5 Hz
+  EXPECT_EQ(session.current().meas_rate_ms, 200);
   EXPECT_EQ(Send(0x08, {0x64, 0x00, 0x01, 0x00, 0x01, 0x00})[0].bytes,
-            Ack(false, 0x06, 0x08));  // 10 Hz
+            Ack(true, 0x06, 0x08));  // 100 ms
+  EXPECT_EQ(Send(0x08, {0x32, 0x00, 0x01, 0x00, 0x01, 0x00})[0].bytes,
+            Ack(false, 0x06, 0x08));  // 50 ms: below the floor
   EXPECT_EQ(Send(0x08, {0xE8, 0x03, 0x02, 0x00, 0x01, 0x00})[0].bytes,
             Ack(false, 0x06, 0x08));  // navRate 2
-  EXPECT_EQ(session.current().meas_rate_ms, 250);
+  EXPECT_EQ(session.current().meas_rate_ms, 100);
   const auto r = Send(0x08, {});
-  EXPECT_EQ(PayloadOf(r[0].bytes), (std::vector<std::uint8_t>{0xFA, 0x00, 0x01, 0x00, 0x01, 0x00}));
+  EXPECT_EQ(PayloadOf(r[0].bytes), (std::vector<std::uint8_t>{0x64, 0x00, 0x01, 0x00, 0x01, 0x00}));
 }
 
 TEST_F(CfgSessionTest, Nav5PollReturnsTheUblox5DefaultFrame) {

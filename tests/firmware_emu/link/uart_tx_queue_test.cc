@@ -1,5 +1,7 @@
 #include "hil/firmware_emu/link/uart_tx_queue.h"
 
+#include <vector>
+
 #include <gtest/gtest.h>
 
 namespace hil::link {
@@ -29,6 +31,36 @@ TEST(UartTxQueueTest, DropsWholeMessagesWhenTheBufferIsFull) {
   const auto later = q.Submit(Time{} + q.byte_period() * 60, std::string(30, 'y'));
   ASSERT_TRUE(later);
   EXPECT_EQ(later->bytes.size(), 30u);
+}
+
+// Issue 40.7: an answer goes after the message on the wire and ahead of those not begun, which
+// move behind it; a second answer goes behind the first.
+TEST(UartTxQueueTest, RepliesGoAheadOfMessagesNotBegun) {
+  UartTxQueue q(9600, 1024);
+  const Duration byte = q.byte_period();
+  auto a = *q.Submit(TimeFromSeconds(1.0), std::string(10, 'a'));
+  auto b = *q.Submit(TimeFromSeconds(1.0), std::string(10, 'b'));
+  auto c = *q.Submit(TimeFromSeconds(1.0), std::string(10, 'c'));
+  std::vector<TimedChunk*> waiting{&a, &b, &c};
+  const Time t_reply = TimeFromSeconds(1.0) + byte * 3;  // a is on the wire
+  const auto r1 = q.SubmitAhead(t_reply, "rr", Time{}, waiting);
+  ASSERT_TRUE(r1);
+  EXPECT_EQ(r1->index, 1u);
+  EXPECT_EQ(r1->chunk.t_first, a.t_end());
+  EXPECT_EQ(b.t_first, r1->chunk.t_end());
+  EXPECT_EQ(c.t_first, b.t_end());
+  EXPECT_EQ(q.QueuedBytesAt(TimeFromSeconds(1.0)), 32u);
+  auto r1_chunk = r1->chunk;
+  std::vector<TimedChunk*> now{&a, &r1_chunk, &b, &c};
+  const auto r2 = q.SubmitAhead(t_reply, "ss", Time{}, now);
+  ASSERT_TRUE(r2);
+  EXPECT_EQ(r2->index, 2u) << "behind the first answer";
+  EXPECT_EQ(r2->chunk.t_first, r1_chunk.t_end());
+  EXPECT_EQ(c.t_end(), TimeFromSeconds(1.0) + byte * 34);
+  // nothing waiting that has not begun: the answer goes last, as Submit puts it
+  const auto r3 = q.SubmitAhead(TimeFromSeconds(2.0), "tt", c.t_end(), {});
+  ASSERT_TRUE(r3);
+  EXPECT_EQ(r3->chunk.t_first, TimeFromSeconds(2.0));
 }
 
 TEST(UartTxQueueTest, RejectsNonPositiveBaud) {

@@ -34,6 +34,9 @@ struct SerialMessage {
   /// Bytes timed already (a replayed capture): byte k starts at t_ready + k·byte_period, as
   /// recorded, instead of going through the port's UART model. Emulated devices leave it unset.
   std::optional<Duration> byte_period{};
+  /// An answer to a host command (a polled message, an ACK): it goes on the line ahead of the
+  /// device's queued output that has not begun by its t_ready (UartTxQueue::SubmitAhead).
+  bool reply = false;
 };
 
 /// One CAN frame as the device puts it on the bus at `t`.

@@ -12,6 +12,14 @@
 /// Layers: ReceiverModel (errors) + Constellation (sky) + FixState (acquisition) → NavEpoch
 /// (protocol-neutral) → UBX / NMEA encoders → whole SerialMessages for the UART queue of port 0
 /// (UART1). The UART queue drops whole messages that do not fit, as the receiver does.
+/// Answers to host commands are SerialMessage::reply: the port sends them after the message on
+/// the wire, ahead of the rest of the epoch's output (UartTxQueue::SubmitAhead), so a poll is
+/// answered within tens of ms at any time within the epoch (issue 40.7).
+/// Host bytes reach the receiver at the port's baud: a command handed over at t (its first byte
+/// written) is whole when its last byte has arrived, t + length × 10 bit times after the bytes
+/// the host wrote before it (a 48-byte command: 50 ms at 9600 Bd), and is answered
+/// `response_delay` after that. The device is handed the bytes when the host wrote them and its
+/// settings change then; only the times of what it does (answers, restarts) follow the line.
 ///
 /// Faults (self-contained; scripted in the scenario's `gnss.faults`): each {kind, start_s, end_s}
 /// with kind `outage` (sky blocked: no satellites, no fix, re-acquisition afterwards),
@@ -97,7 +105,9 @@ class Neo5mDevice final : public Device {
   Duration Period() const;
   Time NextGridEpoch(Time after) const;
   void EmitEpoch(Time t_ready, DeviceOutput& out);
-  void Push(DeviceOutput& out, Time t, std::string bytes, std::string name) const;
+  /// `reply`: an answer to the host (SerialMessage::reply).
+  void Push(DeviceOutput& out, Time t, std::string bytes, std::string name,
+            bool reply = false) const;
   void HandleUbx(const ubx::InputMessage& m, Time t, DeviceOutput& out);
   void HandleNmea(const ubx::InputMessage& m, Time t, DeviceOutput& out);
   bool OutputEnabled(std::uint16_t proto) const;
@@ -120,6 +130,7 @@ class Neo5mDevice final : public Device {
   bool had_fix_last_ = false;
   double clk_bias_ns_ = 0, clk_drift_nsps_ = 0;
   NavEpoch last_epoch_;
+  Time rx_line_free_{};    // when the last host byte has arrived over the line
   bool overload_ = false;  // an overload fault is active at this epoch
   std::uint64_t overloaded_epochs_ = 0;
 };

@@ -82,7 +82,8 @@ class CfgReplies;  // the replies to one CFG message (ubx_cfg_session.cc)
 
 class UbxCfgSession {
  public:
-  /// @param max_rate_hz highest navigation rate the receiver supports (CFG-RATE refuses more)
+  /// @param max_rate_hz highest navigation rate CFG-RATE is acknowledged and run at (a shorter
+  ///        measRate is NAKed; ReceiverProfile::cfg_rate_max_hz)
   UbxCfgSession(const ReceiverSettings& defaults, double max_rate_hz);
 
   /// Handles CFG message `id` arriving on port `port_id`; returns its replies in order.

@@ -11,14 +11,14 @@
 ///
 /// dir: tx (device → host bytes), rx (host → device bytes), drop (a message the UART dropped
 /// whole, or in a real-time run bytes the UART sent that nobody could take: no process had the pty
-/// open or its input queue was full), ftx (CAN frame the harness put on the bus), frx (CAN frame
-/// read from the bus). t_emu_ns: emulated time of the first byte's start bit (or of the frame).
-/// byte_period_ns: time between byte starts (0 for rx, frames and whole dropped messages); byte k
-/// is at t_emu_ns + k·byte_period_ns. t_wall_ns:
-/// CLOCK_MONOTONIC when the first byte was written (or the frame sent, or rx bytes read) in a
-/// real-time run; 0 in virtual mode (nothing is paced there, and a scenario and seed then give a
-/// byte-identical capture) and for bytes never written. data: lower-case hex bytes, or for frames
-/// the can-utils frame string
+/// open or its input queue was full; in any run, bytes still queued when it ended, never written
+/// because the reader went away or the run stopped early), ftx (CAN frame the harness put on the
+/// bus), frx (CAN frame read from the bus). t_emu_ns: emulated time of the first byte's start bit
+/// (or of the frame). byte_period_ns: time between byte starts (0 for rx, frames and whole dropped
+/// messages); byte k is at t_emu_ns + k·byte_period_ns. t_wall_ns: CLOCK_MONOTONIC when the first
+/// byte was written (or the frame sent, or rx bytes read) in a real-time run; 0 in virtual mode
+/// (nothing is paced there, and a scenario and seed then give a byte-identical capture) and for
+/// bytes never written. data: lower-case hex bytes, or for frames the can-utils frame string
 /// (`09F80180#8868111FBFA49103`). wall_offsets_ns (real-time runs): comma-separated wall time of
 /// each byte minus t_wall_ns. Lines starting with '#' are comments; v1 files (no offsets) read the
 /// same.

@@ -31,7 +31,8 @@ class SerialEndpoint {
   /// @throws std::runtime_error when the port or the capture cannot be opened.
   SerialEndpoint(std::string link_name, const std::string& link_path, int baud,
                  std::size_t tx_buffer_bytes, const std::string& capture_path);
-  /// Writes the bytes still queued (never sent) into the capture with t_wall_ns = 0.
+  /// Writes the bytes still queued (never written to the host: it closed the link or the run
+  /// stopped early) into the capture as `drop` records with t_wall_ns = 0.
   ~SerialEndpoint();
   SerialEndpoint(const SerialEndpoint&) = delete;
   SerialEndpoint& operator=(const SerialEndpoint&) = delete;
@@ -39,7 +40,9 @@ class SerialEndpoint {
   /// Queues one message in the UART (or records its drop). Its bytes wait in this endpoint until
   /// written by WriteAll() (virtual mode) or WriteNextByte() (real time). Returns false when the
   /// transmit buffer had no room (the message was dropped). A message timed already
-  /// (SerialMessage::byte_period) bypasses the UART and keeps its times.
+  /// (SerialMessage::byte_period) bypasses the UART and keeps its times. A reply
+  /// (SerialMessage::reply) goes ahead of the queued messages not yet begun at its time and not
+  /// yet written to the host (UartTxQueue::SubmitAhead); they move behind it.
   bool Queue(const SerialMessage& msg);
   /// Emulated time at which the last byte queued so far leaves the UART (its stop bit ends).
   Time last_queued_end() const { return last_queued_end_; }
@@ -103,6 +106,10 @@ class SerialEndpoint {
   /// Virtual mode: takes `bytes` waiting bytes off the queue into the capture as `dir` records
   /// (one per chunk or part of a chunk), `wall` their write time for tx.
   void Consume(std::size_t bytes, CaptureDir dir, std::int64_t wall);
+  /// The front chunk has left (written or dropped): it is taken off the queue.
+  void PopFront();
+  /// Records a message the transmit buffer had no room for as a drop.
+  void RecordOverflow(const SerialMessage& msg);
 
   std::string link_name_;
   std::unique_ptr<link::SerialPort> port_;
@@ -110,6 +117,7 @@ class SerialEndpoint {
   CaptureWriter capture_;
   std::deque<std::pair<link::TimedChunk, std::string>> pending_;  // chunk, message name
   Time last_queued_end_{};
+  Time written_end_{};              // end of the last chunk taken off the queue
   std::size_t pending_offset_ = 0;  // bytes of pending_.front() already written
   CaptureRecord current_;           // real time: capture line of the bytes of a chunk that left
   CaptureRecord current_drop_;      // real time: capture line of its bytes dropped unread
