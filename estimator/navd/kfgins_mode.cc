@@ -4,7 +4,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <optional>
 #include <string>
 
 #include "hil/estimator/datasets/kfgins_runner.h"
@@ -26,7 +25,7 @@ int Usage(const char* problem) {
   std::fprintf(
       stderr,
       "navd: %s\nusage: navd --kfgins CONFIG.yaml [--navd-conf FILE] [--nhc-std-mps S] [--align]\n"
-      "       [--no-adaptive]\n"
+      "       [--adaptive]\n"
       "  runs navd's filter on a KF-GINS dataset (the configuration's imupath, gnsspath)\n"
       "  and writes KF_GINS_Navresult.nav, KF_GINS_IMU_ERR.txt, KF_GINS_STD.txt to its\n"
       "  outputpath. --navd-conf takes the [filter] section of a navd.conf instead of\n"
@@ -34,8 +33,7 @@ int Usage(const char* problem) {
       "  navd's non-holonomic constraint (a ground vehicle: no lateral or vertical body\n"
       "  velocity, this sigma in m/s, every 0.1 s) to them; --align lets the filter\n"
       "  align itself as navd does online instead of starting from initpos/initatt;\n"
-      "  --no-adaptive turns off the filter's adaptation to its innovations (on by\n"
-      "  default, estimator.md); --adaptive (the default) is accepted.\n",
+      "  --adaptive turns on the filter's adaptation to its innovations (estimator.md).\n",
       problem);
   return 2;
 }
@@ -43,8 +41,7 @@ int Usage(const char* problem) {
 
 int KfginsMain(int argc, char** argv) {
   std::string config_path, navd_conf;
-  bool self_align = false;
-  std::optional<bool> adaptive;
+  bool self_align = false, adaptive = false;
   double nhc_std_mps = 0.0;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -57,8 +54,8 @@ int KfginsMain(int argc, char** argv) {
       nhc_std_mps = std::strtod(argv[++i], &end);
       if (end == argv[i] || *end != '\0' || !(nhc_std_mps > 0) || !std::isfinite(nhc_std_mps))
         return Usage("--nhc-std-mps: not a positive number of m/s");
-    } else if (a == "--adaptive" || a == "--no-adaptive") {
-      adaptive = a == "--adaptive";
+    } else if (a == "--adaptive") {
+      adaptive = true;
     } else if (a == "--align") {
       self_align = true;
     } else {
@@ -74,7 +71,7 @@ int KfginsMain(int argc, char** argv) {
       params.gnss_max_latency = est::Nanoseconds{0};
     }
     if (nhc_std_mps > 0) params.ekf.nhc_std_mps = nhc_std_mps;
-    if (adaptive) params.robust.adaptive = *adaptive;
+    if (adaptive) params.robust.adaptive = true;
     const ds::KfginsRunResult r = ds::RunKfgins(cfg, params, self_align);
     std::fprintf(
         stderr,

@@ -279,21 +279,6 @@ TEST(NavigatorRobustnessTest, LastingJumpIsBelievedAfterTheHold) {
   EXPECT_EQ(rig.nav.stats().gnss_glitches, 1u);
 }
 
-// The defaults adapt (navd's [filter] adaptive = true) and still bridge a receiver glitch.
-TEST(NavigatorRobustnessTest, DefaultsAdaptAndBridgeAGlitch) {
-  NavigatorParams p = Params(true);
-  p.robust = RobustnessParams{};
-  ASSERT_TRUE(p.robust.adaptive);
-  const Truth truth{1.0, 0.01};
-  Rig rig(p, truth, 0.005, 5e-5, Eigen::Vector3d::Zero());
-  rig.Run(100.0, 0.1);
-  rig.glitch_N_m = Eigen::Vector3d(4.0, 3.0, 0.0);
-  EXPECT_LT(RunMaxError(rig, 103.0, Eigen::Vector3d::Zero()), 0.10);
-  rig.glitch_N_m.setZero();
-  EXPECT_LT(RunMaxError(rig, 150.0, Eigen::Vector3d::Zero()), 0.10);
-  EXPECT_EQ(rig.nav.stats().gnss_glitches, 1u);
-}
-
 // The step check itself: a wrong model's displacement error is no step, a receiver's jump is.
 TEST(GnssStepCheckTest, StepsOfTheFixesNotOfTheIns) {
   GnssStepCheck check;

@@ -71,9 +71,9 @@ struct RobustnessParams {
   /// position NIS runs above its χ² band, fade to fixes that keep being rejected or return
   /// after a gap. Off: the filter of the configured noise alone (a gate, a reset after
   /// reset_after_rejected).
-  /// On by default since the GNSS step check (below) keeps a receiver jump from being taken
-  /// as a wrong model (variant_glitch_5m: 4.4 m RMSE before it); see estimator.md.
-  bool adaptive = true;
+  /// Off by default: with it on, variant_glitch_5m (a 5 m receiver jump that lasts) failed, the
+  /// jump being taken as a wrong model (4.4 m RMSE against 0.022 m); see estimator.md.
+  bool adaptive = false;
   int reject_fade_count = 3;                     ///< this many rejected fixes in a row …
   Nanoseconds reject_fade_after{2'000'000'000};  ///< … over this long: fade to the next one
   /// a fix after this long without any fix is gated against a covariance faded to it
