@@ -34,6 +34,9 @@ TEST(SerialEndpointFullPtyTest, TheCaptureRecordsWhatAFullPtyDroppedAsDrops) {
       ASSERT_TRUE(ep.Queue(m));
       sent += m.bytes;
     }
+    // a host has it open and does not read (a port nobody has open would drop every byte)
+    const int idle = open(link.c_str(), O_RDONLY | O_NOCTTY | O_NONBLOCK);
+    ASSERT_GE(idle, 0);
     EXPECT_TRUE(ep.WriteChunks(40));  // nobody reads: the rest is dropped after the stall
     EXPECT_GT(ep.bytes_dropped_unread(), 0u);
     EXPECT_LT(ep.bytes_dropped_unread(), sent.size());
@@ -49,6 +52,7 @@ TEST(SerialEndpointFullPtyTest, TheCaptureRecordsWhatAFullPtyDroppedAsDrops) {
       read_back.append(buf, static_cast<std::size_t>(n));
     }
     close(fd);
+    close(idle);
   }
   std::string tx, drop, both;
   for (const CaptureRecord& r : ReadCapture(cap).records) {

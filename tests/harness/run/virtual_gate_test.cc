@@ -97,6 +97,9 @@ TEST(VirtualGateTest, ALinkNoLongerReadHoldsNothingBack) {
   Links l("stop");
   int waits = 0;
   VirtualGate gate({&l.imu, &l.gps}, 4096, [&waits](std::size_t, bool) { return ++waits < 50; });
+  // a host that has ttyG open and stops reading it (a port nobody has open drops its bytes)
+  const int idle = open((l.dir / "ttyG").c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY);
+  ASSERT_GE(idle, 0);
   SerialMessage m;
   m.t_ready = TimeFromSeconds(1.0);
   m.bytes = "$GPGGA,,,,,,0,,,,,,,,*66\r\n";
@@ -115,6 +118,7 @@ TEST(VirtualGateTest, ALinkNoLongerReadHoldsNothingBack) {
   EXPECT_EQ(waits, 0) << "the unread GNSS bytes hold nothing back";
   EXPECT_TRUE(gate.BeforeWrite(l.gps, 10, t_imu, t_imu));
   EXPECT_EQ(waits, 0);
+  close(idle);
 }
 
 // With a max_skew, a link refused by TryWrite is not asked about again for a short wall time
@@ -130,11 +134,11 @@ TEST(VirtualGateTest, ATryWriteRefusalIsNotAskedAgainAtOnce) {
   m.bytes = std::string(40, 'G');
   ASSERT_TRUE(l.gps.Queue(m));
   ASSERT_TRUE(gate.TryWrite(l.gps, m.bytes.size(), m.t_ready, m.t_ready));
+  const int fd = open((l.dir / "ttyG").c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY);
+  ASSERT_GE(fd, 0);
   l.gps.WriteChunks(1);
   // the IMU's bytes 0.5 s later: the GNSS bytes must be read first
   const Time t = TimeFromSeconds(1.5);
-  const int fd = open((l.dir / "ttyG").c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY);
-  ASSERT_GE(fd, 0);
   const auto refused = std::chrono::steady_clock::now();
   EXPECT_FALSE(gate.TryWrite(l.imu, 25, t, t));
   char buf[64];
