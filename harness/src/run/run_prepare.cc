@@ -130,7 +130,6 @@ void StartEstimator(RunContext& ctx, const std::string& command) {
 // then goes unread is captured as drops and judged as such.
 void AwaitHostLinksOpen(RunContext& ctx) {
   const std::int64_t start = NowNs();
-  const std::int64_t limit_ns = ctx.silence_ns;
   for (;;) {
     bool all_open = true;
     for (const auto& ports : ctx.set.endpoints) {
@@ -141,7 +140,7 @@ void AwaitHostLinksOpen(RunContext& ctx) {
     const double waited_s = static_cast<double>(NowNs() - start) * 1e-9;
     ctx.report.host_open_wait_s = waited_s;
     if (all_open || !ctx.EstimatorRunning() || ctx.Interrupted()) return;
-    if (NowNs() - start > limit_ns) {
+    if (NowNs() - start > ctx.silence_ns) {
       ctx.report.problems.push_back("the estimator had not opened every link it reads " +
                                     SecondsText(waited_s) +
                                     " s after it started: the run began without it");
