@@ -1,4 +1,4 @@
-#include "hil/harness/run/scheduler.h"
+#include "hil/harness/engine/engine.h"
 
 #include <poll.h>
 

@@ -1,4 +1,4 @@
-#include "hil/harness/run/pacing_thread.h"
+#include "hil/harness/engine/pacing_thread.h"
 
 #include <chrono>
 

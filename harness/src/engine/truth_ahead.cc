@@ -1,4 +1,4 @@
-#include "hil/harness/run/truth_ahead.h"
+#include "hil/harness/engine/truth_ahead.h"
 
 #include <algorithm>
 

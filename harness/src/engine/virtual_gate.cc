@@ -1,4 +1,4 @@
-#include "hil/harness/run/virtual_gate.h"
+#include "hil/harness/engine/virtual_gate.h"
 
 #include <fcntl.h>
 #include <sched.h>

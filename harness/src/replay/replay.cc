@@ -12,7 +12,7 @@
 #include "hil/harness/links/capture_format.h"
 #include "hil/harness/replay/replay_device.h"
 #include "hil/harness/run/device_set.h"
-#include "hil/harness/run/scheduler.h"
+#include "hil/harness/engine/engine.h"
 
 namespace hil::harness {
 namespace {

@@ -2,7 +2,7 @@
 // schedule gives, bit for bit, the samples of one integrator asked the same times in order, both
 // where the schedule holds and where it changes (a device's rate changed by a host: the times
 // the worker did not predict come from the caller's own integrator).
-#include "hil/harness/run/truth_ahead.h"
+#include "hil/harness/engine/truth_ahead.h"
 
 #include <chrono>
 #include <optional>
@@ -12,7 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "../truth/truth_test_scenarios.h"
-#include "expect_same_sample.h"
+#include "../run/expect_same_sample.h"
 
 namespace hil::harness {
 namespace {

@@ -1,7 +1,7 @@
 // VirtualGate's first host turn (virtual_gate.h): it waits until the host holds its links and
 // sleeps, and then knows whether the host holds any of them open for writing. A read-only host
 // cannot write what a periodic turn waits for (Scheduler::HostTurn then does not wait).
-#include "hil/harness/run/virtual_gate.h"
+#include "hil/harness/engine/virtual_gate.h"
 
 #include <fcntl.h>
 #include <signal.h>

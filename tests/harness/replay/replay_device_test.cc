@@ -12,7 +12,7 @@
 #include "hil/firmware_emu/link/can_wire_frame.h"
 #include "hil/harness/links/capture_format.h"
 #include "hil/harness/run/device_set.h"
-#include "hil/harness/run/scheduler.h"
+#include "hil/harness/engine/engine.h"
 
 namespace hil::harness {
 namespace {

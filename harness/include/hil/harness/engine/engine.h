@@ -36,9 +36,9 @@
 #include "hil/harness/faults/byte_faults.h"
 #include "hil/harness/faults/fault_record.h"
 #include "hil/harness/run/device_set.h"
-#include "hil/harness/run/pacing_thread.h"
-#include "hil/harness/run/truth_ahead.h"
-#include "hil/harness/run/virtual_gate.h"
+#include "hil/harness/engine/pacing_thread.h"
+#include "hil/harness/engine/truth_ahead.h"
+#include "hil/harness/engine/virtual_gate.h"
 #include "hil/truth/truth_integrator.h"
 
 namespace hil::harness {

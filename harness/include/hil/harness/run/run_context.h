@@ -27,9 +27,9 @@
 #include "hil/harness/run/fix_baseline.h"
 #include "hil/harness/run/progress.h"
 #include "hil/harness/run/run.h"
-#include "hil/harness/run/scheduler.h"
+#include "hil/harness/engine/engine.h"
 #include "hil/harness/run/truth_table.h"
-#include "hil/harness/run/virtual_gate.h"
+#include "hil/harness/engine/virtual_gate.h"
 #include "hil/harness/scenario/scenario.h"
 
 namespace hil::harness {

@@ -11,7 +11,7 @@
 #include <cstdint>
 
 #include "hil/harness/run/run_context.h"
-#include "hil/harness/run/scheduler.h"
+#include "hil/harness/engine/engine.h"
 
 namespace hil::harness {
 
