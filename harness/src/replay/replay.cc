@@ -9,10 +9,11 @@
 
 #include "hil/firmware_emu/link/candump_log.h"
 #include "hil/firmware_emu/link/realtime_pacer.h"
+#include "hil/harness/engine/engine.h"
+#include "hil/harness/engine/wall_clock_pacer.h"
 #include "hil/harness/links/capture_format.h"
 #include "hil/harness/replay/replay_device.h"
 #include "hil/harness/run/device_set.h"
-#include "hil/harness/engine/engine.h"
 
 namespace hil::harness {
 namespace {
@@ -109,7 +110,7 @@ DeviceSet MakeReplaySet(ReplayPlan& plan, const std::string& dir) {
 }
 
 // A replay goes on to its last recorded time: nobody is watched.
-class PlayToTheEnd final : public SchedulerMonitor {
+class PlayToTheEnd final : public EngineMonitor {
  public:
   bool KeepGoing(Time) override { return true; }
 };
@@ -166,13 +167,14 @@ ReplayResult ReplayCaptures(const ReplayOptions& opt) {
   link::RealtimePacer::RequestRealtimeScheduling();
   std::this_thread::sleep_for(
       std::chrono::nanoseconds(static_cast<std::int64_t>(opt.start_delay_s * 1e9)));
-  const link::RealtimePacer pacer(opt.speed);
-  Scheduler scheduler(set, &pacer, t_last);
+  WallClockPacer pacer{link::RealtimePacer(opt.speed)};  // emulated t = 0 is now
+  Engine engine(EngineDevices{set.devices, set.endpoints, set.can.get(), set.base, set.steering},
+                pacer, std::make_unique<NoHostTurns>(), t_last);
   PlayToTheEnd monitor;
-  scheduler.Run(monitor, nullptr);
-  scheduler.Flush();
+  engine.Run(monitor, nullptr);
+  engine.Flush();
   WaitUntilRead(set);
-  return ResultOf(set, pacer);
+  return ResultOf(set, *pacer.wall_clock());
 }
 
 }  // namespace hil::harness

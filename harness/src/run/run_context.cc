@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "hil/harness/engine/virtual_pacer.h"
 #include "hil/harness/run/run_guard.h"
 
 namespace hil::harness {
@@ -42,7 +43,8 @@ RunContext::RunContext(const Scenario& s, const RunOptions& o)
       silence_ns(static_cast<std::int64_t>(silence_s * 1e9)),
       t_end(TimeFromSeconds(s.duration_s)),
       t_from(TimeFromSeconds(s.evaluate_from_s)),
-      fault_recorder(s.faults) {}
+      fault_recorder(s.faults),
+      pacer(std::make_unique<VirtualPacer>()) {}
 
 bool RunContext::Interrupted() {
   if (stop_reason) return true;

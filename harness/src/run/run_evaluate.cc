@@ -86,16 +86,19 @@ void EvaluateTiming(RunContext& ctx, const std::vector<EstimateRecord>& estimate
                     ReportSeries& series) {
   RunReport& report = ctx.report;
   const double speed = ctx.options.speed;
-  report.timing = ComputeOutputTiming(estimates, ctx.t_from, ctx.t_end, ctx.pacer ? speed : 1.0);
-  if (!ctx.pacer) {  // arrival times mean nothing in virtual mode
+  const link::RealtimePacer* wall = ctx.pacer->wall_clock();  // none in virtual mode
+  const bool on_wall_clock = ctx.pacer->stepping() != Stepping::kVirtual;
+  report.timing =
+      ComputeOutputTiming(estimates, ctx.t_from, ctx.t_end, on_wall_clock ? speed : 1.0);
+  if (!on_wall_clock) {  // arrival times mean nothing in virtual mode
     report.timing.jitter_p50_ms.reset(), report.timing.jitter_p99_ms.reset(),
         report.timing.jitter_max_ms.reset();
   }
   report.output_rate_hz = report.timing.output_rate_hz;
-  if (ctx.pacer && !estimates.empty()) {
+  if (on_wall_clock && !estimates.empty()) {
     for (const auto& e : estimates) {
-      series.latency_ms.push_back(
-          static_cast<double>(e.wall_rx_ns - ctx.pacer->WallNsOf(e.t_validity)) * 1e-6 * speed);
+      series.latency_ms.push_back(static_cast<double>(e.wall_rx_ns - wall->WallNsOf(e.t_validity)) *
+                                  1e-6 * speed);
     }
     report.latency =
         LatencyStats{Percentile(series.latency_ms, 50), Percentile(series.latency_ms, 99),
@@ -109,7 +112,7 @@ void CountLinksAndDevices(RunContext& ctx) {
   RunReport& report = ctx.report;
   // real time (not lockstep) has no gate to notice a host that does not read: a link it never
   // took a byte of is that (a few bytes lost while it starts are a UART's with no listener yet)
-  const bool free_running = ctx.pacer && !ctx.lockstep && ctx.estimator;
+  const bool free_running = ctx.pacer->stepping() == Stepping::kFreeRunning && ctx.estimator;
   for (const auto& ports : ctx.set.endpoints) {
     for (const auto& ep : ports) {
       report.gnss_bytes += ep->uart().bytes_sent();
@@ -156,7 +159,7 @@ void CheckLinks(RunContext& ctx) {
                       ep->bytes_dropped_attached()});
     }
   }
-  const bool free_running = ctx.pacer && !ctx.lockstep;
+  const bool free_running = ctx.pacer->stepping() == Stepping::kFreeRunning;
   report.link_integrity = CheckLinkIntegrity(
       sent, ctx.health, free_running ? ctx.health.first_counters : std::map<std::string, double>{},
       ctx.scenario.faults);
@@ -373,10 +376,10 @@ void EvaluateClosedLoop(RunContext& ctx, const TruthTable& truth) {
     report.row_following =
         ScoreRowDeviation(*ctx.set.world, TruthTrack(ctx, truth, ctx.t_from), kRowMargin_m);
   c.stopped = std::fabs(c.final_speed_mps) < 0.01;
-  if (ctx.scheduler) c.answered_ticks_without_turn = ctx.scheduler->skipped_control_turns();
-  c.stepping = !ctx.pacer ? "virtual" : ctx.lockstep ? "lockstep" : "free_running";
-  if (ctx.lockstep && ctx.scheduler) {
-    const Scheduler::PaceLateness& p = ctx.scheduler->pace_lateness();
+  if (ctx.engine) c.answered_ticks_without_turn = ctx.engine->skipped_control_turns();
+  c.stepping = SteppingName(ctx.pacer->stepping());
+  if (ctx.pacer->stepping() == Stepping::kLockstep && ctx.engine) {
+    const PaceLateness p = ctx.pacer->lateness();
     c.paced_actions = p.actions;
     c.late_actions = p.late;
     c.max_late_ms = static_cast<double>(p.max_late_ns) * 1e-6;

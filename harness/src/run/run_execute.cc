@@ -7,7 +7,9 @@
 #include <string>
 
 #include "hil/harness/dut/process_group.h"
+#include "hil/harness/engine/virtual_host_turns.h"
 #include "hil/harness/report/run_outputs.h"
+#include "hil/harness/run/machine_load.h"
 
 #include "run_phases.h"
 
@@ -26,11 +28,13 @@ constexpr std::size_t kSkewLinkBacklogBytes = 16384;
 constexpr int kIdleChecks = 3;
 constexpr useconds_t kIdleCheckUs = 1000;
 
-// Virtual mode (or lockstep) with an estimator: the host sees its links' bytes in emulated-time
-// order (virtual_gate.h); a wait that sees no byte read for the silence timeout ends the run as a
-// hang or a closed port (RunWatchdog::OnGateWait).
-void MakeGate(RunContext& ctx, RunWatchdog& watchdog) {
-  if ((ctx.pacer && !ctx.lockstep) || ctx.options.emulate_only) return;
+// Virtual mode (or lockstep) with an estimator: host turns, and a gate through which the host
+// sees its links' bytes in emulated-time order (virtual_gate.h); a wait that sees no byte read for
+// the silence timeout ends the run as a hang or a closed port (RunWatchdog::OnGateWait). Free
+// running, or no host: the hosts are read after every event.
+std::unique_ptr<HostTurns> MakeHostTurns(RunContext& ctx, RunWatchdog& watchdog) {
+  if (ctx.pacer->stepping() == Stepping::kFreeRunning || ctx.options.emulate_only)
+    return std::make_unique<NoHostTurns>();
   std::vector<SerialEndpoint*> read_by_host;
   for (const auto& ports : ctx.set.endpoints) {
     for (const auto& ep : ports) {
@@ -44,7 +48,15 @@ void MakeGate(RunContext& ctx, RunWatchdog& watchdog) {
         return watchdog.OnGateWait(unread, new_wait);
       },
       ctx.estimator->pid(), skew);
-  ctx.scheduler->set_gate(&*ctx.gate);
+  ctx.pacer->UseGate(*ctx.gate);
+  // closed loop: every control tick is a host turn (lockstep with the controller)
+  Duration control_period{};
+  if (ctx.scenario.closed_loop.enabled) {
+    control_period = DurationFromSeconds(ctx.scenario.closed_loop.control_period_s);
+    // the controller's frames on a bus: stamped at the turn that hands them to the ECU
+    if (ctx.set.can && ctx.set.steering) ctx.set.can->set_stamp_at_turns(true);
+  }
+  return std::make_unique<VirtualHostTurns>(*ctx.gate, control_period);
 }
 
 // Bytes not yet read on the links the estimator reads (none named: all).
@@ -134,46 +146,37 @@ void Execute(RunContext& ctx, RunWatchdog& watchdog) {
   const Scenario& scenario = ctx.scenario;
   ctx.byte_faults.emplace(scenario.faults, ctx.seed, &ctx.fault_recorder);
   ctx.progress.emplace(ctx.options.progress);
-  ctx.scheduler.emplace(ctx.set, ctx.pacer && !ctx.lockstep ? &*ctx.pacer : nullptr, ctx.t_end);
-  if (ctx.lockstep) {
-    ctx.scheduler->set_lockstep_pace(&*ctx.pacer);
-    for (const auto& ports : ctx.set.endpoints) {
-      for (const auto& ep : ports) ep->set_wall_stamps(true);
-    }
-  }
-  ctx.scheduler->set_byte_faults(&*ctx.byte_faults);
-  ctx.scheduler->set_recorder(&ctx.fault_recorder);
+  ctx.engine.emplace(EngineDevices{ctx.set.devices, ctx.set.endpoints, ctx.set.can.get(),
+                                   ctx.set.base, ctx.set.steering},
+                     *ctx.pacer, MakeHostTurns(ctx, watchdog), ctx.t_end);
+  ctx.engine->set_byte_faults(&*ctx.byte_faults);
+  ctx.engine->set_recorder(&ctx.fault_recorder);
   ctx.baseline.emplace(ctx.set, &ctx.fault_recorder, ctx.fixes_csv);
   if (scenario.estimator.output == EstimatorOutput::kN2kSocketcan) {
-    Scheduler& scheduler = *ctx.scheduler;
+    Engine& engine = *ctx.engine;
     ctx.collector->AttachBus(
-        [&scheduler]() -> const std::vector<CanFrame>& { return scheduler.PollBus(); },
+        [&engine]() -> const std::vector<CanFrame>& { return engine.PollBus(); },
         scenario.start_unix_ns);
-  }
-  MakeGate(ctx, watchdog);
-  // closed loop: every control tick is a host turn (lockstep with the controller)
-  if (scenario.closed_loop.enabled && ctx.gate) {
-    ctx.scheduler->set_control_period(DurationFromSeconds(scenario.closed_loop.control_period_s));
-    // the controller's frames on a bus: stamped at the turn that hands them to the ECU
-    if (ctx.set.can && ctx.set.steering) ctx.set.can->set_stamp_at_turns(true);
   }
   // the truth for the evaluation, sampled on a thread of its own as the run goes (truth_table.h)
   ctx.truth_builder.emplace(scenario.truth);
   ctx.truth_builder->Ask(TruthCsvTimes(scenario));
   // the run's own samples serve the times they have (closed loop: the times they miss are
   // sampled after the run, from its commands replayed)
-  ctx.scheduler->set_truth_tap(
+  ctx.engine->set_truth_tap(
       [&builder = *ctx.truth_builder](const TruthSample& s) { builder.Offer(s); });
+  ctx.set.cpu_at_start = ReadCpuTicks();  // what the machine gave a real-time run from here on
   try {
-    ctx.scheduler->Run(watchdog, &scenario.truth);
+    ctx.engine->Run(watchdog, &scenario.truth);
   } catch (const std::exception& e) {
     ctx.stop_reason =
         std::string("the run failed at t = ") + SecondsText(ctx.t_now) + " s: " + e.what();
   }
-  if (!ctx.hang && !ctx.Interrupted()) ctx.scheduler->Flush();
+  if (!ctx.hang && !ctx.Interrupted()) ctx.engine->Flush();
+  ctx.set.threads = ctx.pacer->threads();
   if (scenario.closed_loop.enabled) {
-    ctx.truth_builder->SetCommands(ctx.scheduler->vehicle_commands());
-    if (ctx.scheduler->late_command_restarts() > 0) ctx.truth_builder->DiscardOffered();
+    ctx.truth_builder->SetCommands(ctx.engine->vehicle_commands());
+    if (ctx.engine->late_command_restarts() > 0) ctx.truth_builder->DiscardOffered();
   }
   for (const auto& ports : ctx.set.endpoints) {
     for (const auto& ep : ports) ep->FlushCapture();

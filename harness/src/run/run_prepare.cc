@@ -12,6 +12,8 @@
 #include <sys/stat.h>
 
 #include "hil/harness/dut/shell_substitute.h"
+#include "hil/harness/engine/lockstep_pacer.h"
+#include "hil/harness/engine/wall_clock_pacer.h"
 #include "hil/harness/report/run_outputs.h"
 #include "hil/harness/run/can_run.h"
 
@@ -240,12 +242,17 @@ void Prepare(RunContext& ctx) {
   if (opt.mode == RunMode::kRealtime) {
     const bool fifo = opt.nice < 0;  // a priority raise asked for: the pacing takes FIFO too
     if (fifo) link::RealtimePacer::RequestRealtimeScheduling();
-    ctx.pacer.emplace(opt.speed);
-    ctx.pacer->set_realtime_threads(fifo);
+    link::RealtimePacer clock(opt.speed);  // emulated t = 0 is now
+    clock.set_realtime_threads(fifo);
     // a closed loop runs lockstep (the same bytes as in virtual mode), except where frames carry
     // no time and must arrive at their own (CheckCanRunMode)
-    ctx.lockstep = scenario.closed_loop.enabled && !opt.emulate_only &&
-                   !scenario.can.imu_to_estimator && !opt.free_running;
+    const bool lockstep = scenario.closed_loop.enabled && !opt.emulate_only &&
+                          !scenario.can.imu_to_estimator && !opt.free_running;
+    if (lockstep) {
+      ctx.pacer = std::make_unique<LockstepPacer>(clock);
+    } else {
+      ctx.pacer = std::make_unique<WallClockPacer>(clock);
+    }
   }
   ctx.collector.emplace(MakeEstimateReader(scenario.estimator.output, scenario.start_unix_ns),
                         ctx.estimator ? &*ctx.estimator : nullptr, ctx.nav_pty.get(),

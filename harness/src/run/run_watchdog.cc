@@ -8,7 +8,8 @@ namespace hil::harness {
 
 void RunWatchdog::OnDeviceEvents(Time t) {
   ctx_.baseline->Record(t);
-  if (ctx_.pacer && !ctx_.lockstep) StopController(t);  // free-running real time: no host turns
+  // free-running real time: no host turns
+  if (ctx_.pacer->stepping() == Stepping::kFreeRunning) StopController(t);
 }
 
 void RunWatchdog::OnHostTurn(Time t) { StopController(t); }
@@ -58,7 +59,7 @@ bool RunWatchdog::KeepGoing(Time t) {
   ctx_.progress->Update(ToSeconds(t), ctx_.scenario.duration_s, records.size());
   if (ctx_.options.emulate_only) return true;
   if (!EstimatorStillRunning()) return false;
-  if (ctx_.pacer && ctx_.SilentForNs() > ctx_.silence_ns) {
+  if (ctx_.pacer->stepping() != Stepping::kVirtual && ctx_.SilentForNs() > ctx_.silence_ns) {
     ctx_.hang = "no output for " + SecondsText(ctx_.silence_s) + " s";
     return false;
   }

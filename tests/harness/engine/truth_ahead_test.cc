@@ -11,8 +11,8 @@
 
 #include <gtest/gtest.h>
 
-#include "../truth/truth_test_scenarios.h"
 #include "../run/expect_same_sample.h"
+#include "../truth/truth_test_scenarios.h"
 
 namespace hil::harness {
 namespace {

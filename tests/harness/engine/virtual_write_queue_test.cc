@@ -13,9 +13,9 @@
 
 #include <gtest/gtest.h>
 
+#include "hil/harness/engine/virtual_gate.h"
 #include "hil/harness/links/capture_format.h"
 #include "hil/harness/links/serial_endpoint.h"
-#include "hil/harness/engine/virtual_gate.h"
 
 namespace hil::harness {
 namespace {

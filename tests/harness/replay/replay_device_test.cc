@@ -1,5 +1,5 @@
 // ReplayDevice: recorded chunks and frames come out at their recorded times, in time order, with
-// their recorded byte timing and every frame flag; driven by the Scheduler in virtual mode, a
+// their recorded byte timing and every frame flag; driven by the Engine in virtual mode, a
 // serial endpoint's capture holds exactly the recorded times.
 #include "hil/harness/replay/replay_device.h"
 
@@ -10,9 +10,10 @@
 #include <gtest/gtest.h>
 
 #include "hil/firmware_emu/link/can_wire_frame.h"
+#include "hil/harness/engine/engine.h"
+#include "hil/harness/engine/virtual_pacer.h"
 #include "hil/harness/links/capture_format.h"
 #include "hil/harness/run/device_set.h"
-#include "hil/harness/engine/engine.h"
 
 namespace hil::harness {
 namespace {
@@ -78,14 +79,14 @@ TEST(ReplayDeviceTest, RecordedFramesKeepEveryFlagOnTheWire) {
   EXPECT_EQ(link::FromDeviceFrame(link::ToDeviceFrame(fd, TimeFromNs(6))), fd);
 }
 
-class OnlyTheEnd final : public SchedulerMonitor {
+class OnlyTheEnd final : public EngineMonitor {
  public:
   void OnDeviceEvents(Time t) override { served.push_back(t); }
   bool KeepGoing(Time) override { return true; }
   std::vector<Time> served;
 };
 
-TEST(ReplayDeviceTest, SchedulerPlaysItOnItsRecordedTimesInVirtualMode) {
+TEST(ReplayDeviceTest, TheEnginePlaysItOnItsRecordedTimesInVirtualMode) {
   const fs::path dir =
       fs::temp_directory_path() / ("hil_replay_device_" + std::to_string(getpid()));
   fs::remove_all(dir);
@@ -100,10 +101,12 @@ TEST(ReplayDeviceTest, SchedulerPlaysItOnItsRecordedTimesInVirtualMode) {
     ports.push_back(std::make_unique<SerialEndpoint>("ttyGPS", (dir / "ttyGPS").string(), 9600, 1,
                                                      (dir / "captures" / "ttyGPS.cap").string()));
     set.endpoints.push_back(std::move(ports));
-    Scheduler scheduler(set, nullptr, TimeFromNs(2'000'000));
+    VirtualPacer pacer;
+    Engine engine(EngineDevices{set.devices, set.endpoints, set.can.get(), set.base, set.steering},
+                  pacer, std::make_unique<NoHostTurns>(), TimeFromNs(2'000'000));
     OnlyTheEnd monitor;
-    scheduler.Run(monitor, nullptr);
-    scheduler.Flush();
+    engine.Run(monitor, nullptr);
+    engine.Flush();
     EXPECT_EQ(monitor.served, (std::vector<Time>{TimeFromNs(1'000'000), TimeFromNs(2'000'000)}));
   }
   const Capture c = ReadCapture(dir / "captures" / "ttyGPS.cap");

@@ -19,6 +19,9 @@
 #include "hil/harness/dut/estimate_collector.h"
 #include "hil/harness/dut/estimator_process.h"
 #include "hil/harness/dut/group_reaper.h"
+#include "hil/harness/engine/engine.h"
+#include "hil/harness/engine/pacer.h"
+#include "hil/harness/engine/virtual_gate.h"
 #include "hil/harness/faults/byte_faults.h"
 #include "hil/harness/faults/fault_record.h"
 #include "hil/harness/faults/fault_report.h"
@@ -27,9 +30,7 @@
 #include "hil/harness/run/fix_baseline.h"
 #include "hil/harness/run/progress.h"
 #include "hil/harness/run/run.h"
-#include "hil/harness/engine/engine.h"
 #include "hil/harness/run/truth_table.h"
-#include "hil/harness/engine/virtual_gate.h"
 #include "hil/harness/scenario/scenario.h"
 
 namespace hil::harness {
@@ -79,18 +80,17 @@ struct RunContext {
   OwnedFd nav_fifo;
   OwnedFd odometry_fifo;  ///< navd_mode gyro_odometry: the controller forwards the encoders here
   std::int64_t estimator_start_ns = 0;
-  std::optional<link::RealtimePacer> pacer;  ///< real time or scaled; none in virtual mode
-  /// Real time or scaled, closed loop: lockstep paced by `pacer` (Scheduler::set_lockstep_pace):
-  /// virtual mode's run, gate and host turns, each action held until its wall-clock time.
-  bool lockstep = false;
+  /// How the run meets the wall clock (engine/pacer.h: virtual, free running, lockstep), and
+  /// the path its bytes take to the links.
+  std::unique_ptr<Pacer> pacer;
   std::optional<EstimateCollector> collector;
   EstimatorHealth health;
 
   // execute
   std::optional<ByteFaultInjector> byte_faults;
   std::optional<ProgressLine> progress;
-  std::optional<Scheduler> scheduler;
   std::optional<VirtualGate> gate;  ///< virtual mode (or lockstep) with an estimator
+  std::optional<Engine> engine;
   std::optional<FixBaseline> baseline;
   std::optional<TruthTableBuilder> truth_builder;
   std::size_t estimates_asked = 0, fixes_asked = 0;  ///< records handed to the truth builder

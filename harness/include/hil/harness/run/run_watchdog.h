@@ -10,12 +10,12 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "hil/harness/engine/engine_monitor.h"
 #include "hil/harness/run/run_context.h"
-#include "hil/harness/engine/engine.h"
 
 namespace hil::harness {
 
-class RunWatchdog final : public SchedulerMonitor {
+class RunWatchdog final : public EngineMonitor {
  public:
   explicit RunWatchdog(RunContext& ctx) : ctx_(ctx) {}
   void OnDeviceEvents(Time t) override;

@@ -1,0 +1,88 @@
+#pragma once
+/// @file
+/// The devices' side of the engine's step: a device's output goes to its links (through the byte
+/// faults of the timeline and the pacer's write path), what the hosts wrote and what others put
+/// on the CAN bus goes to the devices. Byte faults are applied to whole messages before they
+/// enter a UART queue, so the bytes depend only on the scenario and the seed.
+
+#include <poll.h>
+
+#include <cstddef>
+#include <vector>
+
+#include "hil/harness/engine/engine_devices.h"
+#include "hil/harness/engine/pacer.h"
+#include "hil/harness/faults/byte_faults.h"
+#include "hil/harness/faults/fault_record.h"
+
+namespace hil::harness {
+
+class DeviceIo {
+ public:
+  /// `hold_actuators`: the actuators' bytes wait for the next host turn (ReleaseHeld).
+  DeviceIo(EngineDevices devices, Pacer& pacer, bool hold_actuators);
+
+  EngineDevices& devices() { return devices_; }
+  const EngineDevices& devices() const { return devices_; }
+  Pacer& pacer() { return pacer_; }
+  /// The byte faults applied to every message and frame (none when not set).
+  void set_byte_faults(ByteFaultInjector* faults) { faults_ = faults; }
+  /// Where the faults applied here are counted (receiver messages lost to its transmit buffer in
+  /// an output overload).
+  void set_recorder(FaultRecorder* recorder) { recorder_ = recorder; }
+
+  /// Queues devices[d]'s output on its links and the bus, and sends what may go now.
+  void Dispatch(std::size_t d, DeviceOutput& out);
+  /// Hands the bytes hosts wrote since the last call to their devices, at the pacer's
+  /// HostBytesTime(t_host). Returns true when a device queued a reply.
+  bool PollHosts(Time t_host, DeviceOutput& out);
+  /// One poll() of every endpoint's host side (host_fds()'s revents).
+  void PollHostFds();
+  /// One per serial endpoint, in device and port order, as the last PollHostFds() left them.
+  const std::vector<pollfd>& host_fds() const { return host_fds_; }
+  /// Whether a host has bytes waiting on an endpoint.
+  bool HostWrote();
+  /// Reads what others put on the bus now and returns every frame so far.
+  const std::vector<CanFrame>& PollBus();
+  /// Frames others put on the bus (the estimator's NMEA 2000 output, a controller's commands).
+  std::vector<CanFrame>& bus_frames() { return bus_frames_; }
+  /// The bus frames not handed to the devices yet (marked handed).
+  std::vector<CanFrame> TakeUnrouted();
+  /// A frame from the bus reaches every device at `t`.
+  void DeliverBusFrame(Time t, const CanFrame& frame, DeviceOutput& out);
+  /// Queues the actuators' held bytes for writing; false when none were held.
+  bool ReleaseHeld();
+  /// Writes everything queued now unless the gate gave up already; false once it has.
+  bool SendAll();
+  /// The gate gave up a wait (or a host turn did): the run stops, the bytes not written stay.
+  bool refused() const { return refused_; }
+  void Refuse() { refused_ = true; }
+  /// The latest event time the devices were served at.
+  Time t_last_event() const { return t_last_event_; }
+  void set_t_last_event(Time t) { t_last_event_ = t; }
+
+ private:
+  bool Actuator(std::size_t d) const;
+  void QueueMessage(std::size_t d, SerialEndpoint& ep, const SerialMessage& m);
+
+  EngineDevices devices_;
+  Pacer& pacer_;
+  const bool hold_actuators_;
+  ByteFaultInjector* faults_ = nullptr;
+  FaultRecorder* recorder_ = nullptr;
+  bool refused_ = false;
+  Time t_last_event_{};
+  std::vector<CanFrame> bus_frames_;
+  std::size_t bus_routed_ = 0;    // bus_frames_ handed to the devices or queued
+  std::vector<pollfd> host_fds_;  // one per serial endpoint, in device and port order
+  /// The actuators' bytes queued on their links since the last host turn.
+  struct Held {
+    SerialEndpoint* ep;
+    std::size_t bytes;
+    Time t;
+  };
+  std::vector<Held> held_;
+  std::vector<SerialMessage> carried_;  // Dispatch's scratch: a message after the byte faults
+};
+
+}  // namespace hil::harness

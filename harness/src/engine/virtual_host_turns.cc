@@ -1,0 +1,142 @@
+#include "hil/harness/engine/virtual_host_turns.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace hil::harness {
+
+VirtualHostTurns::VirtualHostTurns(VirtualGate& gate, Duration control_period)
+    : gate_(gate), control_period_(control_period), next_control_turn_(Time{} + control_period) {}
+
+Time VirtualHostTurns::NextAction() const {
+  Time t = NextHostTurn();
+  if (!arrivals_.empty()) t = std::min(t, arrivals_.front().t);
+  if (!bus_arrivals_.empty()) t = std::min(t, bus_arrivals_.front().t);
+  return t;
+}
+
+bool VirtualHostTurns::BeforeEvent(Time t_event, Time t_end, EngineMonitor& monitor, DeviceIo& io,
+                                   DeviceOutput& out) {
+  if (!arrivals_.empty() && arrivals_.front().t <= std::min(t_event, t_end)) {
+    DeliverHostBytes(arrivals_.front(), io, out);
+    arrivals_.pop_front();
+    return true;
+  }
+  if (!bus_arrivals_.empty() && bus_arrivals_.front().t <= std::min(t_event, t_end)) {
+    io.DeliverBusFrame(bus_arrivals_.front().t, bus_arrivals_.front().frame, out);
+    bus_arrivals_.pop_front();
+    return true;
+  }
+  const Time t_turn = NextHostTurn();
+  if (t_turn > t_event || t_turn > t_end) return false;
+  if (ControlTickAnswered(t_turn) && !monitor.ActsAtTurn(t_turn)) {
+    ++skipped_control_turns_;
+    while (next_control_turn_ <= t_turn) next_control_turn_ += control_period_;
+    return true;
+  }
+  if (HostTurn(t_turn, io)) {
+    monitor.OnHostTurn(t_turn);
+  } else {
+    io.Refuse();
+  }
+  return true;
+}
+
+Time VirtualHostTurns::NextHostTurn() const {
+  Time t = next_periodic_turn_;
+  if (control_period_ > Duration{}) t = std::min(t, next_control_turn_);
+  for (const Time a : answer_turns_) t = std::min(t, a);
+  return t;
+}
+
+bool VirtualHostTurns::ControlTickAnswered(Time t) const {
+  if (control_period_ == Duration{} || next_control_turn_ != t || next_periodic_turn_ <= t)
+    return false;
+  if (std::any_of(answer_turns_.begin(), answer_turns_.end(), [t](Time a) { return a <= t; }))
+    return false;
+  return !arrivals_.empty();
+}
+
+bool VirtualHostTurns::HostTurn(Time t, DeviceIo& io) {
+  while (next_periodic_turn_ <= t) next_periodic_turn_ += kHostTurnPeriod;
+  if (control_period_ > Duration{}) {
+    while (next_control_turn_ <= t) next_control_turn_ += control_period_;
+  }
+  std::erase_if(answer_turns_, [t](Time a) { return a <= t; });
+  // An open-loop host holding its links read-only has nothing for a turn to read: no wait (each
+  // one cost the host's backlog of work, seed004 0.5 s of 2.9). Bytes from it all the same (it
+  // opened a link for writing later) end that.
+  if (control_period_ == Duration{} && gate_.HostReadsOnly()) {
+    if (!io.HostWrote()) return true;
+    gate_.NoteHostWrote();
+  }
+  if (!io.SendAll() || !gate_.WaitHostIdle()) return false;
+  // The actuators' replies and status reach the controller now, with the host asleep: which of
+  // them it has read when a solution makes it compute a command does not depend on the machine
+  // (written when made, a status frame could be read before or after the solution that came
+  // meanwhile; guidanced's reset request after an ECU exit then went out one command early or
+  // late in some runs).
+  if (io.ReleaseHeld() && !io.SendAll()) return false;
+  const Time t_rx = ArrivalTime(t, io);
+  ReadHosts(t_rx, io);
+  if (io.devices().steering) ReadBus(t_rx, io);  // open-loop runs read the bus as before
+  return true;
+}
+
+Time VirtualHostTurns::ArrivalTime(Time t, DeviceIo& io) const {
+  // What the host wrote may answer any byte it has read (virtual mode writes bytes when they are
+  // made, ahead of their UART times): it arrives once the last of them has left its UART. Links
+  // the host does not read do not count (paper 003's UWB navd leaves the 9600 Bd GNSS link
+  // unread: its NMEA epochs held a controller's commands back by up to 0.66 s).
+  Time t_rx = t;
+  for (const auto& ports : io.devices().endpoints) {
+    for (const auto& ep : ports) {
+      if (gate_.Reads(*ep)) t_rx = std::max(t_rx, ep->last_queued_end());
+    }
+  }
+  return t_rx;
+}
+
+void VirtualHostTurns::ReadHosts(Time t_rx, DeviceIo& io) {
+  io.PollHostFds();  // one poll() instead of a read() per port (it hands over bytes in flight too)
+  const EngineDevices& set = io.devices();
+  std::size_t k = 0;
+  for (std::size_t d = 0; d < set.devices.size(); ++d) {
+    for (std::size_t p = 0; p < set.endpoints[d].size(); ++p) {
+      const pollfd& pf = io.host_fds()[k++];
+      if (pf.fd >= 0 && pf.revents == 0) continue;  // nothing from the host on this port
+      std::string rx = set.endpoints[d][p]->PollHost(t_rx, true);
+      if (!rx.empty()) arrivals_.push_back({t_rx, d, p, std::move(rx)});
+    }
+  }
+}
+
+void VirtualHostTurns::ReadBus(Time t_rx, DeviceIo& io) {
+  io.PollBus();
+  // the controller's frames arrive now: the capture says so (read between turns, they would be
+  // stamped whenever the run happened to look)
+  if (CanEndpoint* can = io.devices().can) {
+    const std::unique_lock<std::mutex> lock = io.pacer().LinksLock();
+    for (const CanFrame& f : can->TakeArrivals(t_rx)) io.bus_frames().push_back(f);
+  }
+  for (const CanFrame& f : io.TakeUnrouted()) bus_arrivals_.push_back({t_rx, f});
+}
+
+void VirtualHostTurns::DeliverHostBytes(const HostBytes& h, DeviceIo& io, DeviceOutput& out) {
+  const EngineDevices& set = io.devices();
+  const int port = static_cast<int>(h.port);
+  set.devices[h.device]->OnHostBytes(port, h.t, h.bytes, out);
+  SerialEndpoint& ep = *set.endpoints[h.device][h.port];
+  ep.set_baud(set.devices[h.device]->baud(port));
+  const bool answered = !out.serial.empty();
+  io.Dispatch(h.device, out);
+  io.SendAll();
+  // the host's next turn: when the answer has left the UART (it is written at once)
+  if (answered) {
+    for (const auto& e : set.endpoints[h.device]) {
+      if (e->last_queued_end() > h.t) answer_turns_.push_back(e->last_queued_end());
+    }
+  }
+}
+
+}  // namespace hil::harness

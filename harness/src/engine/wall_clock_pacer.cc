@@ -1,0 +1,102 @@
+#include "hil/harness/engine/wall_clock_pacer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <thread>
+#include <vector>
+
+#include "hil/harness/engine/device_io.h"
+
+namespace hil::harness {
+
+WallClockPacer::~WallClockPacer() = default;
+
+void WallClockPacer::Start(EngineDevices& devices) {
+  std::vector<SerialEndpoint*> serial;
+  for (auto& ports : devices.endpoints) {
+    for (auto& ep : ports) serial.push_back(ep.get());
+  }
+  events_cpu_start_ = link::ThreadCpuReading::Now();
+  pacing_ = std::make_unique<PacingThread>(serial, devices.can, clock_);
+  threads_ = {{"events", link::RealtimePacer::CurrentThreadSchedule()},
+              {"pacing", pacing_->schedule()}};
+}
+
+void WallClockPacer::End(bool drain) {
+  if (!pacing_) return;  // ended already (or never started)
+  if (drain) {
+    pacing_->Drain();
+  } else {
+    pacing_->Stop();
+  }
+  for (auto& [name, schedule] : threads_) {
+    if (name == "events") schedule.usage = link::ThreadCpuReading::Now().Since(events_cpu_start_);
+    if (name == "pacing") schedule.usage = pacing_->usage();
+  }
+  pacing_.reset();
+}
+
+std::unique_lock<std::mutex> WallClockPacer::LinksLock() {
+  return pacing_ ? std::unique_lock<std::mutex>(pacing_->links_mutex())
+                 : std::unique_lock<std::mutex>();
+}
+
+std::optional<std::int64_t> WallClockPacer::WakeNs(Time t_event, Time t_end,
+                                                   std::int64_t now_ns) const {
+  const std::int64_t due = clock_.WallNsOf(t_event) - kEventLeadNs;
+  if (t_event > t_end || due <= now_ns) return std::nullopt;
+  return std::min(due, now_ns + kHostPollPeriodNs);
+}
+
+bool WallClockPacer::Await(const StepTimes& step, DeviceIo& io, DeviceOutput& out) {
+  // the pacing thread writes the bytes and frames; this one idles until the next event, but reads
+  // a host command when it arrives (within ~1 ms), not at the next event: the device may answer
+  // in between
+  const std::optional<std::int64_t> wake =
+      WakeNs(step.t_event, step.t_end, link::RealtimePacer::MonotonicNs());
+  if (!wake) return false;
+  std::this_thread::sleep_until(
+      std::chrono::steady_clock::time_point(std::chrono::nanoseconds(*wake)));
+  io.PollHosts(step.t_event, out);
+  return true;
+}
+
+bool WallClockPacer::Send(CanEndpoint* can, bool write, std::unique_lock<std::mutex>& lock) {
+  (void)can, (void)write;
+  if (pacing_) {
+    lock.unlock();
+    pacing_->Wake();
+  }
+  return true;
+}
+
+bool WallClockPacer::Flush(DeviceIo& io) {
+  End(true);  // every byte and frame still queued leaves at its time
+  if (CanEndpoint* can = io.devices().can) {
+    can->FinishCapture(std::chrono::milliseconds(100));  // the last frames' echoes
+    io.PollBus();
+  }
+  return true;
+}
+
+Time WallClockPacer::ArrivalTime(std::int64_t now_ns, Time t_last_event) const {
+  return std::max(clock_.SimTimeOfWall(now_ns), t_last_event);
+}
+
+Time WallClockPacer::HostBytesTime(Time t_host, Time t_last_event) const {
+  (void)t_host;  // real time: its arrival, but not before the event the devices computed
+  return ArrivalTime(link::RealtimePacer::MonotonicNs(), t_last_event);
+}
+
+Time WallClockPacer::BusTime(Time t_last_event) const {
+  (void)t_last_event;
+  return clock_.SimTimeOfWall(link::RealtimePacer::MonotonicNs());
+}
+
+void WallClockPacer::RouteBusFrames(DeviceIo& io, DeviceOutput& out) {
+  if (!io.devices().steering) return;  // nothing listens to the bus
+  for (const CanFrame& f : io.TakeUnrouted())
+    io.DeliverBusFrame(std::max(f.t, io.t_last_event()), f, out);
+}
+
+}  // namespace hil::harness
