@@ -33,9 +33,9 @@ restore() { cp "$src/$1" "$tree/$1"; }
 
 # The ground truth includes the engine: back up, and run reaches truth, so it closes a cycle
 f=harness/truth/src/path.cc
-echo '#include "hil/harness/run/scheduler.h"' >>"$tree/$f"
+echo '#include "hil/harness/engine/engine.h"' >>"$tree/$f"
 line=$(wc -l <"$tree/$f")
-expect 1 "^$f:$line: #include \"hil/harness/run/scheduler.h\": goes back up: harness/run .*closes a cycle" "$tree"
+expect 1 "^$f:$line: #include \"hil/harness/engine/engine.h\": goes back up: harness/engine .*closes a cycle" "$tree"
 expect 1 '^ci/layering: 1 layering errors' "$tree"
 restore "$f"
 
@@ -60,7 +60,7 @@ restore "$f"
 
 # A stage the rules do not know
 mkdir -p "$tree/harness/src/newstage"
-echo '#include "hil/harness/run/scheduler.h"' >"$tree/harness/src/newstage/new.cc"
+echo '#include "hil/harness/engine/engine.h"' >"$tree/harness/src/newstage/new.cc"
 expect 1 '^harness/src/newstage/new.cc:1: .*stage harness/newstage is not in' "$tree"
 rm -r "$tree/harness/src/newstage"
 
