@@ -1,4 +1,4 @@
-// Phases 2 and 3 of a run: the scheduler executes the scenario; the drain lets the host finish.
+// Phases 2 and 3 of a run: the engine executes the scenario; the drain lets the host finish.
 #include <unistd.h>
 
 #include <algorithm>

@@ -11,7 +11,7 @@ namespace hil::harness {
 /// The run folder's captures/, the report's header, the devices and their links, navd.conf, the
 /// process under test and the reader of its output. @throws std::runtime_error for setup failures.
 void Prepare(RunContext& ctx);
-/// The scheduler from t = 0 to the end (or an early stop), watched by `watchdog`; then the bytes
+/// The engine from t = 0 to the end (or an early stop), watched by `watchdog`; then the bytes
 /// still queued and the captures go out.
 void Execute(RunContext& ctx, RunWatchdog& watchdog);
 /// The host reads every byte and its output is complete (or it hangs, or the run is stopped).

@@ -5,7 +5,7 @@
 /// The open-loop truth is a function of time alone: TruthIntegrator takes its steps whatever times
 /// it is asked for (CV_ONE_STEP towards the next time event, never towards a request) and
 /// interpolates a request in the step that covers it, so the sample at t is the same bits from
-/// any integrator that is asked for t after earlier times only. The scheduler tells TruthAhead,
+/// any integrator that is asked for t after earlier times only. The engine tells TruthAhead,
 /// at every event, when each device's next event is and how far its last one lay before it
 /// (Plan); the worker thread samples the times that schedule predicts (every device's next event
 /// and its period's multiples after it, up to `kAheadEvents` events ahead) while the main thread

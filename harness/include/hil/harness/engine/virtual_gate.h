@@ -11,7 +11,7 @@
 /// below `max_link_backlog_bytes` (which bounds the pty buffer, not the order).
 ///
 /// Host-to-device bytes get emulated times as deterministic as device-to-host ones: at the
-/// scheduler's host turns (scheduler.h) WaitHostIdle() holds emulated time until the host has read
+/// engine's host turns (virtual_host_turns.h) WaitHostIdle() holds emulated time until the host has read
 /// every byte written so far and every thread of its process group sleeps. It has then answered
 /// all it read, or waits for more; what it wrote is read at the turn's emulated time. Its answer
 /// cannot depend on bytes written later (there are none yet), nor on when the machine ran it.
@@ -81,7 +81,7 @@ class VirtualGate {
   bool WaitHostIdle();
   /// After the first host turn: no process of the host's group holds a host link open for
   /// writing (it opened them O_RDONLY, as navd does where it sends nothing): the host cannot
-  /// write what a turn waits for, so the scheduler's periodic turns need not wait for it.
+  /// write what a turn waits for, so the periodic host turns need not wait for it.
   bool HostReadsOnly() const { return writes_scanned_ && !host_writes_; }
   /// Bytes came from a host that held its links read-only (it opened one for writing since):
   /// HostReadsOnly() is false from now on, and a message says that this once the turn that read

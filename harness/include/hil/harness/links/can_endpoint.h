@@ -53,7 +53,7 @@ class CanEndpoint {
   /// stamped `t_now`; otherwise with the emulated time of their kernel receive time.
   std::vector<CanFrame> PollBus(Time t_now, const link::RealtimePacer* pacer);
   /// Virtual mode's closed loop: frames others send are not stamped when read (that moment
-  /// depends on the machine) but by TakeArrivals at the scheduler's host turns, with the emulated
+  /// depends on the machine) but by TakeArrivals at the engine's host turns, with the emulated
   /// time the devices take them at; PollBus then returns none of them.
   void set_stamp_at_turns(bool on) { stamp_at_turns_ = on; }
   /// Reads the bus and returns every frame others sent since the last call, stamped `t_arrival`

@@ -76,7 +76,7 @@ class SerialEndpoint {
   /// With `virtual_time` the capture gives no wall time (0, as for virtual mode's tx bytes).
   std::string PollHost(Time t_now, bool virtual_time = false);
   void set_baud(int baud) { uart_.set_baud(baud); }
-  /// Lockstep (a closed loop in real time or scaled, Scheduler::set_lockstep_pace): the capture's
+  /// Lockstep (a closed loop in real time or scaled, engine/lockstep_pacer.h): the capture's
   /// records carry the wall-clock time of their write or read, which virtual mode leaves 0.
   void set_wall_stamps(bool on) { wall_stamps_ = on; }
   std::size_t PendingToHost() const { return port_->PendingToHost(); }

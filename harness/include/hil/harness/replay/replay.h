@@ -11,7 +11,7 @@
 ///    with '(') is played onto a SocketCAN interface.
 /// Several captures of one run play together on one clock: emulated t = 0 of the captures is the
 /// replay's start (a candump log's first frame is its t = 0); every CAN source goes onto one
-/// interface. The captures become a ReplayDevice (replay_device.h) that the run's Scheduler
+/// interface. The captures become a ReplayDevice (replay_device.h) that the run's Engine
 /// drives in real time, so a replay has the one clock of a run. What is played is captured again
 /// in `OUT/captures/` in the same formats with wall-clock times, so a replay can be compared with
 /// the original (identical bytes; times differ by the schedule error); what a host sends back

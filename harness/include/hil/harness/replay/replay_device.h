@@ -1,7 +1,7 @@
 #pragma once
 /// @file
-/// A capture played back as a device: the scheduler drives it like an emulated device, so a
-/// replay has the run's one clock (scheduler.h). At each recorded time it hands over what was
+/// A capture played back as a device: the engine drives it like an emulated device, so a
+/// replay has the run's one clock (engine/engine.h). At each recorded time it hands over what was
 /// recorded then: serial chunks as messages timed already (byte k at t_emu_ns + k·byte_period_ns,
 /// as recorded, not through a UART model) on the port of their link, and CAN frames as they were
 /// on the wire. It reads no truth and answers no host.

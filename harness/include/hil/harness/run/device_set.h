@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// The emulated devices of a scenario and the links they talk through, built from the scenario.
-/// One place decides which device classes a scenario's sections create; the scheduler
+/// One place decides which device classes a scenario's sections create; the engine
 /// drives whatever is here through the Device interface.
 
 #include <functional>

@@ -3,15 +3,15 @@
 /// One run of a scenario end to end: truth → device emulators → links → the estimator under test
 /// → evaluation → reports in the run folder.
 ///
-/// Scheduling (one scheduler owns the clock). At each event time tₛ, in order:
+/// Scheduling (one engine owns the clock, engine/engine.h). At each event time tₛ, in order:
 ///   1. emulators sample the truth x(tₛ) (CVODE dense output) and produce whole messages;
 ///   2. each message enters its device's UART queue, which gives every byte its emulated time
 ///      (or drops the message whole when the transmit buffer is full);
 ///   3. the link delivers the bytes: in virtual mode at once (the bytes keep their emulated times
 ///      in the capture), in real-time/scaled mode each byte at its wall-clock UART time;
 ///   4. bytes from the host are read and logged with their times (virtual mode: at host turns,
-///      with emulated arrival times as deterministic as the device's bytes; scheduler.h).
-/// The bytes produced depend only on the scenario and the seed, never on the mode (scheduler.h).
+///      with emulated arrival times as deterministic as the device's bytes; engine/virtual_host_turns.h).
+/// The bytes produced depend only on the scenario and the seed, never on the mode (engine/engine.h).
 ///
 /// The estimator under test is watched throughout: it ending early is a crash; no output for
 /// the silence timeout (or, in virtual mode, not reading its input for that long) is a hang;

@@ -3,7 +3,7 @@
 /// The mutable state of one run beside the immutable Scenario (Drake: System vs Context; MuJoCo:
 /// mjModel vs mjData). RunScenario goes through five phases that share it (run_phases.h):
 /// prepare (the run folder, the devices and their links, the process under test), execute (the
-/// scheduler, watched by a RunWatchdog), drain (the host reads every byte and finishes its
+/// engine, watched by a RunWatchdog), drain (the host reads every byte and finishes its
 /// output), evaluate (against the truth) and write (the run folder's files, report.json last).
 
 #include <cstdint>

@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// What watches a run while the scheduler executes it (the scheduler's monitor): after each event
+/// What watches a run while the engine executes it (the engine's monitor): after each event
 /// time it takes the raw fix, polls the estimator's output, feeds the truth builder, draws the
 /// progress line and decides whether the run goes on. The estimator ending is a crash; no output
 /// for the silence timeout (real time) is a hang; in virtual mode the gate's waits come here

@@ -50,7 +50,7 @@ class TruthTable {
 /// instead of integrating the whole scenario again. Times asked for behind what the thread has
 /// already passed are sampled by Finish() in a second pass.
 ///
-/// The run's own samples (the scheduler's, at every device event) can be offered (Offer): a time
+/// The run's own samples (the engine's, at every device event) can be offered (Offer): a time
 /// asked for that one of them has is copied from it, and the thread integrates the truth itself
 /// only for the others (from t = 0 at the first of them). The samples are the same either way
 /// (the integrator's steps do not depend on the times sampled), but a run whose estimates and
