@@ -11,10 +11,11 @@
 /// below `max_link_backlog_bytes` (which bounds the pty buffer, not the order).
 ///
 /// Host-to-device bytes get emulated times as deterministic as device-to-host ones: at the
-/// engine's host turns (virtual_host_turns.h) WaitHostIdle() holds emulated time until the host has read
-/// every byte written so far and every thread of its process group sleeps. It has then answered
-/// all it read, or waits for more; what it wrote is read at the turn's emulated time. Its answer
-/// cannot depend on bytes written later (there are none yet), nor on when the machine ran it.
+/// engine's host turns (virtual_host_turns.h) WaitHostIdle() holds emulated time until the host has
+/// read every byte written so far and every thread of its process group sleeps. It has then
+/// answered all it read, or waits for more; what it wrote is read at the turn's emulated time. Its
+/// answer cannot depend on bytes written later (there are none yet), nor on when the machine ran
+/// it.
 ///
 /// While it waits, `on_wait` is called (it polls the estimator's output and decides when a host
 /// that no longer reads has hung); returning false gives up the wait and the run.

@@ -10,8 +10,10 @@
 ///   3. the link delivers the bytes: in virtual mode at once (the bytes keep their emulated times
 ///      in the capture), in real-time/scaled mode each byte at its wall-clock UART time;
 ///   4. bytes from the host are read and logged with their times (virtual mode: at host turns,
-///      with emulated arrival times as deterministic as the device's bytes; engine/virtual_host_turns.h).
-/// The bytes produced depend only on the scenario and the seed, never on the mode (engine/engine.h).
+///      with emulated arrival times as deterministic as the device's bytes;
+///      engine/virtual_host_turns.h).
+/// The bytes produced depend only on the scenario and the seed, never on the mode
+/// (engine/engine.h).
 ///
 /// The estimator under test is watched throughout: it ending early is a crash; no output for
 /// the silence timeout (or, in virtual mode, not reading its input for that long) is a hang;
