@@ -10,10 +10,10 @@
 #include <nlohmann/json.hpp>
 
 #include "hil/firmware_emu/gnss/gps_time.h"
+#include "hil/harness/core/machine_load.h"
 #include "hil/harness/eval/evaluator.h"
 #include "hil/harness/report/fixed_text.h"
 #include "hil/harness/report/output_file.h"
-#include "hil/harness/run/machine_load.h"
 #include "hil/truth/truth_integrator.h"
 
 #include "navd_odometry_conf.h"

@@ -12,11 +12,11 @@
 #include "hil/harness/eval/fault_path_deviation.h"
 #include "hil/harness/eval/outage_metrics.h"
 #include "hil/harness/eval/pass_to_pass.h"
-#include "hil/harness/eval/path_file_reader.h"
 #include "hil/harness/eval/path_tracking.h"
 #include "hil/harness/report/output_file.h"
 #include "hil/harness/report/run_outputs.h"
 #include "hil/harness/run/can_run.h"
+#include "hil/harness/scenario/path_file_reader.h"
 
 #include "run_phases.h"
 

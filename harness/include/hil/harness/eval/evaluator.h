@@ -11,7 +11,7 @@
 #include <Eigen/Core>
 
 #include "hil/firmware_emu/sim_time.h"
-#include "hil/harness/run/truth_table.h"
+#include "hil/harness/core/truth_table.h"
 #include "hil/truth/truth_integrator.h"
 
 namespace hil::harness {

@@ -10,8 +10,8 @@
 #include <Eigen/Core>
 #include <nlohmann/json_fwd.hpp>
 
+#include "hil/harness/core/truth_table.h"
 #include "hil/harness/run/device_set.h"
-#include "hil/harness/run/truth_table.h"
 #include "hil/harness/scenario/scenario.h"
 
 namespace hil::harness {

@@ -15,6 +15,7 @@
 
 #include "hil/firmware_emu/link/pty_port.h"
 #include "hil/firmware_emu/link/realtime_pacer.h"
+#include "hil/harness/core/truth_table.h"
 #include "hil/harness/dut/controller_process.h"
 #include "hil/harness/dut/estimate_collector.h"
 #include "hil/harness/dut/estimator_process.h"
@@ -28,7 +29,6 @@
 #include "hil/harness/run/progress.h"
 #include "hil/harness/run/run.h"
 #include "hil/harness/run/scheduler.h"
-#include "hil/harness/run/truth_table.h"
 #include "hil/harness/run/virtual_gate.h"
 #include "hil/harness/scenario/scenario.h"
 
