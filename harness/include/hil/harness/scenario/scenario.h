@@ -22,7 +22,7 @@
 #include "hil/firmware_emu/rtk/rtk_base_device.h"
 #include "hil/firmware_emu/uwb/uwb_tag_device.h"
 #include "hil/firmware_emu/world/greenhouse_world.h"
-#include "hil/harness/campaign/campaign_spec.h"
+#include "hil/harness/scenario/campaign_criterion.h"
 #include "hil/harness/scenario/default_criteria.h"
 #include "hil/harness/scenario/estimator_kinds.h"
 #include "hil/harness/scenario/fault_timeline.h"
