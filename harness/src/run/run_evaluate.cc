@@ -23,6 +23,19 @@
 namespace hil::harness {
 namespace {
 
+// What schedule_error.json reports of the run's links and threads (run_outputs.h).
+ScheduleRecord ScheduleRecordOf(const DeviceSet& set) {
+  ScheduleRecord r;
+  for (const auto& ports : set.endpoints) {
+    for (const auto& ep : ports)
+      r.serial.push_back({ep->link_name(), &ep->schedule_error_us(), ep->bytes_dropped_unread()});
+  }
+  if (set.can) r.can = ScheduleRecord::Link{set.can->iface(), &set.can->schedule_error_us(), 0};
+  r.threads = set.threads;
+  r.cpu_at_start = set.cpu_at_start;
+  return r;
+}
+
 // Row following is scored this far inside both ridge ends (row_deviation.h): the headland turns
 // and the entries into a row are not row following. Our choice (the paper gives none).
 constexpr double kRowMargin_m = 1.0;
@@ -443,7 +456,8 @@ void WriteRunFolder(RunContext& ctx, RunEvaluation& ev) {
       WriteTruthCsv(ev.truth, ctx.scenario, dir + "/truth.csv", series.truth_t_s,
                     series.truth_en_m);
     });
-    Attempt(report, [&] { WriteScheduleErrors(ctx.set, dir + "/schedule_error.json"); });
+    Attempt(report,
+            [&] { WriteScheduleErrors(ScheduleRecordOf(ctx.set), dir + "/schedule_error.json"); });
     Attempt(report, [&] { estimate.Join(); });
     Attempt(report, [&] { fixes.Join(); });
   }
