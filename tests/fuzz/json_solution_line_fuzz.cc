@@ -9,8 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "hil/harness/core/json_solution_line.h"
 #include "hil/harness/dut/estimate_reader.h"
-#include "hil/harness/dut/json_solution_line.h"
 #include "hil/harness/faults/fault_report.h"
 
 namespace {

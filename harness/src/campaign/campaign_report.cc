@@ -3,9 +3,9 @@
 #include <cstdio>
 
 #include "hil/harness/campaign/campaign_stats.h"
+#include "hil/harness/campaign/suite_report.h"
 #include "hil/harness/report/markdown.h"
 #include "hil/harness/report/report.h"
-#include "hil/harness/suite/suite_report.h"
 
 namespace hil::harness {
 namespace {

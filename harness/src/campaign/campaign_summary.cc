@@ -5,8 +5,8 @@
 #include <set>
 
 #include "hil/harness/campaign/campaign_stats.h"
+#include "hil/harness/campaign/suite_report.h"
 #include "hil/harness/scenario/yaml_reader.h"
-#include "hil/harness/suite/suite_report.h"
 
 namespace hil::harness {
 namespace {

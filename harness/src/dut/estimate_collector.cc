@@ -5,18 +5,18 @@
 #include <nlohmann/json.hpp>
 
 #include "hil/firmware_emu/link/realtime_pacer.h"
-#include "hil/harness/run/run_guard.h"
 
 namespace hil::harness {
 
 EstimateCollector::EstimateCollector(std::unique_ptr<EstimateReader> reader,
                                      EstimatorProcess* process, link::PtyPort* nav_pty,
-                                     const std::string& raw_path)
+                                     const std::string& raw_path, RunDiagnostics* diagnostics)
     : reader_(std::move(reader)),
       process_(process),
       nav_pty_(nav_pty),
       raw_(raw_path),
-      raw_path_(raw_path) {
+      raw_path_(raw_path),
+      diagnostics_(diagnostics) {
   // JSON solutions on stdout: decoded on the process's reader thread (pty output is not its)
   if (process_ && !nav_pty_ && reader_->reads_json()) process_->set_parse_json(true);
 }
@@ -102,7 +102,7 @@ void EstimateCollector::Poll() {
   if (!raw_unflushed_) return;
   raw_unflushed_ = false;
   raw_.flush();  // everything captured so far survives an interrupted run
-  if (!raw_) NoteWriteFailure(raw_path_);
+  if (!raw_ && diagnostics_) diagnostics_->NoteWriteFailure(raw_path_);
 }
 
 void EstimateCollector::Take() {

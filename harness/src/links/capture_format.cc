@@ -10,7 +10,6 @@
 #include <stdexcept>
 
 #include "hil/firmware_emu/link/candump_log.h"
-#include "hil/harness/run/run_guard.h"
 
 namespace hil::harness {
 namespace {
@@ -175,6 +174,11 @@ CaptureWriter::CaptureWriter(const std::string& path, const CaptureHeader& h) : 
   Flush();
 }
 
+void CaptureWriter::ReportFailuresTo(RunDiagnostics* diagnostics) {
+  diagnostics_ = diagnostics;
+  if (failed_ && diagnostics_) diagnostics_->NoteWriteFailure(path_);
+}
+
 void CaptureWriter::Write(const CaptureRecord& r) {
   // buffered (no write per record: a 100 Hz link would cost a system call per message)
   if (failed_) return;
@@ -200,7 +204,7 @@ void CaptureWriter::Flush() {
 
 void CaptureWriter::Cut(std::size_t written, int err) {
   failed_ = true;
-  NoteWriteFailure(path_);
+  if (diagnostics_) diagnostics_->NoteWriteFailure(path_);
   // keep the whole lines that reached the file, drop the part of a line after them
   const std::size_t nl = written == 0 ? std::string::npos : buf_.rfind('\n', written - 1);
   size_ += nl == std::string::npos ? 0 : static_cast<std::int64_t>(nl + 1);

@@ -52,13 +52,6 @@ std::string BoundText(const DefaultCriterionSpec& d, double bound) {
 
 }  // namespace
 
-const DefaultCriterionSpec* FindDefaultCriterion(const std::string& key) {
-  for (const DefaultCriterionSpec& d : kDefaultCriteria) {
-    if (key == d.key) return &d;
-  }
-  return nullptr;
-}
-
 std::vector<Criterion> DefaultCriteriaFor(const Scenario& scenario, const RunReport& report,
                                           std::vector<DefaultCriterionStatus>& status) {
   std::vector<Criterion> out;

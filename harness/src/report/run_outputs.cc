@@ -10,10 +10,10 @@
 #include <nlohmann/json.hpp>
 
 #include "hil/firmware_emu/gnss/gps_time.h"
+#include "hil/harness/core/machine_load.h"
 #include "hil/harness/eval/evaluator.h"
 #include "hil/harness/report/fixed_text.h"
 #include "hil/harness/report/output_file.h"
-#include "hil/harness/run/machine_load.h"
 #include "hil/truth/truth_integrator.h"
 
 #include "navd_odometry_conf.h"
@@ -178,13 +178,13 @@ void WriteFixCsvLine(std::ostream& out, const gnss::GnssFix& fix) {
 namespace {
 
 // What the machine gave the real-time run (machine_load.h): from the pacing's start to now.
-nlohmann::json MachineJson(const DeviceSet& set) {
+nlohmann::json MachineJson(const ScheduleRecord& record) {
   const MachineFigures m = ReadMachineFigures();
   const auto opt = [](const std::optional<long>& v) {
     return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
   };
   bool fifo_granted = false;
-  for (const auto& [name, t] : set.threads) fifo_granted = fifo_granted || t.realtime();
+  for (const auto& [name, t] : record.threads) fifo_granted = fifo_granted || t.realtime();
   nlohmann::json j = {{"cpus_online", m.cpus_online},
                       {"load_average", {m.load_1m, m.load_5m, m.load_15m}},
                       {"sched_rt_runtime_us", opt(m.rt_runtime_us)},
@@ -193,8 +193,8 @@ nlohmann::json MachineJson(const DeviceSet& set) {
                       {"kernel", m.kernel},
                       {"preempt", m.preempt.empty() ? "the build's default" : m.preempt}};
   const std::optional<CpuTicks> now = ReadCpuTicks();
-  if (set.cpu_at_start && now) {
-    const CpuShares s = SharesBetween(*set.cpu_at_start, *now);
+  if (record.cpu_at_start && now) {
+    const CpuShares s = SharesBetween(*record.cpu_at_start, *now);
     j["since_pacing_start"] = {{"ticks", s.ticks},
                                {"busy_pct", s.busy_pct},
                                {"idle_pct", s.idle_pct},
@@ -228,31 +228,30 @@ nlohmann::json RealtimeThreadsJson(
   return a;
 }
 
-void WriteScheduleErrors(const DeviceSet& set, const std::string& path) {
+void WriteScheduleErrors(const ScheduleRecord& record, const std::string& path) {
+  static const std::vector<double> kNone;
   nlohmann::json links = nlohmann::json::array();
-  for (const auto& ports : set.endpoints) {
-    for (const auto& ep : ports) {
-      const auto& e = ep->schedule_error_us();
-      if (e.empty() && ep->bytes_dropped_unread() == 0) continue;
-      links.push_back({{"link", ep->link_name()},
-                       {"bytes", e.size()},
-                       {"bytes_dropped_unread", ep->bytes_dropped_unread()},
-                       {"p50_us", Percentile(e, 50)},
-                       {"p99_us", Percentile(e, 99)},
-                       {"max_us", Percentile(e, 100)}});
-    }
+  for (const ScheduleRecord::Link& l : record.serial) {
+    const std::vector<double>& e = l.error_us ? *l.error_us : kNone;
+    if (e.empty() && l.bytes_dropped_unread == 0) continue;
+    links.push_back({{"link", l.name},
+                     {"bytes", e.size()},
+                     {"bytes_dropped_unread", l.bytes_dropped_unread},
+                     {"p50_us", Percentile(e, 50)},
+                     {"p99_us", Percentile(e, 99)},
+                     {"max_us", Percentile(e, 100)}});
   }
-  if (set.can && !set.can->schedule_error_us().empty()) {
-    const auto& e = set.can->schedule_error_us();
-    links.push_back({{"link", set.can->iface()},
+  if (record.can && record.can->error_us && !record.can->error_us->empty()) {
+    const std::vector<double>& e = *record.can->error_us;
+    links.push_back({{"link", record.can->name},
                      {"frames", e.size()},
                      {"p50_us", Percentile(e, 50)},
                      {"p99_us", Percentile(e, 99)},
                      {"max_us", Percentile(e, 100)}});
   }
-  if (links.empty() && set.threads.empty()) return;
-  nlohmann::json out{{"threads", RealtimeThreadsJson(set.threads)}, {"links", links}};
-  if (!set.threads.empty()) out["machine"] = MachineJson(set);
+  if (links.empty() && record.threads.empty()) return;
+  nlohmann::json out{{"threads", RealtimeThreadsJson(record.threads)}, {"links", links}};
+  if (!record.threads.empty()) out["machine"] = MachineJson(record);
   WriteOutputFile(path, out.dump(2) + "\n");
 }
 

@@ -29,7 +29,6 @@ RunReport RunScenario(const Scenario& scenario, const RunOptions& options) {
   GroupReaper reaper(lock.fd());
   RunContext ctx(scenario, options);
   ctx.reaper = &reaper;
-  ClearWriteFailures();
   // before the run's threads and hosts start: they inherit it
   const RunPriority priority = SetProcessNice(options.nice);
   ctx.report.nice_requested = priority.requested;

@@ -64,7 +64,7 @@ bool RunContext::Interrupted() {
                   std::to_string(kOutputBytesPerEmulatedS) +
                   " per emulated second); the rest of its output was not kept";
     collector->set_keep_limit(collector->bytes_kept());
-  } else if (const auto file = FirstWriteFailure()) {
+  } else if (const auto file = diagnostics.FirstWriteFailure()) {
     report.write_failure = "cannot write " + *file;
     stop_reason = "cannot write " + *file +
                   " (disk full, file size limit or folder removed) at t = " + SecondsText(t_now) +

@@ -12,16 +12,29 @@
 #include "hil/harness/eval/fault_path_deviation.h"
 #include "hil/harness/eval/outage_metrics.h"
 #include "hil/harness/eval/pass_to_pass.h"
-#include "hil/harness/eval/path_file_reader.h"
 #include "hil/harness/eval/path_tracking.h"
 #include "hil/harness/report/output_file.h"
 #include "hil/harness/report/run_outputs.h"
 #include "hil/harness/run/can_run.h"
+#include "hil/harness/scenario/path_file_reader.h"
 
 #include "run_phases.h"
 
 namespace hil::harness {
 namespace {
+
+// What schedule_error.json reports of the run's links and threads (run_outputs.h).
+ScheduleRecord ScheduleRecordOf(const DeviceSet& set) {
+  ScheduleRecord r;
+  for (const auto& ports : set.endpoints) {
+    for (const auto& ep : ports)
+      r.serial.push_back({ep->link_name(), &ep->schedule_error_us(), ep->bytes_dropped_unread()});
+  }
+  if (set.can) r.can = ScheduleRecord::Link{set.can->iface(), &set.can->schedule_error_us(), 0};
+  r.threads = set.threads;
+  r.cpu_at_start = set.cpu_at_start;
+  return r;
+}
 
 // Row following is scored this far inside both ridge ends (row_deviation.h): the headland turns
 // and the entries into a row are not row following. Our choice (the paper gives none).
@@ -446,7 +459,8 @@ void WriteRunFolder(RunContext& ctx, RunEvaluation& ev) {
       WriteTruthCsv(ev.truth, ctx.scenario, dir + "/truth.csv", series.truth_t_s,
                     series.truth_en_m);
     });
-    Attempt(report, [&] { WriteScheduleErrors(ctx.set, dir + "/schedule_error.json"); });
+    Attempt(report,
+            [&] { WriteScheduleErrors(ScheduleRecordOf(ctx.set), dir + "/schedule_error.json"); });
     Attempt(report, [&] { estimate.Join(); });
     Attempt(report, [&] { fixes.Join(); });
   }

@@ -2,9 +2,7 @@
 
 #include <signal.h>
 
-#include <atomic>
 #include <csignal>
-#include <mutex>
 
 namespace hil::harness {
 namespace {
@@ -15,9 +13,6 @@ constexpr int kIgnored[] = {SIGPIPE, SIGXFSZ};
 struct sigaction g_old[sizeof kCaught / sizeof kCaught[0] + sizeof kIgnored / sizeof kIgnored[0]];
 
 void OnSignal(int sig) { g_signal = sig; }
-
-std::mutex g_mu;
-std::optional<std::string> g_write_failure;
 
 }  // namespace
 
@@ -41,20 +36,5 @@ InterruptGuard::~InterruptGuard() {
 }
 
 int InterruptGuard::received() { return g_signal; }
-
-void NoteWriteFailure(const std::string& path) {
-  std::lock_guard<std::mutex> lock(g_mu);
-  if (!g_write_failure) g_write_failure = path;
-}
-
-std::optional<std::string> FirstWriteFailure() {
-  std::lock_guard<std::mutex> lock(g_mu);
-  return g_write_failure;
-}
-
-void ClearWriteFailures() {
-  std::lock_guard<std::mutex> lock(g_mu);
-  g_write_failure.reset();
-}
 
 }  // namespace hil::harness

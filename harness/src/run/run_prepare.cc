@@ -75,6 +75,15 @@ void AddControllerLinks(RunContext& ctx) {
   if (!all) ctx.host_links.insert(ctx.controller_links.begin(), ctx.controller_links.end());
 }
 
+// The captures note a failed write in the run's diagnostics (those that failed while the devices
+// were built, at once).
+void ReportCaptureFailuresTo(DeviceSet& set, RunDiagnostics& diagnostics) {
+  for (const auto& ports : set.endpoints) {
+    for (const auto& ep : ports) ep->ReportWriteFailuresTo(&diagnostics);
+  }
+  if (set.can) set.can->ReportWriteFailuresTo(&diagnostics);
+}
+
 void MakeCapturesFolder(const RunContext& ctx) {
   CheckCanRunMode(ctx.scenario, ctx.options);
   fs::create_directories(ctx.dir + "/captures");
@@ -209,6 +218,7 @@ void Prepare(RunContext& ctx) {
   MakeCapturesFolder(ctx);
   StartReport(ctx);
   ctx.set = BuildDevices(scenario, ctx.seed, ctx.dir);
+  ReportCaptureFailuresTo(ctx.set, ctx.diagnostics);
   const std::string raw_command = opt.estimator_command.value_or(scenario.estimator.command);
   // virtual mode: navd merges its inputs by device time, so the gate may hand the links over in
   // batches (virtual_gate.h, input_merge.h); a scenario's own merge_window_s is kept as it is. Not
@@ -256,7 +266,8 @@ void Prepare(RunContext& ctx) {
   }
   ctx.collector.emplace(MakeEstimateReader(scenario.estimator.output, scenario.start_unix_ns),
                         ctx.estimator ? &*ctx.estimator : nullptr, ctx.nav_pty.get(),
-                        ctx.dir + "/" + RawEstimateFileName(scenario.estimator.output));
+                        ctx.dir + "/" + RawEstimateFileName(scenario.estimator.output),
+                        &ctx.diagnostics);
   // the raw output kept: at most what a whole run may write (a flood stops the run sooner)
   ctx.collector->set_keep_limit(OutputBudgetBytes(scenario.duration_s));
   EstimatorHealth& health = ctx.health;

@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <string_view>
 
-#include "hil/harness/eval/path_file_reader.h"
+#include "hil/harness/scenario/path_file_reader.h"
 
 #include "scenario_sections.h"
 

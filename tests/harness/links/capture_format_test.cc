@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "hil/firmware_emu/link/candump_log.h"
+#include "hil/harness/core/run_diagnostics.h"
 
 namespace hil::harness {
 namespace {
@@ -116,6 +117,34 @@ TEST(CaptureFormatTest, RejectsFilesThatAreNotCaptures) {
 TEST(CaptureFormatTest, WallOffsetsMustCoverEveryByte) {
   EXPECT_FALSE(ParseCaptureLine("tx 0 10 5 n 414243 0,1").has_value());
   EXPECT_TRUE(ParseCaptureLine("tx 0 10 5 n 414243 0,1,2").has_value());
+}
+
+TEST(CaptureFormatTest, AFailedWriteIsNotedInTheDiagnosticsItWasGiven) {
+  // /dev/full: every write fails with ENOSPC, the header's already (in the constructor)
+  if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
+  CaptureHeader h;
+  h.link = "ttyGPS";
+  h.kind = "serial";
+  h.baud = 9600;
+  RunDiagnostics run, other;
+  CaptureWriter full("/dev/full", h);
+  full.ReportFailuresTo(&run);  // failed before: noted at once
+  EXPECT_EQ(run.FirstWriteFailure().value_or(""), "/dev/full");
+  EXPECT_FALSE(other.FirstWriteFailure());  // the run's own value, no process-wide register
+  // a writer that fails after it was given the diagnostics notes then, and the first stays
+  const fs::path path = Temp("diag.cap");
+  {
+    CaptureWriter ok(path.string(), h);
+    ok.ReportFailuresTo(&other);
+    CaptureRecord r;
+    r.dir = CaptureDir::kTx;
+    r.name = "GPGGA";
+    r.bytes = "$G";
+    ok.Write(r);
+    ok.Flush();
+    EXPECT_FALSE(other.FirstWriteFailure());
+  }
+  fs::remove(path);
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "hil/harness/scenario/campaign_criterion.h"
 #include "hil/harness/scenario/scenario_overrides.h"
 
 namespace hil::harness {
@@ -22,18 +23,6 @@ class YamlReader;
 struct SweepField {
   std::string field;
   std::vector<std::string> values;
-};
-
-/// A criterion across the runs of each group (one scenario at one sweep point, over its seeds).
-/// kind "stat": `stat` (mean, p50, p95, max, min) of `metric` ≤ max or ≥ min. kind
-/// "pass_fraction": the fraction of the group's runs that pass their scenario's own criteria ≥ min.
-struct CampaignCriterion {
-  std::string name;
-  std::string kind = "stat";
-  std::string metric;  ///< a criterion metric (kCriterionMetrics, navd.*); kind "stat" only
-  std::string stat = "p95";
-  std::optional<double> max, min;
-  std::string scenarios;  ///< a glob on the scenario's name; empty: every group
 };
 
 /// A campaign as its file (or `hil suite`'s options) gives it.
@@ -58,16 +47,7 @@ struct CampaignSpec {
 /// value the scenario rejects is reported at the value's line). @throws ScenarioError.
 CampaignSpec ReadCampaignFile(const std::string& path);
 
-/// One criterion across runs (a campaign file's `criteria` item, a scenario's
-/// `statistical.criteria` item): {metric, stat, max | min, name, scenarios} or {pass_fraction,
-/// name, scenarios}.
-/// @throws ScenarioError.
-CampaignCriterion ReadCampaignCriterion(const YamlReader& c);
-
 /// The sweep's points in order: each the overrides of one point (one empty point without sweeps).
 std::vector<std::vector<ScenarioOverride>> SweepPoints(const CampaignSpec& spec);
-
-/// The statistics a campaign criterion may take, and the report gives per metric.
-inline constexpr const char* kCampaignStats[] = {"mean", "p50", "p95", "max", "min"};
 
 }  // namespace hil::harness

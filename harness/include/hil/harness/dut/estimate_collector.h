@@ -16,6 +16,7 @@
 
 #include "hil/firmware_emu/device.h"
 #include "hil/firmware_emu/link/pty_port.h"
+#include "hil/harness/core/run_diagnostics.h"
 #include "hil/harness/dut/estimate_reader.h"
 #include "hil/harness/dut/estimator_process.h"
 #include "hil/harness/dut/n2k_bus_reader.h"
@@ -24,9 +25,11 @@ namespace hil::harness {
 
 class EstimateCollector {
  public:
-  /// `nav_pty` (may be null): the pty the estimator writes its solutions into.
+  /// `nav_pty` (may be null): the pty the estimator writes its solutions into. A failed write of
+  /// `raw_path` is noted in `diagnostics` (may be null: nowhere).
   EstimateCollector(std::unique_ptr<EstimateReader> reader, EstimatorProcess* process,
-                    link::PtyPort* nav_pty, const std::string& raw_path);
+                    link::PtyPort* nav_pty, const std::string& raw_path,
+                    RunDiagnostics* diagnostics);
 
   /// Output n2k_socketcan: `poll_bus` polls the CAN bus and returns every frame others put on it so
   /// far (the scheduler's list); Poll() decodes the new ones (N2kBusReader) into records.
@@ -93,6 +96,7 @@ class EstimateCollector {
   std::string first_unparsed_reason_;
   std::uint64_t keep_limit_ = UINT64_MAX, kept_bytes_ = 0, not_kept_ = 0, pty_bytes_ = 0;
   std::string raw_path_;
+  RunDiagnostics* diagnostics_;
   std::function<void(const std::string&)> observer_;
   JsonObserver json_observer_;
   std::function<const std::vector<CanFrame>&()> poll_bus_;

@@ -19,8 +19,8 @@
 
 #include <nlohmann/json_fwd.hpp>
 
-#include "hil/harness/dut/json_solution_line.h"
-#include "hil/harness/eval/evaluator.h"
+#include "hil/harness/core/estimate_record.h"
+#include "hil/harness/core/json_solution_line.h"
 #include "hil/harness/scenario/estimator_kinds.h"
 
 namespace hil::harness {

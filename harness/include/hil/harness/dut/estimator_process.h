@@ -16,7 +16,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
-#include "hil/harness/dut/json_solution_line.h"
+#include "hil/harness/core/json_solution_line.h"
 
 namespace hil::harness {
 

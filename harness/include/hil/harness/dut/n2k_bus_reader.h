@@ -13,8 +13,8 @@
 #include <optional>
 #include <string_view>
 
+#include "hil/harness/core/estimate_record.h"
 #include "hil/harness/dut/n2k_fast_packet.h"
-#include "hil/harness/eval/evaluator.h"
 
 namespace hil::harness {
 

@@ -11,21 +11,11 @@
 #include <Eigen/Core>
 
 #include "hil/firmware_emu/sim_time.h"
-#include "hil/harness/run/truth_table.h"
+#include "hil/harness/core/estimate_record.h"
+#include "hil/harness/core/truth_table.h"
 #include "hil/truth/truth_integrator.h"
 
 namespace hil::harness {
-
-/// One solution of the estimator under test (or one raw GNSS fix), as read back.
-struct EstimateRecord {
-  Time t_validity{};
-  double lat_deg = 0, lon_deg = 0, height_m = 0;
-  std::optional<Eigen::Vector3d> vel_enu_mps;
-  std::optional<double> yaw_deg;  ///< heading clockwise from north
-  std::optional<Eigen::Vector3d>
-      pos_std_enu_m;            ///< reported 1-sigma position uncertainty (for NEES)
-  std::int64_t wall_rx_ns = 0;  ///< CLOCK_MONOTONIC arrival (0 when not applicable)
-};
 
 /// The error of one record against truth, ENU.
 struct ErrorSample {

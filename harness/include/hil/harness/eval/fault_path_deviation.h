@@ -12,7 +12,7 @@
 
 #include "hil/harness/eval/cross_track.h"
 #include "hil/harness/eval/path_tracking.h"
-#include "hil/harness/faults/fault_timeline.h"
+#include "hil/harness/scenario/fault_timeline.h"
 
 namespace hil::harness {
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "hil/harness/eval/evaluator.h"
-#include "hil/harness/faults/fault_timeline.h"
+#include "hil/harness/scenario/fault_timeline.h"
 
 namespace hil::harness {
 

@@ -30,9 +30,9 @@
 #include <cstddef>
 #include <vector>
 
-#include "hil/harness/eval/path_file_reader.h"
 #include "hil/harness/eval/path_tracking.h"
 #include "hil/harness/scenario/pass_to_pass_spec.h"
+#include "hil/harness/scenario/path_file_reader.h"
 
 namespace hil::harness {
 

@@ -14,7 +14,7 @@
 #include <Eigen/Core>
 
 #include "hil/firmware_emu/sim_time.h"
-#include "hil/harness/eval/path_file_reader.h"
+#include "hil/harness/scenario/path_file_reader.h"
 
 namespace hil::harness {
 

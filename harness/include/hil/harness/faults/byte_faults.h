@@ -23,7 +23,7 @@
 
 #include "hil/firmware_emu/device.h"
 #include "hil/harness/faults/fault_record.h"
-#include "hil/harness/faults/fault_timeline.h"
+#include "hil/harness/scenario/fault_timeline.h"
 
 namespace hil::harness {
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "hil/firmware_emu/sim_time.h"
-#include "hil/harness/faults/fault_timeline.h"
+#include "hil/harness/scenario/fault_timeline.h"
 
 namespace hil::harness {
 

@@ -21,7 +21,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
-#include "hil/harness/dut/json_solution_line.h"
+#include "hil/harness/core/json_solution_line.h"
 #include "hil/harness/eval/evaluator.h"
 #include "hil/harness/faults/fault_record.h"
 

@@ -70,6 +70,10 @@ class CanEndpoint {
   const link::CanPortStats& stats() const { return port_.stats(); }
   /// Schedule errors (µs) of frames sent in real time: wall time sent − scheduled wall time.
   const std::vector<double>& schedule_error_us() const { return schedule_error_us_; }
+  /// Where the capture notes a failed write (CaptureWriter::ReportFailuresTo).
+  void ReportWriteFailuresTo(RunDiagnostics* diagnostics) {
+    capture_.ReportFailuresTo(diagnostics);
+  }
 
   ~CanEndpoint();
   CanEndpoint(const CanEndpoint&) = delete;

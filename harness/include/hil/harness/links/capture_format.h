@@ -32,6 +32,7 @@
 
 #include "hil/firmware_emu/link/can_wire_frame.h"
 #include "hil/firmware_emu/sim_time.h"
+#include "hil/harness/core/run_diagnostics.h"
 
 namespace hil::harness {
 
@@ -82,7 +83,8 @@ std::optional<CaptureRecord> ParseCaptureLine(std::string_view line);
 /// a crashed run keeps what it had). The file is opened close-on-exec (the estimator does not
 /// inherit it). A write that fails part-way (disk full, EIO, a file size limit) leaves the file
 /// ending on a record boundary followed, when it fits, by a comment line `# cut: ...` naming the
-/// reason; the records after it are not written and the failure is noted (run_guard.h).
+/// reason; the records after it are not written and the failure is noted in the run's
+/// diagnostics (run_diagnostics.h) when the writer was given them (ReportFailuresTo).
 class CaptureWriter {
  public:
   /// @throws std::runtime_error naming the path.
@@ -92,10 +94,14 @@ class CaptureWriter {
   CaptureWriter(const CaptureWriter&) = delete;
   CaptureWriter& operator=(const CaptureWriter&) = delete;
   /// Writes one record (buffered: it reaches the file with the next few kB or at Flush()); a
-  /// failed write (disk full, file size limit) is noted (run_guard.h) when the buffer goes out.
+  /// failed write (disk full, file size limit) is noted (ReportFailuresTo) when the buffer goes
+  /// out.
   void Write(const CaptureRecord& r);
   /// Writes out what is buffered.
   void Flush();
+  /// Where a failed write is noted from now on (the run's diagnostics; null: nowhere, the file's
+  /// `# cut:` line only). A failure before the call is noted at once.
+  void ReportFailuresTo(RunDiagnostics* diagnostics);
 
   static constexpr std::size_t kBufferBytes = 64 * 1024;
 
@@ -109,6 +115,7 @@ class CaptureWriter {
   std::string buf_;        ///< whole records not written yet
   std::int64_t size_ = 0;  ///< bytes in the file, all of them whole lines
   bool failed_ = false;
+  RunDiagnostics* diagnostics_ = nullptr;
 };
 
 /// Reads one header comment line (`# hil capture v2`, `# link ttyGPS serial 9600`,

@@ -68,8 +68,12 @@ class SerialEndpoint {
   bool WriteChunks(std::size_t chunks, const RoomWait& wait_for_room = {});
   /// Bytes waiting to be written.
   std::size_t queued_bytes() const;
-  /// Writes out the capture's buffer (a failed write is noted, run_guard.h).
+  /// Writes out the capture's buffer (a failed write is noted, ReportWriteFailuresTo).
   void FlushCapture() { capture_.Flush(); }
+  /// Where the capture notes a failed write (CaptureWriter::ReportFailuresTo).
+  void ReportWriteFailuresTo(RunDiagnostics* diagnostics) {
+    capture_.ReportFailuresTo(diagnostics);
+  }
   /// poll() shows host bytes on this descriptor (-1: none to poll, call PollHost anyway).
   int host_input_fd() const { return port_->host_input_fd(); }
   /// Reads host bytes (non-blocking), captures them with emulated time `t_now`, returns them.

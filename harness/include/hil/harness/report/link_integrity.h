@@ -27,7 +27,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "hil/harness/faults/fault_report.h"
-#include "hil/harness/faults/fault_timeline.h"
+#include "hil/harness/scenario/fault_timeline.h"
 
 namespace hil::harness {
 

@@ -3,15 +3,20 @@
 /// Files of the run folder besides the reports: navd.conf, truth.csv, gnss_fixes.csv,
 /// schedule_error.json.
 
+#include <cstdint>
+#include <optional>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
 #include <nlohmann/json_fwd.hpp>
 
-#include "hil/harness/run/device_set.h"
-#include "hil/harness/run/truth_table.h"
+#include "hil/firmware_emu/gnss/gnss_fix.h"
+#include "hil/firmware_emu/link/realtime_pacer.h"
+#include "hil/harness/core/machine_load.h"
+#include "hil/harness/core/truth_table.h"
 #include "hil/harness/scenario/scenario.h"
 
 namespace hil::harness {
@@ -40,10 +45,25 @@ std::vector<Time> TruthCsvTimes(const Scenario& s);
 void WriteFixCsvHeader(std::ostream& out);
 void WriteFixCsvLine(std::ostream& out, const gnss::GnssFix& fix);
 
+/// What schedule_error.json reports of a run, read from its devices and links (which outlive it):
+/// each link's schedule errors (µs: wall time sent − scheduled wall time), the scheduling its
+/// real-time threads got and /proc/stat when the pacing started. Empty in virtual mode.
+struct ScheduleRecord {
+  struct Link {
+    std::string name;                               ///< the link's name, or the CAN interface
+    const std::vector<double>* error_us = nullptr;  ///< one per byte (serial) or frame (CAN)
+    std::uint64_t bytes_dropped_unread = 0;         ///< serial: dropped, nobody read the port
+  };
+  std::vector<Link> serial;  ///< every serial link, in the devices' order
+  std::optional<Link> can;   ///< the CAN bus, when the scenario has one
+  std::vector<std::pair<std::string, link::ThreadSchedule>> threads;
+  std::optional<CpuTicks> cpu_at_start;
+};
+
 /// Real time: `{"threads": [RealtimeThreadsJson], "links": [{link, bytes, bytes_dropped_unread,
 /// p50_us, p99_us, max_us}]}`, the scheduling each thread really got and the schedule error per
 /// link; nothing in virtual mode.
-void WriteScheduleErrors(const DeviceSet& set, const std::string& path);
+void WriteScheduleErrors(const ScheduleRecord& record, const std::string& path);
 /// `[{thread, tid, policy, priority, timer_slack_ns, cpu_user_s, cpu_system_s, wall_s, cpu_pct}]`:
 /// each real-time thread's scheduling as the kernel reported it and the CPU it used while the run
 /// paced (getrusage RUSAGE_THREAD; cpu_pct = 100 × CPU / wall). Also report.json's

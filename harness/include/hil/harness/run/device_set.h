@@ -15,9 +15,9 @@
 #include "hil/firmware_emu/actuator/isobus_steering_device.h"
 #include "hil/firmware_emu/device.h"
 #include "hil/firmware_emu/gnss/gnss_fix.h"
+#include "hil/harness/core/machine_load.h"
 #include "hil/harness/links/can_endpoint.h"
 #include "hil/harness/links/serial_endpoint.h"
-#include "hil/harness/run/machine_load.h"
 #include "hil/harness/scenario/scenario.h"
 
 namespace hil::harness {

@@ -15,6 +15,8 @@
 
 #include "hil/firmware_emu/link/pty_port.h"
 #include "hil/firmware_emu/link/realtime_pacer.h"
+#include "hil/harness/core/run_diagnostics.h"
+#include "hil/harness/core/truth_table.h"
 #include "hil/harness/dut/controller_process.h"
 #include "hil/harness/dut/estimate_collector.h"
 #include "hil/harness/dut/estimator_process.h"
@@ -30,7 +32,7 @@
 #include "hil/harness/run/fix_baseline.h"
 #include "hil/harness/run/progress.h"
 #include "hil/harness/run/run.h"
-#include "hil/harness/run/truth_table.h"
+#include "hil/harness/core/truth_table.h"
 #include "hil/harness/scenario/scenario.h"
 
 namespace hil::harness {
@@ -57,6 +59,10 @@ struct RunContext {
   std::int64_t silence_ns;
   Time t_end, t_from;  ///< the scenario's end; the first time evaluated
   RunReport report;
+
+  /// The run's diagnostics (the first file of the run folder that could not be written): the
+  /// captures and the collector note into them, so they are declared before those and outlive them.
+  RunDiagnostics diagnostics;
 
   /// Kills the run's process groups if hil dies (group_reaper.h); set by RunScenario.
   GroupReaper* reaper = nullptr;

@@ -1,4 +1,4 @@
-#include "hil/harness/eval/path_file_reader.h"
+#include "hil/harness/scenario/path_file_reader.h"
 
 #include <algorithm>
 #include <cmath>

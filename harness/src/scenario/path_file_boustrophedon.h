@@ -3,7 +3,7 @@
 #include <map>
 #include <string>
 
-#include "hil/harness/eval/path_file_reader.h"
+#include "hil/harness/scenario/path_file_reader.h"
 
 namespace hil::harness {
 

@@ -1,4 +1,4 @@
-#include "hil/harness/faults/fault_timeline.h"
+#include "hil/harness/scenario/fault_timeline.h"
 
 #include <cstdlib>
 

@@ -1,12 +1,12 @@
-#include "hil/harness/run/truth_table.h"
+#include "hil/harness/core/truth_table.h"
 
 #include <chrono>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "../run/expect_same_sample.h"
 #include "../truth/truth_test_scenarios.h"
-#include "expect_same_sample.h"
 
 namespace hil::harness {
 namespace {

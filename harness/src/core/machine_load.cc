@@ -1,4 +1,4 @@
-#include "hil/harness/run/machine_load.h"
+#include "hil/harness/core/machine_load.h"
 
 #include <unistd.h>
 

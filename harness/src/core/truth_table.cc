@@ -1,4 +1,4 @@
-#include "hil/harness/run/truth_table.h"
+#include "hil/harness/core/truth_table.h"
 
 #include <algorithm>
 #include <optional>

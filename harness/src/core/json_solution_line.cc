@@ -1,4 +1,4 @@
-#include "hil/harness/dut/json_solution_line.h"
+#include "hil/harness/core/json_solution_line.h"
 
 #include <array>
 #include <charconv>

@@ -1,6 +1,6 @@
 // The suite's side-by-side report: scenario `paper:` and `short:` sections, mean and spread over
 // seeds, pass/fail per criterion, per-outage E/N/U maxima, and the Markdown report's columns.
-#include "hil/harness/suite/suite_report.h"
+#include "hil/harness/campaign/suite_report.h"
 
 #include <unistd.h>
 

@@ -1,5 +1,5 @@
 // The machine figures of a real-time run's schedule_error.json (machine_load.h).
-#include "hil/harness/run/machine_load.h"
+#include "hil/harness/core/machine_load.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // The evaluator's path reader against the controller's (two independent readers of one file
 // format): every example path in vectors/paths gives the same polyline and the same segments,
 // arcs included; bad fields name the file, the line and the field.
-#include "hil/harness/eval/path_file_reader.h"
+#include "hil/harness/scenario/path_file_reader.h"
 
 #include <cstdlib>
 #include <filesystem>

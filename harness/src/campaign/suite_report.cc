@@ -1,4 +1,4 @@
-#include "hil/harness/suite/suite_report.h"
+#include "hil/harness/campaign/suite_report.h"
 
 #include <algorithm>
 #include <cmath>
