@@ -5,6 +5,7 @@
 #include <set>
 
 #include "hil/harness/campaign/campaign_stats.h"
+#include "hil/harness/devices/scenario_file.h"
 #include "hil/harness/scenario/yaml_reader.h"
 #include "hil/harness/suite/suite_report.h"
 

@@ -11,11 +11,11 @@
 #include <nlohmann/json.hpp>
 #include <sys/stat.h>
 
+#include "hil/harness/devices/navd_conf.h"
 #include "hil/harness/dut/shell_substitute.h"
 #include "hil/harness/report/run_outputs.h"
 #include "hil/harness/run/can_run.h"
 
-#include "../report/navd_odometry_conf.h"
 #include "run_phases.h"
 
 namespace hil::harness {

@@ -1,4 +1,4 @@
-// The scenario's `uwb:` and `wt901c:` sections (harness/src/scenario/scenario_paper003.cc), the
+// The scenario's `uwb:` and `wt901c:` sections (harness/src/devices/uwb_tag/, wt901c/), the
 // devices they create and navd.conf's [uwb] section for navd_mode uwb.
 #include <filesystem>
 #include <fstream>
@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "hil/harness/devices/navd_conf.h"
+#include "hil/harness/devices/scenario_file.h"
 #include "hil/harness/report/run_outputs.h"
 #include "hil/harness/run/device_set.h"
 #include "hil/harness/scenario/scenario.h"
@@ -75,7 +77,7 @@ TEST(ScenarioPaper003Test, DevicesLinksAndNavdConf) {
                                        "estimator: {navd_mode: uwb}\n",
                                    "s.yaml");
   const std::string dir =
-      (std::filesystem::temp_directory_path() / "hil_scenario_paper003_test").string();
+      (std::filesystem::temp_directory_path() / "hil_uwb_tag_wt901c_spec_test").string();
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir + "/captures");
   {

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "hil/firmware_emu/rangefinder/benewake_codec.h"
+#include "hil/harness/devices/scenario_file.h"
 #include "hil/harness/run/device_set.h"
 #include "hil/harness/scenario/scenario.h"
 

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "hil/firmware_emu/mcu/mcu_device.h"
+#include "hil/harness/devices/scenario_file.h"
 #include "hil/harness/run/device_set.h"
 #include "hil/harness/scenario/scenario.h"
 #include "hil/harness/scenario/yaml_reader.h"

@@ -23,11 +23,9 @@
 //     - {kind: multipath, start_s: 100, end_s: 110, sigma_m: 3}
 //     - {kind: data_gap, start_s: 120, end_s: 130}   # output removed, receiver keeps its fix
 #include <cmath>
-#include <cstdlib>
-#include <memory>
 #include <numbers>
 
-#include "scenario_sections.h"
+#include "gnss_receiver.h"
 
 namespace hil::harness {
 namespace {
@@ -133,9 +131,8 @@ void ReadGnss(const YamlReader& r, GnssDeviceSpec& g) {
 
 }  // namespace
 
-const std::vector<std::string> kGnssSectionKeys{"gnss"};
-
-void ReadGnssSection(const YamlReader& root, GnssDeviceSpec& g) {
+void ReadGnssReceiverSpec(const YamlReader& root, Scenario& s) {
+  GnssDeviceSpec& g = s.gnss;
   const auto r = root.OptionalChild("gnss");
   if (r) {
     ReadGnss(*r, g);
@@ -159,22 +156,6 @@ void ReadGnssSection(const YamlReader& root, GnssDeviceSpec& g) {
     if (r) r->Fail("geoid", why);
     root.Fail(why);
   }
-}
-
-std::shared_ptr<const gnss::GeoidGrid> Egm96Geoid() {
-  // one grid per process (4 MB), read on first use; $HIL_EGM96_GRID overrides the built-in path
-  static const std::shared_ptr<const gnss::GeoidGrid> grid = [] {
-    const char* env = std::getenv("HIL_EGM96_GRID");
-    return std::make_shared<const gnss::GeoidGrid>(
-        gnss::GeoidGrid::LoadGtx(env && *env ? env : HIL_EGM96_GRID));
-  }();
-  return grid;
-}
-
-std::shared_ptr<const gnss::GeoidGrid> Ublox5Geoid() {
-  static const std::shared_ptr<const gnss::GeoidGrid> grid =
-      std::make_shared<const gnss::GeoidGrid>(Egm96Geoid()->Resampled(10.0, true));
-  return grid;
 }
 
 }  // namespace hil::harness

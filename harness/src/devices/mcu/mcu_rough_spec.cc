@@ -5,7 +5,7 @@
 #include "hil/firmware_emu/mcu/field_profiles.h"
 #include "hil/firmware_emu/truth_sample.h"
 
-#include "scenario_sections.h"
+#include "mcu.h"
 
 namespace hil::harness {
 namespace {

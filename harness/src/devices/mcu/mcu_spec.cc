@@ -8,7 +8,7 @@
 #include "hil/firmware_emu/angles.h"
 #include "hil/firmware_emu/mcu/field_profiles.h"
 
-#include "scenario_sections.h"
+#include "mcu.h"
 
 namespace hil::harness {
 namespace {
@@ -154,10 +154,11 @@ void ReadMcu(const YamlReader& r, McuDeviceSpec& m) {
 
 }  // namespace
 
-const std::vector<std::string> kMcuSectionKeys{"mcu"};
-
-void ReadMcuSection(const YamlReader& root, McuDeviceSpec& m) {
-  if (auto r = root.OptionalChild("mcu")) ReadMcu(*r, m);
+void ReadMcuSpec(const YamlReader& root, Scenario& s) {
+  if (auto r = root.OptionalChild("mcu")) ReadMcu(*r, s.mcu);
+  s.mcu.config.start_unix_ns = s.start_unix_ns;
+  // seed 000: the IMU runs 10 times as fast as the GPS (the gnss row is read before this one)
+  if (s.mcu.imu_rate_is_default) s.mcu.config.imu_rate_hz = 10.0 * s.gnss.rate_hz;
 }
 
 }  // namespace hil::harness

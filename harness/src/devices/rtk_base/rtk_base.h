@@ -1,13 +1,10 @@
 #pragma once
-// Internal to the harness run stage: the RTK base (`rtk_base:`) for BuildDevices.
-#include <cstdint>
-#include <string>
-
-#include "hil/harness/run/device_set.h"
+// Internal to the devices stage: the RTK base's reader for its row.
+#include "hil/harness/devices/device_kind.h"
 
 namespace hil::harness {
 
-/// Adds the scenario's RTK base (when present) on its pty (RUN_DIR/ttyRTCM by default).
-void AddRtkBase(const Scenario& s, std::uint64_t seed, const std::string& dir, DeviceSet& set);
+/// Reads the rtk_base section (optional; rtk_base_spec.cc), after the origin and start_utc.
+void ReadRtkBaseSpec(const YamlReader& root, Scenario& s);
 
 }  // namespace hil::harness

@@ -1,22 +1,39 @@
-// The RTK base in the run's device set: its RTCM 3 stream, after the correction radio, on its own
-// pty with a capture, as a radio modem's UART would deliver it to the rover.
-#include "device_set_rtk.h"
-
+// The RTK base's row of the device table: section `rtk_base:`, its RTCM 3 stream, after the
+// correction radio, on its own pty with a capture, as a radio modem's UART would deliver it to
+// the rover (RUN_DIR/ttyRTCM by default). navd does not read it: an RTK rover takes it.
 #include "hil/firmware_emu/rtk/rtk_base_device.h"
 
-namespace hil::harness {
+#include "rtk_base.h"
 
-void AddRtkBase(const Scenario& s, std::uint64_t seed, const std::string& dir, DeviceSet& set) {
+namespace hil::harness {
+namespace {
+
+void BuildRtkBase(const Scenario& s, std::uint64_t seed, const std::string& dir, DeviceBuild& set) {
   if (!s.rtk_base.enabled) return;
-  auto dev = std::make_unique<rtk::RtkBaseDevice>(s.rtk_base.config, seed);
-  const std::string& link = s.rtk_base.link;
-  const std::string path = dir + "/" + link;
-  std::vector<std::unique_ptr<SerialEndpoint>> ports;
-  ports.push_back(std::make_unique<SerialEndpoint>(
-      link, path, dev->baud(0), s.rtk_base.tx_buffer_bytes, dir + "/captures/" + link + ".cap"));
-  set.links.emplace_back(link, path);
-  set.devices.push_back(std::move(dev));
-  set.endpoints.push_back(std::move(ports));
+  AddSerialDevice(std::make_unique<rtk::RtkBaseDevice>(s.rtk_base.config, seed), s.rtk_base.link,
+                  s.rtk_base.tx_buffer_bytes, dir, set);
 }
+
+std::vector<std::string> RtkBaseLinks(const Scenario& s) {
+  if (!s.rtk_base.enabled) return {};
+  return {s.rtk_base.link};
+}
+
+constexpr std::string_view kRtkBaseSections[] = {"rtk_base"};
+
+}  // namespace
+
+extern const DeviceKind kRtkBaseKind;
+const DeviceKind kRtkBaseKind{.name = "rtk_base",
+                              .sections = kRtkBaseSections,
+                              .spec = "rtk_base: (reference station and correction radio)",
+                              .read = ReadRtkBaseSpec,
+                              .seed_stream = 8,
+                              .build = BuildRtkBase,
+                              .navd_keys = {},
+                              .write_navd = nullptr,
+                              .links = RtkBaseLinks,
+                              .report_section = "link_integrity",
+                              .link_role = ""};
 
 }  // namespace hil::harness

@@ -5,7 +5,7 @@
 
 #include "hil/truth/local_frame.h"
 
-#include "scenario_sections.h"
+#include "rtk_base.h"
 
 namespace hil::harness {
 namespace {
@@ -61,9 +61,7 @@ void ReadObservables(const YamlReader& r, rtk::BaseObservablesConfig& c) {
 
 }  // namespace
 
-const std::vector<std::string> kRtkBaseSectionKeys{"rtk_base"};
-
-void ReadRtkBaseSection(const YamlReader& root, Scenario& s) {
+void ReadRtkBaseSpec(const YamlReader& root, Scenario& s) {
   const auto r = root.OptionalChild("rtk_base");
   if (!r) return;
   r->CheckKeys({"link", "station_id", "position", "offset_enu_m", "antenna_height_m", "msm",

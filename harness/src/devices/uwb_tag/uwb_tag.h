@@ -1,14 +1,18 @@
 #pragma once
-// Internal to the harness run stage: paper 003's devices (UWB tag, WT901C) for BuildDevices.
-#include <cstdint>
+// Internal to the devices stage: the UWB tag's reader and navd.conf writer for its row.
+#include <ostream>
 #include <string>
 
-#include "hil/harness/run/device_set.h"
+#include "hil/harness/devices/device_kind.h"
 
 namespace hil::harness {
 
-/// Adds the scenario's `uwb:` and `wt901c:` devices (when present) with their links.
-void AddPaper003Devices(const Scenario& s, std::uint64_t uwb_seed, std::uint64_t wit_seed,
-                        const std::string& dir, DeviceSet& set);
+/// Reads the `uwb:` section (optional) into s.uwb.
+void ReadUwbTagSpec(const YamlReader& root, Scenario& s);
+/// At NavdConfSlot::kSections, for estimator.navd_mode uwb: `[uwb]` (the tag's link, format,
+/// anchors, the frame's origin and time zero). @throws std::runtime_error when the scenario has no
+/// `uwb:` section.
+void WriteUwbTagNavd(NavdConfSlot slot, const Scenario& s, const std::string& gnss_device,
+                     std::ostream& out);
 
 }  // namespace hil::harness

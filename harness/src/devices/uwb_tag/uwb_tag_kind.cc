@@ -1,38 +1,42 @@
-// Paper 003's devices in the run's device set: the UWB tag (`uwb:`) and the WT901C (`wt901c:`),
-// each on its own pty (RUN_DIR/ttyUWB, RUN_DIR/ttyWIT by default).
-#include "device_set_paper003.h"
-
-#include "hil/firmware_emu/attitude/wt901c_device.h"
+// The UWB tag's row of the device table: section `uwb:`, a UwbTagDevice on its own pty
+// (RUN_DIR/ttyUWB by default), navd's [uwb] section.
 #include "hil/firmware_emu/uwb/uwb_tag_device.h"
+
+#include "uwb_tag.h"
 
 namespace hil::harness {
 namespace {
 
-void AddPort(const std::string& link, int baud, std::size_t tx_buffer, const std::string& dir,
-             std::unique_ptr<Device> dev, DeviceSet& set) {
-  const std::string path = dir + "/" + link;
-  std::vector<std::unique_ptr<SerialEndpoint>> ports;
-  ports.push_back(std::make_unique<SerialEndpoint>(link, path, baud, tx_buffer,
-                                                   dir + "/captures/" + link + ".cap"));
-  set.links.emplace_back(link, path);
-  set.devices.push_back(std::move(dev));
-  set.endpoints.push_back(std::move(ports));
+void BuildUwbTag(const Scenario& s, std::uint64_t seed, const std::string& dir, DeviceBuild& set) {
+  if (!s.uwb.enabled) return;
+  auto dev = std::make_unique<uwb::UwbTagDevice>(s.uwb.config, seed);
+  const int baud = dev->baud(0);
+  AddSerialDevice(std::move(dev), s.uwb.link, s.uwb.tx_buffer_bytes, dir, set, baud);
 }
+
+std::vector<std::string> UwbTagLinks(const Scenario& s) {
+  if (!s.uwb.enabled) return {};
+  return {s.uwb.link};
+}
+
+constexpr std::string_view kUwbTagSections[] = {"uwb"};
+constexpr std::string_view kUwbTagNavdKeys[] = {
+    "uwb.device",         "uwb.baud",           "uwb.format",          "uwb.anchors_m",
+    "uwb.origin_lat_deg", "uwb.origin_lon_deg", "uwb.origin_height_m", "uwb.time_zero_unix_ns"};
 
 }  // namespace
 
-void AddPaper003Devices(const Scenario& s, std::uint64_t uwb_seed, std::uint64_t wit_seed,
-                        const std::string& dir, DeviceSet& set) {
-  if (s.uwb.enabled) {
-    auto dev = std::make_unique<uwb::UwbTagDevice>(s.uwb.config, uwb_seed);
-    const int baud = dev->baud(0);
-    AddPort(s.uwb.link, baud, s.uwb.tx_buffer_bytes, dir, std::move(dev), set);
-  }
-  if (s.wt901c.enabled) {
-    auto dev = std::make_unique<wit::Wt901cDevice>(s.wt901c.config, wit_seed);
-    const int baud = dev->baud(0);
-    AddPort(s.wt901c.link, baud, s.wt901c.tx_buffer_bytes, dir, std::move(dev), set);
-  }
-}
+extern const DeviceKind kUwbTagKind;
+const DeviceKind kUwbTagKind{.name = "uwb_tag",
+                             .sections = kUwbTagSections,
+                             .spec = "uwb:",
+                             .read = ReadUwbTagSpec,
+                             .seed_stream = 3,
+                             .build = BuildUwbTag,
+                             .navd_keys = kUwbTagNavdKeys,
+                             .write_navd = WriteUwbTagNavd,
+                             .links = UwbTagLinks,
+                             .report_section = "link_integrity",
+                             .link_role = ""};
 
 }  // namespace hil::harness

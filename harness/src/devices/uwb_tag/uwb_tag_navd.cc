@@ -1,12 +1,14 @@
-#include "navd_uwb_conf.h"
-
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
 
+#include "uwb_tag.h"
+
 namespace hil::harness {
 
-void WriteNavdUwb(std::ostream& out, const Scenario& s, const std::string& gnss_device) {
+void WriteUwbTagNavd(NavdConfSlot slot, const Scenario& s, const std::string& gnss_device,
+                     std::ostream& out) {
+  if (slot != NavdConfSlot::kSections || s.estimator.navd_mode != NavdMode::kUwb) return;
   if (!s.uwb.enabled)
     throw std::runtime_error(s.file + ": estimator.navd_mode uwb needs a uwb: section");
   const std::filesystem::path dir = std::filesystem::path(gnss_device).parent_path();
@@ -25,11 +27,6 @@ void WriteNavdUwb(std::ostream& out, const Scenario& s, const std::string& gnss_
   out << "\n"
       << origin << "origin_height_m = " << s.truth.origin.height_m
       << "\ntime_zero_unix_ns = " << s.start_unix_ns << "\n";
-  if (s.wt901c.enabled) {
-    out << "attitude_device = " << (dir / s.wt901c.link).string()
-        << "\nattitude_baud = " << wit::BaudOfCode(s.wt901c.config.baud_code)
-        << "\nattitude_rate_hz = " << wit::RateHzOfCode(s.wt901c.config.rrate_code) << "\n";
-  }
 }
 
 }  // namespace hil::harness

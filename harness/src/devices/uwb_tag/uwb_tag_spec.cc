@@ -1,9 +1,8 @@
-// The scenario's `uwb:` and `wt901c:` sections: paper 003's UWB tag (firmware_emu/uwb) and WT901C
-// attitude sensor (firmware_emu/attitude). Format in vectors/scenarios/README.md; the error figures
-// and their reasons in vectors/uwb/README.md and vectors/wt901c/README.md.
+// The scenario's `uwb:` section: the UWB tag (firmware_emu/uwb; paper 003's LinkTrack). Format in
+// vectors/scenarios/README.md; the error figures and their reasons in vectors/uwb/README.md.
 #include <cmath>
 
-#include "scenario_sections.h"
+#include "uwb_tag.h"
 
 namespace hil::harness {
 namespace {
@@ -13,13 +12,6 @@ constexpr double kFieldLimit_m = 10000.0;
 Eigen::Vector2d Vec2(const YamlReader& r, const std::string& key, const Eigen::Vector2d& fallback) {
   const auto v = r.Doubles(key, 2, {fallback.x(), fallback.y()});
   return {v[0], v[1]};
-}
-
-std::string Link(const YamlReader& r, const std::string& fallback) {
-  const std::string link = r.String("link", fallback);
-  if (link.empty() || link.find('/') != std::string::npos)
-    r.Fail("link", "must be a plain file name such as " + fallback);
-  return link;
 }
 
 void ReadNlosZones(const YamlReader& r, std::vector<uwb::NlosZone>& zones) {
@@ -57,7 +49,7 @@ void ReadUwb(const YamlReader& r, UwbDeviceSpec& u) {
                "residual_sigma_m", "nlos_zones", "tx_buffer_bytes"});
   u.enabled = true;
   uwb::UwbTagConfig& c = u.config;
-  u.link = Link(r, u.link);
+  u.link = ReadLinkName(r, u.link);
   c.baud = static_cast<int>(r.Int("baud", c.baud, 1200, 4000000));
   c.rate_hz = r.DoubleIn("rate_hz", c.rate_hz, 1, 50);
   const std::string out = r.Choice("output", "tag_frame0", {"tag_frame0", "tdoa", "both"});
@@ -81,42 +73,10 @@ void ReadUwb(const YamlReader& r, UwbDeviceSpec& u) {
       r.Int("tx_buffer_bytes", static_cast<std::int64_t>(u.tx_buffer_bytes), 128, 1 << 20));
 }
 
-void ReadWt901c(const YamlReader& r, Wt901cDeviceSpec& w) {
-  r.CheckKeys({"link", "baud", "rate_hz", "require_unlock", "gyro_bias_sigma_dps",
-               "angle_noise_sigma_deg", "yaw_drift_sigma_dps", "tx_buffer_bytes"});
-  w.enabled = true;
-  wit::Wt901cConfig& c = w.config;
-  w.link = Link(r, w.link);
-  const auto baud = r.Int("baud", 9600, 4800, 921600);
-  c.baud_code = 0;
-  for (std::uint16_t code = 1; code <= 9; ++code)
-    if (wit::BaudOfCode(code) == baud) c.baud_code = code;
-  if (c.baud_code == 0)
-    r.Fail("baud", "not a WT901C baud (4800 … 921600, BAUD register codes 1–9)");
-  const double rate = r.DoubleIn("rate_hz", 10, 0.2, 200);
-  c.rrate_code = 0;
-  for (std::uint16_t code = 1; code <= 0x0B; ++code)
-    if (wit::RateHzOfCode(code) == rate) c.rrate_code = code;
-  if (c.rrate_code == 0)
-    r.Fail("rate_hz", "not an RRATE value (0.2, 0.5, 1, 2, 5, 10, 20, 50, 100, 125, 200 Hz)");
-  c.require_unlock = r.Bool("require_unlock", c.require_unlock);
-  c.errors.gyro_turn_on_bias_sigma_dps =
-      r.DoubleIn("gyro_bias_sigma_dps", c.errors.gyro_turn_on_bias_sigma_dps, 0, 10);
-  c.errors.angle_noise_sigma_deg =
-      r.DoubleIn("angle_noise_sigma_deg", c.errors.angle_noise_sigma_deg, 0, 10);
-  c.errors.yaw_drift_sigma_dps =
-      r.DoubleIn("yaw_drift_sigma_dps", c.errors.yaw_drift_sigma_dps, 0, 10);
-  w.tx_buffer_bytes = static_cast<std::size_t>(
-      r.Int("tx_buffer_bytes", static_cast<std::int64_t>(w.tx_buffer_bytes), 64, 1 << 20));
-}
-
 }  // namespace
 
-const std::vector<std::string> kPaper003SectionKeys{"uwb", "wt901c"};
-
-void ReadPaper003Sections(const YamlReader& root, UwbDeviceSpec& u, Wt901cDeviceSpec& w) {
-  if (auto r = root.OptionalChild("uwb")) ReadUwb(*r, u);
-  if (auto r = root.OptionalChild("wt901c")) ReadWt901c(*r, w);
+void ReadUwbTagSpec(const YamlReader& root, Scenario& s) {
+  if (auto r = root.OptionalChild("uwb")) ReadUwb(*r, s.uwb);
 }
 
 }  // namespace hil::harness

@@ -1,18 +1,17 @@
 #pragma once
-// navd.conf's [odometry] section for estimator.navd_mode gyro_odometry (paper 001): navd's gyro +
-// wheel-odometry mode reads the base's encoder counts from the FIFO the controller forwards them
-// into (kOdometryFifo in the run folder, {odometry_fifo} in the controller's command).
+// Internal to the devices stage: the wheel base's navd.conf writer for its row.
 #include <ostream>
 #include <string>
 
-#include "hil/harness/scenario/scenario.h"
+#include "hil/harness/devices/device_kind.h"
 
 namespace hil::harness {
 
-inline constexpr const char* kOdometryFifo = "odometry.fifo";
-
-/// Writes [odometry]: the FIFO, the base's wheels, the origin, the start pose, and the scenario's
-/// estimator.navd_filter keys (in this mode they tune the odometry filter).
-void WriteNavdOdometry(std::ostream& out, const Scenario& s, const std::string& run_dir);
+/// At NavdConfSlot::kSections, for estimator.navd_mode gyro_odometry (paper 001): [odometry], the
+/// FIFO the controller forwards the base's encoder counts into (kOdometryFifo, navd_conf.h), the
+/// base's wheels, the origin, the start pose, and the scenario's estimator.navd_filter keys (in
+/// this mode they tune the odometry filter). @throws std::runtime_error without a closed loop.
+void WriteWheelBaseNavd(NavdConfSlot slot, const Scenario& s, const std::string& gnss_device,
+                        std::ostream& out);
 
 }  // namespace hil::harness

@@ -1,12 +1,17 @@
-#include "navd_odometry_conf.h"
-
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
 
+#include "hil/harness/devices/navd_conf.h"
+
+#include "wheel_base.h"
+
 namespace hil::harness {
 
-void WriteNavdOdometry(std::ostream& out, const Scenario& s, const std::string& run_dir) {
+void WriteWheelBaseNavd(NavdConfSlot slot, const Scenario& s, const std::string& gnss_device,
+                        std::ostream& out) {
+  if (slot != NavdConfSlot::kSections || s.estimator.navd_mode != NavdMode::kGyroOdometry) return;
+  const std::string run_dir = std::filesystem::path(gnss_device).parent_path();
   if (!s.closed_loop.enabled)
     throw std::runtime_error(s.file +
                              ": estimator.navd_mode gyro_odometry needs a closed_loop: "
