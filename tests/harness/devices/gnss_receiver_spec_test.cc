@@ -1,4 +1,4 @@
-// The scenario's gnss section (harness/src/scenario/scenario_gnss.cc): several receivers, faults,
+// The scenario's gnss section (harness/src/devices/gnss_receiver/): several receivers, faults,
 // profiles.
 #include <cmath>
 #include <sstream>

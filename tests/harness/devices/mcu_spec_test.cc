@@ -1,4 +1,4 @@
-// The scenario's `mcu:` section (harness/src/scenario/scenario_mcu.cc) and the device set it
+// The scenario's `mcu:` section (harness/src/devices/mcu/) and the device set it
 // creates.
 #include <cmath>
 #include <cstdlib>

@@ -1,5 +1,6 @@
-// Paper 001's range sensors as run devices: a scenario with the greenhouse library piece gets
-// four rangefinders and the LiDAR on their own ptys, casting against the scenario's greenhouse.
+// The rangefinders and lidar rows (paper 001's range sensors) as run devices: a scenario with the
+// greenhouse library piece gets four rangefinders and the LiDAR on their own ptys, casting against
+// the scenario's greenhouse.
 #include <unistd.h>
 
 #include <filesystem>

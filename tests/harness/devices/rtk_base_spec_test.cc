@@ -1,4 +1,4 @@
-// The scenario's `rtk_base:` section (harness/src/scenario/scenario_rtk_base.cc): defaults, every
+// The scenario's `rtk_base:` section (harness/src/devices/rtk_base/): defaults, every
 // key, the base placed by an ENU offset from the origin, errors with the field, and the device
 // with its pty (RUN_DIR/ttyRTCM) in the run's device set.
 #include <unistd.h>
