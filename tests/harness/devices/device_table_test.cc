@@ -1,7 +1,8 @@
 // The device table (harness/src/devices/device_table.cc) is complete and consistent: every
 // top-level key of the scenario file belongs to the loader or to exactly one row, every row's
 // navd.conf keys are keys navd's own configuration reader takes (and are written by the row for
-// some scenario of vectors/scenarios), and the run's devices come from the rows.
+// some scenario of vectors/scenarios, and the links navd reads are the rows'), and the run's
+// devices come from the rows.
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
@@ -127,6 +128,15 @@ TEST(DeviceTableTest, EveryRowsNavdKeysAreReadByNavd) {
     const estimator::ConfigFile f = estimator::ConfigFile::Load(dir + "/navd.conf");
     // navd's reader refuses an unknown section or key: each one written is one navd reads
     EXPECT_NO_THROW(estimator::NavdConfig::FromFile(f));
+    // the links navd reads (the run waits for them and gates them) are links of the row
+    for (const DeviceKind* k : DeviceKinds()) {
+      if (!k->navd_links) continue;
+      const std::vector<std::string> links = k->links(s);
+      for (const std::string& link : k->navd_links(s)) {
+        EXPECT_NE(std::find(links.begin(), links.end(), link), links.end())
+            << k->name << ": navd reads " << link << ", not one of its links";
+      }
+    }
     for (const std::string& key : NavdKeysIn(f)) {
       if (EstimatorKey(key, s)) continue;
       int rows = 0;

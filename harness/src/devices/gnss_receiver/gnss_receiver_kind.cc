@@ -89,6 +89,17 @@ constexpr std::string_view kGnssReceiverSections[] = {"gnss"};
 constexpr std::string_view kGnssReceiverNavdKeys[] = {"input.gnss_device", "input.gnss_baud",
                                                       "input.gnss_device_N", "filter.antenna_N_m"};
 
+// navd reads the first receiver, and every receiver in multi_gnss, except in its UWB and
+// odometry modes.
+std::vector<std::string> GnssReceiverNavdLinks(const Scenario& s) {
+  const NavdMode m = s.estimator.navd_mode;
+  if (m == NavdMode::kUwb || m == NavdMode::kGyroOdometry) return {};
+  if (m != NavdMode::kMultiGnss) return {s.gnss.link};
+  std::vector<std::string> links{s.gnss.link};
+  for (const GnssReceiverSpec& r : s.gnss.receivers) links.push_back(r.link);
+  return links;
+}
+
 }  // namespace
 
 extern const DeviceKind kGnssReceiverKind;
@@ -101,6 +112,7 @@ const DeviceKind kGnssReceiverKind{.name = "gnss_receiver",
                                    .navd_keys = kGnssReceiverNavdKeys,
                                    .write_navd = WriteGnssReceiversNavd,
                                    .links = GnssReceiverLinks,
+                                   .navd_links = GnssReceiverNavdLinks,
                                    .report_section = "link_integrity",
                                    .link_role = "gnss"};
 

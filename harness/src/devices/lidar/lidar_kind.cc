@@ -33,6 +33,7 @@ const DeviceKind kLidarKind{.name = "lidar",
                             .navd_keys = {},
                             .write_navd = nullptr,
                             .links = LidarLinks,
+                            .navd_links = nullptr,
                             .report_section = "link_integrity",
                             .link_role = ""};
 

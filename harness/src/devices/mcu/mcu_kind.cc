@@ -61,6 +61,16 @@ constexpr std::string_view kMcuNavdKeys[] = {
     "input.imu_device",  "input.imu_baud",     "input.imu_format",  "imu.source",
     "imu.can_interface", "imu.source_address", "filter.lever_arm_m"};
 
+// navd's odometry mode reads the board (and the FIFO) only; its fusing modes read it on its serial
+// link unless the frames go to it over CAN.
+std::vector<std::string> McuNavdLinks(const Scenario& s) {
+  const NavdMode m = s.estimator.navd_mode;
+  if (m == NavdMode::kGyroOdometry) return {s.mcu.link};
+  if (m == NavdMode::kUwb || m == NavdMode::kGnssOnly || !s.mcu.enabled || s.can.imu_to_estimator)
+    return {};
+  return {s.mcu.link};
+}
+
 }  // namespace
 
 extern const DeviceKind kMcuKind;
@@ -73,6 +83,7 @@ const DeviceKind kMcuKind{.name = "mcu",
                           .navd_keys = kMcuNavdKeys,
                           .write_navd = WriteMcuNavd,
                           .links = McuLinks,
+                          .navd_links = McuNavdLinks,
                           .report_section = "link_integrity",
                           .link_role = "imu"};
 

@@ -44,6 +44,7 @@ const DeviceKind kRangefindersKind{.name = "rangefinders",
                                    .navd_keys = {},
                                    .write_navd = nullptr,
                                    .links = RangefinderLinks,
+                                   .navd_links = nullptr,
                                    .report_section = "link_integrity",
                                    .link_role = ""};
 

@@ -33,6 +33,7 @@ const DeviceKind kRtkBaseKind{.name = "rtk_base",
                               .navd_keys = {},
                               .write_navd = nullptr,
                               .links = RtkBaseLinks,
+                              .navd_links = nullptr,
                               .report_section = "link_integrity",
                               .link_role = ""};
 

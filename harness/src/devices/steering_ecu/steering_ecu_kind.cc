@@ -47,6 +47,7 @@ const DeviceKind kSteeringEcuKind{
     .navd_keys = {},
     .write_navd = nullptr,
     .links = SteeringEcuLinks,
+    .navd_links = nullptr,
     .report_section = "closed_loop",
     .link_role = ""};
 

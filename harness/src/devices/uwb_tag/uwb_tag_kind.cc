@@ -24,6 +24,12 @@ constexpr std::string_view kUwbTagNavdKeys[] = {
     "uwb.device",         "uwb.baud",           "uwb.format",          "uwb.anchors_m",
     "uwb.origin_lat_deg", "uwb.origin_lon_deg", "uwb.origin_height_m", "uwb.time_zero_unix_ns"};
 
+// navd's UWB mode reads the tag (and the WT901C) only.
+std::vector<std::string> UwbTagNavdLinks(const Scenario& s) {
+  if (s.estimator.navd_mode != NavdMode::kUwb) return {};
+  return {s.uwb.link};
+}
+
 }  // namespace
 
 extern const DeviceKind kUwbTagKind;
@@ -36,6 +42,7 @@ const DeviceKind kUwbTagKind{.name = "uwb_tag",
                              .navd_keys = kUwbTagNavdKeys,
                              .write_navd = WriteUwbTagNavd,
                              .links = UwbTagLinks,
+                             .navd_links = UwbTagNavdLinks,
                              .report_section = "link_integrity",
                              .link_role = ""};
 

@@ -82,6 +82,7 @@ const DeviceKind kWheelBaseKind{
     .navd_keys = kWheelBaseNavdKeys,
     .write_navd = WriteWheelBaseNavd,
     .links = WheelBaseLinks,
+    .navd_links = nullptr,
     .report_section = "closed_loop",
     .link_role = ""};
 

@@ -36,6 +36,12 @@ constexpr std::string_view kWt901cSections[] = {"wt901c"};
 constexpr std::string_view kWt901cNavdKeys[] = {"uwb.attitude_device", "uwb.attitude_baud",
                                                 "uwb.attitude_rate_hz"};
 
+// navd's UWB mode reads the WT901C beside the tag.
+std::vector<std::string> Wt901cNavdLinks(const Scenario& s) {
+  if (s.estimator.navd_mode != NavdMode::kUwb || !s.wt901c.enabled) return {};
+  return {s.wt901c.link};
+}
+
 }  // namespace
 
 extern const DeviceKind kWt901cKind;
@@ -48,6 +54,7 @@ const DeviceKind kWt901cKind{.name = "wt901c",
                              .navd_keys = kWt901cNavdKeys,
                              .write_navd = WriteWt901cNavd,
                              .links = Wt901cLinks,
+                             .navd_links = Wt901cNavdLinks,
                              .report_section = "link_integrity",
                              .link_role = ""};
 

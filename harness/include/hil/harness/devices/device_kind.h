@@ -4,8 +4,8 @@
 /// the IMU board's MCU, the UWB tag, the WT901C, …), as gpsd lists its drivers in one array. A row
 /// names the scenario section its spec reader reads, the builder that adds its devices and links
 /// to a run, the navd.conf keys it writes and where report.json shows it. The scenario loader
-/// (scenario_file.h), BuildDevices (run/device_set.h), the navd.conf writer (navd_conf.h) and the
-/// link check of report.json go through the table; nothing else names a kind.
+/// (scenario_file.h), BuildDevices (run/device_set.h), the navd.conf writer (navd_conf.h), the
+/// links the run waits for navd to open and the link check of report.json go through the table.
 ///
 /// Adding a kind: a folder harness/src/devices/<kind>/ with its reader, builder and (if navd reads
 /// it) navd.conf writer, one `extern` and one row in device_table.cc, its sources in
@@ -85,6 +85,9 @@ struct DeviceKind {
                      std::ostream& out);
   /// Its links in the scenario (empty without the device).
   std::vector<std::string> (*links)(const Scenario& s);
+  /// The links of it that navd reads, given the scenario's estimator.navd_mode (the run waits for
+  /// navd to open them and gates them by its reads); null when navd reads none.
+  std::vector<std::string> (*navd_links)(const Scenario& s);
   /// The report.json section that reports it ("link_integrity": its links' integrity, under
   /// `link_role`).
   std::string_view report_section;
