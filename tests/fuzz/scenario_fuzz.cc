@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "hil/harness/devices/scenario_file.h"
 #include "hil/harness/scenario/scenario.h"
 #include "hil/harness/scenario/yaml_reader.h"
 

@@ -22,6 +22,7 @@
 #include <filesystem>
 #include <set>
 
+#include "hil/harness/devices/scenario_file.h"
 #include "hil/harness/scenario/scenario.h"
 #include "hil/harness/scenario/yaml_reader.h"
 

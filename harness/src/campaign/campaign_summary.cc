@@ -6,6 +6,7 @@
 
 #include "hil/harness/campaign/campaign_stats.h"
 #include "hil/harness/campaign/suite_report.h"
+#include "hil/harness/devices/scenario_file.h"
 #include "hil/harness/scenario/yaml_reader.h"
 
 namespace hil::harness {

@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 
 #include "hil/harness/cli/commands.h"
+#include "hil/harness/devices/scenario_file.h"
 #include "hil/harness/scenario/yaml_reader.h"
 
 namespace hil::cli {

@@ -8,6 +8,7 @@
 #include <thread>
 #include <utility>
 
+#include "hil/harness/devices/device_kind.h"
 #include "hil/harness/eval/cross_track.h"
 #include "hil/harness/eval/fault_path_deviation.h"
 #include "hil/harness/eval/outage_metrics.h"
@@ -148,14 +149,12 @@ void CountLinksAndDevices(RunContext& ctx) {
   }
 }
 
-// Which of navd's counters speak for a link: "gnss" for the receivers', "imu" for the MCU's; any
-// other link is its own role (no counters: only the run's drops are judged).
+// Which of navd's counters speak for a link: its device kind's link_role ("gnss" for the
+// receivers', "imu" for the MCU's); any other link is its own role (no counters: only the run's
+// drops are judged).
 std::string LinkRole(const Scenario& s, const std::string& link) {
-  for (const GnssReceiverSpec& r : s.gnss.receivers) {
-    if (r.link == link) return "gnss";
-  }
-  if (s.mcu.enabled && s.mcu.link == link) return "imu";
-  return link;
+  const DeviceKind* kind = DeviceKindOfLink(s, link);
+  return kind && !kind->link_role.empty() ? std::string(kind->link_role) : link;
 }
 
 // What the estimator says it received against what the run sent (link_integrity.h): each link it

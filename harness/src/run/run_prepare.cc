@@ -11,13 +11,14 @@
 #include <nlohmann/json.hpp>
 #include <sys/stat.h>
 
+#include "hil/harness/devices/device_kind.h"
+#include "hil/harness/devices/navd_conf.h"
 #include "hil/harness/dut/shell_substitute.h"
 #include "hil/harness/engine/lockstep_pacer.h"
 #include "hil/harness/engine/wall_clock_pacer.h"
 #include "hil/harness/report/run_outputs.h"
 #include "hil/harness/run/can_run.h"
 
-#include "../report/navd_odometry_conf.h"
 #include "run_phases.h"
 
 namespace hil::harness {
@@ -32,26 +33,18 @@ constexpr const char* kNavLink = "ttyNAV";  // pty the estimator writes NMEA int
 constexpr double kNavdMergeWindowS = 2.0;
 constexpr useconds_t kHostOpenPollUs = 2000;  // how often the start checks the host's opens
 
-// The links the estimator reads: those named in its command ({ttyGPS}) or, for navd, in navd.conf.
+// The links the estimator reads: those named in its command ({ttyGPS}) or, for navd, those the
+// device table's rows say navd reads in its mode (navd.conf names them).
 std::set<std::string> HostLinks(const Scenario& s, const std::string& raw_command,
                                 const DeviceSet& set) {
   std::set<std::string> used;
   for (const auto& [name, path] : set.links) {
     if (raw_command.find("{" + name + "}") != std::string::npos) used.insert(name);
   }
-  if (raw_command.find("{navd}") != std::string::npos && s.estimator.navd_mode == NavdMode::kUwb) {
-    used.insert(s.uwb.link);  // navd's UWB mode reads the tag and the WT901C only
-    if (s.wt901c.enabled) used.insert(s.wt901c.link);
-  } else if (raw_command.find("{navd}") != std::string::npos &&
-             s.estimator.navd_mode == NavdMode::kGyroOdometry) {
-    used.insert(s.mcu.link);  // navd's odometry mode reads the IMU board (and the FIFO) only
-  } else if (raw_command.find("{navd}") != std::string::npos) {
-    used.insert(s.gnss.link);
-    if (s.estimator.navd_mode == NavdMode::kMultiGnss) {
-      for (const auto& rx : s.gnss.receivers) used.insert(rx.link);  // navd reads every receiver
-    }
-    if (s.mcu.enabled && s.estimator.navd_mode != NavdMode::kGnssOnly && !s.can.imu_to_estimator)
-      used.insert(s.mcu.link);
+  if (raw_command.find("{navd}") == std::string::npos) return used;
+  for (const DeviceKind* k : DeviceKinds()) {
+    if (!k->navd_links) continue;
+    for (const std::string& link : k->navd_links(s)) used.insert(link);
   }
   return used;
 }

@@ -8,6 +8,7 @@
 
 #include "hil/firmware_emu/gnss/gps_time.h"
 #include "hil/harness/scenario/scenario_overrides.h"
+#include "hil/harness/scenario/scenario_reader.h"
 #include "hil/harness/scenario/yaml_reader.h"
 
 #include "scenario_sections.h"
@@ -139,16 +140,9 @@ std::map<std::string, DefaultCriterionSetting> ReadDefaultCriteria(const YamlRea
   return out;
 }
 
-Scenario FromReader(const YamlReader& root) {
-  std::vector<std::string> keys{"name",    "description", "start_utc",       "duration_s",
-                                "seed",    "estimator",   "criteria",        "faults",
-                                "include", "evaluation",  "default_criteria"};
-  for (const auto* section :
-       {&kTruthSectionKeys, &kGnssSectionKeys, &kMcuSectionKeys, &kCanSectionKeys,
-        &kGreenhouseSectionKeys, &kRangeSensorSectionKeys, &kSuiteSectionKeys,
-        &kPaper003SectionKeys, &kClosedLoopSectionKeys, &kRtkBaseSectionKeys}) {
-    keys.insert(keys.end(), section->begin(), section->end());
-  }
+Scenario FromReader(const YamlReader& root, const DeviceSections& devices) {
+  std::vector<std::string> keys = ScenarioOwnKeys();
+  keys.insert(keys.end(), devices.keys.begin(), devices.keys.end());
   root.CheckKeys(keys);
   Scenario s;
   s.file = root.file();
@@ -162,16 +156,9 @@ Scenario FromReader(const YamlReader& root) {
   s.duration_s = root.DoubleIn("duration_s", s.duration_s, 1, 7 * 86400);
   s.seed = static_cast<std::uint64_t>(root.Int("seed", 1, 0, kMaxSeed));
   ReadTruthSections(root, s.truth);
-  ReadGnssSection(root, s.gnss);
-  ReadMcuSection(root, s.mcu);
-  s.mcu.config.start_unix_ns = s.start_unix_ns;
-  // seed 000: the IMU runs 10 times as fast as the GPS
-  if (s.mcu.imu_rate_is_default) s.mcu.config.imu_rate_hz = 10.0 * s.gnss.rate_hz;
-  ReadPaper003Sections(root, s.uwb, s.wt901c);
-  ReadRtkBaseSection(root, s);
   ReadCanSection(root, s.can);
   ReadGreenhouseSection(root, s);
-  ReadRangeSensorSections(root, s);
+  devices.read(root, s);  // the device table's rows, in table order
   ReadClosedLoopSection(root, s);
   ReadSuiteSections(root, keys, s);
   if (auto e = root.OptionalChild("estimator")) ReadEstimator(*e, s.estimator);
@@ -208,26 +195,37 @@ std::vector<std::string> ScenarioLibraryDirs() {
   return dirs;
 }
 
-Scenario LoadScenario(const std::string& path, bool short_form,
-                      const std::vector<ScenarioOverride>& overrides) {
+std::vector<std::string> ScenarioOwnKeys() {
+  std::vector<std::string> keys{"name",    "description", "start_utc",       "duration_s",
+                                "seed",    "estimator",   "criteria",        "faults",
+                                "include", "evaluation",  "default_criteria"};
+  for (const auto* section : {&kTruthSectionKeys, &kCanSectionKeys, &kGreenhouseSectionKeys,
+                              &kSuiteSectionKeys, &kClosedLoopSectionKeys}) {
+    keys.insert(keys.end(), section->begin(), section->end());
+  }
+  return keys;
+}
+
+Scenario LoadScenarioFile(const std::string& path, bool short_form,
+                          const std::vector<ScenarioOverride>& overrides,
+                          const DeviceSections& devices) {
   YamlReader root = YamlReader::LoadFile(path);
   if (short_form)
     ApplyShortForm(root);  // before the includes: a replaced key is the document's own
   root.ResolveIncludes(std::filesystem::path(path).parent_path().string(), ScenarioLibraryDirs());
   ApplyOverrides(root, overrides);  // after them: a field an include gave can be set too
-  Scenario s = FromReader(root);
+  Scenario s = FromReader(root, devices);
   s.short_form = short_form && s.has_short_form;
   return s;
 }
 
-Scenario ParseScenario(const std::string& text, const std::string& name) {
+Scenario ParseScenarioText(const std::string& text, const std::string& name,
+                           const DeviceSections& devices) {
   YamlReader reader = YamlReader::FromText(text, name);
   reader.ResolveIncludes(".", ScenarioLibraryDirs());
-  return FromReader(reader);
+  return FromReader(reader, devices);
 }
 
-Scenario LoadDefaultScenario() {
-  return ParseScenario(kDefaultScenarioYaml, "<embedded default scenario>");
-}
+const char* DefaultScenarioText() { return kDefaultScenarioYaml; }
 
 }  // namespace hil::harness

@@ -1,7 +1,8 @@
 #pragma once
 // Internal to the harness: readers of the scenario file's sections, one file per owner
-// (scenario_truth.cc: origin, vehicle, path; scenario_gnss.cc: gnss; scenario_mcu.cc: mcu). Each
-// lists the top-level keys it reads so the root check knows them.
+// (scenario_truth.cc: origin, vehicle, path; scenario_can.cc: can; ...). Each lists the top-level
+// keys it reads so the root check knows them. The devices' sections are read by the device table
+// (harness/src/devices/<kind>/, devices/device_kind.h).
 #include <string>
 #include <vector>
 
@@ -14,22 +15,6 @@ extern const std::vector<std::string> kTruthSectionKeys;
 /// Reads origin (required), vehicle and path into the truth configuration.
 void ReadTruthSections(const YamlReader& root, truth::TruthConfig& t);
 
-extern const std::vector<std::string> kGnssSectionKeys;
-/// Reads the gnss section (optional).
-void ReadGnssSection(const YamlReader& root, GnssDeviceSpec& g);
-
-extern const std::vector<std::string> kMcuSectionKeys;
-/// Reads the mcu section (optional; scenario_mcu.cc). Without it the scenario has no IMU board.
-void ReadMcuSection(const YamlReader& root, McuDeviceSpec& m);
-/// Reads the mcu section's `rough` mapping (issue 41; scenario_mcu_rough.cc) into `c`, over what
-/// its `imu_profile` (if any) set.
-void ReadMcuRough(const YamlReader& r, mcu::McuConfig& c);
-extern const std::vector<std::string> kPaper003SectionKeys;
-/// Reads the uwb and wt901c sections (optional; scenario_paper003.cc).
-void ReadPaper003Sections(const YamlReader& root, UwbDeviceSpec& u, Wt901cDeviceSpec& w);
-extern const std::vector<std::string> kRtkBaseSectionKeys;
-/// Reads the rtk_base section (optional; scenario_rtk_base.cc), after the origin and start_utc.
-void ReadRtkBaseSection(const YamlReader& root, Scenario& s);
 extern const std::vector<std::string> kCanSectionKeys;
 /// Reads the can section (optional; scenario_can.cc).
 void ReadCanSection(const YamlReader& root, CanLinkSpec& c);
@@ -41,10 +26,6 @@ extern const std::vector<std::string> kGreenhouseSectionKeys;
 /// Reads the greenhouse section (optional; scenario_greenhouse.cc): the ridge map of paper 001.
 void ReadGreenhouseSection(const YamlReader& root, Scenario& s);
 
-extern const std::vector<std::string> kRangeSensorSectionKeys;
-/// Reads the rangefinders and lidar sections (optional; scenario_range_sensors.cc), after the
-/// greenhouse section they need.
-void ReadRangeSensorSections(const YamlReader& root, Scenario& s);
 extern const std::vector<std::string> kClosedLoopSectionKeys;
 /// Reads the closed_loop section (optional; scenario_closed_loop.cc) and makes the truth take
 /// the actuator's commands.

@@ -11,6 +11,7 @@
 
 #include "hil/harness/campaign/campaign_merge.h"
 #include "hil/harness/campaign/campaign_runner.h"
+#include "hil/harness/devices/scenario_file.h"
 #include "hil/harness/scenario/scenario.h"
 
 namespace hil::harness {

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "hil/harness/devices/scenario_file.h"
 #include "hil/harness/faults/byte_faults.h"
 #include "hil/harness/faults/fault_record.h"
 #include "hil/harness/faults/fault_report.h"

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "hil/harness/devices/scenario_file.h"
 #include "hil/harness/dut/estimate_reader.h"
 #include "hil/harness/eval/evaluator.h"
 #include "hil/harness/report/report.h"

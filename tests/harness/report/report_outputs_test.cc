@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "hil/firmware_emu/gnss/gps_time.h"
+#include "hil/harness/devices/scenario_file.h"
 #include "hil/harness/dut/estimate_reader.h"
 #include "hil/harness/report/report.h"
 #include "hil/harness/report/svg_plot.h"

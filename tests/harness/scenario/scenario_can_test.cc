@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include "hil/estimator/navd/navd_config.h"
+#include "hil/harness/devices/navd_conf.h"
+#include "hil/harness/devices/scenario_file.h"
 #include "hil/harness/report/run_outputs.h"
 #include "hil/harness/run/can_run.h"
 #include "hil/harness/scenario/scenario.h"

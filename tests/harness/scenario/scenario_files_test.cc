@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "hil/harness/devices/scenario_file.h"
 #include "hil/harness/scenario/scenario.h"
 #include "hil/harness/scenario/yaml_reader.h"
 #include "hil/harness/suite/suite.h"

@@ -2,6 +2,7 @@
 // make no sense fail with the file, line and field.
 #include <gtest/gtest.h>
 
+#include "hil/harness/devices/scenario_file.h"
 #include "hil/harness/scenario/scenario.h"
 #include "hil/harness/scenario/yaml_reader.h"
 

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "hil/harness/devices/scenario_file.h"
 #include "hil/harness/scenario/scenario.h"
 
 namespace hil::harness {

@@ -1,7 +1,7 @@
 #pragma once
 /// @file
-/// Files of the run folder besides the reports: navd.conf, truth.csv, gnss_fixes.csv,
-/// schedule_error.json.
+/// Files of the run folder besides the reports: truth.csv, gnss_fixes.csv, schedule_error.json
+/// (navd.conf: devices/navd_conf.h).
 
 #include <cstdint>
 #include <optional>
@@ -21,16 +21,9 @@
 
 namespace hil::harness {
 
-/// The scenario's own [input] merge_window_s for navd (estimator.navd_input), -1 when it sets none.
-double NavdMergeWindowS(const Scenario& s);
 /// Closed loop: the FIFO in the run folder into which navd writes its NMEA 0183 solution for the
 /// controller ([output] nmea_device), substituted as {nav_nmea} in the controller's command.
 inline constexpr const char* kNavNmeaFifo = "nav.nmea";
-
-/// The navd configuration for this scenario (input device, leap seconds, mode, JSON output).
-/// `merge_window_s` > 0: [input] merge_window_s (unless the scenario's navd_input sets it).
-void WriteNavdConfig(const std::string& path, const Scenario& s, const std::string& gnss_device,
-                     double merge_window_s = 0);
 
 /// Truth at 10 Hz as CSV; returns the horizontal track (t, east, north) for the plots.
 void WriteTruthCsv(const Scenario& s, const std::string& path, std::vector<double>& t_s,

@@ -1,8 +1,9 @@
 #pragma once
 /// @file
 /// A scenario: everything one run needs, loaded from a YAML file (format in
-/// vectors/scenarios/README.md) and immutable afterwards. Loading validates every key and value
-/// and reports errors as ScenarioError (file, line, field).
+/// vectors/scenarios/README.md; LoadScenario in devices/scenario_file.h) and immutable afterwards.
+/// Loading validates every key and value and reports errors as ScenarioError (file, line, field).
+/// Each kind of device has its spec here and its row in the device table (devices/device_kind.h).
 
 #include <cstdint>
 #include <map>
@@ -70,7 +71,7 @@ struct GnssReceiverSpec {
   Eigen::Vector3d p_BA_B_m = Eigen::Vector3d::Zero();  ///< antenna lever arm (body FLU)
 };
 
-/// The GNSS receiver device(s) of a scenario (section `gnss`, read by scenario_gnss.cc). All
+/// The GNSS receiver device(s) of a scenario (section `gnss`, devices/gnss_receiver/). All
 /// receivers share the profile, settings, faults and error grade; each has its own link and
 /// antenna and its own error part beside the common one. `link` and `model.p_BA_B_m` are those of
 /// the first receiver.
@@ -87,7 +88,8 @@ struct GnssDeviceSpec {
   std::vector<GnssReceiverSpec> receivers;  ///< at least one after loading
 };
 
-/// The IMU board's microcontroller of a scenario (section `mcu:`; absent → no IMU board).
+/// The IMU board's microcontroller of a scenario (section `mcu:`, devices/mcu/; absent → no IMU
+/// board).
 struct McuDeviceSpec {
   bool enabled = false;         ///< true when the scenario has an `mcu:` section
   std::string link = "ttyIMU";  ///< symlink name in the run folder
@@ -96,7 +98,7 @@ struct McuDeviceSpec {
   mcu::McuConfig config;            ///< start_unix_ns is filled from the scenario's start_utc
 };
 
-/// Paper 003's UWB tag (section `uwb:`, scenario_paper003.cc; absent → no UWB).
+/// The UWB tag (section `uwb:`, devices/uwb_tag/; absent → no UWB).
 struct UwbDeviceSpec {
   bool enabled = false;
   std::string link = "ttyUWB";  ///< symlink name in the run folder
@@ -104,7 +106,7 @@ struct UwbDeviceSpec {
   uwb::UwbTagConfig config;
 };
 
-/// Paper 003's WT901C attitude sensor (section `wt901c:`, scenario_paper003.cc; absent → none).
+/// The WT901C attitude sensor (section `wt901c:`, devices/wt901c/; absent → none).
 struct Wt901cDeviceSpec {
   bool enabled = false;
   std::string link = "ttyWIT";  ///< symlink name in the run folder
@@ -112,8 +114,8 @@ struct Wt901cDeviceSpec {
   wit::Wt901cConfig config;
 };
 
-/// An RTK reference station and its correction radio (section `rtk_base:`,
-/// scenario_rtk_base.cc; absent → none): RTCM 3 on its own pty.
+/// An RTK reference station and its correction radio (section `rtk_base:`, devices/rtk_base/;
+/// absent → none): RTCM 3 on its own pty.
 struct RtkBaseDeviceSpec {
   bool enabled = false;
   std::string link = "ttyRTCM";  ///< symlink name in the run folder
@@ -127,8 +129,8 @@ struct RangefinderUnitSpec {
   rangefinder::RangefinderMount mount;
 };
 
-/// Paper 001's laser rangefinders (section `rangefinders:`; needs `greenhouse:`). Each unit is a
-/// TfLunaDevice on its own pty; `module` holds the settings they share.
+/// Laser rangefinders (section `rangefinders:`, devices/rangefinders/; needs `greenhouse:`). Each
+/// unit is a TfLunaDevice on its own pty; `module` holds the settings they share.
 struct RangefinderSpec {
   bool enabled = false;
   rangefinder::TfLunaConfig module;
@@ -137,7 +139,7 @@ struct RangefinderSpec {
   std::size_t tx_buffer_bytes = 4096;
 };
 
-/// Paper 001's 2-D LiDAR (section `lidar:`; needs `greenhouse:`): an RplidarDevice on a pty.
+/// A 2-D LiDAR (section `lidar:`, devices/lidar/; needs `greenhouse:`): an RplidarDevice on a pty.
 struct LidarSpec {
   bool enabled = false;
   std::string link = "ttyLIDAR";
@@ -259,18 +261,9 @@ struct Scenario {
   bool has_short_form = false, short_form = false;
 };
 
-/// Loads and validates a scenario file; `include:` files are looked up beside it, then in
-/// ScenarioLibraryDirs(). With `short_form`, the keys of the file's `short:` section (if any)
-/// replace the top-level keys of the same name first (`hil run --short`, `hil suite --short`);
-/// then, after the includes, each of `overrides` sets one field (`hil run --set`, a campaign's
-/// sweeps; scenario_overrides.h). @throws ScenarioError.
-Scenario LoadScenario(const std::string& path, bool short_form = false,
-                      const std::vector<ScenarioOverride>& overrides = {});
 /// Where included scenario pieces live: $HIL_SCENARIO_LIB (colon-separated), the source tree's
 /// vectors/scenarios/lib, and for an installed hil PREFIX/share/hil/scenarios/lib beside its bin/.
 std::vector<std::string> ScenarioLibraryDirs();
-/// Loads the embedded default scenario (vectors/scenarios/default.yaml, compiled in).
-Scenario LoadDefaultScenario();
 
 /// NGA's EGM96 15' geoid grid (`gnss.geoid: egm96`): PROJ's egm96_15.gtx (Debian proj-data; found
 /// when the project is configured, or $HIL_EGM96_GRID), read once per process.
@@ -279,7 +272,5 @@ std::shared_ptr<const gnss::GeoidGrid> Egm96Geoid();
 /// The geoid table of a u-blox 5 (`gnss.geoid: ublox5`, the default): EGM96 at 10° nodes rounded
 /// to whole metres, interpolated bilinearly (see geoid_grid.h for the real captures it matches).
 std::shared_ptr<const gnss::GeoidGrid> Ublox5Geoid();
-/// Parses scenario text; `name` stands for the file in messages. @throws ScenarioError.
-Scenario ParseScenario(const std::string& text, const std::string& name);
 
 }  // namespace hil::harness
