@@ -1,13 +1,10 @@
 #include "hil/firmware_emu/gnss/ubx_frame.h"
 
 #include "hil/firmware_emu/gnss/nmea_sentence.h"
+#include "hil/firmware_emu/little_endian.h"
 
 namespace hil::gnss::ubx {
 namespace {
-
-void PutLe(std::vector<std::uint8_t>& out, std::uint64_t v, int n) {
-  for (int i = 0; i < n; ++i) out.push_back(static_cast<std::uint8_t>((v >> (8 * i)) & 0xFFu));
-}
 
 int HexDigit(char c) {
   if (c >= '0' && c <= '9') return c - '0';
@@ -19,27 +16,27 @@ int HexDigit(char c) {
 }  // namespace
 
 Writer& Writer::U1(std::uint64_t v) {
-  PutLe(bytes_, v, 1);
+  LeAppend(bytes_, v, 1);
   return *this;
 }
 Writer& Writer::U2(std::uint64_t v) {
-  PutLe(bytes_, v, 2);
+  LeAppend(bytes_, v, 2);
   return *this;
 }
 Writer& Writer::U4(std::uint64_t v) {
-  PutLe(bytes_, v, 4);
+  LeAppend(bytes_, v, 4);
   return *this;
 }
 Writer& Writer::I1(std::int64_t v) {
-  PutLe(bytes_, static_cast<std::uint64_t>(v), 1);
+  LeAppend(bytes_, static_cast<std::uint64_t>(v), 1);
   return *this;
 }
 Writer& Writer::I2(std::int64_t v) {
-  PutLe(bytes_, static_cast<std::uint64_t>(v), 2);
+  LeAppend(bytes_, static_cast<std::uint64_t>(v), 2);
   return *this;
 }
 Writer& Writer::I4(std::int64_t v) {
-  PutLe(bytes_, static_cast<std::uint64_t>(v), 4);
+  LeAppend(bytes_, static_cast<std::uint64_t>(v), 4);
   return *this;
 }
 Writer& Writer::Chars(std::string_view text, std::size_t width) {

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <set>
 
+#include "hil/firmware_emu/little_endian.h"
 #include "hil/harness/dut/nmea_sentence.h"
 #include "hil/harness/eval/evaluator.h"
 #include "hil/harness/validate/validate.h"
@@ -33,15 +34,6 @@ struct Framed {
   std::size_t bad = 0, garbage = 0;
 };
 
-std::uint16_t Le16(const std::string& b, std::size_t i) {
-  return static_cast<std::uint16_t>(static_cast<unsigned char>(b[i]) |
-                                    (static_cast<unsigned char>(b[i + 1]) << 8));
-}
-std::uint32_t Le32(const std::string& b, std::size_t i) {
-  return static_cast<std::uint32_t>(Le16(b, i)) |
-         (static_cast<std::uint32_t>(Le16(b, i + 2)) << 16);
-}
-
 std::int64_t TimeAt(const ByteStream& s, std::size_t i) {
   return i < s.t_ns.size() ? s.t_ns[i] : -1;
 }
@@ -58,7 +50,7 @@ FrameStep FrameUbx(const ByteStream& s, std::size_t& pos, Framed& out, Validatio
                             static_cast<std::int64_t>(pos)});
     return FrameStep::kStop;
   }
-  const std::size_t len = Le16(b, pos + 4);
+  const std::size_t len = LeRead<std::uint16_t>(b, pos + 4);
   if (len > kUbxMaxPayload) {
     rep.findings.push_back({true, "ubx_length",
                             "implausible UBX payload length " + std::to_string(len),
@@ -606,7 +598,7 @@ void CheckUbx(const Framed& fr, bool neo5m, ValidationReport& rep) {
       continue;
     }
     if (spec->has_itow && len >= 4) {
-      const std::uint32_t itow = Le32(f.payload, 0);
+      const std::uint32_t itow = LeRead<std::uint32_t>(f.payload, 0);
       if (itows.empty() || itows.back() != itow) {
         if (!itows.empty() && itow < itows.back() && itows.back() - itow < 302400000u) {
           rep.findings.push_back({true, "time_monotonic",
