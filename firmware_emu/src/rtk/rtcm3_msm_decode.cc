@@ -10,11 +10,11 @@
 namespace hil::rtcm3 {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kNotAvailable = std::numeric_limits<double>::quiet_NaN();
 
 double Fine(BitReader& r, int bits, double unit) {
   const std::int64_t v = r.GetSigned(bits);
-  return v == -(std::int64_t{1} << (bits - 1)) ? kNaN : static_cast<double>(v) * unit;
+  return v == -(std::int64_t{1} << (bits - 1)) ? kNotAvailable : static_cast<double>(v) * unit;
 }
 
 MsmEpoch ReadHeader(BitReader& r, std::vector<int>& sats, std::vector<int>& sigs,
@@ -55,10 +55,10 @@ MsmEpoch DecodeGpsMsm(const std::string& body, MsmKind& kind) {
   std::vector<bool> mask;
   MsmEpoch e = ReadHeader(r, sats, sigs, mask);
   const std::size_t ns = sats.size();
-  std::vector<double> rough(ns), rate(ns, kNaN);
+  std::vector<double> rough(ns), rate(ns, kNotAvailable);
   for (std::size_t i = 0; i < ns; ++i) {
     const auto v = r.GetUnsigned(8);
-    rough[i] = v == 255 ? kNaN : static_cast<double>(v);
+    rough[i] = v == 255 ? kNotAvailable : static_cast<double>(v);
   }
   if (m7) {
     for (std::size_t i = 0; i < ns; ++i) r.GetUnsigned(4);
@@ -67,7 +67,7 @@ MsmEpoch DecodeGpsMsm(const std::string& body, MsmKind& kind) {
   if (m7) {
     for (std::size_t i = 0; i < ns; ++i) {
       const std::int64_t v = r.GetSigned(14);
-      rate[i] = v == -8192 ? kNaN : static_cast<double>(v);
+      rate[i] = v == -8192 ? kNotAvailable : static_cast<double>(v);
     }
   }
   for (std::size_t i = 0; i < ns; ++i) {
@@ -99,7 +99,7 @@ MsmEpoch DecodeGpsMsm(const std::string& body, MsmKind& kind) {
   for (MsmSignal* g : cells)
     g->cnr_dbhz = static_cast<double>(r.GetUnsigned(m7 ? 10 : 6)) * (m7 ? 1.0 / 16.0 : 1.0);
   for (std::size_t j = 0; j < cells.size(); ++j)
-    cells[j]->phaserange_rate_mps = m7 ? rate[owner[j]] + Fine(r, 15, 0.0001) : kNaN;
+    cells[j]->phaserange_rate_mps = m7 ? rate[owner[j]] + Fine(r, 15, 0.0001) : kNotAvailable;
   if (!r.ok() || (r.position() + 7) / 8 != body.size())
     throw std::invalid_argument("MSM body length does not match its masks");
   return e;
