@@ -85,6 +85,26 @@ std::string Frame(std::uint8_t cls, std::uint8_t id, const std::vector<std::uint
   return f;
 }
 
+FrameAt ParseFrameAt(std::string_view bytes, std::size_t max_payload) {
+  FrameAt f;
+  if (bytes.size() < 6) return f;
+  f.cls = static_cast<std::uint8_t>(bytes[2]);
+  f.id = static_cast<std::uint8_t>(bytes[3]);
+  f.payload_length = LeRead<std::uint16_t>(bytes, 4);
+  if (f.payload_length > max_payload) {
+    f.status = FrameAtStatus::kTooLong;
+  } else if (bytes.size() < f.frame_size()) {
+    f.status = FrameAtStatus::kCut;
+  } else {
+    const auto [ck_a, ck_b] = Checksum(bytes.substr(2, 4 + f.payload_length));
+    const bool ok = static_cast<std::uint8_t>(bytes[6 + f.payload_length]) == ck_a &&
+                    static_cast<std::uint8_t>(bytes[7 + f.payload_length]) == ck_b;
+    f.status = ok ? FrameAtStatus::kFrame : FrameAtStatus::kBadChecksum;
+    if (ok) f.payload = bytes.substr(6, f.payload_length);
+  }
+  return f;
+}
+
 std::vector<InputMessage> InputParser::Feed(std::string_view bytes) {
   std::vector<InputMessage> out;
   for (char c : bytes) FeedByte(static_cast<std::uint8_t>(c), out);

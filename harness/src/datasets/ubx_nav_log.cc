@@ -6,6 +6,7 @@
 #include <iterator>
 #include <map>
 
+#include "hil/firmware_emu/gnss/ubx_frame.h"
 #include "hil/firmware_emu/little_endian.h"
 #include "hil/harness/datasets/import_fields.h"
 
@@ -91,28 +92,21 @@ UbxNavLog ReadUbxNavLog(const std::string& path) {
       ++i;
       continue;
     }
-    if (i + 8 > b.size()) {
-      ++log.cut_frames;
-      break;
-    }
-    const std::size_t len = LeRead<std::uint16_t>(&b[i + 4]);
-    if (i + 8 + len > b.size()) {
-      ++log.cut_frames;
-      break;
-    }
-    std::uint8_t ca = 0, cb = 0;
-    for (std::size_t k = i + 2; k < i + 6 + len; ++k) {
-      ca = static_cast<std::uint8_t>(ca + b[k]);
-      cb = static_cast<std::uint8_t>(cb + ca);
-    }
-    if (ca != b[i + 6 + len] || cb != b[i + 7 + len]) {
+    const gnss::ubx::FrameAt u = gnss::ubx::ParseFrameAt(
+        std::string_view(reinterpret_cast<const char*>(&b[i]), b.size() - i));
+    if (u.status == gnss::ubx::FrameAtStatus::kBadChecksum) {
       ++log.bad_checksum;
       ++i;
       continue;
     }
+    if (u.status != gnss::ubx::FrameAtStatus::kFrame) {  // cut (no limit below 0xFFFF is set)
+      ++log.cut_frames;
+      break;
+    }
     ++log.frames;
+    const std::size_t len = u.payload_length;
     const unsigned char* p = &b[i + 6];
-    const int cls = b[i + 2], id = b[i + 3];
+    const int cls = u.cls, id = u.id;
     if (cls == 0x01 && id == 0x07) {
       CheckUbxLength(len, 92, "NAV-PVT", path, i);
       OnNavPvt(p, log);
