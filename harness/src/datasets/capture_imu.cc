@@ -3,23 +3,15 @@
 #include <cmath>
 #include <cstring>
 #include <optional>
+#include <span>
 #include <stdexcept>
 
 #include "hil/firmware_emu/little_endian.h"
+#include "hil/firmware_emu/mcu/mcu_frame.h"
 #include "hil/harness/links/capture_format.h"
 
 namespace hil::harness {
 namespace {
-
-std::uint16_t Crc16(const std::string& b, std::size_t from, std::size_t to) {
-  std::uint16_t crc = 0xFFFF;
-  for (std::size_t i = from; i < to; ++i) {
-    crc = static_cast<std::uint16_t>(crc ^ (static_cast<unsigned char>(b[i]) << 8));
-    for (int k = 0; k < 8; ++k)
-      crc = static_cast<std::uint16_t>((crc & 0x8000) ? (crc << 1) ^ 0x1021 : crc << 1);
-  }
-  return crc;
-}
 
 struct RawSample {
   std::int64_t tick;
@@ -38,7 +30,8 @@ class Decoder {
   void Frame(const std::string& b, std::int64_t t_emu_ns) {
     if (b.size() < 13 || b[0] != '\xa5' || b[1] != '\x5a' ||
         b.size() != 13u + static_cast<unsigned char>(b[4]) ||
-        Crc16(b, 2, b.size() - 2) != LeRead<std::uint16_t>(b, b.size() - 2)) {
+        mcu::Crc16CcittFalse(std::span(reinterpret_cast<const std::uint8_t*>(b.data()) + 2,
+                                       b.size() - 4)) != LeRead<std::uint16_t>(b, b.size() - 2)) {
       ++out_.bad_frames;
       return;
     }

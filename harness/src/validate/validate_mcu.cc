@@ -6,8 +6,10 @@
 #include <cstdio>
 #include <map>
 #include <optional>
+#include <span>
 
 #include "hil/firmware_emu/little_endian.h"
+#include "hil/firmware_emu/mcu/mcu_frame.h"
 #include "hil/harness/validate/validate.h"
 
 #include "garbage_run.h"
@@ -17,16 +19,6 @@ namespace {
 
 constexpr double kMaxTickRateErrorPpm = 500.0;  // crystal ±100 ppm plus margin
 constexpr double kMaxImuRateError = 0.02;
-
-std::uint16_t Crc16CcittFalse(const std::string& b, std::size_t from, std::size_t to) {
-  std::uint16_t crc = 0xFFFF;
-  for (std::size_t i = from; i < to; ++i) {
-    crc = static_cast<std::uint16_t>(crc ^ (static_cast<unsigned char>(b[i]) << 8));
-    for (int k = 0; k < 8; ++k)
-      crc = static_cast<std::uint16_t>(crc & 0x8000 ? (crc << 1) ^ 0x1021 : crc << 1);
-  }
-  return crc;
-}
 
 struct TypeSpec {
   const char* name;
@@ -176,7 +168,8 @@ ValidationReport ValidateMcuStream(const ByteStream& s) {
       rep.findings.push_back({false, "truncated", "frame cut off at the end of the stream", off});
       break;
     }
-    if (Crc16CcittFalse(b, pos + 2, pos + 11 + n) != LeRead<std::uint16_t>(b, pos + 11 + n)) {
+    if (mcu::Crc16CcittFalse(std::span(reinterpret_cast<const std::uint8_t*>(b.data()) + pos + 2,
+                                       9 + n)) != LeRead<std::uint16_t>(b, pos + 11 + n)) {
       rep.findings.push_back(
           {true, "checksum", std::string(spec->second.name) + " CRC mismatch", off});
       ++rep.bad_frames;
