@@ -3,9 +3,11 @@
 namespace hil::actuator {
 
 BaseSerialDevice::BaseSerialDevice(const BaseSerialDeviceConfig& config)
-    : cfg_(config), motors_(cfg_.motors), session_(cfg_.serial, motors_), loss_(cfg_.link_loss) {
-  next_tick_ = Time{} + cfg_.control_period;
-}
+    : cfg_(config),
+      motors_(cfg_.motors),
+      session_(cfg_.serial, motors_),
+      tick_({cfg_.grid, cfg_.control_period, cfg_.command_timeout, cfg_.first_command_due}),
+      loss_(cfg_.link_loss) {}
 
 int BaseSerialDevice::baud(int port) const {
   (void)port;
@@ -23,15 +25,7 @@ void BaseSerialDevice::OnHostBytes(int port, Time t, std::string_view bytes, Dev
 }
 
 void BaseSerialDevice::ControlTick(Time t) {
-  ++counters_.ticks;
-  const bool missing =
-      t >= cfg_.first_command_due &&
-      (!counters_.last_command || t - *counters_.last_command > cfg_.command_timeout);
-  if (missing) {
-    if (counters_.missing_commands == 0 || (!ticks_.empty() && !ticks_.back().missing))
-      counters_.first_missing = t;
-    ++counters_.missing_commands;
-  }
+  const bool missing = tick_.CountTick(t, counters_);
   const double track = cfg_.motors.track_m, r = cfg_.motors.wheel_radius_m;
   BaseTickRecord rec;
   rec.t = t;
@@ -48,23 +42,13 @@ void BaseSerialDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
   (void)out;
   const Time t = truth.t;
   motors_.AdvanceTo(t);
-  if (t >= next_tick_) {
-    ControlTick(t);
-    next_tick_ += cfg_.control_period;
-  }
-  // the wheels' state now drives the truth from the next grid instant on (the first, at t = 0,
-  // from the start: the truth has no input before it), stamped exactly on it, as the steering
-  // ECU's: an instant between grid points (t + 1 ns) is applied one grid step apart by the truth
-  // integrated online and by its replay for the evaluation (truth.csv)
-  const Time t_effect = t == Time{} ? t : t + cfg_.grid;
-  pending_ = VehicleCommand{t_effect, motors_.body_speed_mps(), motors_.body_yaw_rate_radps()};
-  next_ = t + cfg_.grid;
+  if (tick_.TickDue(t)) ControlTick(t);
+  // the wheels' state drives the truth from the next grid instant on
+  tick_.Hold(t, motors_.body_speed_mps(), motors_.body_yaw_rate_radps());
 }
 
 std::optional<VehicleCommand> BaseSerialDevice::TakeVehicleCommand() {
-  std::optional<VehicleCommand> c = pending_;
-  pending_.reset();
-  return c;
+  return tick_.TakeVehicleCommand();
 }
 
 }  // namespace hil::actuator

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "hil/firmware_emu/little_endian.h"
+
 namespace hil::actuator {
 namespace {
 
@@ -16,11 +18,6 @@ CanFrame Blank(Time t, std::uint32_t id) {
   f.len = 8;
   for (int i = 0; i < 8; ++i) f.data[i] = 0xFF;
   return f;
-}
-
-void Put16(CanFrame& f, int at, std::uint32_t v) {
-  f.data[at] = static_cast<std::uint8_t>(v & 0xFF);
-  f.data[at + 1] = static_cast<std::uint8_t>((v >> 8) & 0xFF);
 }
 
 }  // namespace
@@ -62,7 +59,7 @@ std::uint32_t MakeJ1939Id(std::uint8_t priority, std::uint32_t pgn, std::uint8_t
 
 CommandFrameError DecodeGuidanceSystemCommand(const CanFrame& frame, GuidanceSystemCommand& out) {
   if (frame.len != 8) return CommandFrameError::kWrongLength;
-  out.curvature_raw = static_cast<std::uint16_t>(frame.data[0] | (frame.data[1] << 8));
+  out.curvature_raw = LeRead<std::uint16_t>(frame.data.data());
   out.status = static_cast<CurvatureCommandStatus>(frame.data[2] & 3);
   out.curvature_per_km = CurvatureFromRaw(out.curvature_raw);
   if (out.curvature_raw > kCurvatureRawMax) return CommandFrameError::kCurvatureOutOfRange;
@@ -72,7 +69,7 @@ CommandFrameError DecodeGuidanceSystemCommand(const CanFrame& frame, GuidanceSys
 CanFrame EncodeGuidanceMachineInfo(Time t, std::uint8_t priority, std::uint8_t source,
                                    std::uint8_t destination, const GuidanceMachineInfo& info) {
   CanFrame f = Blank(t, MakeJ1939Id(priority, kPgnGuidanceMachineInfo, source, destination));
-  Put16(f, 0, EncodeCurvatureRaw(info.estimated_curvature_per_km));
+  LePut(f.data, 0, EncodeCurvatureRaw(info.estimated_curvature_per_km), 2);
   f.data[2] = static_cast<std::uint8_t>((info.mechanical_system_lockout & 3) |
                                         ((info.steering_system_readiness & 3) << 2) |
                                         ((info.steering_input_position_status & 3) << 4) |
@@ -87,10 +84,11 @@ CanFrame EncodeWheelBasedSpeedDistance(Time t, std::uint8_t priority, std::uint8
                                        const WheelBasedSpeedDistance& msg) {
   CanFrame f = Blank(t, MakeJ1939Id(priority, kPgnWheelBasedSpeedDistance, source, 0xFF));
   const double speed_raw = std::round(std::fabs(msg.speed_mps) * 1000.0);
-  Put16(f, 0, speed_raw > kSpeedRawMax ? kSpeedRawMax : static_cast<std::uint32_t>(speed_raw));
+  LePut(f.data, 0, speed_raw > kSpeedRawMax ? kSpeedRawMax : static_cast<std::uint32_t>(speed_raw),
+        2);
   const double d_raw = std::round(std::fabs(msg.distance_m) * 1000.0);
   const auto d = static_cast<std::uint64_t>(d_raw) % kDistanceRawModulus;
-  for (int i = 0; i < 4; ++i) f.data[2 + i] = static_cast<std::uint8_t>((d >> (8 * i)) & 0xFF);
+  LePut(f.data, 2, d, 4);
   f.data[6] = msg.max_time_of_tractor_power_min;
   f.data[7] = static_cast<std::uint8_t>((msg.direction & 3) | ((msg.key_switch & 3) << 2) |
                                         ((msg.implement_start_stop & 3) << 4) |

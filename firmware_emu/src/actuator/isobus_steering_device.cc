@@ -5,8 +5,10 @@
 namespace hil::actuator {
 
 IsobusSteeringDevice::IsobusSteeringDevice(const IsobusSteeringDeviceConfig& config)
-    : cfg_(config), ecu_(cfg_.ecu), loss_(cfg_.link_loss) {
-  next_tick_ = Time{} + cfg_.control_period;
+    : cfg_(config),
+      ecu_(cfg_.ecu),
+      tick_({cfg_.grid, cfg_.control_period, cfg_.command_timeout, cfg_.first_command_due}),
+      loss_(cfg_.link_loss) {
   host_frames_.reserve(16);
 }
 
@@ -45,15 +47,7 @@ void IsobusSteeringDevice::OnHostBytes(int port, Time t, std::string_view bytes,
 }
 
 void IsobusSteeringDevice::ControlTick(Time t) {
-  ++counters_.ticks;
-  const bool missing =
-      t >= cfg_.first_command_due &&
-      (!counters_.last_command || t - *counters_.last_command > cfg_.command_timeout);
-  if (missing) {
-    if (counters_.missing_commands == 0 || (!ticks_.empty() && !ticks_.back().missing))
-      counters_.first_missing = t;
-    ++counters_.missing_commands;
-  }
+  const bool missing = tick_.CountTick(t, counters_);
   SteeringTickRecord rec;
   rec.t = t;
   rec.commanded_steer_rad = -ecu_.target_steer_angle_rad();
@@ -79,27 +73,18 @@ void IsobusSteeringDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) 
   const Time t = truth.t;
   const double v = truth.speed_mps;
   ecu_.AdvanceTo(t, v);
-  if (t >= next_tick_) {
-    ControlTick(t);
-    next_tick_ += cfg_.control_period;
-  }
+  if (tick_.TickDue(t)) ControlTick(t);
   while (ecu_.next_status_time() <= t) ecu_.EmitStatus(v, distance_m_, scratch_);
   Send(scratch_, out);
   distance_m_ += std::fabs(v) * ToSeconds(cfg_.grid);
-  // the road wheels drive the truth from the next grid instant on (the first, at t = 0, from the
-  // start), stamped exactly on it: an instant between grid points (t + 1 ns) is applied one grid
-  // step apart by the truth integrated online and by its replay for the evaluation (the online
-  // truth and truth.csv then differ by centimetres after a turn). The ECU's angle is positive
-  // right, the truth's left.
-  const Time t_effect = t == Time{} ? t : t + cfg_.grid;
-  pending_ = VehicleCommand{t_effect, cfg_.speed_mps, -ecu_.steer_angle_rad()};
-  next_ = t + cfg_.grid;
+  // the road wheels drive the truth from the next grid instant on (stamped on it: else the online
+  // truth and truth.csv differ by centimetres after a turn). The ECU's angle is positive right,
+  // the truth's left.
+  tick_.Hold(t, cfg_.speed_mps, -ecu_.steer_angle_rad());
 }
 
 std::optional<VehicleCommand> IsobusSteeringDevice::TakeVehicleCommand() {
-  std::optional<VehicleCommand> c = pending_;
-  pending_.reset();
-  return c;
+  return tick_.TakeVehicleCommand();
 }
 
 }  // namespace hil::actuator

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "hil/firmware_emu/little_endian.h"
+
 namespace hil::wit {
 
 std::uint8_t Sum8(std::string_view bytes) {
@@ -14,11 +16,7 @@ std::string EncodePacket(std::uint8_t type, const std::array<std::int16_t, 4>& d
   std::string p(kPacketSize, '\0');
   p[0] = static_cast<char>(kHeader);
   p[1] = static_cast<char>(type);
-  for (std::size_t i = 0; i < 4; ++i) {
-    const auto u = static_cast<std::uint16_t>(d[i]);
-    p[2 + 2 * i] = static_cast<char>(u & 0xFFu);
-    p[3 + 2 * i] = static_cast<char>(u >> 8);
-  }
+  for (std::size_t i = 0; i < 4; ++i) LePut(p, 2 + 2 * i, static_cast<std::uint16_t>(d[i]), 2);
   p[10] = static_cast<char>(Sum8(std::string_view(p).substr(0, 10)));
   return p;
 }
@@ -42,8 +40,9 @@ std::int16_t AngleToRaw(double angle_deg) {
 }
 
 std::string EncodeWriteCommand(std::uint8_t reg, std::uint16_t value) {
-  return std::string{static_cast<char>(0xFF), static_cast<char>(0xAA), static_cast<char>(reg),
-                     static_cast<char>(value & 0xFFu), static_cast<char>(value >> 8)};
+  std::string c{static_cast<char>(0xFF), static_cast<char>(0xAA), static_cast<char>(reg)};
+  LeAppend(c, value, 2);
+  return c;
 }
 
 }  // namespace hil::wit

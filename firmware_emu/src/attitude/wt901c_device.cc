@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "hil/firmware_emu/attitude/wit_packet.h"
+#include "hil/firmware_emu/little_endian.h"
 
 namespace hil::wit {
 namespace {
@@ -143,7 +144,7 @@ void Wt901cDevice::OnHostBytes(int port, Time t, std::string_view bytes, DeviceO
     }
     if (i + 5 > host_buf_.size()) break;
     const auto b = [&](std::size_t k) { return static_cast<unsigned char>(host_buf_[i + k]); };
-    HandleCommand(t, b(2), static_cast<std::uint16_t>(b(3) | (b(4) << 8)), out);
+    HandleCommand(t, b(2), LeRead<std::uint16_t>(host_buf_, i + 3), out);
     i += 5;
   }
   host_buf_.erase(0, i);

@@ -95,17 +95,17 @@ int LeapSecondsAtUnix(std::int64_t unix_s) {
   return leap;
 }
 
-GpsTime GpsFromUnixNs(std::int64_t unix_ns) {
+GpsWeekTime GpsFromUnixNs(std::int64_t unix_ns) {
   const std::int64_t unix_s = FloorDiv(unix_ns, kNsPerSecond);
   const std::int64_t gps_ns =
       unix_ns - kGpsEpochUnix_s * kNsPerSecond + LeapSecondsAtUnix(unix_s) * kNsPerSecond;
-  GpsTime g;
+  GpsWeekTime g;
   g.week = static_cast<int>(FloorDiv(gps_ns, kSecondsPerWeek * kNsPerSecond));
   g.tow_ns = gps_ns - static_cast<std::int64_t>(g.week) * kSecondsPerWeek * kNsPerSecond;
   return g;
 }
 
-std::int64_t UnixNsFromGps(const GpsTime& gps) {
+std::int64_t UnixNsFromGps(const GpsWeekTime& gps) {
   const std::int64_t gps_ns =
       static_cast<std::int64_t>(gps.week) * kSecondsPerWeek * kNsPerSecond + gps.tow_ns;
   // Leap seconds are looked up at the approximate UTC instant, then corrected once.

@@ -1,13 +1,10 @@
 #include "hil/firmware_emu/gnss/ubx_frame.h"
 
 #include "hil/firmware_emu/gnss/nmea_sentence.h"
+#include "hil/firmware_emu/little_endian.h"
 
 namespace hil::gnss::ubx {
 namespace {
-
-void PutLe(std::vector<std::uint8_t>& out, std::uint64_t v, int n) {
-  for (int i = 0; i < n; ++i) out.push_back(static_cast<std::uint8_t>((v >> (8 * i)) & 0xFFu));
-}
 
 int HexDigit(char c) {
   if (c >= '0' && c <= '9') return c - '0';
@@ -19,27 +16,27 @@ int HexDigit(char c) {
 }  // namespace
 
 Writer& Writer::U1(std::uint64_t v) {
-  PutLe(bytes_, v, 1);
+  LeAppend(bytes_, v, 1);
   return *this;
 }
 Writer& Writer::U2(std::uint64_t v) {
-  PutLe(bytes_, v, 2);
+  LeAppend(bytes_, v, 2);
   return *this;
 }
 Writer& Writer::U4(std::uint64_t v) {
-  PutLe(bytes_, v, 4);
+  LeAppend(bytes_, v, 4);
   return *this;
 }
 Writer& Writer::I1(std::int64_t v) {
-  PutLe(bytes_, static_cast<std::uint64_t>(v), 1);
+  LeAppend(bytes_, static_cast<std::uint64_t>(v), 1);
   return *this;
 }
 Writer& Writer::I2(std::int64_t v) {
-  PutLe(bytes_, static_cast<std::uint64_t>(v), 2);
+  LeAppend(bytes_, static_cast<std::uint64_t>(v), 2);
   return *this;
 }
 Writer& Writer::I4(std::int64_t v) {
-  PutLe(bytes_, static_cast<std::uint64_t>(v), 4);
+  LeAppend(bytes_, static_cast<std::uint64_t>(v), 4);
   return *this;
 }
 Writer& Writer::Chars(std::string_view text, std::size_t width) {
@@ -85,6 +82,26 @@ std::string Frame(std::uint8_t cls, std::uint8_t id, const std::vector<std::uint
   const auto [ck_a, ck_b] = Checksum(std::string_view(f).substr(2));
   f += static_cast<char>(ck_a);
   f += static_cast<char>(ck_b);
+  return f;
+}
+
+FrameAt ParseFrameAt(std::string_view bytes, std::size_t max_payload) {
+  FrameAt f;
+  if (bytes.size() < 6) return f;
+  f.cls = static_cast<std::uint8_t>(bytes[2]);
+  f.id = static_cast<std::uint8_t>(bytes[3]);
+  f.payload_length = LeRead<std::uint16_t>(bytes, 4);
+  if (f.payload_length > max_payload) {
+    f.status = FrameAtStatus::kTooLong;
+  } else if (bytes.size() < f.frame_size()) {
+    f.status = FrameAtStatus::kCut;
+  } else {
+    const auto [ck_a, ck_b] = Checksum(bytes.substr(2, 4 + f.payload_length));
+    const bool ok = static_cast<std::uint8_t>(bytes[6 + f.payload_length]) == ck_a &&
+                    static_cast<std::uint8_t>(bytes[7 + f.payload_length]) == ck_b;
+    f.status = ok ? FrameAtStatus::kFrame : FrameAtStatus::kBadChecksum;
+    if (ok) f.payload = bytes.substr(6, f.payload_length);
+  }
   return f;
 }
 

@@ -3,20 +3,12 @@
 #include <algorithm>
 
 #include "hil/firmware_emu/lidar/rplidar_request.h"
+#include "hil/firmware_emu/little_endian.h"
 
 namespace hil::lidar {
-namespace {
-
-void Put16(std::string& s, std::uint16_t v) {
-  s.push_back(static_cast<char>(v & 0xFFu));
-  s.push_back(static_cast<char>(v >> 8));
-}
-
-}  // namespace
-
 std::string EncodeU32(std::uint32_t v) {
   std::string s;
-  for (int k = 0; k < 4; ++k) s.push_back(static_cast<char>((v >> (8 * k)) & 0xFFu));
+  LeAppend(s, v, 4);
   return s;
 }
 
@@ -36,14 +28,14 @@ std::string EncodeDeviceInfo(const DeviceInfo& d) {
 
 std::string EncodeHealth(std::uint8_t status, std::uint16_t error_code) {
   std::string s(1, static_cast<char>(status));
-  Put16(s, error_code);
+  LeAppend(s, error_code, 2);
   return s;
 }
 
 std::string EncodeSampleRate(std::uint16_t standard_us, std::uint16_t express_us) {
   std::string s;
-  Put16(s, standard_us);
-  Put16(s, express_us);
+  LeAppend(s, standard_us, 2);
+  LeAppend(s, express_us, 2);
   return s;
 }
 
@@ -51,18 +43,22 @@ std::string EncodeNode(const ScanNode& n) {
   std::string s;
   const unsigned s_bit = n.start ? 1u : 0u;
   s.push_back(static_cast<char>(((n.quality & 0x3Fu) << 2) | ((s_bit ^ 1u) << 1) | s_bit));
-  Put16(s, static_cast<std::uint16_t>((n.angle_q6 << 1) | 1u));
-  Put16(s, n.distance_q2);
+  LeAppend(s, static_cast<std::uint16_t>((n.angle_q6 << 1) | 1u), 2);
+  LeAppend(s, n.distance_q2, 2);
   return s;
 }
 
 std::string EncodeCapsule(const ExpressCapsule& c) {
   std::string s(2, '\0');
-  Put16(s, static_cast<std::uint16_t>((c.start_angle_q6 & 0x7FFFu) | (c.new_scan ? 0x8000u : 0u)));
+  LeAppend(
+      s, static_cast<std::uint16_t>((c.start_angle_q6 & 0x7FFFu) | (c.new_scan ? 0x8000u : 0u)), 2);
   for (std::size_t k = 0; k < kCabins; ++k) {
     // distance in the top 14 bits of each u16 (mm), angle-offset bits 0; offsets byte 0
-    Put16(s, static_cast<std::uint16_t>(std::min<unsigned>(c.distance_mm[2 * k], 0x3FFF) << 2));
-    Put16(s, static_cast<std::uint16_t>(std::min<unsigned>(c.distance_mm[2 * k + 1], 0x3FFF) << 2));
+    LeAppend(s, static_cast<std::uint16_t>(std::min<unsigned>(c.distance_mm[2 * k], 0x3FFF) << 2),
+             2);
+    LeAppend(s,
+             static_cast<std::uint16_t>(std::min<unsigned>(c.distance_mm[2 * k + 1], 0x3FFF) << 2),
+             2);
     s.push_back('\0');
   }
   unsigned cs = 0;

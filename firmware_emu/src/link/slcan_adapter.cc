@@ -27,9 +27,9 @@ void SlcanAdapter::OnHostBytes(Time t, std::string_view bytes, std::string& repl
                                std::vector<CanFrame>& frames) {
   for (const char c : bytes) {
     if (!splitter_.Feed(c)) continue;
-    if (splitter_.record().empty()) continue;  // a bare CR (hosts send a few to flush): no answer
+    if (splitter_.line().empty()) continue;  // a bare CR (hosts send a few to flush): no answer
     ++counters_.records;
-    reply += Execute(t, splitter_.record(), frames);
+    reply += Execute(t, splitter_.line(), frames);
   }
 }
 

@@ -65,27 +65,4 @@ SlcanFrameError DecodeSlcanFrame(std::string_view record, CanFrame& out) {
   return SlcanFrameError::kNone;
 }
 
-bool SlcanRecordSplitter::Feed(char byte) {
-  if (byte == '\n') return false;
-  if (byte == '\r') {
-    const bool was_overflow = overflow_;
-    overflow_ = false;
-    if (was_overflow) {
-      buffer_.clear();
-      return false;
-    }
-    record_.swap(buffer_);
-    buffer_.clear();
-    return true;
-  }
-  if (overflow_) return false;
-  if (buffer_.size() >= kMaxSlcanRecord) {
-    overflow_ = true;
-    ++overlong_;
-    return false;
-  }
-  buffer_.push_back(byte);
-  return false;
-}
-
 }  // namespace hil::link

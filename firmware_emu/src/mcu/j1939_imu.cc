@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "hil/firmware_emu/little_endian.h"
+
 namespace hil::mcu {
 namespace {
 
@@ -16,14 +18,6 @@ std::uint32_t Raw(double value, double resolution, double offset, std::uint32_t 
   if (r < 0) return 0;
   if (r > max_raw) return max_raw;
   return static_cast<std::uint32_t>(r);
-}
-
-void Put16(CanFrame& f, int at, std::uint32_t v) {
-  f.data[at] = static_cast<std::uint8_t>(v & 0xFF);
-  f.data[at + 1] = static_cast<std::uint8_t>((v >> 8) & 0xFF);
-}
-void Put24(CanFrame& f, int at, std::uint32_t v) {
-  for (int i = 0; i < 3; ++i) f.data[at + i] = static_cast<std::uint8_t>((v >> (8 * i)) & 0xFF);
 }
 
 std::uint8_t LatencyByte(double latency_s) {
@@ -55,9 +49,9 @@ CanFrame EncodeAri(Time t, const J1939Address& a, const Eigen::Vector3d& w_I_rad
                    const FiguresOfMerit& fom, double latency_s) {
   CanFrame f = Base(t, a, kPgnAri);
   const double res = 1.0 / 128.0, off = -250.0;
-  Put16(f, 0, Raw(-w_I_radps.y() * kRadToDeg, res, off, kMax16));
-  Put16(f, 2, Raw(w_I_radps.x() * kRadToDeg, res, off, kMax16));
-  Put16(f, 4, Raw(w_I_radps.z() * kRadToDeg, res, off, kMax16));
+  LePut(f.data, 0, Raw(-w_I_radps.y() * kRadToDeg, res, off, kMax16), 2);
+  LePut(f.data, 2, Raw(w_I_radps.x() * kRadToDeg, res, off, kMax16), 2);
+  LePut(f.data, 4, Raw(w_I_radps.z() * kRadToDeg, res, off, kMax16), 2);
   f.data[6] = FomByte(fom);
   f.data[7] = LatencyByte(latency_s);
   return f;
@@ -67,9 +61,9 @@ CanFrame EncodeAccs(Time t, const J1939Address& a, const Eigen::Vector3d& f_I_mp
                     const FiguresOfMerit& fom, double latency_s) {
   CanFrame f = Base(t, a, kPgnAccs);
   const double res = 0.01, off = -320.0;
-  Put16(f, 0, Raw(f_I_mps2.y(), res, off, kMax16));
-  Put16(f, 2, Raw(f_I_mps2.x(), res, off, kMax16));
-  Put16(f, 4, Raw(f_I_mps2.z(), res, off, kMax16));
+  LePut(f.data, 0, Raw(f_I_mps2.y(), res, off, kMax16), 2);
+  LePut(f.data, 2, Raw(f_I_mps2.x(), res, off, kMax16), 2);
+  LePut(f.data, 4, Raw(f_I_mps2.z(), res, off, kMax16), 2);
   f.data[6] = FomByte(fom);
   f.data[7] = LatencyByte(latency_s);
   return f;
@@ -86,8 +80,8 @@ CanFrame EncodeSsi2(Time t, const J1939Address& a, const Eigen::Vector3d& f_I_mp
   CanFrame f = Base(t, a, kPgnSsi2);
   const Eigen::Vector2d pr = PitchRollDegFromSpecificForce(f_I_mps2);
   const double res = 1.0 / 32768.0, off = -250.0;
-  Put24(f, 0, Raw(pr[0], res, off, kMax24));
-  Put24(f, 3, Raw(pr[1], res, off, kMax24));
+  LePut(f.data, 0, Raw(pr[0], res, off, kMax24), 3);
+  LePut(f.data, 3, Raw(pr[1], res, off, kMax24), 3);
   constexpr std::uint8_t kCompensationNotAvailable = 3;
   f.data[6] = static_cast<std::uint8_t>(kCompensationNotAvailable | ((pitch_fom & 3) << 2) |
                                         (kCompensationNotAvailable << 4) | ((roll_fom & 3) << 6));
@@ -98,11 +92,11 @@ CanFrame EncodeSsi2(Time t, const J1939Address& a, const Eigen::Vector3d& f_I_mp
 CanFrame EncodeHilTimePulse(Time t, const J1939Address& a, std::uint32_t tick, bool valid,
                             std::uint32_t tow_s, int gps_week) {
   CanFrame f = Base(t, a, kPgnHilTimePulse);
-  for (int i = 0; i < 4; ++i) f.data[i] = static_cast<std::uint8_t>((tick >> (8 * i)) & 0xFF);
+  LePut(f.data, 0, tick, 4);
   const std::uint64_t tow = valid ? (tow_s & 0xFFFFFu) : 0xFFFFFu;
   const std::uint64_t week = static_cast<std::uint64_t>(gps_week) & 0xFFFu;
   const std::uint64_t hi = tow | (week << 20);
-  for (int i = 0; i < 4; ++i) f.data[4 + i] = static_cast<std::uint8_t>((hi >> (8 * i)) & 0xFF);
+  LePut(f.data, 4, hi, 4);
   return f;
 }
 

@@ -4,21 +4,15 @@
 #include <stdexcept>
 #include <vector>
 
+#include "hil/firmware_emu/little_endian.h"
+
 namespace hil::mcu {
 namespace {
 
 void PutU8(std::vector<std::uint8_t>& b, std::uint8_t v) { b.push_back(v); }
-void PutU16(std::vector<std::uint8_t>& b, std::uint16_t v) {
-  b.push_back(static_cast<std::uint8_t>(v & 0xFF));
-  b.push_back(static_cast<std::uint8_t>(v >> 8));
+void PutF32(std::vector<std::uint8_t>& b, float v) {
+  LeAppend(b, std::bit_cast<std::uint32_t>(v), 4);
 }
-void PutI16(std::vector<std::uint8_t>& b, std::int16_t v) {
-  PutU16(b, static_cast<std::uint16_t>(v));
-}
-void PutU32(std::vector<std::uint8_t>& b, std::uint32_t v) {
-  for (int i = 0; i < 4; ++i) b.push_back(static_cast<std::uint8_t>((v >> (8 * i)) & 0xFF));
-}
-void PutF32(std::vector<std::uint8_t>& b, float v) { PutU32(b, std::bit_cast<std::uint32_t>(v)); }
 
 }  // namespace
 
@@ -41,11 +35,11 @@ std::string EncodeFrame(MessageType type, std::uint16_t sequence, std::uint32_t 
   PutU8(body, kProtocolVersion);
   PutU8(body, static_cast<std::uint8_t>(type));
   PutU8(body, static_cast<std::uint8_t>(payload.size()));
-  PutU16(body, sequence);
-  PutU32(body, tick);
+  LeAppend(body, sequence, 2);
+  LeAppend(body, tick, 4);
   body.insert(body.end(), payload.begin(), payload.end());
   const std::uint16_t crc = Crc16CcittFalse(body);
-  PutU16(body, crc);
+  LeAppend(body, crc, 2);
   std::string out;
   out.reserve(body.size() + 2);
   out.push_back(static_cast<char>(kSync1));
@@ -56,22 +50,22 @@ std::string EncodeFrame(MessageType type, std::uint16_t sequence, std::uint32_t 
 
 std::string EncodeImuSample(std::uint16_t sequence, std::uint32_t tick, const ImuSamplePayload& p) {
   std::vector<std::uint8_t> b;
-  for (std::int16_t v : p.accel) PutI16(b, v);
-  for (std::int16_t v : p.gyro) PutI16(b, v);
+  for (std::int16_t v : p.accel) LeAppend(b, static_cast<std::uint16_t>(v), 2);
+  for (std::int16_t v : p.gyro) LeAppend(b, static_cast<std::uint16_t>(v), 2);
   return EncodeFrame(MessageType::kImuSample, sequence, tick, b);
 }
 
 std::string EncodeMagSample(std::uint16_t sequence, std::uint32_t tick, const MagSamplePayload& p) {
   std::vector<std::uint8_t> b;
-  for (std::int16_t v : p.mag) PutI16(b, v);
+  for (std::int16_t v : p.mag) LeAppend(b, static_cast<std::uint16_t>(v), 2);
   return EncodeFrame(MessageType::kMagSample, sequence, tick, b);
 }
 
 std::string EncodeTimePulse(std::uint16_t sequence, std::uint32_t latched_tick,
                             const TimePulsePayload& p) {
   std::vector<std::uint8_t> b;
-  PutU16(b, p.gps_week);
-  PutU32(b, p.tow_ms);
+  LeAppend(b, p.gps_week, 2);
+  LeAppend(b, p.tow_ms, 4);
   PutU8(b, p.time_valid ? 1 : 0);
   return EncodeFrame(MessageType::kTimePulse, sequence, latched_tick, b);
 }
@@ -80,9 +74,9 @@ std::string EncodeStatus(std::uint16_t sequence, std::uint32_t tick, const Statu
   std::vector<std::uint8_t> b;
   PutU8(b, p.reset_cause);
   PutU8(b, p.pulse_seen ? 1 : 0);
-  PutU16(b, p.reset_count);
-  PutU32(b, p.tick_hz);
-  PutU32(b, p.imu_period_ticks);
+  LeAppend(b, p.reset_count, 2);
+  LeAppend(b, p.tick_hz, 4);
+  LeAppend(b, p.imu_period_ticks, 4);
   PutF32(b, p.accel_scale_mps2_per_lsb);
   PutF32(b, p.gyro_scale_radps_per_lsb);
   PutF32(b, p.mag_scale_uT_per_lsb);

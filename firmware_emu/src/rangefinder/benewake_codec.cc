@@ -4,22 +4,21 @@
 #include <cmath>
 #include <cstdio>
 
+#include "hil/firmware_emu/little_endian.h"
+
 namespace hil::rangefinder {
-namespace {
-std::uint8_t Lo(std::uint16_t v) { return static_cast<std::uint8_t>(v & 0xFFu); }
-std::uint8_t Hi(std::uint16_t v) { return static_cast<std::uint8_t>(v >> 8); }
-std::uint16_t U16At(std::string_view s, std::size_t i) {
-  return static_cast<std::uint16_t>(static_cast<unsigned char>(s[i]) |
-                                    (static_cast<unsigned char>(s[i + 1]) << 8));
-}
-}  // namespace
 
 std::array<std::uint8_t, 6> EncodeDataFields(const DataFields& f) {
-  return {Lo(f.dist), Hi(f.dist), Lo(f.amp), Hi(f.amp), Lo(f.temp_raw), Hi(f.temp_raw)};
+  std::array<std::uint8_t, 6> b{};
+  LePut(b, 0, f.dist, 2);
+  LePut(b, 2, f.amp, 2);
+  LePut(b, 4, f.temp_raw, 2);
+  return b;
 }
 
 DataFields DecodeDataFields(std::string_view frame) {
-  return {U16At(frame, 2), U16At(frame, 4), U16At(frame, 6)};
+  return {LeRead<std::uint16_t>(frame, 2), LeRead<std::uint16_t>(frame, 4),
+          LeRead<std::uint16_t>(frame, 6)};
 }
 
 std::uint16_t TemperatureToRaw(double temperature_c) {
@@ -36,25 +35,25 @@ std::string PixLine(double distance_m) {
 }
 
 std::string U16Payload(std::uint16_t v) {
-  return {static_cast<char>(Lo(v)), static_cast<char>(Hi(v))};
+  std::string s;
+  LeAppend(s, v, 2);
+  return s;
 }
 
 std::string U32Payload(std::uint32_t v) {
   std::string s;
-  for (int k = 0; k < 4; ++k) s.push_back(static_cast<char>((v >> (8 * k)) & 0xFFu));
+  LeAppend(s, v, 4);
   return s;
 }
 
 std::optional<std::uint16_t> PayloadU16(std::string_view payload) {
   if (payload.size() != 2) return std::nullopt;
-  return U16At(payload, 0);
+  return LeRead<std::uint16_t>(payload, 0);
 }
 
 std::optional<std::uint32_t> PayloadU32(std::string_view payload) {
   if (payload.size() != 4) return std::nullopt;
-  std::uint32_t v = 0;
-  for (int k = 3; k >= 0; --k) v = (v << 8) | static_cast<unsigned char>(payload[k]);
-  return v;
+  return LeRead<std::uint32_t>(payload, 0);
 }
 
 bool IsSupportedBaud(std::uint32_t baud) {

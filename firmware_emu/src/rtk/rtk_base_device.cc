@@ -68,7 +68,7 @@ rtcm3::MsmEpoch RtkBaseDevice::MsmOf(const std::vector<SatelliteObservation>& ob
 
 std::vector<SerialMessage> RtkBaseDevice::EncodeEpoch(Time t) {
   const std::int64_t unix_ns = config_.start_unix_ns + ToNs(t);
-  const gnss::GpsTime gps = gnss::GpsFromUnixNs(unix_ns);
+  const gnss::GpsWeekTime gps = gnss::GpsFromUnixNs(unix_ns);
   const double gps_s = static_cast<double>(gps.week) * 604800.0 + gps.tow_s();
   std::vector<SerialMessage> out;
   if (t >= next_station_) {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "hil/firmware_emu/little_endian.h"
 #include "hil/firmware_emu/uwb/linktrack_tag_frame0.h"
 
 namespace hil::linktrack {
@@ -9,7 +10,7 @@ namespace {
 
 void PutInt24(std::string& b, std::size_t at, std::int32_t v) {
   const auto u = static_cast<std::uint32_t>(v) & 0xFFFFFFu;
-  for (int k = 0; k < 3; ++k) b[at + k] = static_cast<char>((u >> (8 * k)) & 0xFFu);
+  LePut(b, at, u, 3);
 }
 
 std::int32_t Millimetres(double v_m) {

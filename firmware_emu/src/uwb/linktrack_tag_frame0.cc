@@ -4,6 +4,8 @@
 #include <bit>
 #include <cmath>
 
+#include "hil/firmware_emu/little_endian.h"
+
 namespace hil::linktrack {
 namespace {
 
@@ -15,14 +17,11 @@ std::int64_t RoundSat(double v, double scale, std::int64_t lo, std::int64_t hi) 
                                         : static_cast<std::int64_t>(r);
 }
 
-void PutLe(std::string& b, std::size_t at, std::uint64_t v, int bytes) {
-  for (int k = 0; k < bytes; ++k) b[at + k] = static_cast<char>((v >> (8 * k)) & 0xFFu);
-}
 void PutInt24(std::string& b, std::size_t at, double v, double scale) {
-  PutLe(b, at, static_cast<std::uint64_t>(RoundSat(v, scale, -8388608, 8388607)) & 0xFFFFFFu, 3);
+  LePut(b, at, static_cast<std::uint64_t>(RoundSat(v, scale, -8388608, 8388607)) & 0xFFFFFFu, 3);
 }
 void PutFloat(std::string& b, std::size_t at, float v) {
-  PutLe(b, at, std::bit_cast<std::uint32_t>(v), 4);
+  LePut(b, at, std::bit_cast<std::uint32_t>(v), 4);
 }
 
 }  // namespace
@@ -45,15 +44,15 @@ std::string EncodeTagFrame0(const TagFrame0& f) {
     PutInt24(b, kVel + 3 * k, f.v_mps[k], 10000.0);
     PutFloat(b, kGyro + 4 * k, f.gyro_radps[k]);
     PutFloat(b, kAcc + 4 * k, f.acc_mps2[k]);
-    PutLe(b, kAngle + 2 * k,
+    LePut(b, kAngle + 2 * k,
           static_cast<std::uint64_t>(RoundSat(f.angle_deg[k], 100.0, -32768, 32767)) & 0xFFFFu, 2);
     b[kEop + k] = static_cast<char>(RoundSat(f.eop_m[k], 100.0, 0, 255));
   }
   for (int k = 0; k < 8; ++k) PutInt24(b, kDis + 3 * k, f.dis_m[k], 1000.0);
   for (int k = 0; k < 4; ++k) PutFloat(b, kQuat + 4 * k, f.quat_wxyz[k]);
-  PutLe(b, kLocalTime, f.local_time_ms, 4);
-  PutLe(b, kSystemTime, f.system_time_ms, 4);
-  PutLe(b, kVoltage, static_cast<std::uint64_t>(RoundSat(f.voltage_v, 1000.0, 0, 65535)), 2);
+  LePut(b, kLocalTime, f.local_time_ms, 4);
+  LePut(b, kSystemTime, f.system_time_ms, 4);
+  LePut(b, kVoltage, static_cast<std::uint64_t>(RoundSat(f.voltage_v, 1000.0, 0, 65535)), 2);
   b[kCheck] = static_cast<char>(NlinkSum8(b.data(), kCheck));
   return b;
 }

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "hil/firmware_emu/little_endian.h"
 #include "hil/firmware_emu/uwb/linktrack_tag_frame0.h"
 
 namespace hil::uwb {
@@ -16,9 +17,7 @@ std::int32_t TdoaPicoseconds(double r_i1_m) {
 
 std::string EncodeTdoaFrame(const TdoaFrame& f) {
   std::string b(kTdoaFrameSize, '\0');
-  const auto put = [&b](std::size_t at, std::uint32_t v) {
-    for (std::size_t k = 0; k < 4; ++k) b[at + k] = static_cast<char>((v >> (8 * k)) & 0xFFu);
-  };
+  const auto put = [&b](std::size_t at, std::uint32_t v) { LePut(b, at, v, 4); };
   b[0] = static_cast<char>(kTdoaFrameHeader);
   b[1] = static_cast<char>(kTdoaFrameMark);
   b[2] = static_cast<char>(f.id);

@@ -3,29 +3,15 @@
 #include <cmath>
 #include <cstring>
 #include <optional>
+#include <span>
 #include <stdexcept>
 
+#include "hil/firmware_emu/little_endian.h"
+#include "hil/firmware_emu/mcu/mcu_frame.h"
 #include "hil/harness/links/capture_format.h"
 
 namespace hil::harness {
 namespace {
-
-std::uint16_t Crc16(const std::string& b, std::size_t from, std::size_t to) {
-  std::uint16_t crc = 0xFFFF;
-  for (std::size_t i = from; i < to; ++i) {
-    crc = static_cast<std::uint16_t>(crc ^ (static_cast<unsigned char>(b[i]) << 8));
-    for (int k = 0; k < 8; ++k)
-      crc = static_cast<std::uint16_t>((crc & 0x8000) ? (crc << 1) ^ 0x1021 : crc << 1);
-  }
-  return crc;
-}
-
-std::uint32_t Le(const std::string& b, std::size_t i, int n) {
-  std::uint32_t v = 0;
-  for (int k = n - 1; k >= 0; --k)
-    v = (v << 8) | static_cast<unsigned char>(b[i + static_cast<std::size_t>(k)]);
-  return v;
-}
 
 struct RawSample {
   std::int64_t tick;
@@ -44,14 +30,15 @@ class Decoder {
   void Frame(const std::string& b, std::int64_t t_emu_ns) {
     if (b.size() < 13 || b[0] != '\xa5' || b[1] != '\x5a' ||
         b.size() != 13u + static_cast<unsigned char>(b[4]) ||
-        Crc16(b, 2, b.size() - 2) != Le(b, b.size() - 2, 2)) {
+        mcu::Crc16CcittFalse(std::span(reinterpret_cast<const std::uint8_t*>(b.data()) + 2,
+                                       b.size() - 4)) != LeRead<std::uint16_t>(b, b.size() - 2)) {
       ++out_.bad_frames;
       return;
     }
     ++out_.frames;
     const int type = b[3];
-    const auto seq = static_cast<std::uint16_t>(Le(b, 5, 2));
-    const std::uint32_t raw = Le(b, 7, 4);
+    const auto seq = LeRead<std::uint16_t>(b, 5);
+    const std::uint32_t raw = LeRead<std::uint32_t>(b, 7);
     if (type == 4 && seq == 0 && have_tick_) Reset();
     if (have_tick_ && raw < last_raw_ && last_raw_ - raw > 0x80000000u) wraps_ += 1LL << 32;
     have_tick_ = true;
@@ -59,14 +46,15 @@ class Decoder {
     const std::int64_t tick = wraps_ + raw;
     if (type == 4) {
       float a = 0, g = 0;
-      std::uint32_t u = Le(b, 11 + 12, 4);
+      std::uint32_t u = LeRead<std::uint32_t>(b, 11 + 12);
       std::memcpy(&a, &u, 4);
-      u = Le(b, 11 + 16, 4);
+      u = LeRead<std::uint32_t>(b, 11 + 16);
       std::memcpy(&g, &u, 4);
       accel_scale_ = a;
       gyro_scale_ = g;
     } else if (type == 3 && (b[11 + 6] & 1)) {
-      const double t = Le(b, 11, 2) * 604800.0 + Le(b, 13, 4) * 1e-3;
+      const double t =
+          LeRead<std::uint16_t>(b, 11) * 604800.0 + LeRead<std::uint32_t>(b, 13) * 1e-3;
       if (out_.pulses == 0)
         out_.gps_at_emulated_zero_s = t - std::floor(static_cast<double>(t_emu_ns) * 1e-9);
       pulses_.push_back({tick, t});
@@ -74,9 +62,8 @@ class Decoder {
     } else if (type == 1 && accel_scale_ > 0) {
       RawSample s{tick, {}, {}};
       for (int k = 0; k < 3; ++k) {
-        s.a[k] =
-            static_cast<std::int16_t>(Le(b, 11 + 2 * k, 2)) * static_cast<double>(accel_scale_);
-        s.w[k] = static_cast<std::int16_t>(Le(b, 17 + 2 * k, 2)) * static_cast<double>(gyro_scale_);
+        s.a[k] = LeRead<std::int16_t>(b, 11 + 2 * k) * static_cast<double>(accel_scale_);
+        s.w[k] = LeRead<std::int16_t>(b, 17 + 2 * k) * static_cast<double>(gyro_scale_);
       }
       segment_.push_back(s);
     }

@@ -6,6 +6,7 @@
 #include <iterator>
 #include <stdexcept>
 
+#include "hil/firmware_emu/little_endian.h"
 #include "hil/harness/datasets/import_fields.h"
 
 namespace hil::harness {
@@ -13,15 +14,8 @@ namespace {
 
 constexpr std::size_t kTagHeaderBytes = 64, kTagTimeBytes = 4 + 8;
 
-template <typename T>
-T TagLe(const unsigned char* p) {
-  T v = 0;
-  for (std::size_t i = 0; i < sizeof(T); ++i) v |= static_cast<T>(p[i]) << (8 * i);
-  return v;
-}
-
 double TagLeDouble(const unsigned char* p) {
-  const std::uint64_t bits = TagLe<std::uint64_t>(p);
+  const std::uint64_t bits = LeRead<std::uint64_t>(p);
   double d = 0;
   std::memcpy(&d, &bits, sizeof d);
   return d;
@@ -43,11 +37,11 @@ RtklibTimeTag ReadRtklibTimeTag(const std::string& path, int fpos_bytes) {
   t.header.resize(std::strlen(t.header.c_str()));
   if (t.header.rfind("TIMETAG RTKLIB", 0) != 0)
     throw ImportInputError(path, 0, "header", "does not start with 'TIMETAG RTKLIB'");
-  t.open_tick_ms = TagLe<std::uint32_t>(&b[kTagHeaderBytes - 4]);
+  t.open_tick_ms = LeRead<std::uint32_t>(&b[kTagHeaderBytes - 4]);
   const double frac = TagLeDouble(&b[kTagHeaderBytes + 4]);
   if (!(frac >= 0 && frac < 1))
     throw ImportInputError(path, 0, "opening time", "fraction of second outside [0, 1)");
-  t.open_gpst_s = TagLe<std::uint32_t>(&b[kTagHeaderBytes]) + frac;
+  t.open_gpst_s = LeRead<std::uint32_t>(&b[kTagHeaderBytes]) + frac;
   const std::size_t rec = 4 + static_cast<std::size_t>(fpos_bytes);
   const std::size_t body = b.size() - kTagHeaderBytes - kTagTimeBytes;
   if (body % rec != 0)
@@ -56,8 +50,8 @@ RtklibTimeTag ReadRtklibTimeTag(const std::string& path, int fpos_bytes) {
   for (std::size_t i = 0; i < body / rec; ++i) {
     const unsigned char* p = &b[kTagHeaderBytes + kTagTimeBytes + i * rec];
     RtklibTimeTagRecord r;
-    r.tick_ms = TagLe<std::uint32_t>(p);
-    r.file_pos = fpos_bytes == 4 ? TagLe<std::uint32_t>(p + 4) : TagLe<std::uint64_t>(p + 4);
+    r.tick_ms = LeRead<std::uint32_t>(p);
+    r.file_pos = fpos_bytes == 4 ? LeRead<std::uint32_t>(p + 4) : LeRead<std::uint64_t>(p + 4);
     if (!t.records.empty() && r.tick_ms < t.records.back().tick_ms)
       throw ImportInputError(path, static_cast<long>(i) + 1, "tick", "goes backwards");
     if (!t.records.empty() && r.file_pos < t.records.back().file_pos)

@@ -6,18 +6,12 @@
 #include <iterator>
 #include <map>
 
+#include "hil/firmware_emu/gnss/ubx_frame.h"
+#include "hil/firmware_emu/little_endian.h"
 #include "hil/harness/datasets/import_fields.h"
 
 namespace hil::harness {
 namespace {
-
-template <typename T>
-T UbxLe(const unsigned char* p) {
-  using U = std::make_unsigned_t<T>;
-  U v = 0;
-  for (std::size_t i = 0; i < sizeof(T); ++i) v |= static_cast<U>(static_cast<U>(p[i]) << (8 * i));
-  return static_cast<T>(v);
-}
 
 void CheckUbxLength(std::size_t len, std::size_t need, const char* name, const std::string& path,
                     std::size_t offset) {
@@ -36,19 +30,19 @@ void OnNavPvt(const unsigned char* p, UbxNavLog& log) {
     return;
   }
   UbxNavFix f;
-  f.sow = UbxLe<std::uint32_t>(p) * 1e-3;  // nano (p + 16) belongs to the UTC fields, not iTOW
-  f.lon_deg = UbxLe<std::int32_t>(p + 24) * 1e-7;
-  f.lat_deg = UbxLe<std::int32_t>(p + 28) * 1e-7;
-  f.height_m = UbxLe<std::int32_t>(p + 32) * 1e-3;
-  f.height_msl_m = UbxLe<std::int32_t>(p + 36) * 1e-3;
-  const double h_acc = UbxLe<std::uint32_t>(p + 40) * 1e-3,
-               v_acc = UbxLe<std::uint32_t>(p + 44) * 1e-3;
+  f.sow = LeRead<std::uint32_t>(p) * 1e-3;  // nano (p + 16) belongs to the UTC fields, not iTOW
+  f.lon_deg = LeRead<std::int32_t>(p + 24) * 1e-7;
+  f.lat_deg = LeRead<std::int32_t>(p + 28) * 1e-7;
+  f.height_m = LeRead<std::int32_t>(p + 32) * 1e-3;
+  f.height_msl_m = LeRead<std::int32_t>(p + 36) * 1e-3;
+  const double h_acc = LeRead<std::uint32_t>(p + 40) * 1e-3,
+               v_acc = LeRead<std::uint32_t>(p + 44) * 1e-3;
   f.std_ned_m = {h_acc / std::sqrt(2.0), h_acc / std::sqrt(2.0), v_acc};
   f.has_velocity = true;
-  f.v_ned_mps = Eigen::Vector3d(UbxLe<std::int32_t>(p + 48), UbxLe<std::int32_t>(p + 52),
-                                UbxLe<std::int32_t>(p + 56)) *
+  f.v_ned_mps = Eigen::Vector3d(LeRead<std::int32_t>(p + 48), LeRead<std::int32_t>(p + 52),
+                                LeRead<std::int32_t>(p + 56)) *
                 1e-3;
-  f.v_std_ned_mps.setConstant(UbxLe<std::uint32_t>(p + 68) * 1e-3);
+  f.v_std_ned_mps.setConstant(LeRead<std::uint32_t>(p + 68) * 1e-3);
   f.carrier_solution = (flags >> 6) & 3;
   log.fixes.push_back(f);
 }
@@ -60,27 +54,27 @@ struct UbxPosVelParts {
 
 void OnPosLlh(const unsigned char* p, UbxPosVelParts& parts, UbxNavLog& log) {
   ++log.posllh;
-  const std::uint32_t itow = UbxLe<std::uint32_t>(p);
+  const std::uint32_t itow = LeRead<std::uint32_t>(p);
   UbxNavFix& f = parts.by_itow[itow];
   f.sow = itow * 1e-3;
-  f.lon_deg = UbxLe<std::int32_t>(p + 4) * 1e-7;
-  f.lat_deg = UbxLe<std::int32_t>(p + 8) * 1e-7;
-  f.height_m = UbxLe<std::int32_t>(p + 12) * 1e-3;
-  f.height_msl_m = UbxLe<std::int32_t>(p + 16) * 1e-3;
-  const double h_acc = UbxLe<std::uint32_t>(p + 20) * 1e-3,
-               v_acc = UbxLe<std::uint32_t>(p + 24) * 1e-3;
+  f.lon_deg = LeRead<std::int32_t>(p + 4) * 1e-7;
+  f.lat_deg = LeRead<std::int32_t>(p + 8) * 1e-7;
+  f.height_m = LeRead<std::int32_t>(p + 12) * 1e-3;
+  f.height_msl_m = LeRead<std::int32_t>(p + 16) * 1e-3;
+  const double h_acc = LeRead<std::uint32_t>(p + 20) * 1e-3,
+               v_acc = LeRead<std::uint32_t>(p + 24) * 1e-3;
   f.std_ned_m = {h_acc / std::sqrt(2.0), h_acc / std::sqrt(2.0), v_acc};
   parts.has_pos[itow] = true;
 }
 
 void OnVelNed(const unsigned char* p, UbxPosVelParts& parts, UbxNavLog& log) {
   ++log.velned;
-  UbxNavFix& f = parts.by_itow[UbxLe<std::uint32_t>(p)];
+  UbxNavFix& f = parts.by_itow[LeRead<std::uint32_t>(p)];
   f.has_velocity = true;
-  f.v_ned_mps = Eigen::Vector3d(UbxLe<std::int32_t>(p + 4), UbxLe<std::int32_t>(p + 8),
-                                UbxLe<std::int32_t>(p + 12)) *
+  f.v_ned_mps = Eigen::Vector3d(LeRead<std::int32_t>(p + 4), LeRead<std::int32_t>(p + 8),
+                                LeRead<std::int32_t>(p + 12)) *
                 1e-2;
-  f.v_std_ned_mps.setConstant(UbxLe<std::uint32_t>(p + 28) * 1e-2);
+  f.v_std_ned_mps.setConstant(LeRead<std::uint32_t>(p + 28) * 1e-2);
 }
 
 }  // namespace
@@ -98,28 +92,21 @@ UbxNavLog ReadUbxNavLog(const std::string& path) {
       ++i;
       continue;
     }
-    if (i + 8 > b.size()) {
-      ++log.cut_frames;
-      break;
-    }
-    const std::size_t len = UbxLe<std::uint16_t>(&b[i + 4]);
-    if (i + 8 + len > b.size()) {
-      ++log.cut_frames;
-      break;
-    }
-    std::uint8_t ca = 0, cb = 0;
-    for (std::size_t k = i + 2; k < i + 6 + len; ++k) {
-      ca = static_cast<std::uint8_t>(ca + b[k]);
-      cb = static_cast<std::uint8_t>(cb + ca);
-    }
-    if (ca != b[i + 6 + len] || cb != b[i + 7 + len]) {
+    const gnss::ubx::FrameAt u = gnss::ubx::ParseFrameAt(
+        std::string_view(reinterpret_cast<const char*>(&b[i]), b.size() - i));
+    if (u.status == gnss::ubx::FrameAtStatus::kBadChecksum) {
       ++log.bad_checksum;
       ++i;
       continue;
     }
+    if (u.status != gnss::ubx::FrameAtStatus::kFrame) {  // cut (no limit below 0xFFFF is set)
+      ++log.cut_frames;
+      break;
+    }
     ++log.frames;
+    const std::size_t len = u.payload_length;
     const unsigned char* p = &b[i + 6];
-    const int cls = b[i + 2], id = b[i + 3];
+    const int cls = u.cls, id = u.id;
     if (cls == 0x01 && id == 0x07) {
       CheckUbxLength(len, 92, "NAV-PVT", path, i);
       OnNavPvt(p, log);

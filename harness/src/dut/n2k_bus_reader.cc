@@ -3,17 +3,12 @@
 #include <cmath>
 #include <string>
 
+#include "hil/firmware_emu/little_endian.h"
+
 namespace hil::harness {
 namespace {
 
 constexpr double kRadToDeg = 180.0 / M_PI;
-
-std::uint64_t Le(std::string_view b, std::size_t at, int n) {
-  std::uint64_t v = 0;
-  for (int k = n - 1; k >= 0; --k)
-    v = (v << 8) | static_cast<unsigned char>(b[at + static_cast<std::size_t>(k)]);
-  return v;
-}
 
 }  // namespace
 
@@ -24,15 +19,17 @@ std::optional<EstimateRecord> N2kBusReader::Frame(std::uint32_t id29, std::strin
   if (data.empty()) return std::nullopt;
   switch (pgn) {
     case 129026:  // SID, COG reference (bits 0-1), COG u16 1e-4 rad, SOG u16 0.01 m/s
-      if (data.size() >= 6 && Le(data, 2, 2) != 0xFFFF && Le(data, 4, 2) != 0xFFFF) {
-        cog_sog_ = {static_cast<unsigned char>(data[0]), static_cast<double>(Le(data, 2, 2)) * 1e-4,
-                    static_cast<double>(Le(data, 4, 2)) * 0.01};
+      if (data.size() >= 6 && LeRead<std::uint16_t>(data, 2) != 0xFFFF &&
+          LeRead<std::uint16_t>(data, 4) != 0xFFFF) {
+        cog_sog_ = {static_cast<unsigned char>(data[0]),
+                    static_cast<double>(LeRead<std::uint16_t>(data, 2)) * 1e-4,
+                    static_cast<double>(LeRead<std::uint16_t>(data, 4)) * 0.01};
       }
       return std::nullopt;
     case 127250:  // SID, heading u16 1e-4 rad
-      if (data.size() >= 3 && Le(data, 1, 2) != 0xFFFF) {
-        heading_ = {static_cast<unsigned char>(data[0]), static_cast<double>(Le(data, 1, 2)) * 1e-4,
-                    0};
+      if (data.size() >= 3 && LeRead<std::uint16_t>(data, 1) != 0xFFFF) {
+        heading_ = {static_cast<unsigned char>(data[0]),
+                    static_cast<double>(LeRead<std::uint16_t>(data, 1)) * 1e-4, 0};
       }
       return std::nullopt;
     case 129029:
@@ -43,15 +40,15 @@ std::optional<EstimateRecord> N2kBusReader::Frame(std::uint32_t id29, std::strin
   const auto payload = fast_.Add(N2kSourceFromId(id29), pgn, data);
   if (!payload || payload->size() < 31) return std::nullopt;
   const std::string& b = *payload;
-  const std::uint64_t days = Le(b, 1, 2), tod = Le(b, 3, 4);
+  const std::uint64_t days = LeRead<std::uint16_t>(b, 1), tod = LeRead<std::uint32_t>(b, 3);
   if (days == 0xFFFF || tod == 0xFFFFFFFF) return std::nullopt;
   EstimateRecord r;
   const std::int64_t t_ns =
       static_cast<std::int64_t>(days) * kDayNs + static_cast<std::int64_t>(tod) * 100000LL;
   r.t_validity = TimeFromNs(t_ns - start_);
-  r.lat_deg = static_cast<double>(static_cast<std::int64_t>(Le(b, 7, 8))) * 1e-16;
-  r.lon_deg = static_cast<double>(static_cast<std::int64_t>(Le(b, 15, 8))) * 1e-16;
-  r.height_m = static_cast<double>(static_cast<std::int64_t>(Le(b, 23, 8))) * 1e-6;
+  r.lat_deg = static_cast<double>(LeRead<std::int64_t>(b, 7)) * 1e-16;
+  r.lon_deg = static_cast<double>(LeRead<std::int64_t>(b, 15)) * 1e-16;
+  r.height_m = static_cast<double>(LeRead<std::int64_t>(b, 23)) * 1e-6;
   r.wall_rx_ns = wall_ns;
   const int sid = static_cast<unsigned char>(b[0]);
   if (cog_sog_.sid == sid) {

@@ -5,21 +5,10 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "hil/harness/report/output_file.h"
 #include "hil/harness/report/report_html.h"
-#include "hil/harness/report/svg_plot.h"
+#include "hil/harness/report/report_plot_blocks.h"
 
 namespace hil::harness {
-namespace {
-
-void Write(const std::string& path, const std::string& text) { WriteOutputFile(path, text); }
-
-PlotSeries NamedSeries(const char* label, const char* color) {
-  return {label, color, PlotSeries::Style::kLine, {}, {}, 0};
-}
-
-}  // namespace
-
 void WriteClosedLoopPlots(const RunReport& r, const ReportSeries& s, const std::string& dir,
                           std::vector<std::string>& files) {
   {
@@ -28,27 +17,21 @@ void WriteClosedLoopPlots(const RunReport& r, const ReportSeries& s, const std::
     c.x_label = "east (m)";
     c.y_label = "north (m)";
     c.equal_aspect = true;
-    PlotSeries path = NamedSeries("planned path", "#2ca02c"),
-               truth = NamedSeries("truth", "#222222"), est = NamedSeries("estimate", "#1f77b4");
-    for (const auto& p : s.path_en_m) path.x.push_back(p.x()), path.y.push_back(p.y());
-    for (const auto& p : s.truth_en_m) truth.x.push_back(p.x()), truth.y.push_back(p.y());
-    for (const auto& e : s.estimate_errors)
-      est.x.push_back(e.est_enu_m.x()), est.y.push_back(e.est_enu_m.y());
-    c.series = {path, truth, est};
-    Write(dir + "/plots/closed_loop_path.svg", RenderSvg(c));
-    files.push_back("plots/closed_loop_path.svg");
+    c.series = {EnSeries("planned path", kPathColor, s.path_en_m),
+                EnSeries("truth", kTruthColor, s.truth_en_m),
+                EstimatedEnSeries("estimate", kEstimateColor, s.estimate_errors)};
+    WritePlot(c, dir, "plots/closed_loop_path.svg", files);
   }
   {
     PlotChart c;
     c.title = "Cross-track error of the truth against the distance along the path";
     c.x_label = "distance along the path (m)";
     c.y_label = "cross-track, + left (m)";
-    PlotSeries x = NamedSeries("truth XTE", "#222222");
+    PlotSeries x = NamedSeries("truth XTE", kTruthColor);
     x.x = r.tracking->s_m;
     x.y = r.tracking->xte_m;
     c.series = {x};
-    Write(dir + "/plots/cross_track.svg", RenderSvg(c));
-    files.push_back("plots/cross_track.svg");
+    WritePlot(c, dir, "plots/cross_track.svg", files);
   }
   {
     PlotChart c;
@@ -61,8 +44,7 @@ void WriteClosedLoopPlots(const RunReport& r, const ReportSeries& s, const std::
     act.x = s.tick_t_s;
     act.y = s.actual_yaw_rate_dps;
     c.series = {cmd, act};
-    Write(dir + "/plots/steering.svg", RenderSvg(c));
-    files.push_back("plots/steering.svg");
+    WritePlot(c, dir, "plots/steering.svg", files);
   }
 }
 

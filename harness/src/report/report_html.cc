@@ -9,14 +9,11 @@
 
 #include "hil/harness/report/output_file.h"
 #include "hil/harness/report/pass_to_pass_report.h"
+#include "hil/harness/report/report_plot_blocks.h"
 #include "hil/harness/report/svg_plot.h"
 
 namespace hil::harness {
 namespace {
-
-constexpr const char* kTruthColor = "#222222";
-constexpr const char* kEstimateColor = "#1f77b4";
-constexpr const char* kGnssColor = "#d62728";
 
 std::string Fmt(const std::optional<double>& v, const char* unit = "") {
   if (!v) return "n/a";
@@ -25,11 +22,9 @@ std::string Fmt(const std::optional<double>& v, const char* unit = "") {
   return b;
 }
 
-void WriteFile(const std::string& path, const std::string& text) { WriteOutputFile(path, text); }
-
 PlotSeries Cdf(const std::vector<ErrorSample>& errors, const std::string& label,
                const char* color) {
-  PlotSeries s{label, color, PlotSeries::Style::kLine, {}, {}, 0};
+  PlotSeries s = NamedSeries(label, color);
   std::vector<double> h;
   for (const auto& e : errors) h.push_back(e.horizontal());
   std::sort(h.begin(), h.end());
@@ -62,17 +57,11 @@ std::vector<std::string> WritePlots(const RunReport& r, const ReportSeries& s,
     c.x_label = "east (m)";
     c.y_label = "north (m)";
     c.equal_aspect = true;
-    PlotSeries truth{"truth", kTruthColor, PlotSeries::Style::kLine, {}, {}, 0};
-    for (const auto& p : s.truth_en_m) truth.x.push_back(p.x()), truth.y.push_back(p.y());
-    PlotSeries gnss{"raw GNSS fixes", kGnssColor, PlotSeries::Style::kPoints, {}, {}, 0};
-    for (const auto& e : s.fix_errors)
-      gnss.x.push_back(e.est_enu_m.x()), gnss.y.push_back(e.est_enu_m.y());
-    PlotSeries est{"estimate", kEstimateColor, PlotSeries::Style::kLine, {}, {}, 0};
-    for (const auto& e : s.estimate_errors)
-      est.x.push_back(e.est_enu_m.x()), est.y.push_back(e.est_enu_m.y());
-    c.series = {truth, gnss, est};
-    WriteFile(dir + "/plots/trajectory.svg", RenderSvg(c));
-    files.push_back("plots/trajectory.svg");
+    c.series = {
+        EnSeries("truth", kTruthColor, s.truth_en_m),
+        EstimatedEnSeries("raw GNSS fixes", kGnssColor, s.fix_errors, PlotSeries::Style::kPoints),
+        EstimatedEnSeries("estimate", kEstimateColor, s.estimate_errors)};
+    WritePlot(c, dir, "plots/trajectory.svg", files);
   }
   {
     PlotChart c;
@@ -81,15 +70,14 @@ std::vector<std::string> WritePlots(const RunReport& r, const ReportSeries& s,
     c.y_label = "horizontal error (m)";
     c.y_from_zero = true;
     c.bands = OutageBands(r);
-    PlotSeries gnss{"raw GNSS fixes", kGnssColor, PlotSeries::Style::kPoints, {}, {}, 0};
+    PlotSeries gnss = NamedSeries("raw GNSS fixes", kGnssColor, PlotSeries::Style::kPoints);
     for (const auto& e : s.fix_errors)
       gnss.x.push_back(ToSeconds(e.t)), gnss.y.push_back(e.horizontal());
-    PlotSeries est{"estimate", kEstimateColor, PlotSeries::Style::kLine, {}, {}, 0};
+    PlotSeries est = NamedSeries("estimate", kEstimateColor);
     for (const auto& e : s.estimate_errors)
       est.x.push_back(ToSeconds(e.t)), est.y.push_back(e.horizontal());
     c.series = {gnss, est};
-    WriteFile(dir + "/plots/horizontal_error.svg", RenderSvg(c));
-    files.push_back("plots/horizontal_error.svg");
+    WritePlot(c, dir, "plots/horizontal_error.svg", files);
   }
   {
     PlotChart c;
@@ -99,8 +87,7 @@ std::vector<std::string> WritePlots(const RunReport& r, const ReportSeries& s,
     c.y_from_zero = true;
     c.series = {Cdf(s.fix_errors, "raw GNSS fixes", kGnssColor),
                 Cdf(s.estimate_errors, "estimate", kEstimateColor)};
-    WriteFile(dir + "/plots/error_cdf.svg", RenderSvg(c));
-    files.push_back("plots/error_cdf.svg");
+    WritePlot(c, dir, "plots/error_cdf.svg", files);
   }
   {
     PlotChart c;
@@ -128,8 +115,7 @@ std::vector<std::string> WritePlots(const RunReport& r, const ReportSeries& s,
       }
       c.series = {h};
     }
-    WriteFile(dir + "/plots/latency_histogram.svg", RenderSvg(c));
-    files.push_back("plots/latency_histogram.svg");
+    WritePlot(c, dir, "plots/latency_histogram.svg", files);
   }
   if (r.tracking) WriteClosedLoopPlots(r, s, dir, files);
   return files;
@@ -298,7 +284,7 @@ void WriteReportHtml(const RunReport& r, const ReportSeries& s, const std::strin
     h += std::string("<li><a href=\"") + f + "\">" + f + "</a></li>";
   }
   h += "</ul>\n</body></html>\n";
-  WriteFile(dir + "/report.html", h);
+  WriteOutputFile(dir + "/report.html", h);
 }
 
 }  // namespace hil::harness

@@ -6,7 +6,10 @@
 #include <cstdio>
 #include <map>
 #include <optional>
+#include <span>
 
+#include "hil/firmware_emu/little_endian.h"
+#include "hil/firmware_emu/mcu/mcu_frame.h"
 #include "hil/harness/validate/validate.h"
 
 #include "garbage_run.h"
@@ -16,23 +19,6 @@ namespace {
 
 constexpr double kMaxTickRateErrorPpm = 500.0;  // crystal ±100 ppm plus margin
 constexpr double kMaxImuRateError = 0.02;
-
-std::uint16_t Crc16CcittFalse(const std::string& b, std::size_t from, std::size_t to) {
-  std::uint16_t crc = 0xFFFF;
-  for (std::size_t i = from; i < to; ++i) {
-    crc = static_cast<std::uint16_t>(crc ^ (static_cast<unsigned char>(b[i]) << 8));
-    for (int k = 0; k < 8; ++k)
-      crc = static_cast<std::uint16_t>(crc & 0x8000 ? (crc << 1) ^ 0x1021 : crc << 1);
-  }
-  return crc;
-}
-
-std::uint32_t U(const std::string& b, std::size_t i, int n) {
-  std::uint32_t v = 0;
-  for (int k = n - 1; k >= 0; --k)
-    v = (v << 8) | static_cast<unsigned char>(b[i + static_cast<std::size_t>(k)]);
-  return v;
-}
 
 struct TypeSpec {
   const char* name;
@@ -57,20 +43,20 @@ struct McuStreamState {
 // sequence continuity, tick monotonicity per type, TIME_PULSE spacing.
 void CheckFrame(const std::string& b, std::size_t pos, int type, const char* name, std::int64_t off,
                 McuStreamState& st, ValidationReport& rep) {
-  const auto seq = static_cast<std::uint16_t>(U(b, pos + 5, 2));
-  const std::uint32_t tick = U(b, pos + 7, 4);
+  const auto seq = LeRead<std::uint16_t>(b, pos + 5);
+  const std::uint32_t tick = LeRead<std::uint32_t>(b, pos + 7);
   const std::size_t p = pos + 11;
   bool reset = false;
   if (type == 4) {  // STATUS
-    const auto count = static_cast<std::uint16_t>(U(b, p + 2, 2));
+    const auto count = LeRead<std::uint16_t>(b, p + 2);
     reset = seq == 0 && (!st.reset_count || count > *st.reset_count);
     if (seq == 0 && st.reset_count && count <= *st.reset_count) {
       rep.findings.push_back(
           {true, "reset", "sequence restarted at 0 without a higher reset count", off});
     }
     st.reset_count = count;
-    st.imu_period_ticks = U(b, p + 8, 4);
-    if (U(b, p + 4, 4) != 1000000)
+    st.imu_period_ticks = LeRead<std::uint32_t>(b, p + 8);
+    if (LeRead<std::uint32_t>(b, p + 4) != 1000000)
       rep.findings.push_back({true, "status", "nominal tick rate is not 1 MHz", off});
   }
   if (reset) {
@@ -97,7 +83,7 @@ void CheckFrame(const std::string& b, std::size_t pos, int type, const char* nam
   st.last_tick[type] = tick;
   st.ticks[type].push_back(static_cast<double>(st.wrap[type] + tick));
   if (type == 3) {  // TIME_PULSE
-    const std::uint32_t tow = U(b, p + 2, 4);
+    const std::uint32_t tow = LeRead<std::uint32_t>(b, p + 2);
     const bool valid = (static_cast<unsigned char>(b[p + 6]) & 1) != 0;
     if (valid && tow % 1000 != 0)
       rep.findings.push_back({true, "time_pulse", "pulse TOW is not a whole second", off});
@@ -182,7 +168,8 @@ ValidationReport ValidateMcuStream(const ByteStream& s) {
       rep.findings.push_back({false, "truncated", "frame cut off at the end of the stream", off});
       break;
     }
-    if (Crc16CcittFalse(b, pos + 2, pos + 11 + n) != U(b, pos + 11 + n, 2)) {
+    if (mcu::Crc16CcittFalse(std::span(reinterpret_cast<const std::uint8_t*>(b.data()) + pos + 2,
+                                       9 + n)) != LeRead<std::uint16_t>(b, pos + 11 + n)) {
       rep.findings.push_back(
           {true, "checksum", std::string(spec->second.name) + " CRC mismatch", off});
       ++rep.bad_frames;

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <set>
 
+#include "hil/firmware_emu/gnss/ubx_frame.h"
+#include "hil/firmware_emu/little_endian.h"
 #include "hil/harness/dut/nmea_sentence.h"
 #include "hil/harness/eval/evaluator.h"
 #include "hil/harness/validate/validate.h"
@@ -33,15 +35,6 @@ struct Framed {
   std::size_t bad = 0, garbage = 0;
 };
 
-std::uint16_t Le16(const std::string& b, std::size_t i) {
-  return static_cast<std::uint16_t>(static_cast<unsigned char>(b[i]) |
-                                    (static_cast<unsigned char>(b[i + 1]) << 8));
-}
-std::uint32_t Le32(const std::string& b, std::size_t i) {
-  return static_cast<std::uint32_t>(Le16(b, i)) |
-         (static_cast<std::uint32_t>(Le16(b, i + 2)) << 16);
-}
-
 std::int64_t TimeAt(const ByteStream& s, std::size_t i) {
   return i < s.t_ns.size() ? s.t_ns[i] : -1;
 }
@@ -52,14 +45,16 @@ enum class FrameStep { kNext, kStop };
 // The UBX frame whose sync pair is at `pos`: appended to `out` with `pos` past it, or a finding
 // with `pos` past the sync pair (to resynchronise).
 FrameStep FrameUbx(const ByteStream& s, std::size_t& pos, Framed& out, ValidationReport& rep) {
-  const std::string& b = s.bytes;
-  if (pos + 6 > b.size()) {
+  using gnss::ubx::FrameAtStatus;
+  const gnss::ubx::FrameAt u =
+      gnss::ubx::ParseFrameAt(std::string_view(s.bytes).substr(pos), kUbxMaxPayload);
+  const std::size_t len = u.payload_length;
+  if (u.status == FrameAtStatus::kHeaderCut) {
     rep.findings.push_back({false, "truncated", "UBX header cut off at the end of the stream",
                             static_cast<std::int64_t>(pos)});
     return FrameStep::kStop;
   }
-  const std::size_t len = Le16(b, pos + 4);
-  if (len > kUbxMaxPayload) {
+  if (u.status == FrameAtStatus::kTooLong) {
     rep.findings.push_back({true, "ubx_length",
                             "implausible UBX payload length " + std::to_string(len),
                             static_cast<std::int64_t>(pos)});
@@ -67,22 +62,16 @@ FrameStep FrameUbx(const ByteStream& s, std::size_t& pos, Framed& out, Validatio
     pos += 2;
     return FrameStep::kNext;
   }
-  if (pos + 8 + len > b.size()) {
+  if (u.status == FrameAtStatus::kCut) {
     rep.findings.push_back({false, "truncated", "UBX frame cut off at the end of the stream",
                             static_cast<std::int64_t>(pos)});
     return FrameStep::kStop;
   }
-  std::uint8_t ck_a = 0, ck_b = 0;
-  for (std::size_t i = pos + 2; i < pos + 6 + len; ++i) {
-    ck_a = static_cast<std::uint8_t>(ck_a + static_cast<unsigned char>(b[i]));
-    ck_b = static_cast<std::uint8_t>(ck_b + ck_a);
-  }
-  if (ck_a != static_cast<unsigned char>(b[pos + 6 + len]) ||
-      ck_b != static_cast<unsigned char>(b[pos + 7 + len])) {
+  if (u.status == FrameAtStatus::kBadChecksum) {
     char msg[96];
-    std::snprintf(
-        msg, sizeof msg, "UBX checksum mismatch (class 0x%02X id 0x%02X, %zu payload bytes)",
-        static_cast<unsigned char>(b[pos + 2]), static_cast<unsigned char>(b[pos + 3]), len);
+    std::snprintf(msg, sizeof msg,
+                  "UBX checksum mismatch (class 0x%02X id 0x%02X, %zu payload bytes)", u.cls, u.id,
+                  len);
     rep.findings.push_back({true, "checksum", msg, static_cast<std::int64_t>(pos)});
     ++out.bad;
     pos += 2;  // resynchronise on the next sync pair
@@ -91,13 +80,13 @@ FrameStep FrameUbx(const ByteStream& s, std::size_t& pos, Framed& out, Validatio
   Frame f;
   f.kind = Frame::Kind::kUbx;
   f.offset = pos;
-  f.length = 8 + len;
+  f.length = u.frame_size();
   f.t_ns = TimeAt(s, pos);
-  f.cls = static_cast<std::uint8_t>(b[pos + 2]);
-  f.id = static_cast<std::uint8_t>(b[pos + 3]);
-  f.payload = b.substr(pos + 6, len);
+  f.cls = u.cls;
+  f.id = u.id;
+  f.payload = std::string(u.payload);
   out.frames.push_back(std::move(f));
-  pos += 8 + len;
+  pos += u.frame_size();
   return FrameStep::kNext;
 }
 
@@ -606,7 +595,7 @@ void CheckUbx(const Framed& fr, bool neo5m, ValidationReport& rep) {
       continue;
     }
     if (spec->has_itow && len >= 4) {
-      const std::uint32_t itow = Le32(f.payload, 0);
+      const std::uint32_t itow = LeRead<std::uint32_t>(f.payload, 0);
       if (itows.empty() || itows.back() != itow) {
         if (!itows.empty() && itow < itows.back() && itows.back() - itow < 302400000u) {
           rep.findings.push_back({true, "time_monotonic",

@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include "hil/firmware_emu/actuator/base_serial_codec.h"
-#include "hil/firmware_emu/actuator/base_serial_framing.h"
 
 #include "base_session_golden.h"
 
@@ -44,18 +43,6 @@ TEST(BaseSerialSession, AnswersTheGoldenSessionByteForByte) {
   EXPECT_EQ(motors.counters().watchdog_trips, 2u);  // 0 → 2000 ms and 3000 → 5000 ms
   EXPECT_EQ(session.overlong_lines(), 1u);
   EXPECT_EQ(session.counters().invalid, 1u);
-}
-
-TEST(BaseSerialFraming, SplitsOnCarriageReturnAcrossWritesAndIgnoresLineFeed) {
-  BaseLineFramer f;
-  std::vector<std::string> lines;
-  for (char c : std::string("m 1")) EXPECT_FALSE(f.Feed(c));
-  for (char c : std::string("0 2\r\ne\r")) {
-    if (f.Feed(c)) lines.push_back(f.line());
-  }
-  ASSERT_EQ(lines.size(), 2u);
-  EXPECT_EQ(lines[0], "m 10 2");
-  EXPECT_EQ(lines[1], "e");
 }
 
 TEST(BaseSerialCodec, ParsesArgumentsAsAtoiDoes) {

@@ -9,7 +9,7 @@ TEST(GpsTimeTest, KnownInstants) {
   // 2013-06-10T08:00:00Z: GPS week 1744, TOW 115216 s (Monday 08:00 + 16 leap seconds)
   const std::int64_t unix_ns = ParseIsoUtc("2013-06-10T08:00:00Z");
   EXPECT_EQ(unix_ns, 1370851200LL * 1000000000LL);
-  const GpsTime g = GpsFromUnixNs(unix_ns);
+  const GpsWeekTime g = GpsFromUnixNs(unix_ns);
   EXPECT_EQ(g.week, 1744);
   EXPECT_EQ(g.tow_ns, (86400LL + 8 * 3600 + 16) * 1000000000LL);
   EXPECT_EQ(UnixNsFromGps(g), unix_ns);

@@ -235,7 +235,7 @@ TEST(Neo5mDeviceTest, CfgMsgEnablesUbxNavMessagesAfterTheAck) {
   const std::vector<std::uint8_t> p(sol.begin() + 6, sol.end() - 2);
   ASSERT_EQ(p.size(), 52u);
   ubx::Reader rd(p);
-  const GpsTime g = GpsFromUnixNs(ParseIsoUtc("2013-06-10T08:00:03Z"));
+  const GpsWeekTime g = GpsFromUnixNs(ParseIsoUtc("2013-06-10T08:00:03Z"));
   EXPECT_EQ(rd.U4(0), g.itow_ms());
   EXPECT_EQ(rd.I2(8), g.week);
   EXPECT_EQ(rd.U1(10), 3);

@@ -69,5 +69,31 @@ TEST(UbxFrameTest, ParserSplitsMixedInputAndDropsCorruptFrames) {
   EXPECT_EQ(p.discarded_frames(), 2u);  // the corrupt frame and the PUBX,04 with a wrong checksum
 }
 
+TEST(UbxFrameTest, ParseFrameAtReadsAWholeFrameAndStopsAtItsEnd) {
+  const std::string f = Bytes({0xB5, 0x62, 0x06, 0x01, 0x03, 0x00, 0x01, 0x06, 0x01, 0x12, 0x4F});
+  const std::string bytes = f + "trailing";
+  const FrameAt u = ParseFrameAt(bytes);  // its payload is a view into `bytes`
+  EXPECT_EQ(u.status, FrameAtStatus::kFrame);
+  EXPECT_EQ(u.cls, 0x06);
+  EXPECT_EQ(u.id, 0x01);
+  EXPECT_EQ(u.frame_size(), f.size());
+  EXPECT_EQ(u.payload, Bytes({0x01, 0x06, 0x01}));
+}
+
+TEST(UbxFrameTest, ParseFrameAtTellsACutHeaderATooLongOrCutFrameAndABadChecksum) {
+  const std::string f = Bytes({0xB5, 0x62, 0x06, 0x01, 0x03, 0x00, 0x01, 0x06, 0x01, 0x12, 0x4F});
+  EXPECT_EQ(ParseFrameAt(f.substr(0, 5)).status, FrameAtStatus::kHeaderCut);
+  EXPECT_EQ(ParseFrameAt(f.substr(0, 10)).status, FrameAtStatus::kCut);
+  EXPECT_EQ(ParseFrameAt(f, 2).status, FrameAtStatus::kTooLong) << "3 payload bytes over 2";
+  EXPECT_EQ(ParseFrameAt(f.substr(0, 6), 2).status, FrameAtStatus::kTooLong)
+      << "the length is judged before the end";
+  std::string bad = f;
+  bad[7] = 0x07;
+  const FrameAt u = ParseFrameAt(bad);
+  EXPECT_EQ(u.status, FrameAtStatus::kBadChecksum);
+  EXPECT_EQ(u.payload_length, 3u);
+  EXPECT_TRUE(u.payload.empty());
+}
+
 }  // namespace
 }  // namespace hil::gnss::ubx

@@ -57,13 +57,15 @@ TEST(SlcanFramingTest, BadRecordsAreRefusedByKind) {
   }
 }
 
-TEST(SlcanFramingTest, OverlongRecordsAreDroppedAndCounted) {
-  SlcanRecordSplitter s;
-  int records = 0;
-  for (const char c : std::string(40, '1') + "\rt1230\r") records += s.Feed(c) ? 1 : 0;
-  EXPECT_EQ(records, 1);
-  EXPECT_EQ(s.record(), "t1230");
-  EXPECT_EQ(s.overlong(), 1u);
+TEST(SlcanFramingTest, OverlongRecordsAreDroppedAndCountedFromTheirFirstByteOverTheLimit) {
+  SlcanAdapter a;
+  std::string reply;
+  std::vector<CanFrame> frames;
+  a.OnHostBytes(Time{}, std::string(40, '1'), reply, frames);
+  EXPECT_EQ(a.overlong_records(), 1u) << "counted before its CR comes";
+  a.OnHostBytes(Time{}, "\rV\r", reply, frames);
+  EXPECT_EQ(a.overlong_records(), 1u);
+  EXPECT_EQ(a.counters().records, 1u) << "only V is a record";
 }
 
 TEST(SlcanAdapterTest, GoldenSessionAnswersAsTheAdapter) {

@@ -85,7 +85,7 @@ TEST(McuDeviceTest, SamplesRunOnTheCrystalAndLatchTheTimePulse) {
   for (std::size_t i = 0; i < pulses.size(); ++i) {
     const Time t_edge = pulses[i].t_ready - DurationFromSeconds(c.output_latency_s);
     EXPECT_EQ(ToNs(t_edge), 700000000 + static_cast<std::int64_t>(i) * 1000000000);
-    const gnss::GpsTime g = gnss::GpsFromUnixNs(kStartUnixNs + ToNs(t_edge));
+    const gnss::GpsWeekTime g = gnss::GpsFromUnixNs(kStartUnixNs + ToNs(t_edge));
     EXPECT_EQ(g.tow_ns % 1000000000, 0);
     EXPECT_EQ(pulses[i].frame.U16(0), g.week);
     EXPECT_EQ(pulses[i].frame.U32(2), g.tow_ns / 1000000);

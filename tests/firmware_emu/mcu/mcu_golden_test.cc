@@ -214,7 +214,7 @@ BinaryVector MakeCan(McuConfig c, double seconds) {
                                  (static_cast<std::uint32_t>(f.data[3]) << 24);
       const std::uint32_t hi = f.data[4] | (f.data[5] << 8) | (f.data[6] << 16) |
                                (static_cast<std::uint32_t>(f.data[7]) << 24);
-      const gnss::GpsTime g =
+      const gnss::GpsWeekTime g =
           gnss::GpsFromUnixNs(unix_ns - static_cast<std::int64_t>(c.can.latency_s * 1e9));
       row += "," + std::to_string(tick) + "," + std::to_string(g.tow_ns / 1000000000) + "," +
              std::to_string(g.week % 4096);

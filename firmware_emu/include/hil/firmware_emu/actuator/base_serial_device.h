@@ -21,6 +21,7 @@
 
 #include "hil/firmware_emu/actuator/base_serial_session.h"
 #include "hil/firmware_emu/actuator/command_link_loss.h"
+#include "hil/firmware_emu/actuator/control_tick_clock.h"
 #include "hil/firmware_emu/actuator/wheel_motors.h"
 #include "hil/firmware_emu/device.h"
 
@@ -48,19 +49,14 @@ struct BaseTickRecord {
   bool missing = false;
 };
 
-struct BaseSerialDeviceCounters {
-  std::uint64_t ticks = 0;
-  std::uint64_t missing_commands = 0;
-  std::optional<Time> first_missing;  ///< the first tick of the latest run of missing commands
-  std::optional<Time> last_command;   ///< arrival of the latest speed command
-};
+using BaseSerialDeviceCounters = ControlTickCounters;  ///< last_command: the latest speed command
 
 class BaseSerialDevice : public Device {
  public:
   explicit BaseSerialDevice(const BaseSerialDeviceConfig& config);
 
   const std::string& name() const override { return cfg_.name; }
-  Time next_event_time() const override { return next_; }
+  Time next_event_time() const override { return tick_.next_event_time(); }
   void OnEvent(const TruthSample& truth, DeviceOutput& out) override;
   void OnHostBytes(int port, Time t, std::string_view bytes, DeviceOutput& out) override;
   int baud(int port) const override;
@@ -81,9 +77,7 @@ class BaseSerialDevice : public Device {
   BaseSerialDeviceConfig cfg_;
   WheelMotors motors_;
   BaseSerialSession session_;
-  Time next_{};
-  Time next_tick_{};
-  std::optional<VehicleCommand> pending_;
+  ControlTickClock tick_;
   std::uint64_t seen_motor_commands_ = 0;
   BaseSerialDeviceCounters counters_;
   CommandLinkLoss loss_;

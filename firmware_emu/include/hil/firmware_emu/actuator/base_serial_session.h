@@ -50,7 +50,7 @@ class BaseSerialSession {
 
   BaseSerialConfig cfg_;
   WheelMotors& motors_;
-  BaseLineFramer framer_;
+  link::CrLineFramer framer_{kMaxBaseLineLength};
   BaseSerialCounters counters_;
 };
 

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "hil/firmware_emu/actuator/command_link_loss.h"
+#include "hil/firmware_emu/actuator/control_tick_clock.h"
 #include "hil/firmware_emu/actuator/steering_ecu.h"
 #include "hil/firmware_emu/device.h"
 #include "hil/firmware_emu/link/slcan_adapter.h"
@@ -56,11 +57,8 @@ struct SteeringTickRecord {
   bool missing = false;
 };
 
-struct IsobusSteeringCounters {
-  std::uint64_t ticks = 0;
-  std::uint64_t missing_commands = 0;
-  std::optional<Time> first_missing;
-  std::optional<Time> last_command;  ///< arrival of the latest valid Guidance System Command
+/// last_command: arrival of the latest valid Guidance System Command.
+struct IsobusSteeringCounters : ControlTickCounters {
   std::uint64_t frames_from_controller = 0;
 };
 
@@ -69,7 +67,7 @@ class IsobusSteeringDevice : public Device {
   explicit IsobusSteeringDevice(const IsobusSteeringDeviceConfig& config);
 
   const std::string& name() const override { return cfg_.name; }
-  Time next_event_time() const override { return next_; }
+  Time next_event_time() const override { return tick_.next_event_time(); }
   void OnEvent(const TruthSample& truth, DeviceOutput& out) override;
   void OnHostBytes(int port, Time t, std::string_view bytes, DeviceOutput& out) override;
   void OnBusFrame(Time t, const CanFrame& frame, DeviceOutput& out) override;
@@ -96,10 +94,8 @@ class IsobusSteeringDevice : public Device {
   IsobusSteeringDeviceConfig cfg_;
   SteeringEcu ecu_;
   link::SlcanAdapter adapter_;
-  Time next_{};
-  Time next_tick_{};
+  ControlTickClock tick_;
   double distance_m_ = 0;
-  std::optional<VehicleCommand> pending_;
   std::uint64_t seen_accepted_ = 0;
   IsobusSteeringCounters counters_;
   CommandLinkLoss loss_;

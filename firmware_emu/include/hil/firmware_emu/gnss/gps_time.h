@@ -19,8 +19,9 @@ struct UtcTime {
   std::int64_t nanosecond = 0;
 };
 
-/// GPS week number (full, not modulo 1024) and time of week.
-struct GpsTime {
+/// GPS time as the receivers write it: the week number (full, not modulo 1024) and the time of
+/// week. A calendar form, like UtcTime; the instant type of GPS time is the estimator's `GpsTime`.
+struct GpsWeekTime {
   int week = 0;
   std::int64_t tow_ns = 0;  ///< nanoseconds into the week
   double tow_s() const { return static_cast<double>(tow_ns) * 1e-9; }
@@ -36,9 +37,9 @@ UtcTime UtcFromUnixNs(std::int64_t unix_ns);
 /// GPS − UTC in whole seconds at a UTC instant (IERS table from 1980 to the 2017 leap second).
 int LeapSecondsAtUnix(std::int64_t unix_s);
 /// GPS time of a UTC instant given as Unix nanoseconds.
-GpsTime GpsFromUnixNs(std::int64_t unix_ns);
+GpsWeekTime GpsFromUnixNs(std::int64_t unix_ns);
 /// Unix nanoseconds (UTC) of a GPS time.
-std::int64_t UnixNsFromGps(const GpsTime& gps);
+std::int64_t UnixNsFromGps(const GpsWeekTime& gps);
 /// Parses "YYYY-MM-DDThh:mm:ss[.fff]Z" into Unix nanoseconds.
 /// @throws std::invalid_argument naming the text when it does not parse or is out of range.
 std::int64_t ParseIsoUtc(const std::string& text);

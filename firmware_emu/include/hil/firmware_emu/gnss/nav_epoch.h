@@ -20,7 +20,7 @@ struct NavEpoch {
   std::vector<SatelliteView> sats;  ///< sorted by svid
   std::vector<int> used_in_channel_order;  ///< svids of used satellites, by channel
   FixStatus status;
-  GpsTime gps;              ///< GPS time of the epoch
+  GpsWeekTime gps;          ///< GPS time of the epoch
   int leap_s = 18;          ///< GPS − UTC
   bool leap_known = false;  ///< from the almanac (else the firmware default)
   double clk_bias_ns = 0, clk_drift_nsps = 0;

@@ -2,8 +2,9 @@
 /// @file
 /// UBX framing (u-blox binary protocol): `B5 62 class id len(U2 LE) payload CK_A CK_B`, the 8-bit
 /// Fletcher checksum over class, id, length and payload. Little-endian field writers and readers
-/// that assemble payloads byte by byte (no struct punning), and an incremental parser for the
-/// host → receiver direction that splits a byte stream into UBX frames and NMEA sentences.
+/// that assemble payloads byte by byte (no struct punning), the framing of a buffer read whole
+/// (logs, captures), and an incremental parser for the host → receiver direction that splits a
+/// byte stream into UBX frames and NMEA sentences.
 /// Facts: shared/reference/ublox5.md §1.
 
 #include <cstddef>
@@ -76,6 +77,26 @@ std::string Frame(std::uint8_t cls, std::uint8_t id, const std::vector<std::uint
 inline std::string Frame(std::uint8_t cls, std::uint8_t id, const Writer& w) {
   return Frame(cls, id, w.bytes());
 }
+
+/// What a byte buffer holds at a sync pair: the framing of a log or capture read whole (hil
+/// validate, dataset import), where the host's incremental InputParser reads a stream byte by byte.
+enum class FrameAtStatus : std::uint8_t {
+  kFrame,        ///< a whole frame with a valid checksum
+  kHeaderCut,    ///< fewer than the 6 bytes of sync pair, class, id and length
+  kTooLong,      ///< a length field over the caller's limit
+  kCut,          ///< the frame runs past the end of the bytes
+  kBadChecksum,  ///< whole, but CK_A CK_B do not match
+};
+struct FrameAt {
+  FrameAtStatus status = FrameAtStatus::kHeaderCut;
+  std::uint8_t cls = 0, id = 0;    ///< from the header (all but kHeaderCut)
+  std::size_t payload_length = 0;  ///< from the header (all but kHeaderCut)
+  std::string_view payload;        ///< kFrame: a view into the bytes parsed
+  std::size_t frame_size() const { return 8 + payload_length; }
+};
+/// The frame at the start of `bytes`, which begin with the sync pair B5 62. Checked in this order:
+/// header, length against `max_payload`, end of the bytes, checksum.
+FrameAt ParseFrameAt(std::string_view bytes, std::size_t max_payload = 0xFFFF);
 
 /// One unit of host input: a checksum-valid UBX frame or a checksum-valid NMEA sentence.
 struct InputMessage {

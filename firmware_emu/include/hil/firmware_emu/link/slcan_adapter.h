@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "hil/firmware_emu/device.h"
+#include "hil/firmware_emu/link/cr_line_framer.h"
 #include "hil/firmware_emu/link/slcan_framing.h"
 
 namespace hil::link {
@@ -52,7 +53,10 @@ class SlcanAdapter {
   /// The bit rate set (bit/s; 0 after `s` with BTR values).
   int bitrate_bps() const { return bitrate_bps_; }
   const SlcanAdapterCounters& counters() const { return counters_; }
-  std::uint64_t overlong_records() const { return splitter_.overlong(); }
+  /// Records over kMaxSlcanRecord, counted from their first byte past the limit.
+  std::uint64_t overlong_records() const {
+    return splitter_.overlong_lines() + (splitter_.discarding() ? 1 : 0);
+  }
 
  private:
   /// Executes one record; returns the answer.
@@ -61,7 +65,7 @@ class SlcanAdapter {
   std::string Refuse();
 
   std::string serial_number_;
-  SlcanRecordSplitter splitter_;
+  CrLineFramer splitter_{kMaxSlcanRecord};
   bool open_ = false;
   bool listen_only_ = false;
   bool timestamps_ = false;

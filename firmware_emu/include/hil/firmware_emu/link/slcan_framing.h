@@ -15,7 +15,8 @@
 
 namespace hil::link {
 
-/// The longest record: `T` + 8 + 1 + 16 hex digits (+ CR).
+/// The longest record: `T` + 8 + 1 + 16 hex digits (+ CR). A longer one is discarded up to its CR
+/// (link::CrLineFramer) and counted.
 inline constexpr std::size_t kMaxSlcanRecord = 26;
 
 /// The record of a classic frame (with its CR). FD frames and data beyond 8 bytes are not
@@ -33,21 +34,5 @@ enum class SlcanFrameError : std::uint8_t {
 
 /// Decodes one record (without its CR). On success `out` holds the frame (its time untouched).
 SlcanFrameError DecodeSlcanFrame(std::string_view record, CanFrame& out);
-
-/// Splits a byte stream into CR-ended records; LF is ignored. A record longer than
-/// `kMaxSlcanRecord` is discarded up to its CR and counted.
-class SlcanRecordSplitter {
- public:
-  /// Feeds one byte; true when it completed a record (then `record()` holds it, without CR).
-  bool Feed(char byte);
-  const std::string& record() const { return record_; }
-  std::uint64_t overlong() const { return overlong_; }
-
- private:
-  std::string buffer_;
-  std::string record_;
-  bool overflow_ = false;
-  std::uint64_t overlong_ = 0;
-};
 
 }  // namespace hil::link

@@ -1,8 +1,8 @@
-#include "hil/firmware_emu/actuator/base_serial_framing.h"
+#include "hil/firmware_emu/link/cr_line_framer.h"
 
-namespace hil::actuator {
+namespace hil::link {
 
-bool BaseLineFramer::Feed(char byte) {
+bool CrLineFramer::Feed(char byte) {
   if (byte == '\n') return false;
   if (byte == '\r') {
     const bool was_overflow = overflow_;
@@ -17,7 +17,7 @@ bool BaseLineFramer::Feed(char byte) {
     return true;
   }
   if (overflow_) return false;
-  if (buffer_.size() >= kMaxBaseLineLength) {
+  if (buffer_.size() >= max_length_) {
     overflow_ = true;
     return false;
   }
@@ -25,4 +25,4 @@ bool BaseLineFramer::Feed(char byte) {
   return false;
 }
 
-}  // namespace hil::actuator
+}  // namespace hil::link
