@@ -117,8 +117,8 @@ struct TruthConfig {
   /// Closed loop: how the truth reconstructs the actuators' sampled output between grid instants.
   /// > 0: a first-order hold, the speed and the steering input ramp linearly from their values to
   /// each new command over this time (the command period: continuous, with the actuator's mean
-  /// rate of change as its derivative; the vehicle's own lags, `speed_lag_s` …, are then unused, the
-  /// emulated actuator being the one model of the command path). 0: the vehicle's lags.
+  /// rate of change as its derivative; the vehicle's own lags, `speed_lag_s` …, are then unused,
+  /// the emulated actuator being the one model of the command path). 0: the vehicle's lags.
   double command_hold_s = 0;
 };
 
