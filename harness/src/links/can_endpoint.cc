@@ -46,7 +46,8 @@ CanEndpoint::CanEndpoint(const std::string& iface, const std::string& capture_di
       start_unix_ns_(start_unix_ns),
       candump_(capture_dir + "/" + iface + ".candump"),
       capture_(capture_dir + "/" + iface + ".cap", CanHeader(iface, start_unix_ns)),
-      realtime_minus_mono_ns_(RealtimeMinusMonotonicNs()) {}
+      realtime_minus_mono_ns_(RealtimeMinusMonotonicNs()),
+      tx_counter_(iface) {}
 
 CanEndpoint::~CanEndpoint() {
   try {
@@ -151,21 +152,45 @@ void CanEndpoint::ReadBus(Time t_now, const link::RealtimePacer* pacer, Duration
       r = port_.Receive(Duration{std::min<std::int64_t>(left, 10000000)});
       if (!r) continue;
     }
-    const auto [t, mono] = pacer ? BusTime(*r, *pacer) : std::pair{t_now, r->t_read_mono_ns};
-    if (r->own && !r->frame.error) {
-      OnEcho(*r, t, mono);
-      continue;
+    Take(*r, t_now, pacer);
+  }
+}
+
+void CanEndpoint::Take(const link::ReceivedCanFrame& r, Time t_now,
+                       const link::RealtimePacer* pacer) {
+  if (!r.frame.error) ++frames_read_;
+  const auto [t, mono] = pacer ? BusTime(r, *pacer) : std::pair{t_now, r.t_read_mono_ns};
+  if (r.own && !r.frame.error) {
+    OnEcho(r, t, mono);
+    return;
+  }
+  if (stamp_at_turns_ && !pacer) {
+    unstamped_.push_back(r.frame);
+    return;
+  }
+  Capture(CaptureDir::kFrameRx, t, mono, r.frame);
+  if (!r.frame.error) inbox_.push_back(link::ToDeviceFrame(r.frame, t));
+}
+
+void CanEndpoint::AwaitSentFrames(Time t_now, Duration limit) {
+  if (!tx_counter_.available()) return;
+  const std::int64_t give_up = link::RealtimePacer::MonotonicNs() + limit.count();
+  for (;;) {
+    const std::optional<std::uint64_t> sent = tx_counter_.SentSinceStart();
+    if (!sent || frames_read_ >= *sent) return;
+    const std::int64_t left = give_up - link::RealtimePacer::MonotonicNs();
+    if (left <= 0) {
+      ++sent_frames_wait_timeouts_;
+      return;
     }
-    if (stamp_at_turns_ && !pacer) {
-      unstamped_.push_back(r->frame);
-      continue;
-    }
-    Capture(CaptureDir::kFrameRx, t, mono, r->frame);
-    if (!r->frame.error) inbox_.push_back(link::ToDeviceFrame(r->frame, t));
+    const std::optional<link::ReceivedCanFrame> r =
+        port_.Receive(Duration{std::min<std::int64_t>(left, 10000000)});
+    if (r) Take(*r, t_now, nullptr);
   }
 }
 
 std::vector<CanFrame> CanEndpoint::TakeArrivals(Time t_arrival) {
+  AwaitSentFrames(t_arrival, kSentFramesWait);
   ReadBus(t_arrival, nullptr, Duration::zero());
   std::vector<CanFrame> out;
   for (const link::CanWireFrame& f : unstamped_) {

@@ -113,7 +113,8 @@ void ReadClosedLoopSection(const YamlReader& root, Scenario& s) {
   c.motors.track_m = s.truth.vehicle.track_m;
   if (auto a = r->OptionalChild("actuator")) ReadActuator(*a, c);
   c.motors.initial_wheel_speed_radps = c.initial_speed_mps / c.motors.wheel_radius_m;
-  // the truth obeys the wheels: its own lags are made negligible (the wheel motors are the model)
+  // the truth obeys the wheels through a first-order hold of their 10 ms output (the wheel motors
+  // are the one model of the command path; truth_integrator.h, command_hold_s)
   truth::TruthConfig& t = s.truth;
   t.external_commands = true;
   t.command_period_s = 0.01;
@@ -122,9 +123,7 @@ void ReadClosedLoopSection(const YamlReader& root, Scenario& s) {
   t.heading_deg = c.start_heading_deg;
   t.speed_mps = c.initial_speed_mps;
   t.start_at_speed = true;
-  t.vehicle.speed_lag_s = 1e-3;
-  t.vehicle.yaw_rate_lag_s = 1e-3;
-  t.vehicle.max_yaw_rate_dps = 1000;
+  t.command_hold_s = t.command_period_s;
 }
 
 }  // namespace hil::harness

@@ -57,9 +57,9 @@ void ReadIsobusChannel(const YamlReader& root, const YamlReader& r, Scenario& s)
   d.command_timeout = DurationFromSeconds(c.command_timeout_s);
   d.first_command_due = TimeFromSeconds(c.first_command_due_s);
   if (!r.Has("initial_speed_mps")) c.initial_speed_mps = d.speed_mps;
-  // the truth obeys the road wheels: its own steering lag and rate limit are made negligible (the
-  // steering ECU is the model: 10 ms and 200 °/s, against its 0.3 s and 20 °/s; 1 ms made the
-  // integration 3× slower); κ = tan δ / L at the rear axle
+  // the truth obeys the road wheels through a first-order hold of the steering ECU's 10 ms output
+  // (the ECU, first-order and rate-limited, is the one model of the command path;
+  // truth_integrator.h, command_hold_s); κ = tan δ / L at the rear axle
   truth::TruthConfig& t = s.truth;
   t.external_commands = true;
   t.command_period_s = 0.01;
@@ -68,9 +68,7 @@ void ReadIsobusChannel(const YamlReader& root, const YamlReader& r, Scenario& s)
   t.heading_deg = c.start_heading_deg;
   t.speed_mps = c.initial_speed_mps;
   t.start_at_speed = true;
-  t.vehicle.speed_lag_s = 1e-3;
-  t.vehicle.steer_lag_s = 0.01;
-  t.vehicle.max_steer_rate_dps = 200;
+  t.command_hold_s = t.command_period_s;
   t.vehicle.max_steer_deg = d.ecu.max_steer_deg;
 }
 

@@ -28,4 +28,9 @@ double RateLimitedLagAt(double x0, double c, double tau_s, double rate_per_s, do
   return c - std::copysign(abs_z * a, z0);
 }
 
+double LinearHoldAt(double x0, double c, double hold_s, double s) {
+  if (s >= hold_s || x0 == c) return c;
+  return x0 + (c - x0) * (s / hold_s);
+}
+
 }  // namespace hil::truth

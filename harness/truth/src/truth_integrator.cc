@@ -115,6 +115,11 @@ struct TruthIntegrator::Impl {
     std::copy(ode, ode + kOdeSize, s);
     const VehicleParams& p = c->vehicle;
     const double dt = t - lag_t0;
+    if (c->external_commands && c->command_hold_s > 0) {
+      s[kV] = LinearHoldAt(lag_v0, in.v_cmd, c->command_hold_s, dt);
+      s[kU] = LinearHoldAt(lag_u0, in.u_cmd, c->command_hold_s, dt);
+      return;
+    }
     s[kV] = FirstOrderLagAt(lag_v0, in.v_cmd, p.speed_lag_s, dt);
     s[kU] = diff_drive ? FirstOrderLagAt(lag_u0, in.u_cmd, p.yaw_rate_lag_s, dt)
                        : RateLimitedLagAt(lag_u0, in.u_cmd, p.steer_lag_s,
@@ -160,6 +165,12 @@ struct TruthIntegrator::Impl {
     d[kE] = s[kV] * std::cos(chi);
     d[kN] = s[kV] * std::sin(chi);
     d[kYaw] = YawRate(s);
+    if (c->external_commands && c->command_hold_s > 0) {
+      // the hold's ramp: its slope until the input reaches the command, then none
+      d[kV] = s[kV] == u.v_cmd ? 0.0 : (u.v_cmd - lag_v0) / c->command_hold_s;
+      d[kU] = s[kU] == u.u_cmd ? 0.0 : (u.u_cmd - lag_u0) / c->command_hold_s;
+      return;
+    }
     d[kV] = (u.v_cmd - s[kV]) / p.speed_lag_s;
     if (diff_drive) {
       d[kU] = (u.u_cmd - s[kU]) / p.yaw_rate_lag_s;

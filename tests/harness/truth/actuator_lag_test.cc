@@ -33,6 +33,14 @@ TEST(ActuatorLagTest, FirstOrderLagMatchesItsEquation) {
   EXPECT_EQ(FirstOrderLagAt(0.5, 0.5, 1e-3, 0.01), 0.5);  // held exactly at the command
 }
 
+TEST(ActuatorLagTest, LinearHoldRampsToTheCommandOverTheHold) {
+  EXPECT_EQ(LinearHoldAt(0.4, 0.5, 0.01, 0.0), 0.4);
+  EXPECT_NEAR(LinearHoldAt(0.4, 0.5, 0.01, 0.0025), 0.425, 1e-15);
+  EXPECT_EQ(LinearHoldAt(0.4, 0.5, 0.01, 0.01), 0.5);  // reached, and held exactly
+  EXPECT_EQ(LinearHoldAt(0.4, 0.5, 0.01, 1.0), 0.5);
+  EXPECT_EQ(LinearHoldAt(0.5, 0.5, 0.01, 0.004), 0.5);
+}
+
 TEST(ActuatorLagTest, RateLimitedLagMatchesItsEquationFromLinearToSaturated) {
   // GIVEN a steering lag of 1 ms with a rate limit of 1000 deg/s (a = τ r = 0.0175 rad), and
   // steps from 1e-4 rad (linear) to 0.6 rad (|z₀| = 34: the rate limit for 33 ms)

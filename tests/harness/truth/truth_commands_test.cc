@@ -1,6 +1,7 @@
 // The truth with commands as inputs (closed loop): piecewise-constant commands on the command
 // grid without restarts, the analytic steady turn, determinism whatever the
 // sampling, and late commands honoured by a replay.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -127,6 +128,31 @@ TEST(TruthCommands, DiffDriveTakesYawRate) {
   const TruthSample s = truth.Sample(Sec(30));
   EXPECT_NEAR(s.w_NB_B_radps.z(), 0.1, 1e-7);
   EXPECT_NEAR(s.speed_mps, 0.5, 1e-9);
+}
+
+// The closed loop's first-order hold (command_hold_s): an actuator slowing at 3 m/s², sampled
+// every 10 ms, gives the truth a speed that ramps between its samples, so the acceleration the
+// IMU reads is the actuator's at every instant, just after a command too (a step through a 1 ms
+// lag read 30 m/s² there), and the speed lost is the actuator's.
+TEST(TruthCommands, TheHoldGivesTheActuatorsAccelerationAtEveryInstant) {
+  TruthConfig c = ClosedLoop();
+  c.command_hold_s = c.command_period_s;
+  TruthIntegrator truth(c);
+  truth.SetCommand(Sec(0), 0.5, 0.0);
+  truth.Sample(Sec(1.0));
+  double v = 0.5;
+  for (int k = 1; k <= 17; ++k) {  // 0.5 m/s to 0 at 0.03 m/s per 10 ms tick
+    v = std::max(0.0, v - 0.03);
+    truth.SetCommand(Sec(1.0 + 0.01 * k), v, 0.0);
+  }
+  for (const double t : {1.0101, 1.0105, 1.0199, 1.0801, 1.15}) {
+    const TruthSample s = truth.Sample(Sec(t));
+    EXPECT_NEAR(s.a_NB_N_mps2.x(), -3.0, 1e-6) << "t " << t;
+  }
+  const TruthSample rest = truth.Sample(Sec(1.3));
+  EXPECT_NEAR(rest.speed_mps, 0.0, 1e-12);
+  EXPECT_NEAR(rest.a_NB_N_mps2.x(), 0.0, 1e-9);
+  EXPECT_EQ(truth.late_command_restarts(), 0);
 }
 
 }  // namespace

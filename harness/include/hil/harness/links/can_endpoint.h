@@ -26,6 +26,7 @@
 #include "hil/firmware_emu/link/candump_log.h"
 #include "hil/firmware_emu/link/realtime_pacer.h"
 #include "hil/firmware_emu/link/socketcan_port.h"
+#include "hil/harness/links/bus_tx_counter.h"
 #include "hil/harness/links/capture_format.h"
 
 namespace hil::harness {
@@ -59,7 +60,15 @@ class CanEndpoint {
   /// Reads the bus and returns every frame others sent since the last call, stamped `t_arrival`
   /// (error frames are captured, not returned). Their capture records wait until the capture
   /// reaches that time, so the captures stay in time order and say when each frame arrived.
+  /// On a vcan interface it first waits, at most kSentFramesWait, until it has read as many frames
+  /// as were sent on the interface (bus_tx_counter.h): a host that went idle after a send has its
+  /// frame counted there before the frame reaches this socket, so without the wait a frame would
+  /// be stamped at this turn or the next depending on the machine's load.
   std::vector<CanFrame> TakeArrivals(Time t_arrival);
+  static constexpr Duration kSentFramesWait = std::chrono::seconds(1);
+  /// Turns at which the frames sent on the interface were not all read within kSentFramesWait
+  /// (a receive queue that dropped frames, or a sender on another machine's end).
+  std::uint64_t sent_frames_wait_timeouts() const { return sent_frames_wait_timeouts_; }
   /// Real time: waits up to `timeout` for the echoes of the frames sent, reading the bus meanwhile
   /// (PollBus returns what others sent), then captures any frame still without an echo at its
   /// write time. The destructor does the same without waiting, after capturing what the socket
@@ -90,6 +99,10 @@ class CanEndpoint {
   void Capture(CaptureDir dir, Time t, std::int64_t wall_ns, const link::CanWireFrame& f);
   /// Reads what the socket holds, captures it in that order, keeps others' frames for PollBus.
   void ReadBus(Time t_now, const link::RealtimePacer* pacer, Duration wait);
+  /// One frame read off the socket: an echo of ours, or another's (captured or kept).
+  void Take(const link::ReceivedCanFrame& r, Time t_now, const link::RealtimePacer* pacer);
+  /// Virtual mode: reads until every frame sent on the interface so far has been read, or `limit`.
+  void AwaitSentFrames(Time t_now, Duration limit);
   void OnEcho(const link::ReceivedCanFrame& r, Time t, std::int64_t mono_ns);
   /// Captures the oldest frame still awaiting its echo at its write time.
   void CaptureUnechoed();
@@ -112,6 +125,9 @@ class CanEndpoint {
   std::optional<link::RealtimePacer> pacer_;  // real time: a copy of the run's clock mapping
   std::int64_t realtime_minus_mono_ns_ = 0;   // CLOCK_REALTIME − CLOCK_MONOTONIC at start
   Time t_last_capture_{};                     // captures never go back in time
+  BusTxCounter tx_counter_;                   // frames sent on the interface (vcan only)
+  std::uint64_t frames_read_ = 0;             // frames read off the socket, echoes included
+  std::uint64_t sent_frames_wait_timeouts_ = 0;
   std::vector<double> schedule_error_us_;
 };
 

@@ -1,10 +1,8 @@
 #pragma once
 /// @file
-/// The truth's actuator lags (vehicle.h) in closed form, for a command held constant from t₀ on.
-/// The closed-loop truth uses them instead of integrating the lags: there the lags are made
-/// negligible (1 ms, the emulated actuators being the model) and, integrated by CVODE's Adams
-/// method, their eigenvalue −1/τ would limit every step to about τ (stability of the fixed-point
-/// iteration), 1600 steps per simulated second.
+/// The truth's actuator lags (vehicle.h) in closed form, for a command held constant from t₀ on
+/// (integrated by CVODE's Adams method, a short lag's eigenvalue −1/τ would limit every step to
+/// about τ), and the closed loop's first-order hold of an emulated actuator's sampled output.
 
 namespace hil::truth {
 
@@ -17,5 +15,9 @@ double FirstOrderLagAt(double x0, double c, double tau_s, double s);
 /// whose solution is sinh z = sinh z₀ · e^(−s/τ); for large |z| (the rate limit) it is
 /// z = z₀ − s/τ, computed in logarithms so that nothing overflows.
 double RateLimitedLagAt(double x0, double c, double tau_s, double rate_per_s, double s);
+
+/// First-order hold: a ramp from x(t₀) = x0 that reaches c at t₀ + hold and stays there, at
+/// t₀ + s (s ≥ 0, hold > 0). Exactly c from s ≥ hold on.
+double LinearHoldAt(double x0, double c, double hold_s, double s);
 
 }  // namespace hil::truth

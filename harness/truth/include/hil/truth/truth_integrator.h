@@ -41,10 +41,11 @@
 /// on without a restart, as under guidance updates. Commands must be set before the truth is
 /// sampled past their grid instant (the lockstep guarantees it); a late command is still
 /// honoured, by re-integrating from t = 0 with the whole command history (deterministic, slower).
-/// A `path`, if given, is then used for the samples' cross-track only. The closed-loop lags are
-/// made negligible (1 ms: the emulated actuators are the model); integrated, their eigenvalue
-/// −1/τ bounded Adams' steps by stability to about τ (1615 steps per simulated second on
-/// diff_drive_serial, against 293 with the closed form).
+/// A `path`, if given, is then used for the samples' cross-track only. With `command_hold_s` the
+/// truth ramps linearly to each command over that time (the closed loop's setting: the emulated
+/// actuator is the one model; a step held through a 1 ms lag instead put a spike of 10× the
+/// actuator's acceleration into every IMU sample taken just after a command, so a 0.5 m/s stop
+/// at 3 m/s² read as a 4.7 m/s change of velocity).
 ///
 /// **Sampling**: requests must come in non-decreasing time order; each is read from the
 /// interpolating polynomial of the last step (CVodeGetDky), so the step sequence does not depend
@@ -113,6 +114,12 @@ struct TruthConfig {
   /// Closed loop: commands come from `TruthIntegrator::SetCommand`, not from the built-in guidance.
   bool external_commands = false;
   double command_period_s = 0.01;  ///< grid on which external commands take effect
+  /// Closed loop: how the truth reconstructs the actuators' sampled output between grid instants.
+  /// > 0: a first-order hold, the speed and the steering input ramp linearly from their values to
+  /// each new command over this time (the command period: continuous, with the actuator's mean
+  /// rate of change as its derivative; the vehicle's own lags, `speed_lag_s` …, are then unused,
+  /// the emulated actuator being the one model of the command path). 0: the vehicle's lags.
+  double command_hold_s = 0;
 };
 
 class TruthIntegrator {
