@@ -154,8 +154,7 @@ void Wt901cDevice::HandleCommand(Time t, std::uint8_t reg, std::uint16_t value, 
   ++stats_.commands;
   if (reg == kKey) {
     regs_[kKey] = value;
-    unlocked_until_ =
-        value == kUnlockKey ? t + DurationFromSeconds(config_.unlock_window_s) : Time{};
+    unlocked_until_ = value == kUnlockKey ? t + config_.unlock_window : Time{};
     return;
   }
   if (reg == kReadAddr) {  // reads need no unlock (the SDK reads without one)
@@ -164,7 +163,7 @@ void Wt901cDevice::HandleCommand(Time t, std::uint8_t reg, std::uint16_t value, 
       const std::size_t a = std::size_t{value} + k;
       d[k] = a < kRegisterCount ? static_cast<std::int16_t>(regs_[a]) : 0;
     }
-    SendPacket(t + DurationFromSeconds(config_.read_latency_s), 0x5F, d, out);
+    SendPacket(t + config_.read_latency, 0x5F, d, out);
     ++stats_.read_replies;
     return;
   }
@@ -197,7 +196,7 @@ void Wt901cDevice::HandleCommand(Time t, std::uint8_t reg, std::uint16_t value, 
       regs_[kRrate] = value;
       single_pending_ = value == kRateSingle;
       if (single_pending_)
-        next_cycle_ = t + DurationFromSeconds(config_.read_latency_s);
+        next_cycle_ = t + config_.read_latency;
       else
         Schedule(t);
       return;

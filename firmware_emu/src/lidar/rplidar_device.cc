@@ -50,8 +50,8 @@ std::size_t RplidarDevice::SamplesPerEvent() const {
 
 void RplidarDevice::StartScan(Mode mode, bool force) {
   mode_ = mode;
-  const Time stable = motor_t0_ + DurationFromSeconds(config_.spin_up_s);
-  const Time descriptor = now_ + DurationFromSeconds(config_.reply_latency_s);
+  const Time stable = motor_t0_ + config_.spin_up;
+  const Time descriptor = now_ + config_.reply_latency;
   scan_t0_ = force ? descriptor : std::max(descriptor, stable);
   if (!motor_on_) {
     next_event_ = kNever;  // no samples until the motor turns (SET_MOTOR_PWM)
@@ -136,8 +136,7 @@ void RplidarDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
 }
 
 void RplidarDevice::Send(std::string bytes, const char* what, DeviceOutput& out) {
-  out.serial.push_back(
-      {now_ + DurationFromSeconds(config_.reply_latency_s), 0, std::move(bytes), what});
+  out.serial.push_back({now_ + config_.reply_latency, 0, std::move(bytes), what});
 }
 
 void RplidarDevice::OnHostBytes(int port, Time t, std::string_view bytes, DeviceOutput& out) {

@@ -26,8 +26,7 @@ void RplidarDevice::Handle(const RequestFrame& r, DeviceOutput& out) {
       mode_ = Mode::kIdle;
       next_event_ = Time::max();
       ++stats_.resets;
-      out.serial.push_back(
-          {now_ + DurationFromSeconds(config_.banner_delay_s), 0, Banner(), "RPLIDAR-BANNER"});
+      out.serial.push_back({now_ + config_.banner_delay, 0, Banner(), "RPLIDAR-BANNER"});
       return;
     case Request::kScan:
     case Request::kForceScan:

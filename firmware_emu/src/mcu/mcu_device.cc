@@ -94,8 +94,7 @@ McuDevice::McuDevice(const McuConfig& config, std::uint64_t seed)
   gyro_.SetVibration(config_.vibration, false);
   for (const McuFault& f : config_.faults)
     if (f.kind == FaultKind::kReset) {
-      resets_.emplace_back(
-          f.start, f.duration > Duration{0} ? f.duration : DurationFromSeconds(config_.reboot_s));
+      resets_.emplace_back(f.start, f.duration > Duration{0} ? f.duration : config_.reboot);
     }
   std::sort(resets_.begin(), resets_.end());
   jump_applied_.assign(config_.faults.size(), false);
@@ -103,7 +102,7 @@ McuDevice::McuDevice(const McuConfig& config, std::uint64_t seed)
   const gnss::GpsWeekTime g0 = gnss::GpsFromUnixNs(config_.start_unix_ns);
   const std::int64_t rem = g0.tow_ns % kNsPerS;
   next_pps_ = TimeFromNs(rem == 0 ? 0 : kNsPerS - rem);
-  next_mag_ = TimeFromSeconds(config_.first_sample_delay_s);
+  next_mag_ = Time{} + config_.first_sample_delay;
   reset_cause_ = kResetCausePowerOn;
   pending_boot_ = Time{};
   up_ = false;
@@ -137,7 +136,7 @@ void McuDevice::Boot(Time t_boot) {
 }
 
 void McuDevice::ScheduleImu() {
-  const double first_ticks = std::round(config_.first_sample_delay_s * 1e6);
+  const double first_ticks = std::round(ToSeconds(config_.first_sample_delay) * 1e6);
   const double tick = first_ticks + static_cast<double>(imu_index_) * imu_period_ticks_;
   // the sample timer runs on the MCU's crystal, or on the IMU's own oscillator when it has one
   const double sample_clock_hz =
@@ -236,8 +235,7 @@ void McuDevice::SendSerial(Time t_sample, std::string bytes, const char* what, D
     bytes[pos] = static_cast<char>(static_cast<unsigned char>(bytes[pos]) ^ flip);
     ++stats_.frames_corrupted;
   }
-  out.serial.push_back(
-      {t_sample + DurationFromSeconds(config_.output_latency_s), 0, std::move(bytes), what});
+  out.serial.push_back({t_sample + config_.output_lag, 0, std::move(bytes), what});
 }
 
 double McuDevice::TemperatureAt(double t_s) const {

@@ -36,8 +36,7 @@ void TfLunaDevice::Handle(const CommandFrame& f, DeviceOutput& out) {
       settings_ = flash_;  // a reboot: the saved settings, output after the boot time
       trigger_pending_ = false;
       ++stats_.resets;
-      next_frame_ =
-          effective_rate_hz() > 0 ? now_ + DurationFromSeconds(config_.boot_time_s) : Time::max();
+      next_frame_ = effective_rate_hz() > 0 ? now_ + config_.boot_time : Time::max();
       return;
     case CommandId::kTrigger:
       if (!f.payload.empty()) break;

@@ -83,8 +83,7 @@ void TfLunaDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
 }
 
 void TfLunaDevice::Reply(std::string bytes, DeviceOutput& out) {
-  out.serial.push_back(
-      {now_ + DurationFromSeconds(config_.reply_latency_s), 0, std::move(bytes), "TF-REPLY"});
+  out.serial.push_back({now_ + config_.reply_latency, 0, std::move(bytes), "TF-REPLY"});
   ++stats_.replies;
 }
 

@@ -73,7 +73,7 @@ void UwbTagDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
 }
 
 void UwbTagDevice::Emit(Time t, DeviceOutput& out) {
-  const Time ready = t + DurationFromSeconds(config_.output_latency_s);
+  const Time ready = t + config_.output_lag;
   const auto ms = static_cast<std::uint32_t>(ToNs(t) / 1000000);
   if (config_.output != UwbOutput::kTdoa) {
     linktrack::TagFrame0 f;
@@ -125,8 +125,8 @@ void UwbTagDevice::OnHostBytes(int port, Time t, std::string_view bytes, DeviceO
     reply.id = config_.tag_id;
     for (const Eigen::Vector2d& a : config_.p_W_anchor_m)
       reply.p_anchor_m.emplace_back(a.x(), a.y(), config_.anchor_height_m);
-    out.serial.push_back({t + DurationFromSeconds(config_.reply_latency_s), 0,
-                          linktrack::EncodeSettingFrame0(reply), "NLINK-SETTING-FRAME0"});
+    out.serial.push_back({t + config_.reply_latency, 0, linktrack::EncodeSettingFrame0(reply),
+                          "NLINK-SETTING-FRAME0"});
     ++stats_.setting_replies;
     i += linktrack::kSettingFrame0Size;
   }

@@ -83,7 +83,7 @@ TEST(McuDeviceTest, SamplesRunOnTheCrystalAndLatchTheTimePulse) {
   const auto pulses = OfType(frames, MessageType::kTimePulse);
   ASSERT_EQ(pulses.size(), 5u);  // at 0.7, 1.7, … 4.7 s
   for (std::size_t i = 0; i < pulses.size(); ++i) {
-    const Time t_edge = pulses[i].t_ready - DurationFromSeconds(c.output_latency_s);
+    const Time t_edge = pulses[i].t_ready - c.output_lag;
     EXPECT_EQ(ToNs(t_edge), 700000000 + static_cast<std::int64_t>(i) * 1000000000);
     const gnss::GpsWeekTime g = gnss::GpsFromUnixNs(kStartUnixNs + ToNs(t_edge));
     EXPECT_EQ(g.tow_ns % 1000000000, 0);
@@ -258,7 +258,7 @@ TEST(McuDeviceTest, CanFramesCarryTheSerialSampleAtSampleTimePlusLatency) {
     const Time t_sample = f.t - DurationFromSeconds(c.can.latency_s);
     const Received* match = nullptr;
     for (const Received& r : imu)
-      if (r.t_ready - DurationFromSeconds(c.output_latency_s) == t_sample) match = &r;
+      if (r.t_ready - c.output_lag == t_sample) match = &r;
     ASSERT_NE(match, nullptr);
     const double acc_lsb = 9.80665 / 8000.0, gyro_lsb_deg = 0.01;
     auto u16 = [&](int at) { return f.data[at] | (f.data[at + 1] << 8); };

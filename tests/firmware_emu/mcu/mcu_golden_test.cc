@@ -186,7 +186,7 @@ BinaryVector MakeCan(McuConfig c, double seconds) {
   std::vector<std::pair<Time, test::ReadFrame>> imu;
   for (const SerialMessage& m : out.serial) {
     const test::ReadFrame f = test::ParseFrame(m.bytes);
-    if (f.type == 1) imu.emplace_back(m.t_ready - DurationFromSeconds(c.output_latency_s), f);
+    if (f.type == 1) imu.emplace_back(m.t_ready - c.output_lag, f);
   }
   BinaryVector v;
   v.csv = Header(

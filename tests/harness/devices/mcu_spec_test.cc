@@ -45,6 +45,16 @@ TEST(ScenarioMcuTest, DefaultsFollowSeed000) {
   EXPECT_FALSE(s.mcu.config.can.enabled);
 }
 
+TEST(ScenarioMcuTest, LatencyAndRebootAreDurationsReadFromSeconds) {
+  const Scenario d = ParseScenario(std::string(kBase) + "mcu: {}\n", "s.yaml");
+  EXPECT_EQ(d.mcu.config.output_lag, std::chrono::microseconds(500));
+  EXPECT_EQ(d.mcu.config.reboot, std::chrono::milliseconds(200));
+  const Scenario s = ParseScenario(
+      std::string(kBase) + "mcu: {output_latency_s: 0.0007, reboot_s: 1.5}\n", "s.yaml");
+  EXPECT_EQ(s.mcu.config.output_lag, std::chrono::microseconds(700));
+  EXPECT_EQ(s.mcu.config.reboot, std::chrono::milliseconds(1500));
+}
+
 TEST(ScenarioMcuTest, ReadsEveryKey) {
   const Scenario s = ParseScenario(
       std::string(kBase) +

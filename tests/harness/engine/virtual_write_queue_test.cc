@@ -1,6 +1,8 @@
 // Virtual mode's write queue (virtual_gate.h): with hold_tail, a paced host reads each link in
 // runs of messages (one write per run), and across links in exactly the order the messages were
 // made, as message by message.
+#include "hil/harness/engine/virtual_write_queue.h"
+
 #include <fcntl.h>
 #include <poll.h>
 #include <unistd.h>
@@ -13,7 +15,6 @@
 
 #include <gtest/gtest.h>
 
-#include "hil/harness/engine/virtual_gate.h"
 #include "hil/harness/links/capture_format.h"
 #include "hil/harness/links/serial_endpoint.h"
 

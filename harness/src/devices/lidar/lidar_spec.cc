@@ -18,7 +18,7 @@ void ReadLidar(const YamlReader& r, LidarSpec& spec) {
   c.rotation_hz = r.DoubleIn("rotation_hz", c.rotation_hz, 1, 15);
   const std::vector<double> m = r.Doubles("mount_m", 3, {0, 0, 0.4});
   c.mount = {m[0], m[1], m[2], r.DoubleIn("yaw_deg", 0, -360, 360)};
-  c.spin_up_s = r.DoubleIn("spin_up_s", c.spin_up_s, 0, 10);
+  c.spin_up = DurationFromSeconds(r.DoubleIn("spin_up_s", ToSeconds(c.spin_up), 0, 10));
   c.range_sigma_fraction = r.DoubleIn("range_sigma_fraction", c.range_sigma_fraction, 0, 0.1);
   if (auto f = r.OptionalChild("reflectivity")) ReadSurfaceReflectivity(*f, c.reflectivity);
   spec.tx_buffer_bytes = static_cast<std::size_t>(r.Int("tx_buffer_bytes", 16384, 64, 1 << 20));

@@ -124,8 +124,9 @@ void ReadMcu(const YamlReader& r, McuDeviceSpec& m) {
   c.crystal_ppm = r.DoubleIn("crystal_ppm", c.crystal_ppm, -1000, 1000);
   c.mag_oscillator_ppm = r.DoubleIn("mag_oscillator_ppm", c.mag_oscillator_ppm, -50000, 50000);
   c.jitter_us = r.DoubleIn("jitter_us", c.jitter_us, 0, 10000);
-  c.output_latency_s = r.DoubleIn("output_latency_s", c.output_latency_s, 0, 0.5);
-  c.reboot_s = r.DoubleIn("reboot_s", c.reboot_s, 0.001, 60);
+  c.output_lag =
+      DurationFromSeconds(r.DoubleIn("output_latency_s", ToSeconds(c.output_lag), 0, 0.5));
+  c.reboot = DurationFromSeconds(r.DoubleIn("reboot_s", ToSeconds(c.reboot), 0.001, 60));
   c.time_pulse = r.Bool("time_pulse", c.time_pulse);
   m.tx_buffer_bytes = static_cast<std::size_t>(
       r.Int("tx_buffer_bytes", static_cast<std::int64_t>(m.tx_buffer_bytes), 64, 1 << 20));

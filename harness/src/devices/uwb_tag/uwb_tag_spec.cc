@@ -60,7 +60,7 @@ void ReadUwb(const YamlReader& r, UwbDeviceSpec& u) {
   ReadAnchors(r, c);
   c.anchor_height_m = r.DoubleIn("anchor_height_m", c.anchor_height_m, -100, 100);
   c.tag_height_m = r.DoubleIn("tag_height_m", c.tag_height_m, -100, 100);
-  c.output_latency_s = r.DoubleIn("output_latency_s", c.output_latency_s, 0, 1);
+  c.output_lag = DurationFromSeconds(r.DoubleIn("output_latency_s", ToSeconds(c.output_lag), 0, 1));
   c.errors.systematic_field = r.Bool("systematic_field", c.errors.systematic_field);
   c.errors.white_sigma_m = Vec2(r, "white_sigma_m", c.errors.white_sigma_m);
   c.errors.residual_sigma_m = Vec2(r, "residual_sigma_m", c.errors.residual_sigma_m);

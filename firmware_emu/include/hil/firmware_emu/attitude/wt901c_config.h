@@ -9,6 +9,8 @@
 
 #include <Eigen/Core>
 
+#include "hil/firmware_emu/sim_time.h"
+
 namespace hil::wit {
 
 struct Wt901cErrors {
@@ -34,9 +36,9 @@ struct Wt901cConfig {
   /// firmware); false models firmware that accepts writes without unlocking.
   bool require_unlock = false;
   /// How long an unlock lasts (UNVERIFIED; the SDK writes within ~20 ms of unlocking).
-  double unlock_window_s = 10.0;
+  Duration unlock_window = std::chrono::seconds(10);
   /// Time from the host's command to the sensor's reply to a register read.
-  double read_latency_s = 0.002;
+  Duration read_latency = std::chrono::milliseconds(2);
   Wt901cErrors errors;
 };
 

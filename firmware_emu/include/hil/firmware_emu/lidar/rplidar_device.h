@@ -46,9 +46,10 @@ struct RplidarConfig {
   double range_sigma_fraction = 0.005;
   double white_range_m = 12.0;  ///< farthest return on a 90 % white target facing the beam
   world::SurfaceReflectivity reflectivity;
-  double spin_up_s = 0.5;  ///< motor start → stable rotation (no samples before, UNVERIFIED)
-  double reply_latency_s = 0.001;
-  double banner_delay_s = 0.01;        ///< RESET → banner (UNVERIFIED)
+  /// motor start → stable rotation (no samples before, UNVERIFIED)
+  Duration spin_up = std::chrono::milliseconds(500);
+  Duration reply_latency = std::chrono::milliseconds(1);
+  Duration banner_delay = std::chrono::milliseconds(10);  ///< RESET → banner (UNVERIFIED)
   std::size_t nodes_per_message = 20;  ///< SCAN nodes handed to the UART together (10 ms at 2 kHz)
   int baud = 115200;
   DeviceInfo info;  ///< serial number drawn from the seed when all zero

@@ -29,7 +29,7 @@ enum class FaultKind {
   kCorruptBytes,  ///< with `probability` per frame, one byte is flipped (the CRC then fails)
   kStuckSensor,   ///< `sensor` repeats its last counts during [start, start + duration)
   kReset,         ///< at `start` the MCU resets: silent for `duration` (when > 0; else the config's
-                  ///< `reboot_s`), then tick and sequence restart
+                  ///< `reboot`, YAML `reboot_s`), then tick and sequence restart
 };
 
 /// One entry of the firmware fault timeline.
@@ -60,14 +60,14 @@ struct McuConfig {
   SerialFormat format = SerialFormat::kBinary;
   double imu_rate_hz = 10;  ///< default: 10 × the GPS rate of seed 000
   double mag_rate_hz = 10;
-  double crystal_ppm = 0;              ///< MCU tick rate offset from nominal 1 MHz
-  double mag_oscillator_ppm = 0;       ///< compass output-rate oscillator offset
-  double jitter_us = 0;                ///< interrupt latency of a sample, uniform in [0, jitter]
-  double first_sample_delay_s = 0.01;  ///< boot to first IMU sample
-  double output_latency_s = 0.0005;    ///< sample to frame ready for the UART
-  double reboot_s = 0.2;               ///< reset to boot
-  std::int64_t start_unix_ns = 0;      ///< UTC of scenario time 0 (for the GPS time pulse)
-  bool time_pulse = true;              ///< the receiver's PPS is wired to the MCU
+  double crystal_ppm = 0;         ///< MCU tick rate offset from nominal 1 MHz
+  double mag_oscillator_ppm = 0;  ///< compass output-rate oscillator offset
+  double jitter_us = 0;           ///< interrupt latency of a sample, uniform in [0, jitter]
+  Duration first_sample_delay = std::chrono::milliseconds(10);  ///< boot to first IMU sample
+  Duration output_lag = std::chrono::microseconds(500);  ///< sample to frame ready for the UART
+  Duration reboot = std::chrono::milliseconds(200);      ///< reset to boot
+  std::int64_t start_unix_ns = 0;  ///< UTC of scenario time 0 (for the GPS time pulse)
+  bool time_pulse = true;          ///< the receiver's PPS is wired to the MCU
   BoardMounting mounting;
   MagneticSpec magnetic;
   std::vector<VibrationTone> vibration;

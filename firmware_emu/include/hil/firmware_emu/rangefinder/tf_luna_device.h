@@ -46,9 +46,9 @@ struct TfLunaConfig {
   world::SurfaceReflectivity reflectivity;
   TfLunaSettings settings;  ///< factory defaults (the manual's)
   double chip_temperature_c = 40;
-  double cast_range_m = 12;        ///< how far the beam is traced (beyond the 9 m limit)
-  double reply_latency_s = 0.001;  ///< command → reply (UNVERIFIED)
-  double boot_time_s = 1.0;        ///< reset → first frame (TF02-Pro note: wait 1 s)
+  double cast_range_m = 12;  ///< how far the beam is traced (beyond the 9 m limit)
+  Duration reply_latency = std::chrono::milliseconds(1);  ///< command → reply (UNVERIFIED)
+  Duration boot_time = std::chrono::seconds(1);  ///< reset → first frame (TF02-Pro note: wait 1 s)
   std::array<std::uint8_t, 3> firmware_version{3, 0, 1};  ///< major, minor, patch (UNVERIFIED)
 };
 

@@ -36,8 +36,9 @@ struct UwbTagConfig {
   std::array<Eigen::Vector2d, 4> p_W_anchor_m{Eigen::Vector2d(-10, -10), Eigen::Vector2d(10, -10),
                                               Eigen::Vector2d(10, 10), Eigen::Vector2d(-10, 10)};
   double anchor_height_m = 1.6, tag_height_m = 1.6;
-  double output_latency_s = 0.005;  ///< fix epoch to first byte
-  double reply_latency_s = 0.002;   ///< host request to the Setting_Frame0 reply
+  Duration output_lag = std::chrono::milliseconds(5);  ///< fix epoch to first byte
+  Duration reply_latency =
+      std::chrono::milliseconds(2);  ///< host request to the Setting_Frame0 reply
   double voltage_v = 4.9;
   UwbErrorConfig errors;
 };

@@ -7,7 +7,7 @@
 #include <cstddef>
 
 #include "hil/harness/engine/pacer.h"
-#include "hil/harness/engine/virtual_gate.h"
+#include "hil/harness/engine/virtual_write_queue.h"
 
 namespace hil::harness {
 
