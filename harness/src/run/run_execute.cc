@@ -6,10 +6,10 @@
 #include <fstream>
 #include <string>
 
+#include "hil/harness/core/machine_load.h"
 #include "hil/harness/dut/process_group.h"
 #include "hil/harness/engine/virtual_host_turns.h"
 #include "hil/harness/report/run_outputs.h"
-#include "hil/harness/core/machine_load.h"
 
 #include "run_phases.h"
 

@@ -9,8 +9,8 @@
 #include <utility>
 #include <vector>
 
-#include "hil/harness/devices/device_kind.h"
 #include "hil/harness/core/machine_load.h"
+#include "hil/harness/devices/device_kind.h"
 
 namespace hil::harness {
 

@@ -32,7 +32,6 @@
 #include "hil/harness/run/fix_baseline.h"
 #include "hil/harness/run/progress.h"
 #include "hil/harness/run/run.h"
-#include "hil/harness/core/truth_table.h"
 #include "hil/harness/scenario/scenario.h"
 
 namespace hil::harness {
