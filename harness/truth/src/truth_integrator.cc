@@ -110,12 +110,15 @@ struct TruthIntegrator::Impl {
   static constexpr int kOdeSize = kYaw + 1;
   double lag_t0 = 0, lag_v0 = 0, lag_u0 = 0;
 
+  /// Closed loop with a first-order hold: v and u ramp to each command (command_hold_s).
+  bool Held() const { return c->external_commands && c->command_hold_s > 0; }
+
   /// The full state at t from CVODE's components `ode` (e, n, ψ) and the lags' closed forms.
   void FullState(double t, const double* ode, double* s) const {
     std::copy(ode, ode + kOdeSize, s);
     const VehicleParams& p = c->vehicle;
     const double dt = t - lag_t0;
-    if (c->external_commands && c->command_hold_s > 0) {
+    if (Held()) {
       s[kV] = LinearHoldAt(lag_v0, in.v_cmd, c->command_hold_s, dt);
       s[kU] = LinearHoldAt(lag_u0, in.u_cmd, c->command_hold_s, dt);
       return;
@@ -165,7 +168,7 @@ struct TruthIntegrator::Impl {
     d[kE] = s[kV] * std::cos(chi);
     d[kN] = s[kV] * std::sin(chi);
     d[kYaw] = YawRate(s);
-    if (c->external_commands && c->command_hold_s > 0) {
+    if (Held()) {
       // the hold's ramp: its slope until the input reaches the command, then none
       d[kV] = s[kV] == u.v_cmd ? 0.0 : (u.v_cmd - lag_v0) / c->command_hold_s;
       d[kU] = s[kU] == u.u_cmd ? 0.0 : (u.u_cmd - lag_u0) / c->command_hold_s;
