@@ -49,7 +49,11 @@ SerialEndpoint::~SerialEndpoint() {
     r.name = name;
     r.bytes = chunk.bytes.substr(from);
     capture_.Write(r);
+    ++chunks_done_;
+    WriteDueOverflows();
   }
+  chunks_done_ = chunks_queued_;
+  WriteDueOverflows();
 }
 
 void SerialEndpoint::RecordOverflow(const SerialMessage& msg) {
@@ -58,13 +62,25 @@ void SerialEndpoint::RecordOverflow(const SerialMessage& msg) {
   r.t_emu_ns = ToNs(msg.t_ready);
   r.name = msg.name;
   r.bytes = msg.bytes;
-  capture_.Write(r);
+  // captured after the chunks queued before it, whenever the host reads those: its place in the
+  // capture is then the same in every run
+  overflows_.emplace_back(chunks_queued_, std::move(r));
+  WriteDueOverflows();
+}
+
+void SerialEndpoint::WriteDueOverflows() {
+  while (!overflows_.empty() && overflows_.front().first <= chunks_done_) {
+    FinishRealtimeRecords();  // a real-time line in progress goes first
+    capture_.Write(overflows_.front().second);
+    overflows_.pop_front();
+  }
 }
 
 bool SerialEndpoint::Queue(const SerialMessage& msg) {
   const std::string name = msg.name.empty() ? "-" : msg.name;
   if (msg.byte_period) {  // timed already (a replay): the bytes keep their recorded times
     pending_.emplace_back(link::TimedChunk{msg.t_ready, *msg.byte_period, msg.bytes}, name);
+    ++chunks_queued_;
     return true;
   }
   if (msg.reply) {
@@ -80,6 +96,7 @@ bool SerialEndpoint::Queue(const SerialMessage& msg) {
     }
     const auto at = pending_.begin() + static_cast<std::ptrdiff_t>(first + placed->index);
     pending_.emplace(at, std::move(placed->chunk), name);
+    ++chunks_queued_;
     last_queued_end_ = std::max(last_queued_end_, pending_.back().first.t_end());
     return true;
   }
@@ -90,6 +107,7 @@ bool SerialEndpoint::Queue(const SerialMessage& msg) {
   }
   last_queued_end_ = std::max(last_queued_end_, chunk->t_end());
   pending_.emplace_back(std::move(*chunk), name);
+  ++chunks_queued_;
   return true;
 }
 
@@ -97,6 +115,8 @@ void SerialEndpoint::PopFront() {
   written_end_ = std::max(written_end_, pending_.front().first.t_end());
   pending_.pop_front();
   pending_offset_ = 0;
+  ++chunks_done_;
+  WriteDueOverflows();
 }
 
 std::optional<Time> SerialEndpoint::next_byte_time() const {

@@ -112,8 +112,11 @@ class SerialEndpoint {
   void Consume(std::size_t bytes, CaptureDir dir, std::int64_t wall);
   /// The front chunk has left (written or dropped): it is taken off the queue.
   void PopFront();
-  /// Records a message the transmit buffer had no room for as a drop.
+  /// Records a message the transmit buffer had no room for as a drop, once the chunks queued
+  /// before it have been captured (WriteDueOverflows).
   void RecordOverflow(const SerialMessage& msg);
+  /// Captures the overflow records whose preceding chunks have all left the queue.
+  void WriteDueOverflows();
 
   std::string link_name_;
   std::unique_ptr<link::SerialPort> port_;
@@ -131,6 +134,10 @@ class SerialEndpoint {
   std::vector<double> schedule_error_us_;
   std::string write_buffer_;  // virtual mode: the waiting chunks joined for one write
   bool wall_stamps_ = false;
+  std::uint64_t chunks_queued_ = 0;  // chunks ever put on pending_
+  std::uint64_t chunks_done_ = 0;    // chunks ever taken off it (written or dropped)
+  /// overflow records waiting for the chunks queued before them: (chunks_queued_ then, record)
+  std::deque<std::pair<std::uint64_t, CaptureRecord>> overflows_;
 };
 
 /// The capture file name of a link: `<link>.cap`, with a device path reduced to its base name
