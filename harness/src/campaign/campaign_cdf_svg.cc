@@ -37,7 +37,23 @@ std::vector<Line> Lines(const json& summary, const std::string& metric) {
   return lines;
 }
 
-std::string Axes(double lo, double hi, const std::string& metric, double height) {
+// Groups whose scales differ by ten times or more (ratio of their medians) share a log axis, so
+// that no group is squeezed against one edge; every value must then be positive.
+constexpr double kLogScaleRatio = 10.0;
+
+bool WantsLogScale(const std::vector<Line>& lines) {
+  double lo_median = 0, hi_median = 0;
+  for (const auto& l : lines) {
+    if (l.x.front() <= 0) return false;
+    const double m = l.x[l.x.size() / 2];
+    lo_median = lo_median == 0 ? m : std::min(lo_median, m);
+    hi_median = std::max(hi_median, m);
+  }
+  return lines.size() > 1 && hi_median >= kLogScaleRatio * lo_median;
+}
+
+// `lo`, `hi`: the axis ends, in log10 of the metric when `log`.
+std::string Axes(double lo, double hi, const std::string& metric, double height, bool log) {
   const double plot_h = height - kTop - kBottom;
   std::string s = "<rect x=\"" + SvgNum(kLeft) + "\" y=\"" + SvgNum(kTop) + "\" width=\"" +
                   SvgNum(kW - kLeft - kRight) + "\" height=\"" + SvgNum(plot_h) +
@@ -48,7 +64,8 @@ std::string Axes(double lo, double hi, const std::string& metric, double height)
     std::snprintf(
         b, sizeof b,
         "<text x=\"%.2f\" y=\"%.2f\" font-size=\"11\" text-anchor=\"middle\">%.3g</text>\n", fx,
-        kTop + plot_h + 15, lo + (hi - lo) * i / 4.0);
+        kTop + plot_h + 15,
+        log ? std::pow(10.0, lo + (hi - lo) * i / 4.0) : lo + (hi - lo) * i / 4.0);
     s += b;
     const double fy = kTop + plot_h * (1.0 - i / 4.0);
     std::snprintf(b, sizeof b,
@@ -57,7 +74,8 @@ std::string Axes(double lo, double hi, const std::string& metric, double height)
     s += b;
   }
   s += "<text x=\"" + SvgNum(kW / 2) + "\" y=\"" + SvgNum(kTop + plot_h + 32) +
-       "\" font-size=\"12\" text-anchor=\"middle\">" + XmlEscape(metric) + "</text>\n";
+       "\" font-size=\"12\" text-anchor=\"middle\">" + XmlEscape(metric) +
+       (log ? " (log scale: the groups' medians differ 10× or more)" : "") + "</text>\n";
   s += "<text x=\"" + SvgNum(kW / 2) +
        "\" y=\"18\" font-size=\"13\" text-anchor=\"middle\">CDF over "
        "seeds: " +
@@ -70,27 +88,30 @@ std::string Axes(double lo, double hi, const std::string& metric, double height)
 std::string CdfSvg(const json& summary, const std::string& metric) {
   const std::vector<Line> lines = Lines(summary, metric);
   if (lines.empty()) return "";
-  double lo = lines[0].x.front(), hi = lines[0].x.back();
-  for (const auto& l : lines) lo = std::min(lo, l.x.front()), hi = std::max(hi, l.x.back());
+  const bool log = WantsLogScale(lines);
+  const auto axis = [log](double v) { return log ? std::log10(v) : v; };
+  double lo = axis(lines[0].x.front()), hi = axis(lines[0].x.back());
+  for (const auto& l : lines)
+    lo = std::min(lo, axis(l.x.front())), hi = std::max(hi, axis(l.x.back()));
   const double pad = hi > lo ? 0.05 * (hi - lo) : std::max(0.5, 0.1 * std::abs(lo));
   lo -= pad, hi += pad;
   const double height = kH + 14.0 * static_cast<double>(lines.size());
   const double plot_h = kH - kTop - kBottom, plot_w = kW - kLeft - kRight;
-  const auto px = [&](double x) { return kLeft + plot_w * (x - lo) / (hi - lo); };
+  const auto px = [&](double x) { return kLeft + plot_w * (axis(x) - lo) / (hi - lo); };
   const auto py = [&](double f) { return kTop + plot_h * (1.0 - f); };
   std::string s = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + SvgNum(kW) +
                   "\" height=\"" + SvgNum(height) + "\" viewBox=\"0 0 " + SvgNum(kW) + " " +
                   SvgNum(height) + "\">\n";
-  s += Axes(lo, hi, metric, kH);
+  s += Axes(lo, hi, metric, kH, log);
   for (std::size_t i = 0; i < lines.size(); ++i) {
     const Line& l = lines[i];
     const char* colour = kColours[i % (sizeof kColours / sizeof kColours[0])];
     const double n = static_cast<double>(l.x.size());
-    std::string d = "M" + SvgNum(px(lo)) + "," + SvgNum(py(0));
+    std::string d = "M" + SvgNum(kLeft) + "," + SvgNum(py(0));
     for (std::size_t k = 0; k < l.x.size(); ++k) {
       d += " H" + SvgNum(px(l.x[k])) + " V" + SvgNum(py(static_cast<double>(k + 1) / n));
     }
-    d += " H" + SvgNum(px(hi));
+    d += " H" + SvgNum(kLeft + plot_w);
     s += std::string("<path fill=\"none\" stroke=\"") + colour + "\" stroke-width=\"1.5\" d=\"" +
          d + "\"/>\n";
     const double ly = kH + 14.0 * static_cast<double>(i);

@@ -47,20 +47,44 @@ std::vector<std::vector<std::string>> CriteriaRows(const json& summary) {
   return rows;
 }
 
-// Rows (group, metric, n, mean, p50, p95, max) of the report metrics.
+// Rows (group, metric, n, mean, p50, p95, max, then the raw GNSS fixes' mean and p95 of the same
+// figure where the runs have one, and the mean's ratio fused/raw) of the report metrics.
 std::vector<std::vector<std::string>> MetricRows(const json& summary) {
   std::vector<std::vector<std::string>> rows;
   for (const auto& g : summary.value("groups", json::array())) {
+    const json raw_all = g.value("baselines", json::object());
     for (const auto& m : summary.value("report_metrics", json::array())) {
       const std::string metric = m.get<std::string>();
       if (!g["metrics"].contains(metric)) continue;
       const json& st = g["metrics"][metric];
+      const json raw = raw_all.value(metric, json::object());
+      const json raw_mean = raw.value("mean", json(nullptr));
+      json ratio(nullptr);
+      if (raw_mean.is_number() && st["mean"].is_number() && raw_mean.get<double>() > 0)
+        ratio = st["mean"].get<double>() / raw_mean.get<double>();
       rows.push_back({g.value("id", ""), metric, std::to_string(st.value("n", 0)), Num(st["mean"]),
-                      Num(st["p50"]), Num(st["p95"]), Num(st["max"])});
+                      Num(st["p50"]), Num(st["p95"]), Num(st["max"]), Num(raw_mean),
+                      Num(raw.value("p95", json(nullptr))), Num(ratio)});
     }
   }
   return rows;
 }
+
+// The run's result word and the criteria it failed (or its error).
+std::pair<std::string, std::string> RunResult(const json& r) {
+  const int code = r.value("exit_code", -1);
+  std::string failed;
+  for (const auto& c : r.value("criteria", json::array())) {
+    if (!c.value("pass", false)) failed += (failed.empty() ? "" : "; ") + c.value("name", "");
+  }
+  return {code == 0   ? "PASS"
+          : code == 1 ? "FAIL"
+                      : "ERROR " + std::to_string(code),
+          failed.empty() ? r.value("error", "") : failed};
+}
+
+// The run's own report, relative to the campaign folder (every campaign run writes one).
+std::string RunReportLink(const json& r) { return r.value("run_dir", "") + "/report.html"; }
 
 std::string MdTable(const std::vector<std::string>& head,
                     const std::vector<std::vector<std::string>>& rows) {
@@ -93,7 +117,9 @@ std::string HtmlTable(const std::vector<std::string>& head,
 
 const std::vector<std::string> kCriteriaHead{"group", "criterion", "value",
                                              "bound", "result",    "runs that break it"};
-const std::vector<std::string> kMetricHead{"group", "metric", "n", "mean", "p50", "p95", "max"};
+const std::vector<std::string> kMetricHead{"group",        "metric",        "n",   "mean",
+                                           "p50",          "p95",           "max", "raw GNSS mean",
+                                           "raw GNSS p95", "mean fused/raw"};
 
 std::string Verdict(const json& summary) {
   char b[256];
@@ -121,10 +147,20 @@ std::string CampaignMarkdown(const json& summary) {
   md +=
       "\n### Metrics over the seeds (p50, p95: linear interpolation between order statistics)\n\n" +
       MdTable(kMetricHead, MetricRows(summary));
+  md +=
+      "\nRaw GNSS: the same figure of the receiver's own fixes in the same runs (report.json "
+      "`baseline_table`); fused/raw below 1 means the estimate beats the receiver.\n";
   md += "\n### CDF plots across seeds\n\n";
   for (const auto& m : summary.value("report_metrics", json::array())) {
     if (!CdfSvg(summary, m.get<std::string>()).empty())
       md += "- [" + m.get<std::string>() + "](plots/cdf_" + m.get<std::string>() + ".svg)\n";
+  }
+  md += "\n### Runs\n\n| run | group | result | failed criteria |\n|---|---|---|---|\n";
+  for (const auto& r : summary.value("runs", json::array())) {
+    const auto [result, failed] = RunResult(r);
+    md += "| [" + MarkdownCell(r.value("id", "")) + "](" + RunReportLink(r) + ") | " +
+          MarkdownCell(r.value("group", "")) + " | " + result + " | " + MarkdownCell(failed) +
+          " |\n";
   }
   return md;
 }
@@ -143,23 +179,22 @@ std::string CampaignHtml(const json& summary) {
          "</p>\n";
   if (!summary.value("criteria", json::array()).empty())
     h += "<h2>Criteria across runs</h2>\n" + HtmlTable(kCriteriaHead, CriteriaRows(summary));
-  h += "<h2>Metrics over the seeds</h2>\n" + HtmlTable(kMetricHead, MetricRows(summary));
+  h += "<h2>Metrics over the seeds</h2>\n" + HtmlTable(kMetricHead, MetricRows(summary)) +
+       "<p>Raw GNSS: the same figure of the receiver's own fixes in the same runs (report.json "
+       "<code>baseline_table</code>); fused/raw below 1 means the estimate beats the "
+       "receiver.</p>\n";
   h += "<h2>CDF plots across seeds</h2>\n";
   for (const auto& m : summary.value("report_metrics", json::array())) h += CdfSvg(summary, m);
-  std::vector<std::vector<std::string>> runs;
+  h += "<h2>Runs</h2>\n<table>\n<tr><th>run (its report)</th><th>group</th><th>result</th>"
+       "<th>failed criteria</th></tr>\n";
   for (const auto& r : summary.value("runs", json::array())) {
-    const int code = r.value("exit_code", -1);
-    std::string failed;
-    for (const auto& c : r.value("criteria", json::array())) {
-      if (!c.value("pass", false)) failed += (failed.empty() ? "" : "; ") + c.value("name", "");
-    }
-    runs.push_back({r.value("id", ""), r.value("group", ""),
-                    code == 0   ? "PASS"
-                    : code == 1 ? "FAIL"
-                                : "ERROR " + std::to_string(code),
-                    failed.empty() ? r.value("error", "") : failed});
+    const auto [result, failed] = RunResult(r);
+    h += "<tr><td><a href=\"" + XmlEscape(RunReportLink(r)) + "\">" + XmlEscape(r.value("id", "")) +
+         "</a></td><td>" + XmlEscape(r.value("group", "")) + "</td><td" +
+         (result == "PASS" ? "" : " class=\"fail\"") + ">" + XmlEscape(result) + "</td><td>" +
+         XmlEscape(failed) + "</td></tr>\n";
   }
-  h += "<h2>Runs</h2>\n" + HtmlTable({"run", "group", "result", "failed criteria"}, runs);
+  h += "</table>\n";
   return h + "</body></html>\n";
 }
 

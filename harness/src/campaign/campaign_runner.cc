@@ -44,8 +44,7 @@ std::vector<std::string> RunArgv(const CampaignFolder& f, const CampaignRun& r,
   for (const auto& s : g.settings) args.insert(args.end(), {"--set", s.field + "=" + s.value});
   args.insert(args.end(), f.plan.spec.run_args.begin(), f.plan.spec.run_args.end());
   if (o.nice) args.insert(args.end(), {"--nice", std::to_string(*o.nice)});
-  args.emplace_back("--no-html");
-  return args;
+  return args;  // with its report.html: the campaign report links every run's (a few kB each)
 }
 
 pid_t Start(std::vector<std::string> args, const std::string& log) {

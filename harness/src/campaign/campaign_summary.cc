@@ -34,12 +34,13 @@ SuiteScenarioInfo LoadInfo(const CampaignFolder& f, const CampaignGroup& g) {
   return info;
 }
 
-// A group's metric statistics over its runs: every metric_table key with a number in some run.
-json GroupMetrics(const std::vector<json>& mine) {
+// A group's statistics over its runs of every key of `table` (metric_table: the estimate's
+// figures; baseline_table: the raw GNSS fixes' figures) with a number in some run.
+json GroupMetrics(const std::vector<json>& mine, const char* table) {
   std::set<std::string> keys;
   for (const auto& r : mine) {
-    if (!r.contains("metric_table")) continue;
-    for (const auto& [k, v] : r["metric_table"].items()) {
+    if (!r.contains(table)) continue;
+    for (const auto& [k, v] : r[table].items()) {
       if (v.is_number()) keys.insert(k);
     }
   }
@@ -47,8 +48,7 @@ json GroupMetrics(const std::vector<json>& mine) {
   for (const auto& k : keys) {
     std::vector<json> values;
     for (const auto& r : mine)
-      values.push_back(r.contains("metric_table") ? r["metric_table"].value(k, json(nullptr))
-                                                  : json(nullptr));
+      values.push_back(r.contains(table) ? r[table].value(k, json(nullptr)) : json(nullptr));
     metrics[k] = MetricStats(values);
   }
   return metrics;
@@ -88,7 +88,8 @@ void SummariseGroup(const CampaignFolder& f, std::size_t gi, const json& runs, j
        {"runs", mine.size()},
        {"passed", passed},
        {"criteria_metrics", criteria_metrics},
-       {"metrics", GroupMetrics(mine)}});
+       {"metrics", GroupMetrics(mine, "metric_table")},
+       {"baselines", GroupMetrics(mine, "baseline_table")}});
 }
 
 }  // namespace

@@ -1,0 +1,99 @@
+// The campaign report (campaign_report.h): the raw GNSS fixes' figures beside the estimate's per
+// group, a link from every run to its own report, and CDF plots whose groups differ in scale by
+// ten times or more drawn on a log axis (on one linear axis the small group was a vertical line
+// against the left edge).
+#include "hil/harness/campaign/campaign_report.h"
+
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace hil::harness {
+namespace {
+
+using nlohmann::json;
+
+json Stats(double mean, double p95) {
+  return {{"n", 2}, {"mean", mean}, {"p50", mean}, {"p95", p95}, {"max", p95}};
+}
+
+json Run(const std::string& id, const std::string& group, int exit_code, double rmse) {
+  return {{"id", id},
+          {"group", group},
+          {"run_dir", "runs/" + id},
+          {"exit_code", exit_code},
+          {"criteria",
+           {{{"name", "horizontal_rmse_m <= 0.5"}, {"pass", exit_code == 0}, {"value", rmse}}}},
+          {"metric_table", {{"horizontal_rmse_m", rmse}}}};
+}
+
+json Summary(double scale_b) {
+  json s{{"title", "t"},     {"runs_planned", 4},
+         {"complete", true}, {"passed", 3},
+         {"failed", 1},      {"invalid", 0},
+         {"pass", false},    {"report_metrics", {"horizontal_rmse_m"}}};
+  s["runs"] = {Run("a-seed1", "a", 0, 0.1), Run("a-seed2", "a", 0, 0.12),
+               Run("b-seed1", "b", 0, 0.1 * scale_b), Run("b-seed2", "b", 1, 0.13 * scale_b)};
+  s["groups"] = {{{"id", "a"},
+                  {"metrics", {{"horizontal_rmse_m", Stats(0.11, 0.12)}}},
+                  {"baselines", {{"horizontal_rmse_m", Stats(0.22, 0.25)}}}},
+                 {{"id", "b"}, {"metrics", {{"horizontal_rmse_m", Stats(0.115, 0.13)}}}}};
+  return s;
+}
+
+TEST(CampaignReportTest, MetricsSitBesideTheRawFixesOfTheSameRuns) {
+  const std::string md = CampaignMarkdown(Summary(1));
+  EXPECT_NE(md.find("| raw GNSS mean | raw GNSS p95 | mean fused/raw |"), std::string::npos) << md;
+  EXPECT_NE(
+      md.find("| a | horizontal_rmse_m | 2 | 0.11 | 0.11 | 0.12 | 0.12 | 0.22 | 0.25 | 0.5 |"),
+      std::string::npos)
+      << md;
+  // a group whose runs have no raw fixes says so
+  EXPECT_NE(
+      md.find("| b | horizontal_rmse_m | 2 | 0.115 | 0.115 | 0.13 | 0.13 | n/a | n/a | n/a |"),
+      std::string::npos)
+      << md;
+}
+
+TEST(CampaignReportTest, EveryRunLinksToItsOwnReport) {
+  const json s = Summary(1);
+  const std::string md = CampaignMarkdown(s), html = CampaignHtml(s);
+  for (const char* id : {"a-seed1", "a-seed2", "b-seed1", "b-seed2"}) {
+    const std::string link = std::string("runs/") + id + "/report.html";
+    EXPECT_NE(md.find("[" + std::string(id) + "](" + link + ")"), std::string::npos) << id;
+    EXPECT_NE(html.find("<a href=\"" + link + "\">" + id + "</a>"), std::string::npos) << id;
+  }
+  EXPECT_NE(
+      md.find("| [b-seed2](runs/b-seed2/report.html) | b | FAIL | horizontal_rmse_m <= 0.5 |"),
+      std::string::npos)
+      << md;
+}
+
+// The x axis tick labels of a CDF plot (11-pt labels centred under the axis).
+std::vector<double> XTicks(const std::string& svg) {
+  std::vector<double> out;
+  const std::string mark = "font-size=\"11\" text-anchor=\"middle\">";
+  for (std::size_t k = svg.find(mark); k != std::string::npos; k = svg.find(mark, k + 1))
+    out.push_back(std::stod(svg.substr(k + mark.size())));
+  return out;
+}
+
+TEST(CampaignReportTest, GroupsOfVeryDifferentScalesShareALogAxis) {
+  const std::string same = CdfSvg(Summary(1), "horizontal_rmse_m");
+  const std::string apart = CdfSvg(Summary(100), "horizontal_rmse_m");
+  EXPECT_EQ(same.find("log scale"), std::string::npos);
+  EXPECT_NE(apart.find("log scale"), std::string::npos);
+  // the x ticks span both groups and step by one ratio (a geometric axis)
+  const std::vector<double> ticks = XTicks(apart);
+  ASSERT_EQ(ticks.size(), 5u) << apart;
+  EXPECT_LT(ticks.front(), 0.1);
+  EXPECT_GT(ticks.back(), 13.0);
+  EXPECT_NEAR(ticks[2] / ticks[1], ticks[1] / ticks[0], 0.02 * ticks[1] / ticks[0]);
+  const std::vector<double> linear = XTicks(same);
+  ASSERT_EQ(linear.size(), 5u);
+  EXPECT_NEAR(linear[2] - linear[1], linear[1] - linear[0], 1e-3);
+}
+
+}  // namespace
+}  // namespace hil::harness
