@@ -158,10 +158,19 @@ void TruthTableBuilder::Work() {
       batch_samples.push_back(truth->Sample(t));
       ++integrated_;
     }
-    const std::lock_guard<std::mutex> lock(mu_);
-    done_times_.insert(done_times_.end(), batch_times.begin(), batch_times.end());
-    done_samples_.insert(done_samples_.end(), batch_samples.begin(), batch_samples.end());
+    {
+      const std::lock_guard<std::mutex> lock(mu_);
+      done_times_.insert(done_times_.end(), batch_times.begin(), batch_times.end());
+      done_samples_.insert(done_samples_.end(), batch_samples.begin(), batch_samples.end());
+    }
+    taken_cv_.notify_all();
   }
+}
+
+void TruthTableBuilder::WaitTaken(Time t) {
+  std::unique_lock<std::mutex> lock(mu_);
+  if (!has_watermark_ || t > watermark_) return;  // the thread may not take it yet
+  taken_cv_.wait(lock, [&] { return finishing_ || asked_.empty() || asked_.top() > t; });
 }
 
 std::size_t TruthTableBuilder::retained() {

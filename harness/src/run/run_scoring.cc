@@ -139,6 +139,8 @@ void RunScoring::Advance(Time t_now) {
   truth_.Advance(cut);
   if (!setup_.stream_truth || (last_taken_ && cut - *last_taken_ < kSecond)) return;
   last_taken_ = cut;
+  // the thread may lag one more horizon (a loaded machine), not more
+  truth_.WaitTaken(cut - kLateHorizon);
   truth_.TakeDone(done_t_, done_s_);
   Consume(done_t_, done_s_, setup_.t_end);
 }

@@ -87,6 +87,10 @@ class TruthTableBuilder {
   /// builder keeps none. Finish's table then holds only what was not taken (and the stragglers).
   /// Not for closed loop: a late command may invalidate the offered samples (DiscardOffered).
   void TakeDone(std::vector<Time>& times, std::vector<TruthSample>& samples);
+  /// Waits until the thread has taken every time asked up to `t` (at most the last watermark):
+  /// back-pressure, so that a thread behind the run (a loaded machine) cannot pile up the times
+  /// asked and the samples offered without bound.
+  void WaitTaken(Time t);
   /// Samples everything asked for (and not taken) and returns the table.
   TruthTable Finish();
   /// Times sampled so far from offered samples and by the thread's own integrator (the
@@ -112,6 +116,7 @@ class TruthTableBuilder {
   const truth::TruthConfig& config_;
   std::mutex mu_;
   std::condition_variable cv_;
+  std::condition_variable taken_cv_;  // the thread took a batch
   std::priority_queue<Time, std::vector<Time>, std::greater<>>
       asked_;                   // not yet taken by the thread
   std::vector<Time> late_;      // asked behind the thread's position
