@@ -132,16 +132,19 @@ void TruthTableBuilder::Work() {
       // the thread has passed these: no time before the batch's last will be asked of it again
       while (!offered_.empty() && offered_.front().t < position_) offered_.pop_front();
     }
+    std::vector<Time> batch_times;
+    std::vector<TruthSample> batch_samples;
     for (std::size_t i = 0; i < batch.size(); ++i) {
       const Time t = batch[i];
-      if (!done_times_.empty() && done_times_.back() == t) continue;
+      if (last_done_ && *last_done_ == t) continue;
       if (!offered[i] && config_.external_commands && !commands_final) {
         deferred_.push_back(t);  // the commands up to t are not all known yet: Finish replays
         continue;
       }
-      done_times_.push_back(t);
+      last_done_ = t;
+      batch_times.push_back(t);
       if (offered[i]) {
-        done_samples_.push_back(*offered[i]);
+        batch_samples.push_back(*offered[i]);
         ++offered_hits_;
         continue;
       }
@@ -152,10 +155,35 @@ void TruthTableBuilder::Work() {
           replayed = true;
         }
       }
-      done_samples_.push_back(truth->Sample(t));
+      batch_samples.push_back(truth->Sample(t));
       ++integrated_;
     }
+    {
+      const std::lock_guard<std::mutex> lock(mu_);
+      done_times_.insert(done_times_.end(), batch_times.begin(), batch_times.end());
+      done_samples_.insert(done_samples_.end(), batch_samples.begin(), batch_samples.end());
+    }
+    taken_cv_.notify_all();
   }
+}
+
+void TruthTableBuilder::WaitTaken(Time t) {
+  std::unique_lock<std::mutex> lock(mu_);
+  if (!has_watermark_ || t > watermark_) return;  // the thread may not take it yet
+  taken_cv_.wait(lock, [&] { return finishing_ || asked_.empty() || asked_.top() > t; });
+}
+
+std::size_t TruthTableBuilder::retained() {
+  const std::lock_guard<std::mutex> lock(mu_);
+  return asked_.size() + late_.size() + offered_.size() + offer_buffer_.size() + done_times_.size();
+}
+
+void TruthTableBuilder::TakeDone(std::vector<Time>& times, std::vector<TruthSample>& samples) {
+  times.clear();
+  samples.clear();
+  const std::lock_guard<std::mutex> lock(mu_);
+  times.swap(done_times_);
+  samples.swap(done_samples_);
 }
 
 TruthTable TruthTableBuilder::Finish() {

@@ -28,6 +28,12 @@ void EstimateCollector::set_json_observer(JsonObserver f) {
     process_->set_scan_solutions(true);
 }
 
+void EstimateCollector::AddRecord(const EstimateRecord& r) {
+  records_.push_back(r);
+  ++solutions_;
+  last_validity_ = r.t_validity;
+}
+
 void EstimateCollector::Keep(const std::string& line) {
   ++lines_;
   Store(line);
@@ -59,7 +65,7 @@ void EstimateCollector::ConsumeScanned(const std::string& line, std::int64_t wal
   Keep(line);
   json_observer_.scanned(scan);
   if (auto r = reader_->ScannedLine(scan, wall_ns))
-    records_.push_back(*r);
+    AddRecord(*r);
   else
     NotASolution(line);
 }
@@ -80,7 +86,7 @@ void EstimateCollector::Consume(const std::string& line, std::int64_t wall_ns,
     r = reader_->Line(line, wall_ns);
   }
   if (r)
-    records_.push_back(*r);
+    AddRecord(*r);
   else if (reader_->OtherRecordOfTheStream(line))
     ++other_records_;
   else if (reader_->SolutionsInLines())
@@ -115,7 +121,7 @@ void EstimateCollector::Take() {
       bus_last_ns_ = now;
       const std::string_view data(reinterpret_cast<const char*>(f.data.data()),
                                   std::min<std::size_t>(f.len, 8));
-      if (auto r = bus_reader_->Frame(f.id, data, now)) records_.push_back(*r);
+      if (auto r = bus_reader_->Frame(f.id, data, now)) AddRecord(*r);
     }
   }
   if (process_) {

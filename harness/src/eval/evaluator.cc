@@ -5,14 +5,18 @@
 
 namespace hil::harness {
 
-double Percentile(std::vector<double> v, double pct) {
+double PercentileOfSorted(const std::vector<double>& v, double pct) {
   if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
   const double pos = pct / 100.0 * static_cast<double>(v.size() - 1);
   const auto lo = static_cast<std::size_t>(std::floor(pos));
   const std::size_t hi = std::min(lo + 1, v.size() - 1);
   const double f = pos - static_cast<double>(lo);
   return v[lo] * (1 - f) + v[hi] * f;
+}
+
+double Percentile(std::vector<double> v, double pct) {
+  std::sort(v.begin(), v.end());
+  return PercentileOfSorted(v, pct);
 }
 
 std::vector<Time> RecordTimes(const std::vector<EstimateRecord>& records, Time t_from, Time t_to) {
@@ -42,90 +46,94 @@ std::vector<ErrorSample> CompareWithTruth(const TruthTable& truth,
   out.reserve(records.size());
   for (const EstimateRecord& r : records) {
     if (r.t_validity < t_from || r.t_validity > t_to || r.t_validity < Time{}) continue;
-    const TruthSample& ts = truth.At(r.t_validity);
-    const Eigen::Matrix3d R_NB = ts.q_NB.toRotationMatrix();
-    ErrorSample e;
-    e.t = r.t_validity;
-    e.truth_enu_m = ts.p_NB_N_m + R_NB * p_BX_B_m;
-    e.est_enu_m = truth.frame().FromGeodetic({r.lat_deg, r.lon_deg, r.height_m});
-    e.err_enu_m = e.est_enu_m - e.truth_enu_m;
-    if (r.vel_enu_mps) {
-      const Eigen::Vector3d v_true = ts.v_NB_N_mps + R_NB * ts.w_NB_B_radps.cross(p_BX_B_m);
-      e.vel_err_mps = (*r.vel_enu_mps - v_true).norm();
-    }
-    if (r.yaw_deg) {
-      const Eigen::Vector3d fwd = R_NB.col(0);
-      const double yaw_true = std::atan2(fwd.x(), fwd.y()) * 180.0 / M_PI;
-      double d = std::fmod(*r.yaw_deg - yaw_true + 540.0, 360.0) - 180.0;
-      e.yaw_err_deg = d;
-    }
-    if (r.pos_std_enu_m && (r.pos_std_enu_m->array() > 0).all()) {
-      const Eigen::Array3d z2 = (e.err_enu_m.array() / r.pos_std_enu_m->array()).square();
-      e.nees = z2.sum();
-      e.nees_horizontal = z2.x() + z2.y();
-      e.nees_vertical = z2.z();
-    }
-    out.push_back(e);
+    out.push_back(ErrorOf(r, truth.At(r.t_validity), truth.frame(), p_BX_B_m));
   }
   return out;
 }
 
-AccuracyMetrics ComputeAccuracy(const std::vector<ErrorSample>& errors) {
+ErrorSample ErrorOf(const EstimateRecord& r, const TruthSample& ts, const truth::LocalFrame& frame,
+                    const Eigen::Vector3d& p_BX_B_m) {
+  const Eigen::Matrix3d R_NB = ts.q_NB.toRotationMatrix();
+  ErrorSample e;
+  e.t = r.t_validity;
+  e.truth_enu_m = ts.p_NB_N_m + R_NB * p_BX_B_m;
+  e.est_enu_m = frame.FromGeodetic({r.lat_deg, r.lon_deg, r.height_m});
+  e.err_enu_m = e.est_enu_m - e.truth_enu_m;
+  if (r.vel_enu_mps) {
+    const Eigen::Vector3d v_true = ts.v_NB_N_mps + R_NB * ts.w_NB_B_radps.cross(p_BX_B_m);
+    e.vel_err_mps = (*r.vel_enu_mps - v_true).norm();
+  }
+  if (r.yaw_deg) {
+    const Eigen::Vector3d fwd = R_NB.col(0);
+    const double yaw_true = std::atan2(fwd.x(), fwd.y()) * 180.0 / M_PI;
+    e.yaw_err_deg = std::fmod(*r.yaw_deg - yaw_true + 540.0, 360.0) - 180.0;
+  }
+  if (r.pos_std_enu_m && (r.pos_std_enu_m->array() > 0).all()) {
+    const Eigen::Array3d z2 = (e.err_enu_m.array() / r.pos_std_enu_m->array()).square();
+    e.nees = z2.sum();
+    e.nees_horizontal = z2.x() + z2.y();
+    e.nees_vertical = z2.z();
+  }
+  return e;
+}
+
+void AccuracyAccumulator::Add(const ErrorSample& e) {
+  ++n_;
+  const double he = e.horizontal();
+  horizontal_.Add(he);
+  sh_ += he * he;
+  sv_ += e.err_enu_m.z() * e.err_enu_m.z();
+  max_h_ = std::max(max_h_, he);
+  if (e.vel_err_mps) {
+    svel_ += *e.vel_err_mps * *e.vel_err_mps;
+    ++nvel_;
+  }
+  if (e.yaw_err_deg) {
+    syaw_ += *e.yaw_err_deg * *e.yaw_err_deg;
+    ++nyaw_;
+  }
+  if (e.xte_m) {
+    abs_xte_.Add(std::abs(*e.xte_m));
+    sxte_ += *e.xte_m * *e.xte_m;
+  }
+  if (e.nees) {
+    snees_ += *e.nees;
+    snees_h_ += e.nees_horizontal.value_or(0.0);
+    snees_v_ += e.nees_vertical.value_or(0.0);
+    ++nnees_;
+  }
+}
+
+AccuracyMetrics AccuracyAccumulator::Metrics() const {
   AccuracyMetrics m;
-  m.samples = errors.size();
-  if (errors.empty()) return m;
-  std::vector<double> h;
-  double sh = 0, sv = 0, svel = 0, syaw = 0;
-  std::size_t nvel = 0, nyaw = 0;
-  for (const ErrorSample& e : errors) {
-    const double he = e.horizontal();
-    h.push_back(he);
-    sh += he * he;
-    sv += e.err_enu_m.z() * e.err_enu_m.z();
-    m.max_horizontal_error_m = std::max(m.max_horizontal_error_m, he);
-    if (e.vel_err_mps) {
-      svel += *e.vel_err_mps * *e.vel_err_mps;
-      ++nvel;
-    }
-    if (e.yaw_err_deg) {
-      syaw += *e.yaw_err_deg * *e.yaw_err_deg;
-      ++nyaw;
-    }
+  m.samples = n_;
+  if (n_ == 0) return m;
+  const auto n = static_cast<double>(n_);
+  m.max_horizontal_error_m = max_h_;
+  m.horizontal_rmse_m = std::sqrt(sh_ / n);
+  m.vertical_rmse_m = std::sqrt(sv_ / n);
+  m.cep50_m = horizontal_.Percentile(50);
+  m.cep95_m = horizontal_.Percentile(95);
+  if (nvel_) m.velocity_rmse_mps = std::sqrt(svel_ / static_cast<double>(nvel_));
+  if (nyaw_) m.heading_rmse_deg = std::sqrt(syaw_ / static_cast<double>(nyaw_));
+  if (abs_xte_.count() > 0) {
+    m.cross_track_rmse_m = std::sqrt(sxte_ / static_cast<double>(abs_xte_.count()));
+    m.cross_track_p95_m = abs_xte_.Percentile(95);
+    m.cross_track_max_m = abs_xte_.Percentile(100);
   }
-  const auto n = static_cast<double>(errors.size());
-  m.horizontal_rmse_m = std::sqrt(sh / n);
-  m.vertical_rmse_m = std::sqrt(sv / n);
-  m.cep50_m = Percentile(h, 50);
-  m.cep95_m = Percentile(h, 95);
-  if (nvel) m.velocity_rmse_mps = std::sqrt(svel / static_cast<double>(nvel));
-  if (nyaw) m.heading_rmse_deg = std::sqrt(syaw / static_cast<double>(nyaw));
-  std::vector<double> xte;
-  double sxte = 0, snees = 0, snees_h = 0, snees_v = 0;
-  std::size_t nnees = 0;
-  for (const ErrorSample& e : errors) {
-    if (e.xte_m) {
-      xte.push_back(std::abs(*e.xte_m));
-      sxte += *e.xte_m * *e.xte_m;
-    }
-    if (e.nees) {
-      snees += *e.nees;
-      snees_h += e.nees_horizontal.value_or(0.0);
-      snees_v += e.nees_vertical.value_or(0.0);
-      ++nnees;
-    }
-  }
-  if (!xte.empty()) {
-    m.cross_track_rmse_m = std::sqrt(sxte / static_cast<double>(xte.size()));
-    m.cross_track_p95_m = Percentile(xte, 95);
-    m.cross_track_max_m = Percentile(xte, 100);
-  }
-  if (nnees) {
-    const auto n_nees = static_cast<double>(nnees);
-    m.nees_mean = snees / n_nees;
-    m.nees_horizontal_mean = snees_h / n_nees;
-    m.nees_vertical_mean = snees_v / n_nees;
+  if (nnees_) {
+    const auto n_nees = static_cast<double>(nnees_);
+    m.nees_mean = snees_ / n_nees;
+    m.nees_horizontal_mean = snees_h_ / n_nees;
+    m.nees_vertical_mean = snees_v_ / n_nees;
   }
   return m;
+}
+
+AccuracyMetrics ComputeAccuracy(const std::vector<ErrorSample>& errors) {
+  AccuracyAccumulator a;
+  for (const ErrorSample& e : errors) a.Add(e);
+  return a.Metrics();
 }
 
 }  // namespace hil::harness

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace hil::harness {
 namespace {
@@ -11,56 +12,76 @@ constexpr double kHorizonsS[] = {1, 2, 5, 10, 20, 30, 60};
 
 }  // namespace
 
-std::vector<OutageMetrics> ComputeOutages(const std::vector<ErrorSample>& errors,
-                                          const FaultTimeline& faults, double reconverged_error_m) {
+OutageAccumulator::OutageAccumulator(const FaultTimeline& faults, double reconverged_error_m)
+    : threshold_m_(reconverged_error_m) {
   // a data gap is an outage for the estimator: no GNSS reaches it
   std::vector<Fault> outages = faults.OfKind(FaultKind::kGnssOutage);
   for (const Fault& f : faults.OfKind(FaultKind::kGnssDataGap)) outages.push_back(f);
   std::stable_sort(outages.begin(), outages.end(),
                    [](const Fault& a, const Fault& b) { return a.start < b.start; });
-  std::vector<OutageMetrics> out;
   for (std::size_t k = 0; k < outages.size(); ++k) {
-    const Fault& f = outages[k];
-    OutageMetrics m;
-    m.start_s = ToSeconds(f.start);
-    m.end_s = ToSeconds(f.end);
-    const Time next_start = k + 1 < outages.size() ? outages[k + 1].start : Time::max();
-    for (const ErrorSample& e : errors) {
-      if (e.t < f.start || e.t > f.end) continue;
-      ++m.samples;
-      m.max_horizontal_error_m = std::max(m.max_horizontal_error_m, e.horizontal());
-      m.max_abs_error_enu_m = m.max_abs_error_enu_m.cwiseMax(e.err_enu_m.cwiseAbs());
-    }
+    Window w;
+    w.start = outages[k].start;
+    w.end = outages[k].end;
+    w.next_start = k + 1 < outages.size() ? outages[k + 1].start : Time::max();
+    w.m.start_s = ToSeconds(w.start);
+    w.m.end_s = ToSeconds(w.end);
     for (const double h : kHorizonsS) {
-      if (h > m.end_s - m.start_s) break;
-      const Time th = f.start + DurationFromSeconds(h);
-      std::optional<double> latest;
-      for (const ErrorSample& e : errors) {
-        if (e.t >= f.start && e.t <= th) latest = e.horizontal();
-      }
-      if (latest) m.growth.emplace_back(h, *latest);
+      if (h > w.m.end_s - w.m.start_s) break;
+      w.latest.emplace_back();
     }
-    // reconvergence: first sample after the end from which the error stays below the threshold
-    for (std::size_t i = 0; i < errors.size(); ++i) {
-      const ErrorSample& e = errors[i];
-      if (e.t < f.end || e.horizontal() >= reconverged_error_m) continue;
-      Time stay_until = e.t + DurationFromSeconds(kStaySeconds);
-      if (next_start < stay_until) stay_until = next_start;
-      bool stays = true;
-      for (std::size_t j = i + 1; j < errors.size() && errors[j].t <= stay_until; ++j) {
-        if (errors[j].horizontal() >= reconverged_error_m) {
-          stays = false;
-          break;
-        }
-      }
-      if (stays) {
-        m.reconvergence_time_s = ToSeconds(e.t) - m.end_s;
-        break;
-      }
+    windows_.push_back(std::move(w));
+  }
+}
+
+void OutageAccumulator::Add(const ErrorSample& e) {
+  const double h = e.horizontal();
+  for (Window& w : windows_) {
+    if (e.t >= w.start && e.t <= w.end) {
+      ++w.m.samples;
+      w.m.max_horizontal_error_m = std::max(w.m.max_horizontal_error_m, h);
+      w.m.max_abs_error_enu_m = w.m.max_abs_error_enu_m.cwiseMax(e.err_enu_m.cwiseAbs());
     }
+    for (std::size_t i = 0; i < w.latest.size(); ++i) {
+      if (e.t >= w.start && e.t <= w.start + DurationFromSeconds(kHorizonsS[i])) w.latest[i] = h;
+    }
+    if (w.settled || e.t < w.end) continue;
+    // reconvergence: the first solution after the end below the threshold that no solution at or
+    // above it follows within 2 s (or before the next outage)
+    if (w.candidate) {
+      Time stay_until = *w.candidate + DurationFromSeconds(kStaySeconds);
+      if (w.next_start < stay_until) stay_until = w.next_start;
+      if (e.t > stay_until) {
+        w.settled = true;
+        w.m.reconvergence_time_s = ToSeconds(*w.candidate) - w.m.end_s;
+        continue;
+      }
+      if (h >= threshold_m_) w.candidate.reset();
+      continue;
+    }
+    if (h < threshold_m_) w.candidate = e.t;
+  }
+}
+
+std::vector<OutageMetrics> OutageAccumulator::Result() const {
+  std::vector<OutageMetrics> out;
+  for (const Window& w : windows_) {
+    OutageMetrics m = w.m;
+    for (std::size_t i = 0; i < w.latest.size(); ++i) {
+      if (w.latest[i]) m.growth.emplace_back(kHorizonsS[i], *w.latest[i]);
+    }
+    if (!w.settled && w.candidate)  // good to the end of the run
+      m.reconvergence_time_s = ToSeconds(*w.candidate) - m.end_s;
     out.push_back(std::move(m));
   }
   return out;
+}
+
+std::vector<OutageMetrics> ComputeOutages(const std::vector<ErrorSample>& errors,
+                                          const FaultTimeline& faults, double reconverged_error_m) {
+  OutageAccumulator a(faults, reconverged_error_m);
+  for (const ErrorSample& e : errors) a.Add(e);
+  return a.Result();
 }
 
 namespace {
@@ -74,52 +95,104 @@ double MissingInGap(double gap_s, double period_s) {
 
 }  // namespace
 
+void OutputTimingAccumulator::Add(Time t_validity, std::int64_t wall_rx_ns) {
+  if (n_ > 0) dt_s_.Add(ToSeconds(t_validity - last_));
+  if (n_ == 0) first_ = t_validity;
+  last_ = t_validity;
+  ++n_;
+  if (wall_rx_ns <= 0) return;
+  if (!reordering_) {
+    wall_.push_back(wall_rx_ns);
+    if (wall_.size() <= exact_limit_) return;
+    // too many to hold: the sorted ones go out now, the rest through the reorder heap
+    std::sort(wall_.begin(), wall_.end());
+    for (const std::int64_t w : wall_) AddArrivalInterval(w);
+    std::vector<std::int64_t>().swap(wall_);
+    reordering_ = true;
+    return;
+  }
+  heap_.push_back(wall_rx_ns);
+  std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
+  if (heap_.size() <= kReorderArrivals) return;
+  std::pop_heap(heap_.begin(), heap_.end(), std::greater<>());
+  AddArrivalInterval(heap_.back());
+  heap_.pop_back();
+}
+
+void OutputTimingAccumulator::AddArrivalInterval(std::int64_t wall_ns) {
+  if (last_wall_) iv_ms_.Add(static_cast<double>(wall_ns - *last_wall_) * 1e-6 * speed_);
+  last_wall_ = wall_ns;
+}
+
+namespace {
+
+// |interval − median| percentiles of the arrival intervals (the jitter).
+void SetJitter(const QuantileSketch& iv_ms, std::size_t exact_limit, OutputTiming& t) {
+  const double med = iv_ms.Percentile(50);
+  QuantileSketch dev(exact_limit);
+  iv_ms.ForEach([&](double v, std::uint64_t n) {
+    for (std::uint64_t i = 0; i < n; ++i) dev.Add(std::abs(v - med));
+  });
+  t.jitter_p50_ms = dev.Percentile(50);
+  t.jitter_p99_ms = dev.Percentile(99);
+  t.jitter_max_ms = dev.Percentile(100);
+}
+
+}  // namespace
+
+OutputTiming OutputTimingAccumulator::Result(Time t_from, Time t_to) const {
+  OutputTiming t;
+  const double window_s = ToSeconds(t_to - t_from);
+  if (window_s <= 0) return t;
+  t.output_rate_hz = static_cast<double>(n_) / window_s;
+  if (n_ == 0) {
+    t.missing_fraction = 1.0;
+    return t;
+  }
+  // the nominal period: the median interval (one solution alone says nothing about it)
+  const double period_s = dt_s_.count() == 0 ? 0.0 : dt_s_.Percentile(50);
+  if (period_s > 0) {
+    double missing = MissingInGap(ToSeconds(first_ - t_from), period_s) +
+                     MissingInGap(ToSeconds(t_to - last_), period_s);
+    dt_s_.ForEach([&](double d, std::uint64_t n) {
+      missing += static_cast<double>(n) * MissingInGap(d, period_s);
+    });
+    t.missing_fraction = missing / (static_cast<double>(n_) + missing);
+  }
+  if (!reordering_) {
+    if (wall_.size() < 3) return t;
+    std::vector<std::int64_t> wall = wall_;
+    std::sort(wall.begin(), wall.end());
+    QuantileSketch iv(exact_limit_);
+    for (std::size_t i = 1; i < wall.size(); ++i)
+      iv.Add(static_cast<double>(wall[i] - wall[i - 1]) * 1e-6 * speed_);
+    SetJitter(iv, exact_limit_, t);
+    return t;
+  }
+  QuantileSketch iv = iv_ms_;
+  std::vector<std::int64_t> rest = heap_;
+  std::sort(rest.begin(), rest.end());
+  std::optional<std::int64_t> last = last_wall_;
+  for (const std::int64_t w : rest) {
+    if (last) iv.Add(static_cast<double>(w - *last) * 1e-6 * speed_);
+    last = w;
+  }
+  SetJitter(iv, exact_limit_, t);
+  return t;
+}
+
 OutputTiming ComputeOutputTiming(const std::vector<EstimateRecord>& records_in, Time t_from,
                                  Time t_to, double speed) {
-  OutputTiming t;
   std::vector<EstimateRecord> records;
   for (const EstimateRecord& r : records_in) {
     if (r.t_validity >= t_from && r.t_validity <= t_to) records.push_back(r);
   }
-  const double window_s = ToSeconds(t_to - t_from);
-  if (window_s <= 0) return t;
-  t.output_rate_hz = static_cast<double>(records.size()) / window_s;
-  if (records.empty()) {
-    t.missing_fraction = 1.0;
-    return t;
-  }
   std::stable_sort(
       records.begin(), records.end(),
       [](const EstimateRecord& a, const EstimateRecord& b) { return a.t_validity < b.t_validity; });
-  std::vector<double> dt_s;
-  for (std::size_t i = 1; i < records.size(); ++i) {
-    dt_s.push_back(ToSeconds(records[i].t_validity - records[i - 1].t_validity));
-  }
-  // the nominal period: the median interval (one solution alone says nothing about it)
-  const double period_s = dt_s.empty() ? 0.0 : Percentile(dt_s, 50);
-  if (period_s > 0) {
-    double missing = MissingInGap(ToSeconds(records.front().t_validity - t_from), period_s) +
-                     MissingInGap(ToSeconds(t_to - records.back().t_validity), period_s);
-    for (const double d : dt_s) missing += MissingInGap(d, period_s);
-    t.missing_fraction = missing / (static_cast<double>(records.size()) + missing);
-  }
-  std::vector<std::int64_t> wall;
-  for (const auto& r : records) {
-    if (r.wall_rx_ns > 0) wall.push_back(r.wall_rx_ns);
-  }
-  if (wall.size() >= 3) {
-    std::sort(wall.begin(), wall.end());
-    std::vector<double> iv_ms;
-    for (std::size_t i = 1; i < wall.size(); ++i)
-      iv_ms.push_back(static_cast<double>(wall[i] - wall[i - 1]) * 1e-6 * speed);
-    const double med = Percentile(iv_ms, 50);
-    std::vector<double> dev;
-    for (const double v : iv_ms) dev.push_back(std::abs(v - med));
-    t.jitter_p50_ms = Percentile(dev, 50);
-    t.jitter_p99_ms = Percentile(dev, 99);
-    t.jitter_max_ms = Percentile(dev, 100);
-  }
-  return t;
+  OutputTimingAccumulator a(speed);
+  for (const EstimateRecord& r : records) a.Add(r.t_validity, r.wall_rx_ns);
+  return a.Result(t_from, t_to);
 }
 
 }  // namespace hil::harness

@@ -42,29 +42,42 @@ void EstimatorHealth::AddScanned(const JsonSolutionLine& line) {
   flags_seen.insert(line.health_flags.begin(), line.health_flags.end());
 }
 
+RecoveryTimeAccumulator::RecoveryTimeAccumulator(const std::vector<FaultInjection>& faults,
+                                                 double threshold_m)
+    : threshold_m_(threshold_m) {
+  for (const FaultInjection& f : faults) faults_.push_back({std::max(f.end_s, f.start_s), {}, {}});
+}
+
+void RecoveryTimeAccumulator::Add(const ErrorSample& e) {
+  constexpr double kStayS = 2.0;
+  const double t = ToSeconds(e.t);
+  const bool good = e.horizontal() < threshold_m_;
+  for (Fault& f : faults_) {
+    if (f.recovery_s || t < f.end_s) continue;
+    if (!good) {
+      f.run_start_s.reset();
+      continue;
+    }
+    if (!f.run_start_s) f.run_start_s = t;
+    // the first run of good solutions lasting 2 s
+    if (t - *f.run_start_s >= kStayS) f.recovery_s = *f.run_start_s - f.end_s;
+  }
+}
+
+void RecoveryTimeAccumulator::Apply(std::vector<FaultInjection>& faults) const {
+  for (std::size_t i = 0; i < faults.size() && i < faults_.size(); ++i) {
+    const Fault& f = faults_[i];
+    faults[i].recovery_time_s = f.recovery_s;
+    // ... or lasting to the end of the run
+    if (!f.recovery_s && f.run_start_s) faults[i].recovery_time_s = *f.run_start_s - f.end_s;
+  }
+}
+
 void ComputeRecoveryTimes(std::vector<FaultInjection>& faults,
                           const std::vector<ErrorSample>& errors, double threshold_m) {
-  constexpr double kStayS = 2.0;
-  for (FaultInjection& f : faults) {
-    f.recovery_time_s.reset();
-    const double end = std::max(f.end_s, f.start_s);
-    std::vector<const ErrorSample*> after;
-    for (const ErrorSample& e : errors) {
-      if (ToSeconds(e.t) >= end) after.push_back(&e);
-    }
-    // the first run of good solutions lasting 2 s (or lasting to the end of the run)
-    for (std::size_t i = 0; i < after.size(); ++i) {
-      if (after[i]->horizontal() >= threshold_m) continue;
-      std::size_t j = i;
-      while (j + 1 < after.size() && after[j + 1]->horizontal() < threshold_m) ++j;
-      const double t0 = ToSeconds(after[i]->t);
-      if (ToSeconds(after[j]->t) - t0 >= kStayS || j + 1 == after.size()) {
-        f.recovery_time_s = t0 - end;
-        break;
-      }
-      i = j;
-    }
-  }
+  RecoveryTimeAccumulator a(faults, threshold_m);
+  for (const ErrorSample& e : errors) a.Add(e);
+  a.Apply(faults);
 }
 
 void AddFaultMetrics(std::map<std::string, std::optional<double>>& table,

@@ -446,17 +446,25 @@ void WriteJunitXml(const RunReport& r, const std::string& path) {
   WriteOutputFile(path, out.str());
 }
 
-void WriteErrorsCsv(const std::vector<ErrorSample>& errors, const std::string& path) {
-  OutputFile out(path);
-  std::string& text = out.text();
+void AppendErrorsCsvHeader(std::string& text) {
   text +=
       "t_s,truth_e_m,truth_n_m,truth_u_m,est_e_m,est_n_m,est_u_m,err_e_m,err_n_m,err_u_m,err_h_"
       "m\n";
+}
+
+void AppendErrorsCsvRow(std::string& text, const ErrorSample& e) {
+  AppendFixedRow(text, 6, ToSeconds(e.t), e.truth_enu_m.x(), e.truth_enu_m.y(), e.truth_enu_m.z(),
+                 e.est_enu_m.x(), e.est_enu_m.y(), e.est_enu_m.z(), e.err_enu_m.x(), e.err_enu_m.y(),
+                 e.err_enu_m.z(), e.horizontal());
+  text.push_back('\n');
+}
+
+void WriteErrorsCsv(const std::vector<ErrorSample>& errors, const std::string& path) {
+  OutputFile out(path);
+  std::string& text = out.text();
+  AppendErrorsCsvHeader(text);
   for (const auto& e : errors) {
-    AppendFixedRow(text, 6, ToSeconds(e.t), e.truth_enu_m.x(), e.truth_enu_m.y(), e.truth_enu_m.z(),
-                   e.est_enu_m.x(), e.est_enu_m.y(), e.est_enu_m.z(), e.err_enu_m.x(),
-                   e.err_enu_m.y(), e.err_enu_m.z(), e.horizontal());
-    text.push_back('\n');
+    AppendErrorsCsvRow(text, e);
     out.Pass();
   }
   out.Commit();

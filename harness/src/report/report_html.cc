@@ -22,16 +22,10 @@ std::string Fmt(const std::optional<double>& v, const char* unit = "") {
   return b;
 }
 
-PlotSeries Cdf(const std::vector<ErrorSample>& errors, const std::string& label,
+PlotSeries Cdf(const std::vector<std::pair<double, double>>& cdf, const std::string& label,
                const char* color) {
   PlotSeries s = NamedSeries(label, color);
-  std::vector<double> h;
-  for (const auto& e : errors) h.push_back(e.horizontal());
-  std::sort(h.begin(), h.end());
-  for (std::size_t i = 0; i < h.size(); ++i) {
-    s.x.push_back(h[i]);
-    s.y.push_back(100.0 * static_cast<double>(i + 1) / static_cast<double>(h.size()));
-  }
+  for (const auto& [x, y] : cdf) s.x.push_back(x), s.y.push_back(y);
   return s;
 }
 
@@ -85,8 +79,8 @@ std::vector<std::string> WritePlots(const RunReport& r, const ReportSeries& s,
     c.x_label = "horizontal error (m)";
     c.y_label = "samples at or below (%)";
     c.y_from_zero = true;
-    c.series = {Cdf(s.fix_errors, "raw GNSS fixes", kGnssColor),
-                Cdf(s.estimate_errors, "estimate", kEstimateColor)};
+    c.series = {Cdf(s.fix_cdf, "raw GNSS fixes", kGnssColor),
+                Cdf(s.estimate_cdf, "estimate", kEstimateColor)};
     WritePlot(c, dir, "plots/error_cdf.svg", files);
   }
   {
@@ -97,18 +91,17 @@ std::vector<std::string> WritePlots(const RunReport& r, const ReportSeries& s,
     c.y_from_zero = true;
     c.empty_note =
         "no data: latency is measured in real-time and scaled runs (--mode realtime|scaled)";
-    if (!s.latency_ms.empty()) {
-      const auto [lo_it, hi_it] = std::minmax_element(s.latency_ms.begin(), s.latency_ms.end());
-      const double lo = *lo_it, hi = std::max(*hi_it, lo + 1e-3);
+    if (s.latency_ms.count() > 0) {
+      const double lo = s.latency_ms.min(), hi = std::max(s.latency_ms.max(), lo + 1e-3);
       const int bins = std::clamp(
-          static_cast<int>(std::sqrt(static_cast<double>(s.latency_ms.size()))) + 1, 5, 40);
+          static_cast<int>(std::sqrt(static_cast<double>(s.latency_ms.count()))) + 1, 5, 40);
       const double w = (hi - lo) / bins;
       PlotSeries h{"solutions per bin", kEstimateColor, PlotSeries::Style::kBars, {}, {}, w};
       std::vector<double> count(static_cast<std::size_t>(bins), 0.0);
-      for (const double v : s.latency_ms) {
+      s.latency_ms.ForEach([&](double v, std::uint64_t n) {
         count[static_cast<std::size_t>(std::clamp(static_cast<int>((v - lo) / w), 0, bins - 1))] +=
-            1;
-      }
+            static_cast<double>(n);
+      });
       for (int i = 0; i < bins; ++i) {
         h.x.push_back(lo + (i + 0.5) * w);
         h.y.push_back(count[static_cast<std::size_t>(i)]);

@@ -19,7 +19,7 @@ namespace hil::harness {
 std::vector<Time> TruthCsvTimes(const Scenario& s) {
   std::vector<Time> t;
   const Time t_end = TimeFromSeconds(s.duration_s);
-  for (Time ti{}; ti <= t_end; ti += std::chrono::milliseconds(100)) t.push_back(ti);
+  for (Time ti{}; ti <= t_end; ti += kTruthCsvStep) t.push_back(ti);
   return t;
 }
 
@@ -28,45 +28,53 @@ void WriteTruthCsv(const Scenario& s, const std::string& path, std::vector<doubl
   WriteTruthCsv(TruthTable(s.truth, TruthCsvTimes(s)), s, path, t_s, en_m);
 }
 
-void WriteTruthCsv(const TruthTable& truth, const Scenario& s, const std::string& path,
-                   std::vector<double>& t_s, std::vector<Eigen::Vector2d>& en_m) {
-  OutputFile out(path);
-  std::string& text = out.text();
+void AppendTruthCsvHeader(std::string& text) {
   text +=
       "t_s,lat_deg,lon_deg,height_m,e_m,n_m,u_m,v_e_mps,v_n_mps,v_u_mps,yaw_deg,speed_mps,"
       "roll_deg,pitch_deg,w_x_radps,w_y_radps,w_z_radps,f_x_mps2,f_y_mps2,f_z_mps2,steer_"
       "deg,cross_track_m\n";
+}
+
+void AppendTruthCsvRow(std::string& text, Time t, const TruthSample& x) {
+  const Eigen::Matrix3d R = x.q_NB.toRotationMatrix();
+  const Eigen::Vector3d fwd = R.col(0);
+  // roll and pitch of the body (z-y-x Euler angles of FLU in ENU)
+  const double pitch_deg = -std::asin(std::clamp(R(2, 0), -1.0, 1.0)) * 180.0 / M_PI;
+  const double roll_deg = std::atan2(R(2, 1), R(2, 2)) * 180.0 / M_PI;
+  AppendFixed(text, ToSeconds(t), 3);
+  text.push_back(',');
+  AppendFixedRow(text, 10, x.lat_deg, x.lon_deg);
+  text.push_back(',');
+  AppendFixed(text, x.height_m, 4);
+  text.push_back(',');
+  AppendFixedRow(text, 6, x.p_NB_N_m.x(), x.p_NB_N_m.y(), x.p_NB_N_m.z(), x.v_NB_N_mps.x(),
+                 x.v_NB_N_mps.y(), x.v_NB_N_mps.z());
+  text.push_back(',');
+  AppendFixed(text, std::atan2(fwd.x(), fwd.y()) * 180.0 / M_PI, 5);
+  text.push_back(',');
+  AppendFixed(text, x.speed_mps, 6);
+  text.push_back(',');
+  AppendFixedRow(text, 5, roll_deg, pitch_deg);
+  text.push_back(',');
+  AppendFixedRow(text, 8, x.w_IB_B_radps.x(), x.w_IB_B_radps.y(), x.w_IB_B_radps.z());
+  text.push_back(',');
+  AppendFixedRow(text, 6, x.f_B_mps2.x(), x.f_B_mps2.y(), x.f_B_mps2.z());
+  text.push_back(',');
+  AppendFixed(text, x.steer_rad * 180.0 / M_PI, 4);
+  text.push_back(',');
+  AppendFixed(text, x.cross_track_m, 6);
+  text.push_back('\n');
+}
+
+void WriteTruthCsv(const TruthTable& truth, const Scenario& s, const std::string& path,
+                   std::vector<double>& t_s, std::vector<Eigen::Vector2d>& en_m) {
+  OutputFile out(path);
+  std::string& text = out.text();
+  AppendTruthCsvHeader(text);
   const std::vector<Time> times = TruthCsvTimes(s);
   for (const Time t : times) {
     const TruthSample& x = truth.At(t);
-    const Eigen::Matrix3d R = x.q_NB.toRotationMatrix();
-    const Eigen::Vector3d fwd = R.col(0);
-    // roll and pitch of the body (z-y-x Euler angles of FLU in ENU)
-    const double pitch_deg = -std::asin(std::clamp(R(2, 0), -1.0, 1.0)) * 180.0 / M_PI;
-    const double roll_deg = std::atan2(R(2, 1), R(2, 2)) * 180.0 / M_PI;
-    AppendFixed(text, ToSeconds(t), 3);
-    text.push_back(',');
-    AppendFixedRow(text, 10, x.lat_deg, x.lon_deg);
-    text.push_back(',');
-    AppendFixed(text, x.height_m, 4);
-    text.push_back(',');
-    AppendFixedRow(text, 6, x.p_NB_N_m.x(), x.p_NB_N_m.y(), x.p_NB_N_m.z(), x.v_NB_N_mps.x(),
-                   x.v_NB_N_mps.y(), x.v_NB_N_mps.z());
-    text.push_back(',');
-    AppendFixed(text, std::atan2(fwd.x(), fwd.y()) * 180.0 / M_PI, 5);
-    text.push_back(',');
-    AppendFixed(text, x.speed_mps, 6);
-    text.push_back(',');
-    AppendFixedRow(text, 5, roll_deg, pitch_deg);
-    text.push_back(',');
-    AppendFixedRow(text, 8, x.w_IB_B_radps.x(), x.w_IB_B_radps.y(), x.w_IB_B_radps.z());
-    text.push_back(',');
-    AppendFixedRow(text, 6, x.f_B_mps2.x(), x.f_B_mps2.y(), x.f_B_mps2.z());
-    text.push_back(',');
-    AppendFixed(text, x.steer_rad * 180.0 / M_PI, 4);
-    text.push_back(',');
-    AppendFixed(text, x.cross_track_m, 6);
-    text.push_back('\n');
+    AppendTruthCsvRow(text, t, x);
     out.Pass();
     t_s.push_back(ToSeconds(t));
     en_m.emplace_back(x.p_NB_N_m.x(), x.p_NB_N_m.y());

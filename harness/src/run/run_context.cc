@@ -95,18 +95,11 @@ void RunContext::ControllerGone() {
 }
 
 void RunContext::AskTruth() {
-  const std::vector<EstimateRecord>& est = collector->records();
-  const std::vector<EstimateRecord>& fixes = baseline->fixes();
-  if (est.size() > estimates_asked) {
-    truth_builder->Ask(RecordTimes(
-        {est.begin() + static_cast<std::ptrdiff_t>(estimates_asked), est.end()}, t_from, t_end));
-    estimates_asked = est.size();
-  }
-  if (fixes.size() > fixes_asked) {
-    truth_builder->Ask(RecordTimes(
-        {fixes.begin() + static_cast<std::ptrdiff_t>(fixes_asked), fixes.end()}, t_from, t_end));
-    fixes_asked = fixes.size();
-  }
+  collector->TakeRecords(taken_estimates);
+  scoring->AddEstimates(taken_estimates, t_now);
+  baseline->TakeFixes(taken_fixes);
+  scoring->AddFixes(taken_fixes);
+  scoring->Advance(t_now);
 }
 
 }  // namespace hil::harness

@@ -5,7 +5,6 @@
 #include <exception>
 #include <functional>
 #include <numbers>
-#include <thread>
 #include <utility>
 
 #include "hil/harness/devices/device_kind.h"
@@ -48,31 +47,38 @@ constexpr double kOutOfRunMarginS = 1.0;
 
 // Solutions dated outside the run are not scored; they are a problem, not silence (issue 40.5:
 // solutions ten years ahead, or at the largest time stamp, left a run "complete" and passing).
-void CheckSolutionDates(RunContext& ctx, const std::vector<EstimateRecord>& estimates,
-                        std::size_t scored) {
+// The same for solutions outside the scoring's horizon (run_scoring.h).
+void CheckSolutionDates(RunContext& ctx, std::size_t scored) {
   RunReport& report = ctx.report;
-  const Time first = TimeFromSeconds(-kOutOfRunMarginS);
-  const Time last = ctx.t_end + DurationFromSeconds(kOutOfRunMarginS);
-  std::size_t outside = 0;
-  std::optional<double> example_s;
-  for (const EstimateRecord& e : estimates) {
-    if (e.t_validity >= first && e.t_validity <= last) continue;
-    if (!example_s) example_s = ToSeconds(e.t_validity);
-    ++outside;
-  }
+  const RunScoring& scoring = *ctx.scoring;
+  const std::uint64_t total = scoring.solutions(), outside = scoring.outside_run();
   report.solutions_outside_run = outside;
   if (outside > 0) {
     char text[320];
     std::snprintf(text, sizeof text,
-                  "%zu of %zu solutions are dated outside the run (before t = %g s or after t = "
+                  "%llu of %llu solutions are dated outside the run (before t = %g s or after t = "
                   "%g s; the first at t = %.6g s): they were not scored",
-                  outside, estimates.size(), -kOutOfRunMarginS,
-                  ToSeconds(ctx.t_end) + kOutOfRunMarginS, *example_s);
+                  static_cast<unsigned long long>(outside), static_cast<unsigned long long>(total),
+                  -kOutOfRunMarginS, ToSeconds(ctx.t_end) + kOutOfRunMarginS,
+                  scoring.first_outside_s().value_or(0.0));
     report.problems.emplace_back(text);
   }
-  if (!estimates.empty() && scored == 0) {
+  const double horizon_s = ToSeconds(Time{} + RunScoring::kLateHorizon);
+  if (scoring.too_late() > 0) {
     report.problems.push_back(
-        "no solution was scored: none of the " + std::to_string(estimates.size()) +
+        std::to_string(scoring.too_late()) + " solutions arrived more than " +
+        SecondsText(horizon_s) +
+        " s of emulated time after their time of validity (or no truth came for them): they "
+        "were not scored");
+  }
+  if (scoring.too_early() > 0) {
+    report.problems.push_back(std::to_string(scoring.too_early()) +
+                              " solutions were dated more than " + SecondsText(horizon_s) +
+                              " s after the run's time when they arrived: they were not scored");
+  }
+  if (total > 0 && scored == 0) {
+    report.problems.push_back(
+        "no solution was scored: none of the " + std::to_string(total) +
         " solutions is dated within the evaluated span (" + SecondsText(ToSeconds(ctx.t_from)) +
         " to " + SecondsText(ToSeconds(ctx.t_end)) + " s) with a truth to compare");
   }
@@ -96,27 +102,19 @@ Eigen::Vector3d EstimatedPoint(const Scenario& scenario, const RunOptions& opt) 
                                            : Eigen::Vector3d::Zero();
 }
 
-void EvaluateTiming(RunContext& ctx, const std::vector<EstimateRecord>& estimates,
-                    ReportSeries& series) {
+void EvaluateTiming(RunContext& ctx) {
   RunReport& report = ctx.report;
-  const double speed = ctx.options.speed;
-  const link::RealtimePacer* wall = ctx.pacer->wall_clock();  // none in virtual mode
   const bool on_wall_clock = ctx.pacer->stepping() != Stepping::kVirtual;
-  report.timing =
-      ComputeOutputTiming(estimates, ctx.t_from, ctx.t_end, on_wall_clock ? speed : 1.0);
+  report.timing = ctx.scoring->timing(ctx.t_from, ctx.t_end);
   if (!on_wall_clock) {  // arrival times mean nothing in virtual mode
     report.timing.jitter_p50_ms.reset(), report.timing.jitter_p99_ms.reset(),
         report.timing.jitter_max_ms.reset();
   }
   report.output_rate_hz = report.timing.output_rate_hz;
-  if (on_wall_clock && !estimates.empty()) {
-    for (const auto& e : estimates) {
-      series.latency_ms.push_back(static_cast<double>(e.wall_rx_ns - wall->WallNsOf(e.t_validity)) *
-                                  1e-6 * speed);
-    }
+  const QuantileSketch& latency = ctx.scoring->latency_ms();
+  if (on_wall_clock && ctx.scoring->solutions() > 0) {
     report.latency =
-        LatencyStats{Percentile(series.latency_ms, 50), Percentile(series.latency_ms, 99),
-                     Percentile(series.latency_ms, 100)};
+        LatencyStats{latency.Percentile(50), latency.Percentile(99), latency.Percentile(100)};
   }
 }
 
@@ -180,10 +178,10 @@ void CheckLinks(RunContext& ctx) {
   }
 }
 
-void EvaluateFaultsAndCriteria(RunContext& ctx, const std::vector<ErrorSample>& est_err) {
+void EvaluateFaultsAndCriteria(RunContext& ctx) {
   RunReport& report = ctx.report;
   report.fault_injections = ctx.fault_recorder.records();
-  ComputeRecoveryTimes(report.fault_injections, est_err, ctx.scenario.reconverged_error_m);
+  ctx.scoring->ApplyRecoveryTimes(report.fault_injections);
   report.estimator_health = ctx.health;
   CheckLinks(ctx);
   report.realtime_threads = ctx.set.threads;
@@ -237,32 +235,6 @@ void Attempt(RunReport& report, const std::function<void()>& write) {
     if (report.incomplete_reason.empty()) report.incomplete_reason = report.problems.back();
   }
 }
-
-// One file of the run folder written on a thread of its own; Join() rethrows its failure.
-class BackgroundWrite {
- public:
-  explicit BackgroundWrite(std::function<void()> write)
-      : thread_([this, w = std::move(write)] {
-          try {
-            w();
-          } catch (...) {
-            error_ = std::current_exception();
-          }
-        }) {}
-  ~BackgroundWrite() {
-    if (thread_.joinable()) thread_.join();
-  }
-  BackgroundWrite(const BackgroundWrite&) = delete;
-  BackgroundWrite& operator=(const BackgroundWrite&) = delete;
-  void Join() {
-    if (thread_.joinable()) thread_.join();
-    if (error_) std::rethrow_exception(std::exchange(error_, nullptr));
-  }
-
- private:
-  std::exception_ptr error_;
-  std::thread thread_;  // last: started once error_ exists
-};
 
 // The truth vehicle's track at truth.csv's times (10 Hz) from `t_from` on.
 std::vector<TrackSample> TruthTrack(const RunContext& ctx, const TruthTable& truth, Time t_from) {
@@ -417,57 +389,56 @@ void AddClosedLoopSeries(const RunContext& ctx, ReportSeries& series) {
 
 }  // namespace
 
+void StartScoring(RunContext& ctx) {
+  const bool on_wall_clock = ctx.pacer->stepping() != Stepping::kVirtual;
+  ScoringSetup setup;
+  setup.scenario = &ctx.scenario;
+  setup.dir = ctx.dir;
+  setup.t_from = ctx.t_from;
+  setup.t_end = ctx.t_end;
+  setup.p_est_B_m = EstimatedPoint(ctx.scenario, ctx.options);
+  setup.p_fix_B_m = ctx.scenario.gnss.model.p_BA_B_m;
+  setup.faults = ctx.fault_recorder.records();
+  setup.speed = on_wall_clock ? ctx.options.speed : 1.0;
+  if (const link::RealtimePacer* wall = ctx.pacer->wall_clock(); wall && on_wall_clock)
+    setup.wall_ns_of = [wall](Time t) { return wall->WallNsOf(t); };
+  setup.stream_truth = !ctx.scenario.truth.external_commands;
+  ctx.scoring.emplace(std::move(setup), *ctx.truth_builder);
+}
+
 RunEvaluation Evaluate(RunContext& ctx) {
   const Scenario& scenario = ctx.scenario;
   RunReport& report = ctx.report;
-  const std::vector<EstimateRecord>& estimates = ctx.collector->records();
-  if (estimates.empty() && !ctx.options.emulate_only)
-    report.problems.push_back("the estimator produced no solution");
-  const Eigen::Vector3d p_BX_B_m = EstimatedPoint(scenario, ctx.options);
   ctx.AskTruth();
-  RunEvaluation ev{ctx.truth_builder->Finish(), {}, {}, {}};
-  ev.estimate_errors = CompareWithTruth(ev.truth, estimates, p_BX_B_m, ctx.t_from, ctx.t_end);
-  ev.fix_errors = CompareWithTruth(ev.truth, ctx.baseline->fixes(), scenario.gnss.model.p_BA_B_m,
-                                   ctx.t_from, ctx.t_end);
-  const PlannedPath path = scenario.closed_loop.enabled
-                               ? PlannedPath(ReadPathVertices(scenario.closed_loop.path_file))
-                               : PlannedPathOf(scenario.truth, scenario.duration_s);
-  AddCrossTrack(ev.estimate_errors, path);
-  AddCrossTrack(ev.fix_errors, path);
-  report.metrics = ComputeAccuracy(ev.estimate_errors);
-  if (!ctx.options.emulate_only) CheckSolutionDates(ctx, estimates, report.metrics.samples);
-  report.baselines = ComputeAccuracy(ev.fix_errors);
-  EvaluateTiming(ctx, estimates, ev.series);
-  report.outages =
-      ComputeOutages(ev.estimate_errors, scenario.faults, scenario.reconverged_error_m);
+  RunScoring& scoring = *ctx.scoring;
+  if (scoring.solutions() == 0 && !ctx.options.emulate_only)
+    report.problems.push_back("the estimator produced no solution");
+  RunEvaluation ev{scoring.Finish(ctx.t_end), ReportSeries{}};
+  report.metrics = scoring.metrics();
+  if (!ctx.options.emulate_only) CheckSolutionDates(ctx, report.metrics.samples);
+  report.baselines = scoring.baselines();
+  EvaluateTiming(ctx);
+  report.outages = scoring.outages();
   CountLinksAndDevices(ctx);
   if (scenario.closed_loop.enabled) EvaluateClosedLoop(ctx, ev.truth);
-  EvaluateFaultsAndCriteria(ctx, ev.estimate_errors);
+  EvaluateFaultsAndCriteria(ctx);
   return ev;
 }
 
 void WriteRunFolder(RunContext& ctx, RunEvaluation& ev) {
   RunReport& report = ctx.report;
   const std::string& dir = ctx.dir;
-  ReportSeries& series = ev.series;
-  {
-    // the two error files on threads of their own beside truth.csv (seed004: 5.5 MB in all)
-    BackgroundWrite estimate([&] { WriteErrorsCsv(ev.estimate_errors, dir + "/estimate.csv"); });
-    BackgroundWrite fixes([&] { WriteErrorsCsv(ev.fix_errors, dir + "/gnss_fixes_errors.csv"); });
-    Attempt(report, [&] {
-      WriteTruthCsv(ev.truth, ctx.scenario, dir + "/truth.csv", series.truth_t_s,
-                    series.truth_en_m);
-    });
-    Attempt(report,
-            [&] { WriteScheduleErrors(ScheduleRecordOf(ctx.set), dir + "/schedule_error.json"); });
-    Attempt(report, [&] { estimate.Join(); });
-    Attempt(report, [&] { fixes.Join(); });
-  }
+  RunScoring& scoring = *ctx.scoring;
+  // written as the run went; their last lines now
+  Attempt(report, [&] { scoring.CommitEstimateCsv(); });
+  Attempt(report, [&] { scoring.CommitFixCsv(); });
+  Attempt(report, [&] { scoring.CommitTruthCsv(); });
+  Attempt(report,
+          [&] { WriteScheduleErrors(ScheduleRecordOf(ctx.set), dir + "/schedule_error.json"); });
   if (ctx.options.html) {
-    if (ctx.scenario.closed_loop.enabled) AddClosedLoopSeries(ctx, series);
-    series.estimate_errors = std::move(ev.estimate_errors);
-    series.fix_errors = std::move(ev.fix_errors);
-    Attempt(report, [&] { WriteReportHtml(report, series, dir); });
+    ev.series = scoring.TakeSeries();
+    if (ctx.scenario.closed_loop.enabled) AddClosedLoopSeries(ctx, ev.series);
+    Attempt(report, [&] { WriteReportHtml(report, ev.series, dir); });
   }
   Attempt(report, [&] { WriteJunitXml(report, dir + "/junit.xml"); });
   WriteReportJson(report, dir + "/report.json");

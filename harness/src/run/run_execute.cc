@@ -107,7 +107,7 @@ void DrainOutput(RunContext& ctx) {
     const std::int64_t quiet_ns = NowNs() - std::max(last_output, drain_start);
     if (last_output > 0 && quiet_ns > static_cast<std::int64_t>(kDrainQuietS * 1e9)) break;
     if (quiet_ns > ctx.silence_ns) {
-      if (ctx.collector->records().empty())
+      if (ctx.collector->solutions() == 0)
         ctx.hang = "no output for " + SecondsText(ctx.silence_s) + " s";
       break;
     }
@@ -160,7 +160,7 @@ void Execute(RunContext& ctx, RunWatchdog& watchdog) {
   }
   // the truth for the evaluation, sampled on a thread of its own as the run goes (truth_table.h)
   ctx.truth_builder.emplace(scenario.truth);
-  ctx.truth_builder->Ask(TruthCsvTimes(scenario));
+  StartScoring(ctx);  // asks the builder for truth.csv's times as the run goes
   // the run's own samples serve the times they have (closed loop: the times they miss are
   // sampled after the run, from its commands replayed)
   ctx.engine->set_truth_tap(

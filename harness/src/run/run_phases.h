@@ -19,10 +19,12 @@ void Drain(RunContext& ctx);
 /// Stops the process under test and reports a crash, a hang or an early stop.
 void StopEstimator(RunContext& ctx);
 
+/// The run's scoring (run_scoring.h), started with the engine: it asks ctx.truth_builder.
+void StartScoring(RunContext& ctx);
+
 /// What the evaluation computed that the run folder's files need.
 struct RunEvaluation {
-  TruthTable truth;
-  std::vector<ErrorSample> estimate_errors, fix_errors;
+  TruthTable truth;  ///< closed loop: the whole truth.csv grid (open loop: the run's last samples)
   ReportSeries series;
 };
 /// Metrics, baselines, timing, outages, counters, fault injections and criteria into ctx.report.

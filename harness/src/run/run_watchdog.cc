@@ -48,15 +48,10 @@ bool RunWatchdog::EstimatorStillRunning() {
 bool RunWatchdog::KeepGoing(Time t) {
   ctx_.t_now = t;
   ctx_.collector->Poll();
+  // scores what lies RunScoring::kLateHorizon behind the run (a later solution is not scored)
   ctx_.AskTruth();
-  // an estimator's solutions come in time order, about as late as its input: what lies a second
-  // behind both will not be asked for any more (a straggler only costs Finish a pass)
-  const std::vector<EstimateRecord>& records = ctx_.collector->records();
-  if (!records.empty()) {
-    ctx_.truth_builder->Advance(std::min(records.back().t_validity, t) - std::chrono::seconds(1));
-  }
   if (ctx_.Interrupted()) return false;
-  ctx_.progress->Update(ToSeconds(t), ctx_.scenario.duration_s, records.size());
+  ctx_.progress->Update(ToSeconds(t), ctx_.scenario.duration_s, ctx_.collector->solutions());
   if (ctx_.options.emulate_only) return true;
   if (!EstimatorStillRunning()) return false;
   if (ctx_.pacer->stepping() != Stepping::kVirtual && ctx_.SilentForNs() > ctx_.silence_ns) {

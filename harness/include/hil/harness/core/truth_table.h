@@ -35,6 +35,9 @@ class TruthTable {
   /// The sample at `t`, one of the times given. @throws std::out_of_range otherwise.
   const TruthSample& At(Time t) const;
   bool Has(Time t) const;
+  /// The times held, sorted, and the sample of each (samples()[i] is the sample at times()[i]).
+  const std::vector<Time>& times() const { return times_; }
+  const std::vector<TruthSample>& samples() const { return samples_; }
   /// The scenario's local frame (ENU at the origin).
   const truth::LocalFrame& frame() const { return frame_; }
 
@@ -79,14 +82,27 @@ class TruthTableBuilder {
   /// Closed loop: the run's truth was re-integrated for a late command, so samples it offered
   /// before may not be the replay's: Finish samples every time from the replay instead.
   void DiscardOffered() { discard_offered_ = true; }
-  /// Samples everything asked for and returns the table.
+  /// Open loop: moves the samples taken so far (in time order, each time once) into `times` and
+  /// `samples` (cleared first), so that the run's evaluation consumes them as they come and the
+  /// builder keeps none. Finish's table then holds only what was not taken (and the stragglers).
+  /// Not for closed loop: a late command may invalidate the offered samples (DiscardOffered).
+  void TakeDone(std::vector<Time>& times, std::vector<TruthSample>& samples);
+  /// Waits until the thread has taken every time asked up to `t` (at most the last watermark):
+  /// back-pressure, so that a thread behind the run (a loaded machine) cannot pile up the times
+  /// asked and the samples offered without bound.
+  void WaitTaken(Time t);
+  /// Samples everything asked for (and not taken) and returns the table.
   TruthTable Finish();
   /// Times sampled so far from offered samples and by the thread's own integrator (the
   /// stragglers of Finish's second pass not counted).
   std::size_t offered_hits() const { return offered_hits_; }
+  /// Times and samples the builder holds now (asked, offered, sampled and not taken).
+  std::size_t retained();
   std::size_t integrated() const { return integrated_; }
-  /// How long an offered sample is kept for a time the thread has not reached yet.
-  static constexpr Duration kOfferedKeep = std::chrono::seconds(30);
+  /// How long an offered sample is kept for a time the thread has not reached yet: longer than
+  /// the run lets the thread lag (RunScoring::kLateHorizon, 60 s, plus the watermark's 1 s
+  /// steps), so that the thread copies the run's samples instead of integrating the truth again.
+  static constexpr Duration kOfferedKeep = std::chrono::seconds(75);
 
  private:
   void Work();
@@ -100,6 +116,7 @@ class TruthTableBuilder {
   const truth::TruthConfig& config_;
   std::mutex mu_;
   std::condition_variable cv_;
+  std::condition_variable taken_cv_;  // the thread took a batch
   std::priority_queue<Time, std::vector<Time>, std::greater<>>
       asked_;                   // not yet taken by the thread
   std::vector<Time> late_;      // asked behind the thread's position
@@ -117,8 +134,9 @@ class TruthTableBuilder {
   Time position_{};  // the latest time the thread has sampled (or taken)
   bool started_ = false;
   std::deque<TruthSample> offered_;  // the run's samples, in time order
-  std::vector<Time> done_times_;     // thread-owned until joined
+  std::vector<Time> done_times_;  // mu_ (the thread appends a batch at a time)
   std::vector<TruthSample> done_samples_;
+  std::optional<Time> last_done_;  // the thread's: the latest time it sampled
   std::size_t offered_hits_ = 0, integrated_ = 0;  // thread-owned until joined
   std::thread worker_;
 };

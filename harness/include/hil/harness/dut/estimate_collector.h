@@ -41,7 +41,15 @@ class EstimateCollector {
   std::map<std::uint32_t, std::uint64_t> bus_frames_per_pgn() const;
   /// CLOCK_MONOTONIC time of the last output line (0: none yet).
   std::int64_t last_output_wall_ns() const;
-  const std::vector<EstimateRecord>& records() const { return records_; }
+  /// The solutions parsed since the last call, moved into `out` (cleared first): the collector
+  /// keeps none for long (the run scores them as they come: run/run_scoring.h).
+  void TakeRecords(std::vector<EstimateRecord>& out) {
+    out.clear();
+    out.swap(records_);
+  }
+  /// Solutions parsed so far (taken or not), and the latest one's time of validity.
+  std::size_t solutions() const { return solutions_; }
+  std::optional<Time> last_validity() const { return last_validity_; }
   std::size_t lines() const { return lines_; }
   std::size_t unparsed_lines() const { return unparsed_; }
   /// Lines that were valid records of the output's stream but no solution (NMEA: RMC, GSA, GSV,
@@ -90,7 +98,10 @@ class EstimateCollector {
   bool raw_unflushed_ = false;  // lines written to raw_ since its last flush
   std::string pty_partial_;
   std::int64_t pty_last_ns_ = 0;
-  std::vector<EstimateRecord> records_;
+  void AddRecord(const EstimateRecord& r);
+  std::vector<EstimateRecord> records_;  // not yet taken
+  std::size_t solutions_ = 0;
+  std::optional<Time> last_validity_;
   std::size_t lines_ = 0, unparsed_ = 0, first_unparsed_line_ = 0, other_records_ = 0;
   std::size_t raw_lines_ = 0;  // lines of the raw file (with the pty case's "# stdout:" lines)
   std::string first_unparsed_reason_;

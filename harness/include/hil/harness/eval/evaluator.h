@@ -13,6 +13,7 @@
 #include "hil/firmware_emu/sim_time.h"
 #include "hil/harness/core/estimate_record.h"
 #include "hil/harness/core/truth_table.h"
+#include "hil/harness/eval/quantile_sketch.h"
 #include "hil/truth/truth_integrator.h"
 
 namespace hil::harness {
@@ -58,13 +59,39 @@ std::vector<ErrorSample> CompareWithTruth(const truth::TruthConfig& truth_config
 std::vector<ErrorSample> CompareWithTruth(const TruthTable& truth,
                                           std::vector<EstimateRecord> records,
                                           const Eigen::Vector3d& p_BX_B_m, Time t_from, Time t_to);
+/// The error of one record against the truth sample at its time of validity (CompareWithTruth's
+/// step; `frame`: the scenario's local frame).
+ErrorSample ErrorOf(const EstimateRecord& record, const TruthSample& truth,
+                    const truth::LocalFrame& frame, const Eigen::Vector3d& p_BX_B_m);
 /// The times CompareWithTruth needs the truth at for `records`.
 std::vector<Time> RecordTimes(const std::vector<EstimateRecord>& records, Time t_from, Time t_to);
 
-/// Metrics of a set of errors. Empty input gives samples = 0.
+/// The accuracy metrics of errors added one at a time, in time order, in bounded memory: running
+/// sums (the same sums in the same order as over the whole set, so the same bits) and the
+/// percentiles of QuantileSketch (exact up to its limit, then within its relative accuracy).
+class AccuracyAccumulator {
+ public:
+  explicit AccuracyAccumulator(std::size_t exact_limit = QuantileSketch::kExactLimit)
+      : horizontal_(exact_limit), abs_xte_(exact_limit) {}
+  void Add(const ErrorSample& e);
+  AccuracyMetrics Metrics() const;
+  /// The horizontal errors so far (for the CDF plot).
+  const QuantileSketch& horizontal() const { return horizontal_; }
+  std::size_t retained() const { return horizontal_.retained() + abs_xte_.retained(); }
+
+ private:
+  std::size_t n_ = 0, nvel_ = 0, nyaw_ = 0, nnees_ = 0;
+  double sh_ = 0, sv_ = 0, svel_ = 0, syaw_ = 0, max_h_ = 0;
+  double sxte_ = 0, snees_ = 0, snees_h_ = 0, snees_v_ = 0;
+  QuantileSketch horizontal_, abs_xte_;
+};
+
+/// Metrics of a set of errors (AccuracyAccumulator over them). Empty input gives samples = 0.
 AccuracyMetrics ComputeAccuracy(const std::vector<ErrorSample>& errors);
 
 /// Empirical percentile (0–100) by linear interpolation of sorted values.
 double Percentile(std::vector<double> values, double pct);
+/// The same of values already sorted.
+double PercentileOfSorted(const std::vector<double>& sorted, double pct);
 
 }  // namespace hil::harness

@@ -3,6 +3,7 @@
 /// Behaviour of the estimate around each scripted GNSS outage of the fault timeline, and the
 /// timing of its output stream.
 
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -26,7 +27,29 @@ struct OutageMetrics {
   std::optional<double> reconvergence_time_s;
 };
 
-/// One entry per gnss_outage fault, in time order.
+/// The outage figures of errors added one at a time in time order, in bounded memory: each
+/// window's count, maxima and growth as its solutions come, its reconvergence as soon as a
+/// solution below the threshold has stayed below it for 2 s (or until the next outage).
+class OutageAccumulator {
+ public:
+  OutageAccumulator(const FaultTimeline& faults, double reconverged_error_m);
+  void Add(const ErrorSample& e);
+  /// One entry per gnss_outage and gnss_data_gap fault, in time order (what ComputeOutages gives).
+  std::vector<OutageMetrics> Result() const;
+
+ private:
+  struct Window {
+    Time start, end, next_start;
+    OutageMetrics m;
+    std::vector<std::optional<double>> latest;  // per growth horizon
+    std::optional<Time> candidate;              // first good solution after the end, not refuted
+    bool settled = false;                       // reconvergence found
+  };
+  std::vector<Window> windows_;
+  double threshold_m_;
+};
+
+/// One entry per gnss_outage fault, in time order (OutageAccumulator over `errors`).
 std::vector<OutageMetrics> ComputeOutages(const std::vector<ErrorSample>& errors,
                                           const FaultTimeline& faults, double reconverged_error_m);
 
@@ -40,6 +63,37 @@ struct OutputTiming {
   double missing_fraction = 0;
   std::optional<double> jitter_p50_ms, jitter_p99_ms,
       jitter_max_ms;  ///< |arrival interval − median|, wall clock
+};
+
+/// Timing of the records of the evaluated window added one at a time in order of time of validity,
+/// in bounded memory: the intervals between times of validity and between arrivals in
+/// QuantileSketch form (exact up to its limit). Arrival times are held exactly up to the same
+/// limit and sorted at the end; past that they are put in order through a heap of
+/// kReorderArrivals, exact as long as no arrival comes that many solutions out of order.
+class OutputTimingAccumulator {
+ public:
+  static constexpr std::size_t kReorderArrivals = std::size_t{1} << 12;
+  /// `exact_limit`: arrival times held exactly, and the sketches' limit.
+  explicit OutputTimingAccumulator(double speed,
+                                   std::size_t exact_limit = QuantileSketch::kExactLimit)
+      : speed_(speed), exact_limit_(exact_limit), dt_s_(exact_limit), iv_ms_(exact_limit) {}
+  void Add(Time t_validity, std::int64_t wall_rx_ns);
+  OutputTiming Result(Time t_from, Time t_to) const;
+  std::size_t retained() const {
+    return dt_s_.retained() + iv_ms_.retained() + wall_.size() + heap_.size();
+  }
+
+ private:
+  void AddArrivalInterval(std::int64_t wall_ns);
+  double speed_;
+  std::size_t exact_limit_;
+  std::size_t n_ = 0;
+  Time first_{}, last_{};
+  QuantileSketch dt_s_, iv_ms_;
+  std::vector<std::int64_t> wall_;  // exact arrivals, unsorted
+  std::vector<std::int64_t> heap_;  // past kExactArrivals: the reorder heap (min-heap)
+  std::optional<std::int64_t> last_wall_;
+  bool reordering_ = false;
 };
 
 /// Timing of the records valid in [t_from, t_to] (the evaluated window), sorted or not; arrival

@@ -15,6 +15,7 @@
 ///   navd.flag.<flag>        1 when navd raised that flag at least once during the run, else 0
 
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -49,6 +50,26 @@ extern const std::vector<std::string> kNavdFlags;
 /// the end reaches that.
 void ComputeRecoveryTimes(std::vector<FaultInjection>& faults,
                           const std::vector<ErrorSample>& errors, double threshold_m);
+
+/// The same from errors added one at a time in time order, in bounded memory (a few numbers per
+/// fault): a fault's recovery is known once its first run of good solutions has lasted 2 s.
+class RecoveryTimeAccumulator {
+ public:
+  /// `faults`: the timeline's records (their start and end; FaultRecorder::records()).
+  RecoveryTimeAccumulator(const std::vector<FaultInjection>& faults, double threshold_m);
+  void Add(const ErrorSample& e);
+  /// Sets each fault's recovery_time_s (`faults` in the order given to the constructor).
+  void Apply(std::vector<FaultInjection>& faults) const;
+
+ private:
+  struct Fault {
+    double end_s;
+    std::optional<double> run_start_s;  // the current run of good solutions
+    std::optional<double> recovery_s;
+  };
+  std::vector<Fault> faults_;
+  double threshold_m_;
+};
 
 /// Adds fault_recovery_time_s, fault_injections_min, navd.* (see the file comment).
 void AddFaultMetrics(std::map<std::string, std::optional<double>>& table,

@@ -166,5 +166,8 @@ void WriteReportJson(const RunReport& report, const std::string& path);
 void WriteJunitXml(const RunReport& report, const std::string& path);
 /// Writes errors (time, truth and estimate ENU, errors) as CSV.
 void WriteErrorsCsv(const std::vector<ErrorSample>& errors, const std::string& path);
+/// That CSV's header line and the line of one error (written as the run goes: run_scoring.h).
+void AppendErrorsCsvHeader(std::string& text);
+void AppendErrorsCsvRow(std::string& text, const ErrorSample& e);
 
 }  // namespace hil::harness

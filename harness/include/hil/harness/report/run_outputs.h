@@ -31,6 +31,12 @@ void WriteTruthCsv(const Scenario& s, const std::string& path, std::vector<doubl
 /// The same from a table that holds the times TruthCsvTimes(s) gives.
 void WriteTruthCsv(const TruthTable& truth, const Scenario& s, const std::string& path,
                    std::vector<double>& t_s, std::vector<Eigen::Vector2d>& en_m);
+/// truth.csv's header line, and its line of the sample `x` at `t` (written as the run goes:
+/// harness/run/run_scoring.h).
+void AppendTruthCsvHeader(std::string& text);
+void AppendTruthCsvRow(std::string& text, Time t, const TruthSample& x);
+/// truth.csv's time step.
+inline constexpr Duration kTruthCsvStep = std::chrono::milliseconds(100);
 /// The times of truth.csv: every 100 ms from 0 to the scenario's end.
 std::vector<Time> TruthCsvTimes(const Scenario& s);
 

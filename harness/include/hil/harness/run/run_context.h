@@ -32,6 +32,7 @@
 #include "hil/harness/run/fix_baseline.h"
 #include "hil/harness/run/progress.h"
 #include "hil/harness/run/run.h"
+#include "hil/harness/run/run_scoring.h"
 #include "hil/harness/scenario/scenario.h"
 
 namespace hil::harness {
@@ -98,7 +99,9 @@ struct RunContext {
   std::optional<Engine> engine;
   std::optional<FixBaseline> baseline;
   std::optional<TruthTableBuilder> truth_builder;
-  std::size_t estimates_asked = 0, fixes_asked = 0;  ///< records handed to the truth builder
+  /// The evaluation as the run goes (run_scoring.h); after truth_builder, which it asks.
+  std::optional<RunScoring> scoring;
+  std::vector<EstimateRecord> taken_estimates, taken_fixes;  ///< AskTruth's, reused
 
   // why the run ends early: the estimator hung; a signal, the run folder, a closed port
   std::optional<std::string> hang, stop_reason;
@@ -116,7 +119,8 @@ struct RunContext {
   void ControllerGone();
   /// Wall time since the estimator's last output (or its start).
   std::int64_t SilentForNs() const;
-  /// Asks the truth builder for the times of the solutions and fixes that came since last time.
+  /// Hands the solutions and fixes that came since last time to the scoring, which asks the
+  /// truth builder for their times, lets it follow the run and scores what it has sampled.
   void AskTruth();
   /// Nothing stopped the run early so far and the estimator still runs.
   bool Healthy() { return !hang && !stop_reason && EstimatorRunning(); }
