@@ -432,6 +432,7 @@ RunEvaluation Evaluate(RunContext& ctx) {
   const PlannedPath path = scenario.closed_loop.enabled
                                ? PlannedPath(ReadPathVertices(scenario.closed_loop.path_file))
                                : PlannedPathOf(scenario.truth, scenario.duration_s);
+  if (!scenario.closed_loop.enabled) ev.series.path_en_m = path.vertices();  // the map's
   AddCrossTrack(ev.estimate_errors, path);
   AddCrossTrack(ev.fix_errors, path);
   report.metrics = ComputeAccuracy(ev.estimate_errors);
@@ -467,7 +468,7 @@ void WriteRunFolder(RunContext& ctx, RunEvaluation& ev) {
     if (ctx.scenario.closed_loop.enabled) AddClosedLoopSeries(ctx, series);
     series.estimate_errors = std::move(ev.estimate_errors);
     series.fix_errors = std::move(ev.fix_errors);
-    Attempt(report, [&] { WriteReportHtml(report, series, dir); });
+    Attempt(report, [&] { WriteReportHtml(report, series, MakeRunHeader(ctx), dir); });
   }
   Attempt(report, [&] { WriteJunitXml(report, dir + "/junit.xml"); });
   WriteReportJson(report, dir + "/report.json");

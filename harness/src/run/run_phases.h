@@ -25,6 +25,8 @@ struct RunEvaluation {
   std::vector<ErrorSample> estimate_errors, fix_errors;
   ReportSeries series;
 };
+/// What report.html's header says was tested, and the harness's own figures (run_header.cc).
+RunHeader MakeRunHeader(const RunContext& ctx);
 /// Metrics, baselines, timing, outages, counters, fault injections and criteria into ctx.report.
 RunEvaluation Evaluate(RunContext& ctx);
 /// The run folder: CSVs, schedule errors, report.html, junit.xml and report.json last (written
