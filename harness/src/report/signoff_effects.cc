@@ -67,7 +67,7 @@ void AppendFaultEffectsHtml(std::string& h, const RunReport& r, const ReportSeri
   h += "</section>\n";
 }
 
-void AppendHarnessHtml(std::string& h, const RunReport& r, const RunHeader& hd) {
+void AppendHarnessHtml(std::string& h, const RunReport& r, const RunHeader& header) {
   h += "<section><h2>What the harness measured of itself</h2>\n<table class=\"kv\">\n";
   h += "<tr><th>bytes sent on the serial links</th><td>" +
        std::to_string(static_cast<unsigned long long>(r.gnss_bytes)) + "</td></tr>\n";
@@ -82,14 +82,21 @@ void AppendHarnessHtml(std::string& h, const RunReport& r, const RunHeader& hd) 
          FormatNumber(c.max_late_ms, "%.2f") + " ms)</td></tr>\n";
   }
   h += "</table>\n";
-  if (hd.links.empty()) {
+  if (header.stepping == "virtual") {
     h += "<p>Virtual mode: the run keeps no wall clock, so there is no schedule error, no output "
          "latency and no arrival jitter to measure; the latency chart does not apply. Run with "
          "<code>--mode realtime</code> or <code>--mode scaled</code> to measure them.</p>";
+  } else if (header.links.empty()) {
+    h += header.stepping == "lockstep"
+             ? "<p>Lockstep: the links carry the virtual run's bytes, released in step with the "
+               "host, so no byte has a wall-clock schedule to miss; the paced actions' lateness "
+               "above is the harness's timing figure, the output latency below the "
+               "estimator's.</p>"
+             : "<p>No link carried a timed byte.</p>";
   } else {
     h += "<table><tr><th>link</th><th>timed</th><th>schedule error p50 / p99 / max (&micro;s)</th>"
          "<th>dropped unread</th></tr>\n";
-    for (const HeaderLink& l : hd.links) {
+    for (const HeaderLink& l : header.links) {
       h += "<tr><td>" + XmlEscape(l.name) + "</td><td>" +
            std::to_string(static_cast<unsigned long long>(l.units)) + " " + l.unit + "</td><td>" +
            FormatOptional(l.p50_us, "%.0f") + " / " + FormatOptional(l.p99_us, "%.0f") + " / " +

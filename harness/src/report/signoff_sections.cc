@@ -174,39 +174,41 @@ std::string UtcText(std::int64_t unix_ns) {
   return b;
 }
 
-void AppendRunHeaderHtml(std::string& h, const RunReport& r, const RunHeader& hd) {
+void AppendRunHeaderHtml(std::string& h, const RunReport& r, const RunHeader& header) {
   h += "<section class=\"header\"><h2>What was tested</h2>\n<table class=\"kv\">\n";
   Row(h, "scenario",
-      "<b>" + XmlEscape(r.scenario) + "</b>" + (hd.short_form ? " (--short form)" : ""));
+      "<b>" + XmlEscape(r.scenario) + "</b>" + (header.short_form ? " (--short form)" : ""));
   Row(h, "scenario file", "<code>" + XmlEscape(r.scenario_file) + "</code>");
   Row(h, "scenario SHA-256",
-      hd.scenario_sha256.empty() ? "n/a (no file: the embedded default)"
-                                 : "<code>" + hd.scenario_sha256 + "</code>");
+      header.scenario_sha256.empty() ? "n/a (no file: the embedded default)"
+                                     : "<code>" + header.scenario_sha256 + "</code>");
   char site[200];
   std::snprintf(site, sizeof site,
                 "origin %.7f&deg; N, %.7f&deg; E, height %.2f m above the WGS-84 ellipsoid "
                 "(ellipsoidal, not above the geoid)",
-                hd.origin_lat_deg, hd.origin_lon_deg, hd.origin_height_m);
+                header.origin_lat_deg, header.origin_lon_deg, header.origin_height_m);
   Row(h, "site", site);
-  Row(h, "date and time of the run", XmlEscape(hd.run_started_utc));
-  Row(h, "scenario time 0", XmlEscape(hd.scenario_start_utc) + " (GNSS time the devices emulate)");
+  Row(h, "date and time of the run", XmlEscape(header.run_started_utc));
+  Row(h, "scenario time 0",
+      XmlEscape(header.scenario_start_utc) + " (GNSS time the devices emulate)");
   std::string dev = "<table class=\"inner\"><tr><th>device</th><th>links</th><th>profile</th></tr>";
-  for (const HeaderDevice& d : hd.devices)
+  for (const HeaderDevice& d : header.devices)
     dev += "<tr><td>" + XmlEscape(d.kind) + "</td><td>" + XmlEscape(d.links) + "</td><td>" +
            XmlEscape(d.profile) + "</td></tr>";
   Row(h, "devices", dev + "</table>");
   Row(h, "estimator under test",
-      "<code>" + XmlEscape(r.estimator_command) + "</code><br>" + XmlEscape(hd.estimator_build));
-  if (!hd.controller.empty())
-    Row(h, "controller under test", "<code>" + XmlEscape(hd.controller) + "</code>");
+      "<code>" + XmlEscape(r.estimator_command) + "</code><br>" +
+          XmlEscape(header.estimator_build));
+  if (!header.controller.empty())
+    Row(h, "controller under test", "<code>" + XmlEscape(header.controller) + "</code>");
   Row(h, "hil",
-      "version " + XmlEscape(hd.hil_version) + ", commit <code>" + XmlEscape(hd.hil_commit) +
-          "</code>");
+      "version " + XmlEscape(header.hil_version) + ", commit <code>" +
+          XmlEscape(header.hil_commit) + "</code>");
   Row(h, "machine",
-      XmlEscape(hd.cpu_model) + ", " + std::to_string(hd.cpus_online) + " CPUs online; kernel " +
-          XmlEscape(hd.kernel));
+      XmlEscape(header.cpu_model) + ", " + std::to_string(header.cpus_online) +
+          " CPUs online; kernel " + XmlEscape(header.kernel));
   char mode[200];
-  const std::string stepping = hd.stepping == r.mode ? "" : " (" + hd.stepping + ")";
+  const std::string stepping = header.stepping == r.mode ? "" : " (" + header.stepping + ")";
   std::snprintf(mode, sizeof mode, "%s%s, speed %.2fx; %.1f s simulated in %.2f s wall time",
                 r.mode.c_str(), stepping.c_str(), r.speed, r.sim_time_s, r.wall_time_s);
   Row(h, "mode", XmlEscape(mode));

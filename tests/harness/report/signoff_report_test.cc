@@ -117,6 +117,13 @@ TEST_F(SignoffReportTest, VirtualModeSaysTheLatencyChartDoesNotApply) {
   EXPECT_NE(h.find("the latency chart does not apply"), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(dir_ / "plots/latency_histogram.svg"));
   series_.latency_ms = {1.0, 2.0, 2.5};
+  report_.mode = "scaled x5";
+  header_.stepping = "lockstep";  // no per-byte schedule: says so
+  const std::string lockstep = Html();
+  EXPECT_EQ(lockstep.find("does not apply"), std::string::npos);
+  EXPECT_NE(lockstep.find("Lockstep: the links carry the virtual run's bytes"), std::string::npos);
+  report_.mode = "realtime";
+  header_.stepping = "free_running";
   header_.links = {{"ttyGPS", 100, "bytes", 10.0, 50.0, 80.0, 3}};
   const std::string rt = Html();
   EXPECT_EQ(rt.find("does not apply"), std::string::npos);
