@@ -3,6 +3,7 @@
 #include <dirent.h>
 #include <unistd.h>
 
+#include <filesystem>
 #include <regex>
 
 #include <gtest/gtest.h>
@@ -260,23 +261,32 @@ TEST(HilRunFaultsE2eTest, OutagesAreEvaluatedAndByteCorruptionReachesTheCapture)
   EXPECT_NE(ReadFile(dir / "run/report.html").find("GNSS outages"), std::string::npos);
 }
 
-TEST(HilReportE2eTest, ReportHtmlWithItsPlotImages) {
+TEST(HilReportE2eTest, ReportHtmlIsASelfContainedSignoffDocument) {
   TempDir dir("e2e_html");
   WriteFile(dir / "s.yaml", "name: html\nduration_s: 15\n" + kOrigin);
   const CommandResult r = RunCommand(Hil() + " run " + dir / "s.yaml" + " --out " + dir / "run");
   ASSERT_EQ(r.exit_code, 0) << r.out;
   const std::string html = ReadFile(dir / "run/report.html");
   ASSERT_FALSE(html.empty());
-  const std::regex img("<img src=\"([^\"]+)\"");
-  std::size_t images = 0;
-  for (auto it = std::sregex_iterator(html.begin(), html.end(), img); it != std::sregex_iterator();
-       ++it) {
-    const std::string svg = ReadFile(dir / ("run/" + (*it)[1].str()));
-    EXPECT_EQ(svg.rfind("<svg", 0), 0u) << (*it)[1];
-    EXPECT_NE(svg.find("</svg>"), std::string::npos);
-    ++images;
-  }
-  EXPECT_EQ(images, 4u) << "trajectory, horizontal error, error CDF, latency histogram";
+  // one file: the charts inline, nothing fetched when it is viewed
+  EXPECT_EQ(html.find("<img"), std::string::npos);
+  EXPECT_EQ(html.find("<script"), std::string::npos);
+  const std::regex svg("<svg xmlns=");
+  const auto charts =
+      std::distance(std::sregex_iterator(html.begin(), html.end(), svg), std::sregex_iterator());
+  EXPECT_EQ(charts, 6) << "map, worst segment, cross-track, error against time, NEES, error CDF";
+  EXPECT_NE(html.find("the latency chart does not apply"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(dir / "run/plots/latency_histogram.svg"));
+  // the header is true: the scenario file's SHA-256, the site (ellipsoidal height), the seed
+  const CommandResult sha = RunCommand("sha256sum " + dir / "s.yaml");
+  ASSERT_EQ(sha.exit_code, 0);
+  EXPECT_NE(html.find("<code>" + sha.out.substr(0, 64) + "</code>"), std::string::npos);
+  EXPECT_NE(html.find("35.4796096&deg; N, 50.5979765&deg; E, height 1312.00 m above the WGS-84 "
+                      "ellipsoid"),
+            std::string::npos);
+  EXPECT_NE(html.find("<td>gnss_receiver</td><td>ttyGPS</td><td>profile neo-5m"),
+            std::string::npos);
+  EXPECT_NE(html.find("<th>seed</th><td>1</td>"), std::string::npos);
   EXPECT_NE(html.find("PASS"), std::string::npos);
   EXPECT_NE(ReadFile(dir / "run/plots/trajectory.svg").find("<polyline"), std::string::npos);
 }

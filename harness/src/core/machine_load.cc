@@ -78,4 +78,18 @@ MachineFigures ReadMachineFigures() {
   return m;
 }
 
+std::string ReadCpuModel() {
+  std::istringstream info(ReadText("/proc/cpuinfo"));
+  for (std::string line; std::getline(info, line);) {
+    if (line.rfind("model name", 0) != 0) continue;
+    const std::size_t colon = line.find(':');
+    if (colon == std::string::npos) continue;
+    std::string name = line.substr(colon + 1);
+    while (!name.empty() && name.front() == ' ') name.erase(name.begin());
+    if (!name.empty()) return name;
+  }
+  utsname u{};
+  return uname(&u) == 0 ? std::string(u.machine) : "unknown";
+}
+
 }  // namespace hil::harness

@@ -1,6 +1,8 @@
 // The device table (device_kind.h): one row per kind of device, in build order. Each kind's row is
 // defined in its folder (harness/src/devices/<kind>/<kind>_kind.cc), as gpsd's drivers are.
 #include <algorithm>
+#include <cstdarg>
+#include <cstdio>
 
 #include "hil/harness/devices/device_kind.h"
 
@@ -27,6 +29,15 @@ constexpr const DeviceKind* kTable[] = {
 }  // namespace
 
 std::span<const DeviceKind* const> DeviceKinds() { return kTable; }
+
+std::string ProfileText(const char* format, ...) {
+  char b[256];
+  va_list args;
+  va_start(args, format);
+  std::vsnprintf(b, sizeof b, format, args);
+  va_end(args);
+  return b;
+}
 
 const DeviceKind* DeviceKindOfLink(const Scenario& s, const std::string& link) {
   for (const DeviceKind* k : kTable) {

@@ -9,6 +9,22 @@
 #include "hil/harness/report/report_plot_blocks.h"
 
 namespace hil::harness {
+
+PlotChart SteeringChart(const ReportSeries& s) {
+  PlotChart c;
+  c.id = "steering";
+  c.title = "Steering: commanded against actual yaw rate (control ticks)";
+  c.x_label = "time (s)";
+  c.y_label = "yaw rate, + left (deg/s)";
+  PlotSeries cmd = NamedSeries("commanded", "#d62728"), act = NamedSeries("actual", "#1f77b4");
+  cmd.x = s.tick_t_s;
+  cmd.y = s.commanded_yaw_rate_dps;
+  act.x = s.tick_t_s;
+  act.y = s.actual_yaw_rate_dps;
+  c.series = {cmd, act};
+  return c;
+}
+
 void WriteClosedLoopPlots(const RunReport& r, const ReportSeries& s, const std::string& dir,
                           std::vector<std::string>& files) {
   {
@@ -33,19 +49,7 @@ void WriteClosedLoopPlots(const RunReport& r, const ReportSeries& s, const std::
     c.series = {x};
     WritePlot(c, dir, "plots/cross_track.svg", files);
   }
-  {
-    PlotChart c;
-    c.title = "Steering: commanded against actual yaw rate (control ticks)";
-    c.x_label = "time (s)";
-    c.y_label = "yaw rate, + left (deg/s)";
-    PlotSeries cmd = NamedSeries("commanded", "#d62728"), act = NamedSeries("actual", "#1f77b4");
-    cmd.x = s.tick_t_s;
-    cmd.y = s.commanded_yaw_rate_dps;
-    act.x = s.tick_t_s;
-    act.y = s.actual_yaw_rate_dps;
-    c.series = {cmd, act};
-    WritePlot(c, dir, "plots/steering.svg", files);
-  }
+  WritePlot(SteeringChart(s), dir, "plots/steering.svg", files);
 }
 
 }  // namespace hil::harness

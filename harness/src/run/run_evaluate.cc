@@ -438,7 +438,7 @@ void WriteRunFolder(RunContext& ctx, RunEvaluation& ev) {
   if (ctx.options.html) {
     ev.series = scoring.TakeSeries();
     if (ctx.scenario.closed_loop.enabled) AddClosedLoopSeries(ctx, ev.series);
-    Attempt(report, [&] { WriteReportHtml(report, ev.series, dir); });
+    Attempt(report, [&] { WriteReportHtml(report, ev.series, MakeRunHeader(ctx), dir); });
   }
   Attempt(report, [&] { WriteJunitXml(report, dir + "/junit.xml"); });
   WriteReportJson(report, dir + "/report.json");

@@ -27,6 +27,8 @@ struct RunEvaluation {
   TruthTable truth;  ///< closed loop: the whole truth.csv grid (open loop: the run's last samples)
   ReportSeries series;
 };
+/// What report.html's header says was tested, and the harness's own figures (run_header.cc).
+RunHeader MakeRunHeader(const RunContext& ctx);
 /// Metrics, baselines, timing, outages, counters, fault injections and criteria into ctx.report.
 RunEvaluation Evaluate(RunContext& ctx);
 /// The run folder: CSVs, schedule errors, report.html, junit.xml and report.json last (written

@@ -220,6 +220,8 @@ ReportSeries RunScoring::TakeSeries() {
   s.estimate_cdf = CdfPoints(est_.accuracy.horizontal(), ReportSeries::kCdfPoints);
   s.fix_cdf = CdfPoints(fix_.accuracy.horizontal(), ReportSeries::kCdfPoints);
   s.latency_ms = latency_ms_;
+  // the open loop's map draws the planned path (closed loop: AddClosedLoopSeries)
+  if (!setup_.scenario->closed_loop.enabled) s.path_en_m = path_.vertices();
   return s;
 }
 

@@ -100,6 +100,16 @@ std::vector<std::string> GnssReceiverNavdLinks(const Scenario& s) {
   return links;
 }
 
+// The header's line: profile, rate, baud, receivers, the first antenna's lever arm.
+std::string GnssReceiverProfile(const Scenario& s) {
+  const Eigen::Vector3d& a = s.gnss.model.p_BA_B_m;
+  return ProfileText(
+      "profile %s, %g Hz, %d Bd, %zu receiver(s); antenna at (%.2f, %.2f, %.2f) m "
+      "in the body frame (forward, left, up)",
+      s.gnss.profile.c_str(), s.gnss.rate_hz, s.gnss.baud, s.gnss.receivers.size(), a.x(), a.y(),
+      a.z());
+}
+
 }  // namespace
 
 extern const DeviceKind kGnssReceiverKind;
@@ -114,6 +124,7 @@ const DeviceKind kGnssReceiverKind{.name = "gnss_receiver",
                                    .links = GnssReceiverLinks,
                                    .navd_links = GnssReceiverNavdLinks,
                                    .report_section = "link_integrity",
-                                   .link_role = "gnss"};
+                                   .link_role = "gnss",
+                                   .profile = GnssReceiverProfile};
 
 }  // namespace hil::harness

@@ -21,6 +21,14 @@ std::vector<std::string> LidarLinks(const Scenario& s) {
 
 constexpr std::string_view kLidarSections[] = {"lidar"};
 
+// The header's line: the model and its rotation.
+std::string LidarProfile(const Scenario& s) {
+  return ProfileText("RPLIDAR %s, %g Hz rotation, %g-%g m",
+                     s.lidar.config.model == lidar::RplidarModel::kA1M8 ? "A1M8" : "A2M8",
+                     s.lidar.config.rotation_hz, s.lidar.config.min_range_m,
+                     s.lidar.config.max_range_m);
+}
+
 }  // namespace
 
 extern const DeviceKind kLidarKind;
@@ -35,6 +43,7 @@ const DeviceKind kLidarKind{.name = "lidar",
                             .links = LidarLinks,
                             .navd_links = nullptr,
                             .report_section = "link_integrity",
-                            .link_role = ""};
+                            .link_role = "",
+                            .profile = LidarProfile};
 
 }  // namespace hil::harness

@@ -71,6 +71,13 @@ std::vector<std::string> McuNavdLinks(const Scenario& s) {
   return {s.mcu.link};
 }
 
+// The header's line: the IMU profile, its rates and baud.
+std::string McuProfile(const Scenario& s) {
+  const auto& c = s.mcu.config;
+  return ProfileText("IMU profile %s, IMU %g Hz, compass %g Hz, %d Bd%s", c.profile.name.c_str(),
+                     c.imu_rate_hz, c.mag_rate_hz, c.baud, c.can.enabled ? ", J1939 on CAN" : "");
+}
+
 }  // namespace
 
 extern const DeviceKind kMcuKind;
@@ -85,6 +92,7 @@ const DeviceKind kMcuKind{.name = "mcu",
                           .links = McuLinks,
                           .navd_links = McuNavdLinks,
                           .report_section = "link_integrity",
-                          .link_role = "imu"};
+                          .link_role = "imu",
+                          .profile = McuProfile};
 
 }  // namespace hil::harness

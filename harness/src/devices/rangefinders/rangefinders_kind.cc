@@ -32,6 +32,11 @@ std::vector<std::string> RangefinderLinks(const Scenario& s) {
 
 constexpr std::string_view kRangefindersSections[] = {"rangefinders"};
 
+// The header's line: how many units.
+std::string RangefindersProfile(const Scenario& s) {
+  return ProfileText("%zu TF-Luna laser rangefinder(s)", s.rangefinders.units.size());
+}
+
 }  // namespace
 
 extern const DeviceKind kRangefindersKind;
@@ -46,6 +51,7 @@ const DeviceKind kRangefindersKind{.name = "rangefinders",
                                    .links = RangefinderLinks,
                                    .navd_links = nullptr,
                                    .report_section = "link_integrity",
-                                   .link_role = ""};
+                                   .link_role = "",
+                                   .profile = RangefindersProfile};
 
 }  // namespace hil::harness

@@ -21,6 +21,13 @@ std::vector<std::string> RtkBaseLinks(const Scenario& s) {
 
 constexpr std::string_view kRtkBaseSections[] = {"rtk_base"};
 
+// The header's line: the station, its messages and the radio's rate.
+std::string RtkBaseProfile(const Scenario& s) {
+  const auto& c = s.rtk_base.config;
+  return ProfileText("RTCM 3 station %d, MSM%d, %d, %g Hz, radio %d Bd", c.station_id,
+                     static_cast<int>(c.msm), c.station_message, c.obs_rate_hz, c.baud);
+}
+
 }  // namespace
 
 extern const DeviceKind kRtkBaseKind;
@@ -35,6 +42,7 @@ const DeviceKind kRtkBaseKind{.name = "rtk_base",
                               .links = RtkBaseLinks,
                               .navd_links = nullptr,
                               .report_section = "link_integrity",
-                              .link_role = ""};
+                              .link_role = "",
+                              .profile = RtkBaseProfile};
 
 }  // namespace hil::harness

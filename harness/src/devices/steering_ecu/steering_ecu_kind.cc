@@ -34,6 +34,14 @@ std::vector<std::string> SteeringEcuLinks(const Scenario& s) {
   return {s.closed_loop.link};
 }
 
+// The header's line: the transport and the set speed.
+std::string SteeringEcuProfile(const Scenario& s) {
+  const auto& c = s.closed_loop.isobus;
+  return ProfileText("ISO 11783-7 steering ECU over %s, set speed %g m/s",
+                     c.transport == actuator::IsobusTransport::kSlcan ? "slcan" : "SocketCAN",
+                     c.speed_mps);
+}
+
 }  // namespace
 
 extern const DeviceKind kSteeringEcuKind;
@@ -49,6 +57,7 @@ const DeviceKind kSteeringEcuKind{
     .links = SteeringEcuLinks,
     .navd_links = nullptr,
     .report_section = "closed_loop",
-    .link_role = ""};
+    .link_role = "",
+    .profile = SteeringEcuProfile};
 
 }  // namespace hil::harness

@@ -30,6 +30,12 @@ std::vector<std::string> UwbTagNavdLinks(const Scenario& s) {
   return {s.uwb.link};
 }
 
+// The header's line: the tag's rate and baud.
+std::string UwbTagProfile(const Scenario& s) {
+  return ProfileText("Nooploop LinkTrack tag, %g Hz, %d Bd, 4 anchors", s.uwb.config.rate_hz,
+                     s.uwb.config.baud);
+}
+
 }  // namespace
 
 extern const DeviceKind kUwbTagKind;
@@ -44,6 +50,7 @@ const DeviceKind kUwbTagKind{.name = "uwb_tag",
                              .links = UwbTagLinks,
                              .navd_links = UwbTagNavdLinks,
                              .report_section = "link_integrity",
-                             .link_role = ""};
+                             .link_role = "",
+                             .profile = UwbTagProfile};
 
 }  // namespace hil::harness

@@ -69,6 +69,15 @@ constexpr std::string_view kWheelBaseNavdKeys[] = {
     "odometry.origin_height_m", "odometry.initial_e_m",
     "odometry.initial_n_m",     "odometry.initial_heading_deg"};
 
+// The header's line: the base's wheels and PID rate.
+std::string WheelBaseProfile(const Scenario& s) {
+  const auto& m = s.closed_loop.motors;
+  return ProfileText(
+      "ROSArduinoBridge differential-drive base: wheel radius %.3f m, track %.3f m, "
+      "%d counts/rev, PID %g Hz",
+      m.wheel_radius_m, m.track_m, m.encoder_counts_per_rev, s.closed_loop.pid_rate_hz);
+}
+
 }  // namespace
 
 extern const DeviceKind kWheelBaseKind;
@@ -84,6 +93,7 @@ const DeviceKind kWheelBaseKind{
     .links = WheelBaseLinks,
     .navd_links = nullptr,
     .report_section = "closed_loop",
-    .link_role = ""};
+    .link_role = "",
+    .profile = WheelBaseProfile};
 
 }  // namespace hil::harness

@@ -42,6 +42,13 @@ std::vector<std::string> Wt901cNavdLinks(const Scenario& s) {
   return {s.wt901c.link};
 }
 
+// The header's line: the output rate its RRATE register sets.
+std::string Wt901cProfile(const Scenario& s) {
+  return ProfileText("WitMotion WT901C, %g Hz (RRATE 0x%02X), BAUD code 0x%02X",
+                     wit::RateHzOfCode(s.wt901c.config.rrate_code), s.wt901c.config.rrate_code,
+                     s.wt901c.config.baud_code);
+}
+
 }  // namespace
 
 extern const DeviceKind kWt901cKind;
@@ -56,6 +63,7 @@ const DeviceKind kWt901cKind{.name = "wt901c",
                              .links = Wt901cLinks,
                              .navd_links = Wt901cNavdLinks,
                              .report_section = "link_integrity",
-                             .link_role = ""};
+                             .link_role = "",
+                             .profile = Wt901cProfile};
 
 }  // namespace hil::harness

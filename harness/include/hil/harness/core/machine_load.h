@@ -47,4 +47,8 @@ struct MachineFigures {
 };
 MachineFigures ReadMachineFigures();
 
+/// The CPU's model name (the first `model name` of /proc/cpuinfo, e.g. "AMD EPYC 7B13"), or the
+/// machine's architecture (uname) when /proc/cpuinfo names none (some ARM kernels).
+std::string ReadCpuModel();
+
 }  // namespace hil::harness

@@ -94,7 +94,13 @@ struct DeviceKind {
   /// Its links' role in report.json's link_integrity: which of navd's counters speak for them
   /// (link_integrity.h); empty: each link is a role of its own.
   std::string_view link_role;
+  /// The device as the scenario configures it, in words (model or profile, rate, baud), for the
+  /// header of report.html; called only when `links(s)` is not empty.
+  std::string (*profile)(const Scenario& s) = nullptr;
 };
+
+/// printf-style text for the rows' `profile`.
+std::string ProfileText(const char* format, ...) __attribute__((format(printf, 1, 2)));
 
 /// The seed of a kind's random stream: seed × kSeedStride + its seed_stream.
 inline constexpr std::uint64_t kSeedStride = 1000003ULL;

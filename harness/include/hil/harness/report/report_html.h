@@ -1,9 +1,12 @@
 #pragma once
 /// @file
-/// The human-readable run report: RUN_DIR/report.html with its plots as SVG images in
-/// RUN_DIR/plots/ — trajectory (truth, estimate, raw GNSS), horizontal error against time with the
-/// GNSS outages shaded, the empirical CDF of the horizontal error, and (real-time runs) the latency
-/// histogram — followed by the verdict table, the metrics, outages and the run's artefacts.
+/// The human-readable run report, a sign-off document: RUN_DIR/report.html, one self-contained
+/// file (its charts are inline SVG, nothing is fetched when it is viewed; it prints to PDF from a
+/// browser). It says what was tested (run_header.h), the verdict with each criterion's meaning,
+/// the values outside their band, the map with a zoom on the worst segment, the cross-track error
+/// over distance, the error against time with GNSS outages shaded, the NEES with its χ² bands,
+/// the accuracy against the raw fixes, the faults with their effects, what the harness measured
+/// of itself, and a signature block. Each chart is also written to RUN_DIR/plots/*.svg.
 
 #include <string>
 #include <utility>
@@ -14,6 +17,8 @@
 #include "hil/harness/eval/evaluator.h"
 #include "hil/harness/eval/quantile_sketch.h"
 #include "hil/harness/report/report.h"
+#include "hil/harness/report/run_header.h"
+#include "hil/harness/report/svg_plot.h"
 
 namespace hil::harness {
 
@@ -43,12 +48,14 @@ struct ReportSeries {
 void WriteClosedLoopPlots(const RunReport& report, const ReportSeries& series,
                           const std::string& run_dir, std::vector<std::string>& files);
 
-/// The plot files written, relative to the run folder.
-std::vector<std::string> WritePlots(const RunReport& report, const ReportSeries& series,
-                                    const std::string& run_dir);
+/// Closed loop: commanded against actual yaw rate at each control tick.
+PlotChart SteeringChart(const ReportSeries& series);
+
+/// The latency histogram; @pre series.latency_ms is not empty (real time or scaled).
+PlotChart LatencyChart(const ReportSeries& series);
 
 /// Writes RUN_DIR/report.html (and the plots). @throws std::runtime_error naming the file.
-void WriteReportHtml(const RunReport& report, const ReportSeries& series,
+void WriteReportHtml(const RunReport& report, const ReportSeries& series, const RunHeader& header,
                      const std::string& run_dir);
 
 }  // namespace hil::harness
