@@ -105,10 +105,11 @@ TEST(LockstepDeterminismE2E, WallClockDriverGivesTheSameBytesAndStampsTheirArriv
   ASSERT_GT(reads.size(), 100u);
   std::string sent, read;
   std::size_t next_chunk = 0;
-  for (const auto& [t, bytes] : reads) {
+  for (std::size_t i = 0; i < reads.size(); ++i) {
+    const auto& [t, bytes] = reads[i];
     read += bytes;
     while (next_chunk < chunks.size() && chunks[next_chunk].first <= t) sent += chunks[next_chunk++].second;
-    ASSERT_EQ(read.size(), sent.size()) << "read stamped at t = " << t << " ns";
+    ASSERT_EQ(read.size(), sent.size()) << "read " << i << " stamped at t = " << t << " ns";
   }
   EXPECT_TRUE(read == sent);
 }

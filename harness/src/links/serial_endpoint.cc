@@ -225,9 +225,9 @@ std::size_t SerialEndpoint::ChunksEndedBy(Time t) const {
   return n;
 }
 
-void SerialEndpoint::WriteChunksOrDrop(std::size_t chunks) {
+std::size_t SerialEndpoint::WriteChunksOrDrop(std::size_t chunks) {
   chunks = std::min(chunks, pending_.size());
-  if (chunks == 0) return;
+  if (chunks == 0) return 0;
   write_buffer_.clear();
   for (std::size_t i = 0; i < chunks; ++i)
     write_buffer_.append(pending_[i].first.bytes, i == 0 ? pending_offset_ : 0, std::string::npos);
@@ -238,6 +238,7 @@ void SerialEndpoint::WriteChunksOrDrop(std::size_t chunks) {
   bytes_dropped_attached_ += lost;
   Consume(sent, CaptureDir::kTx, 0);
   Consume(lost, CaptureDir::kDrop, 0);
+  return sent;
 }
 
 std::size_t SerialEndpoint::queued_bytes() const {

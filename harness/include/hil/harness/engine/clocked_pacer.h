@@ -34,8 +34,15 @@ class ClockedPacer final : public Pacer {
 
   /// The earliest end of a chunk still waiting, if any.
   std::optional<Time> NextChunkEnd() const;
-  /// Writes every waiting chunk that has ended by `t`; true when any was.
+  /// Writes every waiting chunk that has ended by `t`, and waits until the kernel has handed them
+  /// to the host's side of the pty (see kHandOverBytes); true when any was.
   bool WriteDue(Time t);
+  /// What the host side's line discipline holds at most (N_TTY's buffer, 4 KB, less one): the
+  /// bytes beyond it stay in the pty's flip buffers, so how a backlog larger than this is split
+  /// among the host's reads depends on the machine.
+  static constexpr std::size_t kHandOverBytes = 4095;
+  /// How long (wall) WriteDue waits for the kernel's hand-over before it goes on.
+  static constexpr std::int64_t kHandOverLimitNs = 100'000'000;
 
  private:
   std::vector<SerialEndpoint*> endpoints_;

@@ -74,8 +74,8 @@ class SerialEndpoint {
   /// Writes the first `chunks` waiting chunks in one write without waiting: what the host's input
   /// queue cannot take now is dropped, as a UART's bytes that nobody reads (captured as `drop`,
   /// counted in bytes_dropped_attached()). The host is idle when this is called, so what it takes
-  /// depends only on what it read before.
-  void WriteChunksOrDrop(std::size_t chunks);
+  /// depends only on what it read before. Returns the bytes written.
+  std::size_t WriteChunksOrDrop(std::size_t chunks);
   /// Bytes waiting to be written.
   std::size_t queued_bytes() const;
   /// Writes out the capture's buffer (a failed write is noted, ReportWriteFailuresTo).
