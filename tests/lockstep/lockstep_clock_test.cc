@@ -4,7 +4,6 @@
 // memory alone when they wait, and until when.
 #include <fcntl.h>
 #include <signal.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -14,6 +13,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include "hil/harness/lockstep/lockstep_host.h"
 

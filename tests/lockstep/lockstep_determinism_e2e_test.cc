@@ -3,7 +3,11 @@
 // u-blox driver) configures the emulated NEO-5M of default_ubx_configure. On hil's clock its
 // dialogue and every byte of both directions are the same in every run, and the clock it stamps
 // each read with is the emulated time the bytes it read had arrived by: the bytes read up to a
-// stamp are exactly the bytes whose last bit had left the UART by then.
+// stamp are exactly the bytes whose last bit had left the UART by then. The last run shares the
+// machine with a busy process.
+#include <signal.h>
+#include <unistd.h>
+
 #include <cstdint>
 #include <fstream>
 #include <map>
@@ -13,6 +17,7 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <sys/wait.h>
 
 #include "cli_runner.h"
 
@@ -61,11 +66,30 @@ std::vector<std::pair<std::int64_t, std::string>> Reads(const std::string& log) 
   return out;
 }
 
-CommandResult RunDriver(const std::string& out) {
+// A process that keeps one CPU busy until it is killed.
+pid_t StartBusyProcess() {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    volatile unsigned long n = 0;
+    for (;;) n = n + 1;
+  }
+  return pid;
+}
+
+// Runs the driver as the estimator into `out`; `loaded`: beside a busy process, at its priority
+// (at hil's default nice -10 the busy process would hardly disturb it).
+CommandResult RunDriver(const std::string& out, bool loaded) {
   const std::string scenario = SourceDir() + "/vectors/scenarios/default_ubx_configure.yaml";
   const std::string driver = std::string(HIL_UBX_TIMEOUT_DRIVER) + " {ttyGPS} {run_dir}/reads.log";
-  return RunCommand(BinDir() + "/hil run " + scenario + " --lockstep --no-html --set duration_s=40" +
-                    " --estimator '" + driver + "' --out " + out);
+  const pid_t busy = loaded ? StartBusyProcess() : 0;
+  const CommandResult r =
+      RunCommand(BinDir() + "/hil run " + scenario + " --lockstep --no-html --set duration_s=40" +
+                 " --estimator '" + driver + "' --out " + out + (loaded ? " --nice 0" : ""));
+  if (busy > 0) {
+    kill(busy, SIGKILL);
+    waitpid(busy, nullptr, 0);
+  }
+  return r;
 }
 
 TEST(LockstepDeterminismE2E, WallClockDriverGivesTheSameBytesAndStampsTheirArrival) {
@@ -73,7 +97,7 @@ TEST(LockstepDeterminismE2E, WallClockDriverGivesTheSameBytesAndStampsTheirArriv
   std::map<std::string, std::string> first;
   for (int run = 0; run < kRuns; ++run) {
     const std::string out = dir / ("run" + std::to_string(run));
-    const CommandResult r = RunDriver(out);
+    const CommandResult r = RunDriver(out, run == kRuns - 1);
     ASSERT_LE(r.exit_code, 1) << r.out;
     const auto report = nlohmann::json::parse(ReadFile(out + "/report.json"));
     ASSERT_TRUE(report.contains("lockstep")) << r.out;
@@ -108,7 +132,8 @@ TEST(LockstepDeterminismE2E, WallClockDriverGivesTheSameBytesAndStampsTheirArriv
   for (std::size_t i = 0; i < reads.size(); ++i) {
     const auto& [t, bytes] = reads[i];
     read += bytes;
-    while (next_chunk < chunks.size() && chunks[next_chunk].first <= t) sent += chunks[next_chunk++].second;
+    while (next_chunk < chunks.size() && chunks[next_chunk].first <= t)
+      sent += chunks[next_chunk++].second;
     ASSERT_EQ(read.size(), sent.size()) << "read " << i << " stamped at t = " << t << " ns";
   }
   EXPECT_TRUE(read == sent);

@@ -15,8 +15,7 @@
 namespace hil::harness {
 
 ControllerProcess::ControllerProcess(const std::string& command, int pgid,
-                                     const std::string& log_path,
-                                     const std::string& shell_prefix) {
+                                     const std::string& log_path, const std::string& shell_prefix) {
   const int log_fd = open(log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (log_fd < 0)
     throw std::runtime_error("cannot write " + log_path + ": " + std::strerror(errno));

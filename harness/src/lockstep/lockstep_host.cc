@@ -1,9 +1,6 @@
 #include "hil/harness/lockstep/lockstep_host.h"
 
 #include <fcntl.h>
-#include <linux/futex.h>
-#include <sys/mman.h>
-#include <sys/syscall.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -15,6 +12,10 @@
 #include <fstream>
 #include <new>
 #include <stdexcept>
+
+#include <linux/futex.h>
+#include <sys/mman.h>
+#include <sys/syscall.h>
 
 #include "hil/harness/lockstep/lockstep_shared.h"
 
@@ -129,6 +130,20 @@ bool LockstepHost::WaitIdle(const WaitStep& on_wait) {
   shared_->hil_waiting.store(0);
   stats_.wait_ns += MonotonicNs() - start;
   return idle;
+}
+
+bool LockstepHost::NeedsWake(Time t, bool bytes_written) const {
+  const std::uint32_t change = shared_->change.load();
+  const std::int64_t t_ns = (t - Time{}).count();
+  const int used = std::min(shared_->slots_used.load(), kMaxThreads);
+  for (int i = 0; i < used; ++i) {
+    const ThreadSlot& s = shared_->slots[i];
+    if (!SlotIdle(s, change)) return true;
+    if (s.tid.load() == 0) continue;
+    if (s.deadline_ns.load() <= t_ns || (bytes_written && s.on_descriptors.load() != 0))
+      return true;
+  }
+  return false;
 }
 
 std::optional<Time> LockstepHost::EarliestDeadline() const {

@@ -1,8 +1,9 @@
 // The clocks a program reads, on hil's emulated time (README.md): clock_gettime for the
 // REALTIME, MONOTONIC and BOOTTIME clocks (and their COARSE and RAW variants), gettimeofday,
 // time and timespec_get. Other clocks (CPU time, TAI) are the real ones.
-#include <sys/time.h>
 #include <time.h>
+
+#include <sys/time.h>
 
 #include "preload_state.h"
 
@@ -20,12 +21,13 @@ int clock_gettime(clockid_t clock, timespec* ts) noexcept {
   return 0;
 }
 
-__attribute__((optimize("no-delete-null-pointer-checks"))) int gettimeofday(timeval* tv,
-                                                                         void* tz) noexcept {
+int gettimeofday(timeval* tv, void* tz) noexcept {
   timespec ts{};
   clock_gettime(CLOCK_REALTIME, &ts);
-  // glibc declares tv non-null; programs pass null all the same (only the zone wanted)
-  if (timeval* out = tv; out != nullptr) {
+  // glibc declares tv non-null; programs pass null all the same (only the zone wanted): a
+  // volatile copy keeps the compiler from taking the declaration's word for it
+  timeval* volatile out = tv;
+  if (out != nullptr) {
     out->tv_sec = ts.tv_sec;
     out->tv_usec = ts.tv_nsec / 1000;
   }

@@ -13,12 +13,10 @@ namespace {
 using hil::preload::EmulatedNowNs;
 using hil::preload::Wait;
 
-long NeverReady(void* /*arg*/) { return 0; }
-
 // Sleeps until emulated `deadline_ns`: 0, EINTR (with the time left in `rem`), or -1 when
 // unmanaged (the caller sleeps the real way).
 int SleepUntil(std::int64_t deadline_ns, timespec* rem) {
-  const long r = Wait(NeverReady, nullptr, deadline_ns);
+  const long r = Wait(nullptr, nullptr, deadline_ns);
   if (r == hil::preload::kUnmanaged) return -1;
   if (r == hil::preload::kInterrupted) {
     if (rem) *rem = hil::preload::ToTimespec(deadline_ns - EmulatedNowNs());
@@ -49,11 +47,12 @@ int nanosleep(const timespec* req, timespec* rem) {
 }
 
 int clock_nanosleep(clockid_t clock, int flags, const timespec* req, timespec* rem) {
-  if (!hil::preload::Emulated(clock)) return hil::preload::Real().clock_nanosleep(clock, flags, req, rem);
+  if (!hil::preload::Emulated(clock))
+    return hil::preload::Real().clock_nanosleep(clock, flags, req, rem);
   if (BadTimespec(req)) return EINVAL;
-  const std::int64_t deadline =
-      (flags & TIMER_ABSTIME) != 0 ? hil::preload::EmulatedTimeOf(clock, hil::preload::ToNs(*req))
-                                   : EmulatedNowNs() + hil::preload::ToNs(*req);
+  const std::int64_t deadline = (flags & TIMER_ABSTIME) != 0
+                                    ? hil::preload::EmulatedTimeOf(clock, hil::preload::ToNs(*req))
+                                    : EmulatedNowNs() + hil::preload::ToNs(*req);
   const int r = SleepUntil(deadline, (flags & TIMER_ABSTIME) != 0 ? nullptr : rem);
   if (r < 0) return hil::preload::Real().clock_nanosleep(clock, flags, req, rem);
   return r;

@@ -5,10 +5,11 @@
 #include <poll.h>
 #include <pthread.h>
 #include <signal.h>
-#include <sys/epoll.h>
-#include <sys/select.h>
 
 #include <cerrno>
+
+#include <sys/epoll.h>
+#include <sys/select.h>
 
 #include "preload_state.h"
 

@@ -3,16 +3,17 @@
 
 #include <dlfcn.h>
 #include <fcntl.h>
-#include <linux/futex.h>
 #include <pthread.h>
-#include <sys/mman.h>
-#include <sys/syscall.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <climits>
 #include <cstdlib>
 #include <cstring>
+
+#include <linux/futex.h>
+#include <sys/mman.h>
+#include <sys/syscall.h>
 
 namespace hil::preload {
 namespace lk = harness::lockstep;
@@ -210,9 +211,10 @@ long Wait(long (*ready)(void* arg), void* arg, std::int64_t deadline_ns) {
   if (!s) return kUnmanaged;
   const int saved_errno = errno;
   // met already: the call returns as the real one would, without a word to anyone
-  if (const long r = ready(arg); r != 0) return r;
+  if (const long r = ready ? ready(arg) : 0; r != 0) return r;
   if (deadline_ns != lk::kNoDeadline && g_shared->now_ns.load() >= deadline_ns) return kDeadline;
   s->deadline_ns.store(deadline_ns);
+  s->on_descriptors.store(ready ? 1 : 0);
   s->state.store(lk::kWaiting);
   s->waits.fetch_add(1);
   // what this thread did before it waits may be what another waits for: everyone looks again
@@ -220,7 +222,7 @@ long Wait(long (*ready)(void* arg), void* arg, std::int64_t deadline_ns) {
   Futex(&g_shared->change, FUTEX_WAKE, INT_MAX);
   for (;;) {
     const std::uint32_t c = g_shared->change.load();
-    const long r = ready(arg);
+    const long r = ready ? ready(arg) : 0;
     if (r != 0) {
       s->state.store(lk::kRunning);
       return r;

@@ -5,12 +5,13 @@
 // exception, no lock: the calls may run in any thread at any time.
 
 #include <poll.h>
-#include <sys/epoll.h>
-#include <sys/select.h>
-#include <sys/types.h>
 #include <time.h>
 
 #include <cstdint>
+
+#include <sys/epoll.h>
+#include <sys/select.h>
+#include <sys/types.h>
 
 #include "hil/harness/lockstep/lockstep_shared.h"
 
@@ -52,14 +53,15 @@ timespec ToTimespec(std::int64_t ns);
 
 /// What Wait returns besides a readiness check's own answer (> 0, or −1 with errno).
 enum WaitEnd : long {
-  kDeadline = 0,             ///< the deadline came
-  kUnmanaged = -1000,        ///< no slot (no hil, or the slots are full): block the real way
-  kInterrupted = -1001,      ///< a signal arrived (the caller returns EINTR)
+  kDeadline = 0,         ///< the deadline came
+  kUnmanaged = -1000,    ///< no slot (no hil, or the slots are full): block the real way
+  kInterrupted = -1001,  ///< a signal arrived (the caller returns EINTR)
 };
 
-/// Waits in emulated time until `ready(arg)` (a non-blocking look: > 0 met, −1 failed with errno,
-/// 0 not yet) or until emulated time reaches `deadline_ns` (kNoDeadline: none); see the protocol
-/// in lockstep_shared.h. Returns ready's answer or a WaitEnd.
+/// Waits in emulated time until `ready(arg)` (a non-blocking look at descriptors: > 0 met, −1
+/// failed with errno, 0 not yet; null: a sleep, never met) or until emulated time reaches
+/// `deadline_ns` (kNoDeadline: none); see the protocol in lockstep_shared.h. Returns ready's
+/// answer or a WaitEnd.
 long Wait(long (*ready)(void* arg), void* arg, std::int64_t deadline_ns);
 
 }  // namespace hil::preload

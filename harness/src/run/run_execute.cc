@@ -67,9 +67,10 @@ std::unique_ptr<HostTurns> MakeClockedTurns(RunContext& ctx, RunWatchdog& watchd
   ctx.pacer = std::move(pacer);
   if (ctx.scenario.closed_loop.enabled && ctx.set.can && ctx.set.steering)
     ctx.set.can->set_stamp_at_turns(true);
-  return std::make_unique<ClockedHostTurns>(
-      *ctx.shared_clock, clocked,
-      [&watchdog](std::size_t busy, bool new_wait) { return watchdog.OnLockstepWait(busy, new_wait); });
+  return std::make_unique<ClockedHostTurns>(*ctx.shared_clock, clocked,
+                                            [&watchdog](std::size_t busy, bool new_wait) {
+                                              return watchdog.OnLockstepWait(busy, new_wait);
+                                            });
 }
 
 // Virtual mode (or lockstep) with an estimator: host turns, and a gate through which the host
@@ -259,7 +260,8 @@ void NoteLockstep(RunContext& ctx) {
   if (!ctx.shared_clock || !ctx.report.lockstep) return;
   LockstepReport& r = *ctx.report.lockstep;
   if (ctx.clocked) {
-    for (const auto& p : ctx.shared_clock->Processes()) r.processes.push_back({p.pid, p.name, "emulated"});
+    for (const auto& p : ctx.shared_clock->Processes())
+      r.processes.push_back({p.pid, p.name, "emulated"});
   } else {
     if (ctx.estimator) r.processes.push_back({ctx.estimator->pid(), "estimator", "probe"});
     if (ctx.controller) r.processes.push_back({ctx.controller->pid(), "controller", "probe"});

@@ -27,9 +27,9 @@ class LockstepHost {
   };
   /// Counts for the report.
   struct Stats {
-    std::uint64_t grants = 0;      ///< times hil woke the programs
-    std::uint64_t slept = 0;       ///< waits for idle that slept on the futex
-    std::int64_t wait_ns = 0;      ///< wall time spent waiting for idle
+    std::uint64_t grants = 0;        ///< times hil woke the programs
+    std::uint64_t slept = 0;         ///< waits for idle that slept on the futex
+    std::int64_t wait_ns = 0;        ///< wall time spent waiting for idle
     std::uint64_t thread_waits = 0;  ///< waits the programs' threads blocked in (all slots)
   };
   /// Called while a wait for idle lasts (every kStepNs): the threads not idle, whether this is a
@@ -55,6 +55,9 @@ class LockstepHost {
   bool WaitIdle(const WaitStep& on_wait);
   /// One look: whether the programs are idle now.
   bool Idle() const;
+  /// Whether a grant at emulated `t` can change anything for the programs: a thread runs, or one
+  /// waits with a deadline at or before `t`, or `bytes_written` and one waits for descriptors.
+  bool NeedsWake(Time t, bool bytes_written) const;
   /// The earliest deadline of the waiting threads (none: every one waits without a timeout).
   std::optional<Time> EarliestDeadline() const;
   /// hil paces the run the old way after all: the library passes every call through from now on

@@ -46,9 +46,12 @@ struct alignas(64) ThreadSlot {
   std::atomic<std::int32_t> tid;  ///< 0: free
   std::atomic<std::int32_t> pid;
   std::atomic<std::uint32_t> state;
-  std::atomic<std::uint32_t> acked;        ///< the `change` its condition was last found unmet at
-  std::atomic<std::int64_t> deadline_ns;   ///< emulated; kNoDeadline: none
-  std::atomic<std::uint64_t> waits;        ///< waits that blocked (statistics)
+  std::atomic<std::uint32_t> acked;       ///< the `change` its condition was last found unmet at
+  std::atomic<std::int64_t> deadline_ns;  ///< emulated; kNoDeadline: none
+  std::atomic<std::uint64_t> waits;       ///< waits that blocked (statistics)
+  /// 1 while it waits for descriptors (poll, select, epoll, read), 0 in a sleep: bytes hil
+  /// writes cannot end a sleep, so they need not wake a program whose threads all sleep
+  std::atomic<std::uint32_t> on_descriptors;
 };
 
 struct ProcessEntry {
@@ -59,7 +62,7 @@ struct ProcessEntry {
 struct Shared {
   std::uint32_t magic;
   std::uint32_t version;
-  std::int64_t utc_epoch_ns;        ///< CLOCK_REALTIME at emulated t = 0 (the scenario's start)
+  std::int64_t utc_epoch_ns;  ///< CLOCK_REALTIME at emulated t = 0 (the scenario's start)
   std::atomic<std::int64_t> now_ns;
   std::atomic<std::uint32_t> change;     ///< futex word the threads sleep on
   std::atomic<std::uint32_t> host_wake;  ///< futex word hil sleeps on
