@@ -122,6 +122,10 @@ TEST(LockstepDeterminismE2E, WallClockDriverGivesTheSameBytesAndStampsTheirArriv
   EXPECT_EQ(log.find("timed-out"), std::string::npos) << log.substr(0, 2000);
   EXPECT_FALSE(first["estimate.jsonl"].empty());
 
+  // its first command, written at its start, is taken at t = 0 (the first turn waits for the
+  // start-up, whether the program has started to wait before hil looks or not)
+  EXPECT_NE(first["captures/ttyGPS.cap"].find("\nrx 0 0 0 host "), std::string::npos);
+
   // its clock is the bytes' emulated arrival: what it read up to each stamp is exactly what had
   // left the UART by then
   const auto chunks = TxChunks(first["captures/ttyGPS.cap"]);

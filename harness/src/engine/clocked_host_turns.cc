@@ -56,7 +56,9 @@ bool ClockedHostTurns::Turn(Time t, DeviceIo& io) {
   host_.SetNow(t);
   const bool wrote = pacer_.WriteDue(t);
   // every thread sleeps past t: the bytes wait for them in the pty, nothing runs, nothing to read
-  if (!host_.NeedsWake(t, wrote)) return true;
+  // (not at the first turn: the programs ran from their start until then)
+  if (read_once_ && !host_.NeedsWake(t, wrote)) return true;
+  read_once_ = true;
   host_.Wake();
   if (!host_.WaitIdle(on_wait_)) return false;
   ReadHosts(t, io);

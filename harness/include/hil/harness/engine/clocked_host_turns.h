@@ -63,6 +63,7 @@ class ClockedHostTurns final : public HostTurns {
   ClockedPacer& pacer_;
   lockstep::LockstepHost::WaitStep on_wait_;
   bool started_ = false;
+  bool read_once_ = false;  // a turn has read what the programs wrote since their start
   std::deque<HostBytes> arrivals_;
   std::deque<BusArrival> bus_arrivals_;
 };
