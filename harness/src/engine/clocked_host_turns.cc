@@ -29,7 +29,7 @@ bool ClockedHostTurns::BeforeEvent(Time t_event, Time t_end, EngineMonitor& moni
   const Time limit = std::min(t_event, t_end);
   if (!started_) {
     started_ = true;  // the programs' start-up, at t = 0
-    if (!Turn(Time{}, io)) io.Refuse();
+    if (!Turn(Time{}, io, true)) io.Refuse();
     return true;
   }
   if (!arrivals_.empty() && arrivals_.front().t <= limit) {
@@ -52,13 +52,11 @@ bool ClockedHostTurns::BeforeEvent(Time t_event, Time t_end, EngineMonitor& moni
   return true;
 }
 
-bool ClockedHostTurns::Turn(Time t, DeviceIo& io) {
+bool ClockedHostTurns::Turn(Time t, DeviceIo& io, bool wake) {
   host_.SetNow(t);
   const bool wrote = pacer_.WriteDue(t);
   // every thread sleeps past t: the bytes wait for them in the pty, nothing runs, nothing to read
-  // (not at the first turn: the programs ran from their start until then)
-  if (read_once_ && !host_.NeedsWake(t, wrote)) return true;
-  read_once_ = true;
+  if (!wake && !host_.NeedsWake(t, wrote)) return true;
   host_.Wake();
   if (!host_.WaitIdle(on_wait_)) return false;
   ReadHosts(t, io);
@@ -72,7 +70,7 @@ bool ClockedHostTurns::Drain(DeviceIo& io) {
   for (const auto& ports : io.devices().endpoints) {
     for (const auto& ep : ports) t = std::max(t, ep->last_queued_end());
   }
-  return Turn(t, io);
+  return Turn(t, io, true);
 }
 
 void ClockedHostTurns::ReadHosts(Time t, DeviceIo& io) {

@@ -53,8 +53,10 @@ class ClockedHostTurns final : public HostTurns {
   };
   /// The next turn's time: the earliest chunk end or deadline (none: no turn is due).
   std::optional<Time> NextTurn() const;
-  /// A turn at `t`. False when the wait was given up.
-  bool Turn(Time t, DeviceIo& io);
+  /// A turn at `t`: the programs are woken when that can change anything for them (see
+  /// LockstepHost::NeedsWake), always with `wake` (the first turn: they ran from their start;
+  /// the drain: Flush wrote what was left). False when the wait was given up.
+  bool Turn(Time t, DeviceIo& io, bool wake = false);
   void ReadHosts(Time t, DeviceIo& io);
   void ReadBus(Time t, DeviceIo& io);
   void DeliverHostBytes(const HostBytes& h, DeviceIo& io, DeviceOutput& out);
@@ -63,7 +65,6 @@ class ClockedHostTurns final : public HostTurns {
   ClockedPacer& pacer_;
   lockstep::LockstepHost::WaitStep on_wait_;
   bool started_ = false;
-  bool read_once_ = false;  // a turn has read what the programs wrote since their start
   std::deque<HostBytes> arrivals_;
   std::deque<BusArrival> bus_arrivals_;
 };
