@@ -4,7 +4,7 @@
 // dialogue and every byte of both directions are the same in every run, and the clock it stamps
 // each read with is the emulated time the bytes it read had arrived by: the bytes read up to a
 // stamp are exactly the bytes whose last bit had left the UART by then. The last run shares the
-// machine with a busy process.
+// machine with a busy process. The closed loop (navd and guidanced) is held to the same.
 #include <signal.h>
 #include <unistd.h>
 
@@ -141,6 +141,49 @@ TEST(LockstepDeterminismE2E, WallClockDriverGivesTheSameBytesAndStampsTheirArriv
     ASSERT_EQ(read.size(), sent.size()) << "read " << i << " stamped at t = " << t << " ns";
   }
   EXPECT_TRUE(read == sent);
+}
+
+// Closed loop on the clock: navd and guidanced (the controller reads navd's solutions from a FIFO,
+// a link hil does not write: the wake-ups between the programs) both load the library, and two
+// runs, the second beside a busy process, give the same bytes on every link and the same
+// solutions.
+TEST(LockstepDeterminismE2E, ClosedLoopNavdAndGuidancedOnTheClock) {
+  TempDir dir("lockstep_closed_e2e");
+  const std::string scenario =
+      SourceDir() + "/vectors/scenarios/closed_loop/diff_drive_serial.yaml";
+  std::map<std::string, std::string> first;
+  for (int run = 0; run < 2; ++run) {
+    const std::string out = dir / ("run" + std::to_string(run));
+    const pid_t busy = run == 1 ? StartBusyProcess() : 0;
+    const CommandResult r =
+        RunCommand(BinDir() + "/hil run " + scenario + " --short --lockstep --no-html --out " +
+                   out + (run == 1 ? " --nice 0" : ""));
+    if (busy > 0) {
+      kill(busy, SIGKILL);
+      waitpid(busy, nullptr, 0);
+    }
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    const auto report = nlohmann::json::parse(ReadFile(out + "/report.json"));
+    ASSERT_TRUE(report.contains("lockstep")) << r.out;
+    EXPECT_FALSE(report["lockstep"].contains("fallback")) << report["lockstep"].dump();
+    std::string names;
+    for (const auto& p : report["lockstep"]["processes"]) {
+      EXPECT_EQ(p["clock"], "emulated");
+      names += p["name"].get<std::string>() + " ";
+    }
+    EXPECT_NE(names.find("navd"), std::string::npos) << names;
+    EXPECT_NE(names.find("guidanced"), std::string::npos) << names;
+    for (const char* f :
+         {"captures/ttyGPS.cap", "captures/ttyIMU.cap", "captures/ttyBASE.cap", "estimate.jsonl"}) {
+      const std::string text = ReadFile(out + "/" + f);
+      if (run == 0) {
+        first[f] = text;
+        EXPECT_FALSE(text.empty()) << f;
+      } else {
+        EXPECT_TRUE(text == first[f]) << f << " differs from run 0's";
+      }
+    }
+  }
 }
 
 }  // namespace
