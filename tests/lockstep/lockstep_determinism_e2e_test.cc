@@ -143,6 +143,24 @@ TEST(LockstepDeterminismE2E, WallClockDriverGivesTheSameBytesAndStampsTheirArriv
   EXPECT_TRUE(read == sent);
 }
 
+// A host that does not load the library (here a shell loop: the shell is not preloaded, and it
+// starts no program) is paced by the /proc probe after 6 s, and report.json says so.
+TEST(LockstepDeterminismE2E, HostWithoutTheLibraryFallsBackToTheProbe) {
+  TempDir dir("lockstep_fallback_e2e");
+  const std::string out = dir / "run";
+  const CommandResult r = RunCommand(
+      BinDir() + "/hil run " + SourceDir() +
+      "/vectors/scenarios/default.yaml --short --lockstep --no-html --silence-timeout 2" +
+      " --estimator 'while read -r l; do :; done < {ttyGPS}' --out " + out);
+  EXPECT_NE(r.out.find("did not load libhil_lockstep.so"), std::string::npos) << r.out;
+  const auto report = nlohmann::json::parse(ReadFile(out + "/report.json"));
+  ASSERT_TRUE(report.contains("lockstep")) << r.out;
+  EXPECT_TRUE(report["lockstep"].contains("fallback"));
+  ASSERT_EQ(report["lockstep"]["processes"].size(), 1u);
+  EXPECT_EQ(report["lockstep"]["processes"][0]["clock"], "probe");
+  EXPECT_EQ(report["lockstep"]["turns"], 0);
+}
+
 // Closed loop on the clock: navd and guidanced (the controller reads navd's solutions from a FIFO,
 // a link hil does not write: the wake-ups between the programs) both load the library, and two
 // runs, the second beside a busy process, give the same bytes on every link and the same

@@ -161,6 +161,7 @@ std::optional<Time> LockstepHost::EarliestDeadline() const {
 void LockstepHost::Abandon() {
   shared_->passthrough.store(1);
   Wake();
+  --stats_.grants;  // a wake to let go, not a turn
 }
 
 namespace {
