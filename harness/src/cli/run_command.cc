@@ -91,7 +91,7 @@ struct RunArgs {
   double speed = 1.0, silence_timeout_s = 0;
   int nice = harness::kDefaultRunNice;
   CLI::Option *seed_opt = nullptr, *est_opt = nullptr, *speed_opt = nullptr, *silence_opt = nullptr;
-  bool no_html = false, short_form = false, free_running = false;
+  bool no_html = false, short_form = false, free_running = false, lockstep = false;
   std::vector<std::string> sets;
 };
 
@@ -132,6 +132,10 @@ void Declare(CLI::App& app, RunArgs& a) {
                    "gets the CPU at once on a busy machine); 0 leaves it, a refusal is reported")
       ->capture_default_str()
       ->check(CLI::Range(-20, 19));
+  a.cmd->add_flag("--lockstep", a.lockstep,
+                  "virtual mode: the estimator and controller run on the emulated clock through "
+                  "libhil_lockstep.so (preloaded; their clocks, sleeps, poll/select/epoll and "
+                  "blocking reads follow emulated time), not paced by probing /proc");
   a.cmd->add_flag("--short", a.short_form,
                   "the scenario's quick form: its `short:` keys replace the top-level ones");
   a.cmd->add_option("--set", a.sets,
@@ -153,6 +157,10 @@ int Execute(const RunArgs& a) {
     std::fprintf(stderr, "hil: --mode scaled needs --speed (see hil run --help)\n");
     return kExitBadInput;
   }
+  if (a.mode != "virtual" && a.lockstep) {
+    std::fprintf(stderr, "hil: --lockstep needs --mode virtual (see hil run --help)\n");
+    return kExitBadInput;
+  }
   if (a.mode == "virtual" && a.free_running) {
     std::fprintf(stderr,
                  "hil: --free-running needs --mode realtime or scaled (see hil run --help)\n");
@@ -169,6 +177,7 @@ int Execute(const RunArgs& a) {
   opt.progress = isatty(STDERR_FILENO);
   opt.html = !a.no_html;
   opt.free_running = a.free_running;
+  opt.lockstep = a.lockstep;
   opt.nice = a.nice;
   try {
     opt.out_dir =

@@ -15,12 +15,12 @@
 namespace hil::harness {
 
 ControllerProcess::ControllerProcess(const std::string& command, int pgid,
-                                     const std::string& log_path) {
+                                     const std::string& log_path, const std::string& shell_prefix) {
   const int log_fd = open(log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (log_fd < 0)
     throw std::runtime_error("cannot write " + log_path + ": " + std::strerror(errno));
   try {
-    pid_ = SpawnShell("exec " + command, {pgid, log_fd, log_fd});
+    pid_ = SpawnShell(shell_prefix + "exec " + command, {pgid, log_fd, log_fd});
   } catch (...) {
     close(log_fd);
     throw;

@@ -43,7 +43,8 @@ std::string ExitInfo::Describe() const {
   return "exited with code " + std::to_string(exit_code);
 }
 
-EstimatorProcess::EstimatorProcess(const std::string& command, const std::string& stderr_path) {
+EstimatorProcess::EstimatorProcess(const std::string& command, const std::string& stderr_path,
+                                   const std::string& shell_prefix) {
   int fds[2];
   if (pipe2(fds, O_CLOEXEC) != 0)
     throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
@@ -55,7 +56,7 @@ EstimatorProcess::EstimatorProcess(const std::string& command, const std::string
   }
   try {
     // its own process group, so Stop() reaches the shell's children too
-    pid_ = SpawnShell(ShellCommandLine(command), {0, fds[1], err_fd});
+    pid_ = SpawnShell(shell_prefix + ShellCommandLine(command), {0, fds[1], err_fd});
   } catch (...) {
     close(fds[0]);
     close(fds[1]);

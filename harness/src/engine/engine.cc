@@ -73,7 +73,7 @@ void Engine::Serve(Time t_event, const TruthSample& x, EngineMonitor& monitor, D
 
 void Engine::Flush() {
   io_.ReleaseHeld();
-  if (!pacer_.Flush(io_)) io_.Refuse();
+  if (!pacer_.Flush(io_) || !turns_->Drain(io_)) io_.Refuse();
 }
 
 }  // namespace hil::harness

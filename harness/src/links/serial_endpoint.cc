@@ -234,6 +234,33 @@ bool SerialEndpoint::WriteChunks(std::size_t chunks, const RoomWait& wait_for_ro
   return all;
 }
 
+std::optional<Time> SerialEndpoint::next_chunk_end() const {
+  if (pending_.empty()) return std::nullopt;
+  return pending_.front().first.t_end();
+}
+
+std::size_t SerialEndpoint::ChunksEndedBy(Time t) const {
+  std::size_t n = 0;
+  while (n < pending_.size() && pending_[n].first.t_end() <= t) ++n;
+  return n;
+}
+
+std::size_t SerialEndpoint::WriteChunksOrDrop(std::size_t chunks) {
+  chunks = std::min(chunks, pending_.size());
+  if (chunks == 0) return 0;
+  write_buffer_.clear();
+  for (std::size_t i = 0; i < chunks; ++i)
+    write_buffer_.append(pending_[i].first.bytes, i == 0 ? pending_offset_ : 0, std::string::npos);
+  const long n = port_->WriteNow(write_buffer_);
+  const std::size_t sent = n > 0 ? static_cast<std::size_t>(n) : 0;
+  const std::size_t lost = write_buffer_.size() - sent;
+  bytes_dropped_unread_ += lost;
+  bytes_dropped_attached_ += lost;
+  Consume(sent, CaptureDir::kTx, 0);
+  Consume(lost, CaptureDir::kDrop, 0);
+  return sent;
+}
+
 std::size_t SerialEndpoint::queued_bytes() const {
   std::size_t n = 0;
   for (const auto& [c, name] : pending_) n += c.bytes.size();

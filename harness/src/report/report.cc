@@ -393,6 +393,16 @@ void WriteReportJson(const RunReport& r, const std::string& path) {
   j["priority"] = {{"nice_requested", r.nice_requested}, {"nice", r.nice}};
   if (!r.nice_refused.empty()) j["priority"]["refused"] = r.nice_refused;
   if (r.host_open_wait_s) j["host_open_wait_s"] = *r.host_open_wait_s;
+  if (r.lockstep) {
+    nlohmann::json procs = nlohmann::json::array();
+    for (const auto& p : r.lockstep->processes)
+      procs.push_back({{"pid", p.pid}, {"name", p.name}, {"clock", p.clock}});
+    j["lockstep"] = {{"processes", procs},
+                     {"turns", r.lockstep->turns},
+                     {"thread_waits", r.lockstep->thread_waits},
+                     {"wait_s", r.lockstep->wait_s}};
+    if (!r.lockstep->fallback.empty()) j["lockstep"]["fallback"] = r.lockstep->fallback;
+  }
   j["links"] = {{"gnss_bytes", r.gnss_bytes}, {"gnss_messages_dropped", r.gnss_messages_dropped}};
   if (r.can) j["can"] = CanBusJson(*r.can);
   if (r.tracking) {

@@ -8,6 +8,7 @@
 
 #include "hil/harness/core/machine_load.h"
 #include "hil/harness/dut/process_group.h"
+#include "hil/harness/engine/clocked_host_turns.h"
 #include "hil/harness/engine/virtual_host_turns.h"
 #include "hil/harness/report/run_outputs.h"
 
@@ -28,6 +29,50 @@ constexpr std::size_t kSkewLinkBacklogBytes = 16384;
 constexpr int kIdleChecks = 3;
 constexpr useconds_t kIdleCheckUs = 1000;
 
+// --lockstep: how long (wall) the host processes may take to load the library before the /proc
+// probe paces them instead (as VirtualGate::kHostStartLimitNs, a loaded machine's start-up).
+constexpr std::int64_t kPreloadAttachLimitNs = 6'000'000'000;
+
+// --lockstep: whether the estimator's process group and the controller have loaded the library.
+bool HostsAttached(const RunContext& ctx) {
+  const int controller = ctx.controller ? ctx.controller->pid() : 0;
+  bool estimator = false, controller_attached = controller == 0;
+  for (const auto& p : ctx.shared_clock->Processes()) {
+    if (p.pid == controller) controller_attached = true;
+    if (p.pid != controller && getpgid(p.pid) == ctx.estimator->pid()) estimator = true;
+  }
+  return estimator && controller_attached;
+}
+
+// --lockstep: the host processes on hil's clock (clocked_host_turns.h) once they have loaded the
+// library; null (and the library told to pass every call through) when one has not in time.
+std::unique_ptr<HostTurns> MakeClockedTurns(RunContext& ctx, RunWatchdog& watchdog) {
+  ctx.report.lockstep.emplace();
+  const std::int64_t start = NowNs();
+  while (!HostsAttached(ctx)) {
+    if (!ctx.EstimatorRunning() || NowNs() - start > kPreloadAttachLimitNs) {
+      ctx.report.lockstep->fallback =
+          "a host process did not load libhil_lockstep.so within " +
+          SecondsText(static_cast<double>(kPreloadAttachLimitNs) * 1e-9) +
+          " s (a static binary, or the program ended): the /proc probe paced the run";
+      std::fprintf(stderr, "hil: --lockstep: %s\n", ctx.report.lockstep->fallback.c_str());
+      ctx.shared_clock->Abandon();
+      return nullptr;
+    }
+    usleep(1000);
+  }
+  ctx.clocked = true;
+  auto pacer = std::make_unique<ClockedPacer>();
+  ClockedPacer& clocked = *pacer;
+  ctx.pacer = std::move(pacer);
+  if (ctx.scenario.closed_loop.enabled && ctx.set.can && ctx.set.steering)
+    ctx.set.can->set_stamp_at_turns(true);
+  return std::make_unique<ClockedHostTurns>(*ctx.shared_clock, clocked,
+                                            [&watchdog](std::size_t busy, bool new_wait) {
+                                              return watchdog.OnLockstepWait(busy, new_wait);
+                                            });
+}
+
 // Virtual mode (or lockstep) with an estimator: host turns, and a gate through which the host
 // sees its links' bytes in emulated-time order (virtual_gate.h); a wait that sees no byte read for
 // the silence timeout ends the run as a hang or a closed port (RunWatchdog::OnGateWait). Free
@@ -35,6 +80,9 @@ constexpr useconds_t kIdleCheckUs = 1000;
 std::unique_ptr<HostTurns> MakeHostTurns(RunContext& ctx, RunWatchdog& watchdog) {
   if (ctx.pacer->stepping() == Stepping::kFreeRunning || ctx.options.emulate_only)
     return std::make_unique<NoHostTurns>();
+  if (ctx.shared_clock && ctx.estimator) {
+    if (std::unique_ptr<HostTurns> turns = MakeClockedTurns(ctx, watchdog)) return turns;
+  }
   std::vector<SerialEndpoint*> read_by_host;
   for (const auto& ports : ctx.set.endpoints) {
     for (const auto& ep : ports) {
@@ -95,7 +143,13 @@ void DrainOutput(RunContext& ctx) {
   while (ctx.EstimatorRunning() && !ctx.Interrupted()) {
     ctx.collector->Poll();
     const std::int64_t last_output = ctx.collector->last_output_wall_ns();
-    if (ctx.gate && last_output > 0) {
+    if (ctx.clocked && last_output > 0) {
+      // on hil's clock: the programs say themselves when every thread waits
+      const bool idle = ctx.shared_clock->Idle() && last_output == output_before;
+      idle_checks = idle ? idle_checks + 1 : 0;
+      output_before = last_output;
+      if (idle_checks >= kIdleChecks) break;
+    } else if (ctx.gate && last_output > 0) {
       const GroupActivity now = ReadGroupActivity(ctx.estimator->pid());
       const bool idle =
           SleptThroughout(before, now) && last_output == output_before && ctx.gate->Unread() == 0;
@@ -113,7 +167,7 @@ void DrainOutput(RunContext& ctx) {
     }
     // an estimator that keeps talking once its input is read has had the silence timeout to end
     if (NowNs() - drain_start > ctx.silence_ns) break;
-    usleep(ctx.gate ? kIdleCheckUs : 10000);
+    usleep(ctx.gate || ctx.clocked ? kIdleCheckUs : 10000);
   }
 }
 
@@ -146,9 +200,11 @@ void Execute(RunContext& ctx, RunWatchdog& watchdog) {
   const Scenario& scenario = ctx.scenario;
   ctx.byte_faults.emplace(scenario.faults, ctx.seed, &ctx.fault_recorder);
   ctx.progress.emplace(ctx.options.progress);
+  // the turns first: --lockstep chooses the pacer there
+  std::unique_ptr<HostTurns> turns = MakeHostTurns(ctx, watchdog);
   ctx.engine.emplace(EngineDevices{ctx.set.devices, ctx.set.endpoints, ctx.set.can.get(),
                                    ctx.set.base, ctx.set.steering},
-                     *ctx.pacer, MakeHostTurns(ctx, watchdog), ctx.t_end);
+                     *ctx.pacer, std::move(turns), ctx.t_end);
   ctx.engine->set_byte_faults(&*ctx.byte_faults);
   ctx.engine->set_recorder(&ctx.fault_recorder);
   ctx.baseline.emplace(ctx.set, &ctx.fault_recorder, ctx.fixes_csv);
@@ -188,6 +244,8 @@ void Drain(RunContext& ctx) {
   if (ctx.Healthy()) {
     if (ctx.gate) {
       ctx.gate->WaitAllRead();  // gives up (hang, closed port, interrupt) through its wait step
+    } else if (ctx.clocked) {
+      // Engine::Flush's last turn had the programs read everything
     } else {
       DrainInputRealtime(ctx);
     }
@@ -195,7 +253,29 @@ void Drain(RunContext& ctx) {
   if (ctx.Healthy()) DrainOutput(ctx);
 }
 
+namespace {
+
+// --lockstep: which way each host process ran, and what the shared clock cost.
+void NoteLockstep(RunContext& ctx) {
+  if (!ctx.shared_clock || !ctx.report.lockstep) return;
+  LockstepReport& r = *ctx.report.lockstep;
+  if (ctx.clocked) {
+    for (const auto& p : ctx.shared_clock->Processes())
+      r.processes.push_back({p.pid, p.name, "emulated"});
+  } else {
+    if (ctx.estimator) r.processes.push_back({ctx.estimator->pid(), "estimator", "probe"});
+    if (ctx.controller) r.processes.push_back({ctx.controller->pid(), "controller", "probe"});
+  }
+  const lockstep::LockstepHost::Stats s = ctx.shared_clock->stats();
+  r.turns = s.grants;
+  r.thread_waits = s.thread_waits;
+  r.wait_s = static_cast<double>(s.wait_ns) * 1e-9;
+}
+
+}  // namespace
+
 void StopEstimator(RunContext& ctx) {
+  NoteLockstep(ctx);
   RunReport& report = ctx.report;
   ctx.progress->Finish();
   const bool crashed =

@@ -111,6 +111,23 @@ std::string EstimatorCommand(RunContext& ctx, const std::string& raw_command) {
   return Substitute(raw_command, vars);
 }
 
+// --lockstep: the shell line's exports that preload the library into the host's programs.
+std::string HostShellPrefix(const RunContext& ctx) {
+  return ctx.shared_clock ? ctx.shared_clock->ShellExports(ctx.preload_library) : "";
+}
+
+// --lockstep (virtual mode): the shared clock's file in the run folder, before the hosts start.
+void MakeSharedClock(RunContext& ctx) {
+  if (!ctx.options.lockstep || ctx.options.mode != RunMode::kVirtual || ctx.options.emulate_only)
+    return;
+  ctx.preload_library = lockstep::FindPreloadLibrary();
+  if (ctx.preload_library.empty())
+    throw std::runtime_error(
+        "--lockstep: libhil_lockstep.so is neither beside hil nor in ../lib (build the "
+        "hil_harness_preload target, or install hil)");
+  ctx.shared_clock.emplace(ctx.dir + "/lockstep.shm", ctx.scenario.start_unix_ns);
+}
+
 void StartEstimator(RunContext& ctx, const std::string& command) {
   if (ctx.options.emulate_only) {
     for (const auto& [name, path] : ctx.set.links) {
@@ -119,7 +136,7 @@ void StartEstimator(RunContext& ctx, const std::string& command) {
     std::fflush(stdout);
     return;
   }
-  ctx.estimator.emplace(command, ctx.dir + "/estimator.stderr");
+  ctx.estimator.emplace(command, ctx.dir + "/estimator.stderr", HostShellPrefix(ctx));
   ctx.report.estimator_pid = ctx.estimator->pid();
   if (ctx.reaper) ctx.reaper->Watch(ctx.estimator->pid());  // its group dies with hil
   // time for the program to open its devices (gpsd flushes a tty's input when it opens it)
@@ -200,7 +217,8 @@ void StartController(RunContext& ctx) {
   vars.insert(vars.end(), ctx.set.links.begin(), ctx.set.links.end());
   const std::string command = Substitute(c.controller, vars);
   ctx.report.controller_command = command;
-  ctx.controller.emplace(command, ctx.estimator->pid(), ctx.dir + "/controller.log");
+  ctx.controller.emplace(command, ctx.estimator->pid(), ctx.dir + "/controller.log",
+                         HostShellPrefix(ctx));
 }
 
 }  // namespace
@@ -238,6 +256,7 @@ void Prepare(RunContext& ctx) {
   ctx.fixes_csv.open(ctx.dir + "/gnss_fixes.csv");
   WriteFixCsvHeader(ctx.fixes_csv);
   MakeNavFifo(ctx);
+  MakeSharedClock(ctx);
   StartEstimator(ctx, command);
   StartController(ctx);
   if (opt.mode == RunMode::kRealtime && ctx.estimator) AwaitHostLinksOpen(ctx);

@@ -61,6 +61,18 @@ bool RunWatchdog::KeepGoing(Time t) {
   return !ctx_.hang && !ctx_.stop_reason;
 }
 
+bool RunWatchdog::OnLockstepWait(std::size_t busy, bool new_wait) {
+  if (new_wait || busy < wait_unread_) wait_progress_ns_ = NowNs();
+  wait_unread_ = busy;
+  ctx_.collector->Poll();
+  if (ctx_.Interrupted() || !EstimatorStillRunning()) return false;
+  if (NowNs() - wait_progress_ns_ <= ctx_.silence_ns) return true;
+  ctx_.hang = std::to_string(busy) + " of its threads did not wait again for " +
+              SecondsText(ctx_.silence_s) +
+              " s (a busy loop, or a blocking call libhil_lockstep.so does not interpose)";
+  return false;
+}
+
 bool RunWatchdog::OnGateWait(std::size_t unread, bool new_wait) {
   if (new_wait || unread < wait_unread_) wait_progress_ns_ = NowNs();
   wait_unread_ = unread;

@@ -12,7 +12,9 @@ namespace hil::harness {
 class ControllerProcess {
  public:
   /// Starts `command` in process group `pgid` (the estimator's). @throws std::runtime_error.
-  ControllerProcess(const std::string& command, int pgid, const std::string& log_path);
+  /// `shell_prefix`: as EstimatorProcess's.
+  ControllerProcess(const std::string& command, int pgid, const std::string& log_path,
+                    const std::string& shell_prefix = "");
   ~ControllerProcess();
   ControllerProcess(const ControllerProcess&) = delete;
   ControllerProcess& operator=(const ControllerProcess&) = delete;

@@ -57,7 +57,10 @@ class EstimatorProcess {
 
   /// Starts `command` with /bin/sh -c (see ShellCommandLine); stderr goes to `stderr_path`.
   /// @throws std::runtime_error if the process cannot be started.
-  EstimatorProcess(const std::string& command, const std::string& stderr_path);
+  /// `shell_prefix`: shell commands run before it in its shell (the preload library's exports
+  /// for a run with --lockstep; LockstepHost::ShellExports).
+  EstimatorProcess(const std::string& command, const std::string& stderr_path,
+                   const std::string& shell_prefix = "");
   ~EstimatorProcess();
   EstimatorProcess(const EstimatorProcess&) = delete;
   EstimatorProcess& operator=(const EstimatorProcess&) = delete;

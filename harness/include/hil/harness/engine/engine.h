@@ -33,7 +33,8 @@
 ///         if source.sample_is_truth(): tap(x)
 ///         pacer.EndOfStep()                             lockstep: what the event made leaves now
 ///         stop if the gate gave up or not monitor.KeepGoing(t_event)
-///     Flush(): held actuator bytes released; pacer.Flush() (every byte still queued leaves)
+///     Flush(): held actuator bytes released; pacer.Flush() (every byte still queued leaves);
+///              turns.Drain() (programs on hil's clock: a last turn reads it)
 
 #include <cstdint>
 #include <functional>

@@ -30,6 +30,12 @@ class HostTurns {
                            DeviceOutput& out) = 0;
   /// After the event at `t_event` was served.
   virtual void AfterEvent(Time t_event, DeviceIo& io, DeviceOutput& out) = 0;
+  /// After Flush wrote what was left: lets the hosts read it (ClockedHostTurns). False when a wait
+  /// was given up.
+  virtual bool Drain(DeviceIo& io) {
+    (void)io;
+    return true;
+  }
   /// Closed loop: control ticks that made no turn of their own, their answer in hand.
   virtual std::uint64_t skipped_control_turns() const { return 0; }
 };

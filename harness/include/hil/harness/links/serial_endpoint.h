@@ -66,6 +66,16 @@ class SerialEndpoint {
   /// nobody reads drops what it cannot take (PtyPort::Write). The capture records what was
   /// written as `tx` and what was dropped as `drop` (counted in bytes_dropped_unread()).
   bool WriteChunks(std::size_t chunks, const RoomWait& wait_for_room = {});
+  /// Virtual mode with the programs on hil's clock (engine/clocked_pacer.h): the emulated time the
+  /// first waiting chunk's last byte has left the UART at, if any.
+  std::optional<Time> next_chunk_end() const;
+  /// The waiting chunks, from the first, whose last byte has left the UART by `t`.
+  std::size_t ChunksEndedBy(Time t) const;
+  /// Writes the first `chunks` waiting chunks in one write without waiting: what the host's input
+  /// queue cannot take now is dropped, as a UART's bytes that nobody reads (captured as `drop`,
+  /// counted in bytes_dropped_attached()). The host is idle when this is called, so what it takes
+  /// depends only on what it read before. Returns the bytes written.
+  std::size_t WriteChunksOrDrop(std::size_t chunks);
   /// Bytes waiting to be written.
   std::size_t queued_bytes() const;
   /// Writes out the capture's buffer (a failed write is noted, ReportWriteFailuresTo).

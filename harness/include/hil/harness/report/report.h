@@ -74,6 +74,21 @@ struct ClosedLoopReport {
 };
 
 /// Everything report.json holds.
+/// A virtual run with --lockstep: how each host process was paced (report.json `lockstep`).
+struct LockstepReport {
+  struct Process {
+    int pid = 0;
+    std::string name;
+    /// "emulated": on hil's clock through libhil_lockstep.so; "probe": the /proc probe paced it
+    std::string clock;
+  };
+  std::vector<Process> processes;
+  std::string fallback;     ///< why the /proc probe paced the run after all (empty: it did not)
+  std::uint64_t turns = 0;  ///< times hil woke the programs
+  std::uint64_t thread_waits = 0;  ///< waits the programs' threads blocked in
+  double wait_s = 0;               ///< wall seconds hil waited for the programs (wall clock)
+};
+
 struct RunReport {
   std::string scenario;
   std::string scenario_file;
@@ -131,6 +146,7 @@ struct RunReport {
   std::vector<LinkIntegrity> link_integrity;
   /// Real time: each real-time thread's scheduling and the CPU it used (run_outputs.h).
   std::vector<std::pair<std::string, link::ThreadSchedule>> realtime_threads;
+  std::optional<LockstepReport> lockstep;  ///< virtual mode with --lockstep
   bool pass() const;
 };
 

@@ -52,6 +52,9 @@ struct RunOptions {
   /// more they stay SCHED_OTHER at that nice value (`nice -n 19 hil emulate --nice 0` takes
   /// nothing from its neighbours).
   int nice = kDefaultRunNice;
+  /// Virtual mode: the host processes run on hil's clock through libhil_lockstep.so (preloaded;
+  /// harness/src/preload/README.md); the /proc probe paces them when one does not load it.
+  bool lockstep = false;
 };
 
 /// "virtual", "realtime" or "scaled" (real time with a speed-up other than 1).

@@ -27,6 +27,7 @@
 #include "hil/harness/faults/byte_faults.h"
 #include "hil/harness/faults/fault_record.h"
 #include "hil/harness/faults/fault_report.h"
+#include "hil/harness/lockstep/lockstep_host.h"
 #include "hil/harness/report/report.h"
 #include "hil/harness/run/device_set.h"
 #include "hil/harness/run/fix_baseline.h"
@@ -79,6 +80,11 @@ struct RunContext {
   /// and the gate then lets the links run apart by half of it: kNavdMergeWindowS)
   double navd_merge_window_s = 0;
   std::ofstream fixes_csv;
+  /// --lockstep: the clock shared with the host processes, the library they preload, and whether
+  /// the run went that way (false: the /proc probe paced it after all).
+  std::optional<lockstep::LockstepHost> shared_clock;
+  std::string preload_library;
+  bool clocked = false;
   std::optional<EstimatorProcess> estimator;
   /// Closed loop: the controller (in the estimator's process group) and the FIFO navd writes its
   /// NMEA solution into, held open by the run so that neither side waits for the other.

@@ -26,6 +26,9 @@ class RunWatchdog final : public EngineMonitor {
   bool ActsAtTurn(Time t) override;
   /// VirtualGate::WaitStep: false gives the wait (and the run) up.
   bool OnGateWait(std::size_t unread, bool new_wait);
+  /// --lockstep: while hil waits for the host's threads to wait again (`busy` of them still
+  /// run). Running the silence timeout without any of them waiting is a hang.
+  bool OnLockstepWait(std::size_t busy, bool new_wait);
 
  private:
   /// Kills the controller for the controller_stop faults due at `t`.

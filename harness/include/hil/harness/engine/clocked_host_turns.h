@@ -1,0 +1,72 @@
+#pragma once
+/// @file
+/// Host turns (host_turns.h) for programs that run on hil's clock through the preload library
+/// (`hil run --lockstep`; lockstep_host.h, clocked_pacer.h). Instead of asking /proc whether the
+/// host sleeps, hil reads the programs' own account in shared memory: every thread says when it
+/// waits, for what and until which emulated time.
+///
+/// A turn happens at the earliest of the end of a chunk of device bytes (they reach the host
+/// then) and the programs' earliest wake-up deadline, when that comes before (or at) the next
+/// device event: hil sets the programs' clock to that time, writes the chunks that have ended,
+/// wakes the programs and waits until every thread waits again. What they wrote meanwhile is read
+/// at that emulated time (the time of the write: the clock did not move while they ran) and
+/// reaches its device at once. The first turn, at t = 0, waits for the programs' start-up. A
+/// program that writes, sleeps 250 ms or times out a poll thus does so at the same emulated time
+/// in every run, whatever the machine's load.
+
+#include <deque>
+#include <string>
+
+#include "hil/harness/engine/clocked_pacer.h"
+#include "hil/harness/engine/host_turns.h"
+#include "hil/harness/lockstep/lockstep_host.h"
+
+namespace hil::harness {
+
+class ClockedHostTurns final : public HostTurns {
+ public:
+  /// `on_wait`: called while hil waits for the programs (the run's watchdog); false gives up.
+  ClockedHostTurns(lockstep::LockstepHost& host, ClockedPacer& pacer,
+                   lockstep::LockstepHost::WaitStep on_wait);
+
+  Time NextAction() const override;
+  /// Host bytes or a bus frame reaching a device, then a turn, due before (or at) the event.
+  bool BeforeEvent(Time t_event, Time t_end, EngineMonitor& monitor, DeviceIo& io,
+                   DeviceOutput& out) override;
+  /// Nothing: the hosts are read at turns only.
+  void AfterEvent(Time t_event, DeviceIo& io, DeviceOutput& out) override {
+    (void)t_event, (void)io, (void)out;
+  }
+  /// After the run (Engine::Flush wrote what was left): one last turn at the end of the last
+  /// byte written, so the programs read everything. False when the wait was given up.
+  bool Drain(DeviceIo& io) override;
+
+ private:
+  struct HostBytes {
+    Time t{};
+    std::size_t device = 0, port = 0;
+    std::string bytes;
+  };
+  struct BusArrival {
+    Time t{};
+    CanFrame frame;
+  };
+  /// The next turn's time: the earliest chunk end or deadline (none: no turn is due).
+  std::optional<Time> NextTurn() const;
+  /// A turn at `t`: the programs are woken when that can change anything for them (see
+  /// LockstepHost::NeedsWake), always with `wake` (the first turn: they ran from their start;
+  /// the drain: Flush wrote what was left). False when the wait was given up.
+  bool Turn(Time t, DeviceIo& io, bool wake = false);
+  void ReadHosts(Time t, DeviceIo& io);
+  void ReadBus(Time t, DeviceIo& io);
+  void DeliverHostBytes(const HostBytes& h, DeviceIo& io, DeviceOutput& out);
+
+  lockstep::LockstepHost& host_;
+  ClockedPacer& pacer_;
+  lockstep::LockstepHost::WaitStep on_wait_;
+  bool started_ = false;
+  std::deque<HostBytes> arrivals_;
+  std::deque<BusArrival> bus_arrivals_;
+};
+
+}  // namespace hil::harness

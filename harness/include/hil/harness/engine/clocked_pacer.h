@@ -1,0 +1,51 @@
+#pragma once
+/// @file
+/// Virtual mode with the programs under test on hil's clock (pacer.h; `hil run --lockstep`, the
+/// preload library harness/src/preload/): emulated time runs free, and the bytes a device makes
+/// reach the host when the last byte of their chunk has left the UART, not when they are made. The
+/// host turns (clocked_host_turns.h) move the programs' clock to that time, write the chunks due
+/// (WriteDue) and wake the programs, so a program that stamps what it reads with clock_gettime
+/// sees the emulated arrival times of the bytes. CAN frames go when they are made, as in virtual
+/// mode.
+
+#include <optional>
+#include <vector>
+
+#include "hil/harness/engine/pacer.h"
+
+namespace hil::harness {
+
+class ClockedPacer final : public Pacer {
+ public:
+  Stepping stepping() const override { return Stepping::kVirtual; }
+  void Start(EngineDevices& devices) override;
+  /// Emulated time does not wait for the wall clock.
+  bool Await(const StepTimes& step, DeviceIo& io, DeviceOutput& out) override {
+    (void)step, (void)io, (void)out;
+    return false;
+  }
+  /// The bytes wait in their endpoint until WriteDue.
+  void Queued(SerialEndpoint& ep, std::size_t bytes, Time t_ready) override {
+    (void)ep, (void)bytes, (void)t_ready;
+  }
+  bool Send(CanEndpoint* can, bool write, std::unique_lock<std::mutex>& lock) override;
+  /// Everything still waiting is written (the run is over: the drain reads it).
+  bool Flush(DeviceIo& io) override;
+
+  /// The earliest end of a chunk still waiting, if any.
+  std::optional<Time> NextChunkEnd() const;
+  /// Writes every waiting chunk that has ended by `t`, and waits until the kernel has handed them
+  /// to the host's side of the pty (see kHandOverBytes); true when any was.
+  bool WriteDue(Time t);
+  /// What the host side's line discipline holds at most (N_TTY's buffer, 4 KB, less one): the
+  /// bytes beyond it stay in the pty's flip buffers, so how a backlog larger than this is split
+  /// among the host's reads depends on the machine.
+  static constexpr std::size_t kHandOverBytes = 4095;
+  /// How long (wall) WriteDue waits for the kernel's hand-over before it goes on.
+  static constexpr std::int64_t kHandOverLimitNs = 100'000'000;
+
+ private:
+  std::vector<SerialEndpoint*> endpoints_;
+};
+
+}  // namespace hil::harness

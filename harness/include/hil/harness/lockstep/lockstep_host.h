@@ -1,0 +1,87 @@
+#pragma once
+/// @file
+/// hil's side of the shared clock (lockstep_shared.h): creates the shared file the programs under
+/// test map through libhil_lockstep.so, publishes emulated time, wakes them (a grant) and waits
+/// until every thread of theirs waits again (idle), without looking at /proc. A thread that died
+/// without leaving its slot (its process was killed) is noticed when a wait has lasted
+/// kLivenessCheckNs and no longer waited for.
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hil/firmware_emu/sim_time.h"
+
+namespace hil::harness::lockstep {
+
+struct Shared;
+
+class LockstepHost {
+ public:
+  /// A process that loaded the library.
+  struct Process {
+    int pid = 0;
+    std::string name;
+  };
+  /// Counts for the report.
+  struct Stats {
+    std::uint64_t grants = 0;        ///< times hil woke the programs
+    std::uint64_t slept = 0;         ///< waits for idle that slept on the futex
+    std::int64_t wait_ns = 0;        ///< wall time spent waiting for idle
+    std::uint64_t thread_waits = 0;  ///< waits the programs' threads blocked in (all slots)
+  };
+  /// Called while a wait for idle lasts (every kStepNs): the threads not idle, whether this is a
+  /// new wait. False gives the wait up.
+  using WaitStep = std::function<bool(std::size_t busy_threads, bool new_wait)>;
+  static constexpr std::int64_t kStepNs = 1'000'000;
+  static constexpr std::int64_t kLivenessCheckNs = 1'000'000;
+
+  /// Creates `path` (removed again by the destructor); emulated t = 0 is UTC `utc_epoch_ns`.
+  /// @throws std::runtime_error when the file cannot be made.
+  LockstepHost(std::string path, std::int64_t utc_epoch_ns);
+  ~LockstepHost();
+  LockstepHost(const LockstepHost&) = delete;
+  LockstepHost& operator=(const LockstepHost&) = delete;
+
+  const std::string& path() const { return path_; }
+  /// Emulated time the programs read from now on (only while they are idle).
+  void SetNow(Time t);
+  Time now() const;
+  /// A grant: the programs look at what they wait for again.
+  void Wake();
+  /// Waits until every claimed thread waits and has looked since the last change. False: given up.
+  bool WaitIdle(const WaitStep& on_wait);
+  /// One look: whether the programs are idle now.
+  bool Idle() const;
+  /// Whether a grant at emulated `t` can change anything for the programs: a thread runs, or one
+  /// waits with a deadline at or before `t`, or `bytes_written` and one waits for descriptors.
+  bool NeedsWake(Time t, bool bytes_written) const;
+  /// The earliest deadline of the waiting threads (none: every one waits without a timeout).
+  std::optional<Time> EarliestDeadline() const;
+  /// hil paces the run the old way after all: the library passes every call through from now on
+  /// (waits in progress go on as the real calls).
+  void Abandon();
+  /// `export LD_PRELOAD=... HIL_LOCKSTEP=...; ` for the shell line of a host (its shell does not
+  /// load the library, the programs it starts do; an LD_PRELOAD of the caller's is kept after it).
+  std::string ShellExports(const std::string& library) const;
+  /// The processes that have loaded the library so far.
+  std::vector<Process> Processes() const;
+  Stats stats() const;
+
+ private:
+  /// Threads not idle now.
+  std::size_t Busy() const;
+  /// Frees the slots of threads that no longer exist.
+  void ForgetDeadThreads();
+
+  std::string path_;
+  Shared* shared_ = nullptr;
+  Stats stats_;
+};
+
+/// The library beside hil's executable (or in ../lib/ of it); empty when there is none.
+std::string FindPreloadLibrary();
+
+}  // namespace hil::harness::lockstep

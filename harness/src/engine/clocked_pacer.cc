@@ -1,0 +1,66 @@
+#include "hil/harness/engine/clocked_pacer.h"
+
+#include <sched.h>
+
+#include <algorithm>
+
+namespace hil::harness {
+
+void ClockedPacer::Start(EngineDevices& devices) {
+  endpoints_.clear();
+  for (const auto& ports : devices.endpoints) {
+    for (const auto& ep : ports) endpoints_.push_back(ep.get());
+  }
+}
+
+bool ClockedPacer::Send(CanEndpoint* can, bool write, std::unique_lock<std::mutex>& lock) {
+  (void)write, (void)lock;
+  if (can) can->SendAll();
+  return true;
+}
+
+bool ClockedPacer::Flush(DeviceIo& io) {
+  (void)io;
+  for (SerialEndpoint* ep : endpoints_) ep->WriteChunksOrDrop(ep->ChunksEndedBy(Time::max()));
+  return true;
+}
+
+std::optional<Time> ClockedPacer::NextChunkEnd() const {
+  std::optional<Time> t;
+  for (const SerialEndpoint* ep : endpoints_) {
+    const std::optional<Time> end = ep->next_chunk_end();
+    if (end && (!t || *end < *t)) t = end;
+  }
+  return t;
+}
+
+namespace {
+
+// Waits until the host side of `ep` shows `want` unread bytes (a pty hands what its master side
+// wrote to the slave's line discipline in a kernel worker: a read on the host side that finds
+// bytes there returns them without waiting for the rest, so a chunk not yet handed over would be
+// read a read later in some runs). At most ClockedPacer::kHandOverLimitNs.
+void AwaitHandOver(const SerialEndpoint& ep, std::size_t want) {
+  const std::int64_t start = link::RealtimePacer::MonotonicNs();
+  while (ep.PendingToHost() < want) {
+    if (link::RealtimePacer::MonotonicNs() - start > ClockedPacer::kHandOverLimitNs) return;
+    sched_yield();
+  }
+}
+
+}  // namespace
+
+bool ClockedPacer::WriteDue(Time t) {
+  bool any = false;
+  for (SerialEndpoint* ep : endpoints_) {
+    const std::size_t n = ep->ChunksEndedBy(t);
+    if (n == 0) continue;
+    const std::size_t unread = ep->PendingToHost();
+    const std::size_t sent = ep->WriteChunksOrDrop(n);
+    if (sent > 0) AwaitHandOver(*ep, std::min(unread + sent, kHandOverBytes));
+    any = true;
+  }
+  return any;
+}
+
+}  // namespace hil::harness

@@ -1,0 +1,210 @@
+#include "hil/harness/lockstep/lockstep_host.h"
+
+#include <fcntl.h>
+#include <time.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <climits>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <new>
+#include <stdexcept>
+
+#include <linux/futex.h>
+#include <sys/mman.h>
+#include <sys/syscall.h>
+
+#include "hil/harness/lockstep/lockstep_shared.h"
+
+namespace hil::harness::lockstep {
+namespace {
+
+std::int64_t MonotonicNs() {
+  timespec ts{};
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000LL + ts.tv_nsec;
+}
+
+// Whether thread `tid` of process `pid` still exists and is not a zombie.
+bool ThreadAlive(int pid, int tid) {
+  std::ifstream f("/proc/" + std::to_string(pid) + "/task/" + std::to_string(tid) + "/stat");
+  std::string stat;
+  if (!std::getline(f, stat)) return false;
+  const std::size_t paren = stat.rfind(')');
+  if (paren == std::string::npos || paren + 2 >= stat.size()) return false;
+  const char state = stat[paren + 2];
+  return state != 'Z' && state != 'X';
+}
+
+bool SlotIdle(const ThreadSlot& s, std::uint32_t change) {
+  return s.tid.load() == 0 || (s.state.load() == kWaiting && s.acked.load() == change);
+}
+
+}  // namespace
+
+LockstepHost::LockstepHost(std::string path, std::int64_t utc_epoch_ns) : path_(std::move(path)) {
+  const int fd = open(path_.c_str(), O_RDWR | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
+  if (fd < 0 || ftruncate(fd, sizeof(Shared)) != 0) {
+    const std::string err = std::strerror(errno);
+    if (fd >= 0) close(fd);
+    throw std::runtime_error("cannot make the lockstep file " + path_ + ": " + err);
+  }
+  void* m = mmap(nullptr, sizeof(Shared), PROT_READ | PROT_WRITE, MAP_SHARED, fd, 0);
+  close(fd);
+  if (m == MAP_FAILED)
+    throw std::runtime_error("cannot map the lockstep file " + path_ + ": " + std::strerror(errno));
+  // the file is zeros: every atomic starts at 0, every slot free
+  shared_ = static_cast<Shared*>(m);
+  shared_->utc_epoch_ns = utc_epoch_ns;
+  shared_->version = kVersion;
+  std::atomic_thread_fence(std::memory_order_seq_cst);
+  shared_->magic = kMagic;
+}
+
+LockstepHost::~LockstepHost() {
+  munmap(shared_, sizeof(Shared));
+  std::error_code ec;
+  std::filesystem::remove(path_, ec);
+}
+
+void LockstepHost::SetNow(Time t) { shared_->now_ns.store((t - Time{}).count()); }
+
+Time LockstepHost::now() const { return Time{} + Duration(shared_->now_ns.load()); }
+
+void LockstepHost::Wake() {
+  ++stats_.grants;
+  shared_->change.fetch_add(1);
+  syscall(SYS_futex, reinterpret_cast<std::uint32_t*>(&shared_->change), FUTEX_WAKE, INT_MAX,
+          nullptr, nullptr, 0);
+}
+
+std::size_t LockstepHost::Busy() const {
+  const std::uint32_t change = shared_->change.load();
+  const int used = std::min(shared_->slots_used.load(), kMaxThreads);
+  std::size_t busy = 0;
+  for (int i = 0; i < used; ++i) busy += SlotIdle(shared_->slots[i], change) ? 0 : 1;
+  return busy;
+}
+
+bool LockstepHost::Idle() const { return Busy() == 0; }
+
+void LockstepHost::ForgetDeadThreads() {
+  const int used = std::min(shared_->slots_used.load(), kMaxThreads);
+  for (int i = 0; i < used; ++i) {
+    ThreadSlot& s = shared_->slots[i];
+    const std::int32_t tid = s.tid.load();
+    if (tid == 0 || ThreadAlive(s.pid.load(), tid)) continue;
+    s.state.store(kRunning);
+    s.tid.store(0);
+  }
+}
+
+bool LockstepHost::WaitIdle(const WaitStep& on_wait) {
+  if (Idle()) return true;
+  const std::int64_t start = MonotonicNs();
+  std::int64_t next_step = start + kStepNs;
+  bool new_wait = true;
+  shared_->hil_waiting.store(1);
+  bool idle = false;
+  while (!idle) {
+    const std::uint32_t seen = shared_->host_wake.load();
+    if (Idle()) {
+      idle = true;
+      break;
+    }
+    // sleeps until a thread waits or acknowledges (or the step's time has come)
+    const timespec step{0, kStepNs};
+    ++stats_.slept;
+    syscall(SYS_futex, reinterpret_cast<std::uint32_t*>(&shared_->host_wake), FUTEX_WAIT, seen,
+            &step, nullptr, 0);
+    const std::int64_t now = MonotonicNs();
+    if (now < next_step) continue;
+    next_step = now + kStepNs;
+    if (now - start >= kLivenessCheckNs) ForgetDeadThreads();
+    if (!on_wait(Busy(), new_wait)) break;
+    new_wait = false;
+  }
+  shared_->hil_waiting.store(0);
+  stats_.wait_ns += MonotonicNs() - start;
+  return idle;
+}
+
+bool LockstepHost::NeedsWake(Time t, bool bytes_written) const {
+  const std::uint32_t change = shared_->change.load();
+  const std::int64_t t_ns = (t - Time{}).count();
+  const int used = std::min(shared_->slots_used.load(), kMaxThreads);
+  for (int i = 0; i < used; ++i) {
+    const ThreadSlot& s = shared_->slots[i];
+    if (!SlotIdle(s, change)) return true;
+    if (s.tid.load() == 0) continue;
+    if (s.deadline_ns.load() <= t_ns || (bytes_written && s.on_descriptors.load() != 0))
+      return true;
+  }
+  return false;
+}
+
+std::optional<Time> LockstepHost::EarliestDeadline() const {
+  const int used = std::min(shared_->slots_used.load(), kMaxThreads);
+  std::int64_t earliest = kNoDeadline;
+  for (int i = 0; i < used; ++i) {
+    const ThreadSlot& s = shared_->slots[i];
+    if (s.tid.load() == 0 || s.state.load() != kWaiting) continue;
+    earliest = std::min(earliest, s.deadline_ns.load());
+  }
+  if (earliest == kNoDeadline) return std::nullopt;
+  return Time{} + Duration(earliest);
+}
+
+void LockstepHost::Abandon() {
+  shared_->passthrough.store(1);
+  Wake();
+  --stats_.grants;  // a wake to let go, not a turn
+}
+
+namespace {
+// 'text' for /bin/sh: single quotes, each ' in it as '\''.
+std::string ShellQuoted(const std::string& text) {
+  std::string q = "'";
+  for (const char ch : text) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+  return q + "'";
+}
+}  // namespace
+
+std::string LockstepHost::ShellExports(const std::string& library) const {
+  return "LD_PRELOAD=" + ShellQuoted(library) + "${LD_PRELOAD:+:$LD_PRELOAD} " + kEnvFile + "=" +
+         ShellQuoted(path_) + "; export LD_PRELOAD " + kEnvFile + "; ";
+}
+
+std::vector<LockstepHost::Process> LockstepHost::Processes() const {
+  std::vector<Process> out;
+  const int used = std::min(shared_->processes_used.load(), kMaxProcesses);
+  for (int i = 0; i < used; ++i) {
+    const ProcessEntry& p = shared_->processes[i];
+    if (p.pid.load() == 0) continue;
+    out.push_back({p.pid.load(), std::string(p.comm, strnlen(p.comm, sizeof p.comm))});
+  }
+  return out;
+}
+
+LockstepHost::Stats LockstepHost::stats() const {
+  Stats s = stats_;
+  const int used = std::min(shared_->slots_used.load(), kMaxThreads);
+  for (int i = 0; i < used; ++i) s.thread_waits += shared_->slots[i].waits.load();
+  return s;
+}
+
+std::string FindPreloadLibrary() {
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec) return "";
+  for (const auto& p : {exe.parent_path() / "libhil_lockstep.so",
+                        exe.parent_path().parent_path() / "lib" / "libhil_lockstep.so"}) {
+    if (std::filesystem::exists(p, ec)) return p.string();
+  }
+  return "";
+}
+
+}  // namespace hil::harness::lockstep

@@ -1,0 +1,157 @@
+// Waits for descriptors that expire in emulated time (README.md): poll, ppoll, select, pselect,
+// epoll_wait and epoll_pwait. A zero timeout is the real call; any other looks at the
+// descriptors without blocking each time hil moves time on or another thread waits, until one is
+// ready or emulated time reaches the timeout. A signal ends the wait with EINTR.
+#include <poll.h>
+#include <pthread.h>
+#include <signal.h>
+
+#include <cerrno>
+
+#include <sys/epoll.h>
+#include <sys/select.h>
+
+#include "preload_state.h"
+
+namespace {
+
+namespace pl = hil::preload;
+using hil::harness::lockstep::kNoDeadline;
+
+std::int64_t DeadlineAfterMs(int timeout_ms) {
+  return timeout_ms < 0 ? kNoDeadline
+                        : pl::EmulatedNowNs() + static_cast<std::int64_t>(timeout_ms) * 1'000'000;
+}
+
+std::int64_t DeadlineAfter(const timespec* ts) {
+  return ts ? pl::EmulatedNowNs() + pl::ToNs(*ts) : kNoDeadline;
+}
+
+// The answer of a wait to its caller: ready's count, 0 at the deadline, -1 EINTR.
+int Answer(long r) {
+  if (r == pl::kInterrupted) {
+    errno = EINTR;
+    return -1;
+  }
+  return static_cast<int>(r);
+}
+
+struct PollArgs {
+  pollfd* fds;
+  nfds_t n;
+};
+long PollReady(void* a) {
+  auto* p = static_cast<PollArgs*>(a);
+  return pl::Real().poll(p->fds, p->n, 0);
+}
+
+struct SelectArgs {
+  int nfds;
+  fd_set *r, *w, *e;
+  fd_set r0, w0, e0;  // the caller's sets, asked again at every look
+};
+long SelectReady(void* a) {
+  auto* s = static_cast<SelectArgs*>(a);
+  if (s->r) *s->r = s->r0;
+  if (s->w) *s->w = s->w0;
+  if (s->e) *s->e = s->e0;
+  timeval zero{0, 0};
+  return pl::Real().select(s->nfds, s->r, s->w, s->e, &zero);
+}
+SelectArgs MakeSelectArgs(int nfds, fd_set* r, fd_set* w, fd_set* e) {
+  SelectArgs s{nfds, r, w, e, {}, {}, {}};
+  if (r) s.r0 = *r;
+  if (w) s.w0 = *w;
+  if (e) s.e0 = *e;
+  return s;
+}
+void ClearSets(SelectArgs& s) {
+  if (s.r) FD_ZERO(s.r);
+  if (s.w) FD_ZERO(s.w);
+  if (s.e) FD_ZERO(s.e);
+}
+
+struct EpollArgs {
+  int epfd;
+  epoll_event* events;
+  int max;
+};
+long EpollReady(void* a) {
+  auto* p = static_cast<EpollArgs*>(a);
+  return pl::Real().epoll_wait(p->epfd, p->events, p->max, 0);
+}
+
+// Waits with the signal mask `mask` in force (ppoll, pselect, epoll_pwait), if given.
+long WaitMasked(long (*ready)(void*), void* arg, std::int64_t deadline, const sigset_t* mask) {
+  sigset_t old;
+  if (mask) pthread_sigmask(SIG_SETMASK, mask, &old);
+  const long r = pl::Wait(ready, arg, deadline);
+  if (mask) pthread_sigmask(SIG_SETMASK, &old, nullptr);
+  return r;
+}
+
+}  // namespace
+
+extern "C" {
+
+int poll(pollfd* fds, nfds_t n, int timeout_ms) {
+  if (timeout_ms == 0 || !pl::SharedState()) return pl::Real().poll(fds, n, timeout_ms);
+  PollArgs a{fds, n};
+  const long r = pl::Wait(PollReady, &a, DeadlineAfterMs(timeout_ms));
+  if (r == pl::kUnmanaged) return pl::Real().poll(fds, n, timeout_ms);
+  return Answer(r);
+}
+
+int ppoll(pollfd* fds, nfds_t n, const timespec* timeout, const sigset_t* mask) {
+  const bool zero = timeout && timeout->tv_sec == 0 && timeout->tv_nsec == 0;
+  if (zero || !pl::SharedState()) return pl::Real().ppoll(fds, n, timeout, mask);
+  PollArgs a{fds, n};
+  const long r = WaitMasked(PollReady, &a, DeadlineAfter(timeout), mask);
+  if (r == pl::kUnmanaged) return pl::Real().ppoll(fds, n, timeout, mask);
+  return Answer(r);
+}
+
+int select(int nfds, fd_set* r, fd_set* w, fd_set* e, timeval* timeout) {
+  const bool zero = timeout && timeout->tv_sec == 0 && timeout->tv_usec == 0;
+  if (zero || !pl::SharedState()) return pl::Real().select(nfds, r, w, e, timeout);
+  SelectArgs a = MakeSelectArgs(nfds, r, w, e);
+  const std::int64_t deadline =
+      timeout ? pl::EmulatedNowNs() + timeout->tv_sec * 1'000'000'000LL + timeout->tv_usec * 1000LL
+              : kNoDeadline;
+  const long res = pl::Wait(SelectReady, &a, deadline);
+  if (res == pl::kUnmanaged) return pl::Real().select(nfds, r, w, e, timeout);
+  if (res == pl::kDeadline) ClearSets(a);
+  if (res == pl::kDeadline && timeout) *timeout = timeval{0, 0};  // Linux: the time left
+  return Answer(res);
+}
+
+int pselect(int nfds, fd_set* r, fd_set* w, fd_set* e, const timespec* timeout,
+            const sigset_t* mask) {
+  const bool zero = timeout && timeout->tv_sec == 0 && timeout->tv_nsec == 0;
+  if (zero || !pl::SharedState()) return pl::Real().pselect(nfds, r, w, e, timeout, mask);
+  SelectArgs a = MakeSelectArgs(nfds, r, w, e);
+  const long res = WaitMasked(SelectReady, &a, DeadlineAfter(timeout), mask);
+  if (res == pl::kUnmanaged) return pl::Real().pselect(nfds, r, w, e, timeout, mask);
+  if (res == pl::kDeadline) ClearSets(a);
+  return Answer(res);
+}
+
+int epoll_wait(int epfd, epoll_event* events, int max, int timeout_ms) {
+  if (timeout_ms == 0 || !pl::SharedState())
+    return pl::Real().epoll_wait(epfd, events, max, timeout_ms);
+  EpollArgs a{epfd, events, max};
+  const long r = pl::Wait(EpollReady, &a, DeadlineAfterMs(timeout_ms));
+  if (r == pl::kUnmanaged) return pl::Real().epoll_wait(epfd, events, max, timeout_ms);
+  return Answer(r);
+}
+
+int epoll_pwait(int epfd, epoll_event* events, int max, int timeout_ms, const sigset_t* mask) {
+  if (timeout_ms == 0 || !pl::SharedState())
+    return pl::Real().epoll_pwait(epfd, events, max, timeout_ms, mask);
+  EpollArgs a{epfd, events, max};
+  const long r = WaitMasked(EpollReady, &a, DeadlineAfterMs(timeout_ms), mask);
+  if (r == pl::kUnmanaged) return pl::Real().epoll_pwait(epfd, events, max, timeout_ms, mask);
+  return Answer(r);
+}
+
+}  // extern "C"

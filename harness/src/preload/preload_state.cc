@@ -1,0 +1,248 @@
+// The preload library's state: the shared file, the real functions, the threads' slots, the wait.
+#include "preload_state.h"
+
+#include <dlfcn.h>
+#include <fcntl.h>
+#include <pthread.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <climits>
+#include <cstdlib>
+#include <cstring>
+
+#include <linux/futex.h>
+#include <sys/mman.h>
+#include <sys/syscall.h>
+
+namespace hil::preload {
+namespace lk = harness::lockstep;
+namespace {
+
+lk::Shared* g_shared = nullptr;
+RealFunctions g_real{};
+bool g_resolved = false;
+pthread_key_t g_slot_key;
+// the calling thread's slot (initial-exec: no allocation on first use in a preloaded library)
+__attribute__((tls_model("initial-exec"))) thread_local lk::ThreadSlot* t_slot = nullptr;
+
+template <class F>
+void Resolve(F& f, const char* name) {
+  f = reinterpret_cast<F>(dlsym(RTLD_NEXT, name));
+}
+
+void ResolveAll() {
+  Resolve(g_real.clock_gettime, "clock_gettime");
+  Resolve(g_real.nanosleep, "nanosleep");
+  Resolve(g_real.clock_nanosleep, "clock_nanosleep");
+  Resolve(g_real.usleep, "usleep");
+  Resolve(g_real.sleep, "sleep");
+  Resolve(g_real.poll, "poll");
+  Resolve(g_real.ppoll, "ppoll");
+  Resolve(g_real.select, "select");
+  Resolve(g_real.pselect, "pselect");
+  Resolve(g_real.epoll_wait, "epoll_wait");
+  Resolve(g_real.epoll_pwait, "epoll_pwait");
+  Resolve(g_real.read, "read");
+  g_resolved = true;
+}
+
+long Futex(std::atomic<std::uint32_t>* word, int op, std::uint32_t val) {
+  return syscall(SYS_futex, reinterpret_cast<std::uint32_t*>(word), op, val, nullptr, nullptr, 0);
+}
+
+void NotifyHil() {
+  g_shared->host_wake.fetch_add(1);
+  if (g_shared->hil_waiting.load() != 0) Futex(&g_shared->host_wake, FUTEX_WAKE, INT_MAX);
+}
+
+void FreeSlot(lk::ThreadSlot* s) {
+  s->state.store(lk::kRunning);  // a slot claimed again starts running (lockstep_shared.h)
+  s->tid.store(0);
+}
+
+// pthread key destructor: the thread ends, hil no longer waits for it.
+void OnThreadExit(void* slot) {
+  if (!g_shared || !slot) return;
+  FreeSlot(static_cast<lk::ThreadSlot*>(slot));
+  NotifyHil();
+}
+
+lk::ThreadSlot* ClaimSlot() {
+  const auto tid = static_cast<std::int32_t>(syscall(SYS_gettid));
+  // a program exec'd by a preloaded one keeps its thread id: the slot is its own
+  const int used = g_shared->slots_used.load();
+  for (int i = 0; i < used && i < lk::kMaxThreads; ++i) {
+    if (g_shared->slots[i].tid.load() == tid) return &g_shared->slots[i];
+  }
+  for (int i = 0; i < lk::kMaxThreads; ++i) {
+    std::int32_t free = 0;
+    lk::ThreadSlot& s = g_shared->slots[i];
+    if (!s.tid.compare_exchange_strong(free, tid)) continue;
+    s.pid.store(static_cast<std::int32_t>(getpid()));
+    s.deadline_ns.store(lk::kNoDeadline);
+    int hi = g_shared->slots_used.load();
+    while (hi < i + 1 && !g_shared->slots_used.compare_exchange_weak(hi, i + 1)) {
+    }
+    return &s;
+  }
+  return nullptr;  // full: this thread blocks the real way
+}
+
+void RegisterProcess() {
+  const auto pid = static_cast<std::int32_t>(getpid());
+  for (int i = 0; i < lk::kMaxProcesses; ++i) {
+    lk::ProcessEntry& p = g_shared->processes[i];
+    std::int32_t free = 0;
+    if (!p.pid.compare_exchange_strong(free, pid)) continue;
+    std::memset(p.comm, 0, sizeof p.comm);
+    const int fd = open("/proc/self/comm", O_RDONLY | O_CLOEXEC);
+    if (fd >= 0) {
+      const ssize_t n = g_real.read(fd, p.comm, sizeof p.comm - 1);
+      if (n > 0 && p.comm[n - 1] == '\n') p.comm[n - 1] = '\0';
+      close(fd);
+    }
+    int hi = g_shared->processes_used.load();
+    while (hi < i + 1 && !g_shared->processes_used.compare_exchange_weak(hi, i + 1)) {
+    }
+    return;
+  }
+}
+
+void AfterForkInChild() { t_slot = nullptr; }  // a child counts from its own first wait
+
+lk::ThreadSlot* Slot() {
+  if (!SharedState()) return nullptr;
+  if (!t_slot) {
+    t_slot = ClaimSlot();
+    if (t_slot) pthread_setspecific(g_slot_key, t_slot);
+  }
+  return t_slot;
+}
+
+__attribute__((constructor)) void Load() {
+  ResolveAll();
+  const char* path = std::getenv(lk::kEnvFile);
+  if (!path || !*path) return;
+  const int fd = open(path, O_RDWR | O_CLOEXEC);
+  if (fd < 0) return;
+  void* m = mmap(nullptr, sizeof(lk::Shared), PROT_READ | PROT_WRITE, MAP_SHARED, fd, 0);
+  close(fd);
+  if (m == MAP_FAILED) return;
+  auto* s = static_cast<lk::Shared*>(m);
+  if (s->magic != lk::kMagic || s->version != lk::kVersion) {
+    munmap(m, sizeof(lk::Shared));
+    return;
+  }
+  if (pthread_key_create(&g_slot_key, OnThreadExit) != 0) return;
+  pthread_atfork(nullptr, nullptr, AfterForkInChild);
+  g_shared = s;
+  RegisterProcess();
+  Slot();  // the main thread runs from now on: hil waits until it first waits
+  NotifyHil();
+}
+
+__attribute__((destructor)) void Unload() {
+  if (!g_shared) return;
+  // exit(): this process's threads end with it
+  const auto pid = static_cast<std::int32_t>(getpid());
+  for (int i = 0; i < g_shared->slots_used.load() && i < lk::kMaxThreads; ++i) {
+    if (g_shared->slots[i].pid.load() == pid && g_shared->slots[i].tid.load() != 0)
+      FreeSlot(&g_shared->slots[i]);
+  }
+  NotifyHil();
+}
+
+}  // namespace
+
+const RealFunctions& Real() {
+  if (!g_resolved) ResolveAll();
+  return g_real;
+}
+
+lk::Shared* SharedState() {
+  return g_shared && g_shared->passthrough.load() == 0 ? g_shared : nullptr;
+}
+
+std::int64_t EmulatedNowNs() { return g_shared->now_ns.load(); }
+
+bool Emulated(clockid_t clock) {
+  if (!SharedState()) return false;
+  switch (clock) {
+    case CLOCK_REALTIME:
+    case CLOCK_REALTIME_COARSE:
+    case CLOCK_MONOTONIC:
+    case CLOCK_MONOTONIC_COARSE:
+    case CLOCK_MONOTONIC_RAW:
+    case CLOCK_BOOTTIME:
+      return true;
+    default:
+      return false;
+  }
+}
+
+std::int64_t ClockReadingNs(clockid_t clock, std::int64_t t_ns) {
+  if (clock == CLOCK_REALTIME || clock == CLOCK_REALTIME_COARSE)
+    return g_shared->utc_epoch_ns + t_ns;
+  return lk::kMonotonicBaseNs + t_ns;
+}
+
+std::int64_t EmulatedTimeOf(clockid_t clock, std::int64_t reading_ns) {
+  return reading_ns - ClockReadingNs(clock, 0);
+}
+
+std::int64_t ToNs(const timespec& ts) {
+  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec;
+}
+
+timespec ToTimespec(std::int64_t ns) {
+  timespec ts{};
+  ts.tv_sec = static_cast<time_t>(ns / 1'000'000'000);
+  ts.tv_nsec = static_cast<long>(ns % 1'000'000'000);
+  if (ts.tv_nsec < 0) {
+    ts.tv_nsec += 1'000'000'000;
+    --ts.tv_sec;
+  }
+  return ts;
+}
+
+long Wait(long (*ready)(void* arg), void* arg, std::int64_t deadline_ns) {
+  lk::ThreadSlot* s = Slot();
+  if (!s) return kUnmanaged;
+  const int saved_errno = errno;
+  // met already: the call returns as the real one would, without a word to anyone
+  if (const long r = ready ? ready(arg) : 0; r != 0) return r;
+  if (deadline_ns != lk::kNoDeadline && g_shared->now_ns.load() >= deadline_ns) return kDeadline;
+  s->deadline_ns.store(deadline_ns);
+  s->on_descriptors.store(ready ? 1 : 0);
+  s->state.store(lk::kWaiting);
+  s->waits.fetch_add(1);
+  // what this thread did before it waits may be what another waits for: everyone looks again
+  g_shared->change.fetch_add(1);
+  Futex(&g_shared->change, FUTEX_WAKE, INT_MAX);
+  for (;;) {
+    const std::uint32_t c = g_shared->change.load();
+    const long r = ready ? ready(arg) : 0;
+    if (r != 0) {
+      s->state.store(lk::kRunning);
+      return r;
+    }
+    if (deadline_ns != lk::kNoDeadline && g_shared->now_ns.load() >= deadline_ns) {
+      s->state.store(lk::kRunning);
+      errno = saved_errno;
+      return kDeadline;
+    }
+    if (g_shared->passthrough.load() != 0) {
+      s->state.store(lk::kRunning);
+      return kUnmanaged;  // hil paces the run the old way: the real call waits
+    }
+    s->acked.store(c);
+    NotifyHil();
+    if (Futex(&g_shared->change, FUTEX_WAIT, c) != 0 && errno == EINTR) {
+      s->state.store(lk::kRunning);
+      return kInterrupted;
+    }
+  }
+}
+
+}  // namespace hil::preload

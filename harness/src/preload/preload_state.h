@@ -1,0 +1,67 @@
+#pragma once
+// The preload library's state (libhil_lockstep.so; contract in README.md beside this file): the
+// shared file mapped at load, the real functions behind the interposed ones, each thread's slot,
+// and the one wait every interposed blocking call goes through. No allocation after load, no
+// exception, no lock: the calls may run in any thread at any time.
+
+#include <poll.h>
+#include <time.h>
+
+#include <cstdint>
+
+#include <sys/epoll.h>
+#include <sys/select.h>
+#include <sys/types.h>
+
+#include "hil/harness/lockstep/lockstep_shared.h"
+
+namespace hil::preload {
+
+/// The libc functions the library stands in front of (dlsym(RTLD_NEXT)).
+struct RealFunctions {
+  int (*clock_gettime)(clockid_t, timespec*);
+  int (*nanosleep)(const timespec*, timespec*);
+  int (*clock_nanosleep)(clockid_t, int, const timespec*, timespec*);
+  int (*usleep)(useconds_t);
+  unsigned (*sleep)(unsigned);
+  int (*poll)(pollfd*, nfds_t, int);
+  int (*ppoll)(pollfd*, nfds_t, const timespec*, const sigset_t*);
+  int (*select)(int, fd_set*, fd_set*, fd_set*, timeval*);
+  int (*pselect)(int, fd_set*, fd_set*, fd_set*, const timespec*, const sigset_t*);
+  int (*epoll_wait)(int, epoll_event*, int, int);
+  int (*epoll_pwait)(int, epoll_event*, int, int, const sigset_t*);
+  ssize_t (*read)(int, void*, size_t);
+};
+
+/// The real functions (resolved at load; a call before that resolves them first).
+const RealFunctions& Real();
+
+/// The shared state, or null when the program runs without hil's clock (no HIL_LOCKSTEP, or the
+/// file could not be mapped: every call is then passed through).
+harness::lockstep::Shared* SharedState();
+
+/// Emulated nanoseconds since t = 0.
+std::int64_t EmulatedNowNs();
+/// Whether `clock` reads emulated time, and its reading for emulated time `t_ns`.
+bool Emulated(clockid_t clock);
+std::int64_t ClockReadingNs(clockid_t clock, std::int64_t t_ns);
+/// The emulated time at which `clock` reads `reading_ns`.
+std::int64_t EmulatedTimeOf(clockid_t clock, std::int64_t reading_ns);
+
+std::int64_t ToNs(const timespec& ts);
+timespec ToTimespec(std::int64_t ns);
+
+/// What Wait returns besides a readiness check's own answer (> 0, or −1 with errno).
+enum WaitEnd : long {
+  kDeadline = 0,         ///< the deadline came
+  kUnmanaged = -1000,    ///< no slot (no hil, or the slots are full): block the real way
+  kInterrupted = -1001,  ///< a signal arrived (the caller returns EINTR)
+};
+
+/// Waits in emulated time until `ready(arg)` (a non-blocking look at descriptors: > 0 met, −1
+/// failed with errno, 0 not yet; null: a sleep, never met) or until emulated time reaches
+/// `deadline_ns` (kNoDeadline: none); see the protocol in lockstep_shared.h. Returns ready's
+/// answer or a WaitEnd.
+long Wait(long (*ready)(void* arg), void* arg, std::int64_t deadline_ns);
+
+}  // namespace hil::preload

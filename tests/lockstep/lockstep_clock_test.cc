@@ -1,0 +1,168 @@
+// libhil_lockstep.so against hil's side of the clock (lockstep_host.h), with ordinary programs
+// preloaded: their clocks read the emulated time hil publishes, their sleeps, polls and blocking
+// reads end only when hil moves that time on or gives them bytes, and hil learns from the shared
+// memory alone when they wait, and until when.
+#include <fcntl.h>
+#include <signal.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include "hil/harness/lockstep/lockstep_host.h"
+
+namespace hil::harness::lockstep {
+namespace {
+
+extern "C" char** environ;
+
+constexpr std::int64_t kEpochNs = 1'370'851'200'000'000'000;  // 2013-06-10T08:00:00Z
+
+struct Child {
+  pid_t pid = -1;
+  int out = -1;  // its stdout (read end)
+  int in = -1;   // its stdin (write end)
+};
+
+// Runs `argv` with the library preloaded on `host`'s clock, stdin and stdout piped.
+Child Spawn(const LockstepHost& host, const std::vector<std::string>& argv) {
+  int in[2], out[2];
+  EXPECT_EQ(pipe(in), 0);
+  EXPECT_EQ(pipe(out), 0);
+  std::vector<std::string> env_text{std::string("LD_PRELOAD=") + HIL_PRELOAD_LIBRARY,
+                                    std::string("HIL_LOCKSTEP=") + host.path(),
+                                    "PATH=/usr/bin:/bin", "LC_ALL=C", "TZ=UTC"};
+  std::vector<char*> env, args;
+  for (auto& e : env_text) env.push_back(e.data());
+  env.push_back(nullptr);
+  std::vector<std::string> argv_copy = argv;
+  for (auto& a : argv_copy) args.push_back(a.data());
+  args.push_back(nullptr);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    dup2(in[0], 0);
+    dup2(out[1], 1);
+    close(in[1]);
+    close(out[0]);
+    execve(args[0], args.data(), env.data());
+    _exit(127);
+  }
+  close(in[0]);
+  close(out[1]);
+  return {pid, out[0], in[1]};
+}
+
+bool Attached(const LockstepHost& host, pid_t pid) {
+  for (int i = 0; i < 5000; ++i) {
+    for (const auto& p : host.Processes()) {
+      if (p.pid == pid) return true;
+    }
+    usleep(1000);
+  }
+  return false;
+}
+
+std::string ReadAll(int fd) {
+  std::string s;
+  char buf[256];
+  ssize_t n;
+  while ((n = read(fd, buf, sizeof buf)) > 0) s.append(buf, static_cast<std::size_t>(n));
+  close(fd);
+  return s;
+}
+
+bool Exited(pid_t pid) {
+  int status = 0;
+  return waitpid(pid, &status, WNOHANG) == pid;
+}
+
+// A wait that gives up after 10 s of wall time (a broken library would hang the test).
+bool WaitIdle(LockstepHost& host) {
+  const auto start = std::chrono::steady_clock::now();
+  return host.WaitIdle([start](std::size_t, bool) {
+    return std::chrono::steady_clock::now() - start < std::chrono::seconds(10);
+  });
+}
+
+std::string TempFile(const char* tag) {
+  return (std::filesystem::temp_directory_path() /
+          (std::string("hil_lockstep_") + tag + "_" + std::to_string(getpid())))
+      .string();
+}
+
+TEST(LockstepClock, RealtimeIsTheScenarioEpochPlusEmulatedTime) {
+  LockstepHost host(TempFile("date"), kEpochNs);
+  host.SetNow(Time{} + std::chrono::milliseconds(5250));
+  Child c = Spawn(host, {"/bin/date", "-u", "+%s.%N"});
+  close(c.in);
+  EXPECT_EQ(ReadAll(c.out), "1370851205.250000000\n");
+  waitpid(c.pid, nullptr, 0);
+}
+
+TEST(LockstepClock, SleepEndsOnlyWhenHilMovesTimeToItsDeadline) {
+  LockstepHost host(TempFile("sleep"), kEpochNs);
+  Child c = Spawn(host, {"/bin/sleep", "0.25"});
+  close(c.in);
+  ASSERT_TRUE(Attached(host, c.pid));
+  ASSERT_TRUE(WaitIdle(host));
+  ASSERT_EQ(host.EarliestDeadline(), Time{} + std::chrono::milliseconds(250));
+  // idle: it waits on hil's clock, however long the wall clock runs
+  usleep(300'000);
+  EXPECT_FALSE(Exited(c.pid));
+  host.SetNow(Time{} + std::chrono::milliseconds(250));
+  host.Wake();
+  ASSERT_TRUE(WaitIdle(host));  // it left its slot when it ended
+  waitpid(c.pid, nullptr, 0);
+  EXPECT_FALSE(host.EarliestDeadline());
+  EXPECT_EQ(host.stats().grants, 1u);
+}
+
+TEST(LockstepClock, BlockingReadWaitsForBytesHilWrites) {
+  LockstepHost host(TempFile("read"), kEpochNs);
+  Child c = Spawn(host, {"/usr/bin/head", "-c", "5"});
+  ASSERT_TRUE(Attached(host, c.pid));
+  ASSERT_TRUE(WaitIdle(host));
+  EXPECT_FALSE(host.EarliestDeadline());  // a read waits without a deadline
+  ASSERT_EQ(write(c.in, "hello", 5), 5);
+  host.Wake();
+  EXPECT_EQ(ReadAll(c.out), "hello");
+  waitpid(c.pid, nullptr, 0);
+  close(c.in);
+}
+
+TEST(LockstepClock, PollTimeoutAndMonotonicClockAreEmulated) {
+  if (access("/usr/bin/python3", X_OK) != 0) GTEST_SKIP() << "no /usr/bin/python3";
+  LockstepHost host(TempFile("poll"), kEpochNs);
+  Child c = Spawn(host, {"/usr/bin/python3", "-c",
+                         "import select,time\n"
+                         "t0=time.monotonic_ns()\n"
+                         "p=select.poll(); p.register(0, select.POLLIN)\n"
+                         "r=p.poll(250)\n"
+                         "t1=time.monotonic_ns()\n"
+                         "time.sleep(0.02)\n"
+                         "print(len(r), t1-t0, time.monotonic_ns()-t1, t0)\n"});
+  ASSERT_TRUE(Attached(host, c.pid));
+  std::vector<Time> turns;
+  while (!Exited(c.pid)) {
+    ASSERT_TRUE(WaitIdle(host));
+    const std::optional<Time> d = host.EarliestDeadline();
+    if (!d) continue;  // it ended (or is ending): nothing to wait for
+    turns.push_back(*d);
+    host.SetNow(*d);
+    host.Wake();
+  }
+  close(c.in);
+  // the poll timed out after 250 ms of emulated time, the sleep took 20 ms, t0 is the base
+  EXPECT_EQ(ReadAll(c.out), "0 250000000 20000000 1000000000000\n");
+  ASSERT_EQ(turns.size(), 2u);
+  EXPECT_EQ(turns[1], Time{} + std::chrono::milliseconds(270));
+}
+
+}  // namespace
+}  // namespace hil::harness::lockstep
