@@ -22,5 +22,9 @@ Scenario LoadScenario(const std::string& path, bool short_form = false,
 Scenario LoadDefaultScenario();
 /// Parses scenario text; `name` stands for the file in messages. @throws ScenarioError.
 Scenario ParseScenario(const std::string& text, const std::string& name);
+/// The scenario reference (`hil scenario-keys`, docs/scenario_reference.md): every table of
+/// scenario_keys.h, and the names of the top-level sections (the loader's and the device
+/// table's) that have no table yet.
+std::string ScenarioReference();
 
 }  // namespace hil::harness
