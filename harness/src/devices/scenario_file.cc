@@ -34,9 +34,16 @@ Scenario ParseScenario(const std::string& text, const std::string& name) {
   return ParseScenarioText(text, name, TableSections());
 }
 
+std::vector<const KeySection*> ScenarioKeyTables() {
+  std::vector<const KeySection*> all(ScenarioKeySections().begin(), ScenarioKeySections().end());
+  all.insert(all.end(), DeviceKeySections().begin(), DeviceKeySections().end());
+  return all;
+}
+
 std::string ScenarioReference() {
+  const std::vector<const KeySection*> tables = ScenarioKeyTables();
   std::vector<std::string> tabled;  // the top level's own keys, and the sections with a table
-  for (const KeySection* s : ScenarioKeySections()) {
+  for (const KeySection* s : tables) {
     if (s->path.empty()) {
       for (const ScenarioKey& k : s->keys) tabled.emplace_back(k.name);
     } else {
@@ -50,7 +57,7 @@ std::string ScenarioReference() {
   std::erase_if(others, [&tabled](const std::string& k) {
     return std::find(tabled.begin(), tabled.end(), k) != tabled.end();
   });
-  return ScenarioReferenceMarkdown(others);
+  return ScenarioReferenceMarkdown(tables, others);
 }
 
 Scenario LoadDefaultScenario() {

@@ -50,10 +50,10 @@ const std::vector<std::string> kCriterionMetrics{"horizontal_rmse_m",
 namespace {
 
 // the tables read here (a using-declaration each: the unity build joins the readers' files)
-using root_keys::kRoot;
-using root_keys::kEstimator;
 using root_keys::kCriterion;
+using root_keys::kEstimator;
 using root_keys::kEvaluation;
+using root_keys::kRoot;
 
 // A mapping of navd.conf keys of one section to scalar values, in file order.
 std::vector<std::pair<std::string, std::string>> ReadNavdKeys(
@@ -110,7 +110,8 @@ std::vector<Criterion> ReadCriteria(const YamlReader& r) {
     }
     if (c.Has("max")) k.max = c.Number("max", 0);
     if (c.Has("min")) k.min = c.Number("min", 0);
-    if (c.Has("max_ratio_to_baseline")) k.max_ratio_to_baseline = c.Number("max_ratio_to_baseline", 0);
+    if (c.Has("max_ratio_to_baseline"))
+      k.max_ratio_to_baseline = c.Number("max_ratio_to_baseline", 0);
     const int given = (k.max ? 1 : 0) + (k.min ? 1 : 0) + (k.max_ratio_to_baseline ? 1 : 0);
     if (given == 0) c.Fail("a criterion needs 'max', 'min' or 'max_ratio_to_baseline'");
     if (given > 1) c.Fail("give one of 'max', 'min' or 'max_ratio_to_baseline'");

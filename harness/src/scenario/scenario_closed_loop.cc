@@ -12,8 +12,8 @@ namespace hil::harness {
 namespace {
 
 // the tables read here (a using-declaration each: the unity build joins the readers' files)
-using closed_loop_keys::kClosedLoop;
 using closed_loop_keys::kActuator;
+using closed_loop_keys::kClosedLoop;
 using closed_loop_keys::kPassToPass;
 
 Duration Seconds(double s) { return DurationFromSeconds(s); }
@@ -89,8 +89,8 @@ void SetUpSerialBase(const std::optional<YamlReader>& actuator, Scenario& s) {
 const std::vector<std::string> kClosedLoopSectionKeys{"closed_loop"};
 
 extern const KeySection kClosedLoopSection{
-    "closed_loop", "the controller under test steers the truth vehicle through an emulated actuator",
-    kClosedLoop};
+    "closed_loop",
+    "the controller under test steers the truth vehicle through an emulated actuator", kClosedLoop};
 extern const KeySection kActuatorSection{"closed_loop.actuator",
                                          "serial_base: the base's wheel motors", kActuator};
 extern const KeySection kPassToPassSection{"closed_loop.pass_to_pass",
@@ -116,7 +116,8 @@ void ReadClosedLoopSection(const YamlReader& root, Scenario& s) {
     }
   }
   if (!isobus && !s.truth.vehicle.yaw_rate_commanded())
-    r.Fail("channel", "the serial base protocol drives a vehicle of model diff_drive or skid_steer");
+    r.Fail("channel",
+           "the serial base protocol drives a vehicle of model diff_drive or skid_steer");
   c.link = r.String("link", isobus ? "ttyCAN" : c.link);
   const std::filesystem::path base = std::filesystem::path(y->file()).parent_path();
   const std::filesystem::path file = r.String("path_file");

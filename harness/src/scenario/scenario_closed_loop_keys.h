@@ -54,8 +54,7 @@ inline constexpr ScenarioKey kActuator[] = {
     {"encoder_counts_per_rev", kInteger, "", "1200", 1, 1 << 20,
      "quadrature counts per wheel revolution"},
     {"max_wheel_speed_radps", kNumber, "rad/s", "20", 0.1, 500, "the wheels' speed limit"},
-    {"max_wheel_accel_radps2", kNumber, "rad/s²", "30", 0.1, 1e4,
-     "the wheels' acceleration limit"},
+    {"max_wheel_accel_radps2", kNumber, "rad/s²", "30", 0.1, 1e4, "the wheels' acceleration limit"},
     {"time_constant_s", kNumber, "s", "0.08", 0.001, 10, "the speed loop's first-order lag"},
     {"slip", kPoint, "", "[0, 0]", 0, 0,
      "[left, right]: fraction of the tyre speed lost, each in [0, 1) (ground speed = ω·r·(1 − "

@@ -50,8 +50,7 @@ inline constexpr ScenarioKey kEstimator[] = {
      "estimator fusing an IMU most likely outputs the IMU's position: say imu (or body, having "
      "moved it there), or a 0.5 m lever arm shows as a 0.5 m error that turns with the heading",
      kReferencePointNames},
-    {"silence_timeout_s", kNumber, "s", "10", 0.5, 3600,
-     "no solution for this long fails the run"},
+    {"silence_timeout_s", kNumber, "s", "10", 0.5, 3600, "no solution for this long fails the run"},
     {"startup_s", kNumber, "s", "0", 0, 60,
      "wall time given to the program to open its devices before t = 0"},
 };
@@ -70,8 +69,15 @@ inline constexpr ScenarioKey kCriterion[] = {
 };
 
 inline constexpr ScenarioKey kEvaluation[] = {
-    {"from_s", kNumber, "s", "0", 0, 7 * 86400,
-     "score from this time on (alignment, convergence before it)", {}, "[0, duration_s]"},
+    {"from_s",
+     kNumber,
+     "s",
+     "0",
+     0,
+     7 * 86400,
+     "score from this time on (alignment, convergence before it)",
+     {},
+     "[0, duration_s]"},
     {"reconverged_error_m", kNumber, "m", "1", 0.001, 1e4,
      "after an outage the solution has reconverged when its error is below this"},
 };

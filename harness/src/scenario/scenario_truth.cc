@@ -11,15 +11,15 @@ namespace {
 
 // the tables read here (a using-declaration each: the unity build joins the readers' files)
 using truth_keys::kOrigin;
-using truth_keys::kVehicle;
-using truth_keys::kSpeedVariation;
 using truth_keys::kPath;
 using truth_keys::kPathPoint;
 using truth_keys::kSpeedStep;
+using truth_keys::kSpeedVariation;
 using truth_keys::kTerrain;
+using truth_keys::kTruthOptions;
+using truth_keys::kVehicle;
 using truth_keys::kVibration;
 using truth_keys::kVibrationComponent;
-using truth_keys::kTruthOptions;
 
 constexpr double kKmhToMps = 1.0 / 3.6;
 
@@ -108,7 +108,8 @@ double Speed(const KeyedReader<T>& r, double fallback) {
 truth::PathVertex ReadWaypointPair(const YamlReader& w) {
   truth::PathVertex v;
   const YAML::Node& n = w.node();
-  if (n.size() != 2) w.Fail("a waypoint is [east_m, north_m] or {enu_m: [e, n], speed_mps, stop_s}");
+  if (n.size() != 2)
+    w.Fail("a waypoint is [east_m, north_m] or {enu_m: [e, n], speed_mps, stop_s}");
   try {
     v.p_N_m = {n[0].as<double>(), n[1].as<double>()};
   } catch (const YAML::Exception&) {
@@ -175,8 +176,7 @@ truth::Path ReadBoustrophedon(const PathReader& r, const truth::VehicleParams& v
   b.rows = static_cast<int>(r.Integer("rows", 4));
   const double r_min =
       v.yaw_rate_commanded() ? 0.0 : v.wheelbase_m / std::tan(v.max_steer_deg * kDeg);
-  b.turn_radius_m =
-      r.Number("turn_radius_m", std::max(r_min * 1.05, b.row_spacing_m / 2 * 0.999));
+  b.turn_radius_m = r.Number("turn_radius_m", std::max(r_min * 1.05, b.row_spacing_m / 2 * 0.999));
   if (b.turn_radius_m < r_min) {
     r.Fail("turn_radius_m",
            "below the vehicle's minimum turning radius " + std::to_string(r_min) + " m");
@@ -231,14 +231,12 @@ truth::Path ReadGuidedPath(const PathReader& r, const std::string& type,
     // seed 003: 15 × 15 m from A(−7, −7), clockwise
     return truth::MakeRectangle(Point(r, "corner_enu_m", {-7, -7}), r.Number("width_m", 15),
                                 r.Number("height_m", 15), r.Number("side_heading_deg", 0),
-                                r.Bool("clockwise", true),
-                                static_cast<int>(r.Integer("laps", 1)));
+                                r.Bool("clockwise", true), static_cast<int>(r.Integer("laps", 1)));
   }
   if (type == "boustrophedon") return ReadBoustrophedon(r, vehicle);
-  return truth::MakeCircle(Point(r, "centre_enu_m", {0, 0}), r.Number("radius_m", 5),
-                           r.Number("start_bearing_deg", 180),
-                           r.Choice("direction", "left") == "left",
-                           static_cast<int>(r.Integer("laps", 1)), 180);
+  return truth::MakeCircle(
+      Point(r, "centre_enu_m", {0, 0}), r.Number("radius_m", 5), r.Number("start_bearing_deg", 180),
+      r.Choice("direction", "left") == "left", static_cast<int>(r.Integer("laps", 1)), 180);
 }
 
 void ReadPath(const YamlReader& y, truth::TruthConfig& t) {
@@ -253,11 +251,10 @@ void ReadPath(const YamlReader& y, truth::TruthConfig& t) {
   if (r.Has("heading_deg")) t.heading_deg = r.Number("heading_deg", 0);
   if (type == "line") {
     if (yaw_rate_model)
-      t.yaw_rate_dps = r.NumberIn("yaw_rate_dps", 0, -t.vehicle.max_yaw_rate_dps,
-                                  t.vehicle.max_yaw_rate_dps);
+      t.yaw_rate_dps =
+          r.NumberIn("yaw_rate_dps", 0, -t.vehicle.max_yaw_rate_dps, t.vehicle.max_yaw_rate_dps);
     else
-      t.steer_deg =
-          r.NumberIn("steer_deg", 0, -t.vehicle.max_steer_deg, t.vehicle.max_steer_deg);
+      t.steer_deg = r.NumberIn("steer_deg", 0, -t.vehicle.max_steer_deg, t.vehicle.max_steer_deg);
     return;
   }
   truth::GuidanceConfig& g = t.guidance;
@@ -326,12 +323,11 @@ void ReadTruthOptions(const YamlReader& y, truth::TruthConfig& t) {
 const std::vector<std::string> kTruthSectionKeys{"origin",  "vehicle",   "path",
                                                  "terrain", "vibration", "truth"};
 
-extern const KeySection kOriginSection{
-    "origin", "where the local ENU frame N lies (required)", kOrigin};
+extern const KeySection kOriginSection{"origin", "where the local ENU frame N lies (required)",
+                                       kOrigin};
 extern const KeySection kVehicleSection{"vehicle", "the truth's vehicle model", kVehicle};
 extern const KeySection kSpeedVariationSection{"vehicle.speed_variation",
-                                               "variation of the commanded speed",
-                                               kSpeedVariation};
+                                               "variation of the commanded speed", kSpeedVariation};
 extern const KeySection kPathSection{
     "path", "the planned path of an open-loop run (closed loop: closed_loop.path_file)", kPath};
 extern const KeySection kPathPointSection{"path.points[]", "a waypoint given as a mapping",

@@ -35,7 +35,7 @@ TEST(ScenarioReferenceTest, TheCommittedReferenceIsTheGeneratedOne) {
 
 TEST(ScenarioReferenceTest, EveryTableIsWellFormed) {
   std::set<std::string_view> paths;
-  for (const KeySection* s : ScenarioKeySections()) {
+  for (const KeySection* s : ScenarioKeyTables()) {
     SCOPED_TRACE(std::string(s->path));
     EXPECT_TRUE(paths.insert(s->path).second) << "two tables for one section";
     EXPECT_FALSE(s->meaning.empty());
@@ -53,9 +53,7 @@ TEST(ScenarioReferenceTest, EveryTableIsWellFormed) {
   }
 }
 
-std::string Base() {
-  return "name: t\norigin: {lat_deg: 35.4796096, lon_deg: 50.5979765}\n";
-}
+std::string Base() { return "name: t\norigin: {lat_deg: 35.4796096, lon_deg: 50.5979765}\n"; }
 
 // The message of the error loading `text` ("" when it loads).
 std::string ErrorOf(const std::string& text) {
@@ -82,11 +80,12 @@ TEST(ScenarioReferenceTest, TheReaderTakesItsTablesRangesAndChoices) {
   EXPECT_EQ(ErrorOf("name: t\norigin: {lat_deg: 35, lon_deg: 50, height_m: 9001}\n"),
             "t.yaml:2: origin.height_m: value 9001 out of range [-500, 9000]");
   EXPECT_EQ(ErrorOf(Base() + "closed_loop: {actuator: {}}\n"),
-            "t.yaml:3: closed_loop.channel: the serial base protocol drives a vehicle of model diff_drive "
+            "t.yaml:3: closed_loop.channel: the serial base protocol drives a vehicle of model "
+            "diff_drive "
             "or skid_steer");
   EXPECT_EQ(ErrorOf(Base() + "vehicle: {model: skid_steer, icr_expansion: 2}\n"), "");
-  const Scenario s = ParseScenario(Base() + "vehicle: {model: skid_steer, icr_expansion: 2}\n",
-                                   "t.yaml");
+  const Scenario s =
+      ParseScenario(Base() + "vehicle: {model: skid_steer, icr_expansion: 2}\n", "t.yaml");
   EXPECT_EQ(s.truth.vehicle.model, truth::VehicleParams::Model::kSkidSteer);
   EXPECT_EQ(s.truth.vehicle.icr_expansion, 2.0);
   EXPECT_EQ(s.truth.vehicle.icr_offset_m, 0.05);  // the preset's

@@ -49,7 +49,8 @@ TEST(SkidSteerTest, TurningRadiusIsChiTimesTheDiffDriveRadiusOfTheTrackSpeeds) {
   // χ = 1 and x_v = 0: exactly the differential drive
   VehicleParams dd = VehicleParams::DiffDrive();
   dd.track_m = track;
-  const PlanarBodyVelocity a = BodyVelocityOf(Skid(1.0, 0), v_l, v_r), d = BodyVelocityOf(dd, v_l, v_r);
+  const PlanarBodyVelocity a = BodyVelocityOf(Skid(1.0, 0), v_l, v_r),
+                           d = BodyVelocityOf(dd, v_l, v_r);
   EXPECT_EQ(a.yaw_rate_radps, d.yaw_rate_radps);
   EXPECT_EQ(a.forward_mps, d.forward_mps);
   EXPECT_EQ(d.lateral_mps, 0.0);

@@ -22,7 +22,7 @@ inline constexpr int kRightWheel = 1;
 
 struct WheelMotorsConfig {
   double wheel_radius_m = 0.1;
-  double track_m = 0.5;               ///< distance between the wheels' contact points
+  double track_m = 0.5;  ///< distance between the wheels' contact points
   /// A skid-steered base: the wheels' (tracks') instantaneous centres of rotation lie χ·track
   /// apart, so the yaw rate is (v_r − v_l) / (χ·track) (harness/truth vehicle.h, skid_steer);
   /// 1 for a differential drive.

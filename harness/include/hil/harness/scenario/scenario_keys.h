@@ -59,12 +59,14 @@ struct KeySection {
   std::span<const ScenarioKey> keys;
 };
 
-/// Every section in the table, in the reference's order (scenario_key_sections.cc).
+/// The sections of the scenario stage's readers that have a table, in the reference's order
+/// (scenario_key_sections.cc); the devices' are the device stage's (devices/scenario_file.h).
 std::span<const KeySection* const> ScenarioKeySections();
 
-/// The scenario reference (Markdown) generated from every section's table; the top-level keys
-/// whose sections have no table yet are listed by name.
-std::string ScenarioReferenceMarkdown(std::span<const std::string> other_top_level_keys);
+/// The scenario reference (Markdown) generated from the tables `sections`; the top-level keys
+/// whose sections have no table yet (`without_table`) are listed by name.
+std::string ScenarioReferenceMarkdown(std::span<const KeySection* const> sections,
+                                      std::span<const std::string> without_table);
 
 /// The key `name` of table `Table`, found at compile time: a name the table does not list is a
 /// compile error ("not in the section's table").
@@ -127,12 +129,13 @@ class KeyedReader {
   }
   /// One of the table's choices (`fallback` when absent).
   std::string Choice(Key k, std::string_view fallback) const {
-    return std::string(Row(k).choices[r_.ChoiceIndex(Name(k), IndexOf(k, fallback), Row(k).choices)]);
+    return std::string(
+        Row(k).choices[r_.ChoiceIndex(Name(k), IndexOf(k, fallback), Row(k).choices)]);
   }
   /// The choice as the enum whose names (in its order) are the table's choices.
   template <class Enum>
-    requires std::is_enum_v<Enum>
-  Enum Choice(Key k, Enum fallback) const {
+  requires std::is_enum_v<Enum> Enum Choice(Key k, Enum fallback)
+  const {
     return static_cast<Enum>(
         r_.ChoiceIndex(Name(k), static_cast<std::size_t>(fallback), Row(k).choices));
   }
