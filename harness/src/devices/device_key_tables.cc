@@ -5,16 +5,19 @@
 
 namespace hil::harness {
 
+extern const KeySection kUwbSection;  // uwb_tag/uwb_tag_spec.cc
+extern const KeySection kNlosZoneSection;
 extern const KeySection kWt901cSection;        // wt901c/wt901c_spec.cc
 extern const KeySection kLidarSection;         // lidar/lidar_spec.cc
 extern const KeySection kReflectivitySection;  // spec_readers.cc
+extern const KeySection kRangefindersSection;  // rangefinders/rangefinders_spec.cc
+extern const KeySection kRangefinderUnitSection;
 
 namespace {
 
 const KeySection* const kDeviceSections[] = {
-    &kWt901cSection,
-    &kLidarSection,
-    &kReflectivitySection,
+    &kUwbSection,          &kNlosZoneSection,     &kWt901cSection,          &kLidarSection,
+    &kReflectivitySection, &kRangefindersSection, &kRangefinderUnitSection,
 };
 
 }  // namespace

@@ -92,7 +92,7 @@ extern const KeySection kClosedLoopSection{
     "closed_loop",
     "the controller under test steers the truth vehicle through an emulated actuator", kClosedLoop};
 extern const KeySection kActuatorSection{"closed_loop.actuator",
-                                         "serial_base: the base's wheel motors", kActuator};
+                                         "the wheel motors of the serial_base channel", kActuator};
 extern const KeySection kPassToPassSection{"closed_loop.pass_to_pass",
                                            "the pass-to-pass evaluation's parameters", kPassToPass};
 

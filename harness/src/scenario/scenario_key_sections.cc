@@ -31,11 +31,16 @@ extern const KeySection kPassToPassSection;
 namespace {
 
 const KeySection* const kSections[] = {
-    &kRootSection,      &kOriginSection,         &kVehicleSection,   &kSpeedVariationSection,
-    &kPathSection,      &kPathPointSection,      &kSpeedStepSection, &kTerrainSection,
-    &kVibrationSection, &kVibrationComponentSection, &kTruthOptionsSection, &kEstimatorSection,
-    &kCriterionSection, &kEvaluationSection,     &kClosedLoopSection, &kActuatorSection,
-    &kPassToPassSection, &kCanSection,           &kGreenhouseSection, &kRidgesSection,
+    &kRootSection,         &kOriginSection,
+    &kVehicleSection,      &kSpeedVariationSection,
+    &kPathSection,         &kPathPointSection,
+    &kSpeedStepSection,    &kTerrainSection,
+    &kVibrationSection,    &kVibrationComponentSection,
+    &kTruthOptionsSection, &kEstimatorSection,
+    &kCriterionSection,    &kEvaluationSection,
+    &kClosedLoopSection,   &kActuatorSection,
+    &kPassToPassSection,   &kCanSection,
+    &kGreenhouseSection,   &kRidgesSection,
     &kPostsSection,
 };
 
@@ -66,7 +71,7 @@ std::string_view TypeName(KeyType t) {
 std::string Number(double v) {
   if (v >= 9.2e18) return "2^63 − 1";
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
+  std::snprintf(buf, sizeof buf, "%.10g", v);
   return buf;
 }
 

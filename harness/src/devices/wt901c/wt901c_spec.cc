@@ -52,7 +52,8 @@ void ReadWt901c(const YamlReader& y, Wt901cDeviceSpec& w) {
   c.require_unlock = r.Bool("require_unlock", c.require_unlock);
   c.errors.gyro_turn_on_bias_sigma_dps =
       r.Number("gyro_bias_sigma_dps", c.errors.gyro_turn_on_bias_sigma_dps);
-  c.errors.angle_noise_sigma_deg = r.Number("angle_noise_sigma_deg", c.errors.angle_noise_sigma_deg);
+  c.errors.angle_noise_sigma_deg =
+      r.Number("angle_noise_sigma_deg", c.errors.angle_noise_sigma_deg);
   c.errors.yaw_drift_sigma_dps = r.Number("yaw_drift_sigma_dps", c.errors.yaw_drift_sigma_dps);
   w.tx_buffer_bytes = static_cast<std::size_t>(
       r.Integer("tx_buffer_bytes", static_cast<std::int64_t>(w.tx_buffer_bytes)));
