@@ -29,12 +29,12 @@ extern const KeySection kReflectivitySection{
     "the greenhouse's surfaces as the range sensors see them (rangefinders.reflectivity alike)",
     kReflectivity};
 
-void ReadSurfaceReflectivity(const YamlReader& y, world::SurfaceReflectivity& f) {
-  const KeyedReader<kReflectivity> r(y);
-  r.CheckKeys();
-  f.ridge = r.Number("ridge", f.ridge);
-  f.post = r.Number("post", f.post);
-  f.wall = r.Number("wall", f.wall);
+void ReadSurfaceReflectivity(const YamlReader& r, world::SurfaceReflectivity& f) {
+  const KeyedReader<kReflectivity> keyed(r);
+  keyed.CheckKeys();
+  f.ridge = keyed.Number("ridge", f.ridge);
+  f.post = keyed.Number("post", f.post);
+  f.wall = keyed.Number("wall", f.wall);
 }
 
 }  // namespace hil::harness
