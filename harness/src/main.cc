@@ -24,11 +24,14 @@ int main(int argc, char** argv) {
       "  hil campaign mc.yaml --local -j 2          scenarios x seeds x sweeps, merged report\n"
       "  hil campaign mc.yaml --slurm --wait        the same as a Slurm job array\n"
       "  hil characterize runs/x/captures/ttyIMU.cap --json n.json --svg plots   Allan, PSD\n"
+      "  hil scenario-keys                          every scenario key: type, unit, default, "
+      "range\n"
       "Exit codes: 0 every criterion passed (validate: conforms), 1 one failed, 2 bad input.");
   const std::vector<hil::cli::Subcommand> commands{
-      hil::cli::AddRun(app),    hil::cli::AddEmulate(app),  hil::cli::AddValidate(app),
-      hil::cli::AddSuite(app),  hil::cli::AddReplay(app),   hil::cli::AddDataset(app),
-      hil::cli::AddExport(app), hil::cli::AddCampaign(app), hil::cli::AddCharacterize(app)};
+      hil::cli::AddRun(app),         hil::cli::AddEmulate(app),  hil::cli::AddValidate(app),
+      hil::cli::AddSuite(app),       hil::cli::AddReplay(app),   hil::cli::AddDataset(app),
+      hil::cli::AddExport(app),      hil::cli::AddCampaign(app), hil::cli::AddCharacterize(app),
+      hil::cli::AddScenarioKeys(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -97,7 +97,8 @@ double WheelMotors::body_speed_mps() const {
 }
 
 double WheelMotors::body_yaw_rate_radps() const {
-  return (ground_speed_mps(kRightWheel) - ground_speed_mps(kLeftWheel)) / cfg_.track_m;
+  return (ground_speed_mps(kRightWheel) - ground_speed_mps(kLeftWheel)) /
+         (cfg_.icr_expansion * cfg_.track_m);
 }
 
 std::int64_t WheelMotors::encoder_count(int wheel) const {

@@ -10,11 +10,31 @@ std::string ReadLinkName(const YamlReader& r, const std::string& fallback) {
   return link;
 }
 
+namespace reflectivity_keys {
+
+using enum KeyType;
+
+inline constexpr ScenarioKey kReflectivity[] = {
+    {"ridge", kNumber, "", "0.25", 0.001, 2, "the ridges' reflectivity"},
+    {"post", kNumber, "", "0.5", 0.001, 2, "the posts'"},
+    {"wall", kNumber, "", "0.05", 0.001, 2, "the walls' (film walls return little)"},
+};
+
+}  // namespace reflectivity_keys
+
+using reflectivity_keys::kReflectivity;
+
+extern const KeySection kReflectivitySection{
+    "lidar.reflectivity",
+    "the greenhouse's surfaces as the range sensors see them (rangefinders.reflectivity alike)",
+    kReflectivity};
+
 void ReadSurfaceReflectivity(const YamlReader& r, world::SurfaceReflectivity& f) {
-  r.CheckKeys({"ridge", "post", "wall"});
-  f.ridge = r.DoubleIn("ridge", f.ridge, 0.001, 2);
-  f.post = r.DoubleIn("post", f.post, 0.001, 2);
-  f.wall = r.DoubleIn("wall", f.wall, 0.001, 2);
+  const KeyedReader<kReflectivity> keyed(r);
+  keyed.CheckKeys();
+  f.ridge = keyed.Number("ridge", f.ridge);
+  f.post = keyed.Number("post", f.post);
+  f.wall = keyed.Number("wall", f.wall);
 }
 
 }  // namespace hil::harness

@@ -11,6 +11,7 @@
 #include "hil/harness/scenario/scenario_reader.h"
 #include "hil/harness/scenario/yaml_reader.h"
 
+#include "scenario_root_keys.h"
 #include "scenario_sections.h"
 
 namespace hil::harness {
@@ -48,6 +49,12 @@ const std::vector<std::string> kCriterionMetrics{"horizontal_rmse_m",
 
 namespace {
 
+// the tables read here (a using-declaration each: the unity build joins the readers' files)
+using root_keys::kCriterion;
+using root_keys::kEstimator;
+using root_keys::kEvaluation;
+using root_keys::kRoot;
+
 // A mapping of navd.conf keys of one section to scalar values, in file order.
 std::vector<std::pair<std::string, std::string>> ReadNavdKeys(
     const YamlReader& f, const char* section, const std::vector<std::string>& reserved = {}) {
@@ -68,26 +75,27 @@ std::vector<std::pair<std::string, std::string>> ReadNavdKeys(
   return keys;
 }
 
-void ReadEstimator(const YamlReader& r, EstimatorSpec& e) {
-  r.CheckKeys({"command", "output", "navd_mode", "navd_filter", "navd_input", "reference_point",
-               "silence_timeout_s", "startup_s"});
-  e.reference_point = r.Choice("reference_point", e.reference_point, kReferencePointNames);
+void ReadEstimator(const YamlReader& y, EstimatorSpec& e) {
+  const KeyedReader<kEstimator> r(y);
+  r.CheckKeys();
+  e.reference_point = r.Choice("reference_point", e.reference_point);
   e.command = r.String("command", e.command);
-  e.output = r.Choice("output", e.output, kEstimatorOutputNames);
-  e.navd_mode = r.Choice("navd_mode", e.navd_mode, kNavdModeNames);
+  e.output = r.Choice("output", e.output);
+  e.navd_mode = r.Choice("navd_mode", e.navd_mode);
   if (auto f = r.OptionalChild("navd_filter")) e.navd_filter = ReadNavdKeys(*f, "filter");
   if (auto f = r.OptionalChild("navd_input")) {
     e.navd_input = ReadNavdKeys(
         *f, "input", {"gnss_device", "gnss_baud", "imu_device", "imu_baud", "imu_format"});
   }
-  e.silence_timeout_s = r.DoubleIn("silence_timeout_s", e.silence_timeout_s, 0.5, 3600);
-  e.startup_s = r.DoubleIn("startup_s", e.startup_s, 0, 60);
+  e.silence_timeout_s = r.Number("silence_timeout_s", e.silence_timeout_s);
+  e.startup_s = r.Number("startup_s", e.startup_s);
 }
 
 std::vector<Criterion> ReadCriteria(const YamlReader& r) {
   std::vector<Criterion> out;
-  for (const YamlReader& c : r.Elements()) {
-    c.CheckKeys({"metric", "max", "min", "max_ratio_to_baseline", "name"});
+  for (const YamlReader& y : r.Elements()) {
+    const KeyedReader<kCriterion> c(y);
+    c.CheckKeys();
     Criterion k;
     k.metric = c.String("metric");
     if (std::find(kCriterionMetrics.begin(), kCriterionMetrics.end(), k.metric) ==
@@ -100,10 +108,10 @@ std::vector<Criterion> ReadCriteria(const YamlReader& r) {
       for (const auto& m : kCriterionMetrics) msg += " " + m;
       c.Fail("metric", msg + ")");
     }
-    if (c.Has("max")) k.max = c.DoubleIn("max", 0, 0, 1e9);
-    if (c.Has("min")) k.min = c.DoubleIn("min", 0, 0, 1e9);
+    if (c.Has("max")) k.max = c.Number("max", 0);
+    if (c.Has("min")) k.min = c.Number("min", 0);
     if (c.Has("max_ratio_to_baseline"))
-      k.max_ratio_to_baseline = c.DoubleIn("max_ratio_to_baseline", 0, 0, 1e3);
+      k.max_ratio_to_baseline = c.Number("max_ratio_to_baseline", 0);
     const int given = (k.max ? 1 : 0) + (k.min ? 1 : 0) + (k.max_ratio_to_baseline ? 1 : 0);
     if (given == 0) c.Fail("a criterion needs 'max', 'min' or 'max_ratio_to_baseline'");
     if (given > 1) c.Fail("give one of 'max', 'min' or 'max_ratio_to_baseline'");
@@ -146,30 +154,32 @@ Scenario FromReader(const YamlReader& root, const DeviceSections& devices) {
   root.CheckKeys(keys);
   Scenario s;
   s.file = root.file();
-  s.name = root.String("name");
-  s.description = root.String("description", "");
+  const KeyedReader<kRoot> top(root);
+  s.name = top.String("name");
+  s.description = top.String("description", "");
   try {
-    s.start_unix_ns = gnss::ParseIsoUtc(root.String("start_utc", kDefaultStartUtc));
+    s.start_unix_ns = gnss::ParseIsoUtc(top.String("start_utc", kDefaultStartUtc));
   } catch (const std::invalid_argument& e) {
-    root.Fail("start_utc", e.what());
+    top.Fail("start_utc", e.what());
   }
-  s.duration_s = root.DoubleIn("duration_s", s.duration_s, 1, 7 * 86400);
-  s.seed = static_cast<std::uint64_t>(root.Int("seed", 1, 0, kMaxSeed));
+  s.duration_s = top.Number("duration_s", s.duration_s);
+  s.seed = static_cast<std::uint64_t>(top.Integer("seed", 1));
   ReadTruthSections(root, s.truth);
   ReadCanSection(root, s.can);
   ReadGreenhouseSection(root, s);
   devices.read(root, s);  // the device table's rows, in table order
   ReadClosedLoopSection(root, s);
   ReadSuiteSections(root, keys, s);
-  if (auto e = root.OptionalChild("estimator")) ReadEstimator(*e, s.estimator);
+  if (auto e = top.OptionalChild("estimator")) ReadEstimator(*e, s.estimator);
   CheckCanUse(root, s);
-  if (auto c = root.OptionalChild("criteria")) s.criteria = ReadCriteria(*c);
-  if (auto d = root.OptionalChild("default_criteria")) s.default_criteria = ReadDefaultCriteria(*d);
-  if (auto f = root.OptionalChild("faults")) s.faults = ReadFaultTimeline(*f, s.duration_s);
-  if (auto ev = root.OptionalChild("evaluation")) {
-    ev->CheckKeys({"from_s", "reconverged_error_m"});
-    s.evaluate_from_s = ev->DoubleIn("from_s", 0, 0, s.duration_s);
-    s.reconverged_error_m = ev->DoubleIn("reconverged_error_m", s.reconverged_error_m, 0.001, 1e4);
+  if (auto c = top.OptionalChild("criteria")) s.criteria = ReadCriteria(*c);
+  if (auto d = top.OptionalChild("default_criteria")) s.default_criteria = ReadDefaultCriteria(*d);
+  if (auto f = top.OptionalChild("faults")) s.faults = ReadFaultTimeline(*f, s.duration_s);
+  if (auto y = top.OptionalChild("evaluation")) {
+    const KeyedReader<kEvaluation> ev(*y);
+    ev.CheckKeys();
+    s.evaluate_from_s = ev.NumberIn("from_s", 0, 0, s.duration_s);
+    s.reconverged_error_m = ev.Number("reconverged_error_m", s.reconverged_error_m);
   }
   return s;
 }
@@ -195,10 +205,16 @@ std::vector<std::string> ScenarioLibraryDirs() {
   return dirs;
 }
 
+extern const KeySection kRootSection{
+    "", "the top level: the loader's own keys (the other top-level keys are sections below)",
+    kRoot};
+extern const KeySection kEstimatorSection{"estimator", "the estimator under test", kEstimator};
+extern const KeySection kCriterionSection{"criteria[]", "one pass/fail bound", kCriterion};
+extern const KeySection kEvaluationSection{"evaluation", "what is scored", kEvaluation};
+
 std::vector<std::string> ScenarioOwnKeys() {
-  std::vector<std::string> keys{"name",    "description", "start_utc",       "duration_s",
-                                "seed",    "estimator",   "criteria",        "faults",
-                                "include", "evaluation",  "default_criteria"};
+  std::vector<std::string> keys;
+  for (const ScenarioKey& k : kRoot) keys.emplace_back(k.name);
   for (const auto* section : {&kTruthSectionKeys, &kCanSectionKeys, &kGreenhouseSectionKeys,
                               &kSuiteSectionKeys, &kClosedLoopSectionKeys}) {
     keys.insert(keys.end(), section->begin(), section->end());

@@ -11,26 +11,72 @@ namespace hil::harness {
 
 const std::vector<std::string> kGreenhouseSectionKeys{"greenhouse"};
 
+namespace greenhouse_keys {  // named: the unity build joins the readers' files
+
+using enum KeyType;
+
+inline constexpr ScenarioKey kGreenhouse[] = {
+    {"ridges", kMapping, "", "the defaults below", 0, 0, "the ridges (greenhouse.ridges)"},
+    {"headland_m", kNumber, "m", "3", 0, 1000,
+     "clear ground between the ridge ends and the end walls"},
+    {"side_margin_m", kNumber, "m", "1.5", 0, 1000,
+     "clear ground between the outer ridges and the side walls"},
+    {"wall_height_m", kNumber, "m", "3", 0.1, 50, "the walls' height"},
+    {"posts", kMapping, "", "the defaults below", 0, 0,
+     "posts along the inside of the side walls (greenhouse.posts)"},
+};
+
+inline constexpr ScenarioKey kRidges[] = {
+    {"count", kInteger, "", "4", 1, 200, "ridges; aisle k lies between ridges k and k+1"},
+    {"width_m", kNumber, "m", "0.6", 0.05, 20, "a ridge's width"},
+    {"height_m", kNumber, "m", "0.3", 0.01, 5, "a ridge's height above the aisle floor"},
+    {"spacing_m", kNumber, "m", "1.8", 0.1, 50,
+     "centre to centre; must exceed the width (aisle = spacing − width)"},
+    {"length_m", kNumber, "m", "30", 0.5, 2000, "along the rows"},
+    {"first_start_enu_m", kPoint, "m", "[0, 0]", 0, 0, "ridge 0's centre-line start [east, north]"},
+    {"direction_deg", kNumber, "deg", "90", -360, 360,
+     "the rows' direction, counter-clockwise from east; further ridges lie to the left"},
+};
+
+inline constexpr ScenarioKey kPosts[] = {
+    {"spacing_m", kNumber, "m", "4", 0, 1000, "along the side walls (0: no posts)"},
+    {"size_m", kNumber, "m", "0.1", 0.01, 5, "square section (≤ side_margin_m)"},
+    {"height_m", kNumber, "m", "3", 0.1, 50, "height"},
+};
+
+}  // namespace greenhouse_keys
+
+extern const KeySection kGreenhouseSection{
+    "greenhouse", "paper 001's ridge map, which the range sensors see and the aisles score",
+    greenhouse_keys::kGreenhouse};
+extern const KeySection kRidgesSection{"greenhouse.ridges", "the ridges", greenhouse_keys::kRidges};
+extern const KeySection kPostsSection{"greenhouse.posts", "the posts", greenhouse_keys::kPosts};
+
 namespace {
 
-void ReadRidges(const YamlReader& r, world::GreenhouseConfig& c) {
-  r.CheckKeys({"count", "width_m", "height_m", "spacing_m", "length_m", "first_start_enu_m",
-               "direction_deg"});
-  c.ridge_count = static_cast<int>(r.Int("count", c.ridge_count, 1, 200));
-  c.ridge_width_m = r.DoubleIn("width_m", c.ridge_width_m, 0.05, 20);
-  c.ridge_height_m = r.DoubleIn("height_m", c.ridge_height_m, 0.01, 5);
-  c.ridge_spacing_m = r.DoubleIn("spacing_m", c.ridge_spacing_m, 0.1, 50);
-  c.ridge_length_m = r.DoubleIn("length_m", c.ridge_length_m, 0.5, 2000);
-  c.row_direction_deg = r.DoubleIn("direction_deg", c.row_direction_deg, -360, 360);
+using greenhouse_keys::kGreenhouse;
+using greenhouse_keys::kPosts;
+using greenhouse_keys::kRidges;
+
+void ReadRidges(const YamlReader& y, world::GreenhouseConfig& c) {
+  const KeyedReader<kRidges> r(y);
+  r.CheckKeys();
+  c.ridge_count = static_cast<int>(r.Integer("count", c.ridge_count));
+  c.ridge_width_m = r.Number("width_m", c.ridge_width_m);
+  c.ridge_height_m = r.Number("height_m", c.ridge_height_m);
+  c.ridge_spacing_m = r.Number("spacing_m", c.ridge_spacing_m);
+  c.ridge_length_m = r.Number("length_m", c.ridge_length_m);
+  c.row_direction_deg = r.Number("direction_deg", c.row_direction_deg);
   const std::vector<double> p = r.Doubles("first_start_enu_m", 2, {0, 0});
   c.first_ridge_start_N_m = {p[0], p[1]};
 }
 
-void ReadPosts(const YamlReader& r, world::GreenhouseConfig& c) {
-  r.CheckKeys({"spacing_m", "size_m", "height_m"});
-  c.post_spacing_m = r.DoubleIn("spacing_m", c.post_spacing_m, 0, 1000);
-  c.post_size_m = r.DoubleIn("size_m", c.post_size_m, 0.01, 5);
-  c.post_height_m = r.DoubleIn("height_m", c.post_height_m, 0.1, 50);
+void ReadPosts(const YamlReader& y, world::GreenhouseConfig& c) {
+  const KeyedReader<kPosts> r(y);
+  r.CheckKeys();
+  c.post_spacing_m = r.Number("spacing_m", c.post_spacing_m);
+  c.post_size_m = r.Number("size_m", c.post_size_m);
+  c.post_height_m = r.Number("height_m", c.post_height_m);
 }
 
 // Where each GreenhouseConfig field is read: 0 the section itself, 1 `ridges:`, 2 `posts:`.
@@ -64,15 +110,16 @@ constexpr FieldKey kFieldKeys[] = {
 void ReadGreenhouseSection(const YamlReader& root, Scenario& s) {
   const std::optional<YamlReader> g = root.OptionalChild("greenhouse");
   if (!g) return;
-  g->CheckKeys({"ridges", "headland_m", "side_margin_m", "wall_height_m", "posts"});
+  const KeyedReader<kGreenhouse> r(*g);
+  r.CheckKeys();
   world::GreenhouseConfig c;
-  const std::optional<YamlReader> ridges = g->OptionalChild("ridges");
-  const std::optional<YamlReader> posts = g->OptionalChild("posts");
+  const std::optional<YamlReader> ridges = r.OptionalChild("ridges");
+  const std::optional<YamlReader> posts = r.OptionalChild("posts");
   if (ridges) ReadRidges(*ridges, c);
   if (posts) ReadPosts(*posts, c);
-  c.headland_m = g->DoubleIn("headland_m", c.headland_m, 0, 1000);
-  c.side_margin_m = g->DoubleIn("side_margin_m", c.side_margin_m, 0, 1000);
-  c.wall_height_m = g->DoubleIn("wall_height_m", c.wall_height_m, 0.1, 50);
+  c.headland_m = r.Number("headland_m", c.headland_m);
+  c.side_margin_m = r.Number("side_margin_m", c.side_margin_m);
+  c.wall_height_m = r.Number("wall_height_m", c.wall_height_m);
   if (const auto problem = world::CheckGreenhouse(c)) {
     FailAt(*problem, {&*g, ridges ? &*ridges : nullptr, posts ? &*posts : nullptr});
   }

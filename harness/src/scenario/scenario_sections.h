@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "hil/harness/scenario/scenario.h"
+#include "hil/harness/scenario/scenario_keys.h"
 #include "hil/harness/scenario/yaml_reader.h"
 
 namespace hil::harness {

@@ -71,7 +71,8 @@ struct TruthIntegrator::Impl {
   const TruthConfig* c = nullptr;
   const Terrain* terrain = nullptr;
   const LocalFrame* frame = nullptr;
-  bool diff_drive = false;
+  bool diff_drive = false;  // commanded by a yaw rate (diff_drive, skid_steer)
+  bool skid_steer = false;  // the reference point slips sideways in a turn
   mutable std::optional<SpeedVariation> speed_variation;  // grows its grid as time advances
   std::vector<bool> stop_vertex;          // vehicle stops at (or turns in place at) this vertex
   std::vector<std::size_t> next_stop;     // first stop vertex after segment i's start
@@ -167,6 +168,11 @@ struct TruthIntegrator::Impl {
     const double chi = s[kYaw] + Slip(s);
     d[kE] = s[kV] * std::cos(chi);
     d[kN] = s[kV] * std::sin(chi);
+    if (skid_steer) {  // the lateral speed v_y = −x_v·ψ̇ of the ICRs' offset
+      const double v_y = p.lateral_speed_mps(YawRate(s));
+      d[kE] -= v_y * std::sin(chi);
+      d[kN] += v_y * std::cos(chi);
+    }
     d[kYaw] = YawRate(s);
     if (Held()) {
       // the hold's ramp: its slope until the input reaches the command, then none
@@ -199,9 +205,16 @@ struct TruthIntegrator::Impl {
     const double beta_dot = -k * (v_dot * psi_dot + v * psi_ddot);
     const double chi = s[kYaw] + Slip(s), chi_dot = psi_dot + beta_dot;
     const double cc = std::cos(chi), sc = std::sin(chi);
+    double e_ddot = v_dot * cc - v * sc * chi_dot, n_ddot = v_dot * sc + v * cc * chi_dot;
+    if (skid_steer) {  // the lateral speed v_y = −x_v·ψ̇ and its rate
+      const double v_y = c->vehicle.lateral_speed_mps(psi_dot);
+      const double v_y_dot = c->vehicle.lateral_speed_mps(psi_ddot);
+      e_ddot -= v_y_dot * sc + v_y * cc * chi_dot;
+      n_ddot += v_y_dot * cc - v_y * sc * chi_dot;
+    }
     HorizontalJets h;
-    h.e_m = Jet2(s[kE], d[kE], v_dot * cc - v * sc * chi_dot);
-    h.n_m = Jet2(s[kN], d[kN], v_dot * sc + v * cc * chi_dot);
+    h.e_m = Jet2(s[kE], d[kE], e_ddot);
+    h.n_m = Jet2(s[kN], d[kN], n_ddot);
     h.yaw_rad = Jet2(s[kYaw], psi_dot, psi_ddot);
     return h;
   }
@@ -355,7 +368,8 @@ struct TruthIntegrator::Impl {
 
   void Setup() {
     const VehicleParams& p = c->vehicle;
-    diff_drive = p.model == VehicleParams::Model::kDiffDrive;
+    diff_drive = p.yaw_rate_commanded();
+    skid_steer = p.model == VehicleParams::Model::kSkidSteer;
     speed_variation.emplace(p.speed_variation_std, p.speed_variation_tau_s, p.speed_variation_seed);
     if (p.speed_variation_std > 0)
       tick_s = 1.0 / c->guidance.rate_hz;  // open loop too: the speed varies
@@ -614,8 +628,9 @@ TruthSample TruthIntegrator::Sample(Time t) {
   out.speed_mps = s[kV];
   const double yaw_rate = d[kYaw];
   out.steer_rad = m.diff_drive ? 0.0 : s[kU];
-  out.wheel_speed_left_mps = s[kV] - yaw_rate * config_.vehicle.track_m / 2;
-  out.wheel_speed_right_mps = s[kV] + yaw_rate * config_.vehicle.track_m / 2;
+  const WheelGroundSpeeds wheels = WheelSpeedsOf(config_.vehicle, s[kV], yaw_rate);
+  out.wheel_speed_left_mps = wheels.left_mps;
+  out.wheel_speed_right_mps = wheels.right_mps;
   if (config_.path) {
     const PathProjection pr = config_.path->Project(b.p_NB_N_m.head<2>());
     out.cross_track_m = pr.cross_track_m;

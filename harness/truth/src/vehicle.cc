@@ -28,6 +28,27 @@ VehicleParams VehicleParams::DiffDrive() {
   return p;
 }
 
+VehicleParams VehicleParams::SkidSteer() {
+  VehicleParams p = DiffDrive();
+  p.model = Model::kSkidSteer;
+  p.icr_expansion = 1.5;
+  p.icr_offset_m = 0.05;
+  return p;
+}
+
+WheelGroundSpeeds WheelSpeedsOf(const VehicleParams& p, double v_mps, double yaw_rate_radps) {
+  const double half = p.icr_track_m() / 2;
+  return {v_mps - yaw_rate_radps * half, v_mps + yaw_rate_radps * half};
+}
+
+PlanarBodyVelocity BodyVelocityOf(const VehicleParams& p, double left_mps, double right_mps) {
+  PlanarBodyVelocity b;
+  b.yaw_rate_radps = (right_mps - left_mps) / p.icr_track_m();
+  b.forward_mps = (left_mps + right_mps) / 2;  // symmetric ICRs: (v_r·y_l − v_l·y_r)/(y_l − y_r)
+  b.lateral_mps = p.lateral_speed_mps(b.yaw_rate_radps);
+  return b;
+}
+
 namespace {
 constexpr double kSpeedGridS = 0.1;
 }  // namespace

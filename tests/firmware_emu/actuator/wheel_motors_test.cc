@@ -82,6 +82,25 @@ TEST(WheelMotors, SlipLowersGroundSpeedButNotTheEncoder) {
   EXPECT_GT(m.body_yaw_rate_radps(), 0.0);  // the slipping left wheel lags: the base turns left
 }
 
+// A skid-steered base (icr_expansion χ): the same wheel speeds turn it χ times more slowly than a
+// differential drive, so its turning radius is χ times the one its controller computes.
+TEST(WheelMotors, SkidSteerTurnsChiTimesWiderThanTheWheelSpeedsSay) {
+  WheelMotorsConfig c = Config();
+  c.icr_expansion = 1.5;
+  WheelMotors skid(c), diff(Config());
+  for (int t = 0; t <= 2000; t += 100) {
+    skid.Command(Ms(t), 4.0, 6.0);
+    diff.Command(Ms(t), 4.0, 6.0);
+  }
+  skid.AdvanceTo(Ms(2000));
+  diff.AdvanceTo(Ms(2000));
+  const double r_commanded = 0.5 / 2 * (0.6 + 0.4) / (0.6 - 0.4);  // 1.25 m
+  EXPECT_NEAR(diff.body_speed_mps() / diff.body_yaw_rate_radps(), r_commanded, 1e-6);
+  EXPECT_NEAR(skid.body_speed_mps() / skid.body_yaw_rate_radps(), 1.5 * r_commanded, 1e-6);
+  EXPECT_EQ(skid.body_speed_mps(), diff.body_speed_mps());
+  EXPECT_EQ(skid.encoder_count(kLeftWheel), diff.encoder_count(kLeftWheel));
+}
+
 TEST(WheelMotors, ACommandActsAfterTheLatency) {
   WheelMotors m(Config());
   m.Command(Ms(0), 10.0, 10.0);

@@ -22,7 +22,11 @@ inline constexpr int kRightWheel = 1;
 
 struct WheelMotorsConfig {
   double wheel_radius_m = 0.1;
-  double track_m = 0.5;               ///< distance between the wheels' contact points
+  double track_m = 0.5;  ///< distance between the wheels' contact points
+  /// A skid-steered base: the wheels' (tracks') instantaneous centres of rotation lie χ·track
+  /// apart, so the yaw rate is (v_r − v_l) / (χ·track) (harness/truth vehicle.h, skid_steer);
+  /// 1 for a differential drive.
+  double icr_expansion = 1.0;
   int encoder_counts_per_rev = 1200;  ///< quadrature counts per wheel revolution
   double max_wheel_speed_radps = 20.0;
   double max_wheel_accel_radps2 = 30.0;
@@ -64,7 +68,8 @@ class WheelMotors {
   /// it clamped to the speed limit.
   double target_speed_radps(int wheel) const { return target_radps_[wheel]; }
   double ground_speed_mps(int wheel) const;
-  /// Forward speed (m/s) and yaw rate (rad/s, positive = left) of the midpoint of the axle.
+  /// Forward speed (m/s) and yaw rate (rad/s, positive = left) of the midpoint of the axle (the
+  /// yaw rate through `icr_expansion`).
   double body_speed_mps() const;
   double body_yaw_rate_radps() const;
   std::int64_t encoder_count(int wheel) const;

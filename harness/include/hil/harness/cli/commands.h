@@ -39,6 +39,7 @@ Subcommand AddDataset(CLI::App& app);       ///< hil dataset
 Subcommand AddExport(CLI::App& app);        ///< hil export
 Subcommand AddCampaign(CLI::App& app);      ///< hil campaign (and its status, merge)
 Subcommand AddCharacterize(CLI::App& app);  ///< hil characterize
+Subcommand AddScenarioKeys(CLI::App& app);  ///< hil scenario-keys
 
 /// This executable's path ("hil" when /proc cannot tell).
 std::string SelfExecutable();

@@ -29,6 +29,7 @@
 #include "hil/harness/links/can_endpoint.h"
 #include "hil/harness/links/serial_endpoint.h"
 #include "hil/harness/scenario/scenario.h"
+#include "hil/harness/scenario/scenario_keys.h"
 #include "hil/harness/scenario/yaml_reader.h"
 
 namespace hil::harness {
@@ -113,6 +114,15 @@ const DeviceKind* DeviceKindOfLink(const Scenario& s, const std::string& link);
 
 /// A spec's `link` key: a plain file name in the run folder (default `fallback`).
 std::string ReadLinkName(const YamlReader& r, const std::string& fallback);
+/// ReadLinkName() for a section with a table, which must list `link`.
+template <const auto& T>
+std::string ReadLinkName(const KeyedReader<T>& r, const std::string& fallback) {
+  static_cast<void>(KeyedReader<T>::Row("link"));  // a compile error when the table lacks it
+  return ReadLinkName(r.yaml(), fallback);
+}
+/// The devices' sections that have a table (scenario_keys.h), in the reference's order
+/// (device_key_tables.cc).
+std::span<const KeySection* const> DeviceKeySections();
 /// A range sensor's `reflectivity: {ridge, post, wall}` (the greenhouse's surfaces).
 void ReadSurfaceReflectivity(const YamlReader& r, world::SurfaceReflectivity& f);
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "hil/harness/scenario/scenario.h"
+#include "hil/harness/scenario/scenario_keys.h"
 #include "hil/harness/scenario/scenario_overrides.h"
 
 namespace hil::harness {
@@ -22,5 +23,11 @@ Scenario LoadScenario(const std::string& path, bool short_form = false,
 Scenario LoadDefaultScenario();
 /// Parses scenario text; `name` stands for the file in messages. @throws ScenarioError.
 Scenario ParseScenario(const std::string& text, const std::string& name);
+/// The scenario reference (`hil scenario-keys`, docs/scenario_reference.md): every table of
+/// scenario_keys.h, and the names of the top-level sections (the loader's and the device
+/// table's) that have no table yet.
+std::string ScenarioReference();
+/// Every table of scenario_keys.h: the scenario stage's, then the devices' (device_key_tables.cc).
+std::vector<const KeySection*> ScenarioKeyTables();
 
 }  // namespace hil::harness

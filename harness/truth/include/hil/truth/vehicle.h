@@ -10,6 +10,18 @@
 ///   its command through a first-order lag τ_δ with a smooth rate limit r:
 ///     δ̇ = r · tanh((δ_cmd − δ) / (τ_δ r)),   |δ_cmd| ≤ δ_max
 /// - diff_drive: ψ̇ = ω, ω̇ = (ω_cmd − ω) / τ_ω; wheel speeds v ∓ ω·track/2 (turns in place).
+/// - skid_steer: a skid-steered base (tracks, or four wheels without steering) in the kinematic
+///   model of the tracks' instantaneous centres of rotation (ICRs; Martínez et al. 2005,
+///   "Approximating kinematics for tracked mobile robots", IJRR 24(10); Mandow et al. 2007,
+///   "Experimental kinematics for wheeled skid-steer mobile robots", IROS): ψ̇ = ω as diff_drive,
+///   and in the body frame (x forward, y left) the ICRs of the left and right tracks and of the
+///   body lie at (x_v, y_l), (x_v, y_r) and (x_v, v/ω). The tracks' ground speeds are
+///   v_l = v − ω·y_l, v_r = v − ω·y_r, so ω = (v_r − v_l) / (y_l − y_r), and the reference point
+///   slips sideways at v_y = −x_v·ω. Here the ICRs are symmetric (y_l = −y_r = χ·track/2, a
+///   choice): χ ≥ 1 (`icr_expansion`) is how much wider the tracks act in a turn than they are (χ
+///   = 1: a differential drive), the turning radius for given track speeds is χ times the one
+///   track/2 · (v_r + v_l) / (v_r − v_l) a differential drive would take, and x_v
+///   (`icr_offset_m`) is the ICRs' distance ahead of the reference point.
 /// Slip (optional): β = −k_slip · v · ψ̇, the velocity swinging to the outside of a turn in
 /// proportion to the lateral acceleration.
 
@@ -20,7 +32,7 @@ namespace hil::truth {
 
 /// Parameters of a vehicle model; constant for a run.
 struct VehicleParams {
-  enum class Model { kBicycle, kDiffDrive };
+  enum class Model { kBicycle, kDiffDrive, kSkidSteer };
   Model model = Model::kBicycle;
   double wheelbase_m = 0.84;          ///< bicycle: axle distance L
   double track_m = 0.55;              ///< distance between left and right wheels
@@ -28,8 +40,10 @@ struct VehicleParams {
   double max_steer_rate_dps = 30;     ///< bicycle: steering rate limit r
   double steer_lag_s = 0.2;           ///< bicycle: steering lag τ_δ
   double speed_lag_s = 0.5;           ///< speed lag τ_v (both models)
-  double yaw_rate_lag_s = 0.2;        ///< diff_drive: yaw-rate lag τ_ω
-  double max_yaw_rate_dps = 45;       ///< diff_drive: |ω_cmd| limit
+  double yaw_rate_lag_s = 0.2;        ///< diff_drive, skid_steer: yaw-rate lag τ_ω
+  double max_yaw_rate_dps = 45;       ///< diff_drive, skid_steer: |ω_cmd| limit
+  double icr_expansion = 1.0;         ///< skid_steer: χ = (y_l − y_r) / track
+  double icr_offset_m = 0.0;          ///< skid_steer: x_v, the ICRs ahead of the reference point
   double slip_gain_rad_per_mps2 = 0;  ///< lateral slip k_slip (0: no slip)
   /// Speed variation of a real drive (governor droop, wheel slip on soil, load): the commanded
   /// speed is multiplied by 1 + x(t), x a first-order Gauss–Markov process of this standard
@@ -46,7 +60,37 @@ struct VehicleParams {
   static VehicleParams Tractor();
   /// Seed 001's greenhouse transport vehicle: differential drive, track 0.5 m.
   static VehicleParams DiffDrive();
+  /// A small four-wheel skid-steer robot. Its figures are chosen, not a source's: track 0.5 m,
+  /// χ = 1.5 and the ICRs 0.05 m ahead of the axle centre (the load a little forward); the lags
+  /// and limits of DiffDrive().
+  static VehicleParams SkidSteer();
+
+  /// The model is commanded by a yaw rate (diff_drive, skid_steer), not a steering angle.
+  bool yaw_rate_commanded() const { return model != Model::kBicycle; }
+  /// y_l − y_r: the track the yaw rate sees (track_m for a differential drive).
+  double icr_track_m() const {
+    return model == Model::kSkidSteer ? icr_expansion * track_m : track_m;
+  }
+  /// The reference point's lateral speed (m/s, left positive) at yaw rate ω: −x_v·ω (0 but for
+  /// skid_steer).
+  double lateral_speed_mps(double yaw_rate_radps) const {
+    return model == Model::kSkidSteer ? -icr_offset_m * yaw_rate_radps : 0.0;
+  }
 };
+
+/// Ground speeds of the left and right wheels (tracks) at forward speed `v_mps` and yaw rate
+/// `yaw_rate_radps`: v ∓ ω·(y_l − y_r)/2 (the ICR kinematics of VehicleParams).
+struct WheelGroundSpeeds {
+  double left_mps = 0, right_mps = 0;
+};
+WheelGroundSpeeds WheelSpeedsOf(const VehicleParams& p, double v_mps, double yaw_rate_radps);
+
+/// The body's motion from the wheels' (tracks') ground speeds: forward speed, lateral speed (left
+/// positive) and yaw rate of the reference point (the inverse of WheelSpeedsOf, with v_y).
+struct PlanarBodyVelocity {
+  double forward_mps = 0, lateral_mps = 0, yaw_rate_radps = 0;
+};
+PlanarBodyVelocity BodyVelocityOf(const VehicleParams& p, double left_mps, double right_mps);
 
 /// The speed variation of VehicleParams: factor(t) = 1 + x(t), x a first-order Gauss–Markov
 /// process on a 0.1 s grid (exact discretisation, seeded), linearly interpolated. The same

@@ -1,0 +1,76 @@
+#pragma once
+// Internal to the harness: the tables of the closed_loop section (scenario_keys.h), read by
+// scenario_closed_loop.cc (the isobus channel's steering ECU keys: scenario_closed_loop_isobus.cc).
+#include <array>
+#include <string_view>
+
+#include "hil/harness/scenario/scenario_keys.h"
+
+namespace hil::harness::closed_loop_keys {
+
+using enum KeyType;
+
+inline constexpr std::array<std::string_view, 2> kChannels{"serial_base", "isobus"};
+inline constexpr std::array<std::string_view, 2> kTransports{"socketcan", "slcan"};
+
+inline constexpr ScenarioKey kClosedLoop[] = {
+    {"channel", kChoice, "", "serial_base", 0, 0,
+     "serial_base: the ROSArduinoBridge base of a diff_drive or skid_steer vehicle (wheel speed "
+     "commands); isobus: ISO 11783-7 guidance to the steering ECU of a bicycle/tractor",
+     kChannels},
+    {"link", kString, "", "ttyBASE (isobus: ttyCAN)", 0, 0,
+     "the actuator's serial link in the run folder"},
+    {"path_file", kString, "", "required", 0, 0,
+     "the planned path (vectors/paths/README.md), relative to the scenario file"},
+    {"controller", kString, "", "required", 0, 0,
+     "the controller's shell command; {guidanced}, {path_file}, {nav_nmea}, {origin}, {run_dir} "
+     "and the link names are substituted"},
+    {"control_period_s", kNumber, "s", "0.1", 0.01, 10, "the controller's tick"},
+    {"command_timeout_s", kNumber, "s", "0.3", 0.01, 60,
+     "a tick whose last command is older counts one missing command"},
+    {"first_command_due_s", kNumber, "s", "3", 0, 600,
+     "ticks before this count no missing command"},
+    {"start_enu_m", kPoint, "m", "[0, 0]", 0, 0,
+     "where the vehicle's reference point starts [east, north]"},
+    {"start_heading_deg", kNumber, "deg", "0", -360, 360,
+     "its heading at the start, clockwise from north"},
+    {"initial_speed_mps", kNumber, "m/s", "0", 0, 10,
+     "the vehicle rolls straight at this speed when the run starts"},
+    {"actuator", kMapping, "", "the defaults below", 0, 0,
+     "serial_base: the wheel motors (closed_loop.actuator); isobus: the steering ECU "
+     "(vectors/scenarios/closed_loop/README.md)"},
+    {"transport", kChoice, "", "socketcan", 0, 0,
+     "isobus: the scenario's can bus, or a serial CAN adapter (slcan) on `link`", kTransports},
+    {"speed_mps", kNumber, "m/s", "by the ECU", 0, 15, "isobus: the vehicle's set speed"},
+    {"slcan_baud", kInteger, "Bd", "115200", 1200, 4000000, "isobus, slcan: the adapter's baud"},
+    {"fault_window_s", kNumber, "s", "10", 0, 3600,
+     "tracking.faults scores each fault to this long after its end"},
+    {"pass_to_pass", kMapping, "", "the defaults below", 0, 0,
+     "the ISO 12188-2 style pass-to-pass evaluation (closed_loop.pass_to_pass)"},
+};
+
+inline constexpr ScenarioKey kActuator[] = {
+    {"wheel_radius_m", kNumber, "m", "0.1", 0.01, 2, "the wheels' (sprockets') radius"},
+    {"encoder_counts_per_rev", kInteger, "", "1200", 1, 1 << 20,
+     "quadrature counts per wheel revolution"},
+    {"max_wheel_speed_radps", kNumber, "rad/s", "20", 0.1, 500, "the wheels' speed limit"},
+    {"max_wheel_accel_radps2", kNumber, "rad/s²", "30", 0.1, 1e4, "the wheels' acceleration limit"},
+    {"time_constant_s", kNumber, "s", "0.08", 0.001, 10, "the speed loop's first-order lag"},
+    {"slip", kPoint, "", "[0, 0]", 0, 0,
+     "[left, right]: fraction of the tyre speed lost, each in [0, 1) (ground speed = ω·r·(1 − "
+     "slip)); a skid_steer's turning slip is vehicle.icr_expansion"},
+    {"command_latency_s", kNumber, "s", "0.005", 0, 5,
+     "a command acts this long after its arrival"},
+    {"watchdog_timeout_s", kNumber, "s", "2", 0.01, 60,
+     "no command for this long stops the wheels (ROSArduinoBridge's AUTO_STOP_INTERVAL)"},
+    {"pid_rate_hz", kNumber, "Hz", "30", 1, 1000, "ROSArduinoBridge's PID frame rate"},
+};
+
+inline constexpr ScenarioKey kPassToPass[] = {
+    {"window_s", kNumber, "s", "900", 1, 86400, "the window pass-to-pass accuracy is quoted over"},
+    {"margin_m", kNumber, "m", "10", 0, 1e4, "left out at each end of a pass (settling)"},
+    {"max_angle_deg", kNumber, "deg", "5", 0, 45,
+     "two straight segments this parallel are adjacent passes"},
+};
+
+}  // namespace hil::harness::closed_loop_keys
