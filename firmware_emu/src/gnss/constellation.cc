@@ -149,7 +149,8 @@ std::vector<SatelliteView> Constellation::Sky(double gps_s, double lat_deg, doub
     }
     s->channel = channel++;
     s->tracked = true;
-    s->used = !s->sbas && s->elev_deg >= cond.elevation_mask_deg && s->cno_dbhz >= cond.nav_min_dbhz;
+    s->used =
+        !s->sbas && s->elev_deg >= cond.elevation_mask_deg && s->cno_dbhz >= cond.nav_min_dbhz;
     s->quality = s->used ? 7 : 4;
   }
   std::sort(out.begin(), out.end(),

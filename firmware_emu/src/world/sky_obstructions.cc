@@ -39,7 +39,7 @@ std::optional<Reflection> FaceReflection(const SkyObstacle& o, const Eigen::Vect
   const double d = n2.dot(p_A.head<2>() - f);
   const double sn = s.head<2>().dot(n2);
   if (d <= 0.0 || sn <= kTiny) return std::nullopt;  // antenna or satellite behind the face
-  const double len = d / sn;                           // antenna → reflection point
+  const double len = d / sn;                         // antenna → reflection point
   const Eigen::Vector2d s_ref_h = s.head<2>() - 2.0 * sn * n2;
   const Eigen::Vector2d r_h = p_A.head<2>() + len * s_ref_h;
   const double r_z = p_A.z() + len * s.z();
@@ -87,8 +87,7 @@ LineOfSight SkyObstructions::Trace(const Eigen::Vector3d& p_NA_N_m, double az_ra
 }
 
 std::optional<Reflection> SkyObstructions::StrongestReflection(const Eigen::Vector3d& p_NA_N_m,
-                                                               double az_rad,
-                                                               double el_rad) const {
+                                                               double az_rad, double el_rad) const {
   const Eigen::Vector3d s(std::cos(el_rad) * std::sin(az_rad), std::cos(el_rad) * std::cos(az_rad),
                           std::sin(el_rad));
   std::optional<Reflection> best;

@@ -40,8 +40,7 @@ Neo5mConfig Config(const std::string& profile = "neo-5m") {
 // A tree line `east_m` east of the antenna (its near face), 6 m deep, `height_m` tall, 400 m long
 // north–south: at this place and hour (2019-05-14 02:00 UTC, 45.75 N) three of the eight used
 // satellites are east of the antenna at 31–50° (svids 5, 8, 19).
-std::shared_ptr<const world::SkyObstructions> TreeLine(double east_m = 8.0,
-                                                       double height_m = 18.0,
+std::shared_ptr<const world::SkyObstructions> TreeLine(double east_m = 8.0, double height_m = 18.0,
                                                        double loss_db_per_m = 4.0) {
   world::SkyObstacle o;
   o.kind = world::SkyObstacleKind::kTreeLine;
@@ -190,7 +189,7 @@ TEST(Neo5mSkyTest, RoughRtkReportsFloatThenFixedAndAWrongFixAsFixed) {
     if (m.name == "NMEA-GGA") gga.push_back(m.bytes);
   }
   ASSERT_EQ(gga.size(), 301u);
-  EXPECT_NE(gga[50].find(",5,"), std::string::npos) << gga[50];   // float
+  EXPECT_NE(gga[50].find(",5,"), std::string::npos) << gga[50];    // float
   EXPECT_NE(gga[200].find(",4,"), std::string::npos) << gga[200];  // "fixed", but wrong
   const GnssFix& f = r.nav.back().fix;
   const double err_n_m = (f.lat_deg - kLat) * 111150.0;

@@ -79,8 +79,8 @@ void ReadFootprint(const YamlReader& f, world::SkyObstacle& o) {
 }
 
 world::SkyObstacle ReadObstacle(const YamlReader& f, const Scenario& s) {
-  f.CheckKeys({"kind", "from_m", "to_m", "width_m", "centre_m", "size_m", "heading_deg",
-               "height_m", "loss_db", "loss_db_per_m", "max_loss_db", "reflection_amplitude"});
+  f.CheckKeys({"kind", "from_m", "to_m", "width_m", "centre_m", "size_m", "heading_deg", "height_m",
+               "loss_db", "loss_db_per_m", "max_loss_db", "reflection_amplitude"});
   if (!f.Has("kind")) f.Fail("kind", "required: tree_line, building or greenhouse");
   const std::string kind = f.Choice("kind", "", {"tree_line", "building", "greenhouse"});
   world::SkyObstacle o = KindDefaults(kind == "tree_line"  ? world::SkyObstacleKind::kTreeLine
@@ -89,8 +89,9 @@ world::SkyObstacle ReadObstacle(const YamlReader& f, const Scenario& s) {
   const bool from_greenhouse = kind == "greenhouse" && !f.Has("from_m") && !f.Has("centre_m");
   if (from_greenhouse) {
     if (!s.greenhouse)
-      f.Fail("kind", "a greenhouse without centre_m/size_m takes the greenhouse: section's walls, "
-                     "and the scenario has none");
+      f.Fail("kind",
+             "a greenhouse without centre_m/size_m takes the greenhouse: section's walls, "
+             "and the scenario has none");
     o.footprint = GreenhouseFootprint(*s.greenhouse);
     o.height_m = f.DoubleIn("height_m", s.greenhouse->wall_height_m, 0.01, 1000);
   } else {

@@ -13,16 +13,15 @@
 /// `float_correlation_s`) whose sigma converges from `float_sigma_m` to
 /// `float_converged_sigma_m` with time constant `float_convergence_s` (vertical 1.5 ×). Then the
 /// ambiguities are fixed, provided at least `min_sats_fixed` satellites are used in line of sight
-/// with C/N0 ≥ `fix_min_dbhz` (NLOS satellites carry no fixable carrier); the float error vanishes at once: the position
-/// jumps by it. With fewer such satellites a fixed solution falls back to float and re-fixes
-/// `refix_s` after they return.
-/// Each fix is wrong with probability `wrong_fix_probability`: `wrong_fix_satellites` used
-/// satellites get an integer error of ±1…±`wrong_fix_cycles` L1 cycles each, and the position is
-/// off by the least-squares image of those range errors in the current geometry (decimetres),
-/// while the receiver reports a fixed solution with its centimetre accuracy. It holds for
-/// `wrong_fix_hold_s` × a uniform draw in [0.5, 1.5] (until a residual test would catch it) or
-/// until one of those satellites is lost, then the solution re-fixes through float.
-/// Every draw comes from this object's own seeded stream.
+/// with C/N0 ≥ `fix_min_dbhz` (NLOS satellites carry no fixable carrier); the float error vanishes
+/// at once: the position jumps by it. With fewer such satellites a fixed solution falls back to
+/// float and re-fixes `refix_s` after they return. Each fix is wrong with probability
+/// `wrong_fix_probability`: `wrong_fix_satellites` used satellites get an integer error of
+/// ±1…±`wrong_fix_cycles` L1 cycles each, and the position is off by the least-squares image of
+/// those range errors in the current geometry (decimetres), while the receiver reports a fixed
+/// solution with its centimetre accuracy. It holds for `wrong_fix_hold_s` × a uniform draw in
+/// [0.5, 1.5] (until a residual test would catch it) or until one of those satellites is lost, then
+/// the solution re-fixes through float. Every draw comes from this object's own seeded stream.
 
 #include <cstdint>
 #include <random>

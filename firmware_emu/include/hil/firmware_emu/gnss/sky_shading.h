@@ -43,8 +43,8 @@ inline constexpr double kGpsCaChip_m = 293.05;            // c / 1.023 MHz
 /// `gnss.multipath`).
 struct ShadingConfig {
   std::shared_ptr<const world::SkyObstructions> obstructions;  ///< null or empty: open sky
-  double track_min_dbhz = 15.0;  ///< tracking floor (below: not tracked)
-  double nav_min_dbhz = 20.0;    ///< navigation floor (below: tracked, not used)
+  double track_min_dbhz = 15.0;          ///< tracking floor (below: not tracked)
+  double nav_min_dbhz = 20.0;            ///< navigation floor (below: tracked, not used)
   double correlator_spacing_chip = 0.5;  ///< early–late spacing of the DLL
   bool active() const { return obstructions && !obstructions->empty(); }
 };

@@ -29,20 +29,20 @@ enum class SkyObstacleKind { kTreeLine, kBuilding, kGreenhouse };
 /// One obstruction: a prism over `footprint` from the ground to `height_m`.
 struct SkyObstacle {
   SkyObstacleKind kind = SkyObstacleKind::kTreeLine;
-  OrientedBox footprint;  ///< in N (metres)
-  double height_m = 0;    ///< top above the ground plane z = 0 of N
-  bool opaque = false;    ///< nothing passes (a building)
-  double loss_db = 0;     ///< loss of a direct path crossing it (film, glass, steel)
-  double loss_db_per_m = 0;     ///< plus this per metre of slant path inside (foliage)
-  double max_loss_db = 40;      ///< cap of one crossing's loss
+  OrientedBox footprint;            ///< in N (metres)
+  double height_m = 0;              ///< top above the ground plane z = 0 of N
+  bool opaque = false;              ///< nothing passes (a building)
+  double loss_db = 0;               ///< loss of a direct path crossing it (film, glass, steel)
+  double loss_db_per_m = 0;         ///< plus this per metre of slant path inside (foliage)
+  double max_loss_db = 40;          ///< cap of one crossing's loss
   double reflection_amplitude = 0;  ///< amplitude of the specular reflection off its faces (0–1)
 };
 
 /// What the direct path from the antenna towards a direction crosses.
 struct LineOfSight {
-  bool blocked = false;       ///< an opaque obstacle is in the way
-  double loss_db = 0;         ///< summed loss of the crossed obstacles (not opaque ones)
-  int crossed = 0;            ///< obstacles crossed
+  bool blocked = false;  ///< an opaque obstacle is in the way
+  double loss_db = 0;    ///< summed loss of the crossed obstacles (not opaque ones)
+  int crossed = 0;       ///< obstacles crossed
 };
 
 /// The strongest specular reflection reaching the antenna from a direction.
