@@ -137,6 +137,24 @@ void Neo5mDevice::ShadeSky(SkyConditions& cond, const Eigen::Vector3d& p_NA_N_m)
   cond.nav_min_dbhz = config_.shading.nav_min_dbhz;
 }
 
+bool Neo5mDevice::RtkFloat(Time t, double dt_s, bool valid, const NavEpoch& e, ErrorInputs& in) {
+  if (valid && !had_fix_last_) t_fix_since_ = t;
+  had_fix_last_ = valid;
+  if (rtk_) {
+    last_rtk_ = rtk_->Step(t, dt_s, valid, e.sats);
+    in.offset_N_m += last_rtk_.error_N_m;
+    in.extra_h_acc_m = std::hypot(in.extra_h_acc_m, last_rtk_.sigma_h_m);
+    in.extra_v_acc_m = std::hypot(in.extra_v_acc_m, last_rtk_.sigma_v_m);
+    return valid && last_rtk_.state == RtkState::kFloat;
+  }
+  // the profile's timer: float for rtk_fixed_after_s after each (re)acquisition
+  const bool rtk_float =
+      profile_.rtk && valid && t - t_fix_since_ < DurationFromSeconds(profile_.rtk_fixed_after_s);
+  if (rtk_float)
+    in.multipath_sigma_m = std::hypot(in.multipath_sigma_m, profile_.rtk_float_sigma_m);
+  return rtk_float;
+}
+
 void Neo5mDevice::ApplyMultipath(NavEpoch& e, const Dops& dops, ErrorInputs& in) const {
   if (!config_.shading.active()) return;
   // a standalone fix ranges with the code; an RTK solution with the carrier of the satellites in
@@ -224,19 +242,7 @@ void Neo5mDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
         dops.vdop < 99 ? std::clamp(dops.vdop / profile_.model.vdop_ref, 0.5, 20.0) : in.h_scale;
   }
   if (valid) ApplyMultipath(e, dops, in);
-  if (valid && !had_fix_last_) t_fix_since_ = t;
-  had_fix_last_ = valid;
-  bool rtk_float =
-      profile_.rtk && valid && t - t_fix_since_ < DurationFromSeconds(profile_.rtk_fixed_after_s);
-  if (rtk_) {
-    last_rtk_ = rtk_->Step(t, dt_s, valid, e.sats);
-    rtk_float = valid && last_rtk_.state == RtkState::kFloat;
-    in.offset_N_m += last_rtk_.error_N_m;
-    in.extra_h_acc_m = std::hypot(in.extra_h_acc_m, last_rtk_.sigma_h_m);
-    in.extra_v_acc_m = std::hypot(in.extra_v_acc_m, last_rtk_.sigma_v_m);
-  } else if (rtk_float) {
-    in.multipath_sigma_m = std::hypot(in.multipath_sigma_m, profile_.rtk_float_sigma_m);
-  }
+  const bool rtk_float = RtkFloat(t, dt_s, valid, e, in);
   GnssFix fix = model_.Calc(truth, unix_ns, dt_s, in);
   fix.fix_type = e.status.fix_type;
   e.sbas_corrections =

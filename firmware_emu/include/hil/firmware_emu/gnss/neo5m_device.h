@@ -122,6 +122,9 @@ class Neo5mDevice final : public Device {
   /// The position error and accuracy the multipath of the used satellites makes (into `in`), and
   /// their residuals (into the satellites' prRes).
   void ApplyMultipath(NavEpoch& e, const Dops& dops, ErrorInputs& in) const;
+  /// The RTK state of the epoch (rough model or the profile's timer) and its errors (into `in`);
+  /// true when float. Tracks the start of the current fix.
+  bool RtkFloat(Time t, double dt_s, bool valid, const NavEpoch& e, ErrorInputs& in);
   void HandleUbx(const ubx::InputMessage& m, Time t, DeviceOutput& out);
   void HandleNmea(const ubx::InputMessage& m, Time t, DeviceOutput& out);
   bool OutputEnabled(std::uint16_t proto) const;
