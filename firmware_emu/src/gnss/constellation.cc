@@ -104,8 +104,9 @@ std::vector<SatelliteView> Constellation::Sky(double gps_s, double lat_deg, doub
     if (s.elev_deg < 0) continue;
     // C/N0: rises with elevation; a slow deterministic ripple stands in for multipath fading
     const double ripple = 1.5 * std::sin(gps_s / 37.0 + o.svid);
-    s.cno_dbhz = static_cast<int>(
-        std::lround(34.0 + 12.0 * std::sin(s.elev_deg * kDeg) + o.cno_offset + ripple));
+    double cno = 34.0 + 12.0 * std::sin(s.elev_deg * kDeg) + o.cno_offset + ripple;
+    if (cond.shade) cond.shade(s, cno);
+    s.cno_dbhz = std::isfinite(cno) && cno > 0 ? static_cast<int>(std::lround(cno)) : 0;
     out.push_back(s);
   }
   if (cond.sbas_enabled) {
@@ -118,7 +119,9 @@ std::vector<SatelliteView> Constellation::Sky(double gps_s, double lat_deg, doub
       s.sbas = true;
       LookAngles(p_e, rx_e, r_en, s.elev_deg, s.azim_deg);
       if (s.elev_deg < 10.0) continue;  // SBAS signals are weak near the horizon
-      s.cno_dbhz = static_cast<int>(std::lround(31.0 + 8.0 * std::sin(s.elev_deg * kDeg)));
+      double cno = 31.0 + 8.0 * std::sin(s.elev_deg * kDeg);
+      if (cond.shade) cond.shade(s, cno);
+      s.cno_dbhz = std::isfinite(cno) && cno > 0 ? static_cast<int>(std::lround(cno)) : 0;
       geo.push_back(s);
     }
     // the receiver searches only maxSBAS of them: the highest
@@ -136,8 +139,9 @@ std::vector<SatelliteView> Constellation::Sky(double gps_s, double lat_deg, doub
   });
   int channel = 0;
   for (SatelliteView* s : order) {
-    const bool receivable =
-        !cond.sky_blocked && s->elev_deg >= std::max(kTrackMinElev_deg, cond.blocked_below_deg);
+    const bool receivable = !cond.sky_blocked &&
+                            s->elev_deg >= std::max(kTrackMinElev_deg, cond.blocked_below_deg) &&
+                            s->cno_dbhz > 0 && s->cno_dbhz >= cond.track_min_dbhz;
     if (!receivable || channel >= cond.max_channels) {
       s->cno_dbhz = 0;
       s->quality = receivable ? 0 : 1;  // idle (no free channel) or searching
@@ -145,7 +149,8 @@ std::vector<SatelliteView> Constellation::Sky(double gps_s, double lat_deg, doub
     }
     s->channel = channel++;
     s->tracked = true;
-    s->used = !s->sbas && s->elev_deg >= cond.elevation_mask_deg;
+    s->used =
+        !s->sbas && s->elev_deg >= cond.elevation_mask_deg && s->cno_dbhz >= cond.nav_min_dbhz;
     s->quality = s->used ? 7 : 4;
   }
   std::sort(out.begin(), out.end(),

@@ -121,6 +121,57 @@ Neo5mDevice::Neo5mDevice(const Neo5mConfig& config, std::uint64_t seed)
   clk_bias_ns_ = static_cast<double>((h >> 40) % 1000000) - 500000.0;
   next_epoch_ = NextGridEpoch(TimeFromNs(-1));
   fix_state_.Restart(Time{}, config_.start);
+  if (config_.rtk_rough) rtk_.emplace(*config_.rtk_rough, seed ^ 0x52544B524F554748ULL);
+}
+
+void Neo5mDevice::ShadeSky(SkyConditions& cond, const Eigen::Vector3d& p_NA_N_m) const {
+  if (!config_.shading.active()) return;
+  cond.shade = [this, p_NA_N_m](SatelliteView& s, double& cno_dbhz) {
+    const SignalEffect fx = ShadeSignal(config_.shading, p_NA_N_m, s.azim_deg, s.elev_deg);
+    cno_dbhz += fx.cno_change_db;
+    s.code_multipath_m = fx.code_error_m;
+    s.carrier_multipath_m = fx.carrier_error_m;
+    s.nlos = fx.nlos;
+  };
+  cond.track_min_dbhz = config_.shading.track_min_dbhz;
+  cond.nav_min_dbhz = config_.shading.nav_min_dbhz;
+}
+
+bool Neo5mDevice::RtkFloat(Time t, double dt_s, bool valid, const NavEpoch& e, ErrorInputs& in) {
+  if (valid && !had_fix_last_) t_fix_since_ = t;
+  had_fix_last_ = valid;
+  if (rtk_) {
+    last_rtk_ = rtk_->Step(t, dt_s, valid, e.sats);
+    in.offset_N_m += last_rtk_.error_N_m;
+    in.extra_h_acc_m = std::hypot(in.extra_h_acc_m, last_rtk_.sigma_h_m);
+    in.extra_v_acc_m = std::hypot(in.extra_v_acc_m, last_rtk_.sigma_v_m);
+    return valid && last_rtk_.state == RtkState::kFloat;
+  }
+  // the profile's timer: float for rtk_fixed_after_s after each (re)acquisition
+  const bool rtk_float =
+      profile_.rtk && valid && t - t_fix_since_ < DurationFromSeconds(profile_.rtk_fixed_after_s);
+  if (rtk_float)
+    in.multipath_sigma_m = std::hypot(in.multipath_sigma_m, profile_.rtk_float_sigma_m);
+  return rtk_float;
+}
+
+void Neo5mDevice::ApplyMultipath(NavEpoch& e, const Dops& dops, ErrorInputs& in) const {
+  if (!config_.shading.active()) return;
+  // a standalone fix ranges with the code; an RTK solution with the carrier of the satellites in
+  // line of sight (an NLOS carrier holds no fixable ambiguity: the engine drops it)
+  std::vector<double> err(e.sats.size(), 0.0);
+  for (std::size_t i = 0; i < e.sats.size(); ++i) {
+    const SatelliteView& s = e.sats[i];
+    err[i] = !profile_.rtk ? s.code_multipath_m : s.nlos ? 0.0 : s.carrier_multipath_m;
+  }
+  const RangeErrorSolution sol = SolveRangeErrors(e.sats, err);
+  if (!sol.valid) return;
+  in.offset_N_m += sol.dp_N_m;
+  for (std::size_t i = 0; i < e.sats.size(); ++i) {
+    if (e.sats[i].used) e.sats[i].pr_res_m += sol.residual_m[i];
+  }
+  in.extra_h_acc_m = std::hypot(in.extra_h_acc_m, sol.sigma_m * dops.hdop);
+  if (dops.vdop < 99) in.extra_v_acc_m = std::hypot(in.extra_v_acc_m, sol.sigma_m * dops.vdop);
 }
 
 int Neo5mDevice::baud(int) const {
@@ -175,6 +226,7 @@ void Neo5mDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
   overload_ = active.overload;
   const bool data_gap = active.data_gap;
   const double gps_s = static_cast<double>(e.gps.week) * 604800.0 + e.gps.tow_s();
+  ShadeSky(cond, truth.p_NB_N_m + truth.q_NB * profile_.model.p_BA_B_m);
   e.sats = constellation_.Sky(gps_s, truth.lat_deg, truth.lon_deg, truth.height_m, cond);
   int usable = 0;
   for (const auto& s : e.sats) usable += s.used ? 1 : 0;
@@ -189,12 +241,8 @@ void Neo5mDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
     in.v_scale =
         dops.vdop < 99 ? std::clamp(dops.vdop / profile_.model.vdop_ref, 0.5, 20.0) : in.h_scale;
   }
-  if (valid && !had_fix_last_) t_fix_since_ = t;
-  had_fix_last_ = valid;
-  const bool rtk_float =
-      profile_.rtk && valid && t - t_fix_since_ < DurationFromSeconds(profile_.rtk_fixed_after_s);
-  if (rtk_float)
-    in.multipath_sigma_m = std::hypot(in.multipath_sigma_m, profile_.rtk_float_sigma_m);
+  if (valid) ApplyMultipath(e, dops, in);
+  const bool rtk_float = RtkFloat(t, dt_s, valid, e, in);
   GnssFix fix = model_.Calc(truth, unix_ns, dt_s, in);
   fix.fix_type = e.status.fix_type;
   e.sbas_corrections =

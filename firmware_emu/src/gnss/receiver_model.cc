@@ -72,6 +72,8 @@ GnssFix ReceiverModel::Calc(const TruthSample& truth, std::int64_t unix_ns, doub
   const double burst_h = in.multipath_sigma_m * std::numbers::sqrt2;
   fix.h_acc_m = std::hypot(h_sig, burst_h);
   fix.v_acc_m = std::hypot(sigma.z(), in.multipath_sigma_m);
+  if (in.extra_h_acc_m > 0.0) fix.h_acc_m = std::hypot(fix.h_acc_m, in.extra_h_acc_m);
+  if (in.extra_v_acc_m > 0.0) fix.v_acc_m = std::hypot(fix.v_acc_m, in.extra_v_acc_m);
   fix.p_acc_m = std::hypot(fix.h_acc_m, fix.v_acc_m);
   fix.s_acc_mps = sv * std::sqrt(3.0);
   const double gs = fix.ground_speed_mps();

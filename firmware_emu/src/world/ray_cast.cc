@@ -66,4 +66,24 @@ std::optional<RayHit> CastSegment(const Ray2& ray, const Eigen::Vector2d& a_m,
   return RayHit{t, n};
 }
 
+std::optional<RaySpan> CrossBox(const Ray2& ray, const OrientedBox& box) {
+  const double c = std::cos(box.heading_rad), s = std::sin(box.heading_rad);
+  const Eigen::Vector2d d = ray.origin_m - box.centre_m;
+  const Eigen::Vector2d o(c * d.x() + s * d.y(), -s * d.x() + c * d.y());
+  const Eigen::Vector2d u(c * ray.dir.x() + s * ray.dir.y(), -s * ray.dir.x() + c * ray.dir.y());
+  RaySpan span{-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  for (int k = 0; k < 2; ++k) {
+    const double h = box.half_extent_m[k];
+    if (u[k] == 0.0) {
+      if (std::abs(o[k]) > h) return std::nullopt;
+      continue;
+    }
+    const double t0 = (-h - o[k]) / u[k], t1 = (h - o[k]) / u[k];
+    span.enter_m = std::max(span.enter_m, std::min(t0, t1));
+    span.exit_m = std::min(span.exit_m, std::max(t0, t1));
+  }
+  if (span.enter_m > span.exit_m || span.exit_m < 0) return std::nullopt;
+  return span;
+}
+
 }  // namespace hil::world

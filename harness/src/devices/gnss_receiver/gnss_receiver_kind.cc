@@ -54,6 +54,8 @@ void BuildGnssReceivers(const Scenario& s, std::uint64_t seed, const std::string
     cfg.faults = s.gnss.faults;
     AddTimelineFaults(s.faults, cfg.faults);
     cfg.common_seed = seed + kGnssCommonOffset;
+    cfg.shading = s.gnss.shading;
+    cfg.rtk_rough = s.gnss.rtk_rough;
     auto dev = std::make_unique<gnss::Neo5mDevice>(cfg, seed + kReceiverStride * i);
     const gnss::Neo5mDevice* raw = dev.get();
     set.fix_sources.push_back([raw] { return &raw->last_fix(); });
@@ -85,7 +87,7 @@ std::vector<std::string> GnssReceiverLinks(const Scenario& s) {
   return links;
 }
 
-constexpr std::string_view kGnssReceiverSections[] = {"gnss"};
+constexpr std::string_view kGnssReceiverSections[] = {"gnss", "obstructions"};
 constexpr std::string_view kGnssReceiverNavdKeys[] = {"input.gnss_device", "input.gnss_baud",
                                                       "input.gnss_device_N", "filter.antenna_N_m"};
 

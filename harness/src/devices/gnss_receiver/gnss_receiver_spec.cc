@@ -16,6 +16,8 @@
 //   geoid: ublox5              # geoid height N at each fix: ublox5 (EGM96 on the receiver's 10°
 //                              # table, the default) or egm96 (the 15' grid)
 //   geoid_separation_m: -20.0  # or a fixed N instead
+//   multipath: {track_min_dbhz, nav_min_dbhz, correlator_spacing_chip}   # with obstructions:
+//   rtk: {time_to_fix_s, ..., wrong_fix_probability}   # rough RTK (gnss_rough_spec.cc)
 //   faults:                    # the receiver's own fault timeline (scenario seconds)
 //     - {kind: outage, start_s: 30, end_s: 45}
 //     - {kind: obstruction, start_s: 60, end_s: 70, elevation_deg: 40}
@@ -55,7 +57,7 @@ gnss::GnssFault ReadFault(const YamlReader& f) {
 void ReadGnss(const YamlReader& r, GnssDeviceSpec& g) {
   r.CheckKeys({"profile", "baud", "link", "rate_hz", "output_lag_s", "tx_buffer_bytes", "errors",
                "antenna_lever_arm_m", "start", "count", "array_radius_m", "receivers", "faults",
-               "geoid", "geoid_separation_m"});
+               "geoid", "geoid_separation_m", "multipath", "rtk"});
   g.profile = r.Choice("profile", g.profile, {"neo-5m", "rtk"});
   const gnss::ReceiverProfile profile = gnss::ProfileByName(g.profile);
   g.baud = static_cast<int>(r.Int("baud", profile.baud, 1200, 921600));
@@ -134,8 +136,11 @@ void ReadGnss(const YamlReader& r, GnssDeviceSpec& g) {
 void ReadGnssReceiverSpec(const YamlReader& root, Scenario& s) {
   GnssDeviceSpec& g = s.gnss;
   const auto r = root.OptionalChild("gnss");
+  ReadSkyObstructions(root, s);
   if (r) {
     ReadGnss(*r, g);
+    ReadGnssMultipath(*r, s);
+    ReadRtkRoughness(*r, s);
   } else {
     g.receivers = {GnssReceiverSpec{g.link, g.model.p_BA_B_m}};
   }

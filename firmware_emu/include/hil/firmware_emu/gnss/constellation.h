@@ -17,6 +17,7 @@
 /// per-satellite offset and a slow deterministic ripple.
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -35,6 +36,10 @@ struct SatelliteView {
   bool orbit_known = true;  ///< elevation/azimuth known (almanac or ephemeris)
   int quality = 0;          ///< UBX qualityInd 0–7
   double pr_res_m = 0;      ///< pseudorange residual (used satellites)
+  /// Multipath of the sky's obstructions (SkyShading; 0 under an open sky): range errors of the
+  /// code and the carrier, and whether only a reflection arrives.
+  double code_multipath_m = 0, carrier_multipath_m = 0;
+  bool nlos = false;
   int nmea_id() const { return sbas ? svid - 87 : svid; }  ///< NMEA numbering (SBAS 120 → 33)
 };
 
@@ -53,6 +58,11 @@ struct SkyConditions {
   bool sbas_enabled = true;         ///< CFG-SBAS mode bit 0
   int max_sbas = 3;                 ///< CFG-SBAS maxSBAS: SBAS satellites searched
   int max_channels = 16;            ///< tracking channels (u-blox 5: 16 for GPS/SBAS, UNVERIFIED)
+  /// Obstructions of the sky (SkyShading): called for each satellite in view with its nominal
+  /// C/N0 (dBHz), which it may lower, and its multipath fields to fill. Empty: open sky.
+  std::function<void(SatelliteView&, double& cno_dbhz)> shade;
+  double track_min_dbhz = 0;  ///< C/N0 below which a satellite is not tracked
+  double nav_min_dbhz = 0;    ///< C/N0 below which a tracked satellite is not used
 };
 
 /// One GPS satellite's position in ECEF (WGS-84, Earth-fixed at the instant asked).

@@ -45,6 +45,8 @@
 #include "hil/firmware_emu/gnss/nav_epoch.h"
 #include "hil/firmware_emu/gnss/receiver_model.h"
 #include "hil/firmware_emu/gnss/receiver_profile.h"
+#include "hil/firmware_emu/gnss/rtk_solution.h"
+#include "hil/firmware_emu/gnss/sky_shading.h"
 #include "hil/firmware_emu/gnss/ubx_cfg_session.h"
 #include "hil/firmware_emu/gnss/ubx_frame.h"
 
@@ -82,6 +84,11 @@ struct Neo5mConfig {
   /// CFG-SBAS usage diffCorr, fixes are differential: GGA quality 2, mode D). Off by default, as
   /// in the real u-blox 5 captures (SBAS tracked, quality 1).
   bool sbas_corrections = false;
+  /// The sky's obstructions and the signal thresholds (SkyShading); inactive without obstacles.
+  ShadingConfig shading;
+  /// The `rtk` profile's rough mode (RtkSolution): float/fixed transitions, fix loss, wrong
+  /// fixes. Empty: the profile's timer (float for `rtk_fixed_after_s`, then fixed).
+  std::optional<RtkRoughness> rtk_rough;
 };
 
 class Neo5mDevice final : public Device {
@@ -98,6 +105,8 @@ class Neo5mDevice final : public Device {
   const NavEpoch& last_epoch() const { return last_epoch_; }
   const ubx::ReceiverSettings& settings() const { return session_.current(); }
   const ReceiverProfile& profile() const { return profile_; }
+  /// The rough RTK state of the last epoch (state kNone without `rtk_rough`).
+  const RtkEpoch& last_rtk() const { return last_rtk_; }
   /// Epochs output under an `overload` fault.
   std::uint64_t overloaded_epochs() const { return overloaded_epochs_; }
 
@@ -108,6 +117,14 @@ class Neo5mDevice final : public Device {
   /// `reply`: an answer to the host (SerialMessage::reply).
   void Push(DeviceOutput& out, Time t, std::string bytes, std::string name,
             bool reply = false) const;
+  /// Applies the sky's obstructions to `cond` for the antenna at `p_NA_N_m`.
+  void ShadeSky(SkyConditions& cond, const Eigen::Vector3d& p_NA_N_m) const;
+  /// The position error and accuracy the multipath of the used satellites makes (into `in`), and
+  /// their residuals (into the satellites' prRes).
+  void ApplyMultipath(NavEpoch& e, const Dops& dops, ErrorInputs& in) const;
+  /// The RTK state of the epoch (rough model or the profile's timer) and its errors (into `in`);
+  /// true when float. Tracks the start of the current fix.
+  bool RtkFloat(Time t, double dt_s, bool valid, const NavEpoch& e, ErrorInputs& in);
   void HandleUbx(const ubx::InputMessage& m, Time t, DeviceOutput& out);
   void HandleNmea(const ubx::InputMessage& m, Time t, DeviceOutput& out);
   bool OutputEnabled(std::uint16_t proto) const;
@@ -130,6 +147,8 @@ class Neo5mDevice final : public Device {
   bool had_fix_last_ = false;
   double clk_bias_ns_ = 0, clk_drift_nsps_ = 0;
   NavEpoch last_epoch_;
+  std::optional<RtkSolution> rtk_;
+  RtkEpoch last_rtk_;
   Time rx_line_free_{};    // when the last host byte has arrived over the line
   bool overload_ = false;  // an overload fault is active at this epoch
   std::uint64_t overloaded_epochs_ = 0;

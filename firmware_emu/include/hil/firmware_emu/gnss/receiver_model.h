@@ -57,6 +57,9 @@ struct ErrorInputs {
   double h_scale = 1.0, v_scale = 1.0;                   ///< hdop/hdop_ref, vdop/vdop_ref
   Eigen::Vector3d offset_N_m = Eigen::Vector3d::Zero();  ///< position step glitch (ENU)
   double multipath_sigma_m = 0.0;                        ///< burst: extra error sigma per axis
+  /// Accuracy the receiver adds to its own estimate (1 sigma, m): the sky's multipath seen in its
+  /// residuals, an RTK float solution. Combined with the model's by root sum of squares.
+  double extra_h_acc_m = 0.0, extra_v_acc_m = 0.0;
 };
 
 /// Receiver error model; one instance per emulated receiver, deterministic for its seeds.

@@ -46,4 +46,11 @@ std::optional<RayHit> CastSegment(const Ray2& ray, const Eigen::Vector2d& a_m,
 bool MayHitCircle(const Ray2& ray, const Eigen::Vector2d& centre_m, double radius_m,
                   double max_range_m);
 
+/// Where a ray's line crosses a box: entry and exit ranges (the entry is negative when the origin
+/// is inside), none when the line misses it or the box lies wholly behind the origin.
+struct RaySpan {
+  double enter_m = 0, exit_m = 0;
+};
+std::optional<RaySpan> CrossBox(const Ray2& ray, const OrientedBox& box);
+
 }  // namespace hil::world

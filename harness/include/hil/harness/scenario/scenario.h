@@ -86,6 +86,11 @@ struct GnssDeviceSpec {
   gnss::StartKind start = gnss::StartKind::kHot;
   std::vector<gnss::GnssFault> faults;
   std::vector<GnssReceiverSpec> receivers;  ///< at least one after loading
+  /// The sky's obstructions (section `obstructions:`) and the signal thresholds
+  /// (`gnss.multipath`); inactive without obstacles.
+  gnss::ShadingConfig shading;
+  /// `gnss.rtk` (profile rtk only): the rough RTK; empty: the profile's float-then-fixed timer.
+  std::optional<gnss::RtkRoughness> rtk_rough;
 };
 
 /// The IMU board's microcontroller of a scenario (section `mcu:`, devices/mcu/; absent → no IMU
