@@ -123,7 +123,13 @@ void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, d
   const Eigen::Matrix3d W_dt = Skew(earth_.w_IE_N_radps) * dt;
   const Eigen::Matrix3d At = (Eigen::Matrix3d::Identity() - 2.0 * W_dt).transpose();
   const Eigen::Matrix3d Bt = (-Skew(f_N_) * dt).transpose();
-  const Eigen::Matrix3d Dt = (Eigen::Matrix3d::Identity() - W_dt).transpose();
+  // attitude hold: the nominal attitude turns with the Earth as the true one does, so the error
+  // stays put (φ̇ = 0: the −[ω_IE×]φ of the gyro-driven attitude is cancelled by the error of the
+  // Earth rate resolved in the estimated body frame); rotating it with the Earth over hours
+  // moved the unobservable tilt/heading directions and shrank their variance without cause
+  const Eigen::Matrix3d Dt =
+      attitude_hold_ ? Eigen::Matrix3d::Identity()
+                     : Eigen::Matrix3d((Eigen::Matrix3d::Identity() - W_dt).transpose());
   const Eigen::Matrix3d Gt = (-C * dt).transpose();
   // attitude hold: the attitude does not integrate the gyro, so its error owes nothing to δb_g
   const Eigen::Matrix3d Ggt = attitude_hold_ ? Eigen::Matrix3d::Zero() : Gt;

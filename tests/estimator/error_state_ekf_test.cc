@@ -189,6 +189,33 @@ TEST(ErrorStateEkfStandstillTest, ZeroAngularRateEstimatesTheGyroBiasAndHoldHold
   EXPECT_LT(ekf.state().v_N_mps.norm(), 0.01);
 }
 
+// issue 39: while held, the nominal attitude turns with the Earth exactly as the standing body
+// does, so the attitude error does not move: four hours of prediction leave its covariance as it
+// was (before, the error was rotated by the Earth's rate, −[ω_IE×]φ, about 1 rad in 4 h, which
+// turned the unobservable tilt of a parked vehicle into heading and shrank its variance without
+// cause).
+TEST(ErrorStateEkfStandstillTest, HeldAttitudeErrorDoesNotTurnWithTheEarth) {
+  EarthModel earth;
+  earth.w_IE_N_radps = Eigen::Vector3d(0, 7.292115e-5 * std::cos(0.8), 7.292115e-5 * std::sin(0.8));
+  earth.g_N_mps2 = Eigen::Vector3d(0, 0, -9.81);
+  EkfParams p;
+  p.init_roll_pitch_std_rad = 0.02;
+  p.init_yaw_std_rad = 0.3;
+  ErrorStateEkf ekf(p, earth);
+  NavState s;
+  s.q_NB = Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitZ());
+  ekf.Initialize(s);
+  const Eigen::Matrix3d att_before = ekf.covariance().block<3, 3>(kAtt, kAtt);
+  const Eigen::Vector3d raw_rate = s.q_NB.conjugate() * earth.w_IE_N_radps;
+  ekf.SetAttitudeHold(true);
+  for (int k = 0; k < 4 * 3600; ++k)
+    ekf.Predict(raw_rate * 1.0, s.q_NB.conjugate() * Eigen::Vector3d(0, 0, 9.81), 1.0);
+  const Eigen::Matrix3d att_after = ekf.covariance().block<3, 3>(kAtt, kAtt);
+  EXPECT_LT((att_after - att_before).cwiseAbs().maxCoeff(), 1e-12) << "before\n"
+                                                                   << att_before << "\nafter\n"
+                                                                   << att_after;
+}
+
 TEST_F(ErrorStateEkfTest, NonFiniteInputsAreIgnored) {
   const NavState before = ekf_.state();
   ekf_.Predict(Eigen::Vector3d::Constant(std::nan("")), Eigen::Vector3d::Zero(), 0.01);

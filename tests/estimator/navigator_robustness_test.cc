@@ -224,6 +224,20 @@ TEST(NavigatorRobustnessTest, ParkedVehicleHoldsPositionAndHeading) {
   }
 }
 
+// issue 39: navd's default settings hold a parked vehicle. Params(false) is the plain filter of
+// the test's noise with every robustness setting at navd's default (stationary detection on).
+TEST(NavigatorRobustnessTest, ParkedVehicleHoldsHeadingWithDefaultSettings) {
+  const Truth parked{0.0, 0.0};
+  const Eigen::Vector3d bias(0, 0, 10.0 / 3600.0 * M_PI / 180.0);
+  NavigatorParams p = Params(false);
+  p.stationary = StationaryParams{};
+  Rig rig(p, parked, 0.005, 5e-5, bias);
+  rig.Run(3600.0, 1.0);
+  EXPECT_TRUE(rig.nav.stats().stationary);
+  EXPECT_LT(std::abs(rig.YawErrorDeg()), 1.0);
+  EXPECT_LT(rig.HorizontalError(), 0.05);
+}
+
 }  // namespace
 }  // namespace hil::estimator
 

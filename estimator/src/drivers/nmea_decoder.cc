@@ -34,6 +34,15 @@ std::optional<int> ToInt(std::string_view s) {
   return v;
 }
 
+// The step of a decimal field as written: 10^-(digits after the point), 1 without a point.
+double DecimalStep(std::string_view s) {
+  const std::size_t dot = s.find('.');
+  double step = 1.0;
+  if (dot == std::string_view::npos) return step;
+  for (std::size_t i = dot + 1; i < s.size(); ++i) step *= 0.1;
+  return step;
+}
+
 int HexDigit(char c) {
   if (c >= '0' && c <= '9') return c - '0';
   if (c >= 'A' && c <= 'F') return c - 'A' + 10;
@@ -100,6 +109,7 @@ std::optional<NmeaFix> NmeaDecoder::ParseSentence(std::string_view s, NmeaDecode
     fix.num_sv = ToInt(f[7]).value_or(0);
     fix.hdop = ToDouble(f[8]);
     fix.msl_altitude_m = ToDouble(f[9]);
+    if (fix.msl_altitude_m) fix.altitude_step_m = DecimalStep(f[9]);
     fix.geoid_separation_m = ToDouble(f[11]);
     fix.valid = fix.quality > 0 && fix.lat_deg && fix.lon_deg;
   } else if (type == "RMC" && f.size() >= 10) {

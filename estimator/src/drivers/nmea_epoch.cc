@@ -39,6 +39,7 @@ std::optional<NmeaMeasurement> NmeaEpochAssembler::Add(const NmeaFix& fix) {
   m.height_m = *fix.msl_altitude_m + fix.geoid_separation_m.value_or(0.0);
   m.hdop = fix.hdop;
   m.geoid_separation_m = fix.geoid_separation_m;
+  m.altitude_step_m = fix.altitude_step_m;
   m.quality = fix.quality;
   m.num_sv = fix.num_sv;
   if (rmc_time_of_day_ns_ == fix.utc_time_of_day_ns) {

@@ -33,6 +33,7 @@ TEST(NmeaDecoderTest, DecodesCapturedGga) {
   EXPECT_NEAR(*f.lon_deg, 6.0 + 2.17433 / 60, 1e-12);
   EXPECT_EQ(f.num_sv, 7);
   EXPECT_DOUBLE_EQ(*f.msl_altitude_m, 20.8);
+  EXPECT_DOUBLE_EQ(f.altitude_step_m, 0.1);  // written with one decimal
   EXPECT_EQ(*f.utc_time_of_day_ns, (19 * 3600 + 14 * 60 + 34) * 1000000000LL);
 }
 
@@ -70,6 +71,7 @@ TEST(NmeaEpochTest, JoinsRmcDateWithGgaPosition) {
   // 2012-07-04T19:14:34Z
   EXPECT_EQ(m->tov_unix_ns, 1341429274LL * 1000000000LL);
   EXPECT_NEAR(m->height_m, 20.8 + 46.1, 1e-9);
+  EXPECT_DOUBLE_EQ(m->altitude_step_m, 0.1);
   EXPECT_NEAR(*m->speed_mps, 0.044 * 1852.0 / 3600.0, 1e-12);
 }
 

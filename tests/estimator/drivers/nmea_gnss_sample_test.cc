@@ -67,5 +67,21 @@ TEST(NmeaGnssSampleTest, RtkFixUsesItsOwnSigmaAndNoRmcMeansNoVelocity) {
   EXPECT_DOUBLE_EQ(n.hdop, 0.0);
 }
 
+// issue 39: GGA often writes the altitude to 0.1 m. A parked receiver's height then sits in one
+// step or the next, 10 cm apart; with a 1 cm vertical σ every other fix was rejected. The
+// rounding's uniform error (variance step²/12) is part of the fix's vertical σ.
+TEST(NmeaGnssSampleTest, AltitudeRoundingWidensTheVerticalSigma) {
+  NmeaMeasurement m;
+  m.quality = kGgaQualityRtkFixed;
+  NmeaAccuracy acc;
+  acc.rtk_fixed_std_m = 0.005;
+  m.altitude_step_m = 0.1;
+  const GnssSample g = ToGnssSample(m, 18, acc);
+  EXPECT_DOUBLE_EQ(g.pos_std_enu_m.x(), 0.005);
+  EXPECT_NEAR(g.pos_std_enu_m.z(), std::sqrt(0.01 * 0.01 + 0.1 * 0.1 / 12.0), 1e-12);
+  m.altitude_step_m = 0.0001;  // four decimals: the rounding is negligible
+  EXPECT_NEAR(ToGnssSample(m, 18, acc).pos_std_enu_m.z(), 0.01, 1e-6);
+}
+
 }  // namespace
 }  // namespace hil::estimator::drivers

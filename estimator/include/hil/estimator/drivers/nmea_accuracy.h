@@ -4,9 +4,10 @@
 /// quality, so the 1σ is configured: by default HDOP × UERE / √2 per horizontal axis; an RTK
 /// rover's fixed (quality 4) and float (quality 5) solutions have their own configured 1σ,
 /// because their error does not scale with a pseudorange UERE (a fixed solution is centimetres
-/// whatever the HDOP, a float one decimetres). Vertical 1σ is twice the horizontal. RMC's speed
-/// and course give the horizontal velocity with the configured 1σ; its vertical (not in RMC) is 0
-/// with twice that 1σ.
+/// whatever the HDOP, a float one decimetres). Vertical 1σ is twice the horizontal, with the
+/// altitude's rounding (step²/12 of variance: GGA often writes it to 0.1 m) added. RMC's speed and
+/// course give the horizontal velocity with the configured 1σ; its vertical (not in RMC) is 0 with
+/// twice that 1σ.
 
 #include <optional>
 

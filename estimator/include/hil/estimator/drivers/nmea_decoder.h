@@ -22,6 +22,8 @@ struct NmeaFix {
   int quality = 0;  ///< GGA fix quality (0 invalid, 1 GPS, 2 DGPS, 4 RTK…)
   std::optional<double> lat_deg, lon_deg;
   std::optional<double> msl_altitude_m, geoid_separation_m;
+  /// The step of the altitude as written (10^−decimals: 0.1 m for "141.1"), 0 when absent.
+  double altitude_step_m = 0.0;
   std::optional<double> hdop;
   int num_sv = 0;
   std::optional<double> speed_mps, course_deg;  ///< RMC

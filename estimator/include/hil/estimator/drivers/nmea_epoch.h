@@ -17,6 +17,7 @@ struct NmeaMeasurement {
   std::optional<double> speed_mps, course_deg;
   std::optional<double> hdop;
   std::optional<double> geoid_separation_m;  ///< GGA's geoid height (height_m includes it)
+  double altitude_step_m = 0.0;              ///< GGA altitude's resolution (NmeaFix)
   int quality = 0, num_sv = 0;
 };
 
