@@ -453,8 +453,8 @@ int Run(const est::NavdConfig& cfg, SolutionOutputs& outputs) {
     nav.Update();
     if (!nav.aligned()) return;
     const std::optional<est::GpsTime>& last_emitted = outputs.last_emitted;
-    if (last_emitted &&
-        s.t.time_since_epoch() / period == last_emitted->time_since_epoch() / period)
+    if (last_emitted && nav.newest_imu_time().time_since_epoch() / period ==
+                            last_emitted->time_since_epoch() / period)
       return;
     const est::NavOutput o = nav.Output();
     if (o.valid && o.t != last_emitted)

@@ -48,6 +48,10 @@ void AppendConsistency(std::string& s, const NavigatorStats& n) {
   Add(s, "gnss_glitch_rejected", n.gnss_glitch_rejected);
   Add(s, "stationary_periods", n.stationary_periods);
   s += n.stationary ? ",\"stationary\":true" : ",\"stationary\":false";
+  // present once a lag was found and taken off the IMU tags (the line stays short otherwise)
+  if (n.imu_tag_lag_s == 0) return;
+  std::snprintf(b, sizeof b, ",\"imu_tag_lag_s\":%.4f", n.imu_tag_lag_s);
+  s += b;
 }
 
 }  // namespace

@@ -50,7 +50,10 @@ Navigator::Navigator(const NavigatorParams& params)
       planar_(params.planar),
       stationary_(params.stationary, params.ekf.accel_noise_mps2_rthz,
                   params.ekf.gyro_noise_radps_rthz),
-      step_(params.robust.step) {}
+      step_(params.robust.step),
+      imu_lag_(params.imu_lag) {
+  imu_lag_.SetLeverArm(params.ekf.lever_arm_B_m.x(), params.ekf.lever_arm_B_m.y());
+}
 
 void Navigator::EnsureFrame(const Lla& origin) {
   if (frame_set_) return;
@@ -62,13 +65,15 @@ void Navigator::EnsureFrame(const Lla& origin) {
   ekf_ = ErrorStateEkf(params_.ekf, earth);
 }
 
-void Navigator::Push(const ImuSample& s) {
-  if (!(s.dt_s > 0) || s.dt_s > 1.0 || !s.delta_angle_B_rad.allFinite() ||
-      !s.delta_velocity_B_mps.allFinite()) {
+void Navigator::Push(const ImuSample& tagged) {
+  if (!(tagged.dt_s > 0) || tagged.dt_s > 1.0 || !tagged.delta_angle_B_rad.allFinite() ||
+      !tagged.delta_velocity_B_mps.allFinite()) {
     ++stats_.bad_input;
     status_ |= kStatusBadInput;
     return;
   }
+  ImuSample s = tagged;
+  CorrectImuTag(s);
   if (have_imu_ && s.t <= newest_imu_t_) {
     ++stats_.imu_out_of_order;
     return;
@@ -99,6 +104,7 @@ void Navigator::Push(const GnssSample& g) {
     return;
   }
   ++stats_.gnss_samples;
+  ObserveGnssCourse(g);
   if (FallsBackToFixes() && g.fix_quality > 0) {
     GnssOnlyFix(g);
     ++fixes_since_imu_;
@@ -143,9 +149,12 @@ void Navigator::Update() {
   if (!UsesImu()) return;
   GpsTime horizon_t = newest_imu_t_ - params_.fusion_horizon;
   if (params_.gnss_max_latency > params_.fusion_horizon && gnss_period_ > Nanoseconds{0}) {
-    // hold at the next expected GNSS epoch until it arrives or the wait runs out
+    // hold at the next expected GNSS epoch until it arrives or the wait runs out; once it has run
+    // out the fixes are missing (an outage): run at the horizon until they return, so that the
+    // output predictor does not carry the free INS over the whole wait
     const GpsTime expected_t = *newest_gnss_t_ + gnss_period_;
-    horizon_t = std::min(horizon_t, std::max(expected_t, newest_imu_t_ - params_.gnss_max_latency));
+    if (newest_imu_t_ - expected_t <= params_.gnss_max_latency)
+      horizon_t = std::min(horizon_t, expected_t);
   }
   while (!imu_.empty() && imu_.front().t <= horizon_t) {
     ImuSample s = imu_.front();

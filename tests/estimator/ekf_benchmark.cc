@@ -49,6 +49,7 @@ void BM_GnssPositionVelocityUpdate(benchmark::State& state) {
 }
 BENCHMARK(BM_GnssPositionVelocityUpdate);
 
+// state.range(0): the IMU tag lag estimate (ImuTimeOffset) on (1, navd's default) or off (0)
 void BM_Seed004WholeRun(benchmark::State& state) {
   // straight line at 1 m/s heading east, level, with noise: 180 000 IMU and 18 000 GNSS samples
   constexpr GpsTime t0 = GpsTimeFromNs(1'400'000'000LL * 1'000'000'000LL);
@@ -80,6 +81,7 @@ void BM_Seed004WholeRun(benchmark::State& state) {
     p.ekf.nhc_std_mps = 0.02;
     p.ekf.gnss_error_tau_s = 30;
     p.ekf.gnss_error_std_m = 0.005;
+    p.imu_lag.enabled = state.range(0) != 0;
     Navigator nav(p);
     std::size_t gi = 0;
     for (const ImuSample& s : imu) {
@@ -95,7 +97,7 @@ void BM_Seed004WholeRun(benchmark::State& state) {
   state.counters["realtime_factor"] = benchmark::Counter(
       1800.0 * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
-BENCHMARK(BM_Seed004WholeRun)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_Seed004WholeRun)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 }  // namespace
 }  // namespace hil::estimator

@@ -94,6 +94,9 @@ NavigatorParams NavigatorParamsFromKfgins(const KfginsConfig& c) {
   p.mode = NavMode::kEkf;
   p.fusion_horizon = Nanoseconds{0};
   p.gnss_max_latency = Nanoseconds{0};
+  // the IMU file's times are GNSS time already: `hil dataset import` estimates the IMU's lag
+  // (or takes the one given) and subtracts it, and the result is written at the IMU's times
+  p.imu_lag.enabled = false;
   EkfParams& e = p.ekf;
   const KfginsImuNoise& n = c.imunoise;
   const double tau_s = n.corrtime_hr * 3600.0;

@@ -18,8 +18,9 @@
 /// arrives or the newest IMU sample is `gnss_max_latency` past it. A slow serial link (NMEA at
 /// 9600 baud completes GGA ≈ 0.3 s after the epoch) or a host that reads its devices unevenly
 /// then costs no fixes, while the filter runs only `fusion_horizon` behind when fixes are on
-/// time. During a GNSS outage the filter runs `gnss_max_latency` behind (the output predictor
-/// still reports the newest IMU time).
+/// time. Once the wait for a due epoch has run out the fixes are missing (an outage): the filter
+/// runs `fusion_horizon` behind again until a fix arrives, so that the output predictor does not
+/// carry the free INS over the whole wait.
 /// Alignment: levelling from the mean specific force, heading from the GNSS course once the speed
 /// exceeds `align_min_speed_mps`, or from the compass. Fixed-size buffers, no allocation.
 /// IMU loss: when the IMU has been silent for `imu_timeout` of GNSS time while fixes keep coming
@@ -38,6 +39,7 @@
 #include "hil/estimator/error_state_ekf.h"
 #include "hil/estimator/geodesy.h"
 #include "hil/estimator/gnss_step_check.h"
+#include "hil/estimator/imu_time_offset.h"
 #include "hil/estimator/innovation_monitor.h"
 #include "hil/estimator/planar_filter.h"
 #include "hil/estimator/ring_buffer.h"
@@ -120,6 +122,9 @@ struct NavigatorParams {
   bool use_gnss_velocity = true;
   RobustnessParams robust;
   StationaryParams stationary;
+  /// EKF mode: the IMU tags' lag behind GNSS time, estimated online (ImuTimeOffset) and taken off
+  /// the IMU tags once conclusive (aid_sources/imu_lag_control.cc).
+  ImuTimeOffsetParams imu_lag;
   /// Multi-receiver mode: antenna positions in the body frame, one column per receiver
   /// (GnssSample::antenna); the first `multi_antenna_count` columns are used (seed 000: three on a
   /// 3 m circle). At least two antennas with distinct horizontal positions give a heading.
@@ -152,6 +157,9 @@ struct NavigatorStats {
   std::uint64_t gnss_glitches = 0;   ///< receiver glitches (a rejected step) begun
   std::uint64_t gnss_glitch_rejected = 0;  ///< fixes rejected as part of a glitch
   bool stationary = false;                 ///< the vehicle stands (zero-velocity updates in use)
+  double imu_tag_lag_s = 0;                ///< the lag taken off the IMU tags now (ImuTimeOffset)
+  double imu_tag_lag_estimate_s = 0;       ///< the best lag on the evidence so far, and its σ
+  double imu_tag_lag_std_s = 0;
   std::uint64_t stationary_periods = 0;
 };
 
@@ -204,6 +212,9 @@ class Navigator {
   bool aligned() const { return aligned_; }
   const LocalTangentFrame& frame() const { return frame_; }
   const NavigatorParams& params() const { return params_; }
+  /// The newest IMU sample's time (its tag less the lag found, ImuTimeOffset): the time an
+  /// Output() would have now.
+  GpsTime newest_imu_time() const { return newest_imu_t_; }
   /// Filter (delayed) time.
   GpsTime filter_time() const { return filter_t_; }
   /// IMU modes: the IMU has been silent for imu_timeout of GNSS time while fixes arrive.
@@ -228,6 +239,10 @@ class Navigator {
   /// Stationary detection before a prediction; zero-velocity and zero-angular-rate updates after
   /// it (aid_sources/zero_motion_control.cc).
   void DetectStationary(const ImuSample& s);
+  /// The IMU tag lag: a sample's heading increment into the estimate, and its tag corrected by
+  /// the lag found so far; a fix's course into the estimate (aid_sources/imu_lag_control.cc).
+  void CorrectImuTag(ImuSample& s);
+  void ObserveGnssCourse(const GnssSample& g);
   void ControlZeroMotion();
   void Record(int source, const UpdateResult& r);
   /// Restarts the EKF's position and velocity at a fix (long rejection, or after an IMU loss).
@@ -263,6 +278,8 @@ class Navigator {
   GpsTime last_zupt_t_{};
   std::optional<GpsTime> last_fix_seen_t_;  // the newest fix the filter processed
   GnssStepCheck step_;                      // GNSS increments against the INS displacement
+  ImuTimeOffset imu_lag_;                   // the IMU tags' lag behind GNSS time
+  Nanoseconds imu_lag_applied_{0};          // the lag taken off the IMU tags now
   std::optional<GpsTime> glitch_since_;     // the current receiver glitch's first fix
   std::optional<GpsTime> last_gnss_vel_t_;  // the newest fix with a velocity, and its speed
   double last_gnss_speed_mps_ = 0;

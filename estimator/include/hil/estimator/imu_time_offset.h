@@ -1,0 +1,134 @@
+#pragma once
+/// @file
+/// @system
+/// name: ImuTimeOffset (online estimate of the lag of the IMU's time tags behind GNSS time)
+/// input: IMU samples as tagged (their heading increment about the local vertical, bias removed);
+///        GNSS fixes with a velocity (their course over ground and its σ)
+/// output: the IMU tag lag L (s; the sample tagged t was sensed at t − L) once the evidence for
+///         it is conclusive, with its σ and the evidence
+/// @endsystem
+///
+/// A lagging IMU makes the filter predict where the vehicle was L ago: in a turn every prediction
+/// misses by the distance the lag's heading change moves it, fixes are rejected and the filter
+/// resets (the car drive of issue 39: a consumer MEMS tagged 0.1 s late against 10 Hz RTK).
+/// The lag is found as a time-delay estimate (Knapp and Carter, "The generalized correlation
+/// method for estimation of time delay", IEEE Trans. ASSP 24(4), 1976: the delay that best aligns
+/// two records of one signal) between the GNSS course increments and the gyro's heading
+/// increments over the same intervals. For every candidate lag L_j on a grid, each pair of fixes
+/// about `pair_interval_s` apart (k−1, k; pairs do not overlap, so their residuals are
+/// independent) adds the weighted squared residual
+///   r² / σ² with r = wrap(χ_k − χ_{k−1}) − (χ̂_j(t_k) − χ̂_j(t_{k−1})),
+/// χ the GNSS course of the antenna, χ̂_j(t) = ψ(t + L_j) + atan2(ω l_x, v − ω l_y) the antenna's
+/// course the IMU predicts for that lag (ψ its integrated heading on its own tags, ω its heading
+/// rate over ±`rate_half_window_s`, l the antenna's lever arm: an antenna ahead of the body turns
+/// its course ω l_x / v ahead of the heading, which would otherwise read as a lead of l_x / v),
+/// σ² the two courses' variances (σ_v / speed each) plus a floor for what the course does not
+/// share with the heading (side slip). The sums forget with a time constant; their minimum over
+/// the grid (refined by a parabola through its neighbours) is the lag, its curvature gives the σ
+/// (the sums are −2 log-likelihoods, scaled by their own residual variance per pair: the
+/// a-posteriori variance factor of least squares, as the receiver's quoted velocity σ is seldom
+/// its real one), and the lag is reported only when zero lag is worse by a χ² evidence margin and
+/// the σ is small: straight driving gives no evidence, a lag-free IMU none against zero.
+/// A time-offset state in the EKF (Skog and Händel, "Time synchronization errors in loosely
+/// coupled GPS-aided inertial navigation systems", IEEE Trans. ITS 12(4), 2011) was weighed: it
+/// adds a state to every prediction, and at a 0.1 s lag the linearisation p + v·δt misses by
+/// ½ a δt² (1.5 cm at 3 m/s²) in the turns that make the offset observable.
+/// Fixed-size buffers, no allocation.
+
+#include <array>
+#include <cstddef>
+#include <optional>
+
+#include "hil/estimator/ring_buffer.h"
+#include "hil/estimator/time_types.h"
+
+namespace hil::estimator {
+
+/// Parameters (chosen here; no source gives them).
+struct ImuTimeOffsetParams {
+  bool enabled = true;
+  double min_lag_s = -0.1;     ///< the candidate grid: IMU tags up to 0.1 s early …
+  double max_lag_s = 0.3;      ///< … to 0.3 s late (above the 0.1 s of issue 39's car)
+  double step_s = 0.005;       ///< grid step (half a sample at 100 Hz; refined by a parabola)
+  double min_speed_mps = 0.5;  ///< a course below this speed is not used
+  /// fixes further apart are not paired (at 1 Hz the increments still hold a turn's heading change)
+  Nanoseconds max_fix_interval{1'500'000'000};
+  /// course-increment σ floor (rad): side slip
+  double course_floor_rad = 0.003;
+  /// fixes are paired this far apart at least (a turn's entry is a second or two: the course noise
+  /// is white per fix, the lag's signal grows with the interval)
+  double pair_interval_s = 1.0;
+  double rate_half_window_s = 0.05;  ///< the heading rate for the lever arm's course
+  double memory_s = 600.0;           ///< forgetting time constant of the sums
+  /// zero lag must be worse than the best by this much (χ²: 5 σ) …
+  double evidence = 25.0;
+  double max_std_s = 0.01;  ///< … and the lag's σ below this, before the lag is reported
+  /// The navigator takes a found lag off the IMU tags gradually: slewing the time base at a rate s
+  /// (per second) makes the filter's INS run v·s ahead of (or behind) the fixes it has been
+  /// following, which its position must absorb between fixes; s = this / speed, at most 0.1.
+  /// 0.05 m/s: a few millimetres per fix at 10 Hz, inside an RTK fix's σ (chosen here).
+  double slew_speed_mps = 0.05;
+};
+
+class ImuTimeOffset {
+ public:
+  /// Candidates at most (the grid's points beyond it are dropped).
+  static constexpr int kMaxCandidates = 96;
+
+  ImuTimeOffset() : ImuTimeOffset(ImuTimeOffsetParams{}) {}
+  explicit ImuTimeOffset(const ImuTimeOffsetParams& params);
+
+  /// The GNSS antenna's lever arm in the body frame (forward x, left y; m).
+  void SetLeverArm(double x_m, double y_m) {
+    lever_x_m_ = x_m;
+    lever_y_m_ = y_m;
+  }
+  /// One IMU sample as tagged (its interval ends at t): its heading increment about the local
+  /// vertical (rad, counter-clockwise, gyro bias removed).
+  void AddImu(GpsTime t, double heading_increment_rad);
+  /// One GNSS fix's velocity (ENU, m/s) and the σ of one horizontal component. Fixes must come in
+  /// time order (others are ignored); each is used once the IMU history covers it.
+  void AddVelocity(GpsTime t, double v_east_mps, double v_north_mps, double std_mps);
+
+  /// The lag once conclusive (s; the sample tagged t was sensed at t − lag).
+  std::optional<double> lag_s() const {
+    return conclusive_ ? std::optional<double>(lag_s_) : std::nullopt;
+  }
+  /// The best lag on the evidence so far, its σ and the evidence against zero lag (J(0) − J_min).
+  double best_lag_s() const { return lag_s_; }
+  double lag_std_s() const { return lag_std_s_; }
+  double evidence() const { return evidence_; }
+  int increments() const { return increments_; }  ///< course increments used
+
+ private:
+  struct Heading {
+    std::int64_t t_ns = 0;
+    double psi_rad = 0;  ///< integrated heading at the end of the sample
+  };
+  struct Course {
+    std::int64_t t_ns = 0;
+    double chi_rad = 0, var_rad2 = 0, speed_mps = 0;
+  };
+  /// ψ at t by linear interpolation; nullopt outside the history.
+  std::optional<double> HeadingAt(std::int64_t t_ns) const;
+  /// The antenna course the IMU predicts at t for a lag (nullopt outside the history).
+  std::optional<double> PredictedCourse(std::int64_t t_ns, std::int64_t lag_ns,
+                                        double speed_mps) const;
+  void Use(const Course& c);
+  void Estimate();
+
+  ImuTimeOffsetParams params_;
+  int n_ = 0;  ///< candidates in use
+  std::array<double, kMaxCandidates> cost_{};
+  RingBuffer<Heading, 1024> history_;  // 10 s at 100 Hz: a fix delayed by the GNSS wait included
+  RingBuffer<Course, 64> pending_;
+  std::optional<Course> prev_;
+  double psi_rad_ = 0;
+  double lever_x_m_ = 0, lever_y_m_ = 0;
+  double pairs_ = 0;  // pairs in the sums (forgotten as they are)
+  double lag_s_ = 0, lag_std_s_ = 0, evidence_ = 0;
+  bool conclusive_ = false;
+  int increments_ = 0;
+};
+
+}  // namespace hil::estimator
