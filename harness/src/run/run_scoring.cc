@@ -178,8 +178,7 @@ void RunScoring::ScoreUpTo(Side& side, bool estimates, Time t, const TruthSample
 
 void RunScoring::Score(Side& side, bool estimates, const EstimateRecord& r,
                        const TruthSample& sample) {
-  ErrorSample e =
-      ErrorOf(r, sample, frame_, estimates ? setup_.p_est_B_m : setup_.p_fix_B_m);
+  ErrorSample e = ErrorOf(r, sample, frame_, estimates ? setup_.p_est_B_m : setup_.p_fix_B_m);
   e.xte_m = path_.CrossTrack(e.est_enu_m.head<2>()) - path_.CrossTrack(e.truth_enu_m.head<2>());
   side.accuracy.Add(e);
   if (estimates) {
@@ -192,6 +191,18 @@ void RunScoring::Score(Side& side, bool estimates, const EstimateRecord& r,
 }
 
 TruthTable RunScoring::Finish(Time t_end) {
+  if (setup_.stream_truth) {
+    // the rest of truth.csv's grid (to the scenario's end, though the run stopped early) a
+    // horizon at a time, as the run would have had it
+    while (next_grid_ask_ <= grid_end_) {
+      const Time until = next_grid_ask_ + kLateHorizon;
+      AskGrid(until);
+      truth_.Advance(until);
+      truth_.WaitTaken(until);
+      truth_.TakeDone(done_t_, done_s_);
+      Consume(done_t_, done_s_, t_end);
+    }
+  }
   AskGrid(grid_end_);
   TruthTable table = truth_.Finish();
   Consume(table.times(), table.samples(), t_end);

@@ -134,9 +134,9 @@ class TruthTableBuilder {
   Time position_{};  // the latest time the thread has sampled (or taken)
   bool started_ = false;
   std::deque<TruthSample> offered_;  // the run's samples, in time order
-  std::vector<Time> done_times_;  // mu_ (the thread appends a batch at a time)
+  std::vector<Time> done_times_;     // mu_ (the thread appends a batch at a time)
   std::vector<TruthSample> done_samples_;
-  std::optional<Time> last_done_;  // the thread's: the latest time it sampled
+  std::optional<Time> last_done_;                  // the thread's: the latest time it sampled
   std::size_t offered_hits_ = 0, integrated_ = 0;  // thread-owned until joined
   std::thread worker_;
 };

@@ -45,12 +45,12 @@ namespace hil::harness {
 /// What RunScoring needs of the run.
 struct ScoringSetup {
   const Scenario* scenario = nullptr;
-  std::string dir;                   ///< the run folder (estimate.csv, gnss_fixes_errors.csv, truth.csv)
-  Time t_from{}, t_end{};            ///< the evaluated window (t_end: the scenario's end)
+  std::string dir;         ///< the run folder (estimate.csv, gnss_fixes_errors.csv, truth.csv)
+  Time t_from{}, t_end{};  ///< the evaluated window (t_end: the scenario's end)
   Eigen::Vector3d p_est_B_m = Eigen::Vector3d::Zero();  ///< the point the solutions describe
   Eigen::Vector3d p_fix_B_m = Eigen::Vector3d::Zero();  ///< the antenna (raw fixes)
-  std::vector<FaultInjection> faults;  ///< the timeline's records (recovery times)
-  double speed = 1.0;                  ///< wall intervals → emulated (arrival jitter)
+  std::vector<FaultInjection> faults;                   ///< the timeline's records (recovery times)
+  double speed = 1.0;  ///< wall intervals → emulated (arrival jitter)
   /// Real time: the wall-clock instant of an emulated time (latency); empty in virtual mode.
   std::function<std::int64_t(Time)> wall_ns_of;
   bool stream_truth = true;  ///< open loop: the truth is consumed as it is sampled
@@ -140,8 +140,8 @@ class RunScoring {
   Csv truth_csv_;
   SeriesDecimator<Eigen::Vector3d> truth_plot_;  // (t, east, north)
   Time grid_end_, next_grid_ask_{}, next_grid_row_{};
-  std::optional<Time> cut_;          // the builder's watermark so far
-  std::optional<Time> last_taken_;   // when the builder's samples were last taken
+  std::optional<Time> cut_;         // the builder's watermark so far
+  std::optional<Time> last_taken_;  // when the builder's samples were last taken
   std::optional<std::pair<Time, TruthSample>> last_sample_;  // the latest sample consumed
   std::vector<Time> ask_, done_t_;
   std::vector<TruthSample> done_s_;
