@@ -403,6 +403,7 @@ void StartScoring(RunContext& ctx) {
   if (const link::RealtimePacer* wall = ctx.pacer->wall_clock(); wall && on_wall_clock)
     setup.wall_ns_of = [wall](Time t) { return wall->WallNsOf(t); };
   setup.stream_truth = !ctx.scenario.truth.external_commands;
+  setup.expect_solutions = !ctx.options.emulate_only;
   ctx.scoring.emplace(std::move(setup), *ctx.truth_builder);
 }
 

@@ -1,5 +1,6 @@
 #include "hil/harness/run/run_scoring.h"
 
+#include <algorithm>
 #include <utility>
 
 #include "hil/harness/report/report.h"
@@ -88,6 +89,7 @@ void RunScoring::AddEstimates(const std::vector<EstimateRecord>& records, Time t
       }
       continue;
     }
+    if (!latest_ || r.t_validity > *latest_) latest_ = r.t_validity;
     // it may still turn out dated after the end, should the run stop early (Finish)
     if (r.t_validity > t_now + kSecond && r.t_validity <= t_now + kLateHorizon)
       ahead_.emplace(r.t_validity, arrival);
@@ -133,7 +135,11 @@ void RunScoring::AskGrid(Time until) {
 void RunScoring::Advance(Time t_now) {
   if (next_grid_ask_ <= t_now + kSecond) AskGrid(t_now + kGridAhead);
   while (!ahead_.empty() && ahead_.begin()->first <= t_now + kSecond) ahead_.erase(ahead_.begin());
-  const Time cut = t_now - kLateHorizon;
+  // kLateHorizon behind the solutions (the run's time if earlier), at most kMaxLag behind the run
+  const std::optional<Time> lead =
+      latest_ ? std::min(*latest_, t_now)
+              : (setup_.expect_solutions ? std::nullopt : std::optional<Time>(t_now));
+  const Time cut = std::max(lead ? *lead - kLateHorizon : t_now - kMaxLag, t_now - kMaxLag);
   if (cut_ && cut <= *cut_) return;
   cut_ = cut;
   truth_.Advance(cut);

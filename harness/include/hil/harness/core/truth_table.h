@@ -100,8 +100,9 @@ class TruthTableBuilder {
   std::size_t retained();
   std::size_t integrated() const { return integrated_; }
   /// How long an offered sample is kept for a time the thread has not reached yet: longer than
-  /// the run lets the thread lag (RunScoring::kLateHorizon, 60 s, plus the watermark's 1 s
-  /// steps), so that the thread copies the run's samples instead of integrating the truth again.
+  /// the run lets the thread lag when the estimator keeps up (RunScoring::kLateHorizon, 60 s, plus
+  /// the watermark's 1 s steps), so that the thread copies the run's samples instead of
+  /// integrating the truth again (it does when it lags more: the same samples, more time).
   static constexpr Duration kOfferedKeep = std::chrono::seconds(75);
 
  private:
