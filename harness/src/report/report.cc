@@ -464,8 +464,8 @@ void AppendErrorsCsvHeader(std::string& text) {
 
 void AppendErrorsCsvRow(std::string& text, const ErrorSample& e) {
   AppendFixedRow(text, 6, ToSeconds(e.t), e.truth_enu_m.x(), e.truth_enu_m.y(), e.truth_enu_m.z(),
-                 e.est_enu_m.x(), e.est_enu_m.y(), e.est_enu_m.z(), e.err_enu_m.x(), e.err_enu_m.y(),
-                 e.err_enu_m.z(), e.horizontal());
+                 e.est_enu_m.x(), e.est_enu_m.y(), e.est_enu_m.z(), e.err_enu_m.x(),
+                 e.err_enu_m.y(), e.err_enu_m.z(), e.horizontal());
   text.push_back('\n');
 }
 

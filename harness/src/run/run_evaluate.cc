@@ -77,10 +77,10 @@ void CheckSolutionDates(RunContext& ctx, std::size_t scored) {
                               " s after the run's time when they arrived: they were not scored");
   }
   if (total > 0 && scored == 0) {
-    report.problems.push_back(
-        "no solution was scored: none of the " + std::to_string(total) +
-        " solutions is dated within the evaluated span (" + SecondsText(ToSeconds(ctx.t_from)) +
-        " to " + SecondsText(ToSeconds(ctx.t_end)) + " s) with a truth to compare");
+    report.problems.push_back("no solution was scored: none of the " + std::to_string(total) +
+                              " solutions is dated within the evaluated span (" +
+                              SecondsText(ToSeconds(ctx.t_from)) + " to " +
+                              SecondsText(ToSeconds(ctx.t_end)) + " s) with a truth to compare");
   }
 }
 
@@ -403,6 +403,7 @@ void StartScoring(RunContext& ctx) {
   if (const link::RealtimePacer* wall = ctx.pacer->wall_clock(); wall && on_wall_clock)
     setup.wall_ns_of = [wall](Time t) { return wall->WallNsOf(t); };
   setup.stream_truth = !ctx.scenario.truth.external_commands;
+  setup.expect_solutions = !ctx.options.emulate_only;
   ctx.scoring.emplace(std::move(setup), *ctx.truth_builder);
 }
 

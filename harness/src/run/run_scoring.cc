@@ -1,5 +1,6 @@
 #include "hil/harness/run/run_scoring.h"
 
+#include <algorithm>
 #include <utility>
 
 #include "hil/harness/report/report.h"
@@ -88,6 +89,7 @@ void RunScoring::AddEstimates(const std::vector<EstimateRecord>& records, Time t
       }
       continue;
     }
+    if (!latest_ || r.t_validity > *latest_) latest_ = r.t_validity;
     // it may still turn out dated after the end, should the run stop early (Finish)
     if (r.t_validity > t_now + kSecond && r.t_validity <= t_now + kLateHorizon)
       ahead_.emplace(r.t_validity, arrival);
@@ -133,7 +135,11 @@ void RunScoring::AskGrid(Time until) {
 void RunScoring::Advance(Time t_now) {
   if (next_grid_ask_ <= t_now + kSecond) AskGrid(t_now + kGridAhead);
   while (!ahead_.empty() && ahead_.begin()->first <= t_now + kSecond) ahead_.erase(ahead_.begin());
-  const Time cut = t_now - kLateHorizon;
+  // kLateHorizon behind the solutions (the run's time if earlier), at most kMaxLag behind the run
+  const std::optional<Time> lead =
+      latest_ ? std::min(*latest_, t_now)
+              : (setup_.expect_solutions ? std::nullopt : std::optional<Time>(t_now));
+  const Time cut = std::max(lead ? *lead - kLateHorizon : t_now - kMaxLag, t_now - kMaxLag);
   if (cut_ && cut <= *cut_) return;
   cut_ = cut;
   truth_.Advance(cut);
@@ -178,8 +184,7 @@ void RunScoring::ScoreUpTo(Side& side, bool estimates, Time t, const TruthSample
 
 void RunScoring::Score(Side& side, bool estimates, const EstimateRecord& r,
                        const TruthSample& sample) {
-  ErrorSample e =
-      ErrorOf(r, sample, frame_, estimates ? setup_.p_est_B_m : setup_.p_fix_B_m);
+  ErrorSample e = ErrorOf(r, sample, frame_, estimates ? setup_.p_est_B_m : setup_.p_fix_B_m);
   e.xte_m = path_.CrossTrack(e.est_enu_m.head<2>()) - path_.CrossTrack(e.truth_enu_m.head<2>());
   side.accuracy.Add(e);
   if (estimates) {
@@ -192,6 +197,18 @@ void RunScoring::Score(Side& side, bool estimates, const EstimateRecord& r,
 }
 
 TruthTable RunScoring::Finish(Time t_end) {
+  if (setup_.stream_truth) {
+    // the rest of truth.csv's grid (to the scenario's end, though the run stopped early) a
+    // horizon at a time, as the run would have had it
+    while (next_grid_ask_ <= grid_end_) {
+      const Time until = next_grid_ask_ + kLateHorizon;
+      AskGrid(until);
+      truth_.Advance(until);
+      truth_.WaitTaken(until);
+      truth_.TakeDone(done_t_, done_s_);
+      Consume(done_t_, done_s_, t_end);
+    }
+  }
   AskGrid(grid_end_);
   TruthTable table = truth_.Finish();
   Consume(table.times(), table.samples(), t_end);

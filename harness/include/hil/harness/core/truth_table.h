@@ -100,8 +100,9 @@ class TruthTableBuilder {
   std::size_t retained();
   std::size_t integrated() const { return integrated_; }
   /// How long an offered sample is kept for a time the thread has not reached yet: longer than
-  /// the run lets the thread lag (RunScoring::kLateHorizon, 60 s, plus the watermark's 1 s
-  /// steps), so that the thread copies the run's samples instead of integrating the truth again.
+  /// the run lets the thread lag when the estimator keeps up (RunScoring::kLateHorizon, 60 s, plus
+  /// the watermark's 1 s steps), so that the thread copies the run's samples instead of
+  /// integrating the truth again (it does when it lags more: the same samples, more time).
   static constexpr Duration kOfferedKeep = std::chrono::seconds(75);
 
  private:
@@ -134,9 +135,9 @@ class TruthTableBuilder {
   Time position_{};  // the latest time the thread has sampled (or taken)
   bool started_ = false;
   std::deque<TruthSample> offered_;  // the run's samples, in time order
-  std::vector<Time> done_times_;  // mu_ (the thread appends a batch at a time)
+  std::vector<Time> done_times_;     // mu_ (the thread appends a batch at a time)
   std::vector<TruthSample> done_samples_;
-  std::optional<Time> last_done_;  // the thread's: the latest time it sampled
+  std::optional<Time> last_done_;                  // the thread's: the latest time it sampled
   std::size_t offered_hits_ = 0, integrated_ = 0;  // thread-owned until joined
   std::thread worker_;
 };

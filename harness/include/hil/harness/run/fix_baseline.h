@@ -3,9 +3,9 @@
 /// The raw-GNSS baseline of a run: the fixes of the first receiver (its antenna is the scenario's
 /// antenna lever arm; further receivers of a multi-antenna scenario feed the estimator, not the
 /// baseline), taken after each event time's device events, written to gnss_fixes.csv as they come
-/// and handed to the evaluation (TakeFixes). The GNSS faults of the timeline are counted here against the
-/// fixes they touched (an outage's invalid epochs, a data gap's unsent ones, a glitch's valid
-/// ones).
+/// and handed to the evaluation (TakeFixes). The GNSS faults of the timeline are counted here
+/// against the fixes they touched (an outage's invalid epochs, a data gap's unsent ones, a glitch's
+/// valid ones).
 
 #include <ostream>
 #include <vector>

@@ -10,14 +10,18 @@
 /// gnss_fixes_errors.csv and truth.csv are written as their lines come; the plots get decimated
 /// series (SeriesDecimator) and the CDF's points (CdfPoints).
 ///
-/// The horizon (kLateHorizon, our choice): the truth builder's thread follows the run
-/// kLateHorizon behind its emulated time, so a solution may arrive up to that long after its time
-/// of validity and still be scored, in time order with the others (the metrics are the same bits
-/// as an evaluation of the whole set at the end). A solution that arrives later, or that is dated
-/// more than kLateHorizon after the run's time when it arrives, is not scored: a problem of the
-/// report. Closed loop: a late command may change the truth already sampled
-/// (TruthTableBuilder::DiscardOffered), so the truth is sampled at the end as before and only
-/// the scoring streams.
+/// The horizon (kLateHorizon, our choice): the truth builder's thread follows the latest time of
+/// validity of the solutions so far (or the run's time, if earlier) kLateHorizon behind, so a
+/// solution may come up to that long after a later-dated one and still be scored, in time order
+/// with the others (the metrics are the same bits as an evaluation of the whole set at the end).
+/// Following the solutions, not the run's time, keeps the verdict independent of the wall clock:
+/// in virtual mode the run may be far ahead of what hil has read of the estimator's output on a
+/// loaded machine. The thread is never more than kMaxLag behind the run's time, so memory stays
+/// bounded with an estimator that says nothing (or nothing new). A solution dated before what the
+/// thread has passed, or more than kLateHorizon after the run's time when it arrives, is not
+/// scored: a problem of the report. Closed loop: a late command may change the truth already
+/// sampled (TruthTableBuilder::DiscardOffered), so the truth is sampled at the end as before and
+/// only the scoring streams.
 
 #include <chrono>
 #include <cstdint>
@@ -45,21 +49,24 @@ namespace hil::harness {
 /// What RunScoring needs of the run.
 struct ScoringSetup {
   const Scenario* scenario = nullptr;
-  std::string dir;                   ///< the run folder (estimate.csv, gnss_fixes_errors.csv, truth.csv)
-  Time t_from{}, t_end{};            ///< the evaluated window (t_end: the scenario's end)
+  std::string dir;         ///< the run folder (estimate.csv, gnss_fixes_errors.csv, truth.csv)
+  Time t_from{}, t_end{};  ///< the evaluated window (t_end: the scenario's end)
   Eigen::Vector3d p_est_B_m = Eigen::Vector3d::Zero();  ///< the point the solutions describe
   Eigen::Vector3d p_fix_B_m = Eigen::Vector3d::Zero();  ///< the antenna (raw fixes)
-  std::vector<FaultInjection> faults;  ///< the timeline's records (recovery times)
-  double speed = 1.0;                  ///< wall intervals → emulated (arrival jitter)
+  std::vector<FaultInjection> faults;                   ///< the timeline's records (recovery times)
+  double speed = 1.0;  ///< wall intervals → emulated (arrival jitter)
   /// Real time: the wall-clock instant of an emulated time (latency); empty in virtual mode.
   std::function<std::int64_t(Time)> wall_ns_of;
-  bool stream_truth = true;  ///< open loop: the truth is consumed as it is sampled
+  bool stream_truth = true;      ///< open loop: the truth is consumed as it is sampled
+  bool expect_solutions = true;  ///< false: no estimator (the thread follows the run's time)
   std::size_t exact_limit = QuantileSketch::kExactLimit;  ///< values each percentile holds
 };
 
 class RunScoring {
  public:
   static constexpr Duration kLateHorizon = std::chrono::seconds(60);
+  /// Our choice: 10 min of emulated time (2 s of wall time at 300x).
+  static constexpr Duration kMaxLag = std::chrono::seconds(600);
   /// Time buckets of each plotted series (SeriesDecimator): at most 3 points per bucket.
   static constexpr std::size_t kPlotBuckets = 2048;
 
@@ -140,8 +147,9 @@ class RunScoring {
   Csv truth_csv_;
   SeriesDecimator<Eigen::Vector3d> truth_plot_;  // (t, east, north)
   Time grid_end_, next_grid_ask_{}, next_grid_row_{};
-  std::optional<Time> cut_;          // the builder's watermark so far
-  std::optional<Time> last_taken_;   // when the builder's samples were last taken
+  std::optional<Time> cut_;         // the builder's watermark so far
+  std::optional<Time> latest_;      // the latest time of validity of a solution in the run
+  std::optional<Time> last_taken_;  // when the builder's samples were last taken
   std::optional<std::pair<Time, TruthSample>> last_sample_;  // the latest sample consumed
   std::vector<Time> ask_, done_t_;
   std::vector<TruthSample> done_s_;
