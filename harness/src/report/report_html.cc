@@ -43,8 +43,8 @@ PlotChart LatencyChart(const ReportSeries& s) {
   c.y_label = "solutions";
   c.y_from_zero = true;
   const double lo = s.latency_ms.min(), hi = std::max(s.latency_ms.max(), lo + 1e-3);
-  const int bins = std::clamp(
-      static_cast<int>(std::sqrt(static_cast<double>(s.latency_ms.count()))) + 1, 5, 40);
+  const int bins =
+      std::clamp(static_cast<int>(std::sqrt(static_cast<double>(s.latency_ms.count()))) + 1, 5, 40);
   const double w = (hi - lo) / bins;
   PlotSeries h{"solutions per bin", kEstimateColor, PlotSeries::Style::kBars, {}, {}, w};
   std::vector<double> count(static_cast<std::size_t>(bins), 0.0);
