@@ -187,7 +187,7 @@ class Navigator {
  public:
   explicit Navigator(const NavigatorParams& params);
 
-  void Push(const ImuSample& s);
+  void Push(const ImuSample& tagged);
   void Push(const GnssSample& g);
   void Push(const HeadingSample& h);
   /// Runs the filter up to the fusion horizon.

@@ -61,8 +61,8 @@ std::vector<ErrorSample> CompareWithTruth(const TruthTable& truth,
                                           const Eigen::Vector3d& p_BX_B_m, Time t_from, Time t_to);
 /// The error of one record against the truth sample at its time of validity (CompareWithTruth's
 /// step; `frame`: the scenario's local frame).
-ErrorSample ErrorOf(const EstimateRecord& record, const TruthSample& truth,
-                    const truth::LocalFrame& frame, const Eigen::Vector3d& p_BX_B_m);
+ErrorSample ErrorOf(const EstimateRecord& r, const TruthSample& ts, const truth::LocalFrame& frame,
+                    const Eigen::Vector3d& p_BX_B_m);
 /// The times CompareWithTruth needs the truth at for `records`.
 std::vector<Time> RecordTimes(const std::vector<EstimateRecord>& records, Time t_from, Time t_to);
 
@@ -92,6 +92,6 @@ AccuracyMetrics ComputeAccuracy(const std::vector<ErrorSample>& errors);
 /// Empirical percentile (0–100) by linear interpolation of sorted values.
 double Percentile(std::vector<double> values, double pct);
 /// The same of values already sorted.
-double PercentileOfSorted(const std::vector<double>& sorted, double pct);
+double PercentileOfSorted(const std::vector<double>& v, double pct);
 
 }  // namespace hil::harness
