@@ -200,8 +200,9 @@ std::string FindPreloadLibrary() {
   std::error_code ec;
   const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
   if (ec) return "";
-  for (const auto& p : {exe.parent_path() / "libhil_lockstep.so",
-                        exe.parent_path().parent_path() / "lib" / "libhil_lockstep.so"}) {
+  for (const auto& p :
+       {exe.parent_path() / "libhil_lockstep.so",
+        exe.parent_path().parent_path() / "lib" / "hil" / "preload" / "libhil_lockstep.so"}) {
     if (std::filesystem::exists(p, ec)) return p.string();
   }
   return "";

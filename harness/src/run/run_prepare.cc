@@ -123,7 +123,7 @@ void MakeSharedClock(RunContext& ctx) {
   ctx.preload_library = lockstep::FindPreloadLibrary();
   if (ctx.preload_library.empty())
     throw std::runtime_error(
-        "--lockstep: libhil_lockstep.so is neither beside hil nor in ../lib (build the "
+        "--lockstep: libhil_lockstep.so is neither beside hil nor in ../lib/hil/preload (build the "
         "hil_harness_preload target, or install hil)");
   ctx.shared_clock.emplace(ctx.dir + "/lockstep.shm", ctx.scenario.start_unix_ns);
 }
