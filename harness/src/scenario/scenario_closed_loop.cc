@@ -71,9 +71,12 @@ void SetUpSerialBase(const std::optional<YamlReader>& actuator, Scenario& s) {
     c.motors.icr_expansion = s.truth.vehicle.icr_expansion;
   if (actuator) ReadActuator(*actuator, c);
   c.motors.initial_wheel_speed_radps = c.initial_speed_mps / c.motors.wheel_radius_m;
-  // the truth obeys the wheels through a first-order hold of their 10 ms output (the wheel motors
-  // are the one model of the command path; truth_integrator.h, command_hold_s)
-  truth::TruthConfig& t = s.truth;
+  FollowActuatorCommands(c, s.truth);  // the wheel motors are the one model of the command path
+}
+
+}  // namespace
+
+void FollowActuatorCommands(const ClosedLoopSpec& c, truth::TruthConfig& t) {
   t.external_commands = true;
   t.command_period_s = 0.01;
   t.path.reset();
@@ -83,8 +86,6 @@ void SetUpSerialBase(const std::optional<YamlReader>& actuator, Scenario& s) {
   t.start_at_speed = true;
   t.command_hold_s = t.command_period_s;
 }
-
-}  // namespace
 
 const std::vector<std::string> kClosedLoopSectionKeys{"closed_loop"};
 

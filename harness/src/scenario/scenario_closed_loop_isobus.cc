@@ -57,19 +57,10 @@ void ReadIsobusChannel(const YamlReader& root, const YamlReader& r, Scenario& s)
   d.command_timeout = DurationFromSeconds(c.command_timeout_s);
   d.first_command_due = TimeFromSeconds(c.first_command_due_s);
   if (!r.Has("initial_speed_mps")) c.initial_speed_mps = d.speed_mps;
-  // the truth obeys the road wheels through a first-order hold of the steering ECU's 10 ms output
-  // (the ECU, first-order and rate-limited, is the one model of the command path;
-  // truth_integrator.h, command_hold_s); κ = tan δ / L at the rear axle
-  truth::TruthConfig& t = s.truth;
-  t.external_commands = true;
-  t.command_period_s = 0.01;
-  t.path.reset();
-  t.start_p_N_m = c.start_p_N_m;
-  t.heading_deg = c.start_heading_deg;
-  t.speed_mps = c.initial_speed_mps;
-  t.start_at_speed = true;
-  t.command_hold_s = t.command_period_s;
-  t.vehicle.max_steer_deg = d.ecu.max_steer_deg;
+  // the road wheels obey the steering ECU (first-order and rate-limited: the one model of the
+  // command path); κ = tan δ / L at the rear axle
+  FollowActuatorCommands(c, s.truth);
+  s.truth.vehicle.max_steer_deg = d.ecu.max_steer_deg;
 }
 
 }  // namespace hil::harness

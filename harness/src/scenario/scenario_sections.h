@@ -27,6 +27,11 @@ extern const std::vector<std::string> kGreenhouseSectionKeys;
 /// Reads the greenhouse section (optional; scenario_greenhouse.cc): the ridge map of paper 001.
 void ReadGreenhouseSection(const YamlReader& root, Scenario& s);
 
+/// Closed loop: the truth follows the actuator's commands through a first-order hold of its
+/// 10 ms output (the actuator is the one model of the command path; truth_integrator.h,
+/// command_hold_s), starting at the loop's pose and speed, with no planned path of its own.
+void FollowActuatorCommands(const ClosedLoopSpec& c, truth::TruthConfig& t);
+
 extern const std::vector<std::string> kClosedLoopSectionKeys;
 /// Reads the closed_loop section (optional; scenario_closed_loop.cc) and makes the truth take
 /// the actuator's commands.
