@@ -20,9 +20,13 @@ void QuantileSketch::Add(double v) {
     AddToBuckets(v, 1);
     return;
   }
+  if (values_.size() == exact_limit_) {  // one more than it holds: before the vector grows
+    StartSketching();                    // (push_back would double it for a moment: 4 MiB)
+    AddToBuckets(v, 1);
+    return;
+  }
   values_.push_back(v);
   sorted_ = false;
-  if (values_.size() > exact_limit_) StartSketching();
 }
 
 void QuantileSketch::Merge(const QuantileSketch& other) {
