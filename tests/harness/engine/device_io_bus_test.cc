@@ -1,6 +1,7 @@
 // The frames others put on the CAN bus are kept only until every reader has taken them (issue 40,
 // minor: hil's memory per emulated hour): the devices (TakeUnrouted) and the estimator's NMEA 2000
 // output reader (TakeUncollected). Before, every frame of the run stayed in the list.
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <vector>
