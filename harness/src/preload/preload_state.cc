@@ -6,6 +6,7 @@
 #include <pthread.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <climits>
 #include <cstdlib>
@@ -13,6 +14,7 @@
 
 #include <linux/futex.h>
 #include <sys/mman.h>
+#include <sys/stat.h>
 #include <sys/syscall.h>
 
 namespace hil::preload {
@@ -54,6 +56,45 @@ long Futex(std::atomic<std::uint32_t>* word, int op, std::uint32_t val) {
 void NotifyHil() {
   g_shared->host_wake.fetch_add(1);
   if (g_shared->hil_waiting.load() != 0) Futex(&g_shared->host_wake, FUTEX_WAKE, INT_MAX);
+}
+
+// Whether every claimed slot is idle (hil's test, lockstep_host.cc): waiting, and looked at its
+// condition since it was last asked to.
+bool AllIdle() {
+  const int used = std::min(g_shared->slots_used.load(), lk::kMaxThreads);
+  for (int i = 0; i < used; ++i) {
+    const lk::ThreadSlot& s = g_shared->slots[i];
+    if (s.tid.load() != 0 && (s.state.load() != lk::kWaiting || s.acked.load() != s.seq.load()))
+      return false;
+  }
+  return true;
+}
+
+// A thread that has acknowledged wakes hil only when that made the programs idle: hil wants
+// nothing else (each wake it got before cost a context switch both ways, several a turn). Every
+// access is sequentially consistent, so of threads that acknowledge at the same time the last
+// one sees the others' acknowledgements and wakes hil; hil's wait has a timeout besides.
+void NotifyHilIfIdle() {
+  g_shared->host_wake.fetch_add(1);
+  if (g_shared->hil_waiting.load() != 0 && AllIdle())
+    Futex(&g_shared->host_wake, FUTEX_WAKE, INT_MAX);
+}
+
+// Asks the other waiting threads whose condition what this thread did may have met to look again:
+// those waiting for descriptors other than hil's links (a pipe another program writes), and those
+// of its own process (they share its descriptors). A thread waiting only for hil's links or a
+// deadline is left asleep: only hil changes what it waits for.
+void AskOthersToLook(const lk::ThreadSlot* self) {
+  const std::int32_t pid = self->pid.load();
+  const int used = std::min(g_shared->slots_used.load(), lk::kMaxThreads);
+  for (int i = 0; i < used; ++i) {
+    lk::ThreadSlot& s = g_shared->slots[i];
+    if (&s == self || s.tid.load() == 0 || s.state.load() != lk::kWaiting) continue;
+    if (s.on_descriptors.load() == 0) continue;
+    if ((s.links.load() & lk::kOtherFd) == 0 && s.pid.load() != pid) continue;
+    s.seq.fetch_add(1);
+    Futex(&s.seq, FUTEX_WAKE, INT_MAX);
+  }
 }
 
 void FreeSlot(lk::ThreadSlot* s) {
@@ -206,7 +247,19 @@ timespec ToTimespec(std::int64_t ns) {
   return ts;
 }
 
-long Wait(long (*ready)(void* arg), void* arg, std::int64_t deadline_ns) {
+std::uint64_t LinkBitOf(int fd) {
+  const int n = std::min(g_shared->link_count.load(), lk::kMaxLinks);
+  if (n == 0) return lk::kOtherFd;
+  struct stat st {};
+  if (fstat(fd, &st) != 0 || !S_ISCHR(st.st_mode)) return lk::kOtherFd;
+  for (int k = 0; k < n; ++k) {
+    if (g_shared->link_rdev[k] == st.st_rdev) return std::uint64_t{1} << k;
+  }
+  return lk::kOtherFd;
+}
+
+long Wait(long (*ready)(void* arg), void* arg, std::int64_t deadline_ns,
+          std::uint64_t (*links)(void* arg)) {
   lk::ThreadSlot* s = Slot();
   if (!s) return kUnmanaged;
   const int saved_errno = errno;
@@ -214,14 +267,14 @@ long Wait(long (*ready)(void* arg), void* arg, std::int64_t deadline_ns) {
   if (const long r = ready ? ready(arg) : 0; r != 0) return r;
   if (deadline_ns != lk::kNoDeadline && g_shared->now_ns.load() >= deadline_ns) return kDeadline;
   s->deadline_ns.store(deadline_ns);
+  s->links.store(!ready ? 0 : links ? links(arg) : lk::kAnything);
   s->on_descriptors.store(ready ? 1 : 0);
   s->state.store(lk::kWaiting);
   s->waits.fetch_add(1);
-  // what this thread did before it waits may be what another waits for: everyone looks again
-  g_shared->change.fetch_add(1);
-  Futex(&g_shared->change, FUTEX_WAKE, INT_MAX);
+  // what this thread did before it waits may be what another waits for: those look again
+  AskOthersToLook(s);
   for (;;) {
-    const std::uint32_t c = g_shared->change.load();
+    const std::uint32_t c = s->seq.load();
     const long r = ready ? ready(arg) : 0;
     if (r != 0) {
       s->state.store(lk::kRunning);
@@ -237,8 +290,8 @@ long Wait(long (*ready)(void* arg), void* arg, std::int64_t deadline_ns) {
       return kUnmanaged;  // hil paces the run the old way: the real call waits
     }
     s->acked.store(c);
-    NotifyHil();
-    if (Futex(&g_shared->change, FUTEX_WAIT, c) != 0 && errno == EINTR) {
+    NotifyHilIfIdle();
+    if (Futex(&s->seq, FUTEX_WAIT, c) != 0 && errno == EINTR) {
       s->state.store(lk::kRunning);
       return kInterrupted;
     }

@@ -58,10 +58,16 @@ enum WaitEnd : long {
   kInterrupted = -1001,  ///< a signal arrived (the caller returns EINTR)
 };
 
+/// The bit of descriptor `fd` in a slot's `links` mask (lockstep_shared.h): its link's, or
+/// kOtherFd for anything that is not one of hil's links (one fstat).
+std::uint64_t LinkBitOf(int fd);
+
 /// Waits in emulated time until `ready(arg)` (a non-blocking look at descriptors: > 0 met, −1
 /// failed with errno, 0 not yet; null: a sleep, never met) or until emulated time reaches
-/// `deadline_ns` (kNoDeadline: none); see the protocol in lockstep_shared.h. Returns ready's
-/// answer or a WaitEnd.
-long Wait(long (*ready)(void* arg), void* arg, std::int64_t deadline_ns);
+/// `deadline_ns` (kNoDeadline: none); see the protocol in lockstep_shared.h. `links(arg)` names
+/// the links the descriptors are (LinkBitOf each; null: any, kAnything), asked once the wait
+/// blocks. Returns ready's answer or a WaitEnd.
+long Wait(long (*ready)(void* arg), void* arg, std::int64_t deadline_ns,
+          std::uint64_t (*links)(void* arg) = nullptr);
 
 }  // namespace hil::preload
