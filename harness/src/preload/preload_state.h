@@ -11,6 +11,7 @@
 
 #include <sys/epoll.h>
 #include <sys/select.h>
+#include <sys/socket.h>
 #include <sys/types.h>
 
 #include "hil/harness/lockstep/lockstep_shared.h"
@@ -31,6 +32,11 @@ struct RealFunctions {
   int (*epoll_wait)(int, epoll_event*, int, int);
   int (*epoll_pwait)(int, epoll_event*, int, int, const sigset_t*);
   ssize_t (*read)(int, void*, size_t);
+  int (*close)(int);
+  int (*shutdown)(int, int);
+  ssize_t (*send)(int, const void*, size_t, int);
+  ssize_t (*sendto)(int, const void*, size_t, int, const sockaddr*, socklen_t);
+  ssize_t (*sendmsg)(int, const msghdr*, int);
 };
 
 /// The real functions (resolved at load; a call before that resolves them first).
@@ -57,6 +63,14 @@ enum WaitEnd : long {
   kUnmanaged = -1000,    ///< no slot (no hil, or the slots are full): block the real way
   kInterrupted = -1001,  ///< a signal arrived (the caller returns EINTR)
 };
+
+/// Notes that the calling thread did something that may meet another program's wait and that
+/// the kernel's write count (/proc/self/io `syscw`) does not show: a close, shutdown or send on a
+/// socket (interposed_sends.cc).
+void NoteTouched();
+/// The program closes `fd`: if it is the library's own /proc/self/io, the library no longer uses
+/// it (and takes every wait for one after a write from then on).
+void ForgetDescriptor(int fd);
 
 /// The bit of descriptor `fd` in a slot's `links` mask (lockstep_shared.h): its link's, or
 /// kOtherFd for anything that is not one of hil's links (one fstat).
