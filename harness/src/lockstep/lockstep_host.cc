@@ -218,7 +218,10 @@ std::vector<LockstepHost::Process> LockstepHost::Processes() const {
 LockstepHost::Stats LockstepHost::stats() const {
   Stats s = stats_;
   const int used = std::min(shared_->slots_used.load(), kMaxThreads);
-  for (int i = 0; i < used; ++i) s.thread_waits += shared_->slots[i].waits.load();
+  for (int i = 0; i < used; ++i) {
+    s.thread_waits += shared_->slots[i].waits.load();
+    s.thread_looks += shared_->slots[i].looks.load();
+  }
   return s;
 }
 

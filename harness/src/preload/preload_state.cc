@@ -341,6 +341,7 @@ long Wait(long (*ready)(void* arg), void* arg, std::int64_t deadline_ns,
       return kUnmanaged;  // hil paces the run the old way: the real call waits
     }
     s->acked.store(c);
+    s->looks.fetch_add(1);
     NotifyHilIfIdle();
     if (Futex(&s->seq, FUTEX_WAIT, c) != 0 && errno == EINTR) {
       s->state.store(lk::kRunning);

@@ -31,6 +31,7 @@ class LockstepHost {
     std::uint64_t slept = 0;         ///< waits for idle that slept on the futex
     std::int64_t wait_ns = 0;        ///< wall time spent waiting for idle
     std::uint64_t thread_waits = 0;  ///< waits the programs' threads blocked in (all slots)
+    std::uint64_t thread_looks = 0;  ///< times they looked at an unmet condition (all slots)
   };
   /// Called while a wait for idle lasts (every kStepNs): the threads not idle, whether this is a
   /// new wait. False gives the wait up.

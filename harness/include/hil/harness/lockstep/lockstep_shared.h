@@ -66,6 +66,7 @@ struct alignas(64) ThreadSlot {
   std::atomic<std::uint32_t> acked;       ///< the `seq` its condition was last found unmet at
   std::atomic<std::int64_t> deadline_ns;  ///< emulated; kNoDeadline: none
   std::atomic<std::uint64_t> waits;       ///< waits that blocked (statistics)
+  std::atomic<std::uint64_t> looks;       ///< conditions found unmet and acknowledged (statistics)
   /// 1 while it waits for descriptors (poll, select, epoll, read), 0 in a sleep: bytes hil
   /// writes cannot end a sleep, so they need not wake a program whose threads all sleep
   std::atomic<std::uint32_t> on_descriptors;
