@@ -16,10 +16,12 @@
 ///  - A thread that waits (poll, sleep, read …) marks its slot waiting with its deadline and, for
 ///    descriptors, the links it waits on (`link_rdev`: the links' terminal devices, published by
 ///    hil; any other descriptor sets kOtherFd), then bumps the `seq` of every other waiting thread
-///    that what it did before may concern (waiting for descriptors, and with kOtherFd or in the
-///    same process) and wakes it. Then it loops: load its own `seq` → c, look at its condition
-///    without blocking (its descriptors, its deadline against `now_ns`), return if met, else store
-///    c in `acked` and sleep on its `seq` futex while that still holds c.
+///    that what it did before may concern and wakes it: one waiting with kEveryGrant, and, when
+///    it wrote since its last wait (its process's write count in /proc/self/io, or a close,
+///    shutdown or send), one waiting for descriptors with kOtherFd or in the same process. Then it
+///    loops: load its own `seq` → c, look at its condition without blocking (its descriptors, its
+///    deadline against `now_ns`), return if met, else store c in `acked` and sleep on its `seq`
+///    futex while that still holds c.
 ///  - The programs are idle when every claimed slot waits with `acked == seq`: every thread has
 ///    looked at its condition since the last change that concerns it and found it unmet. Only
 ///    then does hil read what they wrote (at the emulated time `now_ns`) or move time on, to the
