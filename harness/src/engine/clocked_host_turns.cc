@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <utility>
 
+#include "hil/harness/lockstep/lockstep_shared.h"
+
 namespace hil::harness {
 
 ClockedHostTurns::ClockedHostTurns(lockstep::LockstepHost& host, ClockedPacer& pacer,
@@ -54,10 +56,17 @@ bool ClockedHostTurns::BeforeEvent(Time t_event, Time t_end, EngineMonitor& moni
 
 bool ClockedHostTurns::Turn(Time t, DeviceIo& io, bool wake) {
   host_.SetNow(t);
-  const bool wrote = pacer_.WriteDue(t);
-  // every thread sleeps past t: the bytes wait for them in the pty, nothing runs, nothing to read
-  if (!wake && !host_.NeedsWake(t, wrote)) return true;
-  host_.Wake();
+  touched_ |= pacer_.WriteDue(t);
+  if (pacer_.TakeBusWritten()) touched_ |= lockstep::kOtherFd;
+  // every thread sleeps past t or waits on links untouched: the bytes wait for them in the pty,
+  // nothing runs, nothing to read
+  if (!wake && !host_.NeedsWake(t, touched_)) return true;
+  if (wake) {
+    host_.Wake();
+  } else {
+    host_.Wake(t, touched_ | lockstep::kEveryGrant);
+  }
+  touched_ = 0;
   if (!host_.WaitIdle(on_wait_)) return false;
   ReadHosts(t, io);
   if (io.devices().steering) ReadBus(t, io);
@@ -82,9 +91,19 @@ void ClockedHostTurns::ReadHosts(Time t, DeviceIo& io) {
       const pollfd& pf = io.host_fds()[k++];
       if (pf.fd >= 0 && pf.revents == 0) continue;
       std::string rx = set.endpoints[d][p]->PollHost(t, true);
-      if (!rx.empty()) arrivals_.push_back({t, d, p, std::move(rx)});
+      if (rx.empty()) continue;
+      // room on that link again: a thread waiting to write there looks at the next grant
+      touched_ |= LinkBitOf(set.endpoints[d][p].get());
+      arrivals_.push_back({t, d, p, std::move(rx)});
     }
   }
+}
+
+std::uint64_t ClockedHostTurns::LinkBitOf(const SerialEndpoint* ep) const {
+  const std::vector<SerialEndpoint*>& links = pacer_.endpoints();
+  const auto it = std::find(links.begin(), links.end(), ep);
+  return it == links.end() ? lockstep::kOtherFd
+                           : ClockedPacer::LinkBit(static_cast<std::size_t>(it - links.begin()));
 }
 
 void ClockedHostTurns::ReadBus(Time t, DeviceIo& io) {
@@ -92,7 +111,10 @@ void ClockedHostTurns::ReadBus(Time t, DeviceIo& io) {
   if (CanEndpoint* can = io.devices().can) {
     for (const CanFrame& f : can->TakeArrivals(t)) io.bus_frames().push_back(f);
   }
-  for (const CanFrame& f : io.TakeUnrouted()) bus_arrivals_.push_back({t, f});
+  for (const CanFrame& f : io.TakeUnrouted()) {
+    bus_arrivals_.push_back({t, f});
+    touched_ |= lockstep::kOtherFd;  // frames read off the bus: room for the sender's next
+  }
 }
 
 void ClockedHostTurns::DeliverHostBytes(const HostBytes& h, DeviceIo& io, DeviceOutput& out) {

@@ -14,12 +14,14 @@
 /// program that writes, sleeps 250 ms or times out a poll thus does so at the same emulated time
 /// in every run, whatever the machine's load.
 
+#include <cstdint>
 #include <deque>
 #include <string>
 
 #include "hil/harness/engine/clocked_pacer.h"
 #include "hil/harness/engine/host_turns.h"
 #include "hil/harness/lockstep/lockstep_host.h"
+#include "hil/harness/lockstep/lockstep_shared.h"
 
 namespace hil::harness {
 
@@ -58,6 +60,8 @@ class ClockedHostTurns final : public HostTurns {
   /// the drain: Flush wrote what was left). False when the wait was given up.
   bool Turn(Time t, DeviceIo& io, bool wake = false);
   void ReadHosts(Time t, DeviceIo& io);
+  /// The bit of `ep` in the grants' masks (lockstep_shared.h).
+  std::uint64_t LinkBitOf(const SerialEndpoint* ep) const;
   void ReadBus(Time t, DeviceIo& io);
   void DeliverHostBytes(const HostBytes& h, DeviceIo& io, DeviceOutput& out);
 
@@ -65,6 +69,9 @@ class ClockedHostTurns final : public HostTurns {
   ClockedPacer& pacer_;
   lockstep::LockstepHost::WaitStep on_wait_;
   bool started_ = false;
+  /// what hil touched since the last grant (lockstep_shared.h's mask): links written or read, the
+  /// bus (kOtherFd); a grant adds kEveryGrant
+  std::uint64_t touched_ = 0;
   std::deque<HostBytes> arrivals_;
   std::deque<BusArrival> bus_arrivals_;
 };
