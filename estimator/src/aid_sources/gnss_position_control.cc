@@ -56,6 +56,7 @@ UpdateResult Navigator::ControlGnssPosition(const GnssSample& g, const Eigen::Ve
   last_fix_seen_t_ = g.t;
   const bool step = rp.adaptive && CheckGnssStep(g, p);
   UpdateResult r = ekf_.UpdatePosition(p, g.pos_std_enu_m);
+  if (RejectSuspectRtkFix(g, r, p)) return r;
   if (rp.adaptive && r.dof > 0) {
     // the GNSS consistency check: a rejected step is the receiver's, not the model's
     if (glitch_since_ && (r.accepted || !InGnssGlitch(g.t))) {
