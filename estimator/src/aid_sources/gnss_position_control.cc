@@ -57,6 +57,7 @@ UpdateResult Navigator::ControlGnssPosition(const GnssSample& g, const Eigen::Ve
   const bool fades = rp.FadesToFixes();
   const bool step = fades && CheckGnssStep(g, p);
   UpdateResult r = ekf_.UpdatePosition(p, g.pos_std_enu_m);
+  if (RejectSuspectRtkFix(g, r, p)) return r;
   if (fades && r.dof > 0) {
     // the GNSS consistency check: a rejected step is the receiver's, not the model's
     if (glitch_since_ && (r.accepted || !InGnssGlitch(g.t))) {

@@ -43,6 +43,7 @@
 #include "hil/estimator/innovation_monitor.h"
 #include "hil/estimator/planar_filter.h"
 #include "hil/estimator/ring_buffer.h"
+#include "hil/estimator/rtk_fix_check.h"
 #include "hil/estimator/samples.h"
 #include "hil/estimator/stationary_detector.h"
 
@@ -134,6 +135,10 @@ struct NavigatorParams {
   /// EKF mode: the IMU tags' lag behind GNSS time, estimated online (ImuTimeOffset) and taken off
   /// the IMU tags once conclusive (aid_sources/imu_lag_control.cc).
   ImuTimeOffsetParams imu_lag;
+  /// EKF mode: a new RTK fix episode that contradicts the aided filter from its first fix is
+  /// suspect (a wrong integer fix) and its positions are not fused (RtkFixCheck,
+  /// aid_sources/rtk_fix_control.cc).
+  RtkFixCheckParams rtk_fix;
   /// Multi-receiver mode: antenna positions in the body frame, one column per receiver
   /// (GnssSample::antenna); the first `multi_antenna_count` columns are used (seed 000: three on a
   /// 3 m circle). At least two antennas with distinct horizontal positions give a heading.
@@ -170,6 +175,8 @@ struct NavigatorStats {
   double imu_tag_lag_estimate_s = 0;       ///< the best lag on the evidence so far, and its σ
   double imu_tag_lag_std_s = 0;
   std::uint64_t stationary_periods = 0;
+  std::uint64_t rtk_suspect_episodes = 0;  ///< RTK fix episodes judged a probable wrong fix
+  std::uint64_t rtk_suspect_fixes = 0;     ///< fixes of those episodes, not fused (RtkFixCheck)
 };
 
 /// The solution at one time of validity.
@@ -253,6 +260,11 @@ class Navigator {
   void CorrectImuTag(ImuSample& s);
   void ObserveGnssCourse(const GnssSample& g);
   void ControlZeroMotion();
+  /// A fix of a suspect RTK fix episode (RtkFixCheck): true when its position is not to be used;
+  /// its velocity is fused by FuseSuspectFixVelocity (aid_sources/rtk_fix_control.cc).
+  bool RejectSuspectRtkFix(const GnssSample& g, const UpdateResult& r,
+                           const Eigen::Vector3d& p_antenna_N_m);
+  void FuseSuspectFixVelocity(const GnssSample& g);
   void Record(int source, const UpdateResult& r);
   /// Restarts the EKF's position and velocity at a fix (long rejection, or after an IMU loss).
   void ResetToFix(const GnssSample& g, const Eigen::Vector3d& p_antenna_N_m);
@@ -290,6 +302,9 @@ class Navigator {
   ImuTimeOffset imu_lag_;                   // the IMU tags' lag behind GNSS time
   Nanoseconds imu_lag_applied_{0};          // the lag taken off the IMU tags now
   std::optional<GpsTime> glitch_since_;     // the current receiver glitch's first fix
+  RtkFixCheck rtk_check_;                   // wrong RTK fixes: a new episode against the INS
+  Eigen::Vector3d rtk_offset_N_m_ = Eigen::Vector3d::Zero();  // a suspect episode's offset
+  Eigen::Vector3d rtk_offset_std_m_ = Eigen::Vector3d::Zero();
   std::optional<GpsTime> last_gnss_vel_t_;  // the newest fix with a velocity, and its speed
   double last_gnss_speed_mps_ = 0;
   // GNSS-only and multi-receiver modes: the last fix
