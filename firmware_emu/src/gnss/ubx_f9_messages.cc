@@ -73,7 +73,7 @@ std::vector<std::uint8_t> EncodeNavPvt(const F9Epoch& e) {
   w.U4(valid ? F9RoundU(f.v_acc_m * 1e3) : kF9UnknownAcc);                          // 44 vAcc
   w.I4(F9Round(f.vel_n_mps * 1e3)).I4(F9Round(f.vel_e_mps * 1e3)).I4(F9Round(f.vel_d_mps * 1e3));
   w.I4(F9Round(f.ground_speed_mps() * 1e3));                 // 60 gSpeed
-  w.I4(F9Round(f.course_deg() * 1e5));                       // 64 headMot
+  w.I4(valid ? F9Round(f.course_deg() * 1e5) : 0);  // 64 headMot
   w.U4(valid ? F9RoundU(f.s_acc_mps * 1e3) : kF9UnknownAcc);   // 68 sAcc
   w.U4(F9RoundU(std::min(f.heading_acc_deg, 180.0) * 1e5));  // 72 headAcc
   w.U2(F9RoundU(std::min(f.pdop, 99.99) * 100));             // 76 pDOP

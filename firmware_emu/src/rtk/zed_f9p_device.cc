@@ -31,6 +31,22 @@ void Shift(gnss::GnssFix& f, const Eigen::Vector3d& d_N_m) {
   f.height_m += d_N_m.z();
 }
 
+// Without a fix no satellite is used (the tracked ones flagged quality 4); the used svids in the
+// order of their channels (GSA's list), as the NEO-5M's receiver does.
+void MarkUsed(gnss::NavEpoch& e, bool valid) {
+  std::vector<const gnss::SatelliteView*> used;
+  for (auto& s : e.sats) {
+    if (!valid) {
+      s.used = false;
+      if (s.tracked) s.quality = 4;
+    }
+    if (s.used) used.push_back(&s);
+  }
+  std::sort(used.begin(), used.end(), [](auto* a, auto* b) { return a->channel < b->channel; });
+  e.used_in_channel_order.clear();
+  for (const auto* s : used) e.used_in_channel_order.push_back(s->nmea_id());
+}
+
 CarrSoln CarrSolnOf(gnss::RtkState s) {
   return s == gnss::RtkState::kFixed   ? CarrSoln::kFixed
          : s == gnss::RtkState::kFloat ? CarrSoln::kFloat
@@ -121,6 +137,7 @@ void ZedF9pDevice::RunNavEpoch(const TruthSample& truth, DeviceOutput& out) {
   }
   e.status = fix_state_.Step(t, usable);
   const bool valid = e.status.fix_type != gnss::FixType::kNoFix;
+  MarkUsed(e, valid);
   const gnss::Dops dops = gnss::ComputeDops(e.sats);
   gnss::ErrorInputs in;
   if (dops.valid) {

@@ -22,9 +22,13 @@ inline ZedF9pConfig RoverWithRadio(std::vector<RadioOutage> outages = {}) {
   ZedF9pConfig c;
   c.start_unix_ns = gnss::ParseIsoUtc("2026-06-10T08:00:00Z");
   RtkBaseConfig b = KarajBase(rtcm3::MsmKind::kMsm7);
-  b.lat_deg += 1600.0 / 6371000.0 * 180.0 / 3.141592653589793;
-  b.lon_deg += 1200.0 / (6371000.0 * std::cos(kRoverLat_deg * 3.141592653589793 / 180.0)) * 180.0 /
-               3.141592653589793;
+  // the radii of curvature of the ellipsoid at the site (meridian M, prime vertical N)
+  const double rad = 3.141592653589793 / 180.0, s = std::sin(kRoverLat_deg * rad);
+  const double w = std::sqrt(1.0 - gnss::kWgs84E2 * s * s);
+  const double m_m = gnss::kWgs84A_m * (1.0 - gnss::kWgs84E2) / (w * w * w) + kRoverHeight_m;
+  const double n_m = gnss::kWgs84A_m / w + kRoverHeight_m;
+  b.lat_deg += 1600.0 / m_m / rad;
+  b.lon_deg += 1200.0 / (n_m * std::cos(kRoverLat_deg * rad)) / rad;
   b.radio.outages = std::move(outages);
   c.radio_base = b;
   c.radio_base_seed = 7;
