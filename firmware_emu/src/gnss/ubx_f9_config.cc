@@ -81,6 +81,12 @@ const F9Key* FindF9Key(std::uint32_t id) {
   return it == std::end(kKeys) ? nullptr : it;
 }
 
+const F9Key* FindF9Key(std::string_view name) {
+  const auto* it = std::find_if(std::begin(kKeys), std::end(kKeys),
+                                [name](const F9Key& k) { return k.name == name; });
+  return it == std::end(kKeys) ? nullptr : it;
+}
+
 std::size_t F9ValueBytes(std::uint32_t id) {
   switch (id >> 28 & 7U) {
     case 1:

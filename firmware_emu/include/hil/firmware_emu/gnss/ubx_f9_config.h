@@ -61,6 +61,8 @@ struct F9Key {
 std::span<const F9Key> F9Keys();
 /// The key `id` of the table, null for an unknown key.
 const F9Key* FindF9Key(std::uint32_t id);
+/// The key named `name` ("CFG-RATE-MEAS"), null for an unknown name.
+const F9Key* FindF9Key(std::string_view name);
 /// Bytes of a key's value on the wire: its size field (bits 28–30) 1 (one bit, sent as a byte)
 /// and 2 → 1, 3 → 2, 4 → 4, 5 → 8; 0 for a reserved size.
 std::size_t F9ValueBytes(std::uint32_t id);
