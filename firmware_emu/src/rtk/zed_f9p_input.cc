@@ -24,7 +24,10 @@ void ZedF9pDevice::RadioEpoch(Time t) {
   DeviceOutput sent;
   radio_base_->OnEvent(TruthSample{.t = t}, sent);
   const Duration byte_time = ByteTime(static_cast<std::uint64_t>(radio_base_->baud(0)));
-  const bool accept = Enabled(key::kUart2InRtcm3);
+  // a UART2 set to another rate than the radio modem's line decodes nothing (framing errors)
+  const bool accept =
+      Enabled(key::kUart2InRtcm3) &&
+      db_.Get(key::kUart2Baudrate) == static_cast<std::uint64_t>(radio_base_->baud(0));
   std::vector<rtcm3::ReceivedFrame> frames;
   for (const SerialMessage& m : sent.serial) {
     Time t_byte_end = std::max(m.t_ready, rx2_free_);

@@ -82,6 +82,15 @@ TEST(ZedF9pTimeline, NoCorrectionsStaysStandalone) {
   EXPECT_GT(dev.last_fix().h_acc_m, 0.5) << "a standalone fix reports metres";
 }
 
+TEST(ZedF9pTimeline, Uart2AtAnotherBaudDecodesNothing) {
+  ZedF9pConfig c = test::RoverWithRadio();
+  c.flash = {{key::kUart2Baudrate, 115200}};  // the radio modem's line is 38400 Bd
+  ZedF9pDevice dev(c, 3);
+  test::RunUntil(dev, TimeFromSeconds(20));
+  EXPECT_EQ(dev.rover_statistics().rtcm_frames, 0U);
+  EXPECT_EQ(dev.timeline().size(), 1U);
+}
+
 TEST(ZedF9pTimeline, FixedAccuracyGrowsWithTheBaseline) {
   RoverRtkConfig c;
   RoverRtk near(c, 1), far(c, 1);

@@ -21,7 +21,10 @@
 /// its RadioLink itself, from the same configuration and seed as the scenario's `rtk_base`
 /// device, so the bytes that reach UART2 are the bytes of that device's link (RUN_DIR/ttyRTCM,
 /// its capture), at the same times; UART2 is not a pty of the run. The bytes arrive at the
-/// base's line rate, and a frame counts when its last byte has arrived.
+/// base's line rate, and a frame counts when its last byte has arrived; with CFG-UART2-BAUDRATE
+/// at another rate (or CFG-UART2INPROT-RTCM3X off) nothing of it is decoded.
+/// Only CFG-VALSET/VALGET/VALDEL configure it: the legacy CFG messages (CFG-PRT, CFG-MSG,
+/// CFG-RATE…), which the real F9 still accepts as deprecated, are NAKed here (not implemented).
 /// Corrections count for the RTK state when a base observation message (MSM) passes its CRC and
 /// a station message (1005/1006) has given the base position (before it: refPosMiss).
 
