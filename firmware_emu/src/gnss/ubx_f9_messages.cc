@@ -62,21 +62,22 @@ std::vector<std::uint8_t> EncodeNavPvt(const F9Epoch& e) {
   Writer w;
   w.U4(F9Itow(n)).U2(u.year).U1(u.month).U1(u.day).U1(u.hour).U1(u.minute).U1(u.second);  // 0–10
   w.U1(tk ? (n.leap_known ? 0x07 : 0x03) : 0x00);  // 11 valid: validDate, validTime, resolved
-  w.U4(F9RoundU(n.t_acc_ns)).I4(u.nanosecond);       // 12 tAcc, 16 nano
+  w.U4(F9RoundU(n.t_acc_ns)).I4(u.nanosecond);     // 12 tAcc, 16 nano
   w.U1(static_cast<std::uint8_t>(f.fix_type)).U1(PvtFlags(e));  // 20 fixType, 21 flags
   w.U1(tk ? 0xE0 : 0x00).U1(valid ? f.num_sv : 0);              // 22 flags2 (confirmed*), 23 numSV
   const bool pos = n.position_known;
-  w.I4(pos ? F9Round(f.lon_deg * 1e7) : 0).I4(pos ? F9Round(f.lat_deg * 1e7) : 0);  // 24 lon, 28 lat
-  w.I4(pos ? F9Round(f.height_m * 1e3) : 0);                                      // 32 height
-  w.I4(pos ? F9Round((f.height_m - f.geoid_separation_m) * 1e3) : 0);             // 36 hMSL
-  w.U4(valid ? F9RoundU(f.h_acc_m * 1e3) : kF9UnknownAcc);                          // 40 hAcc
-  w.U4(valid ? F9RoundU(f.v_acc_m * 1e3) : kF9UnknownAcc);                          // 44 vAcc
+  w.I4(pos ? F9Round(f.lon_deg * 1e7) : 0)
+      .I4(pos ? F9Round(f.lat_deg * 1e7) : 0);                         // 24 lon, 28 lat
+  w.I4(pos ? F9Round(f.height_m * 1e3) : 0);                           // 32 height
+  w.I4(pos ? F9Round((f.height_m - f.geoid_separation_m) * 1e3) : 0);  // 36 hMSL
+  w.U4(valid ? F9RoundU(f.h_acc_m * 1e3) : kF9UnknownAcc);             // 40 hAcc
+  w.U4(valid ? F9RoundU(f.v_acc_m * 1e3) : kF9UnknownAcc);             // 44 vAcc
   w.I4(F9Round(f.vel_n_mps * 1e3)).I4(F9Round(f.vel_e_mps * 1e3)).I4(F9Round(f.vel_d_mps * 1e3));
-  w.I4(F9Round(f.ground_speed_mps() * 1e3));                 // 60 gSpeed
-  w.I4(valid ? F9Round(f.course_deg() * 1e5) : 0);  // 64 headMot
-  w.U4(valid ? F9RoundU(f.s_acc_mps * 1e3) : kF9UnknownAcc);   // 68 sAcc
-  w.U4(F9RoundU(std::min(f.heading_acc_deg, 180.0) * 1e5));  // 72 headAcc
-  w.U2(F9RoundU(std::min(f.pdop, 99.99) * 100));             // 76 pDOP
+  w.I4(F9Round(f.ground_speed_mps() * 1e3));                  // 60 gSpeed
+  w.I4(valid ? F9Round(f.course_deg() * 1e5) : 0);            // 64 headMot
+  w.U4(valid ? F9RoundU(f.s_acc_mps * 1e3) : kF9UnknownAcc);  // 68 sAcc
+  w.U4(F9RoundU(std::min(f.heading_acc_deg, 180.0) * 1e5));   // 72 headAcc
+  w.U2(F9RoundU(std::min(f.pdop, 99.99) * 100));              // 76 pDOP
   const auto age = static_cast<std::uint16_t>(LastCorrectionAgeCode(e.correction_age_s) << 1);
   w.U2(static_cast<std::uint16_t>((pos ? 0 : 1) | age));  // 78 flags3: invalidLlh, lastCorrAge
   w.Zeros(4);                                             // 80 reserved0
@@ -95,8 +96,8 @@ std::vector<std::uint8_t> EncodeNavHpposllh(const F9Epoch& e) {
   w.U1(0).Zeros(2).U1(pos ? 0 : 1).U4(F9Itow(e.nav));  // 0 version, 3 flags (invalidLlh), 4 iTOW
   w.I4(lon.coarse).I4(lat.coarse).I4(h.coarse).I4(msl.coarse);  // 8 lon, 12 lat, 16, 20
   w.I1(lon.fine).I1(lat.fine).I1(h.fine).I1(msl.fine);          // 24 lonHp … 27 hMSLHp
-  w.U4(f.valid() ? F9RoundU(f.h_acc_m * 1e4) : kF9UnknownAcc);      // 28 hAcc (0.1 mm)
-  w.U4(f.valid() ? F9RoundU(f.v_acc_m * 1e4) : kF9UnknownAcc);      // 32 vAcc
+  w.U4(f.valid() ? F9RoundU(f.h_acc_m * 1e4) : kF9UnknownAcc);  // 28 hAcc (0.1 mm)
+  w.U4(f.valid() ? F9RoundU(f.v_acc_m * 1e4) : kF9UnknownAcc);  // 32 vAcc
   return w.bytes();
 }
 
@@ -130,10 +131,12 @@ std::vector<std::uint8_t> EncodeNavRelposned(const F9Epoch& e) {
   const Eigen::Vector3d acc = ok ? e.rel_acc_NED_m : Eigen::Vector3d::Zero();
   Writer w;
   w.U1(1).U1(0).U2(e.ref_station_id).U4(F9Itow(e.nav));  // 0 version, 2 refStationId, 4 iTOW
-  w.I4(n.coarse).I4(east.coarse).I4(d.coarse);         // 8 relPosN/E/D (cm)
+  w.I4(n.coarse).I4(east.coarse).I4(d.coarse);           // 8 relPosN/E/D (cm)
   w.I4(len.coarse).I4(ok ? F9Round(heading_deg * 1e5) : 0).Zeros(4);  // 20 length, 24 heading
-  w.I1(n.fine).I1(east.fine).I1(d.fine).I1(len.fine);               // 32 HP parts (0.1 mm)
-  w.U4(F9RoundU(acc.x() * 1e4)).U4(F9RoundU(acc.y() * 1e4)).U4(F9RoundU(acc.z() * 1e4));  // 36 accNED
+  w.I1(n.fine).I1(east.fine).I1(d.fine).I1(len.fine);                 // 32 HP parts (0.1 mm)
+  w.U4(F9RoundU(acc.x() * 1e4))
+      .U4(F9RoundU(acc.y() * 1e4))
+      .U4(F9RoundU(acc.z() * 1e4));                 // 36 accNED
   w.U4(F9RoundU(acc.norm() * 1e4)).U4(0).Zeros(4);  // 48 accLength, 52 accHeading, 56 reserved
   std::uint32_t flags = 0;
   if (e.nav.fix.valid()) flags |= 1U;                      // gnssFixOK
@@ -148,7 +151,8 @@ std::vector<std::uint8_t> EncodeNavRelposned(const F9Epoch& e) {
 
 std::vector<std::uint8_t> EncodeRxmRtcm(int msg_type, int ref_station, bool crc_failed, bool used) {
   Writer w;
-  const std::uint8_t flags = (crc_failed ? 1 : 0) | ((crc_failed ? 0 : used ? 2 : 1) << 1);
+  const unsigned msg_used = crc_failed ? 0U : used ? 2U : 1U;
+  const auto flags = static_cast<std::uint8_t>((crc_failed ? 1U : 0U) | msg_used << 1);
   w.U1(2).U1(flags).U2(0).U2(ref_station).U2(msg_type);  // version, flags, subType, ref, type
   return w.bytes();
 }

@@ -107,7 +107,7 @@ class ZedF9pDevice final : public Device {
   Time NextGridEpoch(Time after) const;
   void RunNavEpoch(const TruthSample& truth, DeviceOutput& out);
   void RadioEpoch(Time t);
-  void Receive(Time t, const PendingFrame& f, DeviceOutput& out);
+  void Receive(Time t, const PendingFrame& p, DeviceOutput& out);
   void ApplyRtk(Time t, double dt_s, gnss::GnssFix& fix);
   void FillRelPos();
   void EmitEpoch(Time t_ready, DeviceOutput& out);
