@@ -97,7 +97,8 @@ void ZedF9pDevice::HandleUbx(const gnss::ubx::InputMessage& m, Time t, DeviceOut
       (m.id == ubx::kCfgValset || m.id == ubx::kCfgValget || m.id == ubx::kCfgValdel)) {
     const Duration period_before = Period();
     replies = db_.Handle(m.id, m.payload);
-    if (Period() != period_before) next_epoch_ = NextGridEpoch(last_epoch_time_);
+    // a new rate runs from the command on
+    if (Period() != period_before) next_epoch_ = NextGridEpoch(std::max(last_epoch_time_, t));
   } else if (m.cls == ubx::kCfg) {
     replies.push_back(
         {ubx::Ack(false, m.cls, m.id), "UBX-ACK-NAK"});  // protocol 27+: no legacy CFG here
