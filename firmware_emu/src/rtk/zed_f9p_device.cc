@@ -129,7 +129,9 @@ void ZedF9pDevice::RunNavEpoch(const TruthSample& truth, DeviceOutput& out) {
   e.gps = gnss::GpsFromUnixNs(unix_ns);
   e.leap_s = gnss::LeapSecondsAtUnix(unix_ns / 1000000000LL);
   const double gps_s = static_cast<double>(e.gps.week) * 604800.0 + e.gps.tow_s();
-  e.sats = constellation_.Sky(gps_s, truth.lat_deg, truth.lon_deg, truth.height_m, {});
+  gnss::SkyConditions sky;
+  for (const auto& [start, end] : config_.sky_outages) sky.sky_blocked |= t >= start && t < end;
+  e.sats = constellation_.Sky(gps_s, truth.lat_deg, truth.lon_deg, truth.height_m, sky);
   int usable = 0;
   for (auto& s : e.sats) {
     usable += s.used ? 1 : 0;

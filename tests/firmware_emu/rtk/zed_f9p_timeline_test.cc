@@ -82,6 +82,27 @@ TEST(ZedF9pTimeline, NoCorrectionsStaysStandalone) {
   EXPECT_GT(dev.last_fix().h_acc_m, 0.5) << "a standalone fix reports metres";
 }
 
+TEST(ZedF9pTimeline, SkyOutageThenReconvergence) {
+  ZedF9pConfig c = test::RoverWithRadio();
+  c.sky_outages = {{TimeFromSeconds(30), TimeFromSeconds(40)}};
+  ZedF9pDevice dev(c, 3);
+  test::RunUntil(dev, TimeFromSeconds(45));
+  const auto tl = dev.timeline();
+  // fixed at 12 s; no fix 30-40 s (carrSoln 0); the fix back after re-acquisition (1 s): float at
+  // once (the corrections kept flowing), fixed time_to_fix_s later
+  ASSERT_EQ(tl.size(), 5U);
+  EXPECT_EQ(tl[3].carr_soln, CarrSoln::kNone);
+  EXPECT_DOUBLE_EQ(ToSeconds(tl[3].t - Time{}), 30.0);
+  EXPECT_EQ(tl[4].carr_soln, CarrSoln::kFloat);
+  const double t_back = ToSeconds(tl[4].t - Time{});
+  EXPECT_GE(t_back, 40.0);
+  EXPECT_LE(t_back, 42.0);
+  EXPECT_EQ(dev.last_epoch().carr_soln, CarrSoln::kFloat) << "fixed only 10 s after " << t_back;
+  test::RunUntil(dev, TimeFromSeconds(t_back + 10.5));
+  EXPECT_EQ(dev.timeline().back().carr_soln, CarrSoln::kFixed);
+  EXPECT_DOUBLE_EQ(ToSeconds(dev.timeline().back().t - Time{}), t_back + 10.0);
+}
+
 TEST(ZedF9pTimeline, Uart2AtAnotherBaudDecodesNothing) {
   ZedF9pConfig c = test::RoverWithRadio();
   c.flash = {{key::kUart2Baudrate, 115200}};  // the radio modem's line is 38400 Bd

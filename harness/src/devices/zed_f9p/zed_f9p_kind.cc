@@ -21,6 +21,9 @@ void BuildZedF9p(const Scenario& s, std::uint64_t seed, const std::string& dir, 
     c.radio_base = s.rtk_base.config;
     c.radio_base_seed = seed - kZedF9pKind.seed_stream + kRtkBaseKind.seed_stream;
   }
+  for (const Fault& f : s.faults.faults) {  // the scenario's GNSS outages reach the rover too
+    if (f.kind == FaultKind::kGnssOutage) c.sky_outages.emplace_back(f.start, f.end);
+  }
   auto dev = std::make_unique<rtk::ZedF9pDevice>(c, seed);
   set.rover = dev.get();
   AddSerialDevice(std::move(dev), s.zed_f9p.link, s.zed_f9p.tx_buffer_bytes, dir, set);

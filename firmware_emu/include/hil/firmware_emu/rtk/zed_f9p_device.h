@@ -68,6 +68,9 @@ struct ZedF9pConfig {
   /// Configuration saved in the receiver's Flash before the run (key ID → value): RAM starts
   /// from it, as after a power-up.
   std::vector<std::pair<std::uint32_t, std::uint64_t>> flash;
+  /// Sky outages (start ≤ t < end): no satellite received, no fix; afterwards the receiver
+  /// re-acquires (FixState) and the RTK solution converges again (float, then fixed).
+  std::vector<std::pair<Time, Time>> sky_outages;
 };
 
 /// One RTK state change, for the report's timeline.
