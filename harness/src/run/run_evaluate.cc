@@ -136,6 +136,7 @@ void CountLinksAndDevices(RunContext& ctx) {
     }
   }
   if (ctx.set.can) AddCanBusReport(*ctx.set.can, ctx.collector->bus_frames_per_pgn(), report);
+  if (ctx.set.rover) report.rtk_rover = MakeRtkRoverReport(*ctx.set.rover);
   std::uint64_t resets = 0;
   for (const auto& dev : ctx.set.devices) resets += dev->statistics().resets;
   const std::vector<Fault>& faults = ctx.scenario.faults.faults;
