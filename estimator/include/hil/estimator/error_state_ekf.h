@@ -169,9 +169,9 @@ class ErrorStateEkf {
   /// adapted by the navigator from its innovation statistics).
   void SetProcessNoiseScale(double scale) { q_scale_ = scale; }
   double process_noise_scale() const { return q_scale_; }
-  /// Further scales the accelerometer's white-noise and bias random-walk variances (≥ 1; the
-  /// navigator's measure of how far the accelerometer is outside its model, from the GNSS
-  /// velocity innovations).
+  /// Further scales the accelerometer's white-noise and bias random-walk variances and the gyro's
+  /// white-noise variance (≥ 1): the navigator's measure of how far the IMU is outside its model,
+  /// from the GNSS velocity innovations (an engine's vibration shakes both sensors of a board).
   void SetAccelNoiseScale(double scale) { accel_scale_ = scale; }
   double accel_noise_scale() const { return accel_scale_; }
   /// Starts the bias estimates at known values (a dataset's initial biases), after Initialize.

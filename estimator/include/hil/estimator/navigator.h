@@ -109,11 +109,14 @@ struct RobustnessParams {
 /// error integrated (and the tilt's, times g): when the GNSS velocity window's mean and median NIS
 /// per degree of freedom are both above `raise_nis_per_dof` (far above the χ² band, whose top is
 /// 1.39 for 20 three-axis updates), the accelerometer's white-noise and bias random-walk variances
-/// are scaled by the window's mean excess factor (ErrorStateEkf::UpdateResult::excess; at most
-/// ×`max_step` per window, ×`max_scale` in all) and the window restarts; a window whose mean is
-/// below 1 scales them back (never below the configured noise). Innovation-based adaptive
-/// estimation of the process noise (Mohamed and Schwarz, J. Geodesy 73, 1999), on the sensor the
-/// velocity observes.
+/// and the gyro's white-noise variance are scaled by the window's mean excess factor
+/// (ErrorStateEkf::UpdateResult::excess; at most ×`max_step` per window, ×`max_scale` in all) and
+/// the window restarts; a window whose mean is below 1 scales them back (never below the configured
+/// noise). Innovation-based adaptive estimation of the process noise (Mohamed and Schwarz, J.
+/// Geodesy 73, 1999), on the sensor the velocity observes. Once raised, the GNSS position window
+/// adapts the IMU noise as well (RobustnessParams::adaptive's rule): the velocity has shown that
+/// the IMU, not the receiver, is outside its model. A source without velocities (navd --kfgins)
+/// never raises it.
 struct ImuNoiseParams {
   bool enabled = true;
   double raise_nis_per_dof = 4.0;  ///< window mean and median above this: outside the model
