@@ -50,6 +50,13 @@ void AppendConsistency(std::string& s, const NavigatorStats& n) {
   Add(s, "rtk_suspect_episodes", n.rtk_suspect_episodes);
   Add(s, "rtk_suspect_fixes", n.rtk_suspect_fixes);
   s += n.stationary ? ",\"stationary\":true" : ",\"stationary\":false";
+  // present once the accelerometer was found far outside its noise model (the filter then
+  // leans on the GNSS; the line stays short otherwise)
+  if (n.accel_noise_raises > 0) {
+    std::snprintf(b, sizeof b, ",\"accel_noise_scale\":%.4g,\"accel_noise_raises\":%llu",
+                  n.accel_noise_scale, static_cast<unsigned long long>(n.accel_noise_raises));
+    s += b;
+  }
   // present once a lag was found and taken off the IMU tags (the line stays short otherwise)
   if (n.imu_tag_lag_s == 0) return;
   std::snprintf(b, sizeof b, ",\"imu_tag_lag_s\":%.4f", n.imu_tag_lag_s);

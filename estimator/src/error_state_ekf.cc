@@ -71,13 +71,13 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& delta_angle_B_rad,
   PropagateCovariance(C, dt, gm_decay, dev_decay);
   // process noise: isotropic densities are invariant under the rotation C
   P_.block<3, 3>(kVel, kVel).diagonal().array() +=
-      q_scale_ * p.accel_noise_mps2_rthz * p.accel_noise_mps2_rthz * dt;
+      q_scale_ * accel_scale_ * p.accel_noise_mps2_rthz * p.accel_noise_mps2_rthz * dt;
   if (!attitude_hold_) {
     P_.block<3, 3>(kAtt, kAtt).diagonal().array() +=
-        q_scale_ * p.gyro_noise_radps_rthz * p.gyro_noise_radps_rthz * dt;
+        q_scale_ * accel_scale_ * p.gyro_noise_radps_rthz * p.gyro_noise_radps_rthz * dt;
   }
   P_.block<3, 3>(kAccelBias, kAccelBias).diagonal().array() +=
-      p.accel_bias_rw_mps3_rthz * p.accel_bias_rw_mps3_rthz * dt;
+      accel_scale_ * p.accel_bias_rw_mps3_rthz * p.accel_bias_rw_mps3_rthz * dt;
   P_.block<3, 3>(kGyroBias, kGyroBias).diagonal().array() +=
       p.gyro_bias_rw_radps2_rthz * p.gyro_bias_rw_radps2_rthz * dt;
   if (p.gnss_error_tau_s > 0) P_.block<3, 3>(kGnssError, kGnssError).diagonal() += gm_q;

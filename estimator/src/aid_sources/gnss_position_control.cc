@@ -40,6 +40,7 @@ void Navigator::Record(int source, const UpdateResult& r) {
   const ChiSquareBand band = m.window_band();
   a.band_low = band.low;
   a.band_high = band.high;
+  if (source == kAidGnssVelocity) AdaptAccelNoise();
 }
 
 bool Navigator::CheckGnssStep(const GnssSample& g, const Eigen::Vector3d& p) {
@@ -91,7 +92,9 @@ UpdateResult Navigator::ControlGnssPosition(const GnssSample& g, const Eigen::Ve
   }
   step_.Remember(g.t, p, g.pos_std_enu_m, ekf_.AntennaPosition());
   Record(kAidGnssPosition, r);
-  if (rp.adaptive) AdaptToInnovations();
+  // the IMU found outside its model by the velocity (AdaptAccelNoise): the position window sizes
+  // its noise as well
+  if (rp.adaptive || stats_.accel_noise_raises > 0) AdaptToInnovations();
   return r;
 }
 

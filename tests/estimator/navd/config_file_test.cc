@@ -62,6 +62,17 @@ TEST(ConfigFileTest, ReferenceExampleIsValidAndComplete) {
   EXPECT_TRUE(c.nmea_device.empty());
 }
 
+// issue 41: the IMU noise check is on unless [filter] imu_noise_check = false
+TEST(ConfigFileTest, ImuNoiseCheckKey) {
+  EXPECT_TRUE(
+      NavdConfig::FromFile(ConfigFile::Parse("[filter]\n", "n.conf")).nav.imu_noise.enabled);
+  EXPECT_FALSE(
+      NavdConfig::FromFile(ConfigFile::Parse("[filter]\nimu_noise_check = false\n", "n.conf"))
+          .nav.imu_noise.enabled);
+  EXPECT_THROW(NavdConfig::FromFile(ConfigFile::Parse("[filter]\nimu_noise_check = 1\n", "n.conf")),
+               ConfigError);
+}
+
 TEST(ConfigFileTest, ReceiverConfigurationKeys) {
   const NavdConfig on = NavdConfig::FromFile(ConfigFile::Parse(
       "[input]\ngnss_protocol = ubx\ngnss_configure = true\ngnss_rate_hz = 4\n", "n.conf"));

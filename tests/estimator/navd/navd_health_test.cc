@@ -198,5 +198,17 @@ TEST(NavdHealthTest, ReportsEachAidSourcesInnovationWindowAndTheAdaptation) {
   EXPECT_NE(f.find("\"imu_can_out_of_order\":0,"), std::string::npos) << f;
 }
 
+// issue 41: an IMU found far outside its noise model is said in the health output (and only then)
+TEST(NavdHealthTest, ReportsTheAccelerometerNoiseScaleOnceRaised) {
+  NavigatorStats nav;
+  NavdHealth quiet(HealthSources{nullptr, nullptr, nullptr, nullptr, &nav});
+  EXPECT_EQ(quiet.Field(Ns(1)).find("accel_noise"), std::string::npos);
+  nav.accel_noise_scale = 250;
+  nav.accel_noise_raises = 3;
+  NavdHealth h(HealthSources{nullptr, nullptr, nullptr, nullptr, &nav});
+  const std::string f = h.Field(Ns(1));
+  EXPECT_NE(f.find("\"accel_noise_scale\":250,\"accel_noise_raises\":3"), std::string::npos) << f;
+}
+
 }  // namespace
 }  // namespace hil::estimator

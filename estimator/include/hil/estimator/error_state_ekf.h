@@ -169,6 +169,11 @@ class ErrorStateEkf {
   /// adapted by the navigator from its innovation statistics).
   void SetProcessNoiseScale(double scale) { q_scale_ = scale; }
   double process_noise_scale() const { return q_scale_; }
+  /// Further scales the accelerometer's white-noise and bias random-walk variances and the gyro's
+  /// white-noise variance (≥ 1): the navigator's measure of how far the IMU is outside its model,
+  /// from the GNSS velocity innovations (an engine's vibration shakes both sensors of a board).
+  void SetAccelNoiseScale(double scale) { accel_scale_ = scale; }
+  double accel_noise_scale() const { return accel_scale_; }
   /// Starts the bias estimates at known values (a dataset's initial biases), after Initialize.
   void SetBiases(const Eigen::Vector3d& accel_bias_B_mps2,
                  const Eigen::Vector3d& gyro_bias_B_radps);
@@ -243,6 +248,7 @@ class ErrorStateEkf {
   EkfMatrix P_ = EkfMatrix::Identity();
   std::uint32_t repairs_ = 0;
   double q_scale_ = 1.0;        // process-noise scale (SetProcessNoiseScale)
+  double accel_scale_ = 1.0;    // SetAccelNoiseScale
   bool attitude_hold_ = false;  // SetAttitudeHold
 };
 

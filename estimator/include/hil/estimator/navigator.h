@@ -104,6 +104,26 @@ struct RobustnessParams {
   Nanoseconds glitch_hold{10'000'000'000};
 };
 
+/// The accelerometer against its noise model, as the GNSS velocity sees it (estimator.md, "An IMU
+/// outside its noise model"). A velocity innovation over a fix interval is the accelerometer's
+/// error integrated (and the tilt's, times g): when the GNSS velocity window's mean and median NIS
+/// per degree of freedom are both above `raise_nis_per_dof` (far above the χ² band, whose top is
+/// 1.39 for 20 three-axis updates), the accelerometer's white-noise and bias random-walk variances
+/// and the gyro's white-noise variance are scaled by the window's mean excess factor
+/// (ErrorStateEkf::UpdateResult::excess; at most ×`max_step` per window, ×`max_scale` in all) and
+/// the window restarts; a window whose mean is below 1 scales them back (never below the configured
+/// noise). Innovation-based adaptive estimation of the process noise (Mohamed and Schwarz, J.
+/// Geodesy 73, 1999), on the sensor the velocity observes. Once raised, the GNSS position window
+/// adapts the IMU noise as well (RobustnessParams::adaptive's rule): the velocity has shown that
+/// the IMU, not the receiver, is outside its model. A source without velocities (navd --kfgins)
+/// never raises it.
+struct ImuNoiseParams {
+  bool enabled = true;
+  double raise_nis_per_dof = 4.0;  ///< window mean and median above this: outside the model
+  double max_step = 10.0;          ///< largest change of the scale per window
+  double max_scale = 1e4;          ///< largest variance scale (σ ×100)
+};
+
 /// The aid sources whose innovations are monitored.
 enum AidSource : int {
   kAidGnssPosition = 0,
@@ -132,6 +152,9 @@ struct NavigatorParams {
   bool use_gnss_velocity = true;
   RobustnessParams robust;
   StationaryParams stationary;
+  /// EKF mode: the accelerometer's noise follows the GNSS velocity innovations when they show it
+  /// far outside its model (aid_sources/imu_noise_control.cc).
+  ImuNoiseParams imu_noise;
   /// EKF mode: the IMU tags' lag behind GNSS time, estimated online (ImuTimeOffset) and taken off
   /// the IMU tags once conclusive (aid_sources/imu_lag_control.cc).
   ImuTimeOffsetParams imu_lag;
@@ -175,6 +198,10 @@ struct NavigatorStats {
   double imu_tag_lag_estimate_s = 0;       ///< the best lag on the evidence so far, and its σ
   double imu_tag_lag_std_s = 0;
   std::uint64_t stationary_periods = 0;
+  /// the accelerometer's noise variances in use over the configured ones (1: as configured;
+  /// above: the GNSS velocity shows the accelerometer that much noisier, ImuNoiseParams)
+  double accel_noise_scale = 1.0;
+  std::uint64_t accel_noise_raises = 0;    ///< windows that raised it
   std::uint64_t rtk_suspect_episodes = 0;  ///< RTK fix episodes judged a probable wrong fix
   std::uint64_t rtk_suspect_fixes = 0;     ///< fixes of those episodes, not fused (RtkFixCheck)
 };
@@ -255,6 +282,8 @@ class Navigator {
   /// Stationary detection before a prediction; zero-velocity and zero-angular-rate updates after
   /// it (aid_sources/zero_motion_control.cc).
   void DetectStationary(const ImuSample& s);
+  /// The accelerometer's noise to the GNSS velocity innovation window (ImuNoiseParams).
+  void AdaptAccelNoise();
   /// The IMU tag lag: a sample's heading increment into the estimate, and its tag corrected by
   /// the lag found so far; a fix's course into the estimate (aid_sources/imu_lag_control.cc).
   void CorrectImuTag(ImuSample& s);
