@@ -180,11 +180,14 @@ bool ReadFilterKey(const ConfigFile& f, const ConfigEntry& e, NavdConfig& c, int
   else if (k == "gnss_max_latency_s") {
     c.nav.gnss_max_latency = TruncatedNs(ToDouble(f, e, 0.0, 5.0));
     latency_line = e.line;
-  } else if (k == "adaptive" || k == "stationary_detection" || k == "imu_lag_estimation") {
+  } else if (k == "adaptive" || k == "fade_to_fixes" || k == "stationary_detection" ||
+             k == "imu_lag_estimation" || k == "rtk_fix_check") {
     if (e.value != "true" && e.value != "false")
       throw ConfigError(f.name(), e.line, FieldName(e), "expected true or false");
     (k == "adaptive"               ? c.nav.robust.adaptive
+     : k == "fade_to_fixes"        ? c.nav.robust.fade_to_fixes
      : k == "stationary_detection" ? c.nav.stationary.enabled
+     : k == "rtk_fix_check"        ? c.nav.rtk_fix.enabled
                                    : c.nav.imu_lag.enabled) = e.value == "true";
   } else if (k == "zupt_std_mps") {
     c.nav.stationary.zupt_std_mps = ToDouble(f, e, 0.001, 1.0);

@@ -47,6 +47,8 @@ void AppendConsistency(std::string& s, const NavigatorStats& n) {
   Add(s, "gnss_glitches", n.gnss_glitches);
   Add(s, "gnss_glitch_rejected", n.gnss_glitch_rejected);
   Add(s, "stationary_periods", n.stationary_periods);
+  Add(s, "rtk_suspect_episodes", n.rtk_suspect_episodes);
+  Add(s, "rtk_suspect_fixes", n.rtk_suspect_fixes);
   s += n.stationary ? ",\"stationary\":true" : ",\"stationary\":false";
   // present once a lag was found and taken off the IMU tags (the line stays short otherwise)
   if (n.imu_tag_lag_s == 0) return;

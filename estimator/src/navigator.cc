@@ -51,7 +51,8 @@ Navigator::Navigator(const NavigatorParams& params)
       stationary_(params.stationary, params.ekf.accel_noise_mps2_rthz,
                   params.ekf.gyro_noise_radps_rthz),
       step_(params.robust.step),
-      imu_lag_(params.imu_lag) {
+      imu_lag_(params.imu_lag),
+      rtk_check_(params.rtk_fix) {
   imu_lag_.SetLeverArm(params.ekf.lever_arm_B_m.x(), params.ekf.lever_arm_B_m.y());
 }
 
@@ -320,9 +321,11 @@ void Navigator::ProcessGnss(const GnssSample& g) {
   }
   ++stats_.gnss_rejected;
   status_ = (status_ | kStatusGnssRejected) & ~kStatusGnssFused;
-  if (InGnssGlitch(g.t)) {
-    // a receiver glitch (GnssStepCheck): its fixes are no evidence against the filter
+  if (InGnssGlitch(g.t) || rtk_check_.suspect()) {
+    // a receiver glitch (GnssStepCheck) or a suspect RTK fix (RtkFixCheck): its fixes are no
+    // evidence against the filter
     first_rejected_t_.reset();
+    if (rtk_check_.suspect()) FuseSuspectFixVelocity(g);
     return;
   }
   if (!first_rejected_t_) first_rejected_t_ = g.t;

@@ -125,6 +125,7 @@ NavigatorParams Params(bool robust, double accel_noise = 0.005, double gyro_nois
   p.ekf.init_roll_pitch_std_rad = 0.01;
   p.ekf.init_yaw_std_rad = 0.02;
   p.robust.adaptive = robust;
+  p.robust.fade_to_fixes = robust;
   p.stationary.enabled = robust;
   return p;
 }
@@ -201,6 +202,47 @@ TEST(NavigatorRobustnessTest, FixesReturningAfterAGapAreAccepted) {
       EXPECT_GT(rejected_after, 0u) << "the gap no longer breaks the plain filter";
     }
   }
+}
+
+// issue 39 (walk_0827): with navd's default settings (fading to fixes on, the process-noise
+// adaptation off) fixes rejected in a row and fixes returning after a gap are fused against a
+// faded covariance, not rejected for 5 s and reset to. An IMU ten times noisier than its model:
+// the plain filter (gate and reset) wanders by metres; fading alone keeps it far closer (the
+// process-noise adaptation, opt-in, is what brings it to centimetres: ModelWrongImu… above).
+TEST(NavigatorRobustnessTest, DefaultSettingsFadeToRejectedFixes) {
+  const Truth truth{5.0, 0.1};
+  double rmse[2] = {0, 0};
+  for (const bool defaults : {false, true}) {
+    NavigatorParams p = Params(false, 0.03, 3e-4);
+    if (defaults) p.robust = RobustnessParams{};
+    Rig rig(p, truth, 0.3, 3e-3, Eigen::Vector3d::Zero());
+    double sum2 = 0;
+    for (int i = 0; i < 600; ++i) {
+      rig.Run(rig.t_s + 1.0, 1.0);
+      if (i >= 300) sum2 += std::pow(rig.HorizontalError(), 2);
+    }
+    rmse[defaults] = std::sqrt(sum2 / 300);
+    const NavigatorStats& st = rig.nav.stats();
+    if (defaults) {
+      EXPECT_EQ(st.gnss_resets, 0u);
+      EXPECT_GT(st.reject_fadings, 0u);
+      EXPECT_EQ(st.process_noise_scale, 1.0);
+    }
+  }
+  EXPECT_LT(rmse[1], 0.25 * rmse[0]) << "defaults " << rmse[1] << " m, plain " << rmse[0] << " m";
+
+  NavigatorParams q = Params(false);
+  q.robust = RobustnessParams{};
+  q.ekf.init_gyro_bias_std_radps = 1e-4;
+  Rig gap(q, truth, 0.005, 5e-5, Eigen::Vector3d::Zero());
+  gap.Run(120.0, 0.25);
+  gap.bias_B = Eigen::Vector3d(0, 0, 0.5 * M_PI / 180.0);
+  gap.Run(150.1, 0.25, 120.0, 150.1);
+  const std::uint64_t rejected = gap.nav.stats().gnss_rejected;
+  gap.Run(152.0, 0.25);
+  EXPECT_EQ(gap.nav.stats().gnss_rejected, rejected);
+  EXPECT_EQ(gap.nav.stats().gap_fadings, 1u);
+  EXPECT_LT(gap.HorizontalError(), 0.10);
 }
 
 // A vehicle parked for an hour with a gyro bias the filter does not know (10 °/h about up) and

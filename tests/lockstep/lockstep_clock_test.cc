@@ -4,6 +4,8 @@
 // memory alone when they wait, and until when.
 #include <fcntl.h>
 #include <signal.h>
+#include <stdlib.h>
+#include <termios.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -13,9 +15,11 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 
 #include "hil/harness/lockstep/lockstep_host.h"
+#include "hil/harness/lockstep/lockstep_shared.h"
 
 namespace hil::harness::lockstep {
 namespace {
@@ -162,6 +166,96 @@ TEST(LockstepClock, PollTimeoutAndMonotonicClockAreEmulated) {
   EXPECT_EQ(ReadAll(c.out), "0 250000000 20000000 1000000000000\n");
   ASSERT_EQ(turns.size(), 2u);
   EXPECT_EQ(turns[1], Time{} + std::chrono::milliseconds(270));
+}
+
+// A pty whose slave side reads raw bytes (as a serial link of hil's).
+struct Pty {
+  int master = -1;
+  std::string slave;
+  std::uint64_t rdev = 0;
+};
+Pty OpenRawPty() {
+  Pty p;
+  p.master = posix_openpt(O_RDWR | O_NOCTTY);
+  EXPECT_GE(p.master, 0);
+  EXPECT_EQ(grantpt(p.master), 0);
+  EXPECT_EQ(unlockpt(p.master), 0);
+  p.slave = ptsname(p.master);
+  const int s = open(p.slave.c_str(), O_RDWR | O_NOCTTY);
+  termios tio{};
+  tcgetattr(s, &tio);
+  cfmakeraw(&tio);
+  tcsetattr(s, TCSANOW, &tio);
+  close(s);
+  struct stat st {};
+  EXPECT_EQ(stat(p.slave.c_str(), &st), 0);
+  p.rdev = st.st_rdev;
+  return p;
+}
+
+TEST(LockstepClock, AGrantWakesOnlyTheThreadsWaitingOnTheLinksItTouched) {
+  LockstepHost host(TempFile("links"), kEpochNs);
+  Pty a = OpenRawPty(), b = OpenRawPty();
+  host.SetLinks({a.rdev, b.rdev});
+  Child ca = Spawn(host, {"/usr/bin/head", "-c", "5", a.slave});
+  Child cb = Spawn(host, {"/usr/bin/head", "-c", "5", b.slave});
+  close(ca.in);
+  close(cb.in);
+  ASSERT_TRUE(Attached(host, ca.pid));
+  ASSERT_TRUE(Attached(host, cb.pid));
+  ASSERT_TRUE(WaitIdle(host));
+  const std::uint64_t looks = host.stats().thread_looks;
+  ASSERT_EQ(write(a.master, "hello", 5), 5);
+  ASSERT_TRUE(host.NeedsWake(Time{}, std::uint64_t{1}));
+  host.Wake(Time{}, std::uint64_t{1} | kEveryGrant);  // link 0 touched
+  EXPECT_EQ(ReadAll(ca.out), "hello");
+  waitpid(ca.pid, nullptr, 0);
+  ASSERT_TRUE(WaitIdle(host));
+  // the reader of link 1 slept through it: it did not look at its descriptor again
+  EXPECT_EQ(host.stats().thread_looks, looks);
+  EXPECT_FALSE(host.NeedsWake(Time{}, std::uint64_t{1}));
+  ASSERT_EQ(write(b.master, "world", 5), 5);
+  host.Wake(Time{}, std::uint64_t{2} | kEveryGrant);
+  EXPECT_EQ(ReadAll(cb.out), "world");
+  waitpid(cb.pid, nullptr, 0);
+  close(a.master);
+  close(b.master);
+}
+
+TEST(LockstepClock, AThreadThatReadWithoutWritingDoesNotWakeAPipesReader) {
+  if (access("/usr/bin/python3", X_OK) != 0) GTEST_SKIP() << "no /usr/bin/python3";
+  LockstepHost host(TempFile("quiet"), kEpochNs);
+  Pty a = OpenRawPty();
+  host.SetLinks({a.rdev});
+  // reads link 0 twice, writing nothing in between; the other waits on its stdin, a pipe
+  Child reader = Spawn(host, {"/usr/bin/python3", "-c",
+                              "import os\n"
+                              "fd=os.open('" +
+                                  a.slave +
+                                  "', os.O_RDONLY|os.O_NOCTTY)\n"
+                                  "n=len(os.read(fd,5))+len(os.read(fd,5))\n"
+                                  "print(n)\n"});
+  Child piped = Spawn(host, {"/usr/bin/head", "-c", "1"});
+  ASSERT_TRUE(Attached(host, reader.pid));
+  ASSERT_TRUE(Attached(host, piped.pid));
+  ASSERT_TRUE(WaitIdle(host));
+  const std::uint64_t looks = host.stats().thread_looks;
+  ASSERT_EQ(write(a.master, "hello", 5), 5);
+  host.Wake(Time{}, std::uint64_t{1} | kEveryGrant);
+  ASSERT_TRUE(WaitIdle(host));
+  // the reader looked once (its second read waits); the pipe's reader was not asked to
+  EXPECT_EQ(host.stats().thread_looks, looks + 1);
+  ASSERT_EQ(write(a.master, "world", 5), 5);
+  host.Wake(Time{}, std::uint64_t{1} | kEveryGrant);
+  EXPECT_EQ(ReadAll(reader.out), "10\n");
+  waitpid(reader.pid, nullptr, 0);
+  ASSERT_EQ(write(piped.in, "x", 1), 1);
+  host.Wake();
+  EXPECT_EQ(ReadAll(piped.out), "x");
+  waitpid(piped.pid, nullptr, 0);
+  close(reader.in);
+  close(piped.in);
+  close(a.master);
 }
 
 }  // namespace

@@ -116,15 +116,16 @@ TEST(CanPacingVcanTest, RealtimeFramesLeaveOnScheduleAndAreCaptured) {
                           1e-3);
     }
     const auto& e = ep.schedule_error_us();
-    ASSERT_EQ(e.size(), schedule.size());
+    ASSERT_EQ(e.count(), schedule.size());
     std::printf(
         "HIL-FIGURE can_send_schedule_error_us frames=%zu span_s=%.1f p50=%.1f p99=%.1f max=%.1f\n",
-        e.size(), seconds, Pct(e, 50), Pct(e, 99), Pct(e, 100));
+        static_cast<std::size_t>(e.count()), seconds, e.Percentile(50), e.Percentile(99),
+        e.Percentile(100));
     std::printf(
         "HIL-FIGURE can_kernel_rx_schedule_error_us frames=%zu p50=%.1f p99=%.1f max=%.1f\n",
         rx_err_us.size(), Pct(rx_err_us, 50), Pct(rx_err_us, 99), Pct(rx_err_us, 100));
     // never early: a frame leaves at or after its time
-    EXPECT_GE(*std::min_element(e.begin(), e.end()), 0.0);
+    EXPECT_GE(e.min(), 0.0);
   }
   // both captures hold every frame, in bus order, at the time the bus carried it (issue 15.3):
   // the emulated time of its kernel receive stamp, the same stamp another socket (candump) got

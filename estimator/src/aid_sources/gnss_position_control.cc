@@ -54,9 +54,11 @@ UpdateResult Navigator::ControlGnssPosition(const GnssSample& g, const Eigen::Ve
   // a fix after a gap meets a covariance the configured noise may have grown too little
   bool after_gap = last_fix_seen_t_ && g.t - *last_fix_seen_t_ > rp.gap_after;
   last_fix_seen_t_ = g.t;
-  const bool step = rp.adaptive && CheckGnssStep(g, p);
+  const bool fades = rp.FadesToFixes();
+  const bool step = fades && CheckGnssStep(g, p);
   UpdateResult r = ekf_.UpdatePosition(p, g.pos_std_enu_m);
-  if (rp.adaptive && r.dof > 0) {
+  if (RejectSuspectRtkFix(g, r, p)) return r;
+  if (fades && r.dof > 0) {
     // the GNSS consistency check: a rejected step is the receiver's, not the model's
     if (glitch_since_ && (r.accepted || !InGnssGlitch(g.t))) {
       glitch_since_.reset();  // over, or lasting long enough to be believed
@@ -73,7 +75,7 @@ UpdateResult Navigator::ControlGnssPosition(const GnssSample& g, const Eigen::Ve
       return r;
     }
   }
-  if (!r.accepted && r.dof > 0 && rp.adaptive && std::isfinite(r.nis)) {
+  if (!r.accepted && r.dof > 0 && fades && std::isfinite(r.nis)) {
     const bool persistent =
         monitors_[kAidGnssPosition].consecutive_rejected() + 1 >= rp.reject_fade_count &&
         first_rejected_t_ && g.t - *first_rejected_t_ >= rp.reject_fade_after;

@@ -39,6 +39,8 @@ extern const KeySection kLidarSection;         // lidar/lidar_spec.cc
 extern const KeySection kReflectivitySection;  // spec_readers.cc
 extern const KeySection kRangefindersSection;  // rangefinders/rangefinders_spec.cc
 extern const KeySection kRangefinderUnitSection;
+extern const KeySection kZedF9pSection;  // zed_f9p/zed_f9p_spec.cc
+extern const KeySection kZedF9pConfigSection;
 
 namespace {
 
@@ -77,6 +79,8 @@ const KeySection* const kDeviceSections[] = {
     &kReflectivitySection,
     &kRangefindersSection,
     &kRangefinderUnitSection,
+    &kZedF9pSection,
+    &kZedF9pConfigSection,
 };
 
 }  // namespace

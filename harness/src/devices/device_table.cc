@@ -15,6 +15,7 @@ extern const DeviceKind kWt901cKind;        // wt901c/: the WT901C attitude sens
 extern const DeviceKind kRangefindersKind;  // rangefinders/: TF-Luna / TFmini-S units
 extern const DeviceKind kLidarKind;         // lidar/: the RPLIDAR
 extern const DeviceKind kRtkBaseKind;       // rtk_base/: RTK reference station and radio
+extern const DeviceKind kZedF9pKind;        // zed_f9p/: the ZED-F9P RTK rover
 extern const DeviceKind kWheelBaseKind;     // wheel_base/: the diff-drive base and its encoders
 extern const DeviceKind kSteeringEcuKind;   // steering_ecu/: the ISOBUS steering ECU
 
@@ -22,8 +23,8 @@ namespace {
 
 // The order is the devices' order in the run (their events at equal times go in this order).
 constexpr const DeviceKind* kTable[] = {
-    &kGnssReceiverKind, &kMcuKind,     &kUwbTagKind,    &kWt901cKind,      &kRangefindersKind,
-    &kLidarKind,        &kRtkBaseKind, &kWheelBaseKind, &kSteeringEcuKind,
+    &kGnssReceiverKind, &kMcuKind,     &kUwbTagKind, &kWt901cKind,    &kRangefindersKind,
+    &kLidarKind,        &kRtkBaseKind, &kZedF9pKind, &kWheelBaseKind, &kSteeringEcuKind,
 };
 
 }  // namespace

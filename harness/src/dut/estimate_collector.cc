@@ -93,7 +93,7 @@ void EstimateCollector::Consume(const std::string& line, std::int64_t wall_ns,
     NotASolution(line);
 }
 
-void EstimateCollector::AttachBus(std::function<const std::vector<CanFrame>&()> poll_bus,
+void EstimateCollector::AttachBus(std::function<std::vector<CanFrame>()> poll_bus,
                                   std::int64_t start_unix_ns) {
   poll_bus_ = std::move(poll_bus);
   bus_reader_ = std::make_unique<N2kBusReader>(start_unix_ns);
@@ -113,10 +113,9 @@ void EstimateCollector::Poll() {
 
 void EstimateCollector::Take() {
   if (poll_bus_) {
-    const std::vector<CanFrame>& frames = poll_bus_();
+    const std::vector<CanFrame> frames = poll_bus_();
     const std::int64_t now = link::RealtimePacer::MonotonicNs();
-    for (; bus_seen_ < frames.size(); ++bus_seen_) {
-      const CanFrame& f = frames[bus_seen_];
+    for (const CanFrame& f : frames) {
       if (!f.extended) continue;
       bus_last_ns_ = now;
       const std::string_view data(reinterpret_cast<const char*>(f.data.data()),

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <utility>
 
+#include "hil/harness/lockstep/lockstep_shared.h"
+
 namespace hil::harness {
 
 ClockedHostTurns::ClockedHostTurns(lockstep::LockstepHost& host, ClockedPacer& pacer,
@@ -19,9 +21,7 @@ std::optional<Time> ClockedHostTurns::NextTurn() const {
 
 Time ClockedHostTurns::NextAction() const {
   Time t = NextTurn().value_or(Time::max());
-  if (!arrivals_.empty()) t = std::min(t, arrivals_.front().t);
-  if (!bus_arrivals_.empty()) t = std::min(t, bus_arrivals_.front().t);
-  return t;
+  return std::min(t, arrivals_.Next());
 }
 
 bool ClockedHostTurns::BeforeEvent(Time t_event, Time t_end, EngineMonitor& monitor, DeviceIo& io,
@@ -32,16 +32,7 @@ bool ClockedHostTurns::BeforeEvent(Time t_event, Time t_end, EngineMonitor& moni
     if (!Turn(Time{}, io, true)) io.Refuse();
     return true;
   }
-  if (!arrivals_.empty() && arrivals_.front().t <= limit) {
-    DeliverHostBytes(arrivals_.front(), io, out);
-    arrivals_.pop_front();
-    return true;
-  }
-  if (!bus_arrivals_.empty() && bus_arrivals_.front().t <= limit) {
-    io.DeliverBusFrame(bus_arrivals_.front().t, bus_arrivals_.front().frame, out);
-    bus_arrivals_.pop_front();
-    return true;
-  }
+  if (arrivals_.DeliverBytes(limit, io, out) || arrivals_.DeliverFrame(limit, io, out)) return true;
   const std::optional<Time> t = NextTurn();
   if (!t || *t > limit) return false;
   if (Turn(*t, io)) {
@@ -54,13 +45,22 @@ bool ClockedHostTurns::BeforeEvent(Time t_event, Time t_end, EngineMonitor& moni
 
 bool ClockedHostTurns::Turn(Time t, DeviceIo& io, bool wake) {
   host_.SetNow(t);
-  const bool wrote = pacer_.WriteDue(t);
-  // every thread sleeps past t: the bytes wait for them in the pty, nothing runs, nothing to read
-  if (!wake && !host_.NeedsWake(t, wrote)) return true;
-  host_.Wake();
+  touched_ |= pacer_.WriteDue(t);
+  if (pacer_.TakeBusWritten()) touched_ |= lockstep::kOtherFd;
+  // every thread sleeps past t or waits on links untouched: the bytes wait for them in the pty,
+  // nothing runs, nothing to read
+  if (!wake && !host_.NeedsWake(t, touched_)) return true;
+  if (wake) {
+    host_.Wake();
+  } else {
+    host_.Wake(t, touched_ | lockstep::kEveryGrant);
+  }
+  touched_ = 0;
   if (!host_.WaitIdle(on_wait_)) return false;
-  ReadHosts(t, io);
-  if (io.devices().steering) ReadBus(t, io);
+  // room on a link read again: a thread waiting to write there looks at the next grant
+  arrivals_.ReadHosts(t, io, [this](const SerialEndpoint& ep) { touched_ |= LinkBitOf(&ep); });
+  // frames read off the bus: room for the sender's next
+  if (io.devices().steering && arrivals_.ReadBus(t, io) > 0) touched_ |= lockstep::kOtherFd;
   return true;
 }
 
@@ -73,34 +73,11 @@ bool ClockedHostTurns::Drain(DeviceIo& io) {
   return Turn(t, io, true);
 }
 
-void ClockedHostTurns::ReadHosts(Time t, DeviceIo& io) {
-  io.PollHostFds();
-  const EngineDevices& set = io.devices();
-  std::size_t k = 0;
-  for (std::size_t d = 0; d < set.devices.size(); ++d) {
-    for (std::size_t p = 0; p < set.endpoints[d].size(); ++p) {
-      const pollfd& pf = io.host_fds()[k++];
-      if (pf.fd >= 0 && pf.revents == 0) continue;
-      std::string rx = set.endpoints[d][p]->PollHost(t, true);
-      if (!rx.empty()) arrivals_.push_back({t, d, p, std::move(rx)});
-    }
-  }
-}
-
-void ClockedHostTurns::ReadBus(Time t, DeviceIo& io) {
-  io.PollBus();
-  if (CanEndpoint* can = io.devices().can) {
-    for (const CanFrame& f : can->TakeArrivals(t)) io.bus_frames().push_back(f);
-  }
-  for (const CanFrame& f : io.TakeUnrouted()) bus_arrivals_.push_back({t, f});
-}
-
-void ClockedHostTurns::DeliverHostBytes(const HostBytes& h, DeviceIo& io, DeviceOutput& out) {
-  const EngineDevices& set = io.devices();
-  const int port = static_cast<int>(h.port);
-  set.devices[h.device]->OnHostBytes(port, h.t, h.bytes, out);
-  set.endpoints[h.device][h.port]->set_baud(set.devices[h.device]->baud(port));
-  io.Dispatch(h.device, out);
+std::uint64_t ClockedHostTurns::LinkBitOf(const SerialEndpoint* ep) const {
+  const std::vector<SerialEndpoint*>& links = pacer_.endpoints();
+  const auto it = std::find(links.begin(), links.end(), ep);
+  return it == links.end() ? lockstep::kOtherFd
+                           : ClockedPacer::LinkBit(static_cast<std::size_t>(it - links.begin()));
 }
 
 }  // namespace hil::harness

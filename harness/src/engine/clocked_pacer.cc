@@ -4,6 +4,10 @@
 
 #include <algorithm>
 
+#include <sys/stat.h>
+
+#include "hil/harness/lockstep/lockstep_shared.h"
+
 namespace hil::harness {
 
 void ClockedPacer::Start(EngineDevices& devices) {
@@ -15,7 +19,9 @@ void ClockedPacer::Start(EngineDevices& devices) {
 
 bool ClockedPacer::Send(CanEndpoint* can, bool write, std::unique_lock<std::mutex>& lock) {
   (void)write, (void)lock;
-  if (can) can->SendAll();
+  if (!can) return true;
+  if (can->next_frame_time()) bus_written_ = true;
+  can->SendAll();
   return true;
 }
 
@@ -50,17 +56,36 @@ void AwaitHandOver(const SerialEndpoint& ep, std::size_t want) {
 
 }  // namespace
 
-bool ClockedPacer::WriteDue(Time t) {
-  bool any = false;
-  for (SerialEndpoint* ep : endpoints_) {
+std::uint64_t ClockedPacer::LinkBit(std::size_t k) {
+  return k < static_cast<std::size_t>(lockstep::kMaxLinks) ? std::uint64_t{1} << k
+                                                           : lockstep::kOtherFd;
+}
+
+std::vector<std::uint64_t> ClockedPacer::LinkDevices(
+    const std::vector<std::vector<std::unique_ptr<SerialEndpoint>>>& endpoints) {
+  std::vector<std::uint64_t> rdevs;
+  for (const auto& ports : endpoints) {  // Start's order
+    for (const auto& ep : ports) {
+      struct stat st {};
+      const bool tty = stat(ep->link_path().c_str(), &st) == 0 && S_ISCHR(st.st_mode);
+      rdevs.push_back(tty ? static_cast<std::uint64_t>(st.st_rdev) : 0);
+    }
+  }
+  return rdevs;
+}
+
+std::uint64_t ClockedPacer::WriteDue(Time t) {
+  std::uint64_t written = 0;
+  for (std::size_t k = 0; k < endpoints_.size(); ++k) {
+    SerialEndpoint* ep = endpoints_[k];
     const std::size_t n = ep->ChunksEndedBy(t);
     if (n == 0) continue;
     const std::size_t unread = ep->PendingToHost();
     const std::size_t sent = ep->WriteChunksOrDrop(n);
     if (sent > 0) AwaitHandOver(*ep, std::min(unread + sent, kHandOverBytes));
-    any = true;
+    written |= LinkBit(k);
   }
-  return any;
+  return written;
 }
 
 }  // namespace hil::harness

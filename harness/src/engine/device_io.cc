@@ -90,21 +90,37 @@ bool DeviceIo::PollHosts(Time t_host, DeviceOutput& out) {
   return replied;
 }
 
-const std::vector<CanFrame>& DeviceIo::PollBus() {
-  if (devices_.can) {
-    const Time t_bus = pacer_.BusTime(t_last_event_);
-    const std::unique_lock<std::mutex> lock = pacer_.LinksLock();
-    for (const CanFrame& f : devices_.can->PollBus(t_bus, pacer_.bus_stamp_clock()))
-      bus_frames_.push_back(f);
-  }
-  return bus_frames_;
+void DeviceIo::PollBus() {
+  if (!devices_.can) return;
+  const Time t_bus = pacer_.BusTime(t_last_event_);
+  const std::unique_lock<std::mutex> lock = pacer_.LinksLock();
+  for (const CanFrame& f : devices_.can->PollBus(t_bus, pacer_.bus_stamp_clock()))
+    bus_frames_.push_back(f);
 }
 
 std::vector<CanFrame> DeviceIo::TakeUnrouted() {
   std::vector<CanFrame> frames(bus_frames_.begin() + static_cast<std::ptrdiff_t>(bus_routed_),
                                bus_frames_.end());
   bus_routed_ = bus_frames_.size();
+  DropTakenBusFrames();
   return frames;
+}
+
+std::vector<CanFrame> DeviceIo::TakeUncollected() {
+  const std::size_t from = bus_collected_.value_or(0);
+  std::vector<CanFrame> frames(bus_frames_.begin() + static_cast<std::ptrdiff_t>(from),
+                               bus_frames_.end());
+  bus_collected_ = bus_frames_.size();
+  DropTakenBusFrames();
+  return frames;
+}
+
+void DeviceIo::DropTakenBusFrames() {
+  const std::size_t taken = std::min(bus_routed_, bus_collected_.value_or(bus_routed_));
+  if (taken == 0) return;
+  bus_frames_.erase(bus_frames_.begin(), bus_frames_.begin() + static_cast<std::ptrdiff_t>(taken));
+  bus_routed_ -= taken;
+  if (bus_collected_) *bus_collected_ -= taken;
 }
 
 void DeviceIo::DeliverBusFrame(Time t, const CanFrame& frame, DeviceOutput& out) {

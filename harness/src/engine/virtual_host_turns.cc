@@ -1,32 +1,19 @@
 #include "hil/harness/engine/virtual_host_turns.h"
 
 #include <algorithm>
-#include <utility>
+#include <optional>
 
 namespace hil::harness {
 
 VirtualHostTurns::VirtualHostTurns(VirtualGate& gate, Duration control_period)
     : gate_(gate), control_period_(control_period), next_control_turn_(Time{} + control_period) {}
 
-Time VirtualHostTurns::NextAction() const {
-  Time t = NextHostTurn();
-  if (!arrivals_.empty()) t = std::min(t, arrivals_.front().t);
-  if (!bus_arrivals_.empty()) t = std::min(t, bus_arrivals_.front().t);
-  return t;
-}
+Time VirtualHostTurns::NextAction() const { return std::min(NextHostTurn(), arrivals_.Next()); }
 
 bool VirtualHostTurns::BeforeEvent(Time t_event, Time t_end, EngineMonitor& monitor, DeviceIo& io,
                                    DeviceOutput& out) {
-  if (!arrivals_.empty() && arrivals_.front().t <= std::min(t_event, t_end)) {
-    DeliverHostBytes(arrivals_.front(), io, out);
-    arrivals_.pop_front();
-    return true;
-  }
-  if (!bus_arrivals_.empty() && bus_arrivals_.front().t <= std::min(t_event, t_end)) {
-    io.DeliverBusFrame(bus_arrivals_.front().t, bus_arrivals_.front().frame, out);
-    bus_arrivals_.pop_front();
-    return true;
-  }
+  const Time limit = std::min(t_event, t_end);
+  if (DeliverHostBytes(limit, io, out) || arrivals_.DeliverFrame(limit, io, out)) return true;
   const Time t_turn = NextHostTurn();
   if (t_turn > t_event || t_turn > t_end) return false;
   if (ControlTickAnswered(t_turn) && !monitor.ActsAtTurn(t_turn)) {
@@ -54,7 +41,7 @@ bool VirtualHostTurns::ControlTickAnswered(Time t) const {
     return false;
   if (std::any_of(answer_turns_.begin(), answer_turns_.end(), [t](Time a) { return a <= t; }))
     return false;
-  return !arrivals_.empty();
+  return arrivals_.has_bytes();
 }
 
 bool VirtualHostTurns::HostTurn(Time t, DeviceIo& io) {
@@ -78,8 +65,8 @@ bool VirtualHostTurns::HostTurn(Time t, DeviceIo& io) {
   // late in some runs).
   if (io.ReleaseHeld() && !io.SendAll()) return false;
   const Time t_rx = ArrivalTime(t, io);
-  ReadHosts(t_rx, io);
-  if (io.devices().steering) ReadBus(t_rx, io);  // open-loop runs read the bus as before
+  arrivals_.ReadHosts(t_rx, io);
+  if (io.devices().steering) arrivals_.ReadBus(t_rx, io);  // open-loop runs read the bus as before
   return true;
 }
 
@@ -97,46 +84,17 @@ Time VirtualHostTurns::ArrivalTime(Time t, DeviceIo& io) const {
   return t_rx;
 }
 
-void VirtualHostTurns::ReadHosts(Time t_rx, DeviceIo& io) {
-  io.PollHostFds();  // one poll() instead of a read() per port (it hands over bytes in flight too)
-  const EngineDevices& set = io.devices();
-  std::size_t k = 0;
-  for (std::size_t d = 0; d < set.devices.size(); ++d) {
-    for (std::size_t p = 0; p < set.endpoints[d].size(); ++p) {
-      const pollfd& pf = io.host_fds()[k++];
-      if (pf.fd >= 0 && pf.revents == 0) continue;  // nothing from the host on this port
-      std::string rx = set.endpoints[d][p]->PollHost(t_rx, true);
-      if (!rx.empty()) arrivals_.push_back({t_rx, d, p, std::move(rx)});
-    }
-  }
-}
-
-void VirtualHostTurns::ReadBus(Time t_rx, DeviceIo& io) {
-  io.PollBus();
-  // the controller's frames arrive now: the capture says so (read between turns, they would be
-  // stamped whenever the run happened to look)
-  if (CanEndpoint* can = io.devices().can) {
-    const std::unique_lock<std::mutex> lock = io.pacer().LinksLock();
-    for (const CanFrame& f : can->TakeArrivals(t_rx)) io.bus_frames().push_back(f);
-  }
-  for (const CanFrame& f : io.TakeUnrouted()) bus_arrivals_.push_back({t_rx, f});
-}
-
-void VirtualHostTurns::DeliverHostBytes(const HostBytes& h, DeviceIo& io, DeviceOutput& out) {
-  const EngineDevices& set = io.devices();
-  const int port = static_cast<int>(h.port);
-  set.devices[h.device]->OnHostBytes(port, h.t, h.bytes, out);
-  SerialEndpoint& ep = *set.endpoints[h.device][h.port];
-  ep.set_baud(set.devices[h.device]->baud(port));
-  const bool answered = !out.serial.empty();
-  io.Dispatch(h.device, out);
+bool VirtualHostTurns::DeliverHostBytes(Time limit, DeviceIo& io, DeviceOutput& out) {
+  const std::optional<HostArrivals::Delivered> h = arrivals_.DeliverBytes(limit, io, out);
+  if (!h) return false;
   io.SendAll();
   // the host's next turn: when the answer has left the UART (it is written at once)
-  if (answered) {
-    for (const auto& e : set.endpoints[h.device]) {
-      if (e->last_queued_end() > h.t) answer_turns_.push_back(e->last_queued_end());
+  if (h->answered) {
+    for (const auto& e : io.devices().endpoints[h->device]) {
+      if (e->last_queued_end() > h->t) answer_turns_.push_back(e->last_queued_end());
     }
   }
+  return true;
 }
 
 }  // namespace hil::harness

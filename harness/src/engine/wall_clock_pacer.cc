@@ -94,9 +94,10 @@ Time WallClockPacer::BusTime(Time t_last_event) const {
 }
 
 void WallClockPacer::RouteBusFrames(DeviceIo& io, DeviceOutput& out) {
+  // taken even when nothing listens to the bus, so that the frames do not pile up (issue 40)
+  const std::vector<CanFrame> frames = io.TakeUnrouted();
   if (!io.devices().steering) return;  // nothing listens to the bus
-  for (const CanFrame& f : io.TakeUnrouted())
-    io.DeliverBusFrame(std::max(f.t, io.t_last_event()), f, out);
+  for (const CanFrame& f : frames) io.DeliverBusFrame(std::max(f.t, io.t_last_event()), f, out);
 }
 
 }  // namespace hil::harness

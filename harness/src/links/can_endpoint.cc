@@ -104,7 +104,7 @@ void CanEndpoint::SendNext(const link::RealtimePacer& pacer) {
   const link::CanWireFrame w = link::FromDeviceFrame(f);
   const auto sent = port_.Send(w);
   if (!sent) return;  // it never left: counted in stats(), not captured
-  schedule_error_us_.push_back(static_cast<double>(*sent - scheduled) * 1e-3);
+  schedule_error_us_.Add(static_cast<double>(*sent - scheduled) * 1e-3);
   awaiting_echo_.push_back({w, f.t, *sent, false});
   ReadBus(f.t, &pacer, Duration::zero());  // capture it (and what came before) in bus order now
 }

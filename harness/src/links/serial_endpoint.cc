@@ -164,7 +164,7 @@ void SerialEndpoint::WriteNextByte(const link::RealtimePacer& pacer) {
   const std::int64_t wall = link::RealtimePacer::MonotonicNs();
   if (left) {
     ++bytes_sent_;
-    schedule_error_us_.push_back(static_cast<double>(wall - scheduled) * 1e-3);
+    schedule_error_us_.Add(static_cast<double>(wall - scheduled) * 1e-3);
   } else {
     ++bytes_dropped_unread_;
     if (attached) ++bytes_dropped_attached_;  // its input queue was full

@@ -39,8 +39,13 @@ bool ThreadAlive(int pid, int tid) {
   return state != 'Z' && state != 'X';
 }
 
-bool SlotIdle(const ThreadSlot& s, std::uint32_t change) {
-  return s.tid.load() == 0 || (s.state.load() == kWaiting && s.acked.load() == change);
+bool SlotIdle(const ThreadSlot& s) {
+  return s.tid.load() == 0 || (s.state.load() == kWaiting && s.acked.load() == s.seq.load());
+}
+
+long FutexWake(std::atomic<std::uint32_t>* word) {
+  return syscall(SYS_futex, reinterpret_cast<std::uint32_t*>(word), FUTEX_WAKE, INT_MAX, nullptr,
+                 nullptr, 0);
 }
 
 }  // namespace
@@ -74,18 +79,38 @@ void LockstepHost::SetNow(Time t) { shared_->now_ns.store((t - Time{}).count());
 
 Time LockstepHost::now() const { return Time{} + Duration(shared_->now_ns.load()); }
 
+void LockstepHost::SetLinks(const std::vector<std::uint64_t>& rdevs) {
+  const int n = static_cast<int>(std::min<std::size_t>(rdevs.size(), kMaxLinks));
+  for (int k = 0; k < n; ++k) shared_->link_rdev[k] = rdevs[static_cast<std::size_t>(k)];
+  shared_->link_count.store(n);
+}
+
+void LockstepHost::Grant(int i) {
+  ThreadSlot& s = shared_->slots[i];
+  s.seq.fetch_add(1);
+  FutexWake(&s.seq);
+}
+
 void LockstepHost::Wake() {
   ++stats_.grants;
-  shared_->change.fetch_add(1);
-  syscall(SYS_futex, reinterpret_cast<std::uint32_t*>(&shared_->change), FUTEX_WAKE, INT_MAX,
-          nullptr, nullptr, 0);
+  const int used = std::min(shared_->slots_used.load(), kMaxThreads);
+  for (int i = 0; i < used; ++i) {
+    if (shared_->slots[i].tid.load() != 0) Grant(i);
+  }
+}
+
+void LockstepHost::Wake(Time t, std::uint64_t touched) {
+  ++stats_.grants;
+  const int used = std::min(shared_->slots_used.load(), kMaxThreads);
+  for (int i = 0; i < used; ++i) {
+    if (Concerns(i, t, touched)) Grant(i);
+  }
 }
 
 std::size_t LockstepHost::Busy() const {
-  const std::uint32_t change = shared_->change.load();
   const int used = std::min(shared_->slots_used.load(), kMaxThreads);
   std::size_t busy = 0;
-  for (int i = 0; i < used; ++i) busy += SlotIdle(shared_->slots[i], change) ? 0 : 1;
+  for (int i = 0; i < used; ++i) busy += SlotIdle(shared_->slots[i]) ? 0 : 1;
   return busy;
 }
 
@@ -132,16 +157,17 @@ bool LockstepHost::WaitIdle(const WaitStep& on_wait) {
   return idle;
 }
 
-bool LockstepHost::NeedsWake(Time t, bool bytes_written) const {
-  const std::uint32_t change = shared_->change.load();
-  const std::int64_t t_ns = (t - Time{}).count();
+bool LockstepHost::Concerns(int i, Time t, std::uint64_t touched) const {
+  const ThreadSlot& s = shared_->slots[i];
+  if (s.tid.load() == 0) return false;
+  if (!SlotIdle(s) || s.deadline_ns.load() <= (t - Time{}).count()) return true;
+  return s.on_descriptors.load() != 0 && (s.links.load() & touched) != 0;
+}
+
+bool LockstepHost::NeedsWake(Time t, std::uint64_t touched) const {
   const int used = std::min(shared_->slots_used.load(), kMaxThreads);
   for (int i = 0; i < used; ++i) {
-    const ThreadSlot& s = shared_->slots[i];
-    if (!SlotIdle(s, change)) return true;
-    if (s.tid.load() == 0) continue;
-    if (s.deadline_ns.load() <= t_ns || (bytes_written && s.on_descriptors.load() != 0))
-      return true;
+    if (Concerns(i, t, touched)) return true;
   }
   return false;
 }
@@ -192,7 +218,10 @@ std::vector<LockstepHost::Process> LockstepHost::Processes() const {
 LockstepHost::Stats LockstepHost::stats() const {
   Stats s = stats_;
   const int used = std::min(shared_->slots_used.load(), kMaxThreads);
-  for (int i = 0; i < used; ++i) s.thread_waits += shared_->slots[i].waits.load();
+  for (int i = 0; i < used; ++i) {
+    s.thread_waits += shared_->slots[i].waits.load();
+    s.thread_looks += shared_->slots[i].looks.load();
+  }
   return s;
 }
 

@@ -21,6 +21,8 @@ long Readable(void* a) {
   return pl::Real().poll(&p, 1, 0);
 }
 
+std::uint64_t Links(void* a) { return pl::LinkBitOf(*static_cast<int*>(a)); }
+
 }  // namespace
 
 extern "C" ssize_t read(int fd, void* buf, size_t n) {
@@ -37,7 +39,7 @@ extern "C" ssize_t read(int fd, void* buf, size_t n) {
   }
   const int saved_errno = errno;
   int fd_arg = fd;
-  const long r = pl::Wait(Readable, &fd_arg, deadline);
+  const long r = pl::Wait(Readable, &fd_arg, deadline, Links);
   if (r == pl::kUnmanaged) return pl::Real().read(fd, buf, n);
   if (r == pl::kInterrupted) {
     errno = EINTR;

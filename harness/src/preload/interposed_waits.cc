@@ -7,6 +7,7 @@
 #include <signal.h>
 
 #include <cerrno>
+#include <cstdint>
 
 #include <sys/epoll.h>
 #include <sys/select.h>
@@ -16,7 +17,9 @@
 namespace {
 
 namespace pl = hil::preload;
+using hil::harness::lockstep::kEveryGrant;
 using hil::harness::lockstep::kNoDeadline;
+using hil::harness::lockstep::kOtherFd;
 
 std::int64_t DeadlineAfterMs(int timeout_ms) {
   return timeout_ms < 0 ? kNoDeadline
@@ -44,6 +47,18 @@ long PollReady(void* a) {
   auto* p = static_cast<PollArgs*>(a);
   return pl::Real().poll(p->fds, p->n, 0);
 }
+std::uint64_t PollLinks(void* a) {
+  auto* p = static_cast<PollArgs*>(a);
+  std::uint64_t links = 0;
+  for (nfds_t i = 0; i < p->n; ++i) {
+    if (p->fds[i].fd < 0) continue;
+    const std::uint64_t bit = pl::LinkBitOf(p->fds[i].fd);
+    links |= bit;
+    if (bit == kOtherFd && (p->fds[i].events & (POLLOUT | POLLWRNORM | POLLWRBAND)) != 0)
+      links |= kEveryGrant;  // room in a pipe hil's threads read
+  }
+  return links;
+}
 
 struct SelectArgs {
   int nfds;
@@ -57,6 +72,18 @@ long SelectReady(void* a) {
   if (s->e) *s->e = s->e0;
   timeval zero{0, 0};
   return pl::Real().select(s->nfds, s->r, s->w, s->e, &zero);
+}
+std::uint64_t SelectLinks(void* a) {
+  auto* s = static_cast<SelectArgs*>(a);
+  std::uint64_t links = 0;
+  for (int fd = 0; fd < s->nfds && fd < FD_SETSIZE; ++fd) {
+    const bool out = s->w && FD_ISSET(fd, &s->w0);
+    if (!out && !(s->r && FD_ISSET(fd, &s->r0)) && !(s->e && FD_ISSET(fd, &s->e0))) continue;
+    const std::uint64_t bit = pl::LinkBitOf(fd);
+    links |= bit;
+    if (bit == kOtherFd && out) links |= kEveryGrant;  // room in a pipe hil's threads read
+  }
+  return links;
 }
 SelectArgs MakeSelectArgs(int nfds, fd_set* r, fd_set* w, fd_set* e) {
   SelectArgs s{nfds, r, w, e, {}, {}, {}};
@@ -82,10 +109,11 @@ long EpollReady(void* a) {
 }
 
 // Waits with the signal mask `mask` in force (ppoll, pselect, epoll_pwait), if given.
-long WaitMasked(long (*ready)(void*), void* arg, std::int64_t deadline, const sigset_t* mask) {
+long WaitMasked(long (*ready)(void*), void* arg, std::int64_t deadline, const sigset_t* mask,
+                std::uint64_t (*links)(void*)) {
   sigset_t old;
   if (mask) pthread_sigmask(SIG_SETMASK, mask, &old);
-  const long r = pl::Wait(ready, arg, deadline);
+  const long r = pl::Wait(ready, arg, deadline, links);
   if (mask) pthread_sigmask(SIG_SETMASK, &old, nullptr);
   return r;
 }
@@ -97,7 +125,7 @@ extern "C" {
 int poll(pollfd* fds, nfds_t n, int timeout_ms) {
   if (timeout_ms == 0 || !pl::SharedState()) return pl::Real().poll(fds, n, timeout_ms);
   PollArgs a{fds, n};
-  const long r = pl::Wait(PollReady, &a, DeadlineAfterMs(timeout_ms));
+  const long r = pl::Wait(PollReady, &a, DeadlineAfterMs(timeout_ms), PollLinks);
   if (r == pl::kUnmanaged) return pl::Real().poll(fds, n, timeout_ms);
   return Answer(r);
 }
@@ -106,7 +134,7 @@ int ppoll(pollfd* fds, nfds_t n, const timespec* timeout, const sigset_t* mask) 
   const bool zero = timeout && timeout->tv_sec == 0 && timeout->tv_nsec == 0;
   if (zero || !pl::SharedState()) return pl::Real().ppoll(fds, n, timeout, mask);
   PollArgs a{fds, n};
-  const long r = WaitMasked(PollReady, &a, DeadlineAfter(timeout), mask);
+  const long r = WaitMasked(PollReady, &a, DeadlineAfter(timeout), mask, PollLinks);
   if (r == pl::kUnmanaged) return pl::Real().ppoll(fds, n, timeout, mask);
   return Answer(r);
 }
@@ -118,7 +146,7 @@ int select(int nfds, fd_set* r, fd_set* w, fd_set* e, timeval* timeout) {
   const std::int64_t deadline =
       timeout ? pl::EmulatedNowNs() + timeout->tv_sec * 1'000'000'000LL + timeout->tv_usec * 1000LL
               : kNoDeadline;
-  const long res = pl::Wait(SelectReady, &a, deadline);
+  const long res = pl::Wait(SelectReady, &a, deadline, SelectLinks);
   if (res == pl::kUnmanaged) return pl::Real().select(nfds, r, w, e, timeout);
   if (res == pl::kDeadline) ClearSets(a);
   if (res == pl::kDeadline && timeout) *timeout = timeval{0, 0};  // Linux: the time left
@@ -130,7 +158,7 @@ int pselect(int nfds, fd_set* r, fd_set* w, fd_set* e, const timespec* timeout,
   const bool zero = timeout && timeout->tv_sec == 0 && timeout->tv_nsec == 0;
   if (zero || !pl::SharedState()) return pl::Real().pselect(nfds, r, w, e, timeout, mask);
   SelectArgs a = MakeSelectArgs(nfds, r, w, e);
-  const long res = WaitMasked(SelectReady, &a, DeadlineAfter(timeout), mask);
+  const long res = WaitMasked(SelectReady, &a, DeadlineAfter(timeout), mask, SelectLinks);
   if (res == pl::kUnmanaged) return pl::Real().pselect(nfds, r, w, e, timeout, mask);
   if (res == pl::kDeadline) ClearSets(a);
   return Answer(res);
@@ -149,7 +177,7 @@ int epoll_pwait(int epfd, epoll_event* events, int max, int timeout_ms, const si
   if (timeout_ms == 0 || !pl::SharedState())
     return pl::Real().epoll_pwait(epfd, events, max, timeout_ms, mask);
   EpollArgs a{epfd, events, max};
-  const long r = WaitMasked(EpollReady, &a, DeadlineAfterMs(timeout_ms), mask);
+  const long r = WaitMasked(EpollReady, &a, DeadlineAfterMs(timeout_ms), mask, nullptr);
   if (r == pl::kUnmanaged) return pl::Real().epoll_pwait(epfd, events, max, timeout_ms, mask);
   return Answer(r);
 }

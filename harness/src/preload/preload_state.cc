@@ -6,6 +6,7 @@
 #include <pthread.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <climits>
 #include <cstdlib>
@@ -13,6 +14,7 @@
 
 #include <linux/futex.h>
 #include <sys/mman.h>
+#include <sys/stat.h>
 #include <sys/syscall.h>
 
 namespace hil::preload {
@@ -25,6 +27,12 @@ bool g_resolved = false;
 pthread_key_t g_slot_key;
 // the calling thread's slot (initial-exec: no allocation on first use in a preloaded library)
 __attribute__((tls_model("initial-exec"))) thread_local lk::ThreadSlot* t_slot = nullptr;
+// this process's /proc/self/io (its `syscw`: write calls of all its threads), -1: none
+int g_io_fd = -1;
+// the count the calling thread saw at its last wait, and whether it closed, shut down or sent
+// since (NoteTouched)
+__attribute__((tls_model("initial-exec"))) thread_local std::uint64_t t_syscw = 0;
+__attribute__((tls_model("initial-exec"))) thread_local bool t_touched = true;
 
 template <class F>
 void Resolve(F& f, const char* name) {
@@ -44,6 +52,11 @@ void ResolveAll() {
   Resolve(g_real.epoll_wait, "epoll_wait");
   Resolve(g_real.epoll_pwait, "epoll_pwait");
   Resolve(g_real.read, "read");
+  Resolve(g_real.close, "close");
+  Resolve(g_real.shutdown, "shutdown");
+  Resolve(g_real.send, "send");
+  Resolve(g_real.sendto, "sendto");
+  Resolve(g_real.sendmsg, "sendmsg");
   g_resolved = true;
 }
 
@@ -54,6 +67,74 @@ long Futex(std::atomic<std::uint32_t>* word, int op, std::uint32_t val) {
 void NotifyHil() {
   g_shared->host_wake.fetch_add(1);
   if (g_shared->hil_waiting.load() != 0) Futex(&g_shared->host_wake, FUTEX_WAKE, INT_MAX);
+}
+
+// Whether every claimed slot is idle (hil's test, lockstep_host.cc): waiting, and looked at its
+// condition since it was last asked to.
+bool AllIdle() {
+  const int used = std::min(g_shared->slots_used.load(), lk::kMaxThreads);
+  for (int i = 0; i < used; ++i) {
+    const lk::ThreadSlot& s = g_shared->slots[i];
+    if (s.tid.load() != 0 && (s.state.load() != lk::kWaiting || s.acked.load() != s.seq.load()))
+      return false;
+  }
+  return true;
+}
+
+// A thread that has acknowledged wakes hil only when that made the programs idle: hil wants
+// nothing else (each wake it got before cost a context switch both ways, several a turn). Every
+// access is sequentially consistent, so of threads that acknowledge at the same time the last
+// one sees the others' acknowledgements and wakes hil; hil's wait has a timeout besides.
+void NotifyHilIfIdle() {
+  g_shared->host_wake.fetch_add(1);
+  if (g_shared->hil_waiting.load() != 0 && AllIdle())
+    Futex(&g_shared->host_wake, FUTEX_WAKE, INT_MAX);
+}
+
+void OpenIo() {
+  if (g_io_fd >= 0) g_real.close(g_io_fd);
+  g_io_fd = open("/proc/self/io", O_RDONLY | O_CLOEXEC);
+}
+
+// Whether the calling thread may have written to a descriptor another program waits for since
+// its last wait: this process's write count moved (any thread's write, writev, pwrite …, also
+// those the C library makes itself), or it closed, shut down or sent (NoteTouched). When the
+// count cannot be read: yes.
+bool WroteSinceLastWait() {
+  char buf[256];
+  const ssize_t n = g_io_fd >= 0 ? pread(g_io_fd, buf, sizeof buf - 1, 0) : -1;
+  if (n <= 0) return true;
+  buf[n] = '\0';
+  const char* field = std::strstr(buf, "syscw: ");
+  if (!field) return true;
+  const std::uint64_t syscw = std::strtoull(field + 7, nullptr, 10);
+  const bool wrote = syscw != t_syscw || t_touched;
+  t_syscw = syscw;
+  t_touched = false;
+  return wrote;
+}
+
+// Asks the other waiting threads whose condition what this thread did may have met to look again:
+// after a write (WroteSinceLastWait), those waiting for input on descriptors other than hil's
+// links (a pipe another program writes) and those of its own process (they share its
+// descriptors); in any case those waiting for room to write on such descriptors (a read makes
+// room). A thread waiting only for hil's links or a deadline is left asleep: only hil changes
+// what it waits for.
+void AskOthersToLook(const lk::ThreadSlot* self) {
+  const std::int32_t pid = self->pid.load();
+  const bool wrote = WroteSinceLastWait();
+  const int used = std::min(g_shared->slots_used.load(), lk::kMaxThreads);
+  for (int i = 0; i < used; ++i) {
+    lk::ThreadSlot& s = g_shared->slots[i];
+    if (&s == self || s.tid.load() == 0 || s.state.load() != lk::kWaiting) continue;
+    if (s.on_descriptors.load() == 0) continue;
+    const std::uint64_t links = s.links.load();
+    const bool concerned = (links & lk::kEveryGrant) != 0 ||
+                           (wrote && ((links & lk::kOtherFd) != 0 || s.pid.load() == pid));
+    if (!concerned) continue;
+    s.seq.fetch_add(1);
+    Futex(&s.seq, FUTEX_WAKE, INT_MAX);
+  }
 }
 
 void FreeSlot(lk::ThreadSlot* s) {
@@ -109,7 +190,11 @@ void RegisterProcess() {
   }
 }
 
-void AfterForkInChild() { t_slot = nullptr; }  // a child counts from its own first wait
+void AfterForkInChild() {
+  t_slot = nullptr;  // a child counts from its own first wait
+  t_touched = true;
+  if (g_shared) OpenIo();  // its own write count
+}
 
 lk::ThreadSlot* Slot() {
   if (!SharedState()) return nullptr;
@@ -137,6 +222,7 @@ __attribute__((constructor)) void Load() {
   if (pthread_key_create(&g_slot_key, OnThreadExit) != 0) return;
   pthread_atfork(nullptr, nullptr, AfterForkInChild);
   g_shared = s;
+  OpenIo();
   RegisterProcess();
   Slot();  // the main thread runs from now on: hil waits until it first waits
   NotifyHil();
@@ -154,6 +240,12 @@ __attribute__((destructor)) void Unload() {
 }
 
 }  // namespace
+
+void NoteTouched() { t_touched = true; }
+
+void ForgetDescriptor(int fd) {
+  if (fd >= 0 && fd == g_io_fd) g_io_fd = -1;
+}
 
 const RealFunctions& Real() {
   if (!g_resolved) ResolveAll();
@@ -206,7 +298,19 @@ timespec ToTimespec(std::int64_t ns) {
   return ts;
 }
 
-long Wait(long (*ready)(void* arg), void* arg, std::int64_t deadline_ns) {
+std::uint64_t LinkBitOf(int fd) {
+  const int n = std::min(g_shared->link_count.load(), lk::kMaxLinks);
+  if (n == 0) return lk::kOtherFd;
+  struct stat st {};
+  if (fstat(fd, &st) != 0 || !S_ISCHR(st.st_mode)) return lk::kOtherFd;
+  for (int k = 0; k < n; ++k) {
+    if (g_shared->link_rdev[k] == st.st_rdev) return std::uint64_t{1} << k;
+  }
+  return lk::kOtherFd;
+}
+
+long Wait(long (*ready)(void* arg), void* arg, std::int64_t deadline_ns,
+          std::uint64_t (*links)(void* arg)) {
   lk::ThreadSlot* s = Slot();
   if (!s) return kUnmanaged;
   const int saved_errno = errno;
@@ -214,14 +318,14 @@ long Wait(long (*ready)(void* arg), void* arg, std::int64_t deadline_ns) {
   if (const long r = ready ? ready(arg) : 0; r != 0) return r;
   if (deadline_ns != lk::kNoDeadline && g_shared->now_ns.load() >= deadline_ns) return kDeadline;
   s->deadline_ns.store(deadline_ns);
+  s->links.store(!ready ? 0 : links ? links(arg) : lk::kAnything);
   s->on_descriptors.store(ready ? 1 : 0);
   s->state.store(lk::kWaiting);
   s->waits.fetch_add(1);
-  // what this thread did before it waits may be what another waits for: everyone looks again
-  g_shared->change.fetch_add(1);
-  Futex(&g_shared->change, FUTEX_WAKE, INT_MAX);
+  // what this thread did before it waits may be what another waits for: those look again
+  AskOthersToLook(s);
   for (;;) {
-    const std::uint32_t c = g_shared->change.load();
+    const std::uint32_t c = s->seq.load();
     const long r = ready ? ready(arg) : 0;
     if (r != 0) {
       s->state.store(lk::kRunning);
@@ -237,8 +341,9 @@ long Wait(long (*ready)(void* arg), void* arg, std::int64_t deadline_ns) {
       return kUnmanaged;  // hil paces the run the old way: the real call waits
     }
     s->acked.store(c);
-    NotifyHil();
-    if (Futex(&g_shared->change, FUTEX_WAIT, c) != 0 && errno == EINTR) {
+    s->looks.fetch_add(1);
+    NotifyHilIfIdle();
+    if (Futex(&s->seq, FUTEX_WAIT, c) != 0 && errno == EINTR) {
       s->state.store(lk::kRunning);
       return kInterrupted;
     }

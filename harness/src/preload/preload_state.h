@@ -11,6 +11,7 @@
 
 #include <sys/epoll.h>
 #include <sys/select.h>
+#include <sys/socket.h>
 #include <sys/types.h>
 
 #include "hil/harness/lockstep/lockstep_shared.h"
@@ -31,6 +32,11 @@ struct RealFunctions {
   int (*epoll_wait)(int, epoll_event*, int, int);
   int (*epoll_pwait)(int, epoll_event*, int, int, const sigset_t*);
   ssize_t (*read)(int, void*, size_t);
+  int (*close)(int);
+  int (*shutdown)(int, int);
+  ssize_t (*send)(int, const void*, size_t, int);
+  ssize_t (*sendto)(int, const void*, size_t, int, const sockaddr*, socklen_t);
+  ssize_t (*sendmsg)(int, const msghdr*, int);
 };
 
 /// The real functions (resolved at load; a call before that resolves them first).
@@ -58,10 +64,24 @@ enum WaitEnd : long {
   kInterrupted = -1001,  ///< a signal arrived (the caller returns EINTR)
 };
 
+/// Notes that the calling thread did something that may meet another program's wait and that
+/// the kernel's write count (/proc/self/io `syscw`) does not show: a close, shutdown or send on a
+/// socket (interposed_sends.cc).
+void NoteTouched();
+/// The program closes `fd`: if it is the library's own /proc/self/io, the library no longer uses
+/// it (and takes every wait for one after a write from then on).
+void ForgetDescriptor(int fd);
+
+/// The bit of descriptor `fd` in a slot's `links` mask (lockstep_shared.h): its link's, or
+/// kOtherFd for anything that is not one of hil's links (one fstat).
+std::uint64_t LinkBitOf(int fd);
+
 /// Waits in emulated time until `ready(arg)` (a non-blocking look at descriptors: > 0 met, −1
 /// failed with errno, 0 not yet; null: a sleep, never met) or until emulated time reaches
-/// `deadline_ns` (kNoDeadline: none); see the protocol in lockstep_shared.h. Returns ready's
-/// answer or a WaitEnd.
-long Wait(long (*ready)(void* arg), void* arg, std::int64_t deadline_ns);
+/// `deadline_ns` (kNoDeadline: none); see the protocol in lockstep_shared.h. `links(arg)` names
+/// the links the descriptors are (LinkBitOf each; null: any, kAnything), asked once the wait
+/// blocks. Returns ready's answer or a WaitEnd.
+long Wait(long (*ready)(void* arg), void* arg, std::int64_t deadline_ns,
+          std::uint64_t (*links)(void* arg) = nullptr);
 
 }  // namespace hil::preload

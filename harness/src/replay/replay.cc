@@ -131,11 +131,9 @@ void WaitUntilRead(const DeviceSet& set) {
 ReplayResult ResultOf(const DeviceSet& set, const link::RealtimePacer& pacer) {
   ReplayResult result;
   result.wall_start_ns = pacer.WallNsOf(Time{});
-  for (const auto& ep : set.endpoints.front()) {
-    const std::vector<double>& e = ep->schedule_error_us();
-    result.byte_schedule_error_us.insert(result.byte_schedule_error_us.end(), e.begin(), e.end());
-  }
-  result.bytes = result.byte_schedule_error_us.size();
+  for (const auto& ep : set.endpoints.front())
+    result.byte_schedule_error_us.Merge(ep->schedule_error_us());
+  result.bytes = result.byte_schedule_error_us.count();
   if (set.can) {
     result.frames = set.can->stats().frames_sent;
     result.frames_failed = set.can->stats().send_failures + set.can->stats().send_queue_full;

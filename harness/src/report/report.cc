@@ -410,6 +410,7 @@ void WriteReportJson(const RunReport& r, const std::string& path) {
     j["tracking"]["faults"] = FaultPathDeviationsJson(r.tracking_faults);
   }
   if (r.pass_to_pass) j["pass_to_pass"] = PassToPassJson(*r.pass_to_pass);
+  if (r.rtk_rover) j["rtk_rover"] = RtkRoverJson(*r.rtk_rover);
   if (r.closed_loop) {
     j["closed_loop"] = ClosedLoopJson(*r.closed_loop);
     if (r.closed_loop->steering_ecu)

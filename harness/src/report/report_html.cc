@@ -255,6 +255,7 @@ void WriteReportHtml(const RunReport& r, const ReportSeries& s, const RunHeader&
   AppendAccuracyHtml(h, r);
   AppendClosedLoopHtml(h, r);
   if (r.pass_to_pass) AppendPassToPassHtml(h, *r.pass_to_pass);
+  if (r.rtk_rover) AppendRtkRoverHtml(h, *r.rtk_rover);
   AppendOutagesHtml(h, r);
   AppendFaultEffectsHtml(h, r, s);
   AppendHealthHtml(h, r);

@@ -154,25 +154,25 @@ nlohmann::json RealtimeThreadsJson(
 }
 
 void WriteScheduleErrors(const ScheduleRecord& record, const std::string& path) {
-  static const std::vector<double> kNone;
+  static const QuantileSketch kNone;
   nlohmann::json links = nlohmann::json::array();
   for (const ScheduleRecord::Link& l : record.serial) {
-    const std::vector<double>& e = l.error_us ? *l.error_us : kNone;
-    if (e.empty() && l.bytes_dropped_unread == 0) continue;
+    const QuantileSketch& e = l.error_us ? *l.error_us : kNone;
+    if (e.count() == 0 && l.bytes_dropped_unread == 0) continue;
     links.push_back({{"link", l.name},
-                     {"bytes", e.size()},
+                     {"bytes", e.count()},
                      {"bytes_dropped_unread", l.bytes_dropped_unread},
-                     {"p50_us", Percentile(e, 50)},
-                     {"p99_us", Percentile(e, 99)},
-                     {"max_us", Percentile(e, 100)}});
+                     {"p50_us", e.Percentile(50)},
+                     {"p99_us", e.Percentile(99)},
+                     {"max_us", e.Percentile(100)}});
   }
-  if (record.can && record.can->error_us && !record.can->error_us->empty()) {
-    const std::vector<double>& e = *record.can->error_us;
+  if (record.can && record.can->error_us && record.can->error_us->count() > 0) {
+    const QuantileSketch& e = *record.can->error_us;
     links.push_back({{"link", record.can->name},
-                     {"frames", e.size()},
-                     {"p50_us", Percentile(e, 50)},
-                     {"p99_us", Percentile(e, 99)},
-                     {"max_us", Percentile(e, 100)}});
+                     {"frames", e.count()},
+                     {"p50_us", e.Percentile(50)},
+                     {"p99_us", e.Percentile(99)},
+                     {"max_us", e.Percentile(100)}});
   }
   if (links.empty() && record.threads.empty()) return;
   nlohmann::json out{{"threads", RealtimeThreadsJson(record.threads)}, {"links", links}};

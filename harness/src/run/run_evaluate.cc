@@ -130,12 +130,13 @@ void CountLinksAndDevices(RunContext& ctx) {
       report.gnss_bytes += ep->uart().bytes_sent();
       report.gnss_messages_dropped += ep->uart().messages_dropped();
       const std::uint64_t dropped = ep->bytes_dropped_unread();
-      if (free_running && ctx.HostReads(*ep) && dropped > 0 && ep->schedule_error_us().empty())
+      if (free_running && ctx.HostReads(*ep) && dropped > 0 && ep->schedule_error_us().count() == 0)
         report.problems.push_back("the estimator never read " + ep->link_name() + " (all " +
                                   std::to_string(dropped) + " bytes sent were dropped unread)");
     }
   }
   if (ctx.set.can) AddCanBusReport(*ctx.set.can, ctx.collector->bus_frames_per_pgn(), report);
+  if (ctx.set.rover) report.rtk_rover = MakeRtkRoverReport(*ctx.set.rover);
   std::uint64_t resets = 0;
   for (const auto& dev : ctx.set.devices) resets += dev->statistics().resets;
   const std::vector<Fault>& faults = ctx.scenario.faults.faults;

@@ -210,9 +210,9 @@ void Execute(RunContext& ctx, RunWatchdog& watchdog) {
   ctx.baseline.emplace(ctx.set, &ctx.fault_recorder, ctx.fixes_csv);
   if (scenario.estimator.output == EstimatorOutput::kN2kSocketcan) {
     Engine& engine = *ctx.engine;
-    ctx.collector->AttachBus(
-        [&engine]() -> const std::vector<CanFrame>& { return engine.PollBus(); },
-        scenario.start_unix_ns);
+    engine.KeepBusFramesForCollector();
+    ctx.collector->AttachBus([&engine] { return engine.TakeBusFramesForCollector(); },
+                             scenario.start_unix_ns);
   }
   // the truth for the evaluation, sampled on a thread of its own as the run goes (truth_table.h)
   ctx.truth_builder.emplace(scenario.truth);

@@ -30,12 +30,12 @@ std::vector<HeaderDevice> Devices(const Scenario& s) {
 std::vector<HeaderLink> Links(const RunContext& ctx) {
   std::vector<HeaderLink> out;
   if (ctx.pacer && ctx.pacer->stepping() == Stepping::kVirtual) return out;
-  const auto add = [&out](const std::string& name, const std::vector<double>& e, const char* unit,
+  const auto add = [&out](const std::string& name, const QuantileSketch& e, const char* unit,
                           std::uint64_t dropped) {
-    if (e.empty() && dropped == 0) return;
-    HeaderLink l{name, e.size(), unit, std::nullopt, std::nullopt, std::nullopt, dropped};
-    if (!e.empty())
-      l.p50_us = Percentile(e, 50), l.p99_us = Percentile(e, 99), l.max_us = Percentile(e, 100);
+    if (e.count() == 0 && dropped == 0) return;
+    HeaderLink l{name, e.count(), unit, std::nullopt, std::nullopt, std::nullopt, dropped};
+    if (e.count() > 0)
+      l.p50_us = e.Percentile(50), l.p99_us = e.Percentile(99), l.max_us = e.Percentile(100);
     out.push_back(l);
   };
   for (const auto& ports : ctx.set.endpoints) {

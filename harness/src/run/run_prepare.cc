@@ -14,6 +14,7 @@
 #include "hil/harness/devices/device_kind.h"
 #include "hil/harness/devices/navd_conf.h"
 #include "hil/harness/dut/shell_substitute.h"
+#include "hil/harness/engine/clocked_pacer.h"
 #include "hil/harness/engine/lockstep_pacer.h"
 #include "hil/harness/engine/wall_clock_pacer.h"
 #include "hil/harness/report/run_outputs.h"
@@ -126,6 +127,8 @@ void MakeSharedClock(RunContext& ctx) {
         "--lockstep: libhil_lockstep.so is neither beside hil nor in ../lib/hil/preload (build the "
         "hil_harness_preload target, or install hil)");
   ctx.shared_clock.emplace(ctx.dir + "/lockstep.shm", ctx.scenario.start_unix_ns);
+  // a thread waiting only on links hil did not touch sleeps through a grant
+  ctx.shared_clock->SetLinks(ClockedPacer::LinkDevices(ctx.set.endpoints));
 }
 
 void StartEstimator(RunContext& ctx, const std::string& command) {

@@ -1,4 +1,4 @@
-#include "hil/harness/eval/quantile_sketch.h"
+#include "hil/harness/core/quantile_sketch.h"
 
 #include <cmath>
 #include <random>
@@ -57,6 +57,37 @@ TEST(QuantileSketchTest, WhatItHoldsDoesNotGrowWithTheNumberOfValues) {
   EXPECT_EQ(q.count(), 5'000'000u);
   EXPECT_LT(q.retained(), 10'000u);
   EXPECT_LT(q.retained(), at_1e5 + at_1e5 / 2);
+}
+
+// replay merges its links' schedule errors (replay.h): the percentiles of both sets' values, exact
+// while they fit, within the accuracy when either sketches (negative errors included: early bytes)
+TEST(QuantileSketchTest, AMergeHasThePercentilesOfBothSets) {
+  std::vector<double> a = LogNormalValues(3000, 4), b = LogNormalValues(150000, 5);
+  for (std::size_t i = 0; i < b.size(); i += 7) b[i] = -b[i];
+  QuantileSketch small_a(5000), small_b(5000), big_a(1000), big_b(1000);
+  for (const double x : a) small_a.Add(x), big_a.Add(x);
+  for (const double x : std::vector<double>(b.begin(), b.begin() + 1500)) small_b.Add(x);
+  for (const double x : b) big_b.Add(x);
+  std::vector<double> exact_both = a;
+  exact_both.insert(exact_both.end(), b.begin(), b.begin() + 1500);
+  small_a.Merge(small_b);
+  ASSERT_TRUE(small_a.exact());
+  EXPECT_EQ(small_a.count(), exact_both.size());
+  for (const double pct : {0.0, 50.0, 99.0, 100.0})
+    EXPECT_EQ(small_a.Percentile(pct), Percentile(exact_both, pct)) << pct;
+  std::vector<double> all = a;
+  all.insert(all.end(), b.begin(), b.end());
+  big_a.Merge(big_b);
+  ASSERT_FALSE(big_a.exact());
+  EXPECT_EQ(big_a.count(), all.size());
+  EXPECT_EQ(big_a.min(), Percentile(all, 0));
+  EXPECT_EQ(big_a.max(), Percentile(all, 100));
+  for (const double pct : {1.0, 10.0, 50.0, 95.0, 99.0}) {
+    const double exact = Percentile(all, pct);
+    EXPECT_NEAR(big_a.Percentile(pct), exact,
+                std::abs(exact) * QuantileSketch::kRelativeAccuracy * 1.01)
+        << pct;
+  }
 }
 
 TEST(QuantileSketchTest, TheCdfHasAtMostTheNumberOfPointsAsked) {

@@ -119,7 +119,7 @@ TEST(ReplayTest, RealtimeCaptureHasPerByteWallTimes) {
       total += m.bytes.size();
     }
     while (ep.next_byte_time()) ep.WriteNextByte(pacer);
-    EXPECT_EQ(ep.schedule_error_us().size(), total);
+    EXPECT_EQ(ep.schedule_error_us().count(), total);
     host.WaitFor(total);
   }
   host.Stop();
@@ -220,8 +220,8 @@ TEST(ReplayTest, ReplayedCaptureIsIdenticalInBytesAndOnTime) {
       "HIL-FIGURE pty_replay_arrival_error_us bytes=%zu p50=%.1f p99=%.1f max=%.1f (writer: "
       "p50=%.1f p99=%.1f max=%.1f)\n",
       err_us.size(), Pct(err_us, 50), Pct(err_us, 99), Pct(err_us, 100),
-      Pct(r.byte_schedule_error_us, 50), Pct(r.byte_schedule_error_us, 99),
-      Pct(r.byte_schedule_error_us, 100));
+      r.byte_schedule_error_us.Percentile(50), r.byte_schedule_error_us.Percentile(99),
+      r.byte_schedule_error_us.Percentile(100));
   // stated tolerance (shared, loaded CI machine): never early beyond the reader's clock, median
   // within 2 ms, 99 % within 20 ms of the recorded time
   EXPECT_GT(Pct(err_us, 0), -100.0);

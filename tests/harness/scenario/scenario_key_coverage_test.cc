@@ -100,6 +100,8 @@ std::map<std::string, std::vector<std::string>> Contexts() {
       {"lidar.reflectivity", {"greenhouse: {}\nlidar: {reflectivity: {@}}\n"}},
       {"rangefinders", {"greenhouse: {}\nrangefinders: {@}\n"}},
       {"rangefinders.units[]", {"greenhouse: {}\nrangefinders: {units: [{@}]}\n"}},
+      {"zed_f9p", {"rtk_base: {}\nzed_f9p: {@}\n"}},
+      {"zed_f9p.config", {"rtk_base: {}\nzed_f9p: {config: {@}}\n"}},
   };
   for (const char* type : {"line", "ab_line", "waypoints", "rectangle", "boustrophedon", "circle"})
     c["path"].push_back(std::string("path: {type: ") + type + ", @}\n");

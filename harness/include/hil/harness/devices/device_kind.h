@@ -54,6 +54,8 @@ struct DeviceBuild {
   const actuator::BaseSerialDevice* base = nullptr;
   /// Closed loop on the isobus channel: the steering ECU (owned by `devices`), null otherwise.
   const actuator::IsobusSteeringDevice* steering = nullptr;
+  /// The ZED-F9P rover (owned by `devices`), null without one: its RTK timeline for the report.
+  const rtk::ZedF9pDevice* rover = nullptr;
 };
 
 /// Where in navd.conf a row's writer is called (navd_conf.cc writes the rest around them):

@@ -31,10 +31,9 @@ class EstimateCollector {
                     link::PtyPort* nav_pty, const std::string& raw_path,
                     RunDiagnostics* diagnostics);
 
-  /// Output n2k_socketcan: `poll_bus` polls the CAN bus and returns every frame others put on it so
-  /// far (the scheduler's list); Poll() decodes the new ones (N2kBusReader) into records.
-  void AttachBus(std::function<const std::vector<CanFrame>&()> poll_bus,
-                 std::int64_t start_unix_ns);
+  /// Output n2k_socketcan: `poll_bus` polls the CAN bus and returns the frames others put on it
+  /// since its last call; Poll() decodes them (N2kBusReader) into records.
+  void AttachBus(std::function<std::vector<CanFrame>()> poll_bus, std::int64_t start_unix_ns);
   /// Takes what arrived since the last call.
   void Poll();
   /// Output n2k_socketcan: frames seen per PGN (empty otherwise).
@@ -110,9 +109,8 @@ class EstimateCollector {
   RunDiagnostics* diagnostics_;
   std::function<void(const std::string&)> observer_;
   JsonObserver json_observer_;
-  std::function<const std::vector<CanFrame>&()> poll_bus_;
+  std::function<std::vector<CanFrame>()> poll_bus_;
   std::unique_ptr<N2kBusReader> bus_reader_;
-  std::size_t bus_seen_ = 0;
   std::int64_t bus_last_ns_ = 0;
 };
 

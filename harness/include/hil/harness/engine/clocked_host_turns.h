@@ -14,12 +14,13 @@
 /// program that writes, sleeps 250 ms or times out a poll thus does so at the same emulated time
 /// in every run, whatever the machine's load.
 
-#include <deque>
-#include <string>
+#include <cstdint>
 
 #include "hil/harness/engine/clocked_pacer.h"
+#include "hil/harness/engine/host_arrivals.h"
 #include "hil/harness/engine/host_turns.h"
 #include "hil/harness/lockstep/lockstep_host.h"
+#include "hil/harness/lockstep/lockstep_shared.h"
 
 namespace hil::harness {
 
@@ -42,31 +43,23 @@ class ClockedHostTurns final : public HostTurns {
   bool Drain(DeviceIo& io) override;
 
  private:
-  struct HostBytes {
-    Time t{};
-    std::size_t device = 0, port = 0;
-    std::string bytes;
-  };
-  struct BusArrival {
-    Time t{};
-    CanFrame frame;
-  };
   /// The next turn's time: the earliest chunk end or deadline (none: no turn is due).
   std::optional<Time> NextTurn() const;
   /// A turn at `t`: the programs are woken when that can change anything for them (see
   /// LockstepHost::NeedsWake), always with `wake` (the first turn: they ran from their start;
   /// the drain: Flush wrote what was left). False when the wait was given up.
   bool Turn(Time t, DeviceIo& io, bool wake = false);
-  void ReadHosts(Time t, DeviceIo& io);
-  void ReadBus(Time t, DeviceIo& io);
-  void DeliverHostBytes(const HostBytes& h, DeviceIo& io, DeviceOutput& out);
+  /// The bit of `ep` in the grants' masks (lockstep_shared.h).
+  std::uint64_t LinkBitOf(const SerialEndpoint* ep) const;
 
   lockstep::LockstepHost& host_;
   ClockedPacer& pacer_;
   lockstep::LockstepHost::WaitStep on_wait_;
   bool started_ = false;
-  std::deque<HostBytes> arrivals_;
-  std::deque<BusArrival> bus_arrivals_;
+  /// what hil touched since the last grant (lockstep_shared.h's mask): links written or read, the
+  /// bus (kOtherFd); a grant adds kEveryGrant
+  std::uint64_t touched_ = 0;
+  HostArrivals arrivals_;  // host bytes and others' frames read at turns, not yet delivered
 };
 
 }  // namespace hil::harness

@@ -8,7 +8,10 @@
 /// sees the emulated arrival times of the bytes. CAN frames go when they are made, as in virtual
 /// mode.
 
+#include <cstdint>
+#include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "hil/harness/engine/pacer.h"
@@ -35,8 +38,20 @@ class ClockedPacer final : public Pacer {
   /// The earliest end of a chunk still waiting, if any.
   std::optional<Time> NextChunkEnd() const;
   /// Writes every waiting chunk that has ended by `t`, and waits until the kernel has handed them
-  /// to the host's side of the pty (see kHandOverBytes); true when any was.
-  bool WriteDue(Time t);
+  /// to the host's side of the pty (see kHandOverBytes). Returns the links written: bit k for
+  /// the k-th link of LinkDevices (lockstep_shared.h's mask; kOtherFd for those beyond kMaxLinks).
+  std::uint64_t WriteDue(Time t);
+  /// The terminal device (st_rdev) of each link's host side, in the order of WriteDue's bits (0:
+  /// none, a link that is not a terminal): what LockstepHost::SetLinks takes, before the hosts
+  /// start (so that a thread's first wait already tells the links apart, in every run alike).
+  static std::vector<std::uint64_t> LinkDevices(
+      const std::vector<std::vector<std::unique_ptr<SerialEndpoint>>>& endpoints);
+  /// The bit of the `k`-th link in WriteDue's mask.
+  static std::uint64_t LinkBit(std::size_t k);
+  /// The links, in the order of WriteDue's bits.
+  const std::vector<SerialEndpoint*>& endpoints() const { return endpoints_; }
+  /// Whether CAN frames were sent since the last call.
+  bool TakeBusWritten() { return std::exchange(bus_written_, false); }
   /// What the host side's line discipline holds at most (N_TTY's buffer, 4 KB, less one): the
   /// bytes beyond it stay in the pty's flip buffers, so how a backlog larger than this is split
   /// among the host's reads depends on the machine.
@@ -46,6 +61,7 @@ class ClockedPacer final : public Pacer {
 
  private:
   std::vector<SerialEndpoint*> endpoints_;
+  bool bus_written_ = false;
 };
 
 }  // namespace hil::harness

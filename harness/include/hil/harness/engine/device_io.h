@@ -8,6 +8,7 @@
 #include <poll.h>
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "hil/harness/engine/engine_devices.h"
@@ -42,12 +43,19 @@ class DeviceIo {
   const std::vector<pollfd>& host_fds() const { return host_fds_; }
   /// Whether a host has bytes waiting on an endpoint.
   bool HostWrote();
-  /// Reads what others put on the bus now and returns every frame so far.
-  const std::vector<CanFrame>& PollBus();
-  /// Frames others put on the bus (the estimator's NMEA 2000 output, a controller's commands).
+  /// Reads what others put on the bus now (into bus_frames()).
+  void PollBus();
+  /// Frames others put on the bus (the estimator's NMEA 2000 output, a controller's commands) not
+  /// yet taken by every reader: the devices (TakeUnrouted) and, once it is kept for it
+  /// (KeepBusFramesForCollector), the estimator's output reader (TakeUncollected). A frame every
+  /// reader has taken is dropped, so that the list does not grow with the run (issue 40).
   std::vector<CanFrame>& bus_frames() { return bus_frames_; }
   /// The bus frames not handed to the devices yet (marked handed).
   std::vector<CanFrame> TakeUnrouted();
+  /// From now on the bus frames are kept until TakeUncollected has returned them too.
+  void KeepBusFramesForCollector() { bus_collected_ = 0; }
+  /// The bus frames not returned by the last call (the estimator's NMEA 2000 output reader).
+  std::vector<CanFrame> TakeUncollected();
   /// A frame from the bus reaches every device at `t`.
   void DeliverBusFrame(Time t, const CanFrame& frame, DeviceOutput& out);
   /// Queues the actuators' held bytes for writing; false when none were held.
@@ -72,9 +80,13 @@ class DeviceIo {
   FaultRecorder* recorder_ = nullptr;
   bool refused_ = false;
   Time t_last_event_{};
+  /// Drops the frames of bus_frames_ every reader has taken.
+  void DropTakenBusFrames();
+
   std::vector<CanFrame> bus_frames_;
-  std::size_t bus_routed_ = 0;    // bus_frames_ handed to the devices or queued
-  std::vector<pollfd> host_fds_;  // one per serial endpoint, in device and port order
+  std::size_t bus_routed_ = 0;                // bus_frames_ handed to the devices or queued
+  std::optional<std::size_t> bus_collected_;  // bus_frames_ returned by TakeUncollected
+  std::vector<pollfd> host_fds_;              // one per serial endpoint, in device and port order
   /// The actuators' bytes queued on their links since the last host turn.
   struct Held {
     SerialEndpoint* ep;

@@ -80,10 +80,15 @@ class Engine {
   long late_command_restarts() const { return truth_->late_command_restarts(); }
   /// Closed loop with host turns: control ticks that made no turn of their own.
   std::uint64_t skipped_control_turns() const { return turns_->skipped_control_turns(); }
-  /// Frames others put on the CAN bus during the run (the estimator's NMEA 2000 output).
-  const std::vector<CanFrame>& bus_frames() { return io_.bus_frames(); }
-  /// Reads what others put on the bus now (also during the drain after Run) and returns them all.
-  const std::vector<CanFrame>& PollBus() { return io_.PollBus(); }
+  /// The estimator's NMEA 2000 output is read off the bus (TakeBusFramesForCollector): the frames
+  /// others put on it are kept until it has taken them.
+  void KeepBusFramesForCollector() { io_.KeepBusFramesForCollector(); }
+  /// Reads what others put on the bus now (also during the drain after Run) and returns the
+  /// frames not returned before.
+  std::vector<CanFrame> TakeBusFramesForCollector() {
+    io_.PollBus();
+    return io_.TakeUncollected();
+  }
 
  private:
   /// Run's loop; true when it reached t_end, false when the monitor or the gate stopped it.

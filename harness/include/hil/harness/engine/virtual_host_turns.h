@@ -23,11 +23,9 @@
 /// turn. Every tick's turn is taken or skipped the same way in every run. The actuators' replies
 /// and status are held until the next turn.
 
-#include <cstddef>
-#include <deque>
-#include <string>
 #include <vector>
 
+#include "hil/harness/engine/host_arrivals.h"
 #include "hil/harness/engine/host_turns.h"
 #include "hil/harness/engine/virtual_gate.h"
 
@@ -53,16 +51,6 @@ class VirtualHostTurns final : public HostTurns {
   std::uint64_t skipped_control_turns() const override { return skipped_control_turns_; }
 
  private:
-  /// Bytes a host wrote, read at a host turn, and when they reach their device.
-  struct HostBytes {
-    Time t{};
-    std::size_t device = 0, port = 0;
-    std::string bytes;
-  };
-  struct BusArrival {
-    Time t{};
-    CanFrame frame;
-  };
   /// The next host turn.
   Time NextHostTurn() const;
   /// Whether the turn at `t` is a control tick's alone and the host's answer to it is already
@@ -73,20 +61,16 @@ class VirtualHostTurns final : public HostTurns {
   bool HostTurn(Time t, DeviceIo& io);
   /// The emulated time what the host wrote at the turn at `t` arrives at.
   Time ArrivalTime(Time t, DeviceIo& io) const;
-  /// Queues what the host wrote since the last turn, arriving at `t_rx`.
-  void ReadHosts(Time t_rx, DeviceIo& io);
-  /// Closed loop on CAN: the frames the controller put on the bus, arriving at `t_rx`.
-  void ReadBus(Time t_rx, DeviceIo& io);
-  /// Host bytes reach their device, which may answer.
-  void DeliverHostBytes(const HostBytes& h, DeviceIo& io, DeviceOutput& out);
+  /// Host bytes due by `limit` reach their device, which may answer (sent at once; the host's
+  /// next turn is when the answer has left the UART). False when none is due.
+  bool DeliverHostBytes(Time limit, DeviceIo& io, DeviceOutput& out);
 
   VirtualGate& gate_;
   const Duration control_period_;
   Time next_periodic_turn_{};
   Time next_control_turn_{};
-  std::vector<Time> answer_turns_;       // host turns at the ends of devices' answers
-  std::deque<HostBytes> arrivals_;       // read at turns, in time order, not yet delivered
-  std::deque<BusArrival> bus_arrivals_;  // others' frames read at turns
+  std::vector<Time> answer_turns_;  // host turns at the ends of devices' answers
+  HostArrivals arrivals_;  // host bytes and others' frames read at turns, not yet delivered
   std::uint64_t skipped_control_turns_ = 0;
 };
 

@@ -12,8 +12,9 @@
 
 #include "hil/firmware_emu/sim_time.h"
 #include "hil/harness/core/estimate_record.h"
+#include "hil/harness/core/percentile.h"
+#include "hil/harness/core/quantile_sketch.h"
 #include "hil/harness/core/truth_table.h"
-#include "hil/harness/eval/quantile_sketch.h"
 #include "hil/truth/truth_integrator.h"
 
 namespace hil::harness {
@@ -88,10 +89,5 @@ class AccuracyAccumulator {
 
 /// Metrics of a set of errors (AccuracyAccumulator over them). Empty input gives samples = 0.
 AccuracyMetrics ComputeAccuracy(const std::vector<ErrorSample>& errors);
-
-/// Empirical percentile (0–100) by linear interpolation of sorted values.
-double Percentile(std::vector<double> values, double pct);
-/// The same of values already sorted.
-double PercentileOfSorted(const std::vector<double>& v, double pct);
 
 }  // namespace hil::harness

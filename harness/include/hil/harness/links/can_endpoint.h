@@ -26,6 +26,7 @@
 #include "hil/firmware_emu/link/candump_log.h"
 #include "hil/firmware_emu/link/realtime_pacer.h"
 #include "hil/firmware_emu/link/socketcan_port.h"
+#include "hil/harness/core/quantile_sketch.h"
 #include "hil/harness/links/bus_tx_counter.h"
 #include "hil/harness/links/capture_format.h"
 
@@ -77,8 +78,9 @@ class CanEndpoint {
 
   const std::string& iface() const { return port_.ifname(); }
   const link::CanPortStats& stats() const { return port_.stats(); }
-  /// Schedule errors (µs) of frames sent in real time: wall time sent − scheduled wall time.
-  const std::vector<double>& schedule_error_us() const { return schedule_error_us_; }
+  /// Schedule errors (µs) of frames sent in real time: wall time sent − scheduled wall time (a
+  /// sketch: exact up to QuantileSketch::kExactLimit frames, within its relative accuracy beyond).
+  const QuantileSketch& schedule_error_us() const { return schedule_error_us_; }
   /// Where the capture notes a failed write (CaptureWriter::ReportFailuresTo).
   void ReportWriteFailuresTo(RunDiagnostics* diagnostics) {
     capture_.ReportFailuresTo(diagnostics);
@@ -128,7 +130,7 @@ class CanEndpoint {
   BusTxCounter tx_counter_;                   // frames sent on the interface (vcan only)
   std::uint64_t frames_read_ = 0;             // frames read off the socket, echoes included
   std::uint64_t sent_frames_wait_timeouts_ = 0;
-  std::vector<double> schedule_error_us_;
+  QuantileSketch schedule_error_us_;
 };
 
 }  // namespace hil::harness

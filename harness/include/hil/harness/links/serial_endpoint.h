@@ -18,6 +18,7 @@
 #include "hil/firmware_emu/link/realtime_pacer.h"
 #include "hil/firmware_emu/link/serial_port.h"
 #include "hil/firmware_emu/link/uart_tx_queue.h"
+#include "hil/harness/core/quantile_sketch.h"
 #include "hil/harness/links/capture_format.h"
 
 namespace hil::harness {
@@ -109,7 +110,9 @@ class SerialEndpoint {
   /// Bytes the capture records as written to the host.
   std::uint64_t bytes_sent() const { return bytes_sent_; }
   /// Schedule errors (µs) of bytes written in real time: wall time written − scheduled wall time.
-  const std::vector<double>& schedule_error_us() const { return schedule_error_us_; }
+  /// A sketch, not every byte's error (8 B a byte grew without bound: issue 40): its percentiles
+  /// are exact up to QuantileSketch::kExactLimit bytes and within its relative accuracy beyond.
+  const QuantileSketch& schedule_error_us() const { return schedule_error_us_; }
 
  private:
   /// Real time: adds one byte to the capture line being built, tx when it `left`, else drop.
@@ -141,7 +144,7 @@ class SerialEndpoint {
   std::uint64_t bytes_dropped_unread_ = 0;
   std::uint64_t bytes_dropped_attached_ = 0;
   std::uint64_t bytes_sent_ = 0;
-  std::vector<double> schedule_error_us_;
+  QuantileSketch schedule_error_us_;
   std::string write_buffer_;  // virtual mode: the waiting chunks joined for one write
   bool wall_stamps_ = false;
   std::uint64_t chunks_queued_ = 0;  // chunks ever put on pending_

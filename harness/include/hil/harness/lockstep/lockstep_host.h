@@ -31,6 +31,7 @@ class LockstepHost {
     std::uint64_t slept = 0;         ///< waits for idle that slept on the futex
     std::int64_t wait_ns = 0;        ///< wall time spent waiting for idle
     std::uint64_t thread_waits = 0;  ///< waits the programs' threads blocked in (all slots)
+    std::uint64_t thread_looks = 0;  ///< times they looked at an unmet condition (all slots)
   };
   /// Called while a wait for idle lasts (every kStepNs): the threads not idle, whether this is a
   /// new wait. False gives the wait up.
@@ -49,15 +50,23 @@ class LockstepHost {
   /// Emulated time the programs read from now on (only while they are idle).
   void SetNow(Time t);
   Time now() const;
-  /// A grant: the programs look at what they wait for again.
+  /// Tells the programs' threads which terminal devices (st_rdev of the links' host side) are
+  /// hil's links, bit k of a `touched` mask (lockstep_shared.h): a thread that waits only for
+  /// links hil did not touch is not woken from then on. At most kMaxLinks; once, before a grant.
+  void SetLinks(const std::vector<std::uint64_t>& rdevs);
+  /// A grant to every thread: each looks at what it waits for again.
   void Wake();
+  /// A grant at emulated `t` to the threads it concerns (NeedsWake): those whose deadline has
+  /// come, and those waiting for descriptors of which hil touched one (`touched`: bit k for link
+  /// k, kOtherFd when hil touched anything else, e.g. the CAN bus).
+  void Wake(Time t, std::uint64_t touched);
   /// Waits until every claimed thread waits and has looked since the last change. False: given up.
   bool WaitIdle(const WaitStep& on_wait);
   /// One look: whether the programs are idle now.
   bool Idle() const;
   /// Whether a grant at emulated `t` can change anything for the programs: a thread runs, or one
-  /// waits with a deadline at or before `t`, or `bytes_written` and one waits for descriptors.
-  bool NeedsWake(Time t, bool bytes_written) const;
+  /// waits with a deadline at or before `t`, or one waits for descriptors among `touched`.
+  bool NeedsWake(Time t, std::uint64_t touched) const;
   /// The earliest deadline of the waiting threads (none: every one waits without a timeout).
   std::optional<Time> EarliestDeadline() const;
   /// hil paces the run the old way after all: the library passes every call through from now on
@@ -73,6 +82,10 @@ class LockstepHost {
  private:
   /// Threads not idle now.
   std::size_t Busy() const;
+  /// Whether a grant at `t` touching `touched` concerns slot `i`.
+  bool Concerns(int i, Time t, std::uint64_t touched) const;
+  /// Asks slot `i`'s thread to look again.
+  void Grant(int i);
   /// Frees the slots of threads that no longer exist.
   void ForgetDeadThreads();
 

@@ -22,6 +22,8 @@
 #include <string>
 #include <vector>
 
+#include "hil/harness/core/quantile_sketch.h"
+
 namespace hil::harness {
 
 struct ReplayOptions {
@@ -35,12 +37,12 @@ struct ReplayOptions {
 };
 
 struct ReplayResult {
-  std::uint64_t bytes = 0;                      ///< serial bytes played
-  std::uint64_t frames = 0;                     ///< CAN frames played
-  std::uint64_t frames_failed = 0;              ///< CAN frames the interface did not accept
-  std::int64_t wall_start_ns = 0;               ///< CLOCK_MONOTONIC of emulated t = 0
-  std::vector<double> byte_schedule_error_us;   ///< written − scheduled, per byte
-  std::vector<double> frame_schedule_error_us;  ///< sent − scheduled, per frame
+  std::uint64_t bytes = 0;                 ///< serial bytes played
+  std::uint64_t frames = 0;                ///< CAN frames played
+  std::uint64_t frames_failed = 0;         ///< CAN frames the interface did not accept
+  std::int64_t wall_start_ns = 0;          ///< CLOCK_MONOTONIC of emulated t = 0
+  QuantileSketch byte_schedule_error_us;   ///< written − scheduled, of every byte of every link
+  QuantileSketch frame_schedule_error_us;  ///< sent − scheduled, of every frame
 };
 
 /// Plays the captures; returns when the last byte and frame have left.

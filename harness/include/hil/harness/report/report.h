@@ -18,6 +18,7 @@
 #include "hil/harness/links/can_bus_report.h"
 #include "hil/harness/report/closed_loop_faults_report.h"
 #include "hil/harness/report/link_integrity.h"
+#include "hil/harness/report/rtk_rover_report.h"
 #include "hil/harness/report/steering_ecu_report.h"
 #include "hil/harness/scenario/scenario.h"
 
@@ -142,6 +143,8 @@ struct RunReport {
   /// closed loop: each fault's effect on the path tracking (report.json `tracking.faults`)
   std::vector<FaultPathDeviation> tracking_faults;
   std::optional<RowDeviation> row_following;  ///< closed loop in a greenhouse (paper 001)
+  /// The RTK rover's state timeline (report.json `rtk_rover`), when the scenario has one.
+  std::optional<RtkRoverReport> rtk_rover;
   /// What the estimator says it received against what was sent (link_integrity.h).
   std::vector<LinkIntegrity> link_integrity;
   /// Real time: each real-time thread's scheduling and the CPU it used (run_outputs.h).

@@ -14,8 +14,8 @@
 
 #include <Eigen/Core>
 
+#include "hil/harness/core/quantile_sketch.h"
 #include "hil/harness/eval/evaluator.h"
-#include "hil/harness/eval/quantile_sketch.h"
 #include "hil/harness/report/report.h"
 #include "hil/harness/report/run_header.h"
 #include "hil/harness/report/svg_plot.h"

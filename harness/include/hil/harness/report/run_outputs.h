@@ -16,6 +16,7 @@
 #include "hil/firmware_emu/gnss/gnss_fix.h"
 #include "hil/firmware_emu/link/realtime_pacer.h"
 #include "hil/harness/core/machine_load.h"
+#include "hil/harness/core/quantile_sketch.h"
 #include "hil/harness/core/truth_table.h"
 #include "hil/harness/scenario/scenario.h"
 
@@ -49,9 +50,9 @@ void WriteFixCsvLine(std::ostream& out, const gnss::GnssFix& fix);
 /// real-time threads got and /proc/stat when the pacing started. Empty in virtual mode.
 struct ScheduleRecord {
   struct Link {
-    std::string name;                               ///< the link's name, or the CAN interface
-    const std::vector<double>* error_us = nullptr;  ///< one per byte (serial) or frame (CAN)
-    std::uint64_t bytes_dropped_unread = 0;         ///< serial: dropped, nobody read the port
+    std::string name;                          ///< the link's name, or the CAN interface
+    const QuantileSketch* error_us = nullptr;  ///< of each byte (serial) or frame (CAN)
+    std::uint64_t bytes_dropped_unread = 0;    ///< serial: dropped, nobody read the port
   };
   std::vector<Link> serial;  ///< every serial link, in the devices' order
   std::optional<Link> can;   ///< the CAN bus, when the scenario has one

@@ -21,6 +21,7 @@
 #include "hil/firmware_emu/mcu/mcu_config.h"
 #include "hil/firmware_emu/rangefinder/tf_luna_device.h"
 #include "hil/firmware_emu/rtk/rtk_base_device.h"
+#include "hil/firmware_emu/rtk/zed_f9p_device.h"
 #include "hil/firmware_emu/uwb/uwb_tag_device.h"
 #include "hil/firmware_emu/world/greenhouse_world.h"
 #include "hil/harness/scenario/campaign_criterion.h"
@@ -126,6 +127,20 @@ struct RtkBaseDeviceSpec {
   std::string link = "ttyRTCM";  ///< symlink name in the run folder
   std::size_t tx_buffer_bytes = 4096;
   rtk::RtkBaseConfig config;  ///< start_unix_ns is filled from the scenario's start_utc
+};
+
+/// Where a ZED-F9P rover's corrections come from (section `zed_f9p:` key `corrections`).
+enum class F9pCorrections { kRadio, kHost, kNone };
+
+/// A ZED-F9P-class RTK rover (section `zed_f9p:`, devices/zed_f9p/; absent → none): UBX and NMEA
+/// on its own pty (UART1), the `rtk_base`'s radio on its UART2 (corrections: radio), or RTCM the
+/// host writes to UART1 (corrections: host, an NTRIP client).
+struct ZedF9pDeviceSpec {
+  bool enabled = false;
+  std::string link = "ttyF9P";  ///< symlink name in the run folder
+  std::size_t tx_buffer_bytes = 4096;
+  F9pCorrections corrections = F9pCorrections::kRadio;
+  rtk::ZedF9pConfig config;  ///< start_unix_ns from start_utc; the radio base from `rtk_base`
 };
 
 /// One laser rangefinder of the `rangefinders:` section: its name, pty link and mount.
@@ -239,6 +254,7 @@ struct Scenario {
   UwbDeviceSpec uwb;
   Wt901cDeviceSpec wt901c;
   RtkBaseDeviceSpec rtk_base;
+  ZedF9pDeviceSpec zed_f9p;
   CanLinkSpec can;
   ClosedLoopSpec closed_loop;
   EstimatorSpec estimator;

@@ -1,15 +1,16 @@
 #pragma once
 /// @file
-/// Percentiles of a stream of values in bounded memory. Up to `exact_limit` values are held as
-/// they are and a percentile is exact: the same linear interpolation of the sorted values as
-/// Percentile() (evaluator.h), bit for bit. Past that many values the sketch holds counts in
-/// logarithmic buckets instead (the DDSketch of Masson, Rim and Lee, VLDB 2019): every value v
-/// with |v| ≥ kMinMagnitude falls into the bucket ((1+a)/(1−a))^(i−1) < |v| ≤ ((1+a)/(1−a))^i and
-/// is represented by a value within a relative a = kRelativeAccuracy of it, so a percentile is
-/// within a relative a of the exact one (values below kMinMagnitude in magnitude count as 0; the
-/// smallest and largest values are kept exactly, so the 0th and 100th percentiles stay exact).
-/// The number of buckets grows with the logarithm of the values' range, not with their number:
-/// a range of 1e-6 to 1e6 takes at most 13 816 buckets.
+/// Percentiles of a stream of values in bounded memory (the estimate errors of a run, the links'
+/// per-byte schedule errors of a real-time run). Up to `exact_limit` values are held as they are
+/// and a percentile is exact: the same linear interpolation of the sorted values as Percentile()
+/// (evaluator.h), bit for bit. Past that many values the sketch holds counts in logarithmic buckets
+/// instead (the DDSketch of Masson, Rim and Lee, VLDB 2019): every value v with |v| ≥ kMinMagnitude
+/// falls into the bucket ((1+a)/(1−a))^(i−1) < |v| ≤ ((1+a)/(1−a))^i and is represented by a value
+/// within a relative a = kRelativeAccuracy of it, so a percentile is within a relative a of the
+/// exact one (values below kMinMagnitude in magnitude count as 0; the smallest and largest values
+/// are kept exactly, so the 0th and 100th percentiles stay exact). The number of buckets grows with
+/// the logarithm of the values' range, not with their number: a range of 1e-6 to 1e6 takes at most
+/// 13 816 buckets.
 
 #include <cstddef>
 #include <cstdint>
@@ -34,6 +35,9 @@ class QuantileSketch {
 
   /// Adds a value (NaN is left out).
   void Add(double v);
+  /// Adds every value of `other` (of the same relative accuracy): the percentiles are those of
+  /// both sets' values, exact while the two together hold no more than this one's limit.
+  void Merge(const QuantileSketch& other);
   std::uint64_t count() const { return count_; }
   /// True while every value is held (the percentiles are exact).
   bool exact() const { return !sketching_; }

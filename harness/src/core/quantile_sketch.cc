@@ -1,9 +1,9 @@
-#include "hil/harness/eval/quantile_sketch.h"
+#include "hil/harness/core/quantile_sketch.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "hil/harness/eval/evaluator.h"
+#include "hil/harness/core/percentile.h"
 
 namespace hil::harness {
 
@@ -20,9 +20,27 @@ void QuantileSketch::Add(double v) {
     AddToBuckets(v, 1);
     return;
   }
+  if (values_.size() == exact_limit_) {  // one more than it holds: before the vector grows
+    StartSketching();                    // (push_back would double it for a moment: 4 MiB)
+    AddToBuckets(v, 1);
+    return;
+  }
   values_.push_back(v);
   sorted_ = false;
-  if (values_.size() > exact_limit_) StartSketching();
+}
+
+void QuantileSketch::Merge(const QuantileSketch& other) {
+  if (!other.sketching_) {
+    for (const double v : other.values_) Add(v);
+    return;
+  }
+  if (!sketching_) StartSketching();
+  count_ += other.count_;
+  min_ = std::min(min_, other.min_);
+  max_ = std::max(max_, other.max_);
+  zeros_ += other.zeros_;
+  for (const auto& [bucket, n] : other.positive_) positive_[bucket] += n;
+  for (const auto& [bucket, n] : other.negative_) negative_[bucket] += n;
 }
 
 void QuantileSketch::StartSketching() {

@@ -1,0 +1,36 @@
+#pragma once
+/// @file
+/// The RTK rover's state over the run (devices/zed_f9p): its timeline of carrSoln changes (none
+/// 0, float 1, fixed 2) with the age of the corrections at each change, the epochs in each state
+/// and the RTCM frames it received (report.json `rtk_rover`; a table in the HTML report).
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+namespace hil::rtk {
+class ZedF9pDevice;
+}
+
+namespace hil::harness {
+
+struct RtkRoverChange {
+  double t_s = 0;
+  int carr_soln = 0;             ///< 0 none (standalone 3-D), 1 float, 2 fixed
+  double correction_age_s = -1;  ///< at the change; < 0: none received
+};
+
+struct RtkRoverReport {
+  std::vector<RtkRoverChange> timeline;
+  std::uint64_t epochs = 0, epochs_float = 0, epochs_fixed = 0;
+  std::uint64_t rtcm_frames = 0, rtcm_crc_failed = 0;
+};
+
+RtkRoverReport MakeRtkRoverReport(const rtk::ZedF9pDevice& rover);
+nlohmann::json RtkRoverJson(const RtkRoverReport& r);
+/// The HTML section: the epochs per state and the timeline as a table.
+void AppendRtkRoverHtml(std::string& html, const RtkRoverReport& r);
+
+}  // namespace hil::harness

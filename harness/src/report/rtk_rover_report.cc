@@ -1,0 +1,70 @@
+#include "hil/harness/report/rtk_rover_report.h"
+
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
+
+#include "hil/firmware_emu/rtk/zed_f9p_device.h"
+
+namespace hil::harness {
+namespace {
+
+const char* StateName(int carr_soln) {
+  return carr_soln == 2 ? "fixed" : carr_soln == 1 ? "float" : "none (3-D)";
+}
+
+}  // namespace
+
+RtkRoverReport MakeRtkRoverReport(const rtk::ZedF9pDevice& rover) {
+  RtkRoverReport r;
+  for (const rtk::RtkTransition& c : rover.timeline()) {
+    r.timeline.push_back(
+        {ToSeconds(c.t - Time{}), static_cast<int>(c.carr_soln), c.correction_age_s});
+  }
+  const rtk::ZedF9pStatistics& s = rover.rover_statistics();
+  r.epochs = s.epochs;
+  r.epochs_float = s.epochs_float;
+  r.epochs_fixed = s.epochs_fixed;
+  r.rtcm_frames = s.rtcm_frames;
+  r.rtcm_crc_failed = s.rtcm_crc_failed;
+  return r;
+}
+
+nlohmann::json RtkRoverJson(const RtkRoverReport& r) {
+  nlohmann::json timeline = nlohmann::json::array();
+  for (const RtkRoverChange& c : r.timeline) {
+    nlohmann::json e = {{"t_s", c.t_s}, {"carr_soln", c.carr_soln}};
+    e["correction_age_s"] = c.correction_age_s >= 0 ? nlohmann::json(c.correction_age_s) : nullptr;
+    timeline.push_back(e);
+  }
+  return {{"timeline", timeline},           {"epochs", r.epochs},
+          {"epochs_float", r.epochs_float}, {"epochs_fixed", r.epochs_fixed},
+          {"rtcm_frames", r.rtcm_frames},   {"rtcm_crc_failed", r.rtcm_crc_failed}};
+}
+
+void AppendRtkRoverHtml(std::string& h, const RtkRoverReport& r) {
+  char buf[256];
+  h += "<h2>RTK rover state</h2>\n";
+  std::snprintf(buf, sizeof buf,
+                "<p>%llu epochs: %llu fixed, %llu float; %llu RTCM frames received, %llu with a "
+                "failed CRC.</p>\n",
+                static_cast<unsigned long long>(r.epochs),
+                static_cast<unsigned long long>(r.epochs_fixed),
+                static_cast<unsigned long long>(r.epochs_float),
+                static_cast<unsigned long long>(r.rtcm_frames),
+                static_cast<unsigned long long>(r.rtcm_crc_failed));
+  h += buf;
+  h += "<table><tr><th>from t (s)</th><th>carrSoln</th><th>age of corrections (s)</th></tr>\n";
+  for (const RtkRoverChange& c : r.timeline) {
+    if (c.correction_age_s >= 0)
+      std::snprintf(buf, sizeof buf, "<tr><td>%.1f</td><td>%d %s</td><td>%.1f</td></tr>\n", c.t_s,
+                    c.carr_soln, StateName(c.carr_soln), c.correction_age_s);
+    else
+      std::snprintf(buf, sizeof buf, "<tr><td>%.1f</td><td>%d %s</td><td>–</td></tr>\n", c.t_s,
+                    c.carr_soln, StateName(c.carr_soln));
+    h += buf;
+  }
+  h += "</table>\n";
+}
+
+}  // namespace hil::harness
