@@ -92,7 +92,7 @@ const std::vector<std::string> kClosedLoopSectionKeys{"closed_loop"};
 extern const KeySection kClosedLoopSection{
     "closed_loop",
     "the controller under test steers the truth vehicle through an emulated actuator", kClosedLoop};
-extern const KeySection kActuatorSection{"closed_loop.actuator",
+extern const KeySection kActuatorSection{"closed_loop.actuator (serial_base)",
                                          "the wheel motors of the serial_base channel", kActuator};
 extern const KeySection kPassToPassSection{"closed_loop.pass_to_pass",
                                            "the pass-to-pass evaluation's parameters", kPassToPass};

@@ -4,34 +4,34 @@
 #include <array>
 #include <string_view>
 
+#include "scenario_closed_loop_keys.h"
 #include "scenario_sections.h"
 
 namespace hil::harness {
 namespace {
 
+using closed_loop_keys::kSteeringEcu;
+
 constexpr std::array<std::string_view, 2> kTransports{"socketcan", "slcan"};
 
-void ReadSteeringEcu(const YamlReader& r, actuator::SteeringEcuConfig& e) {
-  r.CheckKeys({"max_steer_deg", "max_steer_rate_dps", "time_constant_s", "deadband_deg",
-               "command_latency_s", "watchdog_timeout_s", "status_period_s", "ecu_address",
-               "guidance_address", "min_engage_speed_mps", "max_engage_speed_mps",
-               "center_on_disengage"});
-  e.max_steer_deg = r.DoubleIn("max_steer_deg", e.max_steer_deg, 1, 60);
-  e.max_steer_rate_dps = r.DoubleIn("max_steer_rate_dps", e.max_steer_rate_dps, 1, 1000);
-  e.time_constant_s = r.DoubleIn("time_constant_s", e.time_constant_s, 0.001, 10);
-  e.deadband_deg = r.DoubleIn("deadband_deg", e.deadband_deg, 0, 5);
+void ReadSteeringEcu(const YamlReader& y, actuator::SteeringEcuConfig& e) {
+  const KeyedReader<kSteeringEcu> r(y);
+  r.CheckKeys();
+  e.max_steer_deg = r.Number("max_steer_deg", e.max_steer_deg);
+  e.max_steer_rate_dps = r.Number("max_steer_rate_dps", e.max_steer_rate_dps);
+  e.time_constant_s = r.Number("time_constant_s", e.time_constant_s);
+  e.deadband_deg = r.Number("deadband_deg", e.deadband_deg);
   e.command_latency =
-      DurationFromSeconds(r.DoubleIn("command_latency_s", ToSeconds(e.command_latency), 0, 5));
+      DurationFromSeconds(r.Number("command_latency_s", ToSeconds(e.command_latency)));
   e.command_timeout =
-      DurationFromSeconds(r.DoubleIn("watchdog_timeout_s", ToSeconds(e.command_timeout), 0.01, 60));
-  e.status_period =
-      DurationFromSeconds(r.DoubleIn("status_period_s", ToSeconds(e.status_period), 0.01, 10));
-  e.source_address = static_cast<std::uint8_t>(r.Int("ecu_address", e.source_address, 0, 253));
+      DurationFromSeconds(r.Number("watchdog_timeout_s", ToSeconds(e.command_timeout)));
+  e.status_period = DurationFromSeconds(r.Number("status_period_s", ToSeconds(e.status_period)));
+  e.source_address = static_cast<std::uint8_t>(r.Integer("ecu_address", e.source_address));
   const auto guidance =
-      static_cast<std::uint8_t>(r.Int("guidance_address", e.accepted_sources[0], 0, 253));
+      static_cast<std::uint8_t>(r.Integer("guidance_address", e.accepted_sources[0]));
   e.accepted_sources.fill(guidance);
-  e.min_engage_speed_mps = r.DoubleIn("min_engage_speed_mps", e.min_engage_speed_mps, 0, 50);
-  e.max_engage_speed_mps = r.DoubleIn("max_engage_speed_mps", e.max_engage_speed_mps, 0.1, 50);
+  e.min_engage_speed_mps = r.Number("min_engage_speed_mps", e.min_engage_speed_mps);
+  e.max_engage_speed_mps = r.Number("max_engage_speed_mps", e.max_engage_speed_mps);
   e.center_on_disengage = r.Bool("center_on_disengage", e.center_on_disengage);
 }
 
@@ -62,5 +62,10 @@ void ReadIsobusChannel(const YamlReader& root, const YamlReader& r, Scenario& s)
   FollowActuatorCommands(c, s.truth);
   s.truth.vehicle.max_steer_deg = d.ecu.max_steer_deg;
 }
+
+extern const KeySection kSteeringEcuSection{
+    "closed_loop.actuator (isobus)",
+    "the steering ECU of the isobus channel (steering_ecu.h, vectors/isobus/README.md)",
+    kSteeringEcu};
 
 }  // namespace hil::harness

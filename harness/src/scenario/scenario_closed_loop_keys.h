@@ -66,6 +66,38 @@ inline constexpr ScenarioKey kActuator[] = {
     {"pid_rate_hz", kNumber, "Hz", "30", 1, 1000, "ROSArduinoBridge's PID frame rate"},
 };
 
+// The isobus channel's steering ECU (`actuator:` of channel isobus; steering_ecu.h). Its defaults
+// are SteeringEcuConfig's, the steering's the vehicle's.
+inline constexpr std::string_view kEcuOurs = "ours (steering_ecu.h cites no source)";
+inline constexpr ScenarioKey kSteeringEcu[] = {
+    {"max_steer_deg", kNumber, "deg", "vehicle.max_steer_deg", 1, 60,
+     "± road-wheel angle limit (limit status when a command asks for more)"},
+    {"max_steer_rate_dps", kNumber, "deg/s", "vehicle.max_steer_rate_dps", 1, 1000,
+     "the road wheels' slew limit"},
+    {"time_constant_s", kNumber, "s", "vehicle.steer_lag_s", 0.001, 10,
+     "the road wheels' first-order lag"},
+    {"deadband_deg", kNumber, "deg", "0.05", 0, 5,
+     "the valve does not act on a smaller position error", kNoChoices, kAnyRange, kEcuOurs},
+    {"command_latency_s", kNumber, "s", "0.02", 0, 5, "a command acts this long after its arrival",
+     kNoChoices, kAnyRange, kEcuOurs},
+    {"watchdog_timeout_s", kNumber, "s", "0.3", 0.01, 60,
+     "engaged and no valid command for this long: exit reason 5 (remote command timeout)",
+     kNoChoices, kAnyRange, kEcuOurs},
+    {"status_period_s", kNumber, "s", "0.1", 0.01, 10,
+     "period of Guidance Machine Info (0xAC00) and Wheel-based Speed and Distance (0xFE48)",
+     kNoChoices, kAnyRange, kEcuOurs},
+    {"ecu_address", kInteger, "", "28 (0x1C)", 0, 253, "the ECU's own J1939 source address",
+     kNoChoices, kAnyRange, kEcuOurs},
+    {"guidance_address", kInteger, "", "128 (0x80)", 0, 253,
+     "the only source address whose commands are accepted", kNoChoices, kAnyRange, kEcuOurs},
+    {"min_engage_speed_mps", kNumber, "m/s", "0", 0, 50,
+     "below this speed the ECU exits (reason 23; 0: no lower limit)"},
+    {"max_engage_speed_mps", kNumber, "m/s", "15", 0.1, 50,
+     "above this speed the ECU exits (reason 24)", kNoChoices, kAnyRange, kEcuOurs},
+    {"center_on_disengage", kBool, "", "false", 0, 0,
+     "true: the wheels return to centre on disengaging; false: they stay (hydraulic hold)"},
+};
+
 inline constexpr ScenarioKey kPassToPass[] = {
     {"window_s", kNumber, "s", "900", 1, 86400, "the window pass-to-pass accuracy is quoted over"},
     {"margin_m", kNumber, "m", "10", 0, 1e4, "left out at each end of a pass (settling)"},

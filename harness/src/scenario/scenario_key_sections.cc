@@ -26,22 +26,40 @@ extern const KeySection kRidgesSection;
 extern const KeySection kPostsSection;
 extern const KeySection kClosedLoopSection;  // scenario_closed_loop.cc
 extern const KeySection kActuatorSection;
+extern const KeySection kSteeringEcuSection;  // scenario_closed_loop_isobus.cc
 extern const KeySection kPassToPassSection;
+extern const KeySection kPaperSection;  // scenario_suite.cc
+extern const KeySection kStatisticalSection;
+extern const KeySection kCampaignCriterionSection;  // campaign_criterion.cc
 
 namespace {
 
 const KeySection* const kSections[] = {
-    &kRootSection,         &kOriginSection,
-    &kVehicleSection,      &kSpeedVariationSection,
-    &kPathSection,         &kPathPointSection,
-    &kSpeedStepSection,    &kTerrainSection,
-    &kVibrationSection,    &kVibrationComponentSection,
-    &kTruthOptionsSection, &kEstimatorSection,
-    &kCriterionSection,    &kEvaluationSection,
-    &kClosedLoopSection,   &kActuatorSection,
-    &kPassToPassSection,   &kCanSection,
-    &kGreenhouseSection,   &kRidgesSection,
+    &kRootSection,
+    &kOriginSection,
+    &kVehicleSection,
+    &kSpeedVariationSection,
+    &kPathSection,
+    &kPathPointSection,
+    &kSpeedStepSection,
+    &kTerrainSection,
+    &kVibrationSection,
+    &kVibrationComponentSection,
+    &kTruthOptionsSection,
+    &kEstimatorSection,
+    &kCriterionSection,
+    &kEvaluationSection,
+    &kClosedLoopSection,
+    &kActuatorSection,
+    &kSteeringEcuSection,
+    &kPassToPassSection,
+    &kCanSection,
+    &kGreenhouseSection,
+    &kRidgesSection,
     &kPostsSection,
+    &kPaperSection,
+    &kStatisticalSection,
+    &kCampaignCriterionSection,
 };
 
 std::string_view TypeName(KeyType t) {
@@ -102,12 +120,12 @@ void AppendSection(const KeySection& s, std::string& out) {
   if (!meaning.empty() && meaning[0] >= 'a' && meaning[0] <= 'z') meaning[0] -= 'a' - 'A';
   out += "\n## " + (s.path.empty() ? std::string("Top level") : "`" + std::string(s.path) + "`") +
          "\n\n" + meaning + ".\n\n";
-  out += "| key | type | unit | default | allowed | meaning |\n";
-  out += "|---|---|---|---|---|---|\n";
+  out += "| key | type | unit | default | allowed | meaning | source of the default |\n";
+  out += "|---|---|---|---|---|---|---|\n";
   for (const ScenarioKey& k : s.keys) {
     out += "| `" + std::string(k.name) + "` | " + Cell(TypeName(k.type)) + " | " + Cell(k.unit) +
            " | " + Cell(k.default_text) + " | " + Cell(RangeOf(k)) + " | " + Cell(k.meaning) +
-           " |\n";
+           " | " + Cell(k.source) + " |\n";
   }
 }
 

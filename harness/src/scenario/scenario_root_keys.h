@@ -26,6 +26,9 @@ inline constexpr ScenarioKey kRoot[] = {
     {"evaluation", kMapping, "", "from t = 0", 0, 0, "what is scored (section evaluation)"},
     {"default_criteria", kMapping, "", "all on", 0, 0,
      "the default criteria relaxed: {KEY: off | NUMBER} (vectors/scenarios/README.md)"},
+    {"short", kMapping, "", "none", 0, 0,
+     "the scenario's quick form: with `hil run --short` / `hil suite --short` its keys replace the "
+     "top-level keys of the same name (any but name, include, paper and short)"},
 };
 
 inline constexpr ScenarioKey kEstimator[] = {
@@ -69,15 +72,8 @@ inline constexpr ScenarioKey kCriterion[] = {
 };
 
 inline constexpr ScenarioKey kEvaluation[] = {
-    {"from_s",
-     kNumber,
-     "s",
-     "0",
-     0,
-     7 * 86400,
-     "score from this time on (alignment, convergence before it)",
-     {},
-     "[0, duration_s]"},
+    {"from_s", kNumber, "s", "0", 0, 7 * 86400,
+     "score from this time on (alignment, convergence before it)", kNoChoices, "[0, duration_s]"},
     {"reconverged_error_m", kNumber, "m", "1", 0.001, 1e4,
      "after an outage the solution has reconverged when its error is below this"},
 };

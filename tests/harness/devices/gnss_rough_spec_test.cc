@@ -92,6 +92,12 @@ TEST(ScenarioGnssRoughTest, BadValuesNameFileLineAndField) {
       " reflection_amplitude: 2}\n",
       4, "obstructions[0].reflection_amplitude");
   ExpectError("obstructions:\n  - {kind: greenhouse}\n", 4, "obstructions[0].kind");
+  // a footprint without its points (used to read past an empty list: a crash)
+  ExpectError("obstructions:\n  - {kind: tree_line, height_m: 3}\n", 4, "obstructions[0].centre_m");
+  ExpectError("obstructions:\n  - {kind: tree_line, from_m: [0, 0], height_m: 3}\n", 4,
+              "obstructions[0].to_m");
+  ExpectError("obstructions:\n  - {kind: building, centre_m: [0, 0], height_m: 3}\n", 4,
+              "obstructions[0].size_m");
   ExpectError("gnss:\n  multipath: {track_min_dbhz: 25, nav_min_dbhz: 20}\n", 4,
               "gnss.multipath.nav_min_dbhz");
   ExpectError("gnss:\n  rtk: {time_to_fix_s: 5}\n", 4, "gnss.rtk");

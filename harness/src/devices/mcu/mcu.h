@@ -9,6 +9,6 @@ namespace hil::harness {
 void ReadMcuSpec(const YamlReader& root, Scenario& s);
 /// Reads the mcu section's `rough` mapping (issue 41; mcu_rough_spec.cc) into `c`, over what
 /// its `imu_profile` (if any) set.
-void ReadMcuRough(const YamlReader& r, mcu::McuConfig& c);
+void ReadMcuRough(const YamlReader& y, mcu::McuConfig& c);
 
 }  // namespace hil::harness

@@ -27,7 +27,7 @@ struct CampaignCriterion {
 /// `statistical.criteria` item): {metric, stat, max | min, name, scenarios} or {pass_fraction,
 /// name, scenarios}.
 /// @throws ScenarioError.
-CampaignCriterion ReadCampaignCriterion(const YamlReader& c);
+CampaignCriterion ReadCampaignCriterion(const YamlReader& y);
 
 /// The statistics a campaign criterion may take, and the report gives per metric.
 inline constexpr const char* kCampaignStats[] = {"mean", "p50", "p95", "max", "min"};

@@ -1,11 +1,13 @@
 #pragma once
 /// @file
 /// The scenario file's keys as tables: one table per section (`vehicle`, `closed_loop.actuator`,
-/// ...), one row per key with its type, unit, default, allowed range and meaning. The section's
-/// reader validates with its table (KeyedReader: the known keys, the ranges and the choices come
-/// from the rows), and `hil scenario-keys` prints every table as the scenario reference
-/// (docs/scenario_reference.md, checked against the tables by scenario_reference_test), so the
-/// documentation cannot drift from what the reader takes.
+/// ...), one row per key with its type, unit, default, allowed range, meaning and the source of
+/// its default. The section's reader validates with its table (KeyedReader: the known keys, the
+/// ranges and the choices come from the rows), and `hil scenario-keys` prints every table as the
+/// scenario reference (docs/scenario_reference.md, checked against the tables by
+/// scenario_reference_test), so the documentation cannot drift from what the reader takes;
+/// scenario_key_coverage_test checks that every top-level section has a table, that each reader
+/// takes exactly its table's keys and that the printed defaults are the readers'.
 ///
 /// Adding a key is one row in its section's table, then one read of it in the reader:
 ///   {.name = "mask_deg", .type = KeyType::kNumber, .unit = "deg", .default_text = "10",
@@ -50,7 +52,15 @@ struct ScenarioKey {
   std::span<const std::string_view> choices = {};  ///< kChoice: the values taken
   /// Replaces the printed [lo, hi] when the bound depends on other keys ("±max_steer_deg").
   std::string_view range_text = {};
+  /// Where the default comes from: a document the code's comment cites, or "ours: REASON" when
+  /// the code chose it; empty when the default is no physical figure (a name, "none").
+  std::string_view source = {};
 };
+
+/// A row's empty `choices` and `range_text`, by name: a row that states its source after them reads
+/// (and clang-format packs) as a row.
+inline constexpr std::span<const std::string_view> kNoChoices{};
+inline constexpr std::string_view kAnyRange{};
 
 /// A section of the scenario file and its table.
 struct KeySection {
