@@ -118,9 +118,8 @@ class PlayToTheEnd final : public EngineMonitor {
 // Closing a pty discards what its host has not read yet, including bytes still in the kernel's
 // flip buffer (not counted by FIONREAD): waits until every queue has been empty for 50 ms (≤ 2 s).
 void WaitUntilRead(const DeviceSet& set) {
-  const std::int64_t drain_deadline = link::RealtimePacer::MonotonicNs() + 2000000000LL;
-  for (int quiet_ms = 0; quiet_ms < 50 && link::RealtimePacer::MonotonicNs() < drain_deadline;
-       quiet_ms += 2) {
+  const WallTime drain_deadline = WallNow() + std::chrono::seconds(2);
+  for (int quiet_ms = 0; quiet_ms < 50 && WallNow() < drain_deadline; quiet_ms += 2) {
     for (const auto& ep : set.endpoints.front()) {
       if (ep->PendingToHost() > 0) quiet_ms = 0;
     }
@@ -130,7 +129,7 @@ void WaitUntilRead(const DeviceSet& set) {
 
 ReplayResult ResultOf(const DeviceSet& set, const link::RealtimePacer& pacer) {
   ReplayResult result;
-  result.wall_start_ns = pacer.WallNsOf(Time{});
+  result.wall_start = pacer.WallTimeOf(Time{});
   for (const auto& ep : set.endpoints.front())
     result.byte_schedule_error_us.Merge(ep->schedule_error_us());
   result.bytes = result.byte_schedule_error_us.count();

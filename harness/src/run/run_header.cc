@@ -71,7 +71,7 @@ RunHeader MakeRunHeader(const RunContext& ctx) {
   const auto now_unix_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(
                                std::chrono::system_clock::now().time_since_epoch())
                                .count();
-  h.run_started_utc = UtcText(now_unix_ns - (NowNs() - ctx.wall_start_ns));
+  h.run_started_utc = UtcText(now_unix_ns - (WallNow() - ctx.wall_start).count());
   h.devices = Devices(s);
   h.hil_version = HilVersion();
   h.hil_commit = HilCommit();

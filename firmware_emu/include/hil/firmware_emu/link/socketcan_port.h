@@ -16,6 +16,7 @@
 
 #include "hil/firmware_emu/link/can_wire_frame.h"
 #include "hil/firmware_emu/sim_time.h"
+#include "hil/firmware_emu/wall_time.h"
 
 namespace hil::link {
 
@@ -23,7 +24,7 @@ namespace hil::link {
 struct ReceivedCanFrame {
   CanWireFrame frame;
   std::int64_t t_kernel_unix_ns = 0;  ///< kernel receive time (CLOCK_REALTIME); 0 if none came
-  std::int64_t t_read_mono_ns = 0;    ///< CLOCK_MONOTONIC when this process read it
+  WallTime t_read_mono{};             ///< when this process read it
   bool own = false;                   ///< our own frame echoed back (receive_own_frames)
 };
 
@@ -69,7 +70,7 @@ class SocketCanPort {
 
   /// Sends one frame. Returns the CLOCK_MONOTONIC time just after the kernel accepted it, or
   /// nothing when it did not (counted; a full TX queue is retried for up to 10 ms first).
-  std::optional<std::int64_t> Send(const CanWireFrame& frame);
+  std::optional<WallTime> Send(const CanWireFrame& frame);
   /// Waits up to `timeout` (zero: poll) for a frame. Error frames are counted and returned too
   /// (frame.error set); nothing on timeout.
   std::optional<ReceivedCanFrame> Receive(Duration timeout);

@@ -95,24 +95,24 @@ class CanEndpoint {
   struct Sent {
     link::CanWireFrame frame;
     Time t_scheduled{};
-    std::int64_t t_write_mono_ns = 0;
+    WallTime t_write_mono{};
     bool captured = false;  // virtual mode: captured at its emulated time already
   };
-  void Capture(CaptureDir dir, Time t, std::int64_t wall_ns, const link::CanWireFrame& f);
+  void Capture(CaptureDir dir, Time t, WallTime wall, const link::CanWireFrame& f);
   /// Reads what the socket holds, captures it in that order, keeps others' frames for PollBus.
   void ReadBus(Time t_now, const link::RealtimePacer* pacer, Duration wait);
   /// One frame read off the socket: an echo of ours, or another's (captured or kept).
   void Take(const link::ReceivedCanFrame& r, Time t_now, const link::RealtimePacer* pacer);
   /// Virtual mode: reads until every frame sent on the interface so far has been read, or `limit`.
   void AwaitSentFrames(Time t_now, Duration limit);
-  void OnEcho(const link::ReceivedCanFrame& r, Time t, std::int64_t mono_ns);
+  void OnEcho(const link::ReceivedCanFrame& r, Time t, WallTime mono);
   /// Captures the oldest frame still awaiting its echo at its write time.
   void CaptureUnechoed();
   /// Writes the arrivals whose capture waits (TakeArrivals) up to emulated time `t`.
   void CaptureArrivalsUpTo(Time t);
   /// Emulated time and CLOCK_MONOTONIC of a received frame: its kernel stamp (real time).
-  std::pair<Time, std::int64_t> BusTime(const link::ReceivedCanFrame& r,
-                                        const link::RealtimePacer& pacer);
+  std::pair<Time, WallTime> BusTime(const link::ReceivedCanFrame& r,
+                                    const link::RealtimePacer& pacer);
 
   link::SocketCanPort port_;
   std::int64_t start_unix_ns_;
