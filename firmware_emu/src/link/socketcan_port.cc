@@ -166,7 +166,7 @@ std::optional<ReceivedCanFrame> SocketCanPort::Receive(Duration timeout) {
     if (c->cmsg_type == SO_TIMESTAMPNS) {
       timespec ts{};
       std::memcpy(&ts, CMSG_DATA(c), sizeof ts);
-      r.t_kernel_unix_ns = static_cast<std::int64_t>(ts.tv_sec) * 1000000000LL + ts.tv_nsec;
+      r.t_kernel = UnixTimeFromNs(static_cast<std::int64_t>(ts.tv_sec) * 1000000000LL + ts.tv_nsec);
     } else if (c->cmsg_type == SO_RXQ_OVFL) {
       std::uint32_t drops = 0;
       std::memcpy(&drops, CMSG_DATA(c), sizeof drops);

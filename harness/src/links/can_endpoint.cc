@@ -22,31 +22,32 @@ link::SocketCanPort::Options BusOptions(const std::string& iface, bool fd) {
   return o;
 }
 
-CaptureHeader CanHeader(const std::string& iface, std::int64_t start_unix_ns) {
+CaptureHeader CanHeader(const std::string& iface, UnixTime start_utc) {
   CaptureHeader h;
   h.link = iface;
   h.kind = "can";
   h.iface = iface;
-  h.start_unix_ns = start_unix_ns;
+  h.start_unix_ns = ToNs(start_utc);
   return h;
 }
 
-std::int64_t RealtimeMinusMonotonicNs() {
-  timespec r{}, m{};
-  clock_gettime(CLOCK_REALTIME, &r);
-  clock_gettime(CLOCK_MONOTONIC, &m);
-  return (static_cast<std::int64_t>(r.tv_sec) - m.tv_sec) * 1000000000LL + (r.tv_nsec - m.tv_nsec);
+// The offset of the two clocks' epochs: a kernel receive stamp (UTC) minus it is the same
+// instant on the wall clock.
+Duration RealtimeMinusMonotonic() {
+  const UnixTime utc = UnixClock::now();
+  const WallTime wall = WallNow();
+  return utc.time_since_epoch() - wall.time_since_epoch();
 }
 
 }  // namespace
 
 CanEndpoint::CanEndpoint(const std::string& iface, const std::string& capture_dir,
-                         std::int64_t start_unix_ns, bool fd)
+                         UnixTime start_utc, bool fd)
     : port_(iface, BusOptions(iface, fd)),
-      start_unix_ns_(start_unix_ns),
+      start_utc_(start_utc),
       candump_(capture_dir + "/" + iface + ".candump"),
-      capture_(capture_dir + "/" + iface + ".cap", CanHeader(iface, start_unix_ns)),
-      realtime_minus_mono_ns_(RealtimeMinusMonotonicNs()),
+      capture_(capture_dir + "/" + iface + ".cap", CanHeader(iface, start_utc)),
+      realtime_minus_mono_(RealtimeMinusMonotonic()),
       tx_counter_(iface) {}
 
 CanEndpoint::~CanEndpoint() {
@@ -80,7 +81,7 @@ void CanEndpoint::Capture(CaptureDir dir, Time t, WallTime wall, const link::Can
   r.frame = f;
   capture_.Write(r);
   link::CandumpRecord c;
-  c.t_unix_ns = start_unix_ns_ + ToNs(t);
+  c.t = start_utc_ + (t - Time{});
   c.iface = port_.ifname();
   c.frame = f;
   candump_.Write(c);
@@ -88,8 +89,8 @@ void CanEndpoint::Capture(CaptureDir dir, Time t, WallTime wall, const link::Can
 
 std::pair<Time, WallTime> CanEndpoint::BusTime(const link::ReceivedCanFrame& r,
                                                const link::RealtimePacer& pacer) {
-  const WallTime mono = r.t_kernel_unix_ns > 0
-                            ? WallTimeFromNs(r.t_kernel_unix_ns - realtime_minus_mono_ns_)
+  const WallTime mono = r.t_kernel > UnixTime{}
+                            ? WallTime{r.t_kernel.time_since_epoch() - realtime_minus_mono_}
                             : r.t_read_mono;  // no stamp came
   return {pacer.SimTimeOfWall(mono), mono};
 }

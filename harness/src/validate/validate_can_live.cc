@@ -32,7 +32,7 @@ CanListen ListenCanInterface(const std::string& iface, double listen_s) {
     const auto r = port.Receive(std::min<Duration>(end - now, std::chrono::milliseconds(100)));
     if (!r) continue;
     link::CandumpRecord rec;
-    rec.t_unix_ns = r->t_kernel_unix_ns;
+    rec.t = r->t_kernel;
     rec.iface = iface;
     rec.frame = r->frame;
     out.candump_text += link::FormatCandumpLine(rec) + "\n";

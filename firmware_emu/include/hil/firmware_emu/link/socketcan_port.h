@@ -16,6 +16,7 @@
 
 #include "hil/firmware_emu/link/can_wire_frame.h"
 #include "hil/firmware_emu/sim_time.h"
+#include "hil/firmware_emu/unix_time.h"
 #include "hil/firmware_emu/wall_time.h"
 
 namespace hil::link {
@@ -23,9 +24,9 @@ namespace hil::link {
 /// A frame read from the bus.
 struct ReceivedCanFrame {
   CanWireFrame frame;
-  std::int64_t t_kernel_unix_ns = 0;  ///< kernel receive time (CLOCK_REALTIME); 0 if none came
-  WallTime t_read_mono{};             ///< when this process read it
-  bool own = false;                   ///< our own frame echoed back (receive_own_frames)
+  UnixTime t_kernel{};     ///< kernel receive time (CLOCK_REALTIME); the epoch if none came
+  WallTime t_read_mono{};  ///< when this process read it
+  bool own = false;        ///< our own frame echoed back (receive_own_frames)
 };
 
 /// Counters of one port.

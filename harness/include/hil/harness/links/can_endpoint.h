@@ -26,6 +26,7 @@
 #include "hil/firmware_emu/link/candump_log.h"
 #include "hil/firmware_emu/link/realtime_pacer.h"
 #include "hil/firmware_emu/link/socketcan_port.h"
+#include "hil/firmware_emu/unix_time.h"
 #include "hil/harness/core/quantile_sketch.h"
 #include "hil/harness/links/bus_tx_counter.h"
 #include "hil/harness/links/capture_format.h"
@@ -35,10 +36,10 @@ namespace hil::harness {
 class CanEndpoint {
  public:
   /// Opens `iface` and creates both captures in `capture_dir`.
-  /// @param start_unix_ns UTC of emulated t = 0 (candump log timestamps)
+  /// @param start_utc UTC of emulated t = 0 (candump log timestamps)
   /// @throws std::runtime_error when the interface cannot be opened (the message says when the
   ///         kernel has no CAN at all and points at ci/vcan/run_in_vm).
-  CanEndpoint(const std::string& iface, const std::string& capture_dir, std::int64_t start_unix_ns,
+  CanEndpoint(const std::string& iface, const std::string& capture_dir, UnixTime start_utc,
               bool fd = false);
 
   /// Queues a device's frame to leave at frame.t (frames of one device come in time order; frames
@@ -115,7 +116,7 @@ class CanEndpoint {
                                     const link::RealtimePacer& pacer);
 
   link::SocketCanPort port_;
-  std::int64_t start_unix_ns_;
+  UnixTime start_utc_;
   link::CandumpLogWriter candump_;
   CaptureWriter capture_;
   std::deque<CanFrame> pending_;
@@ -125,7 +126,7 @@ class CanEndpoint {
   std::vector<link::CanWireFrame> unstamped_;  // others' frames read, awaiting TakeArrivals
   std::deque<std::pair<Time, link::CanWireFrame>> arrivals_;  // stamped, capture not yet written
   std::optional<link::RealtimePacer> pacer_;  // real time: a copy of the run's clock mapping
-  std::int64_t realtime_minus_mono_ns_ = 0;   // CLOCK_REALTIME − CLOCK_MONOTONIC at start
+  Duration realtime_minus_mono_{};            // CLOCK_REALTIME − CLOCK_MONOTONIC at start
   Time t_last_capture_{};                     // captures never go back in time
   BusTxCounter tx_counter_;                   // frames sent on the interface (vcan only)
   std::uint64_t frames_read_ = 0;             // frames read off the socket, echoes included
