@@ -13,16 +13,6 @@
 #include <sys/resource.h>
 
 namespace hil::link {
-namespace {
-
-// The last stretch is spun, the rest slept (an absolute CLOCK_MONOTONIC timer, the thread's slack:
-// 0 for a real-time thread). A SCHED_FIFO thread that spun the last 60 µs (the pacing thread: 100
-// µs) before each byte used 8.6 % of a CPU in seed000's real-time run (issue 40.9); 30 µs is about
-// the wake-up latency of a loaded machine (cyclictest p50 32-39 µs here), so the spin is mostly
-// what the wake-up left, and a quiet machine spends at most 30 µs a byte.
-constexpr Duration kSpin = RealtimePacer::kSpin;
-
-}  // namespace
 
 RealtimePacer::RealtimePacer(double speed) : speed_(speed), wall_start_(WallNow()) {}
 
@@ -36,6 +26,11 @@ Time RealtimePacer::SimTimeOfWall(WallTime wall) const {
       std::llround(static_cast<double>((wall - wall_start_).count()) * speed_)));
 }
 
+// The last stretch (kSpin) is spun, the rest slept (an absolute CLOCK_MONOTONIC timer, the thread's
+// slack: 0 for a real-time thread). A SCHED_FIFO thread that spun the last 60 µs (the pacing
+// thread: 100 µs) before each byte used 8.6 % of a CPU in seed000's real-time run (issue 40.9); 30
+// µs is about the wake-up latency of a loaded machine (cyclictest p50 32-39 µs here), so the spin
+// is mostly what the wake-up left, and a quiet machine spends at most 30 µs a byte.
 WallTime RealtimePacer::SleepUntil(Time t) const {
   const WallTime target = WallTimeOf(t);
   WallTime now = WallNow();
