@@ -116,8 +116,8 @@ std::optional<CanWireFrame> ParseCanFrameText(std::string_view s) {
 }
 
 std::string FormatCandumpLine(const CandumpRecord& r, int iface_width) {
-  std::int64_t sec = r.t_unix_ns / 1000000000LL;
-  std::int64_t ns = r.t_unix_ns % 1000000000LL;
+  std::int64_t sec = ToNs(r.t) / 1000000000LL;
+  std::int64_t ns = ToNs(r.t) % 1000000000LL;
   if (ns < 0) {
     ns += 1000000000LL;
     --sec;
@@ -158,7 +158,7 @@ std::optional<CandumpRecord> ParseCandumpLine(std::string_view line) {
     scale /= 10;
   }
   if (dot + 1 == close) return std::nullopt;
-  r.t_unix_ns = sec * 1000000000LL + frac_ns;
+  r.t = UnixTimeFromNs(sec * 1000000000LL + frac_ns);
   // fields after the timestamp, separated by spaces (the interface may be left-padded)
   std::vector<std::string_view> fields;
   std::string_view rest = line.substr(close + 1);

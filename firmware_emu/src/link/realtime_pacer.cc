@@ -13,46 +13,35 @@
 #include <sys/resource.h>
 
 namespace hil::link {
-namespace {
 
-// The last stretch is spun, the rest slept (an absolute CLOCK_MONOTONIC timer, the thread's slack:
-// 0 for a real-time thread). A SCHED_FIFO thread that spun the last 60 µs (the pacing thread: 100
-// µs) before each byte used 8.6 % of a CPU in seed000's real-time run (issue 40.9); 30 µs is about
-// the wake-up latency of a loaded machine (cyclictest p50 32-39 µs here), so the spin is mostly
-// what the wake-up left, and a quiet machine spends at most 30 µs a byte.
-constexpr std::int64_t kSpinNs = RealtimePacer::kSpinNs;
+RealtimePacer::RealtimePacer(double speed) : speed_(speed), wall_start_(WallNow()) {}
 
-}  // namespace
-
-RealtimePacer::RealtimePacer(double speed) : speed_(speed), wall_start_ns_(MonotonicNs()) {}
-
-std::int64_t RealtimePacer::MonotonicNs() {
-  timespec ts{};
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return static_cast<std::int64_t>(ts.tv_sec) * 1000000000LL + ts.tv_nsec;
+WallTime RealtimePacer::WallTimeOf(Time t) const {
+  return wall_start_ +
+         Duration{static_cast<std::int64_t>(std::llround(static_cast<double>(ToNs(t)) / speed_))};
 }
 
-std::int64_t RealtimePacer::WallNsOf(Time t) const {
-  return wall_start_ns_ +
-         static_cast<std::int64_t>(std::llround(static_cast<double>(ToNs(t)) / speed_));
-}
-
-Time RealtimePacer::SimTimeOfWall(std::int64_t wall_ns) const {
+Time RealtimePacer::SimTimeOfWall(WallTime wall) const {
   return TimeFromNs(static_cast<std::int64_t>(
-      std::llround(static_cast<double>(wall_ns - wall_start_ns_) * speed_)));
+      std::llround(static_cast<double>((wall - wall_start_).count()) * speed_)));
 }
 
-std::int64_t RealtimePacer::SleepUntil(Time t) const {
-  const std::int64_t target = WallNsOf(t);
-  std::int64_t now = MonotonicNs();
-  if (target - now > kSpinNs) {
-    const std::int64_t wake = target - kSpinNs;
-    const timespec ts{static_cast<time_t>(wake / 1000000000LL),
-                      static_cast<long>(wake % 1000000000LL)};
+// The last stretch (kSpin) is spun, the rest slept (an absolute CLOCK_MONOTONIC timer, the thread's
+// slack: 0 for a real-time thread). A SCHED_FIFO thread that spun the last 60 µs (the pacing
+// thread: 100 µs) before each byte used 8.6 % of a CPU in seed000's real-time run (issue 40.9); 30
+// µs is about the wake-up latency of a loaded machine (cyclictest p50 32-39 µs here), so the spin
+// is mostly what the wake-up left, and a quiet machine spends at most 30 µs a byte.
+WallTime RealtimePacer::SleepUntil(Time t) const {
+  const WallTime target = WallTimeOf(t);
+  WallTime now = WallNow();
+  if (target - now > kSpin) {
+    const std::int64_t wake_ns = ToNs(target - kSpin);
+    const timespec ts{static_cast<time_t>(wake_ns / 1000000000LL),
+                      static_cast<long>(wake_ns % 1000000000LL)};
     while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &ts, nullptr) != 0) {
     }
   }
-  while ((now = MonotonicNs()) < target) {
+  while ((now = WallNow()) < target) {
   }
   return now;
 }
@@ -66,13 +55,12 @@ ThreadCpuReading ThreadCpuReading::Now() {
     r.system_s =
         static_cast<double>(u.ru_stime.tv_sec) + static_cast<double>(u.ru_stime.tv_usec) * 1e-6;
   }
-  r.wall_ns = RealtimePacer::MonotonicNs();
+  r.wall = WallNow();
   return r;
 }
 
 ThreadUsage ThreadCpuReading::Since(const ThreadCpuReading& start) const {
-  return {user_s - start.user_s, system_s - start.system_s,
-          static_cast<double>(wall_ns - start.wall_ns) * 1e-9};
+  return {user_s - start.user_s, system_s - start.system_s, ToSeconds(wall - start.wall)};
 }
 
 ThreadSchedule RealtimePacer::CurrentThreadSchedule() {

@@ -15,8 +15,8 @@
 #include <sys/ioctl.h>
 #include <sys/socket.h>
 
-#include "hil/firmware_emu/link/realtime_pacer.h"
 #include "hil/firmware_emu/link/sys_error.h"
+#include "hil/firmware_emu/wall_time.h"
 
 #ifndef SO_RXQ_OVFL
 #define SO_RXQ_OVFL 40
@@ -111,21 +111,21 @@ SocketCanPort::~SocketCanPort() {
   if (fd_ >= 0) close(fd_);
 }
 
-std::optional<std::int64_t> SocketCanPort::Send(const CanWireFrame& frame) {
+std::optional<WallTime> SocketCanPort::Send(const CanWireFrame& frame) {
   if (frame.fd && !fd_enabled_) {
     ++stats_.send_failures;
     return std::nullopt;
   }
   const canfd_frame k = ToKernel(frame);
   const std::size_t size = frame.fd ? CANFD_MTU : CAN_MTU;
-  const std::int64_t give_up = RealtimePacer::MonotonicNs() + 10000000;
+  const WallTime give_up = WallNow() + std::chrono::milliseconds(10);
   for (;;) {
     const ssize_t n = write(fd_, &k, size);
     if (n == static_cast<ssize_t>(size)) {
       ++stats_.frames_sent;
-      return RealtimePacer::MonotonicNs();
+      return WallNow();
     }
-    if (n < 0 && (errno == ENOBUFS || errno == EAGAIN) && RealtimePacer::MonotonicNs() < give_up) {
+    if (n < 0 && (errno == ENOBUFS || errno == EAGAIN) && WallNow() < give_up) {
       pollfd p{fd_, POLLOUT, 0};
       poll(&p, 1, 1);
       continue;
@@ -158,7 +158,7 @@ std::optional<ReceivedCanFrame> SocketCanPort::Receive(Duration timeout) {
     return std::nullopt;
 
   ReceivedCanFrame r;
-  r.t_read_mono_ns = RealtimePacer::MonotonicNs();
+  r.t_read_mono = WallNow();
   r.frame = FromKernel(k, n == static_cast<ssize_t>(CANFD_MTU));
   r.own = (msg.msg_flags & MSG_CONFIRM) != 0;
   for (cmsghdr* c = CMSG_FIRSTHDR(&msg); c != nullptr; c = CMSG_NXTHDR(&msg, c)) {
@@ -166,7 +166,7 @@ std::optional<ReceivedCanFrame> SocketCanPort::Receive(Duration timeout) {
     if (c->cmsg_type == SO_TIMESTAMPNS) {
       timespec ts{};
       std::memcpy(&ts, CMSG_DATA(c), sizeof ts);
-      r.t_kernel_unix_ns = static_cast<std::int64_t>(ts.tv_sec) * 1000000000LL + ts.tv_nsec;
+      r.t_kernel = UnixTimeFromNs(static_cast<std::int64_t>(ts.tv_sec) * 1000000000LL + ts.tv_nsec);
     } else if (c->cmsg_type == SO_RXQ_OVFL) {
       std::uint32_t drops = 0;
       std::memcpy(&drops, CMSG_DATA(c), sizeof drops);

@@ -17,7 +17,7 @@
 #include <sys/syscall.h>
 #include <sys/wait.h>
 
-#include "hil/firmware_emu/link/realtime_pacer.h"
+#include "hil/firmware_emu/wall_time.h"
 
 namespace hil::harness {
 namespace {
@@ -31,7 +31,7 @@ constexpr const char* kRunFolderMark = ".hil-run.lock";
 
 struct Child {
   std::size_t index = 0;
-  std::int64_t started_ns = 0;
+  WallTime started{};
 };
 
 std::vector<std::string> RunArgv(const CampaignFolder& f, const CampaignRun& r,
@@ -97,7 +97,7 @@ std::string Duration(double s) {
 class Progress {
  public:
   Progress(const RunnerOptions& o, std::size_t total, std::size_t skipped)
-      : o_(o), total_(total), done_(skipped), start_ns_(link::RealtimePacer::MonotonicNs()) {}
+      : o_(o), total_(total), done_(skipped), start_(WallNow()) {}
   void Finished(const std::string& id, int code, double wall_s, std::size_t running) {
     ++done_, ++ran_;
     code == 0 ? ++passed_ : ++failed_;
@@ -121,14 +121,12 @@ class Progress {
   void End() const {
     if (o_.live && ran_ > 0) std::fputs("\n", stderr);
   }
-  double Elapsed() const {
-    return static_cast<double>(link::RealtimePacer::MonotonicNs() - start_ns_) * 1e-9;
-  }
+  double Elapsed() const { return ToSeconds(WallNow() - start_); }
 
  private:
   const RunnerOptions& o_;
   std::size_t total_, done_, ran_ = 0, passed_ = 0, failed_ = 0;
-  std::int64_t start_ns_;
+  WallTime start_{};
 };
 
 json ReadReport(const std::string& path) {
@@ -207,8 +205,7 @@ RunnerResult RunCampaignRuns(const CampaignFolder& f, const std::vector<std::siz
       // hil.log goes in first: the lock file marks the folder as the run's (run_folder.h), so
       // `hil run --out` takes a folder that is not empty
       std::ofstream((run_dir / kRunFolderMark).string()).flush();
-      running[Start(RunArgv(f, r, o), (run_dir / "hil.log").string())] = {
-          todo[next], link::RealtimePacer::MonotonicNs()};
+      running[Start(RunArgv(f, r, o), (run_dir / "hil.log").string())] = {todo[next], WallNow()};
       ++next;
     }
     int status = 0;
@@ -219,8 +216,7 @@ RunnerResult RunCampaignRuns(const CampaignFolder& f, const std::vector<std::siz
     const Child c = it->second;
     running.erase(it);
     const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    const double wall_s =
-        static_cast<double>(link::RealtimePacer::MonotonicNs() - c.started_ns) * 1e-9;
+    const double wall_s = ToSeconds(WallNow() - c.started);
     const CampaignRun& r = f.plan.runs[c.index];
     Record(f, r, code, wall_s, o.label);
     ++result.ran, ++result.recorded;

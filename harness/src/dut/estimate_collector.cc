@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "hil/firmware_emu/link/realtime_pacer.h"
+#include "hil/firmware_emu/wall_time.h"
 
 namespace hil::harness {
 
@@ -60,17 +60,17 @@ void EstimateCollector::NotASolution(const std::string& line) {
   first_unparsed_reason_ = reader_->WhyNotASolution(line);
 }
 
-void EstimateCollector::ConsumeScanned(const std::string& line, std::int64_t wall_ns,
+void EstimateCollector::ConsumeScanned(const std::string& line, WallTime wall,
                                        const JsonSolutionLine& scan) {
   Keep(line);
   json_observer_.scanned(scan);
-  if (auto r = reader_->ScannedLine(scan, wall_ns))
+  if (auto r = reader_->ScannedLine(scan, wall))
     AddRecord(*r);
   else
     NotASolution(line);
 }
 
-void EstimateCollector::Consume(const std::string& line, std::int64_t wall_ns,
+void EstimateCollector::Consume(const std::string& line, WallTime wall,
                                 const nlohmann::json* parsed) {
   Keep(line);
   std::optional<EstimateRecord> r;
@@ -80,10 +80,10 @@ void EstimateCollector::Consume(const std::string& line, std::int64_t wall_ns,
         parsed ? nlohmann::json() : nlohmann::json::parse(line, nullptr, false);
     const nlohmann::json& doc = parsed ? *parsed : j;
     json_observer_.parsed(doc);
-    r = reader_->JsonLine(doc, wall_ns);
+    r = reader_->JsonLine(doc, wall);
   } else {
     if (observer_) observer_(line);
-    r = reader_->Line(line, wall_ns);
+    r = reader_->Line(line, wall);
   }
   if (r)
     AddRecord(*r);
@@ -114,10 +114,10 @@ void EstimateCollector::Poll() {
 void EstimateCollector::Take() {
   if (poll_bus_) {
     const std::vector<CanFrame> frames = poll_bus_();
-    const std::int64_t now = link::RealtimePacer::MonotonicNs();
+    const WallTime now = WallNow();
     for (const CanFrame& f : frames) {
       if (!f.extended) continue;
-      bus_last_ns_ = now;
+      bus_last_ = now;
       const std::string_view data(reinterpret_cast<const char*>(f.data.data()),
                                   std::min<std::size_t>(f.len, 8));
       if (auto r = bus_reader_->Frame(f.id, data, now)) AddRecord(*r);
@@ -130,9 +130,9 @@ void EstimateCollector::Take() {
       if (nav_pty_) {
         Store("# stdout: " + l.text);
       } else if (l.scanned) {
-        ConsumeScanned(l.text, l.wall_ns, *l.scanned);
+        ConsumeScanned(l.text, l.wall, *l.scanned);
       } else {
-        Consume(l.text, l.wall_ns, l.json.get());
+        Consume(l.text, l.wall, l.json.get());
       }
     }
     process_->ReturnLines(std::move(lines));
@@ -140,8 +140,8 @@ void EstimateCollector::Take() {
   if (nav_pty_) {
     const std::string rx = nav_pty_->ReadAvailable();
     if (!rx.empty()) {
-      const std::int64_t now = link::RealtimePacer::MonotonicNs();
-      pty_last_ns_ = now;
+      const WallTime now = WallNow();
+      pty_last_ = now;
       pty_bytes_ += rx.size();
       pty_partial_ += rx;
       std::size_t pos;
@@ -159,9 +159,9 @@ void EstimateCollector::Take() {
   }
 }
 
-std::int64_t EstimateCollector::last_output_wall_ns() const {
-  const std::int64_t from_process = process_ && !nav_pty_ ? process_->last_output_wall_ns() : 0;
-  return std::max({from_process, pty_last_ns_, bus_last_ns_});
+WallTime EstimateCollector::last_output_wall() const {
+  const WallTime from_process = process_ && !nav_pty_ ? process_->last_output_wall() : WallTime{};
+  return std::max({from_process, pty_last_, bus_last_});
 }
 
 }  // namespace hil::harness

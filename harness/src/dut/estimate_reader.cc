@@ -87,20 +87,19 @@ std::string WhyNotAJsonSolution(const std::string& text, std::int64_t start_unix
 class JsonLinesReader final : public EstimateReader {
  public:
   explicit JsonLinesReader(std::int64_t start) : start_(start) {}
-  std::optional<EstimateRecord> Line(const std::string& text, std::int64_t wall_ns) override {
-    return JsonLine(nlohmann::json::parse(text, nullptr, false), wall_ns);
+  std::optional<EstimateRecord> Line(const std::string& text, WallTime wall) override {
+    return JsonLine(nlohmann::json::parse(text, nullptr, false), wall);
   }
   bool reads_json() const override { return true; }
-  std::optional<EstimateRecord> JsonLine(const nlohmann::json& j, std::int64_t wall_ns) override {
+  std::optional<EstimateRecord> JsonLine(const nlohmann::json& j, WallTime wall) override {
     if (j.is_discarded() || !j.is_object()) return std::nullopt;
-    return ScannedLine(SolutionFieldsOf(j), wall_ns);
+    return ScannedLine(SolutionFieldsOf(j), wall);
   }
   bool reads_scanned_lines() const override { return true; }
   std::string WhyNotASolution(const std::string& text) const override {
     return WhyNotAJsonSolution(text, start_);
   }
-  std::optional<EstimateRecord> ScannedLine(const JsonSolutionLine& l,
-                                            std::int64_t wall_ns) override {
+  std::optional<EstimateRecord> ScannedLine(const JsonSolutionLine& l, WallTime wall) override {
     if (!l.lat_deg || !l.lon_deg) return std::nullopt;
     EstimateRecord r;
     // navd's integer time of validity; other estimators may give only seconds (`tov_utc_s`)
@@ -117,7 +116,7 @@ class JsonLinesReader final : public EstimateReader {
     r.vel_enu_mps = l.vel_enu_mps;
     r.pos_std_enu_m = l.pos_std_enu_m;
     r.yaw_deg = l.yaw_deg;
-    r.wall_rx_ns = wall_ns;
+    r.wall_rx = wall;
     return r;
   }
 
@@ -128,11 +127,11 @@ class JsonLinesReader final : public EstimateReader {
 class GpsdJsonReader final : public EstimateReader {
  public:
   explicit GpsdJsonReader(std::int64_t start) : start_(start) {}
-  std::optional<EstimateRecord> Line(const std::string& text, std::int64_t wall_ns) override {
-    return JsonLine(nlohmann::json::parse(text, nullptr, false), wall_ns);
+  std::optional<EstimateRecord> Line(const std::string& text, WallTime wall) override {
+    return JsonLine(nlohmann::json::parse(text, nullptr, false), wall);
   }
   bool reads_json() const override { return true; }
-  std::optional<EstimateRecord> JsonLine(const nlohmann::json& j, std::int64_t wall_ns) override {
+  std::optional<EstimateRecord> JsonLine(const nlohmann::json& j, WallTime wall) override {
     if (j.is_discarded() || !j.is_object() || j.value("class", "") != "TPV") return std::nullopt;
     if (!j.contains("time") || !j["time"].is_string() || !j.contains("lat") || !j.contains("lon"))
       return std::nullopt;
@@ -165,7 +164,7 @@ class GpsdJsonReader final : public EstimateReader {
           Eigen::Vector3d(j["epx"].get<double>(), j["epy"].get<double>(), j["epv"].get<double>()) /
           1.96;
     }
-    r.wall_rx_ns = wall_ns;
+    r.wall_rx = wall;
     return r;
   }
 
@@ -176,7 +175,7 @@ class GpsdJsonReader final : public EstimateReader {
 class NmeaReader final : public EstimateReader {
  public:
   explicit NmeaReader(std::int64_t start) : start_(start) {}
-  std::optional<EstimateRecord> Line(const std::string& text, std::int64_t wall_ns) override {
+  std::optional<EstimateRecord> Line(const std::string& text, WallTime wall) override {
     const NmeaParse p = ParseNmeaSentence(text);
     if (!p.sentence) return std::nullopt;
     const NmeaSentence& s = *p.sentence;
@@ -213,7 +212,7 @@ class NmeaReader final : public EstimateReader {
           Eigen::Vector3d(*rmc_speed_mps_ * std::sin(psi), *rmc_speed_mps_ * std::cos(psi), 0.0);
       r.yaw_deg = *rmc_course_deg_;
     }
-    r.wall_rx_ns = wall_ns;
+    r.wall_rx = wall;
     return r;
   }
   bool OtherRecordOfTheStream(const std::string& text) const override {
@@ -229,7 +228,7 @@ class NmeaReader final : public EstimateReader {
 class N2kCandumpReader final : public EstimateReader {
  public:
   explicit N2kCandumpReader(std::int64_t start) : bus_(start) {}
-  std::optional<EstimateRecord> Line(const std::string& text, std::int64_t wall_ns) override {
+  std::optional<EstimateRecord> Line(const std::string& text, WallTime wall) override {
     const std::size_t hash = text.find('#');
     const std::size_t sp = text.rfind(' ', hash);
     if (hash == std::string::npos || sp == std::string::npos || hash - sp - 1 != 8)
@@ -245,7 +244,7 @@ class N2kCandumpReader final : public EstimateReader {
     } catch (const std::exception&) {
       return std::nullopt;
     }
-    return bus_.Frame(id, data, wall_ns);
+    return bus_.Frame(id, data, wall);
   }
 
  private:
@@ -256,9 +255,7 @@ class N2kCandumpReader final : public EstimateReader {
 // (navd's JSON with its health object) are diagnostics only.
 class NoLinesReader final : public EstimateReader {
  public:
-  std::optional<EstimateRecord> Line(const std::string&, std::int64_t) override {
-    return std::nullopt;
-  }
+  std::optional<EstimateRecord> Line(const std::string&, WallTime) override { return std::nullopt; }
   bool SolutionsInLines() const override { return false; }
 };
 

@@ -12,15 +12,15 @@
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
 
-#include "hil/firmware_emu/link/realtime_pacer.h"
+#include "hil/firmware_emu/wall_time.h"
 #include "hil/harness/dut/process_group.h"
 #include "hil/harness/dut/shell_spawn.h"
 
 namespace hil::harness {
 namespace {
 
-constexpr std::int64_t kStdoutEndWaitNs =
-    200'000'000;  // longest wait for the stdout pipe's end after Stop
+// longest wait for the stdout pipe's end after Stop
+constexpr Duration kStdoutEndWait = std::chrono::milliseconds(200);
 
 }  // namespace
 
@@ -87,7 +87,7 @@ void EstimatorProcess::ReadLoop() {
       stdout_closed_ = true;
       break;
     }
-    const std::int64_t now = link::RealtimePacer::MonotonicNs();
+    const WallTime now = WallNow();
     output_bytes_ += static_cast<std::uint64_t>(n);
     std::string_view in(buf, static_cast<std::size_t>(n));
     if (skip_to_newline) {
@@ -114,7 +114,7 @@ void EstimatorProcess::ReadLoop() {
   }
 }
 
-OutputLine EstimatorProcess::MakeLine(std::string text, std::int64_t now) {
+OutputLine EstimatorProcess::MakeLine(std::string text, WallTime now) {
   OutputLine l{std::move(text), now, nullptr, nullptr};
   if (scan_solutions_ && !l.text.empty() && l.text.front() == '{') {
     if (auto scan = scanner_.Scan(l.text))
@@ -126,7 +126,7 @@ OutputLine EstimatorProcess::MakeLine(std::string text, std::int64_t now) {
   return l;
 }
 
-void EstimatorProcess::Queue(std::vector<OutputLine>& got, std::int64_t now) {
+void EstimatorProcess::Queue(std::vector<OutputLine>& got, WallTime now) {
   std::vector<OutputLine> used;
   {
     std::lock_guard<std::mutex> lock(mu_);
@@ -138,7 +138,7 @@ void EstimatorProcess::Queue(std::vector<OutputLine>& got, std::int64_t now) {
       queued_bytes_ += l.text.size() + 1;
       lines_.push_back(std::move(l));
     }
-    last_output_wall_ns_ = now;
+    last_output_wall_ = now;
     used.swap(used_);
   }
   // `used` frees here, on the thread that allocated its lines, outside the lock
@@ -193,9 +193,8 @@ ExitInfo EstimatorProcess::Stop(double grace_s) {
   const bool was_running = Running();
   if (!was_running && !GroupAlive()) return *exit_;
   kill(-pid_, SIGTERM);
-  const std::int64_t deadline =
-      link::RealtimePacer::MonotonicNs() + static_cast<std::int64_t>(grace_s * 1e9);
-  while (link::RealtimePacer::MonotonicNs() < deadline) {
+  const WallTime deadline = WallNow() + DurationFromSeconds(grace_s);
+  while (WallNow() < deadline) {
     const bool leader = Running();
     if (!leader && !GroupAlive()) break;
     usleep(1000);
@@ -210,8 +209,8 @@ ExitInfo EstimatorProcess::Stop(double grace_s) {
   }
   if (was_running) exit_->exited = false;  // it ended because we asked
   // its last lines: the reader thread reads the pipe to its end once no process holds it
-  const std::int64_t eof_deadline = link::RealtimePacer::MonotonicNs() + kStdoutEndWaitNs;
-  while (!stdout_closed_ && link::RealtimePacer::MonotonicNs() < eof_deadline) usleep(200);
+  const WallTime eof_deadline = WallNow() + kStdoutEndWait;
+  while (!stdout_closed_ && WallNow() < eof_deadline) usleep(200);
   return *exit_;
 }
 

@@ -13,7 +13,7 @@ constexpr double kRadToDeg = 180.0 / M_PI;
 }  // namespace
 
 std::optional<EstimateRecord> N2kBusReader::Frame(std::uint32_t id29, std::string_view data,
-                                                  std::int64_t wall_ns) {
+                                                  WallTime wall) {
   const std::uint32_t pgn = N2kPgnFromId(id29);
   ++per_pgn_[pgn];
   if (data.empty()) return std::nullopt;
@@ -49,7 +49,7 @@ std::optional<EstimateRecord> N2kBusReader::Frame(std::uint32_t id29, std::strin
   r.lat_deg = static_cast<double>(LeRead<std::int64_t>(b, 7)) * 1e-16;
   r.lon_deg = static_cast<double>(LeRead<std::int64_t>(b, 15)) * 1e-16;
   r.height_m = static_cast<double>(LeRead<std::int64_t>(b, 23)) * 1e-6;
-  r.wall_rx_ns = wall_ns;
+  r.wall_rx = wall;
   const int sid = static_cast<unsigned char>(b[0]);
   if (cog_sog_.sid == sid) {
     r.vel_enu_mps =

@@ -45,11 +45,11 @@ namespace {
 // Waits until the host side of `ep` shows `want` unread bytes (a pty hands what its master side
 // wrote to the slave's line discipline in a kernel worker: a read on the host side that finds
 // bytes there returns them without waiting for the rest, so a chunk not yet handed over would be
-// read a read later in some runs). At most ClockedPacer::kHandOverLimitNs.
+// read a read later in some runs). At most ClockedPacer::kHandOverLimit.
 void AwaitHandOver(const SerialEndpoint& ep, std::size_t want) {
-  const std::int64_t start = link::RealtimePacer::MonotonicNs();
+  const WallTime start = WallNow();
   while (ep.PendingToHost() < want) {
-    if (link::RealtimePacer::MonotonicNs() - start > ClockedPacer::kHandOverLimitNs) return;
+    if (WallNow() - start > ClockedPacer::kHandOverLimit) return;
     sched_yield();
   }
 }

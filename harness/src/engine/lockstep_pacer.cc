@@ -16,10 +16,8 @@ void LockstepPacer::Start(EngineDevices& devices) {
 
 bool LockstepPacer::Await(const StepTimes& step, DeviceIo& io, DeviceOutput& out) {
   (void)io, (void)out;
-  const std::int64_t due = clock_.WallNsOf(step.t_action);
-  if (lateness_.Note(due, link::RealtimePacer::MonotonicNs()))
-    std::this_thread::sleep_until(
-        std::chrono::steady_clock::time_point(std::chrono::nanoseconds(due)));
+  const WallTime due = clock_.WallTimeOf(step.t_action);
+  if (lateness_.Note(due, WallNow())) std::this_thread::sleep_until(ToSteady(due));
   return false;
 }
 

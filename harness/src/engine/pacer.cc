@@ -16,11 +16,11 @@ const char* SteppingName(Stepping stepping) {
   return "virtual";
 }
 
-bool PaceLateness::Note(std::int64_t due_ns, std::int64_t now_ns) {
+bool PaceLateness::Note(WallTime due, WallTime now) {
   ++actions;
-  if (due_ns > now_ns) return true;
-  if (now_ns - due_ns > kLateNs) ++late;
-  max_late_ns = std::max(max_late_ns, now_ns - due_ns);
+  if (due > now) return true;
+  if (now - due > kLate) ++late;
+  max_late = std::max(max_late, now - due);
   return false;
 }
 

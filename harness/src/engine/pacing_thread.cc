@@ -64,15 +64,14 @@ void PacingThread::Loop() {
       cv_.wait(lock);
       continue;
     }
-    // sleep (unlocked) until RealtimePacer::kSpinNs before the byte's time (the condition
+    // sleep (unlocked) until RealtimePacer::kSpin before the byte's time (the condition
     // variable's timeout is an absolute CLOCK_MONOTONIC timer, as precise as clock_nanosleep);
     // whatever is queued meanwhile with an earlier time wakes the thread and is chosen instead.
     // It woke 100 µs early and spun 60 µs before every byte: 8.6 % of a CPU at SCHED_FIFO in
     // seed000's real-time run, 3.8 % with no spin at all (issue 40.9).
-    const std::int64_t wake_ns = pacer_.WallNsOf(t) - link::RealtimePacer::kSpinNs;
-    if (wake_ns > link::RealtimePacer::MonotonicNs()) {
-      cv_.wait_until(lock,
-                     std::chrono::steady_clock::time_point(std::chrono::nanoseconds(wake_ns)));
+    const WallTime wake = pacer_.WallTimeOf(t) - link::RealtimePacer::kSpin;
+    if (wake > WallNow()) {
+      cv_.wait_until(lock, ToSteady(wake));
       continue;
     }
     // the last stretch is spun with the lock released, then the byte due (or one queued meanwhile

@@ -22,12 +22,6 @@ constexpr int kYieldSteps = 16;
 constexpr long kFirstSleepNs = 20'000;
 constexpr long kLongestSleepNs = 1'000'000;
 
-std::int64_t MonotonicNs() {
-  timespec ts{};
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000LL + ts.tv_nsec;
-}
-
 // Whether /proc/PID/fdinfo/FD says the descriptor was opened O_WRONLY or O_RDWR (unreadable:
 // assumed so, the cautious answer).
 bool OpenForWriting(const std::string& fdinfo) {
@@ -172,10 +166,10 @@ bool VirtualGate::TryWrite(const SerialEndpoint& ep, std::size_t bytes, Time t_f
   Link* self = Find(ep);
   if (!self) return true;
   if (max_skew_ > Duration{0}) {
-    const std::int64_t now = MonotonicNs();
-    if (now - self->refused_at_ns < kRetryAfterRefusalNs) return false;
+    const WallTime now = WallNow();
+    if (now - self->refused_at < kRetryAfterRefusal) return false;
     if (!OthersReadUpTo(self, t_last - max_skew_)) {
-      self->refused_at_ns = now;
+      self->refused_at = now;
       return false;
     }
   } else if (Refresh(self, nullptr) != 0) {
@@ -247,35 +241,35 @@ void VirtualGate::NoteHostWrote() {
 
 bool VirtualGate::WaitHostIdle() {
   if (!host_ || busy_host_) return WaitAllRead();
-  const std::int64_t start = MonotonicNs();
-  std::int64_t all_read_since = -1;
-  std::int64_t last_scan = start - kHostScanPeriodNs;
+  const WallTime start = WallNow();
+  std::optional<WallTime> all_read_since;
+  WallTime last_scan = start - kHostScanPeriod;
   const auto idle = [&] {
     // a link found read with nothing written since stays read: only the others are asked
     if (Refresh(nullptr, nullptr) != 0) {
-      all_read_since = -1;
+      all_read_since.reset();
       return false;
     }
     if (!links_opened_) {
-      // a scan of /proc for the host's descriptors at most every kHostScanPeriodNs: the host
+      // a scan of /proc for the host's descriptors at most every kHostScanPeriod: the host
       // is starting, and needs the CPU more than this wait does
-      const std::int64_t now = MonotonicNs();
-      if (now - last_scan < kHostScanPeriodNs) return false;
+      const WallTime now = WallNow();
+      if (now - last_scan < kHostScanPeriod) return false;
       last_scan = now;
-      links_opened_ = ScanHostLinks().all_held || now - start > kHostStartLimitNs;
+      links_opened_ = ScanHostLinks().all_held || now - start > kHostStartLimit;
       if (!links_opened_) return false;
     }
     // every byte read: the host has been running since; asleep now, it has finished with them
     if (host_->AllAsleep()) return true;
-    const std::int64_t now = MonotonicNs();
-    if (all_read_since < 0) all_read_since = now;
-    if (now - all_read_since < kBusyHostLimitNs) return false;
+    const WallTime now = WallNow();
+    if (!all_read_since) all_read_since = now;
+    if (now - *all_read_since < kBusyHostLimit) return false;
     busy_host_ = true;
     std::fprintf(stderr,
                  "hil: the estimator read all its input but did not sleep for %.0f s: it is never "
                  "waited for again, and the bytes it writes get the emulated time they are seen "
                  "at\n",
-                 static_cast<double>(kBusyHostLimitNs) * 1e-9);
+                 ToSeconds(kBusyHostLimit));
     return true;
   };
   if (!Wait(idle, nullptr, nullptr)) return false;

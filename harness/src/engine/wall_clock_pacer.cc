@@ -41,22 +41,19 @@ std::unique_lock<std::mutex> WallClockPacer::LinksLock() {
                  : std::unique_lock<std::mutex>();
 }
 
-std::optional<std::int64_t> WallClockPacer::WakeNs(Time t_event, Time t_end,
-                                                   std::int64_t now_ns) const {
-  const std::int64_t due = clock_.WallNsOf(t_event) - kEventLeadNs;
-  if (t_event > t_end || due <= now_ns) return std::nullopt;
-  return std::min(due, now_ns + kHostPollPeriodNs);
+std::optional<WallTime> WallClockPacer::Wake(Time t_event, Time t_end, WallTime now) const {
+  const WallTime due = clock_.WallTimeOf(t_event) - kEventLead;
+  if (t_event > t_end || due <= now) return std::nullopt;
+  return std::min(due, now + kHostPollPeriod);
 }
 
 bool WallClockPacer::Await(const StepTimes& step, DeviceIo& io, DeviceOutput& out) {
   // the pacing thread writes the bytes and frames; this one idles until the next event, but reads
   // a host command when it arrives (within ~1 ms), not at the next event: the device may answer
   // in between
-  const std::optional<std::int64_t> wake =
-      WakeNs(step.t_event, step.t_end, link::RealtimePacer::MonotonicNs());
+  const std::optional<WallTime> wake = Wake(step.t_event, step.t_end, WallNow());
   if (!wake) return false;
-  std::this_thread::sleep_until(
-      std::chrono::steady_clock::time_point(std::chrono::nanoseconds(*wake)));
+  std::this_thread::sleep_until(ToSteady(*wake));
   io.PollHosts(step.t_event, out);
   return true;
 }
@@ -79,18 +76,18 @@ bool WallClockPacer::Flush(DeviceIo& io) {
   return true;
 }
 
-Time WallClockPacer::ArrivalTime(std::int64_t now_ns, Time t_last_event) const {
-  return std::max(clock_.SimTimeOfWall(now_ns), t_last_event);
+Time WallClockPacer::ArrivalTime(WallTime now, Time t_last_event) const {
+  return std::max(clock_.SimTimeOfWall(now), t_last_event);
 }
 
 Time WallClockPacer::HostBytesTime(Time t_host, Time t_last_event) const {
   (void)t_host;  // real time: its arrival, but not before the event the devices computed
-  return ArrivalTime(link::RealtimePacer::MonotonicNs(), t_last_event);
+  return ArrivalTime(WallNow(), t_last_event);
 }
 
 Time WallClockPacer::BusTime(Time t_last_event) const {
   (void)t_last_event;
-  return clock_.SimTimeOfWall(link::RealtimePacer::MonotonicNs());
+  return clock_.SimTimeOfWall(WallNow());
 }
 
 void WallClockPacer::RouteBusFrames(DeviceIo& io, DeviceOutput& out) {

@@ -95,23 +95,23 @@ double MissingInGap(double gap_s, double period_s) {
 
 }  // namespace
 
-void OutputTimingAccumulator::Add(Time t_validity, std::int64_t wall_rx_ns) {
+void OutputTimingAccumulator::Add(Time t_validity, WallTime wall_rx) {
   if (n_ > 0) dt_s_.Add(ToSeconds(t_validity - last_));
   if (n_ == 0) first_ = t_validity;
   last_ = t_validity;
   ++n_;
-  if (wall_rx_ns <= 0) return;
+  if (wall_rx <= WallTime{}) return;  // no arrival time (virtual mode)
   if (!reordering_) {
-    wall_.push_back(wall_rx_ns);
+    wall_.push_back(wall_rx);
     if (wall_.size() <= exact_limit_) return;
     // too many to hold: the sorted ones go out now, the rest through the reorder heap
     std::sort(wall_.begin(), wall_.end());
-    for (const std::int64_t w : wall_) AddArrivalInterval(w);
-    std::vector<std::int64_t>().swap(wall_);
+    for (const WallTime w : wall_) AddArrivalInterval(w);
+    std::vector<WallTime>().swap(wall_);
     reordering_ = true;
     return;
   }
-  heap_.push_back(wall_rx_ns);
+  heap_.push_back(wall_rx);
   std::push_heap(heap_.begin(), heap_.end(), std::greater<>());
   if (heap_.size() <= kReorderArrivals) return;
   std::pop_heap(heap_.begin(), heap_.end(), std::greater<>());
@@ -119,9 +119,9 @@ void OutputTimingAccumulator::Add(Time t_validity, std::int64_t wall_rx_ns) {
   heap_.pop_back();
 }
 
-void OutputTimingAccumulator::AddArrivalInterval(std::int64_t wall_ns) {
-  if (last_wall_) iv_ms_.Add(static_cast<double>(wall_ns - *last_wall_) * 1e-6 * speed_);
-  last_wall_ = wall_ns;
+void OutputTimingAccumulator::AddArrivalInterval(WallTime wall) {
+  if (last_wall_) iv_ms_.Add(static_cast<double>((wall - *last_wall_).count()) * 1e-6 * speed_);
+  last_wall_ = wall;
 }
 
 namespace {
@@ -161,20 +161,20 @@ OutputTiming OutputTimingAccumulator::Result(Time t_from, Time t_to) const {
   }
   if (!reordering_) {
     if (wall_.size() < 3) return t;
-    std::vector<std::int64_t> wall = wall_;
+    std::vector<WallTime> wall = wall_;
     std::sort(wall.begin(), wall.end());
     QuantileSketch iv(exact_limit_);
     for (std::size_t i = 1; i < wall.size(); ++i)
-      iv.Add(static_cast<double>(wall[i] - wall[i - 1]) * 1e-6 * speed_);
+      iv.Add(static_cast<double>((wall[i] - wall[i - 1]).count()) * 1e-6 * speed_);
     SetJitter(iv, exact_limit_, t);
     return t;
   }
   QuantileSketch iv = iv_ms_;
-  std::vector<std::int64_t> rest = heap_;
+  std::vector<WallTime> rest = heap_;
   std::sort(rest.begin(), rest.end());
-  std::optional<std::int64_t> last = last_wall_;
-  for (const std::int64_t w : rest) {
-    if (last) iv.Add(static_cast<double>(w - *last) * 1e-6 * speed_);
+  std::optional<WallTime> last = last_wall_;
+  for (const WallTime w : rest) {
+    if (last) iv.Add(static_cast<double>((w - *last).count()) * 1e-6 * speed_);
     last = w;
   }
   SetJitter(iv, exact_limit_, t);
@@ -191,7 +191,7 @@ OutputTiming ComputeOutputTiming(const std::vector<EstimateRecord>& records_in, 
       records.begin(), records.end(),
       [](const EstimateRecord& a, const EstimateRecord& b) { return a.t_validity < b.t_validity; });
   OutputTimingAccumulator a(speed);
-  for (const EstimateRecord& r : records) a.Add(r.t_validity, r.wall_rx_ns);
+  for (const EstimateRecord& r : records) a.Add(r.t_validity, r.wall_rx);
   return a.Result(t_from, t_to);
 }
 

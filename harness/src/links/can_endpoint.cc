@@ -22,31 +22,32 @@ link::SocketCanPort::Options BusOptions(const std::string& iface, bool fd) {
   return o;
 }
 
-CaptureHeader CanHeader(const std::string& iface, std::int64_t start_unix_ns) {
+CaptureHeader CanHeader(const std::string& iface, UnixTime start_utc) {
   CaptureHeader h;
   h.link = iface;
   h.kind = "can";
   h.iface = iface;
-  h.start_unix_ns = start_unix_ns;
+  h.start_unix_ns = ToNs(start_utc);
   return h;
 }
 
-std::int64_t RealtimeMinusMonotonicNs() {
-  timespec r{}, m{};
-  clock_gettime(CLOCK_REALTIME, &r);
-  clock_gettime(CLOCK_MONOTONIC, &m);
-  return (static_cast<std::int64_t>(r.tv_sec) - m.tv_sec) * 1000000000LL + (r.tv_nsec - m.tv_nsec);
+// The offset of the two clocks' epochs: a kernel receive stamp (UTC) minus it is the same
+// instant on the wall clock.
+Duration RealtimeMinusMonotonic() {
+  const UnixTime utc = UnixClock::now();
+  const WallTime wall = WallNow();
+  return utc.time_since_epoch() - wall.time_since_epoch();
 }
 
 }  // namespace
 
 CanEndpoint::CanEndpoint(const std::string& iface, const std::string& capture_dir,
-                         std::int64_t start_unix_ns, bool fd)
+                         UnixTime start_utc, bool fd)
     : port_(iface, BusOptions(iface, fd)),
-      start_unix_ns_(start_unix_ns),
+      start_utc_(start_utc),
       candump_(capture_dir + "/" + iface + ".candump"),
-      capture_(capture_dir + "/" + iface + ".cap", CanHeader(iface, start_unix_ns)),
-      realtime_minus_mono_ns_(RealtimeMinusMonotonicNs()),
+      capture_(capture_dir + "/" + iface + ".cap", CanHeader(iface, start_utc)),
+      realtime_minus_mono_(RealtimeMinusMonotonic()),
       tx_counter_(iface) {}
 
 CanEndpoint::~CanEndpoint() {
@@ -68,29 +69,29 @@ std::optional<Time> CanEndpoint::next_frame_time() const {
   return pending_.front().t;
 }
 
-void CanEndpoint::Capture(CaptureDir dir, Time t, std::int64_t wall_ns,
-                          const link::CanWireFrame& f) {
+void CanEndpoint::Capture(CaptureDir dir, Time t, WallTime wall, const link::CanWireFrame& f) {
   CaptureArrivalsUpTo(t);
   t = std::max(t, t_last_capture_);
   t_last_capture_ = t;
   CaptureRecord r;
   r.dir = dir;
   r.t_emu_ns = ToNs(t);
-  r.t_wall_ns = wall_ns;
+  r.t_wall = wall;
   r.name = port_.ifname();
   r.frame = f;
   capture_.Write(r);
   link::CandumpRecord c;
-  c.t_unix_ns = start_unix_ns_ + ToNs(t);
+  c.t = start_utc_ + (t - Time{});
   c.iface = port_.ifname();
   c.frame = f;
   candump_.Write(c);
 }
 
-std::pair<Time, std::int64_t> CanEndpoint::BusTime(const link::ReceivedCanFrame& r,
-                                                   const link::RealtimePacer& pacer) {
-  const std::int64_t mono = r.t_kernel_unix_ns > 0 ? r.t_kernel_unix_ns - realtime_minus_mono_ns_
-                                                   : r.t_read_mono_ns;  // no stamp came
+std::pair<Time, WallTime> CanEndpoint::BusTime(const link::ReceivedCanFrame& r,
+                                               const link::RealtimePacer& pacer) {
+  const WallTime mono = r.t_kernel > UnixTime{}
+                            ? WallTime{r.t_kernel.time_since_epoch() - realtime_minus_mono_}
+                            : r.t_read_mono;  // no stamp came
   return {pacer.SimTimeOfWall(mono), mono};
 }
 
@@ -99,12 +100,12 @@ void CanEndpoint::SendNext(const link::RealtimePacer& pacer) {
   if (pending_.empty()) return;
   const CanFrame f = pending_.front();
   pending_.pop_front();
-  const std::int64_t scheduled = pacer.WallNsOf(f.t);
+  const WallTime scheduled = pacer.WallTimeOf(f.t);
   pacer.SleepUntil(f.t);
   const link::CanWireFrame w = link::FromDeviceFrame(f);
   const auto sent = port_.Send(w);
   if (!sent) return;  // it never left: counted in stats(), not captured
-  schedule_error_us_.Add(static_cast<double>(*sent - scheduled) * 1e-3);
+  schedule_error_us_.Add(static_cast<double>((*sent - scheduled).count()) * 1e-3);
   awaiting_echo_.push_back({w, f.t, *sent, false});
   ReadBus(f.t, &pacer, Duration::zero());  // capture it (and what came before) in bus order now
 }
@@ -115,8 +116,9 @@ void CanEndpoint::SendAll() {
     pending_.pop_front();
     const link::CanWireFrame w = link::FromDeviceFrame(f);
     if (!port_.Send(w)) continue;
-    Capture(CaptureDir::kFrameTx, f.t, 0, w);  // virtual mode: no wall time (deterministic capture)
-    awaiting_echo_.push_back({w, f.t, 0, true});
+    // virtual mode: no wall time (deterministic capture)
+    Capture(CaptureDir::kFrameTx, f.t, WallTime{}, w);
+    awaiting_echo_.push_back({w, f.t, WallTime{}, true});
   }
 }
 
@@ -124,32 +126,32 @@ void CanEndpoint::CaptureUnechoed() {
   const Sent s = awaiting_echo_.front();
   awaiting_echo_.pop_front();
   if (s.captured) return;
-  const Time t = pacer_ ? pacer_->SimTimeOfWall(s.t_write_mono_ns) : s.t_scheduled;
-  Capture(CaptureDir::kFrameTx, t, s.t_write_mono_ns, s.frame);
+  const Time t = pacer_ ? pacer_->SimTimeOfWall(s.t_write_mono) : s.t_scheduled;
+  Capture(CaptureDir::kFrameTx, t, s.t_write_mono, s.frame);
 }
 
-void CanEndpoint::OnEcho(const link::ReceivedCanFrame& r, Time t, std::int64_t mono_ns) {
+void CanEndpoint::OnEcho(const link::ReceivedCanFrame& r, Time t, WallTime mono) {
   // echoes come in the order the frames were written; one the receive queue dropped is skipped
   const auto match = std::find_if(awaiting_echo_.begin(), awaiting_echo_.end(),
                                   [&](const Sent& s) { return s.frame == r.frame; });
   if (match == awaiting_echo_.end()) {  // not ours to account for (sent before a restart?)
-    Capture(CaptureDir::kFrameTx, t, mono_ns, r.frame);
+    Capture(CaptureDir::kFrameTx, t, mono, r.frame);
     return;
   }
   while (awaiting_echo_.begin() != match) CaptureUnechoed();
   const bool captured = awaiting_echo_.front().captured;
   awaiting_echo_.pop_front();
-  if (!captured) Capture(CaptureDir::kFrameTx, t, mono_ns, r.frame);
+  if (!captured) Capture(CaptureDir::kFrameTx, t, mono, r.frame);
 }
 
 void CanEndpoint::ReadBus(Time t_now, const link::RealtimePacer* pacer, Duration wait) {
-  const std::int64_t give_up = link::RealtimePacer::MonotonicNs() + wait.count();
+  const WallTime give_up = WallNow() + wait;
   for (;;) {
     std::optional<link::ReceivedCanFrame> r = port_.Receive(Duration::zero());
     if (!r) {
-      const std::int64_t left = give_up - link::RealtimePacer::MonotonicNs();
-      if (awaiting_echo_.empty() || left <= 0) return;
-      r = port_.Receive(Duration{std::min<std::int64_t>(left, 10000000)});
+      const Duration left = give_up - WallNow();
+      if (awaiting_echo_.empty() || left <= Duration::zero()) return;
+      r = port_.Receive(std::min<Duration>(left, std::chrono::milliseconds(10)));
       if (!r) continue;
     }
     Take(*r, t_now, pacer);
@@ -159,7 +161,7 @@ void CanEndpoint::ReadBus(Time t_now, const link::RealtimePacer* pacer, Duration
 void CanEndpoint::Take(const link::ReceivedCanFrame& r, Time t_now,
                        const link::RealtimePacer* pacer) {
   if (!r.frame.error) ++frames_read_;
-  const auto [t, mono] = pacer ? BusTime(r, *pacer) : std::pair{t_now, r.t_read_mono_ns};
+  const auto [t, mono] = pacer ? BusTime(r, *pacer) : std::pair{t_now, r.t_read_mono};
   if (r.own && !r.frame.error) {
     OnEcho(r, t, mono);
     return;
@@ -174,17 +176,17 @@ void CanEndpoint::Take(const link::ReceivedCanFrame& r, Time t_now,
 
 void CanEndpoint::AwaitSentFrames(Time t_now, Duration limit) {
   if (!tx_counter_.available()) return;
-  const std::int64_t give_up = link::RealtimePacer::MonotonicNs() + limit.count();
+  const WallTime give_up = WallNow() + limit;
   for (;;) {
     const std::optional<std::uint64_t> sent = tx_counter_.SentSinceStart();
     if (!sent || frames_read_ >= *sent) return;
-    const std::int64_t left = give_up - link::RealtimePacer::MonotonicNs();
-    if (left <= 0) {
+    const Duration left = give_up - WallNow();
+    if (left <= Duration::zero()) {
       ++sent_frames_wait_timeouts_;
       return;
     }
     const std::optional<link::ReceivedCanFrame> r =
-        port_.Receive(Duration{std::min<std::int64_t>(left, 10000000)});
+        port_.Receive(std::min<Duration>(left, std::chrono::milliseconds(10)));
     if (r) Take(*r, t_now, nullptr);
   }
 }
@@ -205,7 +207,7 @@ void CanEndpoint::CaptureArrivalsUpTo(Time t) {
   while (!arrivals_.empty() && arrivals_.front().first <= t) {
     const auto [t_arrival, f] = arrivals_.front();
     arrivals_.pop_front();
-    Capture(CaptureDir::kFrameRx, t_arrival, 0, f);
+    Capture(CaptureDir::kFrameRx, t_arrival, WallTime{}, f);
   }
 }
 
@@ -220,7 +222,7 @@ std::vector<CanFrame> CanEndpoint::PollBus(Time t_now, const link::RealtimePacer
 void CanEndpoint::FinishCapture(Duration timeout) {
   if (pacer_) {
     const link::RealtimePacer pacer = *pacer_;
-    ReadBus(pacer.SimTimeOfWall(link::RealtimePacer::MonotonicNs()), &pacer,
+    ReadBus(pacer.SimTimeOfWall(WallNow()), &pacer,
             awaiting_echo_.empty() ? Duration::zero() : timeout);
   }
   while (!awaiting_echo_.empty()) CaptureUnechoed();

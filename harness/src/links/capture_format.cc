@@ -94,7 +94,7 @@ std::string FormatCaptureLine(const CaptureRecord& r) {
   o += ' ';
   AppendCaptureInt(o, r.t_emu_ns);
   AppendCaptureInt(o, r.byte_period_ns);
-  AppendCaptureInt(o, r.t_wall_ns);
+  AppendCaptureInt(o, ToNs(r.t_wall));
   o += r.name.empty() ? std::string_view("-") : std::string_view(r.name);
   o += ' ';
   if (r.is_frame()) {
@@ -131,7 +131,7 @@ std::optional<CaptureRecord> ParseCaptureLine(std::string_view line) {
   if (!known || !t || !period || !wall) return std::nullopt;
   r.t_emu_ns = *t;
   r.byte_period_ns = *period;
-  r.t_wall_ns = *wall;
+  r.t_wall = WallTimeFromNs(*wall);
   r.name = std::string(f[4]);
   if (r.is_frame()) {
     const auto frame = link::ParseCanFrameText(f[5]);

@@ -131,7 +131,7 @@ void SerialEndpoint::FinishRealtimeRecords() {
   current_drop_ = CaptureRecord{};
 }
 
-void SerialEndpoint::RecordRealtimeByte(bool left, Time t, std::int64_t wall, Duration period,
+void SerialEndpoint::RecordRealtimeByte(bool left, Time t, WallTime wall, Duration period,
                                         const std::string& name, char byte) {
   CaptureRecord& r = left ? current_ : current_drop_;
   CaptureRecord& other = left ? current_drop_ : current_;
@@ -143,28 +143,28 @@ void SerialEndpoint::RecordRealtimeByte(bool left, Time t, std::int64_t wall, Du
     r.dir = left ? CaptureDir::kTx : CaptureDir::kDrop;
     r.t_emu_ns = ToNs(t);
     r.byte_period_ns = period.count();
-    r.t_wall_ns = left ? wall : 0;  // a dropped byte was never written
+    r.t_wall = left ? wall : WallTime{};  // a dropped byte was never written
     r.name = name;
   }
   r.bytes.push_back(byte);
-  if (left) r.wall_offsets_ns.push_back(wall - r.t_wall_ns);
+  if (left) r.wall_offsets_ns.push_back((wall - r.t_wall).count());
 }
 
 void SerialEndpoint::WriteNextByte(const link::RealtimePacer& pacer) {
   if (pending_.empty()) return;
   const auto& [c, name] = pending_.front();
   const Time t = c.t_byte(pending_offset_);
-  const std::int64_t scheduled = pacer.WallNsOf(t);
+  const WallTime scheduled = pacer.WallTimeOf(t);
   pacer.SleepUntil(t);
   // a UART sends whether or not anyone listens: a byte nobody can take now is dropped, never
   // waited for (that would stall every link of the run), and captured as a drop
   const std::string_view byte = std::string_view(c.bytes).substr(pending_offset_, 1);
   const bool attached = port_->HostAttached();
   const bool left = attached && port_->WriteNow(byte) == 1;
-  const std::int64_t wall = link::RealtimePacer::MonotonicNs();
+  const WallTime wall = WallNow();
   if (left) {
     ++bytes_sent_;
-    schedule_error_us_.Add(static_cast<double>(wall - scheduled) * 1e-3);
+    schedule_error_us_.Add(static_cast<double>((wall - scheduled).count()) * 1e-3);
   } else {
     ++bytes_dropped_unread_;
     if (attached) ++bytes_dropped_attached_;  // its input queue was full
@@ -176,7 +176,7 @@ void SerialEndpoint::WriteNextByte(const link::RealtimePacer& pacer) {
   }
 }
 
-void SerialEndpoint::Consume(std::size_t bytes, CaptureDir dir, std::int64_t wall) {
+void SerialEndpoint::Consume(std::size_t bytes, CaptureDir dir, WallTime wall) {
   while (bytes > 0 && !pending_.empty()) {
     const auto& [c, name] = pending_.front();
     const std::size_t n = std::min(bytes, c.bytes.size() - pending_offset_);
@@ -184,7 +184,7 @@ void SerialEndpoint::Consume(std::size_t bytes, CaptureDir dir, std::int64_t wal
     r.dir = dir;
     r.t_emu_ns = ToNs(c.t_byte(pending_offset_));
     r.byte_period_ns = c.byte_period.count();
-    r.t_wall_ns = dir == CaptureDir::kTx ? wall : 0;
+    r.t_wall = dir == CaptureDir::kTx ? wall : WallTime{};
     r.name = name;
     r.bytes = c.bytes.substr(pending_offset_, n);
     capture_.Write(r);
@@ -229,8 +229,8 @@ bool SerialEndpoint::WriteChunks(std::size_t chunks, const RoomWait& wait_for_ro
   }
   bytes_dropped_unread_ += lost;
   // virtual mode: no wall time, so a scenario and seed give an identical capture
-  Consume(sent, CaptureDir::kTx, wall_stamps_ ? link::RealtimePacer::MonotonicNs() : 0);
-  Consume(lost, CaptureDir::kDrop, 0);
+  Consume(sent, CaptureDir::kTx, wall_stamps_ ? WallNow() : WallTime{});
+  Consume(lost, CaptureDir::kDrop, WallTime{});
   return all;
 }
 
@@ -256,8 +256,8 @@ std::size_t SerialEndpoint::WriteChunksOrDrop(std::size_t chunks) {
   const std::size_t lost = write_buffer_.size() - sent;
   bytes_dropped_unread_ += lost;
   bytes_dropped_attached_ += lost;
-  Consume(sent, CaptureDir::kTx, 0);
-  Consume(lost, CaptureDir::kDrop, 0);
+  Consume(sent, CaptureDir::kTx, WallTime{});
+  Consume(lost, CaptureDir::kDrop, WallTime{});
   return sent;
 }
 
@@ -273,7 +273,7 @@ std::string SerialEndpoint::PollHost(Time t_now, bool virtual_time) {
     CaptureRecord r;
     r.dir = CaptureDir::kRx;
     r.t_emu_ns = ToNs(t_now);
-    r.t_wall_ns = virtual_time && !wall_stamps_ ? 0 : link::RealtimePacer::MonotonicNs();
+    r.t_wall = virtual_time && !wall_stamps_ ? WallTime{} : WallNow();
     r.name = "host";
     r.bytes = rx;
     capture_.Write(r);

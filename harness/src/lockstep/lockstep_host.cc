@@ -22,12 +22,6 @@
 namespace hil::harness::lockstep {
 namespace {
 
-std::int64_t MonotonicNs() {
-  timespec ts{};
-  clock_gettime(CLOCK_MONOTONIC, &ts);
-  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000LL + ts.tv_nsec;
-}
-
 // Whether thread `tid` of process `pid` still exists and is not a zombie.
 bool ThreadAlive(int pid, int tid) {
   std::ifstream f("/proc/" + std::to_string(pid) + "/task/" + std::to_string(tid) + "/stat");
@@ -129,8 +123,8 @@ void LockstepHost::ForgetDeadThreads() {
 
 bool LockstepHost::WaitIdle(const WaitStep& on_wait) {
   if (Idle()) return true;
-  const std::int64_t start = MonotonicNs();
-  std::int64_t next_step = start + kStepNs;
+  const WallTime start = WallNow();
+  WallTime next_step = start + kStep;
   bool new_wait = true;
   shared_->hil_waiting.store(1);
   bool idle = false;
@@ -141,19 +135,19 @@ bool LockstepHost::WaitIdle(const WaitStep& on_wait) {
       break;
     }
     // sleeps until a thread waits or acknowledges (or the step's time has come)
-    const timespec step{0, kStepNs};
+    const timespec step{0, static_cast<long>(kStep.count())};
     ++stats_.slept;
     syscall(SYS_futex, reinterpret_cast<std::uint32_t*>(&shared_->host_wake), FUTEX_WAIT, seen,
             &step, nullptr, 0);
-    const std::int64_t now = MonotonicNs();
+    const WallTime now = WallNow();
     if (now < next_step) continue;
-    next_step = now + kStepNs;
-    if (now - start >= kLivenessCheckNs) ForgetDeadThreads();
+    next_step = now + kStep;
+    if (now - start >= kLivenessCheck) ForgetDeadThreads();
     if (!on_wait(Busy(), new_wait)) break;
     new_wait = false;
   }
   shared_->hil_waiting.store(0);
-  stats_.wait_ns += MonotonicNs() - start;
+  stats_.wait += WallNow() - start;
   return idle;
 }
 

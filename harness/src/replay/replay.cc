@@ -26,7 +26,7 @@ struct ReplayPlan {
   std::vector<std::pair<std::string, int>> serial;         // link, recorded baud: one port each
   std::string can_iface;                                   // the interface every CAN frame goes to
   std::vector<std::pair<std::string, std::string>> links;  // {name, path} in the captures' order
-  std::int64_t start_unix_ns = 0;  // UTC of emulated t = 0: the first capture that knows it
+  UnixTime start_utc{};  // UTC of emulated t = 0: the first capture that knows it (or the epoch)
 };
 
 bool LooksLikeCandumpLog(const std::string& path) {
@@ -56,12 +56,12 @@ void UseCanInterface(const ReplayOptions& opt, const std::string& recorded, Repl
 void AddCandumpLog(const ReplayOptions& opt, const std::string& path, ReplayPlan& plan) {
   const link::CandumpLog log = link::ReadCandumpLog(path);
   if (log.records.empty()) throw std::runtime_error(path + " holds no CAN frame");
-  const std::int64_t t0 = log.records.front().t_unix_ns;
-  if (plan.start_unix_ns == 0) plan.start_unix_ns = t0;
+  const UnixTime t0 = log.records.front().t;
+  if (plan.start_utc == UnixTime{}) plan.start_utc = t0;
   for (const auto& r : log.records) {
     UseCanInterface(opt, r.iface, plan);
     ReplayItem item;
-    item.t = TimeFromNs(r.t_unix_ns - t0);
+    item.t = Time{} + (r.t - t0);
     item.record.dir = CaptureDir::kFrameTx;
     item.record.t_emu_ns = ToNs(item.t);
     item.record.frame = r.frame;
@@ -72,8 +72,8 @@ void AddCandumpLog(const ReplayOptions& opt, const std::string& path, ReplayPlan
 void AddCapture(const ReplayOptions& opt, const std::string& path, const std::string& dir,
                 ReplayPlan& plan) {
   const Capture c = ReadCapture(path);
-  if (c.header.start_unix_ns != 0 && plan.start_unix_ns == 0)
-    plan.start_unix_ns = c.header.start_unix_ns;
+  if (c.header.start_unix_ns != 0 && plan.start_utc == UnixTime{})
+    plan.start_utc = UnixTimeFromNs(c.header.start_unix_ns);
   const bool can = c.header.kind == "can";
   if (can) {
     UseCanInterface(opt, c.header.iface, plan);
@@ -96,7 +96,7 @@ void AddCapture(const ReplayOptions& opt, const std::string& path, const std::st
 DeviceSet MakeReplaySet(ReplayPlan& plan, const std::string& dir) {
   DeviceSet set;
   if (!plan.can_iface.empty())
-    set.can = std::make_unique<CanEndpoint>(plan.can_iface, dir + "/captures", plan.start_unix_ns);
+    set.can = std::make_unique<CanEndpoint>(plan.can_iface, dir + "/captures", plan.start_utc);
   std::vector<std::unique_ptr<SerialEndpoint>> ports;
   std::vector<int> bauds;
   for (const auto& [link, baud] : plan.serial) {
@@ -118,9 +118,8 @@ class PlayToTheEnd final : public EngineMonitor {
 // Closing a pty discards what its host has not read yet, including bytes still in the kernel's
 // flip buffer (not counted by FIONREAD): waits until every queue has been empty for 50 ms (≤ 2 s).
 void WaitUntilRead(const DeviceSet& set) {
-  const std::int64_t drain_deadline = link::RealtimePacer::MonotonicNs() + 2000000000LL;
-  for (int quiet_ms = 0; quiet_ms < 50 && link::RealtimePacer::MonotonicNs() < drain_deadline;
-       quiet_ms += 2) {
+  const WallTime drain_deadline = WallNow() + std::chrono::seconds(2);
+  for (int quiet_ms = 0; quiet_ms < 50 && WallNow() < drain_deadline; quiet_ms += 2) {
     for (const auto& ep : set.endpoints.front()) {
       if (ep->PendingToHost() > 0) quiet_ms = 0;
     }
@@ -130,7 +129,7 @@ void WaitUntilRead(const DeviceSet& set) {
 
 ReplayResult ResultOf(const DeviceSet& set, const link::RealtimePacer& pacer) {
   ReplayResult result;
-  result.wall_start_ns = pacer.WallNsOf(Time{});
+  result.wall_start = pacer.WallTimeOf(Time{});
   for (const auto& ep : set.endpoints.front())
     result.byte_schedule_error_us.Merge(ep->schedule_error_us());
   result.bytes = result.byte_schedule_error_us.count();

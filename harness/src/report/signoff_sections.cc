@@ -165,8 +165,8 @@ std::vector<ReviewFlag> ReviewFlags(const RunReport& r) {
   return flags;
 }
 
-std::string UtcText(std::int64_t unix_ns) {
-  const std::time_t s = static_cast<std::time_t>(unix_ns / 1000000000);
+std::string UtcText(UnixTime t) {
+  const std::time_t s = static_cast<std::time_t>(ToNs(t) / 1000000000);
   std::tm tm{};
   gmtime_r(&s, &tm);
   char b[40];

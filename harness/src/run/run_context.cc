@@ -36,11 +36,11 @@ std::string SecondsText(Time t) {
 RunContext::RunContext(const Scenario& s, const RunOptions& o)
     : scenario(s),
       options(o),
-      wall_start_ns(NowNs()),
+      wall_start(WallNow()),
       dir(std::filesystem::absolute(o.out_dir).string()),
       seed(o.seed.value_or(s.seed)),
       silence_s(o.silence_timeout_s.value_or(s.estimator.silence_timeout_s)),
-      silence_ns(static_cast<std::int64_t>(silence_s * 1e9)),
+      silence(static_cast<std::int64_t>(silence_s * 1e9)),
       t_end(TimeFromSeconds(s.duration_s)),
       t_from(TimeFromSeconds(s.evaluate_from_s)),
       fault_recorder(s.faults),
@@ -73,8 +73,8 @@ bool RunContext::Interrupted() {
   return stop_reason.has_value();
 }
 
-std::int64_t RunContext::SilentForNs() const {
-  return NowNs() - std::max(collector->last_output_wall_ns(), estimator_start_ns);
+Duration RunContext::SilentFor() const {
+  return WallNow() - std::max(collector->last_output_wall(), estimator_start);
 }
 
 bool RunContext::HostReads(const SerialEndpoint& ep) const {

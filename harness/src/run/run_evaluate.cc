@@ -197,7 +197,7 @@ void EvaluateFaultsAndCriteria(RunContext& ctx) {
   report.fault_messages_dropped = ctx.byte_faults->messages_dropped();
   report.estimator_other_records = ctx.collector->other_records();
   report.fault_bytes_corrupted = ctx.byte_faults->bytes_corrupted();
-  report.wall_time_s = static_cast<double>(NowNs() - ctx.wall_start_ns) * 1e-9;
+  report.wall_time_s = ToSeconds(WallNow() - ctx.wall_start);
   const std::uint64_t dropped = ctx.estimator ? ctx.estimator->dropped_bytes() : 0;
   if (dropped > 0 || ctx.collector->lines_not_kept() > 0) {
     report.problems.push_back(
@@ -367,7 +367,7 @@ void EvaluateClosedLoop(RunContext& ctx, const TruthTable& truth) {
     const PaceLateness p = ctx.pacer->lateness();
     c.paced_actions = p.actions;
     c.late_actions = p.late;
-    c.max_late_ms = static_cast<double>(p.max_late_ns) * 1e-6;
+    c.max_late_ms = static_cast<double>(p.max_late.count()) * 1e-6;
   }
   if (c.control_ticks > 0 && c.motor_commands == 0)  // a controller that never answered
     report.problems.push_back("the controller sent no command in " +
@@ -402,7 +402,7 @@ void StartScoring(RunContext& ctx) {
   setup.faults = ctx.fault_recorder.records();
   setup.speed = on_wall_clock ? ctx.options.speed : 1.0;
   if (const link::RealtimePacer* wall = ctx.pacer->wall_clock(); wall && on_wall_clock)
-    setup.wall_ns_of = [wall](Time t) { return wall->WallNsOf(t); };
+    setup.wall_time_of = [wall](Time t) { return wall->WallTimeOf(t); };
   setup.stream_truth = !ctx.scenario.truth.external_commands;
   setup.expect_solutions = !ctx.options.emulate_only;
   ctx.scoring.emplace(std::move(setup), *ctx.truth_builder);

@@ -30,8 +30,8 @@ constexpr int kIdleChecks = 3;
 constexpr useconds_t kIdleCheckUs = 1000;
 
 // --lockstep: how long (wall) the host processes may take to load the library before the /proc
-// probe paces them instead (as VirtualGate::kHostStartLimitNs, a loaded machine's start-up).
-constexpr std::int64_t kPreloadAttachLimitNs = 6'000'000'000;
+// probe paces them instead (as VirtualGate::kHostStartLimit, a loaded machine's start-up).
+constexpr Duration kPreloadAttachLimit = std::chrono::seconds(6);
 
 // --lockstep: whether the estimator's process group and the controller have loaded the library.
 bool HostsAttached(const RunContext& ctx) {
@@ -48,12 +48,12 @@ bool HostsAttached(const RunContext& ctx) {
 // library; null (and the library told to pass every call through) when one has not in time.
 std::unique_ptr<HostTurns> MakeClockedTurns(RunContext& ctx, RunWatchdog& watchdog) {
   ctx.report.lockstep.emplace();
-  const std::int64_t start = NowNs();
+  const WallTime start = WallNow();
   while (!HostsAttached(ctx)) {
-    if (!ctx.EstimatorRunning() || NowNs() - start > kPreloadAttachLimitNs) {
+    if (!ctx.EstimatorRunning() || WallNow() - start > kPreloadAttachLimit) {
       ctx.report.lockstep->fallback =
           "a host process did not load libhil_lockstep.so within " +
-          SecondsText(static_cast<double>(kPreloadAttachLimitNs) * 1e-9) +
+          SecondsText(ToSeconds(kPreloadAttachLimit)) +
           " s (a static binary, or the program ended): the /proc probe paced the run";
       std::fprintf(stderr, "hil: --lockstep: %s\n", ctx.report.lockstep->fallback.c_str());
       ctx.shared_clock->Abandon();
@@ -120,14 +120,14 @@ std::size_t UnreadByHost(const RunContext& ctx) {
 
 // Real time: waits while the host reads, up to the silence timeout without progress.
 void DrainInputRealtime(RunContext& ctx) {
-  std::int64_t last_progress = NowNs();
+  WallTime last_progress = WallNow();
   std::size_t pending = UnreadByHost(ctx);
-  while (ctx.EstimatorRunning() && pending > 0 && NowNs() - last_progress < ctx.silence_ns &&
+  while (ctx.EstimatorRunning() && pending > 0 && WallNow() - last_progress < ctx.silence &&
          !ctx.Interrupted()) {
     usleep(5000);
     ctx.collector->Poll();
     const std::size_t p = UnreadByHost(ctx);
-    if (p < pending) last_progress = NowNs();
+    if (p < pending) last_progress = WallNow();
     pending = p;
   }
 }
@@ -136,20 +136,21 @@ void DrainInputRealtime(RunContext& ctx) {
 // a few checks with all its input read (it waits for input that will not come); otherwise (real
 // time, or /proc cannot tell) when its output has been quiet for kDrainQuietS.
 void DrainOutput(RunContext& ctx) {
-  const std::int64_t drain_start = NowNs();
+  const WallTime drain_start = WallNow();
   GroupActivity before;
-  std::int64_t output_before = -1;
+  std::optional<WallTime> output_before;
   int idle_checks = 0;
   while (ctx.EstimatorRunning() && !ctx.Interrupted()) {
     ctx.collector->Poll();
-    const std::int64_t last_output = ctx.collector->last_output_wall_ns();
-    if (ctx.clocked && last_output > 0) {
+    const WallTime last_output = ctx.collector->last_output_wall();
+    const bool any_output = last_output > WallTime{};
+    if (ctx.clocked && any_output) {
       // on hil's clock: the programs say themselves when every thread waits
       const bool idle = ctx.shared_clock->Idle() && last_output == output_before;
       idle_checks = idle ? idle_checks + 1 : 0;
       output_before = last_output;
       if (idle_checks >= kIdleChecks) break;
-    } else if (ctx.gate && last_output > 0) {
+    } else if (ctx.gate && any_output) {
       const GroupActivity now = ReadGroupActivity(ctx.estimator->pid());
       const bool idle =
           SleptThroughout(before, now) && last_output == output_before && ctx.gate->Unread() == 0;
@@ -158,15 +159,15 @@ void DrainOutput(RunContext& ctx) {
       output_before = last_output;
       if (idle_checks >= kIdleChecks) break;
     }
-    const std::int64_t quiet_ns = NowNs() - std::max(last_output, drain_start);
-    if (last_output > 0 && quiet_ns > static_cast<std::int64_t>(kDrainQuietS * 1e9)) break;
-    if (quiet_ns > ctx.silence_ns) {
+    const Duration quiet = WallNow() - std::max(last_output, drain_start);
+    if (any_output && quiet > DurationFromSeconds(kDrainQuietS)) break;
+    if (quiet > ctx.silence) {
       if (ctx.collector->solutions() == 0)
         ctx.hang = "no output for " + SecondsText(ctx.silence_s) + " s";
       break;
     }
     // an estimator that keeps talking once its input is read has had the silence timeout to end
-    if (NowNs() - drain_start > ctx.silence_ns) break;
+    if (WallNow() - drain_start > ctx.silence) break;
     usleep(ctx.gate || ctx.clocked ? kIdleCheckUs : 10000);
   }
 }
@@ -269,7 +270,7 @@ void NoteLockstep(RunContext& ctx) {
   const lockstep::LockstepHost::Stats s = ctx.shared_clock->stats();
   r.turns = s.grants;
   r.thread_waits = s.thread_waits;
-  r.wait_s = static_cast<double>(s.wait_ns) * 1e-9;
+  r.wait_s = ToSeconds(s.wait);
 }
 
 }  // namespace

@@ -153,7 +153,7 @@ void StartEstimator(RunContext& ctx, const std::string& command) {
 // speed) loses no epoch. Gives up after the silence timeout, or when the estimator ended; what
 // then goes unread is captured as drops and judged as such.
 void AwaitHostLinksOpen(RunContext& ctx) {
-  const std::int64_t start = NowNs();
+  const WallTime start = WallNow();
   for (;;) {
     bool all_open = true;
     for (const auto& ports : ctx.set.endpoints) {
@@ -161,10 +161,10 @@ void AwaitHostLinksOpen(RunContext& ctx) {
         if (ctx.HostReads(*ep) && !ep->HostAttached()) all_open = false;
       }
     }
-    const double waited_s = static_cast<double>(NowNs() - start) * 1e-9;
+    const double waited_s = ToSeconds(WallNow() - start);
     ctx.report.host_open_wait_s = waited_s;
     if (all_open || !ctx.EstimatorRunning() || ctx.Interrupted()) return;
-    if (NowNs() - start > ctx.silence_ns) {
+    if (WallNow() - start > ctx.silence) {
       ctx.report.problems.push_back("the estimator had not opened every link it reads " +
                                     SecondsText(waited_s) +
                                     " s after it started: the run began without it");
@@ -263,7 +263,7 @@ void Prepare(RunContext& ctx) {
   StartEstimator(ctx, command);
   StartController(ctx);
   if (opt.mode == RunMode::kRealtime && ctx.estimator) AwaitHostLinksOpen(ctx);
-  ctx.estimator_start_ns = NowNs();
+  ctx.estimator_start = WallNow();
   if (opt.mode == RunMode::kRealtime) {
     const bool fifo = opt.nice < 0;  // a priority raise asked for: the pacing takes FIFO too
     if (fifo) link::RealtimePacer::RequestRealtimeScheduling();

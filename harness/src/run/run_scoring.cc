@@ -78,9 +78,9 @@ void RunScoring::AddEstimates(const std::vector<EstimateRecord>& records, Time t
   const Time first = Time{} - kSecond, last = setup_.t_end + kSecond;
   for (const EstimateRecord& r : records) {
     const std::uint64_t arrival = solutions_++;
-    if (setup_.wall_ns_of) {
-      latency_ms_.Add(static_cast<double>(r.wall_rx_ns - setup_.wall_ns_of(r.t_validity)) * 1e-6 *
-                      setup_.speed);
+    if (setup_.wall_time_of) {
+      latency_ms_.Add(static_cast<double>((r.wall_rx - setup_.wall_time_of(r.t_validity)).count()) *
+                      1e-6 * setup_.speed);
     }
     if (r.t_validity < first || r.t_validity > last) {
       if (outside_++ == 0) {
@@ -190,7 +190,7 @@ void RunScoring::Score(Side& side, bool estimates, const EstimateRecord& r,
   if (estimates) {
     outages_.Add(e);
     recovery_.Add(e);
-    timing_.Add(r.t_validity, r.wall_rx_ns);
+    timing_.Add(r.t_validity, r.wall_rx);
   }
   Write(side.csv, [&](std::string& text) { AppendErrorsCsvRow(text, e); });
   side.plot.Add(ToSeconds(e.t), e.horizontal(), e);

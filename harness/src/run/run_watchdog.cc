@@ -36,9 +36,9 @@ void RunWatchdog::StopController(Time t) {
 }
 
 bool RunWatchdog::EstimatorStillRunning() {
-  const std::int64_t now = NowNs();
-  if (now - running_checked_ns_ < 1'000'000) return true;
-  running_checked_ns_ = now;
+  const WallTime now = WallNow();
+  if (now - running_checked_ < std::chrono::milliseconds(1)) return true;
+  running_checked_ = now;
   // a controller that ended on its own: the gate stops waiting for its links
   if (ctx_.controller && !ctx_.controller_gone && !ctx_.controller->Running())
     ctx_.ControllerGone();
@@ -54,7 +54,7 @@ bool RunWatchdog::KeepGoing(Time t) {
   ctx_.progress->Update(ToSeconds(t), ctx_.scenario.duration_s, ctx_.collector->solutions());
   if (ctx_.options.emulate_only) return true;
   if (!EstimatorStillRunning()) return false;
-  if (ctx_.pacer->stepping() != Stepping::kVirtual && ctx_.SilentForNs() > ctx_.silence_ns) {
+  if (ctx_.pacer->stepping() != Stepping::kVirtual && ctx_.SilentFor() > ctx_.silence) {
     ctx_.hang = "no output for " + SecondsText(ctx_.silence_s) + " s";
     return false;
   }
@@ -62,11 +62,11 @@ bool RunWatchdog::KeepGoing(Time t) {
 }
 
 bool RunWatchdog::OnLockstepWait(std::size_t busy, bool new_wait) {
-  if (new_wait || busy < wait_unread_) wait_progress_ns_ = NowNs();
+  if (new_wait || busy < wait_unread_) wait_progress_ = WallNow();
   wait_unread_ = busy;
   ctx_.collector->Poll();
   if (ctx_.Interrupted() || !EstimatorStillRunning()) return false;
-  if (NowNs() - wait_progress_ns_ <= ctx_.silence_ns) return true;
+  if (WallNow() - wait_progress_ <= ctx_.silence) return true;
   ctx_.hang = std::to_string(busy) + " of its threads did not wait again for " +
               SecondsText(ctx_.silence_s) +
               " s (a busy loop, or a blocking call libhil_lockstep.so does not interpose)";
@@ -74,14 +74,14 @@ bool RunWatchdog::OnLockstepWait(std::size_t busy, bool new_wait) {
 }
 
 bool RunWatchdog::OnGateWait(std::size_t unread, bool new_wait) {
-  if (new_wait || unread < wait_unread_) wait_progress_ns_ = NowNs();
+  if (new_wait || unread < wait_unread_) wait_progress_ = WallNow();
   wait_unread_ = unread;
   ctx_.collector->Poll();
   if (ctx_.Interrupted() || !EstimatorStillRunning()) return false;
-  if (NowNs() - wait_progress_ns_ <= ctx_.silence_ns) return true;
+  if (WallNow() - wait_progress_ <= ctx_.silence) return true;
   const std::string unread_text =
       std::to_string(unread) + " bytes unread for " + SecondsText(ctx_.silence_s) + " s";
-  if (ctx_.SilentForNs() > ctx_.silence_ns) {
+  if (ctx_.SilentFor() > ctx_.silence) {
     ctx_.hang = "it stopped reading its input and is silent (" + unread_text + ")";
     return false;
   }

@@ -6,8 +6,8 @@
 #include <stdexcept>
 
 #include "hil/firmware_emu/link/candump_log.h"
-#include "hil/firmware_emu/link/realtime_pacer.h"
 #include "hil/firmware_emu/link/socketcan_port.h"
+#include "hil/firmware_emu/wall_time.h"
 
 namespace hil::harness {
 
@@ -27,14 +27,12 @@ CanListen ListenCanInterface(const std::string& iface, double listen_s) {
   }
   link::SocketCanPort port(iface, link::SocketCanPort::Options{});
   CanListen out;
-  const std::int64_t end =
-      link::RealtimePacer::MonotonicNs() + static_cast<std::int64_t>(listen_s * 1e9);
-  for (std::int64_t now = link::RealtimePacer::MonotonicNs(); now < end;
-       now = link::RealtimePacer::MonotonicNs()) {
-    const auto r = port.Receive(Duration(std::min<std::int64_t>(end - now, 100000000)));
+  const WallTime end = WallNow() + DurationFromSeconds(listen_s);
+  for (WallTime now = WallNow(); now < end; now = WallNow()) {
+    const auto r = port.Receive(std::min<Duration>(end - now, std::chrono::milliseconds(100)));
     if (!r) continue;
     link::CandumpRecord rec;
-    rec.t_unix_ns = r->t_kernel_unix_ns;
+    rec.t = r->t_kernel;
     rec.iface = iface;
     rec.frame = r->frame;
     out.candump_text += link::FormatCandumpLine(rec) + "\n";

@@ -13,7 +13,7 @@
 #include <sys/stat.h>
 
 #include "hil/firmware_emu/link/pty_port.h"
-#include "hil/firmware_emu/link/realtime_pacer.h"
+#include "hil/firmware_emu/wall_time.h"
 #include "hil/harness/links/capture_format.h"
 #include "hil/harness/validate/validate.h"
 
@@ -63,19 +63,20 @@ ByteStream ListenSerial(const std::string& source, double listen_s, int baud) {
     tcsetattr(fd, TCSANOW, &tio);
   }
   ByteStream s;
-  const std::int64_t t0 = link::RealtimePacer::MonotonicNs();
-  const std::int64_t end = t0 + static_cast<std::int64_t>(listen_s * 1e9);
+  const WallTime t0 = WallNow();
+  const WallTime end = t0 + DurationFromSeconds(listen_s);
   char buf[1024];
-  for (std::int64_t now = t0; now < end; now = link::RealtimePacer::MonotonicNs()) {
+  for (WallTime now = t0; now < end; now = WallNow()) {
     pollfd p{fd, POLLIN, 0};
-    if (poll(&p, 1, static_cast<int>(std::max<std::int64_t>(1, (end - now) / 1000000))) <= 0)
+    if (poll(&p, 1, static_cast<int>(std::max<std::int64_t>(1, (end - now).count() / 1000000))) <=
+        0)
       continue;
     const ssize_t n = read(fd, buf, sizeof buf);
     if (n <= 0) continue;
-    const std::int64_t t = link::RealtimePacer::MonotonicNs() - t0;
+    const Duration t = WallNow() - t0;
     for (ssize_t i = 0; i < n; ++i) {
       s.bytes.push_back(buf[i]);
-      s.t_ns.push_back(t);
+      s.t_ns.push_back(t.count());
     }
   }
   close(fd);

@@ -97,12 +97,12 @@ TEST(CandumpLogTest, RejectsMalformedFrameStrings) {
 
 TEST(CandumpLogTest, LogLineMatchesCandumpExactly) {
   CandumpRecord r;
-  r.t_unix_ns = 1699999999123456789LL;  // the log keeps microseconds, truncated
+  r.t = UnixTimeFromNs(1699999999123456789LL);  // the log keeps microseconds, truncated
   r.iface = "vcan0";
   r.frame = Classic(0x123, false, {0xDE, 0xAD, 0xBE, 0xEF});
   EXPECT_EQ(FormatCandumpLine(r), "(1699999999.123456) vcan0 123#DEADBEEF");
   // seconds are zero-padded to ten digits; names right-aligned to a common width
-  r.t_unix_ns = 5000001000LL;
+  r.t = UnixTimeFromNs(5000001000LL);
   r.iface = "can0";
   EXPECT_EQ(FormatCandumpLine(r, 5), "(0000000005.000001)  can0 123#DEADBEEF");
 }
@@ -110,17 +110,17 @@ TEST(CandumpLogTest, LogLineMatchesCandumpExactly) {
 TEST(CandumpLogTest, ParsesLinesOfEveryCandumpVariant) {
   const auto a = ParseCandumpLine("(1700000000.000000) vcan0 09F80180#8868111FBFA49103\n");
   ASSERT_TRUE(a.has_value());
-  EXPECT_EQ(a->t_unix_ns, 1700000000000000000LL);
+  EXPECT_EQ(a->t, UnixTimeFromNs(1700000000000000000LL));
   EXPECT_EQ(a->iface, "vcan0");
   EXPECT_EQ(a->frame.id, 0x09F80180U);
   const auto padded = ParseCandumpLine("(1700000000.250000)  can0 123#01 R");  // -x direction flag
   ASSERT_TRUE(padded.has_value());
   EXPECT_EQ(padded->iface, "can0");
   EXPECT_EQ(padded->direction, 'R');
-  EXPECT_EQ(padded->t_unix_ns, 1700000000250000000LL);
+  EXPECT_EQ(padded->t, UnixTimeFromNs(1700000000250000000LL));
   const auto nanos = ParseCandumpLine("(1700000000.123456789) vcan0 123#");  // candump -N
   ASSERT_TRUE(nanos.has_value());
-  EXPECT_EQ(nanos->t_unix_ns, 1700000000123456789LL);
+  EXPECT_EQ(nanos->t, UnixTimeFromNs(1700000000123456789LL));
   EXPECT_FALSE(
       ParseCandumpLine("DROPCOUNT: dropped 3 CAN frame(s) on 'can0' socket (total drops 3)"));
   EXPECT_FALSE(ParseCandumpLine("(1700000000.000000) vcan0"));
@@ -137,7 +137,7 @@ TEST(CandumpLogTest, WriterAndReaderRoundTripAFile) {
     std::int64_t t = 1370851200000000000LL;
     for (const FrameRow& row : FrameRows()) {
       CandumpRecord r;
-      r.t_unix_ns = t;
+      r.t = UnixTimeFromNs(t);
       r.iface = "vcan0";
       r.frame = row.frame;
       w.Write(r);
@@ -185,7 +185,7 @@ TEST(CandumpLogTest, RejectsTimestampsBeyondTheNanosecondRange) {
   EXPECT_FALSE(ParseCandumpLine("(137085120851200.311015) vcan0 0CF02DE2#137DE97C3880C002"));
   const auto ok = ParseCandumpLine("(1370851200.311015) vcan0 0CF02DE2#137DE97C3880C002");
   ASSERT_TRUE(ok);
-  EXPECT_EQ(ok->t_unix_ns, 1370851200311015000LL);
+  EXPECT_EQ(ok->t, UnixTimeFromNs(1370851200311015000LL));
 }
 
 }  // namespace

@@ -60,7 +60,8 @@ bool CompareWithDom(JsonSolutionScanner& scanner, const std::string& line) {
   if (!scan) return false;
   const nlohmann::json dom = nlohmann::json::parse(line, nullptr, false);
   EXPECT_FALSE(dom.is_discarded()) << "the scanner answered a line that is no JSON: " << line;
-  ExpectSameRecord(reader->JsonLine(dom, 7), reader->ScannedLine(*scan, 7), line);
+  ExpectSameRecord(reader->JsonLine(dom, WallTimeFromNs(7)),
+                   reader->ScannedLine(*scan, WallTimeFromNs(7)), line);
   EstimatorHealth from_dom, from_scan;
   from_dom.AddJson(dom);
   from_scan.AddScanned(*scan);

@@ -13,7 +13,8 @@ namespace {
 namespace out = estimator::outputs;
 
 std::optional<EstimateRecord> Feed(N2kBusReader& r, const out::CanFrame& f) {
-  return r.Frame(f.id, std::string_view(reinterpret_cast<const char*>(f.data.data()), f.len), 42);
+  return r.Frame(f.id, std::string_view(reinterpret_cast<const char*>(f.data.data()), f.len),
+                 WallTimeFromNs(42));
 }
 
 // navd's frames of one solution, in navd's order (rapid group, then the 129029 fast packet)
@@ -41,7 +42,7 @@ TEST(N2kBusReaderTest, RecordFrom129029WithVelocityAndHeadingOfTheSameSid) {
   EXPECT_NEAR(rec->vel_enu_mps->y(), std::sqrt(3.0) / 2, 1e-3);
   ASSERT_TRUE(rec->yaw_deg);
   EXPECT_NEAR(*rec->yaw_deg, 30.0, 0.01);
-  EXPECT_EQ(rec->wall_rx_ns, 42);
+  EXPECT_EQ(rec->wall_rx, WallTimeFromNs(42));
   EXPECT_EQ(r.frames_per_pgn().at(129029), 7u);
   EXPECT_EQ(r.frames_per_pgn().at(129025), 1u);
   EXPECT_EQ(r.frames_per_pgn().at(127257), 1u);

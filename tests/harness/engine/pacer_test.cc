@@ -16,39 +16,40 @@
 namespace hil::harness {
 namespace {
 
-constexpr std::int64_t kS = 1'000'000'000;
-constexpr std::int64_t kMs = 1'000'000;
+constexpr Duration kS = std::chrono::seconds(1);
+constexpr Duration kMs = std::chrono::milliseconds(1);
 
 Time At(double s) { return TimeFromSeconds(s); }
+WallTime Wall(Duration since_boot) { return WallTime{since_boot}; }
 
 TEST(WallClockPacerTest, ScaledModeWakesAtTheEventsWallTimeDividedByTheSpeedMinusTheLead) {
   const WallClockPacer pacer{link::RealtimePacer(2.0)};  // scaled: twice real time
-  const std::int64_t start = pacer.wall_clock()->WallNsOf(Time{});
-  // emulated 10 s is wall 5 s after the start; the event is computed kEventLeadNs before
-  const std::int64_t due = start + 5 * kS - WallClockPacer::kEventLeadNs;
-  // far from it: the thread looks for host bytes again after kHostPollPeriodNs
-  EXPECT_EQ(pacer.WakeNs(At(10), At(20), start), start + WallClockPacer::kHostPollPeriodNs);
+  const WallTime start = pacer.wall_clock()->WallTimeOf(Time{});
+  // emulated 10 s is wall 5 s after the start; the event is computed kEventLead before
+  const WallTime due = start + 5 * kS - WallClockPacer::kEventLead;
+  // far from it: the thread looks for host bytes again after kHostPollPeriod
+  EXPECT_EQ(pacer.Wake(At(10), At(20), start), start + WallClockPacer::kHostPollPeriod);
   // closer than one poll period: it wakes when the event is due
-  EXPECT_EQ(pacer.WakeNs(At(10), At(20), due - kMs / 2), due);
+  EXPECT_EQ(pacer.Wake(At(10), At(20), due - kMs / 2), due);
   // due (or late): computed now
-  EXPECT_EQ(pacer.WakeNs(At(10), At(20), due), std::nullopt);
-  EXPECT_EQ(pacer.WakeNs(At(10), At(20), due + kS), std::nullopt);
+  EXPECT_EQ(pacer.Wake(At(10), At(20), due), std::nullopt);
+  EXPECT_EQ(pacer.Wake(At(10), At(20), due + kS), std::nullopt);
   // at real time (factor 1) the same event lies 10 s after the start: 4 s before it, it waits
   const WallClockPacer realtime{link::RealtimePacer(1.0)};
-  const std::int64_t start_1 = realtime.wall_clock()->WallNsOf(Time{});
-  EXPECT_NE(realtime.WakeNs(At(10), At(20), start_1 + 6 * kS), std::nullopt);
-  EXPECT_EQ(realtime.WakeNs(At(10), At(20), start_1 + 10 * kS), std::nullopt);
+  const WallTime start_1 = realtime.wall_clock()->WallTimeOf(Time{});
+  EXPECT_NE(realtime.Wake(At(10), At(20), start_1 + 6 * kS), std::nullopt);
+  EXPECT_EQ(realtime.Wake(At(10), At(20), start_1 + 10 * kS), std::nullopt);
 }
 
 TEST(WallClockPacerTest, AnEventAfterTheEndIsNotWaitedFor) {
   const WallClockPacer pacer{link::RealtimePacer(1.0)};
-  const std::int64_t start = pacer.wall_clock()->WallNsOf(Time{});
-  EXPECT_EQ(pacer.WakeNs(At(30), At(20), start), std::nullopt);
+  const WallTime start = pacer.wall_clock()->WallTimeOf(Time{});
+  EXPECT_EQ(pacer.Wake(At(30), At(20), start), std::nullopt);
 }
 
 TEST(WallClockPacerTest, HostBytesArriveAtTheEmulatedTimeOfTheirWallInstantNotBeforeTheLastEvent) {
   const WallClockPacer pacer{link::RealtimePacer(4.0)};
-  const std::int64_t start = pacer.wall_clock()->WallNsOf(Time{});
+  const WallTime start = pacer.wall_clock()->WallTimeOf(Time{});
   // wall 1 s after the start is emulated 4 s at four times real time
   EXPECT_EQ(pacer.ArrivalTime(start + kS, At(3)), At(4));
   // the devices computed an event at 5 s already: the bytes count from it
@@ -60,18 +61,18 @@ TEST(WallClockPacerTest, HostBytesArriveAtTheEmulatedTimeOfTheirWallInstantNotBe
 
 TEST(PaceLatenessTest, CountsEveryActionAndOnlyThoseMoreThanAMillisecondLate) {
   PaceLateness p;
-  EXPECT_TRUE(p.Note(10 * kMs, 9 * kMs));  // early: it waits, nothing late
+  EXPECT_TRUE(p.Note(Wall(10 * kMs), Wall(9 * kMs)));  // early: it waits, nothing late
   EXPECT_EQ(p.actions, 1u);
   EXPECT_EQ(p.late, 0u);
-  EXPECT_EQ(p.max_late_ns, 0);
-  EXPECT_FALSE(p.Note(10 * kMs, 10 * kMs + kMs / 2));  // 0.5 ms: served, not late
+  EXPECT_EQ(p.max_late, Duration::zero());
+  EXPECT_FALSE(p.Note(Wall(10 * kMs), Wall(10 * kMs + kMs / 2)));  // 0.5 ms: served, not late
   EXPECT_EQ(p.late, 0u);
-  EXPECT_EQ(p.max_late_ns, kMs / 2);
-  EXPECT_FALSE(p.Note(20 * kMs, 23 * kMs));  // 3 ms late
-  EXPECT_FALSE(p.Note(30 * kMs, 31 * kMs));  // exactly the limit: not late
+  EXPECT_EQ(p.max_late, kMs / 2);
+  EXPECT_FALSE(p.Note(Wall(20 * kMs), Wall(23 * kMs)));  // 3 ms late
+  EXPECT_FALSE(p.Note(Wall(30 * kMs), Wall(31 * kMs)));  // exactly the limit: not late
   EXPECT_EQ(p.actions, 4u);
   EXPECT_EQ(p.late, 1u);
-  EXPECT_EQ(p.max_late_ns, 3 * kMs);
+  EXPECT_EQ(p.max_late, 3 * kMs);
 }
 
 TEST(LockstepPacerTest, HoldsTheStepsFirstActionToTheWallClockAndCountsItsLateness) {
@@ -89,7 +90,7 @@ TEST(LockstepPacerTest, HoldsTheStepsFirstActionToTheWallClockAndCountsItsLatene
   EXPECT_FALSE(pacer.Await(StepTimes{At(3600), At(7200), Time{}}, io, out));
   EXPECT_EQ(pacer.lateness().actions, 1u);
   EXPECT_EQ(pacer.lateness().late, 1u);
-  EXPECT_GE(pacer.lateness().max_late_ns, 3 * kMs);
+  EXPECT_GE(pacer.lateness().max_late, 3 * kMs);
 }
 
 TEST(VirtualPacerTest, RunsFreeOfTheWallClock) {

@@ -194,8 +194,8 @@ TEST(OutageMetricsTest, ArrivalJitterAroundTheMedianInterval) {
   for (int i = 0; i < 100; ++i) {
     EstimateRecord e;
     e.t_validity = TimeFromSeconds(i * 0.1);
-    e.wall_rx_ns = 1'000'000'000LL + i * 100'000'000LL +
-                   (i % 3 == 0 ? 3'000'000LL : 0);  // every third 3 ms late
+    e.wall_rx = WallTimeFromNs(1'000'000'000LL + i * 100'000'000LL +
+                               (i % 3 == 0 ? 3'000'000LL : 0));  // every third 3 ms late
     r.push_back(e);
   }
   const OutputTiming t =

@@ -24,7 +24,7 @@ TEST(CaptureFormatTest, LinesHaveTheDocumentedColumns) {
   r.dir = CaptureDir::kTx;
   r.t_emu_ns = 100000000;
   r.byte_period_ns = 1041667;
-  r.t_wall_ns = 5000;
+  r.t_wall = WallTimeFromNs(5000);
   r.name = "NMEA-GGA";
   r.bytes = std::string("$G\r\n\x00\xff", 6);
   EXPECT_EQ(FormatCaptureLine(r), "tx 100000000 1041667 5000 NMEA-GGA 24470d0a00ff");
@@ -50,7 +50,7 @@ TEST(CaptureFormatTest, EveryKindOfRecordRoundTripsThroughAFile) {
     CaptureRecord r;
     r.dir = d;
     r.t_emu_ns = 1000 * static_cast<int>(d) + 1;
-    r.t_wall_ns = 99;
+    r.t_wall = WallTimeFromNs(99);
     r.name = "x";
     if (r.is_frame()) {
       r.frame = *link::ParseCanFrameText(d == CaptureDir::kFrameTx ? "123##1AABB"

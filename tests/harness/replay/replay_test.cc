@@ -47,10 +47,10 @@ class Host {
         pollfd p{fd, POLLIN, 0};
         if (poll(&p, 1, 20) <= 0) continue;
         const ssize_t n = read(fd, buf, sizeof buf);
-        const std::int64_t t = link::RealtimePacer::MonotonicNs();
+        const WallTime t = WallNow();
         for (ssize_t i = 0; i < n; ++i) {
           bytes_ += buf[i];
-          t_ns_.push_back(t);
+          t_wall_.push_back(t);
         }
         if (n > 0) count_ += static_cast<std::size_t>(n);
       }
@@ -67,7 +67,7 @@ class Host {
   void WaitFor(std::size_t n) const {
     for (int i = 0; i < 400 && count_ < n; ++i) usleep(5000);
   }
-  const std::vector<std::int64_t>& t_ns() const { return t_ns_; }
+  const std::vector<WallTime>& t_wall() const { return t_wall_; }
   /// Waits (<= 1 s) until the host has the link open.
   void WaitOpen() const {
     for (int i = 0; i < 200 && !opened_; ++i) usleep(5000);
@@ -79,7 +79,7 @@ class Host {
   std::atomic<bool> opened_{false};
   std::atomic<std::size_t> count_{0};
   std::string bytes_;
-  std::vector<std::int64_t> t_ns_;
+  std::vector<WallTime> t_wall_;
 };
 
 fs::path TempDir(const char* name) {
@@ -130,7 +130,7 @@ TEST(ReplayTest, RealtimeCaptureHasPerByteWallTimes) {
   for (const auto& r : c.records) {
     ASSERT_EQ(r.wall_offsets_ns.size(), r.bytes.size());
     EXPECT_EQ(r.byte_period_ns, 260417);  // 10 bits at 38400 baud
-    EXPECT_GT(r.t_wall_ns, 0);
+    EXPECT_GT(r.t_wall, WallTime{});
     // bytes leave one UART period apart: the last one about (n-1) periods after the first
     const double span = static_cast<double>(r.wall_offsets_ns.back());
     EXPECT_NEAR(span,
@@ -160,7 +160,7 @@ TEST(ReplayTest, VirtualCaptureRecordsDropsAndEmulatedTimesOnly) {
   ASSERT_EQ(c.records.size(), 2u);
   EXPECT_EQ(c.records[0].dir, CaptureDir::kTx);
   EXPECT_EQ(c.records[0].name, "MSG0");
-  EXPECT_EQ(c.records[0].t_wall_ns, 0);  // virtual mode: deterministic capture, no wall time
+  EXPECT_EQ(c.records[0].t_wall, WallTime{});  // virtual mode: deterministic, no wall time
   EXPECT_TRUE(c.records[0].wall_offsets_ns.empty());
   EXPECT_EQ(host.bytes(), c.records[0].bytes);
   EXPECT_EQ(c.records[1].dir, CaptureDir::kDrop);
@@ -188,9 +188,9 @@ TEST(ReplayTest, ReplayedCaptureIsIdenticalInBytesAndOnTime) {
   const Capture original = ReadCapture(dir / "captures" / "ttyGPS.cap");
   ASSERT_EQ(original.records.size(), 20u);
   std::string sent;
-  std::vector<std::int64_t> t_byte_ns;
+  std::vector<Time> t_byte;
   for (const auto& r : original.records) {
-    for (std::size_t k = 0; k < r.bytes.size(); ++k) t_byte_ns.push_back(ToNs(r.t_byte(k)));
+    for (std::size_t k = 0; k < r.bytes.size(); ++k) t_byte.push_back(r.t_byte(k));
     sent += r.bytes;
   }
 
@@ -214,7 +214,9 @@ TEST(ReplayTest, ReplayedCaptureIsIdenticalInBytesAndOnTime) {
   ASSERT_EQ(host.bytes(), sent);
   std::vector<double> err_us;
   for (std::size_t k = 0; k < sent.size(); ++k) {
-    err_us.push_back(static_cast<double>(host.t_ns()[k] - (r.wall_start_ns + t_byte_ns[k])) * 1e-3);
+    // real time: emulated time since t = 0 is wall time since the replay's start
+    const WallTime scheduled = r.wall_start + (t_byte[k] - Time{});
+    err_us.push_back(static_cast<double>((host.t_wall()[k] - scheduled).count()) * 1e-3);
   }
   std::printf(
       "HIL-FIGURE pty_replay_arrival_error_us bytes=%zu p50=%.1f p99=%.1f max=%.1f (writer: "

@@ -23,15 +23,15 @@ TEST(EstimateReaderTest, NavdJsonLines) {
   const auto e = r->Line(
       R"({"tov_utc_s":1370851202.500000000,"lat_deg":35.5,"lon_deg":50.6,"height_m":1312.5,"vel_enu_mps":[0.1,0.2,0.0],)"
       R"("pos_std_enu_m":[0.3,0.3,0.6],"yaw_deg":30.0,"mode":"gnss_only","status":0})",
-      42);
+      WallTimeFromNs(42));
   ASSERT_TRUE(e);
   EXPECT_EQ(ToNs(e->t_validity), 2'500'000'000LL);
   EXPECT_DOUBLE_EQ(e->lat_deg, 35.5);
   ASSERT_TRUE(e->pos_std_enu_m);
   EXPECT_DOUBLE_EQ(e->pos_std_enu_m->z(), 0.6);
-  EXPECT_EQ(e->wall_rx_ns, 42);
-  EXPECT_FALSE(r->Line("navd: starting", 1));
-  EXPECT_FALSE(r->Line(R"({"lat_deg":1})", 1));
+  EXPECT_EQ(e->wall_rx, WallTimeFromNs(42));
+  EXPECT_FALSE(r->Line("navd: starting", WallTimeFromNs(1)));
+  EXPECT_FALSE(r->Line(R"({"lat_deg":1})", WallTimeFromNs(1)));
 }
 
 // n2k_socketcan: the solutions come from the bus; navd's JSON lines on stdout are read for its
@@ -40,7 +40,7 @@ TEST(EstimateReaderTest, N2kSocketcanTakesNoSolutionFromLines) {
   auto r = MakeEstimateReader(EstimatorOutput::kN2kSocketcan, kStart);
   EXPECT_FALSE(r->Line(
       R"({"tov_utc_s":1370851202.5,"lat_deg":35.5,"lon_deg":50.6,"height_m":1312.5,"status":0})",
-      1));
+      WallTimeFromNs(1)));
   EXPECT_FALSE(r->SolutionsInLines());
   EXPECT_TRUE(MakeEstimateReader(EstimatorOutput::kJsonStdout, kStart)->SolutionsInLines());
 }
@@ -51,7 +51,7 @@ TEST(EstimateReaderTest, GpsdTpvObjects) {
       R"({"class":"TPV","device":"/dev/pts/3","mode":3,"time":"2013-06-10T08:00:03.000Z","ept":0.005,)"
       R"("lat":35.47960960,"lon":50.59797650,"altHAE":1312.000,"track":90.0,"speed":2.0,"climb":0.0,)"
       R"("epx":1.96,"epy":3.92,"epv":5.88})",
-      7);
+      WallTimeFromNs(7));
   ASSERT_TRUE(e);
   EXPECT_EQ(ToNs(e->t_validity), 3'000'000'000LL);
   EXPECT_DOUBLE_EQ(e->height_m, 1312.0);
@@ -59,9 +59,10 @@ TEST(EstimateReaderTest, GpsdTpvObjects) {
   EXPECT_NEAR(e->vel_enu_mps->x(), 2.0, 1e-12);
   EXPECT_NEAR(e->vel_enu_mps->y(), 0.0, 1e-12);
   EXPECT_NEAR(e->pos_std_enu_m->y(), 2.0, 1e-12);
-  EXPECT_FALSE(r->Line(R"({"class":"SKY","satellites":[]})", 1));
+  EXPECT_FALSE(r->Line(R"({"class":"SKY","satellites":[]})", WallTimeFromNs(1)));
   EXPECT_FALSE(
-      r->Line(R"({"class":"TPV","mode":1,"time":"2013-06-10T08:00:03.000Z","lat":1,"lon":2})", 1))
+      r->Line(R"({"class":"TPV","mode":1,"time":"2013-06-10T08:00:03.000Z","lat":1,"lon":2})",
+              WallTimeFromNs(1)))
       << "no fix: no solution";
 }
 
@@ -75,13 +76,15 @@ std::string Nmea(const std::string& body) {
 
 TEST(EstimateReaderTest, NmeaGgaWithRmcVelocity) {
   auto r = MakeEstimateReader(EstimatorOutput::kNmeaStdout, kStart);
+  EXPECT_FALSE(r->Line(Nmea("GPRMC,080004.00,A,3528.77658,N,05035.87859,E,1.944,90.00,100613,,,A"),
+                       WallTimeFromNs(1)));
   EXPECT_FALSE(
-      r->Line(Nmea("GPRMC,080004.00,A,3528.77658,N,05035.87859,E,1.944,90.00,100613,,,A"), 1));
-  EXPECT_FALSE(
-      r->Line("$GPGGA,080004.00,3528.77658,N,05035.87859,E,1,08,1.01,1312.0,M,-20.1,M,,*00", 2))
+      r->Line("$GPGGA,080004.00,3528.77658,N,05035.87859,E,1,08,1.01,1312.0,M,-20.1,M,,*00",
+              WallTimeFromNs(2)))
       << "a wrong checksum is no solution";
   const auto e =
-      r->Line(Nmea("GPGGA,080004.00,3528.77658,N,05035.87859,E,1,08,1.01,1312.0,M,-20.1,M,,"), 2);
+      r->Line(Nmea("GPGGA,080004.00,3528.77658,N,05035.87859,E,1,08,1.01,1312.0,M,-20.1,M,,"),
+              WallTimeFromNs(2));
   ASSERT_TRUE(e);
   EXPECT_EQ(ToNs(e->t_validity), 4'000'000'000LL);
   EXPECT_NEAR(e->lat_deg, 35 + 28.77658 / 60, 1e-12);
@@ -89,7 +92,7 @@ TEST(EstimateReaderTest, NmeaGgaWithRmcVelocity) {
   EXPECT_NEAR(e->height_m, 1312.0 - 20.1, 1e-9) << "ellipsoidal = MSL + geoid separation";
   ASSERT_TRUE(e->vel_enu_mps);
   EXPECT_NEAR(e->vel_enu_mps->x(), 1.944 * 1852 / 3600, 1e-9);
-  EXPECT_FALSE(r->Line(Nmea("GPGGA,080005.00,,,,,0,00,99.99,,,,,,"), 3))
+  EXPECT_FALSE(r->Line(Nmea("GPGGA,080005.00,,,,,0,00,99.99,,,,,,"), WallTimeFromNs(3)))
       << "quality 0 is no solution";
 }
 
@@ -236,14 +239,14 @@ TEST(EstimateReaderTest, Nmea2000GnssPositionFastPacketsFromCandumpLines) {
       line += h;
     }
     EXPECT_FALSE(e) << "a solution only after the last frame";
-    e = r->Line(line, 9);
+    e = r->Line(line, WallTimeFromNs(9));
   }
   ASSERT_TRUE(e);
   EXPECT_EQ(ToNs(e->t_validity), 7'500'000'000LL);
   EXPECT_NEAR(e->lat_deg, 35.4796096, 1e-12);
   EXPECT_NEAR(e->lon_deg, 50.5979765, 1e-12);
   EXPECT_NEAR(e->height_m, 1312.25, 1e-9);
-  EXPECT_FALSE(r->Line("(1749542407.500000) vcan0 09F80117#A0B3F2150AB5A61E", 1))
+  EXPECT_FALSE(r->Line("(1749542407.500000) vcan0 09F80117#A0B3F2150AB5A61E", WallTimeFromNs(1)))
       << "129025 is not read";
 }
 

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "hil/firmware_emu/link/can_wire_frame.h"
+#include "hil/firmware_emu/unix_time.h"
 
 namespace hil::link {
 
@@ -35,7 +36,7 @@ inline constexpr std::uint32_t kCanErrFlag = 0x20000000U;
 
 /// One log line: when, where and what.
 struct CandumpRecord {
-  std::int64_t t_unix_ns = 0;  ///< time since the Unix epoch (the log keeps microseconds)
+  UnixTime t{};  ///< when (the log keeps microseconds)
   std::string iface;
   CanWireFrame frame;
   char direction = 0;  ///< 'T' or 'R' when the line carried candump -x's flag, else 0

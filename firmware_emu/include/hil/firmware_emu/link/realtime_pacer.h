@@ -10,6 +10,7 @@
 #include <string>
 
 #include "hil/firmware_emu/sim_time.h"
+#include "hil/firmware_emu/wall_time.h"
 
 namespace hil::link {
 
@@ -24,7 +25,7 @@ struct ThreadUsage {
 /// difference of two readings is a ThreadUsage.
 struct ThreadCpuReading {
   double user_s = 0, system_s = 0;
-  std::int64_t wall_ns = 0;
+  WallTime wall{};
   static ThreadCpuReading Now();
   ThreadUsage Since(const ThreadCpuReading& start) const;
 };
@@ -45,13 +46,13 @@ class RealtimePacer {
  public:
   /// Starts the mapping now: emulated t = 0 is the current CLOCK_MONOTONIC instant.
   explicit RealtimePacer(double speed = 1.0);
-  /// Sleeps until the wall instant of emulated time `t`. Returns the wall time reached (ns,
-  /// CLOCK_MONOTONIC) so callers can record the schedule error.
-  std::int64_t SleepUntil(Time t) const;
+  /// Sleeps until the wall instant of emulated time `t`. Returns the wall time reached so callers
+  /// can record the schedule error.
+  WallTime SleepUntil(Time t) const;
   /// CLOCK_MONOTONIC instant of emulated time `t`.
-  std::int64_t WallNsOf(Time t) const;
+  WallTime WallTimeOf(Time t) const;
   /// Emulated time that corresponds to a CLOCK_MONOTONIC instant.
-  Time SimTimeOfWall(std::int64_t wall_ns) const;
+  Time SimTimeOfWall(WallTime wall) const;
 
   /// Lowers the calling thread's timer slack to 1 ns and asks SCHED_FIFO at `priority` for it
   /// (for this thread only: threads it creates later inherit it, threads that exist keep theirs).
@@ -59,19 +60,17 @@ class RealtimePacer {
   static ThreadSchedule RequestRealtimeScheduling(int priority = 50);
   /// The calling thread's scheduling as the kernel reports it.
   static ThreadSchedule CurrentThreadSchedule();
-  /// CLOCK_MONOTONIC now, in nanoseconds.
-  static std::int64_t MonotonicNs();
   /// Whether the threads pacing by this clock ask for SCHED_FIFO (RequestRealtimeScheduling) or
   /// keep the scheduling they inherit (the run asked for no priority: `--nice` 0 or more).
   bool realtime_threads() const { return realtime_threads_; }
   void set_realtime_threads(bool on) { realtime_threads_ = on; }
   /// SleepUntil sleeps to this long before the instant and spins the rest.
-  static constexpr std::int64_t kSpinNs = 30000;
+  static constexpr Duration kSpin{30000};
 
  private:
   double speed_;
   bool realtime_threads_ = true;
-  std::int64_t wall_start_ns_;
+  WallTime wall_start_{};
 };
 
 }  // namespace hil::link

@@ -16,15 +16,17 @@
 
 #include "hil/firmware_emu/link/can_wire_frame.h"
 #include "hil/firmware_emu/sim_time.h"
+#include "hil/firmware_emu/unix_time.h"
+#include "hil/firmware_emu/wall_time.h"
 
 namespace hil::link {
 
 /// A frame read from the bus.
 struct ReceivedCanFrame {
   CanWireFrame frame;
-  std::int64_t t_kernel_unix_ns = 0;  ///< kernel receive time (CLOCK_REALTIME); 0 if none came
-  std::int64_t t_read_mono_ns = 0;    ///< CLOCK_MONOTONIC when this process read it
-  bool own = false;                   ///< our own frame echoed back (receive_own_frames)
+  UnixTime t_kernel{};     ///< kernel receive time (CLOCK_REALTIME); the epoch if none came
+  WallTime t_read_mono{};  ///< when this process read it
+  bool own = false;        ///< our own frame echoed back (receive_own_frames)
 };
 
 /// Counters of one port.
@@ -69,7 +71,7 @@ class SocketCanPort {
 
   /// Sends one frame. Returns the CLOCK_MONOTONIC time just after the kernel accepted it, or
   /// nothing when it did not (counted; a full TX queue is retried for up to 10 ms first).
-  std::optional<std::int64_t> Send(const CanWireFrame& frame);
+  std::optional<WallTime> Send(const CanWireFrame& frame);
   /// Waits up to `timeout` (zero: poll) for a frame. Error frames are counted and returned too
   /// (frame.error set); nothing on timeout.
   std::optional<ReceivedCanFrame> Receive(Duration timeout);

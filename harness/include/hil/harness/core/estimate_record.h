@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include "hil/firmware_emu/sim_time.h"
+#include "hil/firmware_emu/wall_time.h"
 
 namespace hil::harness {
 
@@ -19,8 +20,8 @@ struct EstimateRecord {
   std::optional<Eigen::Vector3d> vel_enu_mps;
   std::optional<double> yaw_deg;  ///< heading clockwise from north
   std::optional<Eigen::Vector3d>
-      pos_std_enu_m;            ///< reported 1-sigma position uncertainty (for NEES)
-  std::int64_t wall_rx_ns = 0;  ///< CLOCK_MONOTONIC arrival (0 when not applicable)
+      pos_std_enu_m;   ///< reported 1-sigma position uncertainty (for NEES)
+  WallTime wall_rx{};  ///< arrival (the clock's epoch when not applicable)
 };
 
 }  // namespace hil::harness

@@ -38,8 +38,8 @@ class EstimateCollector {
   void Poll();
   /// Output n2k_socketcan: frames seen per PGN (empty otherwise).
   std::map<std::uint32_t, std::uint64_t> bus_frames_per_pgn() const;
-  /// CLOCK_MONOTONIC time of the last output line (0: none yet).
-  std::int64_t last_output_wall_ns() const;
+  /// When the last output line came (the clock's epoch: none yet).
+  WallTime last_output_wall() const;
   /// The solutions parsed since the last call, moved into `out` (cleared first): the collector
   /// keeps none for long (the run scores them as they come: run/run_scoring.h).
   void TakeRecords(std::vector<EstimateRecord>& out) {
@@ -80,10 +80,9 @@ class EstimateCollector {
   /// Poll's work, without the flush of the raw lines.
   void Take();
   /// `parsed`: the line already parsed as JSON (EstimatorProcess's reader thread), or null.
-  void Consume(const std::string& line, std::int64_t wall_ns,
-               const nlohmann::json* parsed = nullptr);
+  void Consume(const std::string& line, WallTime wall, const nlohmann::json* parsed = nullptr);
   /// Consume() for a line the reader thread scanned.
-  void ConsumeScanned(const std::string& line, std::int64_t wall_ns, const JsonSolutionLine& scan);
+  void ConsumeScanned(const std::string& line, WallTime wall, const JsonSolutionLine& scan);
   /// Lines counted and kept in the raw file.
   void Keep(const std::string& line);
   /// Writes one line to the raw file while the kept output is within its bound (else counts it).
@@ -96,7 +95,7 @@ class EstimateCollector {
   std::ofstream raw_;
   bool raw_unflushed_ = false;  // lines written to raw_ since its last flush
   std::string pty_partial_;
-  std::int64_t pty_last_ns_ = 0;
+  WallTime pty_last_{};
   void AddRecord(const EstimateRecord& r);
   std::vector<EstimateRecord> records_;  // not yet taken
   std::size_t solutions_ = 0;
@@ -111,7 +110,7 @@ class EstimateCollector {
   JsonObserver json_observer_;
   std::function<std::vector<CanFrame>()> poll_bus_;
   std::unique_ptr<N2kBusReader> bus_reader_;
-  std::int64_t bus_last_ns_ = 0;
+  WallTime bus_last_{};
 };
 
 }  // namespace hil::harness

@@ -29,19 +29,19 @@ class EstimateReader {
  public:
   virtual ~EstimateReader() = default;
   /// One output line and its CLOCK_MONOTONIC arrival; a record when the line is a solution.
-  virtual std::optional<EstimateRecord> Line(const std::string& text, std::int64_t wall_ns) = 0;
+  virtual std::optional<EstimateRecord> Line(const std::string& text, WallTime wall) = 0;
   /// True for the JSON formats: Line() parses the text, and JsonLine() takes it parsed.
   virtual bool reads_json() const { return false; }
   /// Line() for a line already parsed (the parse result, possibly discarded).
   virtual std::optional<EstimateRecord> JsonLine(const nlohmann::json& /*line*/,
-                                                 std::int64_t /*wall_ns*/) {
+                                                 WallTime /*wall*/) {
     return std::nullopt;
   }
   /// True when a line's JsonSolutionScanner scan holds all Line() reads (json_stdout): then
   /// ScannedLine() takes the scan and gives what JsonLine() gives for the parsed line.
   virtual bool reads_scanned_lines() const { return false; }
   virtual std::optional<EstimateRecord> ScannedLine(const JsonSolutionLine& /*line*/,
-                                                    std::int64_t /*wall_ns*/) {
+                                                    WallTime /*wall*/) {
     return std::nullopt;
   }
   /// False when the solutions come from elsewhere (n2k_socketcan: the bus) and every line is a

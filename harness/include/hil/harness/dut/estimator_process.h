@@ -16,6 +16,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "hil/firmware_emu/wall_time.h"
 #include "hil/harness/core/json_solution_line.h"
 
 namespace hil::harness {
@@ -23,7 +24,7 @@ namespace hil::harness {
 /// One line the estimator wrote, with its CLOCK_MONOTONIC arrival time.
 struct OutputLine {
   std::string text;
-  std::int64_t wall_ns = 0;
+  WallTime wall{};
   /// With set_parse_json(true), a line that starts with '{' parsed on the reader thread (possibly
   /// discarded as invalid); otherwise null.
   std::shared_ptr<const nlohmann::json> json;
@@ -75,7 +76,7 @@ class EstimatorProcess {
   /// about 900 times).
   void ReturnLines(std::vector<OutputLine> used);
   /// CLOCK_MONOTONIC time of the last output line (0 if none yet).
-  std::int64_t last_output_wall_ns() const { return last_output_wall_ns_.load(); }
+  WallTime last_output_wall() const { return last_output_wall_.load(); }
   /// Stops the process and every process of its group (also when the estimator itself has already
   /// ended): SIGTERM, then SIGKILL after `grace_s`. Idempotent. Returns once the lines it wrote
   /// before it ended have been read from its stdout (or, with the pipe held open by a process
@@ -96,8 +97,8 @@ class EstimatorProcess {
 
  private:
   void ReadLoop();
-  OutputLine MakeLine(std::string text, std::int64_t now);
-  void Queue(std::vector<OutputLine>& got, std::int64_t now);
+  OutputLine MakeLine(std::string text, WallTime now);
+  void Queue(std::vector<OutputLine>& got, WallTime now);
   bool GroupAlive() const;
   void Reap(int status);
   int pid_ = -1;
@@ -108,7 +109,7 @@ class EstimatorProcess {
   std::vector<OutputLine> used_;  // given back by ReturnLines, freed by the reader thread
   std::size_t queued_bytes_ = 0;  // of lines_ (under mu_)
   std::atomic<std::uint64_t> output_bytes_{0}, dropped_bytes_{0}, overlong_lines_{0};
-  std::atomic<std::int64_t> last_output_wall_ns_{0};
+  std::atomic<WallTime> last_output_wall_{WallTime{}};
   std::atomic<bool> stdout_closed_{false};  // the reader saw end of file
   std::atomic<bool> parse_json_{false};
   std::atomic<bool> scan_solutions_{false};

@@ -23,8 +23,7 @@ class N2kBusReader {
   /// `start_unix_ns`: UTC of emulated t = 0 (record times are relative to it).
   explicit N2kBusReader(std::int64_t start_unix_ns) : start_(start_unix_ns) {}
   /// One frame with a 29-bit identifier; a record when it completes a 129029.
-  std::optional<EstimateRecord> Frame(std::uint32_t id29, std::string_view data,
-                                      std::int64_t wall_ns);
+  std::optional<EstimateRecord> Frame(std::uint32_t id29, std::string_view data, WallTime wall);
   /// Frames seen per PGN.
   const std::map<std::uint32_t, std::uint64_t>& frames_per_pgn() const { return per_pgn_; }
   const N2kFastPacketStats& fast_packet_stats() const { return fast_.stats(); }

@@ -57,7 +57,7 @@ class ClockedPacer final : public Pacer {
   /// among the host's reads depends on the machine.
   static constexpr std::size_t kHandOverBytes = 4095;
   /// How long (wall) WriteDue waits for the kernel's hand-over before it goes on.
-  static constexpr std::int64_t kHandOverLimitNs = 100'000'000;
+  static constexpr Duration kHandOverLimit = std::chrono::milliseconds(100);
 
  private:
   std::vector<SerialEndpoint*> endpoints_;

@@ -21,6 +21,7 @@
 
 #include "hil/firmware_emu/link/realtime_pacer.h"
 #include "hil/firmware_emu/sim_time.h"
+#include "hil/firmware_emu/wall_time.h"
 #include "hil/harness/engine/engine_devices.h"
 
 namespace hil::harness {
@@ -40,13 +41,14 @@ struct StepTimes {
 };
 
 /// Lockstep: the actions paced, those served more than kLateNs after their wall-clock time, and
-/// the largest delay (wall-clock ns).
+/// the largest delay (wall clock).
 struct PaceLateness {
-  static constexpr std::int64_t kLateNs = 1'000'000;
+  static constexpr Duration kLate = std::chrono::milliseconds(1);
   std::uint64_t actions = 0, late = 0;
-  std::int64_t max_late_ns = 0;
-  /// One action due at wall `due_ns`, served at wall `now_ns`. Returns whether it must wait.
-  bool Note(std::int64_t due_ns, std::int64_t now_ns);
+  Duration max_late{};
+  /// One action due at wall instant `due`, served at wall instant `now`. Returns whether it must
+  /// wait.
+  bool Note(WallTime due, WallTime now);
 };
 
 /// The threads a wall-clock pacer ran ({"events" | "pacing", their scheduling and CPU}).

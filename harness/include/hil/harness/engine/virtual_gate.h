@@ -27,6 +27,7 @@
 #include <optional>
 #include <vector>
 
+#include "hil/firmware_emu/wall_time.h"
 #include "hil/harness/dut/process_group.h"
 #include "hil/harness/links/serial_endpoint.h"
 
@@ -55,7 +56,7 @@ class VirtualGate {
   bool BeforeWrite(const SerialEndpoint& ep, std::size_t bytes, Time t_first = Time{},
                    Time t_last = Time{});
   /// BeforeWrite without the wait: true (and the bytes counted) when they may go now. With a
-  /// max_skew, a link refused is not asked about again for kRetryAfterRefusalNs of wall time (the
+  /// max_skew, a link refused is not asked about again for kRetryAfterRefusal of wall time (the
   /// run calls this at every event, and each answer costs a system call per other link: 81 000
   /// of them, 15 % of the main thread's time, in seed004); the bytes then wait a little longer,
   /// and the host, which orders them by device time itself, reads the same data.
@@ -76,7 +77,7 @@ class VirtualGate {
   /// Bytes not yet read on the host links (exact when 0), for the drain and hang reports.
   std::size_t Unread();
   /// Waits until the host has read every byte and all its threads sleep (a host turn). A host
-  /// that has read everything but does not sleep within `kBusyHostLimitNs` of wall time (it
+  /// that has read everything but does not sleep within `kBusyHostLimit` of wall time (it
   /// polls without blocking) cannot be waited for: from then on the turns wait only for its
   /// reads, and busy_host() says so. False: the wait was given up (the run stops).
   bool WaitHostIdle();
@@ -92,17 +93,17 @@ class VirtualGate {
   /// seen, not deterministically).
   bool busy_host() const { return busy_host_; }
   /// A host that has read everything but is not asleep this long (wall) is a busy host.
-  static constexpr std::int64_t kBusyHostLimitNs = 2'000'000'000;
+  static constexpr Duration kBusyHostLimit = std::chrono::seconds(2);
   /// With a max_skew: how long (wall) TryWrite refuses a link it refused without asking again.
-  static constexpr std::int64_t kRetryAfterRefusalNs = 50'000;
+  static constexpr Duration kRetryAfterRefusal = std::chrono::microseconds(50);
   /// The host's first turn waits also until a process of its group holds every host link open
   /// (a host that is still starting may sleep before it has opened its devices and written its
   /// start-up commands), at most this long (wall): a loaded machine (a parallel test suite, a TCG
   /// VM beside) took navd over 2 s, and its first UBX command then came a turn late; below the
   /// silence timeout's default (10 s), which would end the run as a hang.
-  static constexpr std::int64_t kHostStartLimitNs = 6'000'000'000;
+  static constexpr Duration kHostStartLimit = std::chrono::seconds(6);
   /// How often (wall) that first turn looks for the host's descriptors while it waits.
-  static constexpr std::int64_t kHostScanPeriodNs = 1'000'000;
+  static constexpr Duration kHostScanPeriod = std::chrono::milliseconds(1);
 
  private:
   struct Link {
@@ -114,8 +115,8 @@ class VirtualGate {
     // byte count at their end, the time of their first byte)
     std::size_t written = 0;
     std::deque<std::pair<std::size_t, Time>> runs{};
-    bool read = true;  // false once its reader has gone (StopReading): no order kept for it
-    std::int64_t refused_at_ns = 0;  // wall time of TryWrite's last refusal (with a max_skew)
+    bool read = true;       // false once its reader has gone (StopReading): no order kept for it
+    WallTime refused_at{};  // when TryWrite last refused (with a max_skew)
   };
   /// With a max_skew: whether the host has read every other link's bytes made up to `t`.
   bool OthersReadUpTo(const Link* self, Time t);

@@ -1,9 +1,9 @@
 #pragma once
 /// @file
 /// Real time or scaled (pacer.h): emulated time held to the wall clock with a speed factor. The
-/// engine's thread computes each event kEventLeadNs before its wall-clock time and queues its
+/// engine's thread computes each event kEventLead before its wall-clock time and queues its
 /// bytes and frames; a pacing thread of its own (pacing_thread.h) writes each at its time. Host
-/// bytes are read when they arrive (within kHostPollPeriodNs) and count from their arrival, not
+/// bytes are read when they arrive (within kHostPollPeriod) and count from their arrival, not
 /// before the last event computed; frames on the bus reach the devices with their bus time.
 
 #include <cstdint>
@@ -19,11 +19,11 @@ namespace hil::harness {
 class WallClockPacer final : public Pacer {
  public:
   /// How long (wall) the event thread sleeps at most before it looks for host bytes again.
-  static constexpr std::int64_t kHostPollPeriodNs = 1'000'000;
+  static constexpr Duration kHostPollPeriod = std::chrono::milliseconds(1);
   /// How long (wall) before its time an event is computed, so that its bytes wait in their queues
   /// when the pacing thread is due to write them (a host command read meanwhile counts from that
   /// event's time on: it takes effect at most this much later than it arrived).
-  static constexpr std::int64_t kEventLeadNs = 5'000'000;
+  static constexpr Duration kEventLead = std::chrono::milliseconds(5);
 
   /// `clock`: emulated t = 0's wall instant, the speed factor, and whether the pacing thread
   /// asks for SCHED_FIFO.
@@ -39,9 +39,9 @@ class WallClockPacer final : public Pacer {
 
   /// Sleeps towards the step's event while reading host bytes.
   bool Await(const StepTimes& step, DeviceIo& io, DeviceOutput& out) override;
-  /// When (wall ns) the event thread wakes next while it waits for `t_event` at wall `now_ns`;
+  /// When the event thread wakes next while it waits for `t_event` at wall instant `now`;
   /// none: the event is due now (or lies after `t_end`), compute it.
-  std::optional<std::int64_t> WakeNs(Time t_event, Time t_end, std::int64_t now_ns) const;
+  std::optional<WallTime> Wake(Time t_event, Time t_end, WallTime now) const;
 
   /// The pacing thread writes what the endpoints queue.
   void Queued(SerialEndpoint& ep, std::size_t bytes, Time t_ready) override {
@@ -52,8 +52,8 @@ class WallClockPacer final : public Pacer {
   bool Flush(DeviceIo& io) override;
 
   Time HostBytesTime(Time t_host, Time t_last_event) const override;
-  /// The emulated time of wall instant `now_ns`, not before `t_last_event`.
-  Time ArrivalTime(std::int64_t now_ns, Time t_last_event) const;
+  /// The emulated time of wall instant `now`, not before `t_last_event`.
+  Time ArrivalTime(WallTime now, Time t_last_event) const;
   bool host_bytes_virtual() const override { return false; }
   const link::RealtimePacer* bus_stamp_clock() const override { return &clock_; }
   Time BusTime(Time t_last_event) const override;

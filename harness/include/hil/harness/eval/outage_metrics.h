@@ -77,22 +77,22 @@ class OutputTimingAccumulator {
   explicit OutputTimingAccumulator(double speed,
                                    std::size_t exact_limit = QuantileSketch::kExactLimit)
       : speed_(speed), exact_limit_(exact_limit), dt_s_(exact_limit), iv_ms_(exact_limit) {}
-  void Add(Time t_validity, std::int64_t wall_rx_ns);
+  void Add(Time t_validity, WallTime wall_rx);
   OutputTiming Result(Time t_from, Time t_to) const;
   std::size_t retained() const {
     return dt_s_.retained() + iv_ms_.retained() + wall_.size() + heap_.size();
   }
 
  private:
-  void AddArrivalInterval(std::int64_t wall_ns);
+  void AddArrivalInterval(WallTime wall);
   double speed_;
   std::size_t exact_limit_;
   std::size_t n_ = 0;
   Time first_{}, last_{};
   QuantileSketch dt_s_, iv_ms_;
-  std::vector<std::int64_t> wall_;  // exact arrivals, unsorted
-  std::vector<std::int64_t> heap_;  // past kExactArrivals: the reorder heap (min-heap)
-  std::optional<std::int64_t> last_wall_;
+  std::vector<WallTime> wall_;  // exact arrivals, unsorted
+  std::vector<WallTime> heap_;  // past kExactArrivals: the reorder heap (min-heap)
+  std::optional<WallTime> last_wall_;
   bool reordering_ = false;
 };
 

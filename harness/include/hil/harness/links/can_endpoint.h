@@ -26,6 +26,7 @@
 #include "hil/firmware_emu/link/candump_log.h"
 #include "hil/firmware_emu/link/realtime_pacer.h"
 #include "hil/firmware_emu/link/socketcan_port.h"
+#include "hil/firmware_emu/unix_time.h"
 #include "hil/harness/core/quantile_sketch.h"
 #include "hil/harness/links/bus_tx_counter.h"
 #include "hil/harness/links/capture_format.h"
@@ -35,10 +36,10 @@ namespace hil::harness {
 class CanEndpoint {
  public:
   /// Opens `iface` and creates both captures in `capture_dir`.
-  /// @param start_unix_ns UTC of emulated t = 0 (candump log timestamps)
+  /// @param start_utc UTC of emulated t = 0 (candump log timestamps)
   /// @throws std::runtime_error when the interface cannot be opened (the message says when the
   ///         kernel has no CAN at all and points at ci/vcan/run_in_vm).
-  CanEndpoint(const std::string& iface, const std::string& capture_dir, std::int64_t start_unix_ns,
+  CanEndpoint(const std::string& iface, const std::string& capture_dir, UnixTime start_utc,
               bool fd = false);
 
   /// Queues a device's frame to leave at frame.t (frames of one device come in time order; frames
@@ -95,27 +96,27 @@ class CanEndpoint {
   struct Sent {
     link::CanWireFrame frame;
     Time t_scheduled{};
-    std::int64_t t_write_mono_ns = 0;
+    WallTime t_write_mono{};
     bool captured = false;  // virtual mode: captured at its emulated time already
   };
-  void Capture(CaptureDir dir, Time t, std::int64_t wall_ns, const link::CanWireFrame& f);
+  void Capture(CaptureDir dir, Time t, WallTime wall, const link::CanWireFrame& f);
   /// Reads what the socket holds, captures it in that order, keeps others' frames for PollBus.
   void ReadBus(Time t_now, const link::RealtimePacer* pacer, Duration wait);
   /// One frame read off the socket: an echo of ours, or another's (captured or kept).
   void Take(const link::ReceivedCanFrame& r, Time t_now, const link::RealtimePacer* pacer);
   /// Virtual mode: reads until every frame sent on the interface so far has been read, or `limit`.
   void AwaitSentFrames(Time t_now, Duration limit);
-  void OnEcho(const link::ReceivedCanFrame& r, Time t, std::int64_t mono_ns);
+  void OnEcho(const link::ReceivedCanFrame& r, Time t, WallTime mono);
   /// Captures the oldest frame still awaiting its echo at its write time.
   void CaptureUnechoed();
   /// Writes the arrivals whose capture waits (TakeArrivals) up to emulated time `t`.
   void CaptureArrivalsUpTo(Time t);
   /// Emulated time and CLOCK_MONOTONIC of a received frame: its kernel stamp (real time).
-  std::pair<Time, std::int64_t> BusTime(const link::ReceivedCanFrame& r,
-                                        const link::RealtimePacer& pacer);
+  std::pair<Time, WallTime> BusTime(const link::ReceivedCanFrame& r,
+                                    const link::RealtimePacer& pacer);
 
   link::SocketCanPort port_;
-  std::int64_t start_unix_ns_;
+  UnixTime start_utc_;
   link::CandumpLogWriter candump_;
   CaptureWriter capture_;
   std::deque<CanFrame> pending_;
@@ -125,7 +126,7 @@ class CanEndpoint {
   std::vector<link::CanWireFrame> unstamped_;  // others' frames read, awaiting TakeArrivals
   std::deque<std::pair<Time, link::CanWireFrame>> arrivals_;  // stamped, capture not yet written
   std::optional<link::RealtimePacer> pacer_;  // real time: a copy of the run's clock mapping
-  std::int64_t realtime_minus_mono_ns_ = 0;   // CLOCK_REALTIME − CLOCK_MONOTONIC at start
+  Duration realtime_minus_mono_{};            // CLOCK_REALTIME − CLOCK_MONOTONIC at start
   Time t_last_capture_{};                     // captures never go back in time
   BusTxCounter tx_counter_;                   // frames sent on the interface (vcan only)
   std::uint64_t frames_read_ = 0;             // frames read off the socket, echoes included

@@ -32,6 +32,7 @@
 
 #include "hil/firmware_emu/link/can_wire_frame.h"
 #include "hil/firmware_emu/sim_time.h"
+#include "hil/firmware_emu/wall_time.h"
 #include "hil/harness/core/run_diagnostics.h"
 
 namespace hil::harness {
@@ -43,7 +44,7 @@ struct CaptureRecord {
   CaptureDir dir = CaptureDir::kTx;
   std::int64_t t_emu_ns = 0;
   std::int64_t byte_period_ns = 0;
-  std::int64_t t_wall_ns = 0;
+  WallTime t_wall{};  ///< the column t_wall_ns; its epoch (0) when none
   std::string name = "-";
   std::string bytes;                          ///< tx, rx, drop: the raw bytes
   link::CanWireFrame frame;                   ///< ftx, frx

@@ -116,13 +116,13 @@ class SerialEndpoint {
 
  private:
   /// Real time: adds one byte to the capture line being built, tx when it `left`, else drop.
-  void RecordRealtimeByte(bool left, Time t, std::int64_t wall, Duration byte_period,
+  void RecordRealtimeByte(bool left, Time t, WallTime wall, Duration byte_period,
                           const std::string& name, char byte);
   /// Real time: writes the capture lines being built.
   void FinishRealtimeRecords();
   /// Virtual mode: takes `bytes` waiting bytes off the queue into the capture as `dir` records
   /// (one per chunk or part of a chunk), `wall` their write time for tx.
-  void Consume(std::size_t bytes, CaptureDir dir, std::int64_t wall);
+  void Consume(std::size_t bytes, CaptureDir dir, WallTime wall);
   /// The front chunk has left (written or dropped): it is taken off the queue.
   void PopFront();
   /// Records a message the transmit buffer had no room for as a drop, once the chunks queued

@@ -4,7 +4,7 @@
 /// test map through libhil_lockstep.so, publishes emulated time, wakes them (a grant) and waits
 /// until every thread of theirs waits again (idle), without looking at /proc. A thread that died
 /// without leaving its slot (its process was killed) is noticed when a wait has lasted
-/// kLivenessCheckNs and no longer waited for.
+/// kLivenessCheck and no longer waited for.
 
 #include <cstdint>
 #include <functional>
@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "hil/firmware_emu/sim_time.h"
+#include "hil/firmware_emu/wall_time.h"
 
 namespace hil::harness::lockstep {
 
@@ -29,15 +30,15 @@ class LockstepHost {
   struct Stats {
     std::uint64_t grants = 0;        ///< times hil woke the programs
     std::uint64_t slept = 0;         ///< waits for idle that slept on the futex
-    std::int64_t wait_ns = 0;        ///< wall time spent waiting for idle
+    Duration wait{};                 ///< wall time spent waiting for idle
     std::uint64_t thread_waits = 0;  ///< waits the programs' threads blocked in (all slots)
     std::uint64_t thread_looks = 0;  ///< times they looked at an unmet condition (all slots)
   };
-  /// Called while a wait for idle lasts (every kStepNs): the threads not idle, whether this is a
+  /// Called while a wait for idle lasts (every kStep): the threads not idle, whether this is a
   /// new wait. False gives the wait up.
   using WaitStep = std::function<bool(std::size_t busy_threads, bool new_wait)>;
-  static constexpr std::int64_t kStepNs = 1'000'000;
-  static constexpr std::int64_t kLivenessCheckNs = 1'000'000;
+  static constexpr Duration kStep = std::chrono::milliseconds(1);
+  static constexpr Duration kLivenessCheck = std::chrono::milliseconds(1);
 
   /// Creates `path` (removed again by the destructor); emulated t = 0 is UTC `utc_epoch_ns`.
   /// @throws std::runtime_error when the file cannot be made.

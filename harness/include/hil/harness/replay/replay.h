@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "hil/firmware_emu/wall_time.h"
 #include "hil/harness/core/quantile_sketch.h"
 
 namespace hil::harness {
@@ -40,7 +41,7 @@ struct ReplayResult {
   std::uint64_t bytes = 0;                 ///< serial bytes played
   std::uint64_t frames = 0;                ///< CAN frames played
   std::uint64_t frames_failed = 0;         ///< CAN frames the interface did not accept
-  std::int64_t wall_start_ns = 0;          ///< CLOCK_MONOTONIC of emulated t = 0
+  WallTime wall_start{};                   ///< the wall instant of emulated t = 0
   QuantileSketch byte_schedule_error_us;   ///< written − scheduled, of every byte of every link
   QuantileSketch frame_schedule_error_us;  ///< sent − scheduled, of every frame
 };

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "hil/firmware_emu/unix_time.h"
+
 namespace hil::harness {
 
 /// One device of the run, from the device table (devices/device_kind.h).
@@ -47,7 +49,7 @@ struct RunHeader {
   std::vector<HeaderLink> links;  ///< empty in virtual mode
 };
 
-/// Formats Unix nanoseconds as "YYYY-MM-DD hh:mm:ss UTC".
-std::string UtcText(std::int64_t unix_ns);
+/// Formats a UTC instant as "YYYY-MM-DD hh:mm:ss UTC".
+std::string UtcText(UnixTime t);
 
 }  // namespace hil::harness

@@ -4,8 +4,9 @@
 ///   [ 42.0/120.0 s  35%]  1.8x real time  87 solutions
 /// Disabled (prints nothing) when stderr is not a terminal.
 
-#include <cstdint>
 #include <string>
+
+#include "hil/firmware_emu/wall_time.h"
 
 namespace hil::harness {
 
@@ -21,7 +22,7 @@ class ProgressLine {
  private:
   bool enabled_;
   bool drawn_ = false;
-  std::int64_t wall_start_ns_ = 0, last_draw_ns_ = 0;
+  WallTime wall_start_, last_draw_{};
 };
 
 }  // namespace hil::harness

@@ -53,11 +53,11 @@ struct RunContext {
 
   const Scenario& scenario;
   const RunOptions& options;
-  std::int64_t wall_start_ns;
+  WallTime wall_start{};
   std::string dir;  ///< the run folder, absolute
   std::uint64_t seed;
   double silence_s;
-  std::int64_t silence_ns;
+  Duration silence;
   Time t_end, t_from;  ///< the scenario's end; the first time evaluated
   RunReport report;
 
@@ -91,7 +91,7 @@ struct RunContext {
   std::optional<ControllerProcess> controller;
   OwnedFd nav_fifo;
   OwnedFd odometry_fifo;  ///< navd_mode gyro_odometry: the controller forwards the encoders here
-  std::int64_t estimator_start_ns = 0;
+  WallTime estimator_start{};
   /// How the run meets the wall clock (engine/pacer.h: virtual, free running, lockstep), and
   /// the path its bytes take to the links.
   std::unique_ptr<Pacer> pacer;
@@ -124,7 +124,7 @@ struct RunContext {
   /// for the links only it read, so the run goes on and the actuators see the commands stop.
   void ControllerGone();
   /// Wall time since the estimator's last output (or its start).
-  std::int64_t SilentForNs() const;
+  Duration SilentFor() const;
   /// Hands the solutions and fixes that came since last time to the scoring, which asks the
   /// truth builder for their times, lets it follow the run and scores what it has sampled.
   void AskTruth();
@@ -143,8 +143,6 @@ inline constexpr std::uint64_t kOutputBytesPerEmulatedS = 64ull << 10;
 /// The output allowed by emulated time `t_s` (s).
 std::uint64_t OutputBudgetBytes(double t_s);
 
-/// Wall-clock now (CLOCK_MONOTONIC, ns).
-inline std::int64_t NowNs() { return link::RealtimePacer::MonotonicNs(); }
 /// "%g" of seconds, and "%.1f" of a time, for messages.
 std::string SecondsText(double s);
 std::string SecondsText(Time t);

@@ -56,7 +56,7 @@ struct ScoringSetup {
   std::vector<FaultInjection> faults;                   ///< the timeline's records (recovery times)
   double speed = 1.0;  ///< wall intervals → emulated (arrival jitter)
   /// Real time: the wall-clock instant of an emulated time (latency); empty in virtual mode.
-  std::function<std::int64_t(Time)> wall_ns_of;
+  std::function<WallTime(Time)> wall_time_of;
   bool stream_truth = true;      ///< open loop: the truth is consumed as it is sampled
   bool expect_solutions = true;  ///< false: no estimator (the thread follows the run's time)
   std::size_t exact_limit = QuantileSketch::kExactLimit;  ///< values each percentile holds

@@ -37,9 +37,9 @@ class RunWatchdog final : public EngineMonitor {
   /// time (a wait4() per event or wait step costs more than the event in virtual mode).
   bool EstimatorStillRunning();
   RunContext& ctx_;
-  std::int64_t running_checked_ns_ = 0;  // the last wall time the estimator was seen running
-  std::size_t wait_unread_ = 0;          // unread bytes at the last gate wait step
-  std::int64_t wait_progress_ns_ = 0;    // wall time the host last read during a gate wait
+  WallTime running_checked_{};   // the last wall time the estimator was seen running
+  std::size_t wait_unread_ = 0;  // unread bytes at the last gate wait step
+  WallTime wait_progress_{};     // wall time the host last read during a gate wait
 };
 
 }  // namespace hil::harness
