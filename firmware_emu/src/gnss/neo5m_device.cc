@@ -184,11 +184,7 @@ Duration Neo5mDevice::Period() const {
 
 Time Neo5mDevice::NextGridEpoch(Time after) const {
   // epochs sit on the UTC grid of the measurement period (whole seconds at 1 Hz)
-  const std::int64_t period = Period().count();
-  const std::int64_t abs_after = config_.start_unix_ns + ToNs(after);
-  std::int64_t k = abs_after / period + 1;
-  if (abs_after < 0 && abs_after % period != 0) k -= 1;
-  return TimeFromNs(k * period - config_.start_unix_ns);
+  return hil::NextGridEpoch(after, Period(), config_.start_unix_ns);
 }
 
 bool Neo5mDevice::OutputEnabled(std::uint16_t proto) const {

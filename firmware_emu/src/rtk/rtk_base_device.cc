@@ -24,11 +24,7 @@ RtkBaseDevice::RtkBaseDevice(const RtkBaseConfig& config, std::uint64_t seed)
 
 Time RtkBaseDevice::NextGridEpoch(Time after) const {
   // epochs on the GPS-second grid of the observation period (GPS − UTC is whole seconds)
-  const std::int64_t period = PeriodFromHz(config_.obs_rate_hz).count();
-  const std::int64_t abs_after = config_.start_unix_ns + ToNs(after);
-  std::int64_t k = abs_after / period + 1;
-  if (abs_after < 0 && abs_after % period != 0) k -= 1;
-  return TimeFromNs(k * period - config_.start_unix_ns);
+  return hil::NextGridEpoch(after, PeriodFromHz(config_.obs_rate_hz), config_.start_unix_ns);
 }
 
 rtcm3::StationInfo RtkBaseDevice::station() const {

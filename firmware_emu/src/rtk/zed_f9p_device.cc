@@ -91,11 +91,7 @@ Duration ZedF9pDevice::Period() const {
 }
 
 Time ZedF9pDevice::NextGridEpoch(Time after) const {
-  const std::int64_t period = Period().count();
-  const std::int64_t abs_after = config_.start_unix_ns + ToNs(after);
-  std::int64_t k = abs_after / period + 1;
-  if (abs_after < 0 && abs_after % period != 0) k -= 1;
-  return TimeFromNs(k * period - config_.start_unix_ns);
+  return hil::NextGridEpoch(after, Period(), config_.start_unix_ns);
 }
 
 Time ZedF9pDevice::next_event_time() const {
