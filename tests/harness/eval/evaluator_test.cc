@@ -24,7 +24,7 @@ TEST(EvaluatorTest, KnownOffsetGivesKnownMetrics) {
     // 3 m east, 4 m north of the truth: 5 m horizontal error everywhere
     const auto g = truth.frame().ToGeodetic(s.p_NB_N_m + Eigen::Vector3d(3, 4, -1));
     recs.push_back({TimeFromSeconds(k), g.lat_deg, g.lon_deg, g.height_m, std::nullopt,
-                    std::nullopt, std::nullopt, 0});
+                    std::nullopt, std::nullopt, WallTime{}});
   }
   const auto errs =
       CompareWithTruth(cfg, recs, Eigen::Vector3d::Zero(), Time{}, TimeFromSeconds(100));
