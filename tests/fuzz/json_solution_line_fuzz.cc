@@ -39,7 +39,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (dom.is_discarded()) std::abort();  // answered a line that is no JSON
   const auto reader =
       hil::harness::MakeEstimateReader(hil::harness::EstimatorOutput::kJsonStdout, 1LL << 60);
-  if (!SameRecord(reader->JsonLine(dom, 0), reader->ScannedLine(*scan, 0))) std::abort();
+  if (!SameRecord(reader->JsonLine(dom, hil::WallTime{}),
+                  reader->ScannedLine(*scan, hil::WallTime{})))
+    std::abort();
   hil::harness::EstimatorHealth from_dom, from_scan;
   from_dom.AddJson(dom);
   from_scan.AddScanned(*scan);
