@@ -196,6 +196,49 @@ inline constexpr ScenarioKey kTimeTag[] = {
      "the IMU's own output-rate oscillator against nominal"},
 };
 
+// the rows the accelerometer and the gyro share (same keys, units and meaning)
+inline constexpr ScenarioKey kFlickerTermsKey = {
+    "flicker_terms",
+    kInteger,
+    "",
+    "the profile's",
+    0,
+    8,
+    "Gauss–Markov terms summing to the flicker (bias instability) noise",
+    kNoChoices,
+    kAnyRange,
+    kProfileSource};
+inline constexpr ScenarioKey kFlickerTauKey = {
+    "flicker_tau_s",
+    kPoint,
+    "s",
+    "the profile's",
+    0,
+    0,
+    "[min, max] correlation times of those terms (0 < min ≤ max)",
+    kNoChoices,
+    kAnyRange,
+    kProfileSource};
+inline constexpr ScenarioKey kScaleFactorKey = {"scale_factor_ppm",
+                                                kNumber,
+                                                "ppm",
+                                                "the profile's",
+                                                0,
+                                                1e5,
+                                                "scale factor error (1σ, per power-on)",
+                                                kNoChoices,
+                                                kAnyRange,
+                                                kProfileSource};
+inline constexpr ScenarioKey kScaleTemperatureKey = {
+    "scale_temperature_ppm_per_c",          kNumber,    "ppm/°C",  "the profile's", -1e4, 1e4,
+    "scale factor temperature coefficient", kNoChoices, kAnyRange, kProfileSource};
+inline constexpr ScenarioKey kMisalignmentKey = {
+    "misalignment_deg",       kNumber,    "deg",     "the profile's", 0, 10,
+    "axis misalignment (1σ)", kNoChoices, kAnyRange, kProfileSource};
+inline constexpr ScenarioKey kBandwidthKey = {
+    "bandwidth_hz",           kNumber,    "Hz",      "the profile's", 0, 20000,
+    "the sensor's bandwidth", kNoChoices, kAnyRange, kProfileSource};
+
 // A triad's error terms (sensor_spec.h TriadErrorSpec): the accelerometer's and the gyro's differ
 // in the units of their first seven keys.
 inline constexpr ScenarioKey kAccel[] = {
@@ -213,20 +256,12 @@ inline constexpr ScenarioKey kAccel[] = {
      kNoChoices, kAnyRange, kProfileSource},
     {"lsb_mg", kNumber, "mg", "the profile's", 1e-9, 1e6, "one count", kNoChoices, kAnyRange,
      kProfileSource},
-    {"flicker_terms", kInteger, "", "the profile's", 0, 8,
-     "Gauss–Markov terms summing to the flicker (bias instability) noise", kNoChoices, kAnyRange,
-     kProfileSource},
-    {"flicker_tau_s", kPoint, "s", "the profile's", 0, 0,
-     "[min, max] correlation times of those terms (0 < min ≤ max)", kNoChoices, kAnyRange,
-     kProfileSource},
-    {"scale_factor_ppm", kNumber, "ppm", "the profile's", 0, 1e5,
-     "scale factor error (1σ, per power-on)", kNoChoices, kAnyRange, kProfileSource},
-    {"scale_temperature_ppm_per_c", kNumber, "ppm/°C", "the profile's", -1e4, 1e4,
-     "scale factor temperature coefficient", kNoChoices, kAnyRange, kProfileSource},
-    {"misalignment_deg", kNumber, "deg", "the profile's", 0, 10, "axis misalignment (1σ)",
-     kNoChoices, kAnyRange, kProfileSource},
-    {"bandwidth_hz", kNumber, "Hz", "the profile's", 0, 20000, "the sensor's bandwidth", kNoChoices,
-     kAnyRange, kProfileSource},
+    kFlickerTermsKey,
+    kFlickerTauKey,
+    kScaleFactorKey,
+    kScaleTemperatureKey,
+    kMisalignmentKey,
+    kBandwidthKey,
 };
 
 inline constexpr ScenarioKey kGyro[] = {
@@ -244,20 +279,12 @@ inline constexpr ScenarioKey kGyro[] = {
      kNoChoices, kAnyRange, kProfileSource},
     {"lsb_dps", kNumber, "deg/s", "the profile's", 1e-9, 1e6, "one count", kNoChoices, kAnyRange,
      kProfileSource},
-    {"flicker_terms", kInteger, "", "the profile's", 0, 8,
-     "Gauss–Markov terms summing to the flicker (bias instability) noise", kNoChoices, kAnyRange,
-     kProfileSource},
-    {"flicker_tau_s", kPoint, "s", "the profile's", 0, 0,
-     "[min, max] correlation times of those terms (0 < min ≤ max)", kNoChoices, kAnyRange,
-     kProfileSource},
-    {"scale_factor_ppm", kNumber, "ppm", "the profile's", 0, 1e5,
-     "scale factor error (1σ, per power-on)", kNoChoices, kAnyRange, kProfileSource},
-    {"scale_temperature_ppm_per_c", kNumber, "ppm/°C", "the profile's", -1e4, 1e4,
-     "scale factor temperature coefficient", kNoChoices, kAnyRange, kProfileSource},
-    {"misalignment_deg", kNumber, "deg", "the profile's", 0, 10, "axis misalignment (1σ)",
-     kNoChoices, kAnyRange, kProfileSource},
-    {"bandwidth_hz", kNumber, "Hz", "the profile's", 0, 20000, "the sensor's bandwidth", kNoChoices,
-     kAnyRange, kProfileSource},
+    kFlickerTermsKey,
+    kFlickerTauKey,
+    kScaleFactorKey,
+    kScaleTemperatureKey,
+    kMisalignmentKey,
+    kBandwidthKey,
     {"g_sensitivity_dps_per_g", kNumber, "(deg/s)/g", "the profile's", -100, 100,
      "rate error per g of specific force", kNoChoices, kAnyRange, kProfileSource},
 };
