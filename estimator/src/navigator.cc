@@ -265,6 +265,13 @@ void Navigator::InitializeAt(GpsTime t, const Lla& body_position, const Eigen::V
   have_imu_ = true;
 }
 
+void Navigator::FuseGnssVelocity(const GnssSample& g) {
+  if (!g.has_velocity || !params_.use_gnss_velocity) return;
+  const UpdateResult rv = ekf_.UpdateVelocity(g.vel_enu_mps, g.vel_std_enu_mps);
+  Record(kAidGnssVelocity, rv);
+  stats_.last_nis_vel = rv.nis;
+}
+
 void Navigator::ProcessGnss(const GnssSample& g) {
   if (!aligned_) {
     TryAlign(g);
@@ -312,11 +319,7 @@ void Navigator::ProcessGnss(const GnssSample& g) {
     first_rejected_t_.reset();
     status_ =
         (status_ | kStatusGnssFused) & ~(kStatusGnssRejected | kStatusDeadReckoning | kStatusReset);
-    if (g.has_velocity && params_.use_gnss_velocity) {
-      const UpdateResult rv = ekf_.UpdateVelocity(g.vel_enu_mps, g.vel_std_enu_mps);
-      Record(kAidGnssVelocity, rv);
-      stats_.last_nis_vel = rv.nis;
-    }
+    FuseGnssVelocity(g);
     return;
   }
   ++stats_.gnss_rejected;
@@ -325,7 +328,7 @@ void Navigator::ProcessGnss(const GnssSample& g) {
     // a receiver glitch (GnssStepCheck) or a suspect RTK fix (RtkFixCheck): its fixes are no
     // evidence against the filter
     first_rejected_t_.reset();
-    if (rtk_check_.suspect()) FuseSuspectFixVelocity(g);
+    if (rtk_check_.suspect()) FuseGnssVelocity(g);
     return;
   }
   if (!first_rejected_t_) first_rejected_t_ = g.t;

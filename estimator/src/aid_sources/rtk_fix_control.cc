@@ -32,11 +32,4 @@ bool Navigator::RejectSuspectRtkFix(const GnssSample& g, const UpdateResult& r,
   return true;
 }
 
-void Navigator::FuseSuspectFixVelocity(const GnssSample& g) {
-  if (!g.has_velocity || !params_.use_gnss_velocity) return;
-  const UpdateResult rv = ekf_.UpdateVelocity(g.vel_enu_mps, g.vel_std_enu_mps);
-  Record(kAidGnssVelocity, rv);
-  stats_.last_nis_vel = rv.nis;
-}
-
 }  // namespace hil::estimator

@@ -290,10 +290,11 @@ class Navigator {
   void ObserveGnssCourse(const GnssSample& g);
   void ControlZeroMotion();
   /// A fix of a suspect RTK fix episode (RtkFixCheck): true when its position is not to be used;
-  /// its velocity is fused by FuseSuspectFixVelocity (aid_sources/rtk_fix_control.cc).
+  /// its velocity is fused by FuseGnssVelocity all the same (aid_sources/rtk_fix_control.cc).
   bool RejectSuspectRtkFix(const GnssSample& g, const UpdateResult& r,
                            const Eigen::Vector3d& p_antenna_N_m);
-  void FuseSuspectFixVelocity(const GnssSample& g);
+  /// The fix's velocity (when it has one and use_gnss_velocity), recorded in its monitor.
+  void FuseGnssVelocity(const GnssSample& g);
   void Record(int source, const UpdateResult& r);
   /// Restarts the EKF's position and velocity at a fix (long rejection, or after an IMU loss).
   void ResetToFix(const GnssSample& g, const Eigen::Vector3d& p_antenna_N_m);
