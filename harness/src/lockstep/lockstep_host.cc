@@ -194,8 +194,15 @@ std::string ShellQuoted(const std::string& text) {
 }  // namespace
 
 std::string LockstepHost::ShellExports(const std::string& library) const {
+  // A program built with AddressSanitizer (gcc links its runtime dynamically) aborts at start when
+  // a preloaded library comes before the runtime, unless told not to check: the library only
+  // interposes the clock, sleep and poll calls and forwards them to the next definition (the
+  // sanitizer's interceptors included), so the order is harmless. Other programs ignore the option.
   return "LD_PRELOAD=" + ShellQuoted(library) + "${LD_PRELOAD:+:$LD_PRELOAD} " + kEnvFile + "=" +
-         ShellQuoted(path_) + "; export LD_PRELOAD " + kEnvFile + "; ";
+         ShellQuoted(path_) +
+         " ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}verify_asan_link_order=0;"
+         " export LD_PRELOAD ASAN_OPTIONS " +
+         kEnvFile + "; ";
 }
 
 std::vector<LockstepHost::Process> LockstepHost::Processes() const {

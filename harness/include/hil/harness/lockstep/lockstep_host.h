@@ -74,7 +74,8 @@ class LockstepHost {
   /// (waits in progress go on as the real calls).
   void Abandon();
   /// `export LD_PRELOAD=... HIL_LOCKSTEP=...; ` for the shell line of a host (its shell does not
-  /// load the library, the programs it starts do; an LD_PRELOAD of the caller's is kept after it).
+  /// load the library, the programs it starts do; an LD_PRELOAD of the caller's is kept after it;
+  /// ASAN_OPTIONS gains verify_asan_link_order=0 so that sanitizer builds start with it).
   std::string ShellExports(const std::string& library) const;
   /// The processes that have loaded the library so far.
   std::vector<Process> Processes() const;
