@@ -59,13 +59,14 @@ std::int64_t DaysFromCivil(int year, int month, int day) {
   return era * 146097 + doe - 719468;
 }
 
-std::int64_t UnixNsFromUtc(const UtcTime& utc) {
+UnixTime UnixTimeFromUtc(const UtcTime& utc) {
   const std::int64_t days = DaysFromCivil(utc.year, utc.month, utc.day);
   const std::int64_t s = days * kSecondsPerDay + utc.hour * 3600 + utc.minute * 60 + utc.second;
-  return s * kNsPerSecond + utc.nanosecond;
+  return UnixTimeFromNs(s * kNsPerSecond + utc.nanosecond);
 }
 
-UtcTime UtcFromUnixNs(std::int64_t unix_ns) {
+UtcTime UtcFrom(UnixTime t) {
+  const std::int64_t unix_ns = ToNs(t);
   const std::int64_t s = FloorDiv(unix_ns, kNsPerSecond);
   const std::int64_t days = FloorDiv(s, kSecondsPerDay);
   const std::int64_t sod = s - days * kSecondsPerDay;
@@ -87,7 +88,8 @@ UtcTime UtcFromUnixNs(std::int64_t unix_ns) {
   return u;
 }
 
-int LeapSecondsAtUnix(std::int64_t unix_s) {
+int LeapSecondsAt(UnixTime t) {
+  const std::int64_t unix_s = FloorDiv(ToNs(t), kNsPerSecond);
   int leap = 0;
   for (const LeapStep& step : kLeapSteps) {
     if (unix_s >= step.unix_s) leap = step.gps_minus_utc_s;
@@ -95,27 +97,25 @@ int LeapSecondsAtUnix(std::int64_t unix_s) {
   return leap;
 }
 
-GpsWeekTime GpsFromUnixNs(std::int64_t unix_ns) {
-  const std::int64_t unix_s = FloorDiv(unix_ns, kNsPerSecond);
+GpsWeekTime GpsFrom(UnixTime t) {
   const std::int64_t gps_ns =
-      unix_ns - kGpsEpochUnix_s * kNsPerSecond + LeapSecondsAtUnix(unix_s) * kNsPerSecond;
+      ToNs(t) - kGpsEpochUnix_s * kNsPerSecond + LeapSecondsAt(t) * kNsPerSecond;
   GpsWeekTime g;
   g.week = static_cast<int>(FloorDiv(gps_ns, kSecondsPerWeek * kNsPerSecond));
   g.tow_ns = gps_ns - static_cast<std::int64_t>(g.week) * kSecondsPerWeek * kNsPerSecond;
   return g;
 }
 
-std::int64_t UnixNsFromGps(const GpsWeekTime& gps) {
+UnixTime UnixTimeFromGps(const GpsWeekTime& gps) {
   const std::int64_t gps_ns =
       static_cast<std::int64_t>(gps.week) * kSecondsPerWeek * kNsPerSecond + gps.tow_ns;
   // Leap seconds are looked up at the approximate UTC instant, then corrected once.
-  std::int64_t unix_ns = gps_ns + kGpsEpochUnix_s * kNsPerSecond;
-  int leap = LeapSecondsAtUnix(FloorDiv(unix_ns, kNsPerSecond));
-  leap = LeapSecondsAtUnix(FloorDiv(unix_ns - leap * kNsPerSecond, kNsPerSecond));
-  return unix_ns - leap * kNsPerSecond;
+  const UnixTime approx = UnixTimeFromNs(gps_ns + kGpsEpochUnix_s * kNsPerSecond);
+  const std::chrono::seconds first{LeapSecondsAt(approx)};
+  return approx - std::chrono::seconds{LeapSecondsAt(approx - first)};
 }
 
-std::int64_t ParseIsoUtc(const std::string& text) {
+UnixTime ParseIsoUtc(const std::string& text) {
   UtcTime u;
   char frac[16] = {0};
   int consumed = 0;
@@ -147,7 +147,7 @@ std::int64_t ParseIsoUtc(const std::string& text) {
         "no such date: month " + std::to_string(u.month) + " of " + std::to_string(u.year) +
         " has " + std::to_string(DaysInMonth(u.year, u.month)) + " days: '" + text + "'");
   }
-  return UnixNsFromUtc(u);
+  return UnixTimeFromUtc(u);
 }
 
 }  // namespace hil::gnss

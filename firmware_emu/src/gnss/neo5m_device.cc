@@ -184,7 +184,7 @@ Duration Neo5mDevice::Period() const {
 
 Time Neo5mDevice::NextGridEpoch(Time after) const {
   // epochs sit on the UTC grid of the measurement period (whole seconds at 1 Hz)
-  return hil::NextGridEpoch(after, Period(), config_.start_unix_ns);
+  return hil::NextGridEpoch(after, Period(), config_.start_utc);
 }
 
 bool Neo5mDevice::OutputEnabled(std::uint16_t proto) const {
@@ -208,9 +208,9 @@ void Neo5mDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
 
   const ubx::ReceiverSettings& cfg = session_.current();
   NavEpoch e;
-  const std::int64_t unix_ns = config_.start_unix_ns + ToNs(t);
-  e.gps = GpsFromUnixNs(unix_ns);
-  e.leap_s = LeapSecondsAtUnix(unix_ns / 1000000000LL);
+  const UnixTime utc = UtcAt(config_.start_utc, t);
+  e.gps = GpsFrom(utc);
+  e.leap_s = LeapSecondsAt(utc);
 
   // the sky, limited by the settings and the scripted faults
   SkyConditions cond;
@@ -239,7 +239,7 @@ void Neo5mDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {
   }
   if (valid) ApplyMultipath(e, dops, in);
   const bool rtk_float = RtkFloat(t, dt_s, valid, e, in);
-  GnssFix fix = model_.Calc(truth, unix_ns, dt_s, in);
+  GnssFix fix = model_.Calc(truth, utc, dt_s, in);
   fix.fix_type = e.status.fix_type;
   e.sbas_corrections =
       config_.sbas_corrections && cfg.sbas_used_for_corrections() && AnySbasTracked(e.sats);

@@ -23,17 +23,17 @@ std::string Position(const GnssFix& fix, const NmeaFormat& f) {
 
 }  // namespace
 
-std::string FormatTime(std::int64_t unix_ns) {
-  const std::int64_t cs = (unix_ns + 5000000) / 10000000;  // centiseconds
-  const UtcTime u = UtcFromUnixNs(cs * 10000000);
+std::string FormatTime(UnixTime utc) {
+  const std::int64_t cs = (ToNs(utc) + 5000000) / 10000000;  // centiseconds
+  const UtcTime u = UtcFrom(UnixTimeFromNs(cs * 10000000));
   char buf[48];
   std::snprintf(buf, sizeof buf, "%02d%02d%02d.%02lld", u.hour, u.minute, u.second,
                 static_cast<long long>(u.nanosecond / 10000000));
   return buf;
 }
 
-std::string FormatDate(std::int64_t unix_ns) {
-  const UtcTime u = UtcFromUnixNs(unix_ns);
+std::string FormatDate(UnixTime utc) {
+  const UtcTime u = UtcFrom(utc);
   char buf[16];
   std::snprintf(buf, sizeof buf, "%02d%02d%02d", u.day, u.month, u.year % 100);
   return buf;
@@ -41,7 +41,7 @@ std::string FormatDate(std::int64_t unix_ns) {
 
 std::string EncodeRmc(const GnssFix& fix, bool time_known, const NmeaFormat& f) {
   std::string b = "GPRMC,";
-  b += time_known ? FormatTime(fix.unix_ns) : "";
+  b += time_known ? FormatTime(fix.utc) : "";
   if (fix.valid()) {
     b += ",A,";
     b += Position(fix, f) + ",";
@@ -52,7 +52,7 @@ std::string EncodeRmc(const GnssFix& fix, bool time_known, const NmeaFormat& f) 
   } else {
     b += ",V,,,,,,,";
   }
-  b += time_known ? FormatDate(fix.unix_ns) : "";
+  b += time_known ? FormatDate(fix.utc) : "";
   b += ",,";
   if (f.mode_indicator) {
     b += ",";
@@ -63,7 +63,7 @@ std::string EncodeRmc(const GnssFix& fix, bool time_known, const NmeaFormat& f) 
 
 std::string EncodeGga(const GnssFix& fix, bool time_known, const NmeaFormat& f) {
   std::string b = "GPGGA,";
-  b += time_known ? FormatTime(fix.unix_ns) : "";
+  b += time_known ? FormatTime(fix.utc) : "";
   if (!fix.valid()) {
     b += ",,,,,0,00,99.99,,,,,,";
     return Frame(b);
@@ -105,7 +105,7 @@ std::string EncodeGll(const GnssFix& fix, bool time_known, const NmeaFormat& f) 
   std::string b = "GPGLL,";
   b += fix.valid() ? Position(fix, f) : ",,,";
   b += ",";
-  b += time_known ? FormatTime(fix.unix_ns) : "";
+  b += time_known ? FormatTime(fix.utc) : "";
   b += fix.valid() ? ",A" : ",V";
   if (f.mode_indicator) {
     b += ",";
@@ -117,10 +117,10 @@ std::string EncodeGll(const GnssFix& fix, bool time_known, const NmeaFormat& f) 
 std::string EncodeZda(const GnssFix& fix, bool time_known) {
   std::string b = "GPZDA,";
   if (time_known) {
-    const UtcTime u = UtcFromUnixNs(fix.unix_ns);
+    const UtcTime u = UtcFrom(fix.utc);
     char buf[48];
     std::snprintf(buf, sizeof buf, ",%02d,%02d,%04d,00,00", u.day, u.month, u.year);
-    b += FormatTime(fix.unix_ns) + buf;
+    b += FormatTime(fix.utc) + buf;
   } else {
     b += ",,,,00,00";
   }

@@ -18,7 +18,7 @@ std::string EncodePubx00(const NavEpoch& e) {
   const GnssFix& f = e.fix;
   const bool valid = f.valid();
   std::string b = "PUBX,00,";
-  b += e.status.time_known ? FormatTime(f.unix_ns) : "";
+  b += e.status.time_known ? FormatTime(f.utc) : "";
   b += ",";
   if (e.position_known)
     b += FormatLatitude(f.lat_deg, 6) + "," + FormatLongitude(f.lon_deg, 6);
@@ -46,7 +46,7 @@ std::string EncodePubx00(const NavEpoch& e) {
 std::string EncodePubx04(const NavEpoch& e) {
   const GnssFix& f = e.fix;
   std::string b = "PUBX,04,";
-  b += FormatTime(f.unix_ns) + "," + FormatDate(f.unix_ns) + ",";
+  b += FormatTime(f.utc) + "," + FormatDate(f.utc) + ",";
   // UTC time of week: GPS time of week minus the leap seconds, wrapped into the week
   double utc_tow = e.gps.tow_s() - e.leap_s;
   int utc_week = e.gps.week;

@@ -23,7 +23,7 @@ void ReceiverModel::Advance(Eigen::Vector3d& state, std::mt19937_64& rng,
   for (int i = 0; i < 3; ++i) state[i] = first ? normal(rng) : phi * state[i] + q * normal(rng);
 }
 
-GnssFix ReceiverModel::Calc(const TruthSample& truth, std::int64_t unix_ns, double dt_s,
+GnssFix ReceiverModel::Calc(const TruthSample& truth, UnixTime utc, double dt_s,
                             const ErrorInputs& in) {
   // unit-variance processes; the draw sequence is the same whatever the inputs
   const bool first = !started_;
@@ -55,7 +55,7 @@ GnssFix ReceiverModel::Calc(const TruthSample& truth, std::int64_t unix_ns, doub
 
   GnssFix fix;
   fix.t_validity = truth.t;
-  fix.unix_ns = unix_ns;
+  fix.utc = utc;
   fix.fix_type = FixType::k3D;
   fix.quality = FixQuality::kGps;
   fix.lat_deg = truth.lat_deg + d_N.y() / (rm + truth.height_m) * 180.0 / std::numbers::pi;

@@ -57,7 +57,7 @@ std::vector<std::uint8_t> EncodeNavPvt(const F9Epoch& e) {
   const NavEpoch& n = e.nav;
   const GnssFix& f = n.fix;
   const bool valid = f.valid();
-  const UtcTime u = UtcFromUnixNs(f.unix_ns);
+  const UtcTime u = UtcFrom(f.utc);
   const bool tk = n.status.time_known;
   Writer w;
   w.U4(F9Itow(n)).U2(u.year).U1(u.month).U1(u.day).U1(u.hour).U1(u.minute).U1(u.second);  // 0–10

@@ -84,7 +84,7 @@ void WriteNavVelNed(Writer& w, const NavEpoch& e) {
 // NAV-TIMEUTC: the UTC date and time of the epoch.
 void WriteNavTimeUtc(Writer& w, const NavEpoch& e) {
   const GnssFix& f = e.fix;
-  const UtcTime u = UtcFromUnixNs(f.unix_ns);
+  const UtcTime u = UtcFrom(f.utc);
   const std::uint8_t valid = e.status.time_known ? (0x03 | (e.leap_known ? 0x04 : 0)) : 0;
   w.U4(Itow(e)).U4(RoundU(e.t_acc_ns)).I4(u.nanosecond).U2(static_cast<std::uint64_t>(u.year));
   w.U1(static_cast<std::uint64_t>(u.month))

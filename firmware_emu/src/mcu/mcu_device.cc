@@ -99,7 +99,7 @@ McuDevice::McuDevice(const McuConfig& config, std::uint64_t seed)
   std::sort(resets_.begin(), resets_.end());
   jump_applied_.assign(config_.faults.size(), false);
   // first whole GPS second at or after t = 0
-  const gnss::GpsWeekTime g0 = gnss::GpsFromUnixNs(config_.start_unix_ns);
+  const gnss::GpsWeekTime g0 = gnss::GpsFrom(config_.start_utc);
   const std::int64_t rem = g0.tow_ns % kNsPerS;
   next_pps_ = TimeFromNs(rem == 0 ? 0 : kNsPerS - rem);
   next_mag_ = Time{} + config_.first_sample_delay;
@@ -327,7 +327,7 @@ void McuDevice::OnMagSample(const TruthSample& truth) {
 
 void McuDevice::OnTimePulse(Time t, DeviceOutput& out) {
   const std::uint32_t latched = TickAt(t);
-  const gnss::GpsWeekTime g = gnss::GpsFromUnixNs(config_.start_unix_ns + ToNs(t));
+  const gnss::GpsWeekTime g = gnss::GpsFrom(UtcAt(config_.start_utc, t));
   const std::int64_t tow_s = (g.tow_ns + kNsPerS / 2) / kNsPerS;
   last_pulse_ = t;
   ++stats_.time_pulses;

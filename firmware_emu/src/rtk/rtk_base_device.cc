@@ -24,7 +24,7 @@ RtkBaseDevice::RtkBaseDevice(const RtkBaseConfig& config, std::uint64_t seed)
 
 Time RtkBaseDevice::NextGridEpoch(Time after) const {
   // epochs on the GPS-second grid of the observation period (GPS − UTC is whole seconds)
-  return hil::NextGridEpoch(after, PeriodFromHz(config_.obs_rate_hz), config_.start_unix_ns);
+  return hil::NextGridEpoch(after, PeriodFromHz(config_.obs_rate_hz), config_.start_utc);
 }
 
 rtcm3::StationInfo RtkBaseDevice::station() const {
@@ -63,8 +63,7 @@ rtcm3::MsmEpoch RtkBaseDevice::MsmOf(const std::vector<SatelliteObservation>& ob
 }
 
 std::vector<SerialMessage> RtkBaseDevice::EncodeEpoch(Time t) {
-  const std::int64_t unix_ns = config_.start_unix_ns + ToNs(t);
-  const gnss::GpsWeekTime gps = gnss::GpsFromUnixNs(unix_ns);
+  const gnss::GpsWeekTime gps = gnss::GpsFrom(UtcAt(config_.start_utc, t));
   const double gps_s = static_cast<double>(gps.week) * 604800.0 + gps.tow_s();
   std::vector<SerialMessage> out;
   if (t >= next_station_) {

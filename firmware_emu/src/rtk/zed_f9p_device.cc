@@ -91,7 +91,7 @@ Duration ZedF9pDevice::Period() const {
 }
 
 Time ZedF9pDevice::NextGridEpoch(Time after) const {
-  return hil::NextGridEpoch(after, Period(), config_.start_unix_ns);
+  return hil::NextGridEpoch(after, Period(), config_.start_utc);
 }
 
 Time ZedF9pDevice::next_event_time() const {
@@ -121,9 +121,9 @@ void ZedF9pDevice::RunNavEpoch(const TruthSample& truth, DeviceOutput& out) {
   last_epoch_time_ = t;
   next_epoch_ = NextGridEpoch(t);
   gnss::NavEpoch& e = last_.nav;
-  const std::int64_t unix_ns = config_.start_unix_ns + ToNs(t);
-  e.gps = gnss::GpsFromUnixNs(unix_ns);
-  e.leap_s = gnss::LeapSecondsAtUnix(unix_ns / 1000000000LL);
+  const UnixTime utc = UtcAt(config_.start_utc, t);
+  e.gps = gnss::GpsFrom(utc);
+  e.leap_s = gnss::LeapSecondsAt(utc);
   const double gps_s = static_cast<double>(e.gps.week) * 604800.0 + e.gps.tow_s();
   gnss::SkyConditions sky;
   for (const auto& [start, end] : config_.sky_outages) sky.sky_blocked |= t >= start && t < end;
@@ -143,7 +143,7 @@ void ZedF9pDevice::RunNavEpoch(const TruthSample& truth, DeviceOutput& out) {
     in.v_scale =
         dops.vdop < 99 ? std::clamp(dops.vdop / config_.model.vdop_ref, 0.5, 20.0) : in.h_scale;
   }
-  gnss::GnssFix fix = model_.Calc(truth, unix_ns, dt_s, in);
+  gnss::GnssFix fix = model_.Calc(truth, utc, dt_s, in);
   fix.fix_type = e.status.fix_type;
   fix.num_sv = valid ? usable : 0;
   fix.gdop = dops.gdop, fix.pdop = dops.pdop, fix.tdop = dops.tdop, fix.vdop = dops.vdop;

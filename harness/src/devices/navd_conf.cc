@@ -40,8 +40,7 @@ void WriteNavdConfig(const std::string& path, const Scenario& s, const std::stri
   for (const auto& [key, value] : s.estimator.navd_input) out << key << " = " << value << "\n";
   if (merge_window_s > 0 && NavdMergeWindowS(s) < 0)
     out << "merge_window_s = " << merge_window_s << "\n";
-  out << "\n[time]\nleap_seconds = " << gnss::LeapSecondsAtUnix(s.start_unix_ns / 1000000000LL)
-      << "\n\n"
+  out << "\n[time]\nleap_seconds = " << gnss::LeapSecondsAt(s.start_utc) << "\n\n"
       << "[filter]\n";
   // navd's UWB mode is chosen by the [uwb] section (uwb_tag row), not by [filter] mode
   const bool odometry = s.estimator.navd_mode == NavdMode::kGyroOdometry;  // [odometry] instead

@@ -94,9 +94,9 @@ void EstimateCollector::Consume(const std::string& line, WallTime wall,
 }
 
 void EstimateCollector::AttachBus(std::function<std::vector<CanFrame>()> poll_bus,
-                                  std::int64_t start_unix_ns) {
+                                  UnixTime start_utc) {
   poll_bus_ = std::move(poll_bus);
-  bus_reader_ = std::make_unique<N2kBusReader>(start_unix_ns);
+  bus_reader_ = std::make_unique<N2kBusReader>(start_utc);
 }
 
 std::map<std::uint32_t, std::uint64_t> EstimateCollector::bus_frames_per_pgn() const {

@@ -17,20 +17,20 @@ constexpr double kKnotToMps = 1852.0 / 3600.0;
 
 // A solution's integer time of validity (ns since 1970) to the run's time; none when the
 // difference does not fit an int64 (a garbled line).
-std::optional<Time> FromUnixNs(std::int64_t unix_ns, std::int64_t start_unix_ns) {
+std::optional<Time> FromUnixNs(std::int64_t unix_ns, UnixTime start_utc) {
   std::int64_t d = 0;
-  if (__builtin_sub_overflow(unix_ns, start_unix_ns, &d)) return std::nullopt;
+  if (__builtin_sub_overflow(unix_ns, ToNs(start_utc), &d)) return std::nullopt;
   return TimeFromNs(d);
 }
 
 // Seconds since 1970 to the run's time, read to the microsecond; none beyond ±9e9 s (about
 // 285 years: no solution time, and its nanoseconds would not fit an int64).
-std::optional<Time> FromUnixSeconds(double unix_s, std::int64_t start_unix_ns) {
+std::optional<Time> FromUnixSeconds(double unix_s, UnixTime start_utc) {
   if (!std::isfinite(unix_s) || std::fabs(unix_s) > 9e9) return std::nullopt;
   const auto sec = static_cast<std::int64_t>(std::floor(unix_s));
   const auto ns =
       static_cast<std::int64_t>(std::llround((unix_s - static_cast<double>(sec)) * 1e6)) * 1000;
-  return FromUnixNs(sec * 1000000000LL + ns, start_unix_ns);
+  return FromUnixNs(sec * 1000000000LL + ns, start_utc);
 }
 
 std::optional<Eigen::Vector3d> Vec3(const nlohmann::json& j, const char* key) {
@@ -62,7 +62,7 @@ JsonSolutionLine SolutionFieldsOf(const nlohmann::json& j) {
 }
 
 // Why a json_stdout line is no solution: the first field it lacks or gives wrongly.
-std::string WhyNotAJsonSolution(const std::string& text, std::int64_t start_unix_ns) {
+std::string WhyNotAJsonSolution(const std::string& text, UnixTime start_utc) {
   const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
   if (j.is_discarded()) return "not JSON";
   if (!j.is_object()) return "not a JSON object";
@@ -73,20 +73,20 @@ std::string WhyNotAJsonSolution(const std::string& text, std::int64_t start_unix
   if (j.contains("tov_unix_ns")) {
     if (!j["tov_unix_ns"].is_number_integer())
       return "\"tov_unix_ns\" is not an integer (UTC nanoseconds)";
-    if (!FromUnixNs(j["tov_unix_ns"].get<std::int64_t>(), start_unix_ns))
+    if (!FromUnixNs(j["tov_unix_ns"].get<std::int64_t>(), start_utc))
       return "\"tov_unix_ns\" is out of range";
     return "a solution field is malformed";
   }
   if (!j.contains("tov_utc_s")) return "neither \"tov_unix_ns\" nor \"tov_utc_s\"";
   if (!j["tov_utc_s"].is_number()) return "\"tov_utc_s\" is not a number";
-  if (!FromUnixSeconds(j["tov_utc_s"].get<double>(), start_unix_ns))
+  if (!FromUnixSeconds(j["tov_utc_s"].get<double>(), start_utc))
     return "\"tov_utc_s\" is out of range";
   return "a solution field is malformed";
 }
 
 class JsonLinesReader final : public EstimateReader {
  public:
-  explicit JsonLinesReader(std::int64_t start) : start_(start) {}
+  explicit JsonLinesReader(UnixTime start) : start_(start) {}
   std::optional<EstimateRecord> Line(const std::string& text, WallTime wall) override {
     return JsonLine(nlohmann::json::parse(text, nullptr, false), wall);
   }
@@ -121,12 +121,12 @@ class JsonLinesReader final : public EstimateReader {
   }
 
  private:
-  std::int64_t start_;
+  UnixTime start_;
 };
 
 class GpsdJsonReader final : public EstimateReader {
  public:
-  explicit GpsdJsonReader(std::int64_t start) : start_(start) {}
+  explicit GpsdJsonReader(UnixTime start) : start_(start) {}
   std::optional<EstimateRecord> Line(const std::string& text, WallTime wall) override {
     return JsonLine(nlohmann::json::parse(text, nullptr, false), wall);
   }
@@ -138,7 +138,7 @@ class GpsdJsonReader final : public EstimateReader {
     if (j.value("mode", 0) < 2) return std::nullopt;
     EstimateRecord r;
     try {
-      r.t_validity = TimeFromNs(gnss::ParseIsoUtc(j["time"].get<std::string>()) - start_);
+      r.t_validity = Time{} + (gnss::ParseIsoUtc(j["time"].get<std::string>()) - start_);
     } catch (const std::invalid_argument&) {
       return std::nullopt;
     }
@@ -169,12 +169,12 @@ class GpsdJsonReader final : public EstimateReader {
   }
 
  private:
-  std::int64_t start_;
+  UnixTime start_;
 };
 
 class NmeaReader final : public EstimateReader {
  public:
-  explicit NmeaReader(std::int64_t start) : start_(start) {}
+  explicit NmeaReader(UnixTime start) : start_(start) {}
   std::optional<EstimateRecord> Line(const std::string& text, WallTime wall) override {
     const NmeaParse p = ParseNmeaSentence(text);
     if (!p.sentence) return std::nullopt;
@@ -196,10 +196,11 @@ class NmeaReader final : public EstimateReader {
     if (!tod || !lat || !lon) return std::nullopt;
     EstimateRecord r;
     // the day: the one that puts this time of day closest to the scenario start
-    const std::int64_t day0 = start_ - ((start_ % kDayNs) + kDayNs) % kDayNs;
+    const std::int64_t start_ns = ToNs(start_);
+    const std::int64_t day0 = start_ns - ((start_ns % kDayNs) + kDayNs) % kDayNs;
     std::int64_t t_ns = day0 + static_cast<std::int64_t>(std::llround(*tod * 1e9));
-    if (t_ns < start_ - kDayNs / 2) t_ns += kDayNs;
-    r.t_validity = TimeFromNs(t_ns - start_);
+    if (t_ns < start_ns - kDayNs / 2) t_ns += kDayNs;
+    r.t_validity = TimeFromNs(t_ns - start_ns);
     r.lat_deg = *lat;
     r.lon_deg = *lon;
     const double msl = std::atof(f[8].c_str());
@@ -220,14 +221,14 @@ class NmeaReader final : public EstimateReader {
   }
 
  private:
-  std::int64_t start_;
+  UnixTime start_;
   std::optional<double> last_rmc_tod_, rmc_speed_mps_, rmc_course_deg_;
 };
 
 // NMEA 2000 from candump -l/-L lines on stdout, decoded frame by frame (n2k_bus_reader.h).
 class N2kCandumpReader final : public EstimateReader {
  public:
-  explicit N2kCandumpReader(std::int64_t start) : bus_(start) {}
+  explicit N2kCandumpReader(UnixTime start) : bus_(start) {}
   std::optional<EstimateRecord> Line(const std::string& text, WallTime wall) override {
     const std::size_t hash = text.find('#');
     const std::size_t sp = text.rfind(' ', hash);
@@ -270,18 +271,17 @@ const char* RawEstimateFileName(EstimatorOutput output) {
   return nmea ? "estimate.nmea" : "estimate.jsonl";
 }
 
-std::unique_ptr<EstimateReader> MakeEstimateReader(EstimatorOutput output,
-                                                   std::int64_t start_unix_ns) {
+std::unique_ptr<EstimateReader> MakeEstimateReader(EstimatorOutput output, UnixTime start_utc) {
   switch (output) {
     case EstimatorOutput::kJsonStdout:
-      return std::make_unique<JsonLinesReader>(start_unix_ns);
+      return std::make_unique<JsonLinesReader>(start_utc);
     case EstimatorOutput::kGpsdJson:
-      return std::make_unique<GpsdJsonReader>(start_unix_ns);
+      return std::make_unique<GpsdJsonReader>(start_utc);
     case EstimatorOutput::kNmeaStdout:
     case EstimatorOutput::kNmeaPty:
-      return std::make_unique<NmeaReader>(start_unix_ns);
+      return std::make_unique<NmeaReader>(start_utc);
     case EstimatorOutput::kN2kCandump:
-      return std::make_unique<N2kCandumpReader>(start_unix_ns);
+      return std::make_unique<N2kCandumpReader>(start_utc);
     case EstimatorOutput::kN2kSocketcan:
       return std::make_unique<NoLinesReader>();
   }

@@ -45,7 +45,7 @@ std::optional<EstimateRecord> N2kBusReader::Frame(std::uint32_t id29, std::strin
   EstimateRecord r;
   const std::int64_t t_ns =
       static_cast<std::int64_t>(days) * kDayNs + static_cast<std::int64_t>(tod) * 100000LL;
-  r.t_validity = TimeFromNs(t_ns - start_);
+  r.t_validity = TimeFromNs(t_ns - ToNs(start_));
   r.lat_deg = static_cast<double>(LeRead<std::int64_t>(b, 7)) * 1e-16;
   r.lon_deg = static_cast<double>(LeRead<std::int64_t>(b, 15)) * 1e-16;
   r.height_m = static_cast<double>(LeRead<std::int64_t>(b, 23)) * 1e-6;

@@ -27,7 +27,7 @@ CaptureHeader CanHeader(const std::string& iface, UnixTime start_utc) {
   h.link = iface;
   h.kind = "can";
   h.iface = iface;
-  h.start_unix_ns = ToNs(start_utc);
+  if (start_utc != UnixTime{}) h.start_utc = start_utc;  // the epoch: not known (replay)
   return h;
 }
 

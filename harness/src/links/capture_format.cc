@@ -167,7 +167,7 @@ CaptureWriter::CaptureWriter(const std::string& path, const CaptureHeader& h) : 
   else
     out << h.baud;
   out << "\n";
-  if (h.start_unix_ns != 0) out << "# start_unix_ns " << h.start_unix_ns << "\n";
+  if (h.start_utc) out << "# start_unix_ns " << ToNs(*h.start_utc) << "\n";
   out << "# columns: dir t_emu_ns byte_period_ns t_wall_ns name data [wall_offsets_ns]"
          " (format: vectors/captures/README.md)\n";
   buf_ = out.str();
@@ -248,7 +248,8 @@ bool ParseCaptureHeaderLine(std::string_view line, CaptureHeader& hdr) {
     else
       h >> hdr.baud;
   } else if (word == "start_unix_ns") {
-    h >> hdr.start_unix_ns;
+    std::int64_t ns = 0;
+    if (h >> ns) hdr.start_utc = UnixTimeFromNs(ns);
   } else {
     return false;
   }

@@ -72,8 +72,7 @@ void AddCandumpLog(const ReplayOptions& opt, const std::string& path, ReplayPlan
 void AddCapture(const ReplayOptions& opt, const std::string& path, const std::string& dir,
                 ReplayPlan& plan) {
   const Capture c = ReadCapture(path);
-  if (c.header.start_unix_ns != 0 && plan.start_utc == UnixTime{})
-    plan.start_utc = UnixTimeFromNs(c.header.start_unix_ns);
+  if (c.header.start_utc && plan.start_utc == UnixTime{}) plan.start_utc = *c.header.start_utc;
   const bool can = c.header.kind == "can";
   if (can) {
     UseCanInterface(opt, c.header.iface, plan);

@@ -213,7 +213,7 @@ void Execute(RunContext& ctx, RunWatchdog& watchdog) {
     Engine& engine = *ctx.engine;
     engine.KeepBusFramesForCollector();
     ctx.collector->AttachBus([&engine] { return engine.TakeBusFramesForCollector(); },
-                             scenario.start_unix_ns);
+                             scenario.start_utc);
   }
   // the truth for the evaluation, sampled on a thread of its own as the run goes (truth_table.h)
   ctx.truth_builder.emplace(scenario.truth);

@@ -67,7 +67,7 @@ RunHeader MakeRunHeader(const RunContext& ctx) {
   h.origin_lat_deg = s.truth.origin.lat_deg;
   h.origin_lon_deg = s.truth.origin.lon_deg;
   h.origin_height_m = s.truth.origin.height_m;
-  h.scenario_start_utc = UtcText(UnixTimeFromNs(s.start_unix_ns));
+  h.scenario_start_utc = UtcText(s.start_utc);
   // the run's start: UTC now less the wall time the run has taken
   h.run_started_utc = UtcText(UnixClock::now() - (WallNow() - ctx.wall_start));
   h.devices = Devices(s);

@@ -126,7 +126,7 @@ void MakeSharedClock(RunContext& ctx) {
     throw std::runtime_error(
         "--lockstep: libhil_lockstep.so is neither beside hil nor in ../lib/hil/preload (build the "
         "hil_harness_preload target, or install hil)");
-  ctx.shared_clock.emplace(ctx.dir + "/lockstep.shm", ctx.scenario.start_unix_ns);
+  ctx.shared_clock.emplace(ctx.dir + "/lockstep.shm", ToNs(ctx.scenario.start_utc));
   // a thread waiting only on links hil did not touch sleeps through a grant
   ctx.shared_clock->SetLinks(ClockedPacer::LinkDevices(ctx.set.endpoints));
 }
@@ -203,7 +203,7 @@ void StartController(RunContext& ctx) {
   std::snprintf(origin, sizeof origin, "%.9f,%.9f,%.3f", o.lat_deg, o.lon_deg, o.height_m);
   // the UTC time of day (s) of emulated t = 0, when the devices' first periods begin
   constexpr std::int64_t kDayNs = 86'400'000'000'000LL;
-  const std::int64_t tod_ns = ((ctx.scenario.start_unix_ns % kDayNs) + kDayNs) % kDayNs;
+  const std::int64_t tod_ns = ((ToNs(ctx.scenario.start_utc) % kDayNs) + kDayNs) % kDayNs;
   char start_tod[32];
   std::snprintf(start_tod, sizeof start_tod, "%lld.%09lld",
                 static_cast<long long>(tod_ns / 1'000'000'000LL),
@@ -279,7 +279,7 @@ void Prepare(RunContext& ctx) {
       ctx.pacer = std::make_unique<WallClockPacer>(clock);
     }
   }
-  ctx.collector.emplace(MakeEstimateReader(scenario.estimator.output, scenario.start_unix_ns),
+  ctx.collector.emplace(MakeEstimateReader(scenario.estimator.output, scenario.start_utc),
                         ctx.estimator ? &*ctx.estimator : nullptr, ctx.nav_pty.get(),
                         ctx.dir + "/" + RawEstimateFileName(scenario.estimator.output),
                         &ctx.diagnostics);

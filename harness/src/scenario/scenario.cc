@@ -158,7 +158,7 @@ Scenario FromReader(const YamlReader& root, const DeviceSections& devices) {
   s.name = top.String("name");
   s.description = top.String("description", "");
   try {
-    s.start_unix_ns = gnss::ParseIsoUtc(top.String("start_utc", kDefaultStartUtc));
+    s.start_utc = gnss::ParseIsoUtc(top.String("start_utc", kDefaultStartUtc));
   } catch (const std::invalid_argument& e) {
     top.Fail("start_utc", e.what());
   }

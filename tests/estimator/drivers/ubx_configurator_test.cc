@@ -87,7 +87,7 @@ TEST(UbxConfiguratorTest, WaitsForEachAckRetriesAndGivesUp) {
 // output to UBX navigation at 4 Hz, and the receiver's stream changes accordingly.
 TEST(UbxConfiguratorTest, ConfiguresTheEmulatedNeo5m) {
   gnss::Neo5mConfig cfg;
-  cfg.start_unix_ns = gnss::ParseIsoUtc("2013-06-10T08:00:00Z");
+  cfg.start_utc = gnss::ParseIsoUtc("2013-06-10T08:00:00Z");
   gnss::Neo5mDevice rx(cfg, 7);
   UbxConfigurator conf(UbxSetupCommands({.rate_hz = 4, .ubx_navigation = true, .nmea_off = true}));
   UbxDecoder dec([&](const UbxMessage& m) { conf.OnMessage(m); });

@@ -10,7 +10,7 @@ namespace hil::gnss {
 namespace {
 
 double GpsSeconds(const char* iso) {
-  const GpsWeekTime g = GpsFromUnixNs(ParseIsoUtc(iso));
+  const GpsWeekTime g = GpsFrom(ParseIsoUtc(iso));
   return g.week * 604800.0 + g.tow_s();
 }
 

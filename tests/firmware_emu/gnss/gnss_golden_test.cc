@@ -195,7 +195,7 @@ NavEpoch NorthEast() {
   // 3D fix at Rheden (the nl551e capture's site and sky), stationary with a small velocity error
   NavEpoch e;
   GnssFix& f = e.fix;
-  f.unix_ns = ParseIsoUtc("2012-07-04T19:14:34Z");
+  f.utc = ParseIsoUtc("2012-07-04T19:14:34Z");
   f.fix_type = FixType::k3D;
   f.quality = FixQuality::kGps;
   f.lat_deg = 52.0 + 0.17079 / 60.0;
@@ -222,7 +222,7 @@ NavEpoch NorthEast() {
   e.used_in_channel_order = {19, 16, 30, 18, 22, 3, 7};
   e.position_known = true;
   e.status = {FixType::k3D, true, true, 15000, 16010};
-  e.gps = GpsFromUnixNs(f.unix_ns);
+  e.gps = GpsFrom(f.utc);
   e.leap_s = 16;
   e.leap_known = true;
   e.clk_bias_ns = 412345.6, e.clk_drift_nsps = 281.25, e.t_acc_ns = 39, e.f_acc_psps = 500;
@@ -233,7 +233,7 @@ NavEpoch SouthWestMoving() {
   // Santiago de Chile, driving north-west at 5 m/s, the last second before a new year (2016 leap)
   NavEpoch e = NorthEast();
   GnssFix& f = e.fix;
-  f.unix_ns = ParseIsoUtc("2016-12-31T23:59:59.5Z");
+  f.utc = ParseIsoUtc("2016-12-31T23:59:59.5Z");
   f.lat_deg = -33.4488897;
   f.lon_deg = -70.6692655;
   f.geoid_separation_m = 31.2;
@@ -246,7 +246,7 @@ NavEpoch SouthWestMoving() {
   e.sats.push_back({120, true, 21.0, 75.0, 33, 7, true, false, true, 4, 0});
   e.used_in_channel_order = {16, 18, 3};
   f.num_sv = 3;
-  e.gps = GpsFromUnixNs(f.unix_ns);
+  e.gps = GpsFrom(f.utc);
   e.leap_s = 17;
   e.clk_bias_ns = -77.0, e.clk_drift_nsps = -12.5;
   return e;
@@ -254,7 +254,7 @@ NavEpoch SouthWestMoving() {
 
 NavEpoch ColdNoFix() {
   NavEpoch e;
-  e.fix.unix_ns = ParseIsoUtc("2012-07-04T19:14:18Z");
+  e.fix.utc = ParseIsoUtc("2012-07-04T19:14:18Z");
   for (int id : {3, 7, 16}) {
     SatelliteView s;
     s.svid = id, s.cno_dbhz = 36 + id % 3, s.channel = id % 5, s.tracked = true,
@@ -262,7 +262,7 @@ NavEpoch ColdNoFix() {
     e.sats.push_back(s);
   }
   e.status = {FixType::kNoFix, false, false, 0, 1010};
-  e.gps = GpsFromUnixNs(e.fix.unix_ns);
+  e.gps = GpsFrom(e.fix.utc);
   e.leap_s = 16;
   e.clk_bias_ns = 0;
   e.t_acc_ns = 1e6, e.f_acc_psps = 1e5;

@@ -293,7 +293,7 @@ TEST_F(GnssPtyTest, GpsdReportsTheEmulatedUtcOfTheDefaultScenario) {
     if (line.rfind("start_utc: \"", 0) == 0) start_text = line.substr(12, line.rfind('"') - 12);
   }
   ASSERT_FALSE(start_text.empty()) << "default.yaml gives no start_utc";
-  const std::int64_t start_ns = hil::gnss::ParseIsoUtc(start_text);
+  const hil::UnixTime start = hil::gnss::ParseIsoUtc(start_text);
   const auto t0 = std::chrono::steady_clock::now();
   pids_.push_back(Spawn("timeout 30 " + hil_ + " emulate --out " + (dir_ / "run").string() + " > " +
                             (dir_ / "emulate.out").string() + " 2>&1",
@@ -318,7 +318,7 @@ TEST_F(GnssPtyTest, GpsdReportsTheEmulatedUtcOfTheDefaultScenario) {
     if (j.is_discarded() || j.value("class", "") != "TPV" || !j.contains("time")) continue;
     ++tpv;
     const double since_start_s =
-        static_cast<double>(hil::gnss::ParseIsoUtc(j["time"].get<std::string>()) - start_ns) * 1e-9;
+        hil::ToSeconds(hil::gnss::ParseIsoUtc(j["time"].get<std::string>()) - start);
     EXPECT_GE(since_start_s, 0.0) << line;
     EXPECT_LE(since_start_s, elapsed_s + 1.0) << "emulated " << elapsed_s << " s: " << line;
     EXPECT_NEAR(since_start_s, std::round(since_start_s), 1e-3) << "1 Hz epochs: " << line;

@@ -68,7 +68,7 @@ std::string Describe(const std::vector<SerialMessage>& msgs) {
 std::string Generate() {
   std::string o = "== neo-5m under a tree line and a barn, every message (overload), epoch 3 s\n";
   Neo5mConfig c;
-  c.start_unix_ns = ParseIsoUtc("2019-05-14T02:00:00Z");
+  c.start_utc = ParseIsoUtc("2019-05-14T02:00:00Z");
   c.baud = 115200;
   ReceiverModelConfig m = ProfileByName("neo-5m").model;
   m.p_BA_B_m = Eigen::Vector3d(0, 0, 2.8);
@@ -87,7 +87,7 @@ std::string Generate() {
   o += "== rtk rough: float 2 s, then a wrong fix (probability 1) held; GGA at 0.5 s steps\n";
   Neo5mConfig r;
   r.profile = "rtk";
-  r.start_unix_ns = c.start_unix_ns;
+  r.start_utc = c.start_utc;
   ReceiverModelConfig rm = ProfileByName("rtk").model;
   rm.p_BA_B_m = Eigen::Vector3d(1.2, 0, 2.8);
   rm.geoid_separation_m = -20.0;

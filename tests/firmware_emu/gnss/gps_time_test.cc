@@ -7,29 +7,33 @@ namespace {
 
 TEST(GpsTimeTest, KnownInstants) {
   // 2013-06-10T08:00:00Z: GPS week 1744, TOW 115216 s (Monday 08:00 + 16 leap seconds)
-  const std::int64_t unix_ns = ParseIsoUtc("2013-06-10T08:00:00Z");
-  EXPECT_EQ(unix_ns, 1370851200LL * 1000000000LL);
-  const GpsWeekTime g = GpsFromUnixNs(unix_ns);
+  const UnixTime utc = ParseIsoUtc("2013-06-10T08:00:00Z");
+  EXPECT_EQ(ToNs(utc), 1370851200LL * 1000000000LL);
+  const GpsWeekTime g = GpsFrom(utc);
   EXPECT_EQ(g.week, 1744);
   EXPECT_EQ(g.tow_ns, (86400LL + 8 * 3600 + 16) * 1000000000LL);
-  EXPECT_EQ(UnixNsFromGps(g), unix_ns);
+  EXPECT_EQ(UnixTimeFromGps(g), utc);
 }
 
 TEST(GpsTimeTest, LeapSecondsTable) {
-  EXPECT_EQ(LeapSecondsAtUnix(315964800), 0);    // GPS epoch
-  EXPECT_EQ(LeapSecondsAtUnix(1341100799), 15);  // 2012-06-30T23:59:59Z
-  EXPECT_EQ(LeapSecondsAtUnix(1341100800), 16);  // 2012-07-01
-  EXPECT_EQ(LeapSecondsAtUnix(1800000000), 18);  // 2027
+  const auto at = [](std::int64_t unix_s) {
+    return LeapSecondsAt(UnixTimeFromNs(unix_s * 1000000000LL));
+  };
+  EXPECT_EQ(at(315964800), 0);    // GPS epoch
+  EXPECT_EQ(at(1341100799), 15);  // 2012-06-30T23:59:59Z
+  EXPECT_EQ(at(1341100800), 16);  // 2012-07-01
+  EXPECT_EQ(at(1800000000), 18);  // 2027
+  EXPECT_EQ(LeapSecondsAt(UnixTimeFromNs(1341100800LL * 1000000000LL - 1)), 15);  // its last ns
 }
 
 TEST(GpsTimeTest, CalendarRoundTripAcrossMidnightAndLeapDay) {
   for (const char* s :
        {"2016-02-29T23:59:59.999Z", "2000-01-01T00:00:00Z", "2026-12-31T23:59:59Z"}) {
-    const std::int64_t ns = ParseIsoUtc(s);
-    const UtcTime u = UtcFromUnixNs(ns);
-    EXPECT_EQ(UnixNsFromUtc(u), ns) << s;
+    const UnixTime t = ParseIsoUtc(s);
+    const UtcTime u = UtcFrom(t);
+    EXPECT_EQ(UnixTimeFromUtc(u), t) << s;
   }
-  const UtcTime u = UtcFromUnixNs(ParseIsoUtc("2016-02-29T23:59:59.5Z") + 500000000);
+  const UtcTime u = UtcFrom(ParseIsoUtc("2016-02-29T23:59:59.5Z") + Duration{500000000});
   EXPECT_EQ(u.month, 3);
   EXPECT_EQ(u.day, 1);
   EXPECT_EQ(u.hour, 0);

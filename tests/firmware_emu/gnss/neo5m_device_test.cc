@@ -57,7 +57,7 @@ struct Harness {
 
 Neo5mConfig Config(StartKind start = StartKind::kHot) {
   Neo5mConfig c;
-  c.start_unix_ns = ParseIsoUtc("2013-06-10T08:00:00Z");
+  c.start_utc = ParseIsoUtc("2013-06-10T08:00:00Z");
   c.start = start;
   return c;
 }
@@ -235,7 +235,7 @@ TEST(Neo5mDeviceTest, CfgMsgEnablesUbxNavMessagesAfterTheAck) {
   const std::vector<std::uint8_t> p(sol.begin() + 6, sol.end() - 2);
   ASSERT_EQ(p.size(), 52u);
   ubx::Reader rd(p);
-  const GpsWeekTime g = GpsFromUnixNs(ParseIsoUtc("2013-06-10T08:00:03Z"));
+  const GpsWeekTime g = GpsFrom(ParseIsoUtc("2013-06-10T08:00:03Z"));
   EXPECT_EQ(rd.U4(0), g.itow_ms());
   EXPECT_EQ(rd.I2(8), g.week);
   EXPECT_EQ(rd.U1(10), 3);
@@ -316,7 +316,7 @@ TEST(Neo5mDeviceTest, PollsMonVerAndPubx) {
 
 TEST(Neo5mDeviceTest, SouthWestHemispheresAndMidnightRollover) {
   Neo5mConfig c = Config();
-  c.start_unix_ns = ParseIsoUtc("2016-12-31T23:59:58Z");  // the 2016 leap second follows
+  c.start_utc = ParseIsoUtc("2016-12-31T23:59:58Z");  // the 2016 leap second follows
   Harness h(c);
   const auto out = h.RunUntil(3, -33.8688, -70.6693);
   std::vector<std::string> rmc;

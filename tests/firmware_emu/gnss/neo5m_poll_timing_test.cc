@@ -33,7 +33,7 @@ struct Line {
   Line() : dev(Config(), 3), uart(9600, 1024) {}
   static Neo5mConfig Config() {
     Neo5mConfig c;
-    c.start_unix_ns = ParseIsoUtc("2013-06-10T08:00:00Z");
+    c.start_utc = ParseIsoUtc("2013-06-10T08:00:00Z");
     return c;
   }
   // `replies_ahead` false: every message in the order it is made (the queue before issue 40.7)

@@ -30,7 +30,7 @@ TruthSample Truth(Time t) {
 Neo5mConfig Config(const std::string& profile = "neo-5m") {
   Neo5mConfig c;
   c.profile = profile;
-  c.start_unix_ns = ParseIsoUtc("2019-05-14T02:00:00Z");
+  c.start_utc = ParseIsoUtc("2019-05-14T02:00:00Z");
   ReceiverModelConfig m = ProfileByName(profile).model;
   m.p_BA_B_m = Eigen::Vector3d(0, 0, 2);
   c.model = m;

@@ -78,7 +78,7 @@ TEST(NmeaConventionsTest, StreamMatchesRealUblox5Captures) {
             (std::vector<std::string>{"GPRMC", "GPVTG", "GPGGA", "GPGSA", "GPGSV", "GPGLL"}));
   // a stationary receiver at the nl551e site, warm start: no fix for 28 s, then a fix
   Neo5mConfig cfg;
-  cfg.start_unix_ns = ParseIsoUtc("2012-07-04T19:14:00Z");
+  cfg.start_utc = ParseIsoUtc("2012-07-04T19:14:00Z");
   cfg.start = StartKind::kWarm;
   ReceiverModelConfig model;
   model.geoid_separation_m = 46.1;

@@ -12,7 +12,7 @@ namespace {
 // reproduce them byte for byte from the decoded values.
 TEST(NmeaEncoderTest, ReproducesCapturedFixSentences) {
   GnssFix fix;
-  fix.unix_ns = ParseIsoUtc("2012-07-04T19:14:34Z");
+  fix.utc = ParseIsoUtc("2012-07-04T19:14:34Z");
   fix.fix_type = FixType::k3D;
   fix.quality = FixQuality::kGps;
   fix.lat_deg = 52.0 + 0.17079 / 60.0;
@@ -30,7 +30,7 @@ TEST(NmeaEncoderTest, ReproducesCapturedFixSentences) {
 
 TEST(NmeaEncoderTest, ReproducesCapturedNoFixSentences) {
   GnssFix fix;
-  fix.unix_ns = ParseIsoUtc("2012-07-04T19:14:18Z");
+  fix.utc = ParseIsoUtc("2012-07-04T19:14:18Z");
   EXPECT_EQ(EncodeRmc(fix), "$GPRMC,191418.00,V,,,,,,,040712,,,N*79\r\n");
   EXPECT_EQ(EncodeGga(fix), "$GPGGA,191418.00,,,,,0,00,99.99,,,,,,*62\r\n");
 }
@@ -44,7 +44,7 @@ TEST(NmeaEncoderTest, SouthAndWestHemispheres) {
 
 TEST(NmeaEncoderTest, CourseAppearsWhenMoving) {
   GnssFix fix;
-  fix.unix_ns = ParseIsoUtc("2013-06-10T08:00:01Z");
+  fix.utc = ParseIsoUtc("2013-06-10T08:00:01Z");
   fix.fix_type = FixType::k3D;
   fix.quality = FixQuality::kGps;
   fix.vel_e_mps = 0.444;

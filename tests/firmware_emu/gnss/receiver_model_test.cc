@@ -23,7 +23,7 @@ TEST(ReceiverModelTest, ErrorStatisticsMatchConfiguration) {
   ReceiverModel rx(cfg, 42);
   std::vector<double> east;
   for (int k = 0; k < 20000; ++k) {
-    rx.Calc(StationaryTruth(k), 0, k == 0 ? 0.0 : 1.0);
+    rx.Calc(StationaryTruth(k), UnixTime{}, k == 0 ? 0.0 : 1.0);
     east.push_back(rx.position_error_N_m().x());
   }
   double mean = 0, var = 0, lag1 = 0;
@@ -43,9 +43,9 @@ TEST(ReceiverModelTest, SameSeedSameFixes) {
   ReceiverModel a(ReceiverModelConfig{}, 7), b(ReceiverModelConfig{}, 7),
       c(ReceiverModelConfig{}, 8);
   for (int k = 0; k < 10; ++k) {
-    const GnssFix fa = a.Calc(StationaryTruth(k), 0, 1.0);
-    const GnssFix fb = b.Calc(StationaryTruth(k), 0, 1.0);
-    const GnssFix fc = c.Calc(StationaryTruth(k), 0, 1.0);
+    const GnssFix fa = a.Calc(StationaryTruth(k), UnixTime{}, 1.0);
+    const GnssFix fb = b.Calc(StationaryTruth(k), UnixTime{}, 1.0);
+    const GnssFix fc = c.Calc(StationaryTruth(k), UnixTime{}, 1.0);
     EXPECT_EQ(fa.lat_deg, fb.lat_deg);
     EXPECT_NE(fa.lat_deg, fc.lat_deg);
   }

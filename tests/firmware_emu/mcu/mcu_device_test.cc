@@ -20,11 +20,11 @@ namespace {
 using test::ParseFrame;
 using test::ReadFrame;
 
-const std::int64_t kStartUnixNs = gnss::ParseIsoUtc("2013-06-10T08:00:00.300Z");
+const UnixTime kStartUtc = gnss::ParseIsoUtc("2013-06-10T08:00:00.300Z");
 
 McuConfig BaseConfig() {
   McuConfig c;
-  c.start_unix_ns = kStartUnixNs;
+  c.start_utc = kStartUtc;
   return c;
 }
 
@@ -85,7 +85,7 @@ TEST(McuDeviceTest, SamplesRunOnTheCrystalAndLatchTheTimePulse) {
   for (std::size_t i = 0; i < pulses.size(); ++i) {
     const Time t_edge = pulses[i].t_ready - c.output_lag;
     EXPECT_EQ(ToNs(t_edge), 700000000 + static_cast<std::int64_t>(i) * 1000000000);
-    const gnss::GpsWeekTime g = gnss::GpsFromUnixNs(kStartUnixNs + ToNs(t_edge));
+    const gnss::GpsWeekTime g = gnss::GpsFrom(UtcAt(kStartUtc, t_edge));
     EXPECT_EQ(g.tow_ns % 1000000000, 0);
     EXPECT_EQ(pulses[i].frame.U16(0), g.week);
     EXPECT_EQ(pulses[i].frame.U32(2), g.tow_ns / 1000000);

@@ -36,7 +36,7 @@ std::string G(double v) { return Fmt("%.9g", v + 0.0); }  // + 0.0: no "-0"
 
 McuConfig VectorConfig() {
   McuConfig c;
-  c.start_unix_ns = gnss::ParseIsoUtc(kStartUtc);
+  c.start_utc = gnss::ParseIsoUtc(kStartUtc);
   c.crystal_ppm = 37.5;
   c.jitter_us = 20;
   c.mounting.p_BI_B_m = Eigen::Vector3d(0.3, 0.0, 1.2);  // on a tube above the rear axle
@@ -200,7 +200,7 @@ BinaryVector MakeCan(McuConfig c, double seconds) {
       "#  61481 SSI2: pitch_deg,roll_deg,latency_ms\n"
       "#  65360 HIL_TIME_PULSE: tick,gps_tow_s,gps_week_mod4096\n";
   for (const CanFrame& f : out.can) {
-    const std::int64_t unix_ns = c.start_unix_ns + ToNs(f.t);
+    const std::int64_t unix_ns = ToNs(UtcAt(c.start_utc, f.t));
     v.bin += CandumpLine(unix_ns, f);
     const std::uint32_t pgn = (f.id >> 8) & 0x3FFFF;
     char head[96];
@@ -215,7 +215,7 @@ BinaryVector MakeCan(McuConfig c, double seconds) {
       const std::uint32_t hi = f.data[4] | (f.data[5] << 8) | (f.data[6] << 16) |
                                (static_cast<std::uint32_t>(f.data[7]) << 24);
       const gnss::GpsWeekTime g =
-          gnss::GpsFromUnixNs(unix_ns - static_cast<std::int64_t>(c.can.latency_s * 1e9));
+          gnss::GpsFrom(UnixTimeFromNs(unix_ns) - DurationFromSeconds(c.can.latency_s));
       row += "," + std::to_string(tick) + "," + std::to_string(g.tow_ns / 1000000000) + "," +
              std::to_string(g.week % 4096);
       EXPECT_EQ(hi & 0xFFFFF, g.tow_ns / 1000000000);

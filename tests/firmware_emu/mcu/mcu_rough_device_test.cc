@@ -35,7 +35,7 @@ std::vector<Imu> ImuFrames(const DeviceOutput& out) {
 
 McuConfig Config() {
   McuConfig c;
-  c.start_unix_ns = gnss::ParseIsoUtc("2019-05-14T02:00:00Z");
+  c.start_utc = gnss::ParseIsoUtc("2019-05-14T02:00:00Z");
   c.imu_rate_hz = 100;
   return c;
 }

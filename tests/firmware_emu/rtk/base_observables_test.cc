@@ -18,7 +18,7 @@ namespace {
 constexpr double kLat = 35.4796096, kLon = 50.5979765, kHeight = 1312.0;
 
 double GpsSeconds() {
-  const gnss::GpsWeekTime g = gnss::GpsFromUnixNs(gnss::ParseIsoUtc("2026-06-10T08:00:00Z"));
+  const gnss::GpsWeekTime g = gnss::GpsFrom(gnss::ParseIsoUtc("2026-06-10T08:00:00Z"));
   return g.week * 604800.0 + g.tow_s();
 }
 

@@ -23,7 +23,7 @@ TruthSample At(double s) {
 TEST(RtkBaseDevice, StationMessageEveryTenSecondsAndAnMsmEachEpoch) {
   RtkBaseDevice base(KarajBase(rtcm3::MsmKind::kMsm7), 1);
   EXPECT_EQ(base.next_event_time(), TimeFromNs(0));  // 08:00:00 UTC is on the grid
-  const gnss::GpsWeekTime g0 = gnss::GpsFromUnixNs(gnss::ParseIsoUtc("2026-06-10T08:00:00Z"));
+  const gnss::GpsWeekTime g0 = gnss::GpsFrom(gnss::ParseIsoUtc("2026-06-10T08:00:00Z"));
   for (int k = 0; k < 21; ++k) {
     const auto msgs = base.EncodeEpoch(TimeFromNs(k * 1000000000LL));
     ASSERT_EQ(msgs.size(), k % 10 == 0 ? 2U : 1U) << k;

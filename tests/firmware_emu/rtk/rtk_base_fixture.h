@@ -16,7 +16,7 @@ inline RtkBaseConfig KarajBase(rtcm3::MsmKind msm) {
   c.height_m = 1312.0;
   c.antenna_height_m = 1.5;
   c.msm = msm;
-  c.start_unix_ns = gnss::ParseIsoUtc("2026-06-10T08:00:00Z");
+  c.start_utc = gnss::ParseIsoUtc("2026-06-10T08:00:00Z");
   return c;
 }
 

@@ -20,7 +20,7 @@ inline constexpr double kRoverHeight_m = 1312.0;
 /// The rover with its radio base 2 km away (1200 m east, 1600 m north) and the radio's outages.
 inline ZedF9pConfig RoverWithRadio(std::vector<RadioOutage> outages = {}) {
   ZedF9pConfig c;
-  c.start_unix_ns = gnss::ParseIsoUtc("2026-06-10T08:00:00Z");
+  c.start_utc = gnss::ParseIsoUtc("2026-06-10T08:00:00Z");
   RtkBaseConfig b = KarajBase(rtcm3::MsmKind::kMsm7);
   // the radii of curvature of the ellipsoid at the site (meridian M, prime vertical N)
   const double rad = 3.141592653589793 / 180.0, s = std::sin(kRoverLat_deg * rad);

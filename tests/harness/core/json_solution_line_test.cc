@@ -55,7 +55,7 @@ void ExpectSameRecord(const std::optional<EstimateRecord>& dom,
 // Reads `line` both ways; returns whether the scanner answered. Where it did, the record and the
 // health must be what the DOM gives.
 bool CompareWithDom(JsonSolutionScanner& scanner, const std::string& line) {
-  const auto reader = MakeEstimateReader(EstimatorOutput::kJsonStdout, kStartNs);
+  const auto reader = MakeEstimateReader(EstimatorOutput::kJsonStdout, UnixTimeFromNs(kStartNs));
   const auto scan = scanner.Scan(line);
   if (!scan) return false;
   const nlohmann::json dom = nlohmann::json::parse(line, nullptr, false);

@@ -90,7 +90,7 @@ namespace {
 // The GGA an emulated receiver of scenario `s` prints at rest at (lat, lon, ellipsoidal height).
 std::vector<std::string> GgaAt(const Scenario& s, double lat, double lon, double height_m) {
   gnss::Neo5mConfig cfg;
-  cfg.start_unix_ns = s.start_unix_ns;
+  cfg.start_utc = s.start_utc;
   cfg.model = s.gnss.model;
   gnss::Neo5mDevice dev(cfg, 3);
   while (dev.next_event_time() <= TimeFromSeconds(5)) {

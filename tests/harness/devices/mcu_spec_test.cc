@@ -40,7 +40,7 @@ TEST(ScenarioMcuTest, DefaultsFollowSeed000) {
   EXPECT_EQ(s.mcu.config.profile.name, "razor-v13");
   EXPECT_EQ(s.mcu.config.baud, 57600);
   EXPECT_DOUBLE_EQ(s.mcu.config.imu_rate_hz, 20.0);  // 10 × the 2 Hz GNSS rate
-  EXPECT_EQ(s.mcu.config.start_unix_ns, s.start_unix_ns);
+  EXPECT_EQ(s.mcu.config.start_utc, s.start_utc);
   EXPECT_EQ(s.mcu.config.format, mcu::SerialFormat::kBinary);
   EXPECT_FALSE(s.mcu.config.can.enabled);
 }

@@ -37,7 +37,7 @@ TEST(ScenarioRtkBaseTest, DefaultsPutTheBaseAtTheOrigin) {
   EXPECT_EQ(c.msm, rtcm3::MsmKind::kMsm7);
   EXPECT_EQ(c.station_message, 1006);
   EXPECT_EQ(c.baud, 38400);
-  EXPECT_EQ(c.start_unix_ns, s.start_unix_ns);
+  EXPECT_EQ(c.start_utc, s.start_utc);
   EXPECT_EQ(c.radio.loss_probability, 0.0);
 }
 

@@ -36,7 +36,7 @@ TEST(ScenarioZedF9pTest, Defaults) {
   EXPECT_EQ(s.zed_f9p.corrections, F9pCorrections::kRadio);
   EXPECT_EQ(s.zed_f9p.config.rtk.time_to_fix_s, 10.0);
   EXPECT_EQ(s.zed_f9p.config.rtk.fixed_max_age_s, 5.0);
-  EXPECT_EQ(s.zed_f9p.config.start_unix_ns, s.start_unix_ns);
+  EXPECT_EQ(s.zed_f9p.config.start_utc, s.start_utc);
   EXPECT_TRUE(s.zed_f9p.config.flash.empty());
 }
 

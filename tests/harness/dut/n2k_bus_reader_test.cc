@@ -19,10 +19,10 @@ std::optional<EstimateRecord> Feed(N2kBusReader& r, const out::CanFrame& f) {
 
 // navd's frames of one solution, in navd's order (rapid group, then the 129029 fast packet)
 TEST(N2kBusReaderTest, RecordFrom129029WithVelocityAndHeadingOfTheSameSid) {
-  const std::int64_t start_unix_ns = 1370851200LL * 1000000000LL;  // 2013-06-10T08:00:00Z
+  const UnixTime start_utc = UnixTimeFromNs(1370851200LL * 1000000000LL);  // 2013-06-10T08:00:00Z
   const std::uint16_t days = static_cast<std::uint16_t>(1370851200LL / 86400);
   const double sod = static_cast<double>(1370851200LL % 86400) + 12.5;
-  N2kBusReader r(start_unix_ns);
+  N2kBusReader r(start_utc);
   const std::uint8_t sid = 9;
   EXPECT_FALSE(Feed(r, out::EncodePositionRapid(35.48, 50.6, 0x80)));
   EXPECT_FALSE(Feed(r, out::EncodeCogSogRapid(sid, M_PI / 6, 1.0, 0x80)));

@@ -66,7 +66,7 @@ TEST(CaptureFormatTest, EveryKindOfRecordRoundTripsThroughAFile) {
   h.link = "ttyIMU";
   h.kind = "serial";
   h.baud = 115200;
-  h.start_unix_ns = 1370851200000000000LL;
+  h.start_utc = UnixTimeFromNs(1370851200000000000LL);
   {
     CaptureWriter w(path, h);
     for (const auto& r : recs) w.Write(r);
@@ -76,7 +76,7 @@ TEST(CaptureFormatTest, EveryKindOfRecordRoundTripsThroughAFile) {
   EXPECT_EQ(c.header.link, "ttyIMU");
   EXPECT_EQ(c.header.kind, "serial");
   EXPECT_EQ(c.header.baud, 115200);
-  EXPECT_EQ(c.header.start_unix_ns, 1370851200000000000LL);
+  EXPECT_EQ(c.header.start_utc, UnixTimeFromNs(1370851200000000000LL));
   EXPECT_EQ(c.records, recs);
   EXPECT_EQ(c.unreadable_lines, 0u);
   EXPECT_EQ(c.records[0].t_byte(2), TimeFromNs(1 + 2 * 86806));

@@ -150,7 +150,7 @@ TEST(DefaultCriteriaTest, NeesSplitByDimension) {
 
 // A malformed solution line: the message says why (the first field wrong)
 TEST(DefaultCriteriaTest, WhyAJsonLineIsNoSolution) {
-  auto r = MakeEstimateReader(EstimatorOutput::kJsonStdout, 0);
+  auto r = MakeEstimateReader(EstimatorOutput::kJsonStdout, UnixTime{});
   EXPECT_EQ(r->WhyNotASolution("navd: starting"), "not JSON");
   EXPECT_EQ(r->WhyNotASolution(R"({"lat_deg":1})"), "no \"lon_deg\"");
   EXPECT_EQ(r->WhyNotASolution(R"({"lat_deg":1,"lon_deg":"2"})"), "\"lon_deg\" is not a number");

@@ -16,7 +16,7 @@
 namespace hil::harness {
 namespace {
 
-const std::int64_t kStart = gnss::ParseIsoUtc("2013-06-10T08:00:00Z");
+const UnixTime kStart = gnss::ParseIsoUtc("2013-06-10T08:00:00Z");
 
 TEST(EstimateReaderTest, NavdJsonLines) {
   auto r = MakeEstimateReader(EstimatorOutput::kJsonStdout, kStart);
@@ -206,7 +206,7 @@ namespace {
 
 TEST(EstimateReaderTest, Nmea2000GnssPositionFastPacketsFromCandumpLines) {
   // PGN 129029 payload: SID, date, time, lat, lon, altitude (+ 12 bytes of the rest, zero)
-  const std::int64_t t_ns = kStart + 7'500'000'000LL;
+  const std::int64_t t_ns = ToNs(kStart) + 7'500'000'000LL;
   const auto days = static_cast<std::uint64_t>(t_ns / 86'400'000'000'000LL);
   const auto tod = static_cast<std::uint64_t>((t_ns % 86'400'000'000'000LL) / 100'000LL);
   std::string payload(1, '\x05');

@@ -38,16 +38,6 @@ constexpr Time TimeFromSeconds(double s) {
 constexpr Duration DurationFromSeconds(double s) {
   return Duration{static_cast<std::int64_t>(s * 1e9 + (s >= 0 ? 0.5 : -0.5))};
 }
-/// The first epoch after `after` on the grid of `period` counted from the Unix epoch, as emulated
-/// time of a run that starts at Unix time `start_unix_ns`: receivers put their epochs on the UTC
-/// (and GPS: GPS − UTC is whole seconds) grid of their measurement period, whole seconds at 1 Hz.
-constexpr Time NextGridEpoch(Time after, Duration period, std::int64_t start_unix_ns) {
-  const std::int64_t period_ns = period.count();
-  const std::int64_t abs_after = start_unix_ns + ToNs(after);
-  std::int64_t k = abs_after / period_ns + 1;
-  if (abs_after < 0 && abs_after % period_ns != 0) k -= 1;
-  return TimeFromNs(k * period_ns - start_unix_ns);
-}
 /// Period of a rate in hertz, rounded to the nanosecond.
 constexpr Duration PeriodFromHz(double hz) { return DurationFromSeconds(1.0 / hz); }
 

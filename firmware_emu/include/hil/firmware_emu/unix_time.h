@@ -37,5 +37,18 @@ using UnixTime = UnixClock::time_point;
 constexpr UnixTime UnixTimeFromNs(std::int64_t ns) { return UnixTime{Duration{ns}}; }
 /// Nanoseconds since the Unix epoch, for files and the kernel.
 constexpr std::int64_t ToNs(UnixTime t) { return t.time_since_epoch().count(); }
+/// The UTC instant of emulated `t` in a run that starts (t = 0) at UTC `start`.
+constexpr UnixTime UtcAt(UnixTime start, Time t) { return start + (t - Time{}); }
+
+/// The first epoch after `after` on the grid of `period` counted from the Unix epoch, as emulated
+/// time of a run that starts at UTC `start`: receivers put their epochs on the UTC (and GPS:
+/// GPS − UTC is whole seconds) grid of their measurement period, whole seconds at 1 Hz.
+constexpr Time NextGridEpoch(Time after, Duration period, UnixTime start) {
+  const std::int64_t period_ns = period.count();
+  const std::int64_t abs_after = ToNs(UtcAt(start, after));
+  std::int64_t k = abs_after / period_ns + 1;
+  if (abs_after < 0 && abs_after % period_ns != 0) k -= 1;
+  return TimeFromNs(k * period_ns - ToNs(start));
+}
 
 }  // namespace hil

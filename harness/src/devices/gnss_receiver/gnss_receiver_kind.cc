@@ -47,7 +47,7 @@ void BuildGnssReceivers(const Scenario& s, std::uint64_t seed, const std::string
     cfg.baud = s.gnss.baud;
     cfg.rate_hz = s.gnss.rate_hz;
     cfg.output_lag = DurationFromSeconds(s.gnss.output_lag_s);
-    cfg.start_unix_ns = s.start_unix_ns;
+    cfg.start_utc = s.start_utc;
     cfg.model = s.gnss.model;
     cfg.model->p_BA_B_m = rx.p_BA_B_m;
     cfg.start = s.gnss.start;

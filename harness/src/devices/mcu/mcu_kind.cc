@@ -13,7 +13,7 @@ namespace {
 void BuildMcu(const Scenario& s, std::uint64_t seed, const std::string& dir, DeviceBuild& set) {
   if (!s.mcu.enabled) return;
   mcu::McuConfig cfg = s.mcu.config;
-  cfg.start_unix_ns = s.start_unix_ns;
+  cfg.start_utc = s.start_utc;
   // the scenario's global fault timeline: an mcu_reset keeps the MCU silent until its end
   for (const Fault& f : s.faults.OfKind(FaultKind::kMcuReset)) {
     mcu::McuFault r;

@@ -145,7 +145,7 @@ void ReadMcu(const YamlReader& y, McuDeviceSpec& m) {
 
 void ReadMcuSpec(const YamlReader& root, Scenario& s) {
   if (auto r = root.OptionalChild("mcu")) ReadMcu(*r, s.mcu);
-  s.mcu.config.start_unix_ns = s.start_unix_ns;
+  s.mcu.config.start_utc = s.start_utc;
   // seed 000: the IMU runs 10 times as fast as the GPS (the gnss row is read before this one)
   if (s.mcu.imu_rate_is_default) s.mcu.config.imu_rate_hz = 10.0 * s.gnss.rate_hz;
 }

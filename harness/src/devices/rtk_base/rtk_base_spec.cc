@@ -160,7 +160,7 @@ void ReadRtkBaseSpec(const YamlReader& root, Scenario& s) {
   b.link = r.String("link", b.link);
   if (b.link.empty() || b.link.find('/') != std::string::npos)
     r.Fail("link", "must be a plain file name such as ttyRTCM");
-  c.start_unix_ns = s.start_unix_ns;
+  c.start_utc = s.start_utc;
   c.station_id = static_cast<int>(r.Integer("station_id", c.station_id));
   ReadPosition(r, s.truth.origin, c);
   c.antenna_height_m = r.Number("antenna_height_m", c.antenna_height_m);

@@ -26,7 +26,7 @@ void WriteUwbTagNavd(NavdConfSlot slot, const Scenario& s, const std::string& gn
   // the module's system_time counts from t = 0 of the scenario (its power-on)
   out << "\n"
       << origin << "origin_height_m = " << s.truth.origin.height_m
-      << "\ntime_zero_unix_ns = " << s.start_unix_ns << "\n";
+      << "\ntime_zero_unix_ns = " << ToNs(s.start_utc) << "\n";
 }
 
 }  // namespace hil::harness

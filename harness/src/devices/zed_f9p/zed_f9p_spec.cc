@@ -128,7 +128,7 @@ void ReadZedF9pSpec(const YamlReader& root, Scenario& s) {
   if (f.corrections == F9pCorrections::kRadio && !s.rtk_base.enabled)
     r.Fail("corrections", "radio needs an rtk_base section (its radio feeds UART2)");
   rtk::ZedF9pConfig& c = f.config;
-  c.start_unix_ns = s.start_unix_ns;
+  c.start_utc = s.start_utc;
   c.model.geoid = s.gnss.model.geoid;  // the receivers' geoid grid
   const auto lever = r.Doubles("antenna_lever_arm_m", 3, {0, 0, 0});
   c.model.p_BA_B_m = Eigen::Vector3d(lever[0], lever[1], lever[2]);

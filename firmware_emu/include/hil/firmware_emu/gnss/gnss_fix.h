@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "hil/firmware_emu/sim_time.h"
+#include "hil/firmware_emu/unix_time.h"
 
 namespace hil::gnss {
 
@@ -31,8 +32,8 @@ enum class FixQuality : std::uint8_t {
 /// One epoch's solution. Time of validity is the measurement epoch (`t_validity`); the bytes
 /// carrying it leave the receiver later (output lag).
 struct GnssFix {
-  Time t_validity{};         ///< scenario time of the measurement epoch
-  std::int64_t unix_ns = 0;  ///< the same instant as UTC, Unix nanoseconds
+  Time t_validity{};  ///< scenario time of the measurement epoch
+  UnixTime utc{};     ///< the same instant as UTC
   FixType fix_type = FixType::kNoFix;
   FixQuality quality = FixQuality::kInvalid;
   double lat_deg = 0, lon_deg = 0;  ///< WGS-84, of the antenna

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <string>
 
+#include "hil/firmware_emu/unix_time.h"
+
 namespace hil::gnss {
 
 /// Seconds between the Unix epoch (1970-01-01) and the GPS epoch (1980-01-06), both UTC.
@@ -30,18 +32,18 @@ struct GpsWeekTime {
 
 /// Days since 1970-01-01 of a proleptic Gregorian date.
 std::int64_t DaysFromCivil(int year, int month, int day);
-/// Unix nanoseconds (UTC, no leap seconds counted) of a calendar instant.
-std::int64_t UnixNsFromUtc(const UtcTime& utc);
-/// Calendar instant of Unix nanoseconds.
-UtcTime UtcFromUnixNs(std::int64_t unix_ns);
+/// The UTC instant (no leap seconds counted, as Unix time) of a calendar instant.
+UnixTime UnixTimeFromUtc(const UtcTime& utc);
+/// Calendar instant of a UTC instant.
+UtcTime UtcFrom(UnixTime t);
 /// GPS − UTC in whole seconds at a UTC instant (IERS table from 1980 to the 2017 leap second).
-int LeapSecondsAtUnix(std::int64_t unix_s);
-/// GPS time of a UTC instant given as Unix nanoseconds.
-GpsWeekTime GpsFromUnixNs(std::int64_t unix_ns);
-/// Unix nanoseconds (UTC) of a GPS time.
-std::int64_t UnixNsFromGps(const GpsWeekTime& gps);
-/// Parses "YYYY-MM-DDThh:mm:ss[.fff]Z" into Unix nanoseconds.
+int LeapSecondsAt(UnixTime t);
+/// GPS time of a UTC instant.
+GpsWeekTime GpsFrom(UnixTime t);
+/// The UTC instant of a GPS time.
+UnixTime UnixTimeFromGps(const GpsWeekTime& gps);
+/// Parses "YYYY-MM-DDThh:mm:ss[.fff]Z".
 /// @throws std::invalid_argument naming the text when it does not parse or is out of range.
-std::int64_t ParseIsoUtc(const std::string& text);
+UnixTime ParseIsoUtc(const std::string& text);
 
 }  // namespace hil::gnss

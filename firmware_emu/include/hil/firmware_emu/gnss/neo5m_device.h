@@ -75,7 +75,7 @@ struct Neo5mConfig {
   double rate_hz = 0;                                       ///< 0: the profile's default
   Duration output_lag = std::chrono::milliseconds(100);     ///< epoch → first byte ready
   Duration response_delay = std::chrono::milliseconds(10);  ///< host command → reply ready
-  std::int64_t start_unix_ns = 0;                           ///< UTC of scenario time 0
+  UnixTime start_utc{};                                     ///< UTC of scenario time 0
   std::optional<ReceiverModelConfig> model;  ///< errors; the profile's grade when empty
   StartKind start = StartKind::kHot;
   std::vector<GnssFault> faults;

@@ -33,8 +33,8 @@ std::string EncodeGll(const GnssFix& fix, bool time_known = true, const NmeaForm
 std::string EncodeZda(const GnssFix& fix, bool time_known = true);
 
 /// `hhmmss.ss` of a UTC instant, rounded to centiseconds.
-std::string FormatTime(std::int64_t unix_ns);
+std::string FormatTime(UnixTime utc);
 /// `ddmmyy` of a UTC instant.
-std::string FormatDate(std::int64_t unix_ns);
+std::string FormatDate(UnixTime utc);
 
 }  // namespace hil::gnss::nmea

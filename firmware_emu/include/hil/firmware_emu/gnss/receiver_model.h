@@ -71,10 +71,9 @@ class ReceiverModel {
                 std::uint64_t common_seed = 0);
 
   /// Produces the fix of the epoch at `truth.t`, advancing the error processes by `dt_s`
-  /// (the time since the previous call). `unix_ns` is the epoch's UTC instant. The fix type,
+  /// (the time since the previous call). `utc` is the epoch's UTC instant. The fix type,
   /// DOPs and satellite count are left for the caller (they come from the constellation).
-  GnssFix Calc(const TruthSample& truth, std::int64_t unix_ns, double dt_s,
-               const ErrorInputs& in = {});
+  GnssFix Calc(const TruthSample& truth, UnixTime utc, double dt_s, const ErrorInputs& in = {});
 
   /// Current position error of the antenna in ENU (m), for diagnostics and tests.
   const Eigen::Vector3d& position_error_N_m() const { return err_N_m_; }

@@ -13,6 +13,7 @@
 #include "hil/firmware_emu/mcu/rough_imu_spec.h"
 #include "hil/firmware_emu/mcu/sensor_spec.h"
 #include "hil/firmware_emu/sim_time.h"
+#include "hil/firmware_emu/unix_time.h"
 
 namespace hil::mcu {
 
@@ -66,8 +67,8 @@ struct McuConfig {
   Duration first_sample_delay = std::chrono::milliseconds(10);  ///< boot to first IMU sample
   Duration output_lag = std::chrono::microseconds(500);  ///< sample to frame ready for the UART
   Duration reboot = std::chrono::milliseconds(200);      ///< reset to boot
-  std::int64_t start_unix_ns = 0;  ///< UTC of scenario time 0 (for the GPS time pulse)
-  bool time_pulse = true;          ///< the receiver's PPS is wired to the MCU
+  UnixTime start_utc{};    ///< UTC of scenario time 0 (for the GPS time pulse)
+  bool time_pulse = true;  ///< the receiver's PPS is wired to the MCU
   BoardMounting mounting;
   MagneticSpec magnetic;
   std::vector<VibrationTone> vibration;

@@ -24,6 +24,7 @@
 #include "hil/firmware_emu/rtk/radio_link.h"
 #include "hil/firmware_emu/rtk/rtcm3_msm.h"
 #include "hil/firmware_emu/rtk/rtcm3_station.h"
+#include "hil/firmware_emu/unix_time.h"
 
 namespace hil::rtk {
 
@@ -41,7 +42,7 @@ struct RtkBaseConfig {
   Duration output_lag = std::chrono::milliseconds(30);
   /// Radio modem → rover UART line rate: 38400 bit/s, a common RTK radio port setting (ours).
   int baud = 38400;
-  std::int64_t start_unix_ns = 0;  ///< UTC of scenario time 0
+  UnixTime start_utc{};  ///< UTC of scenario time 0
   BaseObservablesConfig observables;
   RadioLinkConfig radio;
 };

@@ -57,7 +57,7 @@ struct ZedF9pConfig {
   std::string name = "f9p0";
   Duration output_lag = std::chrono::milliseconds(50);      ///< epoch → first byte ready (ours)
   Duration response_delay = std::chrono::milliseconds(10);  ///< command → reply ready (ours)
-  std::int64_t start_unix_ns = 0;                           ///< UTC of scenario time 0
+  UnixTime start_utc{};                                     ///< UTC of scenario time 0
   gnss::ReceiverModelConfig model = F9pStandaloneModel();
   gnss::StartKind start = gnss::StartKind::kHot;
   RoverRtkConfig rtk;

@@ -16,6 +16,7 @@
 
 #include "hil/firmware_emu/device.h"
 #include "hil/firmware_emu/link/pty_port.h"
+#include "hil/firmware_emu/unix_time.h"
 #include "hil/harness/core/run_diagnostics.h"
 #include "hil/harness/dut/estimate_reader.h"
 #include "hil/harness/dut/estimator_process.h"
@@ -33,7 +34,7 @@ class EstimateCollector {
 
   /// Output n2k_socketcan: `poll_bus` polls the CAN bus and returns the frames others put on it
   /// since its last call; Poll() decodes them (N2kBusReader) into records.
-  void AttachBus(std::function<std::vector<CanFrame>()> poll_bus, std::int64_t start_unix_ns);
+  void AttachBus(std::function<std::vector<CanFrame>()> poll_bus, UnixTime start_utc);
   /// Takes what arrived since the last call.
   void Poll();
   /// Output n2k_socketcan: frames seen per PGN (empty otherwise).

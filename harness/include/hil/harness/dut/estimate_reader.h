@@ -19,6 +19,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "hil/firmware_emu/unix_time.h"
 #include "hil/harness/core/estimate_record.h"
 #include "hil/harness/core/json_solution_line.h"
 #include "hil/harness/scenario/estimator_kinds.h"
@@ -61,7 +62,6 @@ class EstimateReader {
 const char* RawEstimateFileName(EstimatorOutput output);
 
 /// The reader for an output format (parsed from the scenario's estimator.output).
-std::unique_ptr<EstimateReader> MakeEstimateReader(EstimatorOutput output,
-                                                   std::int64_t start_unix_ns);
+std::unique_ptr<EstimateReader> MakeEstimateReader(EstimatorOutput output, UnixTime start_utc);
 
 }  // namespace hil::harness

@@ -13,6 +13,7 @@
 #include <optional>
 #include <string_view>
 
+#include "hil/firmware_emu/unix_time.h"
 #include "hil/harness/core/estimate_record.h"
 #include "hil/harness/dut/n2k_fast_packet.h"
 
@@ -20,8 +21,8 @@ namespace hil::harness {
 
 class N2kBusReader {
  public:
-  /// `start_unix_ns`: UTC of emulated t = 0 (record times are relative to it).
-  explicit N2kBusReader(std::int64_t start_unix_ns) : start_(start_unix_ns) {}
+  /// `start_utc`: UTC of emulated t = 0 (record times are relative to it).
+  explicit N2kBusReader(UnixTime start_utc) : start_(start_utc) {}
   /// One frame with a 29-bit identifier; a record when it completes a 129029.
   std::optional<EstimateRecord> Frame(std::uint32_t id29, std::string_view data, WallTime wall);
   /// Frames seen per PGN.
@@ -33,7 +34,7 @@ class N2kBusReader {
     int sid = -1;
     double a = 0, b = 0;
   };
-  std::int64_t start_;
+  UnixTime start_;
   N2kFastPacketAssembler fast_;
   std::map<std::uint32_t, std::uint64_t> per_pgn_;
   Tagged cog_sog_, heading_;

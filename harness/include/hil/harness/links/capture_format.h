@@ -32,6 +32,7 @@
 
 #include "hil/firmware_emu/link/can_wire_frame.h"
 #include "hil/firmware_emu/sim_time.h"
+#include "hil/firmware_emu/unix_time.h"
 #include "hil/firmware_emu/wall_time.h"
 #include "hil/harness/core/run_diagnostics.h"
 
@@ -61,11 +62,11 @@ struct CaptureRecord {
 /// What the header says about the link.
 struct CaptureHeader {
   int version = 2;
-  std::string link;                ///< link name, e.g. ttyGPS or can0
-  std::string kind;                ///< "serial" or "can"
-  int baud = 0;                    ///< serial: line rate
-  std::string iface;               ///< can: the interface the frames went to
-  std::int64_t start_unix_ns = 0;  ///< UTC of emulated t = 0, when known (0 otherwise)
+  std::string link;                   ///< link name, e.g. ttyGPS or can0
+  std::string kind;                   ///< "serial" or "can"
+  int baud = 0;                       ///< serial: line rate
+  std::string iface;                  ///< can: the interface the frames went to
+  std::optional<UnixTime> start_utc;  ///< UTC of emulated t = 0, when known
 };
 
 struct Capture {

@@ -101,7 +101,7 @@ struct McuDeviceSpec {
   std::string link = "ttyIMU";  ///< symlink name in the run folder
   std::size_t tx_buffer_bytes = 4096;
   bool imu_rate_is_default = true;  ///< no imu_rate_hz given: 10 × the GNSS rate
-  mcu::McuConfig config;            ///< start_unix_ns is filled from the scenario's start_utc
+  mcu::McuConfig config;            ///< its start_utc is the scenario's
 };
 
 /// The UWB tag (section `uwb:`, devices/uwb_tag/; absent → no UWB).
@@ -126,7 +126,7 @@ struct RtkBaseDeviceSpec {
   bool enabled = false;
   std::string link = "ttyRTCM";  ///< symlink name in the run folder
   std::size_t tx_buffer_bytes = 4096;
-  rtk::RtkBaseConfig config;  ///< start_unix_ns is filled from the scenario's start_utc
+  rtk::RtkBaseConfig config;  ///< its start_utc is the scenario's
 };
 
 /// Where a ZED-F9P rover's corrections come from (section `zed_f9p:` key `corrections`).
@@ -140,7 +140,7 @@ struct ZedF9pDeviceSpec {
   std::string link = "ttyF9P";  ///< symlink name in the run folder
   std::size_t tx_buffer_bytes = 4096;
   F9pCorrections corrections = F9pCorrections::kRadio;
-  rtk::ZedF9pConfig config;  ///< start_unix_ns from start_utc; the radio base from `rtk_base`
+  rtk::ZedF9pConfig config;  ///< start_utc the scenario's; the radio base from `rtk_base`
 };
 
 /// One laser rangefinder of the `rangefinders:` section: its name, pty link and mount.
@@ -245,7 +245,7 @@ struct Scenario {
   std::string file;  ///< where it came from ("<embedded default>" for the default)
   std::string name;
   std::string description;
-  std::int64_t start_unix_ns = 0;  ///< UTC of t = 0 (start_utc; default kDefaultStartUtc)
+  UnixTime start_utc{};  ///< UTC of t = 0 (start_utc; default kDefaultStartUtc)
   double duration_s = 60;
   std::uint64_t seed = 1;
   truth::TruthConfig truth;
