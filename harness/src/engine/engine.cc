@@ -59,8 +59,9 @@ void Engine::Serve(Time t_event, const TruthSample& x, EngineMonitor& monitor, D
     truth_->Served(d, t_event);
     devices[d]->OnEvent(x, out);
     if (const std::optional<VehicleCommand> c = devices[d]->TakeVehicleCommand()) {
+      const long restarts = truth_->late_command_restarts();
       truth_->Command(*c);
-      vehicle_commands_.push_back(*c);
+      command_tap_(*c, truth_->late_command_restarts() > restarts);
     }
     io_.Dispatch(d, out);
   }
