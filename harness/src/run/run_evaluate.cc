@@ -237,13 +237,17 @@ void Attempt(RunReport& report, const std::function<void()>& write) {
   }
 }
 
-// The truth vehicle's track at truth.csv's times (10 Hz) from `t_from` to the run's end.
-std::vector<TrackSample> TruthTrack(const RunContext& ctx, Time t_from) {
-  std::vector<TrackSample> track;
-  for (const TrackSample& s : ctx.scoring->track()) {
-    if (s.t >= t_from && s.t <= ctx.t_end) track.push_back(s);
+// The truth vehicle's track at truth.csv's times (10 Hz) from `t_from` to the run's end: the
+// scoring's own when it is all of it (no copy), else the part of it copied into `part`.
+const std::vector<TrackSample>& TruthTrack(const RunContext& ctx, Time t_from,
+                                           std::vector<TrackSample>& part) {
+  const std::vector<TrackSample>& all = ctx.scoring->track();
+  if (all.empty() || (all.front().t >= t_from && all.back().t <= ctx.t_end)) return all;
+  part.clear();
+  for (const TrackSample& s : all) {
+    if (s.t >= t_from && s.t <= ctx.t_end) part.push_back(s);
   }
-  return track;
+  return part;
 }
 
 // Distance along the track from time `from` to its end.
@@ -303,10 +307,11 @@ ClosedLoopFaultsReport ActuatorFaults(const actuator::WheelMotors& motors, Fault
 void EvaluateClosedLoop(RunContext& ctx) {
   RunReport& report = ctx.report;
   const PathGeometry geometry = ReadPathGeometry(ctx.scenario.closed_loop.path_file);
-  const std::vector<TrackSample> evaluated = TruthTrack(ctx, ctx.t_from);
+  std::vector<TrackSample> evaluated_part, track_part;
+  const std::vector<TrackSample>& evaluated = TruthTrack(ctx, ctx.t_from, evaluated_part);
   report.tracking = ScoreTracking(geometry, evaluated);
   report.pass_to_pass = ScorePassToPass(geometry, evaluated, ctx.scenario.closed_loop.pass_to_pass);
-  const std::vector<TrackSample> track = TruthTrack(ctx, Time{});  // the whole run
+  const std::vector<TrackSample>& track = TruthTrack(ctx, Time{}, track_part);  // the whole run
   report.tracking_faults = ScoreFaultPathDeviations(
       PlannedPath(ReadPathVertices(ctx.scenario.closed_loop.path_file)), track, ctx.scenario.faults,
       DurationFromSeconds(ctx.scenario.closed_loop.fault_window_s));

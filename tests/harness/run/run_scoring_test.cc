@@ -53,7 +53,7 @@ class RunScoringTest : public ::testing::Test {
     dir_ = tmpl;
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
-  ScoringSetup Setup(const Scenario& s, std::size_t exact_limit) const {
+  ScoringSetup MakeSetup(const Scenario& s, std::size_t exact_limit) const {
     ScoringSetup setup;
     setup.scenario = &s;
     setup.dir = dir_;
@@ -71,7 +71,7 @@ TEST_F(RunScoringTest, TheMetricsAreThoseOfTheWholeSetScoredAtTheEnd) {
   const Scenario s = StraightNorth(300);
   const truth::LocalFrame frame(s.truth.origin);
   TruthTableBuilder builder(s.truth);
-  RunScoring scoring(Setup(s, QuantileSketch::kExactLimit), builder);
+  RunScoring scoring(MakeSetup(s, QuantileSketch::kExactLimit), builder);
   std::vector<EstimateRecord> all, delayed;
   for (int k = 0; k <= 3000; ++k) {
     const Time t = TimeFromNs(k * 100'000'000LL);
@@ -123,7 +123,7 @@ TEST_F(RunScoringTest, ASolutionLaterThanTheHorizonIsCountedNotScored) {
   const Scenario s = StraightNorth(200);
   const truth::LocalFrame frame(s.truth.origin);
   TruthTableBuilder builder(s.truth);
-  RunScoring scoring(Setup(s, QuantileSketch::kExactLimit), builder);
+  RunScoring scoring(MakeSetup(s, QuantileSketch::kExactLimit), builder);
   for (int k = 0; k <= 2000; ++k) {
     const Time t = TimeFromNs(k * 100'000'000LL);
     scoring.AddEstimates({Solution(frame, t)}, t);
@@ -143,7 +143,7 @@ TEST_F(RunScoringTest, WhatItHoldsIsBoundedWhateverTheRunsLength) {
   const Scenario s = StraightNorth(6000);
   const truth::LocalFrame frame(s.truth.origin);
   TruthTableBuilder builder(s.truth);
-  RunScoring scoring(Setup(s, 500), builder);
+  RunScoring scoring(MakeSetup(s, 500), builder);
   // what it holds, at its most over the first half and over the second
   std::size_t first_half = 0, second_half = 0;
   for (int k = 0; k <= 60000; ++k) {
@@ -183,7 +183,7 @@ TEST_F(RunScoringTest, AClosedLoopHoldsNoMoreThanAnOpenOneWhateverItsLength) {
   s.truth.command_period_s = 0.1;
   const truth::LocalFrame frame(s.truth.origin);
   TruthTableBuilder builder(s.truth);
-  RunScoring scoring(Setup(s, 500), builder);
+  RunScoring scoring(MakeSetup(s, 500), builder);
   std::size_t first_half = 0, second_half = 0;
   for (int k = 0; k <= 60000; ++k) {
     const Time t = TimeFromNs(k * 100'000'000LL);
