@@ -303,6 +303,18 @@ ClosedLoopFaultsReport ActuatorFaults(const actuator::WheelMotors& motors, Fault
   return r;
 }
 
+// Closed loop: a command that came after the truth builder had taken (and the scoring scored) a
+// later time left those scores on a truth that did not obey it: a problem, never silence.
+void NoteStaleTruth(RunContext& ctx) {
+  const std::size_t stale = ctx.truth_builder->stale_samples();
+  if (stale == 0) return;
+  ctx.report.problems.push_back(
+      std::to_string(stale) +
+      " command(s) came for an instant the truth builder had passed (more than " +
+      SecondsText(ToSeconds(Time{} + RunScoring::kLateHorizon)) +
+      " s late): what was scored before each was scored on a truth that had not obeyed it");
+}
+
 // Closed loop: the truth against the planned path, and what the controller and the base did.
 void EvaluateClosedLoop(RunContext& ctx) {
   RunReport& report = ctx.report;
@@ -375,6 +387,7 @@ void EvaluateClosedLoop(RunContext& ctx) {
                               std::to_string(c.control_ticks) +
                               " control ticks (see controller.log)");
   report.closed_loop = c;
+  NoteStaleTruth(ctx);
 }
 
 // Closed loop: the planned path, for the plots (the base's control ticks: RunScoring).

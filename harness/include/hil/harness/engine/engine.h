@@ -98,8 +98,9 @@ class Engine {
   bool RunEvents(EngineMonitor& monitor, const truth::TruthConfig* truth);
   /// The earliest next event of the devices (none without devices).
   std::optional<Time> NextEvent() const;
-  /// The devices due at `t_event` sample `x`; their output goes out, the hosts are read.
-  void Serve(Time t_event, const TruthSample& x, EngineMonitor& monitor, DeviceOutput& out);
+  /// The devices due at `t_event` sample `x`; their output goes out, the hosts are read. True
+  /// when one of their commands came late (the truth re-integrates).
+  bool Serve(Time t_event, const TruthSample& x, EngineMonitor& monitor, DeviceOutput& out);
 
   Pacer& pacer_;
   std::unique_ptr<HostTurns> turns_;
