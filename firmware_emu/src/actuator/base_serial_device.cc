@@ -35,7 +35,7 @@ void BaseSerialDevice::ControlTick(Time t) {
   rec.yaw_rate_radps = motors_.body_yaw_rate_radps();
   rec.speed_mps = motors_.body_speed_mps();
   rec.missing = missing;
-  ticks_.push_back(rec);
+  tick_tap_(rec);
 }
 
 void BaseSerialDevice::OnEvent(const TruthSample& truth, DeviceOutput& out) {

@@ -54,7 +54,11 @@ void IsobusSteeringDevice::ControlTick(Time t) {
   rec.steer_rad = -ecu_.steer_angle_rad();
   rec.engaged = ecu_.engaged();
   rec.missing = missing;
-  ticks_.push_back(rec);
+  if (rec.engaged) {
+    const double e = rec.steer_rad - rec.commanded_steer_rad;
+    engaged_error_sq_sum_rad2_ += e * e;
+    ++engaged_ticks_;
+  }
 }
 
 void IsobusSteeringDevice::Send(DeviceOutput& ecu_out, DeviceOutput& out) {

@@ -76,22 +76,39 @@ void TruthTableBuilder::Advance(Time t) {
   cv_.notify_one();
 }
 
+void TruthTableBuilder::Command(const VehicleCommand& c, bool late) {
+  if (late) {
+    // the run's samples from the command's time on were taken before it: not the commands' truth
+    std::erase_if(offer_buffer_, [&](const TruthSample& x) { return x.t >= c.t; });
+    drop_offered_from_ = std::min(drop_offered_from_.value_or(c.t), c.t);
+    const std::lock_guard<std::mutex> lock(mu_);
+    if (started_ && position_ >= c.t) ++stale_samples_;
+  }
+  command_buffer_.push_back(c);
+}
+
 void TruthTableBuilder::Offer(const TruthSample& sample) {
   offer_buffer_.push_back(sample);
   if (offer_buffer_.size() >= kOfferBatch) FlushOffers();
 }
 
 void TruthTableBuilder::FlushOffers() {
-  if (offer_buffer_.empty()) return;
+  if (offer_buffer_.empty() && command_buffer_.empty() && !drop_offered_from_) return;
   {
     const std::lock_guard<std::mutex> lock(mu_);
+    if (drop_offered_from_) {
+      std::erase_if(offered_, [&](const TruthSample& x) { return x.t >= *drop_offered_from_; });
+      drop_offered_from_.reset();
+    }
     for (const TruthSample& sample : offer_buffer_) {
       while (!offered_.empty() && sample.t - offered_.front().t > kOfferedKeep)
         offered_.pop_front();
       offered_.push_back(sample);
     }
+    commands_.insert(commands_.end(), command_buffer_.begin(), command_buffer_.end());
   }
   offer_buffer_.clear();
+  command_buffer_.clear();
 }
 
 const TruthSample* TruthTableBuilder::FindOffered(Time t) const {
@@ -100,63 +117,67 @@ const TruthSample* TruthTableBuilder::FindOffered(Time t) const {
   return it != offered_.end() && it->t == t ? &*it : nullptr;
 }
 
+bool TruthTableBuilder::TakeBatch(std::vector<Time>& batch,
+                                  std::vector<std::optional<TruthSample>>& offered,
+                                  std::vector<VehicleCommand>& commands) {
+  batch.clear();
+  offered.clear();
+  commands.clear();
+  std::unique_lock<std::mutex> lock(mu_);
+  cv_.wait(lock, [&] {
+    return finishing_ || !commands_.empty() ||
+           (has_watermark_ && !asked_.empty() && asked_.top() <= watermark_);
+  });
+  commands.swap(commands_);
+  // take what the watermark allows (everything when finishing), in time order
+  while (!asked_.empty() && (finishing_ || asked_.top() <= watermark_)) {
+    batch.push_back(asked_.top());
+    asked_.pop();
+  }
+  if (!batch.empty()) {
+    started_ = true;
+    position_ = batch.back();
+  }
+  if (batch.empty() && commands.empty() && finishing_) return false;
+  for (const Time t : batch) {
+    const TruthSample* o = FindOffered(t);
+    offered.push_back(o ? std::optional<TruthSample>(*o) : std::nullopt);
+  }
+  // the thread has passed these: no time before the batch's last will be asked of it again
+  while (!offered_.empty() && offered_.front().t < position_) offered_.pop_front();
+  return true;
+}
+
+TruthSample TruthTableBuilder::Integrate(Time t) {
+  if (!truth_) truth_.emplace(config_);
+  ++integrated_;
+  return truth_->Sample(t);
+}
+
 void TruthTableBuilder::Work() {
-  std::optional<truth::TruthIntegrator> truth;  // for the times no offered sample has
-  bool replayed = false;
   std::vector<Time> batch;
   std::vector<std::optional<TruthSample>> offered;
-  bool commands_final = false;
-  for (;;) {
-    batch.clear();
-    offered.clear();
-    {
-      std::unique_lock<std::mutex> lock(mu_);
-      cv_.wait(lock, [&] {
-        return finishing_ || (has_watermark_ && !asked_.empty() && asked_.top() <= watermark_);
-      });
-      // take what the watermark allows (everything when finishing), in time order
-      while (!asked_.empty() && (finishing_ || asked_.top() <= watermark_)) {
-        batch.push_back(asked_.top());
-        asked_.pop();
-      }
-      if (!batch.empty()) {
-        started_ = true;
-        position_ = batch.back();
-      }
-      if (batch.empty() && finishing_) return;
-      commands_final = finishing_;
-      for (const Time t : batch) {
-        const TruthSample* o = FindOffered(t);
-        offered.push_back(o ? std::optional<TruthSample>(*o) : std::nullopt);
-      }
-      // the thread has passed these: no time before the batch's last will be asked of it again
-      while (!offered_.empty() && offered_.front().t < position_) offered_.pop_front();
-    }
-    std::vector<Time> batch_times;
-    std::vector<TruthSample> batch_samples;
+  std::vector<VehicleCommand> commands;
+  std::vector<Time> batch_times;
+  std::vector<TruthSample> batch_samples;
+  while (TakeBatch(batch, offered, commands)) {
+    // closed loop: the commands up to the watermark are all here before any time it allows
+    if (!commands.empty() && !truth_) truth_.emplace(config_);
+    for (const VehicleCommand& c : commands)
+      truth_->SetCommand(c.t, c.speed_mps, c.steer_or_yaw_rate);
+    batch_times.clear();
+    batch_samples.clear();
     for (std::size_t i = 0; i < batch.size(); ++i) {
       const Time t = batch[i];
       if (last_done_ && *last_done_ == t) continue;
-      if (!offered[i] && config_.external_commands && !commands_final) {
-        deferred_.push_back(t);  // the commands up to t are not all known yet: Finish replays
-        continue;
-      }
       last_done_ = t;
       batch_times.push_back(t);
       if (offered[i]) {
         batch_samples.push_back(*offered[i]);
         ++offered_hits_;
-        continue;
+      } else {
+        batch_samples.push_back(Integrate(t));
       }
-      if (!truth) {
-        truth.emplace(config_);
-        if (config_.external_commands && !replayed) {
-          Replay(*truth, commands_);  // finishing_ (closed loop): the commands are complete
-          replayed = true;
-        }
-      }
-      batch_samples.push_back(truth->Sample(t));
-      ++integrated_;
     }
     {
       const std::lock_guard<std::mutex> lock(mu_);
@@ -175,7 +196,8 @@ void TruthTableBuilder::WaitTaken(Time t) {
 
 std::size_t TruthTableBuilder::retained() {
   const std::lock_guard<std::mutex> lock(mu_);
-  return asked_.size() + late_.size() + offered_.size() + offer_buffer_.size() + done_times_.size();
+  return asked_.size() + late_.size() + offered_.size() + offer_buffer_.size() +
+         done_times_.size() + commands_.size() + command_buffer_.size();
 }
 
 void TruthTableBuilder::TakeDone(std::vector<Time>& times, std::vector<TruthSample>& samples) {
@@ -196,38 +218,32 @@ TruthTable TruthTableBuilder::Finish() {
   if (worker_.joinable()) worker_.join();
   std::vector<Time> times = std::move(done_times_);
   std::vector<TruthSample> samples = std::move(done_samples_);
-  late_.insert(late_.end(), deferred_.begin(), deferred_.end());
-  if (discard_offered_) {
-    late_.insert(late_.end(), times.begin(), times.end());
-    times.clear();
-    samples.clear();
-  }
   // stragglers (asked behind the thread): one more pass for them, merged in time order
   std::erase_if(late_, [&](Time t) { return std::binary_search(times.begin(), times.end(), t); });
-  if (!late_.empty()) {
-    const TruthTable extra(config_, late_, commands_);
-    std::vector<Time> all_t;
-    std::vector<TruthSample> all_s;
-    std::size_t i = 0, j = 0;
-    const std::vector<Time> extra_t = [&] {
-      std::vector<Time> v = late_;
-      std::sort(v.begin(), v.end());
-      v.erase(std::unique(v.begin(), v.end()), v.end());
-      return v;
-    }();
-    while (i < times.size() || j < extra_t.size()) {
-      if (j == extra_t.size() || (i < times.size() && times[i] < extra_t[j])) {
-        all_t.push_back(times[i]);
-        all_s.push_back(samples[i++]);
-      } else {
-        all_t.push_back(extra_t[j]);
-        all_s.push_back(extra.At(extra_t[j++]));
-      }
-    }
-    times = std::move(all_t);
-    samples = std::move(all_s);
+  std::sort(late_.begin(), late_.end());
+  late_.erase(std::unique(late_.begin(), late_.end()), late_.end());
+  if (late_.empty()) return TruthTable(config_, std::move(times), std::move(samples));
+  std::vector<TruthSample> extra;
+  if (config_.external_commands) {
+    // the thread's integrator has every command: it restarts from t = 0 for the earliest
+    for (const Time t : late_) extra.push_back(Integrate(t));
+  } else {
+    const TruthTable table(config_, late_);
+    extra = table.samples();
   }
-  return TruthTable(config_, std::move(times), std::move(samples));
+  std::vector<Time> all_t;
+  std::vector<TruthSample> all_s;
+  std::size_t i = 0, j = 0;
+  while (i < times.size() || j < late_.size()) {
+    if (j == late_.size() || (i < times.size() && times[i] < late_[j])) {
+      all_t.push_back(times[i]);
+      all_s.push_back(samples[i++]);
+    } else {
+      all_t.push_back(late_[j]);
+      all_s.push_back(extra[j++]);
+    }
+  }
+  return TruthTable(config_, std::move(all_t), std::move(all_s));
 }
 
 }  // namespace hil::harness

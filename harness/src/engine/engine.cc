@@ -45,22 +45,27 @@ bool Engine::RunEvents(EngineMonitor& monitor, const truth::TruthConfig* truth) 
     }
     if (*t_event > t_end_) return true;
     const TruthSample x = truth_->Sample(*t_event, io_.devices().devices);
-    Serve(*t_event, x, monitor, out);
-    if (truth_->sample_is_truth()) truth_tap_(x);
+    // a late command re-integrates the truth: x, taken before it, is not offered
+    const bool late = Serve(*t_event, x, monitor, out);
+    if (truth_->sample_is_truth() && !late) truth_tap_(x);
     pacer_.EndOfStep(io_);
     if (io_.refused() || !monitor.KeepGoing(*t_event)) return false;
   }
 }
 
-void Engine::Serve(Time t_event, const TruthSample& x, EngineMonitor& monitor, DeviceOutput& out) {
+bool Engine::Serve(Time t_event, const TruthSample& x, EngineMonitor& monitor, DeviceOutput& out) {
   const auto& devices = io_.devices().devices;
+  bool any_late = false;
   for (std::size_t d = 0; d < devices.size(); ++d) {
     if (devices[d]->next_event_time() != t_event) continue;
     truth_->Served(d, t_event);
     devices[d]->OnEvent(x, out);
     if (const std::optional<VehicleCommand> c = devices[d]->TakeVehicleCommand()) {
+      const long restarts = truth_->late_command_restarts();
       truth_->Command(*c);
-      vehicle_commands_.push_back(*c);
+      const bool late = truth_->late_command_restarts() > restarts;
+      any_late = any_late || late;
+      command_tap_(*c, late);
     }
     io_.Dispatch(d, out);
   }
@@ -69,6 +74,7 @@ void Engine::Serve(Time t_event, const TruthSample& x, EngineMonitor& monitor, D
   turns_->AfterEvent(t_event, io_, out);
   io_.PollBus();
   pacer_.RouteBusFrames(io_, out);
+  return any_late;
 }
 
 void Engine::Flush() {

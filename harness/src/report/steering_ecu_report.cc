@@ -47,14 +47,8 @@ SteeringEcuReport MakeSteeringEcuReport(const actuator::IsobusSteeringDevice& de
   r.engaged = device.ecu().engaged();
   r.exit_reason_code = static_cast<int>(device.ecu().exit_reason());
   r.exit_reason = ExitReasonName(device.ecu().exit_reason());
-  double sum = 0;
-  std::size_t n = 0;
-  for (const actuator::SteeringTickRecord& t : device.ticks()) {
-    if (!t.engaged) continue;
-    const double e = t.steer_rad - t.commanded_steer_rad;
-    sum += e * e;
-    ++n;
-  }
+  const double sum = device.engaged_steer_error_sq_sum_rad2();
+  const std::uint64_t n = device.engaged_ticks();
   if (n > 0)
     r.commanded_steer_rms_error_deg =
         std::sqrt(sum / static_cast<double>(n)) * 180.0 / std::numbers::pi;

@@ -237,16 +237,17 @@ void Attempt(RunReport& report, const std::function<void()>& write) {
   }
 }
 
-// The truth vehicle's track at truth.csv's times (10 Hz) from `t_from` on.
-std::vector<TrackSample> TruthTrack(const RunContext& ctx, const TruthTable& truth, Time t_from) {
-  std::vector<TrackSample> track;
-  for (const Time t : TruthCsvTimes(ctx.scenario)) {
-    if (t < t_from || t > ctx.t_end || !truth.Has(t)) continue;
-    const TruthSample& s = truth.At(t);
-    const Eigen::Vector3d x = s.q_NB * Eigen::Vector3d::UnitX();
-    track.push_back({t, s.p_NB_N_m.head<2>(), std::atan2(x.y(), x.x()), s.speed_mps});
+// The truth vehicle's track at truth.csv's times (10 Hz) from `t_from` to the run's end: the
+// scoring's own when it is all of it (no copy), else the part of it copied into `part`.
+const std::vector<TrackSample>& TruthTrack(const RunContext& ctx, Time t_from,
+                                           std::vector<TrackSample>& part) {
+  const std::vector<TrackSample>& all = ctx.scoring->track();
+  if (all.empty() || (all.front().t >= t_from && all.back().t <= ctx.t_end)) return all;
+  part.clear();
+  for (const TrackSample& s : all) {
+    if (s.t >= t_from && s.t <= ctx.t_end) part.push_back(s);
   }
-  return track;
+  return part;
 }
 
 // Distance along the track from time `from` to its end.
@@ -302,14 +303,27 @@ ClosedLoopFaultsReport ActuatorFaults(const actuator::WheelMotors& motors, Fault
   return r;
 }
 
+// Closed loop: a command that came after the truth builder had taken (and the scoring scored) a
+// later time left those scores on a truth that did not obey it: a problem, never silence.
+void NoteStaleTruth(RunContext& ctx) {
+  const std::size_t stale = ctx.truth_builder->stale_samples();
+  if (stale == 0) return;
+  ctx.report.problems.push_back(
+      std::to_string(stale) +
+      " command(s) came for an instant the truth builder had passed (more than " +
+      SecondsText(ToSeconds(Time{} + RunScoring::kLateHorizon)) +
+      " s late): what was scored before each was scored on a truth that had not obeyed it");
+}
+
 // Closed loop: the truth against the planned path, and what the controller and the base did.
-void EvaluateClosedLoop(RunContext& ctx, const TruthTable& truth) {
+void EvaluateClosedLoop(RunContext& ctx) {
   RunReport& report = ctx.report;
   const PathGeometry geometry = ReadPathGeometry(ctx.scenario.closed_loop.path_file);
-  const std::vector<TrackSample> evaluated = TruthTrack(ctx, truth, ctx.t_from);
+  std::vector<TrackSample> evaluated_part, track_part;
+  const std::vector<TrackSample>& evaluated = TruthTrack(ctx, ctx.t_from, evaluated_part);
   report.tracking = ScoreTracking(geometry, evaluated);
   report.pass_to_pass = ScorePassToPass(geometry, evaluated, ctx.scenario.closed_loop.pass_to_pass);
-  const std::vector<TrackSample> track = TruthTrack(ctx, truth, Time{});  // the whole run
+  const std::vector<TrackSample>& track = TruthTrack(ctx, Time{}, track_part);  // the whole run
   report.tracking_faults = ScoreFaultPathDeviations(
       PlannedPath(ReadPathVertices(ctx.scenario.closed_loop.path_file)), track, ctx.scenario.faults,
       DurationFromSeconds(ctx.scenario.closed_loop.fault_window_s));
@@ -358,8 +372,7 @@ void EvaluateClosedLoop(RunContext& ctx, const TruthTable& truth) {
   }
   if (!track.empty()) c.final_speed_mps = track.back().speed_mps;
   if (ctx.set.world)  // paper 001: the deviation from the aisles, against the world's ridges
-    report.row_following =
-        ScoreRowDeviation(*ctx.set.world, TruthTrack(ctx, truth, ctx.t_from), kRowMargin_m);
+    report.row_following = ScoreRowDeviation(*ctx.set.world, evaluated, kRowMargin_m);
   c.stopped = std::fabs(c.final_speed_mps) < 0.01;
   if (ctx.engine) c.answered_ticks_without_turn = ctx.engine->skipped_control_turns();
   c.stepping = SteppingName(ctx.pacer->stepping());
@@ -374,18 +387,12 @@ void EvaluateClosedLoop(RunContext& ctx, const TruthTable& truth) {
                               std::to_string(c.control_ticks) +
                               " control ticks (see controller.log)");
   report.closed_loop = c;
+  NoteStaleTruth(ctx);
 }
 
-// Closed loop: the planned path and the base's control ticks, for the plots.
+// Closed loop: the planned path, for the plots (the base's control ticks: RunScoring).
 void AddClosedLoopSeries(const RunContext& ctx, ReportSeries& series) {
   series.path_en_m = ReadPathVertices(ctx.scenario.closed_loop.path_file);  // read at load
-  if (!ctx.set.base) return;
-  constexpr double kDeg = 180.0 / std::numbers::pi;
-  for (const actuator::BaseTickRecord& k : ctx.set.base->ticks()) {
-    series.tick_t_s.push_back(ToSeconds(k.t));
-    series.commanded_yaw_rate_dps.push_back(k.commanded_yaw_rate_radps * kDeg);
-    series.actual_yaw_rate_dps.push_back(k.yaw_rate_radps * kDeg);
-  }
 }
 
 }  // namespace
@@ -403,9 +410,14 @@ void StartScoring(RunContext& ctx) {
   setup.speed = on_wall_clock ? ctx.options.speed : 1.0;
   if (const link::RealtimePacer* wall = ctx.pacer->wall_clock(); wall && on_wall_clock)
     setup.wall_time_of = [wall](Time t) { return wall->WallTimeOf(t); };
-  setup.stream_truth = !ctx.scenario.truth.external_commands;
   setup.expect_solutions = !ctx.options.emulate_only;
   ctx.scoring.emplace(std::move(setup), *ctx.truth_builder);
+  if (actuator::BaseSerialDevice* base = ctx.set.base) {
+    constexpr double kDeg = 180.0 / std::numbers::pi;
+    base->set_tick_tap([&scoring = *ctx.scoring](const actuator::BaseTickRecord& k) {
+      scoring.AddControlTick(k.t, k.commanded_yaw_rate_radps * kDeg, k.yaw_rate_radps * kDeg);
+    });
+  }
 }
 
 RunEvaluation Evaluate(RunContext& ctx) {
@@ -422,7 +434,7 @@ RunEvaluation Evaluate(RunContext& ctx) {
   EvaluateTiming(ctx);
   report.outages = scoring.outages();
   CountLinksAndDevices(ctx);
-  if (scenario.closed_loop.enabled) EvaluateClosedLoop(ctx, ev.truth);
+  if (scenario.closed_loop.enabled) EvaluateClosedLoop(ctx);
   EvaluateFaultsAndCriteria(ctx);
   return ev;
 }

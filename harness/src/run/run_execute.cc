@@ -218,10 +218,13 @@ void Execute(RunContext& ctx, RunWatchdog& watchdog) {
   // the truth for the evaluation, sampled on a thread of its own as the run goes (truth_table.h)
   ctx.truth_builder.emplace(scenario.truth);
   StartScoring(ctx);  // asks the builder for truth.csv's times as the run goes
-  // the run's own samples serve the times they have (closed loop: the times they miss are
-  // sampled after the run, from its commands replayed)
+  // the run's own samples serve the times they have (closed loop: the builder's integrator obeys
+  // the run's commands for the times they miss)
   ctx.engine->set_truth_tap(
       [&builder = *ctx.truth_builder](const TruthSample& s) { builder.Offer(s); });
+  ctx.engine->set_command_tap([&builder = *ctx.truth_builder](const VehicleCommand& c, bool late) {
+    builder.Command(c, late);
+  });
   ctx.set.cpu_at_start = ReadCpuTicks();  // what the machine gave a real-time run from here on
   try {
     ctx.engine->Run(watchdog, &scenario.truth);
@@ -231,10 +234,6 @@ void Execute(RunContext& ctx, RunWatchdog& watchdog) {
   }
   if (!ctx.hang && !ctx.Interrupted()) ctx.engine->Flush();
   ctx.set.threads = ctx.pacer->threads();
-  if (scenario.closed_loop.enabled) {
-    ctx.truth_builder->SetCommands(ctx.engine->vehicle_commands());
-    if (ctx.engine->late_command_restarts() > 0) ctx.truth_builder->DiscardOffered();
-  }
   for (const auto& ports : ctx.set.endpoints) {
     for (const auto& ep : ports) ep->FlushCapture();
   }

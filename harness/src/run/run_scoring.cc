@@ -1,6 +1,7 @@
 #include "hil/harness/run/run_scoring.h"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include "hil/harness/report/report.h"
@@ -22,6 +23,12 @@ PlannedPath PathOf(const Scenario& s) {
                                : PlannedPathOf(s.truth, s.duration_s);
 }
 
+// The vehicle's reference point at `t` for the tracking figures.
+TrackSample TrackSampleOf(Time t, const TruthSample& s) {
+  const Eigen::Vector3d x = s.q_NB * Eigen::Vector3d::UnitX();
+  return {t, s.p_NB_N_m.head<2>(), std::atan2(x.y(), x.x()), s.speed_mps};
+}
+
 }  // namespace
 
 RunScoring::Side::Side(std::size_t exact_limit)
@@ -39,6 +46,7 @@ RunScoring::RunScoring(ScoringSetup setup, TruthTableBuilder& truth)
       timing_(setup_.speed, setup_.exact_limit),
       latency_ms_(setup_.exact_limit),
       truth_plot_(kPlotBuckets, kFirstBucketS),
+      ticks_plot_(kPlotBuckets, kFirstBucketS),
       grid_end_(TimeFromSeconds(setup_.scenario->duration_s)) {
   const auto open = [this](Csv& csv, const char* name,
                            const std::function<void(std::string&)>& header) {
@@ -50,6 +58,8 @@ RunScoring::RunScoring(ScoringSetup setup, TruthTableBuilder& truth)
     }
     Write(csv, header);
   };
+  if (setup_.scenario->closed_loop.enabled)  // room for the whole grid, reserved once
+    track_.reserve(static_cast<std::size_t>((grid_end_ - Time{}) / kTruthCsvStep) + 1);
   open(truth_csv_, "truth.csv", AppendTruthCsvHeader);
   open(est_.csv, "estimate.csv", AppendErrorsCsvHeader);
   open(fix_.csv, "gnss_fixes_errors.csv", AppendErrorsCsvHeader);
@@ -143,7 +153,7 @@ void RunScoring::Advance(Time t_now) {
   if (cut_ && cut <= *cut_) return;
   cut_ = cut;
   truth_.Advance(cut);
-  if (!setup_.stream_truth || (last_taken_ && cut - *last_taken_ < kSecond)) return;
+  if (last_taken_ && cut - *last_taken_ < kSecond) return;
   last_taken_ = cut;
   // the thread may lag one more horizon (a loaded machine), not more
   truth_.WaitTaken(cut - kLateHorizon);
@@ -163,6 +173,7 @@ void RunScoring::Consume(const std::vector<Time>& times, const std::vector<Truth
       Write(truth_csv_, [&](std::string& text) { AppendTruthCsvRow(text, t, s); });
       truth_plot_.Add(ToSeconds(t), s.p_NB_N_m.x(),
                       Eigen::Vector3d(ToSeconds(t), s.p_NB_N_m.x(), s.p_NB_N_m.y()));
+      if (setup_.scenario->closed_loop.enabled) track_.push_back(TrackSampleOf(t, s));
       next_grid_row_ += kTruthCsvStep;
     }
     last_sample_.emplace(t, s);
@@ -197,17 +208,15 @@ void RunScoring::Score(Side& side, bool estimates, const EstimateRecord& r,
 }
 
 TruthTable RunScoring::Finish(Time t_end) {
-  if (setup_.stream_truth) {
-    // the rest of truth.csv's grid (to the scenario's end, though the run stopped early) a
-    // horizon at a time, as the run would have had it
-    while (next_grid_ask_ <= grid_end_) {
-      const Time until = next_grid_ask_ + kLateHorizon;
-      AskGrid(until);
-      truth_.Advance(until);
-      truth_.WaitTaken(until);
-      truth_.TakeDone(done_t_, done_s_);
-      Consume(done_t_, done_s_, t_end);
-    }
+  // the rest of truth.csv's grid (to the scenario's end, though the run stopped early) a
+  // horizon at a time, as the run would have had it
+  while (next_grid_ask_ <= grid_end_) {
+    const Time until = next_grid_ask_ + kLateHorizon;
+    AskGrid(until);
+    truth_.Advance(until);
+    truth_.WaitTaken(until);
+    truth_.TakeDone(done_t_, done_s_);
+    Consume(done_t_, done_s_, t_end);
   }
   AskGrid(grid_end_);
   TruthTable table = truth_.Finish();
@@ -226,6 +235,11 @@ TruthTable RunScoring::Finish(Time t_end) {
   return table;
 }
 
+void RunScoring::AddControlTick(Time t, double commanded_yaw_rate_dps, double yaw_rate_dps) {
+  ticks_plot_.Add(ToSeconds(t), yaw_rate_dps,
+                  Eigen::Vector3d(ToSeconds(t), commanded_yaw_rate_dps, yaw_rate_dps));
+}
+
 ReportSeries RunScoring::TakeSeries() {
   ReportSeries s;
   s.estimate_errors = est_.plot.Points();
@@ -233,6 +247,11 @@ ReportSeries RunScoring::TakeSeries() {
   for (const Eigen::Vector3d& p : truth_plot_.Points()) {
     s.truth_t_s.push_back(p.x());
     s.truth_en_m.emplace_back(p.y(), p.z());
+  }
+  for (const Eigen::Vector3d& k : ticks_plot_.Points()) {
+    s.tick_t_s.push_back(k.x());
+    s.commanded_yaw_rate_dps.push_back(k.y());
+    s.actual_yaw_rate_dps.push_back(k.z());
   }
   s.estimate_cdf = CdfPoints(est_.accuracy.horizontal(), ReportSeries::kCdfPoints);
   s.fix_cdf = CdfPoints(fix_.accuracy.horizontal(), ReportSeries::kCdfPoints);
@@ -245,8 +264,8 @@ ReportSeries RunScoring::TakeSeries() {
 std::size_t RunScoring::retained() const {
   return est_.pending.size() + fix_.pending.size() + est_.accuracy.retained() +
          fix_.accuracy.retained() + est_.plot.retained() + fix_.plot.retained() +
-         truth_plot_.retained() + timing_.retained() + latency_ms_.retained() + ahead_.size() +
-         done_t_.size() + truth_.retained();
+         truth_plot_.retained() + ticks_plot_.retained() + timing_.retained() +
+         latency_ms_.retained() + ahead_.size() + done_t_.size() + truth_.retained();
 }
 
 }  // namespace hil::harness

@@ -17,6 +17,7 @@
 #include "hil/firmware_emu/angles.h"
 #include "hil/truth/actuator_lag.h"
 #include "hil/truth/body_motion.h"
+#include "hil/truth/command_schedule.h"
 
 namespace hil::truth {
 namespace {
@@ -99,8 +100,9 @@ struct TruthIntegrator::Impl {
   std::int64_t next_tick = 1;  // index of the next guidance update
   double last_request = 0;
 
-  // closed loop: external commands, from each one's grid instant on (sorted by time)
-  std::vector<std::pair<double, Inputs>> schedule;
+  // closed loop: external commands, from each one's grid instant on (sorted by time); read in
+  // time order by Guide (a cursor, rewound by Init), so mutable
+  mutable CommandSchedule schedule;
   bool restart_needed = false;
   long late_restarts = 0;
 
@@ -132,9 +134,8 @@ struct TruthIntegrator::Impl {
 
   /// The external command in force at t (zero before the first).
   Inputs Scheduled(double t) const {
-    const auto it = std::upper_bound(schedule.begin(), schedule.end(), t,
-                                     [](double x, const auto& e) { return x < e.first; });
-    return it == schedule.begin() ? Inputs{} : std::prev(it)->second;
+    const CommandSchedule::Entry* e = schedule.At(t);
+    return e ? Inputs{e->speed_mps, e->steer_or_yaw_rate} : Inputs{};
   }
 
   // ---- model -------------------------------------------------------------------------------
@@ -407,6 +408,7 @@ struct TruthIntegrator::Impl {
 
   void Init() {
     Free();
+    schedule.Rewind();
     Check(SUNContext_Create(nullptr, &ctx), "SUNContext_Create");
     y = N_VNew_Serial(kOdeSize, ctx);
     work = N_VNew_Serial(kOdeSize, ctx);
@@ -571,9 +573,9 @@ void TruthIntegrator::SetCommand(Time t, double speed_mps, double steer_or_yaw_r
   if (!config_.external_commands)
     throw std::logic_error("SetCommand needs TruthConfig::external_commands");
   const double ts = ToSeconds(t);
-  if (!m.schedule.empty() && ts < m.schedule.back().first)
+  if (!m.schedule.empty() && ts < m.schedule.back().t_s)
     throw std::invalid_argument("truth commands must come in non-decreasing time order");
-  m.schedule.emplace_back(ts, Inputs{speed_mps, steer_or_yaw_rate});
+  m.schedule.Add({ts, speed_mps, steer_or_yaw_rate});
   // The grid instant where it acts: already handled (or the initial state, at t = 0) ⇒ replay.
   const double tick = std::ceil(ts / m.tick_s - 1e-9) * m.tick_s;
   const bool handled = tick < m.t_cur || (tick == m.t_cur && !m.pending);

@@ -81,9 +81,9 @@ TEST(TruthTableBuilderTest, WithoutOffersTheThreadIntegratesEveryTime) {
 
 TEST(TruthTableBuilderTest, ClosedLoopCopiesTheRunsSamplesAndReplaysTheCommandsForTheRest) {
   // GIVEN a closed-loop truth whose steering command changes every 100 ms as a run sets it (the
-  // first command at t = 0, acting from the start), a table asked for the 10 Hz grid and for times
-  // between the run's samples, and the run's 100 Hz samples offered except the one taken at t = 0
-  // before the first command (it re-integrates: restart_pending)
+  // first command at t = 0, acting from the start) and gives it to the builder, a table asked for
+  // the 10 Hz grid and for times between the run's samples, and the run's 100 Hz samples offered
+  // except the one taken at t = 0 before the first command (it re-integrates: restart_pending)
   const truth::TruthConfig config = ClosedLoopConfig();
   TruthTableBuilder builder(config);
   const auto [grid, between] = AskGridAndBetween(builder, 10);
@@ -98,6 +98,7 @@ TEST(TruthTableBuilderTest, ClosedLoopCopiesTheRunsSamplesAndReplaysTheCommandsF
       const double steer_rad = (k / 50) % 2 ? 0.05 : -0.05;
       commands.push_back({t_effect, 1.0, steer_rad});
       run.SetCommand(t_effect, 1.0, steer_rad);
+      builder.Command(commands.back());
     }
     if (!run.restart_pending()) {
       builder.Offer(s);
@@ -105,8 +106,7 @@ TEST(TruthTableBuilderTest, ClosedLoopCopiesTheRunsSamplesAndReplaysTheCommandsF
     }
     if (k % 50 == 0) builder.Advance(t - std::chrono::seconds(1));
   }
-  // WHEN the run ends and gives its commands
-  builder.SetCommands(commands);
+  // WHEN the run ends, having given the builder its commands as it went
   const TruthTable table = builder.Finish();
   // THEN every time is the replay's bit for bit; the run's samples served the grid but t = 0,
   // whose sample preceded the first command
@@ -122,27 +122,46 @@ TEST(TruthTableBuilderTest, ClosedLoopCopiesTheRunsSamplesAndReplaysTheCommandsF
   EXPECT_EQ(builder.offered_hits(), grid.size() - 1);
 }
 
-TEST(TruthTableBuilderTest, DiscardedOffersAreAllReplayed) {
-  // GIVEN offered samples of a run that did not obey its commands (as if a late command had
-  // re-integrated it after they were taken)
+TEST(TruthTableBuilderTest, ALateCommandDropsTheRunsSamplesFromItsTimeOn) {
+  // GIVEN samples offered by a run obeying 1 m/s, and then a command for t = 0 (2 m/s) that came
+  // late: the run's truth had passed its instant and re-integrates
   const truth::TruthConfig config = ClosedLoopConfig();
   std::vector<Time> times;
   for (int k = 0; k <= 30; ++k) times.push_back(TimeFromNs(k * 100'000'000LL));
-  const std::vector<VehicleCommand> commands{{Time{}, 2.0, 0.0}};
+  const std::vector<VehicleCommand> commands{{Time{}, 1.0, 0.0}, {Time{}, 2.0, 0.0}};
   TruthTableBuilder builder(config);
   builder.Ask(times);
+  builder.Command(commands[0]);
   truth::TruthIntegrator stale(config);
   stale.SetCommand(Time{}, 1.0, 0.0);
   for (const Time t : times) builder.Offer(stale.Sample(t));
+  // WHEN the late command comes before the builder took any of them
+  builder.Command(commands[1], true);
   builder.Advance(times.back());
-  // WHEN they are discarded before Finish
-  builder.SetCommands(commands);
-  builder.DiscardOffered();
   const TruthTable table = builder.Finish();
-  // THEN the table is the replay of the commands, not the stale samples
+  // THEN the table is the commands' truth, not the stale samples, and none was scored stale
   const TruthTable replay(config, times, commands);
   for (const Time t : times) ExpectSameSample(table.At(t), replay.At(t));
   EXPECT_NEAR(table.At(times.back()).p_NB_N_m.x(), 6.0, 1e-6);  // 3 s at 2 m/s, east
+  EXPECT_EQ(builder.offered_hits(), 0u);
+  EXPECT_EQ(builder.stale_samples(), 0u);
+}
+
+TEST(TruthTableBuilderTest, ALateCommandBehindWhatWasTakenIsCountedStale) {
+  // GIVEN a builder that has taken its first 2 s of times
+  const truth::TruthConfig config = ClosedLoopConfig();
+  TruthTableBuilder builder(config);
+  builder.Command({Time{}, 1.0, 0.0});
+  std::vector<Time> times;
+  for (int k = 0; k <= 20; ++k) times.push_back(TimeFromNs(k * 100'000'000LL));
+  builder.Ask(times);
+  builder.Advance(TimeFromSeconds(2));
+  builder.WaitTaken(TimeFromSeconds(2));
+  // WHEN a command for t = 1 s comes late
+  builder.Command({TimeFromSeconds(1), 2.0, 0.0}, true);
+  // THEN the times taken cannot be scored again: it is counted
+  EXPECT_EQ(builder.stale_samples(), 1u);
+  builder.Finish();
 }
 
 }  // namespace

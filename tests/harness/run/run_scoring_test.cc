@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -52,7 +53,7 @@ class RunScoringTest : public ::testing::Test {
     dir_ = tmpl;
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
-  ScoringSetup Setup(const Scenario& s, std::size_t exact_limit) const {
+  ScoringSetup MakeSetup(const Scenario& s, std::size_t exact_limit) const {
     ScoringSetup setup;
     setup.scenario = &s;
     setup.dir = dir_;
@@ -70,7 +71,7 @@ TEST_F(RunScoringTest, TheMetricsAreThoseOfTheWholeSetScoredAtTheEnd) {
   const Scenario s = StraightNorth(300);
   const truth::LocalFrame frame(s.truth.origin);
   TruthTableBuilder builder(s.truth);
-  RunScoring scoring(Setup(s, QuantileSketch::kExactLimit), builder);
+  RunScoring scoring(MakeSetup(s, QuantileSketch::kExactLimit), builder);
   std::vector<EstimateRecord> all, delayed;
   for (int k = 0; k <= 3000; ++k) {
     const Time t = TimeFromNs(k * 100'000'000LL);
@@ -122,7 +123,7 @@ TEST_F(RunScoringTest, ASolutionLaterThanTheHorizonIsCountedNotScored) {
   const Scenario s = StraightNorth(200);
   const truth::LocalFrame frame(s.truth.origin);
   TruthTableBuilder builder(s.truth);
-  RunScoring scoring(Setup(s, QuantileSketch::kExactLimit), builder);
+  RunScoring scoring(MakeSetup(s, QuantileSketch::kExactLimit), builder);
   for (int k = 0; k <= 2000; ++k) {
     const Time t = TimeFromNs(k * 100'000'000LL);
     scoring.AddEstimates({Solution(frame, t)}, t);
@@ -142,7 +143,7 @@ TEST_F(RunScoringTest, WhatItHoldsIsBoundedWhateverTheRunsLength) {
   const Scenario s = StraightNorth(6000);
   const truth::LocalFrame frame(s.truth.origin);
   TruthTableBuilder builder(s.truth);
-  RunScoring scoring(Setup(s, 500), builder);
+  RunScoring scoring(MakeSetup(s, 500), builder);
   // what it holds, at its most over the first half and over the second
   std::size_t first_half = 0, second_half = 0;
   for (int k = 0; k <= 60000; ++k) {
@@ -168,6 +169,47 @@ TEST_F(RunScoringTest, WhatItHoldsIsBoundedWhateverTheRunsLength) {
   EXPECT_LE(second_half, 3 * 3 * RunScoring::kPlotBuckets + 8 * 1000 + 12 * 1200);
   EXPECT_EQ(scoring.metrics().samples, 59999u);  // from t = 0
   EXPECT_EQ(scoring.baselines().samples, 60001u);
+}
+
+TEST_F(RunScoringTest, AClosedLoopHoldsNoMoreThanAnOpenOneWhateverItsLength) {
+  // GIVEN a 6000 s closed loop (issue 40: its truth was sampled at the end, every solution and fix
+  // waiting for it, 110 MB per emulated hour): a path north, the actuators commanding 1 m/s every
+  // 100 ms, 10 Hz solutions and fixes, each percentile holding 500 values exactly
+  Scenario s = StraightNorth(6000);
+  s.closed_loop.enabled = true;
+  s.closed_loop.path_file = dir_ + "/north.path";
+  std::ofstream(s.closed_loop.path_file) << "hil-path 1\nab_line a_m=0,0 b_m=0,10000\n";
+  s.truth.external_commands = true;
+  s.truth.command_period_s = 0.1;
+  const truth::LocalFrame frame(s.truth.origin);
+  TruthTableBuilder builder(s.truth);
+  RunScoring scoring(MakeSetup(s, 500), builder);
+  std::size_t first_half = 0, second_half = 0;
+  for (int k = 0; k <= 60000; ++k) {
+    const Time t = TimeFromNs(k * 100'000'000LL);
+    builder.Command({t, 1.0, 0.0});
+    scoring.AddEstimates({Solution(frame, t - std::chrono::milliseconds(200))}, t);
+    scoring.AddFixes({Solution(frame, t)});
+    scoring.Advance(t);
+    if (k % 500 == 0 && k >= 10000) {
+      std::size_t& most = k <= 30000 ? first_half : second_half;
+      most = std::max(most, scoring.retained());
+    }
+  }
+  const TruthTable rest = scoring.Finish(TimeFromSeconds(6000));
+  // THEN it holds what the open loop holds (WhatItHoldsIsBoundedWhateverTheRunsLength), scored as
+  // it went: no solution, fix or truth sample kept to the end
+  const std::size_t lag_allowance =
+      2 * 4 * 10 * static_cast<std::size_t>(RunScoring::kLateHorizon / std::chrono::seconds(1));
+  EXPECT_LE(second_half, first_half + lag_allowance);
+  EXPECT_LE(second_half, 3 * 3 * RunScoring::kPlotBuckets + 8 * 1000 + 12 * 1200);
+  EXPECT_LE(rest.times().size(), lag_allowance);  // the last horizon, sampled at the end
+  EXPECT_EQ(scoring.metrics().samples, 59999u);
+  EXPECT_EQ(scoring.baselines().samples, 60001u);
+  EXPECT_EQ(builder.stale_samples(), 0u);
+  // AND the truth obeyed the commands: 1 m/s north for 6000 s, less the speed lag's start
+  ASSERT_EQ(scoring.track().size(), 60001u);
+  EXPECT_NEAR(scoring.track().back().p_N_m.y(), 6000.0, 5.0);
 }
 
 }  // namespace

@@ -18,7 +18,6 @@ void BuildSteeringEcu(const Scenario& s, std::uint64_t /*seed*/, const std::stri
   for (const Fault& f : s.faults.OfKind(FaultKind::kCommandLinkLoss))
     cfg.link_loss.emplace_back(f.start, f.end);
   auto dev = std::make_unique<actuator::IsobusSteeringDevice>(cfg);
-  dev->ReserveTicks(static_cast<std::size_t>(s.duration_s / c.control_period_s) + 2);
   set.steering = dev.get();
   if (cfg.transport == actuator::IsobusTransport::kSlcan) {
     AddSerialDevice(std::move(dev), c.link, 4096, dir, set, cfg.slcan_baud);

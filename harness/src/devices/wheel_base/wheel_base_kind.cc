@@ -52,7 +52,6 @@ void BuildWheelBase(const Scenario& s, std::uint64_t seed, const std::string& di
   for (const Fault& f : s.faults.OfKind(FaultKind::kCommandLinkLoss))
     cfg.link_loss.emplace_back(f.start, f.end);
   auto dev = std::make_unique<actuator::BaseSerialDevice>(cfg);
-  dev->ReserveTicks(static_cast<std::size_t>(s.duration_s / c.control_period_s) + 2);
   set.base = dev.get();
   AddSerialDevice(std::move(dev), c.link, 4096, dir, set);
 }

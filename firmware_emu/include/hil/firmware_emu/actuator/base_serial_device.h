@@ -14,6 +14,7 @@
 ///   decides what the base does about it.
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -67,9 +68,8 @@ class BaseSerialDevice : public Device {
   const BaseSerialDeviceCounters& counters() const { return counters_; }
   /// Host bytes lost to the command-link loss windows.
   const CommandLinkLoss& link_loss() const { return loss_; }
-  /// One record per control tick (ReserveTicks: room for a whole run, reserved once).
-  const std::vector<BaseTickRecord>& ticks() const { return ticks_; }
-  void ReserveTicks(std::size_t n) { ticks_.reserve(n); }
+  /// Called with each control tick's record (e.g. for the report's plots); none are kept here.
+  void set_tick_tap(std::function<void(const BaseTickRecord&)> tap) { tick_tap_ = std::move(tap); }
 
  private:
   void ControlTick(Time t);
@@ -81,7 +81,7 @@ class BaseSerialDevice : public Device {
   std::uint64_t seen_motor_commands_ = 0;
   BaseSerialDeviceCounters counters_;
   CommandLinkLoss loss_;
-  std::vector<BaseTickRecord> ticks_;
+  std::function<void(const BaseTickRecord&)> tick_tap_ = [](const BaseTickRecord&) {};
 };
 
 }  // namespace hil::actuator

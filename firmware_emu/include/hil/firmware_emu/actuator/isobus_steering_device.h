@@ -82,8 +82,10 @@ class IsobusSteeringDevice : public Device {
   const IsobusSteeringCounters& counters() const { return counters_; }
   /// Controller frames lost to the command-link loss windows.
   const CommandLinkLoss& link_loss() const { return loss_; }
-  const std::vector<SteeringTickRecord>& ticks() const { return ticks_; }
-  void ReserveTicks(std::size_t n) { ticks_.reserve(n); }
+  /// Control ticks while engaged, and the sum over them of (actual − commanded road-wheel
+  /// angle)² in rad², in tick order (none kept: a run's length does not grow the device).
+  std::uint64_t engaged_ticks() const { return engaged_ticks_; }
+  double engaged_steer_error_sq_sum_rad2() const { return engaged_error_sq_sum_rad2_; }
 
  private:
   void FromController(Time t, const CanFrame& frame);
@@ -99,7 +101,8 @@ class IsobusSteeringDevice : public Device {
   std::uint64_t seen_accepted_ = 0;
   IsobusSteeringCounters counters_;
   CommandLinkLoss loss_;
-  std::vector<SteeringTickRecord> ticks_;
+  std::uint64_t engaged_ticks_ = 0;
+  double engaged_error_sq_sum_rad2_ = 0;
   DeviceOutput scratch_;
   std::vector<CanFrame> host_frames_;
 };

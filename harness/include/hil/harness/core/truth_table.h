@@ -70,22 +70,25 @@ class TruthTableBuilder {
   void Ask(const std::vector<Time>& times);
   /// No time before `t` will be asked for any more (except stragglers, see the class comment).
   void Advance(Time t);
-  /// Closed loop: the actuators' commands of the whole run, before Finish. Until then the thread
-  /// copies offered samples only; a time none of them has waits for Finish, which replays the
-  /// commands for it.
-  void SetCommands(std::vector<VehicleCommand> commands) { commands_ = std::move(commands); }
+  /// Closed loop: a command the actuators gave the run's truth (in the run's order), before the
+  /// watermark passes its time. The thread's own integrator obeys them, so that it samples the
+  /// times no offered sample has as the run went, and keeps none of them in memory
+  /// (truth::CommandSchedule). `late`: the run's truth had passed the command's instant and
+  /// re-integrates (TruthIntegrator::late_command_restarts grew): its samples offered from the
+  /// command's time on are dropped, and one the thread has taken already counts in stale_samples().
+  void Command(const VehicleCommand& c, bool late = false);
   /// A sample the run took (times not decreasing from one call to the next), kept for
   /// kOfferedKeep of emulated time or until the thread has passed it. In closed loop the run's
-  /// samples are the replay's bit for bit as long as no command came after the truth had passed
-  /// its instant (TruthIntegrator::late_command_restarts() is 0).
+  /// samples are those of a truth replaying the commands, bit for bit, except after a late command
+  /// (Command's `late`).
   void Offer(const TruthSample& sample);
-  /// Closed loop: the run's truth was re-integrated for a late command, so samples it offered
-  /// before may not be the replay's: Finish samples every time from the replay instead.
-  void DiscardOffered() { discard_offered_ = true; }
-  /// Open loop: moves the samples taken so far (in time order, each time once) into `times` and
-  /// `samples` (cleared first), so that the run's evaluation consumes them as they come and the
-  /// builder keeps none. Finish's table then holds only what was not taken (and the stragglers).
-  /// Not for closed loop: a late command may invalidate the offered samples (DiscardOffered).
+  /// Closed loop: times the thread had taken (scored) before a late command for an instant before
+  /// them came: their truth may not be the commands' (0 unless a command came more than the
+  /// scoring's horizon late).
+  std::size_t stale_samples() const { return stale_samples_; }
+  /// Moves the samples taken so far (in time order, each time once) into `times` and `samples`
+  /// (cleared first), so that the run's evaluation consumes them as they come and the builder
+  /// keeps none. Finish's table then holds only what was not taken (and the stragglers).
   void TakeDone(std::vector<Time>& times, std::vector<TruthSample>& samples);
   /// Waits until the thread has taken every time asked up to `t` (at most the last watermark):
   /// back-pressure, so that a thread behind the run (a loaded machine) cannot pile up the times
@@ -107,10 +110,18 @@ class TruthTableBuilder {
 
  private:
   void Work();
+  /// Waits for times the watermark allows (or the end) and takes them with their offered samples
+  /// and the commands handed over; false when finished.
+  bool TakeBatch(std::vector<Time>& batch, std::vector<std::optional<TruthSample>>& offered,
+                 std::vector<VehicleCommand>& commands);
+  /// The thread's integrator sample at `t` (made at the first need; closed loop: from t = 0, with
+  /// every command so far).
+  TruthSample Integrate(Time t);
   /// The offered sample at `t`, if kept (mu_ held).
   const TruthSample* FindOffered(Time t) const;
-  /// Hands the samples offered since the last call to the thread (one lock for many: a lock per
-  /// device event contended with the thread's, and each wait cost the run a CPU on a busy machine).
+  /// Hands the samples offered and the commands given since the last call to the thread (one lock
+  /// for many: a lock per device event contended with the thread's, and each wait cost the run a
+  /// CPU on a busy machine).
   void FlushOffers();
   static constexpr std::size_t kOfferBatch = 256;
 
@@ -119,11 +130,13 @@ class TruthTableBuilder {
   std::condition_variable cv_;
   std::condition_variable taken_cv_;  // the thread took a batch
   std::priority_queue<Time, std::vector<Time>, std::greater<>>
-      asked_;                   // not yet taken by the thread
-  std::vector<Time> late_;      // asked behind the thread's position
-  std::vector<Time> deferred_;  // the thread's: closed loop, no offered sample, commands not final
-  bool discard_offered_ = false;
-  std::vector<VehicleCommand> commands_;  // closed loop, complete once finishing_
+      asked_;                                   // not yet taken by the thread
+  std::vector<Time> late_;                      // asked behind the thread's position
+  std::vector<VehicleCommand> commands_;        // handed over, not yet given to truth_ (mu_)
+  std::vector<VehicleCommand> command_buffer_;  // the caller's: not yet handed over
+  std::optional<Time> drop_offered_from_;  // the caller's: a late command's, at the next hand-over
+  std::size_t stale_samples_ = 0;          // the caller's
+  std::optional<truth::TruthIntegrator> truth_;  // the thread's until joined
   Time watermark_{};
   bool has_watermark_ = false;
   // the caller's: the thread is woken (and the watermark passed on) for every second of

@@ -51,7 +51,7 @@ struct DeviceBuild {
   /// DeviceOutput::can frames go out on it.
   std::unique_ptr<CanEndpoint> can;
   /// Closed loop: the differential-drive base (owned by `devices`), null otherwise.
-  const actuator::BaseSerialDevice* base = nullptr;
+  actuator::BaseSerialDevice* base = nullptr;  ///< non-const: the run taps its control ticks
   /// Closed loop on the isobus channel: the steering ECU (owned by `devices`), null otherwise.
   const actuator::IsobusSteeringDevice* steering = nullptr;
   /// The ZED-F9P rover (owned by `devices`), null without one: its RTK timeline for the report.

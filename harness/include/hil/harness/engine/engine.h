@@ -66,6 +66,12 @@ class Engine {
   /// Called with every truth sample the devices are given (e.g. TruthTableBuilder::Offer), in
   /// time order.
   void set_truth_tap(std::function<void(const TruthSample&)> tap) { truth_tap_ = std::move(tap); }
+  /// Closed loop: called with every command the actuators give the truth, in time order, and
+  /// whether the truth had passed its instant (late: it re-integrates, late_command_restarts());
+  /// e.g. TruthTableBuilder::Command. None are kept here.
+  void set_command_tap(std::function<void(const VehicleCommand&, bool late)> tap) {
+    command_tap_ = std::move(tap);
+  }
 
   /// Runs from t = 0 to t_end. The devices sample `truth` (integrated with CVODE); without one
   /// (devices that read no truth, a replay) each event's sample holds only its time.
@@ -73,9 +79,6 @@ class Engine {
   /// Writes the bytes still queued (real time: at their UART times).
   void Flush();
 
-  /// Closed loop: the commands the actuators gave the truth so far, in time order (the
-  /// evaluation replays them).
-  const std::vector<VehicleCommand>& vehicle_commands() const { return vehicle_commands_; }
   /// Closed loop: how often the truth was re-integrated from t = 0 for a late command.
   long late_command_restarts() const { return truth_->late_command_restarts(); }
   /// Closed loop with host turns: control ticks that made no turn of their own.
@@ -95,8 +98,9 @@ class Engine {
   bool RunEvents(EngineMonitor& monitor, const truth::TruthConfig* truth);
   /// The earliest next event of the devices (none without devices).
   std::optional<Time> NextEvent() const;
-  /// The devices due at `t_event` sample `x`; their output goes out, the hosts are read.
-  void Serve(Time t_event, const TruthSample& x, EngineMonitor& monitor, DeviceOutput& out);
+  /// The devices due at `t_event` sample `x`; their output goes out, the hosts are read. True
+  /// when one of their commands came late (the truth re-integrates).
+  bool Serve(Time t_event, const TruthSample& x, EngineMonitor& monitor, DeviceOutput& out);
 
   Pacer& pacer_;
   std::unique_ptr<HostTurns> turns_;
@@ -104,7 +108,8 @@ class Engine {
   Time t_end_;
   std::unique_ptr<TruthSource> truth_;
   std::function<void(const TruthSample&)> truth_tap_ = [](const TruthSample&) {};
-  std::vector<VehicleCommand> vehicle_commands_;
+  std::function<void(const VehicleCommand&, bool)> command_tap_ = [](const VehicleCommand&, bool) {
+  };
 };
 
 }  // namespace hil::harness

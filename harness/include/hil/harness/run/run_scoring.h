@@ -19,9 +19,9 @@
 /// loaded machine. The thread is never more than kMaxLag behind the run's time, so memory stays
 /// bounded with an estimator that says nothing (or nothing new). A solution dated before what the
 /// thread has passed, or more than kLateHorizon after the run's time when it arrives, is not
-/// scored: a problem of the report. Closed loop: a late command may change the truth already
-/// sampled (TruthTableBuilder::DiscardOffered), so the truth is sampled at the end as before and
-/// only the scoring streams.
+/// scored: a problem of the report. Closed loop: the same, the builder's integrator obeying the
+/// run's commands (TruthTableBuilder::Command); the truth's track on truth.csv's grid (10 Hz,
+/// 40 B a sample) is kept for the tracking figures (track()).
 
 #include <chrono>
 #include <cstdint>
@@ -38,6 +38,7 @@
 #include "hil/harness/eval/cross_track.h"
 #include "hil/harness/eval/evaluator.h"
 #include "hil/harness/eval/outage_metrics.h"
+#include "hil/harness/eval/path_tracking.h"
 #include "hil/harness/eval/series_decimator.h"
 #include "hil/harness/faults/fault_report.h"
 #include "hil/harness/report/output_file.h"
@@ -57,7 +58,6 @@ struct ScoringSetup {
   double speed = 1.0;  ///< wall intervals → emulated (arrival jitter)
   /// Real time: the wall-clock instant of an emulated time (latency); empty in virtual mode.
   std::function<WallTime(Time)> wall_time_of;
-  bool stream_truth = true;      ///< open loop: the truth is consumed as it is sampled
   bool expect_solutions = true;  ///< false: no estimator (the thread follows the run's time)
   std::size_t exact_limit = QuantileSketch::kExactLimit;  ///< values each percentile holds
 };
@@ -81,8 +81,7 @@ class RunScoring {
   /// sampled.
   void Advance(Time t_now);
   /// The end of the run (`t_end`: the scenario's end, or the time the run stopped): the rest is
-  /// sampled and scored. Returns the truth table of what was sampled at the end (the whole
-  /// truth.csv grid in closed loop).
+  /// sampled and scored. Returns the truth table of what was sampled at the end (stragglers).
   TruthTable Finish(Time t_end);
 
   // what Finish leaves
@@ -99,6 +98,12 @@ class RunScoring {
   /// Solutions not scored for the horizon: arrived too late, or dated too far ahead.
   std::uint64_t too_late() const { return late_; }
   std::uint64_t too_early() const { return early_; }
+  /// Closed loop, differential-drive base: a control tick's commanded and actual yaw rates, for
+  /// the plots (decimated as the other series).
+  void AddControlTick(Time t, double commanded_yaw_rate_dps, double yaw_rate_dps);
+  /// Closed loop: the truth's track at truth.csv's times (10 Hz, the whole grid to the
+  /// scenario's end), in time order.
+  const std::vector<TrackSample>& track() const { return track_; }
   /// The plots' series (moves them out).
   ReportSeries TakeSeries();
   /// Writes out truth.csv, estimate.csv and gnss_fixes_errors.csv. @throws what writing them threw.
@@ -146,6 +151,8 @@ class RunScoring {
   QuantileSketch latency_ms_;
   Csv truth_csv_;
   SeriesDecimator<Eigen::Vector3d> truth_plot_;  // (t, east, north)
+  std::vector<TrackSample> track_;               // closed loop
+  SeriesDecimator<Eigen::Vector3d> ticks_plot_;  // (t, commanded, actual yaw rate)
   Time grid_end_, next_grid_ask_{}, next_grid_row_{};
   std::optional<Time> cut_;         // the builder's watermark so far
   std::optional<Time> latest_;      // the latest time of validity of a solution in the run
