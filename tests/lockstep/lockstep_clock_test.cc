@@ -271,5 +271,28 @@ TEST(LockstepClock, AThreadThatReadWithoutWritingDoesNotWakeAPipesReader) {
   EXPECT_EQ(rounds.back(), 1u) << "looks per round: " << testing::PrintToString(rounds);
 }
 
+TEST(LockstepClock, HilLearnsWhetherTheProgramsWroteBeforeTheyAreIdle) {
+  LockstepHost host(TempFile("writes"), kEpochNs);
+  Child c = Spawn(host, {"/bin/cat"});
+  ASSERT_TRUE(Attached(host, c.pid));
+  ASSERT_TRUE(WaitIdle(host));
+  EXPECT_TRUE(host.TakeHostWrites());  // its start
+  EXPECT_FALSE(host.TakeHostWrites());
+  host.Wake();  // it looks at its empty stdin and waits again, having written nothing
+  ASSERT_TRUE(WaitIdle(host));
+  EXPECT_FALSE(host.TakeHostWrites());
+  ASSERT_EQ(write(c.in, "ab", 2), 2);
+  host.Wake();  // it copies the bytes to its stdout before it waits again
+  ASSERT_TRUE(WaitIdle(host));
+  EXPECT_TRUE(host.TakeHostWrites());
+  EXPECT_FALSE(host.TakeHostWrites());
+  close(c.in);
+  host.Wake();  // the end of its input: it exits
+  ASSERT_TRUE(WaitIdle(host));
+  EXPECT_TRUE(host.TakeHostWrites());
+  EXPECT_EQ(ReadAll(c.out), "ab");
+  waitpid(c.pid, nullptr, 0);
+}
+
 }  // namespace
 }  // namespace hil::harness::lockstep

@@ -134,6 +134,12 @@ std::string PtyPort::ReadAvailable() {
   return out;
 }
 
+std::size_t PtyPort::HeldForHost() const {
+  int n = 0;
+  if (ioctl(slave_fd_, FIONREAD, &n) != 0) return 0;
+  return static_cast<std::size_t>(n);
+}
+
 std::size_t PtyPort::PendingToHost() const {
   int n = 0;
   if (ioctl(slave_fd_, FIONREAD, &n) != 0) return 0;

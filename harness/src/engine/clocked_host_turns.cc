@@ -57,8 +57,10 @@ bool ClockedHostTurns::Turn(Time t, DeviceIo& io, bool wake) {
   }
   touched_ = 0;
   if (!host_.WaitIdle(on_wait_)) return false;
-  // room on a link read again: a thread waiting to write there looks at the next grant
-  arrivals_.ReadHosts(t, io, [this](const SerialEndpoint& ep) { touched_ |= LinkBitOf(&ep); });
+  // room on a link read again: a thread waiting to write there looks at the next grant. Only
+  // when the programs may have written: most turns hand a message over and get none back.
+  if (wake || host_.TakeHostWrites())
+    arrivals_.ReadHosts(t, io, [this](const SerialEndpoint& ep) { touched_ |= LinkBitOf(&ep); });
   // frames read off the bus: room for the sender's next
   if (io.devices().steering && arrivals_.ReadBus(t, io) > 0) touched_ |= lockstep::kOtherFd;
   return true;

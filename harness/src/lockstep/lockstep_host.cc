@@ -118,7 +118,16 @@ void LockstepHost::ForgetDeadThreads() {
     if (tid == 0 || ThreadAlive(s.pid.load(), tid)) continue;
     s.state.store(kRunning);
     s.tid.store(0);
+    slots_freed_ = true;  // what it wrote before it died is read at the next turn
   }
+}
+
+bool LockstepHost::TakeHostWrites() {
+  const std::uint64_t writes = shared_->host_writes.load();
+  if (writes == writes_seen_ && !slots_freed_) return false;
+  writes_seen_ = writes;
+  slots_freed_ = false;
+  return true;
 }
 
 bool LockstepHost::WaitIdle(const WaitStep& on_wait) {

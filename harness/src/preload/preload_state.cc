@@ -114,15 +114,17 @@ bool WroteSinceLastWait() {
   return wrote;
 }
 
+// Tells hil that what it could read from the programs may have changed (lockstep_shared.h).
+void NoteHostWrite() { g_shared->host_writes.fetch_add(1); }
+
 // Asks the other waiting threads whose condition what this thread did may have met to look again:
-// after a write (WroteSinceLastWait), those waiting for input on descriptors other than hil's
-// links (a pipe another program writes) and those of its own process (they share its
+// after a write (`wrote`: WroteSinceLastWait), those waiting for input on descriptors other than
+// hil's links (a pipe another program writes) and those of its own process (they share its
 // descriptors); in any case those waiting for room to write on such descriptors (a read makes
 // room). A thread waiting only for hil's links or a deadline is left asleep: only hil changes
 // what it waits for.
-void AskOthersToLook(const lk::ThreadSlot* self) {
+void AskOthersToLook(const lk::ThreadSlot* self, bool wrote) {
   const std::int32_t pid = self->pid.load();
-  const bool wrote = WroteSinceLastWait();
   const int used = std::min(g_shared->slots_used.load(), lk::kMaxThreads);
   for (int i = 0; i < used; ++i) {
     lk::ThreadSlot& s = g_shared->slots[i];
@@ -146,6 +148,7 @@ void FreeSlot(lk::ThreadSlot* s) {
 void OnThreadExit(void* slot) {
   if (!g_shared || !slot) return;
   FreeSlot(static_cast<lk::ThreadSlot*>(slot));
+  NoteHostWrite();
   NotifyHil();
 }
 
@@ -236,6 +239,7 @@ __attribute__((destructor)) void Unload() {
     if (g_shared->slots[i].pid.load() == pid && g_shared->slots[i].tid.load() != 0)
       FreeSlot(&g_shared->slots[i]);
   }
+  NoteHostWrite();
   NotifyHil();
 }
 
@@ -314,19 +318,30 @@ long Wait(long (*ready)(void* arg), void* arg, std::int64_t deadline_ns,
   lk::ThreadSlot* s = Slot();
   if (!s) return kUnmanaged;
   const int saved_errno = errno;
+  const std::uint32_t c0 = s->seq.load();  // before the first look
   // met already: the call returns as the real one would, without a word to anyone
   if (const long r = ready ? ready(arg) : 0; r != 0) return r;
   if (deadline_ns != lk::kNoDeadline && g_shared->now_ns.load() >= deadline_ns) return kDeadline;
+  // told to hil before this thread can count as idle
+  const bool wrote = WroteSinceLastWait();
+  if (wrote) NoteHostWrite();
+  const std::uint64_t mask = !ready ? 0 : links ? links(arg) : lk::kAnything;
   s->deadline_ns.store(deadline_ns);
-  s->links.store(!ready ? 0 : links ? links(arg) : lk::kAnything);
+  s->links.store(mask);
   s->on_descriptors.store(ready ? 1 : 0);
   s->state.store(lk::kWaiting);
   s->waits.fetch_add(1);
   // what this thread did before it waits may be what another waits for: those look again
-  AskOthersToLook(s);
+  AskOthersToLook(s, wrote);
+  // Only hil makes hil's links ready or moves time on, and only while every thread waits: for a
+  // wait on links alone the first look stands until someone asks this thread to look again. Any
+  // other descriptor may have been made ready by another program between that look and the
+  // moment this thread said it waits (it asked no one to look again then): it looks once more.
+  bool looked = (mask & (lk::kOtherFd | lk::kEveryGrant)) == 0;
   for (;;) {
     const std::uint32_t c = s->seq.load();
-    const long r = ready ? ready(arg) : 0;
+    const long r = looked && c == c0 ? 0 : ready ? ready(arg) : 0;
+    looked = false;
     if (r != 0) {
       s->state.store(lk::kRunning);
       return r;

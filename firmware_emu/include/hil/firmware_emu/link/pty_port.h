@@ -56,6 +56,8 @@ class PtyPort final : public SerialPort {
   /// beyond the 4095 the line discipline holds (a 10 000-byte backlog reads 4095; after the host
   /// reads 3000 of it, 1095).
   std::size_t PendingToHost() const override;
+  /// FIONREAD of the host side only: no poll(), so a hand-over still pending is not counted.
+  std::size_t HeldForHost() const override;
 
   const std::string& path() const override { return symlink_path_; }
   const std::string& slave_path() const { return slave_path_; }

@@ -28,6 +28,10 @@ class SerialPort {
   virtual std::string ReadAvailable() = 0;
   /// Bytes written that have not left yet (pty: not read by the host; tty: not transmitted).
   virtual std::size_t PendingToHost() const = 0;
+  /// What the host side holds now without waiting for anything still on its way to it (a pty: the
+  /// line discipline's count, one ioctl). Equal to PendingToHost() when every byte written has
+  /// reached the host side; a lower bound otherwise. Default: PendingToHost().
+  virtual std::size_t HeldForHost() const { return PendingToHost(); }
   /// A descriptor that poll() reports readable (POLLIN) when ReadAvailable() has bytes, or -1.
   virtual int host_input_fd() const { return -1; }
   /// The path the host opens (a pty's symlink) or the device path.

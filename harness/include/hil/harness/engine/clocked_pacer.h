@@ -40,6 +40,8 @@ class ClockedPacer final : public Pacer {
   /// Writes every waiting chunk that has ended by `t`, and waits until the kernel has handed them
   /// to the host's side of the pty (see kHandOverBytes). Returns the links written: bit k for
   /// the k-th link of LinkDevices (lockstep_shared.h's mask; kOtherFd for those beyond kMaxLinks).
+  /// What the host side held before the write is one ioctl when the last hand-over on the link
+  /// was complete (settled_), else SerialEndpoint::PendingToHost (which waits for a hand-over).
   std::uint64_t WriteDue(Time t);
   /// The terminal device (st_rdev) of each link's host side, in the order of WriteDue's bits (0:
   /// none, a link that is not a terminal): what LockstepHost::SetLinks takes, before the hosts
@@ -60,7 +62,15 @@ class ClockedPacer final : public Pacer {
   static constexpr Duration kHandOverLimit = std::chrono::milliseconds(100);
 
  private:
+  /// What the host side of link `k` held before a write: exact, as PendingToHost, in one look
+  /// when the link is settled.
+  std::size_t HeldBefore(std::size_t k) const;
+
   std::vector<SerialEndpoint*> endpoints_;
+  /// per link: its bytes_sent() when every byte written had reached the host side (the last
+  /// hand-over ended within kHandOverBytes, nothing dropped or written since), else kUnsettled
+  std::vector<std::uint64_t> settled_;
+  static constexpr std::uint64_t kUnsettled = ~std::uint64_t{0};
   bool bus_written_ = false;
 };
 

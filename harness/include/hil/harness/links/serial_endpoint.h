@@ -95,6 +95,9 @@ class SerialEndpoint {
   /// records carry the wall-clock time of their write or read, which virtual mode leaves 0.
   void set_wall_stamps(bool on) { wall_stamps_ = on; }
   std::size_t PendingToHost() const { return port_->PendingToHost(); }
+  /// What the host side holds now (SerialPort::HeldForHost: exact when nothing written is still
+  /// on its way to the host side).
+  std::size_t HeldForHost() const { return port_->HeldForHost(); }
   /// The host has the port open (a pty: it opened the link and has not closed it since; a real
   /// device cannot tell and says true).
   bool HostAttached() { return port_->HostAttached(); }

@@ -70,6 +70,10 @@ class LockstepHost {
   bool NeedsWake(Time t, std::uint64_t touched) const;
   /// The earliest deadline of the waiting threads (none: every one waits without a timeout).
   std::optional<Time> EarliestDeadline() const;
+  /// Whether the programs may have written something hil could read since the last call that
+  /// said yes: a thread of theirs wrote (or closed, shut down, sent) and waited again, a thread
+  /// or process ended, or hil freed a dead thread's slot (lockstep_shared.h `host_writes`).
+  bool TakeHostWrites();
   /// hil paces the run the old way after all: the library passes every call through from now on
   /// (waits in progress go on as the real calls).
   void Abandon();
@@ -94,6 +98,8 @@ class LockstepHost {
   std::string path_;
   Shared* shared_ = nullptr;
   Stats stats_;
+  std::uint64_t writes_seen_ = ~std::uint64_t{0};  ///< `host_writes` at the last TakeHostWrites
+  bool slots_freed_ = false;  ///< ForgetDeadThreads freed a slot since TakeHostWrites
 };
 
 /// The library beside hil's executable (or in ../lib/ of it); empty when there is none.

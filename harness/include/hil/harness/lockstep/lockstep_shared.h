@@ -27,6 +27,8 @@
 ///    then does hil read what they wrote (at the emulated time `now_ns`) or move time on, to the
 ///    earliest of its own next event and the slots' deadlines.
 /// When `passthrough` is set every call is the real one (waits in progress go on the real way).
+/// A thread that goes to wait after it wrote (as above) bumps `host_writes` first; so does a
+/// thread or process that ends: hil reads the links at a turn only when `host_writes` moved.
 /// A thread bumps `host_wake` when it waits or acknowledges, and wakes its futex when hil says it
 /// sleeps on it (`hil_waiting`) and the programs are idle after its acknowledgement (of threads
 /// acknowledging at once, the last one in the sequentially consistent order sees the others').
@@ -39,7 +41,7 @@ namespace hil::harness::lockstep {
 /// The environment variable that names the shared file (set by hil for the programs it starts).
 inline constexpr const char* kEnvFile = "HIL_LOCKSTEP";
 inline constexpr std::uint32_t kMagic = 0x4b434c48;  // "HLCK"
-inline constexpr std::uint32_t kVersion = 2;
+inline constexpr std::uint32_t kVersion = 3;
 /// Threads (of every program of a run together) and processes the file has room for.
 inline constexpr int kMaxThreads = 256;
 inline constexpr int kMaxProcesses = 32;
@@ -88,6 +90,9 @@ struct Shared {
   std::atomic<std::int64_t> now_ns;
   std::atomic<std::uint32_t> host_wake;  ///< futex word hil sleeps on
   std::atomic<std::uint32_t> hil_waiting;
+  /// bumped by a thread that wrote (or closed, shut down, sent) since its last wait, when it
+  /// waits again, and by a thread or process that ends: what hil could read may have changed
+  std::atomic<std::uint64_t> host_writes;
   /// Set by hil when it paces the run the old way after all (a host process did not load the
   /// library in time): every call is the real one from then on, waits in progress end.
   std::atomic<std::uint32_t> passthrough;
