@@ -1,5 +1,6 @@
 #include "hil/harness/report/rtk_rover_report.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include <nlohmann/json.hpp>
@@ -40,6 +41,33 @@ nlohmann::json RtkRoverJson(const RtkRoverReport& r) {
   return {{"timeline", timeline},           {"epochs", r.epochs},
           {"epochs_float", r.epochs_float}, {"epochs_fixed", r.epochs_fixed},
           {"rtcm_frames", r.rtcm_frames},   {"rtcm_crc_failed", r.rtcm_crc_failed}};
+}
+
+PlotChart RtkTimelineChart(const RtkRoverReport& r, double end_s) {
+  PlotChart c;
+  c.title = "RTK state of the rover (carrSoln)";
+  c.x_label = "t (s)";
+  c.y_label = "carrSoln: 0 none, 1 float, 2 fixed";
+  c.id = "rtk-timeline";
+  c.height_px = 240;
+  c.empty_note = "no RTK state change";
+  PlotSeries steps;
+  steps.label = "carrSoln";
+  for (const RtkRoverChange& k : r.timeline) {
+    if (!steps.y.empty()) {
+      steps.x.push_back(k.t_s);  // the previous state up to this change
+      steps.y.push_back(steps.y.back());
+    }
+    steps.x.push_back(k.t_s);
+    steps.y.push_back(k.carr_soln);
+  }
+  if (!steps.y.empty()) {
+    steps.x.push_back(std::max(end_s, steps.x.back()));
+    steps.y.push_back(steps.y.back());
+    c.series.push_back(std::move(steps));
+    c.range = PlotRange{0, std::max(end_s, 1.0), -0.2, 2.2};  // a chart with no state: empty
+  }
+  return c;
 }
 
 void AppendRtkRoverHtml(std::string& h, const RtkRoverReport& r) {

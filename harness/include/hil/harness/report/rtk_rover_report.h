@@ -10,6 +10,8 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "hil/harness/report/svg_plot.h"
+
 namespace hil::rtk {
 class ZedF9pDevice;
 }
@@ -32,5 +34,8 @@ RtkRoverReport MakeRtkRoverReport(const rtk::ZedF9pDevice& rover);
 nlohmann::json RtkRoverJson(const RtkRoverReport& r);
 /// The HTML section: the epochs per state and the timeline as a table.
 void AppendRtkRoverHtml(std::string& html, const RtkRoverReport& r);
+/// The timeline as a step chart: carrSoln (0 none, 1 float, 2 fixed) from each change to the
+/// next, the last state held to `end_s` (the run's emulated end).
+PlotChart RtkTimelineChart(const RtkRoverReport& r, double end_s);
 
 }  // namespace hil::harness
