@@ -48,13 +48,13 @@ void MarkUsed(gnss::NavEpoch& e, bool valid) {
   for (const auto* s : used) e.used_in_channel_order.push_back(s->nmea_id());
 }
 
+}  // namespace
+
 CarrSoln CarrSolnOf(gnss::RtkState s) {
   return s == gnss::RtkState::kFixed   ? CarrSoln::kFixed
          : s == gnss::RtkState::kFloat ? CarrSoln::kFloat
                                        : CarrSoln::kNone;
 }
-
-}  // namespace
 
 gnss::ReceiverModelConfig F9pStandaloneModel() {
   gnss::ReceiverModelConfig m;

@@ -11,14 +11,6 @@ namespace {
 namespace key = gnss::ubx::f9key;
 using gnss::ubx::CarrSoln;
 
-constexpr double kCepPerSigma = 1.1774;  // CEP of a circular normal over its per-axis sigma
-
-CarrSoln CarrSolnOfState(gnss::RtkState s) {
-  return s == gnss::RtkState::kFixed   ? CarrSoln::kFixed
-         : s == gnss::RtkState::kFloat ? CarrSoln::kFloat
-                                       : CarrSoln::kNone;
-}
-
 }  // namespace
 
 void ZedF9pDevice::MovingBaseEpoch(const TruthSample& truth) {
@@ -37,7 +29,7 @@ void ZedF9pDevice::ApplyMovingBase(const TruthSample& truth, double dt_s, gnss::
   rtk_.config().dgnss_timeout_s = static_cast<double>(db_.Get(key::kNavspgConstrDgnssTo));
   rtk_.config().fixed_allowed = db_.Get(key::kNavhpgDgnssMode) == 3;
   const RoverRtkEpoch r = rtk_.Step(t, dt_s, fix.fix_type == gnss::FixType::k3D, d_N.norm());
-  const CarrSoln carr = CarrSolnOfState(r.state);
+  const CarrSoln carr = CarrSolnOf(r.state);
   // the absolute solution stays standalone
   last_.carr_soln = CarrSoln::kNone;
   last_.diff_soln = false;

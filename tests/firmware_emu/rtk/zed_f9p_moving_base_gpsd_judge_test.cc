@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "gpsdecode_tpv.h"
 #include "zed_f9p_fixture.h"
 
 namespace hil::rtk {
@@ -26,28 +27,7 @@ namespace {
 namespace fs = std::filesystem;
 namespace key = gnss::ubx::f9key;
 
-constexpr const char* kGpsdecode = "/usr/bin/gpsdecode";
 constexpr double kHeading_deg = 30.0, kBaseline_m = 1.2;
-
-std::vector<nlohmann::json> Decode(const std::string& bytes) {
-  const fs::path file = fs::temp_directory_path() / ("zed_f9p_mb_" + std::to_string(getpid()));
-  std::ofstream(file, std::ios::binary) << bytes;
-  std::vector<nlohmann::json> tpv;
-  FILE* p = popen((std::string(kGpsdecode) + " -j < " + file.string()).c_str(), "r");
-  std::string line;
-  for (int c = 0; p != nullptr && (c = fgetc(p)) != EOF;) {
-    if (c != '\n') {
-      line.push_back(static_cast<char>(c));
-      continue;
-    }
-    const auto j = nlohmann::json::parse(line, nullptr, false);
-    if (!j.is_discarded() && j.value("class", "") == "TPV") tpv.push_back(j);
-    line.clear();
-  }
-  if (p != nullptr) pclose(p);
-  fs::remove(file);
-  return tpv;
-}
 
 std::string Capture() {
   ZedF9pConfig c;
@@ -75,9 +55,9 @@ std::string Capture() {
 }
 
 TEST(ZedF9pMovingBaseGpsdJudge, DecodesTheBaselineAndItsHeading) {
-  if (access(kGpsdecode, X_OK) != 0) GTEST_SKIP() << "gpsdecode not installed";
+  if (!test::GpsdecodeInstalled()) GTEST_SKIP() << "gpsdecode not installed";
   std::set<std::string> with_rel, fixed;
-  for (const auto& j : Decode(Capture())) {
+  for (const auto& j : test::GpsdecodeTpv(Capture(), "mb")) {
     if (!j.contains("relL")) continue;
     const std::string t = j.value("time", "");
     with_rel.insert(t);

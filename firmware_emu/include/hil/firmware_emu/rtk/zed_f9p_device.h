@@ -69,6 +69,9 @@ namespace hil::rtk {
 /// per-axis sigma 1.27 m; vertical 1.6 × that (ours: the NEO-5M grade's vdop_ref/hdop_ref ratio).
 gnss::ReceiverModelConfig F9pStandaloneModel();
 
+/// The carrSoln of an RTK state (NAV-PVT, NAV-RELPOSNED).
+gnss::ubx::CarrSoln CarrSolnOf(gnss::RtkState s);
+
 struct ZedF9pConfig {
   std::string name = "f9p0";
   Duration output_lag = std::chrono::milliseconds(50);      ///< epoch → first byte ready (ours)
