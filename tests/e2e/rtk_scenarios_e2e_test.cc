@@ -103,6 +103,11 @@ TEST(RtkScenariosE2eTest, DualAntennaHeading) {
       EXPECT_EQ(Le(m.bytes, 21, 1, false) >> 6, 0) << "the absolute solution stays standalone";
     }
   }
+  const auto& heading = run.report["rtk_rover"]["heading"];
+  std::printf("dual_antenna_heading: %s\n", heading.dump().c_str());
+  EXPECT_EQ(heading["valid_epochs"].get<int>(), fixed + 4) << "fixed from 11.2 s";
+  EXPECT_LT(heading["rms_error_deg"].get<double>(), 2 * 0.41);
+  EXPECT_LT(heading["max_error_deg"].get<double>(), 4 * 0.41);
   EXPECT_TRUE(std::filesystem::exists(run.dir + "/plots/rtk_timeline.svg"));
   EXPECT_NE(ReadFile(run.dir + "/report.html").find("fig-rtk-timeline"), std::string::npos);
 }

@@ -1,5 +1,6 @@
 // The ZED-F9P as the rover of a moving base (dual-antenna heading): the moving base's frames on
 // UART2 and the baseline between the two antennas in NAV-RELPOSNED (zed_f9p_device.h).
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -55,6 +56,16 @@ void ZedF9pDevice::ApplyMovingBase(const TruthSample& truth, double dt_s, gnss::
                               : std::atan2(r.sigma_h_m, horizontal_m) * 180.0 / std::numbers::pi;
   last_.heading_valid =
       last_.relpos_valid && last_.acc_heading_deg <= config_.heading_valid_max_acc_deg;
+  if (!last_.heading_valid) return;
+  // what the heading is worth: against the truth of the baseline (the encoder's atan2)
+  const double err_deg =
+      std::remainder(std::atan2(rel_N.x(), rel_N.y()) - std::atan2(d_N.x(), d_N.y()),
+                     2 * std::numbers::pi) *
+      180.0 / std::numbers::pi;
+  ++stats_.heading_valid_epochs;
+  stats_.heading_error_sum_sq_deg2 += err_deg * err_deg;
+  stats_.heading_error_max_deg = std::max(stats_.heading_error_max_deg, std::abs(err_deg));
+  stats_.acc_heading_sum_deg += last_.acc_heading_deg;
 }
 
 }  // namespace hil::rtk

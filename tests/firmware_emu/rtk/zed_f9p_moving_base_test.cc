@@ -160,6 +160,24 @@ TEST(ZedF9pMovingBase, HeadingFollowsATurningVehicle) {
   EXPECT_EQ(checked, 48) << "fixed from 12 s to 59 s";
 }
 
+TEST(ZedF9pMovingBase, StatisticsMeasureTheHeadingAgainstTheTruth) {
+  ZedF9pDevice dev(DualAntennaRover(), 3);
+  const auto rel = RelposnedOf(RunTurning(dev, 30, [](double) { return 30.0; }));
+  const ZedF9pStatistics& s = dev.rover_statistics();
+  int valid = 0;
+  double sum_sq = 0;
+  for (const Relposned& r : rel) {
+    if (!r.heading_valid) continue;
+    ++valid;
+    sum_sq += std::pow(AngleDiff_deg(r.heading_deg, 30.0), 2);
+  }
+  EXPECT_EQ(s.heading_valid_epochs, static_cast<std::uint64_t>(valid));
+  EXPECT_EQ(valid, 18) << "fixed 12 s … 29 s";
+  // the statistics against the message's heading (1e-5° steps)
+  EXPECT_NEAR(std::sqrt(s.heading_error_sum_sq_deg2 / valid), std::sqrt(sum_sq / valid), 1e-4);
+  EXPECT_NEAR(s.acc_heading_sum_deg / valid, 0.4056, 0.01);
+}
+
 TEST(ZedF9pMovingBase, SlowWireMissesTheTimeMatchedObservations) {
   // at 38400 Bd the epoch's ~300 bytes take ~80 ms, after the rover's 50 ms output
   ZedF9pDevice dev(DualAntennaRover(38400), 3);

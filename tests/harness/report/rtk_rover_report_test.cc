@@ -6,6 +6,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 namespace hil::harness {
 namespace {
@@ -36,6 +37,22 @@ TEST(RtkRoverReport, NoChangeNoSeries) {
   const PlotChart c = RtkTimelineChart(RtkRoverReport{}, 60.0);
   EXPECT_TRUE(c.series.empty());
   EXPECT_NE(RenderSvg(c).find("no RTK state change"), std::string::npos);
+}
+
+TEST(RtkRoverReport, HeadingFiguresOnlyWithAMovingBase) {
+  RtkRoverReport r = CutTimeline();
+  EXPECT_FALSE(RtkRoverJson(r).contains("heading"));
+  r.heading_valid_epochs = 241;
+  r.heading_rms_error_deg = 0.21;
+  r.heading_max_error_deg = 0.5;
+  r.acc_heading_mean_deg = 0.41;
+  const nlohmann::json j = RtkRoverJson(r);
+  ASSERT_TRUE(j.contains("heading"));
+  EXPECT_EQ(j["heading"]["valid_epochs"].get<int>(), 241);
+  EXPECT_DOUBLE_EQ(j["heading"]["rms_error_deg"].get<double>(), 0.21);
+  std::string html;
+  AppendRtkRoverHtml(html, r);
+  EXPECT_NE(html.find("Dual-antenna heading: 241 epochs"), std::string::npos) << html;
 }
 
 }  // namespace

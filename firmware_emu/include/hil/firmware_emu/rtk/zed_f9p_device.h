@@ -107,6 +107,10 @@ struct RtkTransition {
 struct ZedF9pStatistics {
   std::uint64_t rtcm_frames = 0, rtcm_crc_failed = 0, epochs = 0;
   std::uint64_t epochs_fixed = 0, epochs_float = 0;
+  /// Moving base: epochs with relPosHeadingValid, and their heading error against the truth of
+  /// the baseline (relPosHeading − true heading).
+  std::uint64_t heading_valid_epochs = 0;
+  double heading_error_sum_sq_deg2 = 0, heading_error_max_deg = 0, acc_heading_sum_deg = 0;
 };
 
 class ZedF9pDevice final : public Device {

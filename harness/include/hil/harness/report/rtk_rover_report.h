@@ -28,6 +28,10 @@ struct RtkRoverReport {
   std::vector<RtkRoverChange> timeline;
   std::uint64_t epochs = 0, epochs_float = 0, epochs_fixed = 0;
   std::uint64_t rtcm_frames = 0, rtcm_crc_failed = 0;
+  /// Moving base (dual-antenna heading): epochs with relPosHeadingValid, the RMS and largest
+  /// error of relPosHeading against the truth of the baseline, the mean accHeading.
+  std::uint64_t heading_valid_epochs = 0;
+  double heading_rms_error_deg = 0, heading_max_error_deg = 0, acc_heading_mean_deg = 0;
 };
 
 RtkRoverReport MakeRtkRoverReport(const rtk::ZedF9pDevice& rover);
