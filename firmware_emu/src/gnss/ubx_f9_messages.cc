@@ -42,6 +42,20 @@ std::uint8_t PvtFlags(const F9Epoch& e) {
   return f;
 }
 
+std::uint32_t RelposFlags(const F9Epoch& e, bool rel_pos_valid) {
+  const bool fix_ok = e.nav.fix.valid();
+  std::uint32_t flags = 0;
+  if (fix_ok) flags |= 1U;                                    // gnssFixOK
+  if (fix_ok && e.rel_diff_soln) flags |= 1U << 1;            // diffSoln
+  if (rel_pos_valid) flags |= 1U << 2;                        // relPosValid
+  flags |= static_cast<std::uint32_t>(e.rel_carr_soln) << 3;  // carrSoln
+  if (e.is_moving) flags |= 1U << 5;                          // isMoving
+  if (e.ref_pos_miss) flags |= 1U << 6;                       // refPosMiss
+  if (e.ref_obs_miss) flags |= 1U << 7;                       // refObsMiss
+  if (rel_pos_valid && e.heading_valid) flags |= 1U << 8;     // relPosHeadingValid
+  return flags;
+}
+
 }  // namespace
 
 std::uint8_t LastCorrectionAgeCode(double age_s) {
@@ -136,16 +150,11 @@ std::vector<std::uint8_t> EncodeNavRelposned(const F9Epoch& e) {
   w.I1(n.fine).I1(east.fine).I1(d.fine).I1(len.fine);                 // 32 HP parts (0.1 mm)
   w.U4(F9RoundU(acc.x() * 1e4))
       .U4(F9RoundU(acc.y() * 1e4))
-      .U4(F9RoundU(acc.z() * 1e4));                 // 36 accNED
-  w.U4(F9RoundU(acc.norm() * 1e4)).U4(0).Zeros(4);  // 48 accLength, 52 accHeading, 56 reserved
-  std::uint32_t flags = 0;
-  if (e.nav.fix.valid()) flags |= 1U;                      // gnssFixOK
-  if (e.nav.fix.valid() && e.diff_soln) flags |= 1U << 1;  // diffSoln
-  if (ok) flags |= 1U << 2;                                // relPosValid
-  flags |= static_cast<std::uint32_t>(e.carr_soln) << 3;   // carrSoln
-  if (e.ref_pos_miss) flags |= 1U << 6;
-  if (e.ref_obs_miss) flags |= 1U << 7;
-  w.U4(flags);  // 60 flags
+      .U4(F9RoundU(acc.z() * 1e4));                           // 36 accNED
+  w.U4(F9RoundU(acc.norm() * 1e4));                           // 48 accLength
+  w.U4(ok ? F9RoundU(e.acc_heading_deg * 1e5) : 0).Zeros(4);  // 52 accHeading, 56 reserved
+  w.U4(RelposFlags(e, ok));                                   // 60 flags
+
   return w.bytes();
 }
 

@@ -38,6 +38,13 @@ BaseObservables::BaseObservables(const BaseObservablesConfig& config, double lat
       height_m_(height_m),
       rng_(seed ^ 0xBA5EBA5EULL) {}
 
+void BaseObservables::MoveTo(double lat_deg, double lon_deg, double height_m) {
+  antenna_E_m_ = gnss::EcefFromGeodetic(lat_deg, lon_deg, height_m);
+  lat_deg_ = lat_deg;
+  lon_deg_ = lon_deg;
+  height_m_ = height_m;
+}
+
 double BaseObservables::GeometricRange(const gnss::Constellation& sky, std::size_t index,
                                        double gps_s, Eigen::Vector3d& sat_E_m) const {
   double tau_s = 0.075;  // start near the mean GPS signal flight time

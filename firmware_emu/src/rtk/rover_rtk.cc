@@ -25,7 +25,7 @@ double RoverRtk::Age(Time t) const {
   return last_correction_ ? ToSeconds(t - *last_correction_) : -1.0;
 }
 
-void RoverRtk::Advance(Time t, bool valid) {
+void RoverRtk::Advance(Time t, bool valid, double baseline_m) {
   using gnss::RtkState;
   const double age = Age(t);
   const bool any = age >= 0 && age <= config_.dgnss_timeout_s;
@@ -50,7 +50,9 @@ void RoverRtk::Advance(Time t, bool valid) {
     converging_ = true;
     converge_since_ = t;
   }
-  if (config_.fixed_allowed && ToSeconds(t - converge_since_) >= config_.time_to_fix_s) {
+  const double time_to_fix_s =
+      config_.time_to_fix_s + config_.time_to_fix_per_km_s * baseline_m / 1000.0;
+  if (config_.fixed_allowed && ToSeconds(t - converge_since_) >= time_to_fix_s) {
     state_ = RtkState::kFixed;
     converging_ = false;
   }
@@ -61,7 +63,7 @@ RoverRtkEpoch RoverRtk::Step(Time t, double dt_s, bool valid, double baseline_m)
   const double q = std::sqrt(1.0 - phi * phi);
   for (int i = 0; i < 3; ++i) unit_[i] = phi * unit_[i] + q * normal_(rng_);
   started_ = true;
-  Advance(t, valid);
+  Advance(t, valid, baseline_m);
   RoverRtkEpoch out;
   out.state = state_;
   out.correction_age_s = Age(t);

@@ -1,15 +1,20 @@
 #include "hil/firmware_emu/rtk/rtcm3_bits.h"
 
+#include <algorithm>
+
 namespace hil::rtcm3 {
 
 void BitWriter::PutUnsigned(std::uint64_t value, int bits) {
-  for (int i = bits - 1; i >= 0; --i) {
-    if (bit_count_ % 8 == 0) bytes_.push_back('\0');
-    if ((value >> i) & 1U) {
-      const auto shift = static_cast<unsigned>(7 - bit_count_ % 8);
-      bytes_.back() = static_cast<char>(static_cast<unsigned char>(bytes_.back()) | (1U << shift));
-    }
-    ++bit_count_;
+  // the free bits of the last byte at a time, most significant first
+  while (bits > 0) {
+    const auto used = static_cast<int>(bit_count_ % 8);
+    if (used == 0) bytes_.push_back('\0');
+    const int take = std::min(8 - used, bits);
+    const auto chunk = static_cast<unsigned>((value >> (bits - take)) & ((1U << take) - 1U));
+    const auto shift = static_cast<unsigned>(8 - used - take);
+    bytes_.back() = static_cast<char>(static_cast<unsigned char>(bytes_.back()) | (chunk << shift));
+    bits -= take;
+    bit_count_ += static_cast<std::size_t>(take);
   }
 }
 

@@ -35,10 +35,10 @@ rtcm3::StationInfo RtkBaseDevice::station() const {
   return s;
 }
 
-rtcm3::MsmEpoch RtkBaseDevice::MsmOf(const std::vector<SatelliteObservation>& obs,
-                                     std::uint32_t tow_ms) const {
+rtcm3::MsmEpoch MsmEpochOf(const std::vector<SatelliteObservation>& obs, int station_id,
+                           std::uint32_t tow_ms) {
   rtcm3::MsmEpoch e;
-  e.station_id = config_.station_id;
+  e.station_id = station_id;
   e.epoch_time_ms = tow_ms;
   e.clock_steering = 1;  // the base clock is steered to GPS time (no clock term in the ranges)
   for (const SatelliteObservation& o : obs) {
@@ -73,7 +73,8 @@ std::vector<SerialMessage> RtkBaseDevice::EncodeEpoch(Time t) {
     out.push_back({t, 0, rtcm3::Frame(body), "RTCM3-" + std::to_string(config_.station_message)});
     next_station_ = t + config_.station_interval;
   }
-  last_msm_ = MsmOf(observables_.Observe(constellation_, gps_s), gps.itow_ms());
+  last_msm_ =
+      MsmEpochOf(observables_.Observe(constellation_, gps_s), config_.station_id, gps.itow_ms());
   const int number = 1070 + static_cast<int>(config_.msm);
   out.push_back({t, 0, rtcm3::Frame(rtcm3::EncodeGpsMsm(last_msm_, config_.msm)),
                  "RTCM3-" + std::to_string(number)});

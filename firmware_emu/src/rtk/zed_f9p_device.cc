@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "hil/firmware_emu/gnss/geodesy.h"
 #include "hil/firmware_emu/gnss/gps_time.h"
@@ -47,13 +48,13 @@ void MarkUsed(gnss::NavEpoch& e, bool valid) {
   for (const auto* s : used) e.used_in_channel_order.push_back(s->nmea_id());
 }
 
+}  // namespace
+
 CarrSoln CarrSolnOf(gnss::RtkState s) {
   return s == gnss::RtkState::kFixed   ? CarrSoln::kFixed
          : s == gnss::RtkState::kFloat ? CarrSoln::kFloat
                                        : CarrSoln::kNone;
 }
-
-}  // namespace
 
 gnss::ReceiverModelConfig F9pStandaloneModel() {
   gnss::ReceiverModelConfig m;
@@ -79,8 +80,14 @@ ZedF9pDevice::ZedF9pDevice(const ZedF9pConfig& config, std::uint64_t seed)
       db_.Handle(gnss::ubx::kCfgValset, valset).back().name != "UBX-ACK-ACK")
     throw std::invalid_argument("zed_f9p: the saved configuration holds an unknown key or value");
   db_.LoadStored();
+  if (config_.radio_base && config_.moving_base)
+    throw std::invalid_argument("zed_f9p: a radio base and a moving base both on UART2");
   if (config_.radio_base)
     radio_base_ = std::make_unique<RtkBaseDevice>(*config_.radio_base, config_.radio_base_seed);
+  if (config_.moving_base) {
+    moving_base_ = std::make_unique<MovingBase>(*config_.moving_base, config_.start_unix_ns,
+                                                seed ^ 0x4D4F56494E47ULL);
+  }
   next_epoch_ = NextGridEpoch(TimeFromNs(-1));
   fix_state_.Restart(Time{}, config_.start);
 }
@@ -120,6 +127,7 @@ void ZedF9pDevice::RunNavEpoch(const TruthSample& truth, DeviceOutput& out) {
   first_epoch_ = false;
   last_epoch_time_ = t;
   next_epoch_ = NextGridEpoch(t);
+  if (moving_base_) MovingBaseEpoch(truth);
   gnss::NavEpoch& e = last_.nav;
   const UnixTime utc = UtcAt(config_.start_utc, t);
   e.gps = gnss::GpsFrom(utc);
@@ -148,7 +156,10 @@ void ZedF9pDevice::RunNavEpoch(const TruthSample& truth, DeviceOutput& out) {
   fix.num_sv = valid ? usable : 0;
   fix.gdop = dops.gdop, fix.pdop = dops.pdop, fix.tdop = dops.tdop, fix.vdop = dops.vdop;
   fix.hdop = dops.hdop, fix.ndop = dops.ndop, fix.edop = dops.edop;
-  ApplyRtk(t, dt_s, fix);
+  if (moving_base_)
+    ApplyMovingBase(truth, dt_s, fix);
+  else
+    ApplyRtk(t, dt_s, fix);
   if (valid) position_known_ = true;
   e.position_known = position_known_;
   if (!valid && position_known_)
@@ -156,7 +167,7 @@ void ZedF9pDevice::RunNavEpoch(const TruthSample& truth, DeviceOutput& out) {
   e.fix = fix;
   e.leap_known = true;
   e.t_acc_ns = valid ? 20.0 + 15.0 * fix.tdop : 1.0e6;
-  FillRelPos();
+  if (!moving_base_) FillRelPos();
   ++epoch_count_;
   ++stats_.epochs;
   EmitEpoch(t + config_.output_lag, out);
@@ -192,6 +203,8 @@ void ZedF9pDevice::ApplyRtk(Time t, double dt_s, gnss::GnssFix& fix) {
 
 void ZedF9pDevice::FillRelPos() {
   const gnss::GnssFix& f = last_.nav.fix;
+  last_.rel_carr_soln = last_.carr_soln;
+  last_.rel_diff_soln = last_.diff_soln;
   last_.ref_pos_miss = !station_;
   last_.relpos_valid = station_.has_value() && last_.diff_soln;
   last_.ref_obs_miss = station_.has_value() && !last_.diff_soln;

@@ -23,13 +23,16 @@ void ZedF9pDevice::RadioEpoch(Time t) {
   // the base's packet, after its radio, reaches the modem's end and goes down the line to UART2
   DeviceOutput sent;
   radio_base_->OnEvent(TruthSample{.t = t}, sent);
-  const Duration byte_time = ByteTime(static_cast<std::uint64_t>(radio_base_->baud(0)));
-  // a UART2 set to another rate than the radio modem's line decodes nothing (framing errors)
-  const bool accept =
-      Enabled(key::kUart2InRtcm3) &&
-      db_.Get(key::kUart2Baudrate) == static_cast<std::uint64_t>(radio_base_->baud(0));
+  FeedUart2(sent.serial, radio_base_->baud(0));
+}
+
+Time ZedF9pDevice::FeedUart2(const std::vector<SerialMessage>& sent, int baud) {
+  const Duration byte_time = ByteTime(static_cast<std::uint64_t>(baud));
+  // a UART2 set to another rate than the line's decodes nothing (framing errors)
+  const bool accept = Enabled(key::kUart2InRtcm3) &&
+                      db_.Get(key::kUart2Baudrate) == static_cast<std::uint64_t>(baud);
   std::vector<rtcm3::ReceivedFrame> frames;
-  for (const SerialMessage& m : sent.serial) {
+  for (const SerialMessage& m : sent) {
     Time t_byte_end = std::max(m.t_ready, rx2_free_);
     for (const char c : m.bytes) {
       t_byte_end += byte_time;
@@ -41,26 +44,38 @@ void ZedF9pDevice::RadioEpoch(Time t) {
     }
     rx2_free_ = t_byte_end;
   }
+  return accept ? rx2_free_ : Time::max();
+}
+
+bool ZedF9pDevice::ReferenceKnown(int station_id) const {
+  return (station_ && station_id == station_->station_id) ||
+         (moving_ref_ && station_id == moving_ref_->station_id);
 }
 
 void ZedF9pDevice::Receive(Time t, const PendingFrame& p, DeviceOutput& out) {
   const int number = p.frame.message_number();
   ++stats_.rtcm_frames;
   bool used = false;
+  int ref_station = p.frame.station_id();  // 4072: the 12 bits after DF002 are its sub-type
   if (p.frame.crc_failed) {
     ++stats_.rtcm_crc_failed;
   } else if (number == 1005 || number == 1006) {
     station_ = rtcm3::DecodeStation(p.frame.body);
     used = true;
-  } else if (IsMsm(number) && station_ && p.frame.station_id() == station_->station_id) {
+  } else if (number == rtcm3::kMovingBaseMessage &&
+             rtcm3::Subtype4072(p.frame.body) == rtcm3::kMovingBaseSubtype &&
+             p.frame.body.size() == rtcm3::kMovingBasePvtBytes) {
+    moving_ref_ = rtcm3::Decode4072Pvt(p.frame.body);
+    ref_station = moving_ref_->station_id;
+    used = true;
+  } else if (IsMsm(number) && ReferenceKnown(p.frame.station_id())) {
     rtk_.OnCorrection(t);
     used = true;
   }
   if (!Enabled(key::kUart1OutUbx) || !Enabled(key::kRxmRtcmUart1)) return;
   Push(out, t,
-       gnss::ubx::Frame(
-           gnss::ubx::kRxm, gnss::ubx::kRxmRtcm,
-           gnss::ubx::EncodeRxmRtcm(number, p.frame.station_id(), p.frame.crc_failed, used)),
+       gnss::ubx::Frame(gnss::ubx::kRxm, gnss::ubx::kRxmRtcm,
+                        gnss::ubx::EncodeRxmRtcm(number, ref_station, p.frame.crc_failed, used)),
        "UBX-RXM-RTCM");
 }
 

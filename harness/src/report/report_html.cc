@@ -255,7 +255,11 @@ void WriteReportHtml(const RunReport& r, const ReportSeries& s, const RunHeader&
   AppendAccuracyHtml(h, r);
   AppendClosedLoopHtml(h, r);
   if (r.pass_to_pass) AppendPassToPassHtml(h, *r.pass_to_pass);
-  if (r.rtk_rover) AppendRtkRoverHtml(h, *r.rtk_rover);
+  if (r.rtk_rover) {
+    AppendRtkRoverHtml(h, *r.rtk_rover);
+    Figure(h, RtkTimelineChart(*r.rtk_rover, r.sim_time_s), dir, "plots/rtk_timeline.svg",
+           "The rover's RTK state over the run (report.json rtk_rover.timeline).");
+  }
   AppendOutagesHtml(h, r);
   AppendFaultEffectsHtml(h, r, s);
   AppendHealthHtml(h, r);

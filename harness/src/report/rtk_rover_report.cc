@@ -1,5 +1,7 @@
 #include "hil/harness/report/rtk_rover_report.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include <nlohmann/json.hpp>
@@ -27,6 +29,13 @@ RtkRoverReport MakeRtkRoverReport(const rtk::ZedF9pDevice& rover) {
   r.epochs_fixed = s.epochs_fixed;
   r.rtcm_frames = s.rtcm_frames;
   r.rtcm_crc_failed = s.rtcm_crc_failed;
+  r.heading_valid_epochs = s.heading_valid_epochs;
+  if (s.heading_valid_epochs > 0) {
+    const auto n = static_cast<double>(s.heading_valid_epochs);
+    r.heading_rms_error_deg = std::sqrt(s.heading_error_sum_sq_deg2 / n);
+    r.heading_max_error_deg = s.heading_error_max_deg;
+    r.acc_heading_mean_deg = s.acc_heading_sum_deg / n;
+  }
   return r;
 }
 
@@ -37,9 +46,43 @@ nlohmann::json RtkRoverJson(const RtkRoverReport& r) {
     e["correction_age_s"] = c.correction_age_s >= 0 ? nlohmann::json(c.correction_age_s) : nullptr;
     timeline.push_back(e);
   }
-  return {{"timeline", timeline},           {"epochs", r.epochs},
-          {"epochs_float", r.epochs_float}, {"epochs_fixed", r.epochs_fixed},
-          {"rtcm_frames", r.rtcm_frames},   {"rtcm_crc_failed", r.rtcm_crc_failed}};
+  nlohmann::json j = {{"timeline", timeline},           {"epochs", r.epochs},
+                      {"epochs_float", r.epochs_float}, {"epochs_fixed", r.epochs_fixed},
+                      {"rtcm_frames", r.rtcm_frames},   {"rtcm_crc_failed", r.rtcm_crc_failed}};
+  if (r.heading_valid_epochs > 0) {
+    j["heading"] = {{"valid_epochs", r.heading_valid_epochs},
+                    {"rms_error_deg", r.heading_rms_error_deg},
+                    {"max_error_deg", r.heading_max_error_deg},
+                    {"acc_heading_mean_deg", r.acc_heading_mean_deg}};
+  }
+  return j;
+}
+
+PlotChart RtkTimelineChart(const RtkRoverReport& r, double end_s) {
+  PlotChart c;
+  c.title = "RTK state of the rover (carrSoln)";
+  c.x_label = "t (s)";
+  c.y_label = "carrSoln: 0 none, 1 float, 2 fixed";
+  c.id = "rtk-timeline";
+  c.height_px = 240;
+  c.empty_note = "no RTK state change";
+  PlotSeries steps;
+  steps.label = "carrSoln";
+  for (const RtkRoverChange& k : r.timeline) {
+    if (!steps.y.empty()) {
+      steps.x.push_back(k.t_s);  // the previous state up to this change
+      steps.y.push_back(steps.y.back());
+    }
+    steps.x.push_back(k.t_s);
+    steps.y.push_back(k.carr_soln);
+  }
+  if (!steps.y.empty()) {
+    steps.x.push_back(std::max(end_s, steps.x.back()));
+    steps.y.push_back(steps.y.back());
+    c.series.push_back(std::move(steps));
+    c.range = PlotRange{0, std::max(end_s, 1.0), -0.2, 2.2};  // a chart with no state: empty
+  }
+  return c;
 }
 
 void AppendRtkRoverHtml(std::string& h, const RtkRoverReport& r) {
@@ -54,6 +97,14 @@ void AppendRtkRoverHtml(std::string& h, const RtkRoverReport& r) {
                 static_cast<unsigned long long>(r.rtcm_frames),
                 static_cast<unsigned long long>(r.rtcm_crc_failed));
   h += buf;
+  if (r.heading_valid_epochs > 0) {
+    std::snprintf(buf, sizeof buf,
+                  "<p>Dual-antenna heading: %llu epochs with relPosHeadingValid; error against the "
+                  "truth RMS %.3f&deg;, max %.3f&deg;; mean accHeading %.3f&deg;.</p>\n",
+                  static_cast<unsigned long long>(r.heading_valid_epochs), r.heading_rms_error_deg,
+                  r.heading_max_error_deg, r.acc_heading_mean_deg);
+    h += buf;
+  }
   h += "<table><tr><th>from t (s)</th><th>carrSoln</th><th>age of corrections (s)</th></tr>\n";
   for (const RtkRoverChange& c : r.timeline) {
     if (c.correction_age_s >= 0)

@@ -3,7 +3,8 @@
 // CRC-24Q fails: the corrupted-byte case shows the count catches it), each epoch holds our
 // satellites, the station position RTKLIB read from 1005/1006 is the surveyed ARP to < 1 mm, the
 // antenna height is 1006's, and RTKLIB's pseudoranges, phases, Dopplers and SNRs are the values
-// we encoded. Skips when convbin is not installed. (convbin's -trace 2 and above crash in Debian's
+// we encoded; the moving base's stream (4072.0 + MSM) decodes the same. Skips when convbin is not
+// installed. (convbin's -trace 2 and above crash in Debian's
 // 2.4.3 b34, so RTKLIB's own error messages cannot be read; the frame count stands for them.)
 #include <unistd.h>
 
@@ -16,7 +17,10 @@
 
 #include <gtest/gtest.h>
 
+#include "hil/firmware_emu/gnss/gps_time.h"
+#include "hil/firmware_emu/rtk/moving_base.h"
 #include "hil/firmware_emu/rtk/rtcm3_frame.h"
+#include "hil/firmware_emu/rtk/rtcm3_moving_base.h"
 #include "hil/firmware_emu/rtk/rtcm3_msm.h"
 
 #include "rtk_base_fixture.h"
@@ -78,6 +82,48 @@ RinexObs ReadRinex(const fs::path& file) {
   return r;
 }
 
+// Every MSM epoch `sent` is an epoch of `rnx` with the same satellites and RTKLIB's values are
+// those we encoded; returns the cells compared and the worst pseudorange error.
+std::pair<std::size_t, double> ExpectOurValues(const RinexObs& rnx,
+                                               const std::vector<rtcm3::MsmEpoch>& sent,
+                                               rtcm3::MsmKind kind) {
+  const std::map<int, std::string> sig = {{2, "1C"}, {10, "2W"}};
+  double worst_pr_m = 0;
+  std::size_t cells = 0;
+  for (const rtcm3::MsmEpoch& e : sent) {
+    const int sod = static_cast<int>((e.epoch_time_ms / 1000) % 86400);
+    if (!rnx.epochs.contains(sod)) {
+      ADD_FAILURE() << "epoch " << sod << " missing";
+      continue;
+    }
+    const auto& got = rnx.epochs.at(sod);
+    EXPECT_EQ(got.size(), e.satellites.size()) << "epoch " << sod;
+    for (const rtcm3::MsmSatellite& s : e.satellites) {
+      if (!got.contains(s.id)) {
+        ADD_FAILURE() << "G" << s.id << " at " << sod;
+        continue;
+      }
+      for (const rtcm3::MsmSignal& g : s.signals) {
+        const std::string code = sig.at(g.signal_id);
+        const double lambda = 299792458.0 / (g.signal_id == 2 ? 1575.42e6 : 1227.60e6);
+        const auto& v = got.at(s.id);
+        const double pr_err = std::abs(v.at("C" + code) - g.pseudorange_m);
+        worst_pr_m = std::max(worst_pr_m, pr_err);
+        EXPECT_LT(pr_err, 0.0006) << "C" << code << " G" << s.id;  // RINEX: 1 mm steps
+        EXPECT_NEAR(v.at("L" + code), g.phaserange_m / lambda, 0.0006 + 1e-6);
+        if (kind == rtcm3::MsmKind::kMsm7) {
+          EXPECT_NEAR(v.at("D" + code), -g.phaserange_rate_mps / lambda, 0.001);
+          EXPECT_NEAR(v.at("S" + code), g.cnr_dbhz, 0.25);  // RTKLIB keeps SNR in 0.25 dBHz
+        } else {
+          EXPECT_NEAR(v.at("S" + code), g.cnr_dbhz, 0.001);
+        }
+        ++cells;
+      }
+    }
+  }
+  return {cells, worst_pr_m};
+}
+
 class RtklibJudge : public ::testing::TestWithParam<rtcm3::MsmKind> {
  protected:
   void SetUp() override {
@@ -125,34 +171,7 @@ TEST_P(RtklibJudge, DecodesEveryFrameWithOurValuesAndStation) {
   EXPECT_LT(arp_error_m, 0.001) << "RTKLIB's station position is " << arp_error_m << " m off";
   EXPECT_NEAR(rnx.delta_h_m, c.station_message == 1006 ? 1.5 : 0.0, 1e-4);
   RecordProperty("arp_error_mm", std::to_string(arp_error_m * 1000));
-  const std::map<int, std::string> sig = {{2, "1C"}, {10, "2W"}};
-  double worst_pr_m = 0;
-  std::size_t cells = 0;
-  for (const rtcm3::MsmEpoch& e : sent) {
-    const int sod = static_cast<int>((e.epoch_time_ms / 1000) % 86400);
-    ASSERT_TRUE(rnx.epochs.contains(sod)) << "epoch " << sod << " missing";
-    const auto& got = rnx.epochs.at(sod);
-    ASSERT_EQ(got.size(), e.satellites.size()) << "epoch " << sod;
-    for (const rtcm3::MsmSatellite& s : e.satellites) {
-      ASSERT_TRUE(got.contains(s.id)) << "G" << s.id << " at " << sod;
-      for (const rtcm3::MsmSignal& g : s.signals) {
-        const std::string code = sig.at(g.signal_id);
-        const double lambda = 299792458.0 / (g.signal_id == 2 ? 1575.42e6 : 1227.60e6);
-        const auto& v = got.at(s.id);
-        const double pr_err = std::abs(v.at("C" + code) - g.pseudorange_m);
-        worst_pr_m = std::max(worst_pr_m, pr_err);
-        EXPECT_LT(pr_err, 0.0006) << "C" << code << " G" << s.id;  // RINEX: 1 mm steps
-        EXPECT_NEAR(v.at("L" + code), g.phaserange_m / lambda, 0.0006 + 1e-6);
-        if (GetParam() == rtcm3::MsmKind::kMsm7) {
-          EXPECT_NEAR(v.at("D" + code), -g.phaserange_rate_mps / lambda, 0.001);
-          EXPECT_NEAR(v.at("S" + code), g.cnr_dbhz, 0.25);  // RTKLIB keeps SNR in 0.25 dBHz
-        } else {
-          EXPECT_NEAR(v.at("S" + code), g.cnr_dbhz, 0.001);
-        }
-        ++cells;
-      }
-    }
-  }
+  const auto [cells, worst_pr_m] = ExpectOurValues(rnx, sent, GetParam());
   RecordProperty("cells_compared", std::to_string(cells));
   RecordProperty("worst_pseudorange_error_mm", std::to_string(worst_pr_m * 1000));
 }
@@ -168,6 +187,39 @@ TEST_P(RtklibJudge, AFrameWithABadCrcIsNotDecoded) {
   stream[at + 20] = static_cast<char>(stream[at + 20] ^ 0x10);
   EXPECT_EQ(rtcm3::Split(stream).crc_errors, 1U);
   EXPECT_EQ(Convert(stream, "corrupted").epochs.size(), 29U);
+}
+
+TEST_P(RtklibJudge, DecodesTheMovingBaseStream) {
+  // the moving base on a vehicle driving north at 3 m/s: 4072.0 (ours, proprietary to RTKLIB)
+  // before each MSM; RTKLIB skips the 4072 frames and decodes every MSM with our values
+  MovingBaseConfig c;
+  c.msm = GetParam();
+  c.p_BA_B_m = Eigen::Vector3d(1.2, -0.6, 2.8);
+  MovingBase mb(c, gnss::ParseIsoUtc("2026-06-10T08:00:00Z"), 5);
+  std::string stream;
+  for (int k = 0; k < kSeconds; ++k) {
+    TruthSample t;
+    t.t = TimeFromNs(k * 1000000000LL);
+    t.lat_deg = 35.4796096 + 3.0 * k / 111000.0;
+    t.lon_deg = 50.5979765;
+    t.height_m = 1312.0;
+    for (const SerialMessage& m : mb.Epoch(t)) stream += m.bytes;
+  }
+  std::vector<rtcm3::MsmEpoch> sent;
+  int pvt = 0;
+  for (const std::string& body : rtcm3::Split(stream).bodies) {
+    rtcm3::MsmKind kind{};
+    if (rtcm3::MessageNumber(body) == 1070 + static_cast<int>(GetParam()))
+      sent.push_back(rtcm3::DecodeGpsMsm(body, kind));
+    pvt += rtcm3::MessageNumber(body) == rtcm3::kMovingBaseMessage ? 1 : 0;
+  }
+  ASSERT_EQ(sent.size(), static_cast<std::size_t>(kSeconds));
+  EXPECT_EQ(pvt, kSeconds);
+  const RinexObs rnx = Convert(stream, "moving_base");
+  EXPECT_EQ(rnx.epochs.size(), sent.size());
+  const auto [cells, worst_pr_m] = ExpectOurValues(rnx, sent, GetParam());
+  EXPECT_GT(cells, 1000U);
+  RecordProperty("moving_base_worst_pseudorange_error_mm", std::to_string(worst_pr_m * 1000));
 }
 
 std::string KindName(const ::testing::TestParamInfo<rtcm3::MsmKind>& p) {

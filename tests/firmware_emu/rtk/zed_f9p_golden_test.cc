@@ -14,12 +14,14 @@
 #include "hil/firmware_emu/gnss/ubx_frame.h"
 
 #include "golden_file.h"
+#include "ubx_le_field.h"
 #include "zed_f9p_fixture.h"
 
 namespace hil::rtk {
 namespace {
 
 namespace key = gnss::ubx::f9key;
+using test::Le;
 
 std::string Hex(const std::string& b) {
   std::string s;
@@ -29,14 +31,6 @@ std::string Hex(const std::string& b) {
     s += buf;
   }
   return s;
-}
-
-std::int64_t Le(std::string_view p, std::size_t off, std::size_t n, bool is_signed) {
-  std::uint64_t v = 0;
-  for (std::size_t k = 0; k < n; ++k)
-    v |= static_cast<std::uint64_t>(static_cast<unsigned char>(p[off + k])) << (8 * k);
-  if (is_signed && n < 8 && (v >> (8 * n - 1) & 1U) != 0) v |= ~0ULL << (8 * n);
-  return static_cast<std::int64_t>(v);
 }
 
 // NAV-PVT's fields as the interface description lays them out.

@@ -20,6 +20,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "gpsdecode_tpv.h"
 #include "zed_f9p_fixture.h"
 
 namespace hil::rtk {
@@ -28,29 +29,7 @@ namespace {
 namespace fs = std::filesystem;
 namespace key = gnss::ubx::f9key;
 
-constexpr const char* kGpsdecode = "/usr/bin/gpsdecode";
-
 // gpsdecode -j over the bytes; its TPV reports.
-std::vector<nlohmann::json> Decode(const std::string& bytes, const std::string& tag) {
-  const fs::path file = fs::temp_directory_path() / ("zed_f9p_" + tag + std::to_string(getpid()));
-  std::ofstream(file, std::ios::binary) << bytes;
-  std::vector<nlohmann::json> tpv;
-  FILE* p = popen((std::string(kGpsdecode) + " -j < " + file.string()).c_str(), "r");
-  std::string line;
-  for (int c = 0; p != nullptr && (c = fgetc(p)) != EOF;) {
-    if (c != '\n') {
-      line.push_back(static_cast<char>(c));
-      continue;
-    }
-    const auto j = nlohmann::json::parse(line, nullptr, false);
-    if (!j.is_discarded() && j.value("class", "") == "TPV") tpv.push_back(j);
-    line.clear();
-  }
-  if (p != nullptr) pclose(p);
-  fs::remove(file);
-  return tpv;
-}
-
 std::string Capture(std::vector<std::pair<std::uint32_t, std::uint64_t>> flash) {
   ZedF9pConfig c = test::RoverWithRadio();
   c.flash = std::move(flash);
@@ -66,8 +45,8 @@ double Seconds(const nlohmann::json& tpv) {
 }
 
 TEST(ZedF9pGpsdJudge, DecodesNavPvtAndRelposned) {
-  if (access(kGpsdecode, X_OK) != 0) GTEST_SKIP() << "gpsdecode not installed";
-  const auto tpv = Decode(
+  if (!test::GpsdecodeInstalled()) GTEST_SKIP() << "gpsdecode not installed";
+  const auto tpv = test::GpsdecodeTpv(
       Capture({{key::kNavPvtUart1, 1}, {key::kNavRelposnedUart1, 1}, {key::kUart1OutNmea, 0}}),
       "ubx");
   // gpsd reports a TPV per message and carries fields over: count seconds, not reports
@@ -102,13 +81,13 @@ TEST(ZedF9pGpsdJudge, DecodesNavPvtAndRelposned) {
 }
 
 TEST(ZedF9pGpsdJudge, DecodesGgaRtkQuality) {
-  if (access(kGpsdecode, X_OK) != 0) GTEST_SKIP() << "gpsdecode not installed";
+  if (!test::GpsdecodeInstalled()) GTEST_SKIP() << "gpsdecode not installed";
   // RMC gives gpsd the date (GGA has the time of day only); GGA comes after it in an epoch
-  const auto tpv = Decode(Capture({{key::kNmeaVtgUart1, 0},
-                                   {key::kNmeaGsaUart1, 0},
-                                   {key::kNmeaGsvUart1, 0},
-                                   {key::kNmeaGllUart1, 0}}),
-                          "gga");
+  const auto tpv = test::GpsdecodeTpv(Capture({{key::kNmeaVtgUart1, 0},
+                                               {key::kNmeaGsaUart1, 0},
+                                               {key::kNmeaGsvUart1, 0},
+                                               {key::kNmeaGllUart1, 0}}),
+                                      "gga");
   std::map<double, nlohmann::json> last;  // the epoch's last report: GGA's
   for (const auto& j : tpv) last[Seconds(j)] = j;
   std::set<double> seconds;

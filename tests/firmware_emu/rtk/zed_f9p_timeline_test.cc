@@ -128,6 +128,26 @@ TEST(ZedF9pTimeline, FixedAccuracyGrowsWithTheBaseline) {
   EXPECT_NEAR(ef.sigma_h_m * 1.1774, 0.030, 1e-6);
 }
 
+TEST(ZedF9pTimeline, TimeToFixGrowsWithTheBaselineWhenConfigured) {
+  RoverRtkConfig c;
+  c.time_to_fix_per_km_s = 1.0;
+  RoverRtk near(c, 1), far(c, 1);
+  std::optional<int> fixed_near, fixed_far;
+  for (int k = 1; k <= 60; ++k) {
+    near.OnCorrection(TimeFromSeconds(k - 0.5));
+    far.OnCorrection(TimeFromSeconds(k - 0.5));
+    if (near.Step(TimeFromSeconds(k), 1.0, true, 2e3).state == gnss::RtkState::kFixed &&
+        !fixed_near)
+      fixed_near = k;
+    if (far.Step(TimeFromSeconds(k), 1.0, true, 20e3).state == gnss::RtkState::kFixed && !fixed_far)
+      fixed_far = k;
+  }
+  // float at 2 s (1 s after the first correction at 0.5 s, on the epoch grid); then 10 s + 1 s/km
+  ASSERT_TRUE(fixed_near && fixed_far);
+  EXPECT_EQ(*fixed_near, 2 + 12);
+  EXPECT_EQ(*fixed_far, 2 + 30);
+}
+
 TEST(ZedF9pTimeline, RxmRtcmAndRelposned) {
   ZedF9pConfig c = test::RoverWithRadio();
   c.flash = {{key::kRxmRtcmUart1, 1}, {key::kNavRelposnedUart1, 1}, {key::kUart1OutNmea, 0}};

@@ -85,6 +85,30 @@ TEST(ScenarioZedF9pTest, BadValuesNameTheirField) {
   ExpectError(std::string(kBase) + "zed_f9p: {corrections: ntrip}\n", "zed_f9p.corrections", "");
 }
 
+TEST(ScenarioZedF9pTest, MovingBaseKeys) {
+  const Scenario s = ParseScenario(
+      "name: t\nduration_s: 10\norigin: {lat_deg: 35, lon_deg: 50, height_m: 0}\n"
+      "zed_f9p:\n"
+      "  corrections: moving_base\n"
+      "  antenna_lever_arm_m: [1.2, 0.6, 2.8]\n"
+      "  moving_base_antenna_m: [1.2, -0.6, 2.8]\n"
+      "  moving_base_baud: 230400\n"
+      "  heading_valid_max_acc_deg: 2\n"
+      "  time_to_fix_per_km_s: 0.5\n",
+      "s.yaml");
+  const ZedF9pDeviceSpec& f = s.zed_f9p;
+  EXPECT_EQ(f.corrections, F9pCorrections::kMovingBase);
+  ASSERT_TRUE(f.config.moving_base.has_value()) << "no rtk_base needed";
+  EXPECT_DOUBLE_EQ(f.config.moving_base->p_BA_B_m.y(), -0.6);
+  EXPECT_EQ(f.config.moving_base->baud, 230400);
+  EXPECT_EQ(f.config.heading_valid_max_acc_deg, 2.0);
+  EXPECT_EQ(f.config.rtk.time_to_fix_per_km_s, 0.5);
+  ExpectError(
+      "name: t\nduration_s: 10\norigin: {lat_deg: 35, lon_deg: 50, height_m: 0}\n"
+      "zed_f9p: {corrections: moving_base, antenna_lever_arm_m: [0, 0, 0.05]}\n",
+      "zed_f9p.moving_base_antenna_m", "0.1 m apart");
+}
+
 TEST(ScenarioZedF9pTest, TheRunHasTheRoverOnItsPty) {
   const Scenario s = ParseScenario(std::string(kBase) + "zed_f9p: {}\n", "s.yaml");
   const std::string dir =

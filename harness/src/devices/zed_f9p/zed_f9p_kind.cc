@@ -39,7 +39,9 @@ constexpr std::string_view kZedF9pSections[] = {"zed_f9p"};
 std::string ZedF9pProfile(const Scenario& s) {
   const char* src = s.zed_f9p.corrections == F9pCorrections::kRadio  ? "base radio on UART2"
                     : s.zed_f9p.corrections == F9pCorrections::kHost ? "host RTCM on UART1"
-                                                                     : "no corrections";
+                    : s.zed_f9p.corrections == F9pCorrections::kMovingBase
+                        ? "moving base on UART2 (dual-antenna heading)"
+                        : "no corrections";
   return ProfileText("u-blox ZED-F9P class (HPG 1.32, protocol 27.31), %s; fix %g s, age %g s", src,
                      s.zed_f9p.config.rtk.time_to_fix_s, s.zed_f9p.config.rtk.fixed_max_age_s);
 }

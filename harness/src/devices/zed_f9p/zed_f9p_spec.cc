@@ -14,21 +14,31 @@ namespace zed_f9p_keys {  // named: the unity build joins the devices' files
 
 using enum KeyType;
 
-inline constexpr std::array<std::string_view, 3> kCorrections{"radio", "host", "none"};
+inline constexpr std::array<std::string_view, 4> kCorrections{"radio", "host", "none",
+                                                              "moving_base"};
 
 inline constexpr ScenarioKey kZedF9p[] = {
     {"link", kString, "", "ttyF9P", 0, 0, "its pty in the run folder (UART1; a plain file name)"},
     {"corrections", kChoice, "", "radio", 0, 0,
      "radio: the rtk_base's radio stream on UART2 (needs rtk_base); host: RTCM 3 the host writes "
-     "to UART1 (an NTRIP client); none",
+     "to UART1 (an NTRIP client); none; moving_base: a second F9P on the vehicle sending 4072.0 "
+     "and MSM7 into UART2 (dual-antenna heading in NAV-RELPOSNED)",
      kCorrections},
     {"antenna_lever_arm_m", kPoint, "m", "[0, 0, 0]", 0, 0,
      "the antenna in the body frame [forward, left, up]"},
+    {"moving_base_antenna_m", kPoint, "m", "[0, 0, 0]", 0, 0,
+     "moving base: its antenna in the body frame [forward, left, up]"},
+    {"moving_base_baud", kInteger, "Bd", "460800", 9600, 921600,
+     "moving base: the wire between the UART2s (ours); set CFG-UART2-BAUDRATE to match"},
+    {"heading_valid_max_acc_deg", kNumber, "deg", "5", 0, 180,
+     "moving base: relPosHeadingValid while accHeading is at most this (ours)"},
     {"output_lag_s", kNumber, "s", "0.05", 0, 1, "epoch to its first byte (ours)"},
     {"time_to_float_s", kNumber, "s", "1", 0, 600,
      "corrections flowing to float (ours: the receiver documents none)"},
     {"time_to_fix_s", kNumber, "s", "10", 0, 3600,
      "float to fixed with fresh corrections (data sheet: convergence < 10 s)"},
+    {"time_to_fix_per_km_s", kNumber, "s/km", "0", 0, 600,
+     "added to time_to_fix_s per km of baseline (ours: the receiver documents none)"},
     {"fixed_max_age_s", kNumber, "s", "5", 0.1, 600,
      "fixed held while the age of corrections stays at most this (ours)"},
     {"fixed_cep_m", kNumber, "m", "0.01", 0, 10,
@@ -106,12 +116,24 @@ void ReadConfig(const YamlReader& y, rtk::ZedF9pConfig& c) {
 void ReadRtk(const KeyedReader<kZedF9p>& r, rtk::RoverRtkConfig& k) {
   k.time_to_float_s = r.Number("time_to_float_s", k.time_to_float_s);
   k.time_to_fix_s = r.Number("time_to_fix_s", k.time_to_fix_s);
+  k.time_to_fix_per_km_s = r.Number("time_to_fix_per_km_s", k.time_to_fix_per_km_s);
   k.fixed_max_age_s = r.Number("fixed_max_age_s", k.fixed_max_age_s);
   k.fixed_cep_m = r.Number("fixed_cep_m", k.fixed_cep_m);
   k.fixed_ppm = r.Number("fixed_ppm", k.fixed_ppm);
   k.float_sigma_start_m = r.Number("float_sigma_start_m", k.float_sigma_start_m);
   k.float_sigma_end_m = r.Number("float_sigma_end_m", k.float_sigma_end_m);
   k.float_convergence_s = r.Number("float_convergence_s", k.float_convergence_s);
+}
+
+void ReadMovingBase(const KeyedReader<kZedF9p>& r, rtk::ZedF9pConfig& c) {
+  rtk::MovingBaseConfig mb;
+  const auto arm = r.Doubles("moving_base_antenna_m", 3, {0, 0, 0});
+  mb.p_BA_B_m = Eigen::Vector3d(arm[0], arm[1], arm[2]);
+  mb.baud = static_cast<int>(r.Integer("moving_base_baud", mb.baud));
+  c.moving_base = mb;
+  c.heading_valid_max_acc_deg = r.Number("heading_valid_max_acc_deg", c.heading_valid_max_acc_deg);
+  if ((mb.p_BA_B_m - c.model.p_BA_B_m).norm() < 0.1)
+    r.Fail("moving_base_antenna_m", "the two antennas are less than 0.1 m apart");
 }
 
 }  // namespace
@@ -134,6 +156,7 @@ void ReadZedF9pSpec(const YamlReader& root, Scenario& s) {
   c.model.p_BA_B_m = Eigen::Vector3d(lever[0], lever[1], lever[2]);
   c.output_lag = DurationFromSeconds(r.Number("output_lag_s", ToSeconds(c.output_lag)));
   ReadRtk(r, c.rtk);
+  if (f.corrections == F9pCorrections::kMovingBase) ReadMovingBase(r, c);
   if (auto cfg = r.OptionalChild("config")) ReadConfig(*cfg, c);
   f.tx_buffer_bytes = static_cast<std::size_t>(
       r.Integer("tx_buffer_bytes", static_cast<std::int64_t>(f.tx_buffer_bytes)));

@@ -33,6 +33,13 @@ struct F9Epoch {
   Eigen::Vector3d rel_pos_NED_m = Eigen::Vector3d::Zero();  ///< rover antenna − base ARP
   Eigen::Vector3d rel_acc_NED_m = Eigen::Vector3d::Zero();  ///< 1-sigma per axis
   bool ref_pos_miss = false, ref_obs_miss = false;
+  /// RELPOSNED's own carrSoln and diffSoln: the absolute solution's with a fixed base; with a
+  /// moving base, those of the baseline (the absolute solution stays standalone).
+  CarrSoln rel_carr_soln = CarrSoln::kNone;
+  bool rel_diff_soln = false;
+  bool is_moving = false;      ///< moving-base mode (RELPOSNED isMoving)
+  bool heading_valid = false;  ///< relPosHeadingValid
+  double acc_heading_deg = 0;  ///< accHeading (1-sigma); 0 when not computed
 };
 
 /// NAV-PVT (92 bytes).
@@ -42,7 +49,9 @@ std::vector<std::uint8_t> EncodeNavHpposllh(const F9Epoch& e);
 /// NAV-SAT (version 1; 8 + 12 × satellites bytes). With differential corrections the used GPS
 /// satellites are flagged diffCorr, rtcmCorrUsed, prCorrUsed and crCorrUsed.
 std::vector<std::uint8_t> EncodeNavSat(const F9Epoch& e);
-/// NAV-RELPOSNED (64 bytes, version 1).
+/// NAV-RELPOSNED (64 bytes, version 1): flags bit 0 gnssFixOK, 1 diffSoln, 2 relPosValid, 3–4
+/// carrSoln, 5 isMoving, 6 refPosMiss, 7 refObsMiss, 8 relPosHeadingValid, 9 relPosNormalized
+/// (never set here); relPosHeading and accHeading (1e-5 deg) at 24 and 52.
 std::vector<std::uint8_t> EncodeNavRelposned(const F9Epoch& e);
 /// RXM-RTCM (8 bytes, version 2) for one RTCM message received: its number (msgType), its
 /// reference station, whether its CRC failed and whether it was used (msgUsed 2) or not (1).

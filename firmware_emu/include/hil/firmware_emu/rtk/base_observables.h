@@ -83,6 +83,9 @@ class BaseObservables {
   BaseObservables(const BaseObservablesConfig& config, double lat_deg, double lon_deg,
                   double height_m, std::uint64_t seed);
   const Eigen::Vector3d& antenna_E_m() const { return antenna_E_m_; }
+  /// Moves the antenna (a moving base): the next Observe() ranges from there. The range rate
+  /// keeps the satellite's motion only (the antenna's own velocity is not in it).
+  void MoveTo(double lat_deg, double lon_deg, double height_m);
   /// Observations at GPS time `gps_s` (s since the GPS epoch), sorted by PRN. Call with
   /// non-decreasing times: tracking state (ambiguities, lock times) carries over.
   std::vector<SatelliteObservation> Observe(const gnss::Constellation& sky, double gps_s);

@@ -17,7 +17,8 @@
 ///    float `time_to_float_s` later (carrSoln 1, GGA 5);
 ///  - float for `time_to_fix_s` while a ≤ `fixed_max_age_s` → fixed (carrSoln 2, GGA 4), unless
 ///    CFG-NAVHPG-DGNSSMODE is 2 (float only). The ZED-F9P data sheet gives an RTK convergence
-///    time "< 10 s" (u-blox UBX-17051259): the default 10 s is that bound;
+///    time "< 10 s" (u-blox UBX-17051259): the default 10 s is that bound; plus
+///    `time_to_fix_per_km_s` per km of baseline (default 0, ours);
 ///  - fixed while a ≤ `fixed_max_age_s`; then float (the convergence starts over when fresh
 ///    corrections return); float while a ≤ `dgnss_timeout_s`, then 3-D.
 /// `fixed_max_age_s` (5 s) and `time_to_float_s` (1 s) are ours: the receiver documents neither.
@@ -42,6 +43,10 @@ namespace hil::rtk {
 struct RoverRtkConfig {
   double time_to_float_s = 1.0;
   double time_to_fix_s = 10.0;
+  /// Added to time_to_fix_s per km of baseline (0: none). The decorrelation of the atmosphere
+  /// between base and rover lengthens the ambiguity search; no receiver documents by how much,
+  /// so the value is the scenario's (ours).
+  double time_to_fix_per_km_s = 0.0;
   double fixed_max_age_s = 5.0;
   double dgnss_timeout_s = 60.0;
   bool fixed_allowed = true;  ///< CFG-NAVHPG-DGNSSMODE 3 (2: float only)
@@ -68,7 +73,7 @@ class RoverRtk {
 
  private:
   double Age(Time t) const;
-  void Advance(Time t, bool valid);
+  void Advance(Time t, bool valid, double baseline_m);
   RoverRtkConfig config_;
   std::mt19937_64 rng_;
   std::normal_distribution<double> normal_{0.0, 1.0};

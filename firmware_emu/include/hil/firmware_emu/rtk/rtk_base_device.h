@@ -53,6 +53,10 @@ struct RtkBaseStatistics {
   std::uint64_t packets_lost = 0, frames_lost = 0;
 };
 
+/// The MSM epoch of a base's observations (clock steered to GPS time; signals by MSM id).
+rtcm3::MsmEpoch MsmEpochOf(const std::vector<SatelliteObservation>& obs, int station_id,
+                           std::uint32_t tow_ms);
+
 class RtkBaseDevice final : public Device {
  public:
   RtkBaseDevice(const RtkBaseConfig& config, std::uint64_t seed);
@@ -72,7 +76,6 @@ class RtkBaseDevice final : public Device {
 
  private:
   Time NextGridEpoch(Time after) const;
-  rtcm3::MsmEpoch MsmOf(const std::vector<SatelliteObservation>& obs, std::uint32_t tow_ms) const;
 
   RtkBaseConfig config_;
   gnss::Constellation constellation_;

@@ -27,6 +27,20 @@
 /// CFG-RATE…), which the real F9 still accepts as deprecated, are NAKed here (not implemented).
 /// Corrections count for the RTK state when a base observation message (MSM) passes its CRC and
 /// a station message (1005/1006) has given the base position (before it: refPosMiss).
+///
+/// Moving base (dual-antenna heading, `moving_base`): a second F9P on the vehicle (MovingBase)
+/// sends 4072.0 and an MSM each epoch down a wire into UART2; RoverRtk runs on its corrections
+/// with the antenna separation as baseline, and RELPOSNED gives the vector from the moving
+/// base's antenna to the rover's (truth + the RTK error) with isMoving, its heading and
+/// accHeading. The absolute solution (NAV-PVT, GGA) stays standalone: carrSoln 0. As the
+/// integration manual (UBX-18010802 §3.1.5) describes the rover: relPosValid only when the
+/// epoch's time-matched observations arrived in time — here, when the epoch's MSM has its last
+/// byte in UART2 by the epoch's output (`output_lag`); otherwise refObsMiss and refPosMiss.
+/// relPosHeadingValid "unless the length of the relative position vector and/or its accuracy are
+/// not sufficient": here when accHeading ≤ `heading_valid_max_acc_deg`.
+/// Heading accuracy (ours, geometry): the error across the baseline of horizontal length L,
+/// 1-sigma σ_h per axis, turns it by accHeading = atan(σ_h / L); fixed, σ_h = (CEP 0.01 m +
+/// 1 ppm × L) / 1.1774 (the data sheet's RTK accuracy, RoverRtk): 0.41° at L = 1.2 m.
 
 #include <cstdint>
 #include <deque>
@@ -42,7 +56,9 @@
 #include "hil/firmware_emu/gnss/ubx_f9_config.h"
 #include "hil/firmware_emu/gnss/ubx_f9_messages.h"
 #include "hil/firmware_emu/gnss/ubx_frame.h"
+#include "hil/firmware_emu/rtk/moving_base.h"
 #include "hil/firmware_emu/rtk/rover_rtk.h"
+#include "hil/firmware_emu/rtk/rtcm3_moving_base.h"
 #include "hil/firmware_emu/rtk/rtcm3_station.h"
 #include "hil/firmware_emu/rtk/rtcm3_stream.h"
 #include "hil/firmware_emu/rtk/rtk_base_device.h"
@@ -52,6 +68,9 @@ namespace hil::rtk {
 /// The standalone error grade of a ZED-F9P: horizontal 1.5 m CEP (data sheet, UBX-17051259) →
 /// per-axis sigma 1.27 m; vertical 1.6 × that (ours: the NEO-5M grade's vdop_ref/hdop_ref ratio).
 gnss::ReceiverModelConfig F9pStandaloneModel();
+
+/// The carrSoln of an RTK state (NAV-PVT, NAV-RELPOSNED).
+gnss::ubx::CarrSoln CarrSolnOf(gnss::RtkState s);
 
 struct ZedF9pConfig {
   std::string name = "f9p0";
@@ -71,6 +90,10 @@ struct ZedF9pConfig {
   /// Sky outages (start ≤ t < end): no satellite received, no fix; afterwards the receiver
   /// re-acquires (FixState) and the RTK solution converges again (float, then fixed).
   std::vector<std::pair<Time, Time>> sky_outages;
+  /// A moving base on the vehicle feeding UART2 (excludes `radio_base`).
+  std::optional<MovingBaseConfig> moving_base;
+  /// relPosHeadingValid when accHeading is at most this (ours: the receiver documents no bound).
+  double heading_valid_max_acc_deg = 5.0;
 };
 
 /// One RTK state change, for the report's timeline.
@@ -84,6 +107,10 @@ struct RtkTransition {
 struct ZedF9pStatistics {
   std::uint64_t rtcm_frames = 0, rtcm_crc_failed = 0, epochs = 0;
   std::uint64_t epochs_fixed = 0, epochs_float = 0;
+  /// Moving base: epochs with relPosHeadingValid, and their heading error against the truth of
+  /// the baseline (relPosHeading − true heading).
+  std::uint64_t heading_valid_epochs = 0;
+  double heading_error_sum_sq_deg2 = 0, heading_error_max_deg = 0, acc_heading_sum_deg = 0;
 };
 
 class ZedF9pDevice final : public Device {
@@ -110,6 +137,11 @@ class ZedF9pDevice final : public Device {
   Time NextGridEpoch(Time after) const;
   void RunNavEpoch(const TruthSample& truth, DeviceOutput& out);
   void RadioEpoch(Time t);
+  /// Feeds a serial stream of `baud` into UART2; returns when its last byte arrived.
+  Time FeedUart2(const std::vector<SerialMessage>& sent, int baud);
+  void MovingBaseEpoch(const TruthSample& truth);
+  void ApplyMovingBase(const TruthSample& truth, double dt_s, gnss::GnssFix& fix);
+  bool ReferenceKnown(int station_id) const;
   void Receive(Time t, const PendingFrame& p, DeviceOutput& out);
   void ApplyRtk(Time t, double dt_s, gnss::GnssFix& fix);
   void FillRelPos();
@@ -130,6 +162,9 @@ class ZedF9pDevice final : public Device {
   gnss::ubx::InputParser parser_;
   rtcm3::StreamParser uart1_rtcm_, uart2_rtcm_;
   std::unique_ptr<RtkBaseDevice> radio_base_;
+  std::unique_ptr<MovingBase> moving_base_;
+  std::optional<rtcm3::MovingBasePvt> moving_ref_;  // the last 4072.0 received
+  bool moving_matched_ = false;       // this epoch's moving-base MSM arrived before the output
   std::deque<PendingFrame> pending_;  // frames in arrival order, handled at their time
   std::optional<rtcm3::StationInfo> station_;
   Time next_epoch_{}, last_epoch_time_{}, rx1_free_{}, rx2_free_{}, last_ready_{};

@@ -10,6 +10,8 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "hil/harness/report/svg_plot.h"
+
 namespace hil::rtk {
 class ZedF9pDevice;
 }
@@ -26,11 +28,18 @@ struct RtkRoverReport {
   std::vector<RtkRoverChange> timeline;
   std::uint64_t epochs = 0, epochs_float = 0, epochs_fixed = 0;
   std::uint64_t rtcm_frames = 0, rtcm_crc_failed = 0;
+  /// Moving base (dual-antenna heading): epochs with relPosHeadingValid, the RMS and largest
+  /// error of relPosHeading against the truth of the baseline, the mean accHeading.
+  std::uint64_t heading_valid_epochs = 0;
+  double heading_rms_error_deg = 0, heading_max_error_deg = 0, acc_heading_mean_deg = 0;
 };
 
 RtkRoverReport MakeRtkRoverReport(const rtk::ZedF9pDevice& rover);
 nlohmann::json RtkRoverJson(const RtkRoverReport& r);
 /// The HTML section: the epochs per state and the timeline as a table.
 void AppendRtkRoverHtml(std::string& html, const RtkRoverReport& r);
+/// The timeline as a step chart: carrSoln (0 none, 1 float, 2 fixed) from each change to the
+/// next, the last state held to `end_s` (the run's emulated end).
+PlotChart RtkTimelineChart(const RtkRoverReport& r, double end_s);
 
 }  // namespace hil::harness

@@ -130,11 +130,12 @@ struct RtkBaseDeviceSpec {
 };
 
 /// Where a ZED-F9P rover's corrections come from (section `zed_f9p:` key `corrections`).
-enum class F9pCorrections { kRadio, kHost, kNone };
+enum class F9pCorrections { kRadio, kHost, kNone, kMovingBase };
 
 /// A ZED-F9P-class RTK rover (section `zed_f9p:`, devices/zed_f9p/; absent → none): UBX and NMEA
 /// on its own pty (UART1), the `rtk_base`'s radio on its UART2 (corrections: radio), or RTCM the
-/// host writes to UART1 (corrections: host, an NTRIP client).
+/// host writes to UART1 (corrections: host, an NTRIP client), or a moving base on the vehicle
+/// wired to UART2 (corrections: moving_base; dual-antenna heading in NAV-RELPOSNED).
 struct ZedF9pDeviceSpec {
   bool enabled = false;
   std::string link = "ttyF9P";  ///< symlink name in the run folder
