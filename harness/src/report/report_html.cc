@@ -179,7 +179,8 @@ constexpr const char* kStyle =
     "td.flagged{background:#b00020!important;color:#fff;font-weight:bold}"
     "td.flagged-note{background:#e69f00!important;color:#000;font-weight:bold}"
     "figure{margin:1em 0;page-break-inside:avoid;break-inside:avoid}"
-    "figure svg{width:100%;height:auto;border:1px solid #ddd}figcaption{font-size:12px;color:#555}"
+    "figure svg{max-width:100%;height:auto;border:1px solid "
+    "#ddd}figcaption{font-size:12px;color:#555}"
     "section{page-break-inside:auto}.sign td{height:2.4em;width:20em}"
     "@media print{body{max-width:none;margin:0;font-size:11px}a{color:inherit}"
     "h2{page-break-after:avoid;break-after:avoid}}";
