@@ -221,7 +221,7 @@ void AppendFiguresHtml(std::string& h, const RunReport& r, const ReportSeries& s
                 Cdf(s.estimate_cdf, "estimate", kEstimateColor)};
   Figure(h, cdf, dir, "plots/error_cdf.svg", "");
   if (r.tracking) {
-    Figure(h, SteeringChart(s), dir, "plots/steering.svg", "");
+    if (const auto steering = SteeringChart(s)) Figure(h, *steering, dir, "plots/steering.svg", "");
     std::vector<std::string> files;
     WriteClosedLoopPlots(r, s, dir, files);  // the closed loop's own plot files
   }

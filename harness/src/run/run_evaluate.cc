@@ -379,12 +379,19 @@ void EvaluateClosedLoop(RunContext& ctx, const TruthTable& truth) {
 // Closed loop: the planned path and the base's control ticks, for the plots.
 void AddClosedLoopSeries(const RunContext& ctx, ReportSeries& series) {
   series.path_en_m = ReadPathVertices(ctx.scenario.closed_loop.path_file);  // read at load
-  if (!ctx.set.base) return;
   constexpr double kDeg = 180.0 / std::numbers::pi;
-  for (const actuator::BaseTickRecord& k : ctx.set.base->ticks()) {
-    series.tick_t_s.push_back(ToSeconds(k.t));
-    series.commanded_yaw_rate_dps.push_back(k.commanded_yaw_rate_radps * kDeg);
-    series.actual_yaw_rate_dps.push_back(k.yaw_rate_radps * kDeg);
+  if (ctx.set.base) {
+    for (const actuator::BaseTickRecord& k : ctx.set.base->ticks()) {
+      series.tick_t_s.push_back(ToSeconds(k.t));
+      series.commanded_yaw_rate_dps.push_back(k.commanded_yaw_rate_radps * kDeg);
+      series.actual_yaw_rate_dps.push_back(k.yaw_rate_radps * kDeg);
+    }
+  } else if (ctx.set.steering) {
+    for (const actuator::SteeringTickRecord& k : ctx.set.steering->ticks()) {
+      series.tick_t_s.push_back(ToSeconds(k.t));
+      series.commanded_steer_deg.push_back(k.commanded_steer_rad * kDeg);
+      series.actual_steer_deg.push_back(k.steer_rad * kDeg);
+    }
   }
 }
 
