@@ -25,9 +25,10 @@ struct Line {
 std::vector<Line> Lines(const json& summary, const std::string& metric) {
   std::vector<Line> lines;
   for (const auto& g : summary.value("groups", json::array())) {
-    Line l{g.value("id", ""), {}};
+    const std::string id = g.value("id", ""), settings = GroupSettingsText(g);
+    Line l{settings.empty() ? id : id + ": " + settings, {}};
     for (const auto& r : summary.value("runs", json::array())) {
-      if (r.value("group", "") != l.label || !r.contains("metric_table")) continue;
+      if (r.value("group", "") != id || !r.contains("metric_table")) continue;
       const json v = r["metric_table"].value(metric, json(nullptr));
       if (v.is_number()) l.x.push_back(v.get<double>());
     }

@@ -70,6 +70,26 @@ TEST(CampaignReportTest, EveryRunLinksToItsOwnReport) {
       << md;
 }
 
+// A sweep's groups are "a__p0", "a__p1": the report says which field values each one ran with,
+// in a table of the groups and in the CDF plots' legends.
+TEST(CampaignReportTest, GroupsSayTheirSweepPoint) {
+  json s = Summary(1);
+  s["groups"][0]["scenario_file"] = "vectors/scenarios/a.yaml";
+  s["groups"][0]["runs"] = 2;
+  s["groups"][0]["passed"] = 2;
+  s["groups"][0]["settings"] = {{{"field", "gnss.errors.horizontal_sigma_m"}, {"value", "0.15"}},
+                                {{"field", "gnss.rate_hz"}, {"value", "5"}}};
+  const std::string html = CampaignHtml(s);
+  EXPECT_NE(html.find("<h2>Groups</h2>"), std::string::npos) << html;
+  EXPECT_NE(html.find("<tr><td>a</td><td>vectors/scenarios/a.yaml</td><td>"
+                      "gnss.errors.horizontal_sigma_m = 0.15, gnss.rate_hz = 5</td>"),
+            std::string::npos)
+      << html;
+  EXPECT_NE(html.find("<td>b</td><td></td><td>the scenario as written</td>"), std::string::npos);
+  EXPECT_NE(CdfSvg(s, "horizontal_rmse_m").find("a: gnss.errors.horizontal_sigma_m = 0.15"),
+            std::string::npos);
+}
+
 // The x axis tick labels of a CDF plot (11-pt labels centred under the axis).
 std::vector<double> XTicks(const std::string& svg) {
   std::vector<double> out;
