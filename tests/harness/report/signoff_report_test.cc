@@ -153,6 +153,13 @@ TEST_F(SignoffReportTest, NeesFortyAndHeadingSixAndAHalfStandOut) {
   EXPECT_NE(h.find("<td>heading_rmse_deg</td><td class=\"flagged\">6.5</td>"), std::string::npos);
   // the accuracy table marks the same cells
   EXPECT_NE(h.find("<td>heading_rmse_deg</td><td class=\"flagged\">6.500</td>"), std::string::npos);
+  // and the verdict at a glance says there are two to review, linking to them (a PASS with a
+  // red NEES further down read as clean at a glance)
+  const std::size_t verdict = h.find("Verdict at a glance"), review = h.find("id=\"review\"");
+  const std::size_t link = h.find("<a class=\"review\" href=\"#review\">2 value(s) outside");
+  ASSERT_NE(link, std::string::npos);
+  EXPECT_LT(verdict, link);
+  EXPECT_LT(link, review);
 }
 
 TEST_F(SignoffReportTest, ValuesInsideTheirBandAreNotFlagged) {
