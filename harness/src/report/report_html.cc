@@ -140,6 +140,34 @@ void AppendAccuracyHtml(std::string& h, const RunReport& r) {
        "time of validity.</p></section>\n";
 }
 
+// Closed loop on ISO 11783-7: what the steering ECU and its transport saw.
+void AppendSteeringEcuHtml(std::string& h, const SteeringEcuReport& e) {
+  char buf[768];
+  std::snprintf(buf, sizeof buf,
+                "<h3>Steering ECU (ISO 11783-7 over %s)</h3>\n<table class=\"kv\">"
+                "<tr><th>guidance frames from the controller / lost</th><td>%llu / %llu</td></tr>"
+                "<tr><th>commands accepted / refused (length, source, range)</th>"
+                "<td>%llu / %llu, %llu, %llu</td></tr>"
+                "<tr><th>engagements / engaged at the end</th><td>%llu / %s</td></tr>"
+                "<tr><th>watchdog trips</th><td%s>%llu</td></tr>"
+                "<tr><th>last exit reason</th><td%s>%s</td></tr>"
+                "<tr><th>road-wheel angle RMS error (actual - target)</th><td>%.3f deg</td></tr>"
+                "</table>\n",
+                XmlEscape(e.transport).c_str(),
+                static_cast<unsigned long long>(e.frames_from_controller),
+                static_cast<unsigned long long>(e.frames_lost),
+                static_cast<unsigned long long>(e.commands_accepted),
+                static_cast<unsigned long long>(e.wrong_length),
+                static_cast<unsigned long long>(e.unknown_source),
+                static_cast<unsigned long long>(e.out_of_range),
+                static_cast<unsigned long long>(e.engagements), e.engaged ? "yes" : "no",
+                e.watchdog_trips > 0 ? " class=\"flagged\"" : "",
+                static_cast<unsigned long long>(e.watchdog_trips),
+                e.exit_reason_code != 0 ? " class=\"flagged-note\"" : "",
+                XmlEscape(e.exit_reason).c_str(), e.commanded_steer_rms_error_deg);
+  h += buf;
+}
+
 // Closed loop: what the controller and the actuator did.
 void AppendClosedLoopHtml(std::string& h, const RunReport& r) {
   if (!r.closed_loop) return;
@@ -163,6 +191,7 @@ void AppendClosedLoopHtml(std::string& h, const RunReport& r) {
                 static_cast<unsigned long long>(c.watchdog_trips), c.final_speed_mps,
                 c.stopped ? "stopped" : "moving");
   h += buf;
+  if (c.steering_ecu) AppendSteeringEcuHtml(h, *c.steering_ecu);
   h += "</section>\n";
 }
 
