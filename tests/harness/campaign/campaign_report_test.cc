@@ -91,6 +91,23 @@ TEST(CampaignReportTest, GroupsSayTheirSweepPoint) {
             std::string::npos);
 }
 
+// The campaign report says what was run: the campaign file, the seeds, the form and the hil
+// that merged it (it began with the verdict alone).
+TEST(CampaignReportTest, SaysWhatWasRun) {
+  json s = Summary(1);
+  s["campaign"] = "grade-sweep";
+  s["scenario_dir"] = "vectors/campaigns/grade.yaml";
+  s["seeds"] = 2;
+  s["short_form"] = true;
+  const std::string html = CampaignHtml(s);
+  EXPECT_NE(html.find("<h2>What was run</h2>"), std::string::npos);
+  EXPECT_NE(html.find("<tr><th>campaign file</th><td>vectors/campaigns/grade.yaml</td></tr>"),
+            std::string::npos);
+  EXPECT_NE(html.find("<tr><th>seeds per group</th><td>2</td></tr>"), std::string::npos);
+  EXPECT_NE(html.find("<tr><th>form</th><td>short"), std::string::npos);
+  EXPECT_NE(html.find("<tr><th>merged by</th><td>hil "), std::string::npos);
+}
+
 // The x axis tick labels of a CDF plot (11-pt labels centred under the axis).
 std::vector<double> XTicks(const std::string& svg) {
   std::vector<double> out;
