@@ -59,6 +59,7 @@ void IsobusSteeringDevice::ControlTick(Time t) {
     engaged_error_sq_sum_rad2_ += e * e;
     ++engaged_ticks_;
   }
+  tick_tap_(rec);
 }
 
 void IsobusSteeringDevice::Send(DeviceOutput& ecu_out, DeviceOutput& out) {

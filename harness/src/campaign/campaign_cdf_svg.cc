@@ -14,6 +14,7 @@ namespace {
 using nlohmann::json;
 
 constexpr double kW = 640, kH = 320, kLeft = 60, kRight = 20, kTop = 30, kBottom = 40;
+constexpr double kLegendGap = 12;  // below the axis label (at kH - 8), above the first legend row
 constexpr const char* kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd",
                                     "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
 
@@ -25,9 +26,10 @@ struct Line {
 std::vector<Line> Lines(const json& summary, const std::string& metric) {
   std::vector<Line> lines;
   for (const auto& g : summary.value("groups", json::array())) {
-    Line l{g.value("id", ""), {}};
+    const std::string id = g.value("id", ""), settings = GroupSettingsText(g);
+    Line l{settings.empty() ? id : id + ": " + settings, {}};
     for (const auto& r : summary.value("runs", json::array())) {
-      if (r.value("group", "") != l.label || !r.contains("metric_table")) continue;
+      if (r.value("group", "") != id || !r.contains("metric_table")) continue;
       const json v = r["metric_table"].value(metric, json(nullptr));
       if (v.is_number()) l.x.push_back(v.get<double>());
     }
@@ -59,14 +61,18 @@ std::string Axes(double lo, double hi, const std::string& metric, double height,
                   SvgNum(kW - kLeft - kRight) + "\" height=\"" + SvgNum(plot_h) +
                   "\" fill=\"none\" stroke=\"#333\"/>\n";
   char b[256];
-  for (int i = 0; i <= 4; ++i) {
-    const double fx = kLeft + (kW - kLeft - kRight) * i / 4.0;
+  // x ticks: on a log axis five at equal ratios; on a linear one at round values (1, 2, 5 x 10^k)
+  std::vector<double> ticks = log ? std::vector<double>{} : NiceTicks(lo, hi, 5);
+  for (int i = 0; log && i <= 4; ++i) ticks.push_back(lo + (hi - lo) * i / 4.0);
+  for (const double v : ticks) {
+    const double fx = kLeft + (kW - kLeft - kRight) * (v - lo) / (hi - lo);
     std::snprintf(
         b, sizeof b,
         "<text x=\"%.2f\" y=\"%.2f\" font-size=\"11\" text-anchor=\"middle\">%.3g</text>\n", fx,
-        kTop + plot_h + 15,
-        log ? std::pow(10.0, lo + (hi - lo) * i / 4.0) : lo + (hi - lo) * i / 4.0);
+        kTop + plot_h + 15, log ? std::pow(10.0, v) : (std::abs(v) < 1e-12 ? 0.0 : v));
     s += b;
+  }
+  for (int i = 0; i <= 4; ++i) {
     const double fy = kTop + plot_h * (1.0 - i / 4.0);
     std::snprintf(b, sizeof b,
                   "<text x=\"%.2f\" y=\"%.2f\" font-size=\"11\" text-anchor=\"end\">%.2f</text>\n",
@@ -95,7 +101,7 @@ std::string CdfSvg(const json& summary, const std::string& metric) {
     lo = std::min(lo, axis(l.x.front())), hi = std::max(hi, axis(l.x.back()));
   const double pad = hi > lo ? 0.05 * (hi - lo) : std::max(0.5, 0.1 * std::abs(lo));
   lo -= pad, hi += pad;
-  const double height = kH + 14.0 * static_cast<double>(lines.size());
+  const double height = kH + kLegendGap + 14.0 * static_cast<double>(lines.size());
   const double plot_h = kH - kTop - kBottom, plot_w = kW - kLeft - kRight;
   const auto px = [&](double x) { return kLeft + plot_w * (axis(x) - lo) / (hi - lo); };
   const auto py = [&](double f) { return kTop + plot_h * (1.0 - f); };
@@ -114,7 +120,7 @@ std::string CdfSvg(const json& summary, const std::string& metric) {
     d += " H" + SvgNum(kLeft + plot_w);
     s += std::string("<path fill=\"none\" stroke=\"") + colour + "\" stroke-width=\"1.5\" d=\"" +
          d + "\"/>\n";
-    const double ly = kH + 14.0 * static_cast<double>(i);
+    const double ly = kH + kLegendGap + 14.0 * static_cast<double>(i);
     s += std::string("<rect x=\"") + SvgNum(kLeft) + "\" y=\"" + SvgNum(ly - 8) +
          "\" width=\"12\" height=\"3\" fill=\"" + colour + "\"/><text x=\"" + SvgNum(kLeft + 18) +
          "\" y=\"" + SvgNum(ly) + "\" font-size=\"11\">" + XmlEscape(l.label) + " (" +

@@ -1,9 +1,11 @@
 #include "hil/harness/campaign/campaign_report.h"
 
 #include <cstdio>
+#include <set>
 
 #include "hil/harness/campaign/campaign_stats.h"
 #include "hil/harness/campaign/suite_report.h"
+#include "hil/harness/core/build_info.h"
 #include "hil/harness/report/markdown.h"
 #include "hil/harness/report/report.h"
 
@@ -131,7 +133,59 @@ std::string Verdict(const json& summary) {
   return b;
 }
 
+// What was run: the campaign file, its scenarios, seeds and form, and the hil that merged it
+// (nothing of the machine or the time: a merge is the same bytes wherever and whenever it runs).
+std::string WhatWasRunHtml(const json& summary) {
+  std::set<std::string> files;
+  for (const auto& g : summary.value("groups", json::array()))
+    files.insert(g.value("scenario_file", ""));
+  const auto row = [](const std::string& key, const std::string& value) {
+    return "<tr><th>" + key + "</th><td>" + XmlEscape(value) + "</td></tr>";
+  };
+  std::string h = "<h2>What was run</h2>\n<table class=\"kv\">";
+  h += row("campaign", summary.value("campaign", ""));
+  h += row("campaign file", summary.value("scenario_dir", ""));
+  h += row("scenario files", std::to_string(files.size()));
+  h += row("groups (scenario x sweep point)",
+           std::to_string(summary.value("groups", json::array()).size()));
+  h += row("seeds per group", std::to_string(summary.value("seeds", 0)));
+  h += row("form", summary.value("short_form", false) ? "short (each scenario's short: form)"
+                                                      : "full length");
+  h += row("runs planned", std::to_string(summary.value("runs_planned", 0)));
+  h += row("merged by", "hil " + std::string(HilVersion()) + ", commit " +
+                            std::string(HilCommit()) + " (each run's report.html names its own)");
+  return h + "</table>\n";
+}
+
+// The groups: each one's scenario file and sweep point, and how many of its runs passed (the
+// group ids' "__p0", "__p1" say nothing by themselves).
+std::string GroupsHtml(const json& summary) {
+  std::string h =
+      "<h2>Groups</h2>\n<table>\n<tr><th>group</th><th>scenario file</th>"
+      "<th>sweep point</th><th>runs</th><th>passed</th></tr>\n";
+  for (const auto& g : summary.value("groups", json::array())) {
+    const int runs = g.value("runs", 0), passed = g.value("passed", 0);
+    const std::string settings = GroupSettingsText(g);
+    h += "<tr><td>" + XmlEscape(g.value("id", "")) + "</td><td>" +
+         XmlEscape(g.value("scenario_file", "")) + "</td><td>" +
+         (settings.empty() ? "the scenario as written" : XmlEscape(settings)) + "</td><td>" +
+         std::to_string(runs) + "</td><td" + (passed < runs ? " class=\"fail\"" : "") + ">" +
+         std::to_string(passed) + "</td></tr>\n";
+  }
+  return h + "</table>\n";
+}
+
 }  // namespace
+
+std::string GroupSettingsText(const json& group) {
+  std::string s;
+  for (const auto& f : group.value("settings", json::array())) {
+    const json& v = f.value("value", json(nullptr));
+    s += (s.empty() ? "" : ", ") + f.value("field", "") + " = " +
+         (v.is_string() ? v.get<std::string>() : v.dump());
+  }
+  return s;
+}
 
 std::string CampaignMarkdown(const json& summary) {
   std::string md = SuiteMarkdown(summary);
@@ -171,9 +225,14 @@ std::string CampaignHtml(const json& summary) {
       XmlEscape(summary.value("title", "")) +
       "</title>\n<style>body{font-family:sans-serif;margin:2em}table{border-collapse:collapse;"
       "margin-bottom:1em}td,th{border:1px solid #aaa;padding:2px 6px;font-size:13px}"
-      "td.fail{background:#fdd}</style></head><body>\n";
-  h += "<h1>" + XmlEscape(summary.value("title", "")) + "</h1>\n<p>" + XmlEscape(Verdict(summary)) +
-       " Campaign verdict: <b>" + (summary.value("pass", false) ? "PASS" : "FAIL") + "</b></p>\n";
+      "td.fail{background:#fdd}table.kv "
+      "th{text-align:left;background:#f4f4f4}.pass{color:#176317}.fail{color:#b00020}</style></"
+      "head><body>\n";
+  const bool pass = summary.value("pass", false);
+  h += "<h1>" + XmlEscape(summary.value("title", "")) + " <span class=\"" +
+       (pass ? "pass\">PASS" : "fail\">FAIL") + "</span></h1>\n<p>" + XmlEscape(Verdict(summary)) +
+       " Campaign verdict: <b>" + (pass ? "PASS" : "FAIL") + "</b></p>\n";
+  h += WhatWasRunHtml(summary) + GroupsHtml(summary);
   if (!summary.value("complete", false))
     h += "<p class=\"fail\">Runs missing: " + XmlEscape(Joined(summary["missing_runs"], 50)) +
          "</p>\n";

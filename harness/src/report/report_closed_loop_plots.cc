@@ -1,8 +1,10 @@
 // Closed loop's plots in report.html: the planned path with the truth and the estimate, the
 // truth's cross-track error against the distance along the path, and the commanded against the
-// actual steering (a differential-drive base: yaw rate) at each control tick.
+// actual steering (a differential-drive base: yaw rate; a steering ECU: road-wheel angle) at each
+// control tick.
 #include <fstream>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 
 #include "hil/harness/report/report_html.h"
@@ -10,17 +12,20 @@
 
 namespace hil::harness {
 
-PlotChart SteeringChart(const ReportSeries& s) {
+std::optional<PlotChart> SteeringChart(const ReportSeries& s) {
+  const bool yaw = !s.commanded_yaw_rate_dps.empty();
+  if (!yaw && s.commanded_steer_deg.empty()) return std::nullopt;
   PlotChart c;
   c.id = "steering";
-  c.title = "Steering: commanded against actual yaw rate (control ticks)";
+  c.title = yaw ? "Steering: commanded against actual yaw rate (control ticks)"
+                : "Steering: commanded against actual road-wheel angle (control ticks)";
   c.x_label = "time (s)";
-  c.y_label = "yaw rate, + left (deg/s)";
+  c.y_label = yaw ? "yaw rate, + left (deg/s)" : "road-wheel angle, + left (deg)";
   PlotSeries cmd = NamedSeries("commanded", "#d62728"), act = NamedSeries("actual", "#1f77b4");
   cmd.x = s.tick_t_s;
-  cmd.y = s.commanded_yaw_rate_dps;
+  cmd.y = yaw ? s.commanded_yaw_rate_dps : s.commanded_steer_deg;
   act.x = s.tick_t_s;
-  act.y = s.actual_yaw_rate_dps;
+  act.y = yaw ? s.actual_yaw_rate_dps : s.actual_steer_deg;
   c.series = {cmd, act};
   return c;
 }
@@ -49,7 +54,8 @@ void WriteClosedLoopPlots(const RunReport& r, const ReportSeries& s, const std::
     c.series = {x};
     WritePlot(c, dir, "plots/cross_track.svg", files);
   }
-  WritePlot(SteeringChart(s), dir, "plots/steering.svg", files);
+  if (const auto steering = SteeringChart(s))
+    WritePlot(*steering, dir, "plots/steering.svg", files);
 }
 
 }  // namespace hil::harness

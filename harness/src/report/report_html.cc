@@ -140,6 +140,34 @@ void AppendAccuracyHtml(std::string& h, const RunReport& r) {
        "time of validity.</p></section>\n";
 }
 
+// Closed loop on ISO 11783-7: what the steering ECU and its transport saw.
+void AppendSteeringEcuHtml(std::string& h, const SteeringEcuReport& e) {
+  char buf[768];
+  std::snprintf(buf, sizeof buf,
+                "<h3>Steering ECU (ISO 11783-7 over %s)</h3>\n<table class=\"kv\">"
+                "<tr><th>guidance frames from the controller / lost</th><td>%llu / %llu</td></tr>"
+                "<tr><th>commands accepted / refused (length, source, range)</th>"
+                "<td>%llu / %llu, %llu, %llu</td></tr>"
+                "<tr><th>engagements / engaged at the end</th><td>%llu / %s</td></tr>"
+                "<tr><th>watchdog trips</th><td%s>%llu</td></tr>"
+                "<tr><th>last exit reason</th><td%s>%s</td></tr>"
+                "<tr><th>road-wheel angle RMS error (actual - target)</th><td>%.3f deg</td></tr>"
+                "</table>\n",
+                XmlEscape(e.transport).c_str(),
+                static_cast<unsigned long long>(e.frames_from_controller),
+                static_cast<unsigned long long>(e.frames_lost),
+                static_cast<unsigned long long>(e.commands_accepted),
+                static_cast<unsigned long long>(e.wrong_length),
+                static_cast<unsigned long long>(e.unknown_source),
+                static_cast<unsigned long long>(e.out_of_range),
+                static_cast<unsigned long long>(e.engagements), e.engaged ? "yes" : "no",
+                e.watchdog_trips > 0 ? " class=\"flagged\"" : "",
+                static_cast<unsigned long long>(e.watchdog_trips),
+                e.exit_reason_code != 0 ? " class=\"flagged-note\"" : "",
+                XmlEscape(e.exit_reason).c_str(), e.commanded_steer_rms_error_deg);
+  h += buf;
+}
+
 // Closed loop: what the controller and the actuator did.
 void AppendClosedLoopHtml(std::string& h, const RunReport& r) {
   if (!r.closed_loop) return;
@@ -163,6 +191,7 @@ void AppendClosedLoopHtml(std::string& h, const RunReport& r) {
                 static_cast<unsigned long long>(c.watchdog_trips), c.final_speed_mps,
                 c.stopped ? "stopped" : "moving");
   h += buf;
+  if (c.steering_ecu) AppendSteeringEcuHtml(h, *c.steering_ecu);
   h += "</section>\n";
 }
 
@@ -172,14 +201,16 @@ constexpr const char* kStyle =
     "table{border-collapse:collapse;margin:.6em 0}td,th{border:1px solid #ccc;padding:3px 8px;"
     "text-align:left;vertical-align:top}table.kv>tbody>tr>th{background:#f4f4f4;width:13em}"
     "table.inner td,table.inner th{border:1px solid #ddd;padding:1px 6px;background:#fff}"
-    ".pass{color:#176317;font-weight:bold}.fail{color:#b00020;font-weight:bold}"
+    "a.review{color:#b00020;font-weight:bold}.pass{color:#176317;font-weight:bold}.fail{color:#"
+    "b00020;font-weight:bold}"
     ".verdict{display:inline-block;font-size:28px;padding:4px 18px;border:3px solid;"
     "border-radius:6px;margin:.2em 0}"
     "tr.flag-severe td{background:#fde7ea}tr.flag-note td{background:#fff4d6}"
     "td.flagged{background:#b00020!important;color:#fff;font-weight:bold}"
     "td.flagged-note{background:#e69f00!important;color:#000;font-weight:bold}"
     "figure{margin:1em 0;page-break-inside:avoid;break-inside:avoid}"
-    "figure svg{width:100%;height:auto;border:1px solid #ddd}figcaption{font-size:12px;color:#555}"
+    "figure svg{max-width:100%;height:auto;border:1px solid "
+    "#ddd}figcaption{font-size:12px;color:#555}"
     "section{page-break-inside:auto}.sign td{height:2.4em;width:20em}"
     "@media print{body{max-width:none;margin:0;font-size:11px}a{color:inherit}"
     "h2{page-break-after:avoid;break-after:avoid}}";
@@ -220,7 +251,7 @@ void AppendFiguresHtml(std::string& h, const RunReport& r, const ReportSeries& s
                 Cdf(s.estimate_cdf, "estimate", kEstimateColor)};
   Figure(h, cdf, dir, "plots/error_cdf.svg", "");
   if (r.tracking) {
-    Figure(h, SteeringChart(s), dir, "plots/steering.svg", "");
+    if (const auto steering = SteeringChart(s)) Figure(h, *steering, dir, "plots/steering.svg", "");
     std::vector<std::string> files;
     WriteClosedLoopPlots(r, s, dir, files);  // the closed loop's own plot files
   }

@@ -103,6 +103,7 @@ PlotChart MapChart(const RunReport& r, const ReportSeries& s) {
                   w->t_worst_s);
     c.boxes.push_back({w->range, label});
   }
+  FitSizeToData(c);  // the frame takes the field's shape: a long narrow field is drawn tall
   return c;
 }
 

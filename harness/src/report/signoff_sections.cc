@@ -219,10 +219,15 @@ void AppendRunHeaderHtml(std::string& h, const RunReport& r, const RunHeader& he
 void AppendVerdictHtml(std::string& h, const RunReport& r) {
   std::size_t failed = 0;
   for (const auto& c : r.criteria) failed += c.pass ? 0 : 1;
+  const std::size_t flags = ReviewFlags(r).size();  // a pass may still carry values to review
   h += "<section><h2>Verdict at a glance</h2>\n<p class=\"verdict " +
        std::string(r.pass() ? "pass\">PASS" : "fail\">FAIL") + "</p><p>" +
        std::to_string(r.criteria.size() - failed) + " of " + std::to_string(r.criteria.size()) +
-       " criteria met; " + std::to_string(r.problems.size()) + " run problem(s).</p>\n";
+       " criteria met; " + std::to_string(r.problems.size()) + " run problem(s); " +
+       (flags == 0 ? std::string("no value outside its band")
+                   : "<a class=\"review\" href=\"#review\">" + std::to_string(flags) +
+                         " value(s) outside their band to review</a>") +
+       ".</p>\n";
   h += "<table><tr><th>criterion</th><th>what it means</th><th>bound</th><th>value</th>"
        "<th>result</th></tr>\n";
   for (const auto& c : r.criteria) {
@@ -248,7 +253,7 @@ void AppendVerdictHtml(std::string& h, const RunReport& r) {
 
 void AppendReviewHtml(std::string& h, const RunReport& r) {
   const std::vector<ReviewFlag> flags = ReviewFlags(r);
-  h += "<section><h2>Values outside their band</h2>\n";
+  h += "<section id=\"review\"><h2>Values outside their band</h2>\n";
   if (flags.empty()) {
     h += "<p>None: every mean NEES is inside its chi-square band, no accuracy figure is worse "
          "than the raw fixes' by more than " +

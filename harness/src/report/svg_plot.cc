@@ -91,28 +91,36 @@ PlotRange DataExtent(const PlotChart& c, bool& empty) {
 PlotFrame AreaOf(const PlotChart& c) {
   const double W = c.width_px, H = c.height_px;
   const std::size_t entries = c.series.size() + (c.bands.empty() ? 0 : 1) + c.y_bands.size();
-  const double ml = 70, mr = 20, mt = 36, mb = 52 + 18.0 * static_cast<double>((entries + 2) / 3);
+  const std::size_t columns = static_cast<std::size_t>(std::max(1, c.legend_columns));
+  const double ml = 70, mr = 20, mt = 36;
+  const double mb = 52 + 18.0 * static_cast<double>((entries + columns - 1) / columns);
   return {ml, mt, W - ml - mr, H - mt - mb, 0, 1, 0, 1, false};
 }
 
-// The frame of `c`: its range, or every fitted point and band, padded (equal scales when asked).
-PlotFrame FitFrame(const PlotChart& c) {
-  PlotFrame f = AreaOf(c);
-  bool empty = false;
+// `range` when set, else every fitted point and band, padded (not yet widened for equal scales).
+PlotRange PaddedRange(const PlotChart& c, bool& empty) {
   PlotRange r = DataExtent(c, empty);
   if (c.range) {
     r = *c.range;
     if (c.y_log)
       r.y0 = std::log10(std::max(r.y0, 1e-300)), r.y1 = std::log10(std::max(r.y1, 1e-300));
     empty = false;
-  } else {
-    if (c.y_from_zero && !c.y_log) r.y0 = std::min(0.0, r.y0);
-    if (r.x1 - r.x0 < 1e-9) r.x0 -= 0.5, r.x1 += 0.5;
-    if (r.y1 - r.y0 < 1e-9) r.y0 -= 0.5, r.y1 += 0.5;
-    const double padx = (r.x1 - r.x0) * 0.03, pady = (r.y1 - r.y0) * 0.05;
-    r.x0 -= padx, r.x1 += padx, r.y1 += pady;
-    if (!c.y_from_zero || c.y_log) r.y0 -= pady;
+    return r;
   }
+  if (c.y_from_zero && !c.y_log) r.y0 = std::min(0.0, r.y0);
+  if (r.x1 - r.x0 < 1e-9) r.x0 -= 0.5, r.x1 += 0.5;
+  if (r.y1 - r.y0 < 1e-9) r.y0 -= 0.5, r.y1 += 0.5;
+  const double padx = (r.x1 - r.x0) * 0.03, pady = (r.y1 - r.y0) * 0.05;
+  r.x0 -= padx, r.x1 += padx, r.y1 += pady;
+  if (!c.y_from_zero || c.y_log) r.y0 -= pady;
+  return r;
+}
+
+// The frame of `c`: its range, or every fitted point and band, padded (equal scales when asked).
+PlotFrame FitFrame(const PlotChart& c) {
+  PlotFrame f = AreaOf(c);
+  bool empty = false;
+  PlotRange r = PaddedRange(c, empty);
   if (c.equal_aspect) {
     const double sx = (r.x1 - r.x0) / f.pw, sy = (r.y1 - r.y0) / f.ph, s = std::max(sx, sy);
     const double cx = (r.x0 + r.x1) / 2, cy = (r.y0 + r.y1) / 2;
@@ -193,17 +201,25 @@ void WriteBands(std::ostream& o, const PlotChart& c, const PlotFrame& f) {
   }
 }
 
+// Outlined boxes, each at least kMinBoxPx on a side around its centre (a zoom's box on a large
+// map still shows where it is), labelled beside it on the side with more room, the label on a
+// white halo so that it reads over the tracks.
 void WriteBoxes(std::ostream& o, const PlotChart& c, const PlotFrame& f) {
+  constexpr double kMinBoxPx = 14;
   for (const auto& b : c.boxes) {
-    const double xa = f.X(b.range.x0), xb = f.X(b.range.x1);
-    const double ya = f.Y(AxisY(c, b.range.y1)), yb = f.Y(AxisY(c, b.range.y0));
-    // the label beside the box, on the side of the plot with more room
-    const bool left = (xa + xb) / 2 > f.ml + f.pw / 2;
+    double xa = f.X(b.range.x0), xb = f.X(b.range.x1);
+    double ya = f.Y(AxisY(c, b.range.y1)), yb = f.Y(AxisY(c, b.range.y0));
+    const double cx = (xa + xb) / 2, cy = (ya + yb) / 2;
+    const double hw = std::max(kMinBoxPx, xb - xa) / 2, hh = std::max(kMinBoxPx, yb - ya) / 2;
+    xa = cx - hw, xb = cx + hw, ya = cy - hh, yb = cy + hh;
+    const bool left = cx > f.ml + f.pw / 2;
     o << "<rect class=\"box\" x=\"" << SvgNum(xa) << "\" y=\"" << SvgNum(ya) << "\" width=\""
-      << SvgNum(std::max(1.0, xb - xa)) << "\" height=\"" << SvgNum(std::max(1.0, yb - ya))
-      << "\" fill=\"none\" stroke=\"#9467bd\" stroke-width=\"1.5\" stroke-dasharray=\"5,3\"/>"
-      << "<text x=\"" << SvgNum(left ? xa - 6 : xb + 6) << "\" y=\"" << SvgNum(ya - 4)
-      << "\" text-anchor=\"" << (left ? "end" : "start") << "\" fill=\"#9467bd\">"
+      << SvgNum(xb - xa) << "\" height=\"" << SvgNum(yb - ya)
+      << "\" fill=\"none\" stroke=\"#9467bd\" stroke-width=\"2\" stroke-dasharray=\"5,3\"/>"
+      << "<text class=\"box-label\" x=\"" << SvgNum(left ? xa - 6 : xb + 6) << "\" y=\""
+      << SvgNum(cy + 4) << "\" text-anchor=\"" << (left ? "end" : "start")
+      << "\" fill=\"#6a3d9a\" font-weight=\"bold\" stroke=\"white\" stroke-width=\"4\" "
+         "stroke-linejoin=\"round\" paint-order=\"stroke\">"
       << XmlEscape(b.label) << "</text>\n";
   }
 }
@@ -234,11 +250,13 @@ void WriteAxes(std::ostream& o, const PlotChart& c, const PlotFrame& f) {
     << ") rotate(-90)\" text-anchor=\"middle\">" << XmlEscape(c.y_label) << "</text>\n";
 }
 
-// The legend below the axis label, three entries per row; the x bands' entry last.
+// The legend below the axis label, legend_columns entries per row; the x bands' entry last.
 void WriteLegend(std::ostream& o, const PlotChart& c, const PlotFrame& f) {
+  const std::size_t columns = static_cast<std::size_t>(std::max(1, c.legend_columns));
   const auto entry = [&](std::size_t i, const std::string& color, const std::string& label) {
-    const double lx = f.ml + static_cast<double>(i % 3) * (f.pw / 3),
-                 ly = f.mt + f.ph + 52 + static_cast<double>(i / 3) * 18;
+    const double lx = f.ml +
+                      static_cast<double>(i % columns) * (f.pw / static_cast<double>(columns)),
+                 ly = f.mt + f.ph + 52 + static_cast<double>(i / columns) * 18;
     o << "<rect x=\"" << SvgNum(lx) << "\" y=\"" << SvgNum(ly - 9)
       << "\" width=\"14\" height=\"10\" fill=\"" << color << "\"/><text x=\"" << SvgNum(lx + 20)
       << "\" y=\"" << SvgNum(ly) << "\">" << XmlEscape(label) << "</text>\n";
@@ -250,6 +268,24 @@ void WriteLegend(std::ostream& o, const PlotChart& c, const PlotFrame& f) {
 }
 
 }  // namespace
+
+void FitSizeToData(PlotChart& c, const PlotSizeLimits& limits) {
+  bool empty = false;
+  const PlotRange r = PaddedRange(c, empty);
+  if (empty) return;
+  PlotFrame f = AreaOf(c);
+  const double aspect = (r.y1 - r.y0) / (r.x1 - r.x0);  // plot height per plot width
+  double pw = f.pw;
+  const double ph = std::clamp(pw * aspect, limits.min_plot_height_px, limits.max_plot_height_px);
+  if (pw * aspect > limits.max_plot_height_px) {  // taller than allowed: narrower instead
+    pw = std::max(limits.min_plot_width_px, limits.max_plot_height_px / aspect);
+    if (pw < limits.two_columns_below_px) c.legend_columns = 2;
+    if (pw < limits.one_column_below_px) c.legend_columns = 1;
+    f = AreaOf(c);  // the legend's rows may have changed the bottom margin
+  }
+  c.width_px = static_cast<int>(std::ceil(pw + (c.width_px - f.pw)));
+  c.height_px = static_cast<int>(std::ceil(ph + (c.height_px - f.ph)));
+}
 
 PlotRange ChartRange(const PlotChart& c) {
   const PlotFrame f = FitFrame(c);

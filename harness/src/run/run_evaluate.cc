@@ -417,6 +417,11 @@ void StartScoring(RunContext& ctx) {
     base->set_tick_tap([&scoring = *ctx.scoring](const actuator::BaseTickRecord& k) {
       scoring.AddControlTick(k.t, k.commanded_yaw_rate_radps * kDeg, k.yaw_rate_radps * kDeg);
     });
+  } else if (actuator::IsobusSteeringDevice* steering = ctx.set.steering) {
+    constexpr double kDeg = 180.0 / std::numbers::pi;
+    steering->set_tick_tap([&scoring = *ctx.scoring](const actuator::SteeringTickRecord& k) {
+      scoring.AddSteeringTick(k.t, k.commanded_steer_rad * kDeg, k.steer_rad * kDeg);
+    });
   }
 }
 

@@ -240,6 +240,12 @@ void RunScoring::AddControlTick(Time t, double commanded_yaw_rate_dps, double ya
                   Eigen::Vector3d(ToSeconds(t), commanded_yaw_rate_dps, yaw_rate_dps));
 }
 
+void RunScoring::AddSteeringTick(Time t, double commanded_steer_deg, double steer_deg) {
+  steering_ticks_ = true;
+  ticks_plot_.Add(ToSeconds(t), steer_deg,
+                  Eigen::Vector3d(ToSeconds(t), commanded_steer_deg, steer_deg));
+}
+
 ReportSeries RunScoring::TakeSeries() {
   ReportSeries s;
   s.estimate_errors = est_.plot.Points();
@@ -250,8 +256,8 @@ ReportSeries RunScoring::TakeSeries() {
   }
   for (const Eigen::Vector3d& k : ticks_plot_.Points()) {
     s.tick_t_s.push_back(k.x());
-    s.commanded_yaw_rate_dps.push_back(k.y());
-    s.actual_yaw_rate_dps.push_back(k.z());
+    (steering_ticks_ ? s.commanded_steer_deg : s.commanded_yaw_rate_dps).push_back(k.y());
+    (steering_ticks_ ? s.actual_steer_deg : s.actual_yaw_rate_dps).push_back(k.z());
   }
   s.estimate_cdf = CdfPoints(est_.accuracy.horizontal(), ReportSeries::kCdfPoints);
   s.fix_cdf = CdfPoints(fix_.accuracy.horizontal(), ReportSeries::kCdfPoints);

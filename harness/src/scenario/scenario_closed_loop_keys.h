@@ -49,21 +49,37 @@ inline constexpr ScenarioKey kClosedLoop[] = {
      "the ISO 12188-2 style pass-to-pass evaluation (closed_loop.pass_to_pass)"},
 };
 
+// Where the base's figures come from: ROSArduinoBridge's firmware for its protocol's timing
+// (vectors/base_serial/README.md), ours for the motors (wheel_motors.h cites no source).
+inline constexpr std::string_view kBaseOurs = "ours (wheel_motors.h cites no source)";
+inline constexpr std::string_view kSrcAutoStop =
+    "ROSArduinoBridge's AUTO_STOP_INTERVAL, 2000 ms (hbrobotics/ros_arduino_bridge "
+    "ROSArduinoBridge.ino; shared/reference/seeds_001_003.md C, vectors/base_serial/README.md)";
+inline constexpr std::string_view kSrcPidRate =
+    "ROSArduinoBridge's PID frame rate, 30 Hz (hbrobotics/ros_arduino_bridge ROSArduinoBridge.ino; "
+    "shared/reference/seeds_001_003.md C, vectors/base_serial/README.md)";
+
 inline constexpr ScenarioKey kActuator[] = {
-    {"wheel_radius_m", kNumber, "m", "0.1", 0.01, 2, "the wheels' (sprockets') radius"},
+    {"wheel_radius_m", kNumber, "m", "0.1", 0.01, 2, "the wheels' (sprockets') radius", kNoChoices,
+     kAnyRange, kBaseOurs},
     {"encoder_counts_per_rev", kInteger, "", "1200", 1, 1 << 20,
-     "quadrature counts per wheel revolution"},
-    {"max_wheel_speed_radps", kNumber, "rad/s", "20", 0.1, 500, "the wheels' speed limit"},
-    {"max_wheel_accel_radps2", kNumber, "rad/s²", "30", 0.1, 1e4, "the wheels' acceleration limit"},
-    {"time_constant_s", kNumber, "s", "0.08", 0.001, 10, "the speed loop's first-order lag"},
+     "quadrature counts per wheel revolution", kNoChoices, kAnyRange, kBaseOurs},
+    {"max_wheel_speed_radps", kNumber, "rad/s", "20", 0.1, 500, "the wheels' speed limit",
+     kNoChoices, kAnyRange, kBaseOurs},
+    {"max_wheel_accel_radps2", kNumber, "rad/s²", "30", 0.1, 1e4, "the wheels' acceleration limit",
+     kNoChoices, kAnyRange, kBaseOurs},
+    {"time_constant_s", kNumber, "s", "0.08", 0.001, 10, "the speed loop's first-order lag",
+     kNoChoices, kAnyRange, kBaseOurs},
     {"slip", kPoint, "", "[0, 0]", 0, 0,
      "[left, right]: fraction of the tyre speed lost, each in [0, 1) (ground speed = ω·r·(1 − "
      "slip)); a skid_steer's turning slip is vehicle.icr_expansion"},
-    {"command_latency_s", kNumber, "s", "0.005", 0, 5,
-     "a command acts this long after its arrival"},
+    {"command_latency_s", kNumber, "s", "0.005", 0, 5, "a command acts this long after its arrival",
+     kNoChoices, kAnyRange, kBaseOurs},
     {"watchdog_timeout_s", kNumber, "s", "2", 0.01, 60,
-     "no command for this long stops the wheels (ROSArduinoBridge's AUTO_STOP_INTERVAL)"},
-    {"pid_rate_hz", kNumber, "Hz", "30", 1, 1000, "ROSArduinoBridge's PID frame rate"},
+     "no command for this long stops the wheels (ROSArduinoBridge's AUTO_STOP_INTERVAL)",
+     kNoChoices, kAnyRange, kSrcAutoStop},
+    {"pid_rate_hz", kNumber, "Hz", "30", 1, 1000, "ROSArduinoBridge's PID frame rate", kNoChoices,
+     kAnyRange, kSrcPidRate},
 };
 
 // The isobus channel's steering ECU (`actuator:` of channel isobus; steering_ecu.h). Its defaults

@@ -29,6 +29,23 @@ inline constexpr ScenarioKey kOrigin[] = {
      "read off a map, or a receiver's MSL altitude, needs the geoid separation added"},
 };
 
+// Where the vehicle presets' figures come from (vehicle.h): paper 003's platform for bicycle
+// (shared/reference/seeds_001_003.md B.3); the other presets' figures are ours.
+inline constexpr std::string_view kSrcWheelbase =
+    "bicycle 0.84: paper 003's platform, track / wheelbase 550 / 840 mm "
+    "(shared/reference/seeds_001_003.md B.3); tractor 2.3: ours, an LX704-class tractor "
+    "(vehicle.h cites no source)";
+inline constexpr std::string_view kSrcTrack =
+    "bicycle 0.55: paper 003's platform (seeds_001_003.md B.3); tractor 1.6: ours (vehicle.h cites "
+    "no source); diff_drive 0.5: ours (paper 001 gives no track, seeds_001_003.md A); skid_steer "
+    "0.5: ours (vehicle.h)";
+inline constexpr std::string_view kSrcMaxSteer =
+    "bicycle 32: paper 003's steering angle −32° … +32° (seeds_001_003.md B.3); tractor 35: ours "
+    "(vehicle.h cites no source)";
+inline constexpr std::string_view kVehicleOurs = "ours (vehicle.h cites no source)";
+inline constexpr std::string_view kSrcIcr =
+    "ours: a choice, not a measurement (vehicle.h); the model is Mandow et al. 2007's";
+
 inline constexpr ScenarioKey kVehicle[] = {
     {"model", kChoice, "", "bicycle", 0, 0,
      "the vehicle model and its preset: bicycle (seed 003's front-steered greenhouse platform), "
@@ -37,31 +54,37 @@ inline constexpr ScenarioKey kVehicle[] = {
      "Martínez et al. 2005 and Mandow et al. 2007, harness/truth vehicle.h)",
      kVehicleModels},
     {"wheelbase_m", kNumber, "m", "by model (bicycle 0.84, tractor 2.3)", 0.1, 20,
-     "bicycle, tractor: distance L from the rear axle (the reference point) to the front axle"},
+     "bicycle, tractor: distance L from the rear axle (the reference point) to the front axle",
+     kNoChoices, kAnyRange, kSrcWheelbase},
     {"track_m", kNumber, "m", "by model (0.55, 1.6, 0.5, 0.5)", 0.1, 10,
-     "distance between the left and right wheels' (tracks') centre lines"},
+     "distance between the left and right wheels' (tracks') centre lines", kNoChoices, kAnyRange,
+     kSrcTrack},
     {"max_steer_deg", kNumber, "deg", "by model (32, 35)", 1, 60,
-     "bicycle, tractor: the front wheels' angle limit"},
+     "bicycle, tractor: the front wheels' angle limit", kNoChoices, kAnyRange, kSrcMaxSteer},
     {"max_steer_rate_dps", kNumber, "deg/s", "by model (30, 20)", 0.5, 360,
-     "bicycle, tractor: the steering rate limit"},
+     "bicycle, tractor: the steering rate limit", kNoChoices, kAnyRange, kVehicleOurs},
     {"steer_lag_s", kNumber, "s", "by model (0.2, 0.3)", 0.01, 10,
-     "bicycle, tractor: the steering's first-order lag"},
+     "bicycle, tractor: the steering's first-order lag", kNoChoices, kAnyRange, kVehicleOurs},
     {"speed_lag_s", kNumber, "s", "by model (0.5, 1.0, 0.3, 0.3)", 0.01, 60,
-     "the forward speed's first-order lag (open loop; closed loop uses the actuator's)"},
+     "the forward speed's first-order lag (open loop; closed loop uses the actuator's)", kNoChoices,
+     kAnyRange, kVehicleOurs},
     {"yaw_rate_lag_s", kNumber, "s", "0.2", 0.01, 10,
-     "diff_drive, skid_steer: the yaw rate's first-order lag"},
+     "diff_drive, skid_steer: the yaw rate's first-order lag", kNoChoices, kAnyRange, kVehicleOurs},
     {"max_yaw_rate_dps", kNumber, "deg/s", "45", 1, 360,
-     "diff_drive, skid_steer: the commanded yaw rate's limit"},
+     "diff_drive, skid_steer: the commanded yaw rate's limit", kNoChoices, kAnyRange, kVehicleOurs},
     {"icr_expansion", kNumber, "", "1.5", 1, 4,
      "skid_steer: χ = (y_l − y_r) / track_m, how much farther apart the tracks' instantaneous "
      "centres of rotation lie than the tracks (1: no skid, a differential drive); the yaw rate is "
      "(v_r − v_l) / (χ·track_m) and the turning radius χ times a differential drive's for the "
-     "same track speeds (Mandow et al. 2007; the default is a choice, not a measurement)"},
+     "same track speeds (Mandow et al. 2007; the default is a choice, not a measurement)",
+     kNoChoices, kAnyRange, kSrcIcr},
     {"icr_offset_m", kNumber, "m", "0.05", -2, 2,
      "skid_steer: x_v, the ICRs' distance ahead of the reference point (axle centre); the "
-     "reference point slips sideways at −x_v·ω in a turn (the default is a choice)"},
+     "reference point slips sideways at −x_v·ω in a turn (the default is a choice)",
+     kNoChoices, kAnyRange, kSrcIcr},
     {"slip_gain_rad_per_mps2", kNumber, "rad/(m/s²)", "0", 0, 0.2,
-     "lateral slip of any model: the velocity turns β = −k·v·ψ̇ to the outside of a turn"},
+     "lateral slip of any model: the velocity turns β = −k·v·ψ̇ to the outside of a turn",
+     kNoChoices, kAnyRange, "ours: no lateral slip unless a scenario sets it"},
     {"speed_variation", kMapping, "", "none", 0, 0,
      "the commanded speed × (1 + x(t)), x a Gauss–Markov process (governor droop, wheel slip on "
      "soil, load)"},

@@ -130,5 +130,37 @@ TEST_F(ClosedLoopPlotsTest, PolylinesAreTheRunsData) {
   EXPECT_NE(steering.find("actual"), std::string::npos);
 }
 
+// A tractor on ISO 11783-7 has no yaw-rate ticks but its steering ECU's road-wheel angles: those
+// are its steering chart (it was an empty "no data" frame); a run with neither has no chart.
+TEST_F(ClosedLoopPlotsTest, SteeringEcuRunDrawsRoadWheelAnglesAndNoTicksDrawNoChart) {
+  series_.commanded_steer_deg.clear();
+  for (std::size_t i = 0; i < series_.tick_t_s.size(); ++i) {
+    series_.commanded_steer_deg.push_back(20 * std::sin(0.2 * static_cast<double>(i)));
+    series_.actual_steer_deg.push_back(18 * std::sin(0.2 * static_cast<double>(i) - 0.3));
+  }
+  series_.commanded_yaw_rate_dps.clear();
+  series_.actual_yaw_rate_dps.clear();
+  std::vector<std::string> files;
+  WriteClosedLoopPlots(report_, series_, dir_.string(), files);
+  ASSERT_EQ(files.size(), 3U);
+  const std::string steering = ReadAll(dir_ / files[2]);
+  const std::vector<Polyline> angle = Polylines(steering);
+  ASSERT_EQ(angle.size(), 2U);
+  ExpectAffineImage(angle[0], series_.tick_t_s, series_.commanded_steer_deg);
+  ExpectAffineImage(angle[1], series_.tick_t_s, series_.actual_steer_deg);
+  EXPECT_NE(steering.find("road-wheel angle"), std::string::npos);
+  EXPECT_EQ(steering.find("no data"), std::string::npos);
+
+  series_.tick_t_s.clear();
+  series_.commanded_steer_deg.clear();
+  series_.actual_steer_deg.clear();
+  EXPECT_FALSE(SteeringChart(series_));
+  std::filesystem::remove(dir_ / "plots/steering.svg");
+  files.clear();
+  WriteClosedLoopPlots(report_, series_, dir_.string(), files);
+  EXPECT_EQ(files,
+            (std::vector<std::string>{"plots/closed_loop_path.svg", "plots/cross_track.svg"}));
+}
+
 }  // namespace
 }  // namespace hil::harness

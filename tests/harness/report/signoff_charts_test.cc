@@ -73,6 +73,43 @@ TEST_F(SignoffChartsTest, MapFitsTheDataWithEqualAxesNotThePathsMargin) {
   EXPECT_EQ(map.series.front().x.size(), 2U);
 }
 
+// The issue's field: 9 m wide, 60 m long, driven up at east 0 and back down at east 9. A fixed
+// 900 x 620 frame showed it at about 100 m east to west; the map's frame takes the field's shape.
+TEST(SignoffMapTest, LongNarrowFieldIsDrawnTallNotInAWideFrame) {
+  ReportSeries s;
+  for (int i = 0; i <= 120; ++i) {
+    const double t = i, e = i <= 60 ? 0.0 : 9.0, n = i <= 60 ? i : 120.0 - i;
+    s.truth_t_s.push_back(t);
+    s.truth_en_m.emplace_back(e, n);
+    ErrorSample x;
+    x.t = TimeFromSeconds(t);
+    x.truth_enu_m = {e, n, 0};
+    x.est_enu_m = {e + 0.1, n, 0};
+    x.err_enu_m = x.est_enu_m - x.truth_enu_m;
+    s.estimate_errors.push_back(x);
+    s.fix_errors.push_back(x);
+  }
+  const PlotChart map = MapChart(RunReport{}, s);
+  const PlotRange r = ChartRange(map);
+  EXPECT_GT(map.height_px, map.width_px);
+  EXPECT_LT(r.x1 - r.x0, 30.0);         // the field's 9.1 m across, not 100 m
+  EXPECT_LT(r.y1 - r.y0, 1.15 * 60.0);  // and its 60 m along, padded
+  EXPECT_GE(r.x0, -12.0);
+  // equal axes still: metres per pixel the same on both
+  const double pw = map.width_px - 90.0;
+  const int rows = (4 + map.legend_columns - 1) / map.legend_columns;
+  const double ph = map.height_px - 36.0 - 52 - 18.0 * rows;
+  EXPECT_NEAR((r.x1 - r.x0) / pw, (r.y1 - r.y0) / ph, 1e-9);
+  // the zoom's box (0.2 m on a 60 m map) is drawn as a visible marker, its label on a halo
+  const std::string svg = RenderSvg(map);
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(
+      svg, m, std::regex(R"re(<rect class="box" x="[-0-9.]+" y="[-0-9.]+" width="([0-9.]+)")re")));
+  EXPECT_GE(std::stod(m[1]), 14.0);
+  EXPECT_NE(svg.find("class=\"box-label\""), std::string::npos);
+  EXPECT_NE(svg.find("paint-order=\"stroke\""), std::string::npos);
+}
+
 TEST_F(SignoffChartsTest, ZoomFramesTheWorstSegmentAndTheMapMarksIt) {
   const auto w = FindWorstSegment(series_);
   ASSERT_TRUE(w);

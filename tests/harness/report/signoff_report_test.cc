@@ -153,6 +153,38 @@ TEST_F(SignoffReportTest, NeesFortyAndHeadingSixAndAHalfStandOut) {
   EXPECT_NE(h.find("<td>heading_rmse_deg</td><td class=\"flagged\">6.5</td>"), std::string::npos);
   // the accuracy table marks the same cells
   EXPECT_NE(h.find("<td>heading_rmse_deg</td><td class=\"flagged\">6.500</td>"), std::string::npos);
+  // and the verdict at a glance says there are two to review, linking to them (a PASS with a
+  // red NEES further down read as clean at a glance)
+  const std::size_t verdict = h.find("Verdict at a glance"), review = h.find("id=\"review\"");
+  const std::size_t link = h.find("<a class=\"review\" href=\"#review\">2 value(s) outside");
+  ASSERT_NE(link, std::string::npos);
+  EXPECT_LT(verdict, link);
+  EXPECT_LT(link, review);
+}
+
+// A tractor on ISO 11783-7: the closed-loop section shows its steering ECU (the report showed
+// only the controller's counters; frames lost, refusals, the exit reason were in report.json).
+TEST_F(SignoffReportTest, ClosedLoopShowsTheSteeringEcu) {
+  ClosedLoopReport c;
+  SteeringEcuReport e;
+  e.transport = "slcan";
+  e.frames_from_controller = 120;
+  e.frames_lost = 3;
+  e.commands_accepted = 110;
+  e.out_of_range = 2;
+  e.engagements = 1;
+  e.watchdog_trips = 1;
+  e.exit_reason_code = 1;
+  e.exit_reason = "remote_command_timeout";
+  e.commanded_steer_rms_error_deg = 0.42;
+  c.steering_ecu = e;
+  report_.closed_loop = c;
+  const std::string h = Html();
+  EXPECT_NE(h.find("<h3>Steering ECU (ISO 11783-7 over slcan)</h3>"), std::string::npos) << h;
+  EXPECT_NE(h.find("<td>120 / 3</td>"), std::string::npos);
+  EXPECT_NE(h.find("<td>110 / 0, 0, 2</td>"), std::string::npos);
+  EXPECT_NE(h.find("<td class=\"flagged-note\">remote_command_timeout</td>"), std::string::npos);
+  EXPECT_NE(h.find("<td>0.420 deg</td>"), std::string::npos);
 }
 
 TEST_F(SignoffReportTest, ValuesInsideTheirBandAreNotFlagged) {

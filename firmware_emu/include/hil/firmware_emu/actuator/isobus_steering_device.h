@@ -19,6 +19,7 @@
 /// ticks (every `control_period`) count a missing command as the differential-drive base does.
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -86,6 +87,10 @@ class IsobusSteeringDevice : public Device {
   /// angle)² in rad², in tick order (none kept: a run's length does not grow the device).
   std::uint64_t engaged_ticks() const { return engaged_ticks_; }
   double engaged_steer_error_sq_sum_rad2() const { return engaged_error_sq_sum_rad2_; }
+  /// Each control tick's record goes to `tap` as it is made (the report's steering chart).
+  void set_tick_tap(std::function<void(const SteeringTickRecord&)> tap) {
+    tick_tap_ = std::move(tap);
+  }
 
  private:
   void FromController(Time t, const CanFrame& frame);
@@ -105,6 +110,7 @@ class IsobusSteeringDevice : public Device {
   double engaged_error_sq_sum_rad2_ = 0;
   DeviceOutput scratch_;
   std::vector<CanFrame> host_frames_;
+  std::function<void(const SteeringTickRecord&)> tick_tap_ = [](const SteeringTickRecord&) {};
 };
 
 }  // namespace hil::actuator

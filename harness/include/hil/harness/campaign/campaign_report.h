@@ -17,6 +17,9 @@ namespace hil::harness {
 std::string CampaignMarkdown(const nlohmann::json& summary);
 std::string CampaignHtml(const nlohmann::json& summary);
 std::string CampaignJunit(const nlohmann::json& summary);
+/// What sets a group apart from the other groups of its scenario: its sweep point's field values,
+/// "field = value, …" ("" without a sweep).
+std::string GroupSettingsText(const nlohmann::json& group);
 /// The CDF plot of `metric` (one step line per group with values; a log axis when the groups'
 /// medians differ ten times or more); "" when no run has a value.
 std::string CdfSvg(const nlohmann::json& summary, const std::string& metric);

@@ -38,9 +38,11 @@ struct ReportSeries {
   std::vector<std::pair<double, double>> estimate_cdf, fix_cdf;
   static constexpr std::size_t kCdfPoints = 2000;
   QuantileSketch latency_ms;  ///< every solution's latency; empty outside real-time mode
-  /// Closed loop: the planned path, and per control tick the commanded and actual yaw rate.
+  /// Closed loop: the planned path, and per control tick the commanded and actual yaw rate (a
+  /// differential-drive base) or road-wheel angle (a steering ECU on ISO 11783-7), left positive.
   std::vector<Eigen::Vector2d> path_en_m;
   std::vector<double> tick_t_s, commanded_yaw_rate_dps, actual_yaw_rate_dps;
+  std::vector<double> commanded_steer_deg, actual_steer_deg;
 };
 
 /// Closed loop: path + truth + estimate, XTE against distance, commanded against actual steering
@@ -48,8 +50,10 @@ struct ReportSeries {
 void WriteClosedLoopPlots(const RunReport& report, const ReportSeries& series,
                           const std::string& run_dir, std::vector<std::string>& files);
 
-/// Closed loop: commanded against actual yaw rate at each control tick.
-PlotChart SteeringChart(const ReportSeries& series);
+/// Closed loop: commanded against actual steering at each control tick: the base's yaw rate, or
+/// else the steering ECU's road-wheel angle; nullopt when the run recorded neither (no empty
+/// chart in the report).
+std::optional<PlotChart> SteeringChart(const ReportSeries& series);
 
 /// The latency histogram; @pre series.latency_ms is not empty (real time or scaled).
 PlotChart LatencyChart(const ReportSeries& series);

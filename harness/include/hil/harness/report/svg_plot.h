@@ -58,7 +58,23 @@ struct PlotChart {
   std::string empty_note = "no data";  ///< the note an empty chart shows in its frame
   std::string id = "plot";             ///< the clip path's id: unique within an HTML page
   int width_px = 760, height_px = 420;
+  int legend_columns = 3;  ///< legend entries per row
 };
+
+/// Bounds of FitSizeToData, in pixels of the plot area (inside the axes): ours, so that a map
+/// stays readable on a page 1000 px wide and its legend's labels keep apart.
+struct PlotSizeLimits {
+  double min_plot_height_px = 240, max_plot_height_px = 860, min_plot_width_px = 320;
+  /// a plot area narrower than this lays its legend out in two columns, and in one below the next
+  double two_columns_below_px = 640, one_column_below_px = 440;
+};
+
+/// Sizes an equal-aspect chart (a map) so that its plot area has the aspect of the data it shows
+/// (as ChartRange fits it, before widening one axis): the height follows the data at the chart's
+/// width, within the limits; data taller than max_plot_height_px narrows the chart instead, down
+/// to min_plot_width_px. A map then shows about its data on both axes, not a strip of it inside
+/// a fixed frame.
+void FitSizeToData(PlotChart& chart, const PlotSizeLimits& limits = {});
 
 /// Renders the chart as an SVG document. An empty chart renders its frame and its `empty_note`.
 std::string RenderSvg(const PlotChart& chart);

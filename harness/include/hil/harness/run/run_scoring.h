@@ -101,6 +101,9 @@ class RunScoring {
   /// Closed loop, differential-drive base: a control tick's commanded and actual yaw rates, for
   /// the plots (decimated as the other series).
   void AddControlTick(Time t, double commanded_yaw_rate_dps, double yaw_rate_dps);
+  /// A steering ECU's control tick: commanded and actual road-wheel angle (the plots; a run has
+  /// a base or a steering ECU, not both).
+  void AddSteeringTick(Time t, double commanded_steer_deg, double steer_deg);
   /// Closed loop: the truth's track at truth.csv's times (10 Hz, the whole grid to the
   /// scenario's end), in time order.
   const std::vector<TrackSample>& track() const { return track_; }
@@ -152,7 +155,8 @@ class RunScoring {
   Csv truth_csv_;
   SeriesDecimator<Eigen::Vector3d> truth_plot_;  // (t, east, north)
   std::vector<TrackSample> track_;               // closed loop
-  SeriesDecimator<Eigen::Vector3d> ticks_plot_;  // (t, commanded, actual yaw rate)
+  SeriesDecimator<Eigen::Vector3d> ticks_plot_;  // (t, commanded, actual yaw rate or steer angle)
+  bool steering_ticks_ = false;                  // ticks_plot_ holds road-wheel angles
   Time grid_end_, next_grid_ask_{}, next_grid_row_{};
   std::optional<Time> cut_;         // the builder's watermark so far
   std::optional<Time> latest_;      // the latest time of validity of a solution in the run
