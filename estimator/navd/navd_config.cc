@@ -190,6 +190,8 @@ bool ReadFilterKey(const ConfigFile& f, const ConfigEntry& e, NavdConfig& c, int
      : k == "rtk_fix_check"        ? c.nav.rtk_fix.enabled
      : k == "imu_noise_check"      ? c.nav.imu_noise.enabled
                                    : c.nav.imu_lag.enabled) = e.value == "true";
+  } else if (k == "vibration_tau_s") {
+    c.nav.vibration_tau_s = ToDouble(f, e, 0.0, 10.0);
   } else if (k == "zupt_std_mps") {
     c.nav.stationary.zupt_std_mps = ToDouble(f, e, 0.001, 1.0);
   } else if (k == "use_gnss_velocity") {

@@ -223,7 +223,10 @@ UpdateResult ErrorStateEkf::UpdateNonHolonomic() {
   if (!(params_.nhc_std_mps > 0)) return {};
   const Eigen::Vector3d v_B = state_.q_NB.conjugate() * state_.v_N_mps;
   const Eigen::Vector2d innovation(-v_B.y(), -v_B.z());
-  const Eigen::Matrix2d R = Eigen::Matrix2d::Identity() * params_.nhc_std_mps * params_.nhc_std_mps;
+  // the IMU's vibration velocity is not the chassis's: its variance is added (VibrationVelocity)
+  const double r2 = params_.nhc_std_mps * params_.nhc_std_mps;
+  const Eigen::Matrix2d R =
+      Eigen::Vector2d(r2 + vibration_var_B_mps2_.y(), r2 + vibration_var_B_mps2_.z()).asDiagonal();
   return Update<2>(innovation, NonHolonomicJacobian(), R);
 }
 
@@ -248,7 +251,7 @@ UpdateResult ErrorStateEkf::UpdateSpeedModel() {
   const double r =
       SpeedDevState(params_) ? 0.5 * params_.speed_dev_std_mps : params_.speed_dev_std_mps;
   Eigen::Matrix<double, 1, 1> R;
-  R << r * r;
+  R << r * r + vibration_var_B_mps2_.x();
   return Update<1>(innovation, SpeedModelJacobian(), R);
 }
 

@@ -50,6 +50,8 @@ Navigator::Navigator(const NavigatorParams& params)
       planar_(params.planar),
       stationary_(params.stationary, params.ekf.accel_noise_mps2_rthz,
                   params.ekf.gyro_noise_radps_rthz),
+      vibration_(params.mode == NavMode::kEkf ? params.vibration_tau_s : 0.0,
+                 params.vibration_mean_tau_s),
       step_(params.robust.step),
       imu_lag_(params.imu_lag),
       rtk_check_(params.rtk_fix) {
@@ -205,6 +207,10 @@ void Navigator::ProcessImu(const ImuSample& s) {
   }
   DetectStationary(s);
   ekf_.Predict(s.delta_angle_B_rad, s.delta_velocity_B_mps, s.dt_s);
+  if (vibration_.enabled()) {
+    vibration_.Add(s.delta_velocity_B_mps, s.dt_s);
+    ekf_.SetVibrationVariance(vibration_.variance_B_mps2());
+  }
   filter_t_ = s.t;
   ControlZeroMotion();
   if (params_.mode == NavMode::kEkf &&

@@ -102,6 +102,7 @@ struct CircleRig {
     p.fusion_horizon = 300ms;
     p.gnss_max_latency = 500ms;
     p.ekf.nhc_std_mps = 0.05;
+    p.vibration_tau_s = 0.5;  // the vibration-widened NHC's filter in the loop too (off: skipped)
     return p;
   }
   double Angle(GpsTime t) const {

@@ -73,6 +73,19 @@ TEST(ConfigFileTest, ImuNoiseCheckKey) {
                ConfigError);
 }
 
+// issue 41: the vibration-widened vehicle model is off unless [filter] vibration_tau_s > 0
+TEST(ConfigFileTest, VibrationTauKey) {
+  EXPECT_EQ(NavdConfig::FromFile(ConfigFile::Parse("[filter]\n", "n.conf")).nav.vibration_tau_s,
+            0.0);
+  EXPECT_DOUBLE_EQ(
+      NavdConfig::FromFile(ConfigFile::Parse("[filter]\nvibration_tau_s = 0.5\n", "n.conf"))
+          .nav.vibration_tau_s,
+      0.5);
+  EXPECT_THROW(
+      NavdConfig::FromFile(ConfigFile::Parse("[filter]\nvibration_tau_s = -1\n", "n.conf")),
+      ConfigError);
+}
+
 TEST(ConfigFileTest, ReceiverConfigurationKeys) {
   const NavdConfig on = NavdConfig::FromFile(ConfigFile::Parse(
       "[input]\ngnss_protocol = ubx\ngnss_configure = true\ngnss_rate_hz = 4\n", "n.conf"));

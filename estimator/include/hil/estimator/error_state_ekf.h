@@ -174,6 +174,12 @@ class ErrorStateEkf {
   /// from the GNSS velocity innovations (an engine's vibration shakes both sensors of a board).
   void SetAccelNoiseScale(double scale) { accel_scale_ = scale; }
   double accel_noise_scale() const { return accel_scale_; }
+  /// The variance of the IMU's vibration velocity per body axis (VibrationVelocity): added to the
+  /// noise of the non-holonomic (y, z) and speed-model (x) pseudo-measurements (zero: as
+  /// configured).
+  void SetVibrationVariance(const Eigen::Vector3d& var_B_mps2) {
+    vibration_var_B_mps2_ = var_B_mps2;
+  }
   /// Starts the bias estimates at known values (a dataset's initial biases), after Initialize.
   void SetBiases(const Eigen::Vector3d& accel_bias_B_mps2,
                  const Eigen::Vector3d& gyro_bias_B_radps);
@@ -247,9 +253,10 @@ class ErrorStateEkf {
   Eigen::Vector3d f_N_ = Eigen::Vector3d::Zero();  // last specific force in N
   EkfMatrix P_ = EkfMatrix::Identity();
   std::uint32_t repairs_ = 0;
-  double q_scale_ = 1.0;        // process-noise scale (SetProcessNoiseScale)
-  double accel_scale_ = 1.0;    // SetAccelNoiseScale
-  bool attitude_hold_ = false;  // SetAttitudeHold
+  double q_scale_ = 1.0;      // process-noise scale (SetProcessNoiseScale)
+  double accel_scale_ = 1.0;  // SetAccelNoiseScale
+  Eigen::Vector3d vibration_var_B_mps2_ = Eigen::Vector3d::Zero();  // SetVibrationVariance
+  bool attitude_hold_ = false;                                      // SetAttitudeHold
 };
 
 }  // namespace hil::estimator

@@ -46,6 +46,7 @@
 #include "hil/estimator/rtk_fix_check.h"
 #include "hil/estimator/samples.h"
 #include "hil/estimator/stationary_detector.h"
+#include "hil/estimator/vibration_velocity.h"
 
 namespace hil::estimator {
 
@@ -155,6 +156,11 @@ struct NavigatorParams {
   /// EKF mode: the accelerometer's noise follows the GNSS velocity innovations when they show it
   /// far outside its model (aid_sources/imu_noise_control.cc).
   ImuNoiseParams imu_noise;
+  /// EKF mode: the IMU's vibration velocity (VibrationVelocity: above the corner of this time
+  /// constant) widens the non-holonomic and speed-model pseudo-measurements by its variance,
+  /// averaged over vibration_mean_tau_s; 0: off.
+  double vibration_tau_s = 0.0;
+  double vibration_mean_tau_s = 2.0;
   /// EKF mode: the IMU tags' lag behind GNSS time, estimated online (ImuTimeOffset) and taken off
   /// the IMU tags once conclusive (aid_sources/imu_lag_control.cc).
   ImuTimeOffsetParams imu_lag;
@@ -325,6 +331,7 @@ class Navigator {
   NavigatorStats stats_;
   InnovationMonitor monitors_[kNumAidSources];
   StationaryDetector stationary_;
+  VibrationVelocity vibration_;  // the IMU's vibration velocity (vibration_tau_s)
   bool stationary_now_ = false;
   GpsTime last_zupt_t_{};
   std::optional<GpsTime> last_fix_seen_t_;  // the newest fix the filter processed
