@@ -27,17 +27,16 @@ AntennaPosition AntennaAt(const TruthSample& truth, const Eigen::Vector3d& p_BA_
   return a;
 }
 
-MovingBase::MovingBase(const MovingBaseConfig& config, std::int64_t start_unix_ns,
-                       std::uint64_t seed)
+MovingBase::MovingBase(const MovingBaseConfig& config, UnixTime start_utc, std::uint64_t seed)
     : config_(config),
-      start_unix_ns_(start_unix_ns),
+      start_utc_(start_utc),
       constellation_(seed),
       observables_(config.observables, 0, 0, 0, seed ^ 0x4D42ULL) {}
 
 std::vector<SerialMessage> MovingBase::Epoch(const TruthSample& truth) {
   const AntennaPosition a = AntennaAt(truth, config_.p_BA_B_m);
   observables_.MoveTo(a.lat_deg, a.lon_deg, a.height_m);
-  const gnss::GpsWeekTime gps = gnss::GpsFromUnixNs(start_unix_ns_ + ToNs(truth.t));
+  const gnss::GpsWeekTime gps = gnss::GpsFrom(UtcAt(start_utc_, truth.t));
   const double gps_s = static_cast<double>(gps.week) * 604800.0 + gps.tow_s();
   const rtcm3::MovingBasePvt pvt{config_.station_id, gps.itow_ms(), a.p_E_m};
   const rtcm3::MsmEpoch msm =

@@ -85,7 +85,7 @@ ZedF9pDevice::ZedF9pDevice(const ZedF9pConfig& config, std::uint64_t seed)
   if (config_.radio_base)
     radio_base_ = std::make_unique<RtkBaseDevice>(*config_.radio_base, config_.radio_base_seed);
   if (config_.moving_base) {
-    moving_base_ = std::make_unique<MovingBase>(*config_.moving_base, config_.start_unix_ns,
+    moving_base_ = std::make_unique<MovingBase>(*config_.moving_base, config_.start_utc,
                                                 seed ^ 0x4D4F56494E47ULL);
   }
   next_epoch_ = NextGridEpoch(TimeFromNs(-1));

@@ -31,7 +31,7 @@ constexpr double kHeading_deg = 30.0, kBaseline_m = 1.2;
 
 std::string Capture() {
   ZedF9pConfig c;
-  c.start_unix_ns = gnss::ParseIsoUtc("2026-06-10T08:00:00Z");
+  c.start_utc = gnss::ParseIsoUtc("2026-06-10T08:00:00Z");
   c.model.p_BA_B_m = Eigen::Vector3d(1.0, 0.0, 2.8);
   MovingBaseConfig mb;
   mb.p_BA_B_m = Eigen::Vector3d(-0.2, 0.0, 2.8);

@@ -68,7 +68,7 @@ using HeadingOf = std::function<double(double t_s)>;
 
 ZedF9pConfig DualAntennaRover(int wire_baud = 460800) {
   ZedF9pConfig c;
-  c.start_unix_ns = gnss::ParseIsoUtc("2026-06-10T08:00:00Z");
+  c.start_utc = gnss::ParseIsoUtc("2026-06-10T08:00:00Z");
   c.model.p_BA_B_m = Eigen::Vector3d(1.0, 0.0, 2.8);  // rover antenna: 1.2 m ahead of the base's
   MovingBaseConfig mb;
   mb.p_BA_B_m = Eigen::Vector3d(-0.2, 0.0, 2.8);

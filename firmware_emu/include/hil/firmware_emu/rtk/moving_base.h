@@ -23,6 +23,7 @@
 #include "hil/firmware_emu/gnss/constellation.h"
 #include "hil/firmware_emu/rtk/base_observables.h"
 #include "hil/firmware_emu/rtk/rtcm3_msm.h"
+#include "hil/firmware_emu/unix_time.h"
 
 namespace hil::rtk {
 
@@ -49,14 +50,14 @@ AntennaPosition AntennaAt(const TruthSample& truth, const Eigen::Vector3d& p_BA_
 
 class MovingBase {
  public:
-  MovingBase(const MovingBaseConfig& config, std::int64_t start_unix_ns, std::uint64_t seed);
+  MovingBase(const MovingBaseConfig& config, UnixTime start_utc, std::uint64_t seed);
   /// The frames of the epoch at `truth.t`, ready at t + output_lag (4072.0 first, then the MSM).
   std::vector<SerialMessage> Epoch(const TruthSample& truth);
   const MovingBaseConfig& config() const { return config_; }
 
  private:
   MovingBaseConfig config_;
-  std::int64_t start_unix_ns_ = 0;
+  UnixTime start_utc_{};
   gnss::Constellation constellation_;
   BaseObservables observables_;
 };

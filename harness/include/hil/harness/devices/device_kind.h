@@ -53,7 +53,8 @@ struct DeviceBuild {
   /// Closed loop: the differential-drive base (owned by `devices`), null otherwise.
   actuator::BaseSerialDevice* base = nullptr;  ///< non-const: the run taps its control ticks
   /// Closed loop on the isobus channel: the steering ECU (owned by `devices`), null otherwise.
-  const actuator::IsobusSteeringDevice* steering = nullptr;
+  actuator::IsobusSteeringDevice* steering =
+      nullptr;  ///< non-const: the run taps its control ticks
   /// The ZED-F9P rover (owned by `devices`), null without one: its RTK timeline for the report.
   const rtk::ZedF9pDevice* rover = nullptr;
 };
