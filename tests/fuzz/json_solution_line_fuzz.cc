@@ -37,8 +37,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (!scan) return 0;
   const nlohmann::json dom = nlohmann::json::parse(line, nullptr, false);
   if (dom.is_discarded()) std::abort();  // answered a line that is no JSON
-  const auto reader =
-      hil::harness::MakeEstimateReader(hil::harness::EstimatorOutput::kJsonStdout, 1LL << 60);
+  const auto reader = hil::harness::MakeEstimateReader(hil::harness::EstimatorOutput::kJsonStdout,
+                                                       hil::UnixTimeFromNs(1LL << 60));
   if (!SameRecord(reader->JsonLine(dom, hil::WallTime{}),
                   reader->ScannedLine(*scan, hil::WallTime{})))
     std::abort();
