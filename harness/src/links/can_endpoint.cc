@@ -81,7 +81,7 @@ void CanEndpoint::Capture(CaptureDir dir, Time t, WallTime wall, const link::Can
   r.frame = f;
   capture_.Write(r);
   link::CandumpRecord c;
-  c.t = start_utc_ + (t - Time{});
+  c.t = UtcAt(start_utc_, t);
   c.iface = port_.ifname();
   c.frame = f;
   candump_.Write(c);

@@ -202,7 +202,6 @@ void StartController(RunContext& ctx) {
   char origin[96];
   std::snprintf(origin, sizeof origin, "%.9f,%.9f,%.3f", o.lat_deg, o.lon_deg, o.height_m);
   // the UTC time of day (s) of emulated t = 0, when the devices' first periods begin
-  constexpr std::int64_t kDayNs = 86'400'000'000'000LL;
   const std::int64_t tod_ns = ((ToNs(ctx.scenario.start_utc) % kDayNs) + kDayNs) % kDayNs;
   char start_tod[32];
   std::snprintf(start_tod, sizeof start_tod, "%lld.%09lld",
