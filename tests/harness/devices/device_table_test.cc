@@ -153,6 +153,7 @@ TEST(DeviceTableTest, EveryRowsNavdKeysAreReadByNavd) {
           << k->name << " lists " << key << ", which no scenario of the set wrote";
     }
   }
+  std::filesystem::remove_all(dir);
 }
 
 TEST(DeviceTableTest, TheRunsLinksAreTheRowsLinksInTableOrder) {
@@ -174,6 +175,7 @@ TEST(DeviceTableTest, TheRunsLinksAreTheRowsLinksInTableOrder) {
     EXPECT_EQ(built, expected);
     EXPECT_EQ(set.devices.size(), set.endpoints.size());
   }
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

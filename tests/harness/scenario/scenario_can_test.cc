@@ -87,6 +87,7 @@ TEST(ScenarioCanTest, GeneratedNavdConfigReadsTheImuFromCan) {
   EXPECT_EQ(c.mode(), estimator::NavMode::kEkf);
   EXPECT_EQ(c.can_interface, "vcan0");  // NMEA 2000 back onto the bus
   EXPECT_EQ(c.json_path, "-");          // JSON on stdout: the harness reads its health object
+  std::filesystem::remove_all(dir);
 }
 
 TEST(ScenarioCanTest, VirtualModeIsRefusedForAnImuOnCan) {

@@ -22,6 +22,7 @@ TEST(ValidateCanLiveTest, InterfaceNamesAreNotFiles) {
   const std::string here = ::testing::TempDir() + "/validate_can_live_test.candump";
   std::ofstream(here) << "(0.000000) vcan0 123#00\n";
   EXPECT_FALSE(IsNetworkInterface(here));
+  std::filesystem::remove(here);
 }
 
 TEST(ValidateCanLiveTest, KernelWithoutCanGivesAClearError) {
