@@ -134,6 +134,8 @@ bool ReadEkfKey(const ConfigFile& f, const ConfigEntry& e, EkfParams& ekf) {
     ekf.gnss_error_std_m = ToDouble(f, e, 0.0, 100.0);
   else if (k == "gnss_error_vertical_std_m")
     ekf.gnss_error_vertical_std_m = ToDouble(f, e, 0.0, 100.0);
+  else if (k == "gnss_error_vdop_ref")
+    ekf.gnss_error_vdop_ref = ToDouble(f, e, 0.0, 100.0);
   else if (k == "gnss_float_error_tau_s")
     ekf.gnss_float_error_tau_s = ToDouble(f, e, 0.0, 3600.0);
   else if (k == "gnss_float_error_std_m")

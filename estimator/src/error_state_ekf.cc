@@ -27,6 +27,7 @@ void ErrorStateEkf::Initialize(const NavState& s) {
   gm_up_ratio_ = params_.gnss_error_vertical_std_m > 0 && params_.gnss_error_std_m > 0
                      ? params_.gnss_error_vertical_std_m / params_.gnss_error_std_m
                      : 1.0;
+  gm_up_std_m_ = gm_std_m_ * gm_up_ratio_;
   P_.setZero();
   const auto& p = params_;
   P_.block<3, 3>(kPos, kPos).diagonal().setConstant(p.init_pos_std_m * p.init_pos_std_m);
@@ -40,7 +41,7 @@ void ErrorStateEkf::Initialize(const NavState& s) {
       .diagonal()
       .setConstant(p.init_gyro_bias_std_radps * p.init_gyro_bias_std_radps);
   if (p.gnss_error_tau_s > 0) {
-    P_.block<3, 3>(kGnssError, kGnssError).diagonal() = GnssErrorVariance(gm_std_m_);
+    P_.block<3, 3>(kGnssError, kGnssError).diagonal() = GnssErrorVariance(gm_std_m_, gm_up_std_m_);
   }
   if (p.speed_rw_mps_rthz > 0) P_(kSpeed, kSpeed) = p.init_vel_std_mps * p.init_vel_std_mps;
   if (SpeedDevState(p)) P_(kSpeedDev, kSpeedDev) = p.speed_dev_std_mps * p.speed_dev_std_mps;
@@ -65,7 +66,7 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& delta_angle_B_rad,
   Eigen::Vector3d gm_q = Eigen::Vector3d::Zero();
   if (p.gnss_error_tau_s > 0) {
     gm_decay = std::exp(-dt / gm_tau_s_);
-    gm_q = GnssErrorVariance(gm_std_m_) * (1.0 - gm_decay * gm_decay);
+    gm_q = GnssErrorVariance(gm_std_m_, gm_up_std_m_) * (1.0 - gm_decay * gm_decay);
   }
   const double dev_decay = SpeedDevState(p) ? std::exp(-dt / p.speed_dev_tau_s) : 1.0;
   PropagateCovariance(C, dt, gm_decay, dev_decay);
@@ -339,36 +340,45 @@ void ErrorStateEkf::InjectError(const EkfVector& dx) {
   if (SpeedDevState(params_)) speed_dev_ += dx[kSpeedDev];
 }
 
-Eigen::Vector3d ErrorStateEkf::GnssErrorVariance(double horizontal_std_m) const {
-  const double up = horizontal_std_m * gm_up_ratio_;
+Eigen::Vector3d ErrorStateEkf::GnssErrorVariance(double horizontal_std_m, double up_std_m) {
   return Eigen::Vector3d(horizontal_std_m * horizontal_std_m, horizontal_std_m * horizontal_std_m,
-                         up * up);
+                         up_std_m * up_std_m);
 }
 
 void ErrorStateEkf::SetGnssErrorModel(double tau_s, double std_m, bool new_source) {
-  if (!(params_.gnss_error_tau_s > 0) || !(tau_s > 0) || !(std_m > 0) || !std::isfinite(tau_s) ||
-      !std::isfinite(std_m))
+  SetGnssErrorModel(tau_s, std_m, std_m * gm_up_ratio_, new_source);
+}
+
+void ErrorStateEkf::SetGnssErrorModel(double tau_s, double std_m, double up_std_m,
+                                      bool new_source) {
+  if (!(params_.gnss_error_tau_s > 0) || !(tau_s > 0) || !(std_m > 0) || !(up_std_m > 0) ||
+      !std::isfinite(tau_s) || !std::isfinite(std_m) || !std::isfinite(up_std_m))
     return;
-  if (tau_s == gm_tau_s_ && std_m == gm_std_m_) return;
-  if (!new_source && gm_std_m_ > 0) {
-    // the same process at another scale: e' = r·e, so P's rows and columns of e scale by r
-    const double r = std_m / gm_std_m_;
-    e_gnss_ *= r;
-    P_.block<3, kNumStates>(kGnssError, 0) *= r;
-    P_.block<kNumStates, 3>(0, kGnssError) *= r;
+  if (tau_s == gm_tau_s_ && std_m == gm_std_m_ && up_std_m == gm_up_std_m_) return;
+  const Eigen::Vector3d var_old = GnssErrorVariance(gm_std_m_, gm_up_std_m_);
+  const Eigen::Vector3d var_new = GnssErrorVariance(std_m, up_std_m);
+  if (!new_source && gm_std_m_ > 0 && gm_up_std_m_ > 0) {
+    // the same process at another scale per axis: e' = diag(r)·e, so P's rows and columns of e
+    // scale by r (the horizontal axes by the HDOP's ratio, the up axis by the VDOP's)
+    const Eigen::Vector3d r(std_m / gm_std_m_, std_m / gm_std_m_, up_std_m / gm_up_std_m_);
+    e_gnss_ = e_gnss_.cwiseProduct(r);
+    for (int i = 0; i < 3; ++i) {
+      P_.row(kGnssError + i) *= r[i];
+      P_.col(kGnssError + i) *= r[i];
+    }
   } else if (std_m > gm_std_m_) {
     // a new error source appears on top of the old one
-    P_.block<3, 3>(kGnssError, kGnssError).diagonal() +=
-        GnssErrorVariance(std_m) - GnssErrorVariance(gm_std_m_);
+    P_.block<3, 3>(kGnssError, kGnssError).diagonal() += (var_new - var_old).cwiseMax(0.0);
   } else {
     // the old error is gone: the state restarts, independent of everything else
     e_gnss_.setZero();
     P_.block<3, kNumStates>(kGnssError, 0).setZero();
     P_.block<kNumStates, 3>(0, kGnssError).setZero();
-    P_.block<3, 3>(kGnssError, kGnssError).diagonal() = GnssErrorVariance(std_m);
+    P_.block<3, 3>(kGnssError, kGnssError).diagonal() = var_new;
   }
   gm_tau_s_ = tau_s;
   gm_std_m_ = std_m;
+  gm_up_std_m_ = up_std_m;
 }
 
 UpdateResult ErrorStateEkf::UpdateZeroVelocity(double std_mps) {
@@ -430,7 +440,7 @@ void ErrorStateEkf::ResetPositionVelocity(const Eigen::Vector3d& p, const Eigen:
   if (params_.gnss_error_tau_s > 0) {
     P_.block<3, kNumStates>(kGnssError, 0).setZero();
     P_.block<kNumStates, 3>(0, kGnssError).setZero();
-    P_.block<3, 3>(kGnssError, kGnssError).diagonal() = GnssErrorVariance(gm_std_m_);
+    P_.block<3, 3>(kGnssError, kGnssError).diagonal() = GnssErrorVariance(gm_std_m_, gm_up_std_m_);
   }
 }
 

@@ -286,6 +286,7 @@ void Navigator::ProcessGnss(const GnssSample& g) {
   if (g.fix_quality <= 0) return;
   if (params_.mode == NavMode::kImuOnly) return;
   const Eigen::Vector3d p = frame_.ToLocal(g.position);
+  height_datum_var_m2_ = g.height_datum_std_m * g.height_datum_std_m;
   if (restart_at_next_fix_ && params_.mode == NavMode::kEkf) {
     restart_at_next_fix_ = false;
     ResetToFix(g, p);
@@ -306,9 +307,21 @@ void Navigator::ProcessGnss(const GnssSample& g) {
     const bool is_float =
         e.gnss_float_error_tau_s > 0 && e.gnss_float_error_std_m > 0 && g.fix_quality == 5;
     const double dop = g.hdop > 0 ? std::clamp(g.hdop, 0.5, 20.0) : 1.0;
-    ekf_.SetGnssErrorModel(is_float ? e.gnss_float_error_tau_s : e.gnss_error_tau_s,
-                           is_float ? e.gnss_float_error_std_m : e.gnss_error_std_m * dop,
-                           is_float != gnss_float_);
+    if (is_float) {
+      ekf_.SetGnssErrorModel(e.gnss_float_error_tau_s, e.gnss_float_error_std_m, !gnss_float_);
+    } else {
+      // the height's error scales with the VDOP (GSA), which is often 2-3 × the HDOP: scaled by
+      // the HDOP, the tractor rig's fixes at HDOP 2.2 and VDOP 6.3 were modelled at 3.3 cm in
+      // height where their error was 5.9 cm (mean vertical NEES 4.8)
+      const double vertical_scale = g.vdop > 0 && e.gnss_error_vdop_ref > 0
+                                        ? std::clamp(g.vdop, 0.5, 30.0) / e.gnss_error_vdop_ref
+                                        : dop;
+      const double vertical_std_m =
+          (e.gnss_error_vertical_std_m > 0 ? e.gnss_error_vertical_std_m : e.gnss_error_std_m) *
+          vertical_scale;
+      ekf_.SetGnssErrorModel(e.gnss_error_tau_s, e.gnss_error_std_m * dop, vertical_std_m,
+                             gnss_float_);
+    }
     gnss_float_ = is_float;
   }
   if (g.has_velocity) {
@@ -365,6 +378,7 @@ void Navigator::GnssOnlyFix(const GnssSample& g) {
   direct_.has_velocity = g.has_velocity;
   direct_.ground_speed_mps = g.ground_speed_mps;
   direct_.pos_std_enu_m = g.pos_std_enu_m;
+  direct_.pos_std_enu_m.z() = std::hypot(g.pos_std_enu_m.z(), g.height_datum_std_m);
   direct_.vel_std_enu_mps = g.vel_std_enu_mps;
   direct_.has_attitude = false;
   if (g.has_velocity && g.vel_enu_mps.head<2>().norm() >= params_.align_min_speed_mps) {
@@ -425,6 +439,8 @@ void Navigator::MultiGnssFix(const GnssSample& g) {
   direct_.v_N_mps.setZero();
   for (int i = 0; i < n; ++i) direct_.v_N_mps += epoch[i].vel_enu_mps * w;
   direct_.pos_std_enu_m = g.pos_std_enu_m * std::sqrt(w);
+  // the geoid separation's rounding is the same in every receiver's height: not averaged away
+  direct_.pos_std_enu_m.z() = std::hypot(direct_.pos_std_enu_m.z(), g.height_datum_std_m);
   direct_.q_NB = q;
   direct_.has_attitude = true;
   direct_.status = kStatusGnssFused;
@@ -493,6 +509,9 @@ NavOutput Navigator::Output() const {
     o.vel_std_enu_mps[i] = std::sqrt(P(ekf_index::kVel + i, ekf_index::kVel + i));
     o.att_std_rad[i] = std::sqrt(P(ekf_index::kAtt + i, ekf_index::kAtt + i));
   }
+  // the fixes' common height error (an NMEA geoid separation's rounding) is in the estimate too
+  o.pos_std_enu_m.z() =
+      std::sqrt(P(ekf_index::kPos + 2, ekf_index::kPos + 2) + height_datum_var_m2_);
   o.accel_bias_B = ekf_.accel_bias();
   o.gyro_bias_B = ekf_.gyro_bias();
   return o;

@@ -338,6 +338,33 @@ TEST_F(ErrorStateEkfTest, GnssErrorModelSwitchAddsOrRestartsTheCorrelatedError) 
   EXPECT_EQ(ekf_.covariance(), same);
 }
 
+// issue 39: the height's correlated error scales with the VDOP, the horizontal axes' with the
+// HDOP: a rescaled process scales each axis's state and covariance rows by its own ratio.
+TEST_F(ErrorStateEkfTest, GnssErrorScaleChangeRescalesTheUpAxisByItsOwnRatio) {
+  const Eigen::Vector3d p = Pos(ekf_);
+  ASSERT_TRUE(
+      ekf_.UpdatePosition(p + Eigen::Vector3d(0.05, -0.02, 0.03), Eigen::Vector3d::Constant(0.05))
+          .accepted);
+  const EkfMatrix before = ekf_.covariance();
+  const Eigen::Vector3d e_before = ekf_.gnss_error();
+  const double sigma = ekf_.params().gnss_error_std_m;
+  const double up =
+      ekf_.params().gnss_error_vertical_std_m > 0 ? ekf_.params().gnss_error_vertical_std_m : sigma;
+  // WHEN the HDOP stays and the VDOP triples
+  ekf_.SetGnssErrorModel(ekf_.params().gnss_error_tau_s, sigma, 3.0 * up, false);
+  const EkfMatrix after = ekf_.covariance();
+  // THEN only the up axis scales: its estimate ×3, its variance ×9, its cross-covariances ×3
+  EXPECT_NEAR(ekf_.gnss_error().z(), 3.0 * e_before.z(), 1e-15);
+  EXPECT_EQ(ekf_.gnss_error().head<2>(), e_before.head<2>());
+  const int u = kGnssError + 2;
+  EXPECT_NEAR(after(u, u), 9.0 * before(u, u), 1e-15);
+  for (int i = 0; i < kNumStates; ++i) {
+    if (i == u) continue;
+    EXPECT_NEAR(after(i, u), 3.0 * before(i, u), 1e-15) << i;
+  }
+  EXPECT_TRUE((after.topLeftCorner<u, u>() == before.topLeftCorner<u, u>()));
+}
+
 TEST_F(ErrorStateEkfTest, GnssErrorScaleChangeRescalesTheSameProcess) {
   // GIVEN a filter whose correlated GNSS error has an estimate and cross-covariances
   const Eigen::Vector3d p = Pos(ekf_);

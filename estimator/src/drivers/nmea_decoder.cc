@@ -111,6 +111,7 @@ std::optional<NmeaFix> NmeaDecoder::ParseSentence(std::string_view s, NmeaDecode
     fix.msl_altitude_m = ToDouble(f[9]);
     if (fix.msl_altitude_m) fix.altitude_step_m = DecimalStep(f[9]);
     fix.geoid_separation_m = ToDouble(f[11]);
+    if (fix.geoid_separation_m) fix.geoid_step_m = DecimalStep(f[11]);
     fix.valid = fix.quality > 0 && fix.lat_deg && fix.lon_deg;
   } else if (type == "RMC" && f.size() >= 10) {
     fix.kind = NmeaFix::Kind::kRmc;
@@ -125,6 +126,14 @@ std::optional<NmeaFix> NmeaDecoder::ParseSentence(std::string_view s, NmeaDecode
       if (const auto yy = ToInt(f[9].substr(4, 2))) fix.year = 2000 + *yy;
     }
     fix.valid = f[2] == "A" && fix.lat_deg && fix.lon_deg;
+  } else if (type == "GSA" && f.size() >= 18) {
+    // $xxGSA,mode,fix type,12 × satellite,PDOP,HDOP,VDOP[,system id]
+    fix.kind = NmeaFix::Kind::kGsa;
+    const auto vdop = ToDouble(f[17]);
+    if (ToInt(f[2]).value_or(0) == 3 && vdop && *vdop > 0 && *vdop < 99.0) {
+      fix.vdop = vdop;
+      fix.hdop = ToDouble(f[16]);
+    }
   } else {
     ++stats->unsupported;
     return std::nullopt;

@@ -1,5 +1,7 @@
 #include "hil/estimator/drivers/nmea_epoch.h"
 
+#include <cstdlib>
+
 namespace hil::estimator::drivers {
 namespace {
 
@@ -26,6 +28,12 @@ std::optional<NmeaMeasurement> NmeaEpochAssembler::Add(const NmeaFix& fix) {
     rmc_course_deg_ = fix.valid ? fix.course_deg : std::nullopt;
     return std::nullopt;
   }
+  if (fix.kind == NmeaFix::Kind::kGsa) {
+    vdop_ = fix.vdop;
+    vdop_time_of_day_ns_ = gga_time_of_day_ns_;
+    return std::nullopt;
+  }
+  gga_time_of_day_ns_ = fix.utc_time_of_day_ns;
   if (!fix.valid || !fix.utc_time_of_day_ns || !day_start_unix_ns_ || !fix.msl_altitude_m)
     return std::nullopt;
   NmeaMeasurement m;
@@ -38,8 +46,12 @@ std::optional<NmeaMeasurement> NmeaEpochAssembler::Add(const NmeaFix& fix) {
   m.lon_deg = *fix.lon_deg;
   m.height_m = *fix.msl_altitude_m + fix.geoid_separation_m.value_or(0.0);
   m.hdop = fix.hdop;
+  if (vdop_ && vdop_time_of_day_ns_ &&
+      std::abs(*fix.utc_time_of_day_ns - *vdop_time_of_day_ns_) <= kVdopMaxAgeNs)
+    m.vdop = vdop_;
   m.geoid_separation_m = fix.geoid_separation_m;
   m.altitude_step_m = fix.altitude_step_m;
+  m.geoid_step_m = fix.geoid_separation_m ? fix.geoid_step_m : 0.0;
   m.quality = fix.quality;
   m.num_sv = fix.num_sv;
   if (rmc_time_of_day_ns_ == fix.utc_time_of_day_ns) {

@@ -100,3 +100,42 @@ TEST(NmeaDecoderTest, RejectsCoordinatesOffTheEarth) {
 
 }  // namespace
 }  // namespace hil::estimator::drivers
+
+namespace hil::estimator::drivers {
+namespace {
+
+// issue 39: a receiver's height error scales with its VDOP, which GSA reports (the emulated RTK
+// rover's sky: HDOP 2.19, VDOP 6.31); navd read GGA's HDOP only and modelled the height at a third
+// of its error. GSA's VDOP joins the GGA epochs that follow it, and the geoid separation's step is
+// kept (its rounding is one offset for the site).
+TEST(NmeaEpochTest, GsaVdopAndGeoidStepJoinTheEpoch) {
+  constexpr const char* kGsa = "$GPGSA,A,3,30,05,20,08,32,27,19,07,,,,,6.68,2.19,6.31*03\r\n";
+  constexpr const char* kGsaNoFix = "$GPGSA,A,1,,,,,,,,,,,,,99.99,99.99,99.99*30\r\n";
+  NmeaDecoderStats stats;
+  const auto fixes = Decode({kRmc, kGga, kGsa, kGsaNoFix}, &stats);
+  ASSERT_EQ(fixes.size(), 4u);
+  EXPECT_EQ(stats.unsupported, 0u);
+  EXPECT_EQ(fixes[2].kind, NmeaFix::Kind::kGsa);
+  EXPECT_FALSE(fixes[2].valid);  // no position
+  EXPECT_DOUBLE_EQ(*fixes[2].vdop, 6.31);
+  EXPECT_DOUBLE_EQ(*fixes[2].hdop, 2.19);
+  EXPECT_FALSE(fixes[3].vdop);  // no 3-D solution: no VDOP
+  EXPECT_DOUBLE_EQ(fixes[1].geoid_step_m, 0.1);
+  // an epoch after a GSA with a 3-D solution carries its VDOP
+  NmeaEpochAssembler a;
+  std::optional<NmeaMeasurement> m;
+  for (const auto& f : Decode({kRmc, kGga, kGsa, kRmc, kGga})) {
+    if (auto r = a.Add(f)) m = r;
+  }
+  ASSERT_TRUE(m);
+  EXPECT_DOUBLE_EQ(m->vdop.value_or(0.0), 6.31);
+  EXPECT_DOUBLE_EQ(m->geoid_step_m, 0.1);
+  // AND one after a GSA without a solution does not
+  for (const auto& f : Decode({kGsaNoFix, kRmc, kGga})) {
+    if (auto r = a.Add(f)) m = r;
+  }
+  EXPECT_FALSE(m->vdop);
+}
+
+}  // namespace
+}  // namespace hil::estimator::drivers

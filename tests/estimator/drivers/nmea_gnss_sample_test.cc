@@ -83,5 +83,28 @@ TEST(NmeaGnssSampleTest, AltitudeRoundingWidensTheVerticalSigma) {
   EXPECT_NEAR(ToGnssSample(m, 18, acc).pos_std_enu_m.z(), 0.01, 1e-6);
 }
 
+// issue 39: GGA's height is its altitude plus the geoid separation, both rounded (0.1 m). The
+// separation's rounding is one offset for the site, the same in every fix (+4.3 cm on the tractor
+// rig's site, 11.657 m written 11.7): not a noise of the fix but an error of the height that no fix
+// reveals, carried as its own σ (uniform over the step) and not in the fix's noise.
+TEST(NmeaGnssSampleTest, GeoidSeparationRoundingIsACommonHeightErrorAndVdopIsPassedOn) {
+  NmeaMeasurement m;
+  m.quality = kGgaQualityRtkFixed;
+  NmeaAccuracy acc;
+  acc.rtk_fixed_std_m = 0.005;
+  m.altitude_step_m = 0.1;
+  m.geoid_separation_m = 11.7;
+  m.geoid_step_m = 0.1;
+  m.vdop = 6.31;
+  const GnssSample g = ToGnssSample(m, 18, acc);
+  EXPECT_NEAR(g.height_datum_std_m, 0.1 / std::sqrt(12.0), 1e-12);
+  EXPECT_NEAR(g.pos_std_enu_m.z(), std::sqrt(0.01 * 0.01 + 0.1 * 0.1 / 12.0), 1e-12);
+  EXPECT_DOUBLE_EQ(g.vdop, 6.31);
+  m.geoid_step_m = 0.0;  // no separation written
+  m.vdop.reset();
+  EXPECT_EQ(ToGnssSample(m, 18, acc).height_datum_std_m, 0.0);
+  EXPECT_EQ(ToGnssSample(m, 18, acc).vdop, 0.0);
+}
+
 }  // namespace
 }  // namespace hil::estimator::drivers

@@ -76,9 +76,15 @@ struct EkfParams {
   /// its steady-state σ per horizontal axis (and up, unless:) at HDOP 1; fixes that report their
   /// HDOP scale it (SetGnssErrorModel), as a receiver's error scales with its geometry
   double gnss_error_std_m = 0.0;
-  /// σ of the up component (0: gnss_error_std_m); the float model keeps the same up/horizontal
+  /// σ of the up component (0: gnss_error_std_m) at the nominal geometry: HDOP 1 and VDOP
+  /// gnss_error_vdop_ref. A fix that reports its VDOP (NMEA GSA) scales it by VDOP /
+  /// gnss_error_vdop_ref, one without by its HDOP; the float model keeps the same up/horizontal
   /// ratio
   double gnss_error_vertical_std_m = 0.0;
+  /// the VDOP at which gnss_error_vertical_std_m holds (ours: 1.6, the VDOP/HDOP ratio of the
+  /// emulated receivers' reference geometry, hdop_ref 1 and vdop_ref 1.6 in receiver_model.h, so
+  /// that a fix without a VDOP, scaled by its HDOP, is scaled as one with VDOP = 1.6 · HDOP)
+  double gnss_error_vdop_ref = 1.6;
   /// RTK float solutions (GGA quality 5): their own correlated error (decimetres, seconds); the
   /// filter switches to this model while fixes are float (0 = same model as fixed fixes).
   double gnss_float_error_tau_s = 0.0;
@@ -147,7 +153,13 @@ class ErrorStateEkf {
   /// receiver's HDOP changed): the error is σ times a unit Gauss–Markov process, so the state and
   /// its covariance rows are rescaled by the ratio of the σ. No effect when the augmented states
   /// are off (gnss_error_tau_s = 0) or the model is unchanged.
+  /// The up axis keeps the configured up/horizontal ratio (gnss_error_vertical_std_m /
+  /// gnss_error_std_m).
   void SetGnssErrorModel(double tau_s, double std_m, bool new_source);
+  /// The same with the up axis's σ of its own (`up_std_m`): a receiver's vertical error scales
+  /// with its VDOP, not its HDOP. A rescaled process (`new_source` false) scales each axis's state
+  /// and covariance rows by that axis's ratio.
+  void SetGnssErrorModel(double tau_s, double std_m, double up_std_m, bool new_source);
   /// Zero-velocity update (the vehicle stands): v_N = 0 with σ per axis.
   UpdateResult UpdateZeroVelocity(double std_mps);
   /// Zero-angular-rate update (the vehicle stands): the mean raw gyro rate over a still interval
@@ -236,8 +248,8 @@ class ErrorStateEkf {
   void SymmetrizeBlock(int first, int end);
   /// A negative or non-finite variance: its row and column restart (counted in repairs_).
   void RepairDiagonal();
-  /// Stationary variances (E, N, U) of the correlated GNSS error for a horizontal σ.
-  Eigen::Vector3d GnssErrorVariance(double horizontal_std_m) const;
+  /// Stationary variances (E, N, U) of the correlated GNSS error for its horizontal and up σ.
+  static Eigen::Vector3d GnssErrorVariance(double horizontal_std_m, double up_std_m);
 
   EkfParams params_;
   EarthModel earth_;
@@ -246,7 +258,8 @@ class ErrorStateEkf {
   Eigen::Vector3d ba_ = Eigen::Vector3d::Zero(), bg_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d e_gnss_ = Eigen::Vector3d::Zero();
   double gm_tau_s_ = 0.0, gm_std_m_ = 0.0;  // current correlated GNSS error model (horizontal σ)
-  double gm_up_ratio_ = 1.0;                // up σ / horizontal σ
+  double gm_up_ratio_ = 1.0;                // configured up σ / horizontal σ
+  double gm_up_std_m_ = 0.0;                // current correlated GNSS error model's up σ
   double set_speed_ = 0.0;                  // speed model: the vehicle's set speed (m/s)
   double speed_dev_ = 0.0;                  // speed model: forward speed minus set speed (m/s)
   Eigen::Vector3d w_B_ = Eigen::Vector3d::Zero();  // last compensated angular rate

@@ -319,6 +319,7 @@ class Navigator {
   std::optional<HeadingSample> heading_;
   GpsTime newest_imu_t_{}, filter_t_{}, last_gnss_fused_t_{}, last_nhc_t_{};
   std::optional<GpsTime> first_rejected_t_;  // first of the current run of rejected fixes
+  double height_datum_var_m2_ = 0.0;         // the last fix's height_datum_std_m²
   bool gnss_float_ = false;           // the correlated GNSS error model in use is the RTK float one
   bool restart_at_next_fix_ = false;  // IMU samples resumed after a loss
   int fixes_since_imu_ = 0;           // fixes pushed since the last IMU sample

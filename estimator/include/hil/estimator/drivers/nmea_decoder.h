@@ -2,7 +2,7 @@
 /// @file
 /// Tolerant NMEA 0183 decoder for navd: accepts bytes in arbitrary pieces (split reads), skips
 /// garbage and binary frames between sentences, verifies checksums (bad ones are counted and
-/// dropped), and decodes the sentences navd uses (GGA, RMC) into value types. Never throws on
+/// dropped), and decodes the sentences navd uses (GGA, RMC, GSA) into value types. Never throws on
 /// input.
 
 #include <cstdint>
@@ -13,9 +13,9 @@
 
 namespace hil::estimator::drivers {
 
-/// One decoded GGA or RMC sentence. Missing fields stay empty (std::nullopt).
+/// One decoded GGA, RMC or GSA sentence. Missing fields stay empty (std::nullopt).
 struct NmeaFix {
-  enum class Kind : std::uint8_t { kGga, kRmc } kind = Kind::kGga;
+  enum class Kind : std::uint8_t { kGga, kRmc, kGsa } kind = Kind::kGga;
   std::optional<std::int64_t> utc_time_of_day_ns;  ///< hhmmss.ss as nanoseconds since midnight
   std::optional<int> day, month, year;             ///< RMC date (year with century)
   bool valid = false;                              ///< GGA quality > 0, or RMC status 'A'
@@ -24,7 +24,12 @@ struct NmeaFix {
   std::optional<double> msl_altitude_m, geoid_separation_m;
   /// The step of the altitude as written (10^−decimals: 0.1 m for "141.1"), 0 when absent.
   double altitude_step_m = 0.0;
+  /// The step of the geoid separation as written (0.1 m for "11.7"), 0 when absent.
+  double geoid_step_m = 0.0;
   std::optional<double> hdop;
+  /// GSA: the solution's VDOP (and HDOP above), when its fix type is 3-D and the VDOP is not
+  /// the 99.99 of "no solution"; GSA carries no position or time (valid stays false)
+  std::optional<double> vdop;
   int num_sv = 0;
   std::optional<double> speed_mps, course_deg;  ///< RMC
 };
