@@ -2,8 +2,6 @@
 // seeds, pass/fail per criterion, per-outage E/N/U maxima, and the Markdown report's columns.
 #include "hil/harness/campaign/suite_report.h"
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 
@@ -11,6 +9,8 @@
 
 #include "hil/harness/devices/scenario_file.h"
 #include "hil/harness/scenario/yaml_reader.h"
+
+#include "process_temp_dir.h"
 
 namespace hil::harness {
 namespace {
@@ -23,9 +23,7 @@ constexpr const char* kBase =
     "duration_s: 300\n";
 
 std::string TempFile(const std::string& name, const std::string& text) {
-  const auto dir =
-      std::filesystem::temp_directory_path() / ("hil_suite_report_" + std::to_string(getpid()));
-  std::filesystem::create_directories(dir);
+  const auto dir = test::ProcessTempDir("suite_report");
   const std::string path = (dir / name).string();
   std::ofstream(path) << text;
   return path;

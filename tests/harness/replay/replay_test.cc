@@ -19,6 +19,8 @@
 #include "hil/harness/links/capture_format.h"
 #include "hil/harness/links/serial_endpoint.h"
 
+#include "process_temp_dir.h"
+
 namespace hil::harness {
 namespace {
 
@@ -83,9 +85,7 @@ class Host {
 };
 
 fs::path TempDir(const char* name) {
-  const fs::path d =
-      fs::temp_directory_path() / (std::string("hil_") + name + "_" + std::to_string(getpid()));
-  fs::remove_all(d);
+  const fs::path d = test::ProcessTempDir(name);
   fs::create_directories(d / "captures");
   return d;
 }

@@ -2,8 +2,6 @@
 // set after the includes, checked like the file's own value; errors name the file and the field.
 #include "hil/harness/scenario/scenario_overrides.h"
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 
@@ -13,14 +11,15 @@
 #include "hil/harness/scenario/scenario.h"
 #include "hil/harness/scenario/yaml_reader.h"
 
+#include "process_temp_dir.h"
+
 namespace hil::harness {
 namespace {
 
 namespace fs = std::filesystem;
 
 std::string ScenarioFile(const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / ("hil_overrides_" + std::to_string(getpid()));
-  fs::create_directories(dir);
+  const fs::path dir = test::ProcessTempDir("overrides");
   const std::string path = (dir / "s.yaml").string();
   std::ofstream(path) << text;
   return path;
