@@ -83,7 +83,7 @@ void PrintUsage() {
       "razor_gnss_latency_s\n"
       "                  [time] leap_seconds\n"
       "                  [filter] mode (ekf|planar2d|gnss_only|imu_only|multi_gnss), lever_arm_m,\n"
-      "                  accel_noise, gyro_noise, accel_bias_rw, gyro_bias_rw, "
+      "                  accel_noise, gyro_noise, gyro_scale_std, accel_bias_rw, gyro_bias_rw, "
       "init_accel_bias_std,\n"
       "                  init_gyro_bias_std, gnss_error_tau_s, gnss_error_std_m, nhc_std_mps,\n"
       "                  gate_sigma, fusion_horizon_s, use_gnss_velocity, gnss_max_latency_s,\n"

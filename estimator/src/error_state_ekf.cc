@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace hil::estimator {
 
@@ -74,8 +75,12 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& delta_angle_B_rad,
   P_.block<3, 3>(kVel, kVel).diagonal().array() +=
       q_scale_ * accel_scale_ * p.accel_noise_mps2_rthz * p.accel_noise_mps2_rthz * dt;
   if (!attitude_hold_) {
+    // the white angle random walk, plus the scale and misalignment error of the angle turned
+    // (isotropic: invariant under C)
+    const double turned_rad = dth.norm();
     P_.block<3, 3>(kAtt, kAtt).diagonal().array() +=
-        q_scale_ * accel_scale_ * p.gyro_noise_radps_rthz * p.gyro_noise_radps_rthz * dt;
+        q_scale_ * accel_scale_ * p.gyro_noise_radps_rthz * p.gyro_noise_radps_rthz * dt +
+        p.gyro_scale_std * p.gyro_scale_std * std::numbers::pi * turned_rad;
   }
   P_.block<3, 3>(kAccelBias, kAccelBias).diagonal().array() +=
       accel_scale_ * p.accel_bias_rw_mps3_rthz * p.accel_bias_rw_mps3_rthz * dt;

@@ -3,6 +3,7 @@
 #include "hil/estimator/error_state_ekf.h"
 
 #include <cmath>
+#include <numbers>
 
 #include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
@@ -216,6 +217,28 @@ TEST(ErrorStateEkfStandstillTest, HeldAttitudeErrorDoesNotTurnWithTheEarth) {
                                                                    << att_after;
 }
 
+// issue 39 (parked_for_hours): a half turn on a gyro with a scale or misalignment error s leaves
+// an attitude error of about s·π, which the white angle random walk alone did not hold (the turn
+// taught the filter a tilt 0.3-0.5° off with a σ of about 0.12°); a straight drive adds nothing.
+TEST(ErrorStateEkfTurnTest, AttitudeVarianceGrowsWithTheAngleTurned) {
+  EkfParams p;
+  p.gyro_noise_radps_rthz = 1e-6;
+  p.gyro_scale_std = 0.005;
+  p.init_gyro_bias_std_radps = 1e-6;  // no other source of attitude variance
+  const auto roll_var_after = [&p](double rate_radps) {
+    ErrorStateEkf ekf(p, EarthModel{});
+    ekf.Initialize(NavState{});
+    const double before = ekf.covariance()(kAtt, kAtt);
+    for (int k = 0; k < 1000; ++k)  // 10 s at 100 Hz
+      ekf.Predict(Eigen::Vector3d(0, 0, rate_radps * 0.01), Eigen::Vector3d(0, 0, 9.81) * 0.01,
+                  0.01);
+    return ekf.covariance()(kAtt, kAtt) - before;
+  };
+  const double s_pi = p.gyro_scale_std * std::numbers::pi;
+  EXPECT_GT(roll_var_after(std::numbers::pi / 10.0), 0.9 * s_pi * s_pi);
+  EXPECT_LT(roll_var_after(0.0), 1e-9);
+}
+
 TEST_F(ErrorStateEkfTest, NonFiniteInputsAreIgnored) {
   const NavState before = ekf_.state();
   ekf_.Predict(Eigen::Vector3d::Constant(std::nan("")), Eigen::Vector3d::Zero(), 0.01);
@@ -415,6 +438,7 @@ TEST(ErrorStateEkfGnssModelTest, SwitchIsIgnoredWithoutCorrelatedStates) {
 TEST(ErrorStateEkfClassicTest, PropagationEqualsTheDenseProductAndKeepsTheTailZero) {
   EkfParams p;
   p.lever_arm_B_m = Eigen::Vector3d(0.3, 0.1, 0.9);
+  p.gyro_scale_std = 0.005;
   p.nhc_std_mps = 0.05;
   EarthModel earth;
   earth.w_IE_N_radps = Eigen::Vector3d(0.0, 6.3e-5, 3.7e-5);
@@ -436,6 +460,7 @@ TEST(ErrorStateEkfClassicTest, PropagationEqualsTheDenseProductAndKeepsTheTailZe
   const EkfMatrix P0 = ekf.covariance();
   const Eigen::Matrix3d C = ekf.state().q_NB.toRotationMatrix();
   const Eigen::Vector3d f_N = C * (dv - ekf.accel_bias() * dt) / dt;
+  const double turned_rad = (dth - ekf.gyro_bias() * dt).norm();
   ekf.Predict(dth, dv, dt);
   EkfMatrix Phi = EkfMatrix::Identity();
   const Eigen::Matrix3d W = Skew(earth.w_IE_N_radps);
@@ -448,7 +473,8 @@ TEST(ErrorStateEkfClassicTest, PropagationEqualsTheDenseProductAndKeepsTheTailZe
   EkfMatrix Q = EkfMatrix::Zero();
   for (int i = 0; i < 3; ++i) {
     Q(kVel + i, kVel + i) = p.accel_noise_mps2_rthz * p.accel_noise_mps2_rthz * dt;
-    Q(kAtt + i, kAtt + i) = p.gyro_noise_radps_rthz * p.gyro_noise_radps_rthz * dt;
+    Q(kAtt + i, kAtt + i) = p.gyro_noise_radps_rthz * p.gyro_noise_radps_rthz * dt +
+                            p.gyro_scale_std * p.gyro_scale_std * std::numbers::pi * turned_rad;
     Q(kAccelBias + i, kAccelBias + i) = p.accel_bias_rw_mps3_rthz * p.accel_bias_rw_mps3_rthz * dt;
     Q(kGyroBias + i, kGyroBias + i) = p.gyro_bias_rw_radps2_rthz * p.gyro_bias_rw_radps2_rthz * dt;
   }

@@ -65,6 +65,15 @@ struct EkfParams {
   double gyro_noise_radps_rthz = 2e-4;     ///< angle random walk (rad/√s)
   double accel_bias_rw_mps3_rthz = 1e-4;   ///< accelerometer bias random walk
   double gyro_bias_rw_radps2_rthz = 1e-6;  ///< gyro bias random walk
+  /// σ of the gyro's scale-factor and axis-misalignment error (rad of attitude error per rad
+  /// turned, dimensionless; `[filter] gyro_scale_std`). Not white: a turn of Θ leaves an error s·Θ
+  /// about every axis (roll and pitch from the misalignment, heading from the scale). Modelled as
+  /// attitude noise per radian turned, s²·π rad²/rad, which reaches (s·π)² over a headland's half
+  /// turn; nothing on a straight or while the attitude is held. 0 (off) by default: an IMU's scale
+  /// error is its own (0.5 % on a consumer MEMS, far less on an industrial one: 0.005 cost the
+  /// industrial-MEMS outage scenarios up to 30 % of their outage error). See estimator.md, "Turns
+  /// and the gyro's scale".
+  double gyro_scale_std = 0.0;
   double init_pos_std_m = 1.0;
   double init_vel_std_mps = 0.2;
   double init_roll_pitch_std_rad = 0.03;
