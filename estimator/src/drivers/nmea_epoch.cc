@@ -51,7 +51,7 @@ std::optional<NmeaMeasurement> NmeaEpochAssembler::Add(const NmeaFix& fix) {
     m.vdop = vdop_;
   m.geoid_separation_m = fix.geoid_separation_m;
   m.altitude_step_m = fix.altitude_step_m;
-  m.geoid_step_m = fix.geoid_separation_m ? fix.geoid_step_m : 0.0;
+  m.geoid_step_m = fix.geoid_step_m;  // 0 when the GGA has no geoid separation
   m.quality = fix.quality;
   m.num_sv = fix.num_sv;
   if (rmc_time_of_day_ns_ == fix.utc_time_of_day_ns) {

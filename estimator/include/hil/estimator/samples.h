@@ -37,7 +37,7 @@ struct GnssSample {
   int num_sv = 0;
   int fix_quality = 1;  ///< 0 none, 1 GPS, 2 DGPS, 4/5 RTK
   double hdop = 0;      ///< receiver's HDOP (0: not reported)
-  double vdop = 0;      ///< receiver's VDOP (NMEA GSA, UBX NAV-DOP; 0: not reported)
+  double vdop = 0;      ///< receiver's VDOP (NMEA GSA; 0: not reported)
   /// the receiver's geoid height above the ellipsoid (GGA field 11, UBX height − hMSL), when it
   /// says; position.height_m is ellipsoidal either way
   std::optional<double> geoid_separation_m;
