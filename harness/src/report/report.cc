@@ -148,6 +148,7 @@ MetricTable RunMetricTable(const RunReport& r) {
     t["tracking.steady_state_mean_abs_m"] = r.tracking->steady_state_mean_abs_m;
   }
   AddPassToPassMetrics(r.pass_to_pass, t);
+  AddRtkRoverMetrics(r.rtk_rover, t);
   if (r.row_following && r.row_following->samples > 0) {
     t["max_lateral_deviation_m"] = r.row_following->max_lateral_deviation_m;
     t["max_heading_deviation_deg"] = r.row_following->max_heading_deviation_deg;

@@ -39,6 +39,37 @@ RtkRoverReport MakeRtkRoverReport(const rtk::ZedF9pDevice& rover) {
   return r;
 }
 
+void AddRtkRoverMetrics(const std::optional<RtkRoverReport>& r,
+                        std::map<std::string, std::optional<double>>& table) {
+  if (!r) return;
+  const auto n = static_cast<double>(r->epochs);
+  const auto share = [n](std::uint64_t k) {
+    return n > 0 ? std::optional<double>(static_cast<double>(k) / n) : std::nullopt;
+  };
+  std::optional<double> first_float, first_fixed;
+  int fixed_losses = 0, previous = 0;
+  for (const RtkRoverChange& c : r->timeline) {
+    if (c.carr_soln >= 1 && !first_float) first_float = c.t_s;
+    if (c.carr_soln == 2 && !first_fixed) first_fixed = c.t_s;
+    if (previous == 2 && c.carr_soln < 2) ++fixed_losses;
+    previous = c.carr_soln;
+  }
+  table["rtk_rover.epochs"] = n;
+  table["rtk_rover.fixed_fraction"] = share(r->epochs_fixed);
+  table["rtk_rover.float_fraction"] = share(r->epochs_float);
+  table["rtk_rover.time_to_first_float_s"] = first_float;
+  table["rtk_rover.time_to_first_fixed_s"] = first_fixed;
+  table["rtk_rover.fixed_losses"] = fixed_losses;
+  table["rtk_rover.rtcm_frames"] = static_cast<double>(r->rtcm_frames);
+  table["rtk_rover.rtcm_crc_failed"] = static_cast<double>(r->rtcm_crc_failed);
+  table["rtk_rover.heading_valid_epochs"] = static_cast<double>(r->heading_valid_epochs);
+  const bool heading = r->heading_valid_epochs > 0;
+  const auto h = [heading](double v) { return heading ? std::optional<double>(v) : std::nullopt; };
+  table["rtk_rover.heading_rms_error_deg"] = h(r->heading_rms_error_deg);
+  table["rtk_rover.heading_max_error_deg"] = h(r->heading_max_error_deg);
+  table["rtk_rover.acc_heading_mean_deg"] = h(r->acc_heading_mean_deg);
+}
+
 nlohmann::json RtkRoverJson(const RtkRoverReport& r) {
   nlohmann::json timeline = nlohmann::json::array();
   for (const RtkRoverChange& c : r.timeline) {

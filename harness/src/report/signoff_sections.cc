@@ -122,6 +122,15 @@ std::string MetricMeaning(const std::string& metric) {
       {"tracking.from_start_max_abs_m", "largest |vehicle to path| from the start (m)"},
       {"tracking.stable_distance_m", "distance the vehicle stayed settled on the path (m)"},
       {"tracking.steady_state_mean_abs_m", "mean |vehicle to path| once settled (m)"},
+      {"rtk_rover.fixed_fraction", "share of the RTK rover's epochs with a fixed solution"},
+      {"rtk_rover.float_fraction", "share of the RTK rover's epochs with a float solution"},
+      {"rtk_rover.time_to_first_float_s", "time until the rover's first RTK solution (s)"},
+      {"rtk_rover.time_to_first_fixed_s", "time until the rover's first fixed solution (s)"},
+      {"rtk_rover.fixed_losses", "times the rover fell from fixed to float or less"},
+      {"rtk_rover.rtcm_crc_failed", "RTCM3 frames the rover rejected by their CRC-24Q"},
+      {"rtk_rover.heading_valid_epochs", "moving-base epochs with a valid heading"},
+      {"rtk_rover.heading_rms_error_deg", "RMS of the dual-antenna heading against truth (deg)"},
+      {"rtk_rover.heading_max_error_deg", "largest dual-antenna heading error (deg)"},
   };
   const auto it = kMeaning.find(metric);
   if (it != kMeaning.end()) return it->second;

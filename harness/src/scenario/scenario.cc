@@ -47,6 +47,17 @@ const std::vector<std::string> kCriterionMetrics{"horizontal_rmse_m",
                                                  "outage_max_up_error_m",
                                                  "outage_max_enu_error_m"};
 
+const std::vector<std::string> kCriterionMetricPrefixes{"navd.", "tracking.", "pass_to_pass.",
+                                                        "closed_loop.", "rtk_rover."};
+
+bool IsCriterionMetric(const std::string& metric) {
+  if (std::find(kCriterionMetrics.begin(), kCriterionMetrics.end(), metric) !=
+      kCriterionMetrics.end())
+    return true;
+  return std::any_of(kCriterionMetricPrefixes.begin(), kCriterionMetricPrefixes.end(),
+                     [&metric](const std::string& p) { return metric.rfind(p, 0) == 0; });
+}
+
 namespace {
 
 // the tables read here (a using-declaration each: the unity build joins the readers' files)
@@ -98,14 +109,10 @@ std::vector<Criterion> ReadCriteria(const YamlReader& r) {
     c.CheckKeys();
     Criterion k;
     k.metric = c.String("metric");
-    if (std::find(kCriterionMetrics.begin(), kCriterionMetrics.end(), k.metric) ==
-            kCriterionMetrics.end() &&
-        k.metric.rfind("navd.", 0) != 0 && k.metric.rfind("tracking.", 0) != 0 &&
-        k.metric.rfind("pass_to_pass.", 0) != 0 &&
-        k.metric.rfind("closed_loop.", 0) !=
-            0) {  // navd.<health counter>, navd.flag.<flag> (fault_report.h)
+    if (!IsCriterionMetric(k.metric)) {
       std::string msg = "unknown metric '" + k.metric + "' (one of:";
       for (const auto& m : kCriterionMetrics) msg += " " + m;
+      for (const auto& p : kCriterionMetricPrefixes) msg += " " + p + "*";
       c.Fail("metric", msg + ")");
     }
     if (c.Has("max")) k.max = c.Number("max", 0);

@@ -61,7 +61,7 @@ inline constexpr ScenarioKey kEstimator[] = {
 inline constexpr ScenarioKey kCriterion[] = {
     {"metric", kString, "", "required", 0, 0,
      "a metric of report.json (vectors/scenarios/README.md), or navd.*, tracking.*, "
-     "pass_to_pass.*, closed_loop.*"},
+     "pass_to_pass.*, closed_loop.*, rtk_rover.*"},
     {"max", kNumber, "", "one of max, min, max_ratio_to_baseline", 0, 1e9,
      "passes when metric ≤ max"},
     {"min", kNumber, "", "one of max, min, max_ratio_to_baseline", 0, 1e9,

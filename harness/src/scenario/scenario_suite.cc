@@ -22,7 +22,8 @@ inline constexpr ScenarioKey kFigure[] = {
     {"source", kString, "", "required", 0, 0,
      "where the figure is published (\"Paper 000 (Goli et al., 2013), table of methods\")"},
     {"metric", kString, "", "required", 0, 0,
-     "the criterion metric it compares with (criteria[].metric's, tracking.*, pass_to_pass.*), "
+     "the criterion metric it compares with (criteria[].metric's, tracking.*, pass_to_pass.*, "
+     "rtk_rover.*), "
      "in its unit"},
     {"value", kNumber, "", "none (then finding)", -1e9, 1e9, "the figure"},
     {"relation", kChoice, "", "about", 0, 0,
@@ -53,13 +54,12 @@ PaperFigure ReadFigure(const YamlReader& y) {
   PaperFigure p;
   p.source = r.String("source");
   p.metric = r.String("metric");
-  // a closed loop's tracking figures (tracking.<field>, as criteria name them) too: paper 003's
-  // and the closed-loop papers' figures are the truth's deviation from the path
-  if (std::find(kCriterionMetrics.begin(), kCriterionMetrics.end(), p.metric) ==
-          kCriterionMetrics.end() &&
-      p.metric.rfind("tracking.", 0) != 0 && p.metric.rfind("pass_to_pass.", 0) != 0) {
+  // any metric a criterion may name: a closed loop's tracking figures (tracking.<field>) too,
+  // since paper 003's and the closed-loop papers' figures are the truth's deviation from the path
+  if (!IsCriterionMetric(p.metric)) {
     std::string msg = "unknown metric '" + p.metric + "' (one of:";
     for (const auto& m : kCriterionMetrics) msg += " " + m;
+    for (const auto& x : kCriterionMetricPrefixes) msg += " " + x + "*";
     r.Fail("metric", msg + ")");
   }
   if (r.Has("value")) p.value = r.Number("value", 0);

@@ -2,6 +2,8 @@
 // carrSoln over the run, each state held from its change to the next, the last one to the end.
 #include "hil/harness/report/rtk_rover_report.h"
 
+#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,6 +55,50 @@ TEST(RtkRoverReport, HeadingFiguresOnlyWithAMovingBase) {
   std::string html;
   AppendRtkRoverHtml(html, r);
   EXPECT_NE(html.find("Dual-antenna heading: 241 epochs"), std::string::npos) << html;
+}
+
+TEST(RtkRoverReport, FiguresAreCriterionMetrics) {
+  RtkRoverReport r = CutTimeline();
+  r.epochs = 150;
+  r.epochs_float = 12;
+  r.epochs_fixed = 53;
+  r.rtcm_frames = 140;
+  r.rtcm_crc_failed = 1;
+  std::map<std::string, std::optional<double>> t;
+  AddRtkRoverMetrics(r, t);
+  EXPECT_EQ(t.at("rtk_rover.epochs"), 150.0);
+  EXPECT_DOUBLE_EQ(*t.at("rtk_rover.fixed_fraction"), 53.0 / 150.0);
+  EXPECT_DOUBLE_EQ(*t.at("rtk_rover.float_fraction"), 12.0 / 150.0);
+  EXPECT_EQ(t.at("rtk_rover.time_to_first_float_s"), 1.6);
+  EXPECT_EQ(t.at("rtk_rover.time_to_first_fixed_s"), 11.6);
+  EXPECT_EQ(t.at("rtk_rover.fixed_losses"), 1.0);  // fixed → float at 64.4 s
+  EXPECT_EQ(t.at("rtk_rover.rtcm_crc_failed"), 1.0);
+  // no moving base: no heading figure to judge, which a criterion then reports as missing
+  EXPECT_EQ(t.at("rtk_rover.heading_valid_epochs"), 0.0);
+  EXPECT_FALSE(t.at("rtk_rover.heading_rms_error_deg").has_value());
+  r.heading_valid_epochs = 241;
+  r.heading_rms_error_deg = 0.34;
+  r.heading_max_error_deg = 0.61;
+  AddRtkRoverMetrics(r, t);
+  EXPECT_EQ(t.at("rtk_rover.heading_rms_error_deg"), 0.34);
+  EXPECT_EQ(t.at("rtk_rover.heading_max_error_deg"), 0.61);
+}
+
+TEST(RtkRoverReport, NeverFixedHasNoTimeToFix) {
+  RtkRoverReport r;
+  r.timeline = {{0.0, 0, -1}, {3.0, 1, 1.0}};
+  std::map<std::string, std::optional<double>> t;
+  AddRtkRoverMetrics(r, t);
+  EXPECT_EQ(t.at("rtk_rover.time_to_first_float_s"), 3.0);
+  EXPECT_FALSE(t.at("rtk_rover.time_to_first_fixed_s").has_value());
+  EXPECT_FALSE(t.at("rtk_rover.fixed_fraction").has_value());  // no epochs counted
+  EXPECT_EQ(t.at("rtk_rover.fixed_losses"), 0.0);
+}
+
+TEST(RtkRoverReport, NoRoverNoMetrics) {
+  std::map<std::string, std::optional<double>> t;
+  AddRtkRoverMetrics(std::nullopt, t);
+  EXPECT_TRUE(t.empty());
 }
 
 }  // namespace

@@ -56,6 +56,25 @@ TEST(ScenarioTest, OutOfRangeAndMissingValues) {
   ExpectError(std::string(kMinimal) + "start_utc: yesterday\n", 3, "start_utc", "ISO 8601");
 }
 
+TEST(ScenarioTest, CriterionMetricsByNameOrFamily) {
+  const Scenario s =
+      ParseScenario(std::string(kMinimal) +
+                        "criteria:\n"
+                        "  - {metric: rtk_rover.heading_rms_error_deg, max: 1}\n"
+                        "  - {metric: rtk_rover.time_to_first_fixed_s, max: 60}\n"
+                        "  - {metric: pass_to_pass.interpolated.p95_abs_m, max: 1}\n",
+                    "s.yaml");
+  ASSERT_EQ(s.criteria.size(), 3U);
+  EXPECT_EQ(s.criteria[0].metric, "rtk_rover.heading_rms_error_deg");
+  EXPECT_TRUE(IsCriterionMetric("horizontal_rmse_m"));
+  EXPECT_TRUE(IsCriterionMetric("navd.flag.imu_lost"));
+  EXPECT_FALSE(IsCriterionMetric("rtk_rovers.epochs"));
+  EXPECT_FALSE(IsCriterionMetric("heading"));
+  // the message lists the families too
+  ExpectError(std::string(kMinimal) + "criteria:\n  - {metric: rtk.heading, max: 1}\n", 4,
+              "criteria[0].metric", "rtk_rover.*");
+}
+
 TEST(ScenarioTest, SyntaxErrorAndMissingFile) {
   ExpectError("name: t\norigin: {lat_deg: 1\n", 3, "", "YAML syntax error");
   try {

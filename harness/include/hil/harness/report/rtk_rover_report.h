@@ -5,6 +5,8 @@
 /// and the RTCM frames it received (report.json `rtk_rover`; a table in the HTML report).
 
 #include <cstdint>
+#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,6 +37,14 @@ struct RtkRoverReport {
 };
 
 RtkRoverReport MakeRtkRoverReport(const rtk::ZedF9pDevice& rover);
+/// The rover's figures as criterion metrics (rtk_rover.*): epochs, fixed_fraction and
+/// float_fraction (of its epochs), time_to_first_float_s and time_to_first_fixed_s (the first
+/// change into that state, or into fixed for float; absent when never), fixed_losses (changes
+/// from fixed to a lesser state), rtcm_frames, rtcm_crc_failed; with a moving base
+/// heading_valid_epochs always, and heading_rms_error_deg, heading_max_error_deg and
+/// acc_heading_mean_deg when it had a valid heading (absent otherwise).
+void AddRtkRoverMetrics(const std::optional<RtkRoverReport>& r,
+                        std::map<std::string, std::optional<double>>& table);
 nlohmann::json RtkRoverJson(const RtkRoverReport& r);
 /// The HTML section: the epochs per state and the timeline as a table.
 void AppendRtkRoverHtml(std::string& html, const RtkRoverReport& r);

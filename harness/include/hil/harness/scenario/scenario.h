@@ -65,6 +65,12 @@ struct PaperFigure {
 
 /// The metric names a criterion may use.
 extern const std::vector<std::string> kCriterionMetrics;
+/// The families of metric names a criterion may use besides kCriterionMetrics: navd.<health
+/// counter> and navd.flag.<flag> (fault_report.h), tracking.*, pass_to_pass.*, closed_loop.*,
+/// rtk_rover.* (the run report's metric table names them).
+extern const std::vector<std::string> kCriterionMetricPrefixes;
+/// A name of kCriterionMetrics or one beginning with a prefix of kCriterionMetricPrefixes.
+bool IsCriterionMetric(const std::string& metric);
 
 /// One receiver of the scenario's GNSS section: its link and its antenna position.
 struct GnssReceiverSpec {
