@@ -1,0 +1,164 @@
+#include "hil/estimator/vehicle_model_filter.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/LU>
+
+namespace hil::estimator {
+namespace {
+
+constexpr int kP = 0, kPsi = 2, kV = 3, kW = 4, kE = 5;
+constexpr double kMaxStepS = 0.1;  // the model's integration step
+
+double Seconds(Nanoseconds d) { return static_cast<double>(d.count()) * 1e-9; }
+
+// R(ψ)·l and its derivative by ψ (horizontal lever arm)
+Eigen::Vector2d Rotated(double psi, const Eigen::Vector3d& l) {
+  const double c = std::cos(psi), s = std::sin(psi);
+  return {c * l.x() - s * l.y(), s * l.x() + c * l.y()};
+}
+Eigen::Vector2d RotatedDerivative(double psi, const Eigen::Vector3d& l) {
+  const double c = std::cos(psi), s = std::sin(psi);
+  return {-s * l.x() - c * l.y(), c * l.x() - s * l.y()};
+}
+
+}  // namespace
+
+double VehicleModelFilter::GnssErrorStd(double hdop) const {
+  if (p_.gnss_error_tau_s <= 0) return 0.0;
+  return p_.gnss_error_std_m * (hdop > 0 ? std::clamp(hdop, 0.5, 20.0) : 1.0);
+}
+
+void VehicleModelFilter::Start(GpsTime t, const Eigen::Vector3d& p_ant,
+                               const Eigen::Vector3d& pos_std, const Eigen::Vector3d& v_ant,
+                               const Eigen::Vector3d& vel_std, double hdop) {
+  const double speed = v_ant.head<2>().norm();
+  const double psi = std::atan2(v_ant.y(), v_ant.x());
+  const double se = GnssErrorStd(hdop);
+  x_.setZero();
+  x_.segment<2>(kP) = p_ant.head<2>() - Rotated(psi, p_.lever_arm_B_m);
+  x_(kPsi) = psi;
+  x_(kV) = speed;
+  P_.setZero();
+  for (int i = 0; i < 2; ++i) {
+    P_(kP + i, kP + i) = pos_std[i] * pos_std[i] + se * se;
+    P_(kE + i, kE + i) = se * se;
+    P_(kP + i, kE + i) = P_(kE + i, kP + i) = -se * se;  // p = p_antenna − e
+  }
+  const double course_std = vel_std.head<2>().maxCoeff() / speed;
+  P_(kPsi, kPsi) = course_std * course_std + 0.05 * 0.05;  // + side slip (ours: 3°)
+  P_(kV, kV) = vel_std.head<2>().squaredNorm();
+  P_(kW, kW) = 0.05 * 0.05;  // ours: a turn of 3 °/s unseen at the start
+  t_ = t;
+  ready_ = true;
+  consecutive_rejected_ = 0;
+}
+
+void VehicleModelFilter::Step(double dt, Vector& x, Matrix& P) const {
+  const double psi_m = x(kPsi) + 0.5 * x(kW) * dt;
+  const double c = std::cos(psi_m), s = std::sin(psi_m), v = x(kV);
+  const double decay = p_.gnss_error_tau_s > 0 ? std::exp(-dt / p_.gnss_error_tau_s) : 0.0;
+  Matrix F = Matrix::Identity();
+  F(kP, kPsi) = -v * dt * s;
+  F(kP, kV) = dt * c;
+  F(kP, kW) = -v * dt * s * 0.5 * dt;
+  F(kP + 1, kPsi) = v * dt * c;
+  F(kP + 1, kV) = dt * s;
+  F(kP + 1, kW) = v * dt * c * 0.5 * dt;
+  F(kPsi, kW) = dt;
+  F(kE, kE) = F(kE + 1, kE + 1) = decay;
+  x(kP) += v * dt * c;
+  x(kP + 1) += v * dt * s;
+  x(kPsi) = std::remainder(x(kPsi) + x(kW) * dt, 2.0 * M_PI);
+  x.segment<2>(kE) *= decay;
+  P = F * P * F.transpose();
+  const double qp = p_.position_rw_m_rthz * p_.position_rw_m_rthz * dt;
+  P(kP, kP) += qp;
+  P(kP + 1, kP + 1) += qp;
+  P(kV, kV) += p_.speed_rw_mps_rthz * p_.speed_rw_mps_rthz * dt;
+  P(kW, kW) += p_.yaw_rate_rw_radps_rthz * p_.yaw_rate_rw_radps_rthz * dt;
+  const double se = gnss_error_std_m_;  // the stationary σ at the last fix's HDOP
+  P(kE, kE) += se * se * (1.0 - decay * decay);
+  P(kE + 1, kE + 1) += se * se * (1.0 - decay * decay);
+}
+
+void VehicleModelFilter::PredictTo(GpsTime t, Vector& x, Matrix& P) const {
+  x = x_;
+  P = P_;
+  double left = Seconds(t - t_);
+  while (left > 1e-9) {
+    const double dt = std::min(left, kMaxStepS);
+    Step(dt, x, P);
+    left -= dt;
+  }
+}
+
+template <int M>
+bool VehicleModelFilter::Update(const Eigen::Matrix<double, M, 1>& nu,
+                                const Eigen::Matrix<double, M, 7>& H,
+                                const Eigen::Matrix<double, M, M>& R, bool gated) {
+  const Eigen::Matrix<double, M, M> S = H * P_ * H.transpose() + R;
+  const Eigen::Matrix<double, M, M> S_inv = S.inverse();
+  const double nis = nu.dot(S_inv * nu);
+  if (!std::isfinite(nis)) return false;
+  if (gated && nis > p_.gate_sigma * p_.gate_sigma * M) return false;
+  const Eigen::Matrix<double, 7, M> K = P_ * H.transpose() * S_inv;
+  x_ += K * nu;
+  x_(kPsi) = std::remainder(x_(kPsi), 2.0 * M_PI);
+  const Matrix IKH = Matrix::Identity() - K * H;
+  P_ = IKH * P_ * IKH.transpose() + K * R * K.transpose();  // Joseph form
+  P_ = 0.5 * (P_ + P_.transpose()).eval();
+  return true;
+}
+
+bool VehicleModelFilter::AddFix(GpsTime t, const Eigen::Vector3d& p_ant,
+                                const Eigen::Vector3d& pos_std, bool has_velocity,
+                                const Eigen::Vector3d& v_ant, const Eigen::Vector3d& vel_std,
+                                double hdop) {
+  if (!p_ant.allFinite() || !pos_std.allFinite() || (ready_ && t <= t_)) return false;
+  height_m_ = p_ant.z() - p_.lever_arm_B_m.z();
+  gnss_error_std_m_ = GnssErrorStd(hdop);
+  height_std_m_ = pos_std.z();
+  const bool has_course = has_velocity && v_ant.allFinite() && vel_std.allFinite() &&
+                          v_ant.head<2>().norm() >= p_.min_speed_mps;
+  if (!ready_) {
+    if (has_course) Start(t, p_ant, pos_std, v_ant, vel_std, hdop);
+    return ready_;
+  }
+  PredictTo(t, x_, P_);
+  t_ = t;
+  const double psi = x_(kPsi);
+  Eigen::Matrix<double, 2, 7> H = Eigen::Matrix<double, 2, 7>::Zero();
+  H.block<2, 2>(0, kP).setIdentity();
+  H.col(kPsi) = RotatedDerivative(psi, p_.lever_arm_B_m);
+  H.block<2, 2>(0, kE).setIdentity();
+  const Eigen::Vector2d nu =
+      p_ant.head<2>() - x_.segment<2>(kP) - Rotated(psi, p_.lever_arm_B_m) - x_.segment<2>(kE);
+  const Eigen::Matrix2d R = pos_std.head<2>().cwiseAbs2().asDiagonal();
+  const bool taken = Update<2>(nu, H, R, true);
+  if (!taken) {
+    ++rejected_;
+    if (++consecutive_rejected_ >= p_.restart_after && has_course) {
+      Start(t, p_ant, pos_std, v_ant, vel_std, hdop);
+      ++restarts_;
+    }
+    return false;
+  }
+  consecutive_rejected_ = 0;
+  if (has_velocity && v_ant.allFinite() && vel_std.allFinite()) {
+    const double c = std::cos(x_(kPsi)), s = std::sin(x_(kPsi)), v = x_(kV), w = x_(kW);
+    const Eigen::Vector2d r1 = RotatedDerivative(x_(kPsi), p_.lever_arm_B_m);
+    const Eigen::Vector2d r0 = Rotated(x_(kPsi), p_.lever_arm_B_m);
+    Eigen::Matrix<double, 2, 7> Hv = Eigen::Matrix<double, 2, 7>::Zero();
+    Hv.col(kPsi) = Eigen::Vector2d(-v * s, v * c) - w * r0;
+    Hv.col(kV) = Eigen::Vector2d(c, s);
+    Hv.col(kW) = r1;
+    const Eigen::Vector2d nuv = v_ant.head<2>() - (v * Eigen::Vector2d(c, s) + w * r1);
+    const Eigen::Matrix2d Rv = vel_std.head<2>().cwiseAbs2().asDiagonal();
+    Update<2>(nuv, Hv, Rv, true);
+  }
+  return true;
+}
+
+}  // namespace hil::estimator
