@@ -22,8 +22,11 @@ double Seconds(Nanoseconds d) { return static_cast<double>(d.count()) * 1e-9; }
 double ImuUsabilityCheck::enter_threshold() const { return ChiSquareQuantile(dof(), p_.enter_z); }
 double ImuUsabilityCheck::leave_threshold() const { return ChiSquareQuantile(dof(), p_.leave_z); }
 
-void ImuUsabilityCheck::AddImu(const Eigen::Vector3d& dtheta, const Eigen::Vector3d& dv,
-                               double dt) {
+void ImuUsabilityCheck::AddImu(const Eigen::Vector3d& delta_angle_B_rad,
+                               const Eigen::Vector3d& delta_velocity_B_mps, double dt_s) {
+  const Eigen::Vector3d& dtheta = delta_angle_B_rad;
+  const Eigen::Vector3d& dv = delta_velocity_B_mps;
+  const double dt = dt_s;
   if (!p_.enabled || !start_t_ || !(dt > 0) || !dtheta.allFinite() || !dv.allFinite()) return;
   // the increment in the window's first body frame (rotation to the interval's middle)
   const double angle = dtheta.norm();
@@ -43,11 +46,11 @@ void ImuUsabilityCheck::AddImu(const Eigen::Vector3d& dtheta, const Eigen::Vecto
   }
 }
 
-void ImuUsabilityCheck::StartWindow(GpsTime t, const Eigen::Vector3d& v,
-                                    const Eigen::Vector3d& std) {
+void ImuUsabilityCheck::StartWindow(GpsTime t, const Eigen::Vector3d& v_N_mps,
+                                    const Eigen::Vector3d& std_mps) {
   start_t_ = t;
-  v_start_ = v;
-  std_start_ = std;
+  v_start_ = v_N_mps;
+  std_start_ = std_mps;
   q_B0_B_ = Eigen::Quaterniond::Identity();
   dv_B0_.setZero();
   block_dv_.setZero();
@@ -55,14 +58,15 @@ void ImuUsabilityCheck::StartWindow(GpsTime t, const Eigen::Vector3d& v,
   n_blocks_ = 0;
 }
 
-bool ImuUsabilityCheck::AddGnssVelocity(GpsTime t, const Eigen::Vector3d& v,
-                                        const Eigen::Vector3d& std, const Eigen::Vector3d& g_N) {
-  if (!p_.enabled || !v.allFinite() || !std.allFinite()) return false;
+bool ImuUsabilityCheck::AddGnssVelocity(GpsTime t, const Eigen::Vector3d& v_N_mps,
+                                        const Eigen::Vector3d& std_mps,
+                                        const Eigen::Vector3d& g_N_mps2) {
+  if (!p_.enabled || !v_N_mps.allFinite() || !std_mps.allFinite()) return false;
   const bool gap =
       !last_fix_t_ || Seconds(t - *last_fix_t_) > p_.max_fix_gap_s || t <= *last_fix_t_;
   last_fix_t_ = t;
   if (gap || !start_t_) {
-    StartWindow(t, v, std);
+    StartWindow(t, v_N_mps, std_mps);
     return false;
   }
   const double span = Seconds(t - *start_t_);
@@ -70,18 +74,19 @@ bool ImuUsabilityCheck::AddGnssVelocity(GpsTime t, const Eigen::Vector3d& v,
   bool tested = false;
   // the IMU must have covered the window (not a window the IMU fell silent in)
   if (T_ > 0.9 * span && n_blocks_ >= 3) {
-    CloseWindow(span, v, std, g_N);
+    CloseWindow(span, v_N_mps, std_mps, g_N_mps2);
     tested = count_ >= std::max(2, p_.min_windows);
     if (tested) Test();
   }
-  StartWindow(t, v, std);
+  StartWindow(t, v_N_mps, std_mps);
   return tested;
 }
 
-void ImuUsabilityCheck::CloseWindow(double T, const Eigen::Vector3d& v, const Eigen::Vector3d& std,
-                                    const Eigen::Vector3d& g_N) {
+void ImuUsabilityCheck::CloseWindow(double span_s, const Eigen::Vector3d& v_N_mps,
+                                    const Eigen::Vector3d& std_mps,
+                                    const Eigen::Vector3d& g_N_mps2) {
   const Eigen::Vector3d f_imu = dv_B0_ / T_;
-  const Eigen::Vector3d f_gnss = (v - v_start_) / T - g_N;
+  const Eigen::Vector3d f_gnss = (v_N_mps - v_start_) / span_s - g_N_mps2;
   const Eigen::Vector3d u = f_imu.normalized(), w = f_gnss.normalized();
   // batch means: the scatter of the blocks' means along the mean's direction, over their number
   double mean = 0;
@@ -90,8 +95,8 @@ void ImuUsabilityCheck::CloseWindow(double T, const Eigen::Vector3d& v, const Ei
   for (int i = 0; i < n_blocks_; ++i) ss += std::pow(u.dot(blocks_[i]) - mean, 2);
   const double var_imu =
       std::max(ss / (n_blocks_ - 1) / n_blocks_, accel_noise_ * accel_noise_ / T_);
-  const Eigen::Vector3d var_v = std.cwiseAbs2() + std_start_.cwiseAbs2();
-  const double var_gnss = w.cwiseAbs2().dot(var_v) / (T * T);
+  const Eigen::Vector3d var_v = std_mps.cwiseAbs2() + std_start_.cwiseAbs2();
+  const double var_gnss = w.cwiseAbs2().dot(var_v) / (span_s * span_s);
   m_[next_] = f_imu.norm() - f_gnss.norm();
   var_[next_] = var_imu + var_gnss;
   last_m_ = m_[next_];

@@ -30,32 +30,34 @@ double VehicleModelFilter::GnssErrorStd(double hdop) const {
   return p_.gnss_error_std_m * (hdop > 0 ? std::clamp(hdop, 0.5, 20.0) : 1.0);
 }
 
-void VehicleModelFilter::Start(GpsTime t, const Eigen::Vector3d& p_ant,
-                               const Eigen::Vector3d& pos_std, const Eigen::Vector3d& v_ant,
-                               const Eigen::Vector3d& vel_std, double hdop) {
-  const double speed = v_ant.head<2>().norm();
-  const double psi = std::atan2(v_ant.y(), v_ant.x());
+void VehicleModelFilter::Start(GpsTime t, const Eigen::Vector3d& p_antenna_N_m,
+                               const Eigen::Vector3d& pos_std_m,
+                               const Eigen::Vector3d& v_antenna_N_mps,
+                               const Eigen::Vector3d& vel_std_mps, double hdop) {
+  const double speed = v_antenna_N_mps.head<2>().norm();
+  const double psi = std::atan2(v_antenna_N_mps.y(), v_antenna_N_mps.x());
   const double se = GnssErrorStd(hdop);
   x_.setZero();
-  x_.segment<2>(kP) = p_ant.head<2>() - Rotated(psi, p_.lever_arm_B_m);
+  x_.segment<2>(kP) = p_antenna_N_m.head<2>() - Rotated(psi, p_.lever_arm_B_m);
   x_(kPsi) = psi;
   x_(kV) = speed;
   P_.setZero();
   for (int i = 0; i < 2; ++i) {
-    P_(kP + i, kP + i) = pos_std[i] * pos_std[i] + se * se;
+    P_(kP + i, kP + i) = pos_std_m[i] * pos_std_m[i] + se * se;
     P_(kE + i, kE + i) = se * se;
     P_(kP + i, kE + i) = P_(kE + i, kP + i) = -se * se;  // p = p_antenna − e
   }
-  const double course_std = vel_std.head<2>().maxCoeff() / speed;
+  const double course_std = vel_std_mps.head<2>().maxCoeff() / speed;
   P_(kPsi, kPsi) = course_std * course_std + 0.05 * 0.05;  // + side slip (ours: 3°)
-  P_(kV, kV) = vel_std.head<2>().squaredNorm();
+  P_(kV, kV) = vel_std_mps.head<2>().squaredNorm();
   P_(kW, kW) = 0.05 * 0.05;  // ours: a turn of 3 °/s unseen at the start
   t_ = t;
   ready_ = true;
   consecutive_rejected_ = 0;
 }
 
-void VehicleModelFilter::Step(double dt, Vector& x, Matrix& P) const {
+void VehicleModelFilter::Step(double dt_s, Vector& x, Matrix& P) const {
+  const double dt = dt_s;
   const double psi_m = x(kPsi) + 0.5 * x(kW) * dt;
   const double c = std::cos(psi_m), s = std::sin(psi_m), v = x(kV);
   const double decay = p_.gnss_error_tau_s > 0 ? std::exp(-dt / p_.gnss_error_tau_s) : 0.0;
@@ -112,18 +114,18 @@ bool VehicleModelFilter::Update(const Eigen::Matrix<double, M, 1>& nu,
   return true;
 }
 
-bool VehicleModelFilter::AddFix(GpsTime t, const Eigen::Vector3d& p_ant,
-                                const Eigen::Vector3d& pos_std, bool has_velocity,
-                                const Eigen::Vector3d& v_ant, const Eigen::Vector3d& vel_std,
-                                double hdop) {
-  if (!p_ant.allFinite() || !pos_std.allFinite() || (ready_ && t <= t_)) return false;
-  height_m_ = p_ant.z() - p_.lever_arm_B_m.z();
+bool VehicleModelFilter::AddFix(GpsTime t, const Eigen::Vector3d& p_antenna_N_m,
+                                const Eigen::Vector3d& pos_std_m, bool has_velocity,
+                                const Eigen::Vector3d& v_antenna_N_mps,
+                                const Eigen::Vector3d& vel_std_mps, double hdop) {
+  if (!p_antenna_N_m.allFinite() || !pos_std_m.allFinite() || (ready_ && t <= t_)) return false;
+  height_m_ = p_antenna_N_m.z() - p_.lever_arm_B_m.z();
   gnss_error_std_m_ = GnssErrorStd(hdop);
-  height_std_m_ = pos_std.z();
-  const bool has_course = has_velocity && v_ant.allFinite() && vel_std.allFinite() &&
-                          v_ant.head<2>().norm() >= p_.min_speed_mps;
+  height_std_m_ = pos_std_m.z();
+  const bool has_course = has_velocity && v_antenna_N_mps.allFinite() && vel_std_mps.allFinite() &&
+                          v_antenna_N_mps.head<2>().norm() >= p_.min_speed_mps;
   if (!ready_) {
-    if (has_course) Start(t, p_ant, pos_std, v_ant, vel_std, hdop);
+    if (has_course) Start(t, p_antenna_N_m, pos_std_m, v_antenna_N_mps, vel_std_mps, hdop);
     return ready_;
   }
   PredictTo(t, x_, P_);
@@ -133,20 +135,20 @@ bool VehicleModelFilter::AddFix(GpsTime t, const Eigen::Vector3d& p_ant,
   H.block<2, 2>(0, kP).setIdentity();
   H.col(kPsi) = RotatedDerivative(psi, p_.lever_arm_B_m);
   H.block<2, 2>(0, kE).setIdentity();
-  const Eigen::Vector2d nu =
-      p_ant.head<2>() - x_.segment<2>(kP) - Rotated(psi, p_.lever_arm_B_m) - x_.segment<2>(kE);
-  const Eigen::Matrix2d R = pos_std.head<2>().cwiseAbs2().asDiagonal();
+  const Eigen::Vector2d nu = p_antenna_N_m.head<2>() - x_.segment<2>(kP) -
+                             Rotated(psi, p_.lever_arm_B_m) - x_.segment<2>(kE);
+  const Eigen::Matrix2d R = pos_std_m.head<2>().cwiseAbs2().asDiagonal();
   const bool taken = Update<2>(nu, H, R, true);
   if (!taken) {
     ++rejected_;
     if (++consecutive_rejected_ >= p_.restart_after && has_course) {
-      Start(t, p_ant, pos_std, v_ant, vel_std, hdop);
+      Start(t, p_antenna_N_m, pos_std_m, v_antenna_N_mps, vel_std_mps, hdop);
       ++restarts_;
     }
     return false;
   }
   consecutive_rejected_ = 0;
-  if (has_velocity && v_ant.allFinite() && vel_std.allFinite()) {
+  if (has_velocity && v_antenna_N_mps.allFinite() && vel_std_mps.allFinite()) {
     const double c = std::cos(x_(kPsi)), s = std::sin(x_(kPsi)), v = x_(kV), w = x_(kW);
     const Eigen::Vector2d r1 = RotatedDerivative(x_(kPsi), p_.lever_arm_B_m);
     const Eigen::Vector2d r0 = Rotated(x_(kPsi), p_.lever_arm_B_m);
@@ -154,8 +156,8 @@ bool VehicleModelFilter::AddFix(GpsTime t, const Eigen::Vector3d& p_ant,
     Hv.col(kPsi) = Eigen::Vector2d(-v * s, v * c) - w * r0;
     Hv.col(kV) = Eigen::Vector2d(c, s);
     Hv.col(kW) = r1;
-    const Eigen::Vector2d nuv = v_ant.head<2>() - (v * Eigen::Vector2d(c, s) + w * r1);
-    const Eigen::Matrix2d Rv = vel_std.head<2>().cwiseAbs2().asDiagonal();
+    const Eigen::Vector2d nuv = v_antenna_N_mps.head<2>() - (v * Eigen::Vector2d(c, s) + w * r1);
+    const Eigen::Matrix2d Rv = vel_std_mps.head<2>().cwiseAbs2().asDiagonal();
     Update<2>(nuv, Hv, Rv, true);
   }
   return true;

@@ -26,10 +26,10 @@ void Navigator::ObserveImuUsability(const ImuSample& s) {
                     s.dt_s);
 }
 
-void Navigator::ControlImuUsability(const GnssSample& g, const Eigen::Vector3d& p) {
+void Navigator::ControlImuUsability(const GnssSample& g, const Eigen::Vector3d& p_antenna_N_m) {
   if (params_.mode != NavMode::kEkf || !params_.imu_usability.enabled) return;
-  fallback_.AddFix(g.t, p, g.pos_std_enu_m, g.has_velocity, g.vel_enu_mps, g.vel_std_enu_mps,
-                   g.hdop);
+  fallback_.AddFix(g.t, p_antenna_N_m, g.pos_std_enu_m, g.has_velocity, g.vel_enu_mps,
+                   g.vel_std_enu_mps, g.hdop);
   if (!g.has_velocity) return;
   if (!imu_check_.AddGnssVelocity(g.t, g.vel_enu_mps, g.vel_std_enu_mps, ekf_.earth().g_N_mps2))
     return;

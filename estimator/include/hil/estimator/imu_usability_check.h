@@ -84,10 +84,10 @@ class ImuUsabilityCheck {
   double last_mismatch_std_mps2() const { return last_std_; }
 
  private:
-  void StartWindow(GpsTime t, const Eigen::Vector3d& v, const Eigen::Vector3d& std);
+  void StartWindow(GpsTime t, const Eigen::Vector3d& v_N_mps, const Eigen::Vector3d& std_mps);
   /// Closes the window at a fix: its mismatch and variance into the ring, then the test.
-  void CloseWindow(double T, const Eigen::Vector3d& v, const Eigen::Vector3d& std,
-                   const Eigen::Vector3d& g_N);
+  void CloseWindow(double span_s, const Eigen::Vector3d& v_N_mps, const Eigen::Vector3d& std_mps,
+                   const Eigen::Vector3d& g_N_mps2);
   void Test();
 
   static constexpr int kMaxBlocks = 64;

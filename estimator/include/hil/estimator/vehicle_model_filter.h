@@ -64,10 +64,11 @@ class VehicleModelFilter {
   void PredictTo(GpsTime t, Vector& x, Matrix& P) const;
 
  private:
-  void Start(GpsTime t, const Eigen::Vector3d& p_ant, const Eigen::Vector3d& pos_std,
-             const Eigen::Vector3d& v_ant, const Eigen::Vector3d& vel_std, double hdop);
+  void Start(GpsTime t, const Eigen::Vector3d& p_antenna_N_m, const Eigen::Vector3d& pos_std_m,
+             const Eigen::Vector3d& v_antenna_N_mps, const Eigen::Vector3d& vel_std_mps,
+             double hdop);
   /// One step of the model over dt (x and P in place).
-  void Step(double dt, Vector& x, Matrix& P) const;
+  void Step(double dt_s, Vector& x, Matrix& P) const;
   template <int M>
   bool Update(const Eigen::Matrix<double, M, 1>& nu, const Eigen::Matrix<double, M, 7>& H,
               const Eigen::Matrix<double, M, M>& R, bool gated);
