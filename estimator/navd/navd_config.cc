@@ -196,6 +196,11 @@ bool ReadFilterKey(const ConfigFile& f, const ConfigEntry& e, NavdConfig& c, int
      : k == "imu_noise_check"      ? c.nav.imu_noise.enabled
      : k == "imu_usability_check"  ? c.nav.imu_usability.enabled
                                    : c.nav.imu_lag.enabled) = e.value == "true";
+  } else if (k == "imu_usability_window_s") {
+    c.nav.imu_usability.window_s = ToDouble(f, e, 2.0, 600.0);
+  } else if (k == "imu_usability_windows") {
+    c.nav.imu_usability.windows = ToInt(f, e, 3, 16);
+    c.nav.imu_usability.leave_tests = c.nav.imu_usability.windows;
   } else if (k == "fallback_yaw_rate_rw") {
     c.nav.fallback_vehicle.yaw_rate_rw_radps_rthz = ToDouble(f, e, 1e-6, 10.0);
   } else if (k == "fallback_position_rw") {

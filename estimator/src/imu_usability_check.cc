@@ -7,7 +7,7 @@ namespace hil::estimator {
 namespace {
 
 // Wilson–Hilferty: χ²_p(k) ≈ k (1 − 2/(9k) + z_p √(2/(9k)))³
-double ChiSquareQuantile(int dof, double z) {
+double WilsonHilfertyQuantile(int dof, double z) {
   if (dof <= 0) return 0.0;
   const double k = static_cast<double>(dof);
   const double a = 2.0 / (9.0 * k);
@@ -15,12 +15,16 @@ double ChiSquareQuantile(int dof, double z) {
   return k * std::max(0.0, c * c * c);
 }
 
-double Seconds(Nanoseconds d) { return static_cast<double>(d.count()) * 1e-9; }
+double WindowSeconds(Nanoseconds d) { return static_cast<double>(d.count()) * 1e-9; }
 
 }  // namespace
 
-double ImuUsabilityCheck::enter_threshold() const { return ChiSquareQuantile(dof(), p_.enter_z); }
-double ImuUsabilityCheck::leave_threshold() const { return ChiSquareQuantile(dof(), p_.leave_z); }
+double ImuUsabilityCheck::enter_threshold() const {
+  return WilsonHilfertyQuantile(dof(), p_.enter_z);
+}
+double ImuUsabilityCheck::leave_threshold() const {
+  return WilsonHilfertyQuantile(dof(), p_.leave_z);
+}
 
 void ImuUsabilityCheck::AddImu(const Eigen::Vector3d& delta_angle_B_rad,
                                const Eigen::Vector3d& delta_velocity_B_mps, double dt_s) {
@@ -63,13 +67,13 @@ bool ImuUsabilityCheck::AddGnssVelocity(GpsTime t, const Eigen::Vector3d& v_N_mp
                                         const Eigen::Vector3d& g_N_mps2) {
   if (!p_.enabled || !v_N_mps.allFinite() || !std_mps.allFinite()) return false;
   const bool gap =
-      !last_fix_t_ || Seconds(t - *last_fix_t_) > p_.max_fix_gap_s || t <= *last_fix_t_;
+      !last_fix_t_ || WindowSeconds(t - *last_fix_t_) > p_.max_fix_gap_s || t <= *last_fix_t_;
   last_fix_t_ = t;
   if (gap || !start_t_) {
     StartWindow(t, v_N_mps, std_mps);
     return false;
   }
-  const double span = Seconds(t - *start_t_);
+  const double span = WindowSeconds(t - *start_t_);
   if (span < p_.window_s - 1e-3) return false;
   bool tested = false;
   // the IMU must have covered the window (not a window the IMU fell silent in)

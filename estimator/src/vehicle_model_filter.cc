@@ -8,17 +8,17 @@
 namespace hil::estimator {
 namespace {
 
-constexpr int kP = 0, kPsi = 2, kV = 3, kW = 4, kE = 5;
-constexpr double kMaxStepS = 0.1;  // the model's integration step
+constexpr int kVmP = 0, kVmPsi = 2, kVmV = 3, kVmW = 4, kVmE = 5;
+constexpr double kVmMaxStepS = 0.1;  // the model's integration step
 
-double Seconds(Nanoseconds d) { return static_cast<double>(d.count()) * 1e-9; }
+double ModelSeconds(Nanoseconds d) { return static_cast<double>(d.count()) * 1e-9; }
 
 // R(ψ)·l and its derivative by ψ (horizontal lever arm)
-Eigen::Vector2d Rotated(double psi, const Eigen::Vector3d& l) {
+Eigen::Vector2d LeverRotated(double psi, const Eigen::Vector3d& l) {
   const double c = std::cos(psi), s = std::sin(psi);
   return {c * l.x() - s * l.y(), s * l.x() + c * l.y()};
 }
-Eigen::Vector2d RotatedDerivative(double psi, const Eigen::Vector3d& l) {
+Eigen::Vector2d LeverRotatedDerivative(double psi, const Eigen::Vector3d& l) {
   const double c = std::cos(psi), s = std::sin(psi);
   return {-s * l.x() - c * l.y(), c * l.x() - s * l.y()};
 }
@@ -38,19 +38,19 @@ void VehicleModelFilter::Start(GpsTime t, const Eigen::Vector3d& p_antenna_N_m,
   const double psi = std::atan2(v_antenna_N_mps.y(), v_antenna_N_mps.x());
   const double se = GnssErrorStd(hdop);
   x_.setZero();
-  x_.segment<2>(kP) = p_antenna_N_m.head<2>() - Rotated(psi, p_.lever_arm_B_m);
-  x_(kPsi) = psi;
-  x_(kV) = speed;
+  x_.segment<2>(kVmP) = p_antenna_N_m.head<2>() - LeverRotated(psi, p_.lever_arm_B_m);
+  x_(kVmPsi) = psi;
+  x_(kVmV) = speed;
   P_.setZero();
   for (int i = 0; i < 2; ++i) {
-    P_(kP + i, kP + i) = pos_std_m[i] * pos_std_m[i] + se * se;
-    P_(kE + i, kE + i) = se * se;
-    P_(kP + i, kE + i) = P_(kE + i, kP + i) = -se * se;  // p = p_antenna − e
+    P_(kVmP + i, kVmP + i) = pos_std_m[i] * pos_std_m[i] + se * se;
+    P_(kVmE + i, kVmE + i) = se * se;
+    P_(kVmP + i, kVmE + i) = P_(kVmE + i, kVmP + i) = -se * se;  // p = p_antenna − e
   }
   const double course_std = vel_std_mps.head<2>().maxCoeff() / speed;
-  P_(kPsi, kPsi) = course_std * course_std + 0.05 * 0.05;  // + side slip (ours: 3°)
-  P_(kV, kV) = vel_std_mps.head<2>().squaredNorm();
-  P_(kW, kW) = 0.05 * 0.05;  // ours: a turn of 3 °/s unseen at the start
+  P_(kVmPsi, kVmPsi) = course_std * course_std + 0.05 * 0.05;  // + side slip (ours: 3°)
+  P_(kVmV, kVmV) = vel_std_mps.head<2>().squaredNorm();
+  P_(kVmW, kVmW) = 0.05 * 0.05;  // ours: a turn of 3 °/s unseen at the start
   t_ = t;
   ready_ = true;
   consecutive_rejected_ = 0;
@@ -58,39 +58,39 @@ void VehicleModelFilter::Start(GpsTime t, const Eigen::Vector3d& p_antenna_N_m,
 
 void VehicleModelFilter::Step(double dt_s, Vector& x, Matrix& P) const {
   const double dt = dt_s;
-  const double psi_m = x(kPsi) + 0.5 * x(kW) * dt;
-  const double c = std::cos(psi_m), s = std::sin(psi_m), v = x(kV);
+  const double psi_m = x(kVmPsi) + 0.5 * x(kVmW) * dt;
+  const double c = std::cos(psi_m), s = std::sin(psi_m), v = x(kVmV);
   const double decay = p_.gnss_error_tau_s > 0 ? std::exp(-dt / p_.gnss_error_tau_s) : 0.0;
   Matrix F = Matrix::Identity();
-  F(kP, kPsi) = -v * dt * s;
-  F(kP, kV) = dt * c;
-  F(kP, kW) = -v * dt * s * 0.5 * dt;
-  F(kP + 1, kPsi) = v * dt * c;
-  F(kP + 1, kV) = dt * s;
-  F(kP + 1, kW) = v * dt * c * 0.5 * dt;
-  F(kPsi, kW) = dt;
-  F(kE, kE) = F(kE + 1, kE + 1) = decay;
-  x(kP) += v * dt * c;
-  x(kP + 1) += v * dt * s;
-  x(kPsi) = std::remainder(x(kPsi) + x(kW) * dt, 2.0 * M_PI);
-  x.segment<2>(kE) *= decay;
+  F(kVmP, kVmPsi) = -v * dt * s;
+  F(kVmP, kVmV) = dt * c;
+  F(kVmP, kVmW) = -v * dt * s * 0.5 * dt;
+  F(kVmP + 1, kVmPsi) = v * dt * c;
+  F(kVmP + 1, kVmV) = dt * s;
+  F(kVmP + 1, kVmW) = v * dt * c * 0.5 * dt;
+  F(kVmPsi, kVmW) = dt;
+  F(kVmE, kVmE) = F(kVmE + 1, kVmE + 1) = decay;
+  x(kVmP) += v * dt * c;
+  x(kVmP + 1) += v * dt * s;
+  x(kVmPsi) = std::remainder(x(kVmPsi) + x(kVmW) * dt, 2.0 * M_PI);
+  x.segment<2>(kVmE) *= decay;
   P = F * P * F.transpose();
   const double qp = p_.position_rw_m_rthz * p_.position_rw_m_rthz * dt;
-  P(kP, kP) += qp;
-  P(kP + 1, kP + 1) += qp;
-  P(kV, kV) += p_.speed_rw_mps_rthz * p_.speed_rw_mps_rthz * dt;
-  P(kW, kW) += p_.yaw_rate_rw_radps_rthz * p_.yaw_rate_rw_radps_rthz * dt;
+  P(kVmP, kVmP) += qp;
+  P(kVmP + 1, kVmP + 1) += qp;
+  P(kVmV, kVmV) += p_.speed_rw_mps_rthz * p_.speed_rw_mps_rthz * dt;
+  P(kVmW, kVmW) += p_.yaw_rate_rw_radps_rthz * p_.yaw_rate_rw_radps_rthz * dt;
   const double se = gnss_error_std_m_;  // the stationary σ at the last fix's HDOP
-  P(kE, kE) += se * se * (1.0 - decay * decay);
-  P(kE + 1, kE + 1) += se * se * (1.0 - decay * decay);
+  P(kVmE, kVmE) += se * se * (1.0 - decay * decay);
+  P(kVmE + 1, kVmE + 1) += se * se * (1.0 - decay * decay);
 }
 
 void VehicleModelFilter::PredictTo(GpsTime t, Vector& x, Matrix& P) const {
   x = x_;
   P = P_;
-  double left = Seconds(t - t_);
+  double left = ModelSeconds(t - t_);
   while (left > 1e-9) {
-    const double dt = std::min(left, kMaxStepS);
+    const double dt = std::min(left, kVmMaxStepS);
     Step(dt, x, P);
     left -= dt;
   }
@@ -107,7 +107,7 @@ bool VehicleModelFilter::Update(const Eigen::Matrix<double, M, 1>& nu,
   if (gated && nis > p_.gate_sigma * p_.gate_sigma * M) return false;
   const Eigen::Matrix<double, 7, M> K = P_ * H.transpose() * S_inv;
   x_ += K * nu;
-  x_(kPsi) = std::remainder(x_(kPsi), 2.0 * M_PI);
+  x_(kVmPsi) = std::remainder(x_(kVmPsi), 2.0 * M_PI);
   const Matrix IKH = Matrix::Identity() - K * H;
   P_ = IKH * P_ * IKH.transpose() + K * R * K.transpose();  // Joseph form
   P_ = 0.5 * (P_ + P_.transpose()).eval();
@@ -130,13 +130,13 @@ bool VehicleModelFilter::AddFix(GpsTime t, const Eigen::Vector3d& p_antenna_N_m,
   }
   PredictTo(t, x_, P_);
   t_ = t;
-  const double psi = x_(kPsi);
+  const double psi = x_(kVmPsi);
   Eigen::Matrix<double, 2, 7> H = Eigen::Matrix<double, 2, 7>::Zero();
-  H.block<2, 2>(0, kP).setIdentity();
-  H.col(kPsi) = RotatedDerivative(psi, p_.lever_arm_B_m);
-  H.block<2, 2>(0, kE).setIdentity();
-  const Eigen::Vector2d nu = p_antenna_N_m.head<2>() - x_.segment<2>(kP) -
-                             Rotated(psi, p_.lever_arm_B_m) - x_.segment<2>(kE);
+  H.block<2, 2>(0, kVmP).setIdentity();
+  H.col(kVmPsi) = LeverRotatedDerivative(psi, p_.lever_arm_B_m);
+  H.block<2, 2>(0, kVmE).setIdentity();
+  const Eigen::Vector2d nu = p_antenna_N_m.head<2>() - x_.segment<2>(kVmP) -
+                             LeverRotated(psi, p_.lever_arm_B_m) - x_.segment<2>(kVmE);
   const Eigen::Matrix2d R = pos_std_m.head<2>().cwiseAbs2().asDiagonal();
   const bool taken = Update<2>(nu, H, R, true);
   if (!taken) {
@@ -149,13 +149,13 @@ bool VehicleModelFilter::AddFix(GpsTime t, const Eigen::Vector3d& p_antenna_N_m,
   }
   consecutive_rejected_ = 0;
   if (has_velocity && v_antenna_N_mps.allFinite() && vel_std_mps.allFinite()) {
-    const double c = std::cos(x_(kPsi)), s = std::sin(x_(kPsi)), v = x_(kV), w = x_(kW);
-    const Eigen::Vector2d r1 = RotatedDerivative(x_(kPsi), p_.lever_arm_B_m);
-    const Eigen::Vector2d r0 = Rotated(x_(kPsi), p_.lever_arm_B_m);
+    const double c = std::cos(x_(kVmPsi)), s = std::sin(x_(kVmPsi)), v = x_(kVmV), w = x_(kVmW);
+    const Eigen::Vector2d r1 = LeverRotatedDerivative(x_(kVmPsi), p_.lever_arm_B_m);
+    const Eigen::Vector2d r0 = LeverRotated(x_(kVmPsi), p_.lever_arm_B_m);
     Eigen::Matrix<double, 2, 7> Hv = Eigen::Matrix<double, 2, 7>::Zero();
-    Hv.col(kPsi) = Eigen::Vector2d(-v * s, v * c) - w * r0;
-    Hv.col(kV) = Eigen::Vector2d(c, s);
-    Hv.col(kW) = r1;
+    Hv.col(kVmPsi) = Eigen::Vector2d(-v * s, v * c) - w * r0;
+    Hv.col(kVmV) = Eigen::Vector2d(c, s);
+    Hv.col(kVmW) = r1;
     const Eigen::Vector2d nuv = v_antenna_N_mps.head<2>() - (v * Eigen::Vector2d(c, s) + w * r1);
     const Eigen::Matrix2d Rv = vel_std_mps.head<2>().cwiseAbs2().asDiagonal();
     Update<2>(nuv, Hv, Rv, true);

@@ -112,12 +112,12 @@ TEST(ImuUsabilityCheckTest, WanderingBiasMakesItUnusableUntilItStops) {
 
 TEST(ImuUsabilityCheckTest, ThresholdsAreTheChiSquareQuantiles) {
   const ImuUsabilityCheck check = Check();
-  // χ²(5): upper 1e-6 quantile 35.89, 95 % 11.07 (the closed form of the odd-dof survival
-  // function); Wilson–Hilferty within 5 % so far in the tail, on the safe side
-  EXPECT_EQ(check.dof(), 5);
-  EXPECT_GE(check.enter_threshold(), 35.89);
-  EXPECT_LT(check.enter_threshold(), 35.89 * 1.05);
-  EXPECT_NEAR(check.leave_threshold(), 11.07, 0.2);
+  // χ²(11): upper 1e-6 quantile 48.87, 95 % 19.68 (the closed form of the odd-dof survival
+  // function); Wilson–Hilferty within 3 % so far in the tail, on the safe side
+  EXPECT_EQ(check.dof(), 11);
+  EXPECT_GE(check.enter_threshold(), 48.87);
+  EXPECT_LT(check.enter_threshold(), 48.87 * 1.03);
+  EXPECT_NEAR(check.leave_threshold(), 19.68, 0.2);
 }
 
 }  // namespace

@@ -21,12 +21,13 @@
 /// GNSS acceleration's from the two velocities' σ, plus the configured bias random walk over the
 /// test's span (q²·K·T/6: the scatter of a random walk's samples about their mean, approximately).
 /// The IMU is unusable once Λ exceeds the χ²(K − 1) quantile of `enter_z` (Wilson–Hilferty;
-/// z 4.753: 1e-6 false alarms per test of a consistent IMU, one in 116 days of 10 s tests; WH
-/// gives 37.5 where the exact quantile is 35.9), usable again once Λ has stayed below
+/// z 4.753: 1e-6 false alarms per test of a consistent IMU, one in 58 days of 5 s tests; WH
+/// gives 49.9 for K = 12 where the exact quantile is 48.9), usable again once Λ has stayed below
 /// the quantile of `leave_z` (1.645: 95 %) for `leave_tests` tests in a row (hysteresis: K more
-/// windows, so the test's span is wholly new). Window 10 s, K 6, blocks 1 s: ours (long enough for
-/// a 1 Hz receiver's velocity difference to resolve a few cm/s², short enough to notice within a
-/// minute). No allocation.
+/// windows, so the test's span is wholly new). Window 5 s, K 12, blocks 1 s: ours (a 1 Hz
+/// receiver's velocity difference resolves 3 cm/s² over 5 s; the first test after 15 s, a span of
+/// a minute; 10 s windows, K 6, decided 15 s later on two_stroke_robot, whose INS was metres off
+/// by then). No allocation.
 
 #include <array>
 #include <cstdint>
@@ -41,13 +42,13 @@ namespace hil::estimator {
 
 struct ImuUsabilityParams {
   bool enabled = true;
-  double window_s = 10.0;      ///< one window between GNSS velocity fixes (ours)
+  double window_s = 5.0;       ///< one window between GNSS velocity fixes (ours)
   double block_s = 1.0;        ///< batch-means block (ours)
-  int windows = 6;             ///< K windows in a test (ours) …
+  int windows = 12;            ///< K windows in a test (ours) …
   int min_windows = 3;         ///< … fewer (not below this) until that many have been seen
   double enter_z = 4.753;      ///< unusable above χ²(K−1) at this normal quantile (1e-6)
   double leave_z = 1.645;      ///< usable again below this one (95 %) …
-  int leave_tests = 6;         ///< … for this many tests in a row
+  int leave_tests = 12;        ///< … for this many tests in a row
   double max_fix_gap_s = 2.5;  ///< GNSS velocities further apart end the window unused
 };
 
