@@ -121,7 +121,9 @@ bool VehicleModelFilter::AddFix(GpsTime t, const Eigen::Vector3d& p_antenna_N_m,
   if (!p_antenna_N_m.allFinite() || !pos_std_m.allFinite() || (ready_ && t <= t_)) return false;
   height_m_ = p_antenna_N_m.z() - p_.lever_arm_B_m.z();
   gnss_error_std_m_ = GnssErrorStd(hdop);
-  height_std_m_ = pos_std_m.z();
+  // the fix's white σ and the receiver's correlated error in height (the EKF's model, by HDOP)
+  const double dop = hdop > 0 ? std::clamp(hdop, 0.5, 20.0) : 1.0;
+  height_std_m_ = std::hypot(pos_std_m.z(), p_.gnss_error_vertical_std_m * dop);
   const bool has_course = has_velocity && v_antenna_N_mps.allFinite() && vel_std_mps.allFinite() &&
                           v_antenna_N_mps.head<2>().norm() >= p_.min_speed_mps;
   if (!ready_) {

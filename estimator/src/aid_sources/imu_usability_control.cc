@@ -13,6 +13,9 @@ VehicleModelParams FallbackVehicleParams(const NavigatorParams& p) {
   v.lever_arm_B_m = p.ekf.lever_arm_B_m;
   v.gnss_error_tau_s = p.ekf.gnss_error_tau_s;
   v.gnss_error_std_m = p.ekf.gnss_error_std_m;
+  v.gnss_error_vertical_std_m = p.ekf.gnss_error_vertical_std_m > 0
+                                    ? p.ekf.gnss_error_vertical_std_m
+                                    : p.ekf.gnss_error_std_m;
   // the user said the vehicle holds its speed (the EKF's speed model): so does the fallback
   if (p.ekf.speed_rw_mps_rthz > 0) v.speed_rw_mps_rthz = p.ekf.speed_rw_mps_rthz;
   v.min_speed_mps = p.align_min_speed_mps;

@@ -12,8 +12,8 @@
 /// Measurements: the antenna's position p + R(ψ)·l_xy + e and velocity v·(cos ψ, sin ψ) +
 /// ω·R(ψ)·(−l_y, l_x) (Rong Li and Jilkov, "Survey of maneuvering target tracking. Part I:
 /// dynamic models", IEEE Trans. AES 39(4), 2003, for CTRV). Height: the last fix's, less the
-/// lever arm's height, with its σ. χ²-gated at `gate_sigma`; `restart_after` rejected fixes in a
-/// row restart it at the fix. Fixed size, no allocation.
+/// lever arm's height, with its σ and the correlated error's in height. χ²-gated at `gate_sigma`;
+/// `restart_after` rejected fixes in a row restart it at the fix. Fixed size, no allocation.
 
 #include <cstdint>
 #include <optional>
@@ -30,7 +30,8 @@ struct VehicleModelParams {
   double position_rw_m_rthz = 0.02;      ///< white position diffusion (ours: slip, speed ripple)
   double gnss_error_tau_s = 0.0;         ///< correlated GNSS error τ (0: white fixes only)
   double gnss_error_std_m = 0.0;         ///< its σ per horizontal axis at HDOP 1
-  double min_speed_mps = 0.2;            ///< a course is a heading above this speed
+  double gnss_error_vertical_std_m = 0.0;  ///< its σ in height at HDOP 1 (in the height's σ)
+  double min_speed_mps = 0.2;              ///< a course is a heading above this speed
   double gate_sigma = 5.0;
   int restart_after = 5;
   Eigen::Vector3d lever_arm_B_m = Eigen::Vector3d::Zero();  ///< GNSS antenna in the body frame
