@@ -5,6 +5,7 @@
 // finds the IMU unusable, the solution is the GNSS + vehicle-model filter, no worse than the
 // fixes, and flagged; with a consistent IMU the check never fires and the output is the EKF's,
 // bit for bit.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -45,11 +46,13 @@ NavigatorParams RobotParams(bool check) {
 struct Figures {
   double rmse_m = 0, fix_rmse_m = 0, nees = 0;
   int unusable_outputs = 0, outputs = 0;
+  bool last_unusable = false;  // the last output's kStatusImuUnusable
   NavigatorStats stats;
 };
 
-// `wander` scales the aliased engine (0: a consistent IMU).
-Figures RunRobot(bool check, double wander, double duration_s) {
+// `wander` scales the aliased engine (0: a consistent IMU); from `still_from_s` on its offset
+// holds still (the engine stopped at a constant phase: a bias again).
+Figures RunRobot(bool check, double wander, double duration_s, double still_from_s = 1e9) {
   Navigator nav(RobotParams(check));
   const Eigen::Quaterniond q(Eigen::AngleAxisd(kYaw, Eigen::Vector3d::UnitZ()));
   const Eigen::Vector3d dir(std::cos(kYaw), std::sin(kYaw), 0);
@@ -65,7 +68,8 @@ Figures RunRobot(bool check, double wander, double duration_s) {
   Figures r;
   double se = 0, se_fix = 0;
   for (long k = 1; static_cast<double>(k) * dt <= duration_s + 1e-9; ++k) {
-    const double t = static_cast<double>(k) * dt, s = wander * std::sin(2 * M_PI * t / 250);
+    const double t = static_cast<double>(k) * dt;
+    const double s = wander * std::sin(2 * M_PI * std::min(t, still_from_s) / 250);
     ImuSample imu;
     imu.t = kT0 + Nanoseconds{std::llround(t * 1e9)};
     imu.dt_s = dt;
@@ -102,7 +106,8 @@ Figures RunRobot(bool check, double wander, double duration_s) {
       se += err.squaredNorm();
       r.nees += err.x() * err.x() / (o.pos_std_enu_m.x() * o.pos_std_enu_m.x()) +
                 err.y() * err.y() / (o.pos_std_enu_m.y() * o.pos_std_enu_m.y());
-      r.unusable_outputs += (o.status & kStatusImuUnusable) != 0;
+      r.last_unusable = (o.status & kStatusImuUnusable) != 0;
+      r.unusable_outputs += r.last_unusable;
       ++r.outputs;
     }
   }
@@ -130,6 +135,20 @@ TEST(ImuUsabilityControlTest, ImuFarOutsideItsModelFallsBackToTheVehicleModel) {
   EXPECT_LT(on.rmse_m, on.fix_rmse_m);
   EXPECT_LT(on.rmse_m, off.rmse_m);
   EXPECT_LT(on.nees, 6.0);
+}
+
+TEST(ImuUsabilityControlTest, BackToTheInsWhenTheImuIsConsistentAgain) {
+  // the offset wanders for 300 s, then holds (a bias): the INS's solution again by the end
+  const Figures r = RunRobot(true, 1.0, 900, 300);
+  std::printf(
+      "wander until 300 s: %d of %d outputs from the vehicle model, %.3f m (fixes %.3f m)\n",
+      r.unusable_outputs, r.outputs, r.rmse_m, r.fix_rmse_m);
+  EXPECT_EQ(r.stats.imu_unusable_periods, 1u);
+  EXPECT_FALSE(r.stats.imu_unusable);
+  EXPECT_FALSE(r.last_unusable);
+  EXPECT_GT(r.unusable_outputs, 100);
+  EXPECT_LT(r.unusable_outputs, r.outputs - 300);
+  EXPECT_LT(r.rmse_m, r.fix_rmse_m);
 }
 
 TEST(ImuUsabilityControlTest, ConsistentImuKeepsTheEkfBitForBit) {
