@@ -57,6 +57,18 @@ void AppendConsistency(std::string& s, const NavigatorStats& n) {
                   n.accel_noise_scale, static_cast<unsigned long long>(n.accel_noise_raises));
     s += b;
   }
+  // present once the IMU was found unusable (ImuUsabilityCheck; the solution is then GNSS + the
+  // vehicle model): the test's statistic against its threshold
+  if (n.imu_unusable_periods > 0) {
+    std::snprintf(b, sizeof b,
+                  ",\"imu_consistency\":{\"unusable\":%s,\"stat\":%.4g,\"threshold\":%.4g,"
+                  "\"tests\":%llu,\"unusable_periods\":%llu}",
+                  n.imu_unusable ? "true" : "false", n.imu_consistency_stat,
+                  n.imu_consistency_threshold,
+                  static_cast<unsigned long long>(n.imu_consistency_tests),
+                  static_cast<unsigned long long>(n.imu_unusable_periods));
+    s += b;
+  }
   // present once a lag was found and taken off the IMU tags (the line stays short otherwise)
   if (n.imu_tag_lag_s == 0) return;
   std::snprintf(b, sizeof b, ",\"imu_tag_lag_s\":%.4f", n.imu_tag_lag_s);
@@ -164,6 +176,7 @@ std::string NavdHealth::Field(GpsTime t) {
   flag(Rose(imu_gap_, c_.imu_gaps, t), "imu_gap");
   flag(Rose(mcu_reset_, c_.mcu_resets, t), "mcu_reset");
   flag(src_.nav != nullptr && src_.nav->imu_lost, "imu_lost");
+  flag(src_.nav != nullptr && src_.nav->imu_unusable, "imu_unusable");
 
   std::string s = ",\"health\":{\"flags\":[" + flags + "]";
   const auto* n = src_.nmea;

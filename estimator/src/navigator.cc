@@ -54,7 +54,10 @@ Navigator::Navigator(const NavigatorParams& params)
                  params.vibration_mean_tau_s),
       step_(params.robust.step),
       imu_lag_(params.imu_lag),
-      rtk_check_(params.rtk_fix) {
+      rtk_check_(params.rtk_fix),
+      imu_check_(params.imu_usability, params.ekf.accel_noise_mps2_rthz,
+                 params.ekf.accel_bias_rw_mps3_rthz),
+      fallback_(FallbackVehicleParams(params)) {
   imu_lag_.SetLeverArm(params.ekf.lever_arm_B_m.x(), params.ekf.lever_arm_B_m.y());
 }
 
@@ -206,6 +209,7 @@ void Navigator::ProcessImu(const ImuSample& s) {
     return;
   }
   DetectStationary(s);
+  ObserveImuUsability(s);
   ekf_.Predict(s.delta_angle_B_rad, s.delta_velocity_B_mps, s.dt_s);
   if (vibration_.enabled()) {
     vibration_.Add(s.delta_velocity_B_mps, s.dt_s);
@@ -287,6 +291,7 @@ void Navigator::ProcessGnss(const GnssSample& g) {
   if (params_.mode == NavMode::kImuOnly) return;
   const Eigen::Vector3d p = frame_.ToLocal(g.position);
   height_datum_var_m2_ = g.height_datum_std_m * g.height_datum_std_m;
+  ControlImuUsability(g, p);
   if (restart_at_next_fix_ && params_.mode == NavMode::kEkf) {
     restart_at_next_fix_ = false;
     ResetToFix(g, p);
@@ -470,6 +475,7 @@ NavOutput Navigator::Output() const {
     o.status = (status_ | kStatusImuLost) & ~kStatusGnssFused;
     return o;
   }
+  if (UsesVehicleModel()) return VehicleModelOutput();
   NavOutput o;
   o.status = status_ | (ekf_.repairs() > 0 ? kStatusCovarianceRepaired : 0u);
   if (!aligned_) return o;

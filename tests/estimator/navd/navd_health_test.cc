@@ -210,5 +210,34 @@ TEST(NavdHealthTest, ReportsTheAccelerometerNoiseScaleOnceRaised) {
   EXPECT_NE(f.find("\"accel_noise_scale\":250,\"accel_noise_raises\":3"), std::string::npos) << f;
 }
 
+// issues 41/39: an IMU found unusable (ImuUsabilityCheck) is a flag while it lasts, and the test's
+// statistic is reported once it has fired (the line stays short before)
+TEST(NavdHealthTest, ReportsAnUnusableImuAndItsTestStatistic) {
+  NavigatorStats nav;
+  nav.imu_consistency_tests = 12;
+  nav.imu_consistency_stat = 3.5;
+  NavdHealth quiet(HealthSources{nullptr, nullptr, nullptr, nullptr, &nav});
+  const std::string before = quiet.Field(Ns(1));
+  EXPECT_EQ(before.find("imu_unusable"), std::string::npos) << before;
+  EXPECT_EQ(before.find("imu_consistency"), std::string::npos) << before;
+  nav.imu_unusable = true;
+  nav.imu_consistency_stat = 180.25;
+  nav.imu_consistency_threshold = 37.51;
+  nav.imu_unusable_periods = 1;
+  NavdHealth h(HealthSources{nullptr, nullptr, nullptr, nullptr, &nav});
+  const std::string f = h.Field(Ns(1));
+  EXPECT_NE(f.find("\"flags\":[\"imu_unusable\"]"), std::string::npos) << f;
+  EXPECT_NE(f.find("\"imu_consistency\":{\"unusable\":true,\"stat\":180.2,\"threshold\":37.51,"
+                   "\"tests\":12,\"unusable_periods\":1}"),
+            std::string::npos)
+      << f;
+  // back to the INS: the flag goes, the figures stay
+  nav.imu_unusable = false;
+  NavdHealth back(HealthSources{nullptr, nullptr, nullptr, nullptr, &nav});
+  const std::string g = back.Field(Ns(1));
+  EXPECT_EQ(g.find("\"flags\":[\"imu_unusable\"]"), std::string::npos) << g;
+  EXPECT_NE(g.find("\"imu_consistency\":{\"unusable\":false,"), std::string::npos) << g;
+}
+
 }  // namespace
 }  // namespace hil::estimator

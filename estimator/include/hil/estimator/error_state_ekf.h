@@ -117,6 +117,8 @@ enum EkfStatus : std::uint32_t {
   kStatusBadInput = 1u << 5,            ///< a non-finite or out-of-range input was dropped
   kStatusCovarianceRepaired = 1u << 6,  ///< a covariance diagonal was clamped
   kStatusImuLost = 1u << 7,  ///< the IMU fell silent while fixes arrive: the solution is the fix
+  /// the IMU is far outside its model (ImuUsabilityCheck): the solution is GNSS + vehicle model
+  kStatusImuUnusable = 1u << 8,
 };
 
 /// Result of one measurement update.

@@ -40,12 +40,14 @@
 #include "hil/estimator/geodesy.h"
 #include "hil/estimator/gnss_step_check.h"
 #include "hil/estimator/imu_time_offset.h"
+#include "hil/estimator/imu_usability_check.h"
 #include "hil/estimator/innovation_monitor.h"
 #include "hil/estimator/planar_filter.h"
 #include "hil/estimator/ring_buffer.h"
 #include "hil/estimator/rtk_fix_check.h"
 #include "hil/estimator/samples.h"
 #include "hil/estimator/stationary_detector.h"
+#include "hil/estimator/vehicle_model_filter.h"
 #include "hil/estimator/vibration_velocity.h"
 
 namespace hil::estimator {
@@ -168,6 +170,12 @@ struct NavigatorParams {
   /// suspect (a wrong integer fix) and its positions are not fused (RtkFixCheck,
   /// aid_sources/rtk_fix_control.cc).
   RtkFixCheckParams rtk_fix;
+  /// EKF mode: the accelerometer against the GNSS (ImuUsabilityCheck); while it is unusable the
+  /// solution is the GNSS + vehicle-model filter (VehicleModelFilter; its lever arm, correlated
+  /// GNSS error and, when the speed model is on, speed random walk are the EKF's), the EKF runs on
+  /// beside it (aid_sources/imu_usability_control.cc).
+  ImuUsabilityParams imu_usability;
+  VehicleModelParams fallback_vehicle;
   /// Multi-receiver mode: antenna positions in the body frame, one column per receiver
   /// (GnssSample::antenna); the first `multi_antenna_count` columns are used (seed 000: three on a
   /// 3 m circle). At least two antennas with distinct horizontal positions give a heading.
@@ -175,6 +183,10 @@ struct NavigatorParams {
       Eigen::Matrix<double, 3, kMaxGnssAntennas>::Zero();
   int multi_antenna_count = 3;
 };
+
+/// The vehicle-model fallback's parameters: `fallback_vehicle` with the EKF's lever arm and
+/// correlated GNSS error, and its speed random walk when the speed model is on.
+VehicleModelParams FallbackVehicleParams(const NavigatorParams& p);
 
 /// Counters a host reports as health.
 struct NavigatorStats {
@@ -210,6 +222,11 @@ struct NavigatorStats {
   std::uint64_t accel_noise_raises = 0;    ///< windows that raised it
   std::uint64_t rtk_suspect_episodes = 0;  ///< RTK fix episodes judged a probable wrong fix
   std::uint64_t rtk_suspect_fixes = 0;     ///< fixes of those episodes, not fused (RtkFixCheck)
+  /// the IMU judged unusable (ImuUsabilityCheck): the solution is the vehicle-model fallback
+  bool imu_unusable = false;
+  double imu_consistency_stat = 0;       ///< Λ of the last test, χ²(dof) for a usable IMU
+  double imu_consistency_threshold = 0;  ///< the Λ above which the IMU is unusable
+  std::uint64_t imu_consistency_tests = 0, imu_unusable_periods = 0;
 };
 
 /// The solution at one time of validity.
@@ -307,6 +324,12 @@ class Navigator {
   bool UsesImu() const { return estimator::UsesImu(params_.mode); }
   bool FallsBackToFixes() const;  ///< modes whose solution becomes the fix when the IMU is lost
   void MultiGnssFix(const GnssSample& g);
+  /// Is the IMU usable (ImuUsabilityCheck)? Its samples and the fixes into the test, the fixes
+  /// into the vehicle-model fallback (aid_sources/imu_usability_control.cc).
+  void ObserveImuUsability(const ImuSample& s);
+  void ControlImuUsability(const GnssSample& g, const Eigen::Vector3d& p_antenna_N_m);
+  bool UsesVehicleModel() const { return imu_check_.unusable() && fallback_.ready(); }
+  NavOutput VehicleModelOutput() const;
 
   NavigatorParams params_;
   ErrorStateEkf ekf_;
@@ -343,6 +366,8 @@ class Navigator {
   RtkFixCheck rtk_check_;                   // wrong RTK fixes: a new episode against the INS
   Eigen::Vector3d rtk_offset_N_m_ = Eigen::Vector3d::Zero();  // a suspect episode's offset
   Eigen::Vector3d rtk_offset_std_m_ = Eigen::Vector3d::Zero();
+  ImuUsabilityCheck imu_check_;             // is the IMU usable at all?
+  VehicleModelFilter fallback_;             // GNSS + vehicle model, the solution when it is not
   std::optional<GpsTime> last_gnss_vel_t_;  // the newest fix with a velocity, and its speed
   double last_gnss_speed_mps_ = 0;
   // GNSS-only and multi-receiver modes: the last fix
