@@ -20,18 +20,17 @@ void QuantileSketch::Add(double v) {
     AddToBuckets(v, 1);
     return;
   }
-  if (values_.size() == exact_limit_) {  // one more than it holds: before the vector grows
-    StartSketching();                    // (push_back would double it for a moment: 4 MiB)
+  if (values_.size() == exact_limit_) {  // one more than it holds
+    StartSketching();
     AddToBuckets(v, 1);
     return;
   }
-  values_.push_back(v);
-  sorted_ = false;
+  values_.Add(v);
 }
 
 void QuantileSketch::Merge(const QuantileSketch& other) {
   if (!other.sketching_) {
-    for (const double v : other.values_) Add(v);
+    other.values_.ForEach([this](double v) { Add(v); });
     return;
   }
   if (!sketching_) StartSketching();
@@ -45,9 +44,8 @@ void QuantileSketch::Merge(const QuantileSketch& other) {
 
 void QuantileSketch::StartSketching() {
   sketching_ = true;
-  for (const double v : values_) AddToBuckets(v, 1);
-  std::vector<double>().swap(values_);
-  sorted_ = true;
+  values_.ForEach([this](double v) { AddToBuckets(v, 1); });
+  values_.Clear();
 }
 
 int QuantileSketch::BucketOf(double magnitude) const {
@@ -71,10 +69,12 @@ void QuantileSketch::AddToBuckets(double v, std::uint64_t n) {
   (v > 0 ? positive_ : negative_)[BucketOf(m)] += n;
 }
 
-void QuantileSketch::Sort() const {
-  if (sorted_) return;
-  std::sort(values_.begin(), values_.end());
-  sorted_ = true;
+std::vector<double> QuantileSketch::Sorted() const {
+  std::vector<double> v;
+  v.reserve(values_.size());
+  values_.ForEach([&v](double x) { v.push_back(x); });
+  std::sort(v.begin(), v.end());
+  return v;
 }
 
 double QuantileSketch::RankValue(std::uint64_t k) const {
@@ -97,10 +97,7 @@ double QuantileSketch::RankValue(std::uint64_t k) const {
 
 double QuantileSketch::Percentile(double pct) const {
   if (count_ == 0) return 0;
-  if (!sketching_) {
-    Sort();
-    return PercentileOfSorted(values_, pct);
-  }
+  if (!sketching_) return PercentileOfSorted(Sorted(), pct);
   // the same interpolation between ranks as PercentileOfSorted
   const double pos = pct / 100.0 * static_cast<double>(count_ - 1);
   const auto lo = static_cast<std::uint64_t>(std::floor(pos));
@@ -111,11 +108,11 @@ double QuantileSketch::Percentile(double pct) const {
 
 void QuantileSketch::ForEach(const std::function<void(double, std::uint64_t)>& f) const {
   if (!sketching_) {
-    Sort();
-    for (std::size_t i = 0; i < values_.size();) {
+    const std::vector<double> sorted = Sorted();
+    for (std::size_t i = 0; i < sorted.size();) {
       std::size_t j = i + 1;
-      while (j < values_.size() && values_[j] == values_[i]) ++j;
-      f(values_[i], j - i);
+      while (j < sorted.size() && sorted[j] == sorted[i]) ++j;
+      f(sorted[i], j - i);
       i = j;
     }
     return;

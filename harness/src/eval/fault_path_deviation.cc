@@ -5,7 +5,7 @@
 namespace hil::harness {
 
 std::vector<FaultPathDeviation> ScoreFaultPathDeviations(const PlannedPath& path,
-                                                         const std::vector<TrackSample>& track,
+                                                         const TrackPass& track,
                                                          const FaultTimeline& faults,
                                                          Duration window) {
   std::vector<FaultPathDeviation> out;
@@ -16,8 +16,8 @@ std::vector<FaultPathDeviation> ScoreFaultPathDeviations(const PlannedPath& path
     d.end_s = ToSeconds(f.end);
     d.window_s = ToSeconds(window);
     const Time until = f.end + window;
-    for (const TrackSample& s : track) {
-      if (s.t < f.start || s.t > until) continue;
+    track([&](const TrackSample& s) {
+      if (s.t < f.start || s.t > until) return;
       const double xte = path.CrossTrack(s.p_N_m);
       ++d.samples;
       if (!d.cross_track_at_start_m) d.cross_track_at_start_m = xte;
@@ -29,7 +29,7 @@ std::vector<FaultPathDeviation> ScoreFaultPathDeviations(const PlannedPath& path
       }
       if (!d.max_abs_cross_track_m || std::fabs(xte) > *d.max_abs_cross_track_m)
         d.max_abs_cross_track_m = std::fabs(xte);
-    }
+    });
     out.push_back(d);
   }
   return out;

@@ -101,14 +101,17 @@ std::optional<PointErrors> Errors(const std::vector<Eigen::Vector2d>& ref, const
 }
 
 // Assigns the track's samples in the window to the rows, inside their margins.
-void AssignSamples(const PathGeometry& g, const std::vector<TrackSample>& track,
-                   const PassToPassConfig& c, std::vector<Row>& rows, PassToPassMetrics& m) {
-  const Time end = track.front().t + DurationFromSeconds(c.window_s);
-  m.window_start_s = ToSeconds(track.front().t);
-  m.window_end_s = m.window_start_s;
-  for (const TrackSample& s : track) {
-    if (s.t > end) break;
-    if (s.speed_mps < c.min_speed_mps) continue;
+void AssignSamples(const PathGeometry& g, const TrackPass& track, const PassToPassConfig& c,
+                   std::vector<Row>& rows, PassToPassMetrics& m) {
+  std::optional<Time> end;
+  track([&](const TrackSample& s) {
+    if (!end) {
+      end = s.t + DurationFromSeconds(c.window_s);
+      m.window_start_s = ToSeconds(s.t);
+      m.window_end_s = m.window_start_s;
+    }
+    if (s.t > *end) return;  // the samples come in time order: none after it is in the window
+    if (s.speed_mps < c.min_speed_mps) return;
     const int seg = NearestSegment(g, s.p_N_m);
     for (Row& r : rows) {
       if (r.segment != seg) continue;
@@ -119,7 +122,7 @@ void AssignSamples(const PathGeometry& g, const std::vector<TrackSample>& track,
       m.window_end_s = ToSeconds(s.t);
       break;
     }
-  }
+  });
 }
 
 // Pass `next` against the driven track of `prev`, its point errors appended to the totals.
@@ -178,9 +181,19 @@ PassErrorStats ErrorStats(const std::vector<double>& signed_errors_m) {
 PassToPassMetrics ScorePassToPass(const PathGeometry& geometry,
                                   const std::vector<TrackSample>& track,
                                   const PassToPassConfig& config) {
+  if (track.empty()) {
+    PassToPassMetrics m;
+    m.config = config;
+    return m;
+  }
+  return ScorePassToPass(geometry, PassOver(track), config);
+}
+
+PassToPassMetrics ScorePassToPass(const PathGeometry& geometry, const TrackPass& track,
+                                  const PassToPassConfig& config) {
   PassToPassMetrics m;
   m.config = config;
-  if (track.empty() || geometry.vertices.size() < 2) return m;
+  if (geometry.vertices.size() < 2) return m;
   std::vector<Row> rows = Rows(geometry);
   AssignSamples(geometry, track, config, rows, m);
   std::vector<double> all_np, all_ip, diff, absolute;

@@ -237,27 +237,21 @@ void Attempt(RunReport& report, const std::function<void()>& write) {
   }
 }
 
-// The truth vehicle's track at truth.csv's times (10 Hz) from `t_from` to the run's end: the
-// scoring's own when it is all of it (no copy), else the part of it copied into `part`.
-const std::vector<TrackSample>& TruthTrack(const RunContext& ctx, Time t_from,
-                                           std::vector<TrackSample>& part) {
-  const std::vector<TrackSample>& all = ctx.scoring->track();
-  if (all.empty() || (all.front().t >= t_from && all.back().t <= ctx.t_end)) return all;
-  part.clear();
-  for (const TrackSample& s : all) {
-    if (s.t >= t_from && s.t <= ctx.t_end) part.push_back(s);
-  }
-  return part;
+// Passes over the truth vehicle's track at truth.csv's times (10 Hz) from `t_from` to the run's
+// end, read from the scoring's file (never held: a run's track may be days long).
+TrackPass TruthTrack(const RunContext& ctx, Time t_from) {
+  return PassBetween(ctx.scoring->track().Pass(), t_from, ctx.t_end);
 }
 
 // Distance along the track from time `from` to its end.
-std::optional<double> DistanceAfter(const std::vector<TrackSample>& track,
-                                    std::optional<Time> from) {
+std::optional<double> DistanceAfter(const TrackPass& track, std::optional<Time> from) {
   if (!from) return std::nullopt;
   double d = 0;
-  for (std::size_t i = 1; i < track.size(); ++i) {
-    if (track[i - 1].t >= *from) d += (track[i].p_N_m - track[i - 1].p_N_m).norm();
-  }
+  std::optional<TrackSample> last;
+  track([&](const TrackSample& s) {
+    if (last && last->t >= *from) d += (s.p_N_m - last->p_N_m).norm();
+    last = s;
+  });
   return d;
 }
 
@@ -319,11 +313,10 @@ void NoteStaleTruth(RunContext& ctx) {
 void EvaluateClosedLoop(RunContext& ctx) {
   RunReport& report = ctx.report;
   const PathGeometry geometry = ReadPathGeometry(ctx.scenario.closed_loop.path_file);
-  std::vector<TrackSample> evaluated_part, track_part;
-  const std::vector<TrackSample>& evaluated = TruthTrack(ctx, ctx.t_from, evaluated_part);
+  const TrackPass evaluated = TruthTrack(ctx, ctx.t_from);
   report.tracking = ScoreTracking(geometry, evaluated);
   report.pass_to_pass = ScorePassToPass(geometry, evaluated, ctx.scenario.closed_loop.pass_to_pass);
-  const std::vector<TrackSample>& track = TruthTrack(ctx, Time{}, track_part);  // the whole run
+  const TrackPass track = TruthTrack(ctx, Time{});  // the whole run
   report.tracking_faults = ScoreFaultPathDeviations(
       PlannedPath(ReadPathVertices(ctx.scenario.closed_loop.path_file)), track, ctx.scenario.faults,
       DurationFromSeconds(ctx.scenario.closed_loop.fault_window_s));
@@ -370,7 +363,7 @@ void EvaluateClosedLoop(RunContext& ctx) {
       c.distance_after_watchdog_m = DistanceAfter(track, e.last_watchdog_trip);
     c.steering_ecu = MakeSteeringEcuReport(*ecu);
   }
-  if (!track.empty()) c.final_speed_mps = track.back().speed_mps;
+  track([&c](const TrackSample& s) { c.final_speed_mps = s.speed_mps; });  // the last one's
   if (ctx.set.world)  // paper 001: the deviation from the aisles, against the world's ridges
     report.row_following = ScoreRowDeviation(*ctx.set.world, evaluated, kRowMargin_m);
   c.stopped = std::fabs(c.final_speed_mps) < 0.01;

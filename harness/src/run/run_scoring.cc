@@ -58,8 +58,6 @@ RunScoring::RunScoring(ScoringSetup setup, TruthTableBuilder& truth)
     }
     Write(csv, header);
   };
-  if (setup_.scenario->closed_loop.enabled)  // room for the whole grid, reserved once
-    track_.reserve(static_cast<std::size_t>((grid_end_ - Time{}) / kTruthCsvStep) + 1);
   open(truth_csv_, "truth.csv", AppendTruthCsvHeader);
   open(est_.csv, "estimate.csv", AppendErrorsCsvHeader);
   open(fix_.csv, "gnss_fixes_errors.csv", AppendErrorsCsvHeader);
@@ -173,7 +171,7 @@ void RunScoring::Consume(const std::vector<Time>& times, const std::vector<Truth
       Write(truth_csv_, [&](std::string& text) { AppendTruthCsvRow(text, t, s); });
       truth_plot_.Add(ToSeconds(t), s.p_NB_N_m.x(),
                       Eigen::Vector3d(ToSeconds(t), s.p_NB_N_m.x(), s.p_NB_N_m.y()));
-      if (setup_.scenario->closed_loop.enabled) track_.push_back(TrackSampleOf(t, s));
+      if (setup_.scenario->closed_loop.enabled) track_.Add(TrackSampleOf(t, s));
       next_grid_row_ += kTruthCsvStep;
     }
     last_sample_.emplace(t, s);
@@ -271,7 +269,8 @@ std::size_t RunScoring::retained() const {
   return est_.pending.size() + fix_.pending.size() + est_.accuracy.retained() +
          fix_.accuracy.retained() + est_.plot.retained() + fix_.plot.retained() +
          truth_plot_.retained() + ticks_plot_.retained() + timing_.retained() +
-         latency_ms_.retained() + ahead_.size() + done_t_.size() + truth_.retained();
+         latency_ms_.retained() + ahead_.size() + done_t_.size() + truth_.retained() +
+         track_.in_memory();
 }
 
 }  // namespace hil::harness

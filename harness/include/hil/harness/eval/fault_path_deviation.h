@@ -29,7 +29,7 @@ struct FaultPathDeviation {
 
 /// One entry per fault of `faults`, in file order. `track` is the truth's (time order).
 std::vector<FaultPathDeviation> ScoreFaultPathDeviations(const PlannedPath& path,
-                                                         const std::vector<TrackSample>& track,
+                                                         const TrackPass& track,
                                                          const FaultTimeline& faults,
                                                          Duration window);
 

@@ -71,5 +71,8 @@ PassErrorStats ErrorStats(const std::vector<double>& signed_errors_m);
 PassToPassMetrics ScorePassToPass(const PathGeometry& geometry,
                                   const std::vector<TrackSample>& track,
                                   const PassToPassConfig& config = {});
+/// The same over a track read in one pass: only the window's samples are held.
+PassToPassMetrics ScorePassToPass(const PathGeometry& geometry, const TrackPass& track,
+                                  const PassToPassConfig& config = {});
 
 }  // namespace hil::harness

@@ -6,7 +6,11 @@
 /// of the direction of travel), heading error against the edge's direction, settling after the
 /// start (the first time |XTE| stays below `settle_band_m` for good), and figures per segment
 /// (the path file's segments, path_file_reader.h: a row, a side, a headland turn, a corner).
+/// The track is read in passes (TrackPass), never held: a run's track may be days long (issue 40);
+/// its percentiles are exact (exact_selection.h) over values spilled to disk (spill_file.h).
 
+#include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,6 +29,14 @@ struct TrackSample {
   double yaw_rad = 0;  ///< ENU, counter-clockwise from east
   double speed_mps = 0;
 };
+
+/// A track read in time order: each call of a TrackPass visits every sample once, from the first.
+using TrackVisit = std::function<void(const TrackSample&)>;
+using TrackPass = std::function<void(const TrackVisit&)>;
+/// Passes over `track` (which must outlive them).
+TrackPass PassOver(const std::vector<TrackSample>& track);
+/// Passes over the samples of `track` with `from` <= t <= `to`.
+TrackPass PassBetween(TrackPass track, Time from, Time to);
 
 struct XteStats {
   std::size_t samples = 0;
@@ -55,15 +67,22 @@ struct TrackingMetrics {
   std::optional<double> stable_distance_m, steady_state_mean_abs_m;
   /// The samples on straight segments (rows, AB lines, edges) and on turns, each together.
   XteStats straight, turns;
-  /// The series for the plots: along-path distance and signed XTE of every sample.
+  /// The series for the plots: along-path distance and signed XTE of the samples, decimated in
+  /// time (SeriesDecimator, kTrackingPlotBuckets: every sample of a run up to about 11 min).
   std::vector<double> s_m, xte_m;
 };
+
+/// Our choice, as the run's other plotted series (RunScoring::kPlotBuckets).
+inline constexpr std::size_t kTrackingPlotBuckets = 2048;
 
 /// Scores `track` (time order) against the polyline `path`, each edge its own straight segment.
 TrackingMetrics ScoreTracking(const std::vector<Eigen::Vector2d>& path,
                               const std::vector<TrackSample>& track, double settle_band_m = 0.05);
 /// The same with the path file's segments (rows, sides, turns: kind "straight" or "turn").
 TrackingMetrics ScoreTracking(const PathGeometry& geometry, const std::vector<TrackSample>& track,
+                              double settle_band_m = 0.05);
+/// The same over a track read in passes (four at most), in memory bounded whatever its length.
+TrackingMetrics ScoreTracking(const PathGeometry& geometry, const TrackPass& track,
                               double settle_band_m = 0.05);
 
 }  // namespace hil::harness

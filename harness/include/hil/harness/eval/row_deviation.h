@@ -25,7 +25,7 @@ struct RowDeviation {
   double max_heading_deviation_deg = 0;
 };
 
-RowDeviation ScoreRowDeviation(const world::GreenhouseWorld& world,
-                               const std::vector<TrackSample>& track, double margin_m);
+RowDeviation ScoreRowDeviation(const world::GreenhouseWorld& world, const TrackPass& track,
+                               double margin_m);
 
 }  // namespace hil::harness

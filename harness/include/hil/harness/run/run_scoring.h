@@ -21,7 +21,7 @@
 /// thread has passed, or more than kLateHorizon after the run's time when it arrives, is not
 /// scored: a problem of the report. Closed loop: the same, the builder's integrator obeying the
 /// run's commands (TruthTableBuilder::Command); the truth's track on truth.csv's grid (10 Hz,
-/// 40 B a sample) is kept for the tracking figures (track()).
+/// 40 B a sample) is kept on disk for the tracking figures (track(), spilled_track.h).
 
 #include <chrono>
 #include <cstdint>
@@ -40,6 +40,7 @@
 #include "hil/harness/eval/outage_metrics.h"
 #include "hil/harness/eval/path_tracking.h"
 #include "hil/harness/eval/series_decimator.h"
+#include "hil/harness/eval/spilled_track.h"
 #include "hil/harness/faults/fault_report.h"
 #include "hil/harness/report/output_file.h"
 #include "hil/harness/report/report_html.h"
@@ -105,8 +106,8 @@ class RunScoring {
   /// a base or a steering ECU, not both).
   void AddSteeringTick(Time t, double commanded_steer_deg, double steer_deg);
   /// Closed loop: the truth's track at truth.csv's times (10 Hz, the whole grid to the
-  /// scenario's end), in time order.
-  const std::vector<TrackSample>& track() const { return track_; }
+  /// scenario's end), in time order, on disk but for its last samples.
+  const SpilledTrack& track() const { return track_; }
   /// The plots' series (moves them out).
   ReportSeries TakeSeries();
   /// Writes out truth.csv, estimate.csv and gnss_fixes_errors.csv. @throws what writing them threw.
@@ -154,7 +155,7 @@ class RunScoring {
   QuantileSketch latency_ms_;
   Csv truth_csv_;
   SeriesDecimator<Eigen::Vector3d> truth_plot_;  // (t, east, north)
-  std::vector<TrackSample> track_;               // closed loop
+  SpilledTrack track_;                           // closed loop
   SeriesDecimator<Eigen::Vector3d> ticks_plot_;  // (t, commanded, actual yaw rate or steer angle)
   bool steering_ticks_ = false;                  // ticks_plot_ holds road-wheel angles
   Time grid_end_, next_grid_ask_{}, next_grid_row_{};
