@@ -196,7 +196,7 @@ void ZedF9pDevice::ApplyRtk(Time t, double dt_s, gnss::GnssFix& fix) {
   }
   rtk_.config().dgnss_timeout_s = static_cast<double>(db_.Get(key::kNavspgConstrDgnssTo));
   rtk_.config().fixed_allowed = db_.Get(key::kNavhpgDgnssMode) == 3;
-  const RoverRtkEpoch r = rtk_.Step(t, dt_s, valid3d, baseline_m);
+  const RoverRtkEpoch r = rtk_.Step(t, dt_s, valid3d, baseline_m, last_.nav.sats);
   const CarrSoln carr = CarrSolnOf(r.state);
   last_.carr_soln = carr;
   last_.diff_soln = carr != CarrSoln::kNone;
@@ -213,6 +213,7 @@ void ZedF9pDevice::ApplyRtk(Time t, double dt_s, gnss::GnssFix& fix) {
   fix.quality =
       carr == CarrSoln::kFixed ? gnss::FixQuality::kRtkFixed : gnss::FixQuality::kRtkFloat;
   ++(carr == CarrSoln::kFixed ? stats_.epochs_fixed : stats_.epochs_float);
+  stats_.epochs_wrong_fix += r.wrong_fix ? 1 : 0;
 }
 
 void ZedF9pDevice::FillRelPos() {

@@ -47,6 +47,12 @@ inline constexpr ScenarioKey kZedF9p[] = {
     {"float_sigma_start_m", kNumber, "m", "1", 0, 100, "float error per axis at entry (1σ, ours)"},
     {"float_sigma_end_m", kNumber, "m", "0.1", 0, 100, "float error per axis converged (ours)"},
     {"float_convergence_s", kNumber, "s", "20", 0.1, 3600, "float convergence time constant"},
+    {"wrong_fix_probability", kNumber, "", "0", 0, 1,
+     "each fix wrong with this probability (ours: no source gives a rate)"},
+    {"wrong_fix_hold_s", kNumber, "s", "30", 0, 3600,
+     "a wrong fix holds this × U[0.5, 1.5] until a residual test catches it (ours)"},
+    {"wrong_fix_satellites", kInteger, "", "2", 1, 12, "satellites off by whole L1 cycles"},
+    {"wrong_fix_cycles", kInteger, "cycles", "1", 1, 10, "each off by ±1…± this many cycles"},
     {"config", kMapping, "", "the receiver's defaults", 0, 0,
      "configuration saved in Flash before the run (zed_f9p.config)"},
     {"tx_buffer_bytes", kInteger, "B", "4096", 256, 1 << 20, "its UART1's transmit buffer"},
@@ -133,6 +139,11 @@ void ReadRtk(const KeyedReader<kZedF9p>& r, rtk::RoverRtkConfig& k) {
   k.float_sigma_start_m = r.Number("float_sigma_start_m", k.float_sigma_start_m);
   k.float_sigma_end_m = r.Number("float_sigma_end_m", k.float_sigma_end_m);
   k.float_convergence_s = r.Number("float_convergence_s", k.float_convergence_s);
+  gnss::WrongFixConfig& w = k.wrong_fix;
+  w.probability = r.Number("wrong_fix_probability", w.probability);
+  w.hold_s = r.Number("wrong_fix_hold_s", w.hold_s);
+  w.satellites = static_cast<int>(r.Integer("wrong_fix_satellites", w.satellites));
+  w.cycles = static_cast<int>(r.Integer("wrong_fix_cycles", w.cycles));
 }
 
 // The raw observations' receiver; the atmosphere is the rtk_base's (common to both sites).

@@ -136,6 +136,7 @@ struct RtkTransition {
 struct ZedF9pStatistics {
   std::uint64_t rtcm_frames = 0, rtcm_crc_failed = 0, epochs = 0;
   std::uint64_t epochs_fixed = 0, epochs_float = 0;
+  std::uint64_t epochs_wrong_fix = 0;  ///< fixed to wrong integers (RoverRtk's wrong fixes)
   /// Moving base: epochs with relPosHeadingValid, and their heading error against the truth of
   /// the baseline (relPosHeading − true heading).
   std::uint64_t heading_valid_epochs = 0;
