@@ -64,6 +64,23 @@ SatelliteEcef Constellation::GpsPositionEcef(std::size_t index, double gps_s) co
   return {o.svid, PositionEcef(o, OrbitClock(gps_s))};
 }
 
+GpsEphemeris Constellation::Ephemeris(std::size_t index, double toe_gps_s) const {
+  const Orbit& o = gps_.at(index);
+  const OrbitClock clock(toe_gps_s);
+  constexpr double kWeek_s = 604800.0;
+  GpsEphemeris e;
+  e.svid = o.svid;
+  e.week = static_cast<int>(std::floor(toe_gps_s / kWeek_s));
+  e.toe_s = toe_gps_s - e.week * kWeek_s;
+  e.sqrt_a = std::sqrt(kGpsA_m);
+  e.i0_rad = kGpsIncl_rad;
+  // IS-GPS-200: u = M0 + n t_k (e = 0, ω = 0); Ω = Ω0 − Ω̇e (t_k + t_oe)
+  e.m0_rad = std::remainder(o.anomaly0_rad + clock.n_radps * clock.orbit_s, 2 * std::numbers::pi);
+  const double node_rad = o.raan0_rad - kEarthRate_radps * clock.sidereal_s;
+  e.omega0_rad = std::remainder(node_rad + kEarthRate_radps * e.toe_s, 2 * std::numbers::pi);
+  return e;
+}
+
 Constellation::Constellation(std::uint64_t seed) {
   // PRN assignment: a fixed permutation of 1..32 without two PRNs, so the sky looks like a real
   // one (not 1..30 in plane order). The seed varies only C/N0 offsets, not the geometry.

@@ -33,6 +33,7 @@ constexpr F9Key kKeys[] = {
     {f9key::kNmeaGsvUart1, "CFG-MSGOUT-NMEA_ID_GSV_UART1", 1},
     {f9key::kNmeaGllUart1, "CFG-MSGOUT-NMEA_ID_GLL_UART1", 1},
     {f9key::kRxmRtcmUart1, "CFG-MSGOUT-UBX_RXM_RTCM_UART1", 0},
+    {f9key::kRxmRawxUart1, "CFG-MSGOUT-UBX_RXM_RAWX_UART1", 0},
     {f9key::kRateMeas, "CFG-RATE-MEAS", 1000},
     {f9key::kRateNav, "CFG-RATE-NAV", 1},
     {f9key::kUart1Baudrate, "CFG-UART1-BAUDRATE", 38400},

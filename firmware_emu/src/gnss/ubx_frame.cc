@@ -1,5 +1,7 @@
 #include "hil/firmware_emu/gnss/ubx_frame.h"
 
+#include <bit>
+
 #include "hil/firmware_emu/gnss/nmea_sentence.h"
 #include "hil/firmware_emu/little_endian.h"
 
@@ -37,6 +39,14 @@ Writer& Writer::I2(std::int64_t v) {
 }
 Writer& Writer::I4(std::int64_t v) {
   LeAppend(bytes_, static_cast<std::uint64_t>(v), 4);
+  return *this;
+}
+Writer& Writer::R4(float v) {
+  LeAppend(bytes_, std::bit_cast<std::uint32_t>(v), 4);
+  return *this;
+}
+Writer& Writer::R8(double v) {
+  LeAppend(bytes_, std::bit_cast<std::uint64_t>(v), 8);
   return *this;
 }
 Writer& Writer::Chars(std::string_view text, std::size_t width) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include <Eigen/Geometry>
 
@@ -60,8 +61,18 @@ double BaseObservables::GeometricRange(const gnss::Constellation& sky, std::size
   return range_m;
 }
 
+double BaseObservables::Multipath(double amplitude_m, int prn, std::size_t signal, double gps_s,
+                                  double elev_rad) const {
+  if (amplitude_m == 0) return 0;
+  // a phase per satellite and signal (ours: any fixed spread) so the errors do not align
+  const double phase_rad = 2.39996 * prn + 1.3 * static_cast<double>(signal);
+  return amplitude_m * std::cos(elev_rad) *
+         std::sin(2.0 * std::numbers::pi * gps_s / config_.multipath_period_s + phase_rad);
+}
+
 SatelliteObservation BaseObservables::Satellite(const gnss::Constellation& sky, std::size_t index,
-                                                double gps_s, double elev_deg, double azim_deg) {
+                                                double gps_s, double elev_deg, double azim_deg,
+                                                const ObserveConditions& cond) {
   SatelliteObservation o;
   o.prn = sky.GpsPositionEcef(index, gps_s).svid;
   o.elevation_deg = elev_deg;
@@ -71,7 +82,9 @@ SatelliteObservation BaseObservables::Satellite(const gnss::Constellation& sky, 
   Eigen::Vector3d unused;
   const double rate_mps = (GeometricRange(sky, index, gps_s + kRangeRateStep_s, unused) -
                            GeometricRange(sky, index, gps_s - kRangeRateStep_s, unused)) /
-                          (2 * kRangeRateStep_s);
+                              (2 * kRangeRateStep_s) +
+                          kLight_mps * cond.clock_drift;
+  const double clock_m = kLight_mps * cond.clock_bias_s;
   const double el = elev_deg * kDeg;
   const double tropo_m = config_.zenith_tropo_m * TropoMapping(el);
   const double iono_l1_m =
@@ -95,9 +108,13 @@ SatelliteObservation BaseObservables::Satellite(const gnss::Constellation& sky, 
     s.wavelength_m = kLight_mps / spec.frequency_hz;
     const double iono_m = iono_l1_m * (f_l1 / spec.frequency_hz) * (f_l1 / spec.frequency_hz);
     const double code_sigma_m = spec.code_noise_m / std::max(std::sin(el), 0.1);
-    s.pseudorange_m = o.geometric_range_m + tropo_m + iono_m + code_sigma_m * unit(rng_);
-    const double phase_m =
-        o.geometric_range_m + tropo_m - iono_m + config_.phase_noise_m * unit(rng_);
+    const double code_mp_m = Multipath(config_.code_multipath_m, o.prn, k, gps_s, el);
+    const double carrier_mp_m = Multipath(config_.carrier_multipath_m, o.prn, k + 7, gps_s, el);
+    s.pseudorange_m =
+        o.geometric_range_m + clock_m + tropo_m + iono_m + code_mp_m + code_sigma_m * unit(rng_);
+    const double phase_m = o.geometric_range_m + clock_m + tropo_m - iono_m + carrier_mp_m +
+                           config_.phase_noise_m * unit(rng_);
+    s.code_sigma_m = code_sigma_m;
     s.carrier_cycles = phase_m / s.wavelength_m + static_cast<double>(track.ambiguity[k]);
     s.range_rate_mps = rate_mps;
     s.lock_time_s = gps_s - track.acquired_gps_s;
@@ -108,7 +125,12 @@ SatelliteObservation BaseObservables::Satellite(const gnss::Constellation& sky, 
 }
 
 std::vector<SatelliteObservation> BaseObservables::Observe(const gnss::Constellation& sky,
-                                                           double gps_s) {
+                                                           double gps_s,
+                                                           const ObserveConditions& obs_cond) {
+  if (obs_cond.sky_blocked) {
+    tracks_.clear();  // every satellite lost: new ambiguities and lock times on re-acquisition
+    return {};
+  }
   gnss::SkyConditions cond;
   cond.elevation_mask_deg = config_.elevation_mask_deg;
   cond.sbas_enabled = false;
@@ -127,7 +149,7 @@ std::vector<SatelliteObservation> BaseObservables::Observe(const gnss::Constella
     const int prn = sky.GpsPositionEcef(i, gps_s).svid;
     const auto v = visible.find(prn);
     if (v == visible.end()) continue;
-    out.push_back(Satellite(sky, i, gps_s, v->second.first, v->second.second));
+    out.push_back(Satellite(sky, i, gps_s, v->second.first, v->second.second, obs_cond));
   }
   std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.prn < b.prn; });
   return out;

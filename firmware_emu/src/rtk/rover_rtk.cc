@@ -12,7 +12,28 @@ constexpr double kMicro = 1e-6;
 }  // namespace
 
 RoverRtk::RoverRtk(const RoverRtkConfig& config, std::uint64_t seed)
-    : config_(config), rng_(seed ^ 0x524F564552ULL) {}
+    : config_(config), rng_(seed ^ 0x524F564552ULL), wrong_rng_(seed ^ 0x57524F4E47ULL) {}
+
+void RoverRtk::WrongFixEpoch(Time t, bool fixed_now, const std::vector<gnss::SatelliteView>& sats) {
+  if (state_ != gnss::RtkState::kFixed) {
+    wrong_.Clear();
+    return;
+  }
+  std::vector<int> svids;
+  for (const auto& s : sats) {
+    if (s.used && !s.sbas && !s.nlos) svids.push_back(s.svid);
+  }
+  if (fixed_now) {
+    if (wrong_.Draw(t, svids, config_.wrong_fix, wrong_rng_, uniform_)) ++wrong_fixes_;
+    return;
+  }
+  if (!wrong_.active() || !wrong_.Ends(t, svids)) return;
+  // a residual test catches the wrong integers: float, and a new convergence
+  wrong_.Clear();
+  state_ = gnss::RtkState::kFloat;  // its float error the converged one (float_since_ kept)
+  converging_ = true;
+  converge_since_ = t;
+}
 
 void RoverRtk::OnCorrection(Time t) {
   // a stream starts when corrections arrive after none or after a gap longer than the fixed limit
@@ -58,12 +79,16 @@ void RoverRtk::Advance(Time t, bool valid, double baseline_m) {
   }
 }
 
-RoverRtkEpoch RoverRtk::Step(Time t, double dt_s, bool valid, double baseline_m) {
+RoverRtkEpoch RoverRtk::Step(Time t, double dt_s, bool valid, double baseline_m,
+                             const std::vector<gnss::SatelliteView>& sats) {
   const double phi = started_ ? std::exp(-dt_s / config_.error_correlation_s) : 0.0;
   const double q = std::sqrt(1.0 - phi * phi);
   for (int i = 0; i < 3; ++i) unit_[i] = phi * unit_[i] + q * normal_(rng_);
   started_ = true;
+  const bool was_fixed = state_ == gnss::RtkState::kFixed;
   Advance(t, valid, baseline_m);
+  if (config_.wrong_fix.probability > 0)
+    WrongFixEpoch(t, !was_fixed && state_ == gnss::RtkState::kFixed, sats);
   RoverRtkEpoch out;
   out.state = state_;
   out.correction_age_s = Age(t);
@@ -80,6 +105,10 @@ RoverRtkEpoch RoverRtk::Step(Time t, double dt_s, bool valid, double baseline_m)
   out.sigma_h_m = sigma;
   out.sigma_v_m = kRoverVerticalFactor * sigma;
   out.error_N_m = Eigen::Vector3d(sigma * unit_.x(), sigma * unit_.y(), out.sigma_v_m * unit_.z());
+  if (wrong_.active()) {
+    out.wrong_fix = true;
+    out.error_N_m += wrong_.Offset(sats);
+  }
   return out;
 }
 

@@ -48,6 +48,17 @@ void MarkUsed(gnss::NavEpoch& e, bool valid) {
   for (const auto* s : used) e.used_in_channel_order.push_back(s->nmea_id());
 }
 
+// The rover's observation model with the atmosphere of its radio base (common to both sites).
+BaseObservablesConfig RawConfig(const ZedF9pConfig& c) {
+  BaseObservablesConfig raw = c.raw;
+  if (c.radio_base) {
+    raw.zenith_tropo_m = c.radio_base->observables.zenith_tropo_m;
+    raw.vertical_iono_l1_m = c.radio_base->observables.vertical_iono_l1_m;
+    raw.iono_shell_height_m = c.radio_base->observables.iono_shell_height_m;
+  }
+  return raw;
+}
+
 }  // namespace
 
 CarrSoln CarrSolnOf(gnss::RtkState s) {
@@ -68,7 +79,8 @@ ZedF9pDevice::ZedF9pDevice(const ZedF9pConfig& config, std::uint64_t seed)
       model_(config.model, seed, seed + 1),
       constellation_(seed),
       fix_state_(gnss::FixStateConfig{}),
-      rtk_(config.rtk, seed) {
+      rtk_(config.rtk, seed),
+      raw_obs_(RawConfig(config), 0, 0, 0, seed ^ 0x52415758ULL) {
   std::vector<std::uint8_t> valset{0, 4, 0, 0};  // the saved configuration, into Flash
   for (const auto& [id, value] : config_.flash) {
     for (int k = 0; k < 4; ++k) valset.push_back(static_cast<std::uint8_t>(id >> (8 * k)));
@@ -170,6 +182,8 @@ void ZedF9pDevice::RunNavEpoch(const TruthSample& truth, DeviceOutput& out) {
   if (!moving_base_) FillRelPos();
   ++epoch_count_;
   ++stats_.epochs;
+  if (Enabled(key::kUart1OutUbx) && Due(key::kRxmRawxUart1))
+    ObserveRaw(truth, e.gps, sky.sky_blocked);
   EmitEpoch(t + config_.output_lag, out);
 }
 
@@ -182,7 +196,7 @@ void ZedF9pDevice::ApplyRtk(Time t, double dt_s, gnss::GnssFix& fix) {
   }
   rtk_.config().dgnss_timeout_s = static_cast<double>(db_.Get(key::kNavspgConstrDgnssTo));
   rtk_.config().fixed_allowed = db_.Get(key::kNavhpgDgnssMode) == 3;
-  const RoverRtkEpoch r = rtk_.Step(t, dt_s, valid3d, baseline_m);
+  const RoverRtkEpoch r = rtk_.Step(t, dt_s, valid3d, baseline_m, last_.nav.sats);
   const CarrSoln carr = CarrSolnOf(r.state);
   last_.carr_soln = carr;
   last_.diff_soln = carr != CarrSoln::kNone;
@@ -199,6 +213,7 @@ void ZedF9pDevice::ApplyRtk(Time t, double dt_s, gnss::GnssFix& fix) {
   fix.quality =
       carr == CarrSoln::kFixed ? gnss::FixQuality::kRtkFixed : gnss::FixQuality::kRtkFloat;
   ++(carr == CarrSoln::kFixed ? stats_.epochs_fixed : stats_.epochs_float);
+  stats_.epochs_wrong_fix += r.wrong_fix ? 1 : 0;
 }
 
 void ZedF9pDevice::FillRelPos() {
@@ -239,6 +254,9 @@ void ZedF9pDevice::EmitEpoch(Time t_ready, DeviceOutput& out) {
   using gnss::ubx::Frame;
   namespace ubx = gnss::ubx;
   if (Enabled(key::kUart1OutUbx)) {
+    if (Due(key::kRxmRawxUart1))
+      Push(out, t_ready, Frame(ubx::kRxm, ubx::kRxmRawx, ubx::EncodeRxmRawx(rawx_)),
+           "UBX-RXM-RAWX");
     if (Due(key::kNavPvtUart1))
       Push(out, t_ready, Frame(ubx::kNav, ubx::kNavPvt, ubx::EncodeNavPvt(last_)), "UBX-NAV-PVT");
     if (Due(key::kNavHpposllhUart1))

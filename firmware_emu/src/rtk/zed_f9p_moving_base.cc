@@ -29,7 +29,8 @@ void ZedF9pDevice::ApplyMovingBase(const TruthSample& truth, double dt_s, gnss::
       truth.q_NB * (config_.model.p_BA_B_m - moving_base_->config().p_BA_B_m);
   rtk_.config().dgnss_timeout_s = static_cast<double>(db_.Get(key::kNavspgConstrDgnssTo));
   rtk_.config().fixed_allowed = db_.Get(key::kNavhpgDgnssMode) == 3;
-  const RoverRtkEpoch r = rtk_.Step(t, dt_s, fix.fix_type == gnss::FixType::k3D, d_N.norm());
+  const RoverRtkEpoch r =
+      rtk_.Step(t, dt_s, fix.fix_type == gnss::FixType::k3D, d_N.norm(), last_.nav.sats);
   const CarrSoln carr = CarrSolnOf(r.state);
   // the absolute solution stays standalone
   last_.carr_soln = CarrSoln::kNone;

@@ -47,9 +47,23 @@ inline constexpr ScenarioKey kZedF9p[] = {
     {"float_sigma_start_m", kNumber, "m", "1", 0, 100, "float error per axis at entry (1σ, ours)"},
     {"float_sigma_end_m", kNumber, "m", "0.1", 0, 100, "float error per axis converged (ours)"},
     {"float_convergence_s", kNumber, "s", "20", 0.1, 3600, "float convergence time constant"},
+    {"wrong_fix_probability", kNumber, "", "0", 0, 1,
+     "each fix wrong with this probability (ours: no source gives a rate)"},
+    {"wrong_fix_hold_s", kNumber, "s", "30", 0, 3600,
+     "a wrong fix holds this × U[0.5, 1.5] until a residual test catches it (ours)"},
+    {"wrong_fix_satellites", kInteger, "", "2", 1, 12, "satellites off by whole L1 cycles"},
+    {"wrong_fix_cycles", kInteger, "cycles", "1", 1, 10, "each off by ±1…± this many cycles"},
     {"config", kMapping, "", "the receiver's defaults", 0, 0,
      "configuration saved in Flash before the run (zed_f9p.config)"},
     {"tx_buffer_bytes", kInteger, "B", "4096", 256, 1 << 20, "its UART1's transmit buffer"},
+    {"raw_phase_noise_m", kNumber, "m", "0.003", 0, 0.05,
+     "RXM-RAWX carrier phase noise (1σ; ours: a patch antenna's PLL)"},
+    {"raw_code_multipath_m", kNumber, "m", "0.5", 0, 20,
+     "RXM-RAWX code multipath at the horizon (× cos elevation; ours)"},
+    {"raw_carrier_multipath_m", kNumber, "m", "0.004", 0, 0.05,
+     "RXM-RAWX carrier multipath at the horizon (× cos elevation; ours)"},
+    {"clock_drift_ppb", kNumber, "ppb", "50", -5000, 5000,
+     "receiver clock rate (RXM-RAWX; stepped by 1 ms to stay within ±0.5 ms; ours: a TCXO)"},
 };
 
 // The configuration keys a scenario may save (the emulator's table, ubx_f9_config.cc).
@@ -77,6 +91,8 @@ inline constexpr ScenarioKey kZedF9pConfig[] = {
     {"CFG-MSGOUT-UBX_NAV_HPPOSLLH_UART1", kInteger, "", "0", 0, 255, "NAV-HPPOSLLH every N"},
     {"CFG-MSGOUT-UBX_NAV_RELPOSNED_UART1", kInteger, "", "0", 0, 255, "NAV-RELPOSNED every N"},
     {"CFG-MSGOUT-UBX_RXM_RTCM_UART1", kInteger, "", "0", 0, 1, "RXM-RTCM for each RTCM message"},
+    {"CFG-MSGOUT-UBX_RXM_RAWX_UART1", kInteger, "", "0", 0, 255,
+     "RXM-RAWX (raw observations) every N epochs"},
     {"CFG-MSGOUT-NMEA_ID_RMC_UART1", kInteger, "", "1", 0, 255, "GNRMC every N epochs"},
     {"CFG-MSGOUT-NMEA_ID_VTG_UART1", kInteger, "", "1", 0, 255, "GNVTG every N epochs"},
     {"CFG-MSGOUT-NMEA_ID_GGA_UART1", kInteger, "", "1", 0, 255, "GNGGA every N epochs"},
@@ -123,6 +139,24 @@ void ReadRtk(const KeyedReader<kZedF9p>& r, rtk::RoverRtkConfig& k) {
   k.float_sigma_start_m = r.Number("float_sigma_start_m", k.float_sigma_start_m);
   k.float_sigma_end_m = r.Number("float_sigma_end_m", k.float_sigma_end_m);
   k.float_convergence_s = r.Number("float_convergence_s", k.float_convergence_s);
+  gnss::WrongFixConfig& w = k.wrong_fix;
+  w.probability = r.Number("wrong_fix_probability", w.probability);
+  w.hold_s = r.Number("wrong_fix_hold_s", w.hold_s);
+  w.satellites = static_cast<int>(r.Integer("wrong_fix_satellites", w.satellites));
+  w.cycles = static_cast<int>(r.Integer("wrong_fix_cycles", w.cycles));
+}
+
+// The raw observations' receiver; the atmosphere is the rtk_base's (common to both sites).
+void ReadRaw(const KeyedReader<kZedF9p>& r, const Scenario& s, rtk::ZedF9pConfig& c) {
+  c.raw.phase_noise_m = r.Number("raw_phase_noise_m", c.raw.phase_noise_m);
+  c.raw.code_multipath_m = r.Number("raw_code_multipath_m", c.raw.code_multipath_m);
+  c.raw.carrier_multipath_m = r.Number("raw_carrier_multipath_m", c.raw.carrier_multipath_m);
+  c.clock_drift_ppb = r.Number("clock_drift_ppb", c.clock_drift_ppb);
+  if (!s.rtk_base.enabled) return;
+  const rtk::BaseObservablesConfig& b = s.rtk_base.config.observables;
+  c.raw.zenith_tropo_m = b.zenith_tropo_m;
+  c.raw.vertical_iono_l1_m = b.vertical_iono_l1_m;
+  c.raw.iono_shell_height_m = b.iono_shell_height_m;
 }
 
 void ReadMovingBase(const KeyedReader<kZedF9p>& r, rtk::ZedF9pConfig& c) {
@@ -156,6 +190,7 @@ void ReadZedF9pSpec(const YamlReader& root, Scenario& s) {
   c.model.p_BA_B_m = Eigen::Vector3d(lever[0], lever[1], lever[2]);
   c.output_lag = DurationFromSeconds(r.Number("output_lag_s", ToSeconds(c.output_lag)));
   ReadRtk(r, c.rtk);
+  ReadRaw(r, s, c);
   if (f.corrections == F9pCorrections::kMovingBase) ReadMovingBase(r, c);
   if (auto cfg = r.OptionalChild("config")) ReadConfig(*cfg, c);
   f.tx_buffer_bytes = static_cast<std::size_t>(

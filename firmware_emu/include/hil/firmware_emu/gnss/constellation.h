@@ -71,6 +71,21 @@ struct SatelliteEcef {
   Eigen::Vector3d p_E_m = Eigen::Vector3d::Zero();
 };
 
+/// A GPS satellite's orbit as broadcast ephemeris (IS-GPS-200 §20.3.3.4.3 quantities), for an
+/// RTK engine that needs navigation data (a RINEX navigation file, RTCM 1019). Our orbits are
+/// circular with a fixed node in the rotating frame, so e, ω, Δn, Ω̇, IDOT and the harmonic
+/// corrections are 0 and the satellites have no clock error (a_f0 = a_f1 = a_f2 = 0, T_GD = 0):
+/// the IS-GPS-200 algorithm with these elements gives GpsPositionEcef()'s positions.
+struct GpsEphemeris {
+  int svid = 0;
+  int week = 0;           ///< GPS week of t_oe (full, not modulo 1024)
+  double toe_s = 0;       ///< t_oe, seconds of the week
+  double sqrt_a = 0;      ///< √A (√m)
+  double i0_rad = 0;      ///< inclination at t_oe
+  double omega0_rad = 0;  ///< Ω0: longitude of the ascending node at the week's start
+  double m0_rad = 0;      ///< mean anomaly at t_oe (argument of latitude: e = 0, ω = 0)
+};
+
 class Constellation {
  public:
   explicit Constellation(std::uint64_t seed);
@@ -84,6 +99,10 @@ class Constellation {
   std::size_t gps_count() const { return gps_.size(); }
   /// ECEF position of the GPS satellite of orbit `index` at GPS time `gps_s`.
   SatelliteEcef GpsPositionEcef(std::size_t index, double gps_s) const;
+  /// The broadcast ephemeris of orbit `index` with reference time `toe_gps_s` (s since the GPS
+  /// epoch): valid around it while neither the 4-year orbit clock nor the sidereal day of the
+  /// node wraps (the model's own discontinuities).
+  GpsEphemeris Ephemeris(std::size_t index, double toe_gps_s) const;
 
  private:
   struct Orbit {

@@ -16,12 +16,10 @@
 /// with C/N0 ≥ `fix_min_dbhz` (NLOS satellites carry no fixable carrier); the float error vanishes
 /// at once: the position jumps by it. With fewer such satellites a fixed solution falls back to
 /// float and re-fixes `refix_s` after they return. Each fix is wrong with probability
-/// `wrong_fix_probability`: `wrong_fix_satellites` used satellites get an integer error of
-/// ±1…±`wrong_fix_cycles` L1 cycles each, and the position is off by the least-squares image of
-/// those range errors in the current geometry (decimetres), while the receiver reports a fixed
-/// solution with its centimetre accuracy. It holds for `wrong_fix_hold_s` × a uniform draw in
-/// [0.5, 1.5] (until a residual test would catch it) or until one of those satellites is lost, then
-/// the solution re-fixes through float. Every draw comes from this object's own seeded stream.
+/// `wrong_fix_probability` (WrongFix, wrong_fix.h: `wrong_fix_satellites` used satellites off by
+/// ±1…±`wrong_fix_cycles` L1 cycles), while the receiver reports a fixed solution with its
+/// centimetre accuracy; when it ends the solution re-fixes through float. Every draw comes from
+/// this object's own seeded stream.
 
 #include <cstdint>
 #include <random>
@@ -30,6 +28,7 @@
 #include <Eigen/Core>
 
 #include "hil/firmware_emu/gnss/constellation.h"
+#include "hil/firmware_emu/gnss/wrong_fix.h"
 #include "hil/firmware_emu/sim_time.h"
 
 namespace hil::gnss {
@@ -69,15 +68,15 @@ class RtkSolution {
   int FixableCount(const std::vector<SatelliteView>& sats) const;
   void EnterFloat(Time t, double wait_s);
   void Fix(Time t, const std::vector<SatelliteView>& sats);
-  Eigen::Vector3d WrongOffset(const std::vector<SatelliteView>& sats) const;
+  std::vector<int> FixableSvids(const std::vector<SatelliteView>& sats) const;
   RtkRoughness config_;
   std::mt19937_64 rng_;
   std::normal_distribution<double> normal_{0.0, 1.0};
   std::uniform_real_distribution<double> uniform_{0.0, 1.0};
   RtkState state_ = RtkState::kNone;
-  Time t_float_{}, t_fix_allowed_{}, t_wrong_until_{};
+  Time t_float_{}, t_fix_allowed_{};
   Eigen::Vector3d float_unit_ = Eigen::Vector3d::Zero();
-  std::vector<std::pair<int, double>> wrong_bias_m_;  // svid, range error
+  WrongFix wrong_;
   std::uint64_t wrong_fixes_ = 0, fixes_ = 0;
 };
 

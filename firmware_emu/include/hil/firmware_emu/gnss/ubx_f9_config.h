@@ -42,7 +42,7 @@ inline constexpr std::uint32_t kUart2InUbx = 0x10750001, kUart2InNmea = 0x107500
                                kUart2InRtcm3 = 0x10750004;
 inline constexpr std::uint32_t kNavPvtUart1 = 0x20910007, kNavHpposllhUart1 = 0x20910034,
                                kNavSatUart1 = 0x20910016, kNavRelposnedUart1 = 0x2091008e,
-                               kRxmRtcmUart1 = 0x20910269;
+                               kRxmRtcmUart1 = 0x20910269, kRxmRawxUart1 = 0x209102a5;
 inline constexpr std::uint32_t kNmeaGgaUart1 = 0x209100bb, kNmeaGllUart1 = 0x209100ca,
                                kNmeaGsaUart1 = 0x209100c0, kNmeaGsvUart1 = 0x209100c5,
                                kNmeaRmcUart1 = 0x209100ac, kNmeaVtgUart1 = 0x209100b1;

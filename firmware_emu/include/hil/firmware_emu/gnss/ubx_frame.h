@@ -44,6 +44,9 @@ class Writer {
   Writer& I1(std::int64_t v);
   Writer& I2(std::int64_t v);
   Writer& I4(std::int64_t v);
+  /// IEEE 754 single (R4) and double (R8), little-endian.
+  Writer& R4(float v);
+  Writer& R8(double v);
   /// Fixed-width character field, NUL padded (and truncated to `width`).
   Writer& Chars(std::string_view text, std::size_t width);
   Writer& Zeros(std::size_t n);

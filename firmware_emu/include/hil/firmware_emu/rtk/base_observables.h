@@ -1,8 +1,10 @@
 #pragma once
 /// @file
 /// @system
-/// name: BaseObservables (GNSS observations of a surveyed reference station)
-/// input: GPS time; the constellation (the same satellite positions the rover emulator uses)
+/// name: BaseObservables (GNSS observations of a receiver: the RTK base's MSM and the F9P rover's
+///       RXM-RAWX, one model)
+/// input: GPS time; the constellation (the same satellite positions the rover emulator uses); the
+///        receiver's clock (the rover's; a base's is steered to GPS time)
 /// output: per GPS satellite above the mask, per signal: pseudorange, carrier phase with an
 ///         integer ambiguity held while the satellite stays tracked, range rate, lock time, CNR
 /// rate: on demand (each base epoch)
@@ -13,6 +15,11 @@
 /// Black-Eisner mapping), plus an ionospheric delay (vertical L1 delay × thin-shell mapping ×
 /// (f_L1/f)², on the code; the same advance on the phase), plus white noise. The base clock is
 /// steered to GPS time and the synthetic satellites have no clock error, so neither appears.
+/// A rover (ZED-F9P RXM-RAWX) is the same model evaluated at its antenna, with its own
+/// configuration (signals, noise, multipath) and ambiguities, plus its receiver clock: bias × c
+/// on code and phase, drift × c on the range rate. What the satellites and the atmosphere add is
+/// the same for both receivers (the same geometry, the same zenith delays), so it cancels between
+/// base and rover as in reality, up to the elevation difference of the two sites.
 /// Every number below is ours (no source gives them for this synthetic sky); the reasons are
 /// beside each.
 
@@ -56,6 +63,18 @@ struct BaseObservablesConfig {
   /// Signals: L1 C/A and L2 P(Y) semi-codeless (every GPS satellite broadcasts both; survey bases
   /// report L2 as 2W), 6 dB weaker as semi-codeless tracking is; L2 code noise 0.5 m.
   std::vector<SignalSpec> signals = {{2, 1575.42e6, 0.3, 0.0}, {10, 1227.60e6, 0.5, -6.0}};
+  /// The receiver's multipath: per satellite and signal a slow sinusoid of this amplitude at the
+  /// horizon (× cos elevation) and of period `multipath_period_s` on the code and on the carrier.
+  /// 0 at a base (its site and choke-ring antenna keep multipath out; ours); a rover sets it.
+  double code_multipath_m = 0.0, carrier_multipath_m = 0.0;
+  double multipath_period_s = 600.0;
+};
+
+/// The receiver clock at an epoch and what else limits the observations.
+struct ObserveConditions {
+  double clock_bias_s = 0;   ///< receiver time − GPS time (a steered base: 0)
+  double clock_drift = 0;    ///< its rate (s/s)
+  bool sky_blocked = false;  ///< nothing received: every track is lost
 };
 
 /// One signal's observation.
@@ -67,6 +86,7 @@ struct SignalObservation {
   double range_rate_mps = 0;  ///< phaserange rate (−Doppler × wavelength)
   double lock_time_s = 0;     ///< since this satellite was acquired
   double cnr_dbhz = 0;
+  double code_sigma_m = 0;  ///< 1σ of the pseudorange's noise (its elevation's)
 };
 
 /// One satellite's observations at an epoch.
@@ -88,7 +108,9 @@ class BaseObservables {
   void MoveTo(double lat_deg, double lon_deg, double height_m);
   /// Observations at GPS time `gps_s` (s since the GPS epoch), sorted by PRN. Call with
   /// non-decreasing times: tracking state (ambiguities, lock times) carries over.
-  std::vector<SatelliteObservation> Observe(const gnss::Constellation& sky, double gps_s);
+  std::vector<SatelliteObservation> Observe(const gnss::Constellation& sky, double gps_s,
+                                            const ObserveConditions& cond = {});
+  const BaseObservablesConfig& config() const { return config_; }
 
  private:
   struct Track {
@@ -98,7 +120,9 @@ class BaseObservables {
   double GeometricRange(const gnss::Constellation& sky, std::size_t index, double gps_s,
                         Eigen::Vector3d& sat_E_m) const;
   SatelliteObservation Satellite(const gnss::Constellation& sky, std::size_t index, double gps_s,
-                                 double elev_deg, double azim_deg);
+                                 double elev_deg, double azim_deg, const ObserveConditions& cond);
+  double Multipath(double amplitude_m, int prn, std::size_t signal, double gps_s,
+                   double elev_rad) const;
 
   BaseObservablesConfig config_;
   Eigen::Vector3d antenna_E_m_;

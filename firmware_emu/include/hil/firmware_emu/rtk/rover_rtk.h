@@ -28,14 +28,24 @@
 /// sigma converging from `float_sigma_start_m` to `float_sigma_end_m` with time constant
 /// `float_convergence_s` (1 m, 0.1 m, 20 s: ours). Every draw comes from this object's own seeded
 /// stream, one per axis each epoch whatever the state.
+/// Wrong fixes (issue 44, Build item 2): each fix is wrong with probability
+/// `wrong_fix.probability` (default 0: ours, the data sheet gives no rate), the `rtk` profile's
+/// model (WrongFix: a few satellites off by whole L1 cycles, the position off by their
+/// least-squares image, decimetres) added to the fixed error while the state stays fixed; when it
+/// ends (its hold, or one of its satellites lost) the rover falls back to float and converges to a
+/// new fix `time_to_fix_s` later. Its draws come from a second stream of its own, so the rest is
+/// unchanged by the rate.
 
 #include <cstdint>
 #include <optional>
 #include <random>
+#include <vector>
 
 #include <Eigen/Core>
 
+#include "hil/firmware_emu/gnss/constellation.h"
 #include "hil/firmware_emu/gnss/rtk_solution.h"
+#include "hil/firmware_emu/gnss/wrong_fix.h"
 #include "hil/firmware_emu/sim_time.h"
 
 namespace hil::rtk {
@@ -53,6 +63,7 @@ struct RoverRtkConfig {
   double fixed_cep_m = 0.01, fixed_ppm = 1.0;
   double float_sigma_start_m = 1.0, float_sigma_end_m = 0.1, float_convergence_s = 20.0;
   double error_correlation_s = 60.0;
+  gnss::WrongFixConfig wrong_fix;
 };
 
 struct RoverRtkEpoch {
@@ -60,6 +71,7 @@ struct RoverRtkEpoch {
   double correction_age_s = -1.0;                       ///< < 0: no corrections received yet
   Eigen::Vector3d error_N_m = Eigen::Vector3d::Zero();  ///< ENU (float/fixed only)
   double sigma_h_m = 0, sigma_v_m = 0;                  ///< per-axis 1-sigma (float/fixed only)
+  bool wrong_fix = false;  ///< fixed to wrong integers (error_N_m holds their offset)
 };
 
 class RoverRtk {
@@ -67,13 +79,17 @@ class RoverRtk {
   RoverRtk(const RoverRtkConfig& config, std::uint64_t seed);
   /// A base observation message received at `t` (calls in increasing time).
   void OnCorrection(Time t);
-  /// The epoch at `t`, `dt_s` after the previous; `valid`: standalone 3-D fix.
-  RoverRtkEpoch Step(Time t, double dt_s, bool valid, double baseline_m);
+  /// The epoch at `t`, `dt_s` after the previous; `valid`: standalone 3-D fix; `sats`: the sky
+  /// (its used satellites are the fixable ones of a wrong fix; none: no wrong fix).
+  RoverRtkEpoch Step(Time t, double dt_s, bool valid, double baseline_m,
+                     const std::vector<gnss::SatelliteView>& sats = {});
+  std::uint64_t wrong_fixes() const { return wrong_fixes_; }
   RoverRtkConfig& config() { return config_; }
 
  private:
   double Age(Time t) const;
   void Advance(Time t, bool valid, double baseline_m);
+  void WrongFixEpoch(Time t, bool fixed_now, const std::vector<gnss::SatelliteView>& sats);
   RoverRtkConfig config_;
   std::mt19937_64 rng_;
   std::normal_distribution<double> normal_{0.0, 1.0};
@@ -83,6 +99,10 @@ class RoverRtk {
   Time float_since_{}, converge_since_{};
   bool converging_ = false;
   bool started_ = false;
+  std::mt19937_64 wrong_rng_;
+  std::uniform_real_distribution<double> uniform_{0.0, 1.0};
+  gnss::WrongFix wrong_;
+  std::uint64_t wrong_fixes_ = 0;
 };
 
 }  // namespace hil::rtk

@@ -6,9 +6,10 @@
 ///        VALGET/VALDEL, polls), NMEA and RTCM 3 (an NTRIP client on the host writes it there);
 ///        on UART2 the RTCM 3 stream of a base's correction radio (`radio_base`)
 /// output: on UART1, per epoch after `output_lag`: the enabled UBX messages (NAV-PVT,
-///         NAV-HPPOSLLH, NAV-RELPOSNED, NAV-SAT) then the enabled NMEA 4.10 sentences (GGA, GLL,
-///         GSA, GSV, RMC, VTG); an RXM-RTCM for every RTCM message received (when enabled);
-///         replies to host commands (VALGET answers, ACK-ACK/ACK-NAK, polled messages)
+///         NAV-HPPOSLLH, NAV-RELPOSNED, NAV-SAT; before them RXM-RAWX) then the enabled NMEA 4.10
+///         sentences (GGA, GLL, GSA, GSV, RMC, VTG); an RXM-RTCM for every RTCM message received
+///         (when enabled); replies to host commands (VALGET answers, ACK-ACK/ACK-NAK, polled
+///         messages)
 /// rate: CFG-RATE-MEAS (default 1000 ms)
 /// @endsystem
 ///
@@ -41,6 +42,16 @@
 /// Heading accuracy (ours, geometry): the error across the baseline of horizontal length L,
 /// 1-sigma σ_h per axis, turns it by accHeading = atan(σ_h / L); fixed, σ_h = (CEP 0.01 m +
 /// 1 ppm × L) / 1.1774 (the data sheet's RTK accuracy, RoverRtk): 0.41° at L = 1.2 m.
+///
+/// Raw observations (RXM-RAWX, CFG-MSGOUT-UBX_RXM_RAWX_UART1): the RTK base's observation model
+/// (BaseObservables: the constellation's geometry, the same atmosphere, ambiguities held while a
+/// satellite stays tracked) evaluated at the rover antenna's truth position, with the rover's own
+/// signals (GPS L1 C/A and L2 CL), noise, multipath and receiver clock (`raw`, F9pRawObservables;
+/// `clock_*`). So RTKLIB (or any RTK engine) gets from the base's MSM and this rover's RAWX the
+/// double differences of a real short baseline: what is common cancels. rcvTow is the epoch in the
+/// receiver's clock (GPS time + bias); the clock runs free at `clock_drift_ppb` and is stepped by
+/// 1 ms to stay within ±0.5 ms of GPS time, each step flagged clkReset, as u-blox receivers do.
+/// The RAWX observations are independent of the RTK state (RoverRtk) the NAV messages report.
 
 #include <cstdint>
 #include <deque>
@@ -55,7 +66,9 @@
 #include "hil/firmware_emu/gnss/receiver_model.h"
 #include "hil/firmware_emu/gnss/ubx_f9_config.h"
 #include "hil/firmware_emu/gnss/ubx_f9_messages.h"
+#include "hil/firmware_emu/gnss/ubx_f9_rawx.h"
 #include "hil/firmware_emu/gnss/ubx_frame.h"
+#include "hil/firmware_emu/rtk/base_observables.h"
 #include "hil/firmware_emu/rtk/moving_base.h"
 #include "hil/firmware_emu/rtk/rover_rtk.h"
 #include "hil/firmware_emu/rtk/rtcm3_moving_base.h"
@@ -68,6 +81,16 @@ namespace hil::rtk {
 /// The standalone error grade of a ZED-F9P: horizontal 1.5 m CEP (data sheet, UBX-17051259) →
 /// per-axis sigma 1.27 m; vertical 1.6 × that (ours: the NEO-5M grade's vdop_ref/hdop_ref ratio).
 gnss::ReceiverModelConfig F9pStandaloneModel();
+
+/// The rover's observation model (RXM-RAWX): GPS L1 C/A (MSM id 2 → sigId 0) and L2 CL (MSM id
+/// 16 → sigId 3), every one of our satellites broadcasting L2C (ours: the synthetic sky has no
+/// blocks). Numbers are ours (u-blox gives no noise figures for RAWX): a 5° tracking mask (the
+/// rover reports what it tracks; RTK engines apply their own mask), code noise 0.3 m (L1) and
+/// 0.4 m (L2C) at the zenith, phase noise 3 mm (a patch antenna's PLL, 1 mm above the base's),
+/// code multipath 0.5 m and carrier multipath 4 mm at the horizon (an open field's ground
+/// reflections from a vehicle roof), CNR 35–47 dBHz (a patch antenna, 3 dB under a geodetic one),
+/// L2C 3 dB under L1. The atmosphere is the base's (`ZedF9pDevice` copies it from `radio_base`).
+BaseObservablesConfig F9pRawObservables();
 
 /// The carrSoln of an RTK state (NAV-PVT, NAV-RELPOSNED).
 gnss::ubx::CarrSoln CarrSolnOf(gnss::RtkState s);
@@ -94,6 +117,12 @@ struct ZedF9pConfig {
   std::optional<MovingBaseConfig> moving_base;
   /// relPosHeadingValid when accHeading is at most this (ours: the receiver documents no bound).
   double heading_valid_max_acc_deg = 5.0;
+  /// The observation model of RXM-RAWX (the base's model with the rover's receiver).
+  BaseObservablesConfig raw = F9pRawObservables();
+  /// Receiver clock at power-up (s from GPS time) and its free-running rate (ppb): 0.1 ms and
+  /// 50 ppb, a TCXO after warm-up (ours: the data sheet gives no figure).
+  double clock_offset_s = 1.0e-4;
+  double clock_drift_ppb = 50.0;
 };
 
 /// One RTK state change, for the report's timeline.
@@ -107,6 +136,7 @@ struct RtkTransition {
 struct ZedF9pStatistics {
   std::uint64_t rtcm_frames = 0, rtcm_crc_failed = 0, epochs = 0;
   std::uint64_t epochs_fixed = 0, epochs_float = 0;
+  std::uint64_t epochs_wrong_fix = 0;  ///< fixed to wrong integers (RoverRtk's wrong fixes)
   /// Moving base: epochs with relPosHeadingValid, and their heading error against the truth of
   /// the baseline (relPosHeading − true heading).
   std::uint64_t heading_valid_epochs = 0;
@@ -123,6 +153,8 @@ class ZedF9pDevice final : public Device {
   int baud(int port) const override;
 
   const gnss::ubx::F9Epoch& last_epoch() const { return last_; }
+  /// The RXM-RAWX contents of the last epoch it was due at.
+  const gnss::ubx::RawxEpoch& last_rawx() const { return rawx_; }
   const gnss::GnssFix& last_fix() const { return last_.nav.fix; }
   const gnss::ubx::F9ConfigDb& config_db() const { return db_; }
   const std::vector<RtkTransition>& timeline() const { return timeline_; }
@@ -144,6 +176,8 @@ class ZedF9pDevice final : public Device {
   bool ReferenceKnown(int station_id) const;
   void Receive(Time t, const PendingFrame& p, DeviceOutput& out);
   void ApplyRtk(Time t, double dt_s, gnss::GnssFix& fix);
+  /// The rover's raw observations at `truth` (RXM-RAWX) into `rawx_`.
+  void ObserveRaw(const TruthSample& truth, const gnss::GpsWeekTime& gps, bool sky_blocked);
   void FillRelPos();
   void EmitEpoch(Time t_ready, DeviceOutput& out);
   void EmitNmea(Time t_ready, DeviceOutput& out);
@@ -171,6 +205,9 @@ class ZedF9pDevice final : public Device {
   bool first_epoch_ = true, position_known_ = false;
   std::uint64_t epoch_count_ = 0;
   gnss::ubx::F9Epoch last_;
+  BaseObservables raw_obs_;
+  gnss::ubx::RawxEpoch rawx_;
+  double clock_steps_ = 0;  // the 1 ms steps of the receiver clock so far
   std::vector<RtkTransition> timeline_;
   ZedF9pStatistics stats_;
 };
