@@ -185,7 +185,8 @@ bool ReadFilterKey(const ConfigFile& f, const ConfigEntry& e, NavdConfig& c, int
     c.nav.gnss_max_latency = TruncatedNs(ToDouble(f, e, 0.0, 5.0));
     latency_line = e.line;
   } else if (k == "adaptive" || k == "fade_to_fixes" || k == "stationary_detection" ||
-             k == "imu_lag_estimation" || k == "rtk_fix_check" || k == "imu_noise_check") {
+             k == "imu_lag_estimation" || k == "rtk_fix_check" || k == "imu_noise_check" ||
+             k == "gnss_velocity_noise") {
     if (e.value != "true" && e.value != "false")
       throw ConfigError(f.name(), e.line, FieldName(e), "expected true or false");
     (k == "adaptive"               ? c.nav.robust.adaptive
@@ -193,7 +194,10 @@ bool ReadFilterKey(const ConfigFile& f, const ConfigEntry& e, NavdConfig& c, int
      : k == "stationary_detection" ? c.nav.stationary.enabled
      : k == "rtk_fix_check"        ? c.nav.rtk_fix.enabled
      : k == "imu_noise_check"      ? c.nav.imu_noise.enabled
+     : k == "gnss_velocity_noise"  ? c.nav.gnss_vel_noise.enabled
                                    : c.nav.imu_lag.enabled) = e.value == "true";
+  } else if (k == "accel_scatter_tau_s") {
+    c.nav.accel_scatter_tau_s = ToDouble(f, e, 0.0, 600.0);
   } else if (k == "vibration_tau_s") {
     c.nav.vibration_tau_s = ToDouble(f, e, 0.0, 10.0);
   } else if (k == "zupt_std_mps") {
