@@ -198,6 +198,8 @@ bool ReadFilterKey(const ConfigFile& f, const ConfigEntry& e, NavdConfig& c, int
                                    : c.nav.imu_lag.enabled) = e.value == "true";
   } else if (k == "accel_scatter_tau_s") {
     c.nav.accel_scatter_tau_s = ToDouble(f, e, 0.0, 600.0);
+  } else if (k == "accel_scatter_max_rate_hz") {
+    c.nav.accel_scatter_max_rate_hz = ToDouble(f, e, 0.0, 10000.0);
   } else if (k == "vibration_tau_s") {
     c.nav.vibration_tau_s = ToDouble(f, e, 0.0, 10.0);
   } else if (k == "zupt_std_mps") {

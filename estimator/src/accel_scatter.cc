@@ -5,7 +5,7 @@
 namespace hil::estimator {
 
 void AccelScatter::Add(const Eigen::Vector3d& delta_velocity_B_mps, double dt_s) {
-  if (!enabled() || !(dt_s > 0)) return;
+  if (!enabled() || !(dt_s > 0) || dt_s < min_dt_s_ * 0.999) return;
   const Eigen::Vector3d f = delta_velocity_B_mps / dt_s;
   if (samples_ >= 1) {
     // per axis σ² · dt, from the first difference's 2 σ² of white noise

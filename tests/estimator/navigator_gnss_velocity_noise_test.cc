@@ -129,10 +129,18 @@ TEST(GnssVelocityNoiseTest, EstimatesTheVarianceBeyondThePrediction) {
 }
 
 TEST(GnssVelocityNoiseTest, AGlitchIsClipped) {
-  GnssVelocityNoise noise;
-  for (int i = 0; i < 59; ++i) noise.Add(0.03, -0.03, 0.0, 0.0, 0.1, 1.0);
-  noise.Add(50.0, 50.0, 0.0, 0.0, 0.1, 1.0);  // one wild velocity: at most 3σ of 0.1 m/s
-  EXPECT_LT(noise.std_at_hdop1_mps(), 0.06);
+  GnssVelocityNoise clean, glitched;
+  for (int i = 0; i < 60; ++i) {
+    clean.Add(0.03, -0.03, 0.0, 0.0, 0.1, 1.0);
+    // one wild velocity (50 m/s off) counts as at most 3σ of the configured 0.1 m/s
+    if (i == 30)
+      glitched.Add(50.0, 50.0, 0.0, 0.0, 0.1, 1.0);
+    else
+      glitched.Add(0.03, -0.03, 0.0, 0.0, 0.1, 1.0);
+  }
+  EXPECT_LT(clean.std_at_hdop1_mps(), 0.05);
+  EXPECT_LT(glitched.std_at_hdop1_mps(), 0.1);  // unclipped it would be metres per second
+  EXPECT_GT(glitched.std_at_hdop1_mps(), clean.std_at_hdop1_mps());
 }
 
 TEST(NavigatorGnssVelocityNoiseTest, LearnsAnNmeaVelocityBetterThanConfigured) {

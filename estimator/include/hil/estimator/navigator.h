@@ -170,6 +170,9 @@ struct NavigatorParams {
   /// EKF mode: the accelerometer's white noise is at least what its own sample scatter shows
   /// (AccelScatter, averaged over this long; 0: off).
   double accel_scatter_tau_s = 10.0;
+  /// … for an IMU read out at most this fast (ours: 50 Hz, a Nyquist frequency of 25 Hz, below a
+  /// ground vehicle's engine and ride vibration, which such an IMU can only alias)
+  double accel_scatter_max_rate_hz = 50.0;
   /// EKF mode: the IMU tags' lag behind GNSS time, estimated online (ImuTimeOffset) and taken off
   /// the IMU tags once conclusive (aid_sources/imu_lag_control.cc).
   ImuTimeOffsetParams imu_lag;
