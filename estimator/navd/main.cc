@@ -91,7 +91,7 @@ void PrintUsage() {
       "nmea_velocity_std_mps,\n"
       "                  gnss_float_error_tau_s, gnss_float_error_std_m, "
       "gnss_error_vertical_std_m,\n"
-      "                  gnss_error_vdop_ref,\n"
+      "                  gnss_error_vdop_ref, gnss_velocity_noise (true|false),\n"
       "                  speed_rw, speed_dev_std_mps, speed_dev_tau_s, antenna_0_m … (multi_gnss)\n"
       "                  [output] json, rate_hz, nmea_device, can_interface, can_log,\n"
       "                  can_source_address, can_rate_hz\n"

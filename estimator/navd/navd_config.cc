@@ -186,7 +186,7 @@ bool ReadFilterKey(const ConfigFile& f, const ConfigEntry& e, NavdConfig& c, int
     latency_line = e.line;
   } else if (k == "adaptive" || k == "fade_to_fixes" || k == "stationary_detection" ||
              k == "imu_lag_estimation" || k == "rtk_fix_check" || k == "imu_noise_check" ||
-             k == "imu_usability_check") {
+             k == "imu_usability_check" || k == "gnss_velocity_noise") {
     if (e.value != "true" && e.value != "false")
       throw ConfigError(f.name(), e.line, FieldName(e), "expected true or false");
     (k == "adaptive"               ? c.nav.robust.adaptive
@@ -195,6 +195,7 @@ bool ReadFilterKey(const ConfigFile& f, const ConfigEntry& e, NavdConfig& c, int
      : k == "rtk_fix_check"        ? c.nav.rtk_fix.enabled
      : k == "imu_noise_check"      ? c.nav.imu_noise.enabled
      : k == "imu_usability_check"  ? c.nav.imu_usability.enabled
+     : k == "gnss_velocity_noise"  ? c.nav.gnss_vel_noise.enabled
                                    : c.nav.imu_lag.enabled) = e.value == "true";
   } else if (k == "imu_usability_window_s") {
     c.nav.imu_usability.window_s = ToDouble(f, e, 2.0, 600.0);
@@ -205,6 +206,10 @@ bool ReadFilterKey(const ConfigFile& f, const ConfigEntry& e, NavdConfig& c, int
     c.nav.fallback_vehicle.yaw_rate_rw_radps_rthz = ToDouble(f, e, 1e-6, 10.0);
   } else if (k == "fallback_position_rw") {
     c.nav.fallback_vehicle.position_rw_m_rthz = ToDouble(f, e, 1e-6, 10.0);
+  } else if (k == "accel_scatter_tau_s") {
+    c.nav.accel_scatter_tau_s = ToDouble(f, e, 0.0, 600.0);
+  } else if (k == "accel_scatter_max_rate_hz") {
+    c.nav.accel_scatter_max_rate_hz = ToDouble(f, e, 0.0, 10000.0);
   } else if (k == "vibration_tau_s") {
     c.nav.vibration_tau_s = ToDouble(f, e, 0.0, 10.0);
   } else if (k == "zupt_std_mps") {

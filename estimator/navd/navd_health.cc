@@ -69,6 +69,11 @@ void AppendConsistency(std::string& s, const NavigatorStats& n) {
                   static_cast<unsigned long long>(n.imu_unusable_periods));
     s += b;
   }
+  // present once the fix velocity's σ is learned below the configured one (GnssVelocityNoise)
+  if (n.gnss_vel_std_learned) {
+    std::snprintf(b, sizeof b, ",\"gnss_vel_std_mps\":%.3f", n.gnss_vel_std_mps);
+    s += b;
+  }
   // present once a lag was found and taken off the IMU tags (the line stays short otherwise)
   if (n.imu_tag_lag_s == 0) return;
   std::snprintf(b, sizeof b, ",\"imu_tag_lag_s\":%.4f", n.imu_tag_lag_s);

@@ -73,7 +73,9 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& delta_angle_B_rad,
   PropagateCovariance(C, dt, gm_decay, dev_decay);
   // process noise: isotropic densities are invariant under the rotation C
   P_.block<3, 3>(kVel, kVel).diagonal().array() +=
-      q_scale_ * accel_scale_ * p.accel_noise_mps2_rthz * p.accel_noise_mps2_rthz * dt;
+      std::max(q_scale_ * accel_scale_ * p.accel_noise_mps2_rthz * p.accel_noise_mps2_rthz,
+               accel_noise_floor_m2ps3_) *
+      dt;
   if (!attitude_hold_) {
     // the white angle random walk, plus the scale and misalignment error of the angle turned
     // (isotropic: invariant under C)

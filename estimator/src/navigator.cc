@@ -52,12 +52,15 @@ Navigator::Navigator(const NavigatorParams& params)
                   params.ekf.gyro_noise_radps_rthz),
       vibration_(params.mode == NavMode::kEkf ? params.vibration_tau_s : 0.0,
                  params.vibration_mean_tau_s),
+      accel_scatter_(params.mode == NavMode::kEkf ? params.accel_scatter_tau_s : 0.0,
+                     params.accel_scatter_max_rate_hz),
       step_(params.robust.step),
       imu_lag_(params.imu_lag),
       rtk_check_(params.rtk_fix),
       imu_check_(params.imu_usability, params.ekf.accel_noise_mps2_rthz,
                  params.ekf.accel_bias_rw_mps3_rthz),
-      fallback_(FallbackVehicleParams(params)) {
+      fallback_(FallbackVehicleParams(params)),
+      vel_noise_(params.gnss_vel_noise) {
   imu_lag_.SetLeverArm(params.ekf.lever_arm_B_m.x(), params.ekf.lever_arm_B_m.y());
 }
 
@@ -94,6 +97,7 @@ void Navigator::Push(const ImuSample& tagged) {
     restart_at_next_fix_ = true;
   }
   ++stats_.imu_samples;
+  accel_scatter_.Add(s.delta_velocity_B_mps, s.dt_s);  // the raw samples, before any split
   if (!imu_.Push(s)) ++stats_.imu_overflow;
   newest_imu_t_ = s.t;
   have_imu_ = true;
@@ -210,7 +214,11 @@ void Navigator::ProcessImu(const ImuSample& s) {
   }
   DetectStationary(s);
   ObserveImuUsability(s);
+  if (accel_scatter_.enabled()) ekf_.SetAccelNoiseFloor(accel_scatter_.density2_m2ps3());
   ekf_.Predict(s.delta_angle_B_rad, s.delta_velocity_B_mps, s.dt_s);
+  // the INS's own velocity increment (no aiding) since the last fix velocity (GnssVelocityNoise)
+  ins_dv_N_mps_ += ekf_.state().q_NB * (s.delta_velocity_B_mps - ekf_.accel_bias() * s.dt_s) +
+                   ekf_.earth().g_N_mps2 * s.dt_s;
   if (vibration_.enabled()) {
     vibration_.Add(s.delta_velocity_B_mps, s.dt_s);
     ekf_.SetVibrationVariance(vibration_.variance_B_mps2());
@@ -273,13 +281,6 @@ void Navigator::InitializeAt(GpsTime t, const Lla& body_position, const Eigen::V
   status_ |= kStatusAligned;
   filter_t_ = newest_imu_t_ = last_gnss_fused_t_ = last_nhc_t_ = t;
   have_imu_ = true;
-}
-
-void Navigator::FuseGnssVelocity(const GnssSample& g) {
-  if (!g.has_velocity || !params_.use_gnss_velocity) return;
-  const UpdateResult rv = ekf_.UpdateVelocity(g.vel_enu_mps, g.vel_std_enu_mps);
-  Record(kAidGnssVelocity, rv);
-  stats_.last_nis_vel = rv.nis;
 }
 
 void Navigator::ProcessGnss(const GnssSample& g) {

@@ -30,6 +30,7 @@ GnssSample ToGnssSample(const NmeaMeasurement& m, int leap_s, const NmeaAccuracy
     g.vel_enu_mps = {*m.speed_mps * std::sin(c), *m.speed_mps * std::cos(c), 0.0};
     g.has_velocity = true;
     g.vel_std_enu_mps = {acc.velocity_std_mps, acc.velocity_std_mps, 2.0 * acc.velocity_std_mps};
+    g.vel_std_configured = true;  // RMC and VTG carry no accuracy: the σ is the host's figure
   }
   return g;
 }

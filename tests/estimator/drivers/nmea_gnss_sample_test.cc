@@ -47,6 +47,8 @@ TEST(NmeaGnssSampleTest, MapsTimeAccuracyAndVelocity) {
   EXPECT_DOUBLE_EQ(g.vel_enu_mps.z(), 0.0);
   EXPECT_DOUBLE_EQ(g.vel_std_enu_mps.x(), 0.3);
   EXPECT_DOUBLE_EQ(g.vel_std_enu_mps.z(), 0.6);
+  // AND that σ is marked as the configured figure, not the receiver's (RMC has no accuracy)
+  EXPECT_TRUE(g.vel_std_configured);
 }
 
 TEST(NmeaGnssSampleTest, RtkFixUsesItsOwnSigmaAndNoRmcMeansNoVelocity) {

@@ -73,6 +73,16 @@ TEST(ConfigFileTest, ImuNoiseCheckKey) {
                ConfigError);
 }
 
+// issue 39: the NMEA velocity's σ is learned from its innovations unless
+// [filter] gnss_velocity_noise = false
+TEST(ConfigFileTest, GnssVelocityNoiseKey) {
+  EXPECT_TRUE(
+      NavdConfig::FromFile(ConfigFile::Parse("[filter]\n", "n.conf")).nav.gnss_vel_noise.enabled);
+  EXPECT_FALSE(
+      NavdConfig::FromFile(ConfigFile::Parse("[filter]\ngnss_velocity_noise = false\n", "n.conf"))
+          .nav.gnss_vel_noise.enabled);
+}
+
 // issue 41: the vibration-widened vehicle model is off unless [filter] vibration_tau_s > 0
 TEST(ConfigFileTest, VibrationTauKey) {
   EXPECT_EQ(NavdConfig::FromFile(ConfigFile::Parse("[filter]\n", "n.conf")).nav.vibration_tau_s,

@@ -36,9 +36,11 @@
 
 #include <Eigen/Core>
 
+#include "hil/estimator/accel_scatter.h"
 #include "hil/estimator/error_state_ekf.h"
 #include "hil/estimator/geodesy.h"
 #include "hil/estimator/gnss_step_check.h"
+#include "hil/estimator/gnss_velocity_noise.h"
 #include "hil/estimator/imu_time_offset.h"
 #include "hil/estimator/imu_usability_check.h"
 #include "hil/estimator/innovation_monitor.h"
@@ -153,6 +155,10 @@ struct NavigatorParams {
   Nanoseconds reset_after_rejected{5'000'000'000};  ///< reset to GNSS after rejections this long
   Nanoseconds imu_timeout{1'000'000'000};  ///< IMU modes: fall back to the fixes after this
   bool use_gnss_velocity = true;
+  /// EKF mode: the σ of a fix velocity whose receiver reports none (GnssSample::
+  /// vel_std_configured, NMEA) is learned from its innovations, never above the configured one
+  /// (GnssVelocityNoise, aid_sources/gnss_velocity_control.cc; `[filter] gnss_velocity_noise`).
+  GnssVelocityNoiseParams gnss_vel_noise;
   RobustnessParams robust;
   StationaryParams stationary;
   /// EKF mode: the accelerometer's noise follows the GNSS velocity innovations when they show it
@@ -163,6 +169,12 @@ struct NavigatorParams {
   /// averaged over vibration_mean_tau_s; 0: off.
   double vibration_tau_s = 0.0;
   double vibration_mean_tau_s = 2.0;
+  /// EKF mode: the accelerometer's white noise is at least what its own sample scatter shows
+  /// (AccelScatter, averaged over this long; 0: off).
+  double accel_scatter_tau_s = 10.0;
+  /// … for an IMU read out at most this fast (ours: 50 Hz, a Nyquist frequency of 25 Hz, below a
+  /// ground vehicle's engine and ride vibration, which such an IMU can only alias)
+  double accel_scatter_max_rate_hz = 50.0;
   /// EKF mode: the IMU tags' lag behind GNSS time, estimated online (ImuTimeOffset) and taken off
   /// the IMU tags once conclusive (aid_sources/imu_lag_control.cc).
   ImuTimeOffsetParams imu_lag;
@@ -227,6 +239,9 @@ struct NavigatorStats {
   double imu_consistency_stat = 0;       ///< Λ of the last test, χ²(dof) for a usable IMU
   double imu_consistency_threshold = 0;  ///< the Λ above which the IMU is unusable
   std::uint64_t imu_consistency_tests = 0, imu_unusable_periods = 0;
+  /// the horizontal σ the last fix velocity was fused with (m/s; GnssVelocityNoise), 0: none yet
+  double gnss_vel_std_mps = 0;
+  bool gnss_vel_std_learned = false;  ///< that σ is the learned one, below the configured σ
 };
 
 /// The solution at one time of validity.
@@ -356,6 +371,7 @@ class Navigator {
   InnovationMonitor monitors_[kNumAidSources];
   StationaryDetector stationary_;
   VibrationVelocity vibration_;  // the IMU's vibration velocity (vibration_tau_s)
+  AccelScatter accel_scatter_;   // the accelerometer's noise from its own scatter
   bool stationary_now_ = false;
   GpsTime last_zupt_t_{};
   std::optional<GpsTime> last_fix_seen_t_;  // the newest fix the filter processed
@@ -368,6 +384,13 @@ class Navigator {
   Eigen::Vector3d rtk_offset_std_m_ = Eigen::Vector3d::Zero();
   ImuUsabilityCheck imu_check_;             // is the IMU usable at all?
   VehicleModelFilter fallback_;             // GNSS + vehicle model, the solution when it is not
+  GnssVelocityNoise vel_noise_;  // the fix velocity's σ from its increments
+  // the last fix velocity (GnssVelocityNoise): its time, value and lever-arm term, and the INS's
+  // own velocity increment since
+  std::optional<GpsTime> last_vel_fix_t_;
+  Eigen::Vector3d last_vel_fix_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d last_vel_lever_N_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d ins_dv_N_mps_ = Eigen::Vector3d::Zero();
   std::optional<GpsTime> last_gnss_vel_t_;  // the newest fix with a velocity, and its speed
   double last_gnss_speed_mps_ = 0;
   // GNSS-only and multi-receiver modes: the last fix

@@ -31,6 +31,9 @@ struct GnssSample {
   bool has_velocity = false;  ///< the velocity vector is known (speed and direction)
   Eigen::Vector3d vel_enu_mps = Eigen::Vector3d::Zero();  ///< antenna velocity
   Eigen::Vector3d vel_std_enu_mps{0.2, 0.2, 0.4};
+  /// vel_std_enu_mps is a configured figure (NMEA has no velocity accuracy), not the receiver's own
+  /// estimate: the navigator may learn a smaller one from the innovations (GnssVelocityNoise)
+  bool vel_std_configured = false;
   /// Horizontal speed over ground when the receiver reports it, also when its direction is
   /// unknown (e.g. an RMC with an empty course field): reported, never fused as a velocity.
   std::optional<double> ground_speed_mps;

@@ -1,0 +1,40 @@
+// GNSS velocity aid source of the navigator's EKF: control (the σ a fix velocity is fused with)
+// here, fusion in ErrorStateEkf::UpdateVelocity. See estimator.md, "GNSS velocity noise".
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "hil/estimator/navigator.h"
+
+namespace hil::estimator {
+
+void Navigator::FuseGnssVelocity(const GnssSample& g) {
+  if (!g.has_velocity || !params_.use_gnss_velocity) return;
+  Eigen::Vector3d std_mps = g.vel_std_enu_mps;
+  const bool learn = g.vel_std_configured && params_.gnss_vel_noise.enabled;
+  if (learn) {
+    const double floor_mps = ekf_.params().gnss_vel_std_floor_mps;
+    for (int i = 0; i < 2; ++i)
+      std_mps[i] = vel_noise_.Std(g.vel_std_enu_mps[i], g.hdop, floor_mps);
+    // the fix's velocity increment against the INS's own (unaided) over the same interval: 2 R
+    // and the INS increment's error, which errs on the safe side, whatever the process noise says
+    const Eigen::Vector3d lever_N = ekf_.AntennaVelocity() - ekf_.state().v_N_mps;
+    if (last_vel_fix_t_ && g.t - *last_vel_fix_t_ <= params_.robust.gap_after) {
+      const Eigen::Vector3d d =
+          (g.vel_enu_mps - last_vel_fix_) - (ins_dv_N_mps_ + lever_N - last_vel_lever_N_);
+      vel_noise_.Add(d.x() / std::numbers::sqrt2, d.y() / std::numbers::sqrt2, 0.0, 0.0,
+                     std::max(g.vel_std_enu_mps.x(), g.vel_std_enu_mps.y()), g.hdop);
+    }
+    last_vel_fix_t_ = g.t;
+    last_vel_fix_ = g.vel_enu_mps;
+    last_vel_lever_N_ = lever_N;
+    ins_dv_N_mps_.setZero();
+  }
+  const UpdateResult rv = ekf_.UpdateVelocity(g.vel_enu_mps, std_mps);
+  stats_.gnss_vel_std_mps = std::max(std_mps.x(), std_mps.y());
+  stats_.gnss_vel_std_learned = learn && std_mps.x() < g.vel_std_enu_mps.x();
+  Record(kAidGnssVelocity, rv);
+  stats_.last_nis_vel = rv.nis;
+}
+
+}  // namespace hil::estimator
