@@ -68,7 +68,7 @@ struct TrackingMetrics {
   /// The samples on straight segments (rows, AB lines, edges) and on turns, each together.
   XteStats straight, turns;
   /// The series for the plots: along-path distance and signed XTE of the samples, decimated in
-  /// time (SeriesDecimator, kTrackingPlotBuckets: every sample of a run up to about 11 min).
+  /// time (SeriesDecimator, kTrackingPlotBuckets: every sample of a run up to about 5 min).
   std::vector<double> s_m, xte_m;
 };
 
