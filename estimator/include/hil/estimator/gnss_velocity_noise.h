@@ -30,6 +30,10 @@ struct GnssVelocityNoiseParams {
   /// the configured σ's weight at the start, in updates (ours: the estimate leaves it over about a
   /// minute at 1 Hz, not at once, so a few quiet fixes do not make the filter over-trust them)
   double prior_updates = 10;
+  /// Increments (AddIncrementLag): below this estimated 1 − ρ (ρ the velocity error's correlation
+  /// from one fix to the next) nothing is learned and the configured σ holds (ours: ρ > 0.8, where
+  /// the lag-1 covariance is too small beside its own sampling noise to scale by)
+  double min_one_minus_rho = 0.2;
 };
 
 class GnssVelocityNoise {
@@ -41,6 +45,19 @@ class GnssVelocityNoise {
   /// (H P⁻ Hᵀ diagonal, m²/s²), the configured σ (m/s) and the fix's HDOP (0: not reported).
   void Add(double nu_e_mps, double nu_n_mps, double hph_e_mps2, double hph_n_mps2,
            double configured_std_mps, double hdop);
+  /// Two consecutive velocity increments d_k = v_k − v_k−1 − Δv_INS and d_k−1 (E, N, m/s) of the
+  /// same receiver, for its velocity error's fix-to-fix correlation ρ. Differencing hides a
+  /// correlated error: for a first-order error of variance R, E[d²] = 2R(1 − ρ) and
+  /// E[d_k d_k−1] = −R(1 − ρ)², so 1 − ρ = −2 E[d_k d_k−1] / E[d²]; std_at_hdop1_mps() divides the
+  /// increments' variance by it (white: ρ = 0, factor 1). An INS increment error adds to E[d²]
+  /// only, which raises the estimate (the safe side). A receiver whose velocity is smoothed over
+  /// several fixes (an RTK rover's 10 Hz NMEA) has ρ near 1: without this the increments read it
+  /// several times better than it is.
+  /// `configured_std_mps`: the prior (white errors of that σ) and the clip, as in Add.
+  void AddIncrementLag(double d_e_mps, double d_n_mps, double prev_d_e_mps, double prev_d_n_mps,
+                       double configured_std_mps);
+  /// 1 − ρ estimated from the increments (1 before any, and from the prior: white).
+  double one_minus_rho() const;
   /// The σ to fuse a fix of this HDOP with: the estimate (scaled to the HDOP), never above the
   /// configured σ nor below `floor_mps`; the configured σ until min_updates updates came.
   double Std(double configured_std_mps, double hdop, double floor_mps) const;
@@ -53,6 +70,8 @@ class GnssVelocityNoise {
 
   GnssVelocityNoiseParams params_;
   double sum_ = 0, weight_ = 0;  // forgetting sums of the unit-HDOP variance samples
+  double lag0_ = 0, lag1_ = 0;   // forgetting sums of d² (two fixes' mean) and d_k d_k−1
+  bool lag_started_ = false;
   int updates_ = 0;
 };
 

@@ -382,8 +382,8 @@ class Navigator {
   RtkFixCheck rtk_check_;                   // wrong RTK fixes: a new episode against the INS
   Eigen::Vector3d rtk_offset_N_m_ = Eigen::Vector3d::Zero();  // a suspect episode's offset
   Eigen::Vector3d rtk_offset_std_m_ = Eigen::Vector3d::Zero();
-  ImuUsabilityCheck imu_check_;             // is the IMU usable at all?
-  VehicleModelFilter fallback_;             // GNSS + vehicle model, the solution when it is not
+  ImuUsabilityCheck imu_check_;  // is the IMU usable at all?
+  VehicleModelFilter fallback_;  // GNSS + vehicle model, the solution when it is not
   GnssVelocityNoise vel_noise_;  // the fix velocity's σ from its increments
   // the last fix velocity (GnssVelocityNoise): its time, value and lever-arm term, and the INS's
   // own velocity increment since
@@ -391,7 +391,8 @@ class Navigator {
   Eigen::Vector3d last_vel_fix_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d last_vel_lever_N_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d ins_dv_N_mps_ = Eigen::Vector3d::Zero();
-  std::optional<GpsTime> last_gnss_vel_t_;  // the newest fix with a velocity, and its speed
+  std::optional<Eigen::Vector2d> last_vel_d_;  // the previous increment (its lag-1 correlation)
+  std::optional<GpsTime> last_gnss_vel_t_;     // the newest fix with a velocity, and its speed
   double last_gnss_speed_mps_ = 0;
   // GNSS-only and multi-receiver modes: the last fix
   NavOutput direct_;
