@@ -1,10 +1,14 @@
 #pragma once
 /// @file
-/// The GNSS velocity's noise learned from its innovations, for a receiver that does not report the
-/// accuracy of its velocity (NMEA RMC/VTG: speed and course, no σ; the σ a host configures is a
-/// data-sheet figure). Innovation-based adaptive estimation of the measurement noise (Mohamed and
-/// Schwarz, "Adaptive Kalman filtering for INS/GPS", J. Geodesy 73, 1999, eq. 21: R̂ = Ĉ_ν − H P⁻
-/// Hᵀ, Ĉ_ν the innovations' sample covariance), per horizontal axis, averaged over both axes.
+/// The GNSS velocity's noise learned for a receiver that does not report the accuracy of its
+/// velocity (NMEA RMC/VTG: speed and course, no σ; the σ a host configures is a data-sheet figure).
+/// Add() takes residuals with their predicted variance in the form of innovation-based adaptive
+/// estimation (Mohamed and Schwarz, "Adaptive Kalman filtering for INS/GPS", J. Geodesy 73, 1999,
+/// eq. 21: R̂ = Ĉ_ν − H P⁻ Hᵀ), per horizontal axis, averaged over both axes. The navigator does not
+/// feed it innovations (that estimate fell to the floor whenever P was pessimistic: estimator.md,
+/// "GNSS velocity noise") but each fix velocity's increment against the INS's own, d / √2 with a
+/// predicted variance of 0 (E[d²] = 2R for white errors), and the increments' lag-1 products to
+/// AddIncrementLag, which corrects the estimate for errors correlated from fix to fix.
 ///
 /// Why: the fix's velocity is what carries the vehicle's motion from one fix to the next where a
 /// consumer IMU cannot (a slow vehicle: its tilt random walk times g swamps the accelerations), so
