@@ -1,30 +1,12 @@
 #include "hil/truth/command_schedule.h"
 
-#include <unistd.h>
-
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
-#include <stdexcept>
-#include <string>
 #include <vector>
 
 namespace hil::truth {
-namespace {
-
-[[noreturn]] void Fail(const char* what) {
-  throw std::runtime_error(std::string("truth commands' temporary file: ") + what + ": " +
-                           std::strerror(errno));
-}
-
-}  // namespace
 
 CommandSchedule::CommandSchedule(std::size_t memory_entries)
     : memory_entries_(std::max<std::size_t>(memory_entries, 2)) {}
-
-CommandSchedule::~CommandSchedule() {
-  if (file_) std::fclose(file_);
-}
 
 void CommandSchedule::Add(const Entry& e) {
   memory_.push_back(e);
@@ -33,13 +15,9 @@ void CommandSchedule::Add(const Entry& e) {
 
 // The older half of memory_ goes to the end of the file.
 void CommandSchedule::Spill() {
-  if (!file_ && !(file_ = std::tmpfile())) Fail("create");
   const std::size_t n = memory_.size() / 2;
   const std::vector<Entry> chunk(memory_.begin(), memory_.begin() + static_cast<long>(n));
-  const std::size_t bytes = n * sizeof(Entry);
-  const auto offset = static_cast<off_t>(on_disk_ * sizeof(Entry));
-  if (pwrite(fileno(file_), chunk.data(), bytes, offset) != static_cast<ssize_t>(bytes))
-    Fail("write");
+  file_.Write(on_disk_, chunk.data(), n);
   memory_.erase(memory_.begin(), memory_.begin() + static_cast<long>(n));
   on_disk_ += n;
 }
@@ -48,10 +26,7 @@ CommandSchedule::Entry CommandSchedule::Read(std::size_t i) {
   if (i >= on_disk_) return memory_[i - on_disk_];
   if (i < read_first_ || i >= read_first_ + read_.size()) {
     read_.resize(std::min(kReadChunk, on_disk_ - i));
-    const std::size_t bytes = read_.size() * sizeof(Entry);
-    const auto offset = static_cast<off_t>(i * sizeof(Entry));
-    if (pread(fileno(file_), read_.data(), bytes, offset) != static_cast<ssize_t>(bytes))
-      Fail("read");
+    file_.Read(i, read_.data(), read_.size());
     read_first_ = i;
   }
   return read_[i - read_first_];

@@ -1,4 +1,4 @@
-#include "hil/harness/core/spill_file.h"
+#include "hil/truth/spill_bytes.h"
 
 #include <unistd.h>
 
@@ -8,22 +8,19 @@
 #include <stdexcept>
 #include <string>
 
-namespace hil::harness {
-namespace {
+namespace hil::truth {
 
-[[noreturn]] void Fail(const char* what) {
-  throw std::runtime_error(std::string("scoring's temporary file: ") + what + ": " +
+void SpillBytes::Fail(const char* what) const {
+  throw std::runtime_error(std::string(owner_) + "'s temporary file: " + what + ": " +
                            std::strerror(errno));
 }
-
-}  // namespace
 
 SpillBytes::~SpillBytes() {
   if (fd_ >= 0) ::close(fd_);
 }
 
 SpillBytes::SpillBytes(SpillBytes&& other) noexcept
-    : item_bytes_(other.item_bytes_), fd_(other.fd_) {
+    : item_bytes_(other.item_bytes_), owner_(other.owner_), fd_(other.fd_) {
   other.fd_ = -1;
 }
 
@@ -48,4 +45,4 @@ void SpillBytes::Read(std::size_t first, void* data, std::size_t n) const {
   if (fd_ < 0 || ::pread(fd_, data, bytes, offset) != static_cast<ssize_t>(bytes)) Fail("read");
 }
 
-}  // namespace hil::harness
+}  // namespace hil::truth

@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// Items of a run kept on disk rather than in memory (issue 40: what grows with the run's length
-/// must not stay in memory): an anonymous temporary file (std::tmpfile, removed when closed) that
+/// must not stay in memory): an anonymous temporary file (truth/spill_bytes.h) that
 /// items are appended to, or written to at given places, and read back in order as often as a
 /// scorer needs. At most `memory_items` appended items wait in memory before they go to the file;
 /// a reader holds one chunk. Runs shorter than that never touch the disk.
@@ -12,27 +12,9 @@
 #include <utility>
 #include <vector>
 
+#include "hil/truth/spill_bytes.h"
+
 namespace hil::harness {
-
-/// The untyped file: records of `item_bytes` bytes.
-class SpillBytes {
- public:
-  explicit SpillBytes(std::size_t item_bytes) : item_bytes_(item_bytes) {}
-  ~SpillBytes();
-  SpillBytes(const SpillBytes&) = delete;
-  SpillBytes& operator=(const SpillBytes&) = delete;
-  SpillBytes(SpillBytes&& other) noexcept;
-  SpillBytes& operator=(SpillBytes&&) = delete;
-
-  /// Writes `n` records at record index `first`. @throws std::runtime_error (create, write).
-  void Write(std::size_t first, const void* data, std::size_t n);
-  /// Reads `n` records from record index `first` (all of them written before).
-  void Read(std::size_t first, void* data, std::size_t n) const;
-
- private:
-  std::size_t item_bytes_;
-  int fd_ = -1;
-};
 
 template <class T>
 class SpillFile {
@@ -107,7 +89,7 @@ class SpillFile {
   }
 
   std::size_t memory_items_;
-  SpillBytes file_;
+  truth::SpillBytes file_;
   std::size_t on_disk_ = 0;  // items [0, on_disk_) are in the file
   std::vector<T> tail_;      // items [on_disk_, size())
 };

@@ -4,15 +4,16 @@
 /// bounded whatever the run's length (issue 40: every command of the run was kept, 24 B each at the
 /// command grid's 100 Hz, so 8.6 MB per emulated hour and integrator). A restart from t = 0 (a late
 /// command, a request before the dense output) reads them all again, so none may be forgotten: the
-/// oldest go to an anonymous temporary file (std::tmpfile, removed when closed) once more than
-/// `memory_entries` are held, and are read back from it in order. Runs shorter than that (at 100
+/// oldest go to an anonymous temporary file (spill_bytes.h) once more than `memory_entries` are
+/// held, and are read back from it in order. Runs shorter than that (at 100
 /// Hz, 41 s with the default) never touch the disk.
 
 #include <cstddef>
-#include <cstdio>
 #include <deque>
 #include <optional>
 #include <vector>
+
+#include "hil/truth/spill_bytes.h"
 
 namespace hil::truth {
 
@@ -27,9 +28,6 @@ class CommandSchedule {
   static constexpr std::size_t kMemoryEntries = 4096;
 
   explicit CommandSchedule(std::size_t memory_entries = kMemoryEntries);
-  ~CommandSchedule();
-  CommandSchedule(const CommandSchedule&) = delete;
-  CommandSchedule& operator=(const CommandSchedule&) = delete;
 
   /// Appends a command (`t_s` not before the last one's). @throws std::runtime_error when the
   /// temporary file cannot be made or written.
@@ -53,7 +51,7 @@ class CommandSchedule {
 
   std::size_t memory_entries_;
   std::deque<Entry> memory_;  // entries [on_disk_, size())
-  std::FILE* file_ = nullptr;
+  SpillBytes file_{sizeof(Entry), "truth commands"};
   std::size_t on_disk_ = 0;  // entries [0, on_disk_) are in file_
   std::size_t next_ = 0;     // At's cursor: the first entry not yet passed
   std::optional<Entry> current_;
