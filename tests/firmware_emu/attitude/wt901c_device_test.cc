@@ -11,19 +11,14 @@
 
 #include "hil/firmware_emu/attitude/wit_packet.h"
 
+#include "hex_bytes.h"
 #include "wit_truth.h"
 
 namespace hil::wit {
 namespace {
 
 std::string Hex(const std::string& b) {
-  std::string s;
-  char buf[4];
-  for (unsigned char c : b) {
-    std::snprintf(buf, sizeof buf, "%02X ", c);
-    s += buf;
-  }
-  return s;
+  return hil::test::HexBytes(b, {.upper = true, .sep = " ", .trailing = true});
 }
 
 std::int16_t Field(const std::string& p, int k) {

@@ -23,6 +23,7 @@
 #include "hil/firmware_emu/gnss/ubx_messages.h"
 
 #include "golden_file.h"
+#include "hex_bytes.h"
 
 namespace hil::gnss {
 namespace {
@@ -134,12 +135,7 @@ std::int64_t ReadField(const std::vector<std::uint8_t>& p, const Field& f) {
   return f.size == 1 ? r.I1(off) : f.size == 2 ? r.I2(off) : r.I4(off);
 }
 
-std::string Hex(const std::string& b) {
-  static constexpr char kHex[] = "0123456789abcdef";
-  std::string o;
-  for (unsigned char c : b) o += {kHex[c >> 4], kHex[c & 15]};
-  return o;
-}
+std::string Hex(const std::string& b) { return hil::test::HexBytes(b); }
 
 // "name hex" line and a decoded line for one UBX frame; checks framing on the way.
 std::string DescribeUbx(const std::string& name, const std::string& frame) {

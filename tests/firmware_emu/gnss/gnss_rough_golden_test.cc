@@ -3,7 +3,6 @@
 // GGA lines of the rough RTK through float, a wrong fix and its hold. The file
 // vectors/gnss/neo5m_rough_sky.golden is regenerated here and compared; HIL_REGEN_VECTORS=1
 // rewrites it. The values behind the bytes are checked by neo5m_sky_test and rtk_solution_test.
-#include <cstdio>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -12,6 +11,7 @@
 #include "hil/firmware_emu/gnss/neo5m_device.h"
 
 #include "golden_file.h"
+#include "hex_bytes.h"
 
 namespace hil::gnss {
 namespace {
@@ -44,15 +44,7 @@ std::shared_ptr<const world::SkyObstructions> Sky() {
   return std::make_shared<world::SkyObstructions>(std::vector<world::SkyObstacle>{trees, barn});
 }
 
-std::string Hex(const std::string& bytes) {
-  std::string h;
-  char b[3];
-  for (unsigned char c : bytes) {
-    std::snprintf(b, sizeof b, "%02x", c);
-    h += b;
-  }
-  return h;
-}
+std::string Hex(const std::string& bytes) { return hil::test::HexBytes(bytes); }
 
 std::string Describe(const std::vector<SerialMessage>& msgs) {
   std::string o;

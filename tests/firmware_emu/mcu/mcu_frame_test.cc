@@ -2,23 +2,18 @@
 // vectors/mcu/mcu_frame_protocol.md §7 and the CRC's standard check value.
 #include "hil/firmware_emu/mcu/mcu_frame.h"
 
-#include <cstdio>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "hex_bytes.h"
+
 namespace hil::mcu {
 namespace {
 
 std::string Hex(const std::string& bytes) {
-  std::string out;
-  char buf[4];
-  for (unsigned char b : bytes) {
-    std::snprintf(buf, sizeof buf, "%s%02X", out.empty() ? "" : " ", b);
-    out += buf;
-  }
-  return out;
+  return hil::test::HexBytes(bytes, {.upper = true, .sep = " "});
 }
 
 TEST(McuFrameTest, CrcMatchesTheCcittFalseCheckValue) {

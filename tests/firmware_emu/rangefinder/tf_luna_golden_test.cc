@@ -14,6 +14,7 @@
 
 #include "aisle_truth.h"
 #include "golden_file.h"
+#include "hex_bytes.h"
 
 namespace hil::rangefinder {
 namespace {
@@ -42,13 +43,7 @@ std::vector<test::HostCommand> SessionCommands() {
   };
 }
 
-std::string Hex(const std::string& b) {
-  std::string s;
-  char buf[4];
-  for (const char c : b)
-    std::snprintf(buf, sizeof buf, "%02X", static_cast<unsigned char>(c)), s += buf;
-  return s;
-}
+std::string Hex(const std::string& b) { return hil::test::HexBytes(b, {.upper = true}); }
 
 TEST(TfLunaGolden, SessionBytesAndExpectations) {
   const world::GreenhouseWorld w(test::SmallGreenhouse());

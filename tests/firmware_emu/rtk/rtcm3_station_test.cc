@@ -9,18 +9,12 @@
 #include "hil/firmware_emu/rtk/rtcm3_bits.h"
 #include "hil/firmware_emu/rtk/rtcm3_frame.h"
 
+#include "hex_bytes.h"
+
 namespace hil::rtcm3 {
 namespace {
 
-std::string Hex(const std::string& s) {
-  static const char* d = "0123456789ABCDEF";
-  std::string h;
-  for (const char c : s) {
-    h += d[(static_cast<unsigned char>(c) >> 4) & 15];
-    h += d[static_cast<unsigned char>(c) & 15];
-  }
-  return h;
-}
+std::string Hex(const std::string& s) { return hil::test::HexBytes(s, {.upper = true}); }
 
 StationInfo Example() {
   StationInfo s;

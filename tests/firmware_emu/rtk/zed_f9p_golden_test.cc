@@ -14,6 +14,7 @@
 #include "hil/firmware_emu/gnss/ubx_frame.h"
 
 #include "golden_file.h"
+#include "hex_bytes.h"
 #include "ubx_le_field.h"
 #include "zed_f9p_fixture.h"
 
@@ -23,15 +24,7 @@ namespace {
 namespace key = gnss::ubx::f9key;
 using test::Le;
 
-std::string Hex(const std::string& b) {
-  std::string s;
-  char buf[3];
-  for (const char c : b) {
-    std::snprintf(buf, sizeof buf, "%02x", static_cast<unsigned char>(c));
-    s += buf;
-  }
-  return s;
-}
+std::string Hex(const std::string& b) { return hil::test::HexBytes(b); }
 
 // NAV-PVT's fields as the interface description lays them out.
 std::string PvtFields(std::string_view p) {

@@ -6,7 +6,6 @@
 // and multipath, and those of the codes are metres at most.
 #include <bit>
 #include <cmath>
-#include <cstdio>
 #include <map>
 #include <string>
 
@@ -16,6 +15,7 @@
 #include "hil/firmware_emu/gnss/ubx_frame.h"
 
 #include "golden_file.h"
+#include "hex_bytes.h"
 #include "ubx_le_field.h"
 #include "zed_f9p_fixture.h"
 
@@ -25,15 +25,7 @@ namespace {
 namespace key = gnss::ubx::f9key;
 using test::Le;
 
-std::string Hex(const std::string& b) {
-  std::string s;
-  char buf[3];
-  for (const char c : b) {
-    std::snprintf(buf, sizeof buf, "%02x", static_cast<unsigned char>(c));
-    s += buf;
-  }
-  return s;
-}
+std::string Hex(const std::string& b) { return hil::test::HexBytes(b); }
 
 double R8(std::string_view p, std::size_t off) {
   return std::bit_cast<double>(static_cast<std::uint64_t>(Le(p, off, 8, false)));
