@@ -9,31 +9,26 @@ double GnssVelocityNoise::DopScale(double hdop) {
   return hdop > 0 && std::isfinite(hdop) ? std::clamp(hdop, 0.5, 20.0) : 1.0;
 }
 
-void GnssVelocityNoise::Add(double nu_e_mps, double nu_n_mps, double hph_e_mps2, double hph_n_mps2,
-                            double configured_std_mps, double hdop) {
-  if (!params_.enabled || !std::isfinite(nu_e_mps) || !std::isfinite(nu_n_mps) ||
-      !std::isfinite(hph_e_mps2) || !std::isfinite(hph_n_mps2) || !(configured_std_mps > 0))
+void GnssVelocityNoise::AddIncrement(double d_e_mps, double d_n_mps, double configured_std_mps,
+                                     double hdop) {
+  if (!params_.enabled || !std::isfinite(d_e_mps) || !std::isfinite(d_n_mps) ||
+      !(configured_std_mps > 0))
     return;
-  const double d = DopScale(hdop);
+  const double dop = DopScale(hdop);
   const double r2 = configured_std_mps * configured_std_mps;
   if (weight_ == 0) {
     // the configured σ as the prior, worth prior_updates updates: the estimate leaves it gradually
-    sum_ = params_.prior_updates * r2 / (d * d);
+    sum_ = params_.prior_updates * r2 / (dop * dop);
     weight_ = params_.prior_updates;
   }
   const double keep = 1.0 - 1.0 / std::max(params_.memory_updates, 1.0);
   const double c2 = params_.clip_sigma * params_.clip_sigma;
-  const double nu[2] = {nu_e_mps, nu_n_mps}, hph[2] = {hph_e_mps2, hph_n_mps2};
-  for (int i = 0; i < 2; ++i) {
-    // a prediction less certain than the measurement says little about the measurement (a
-    // settling filter's pessimistic P would read as a receiver better than it is)
-    if (hph[i] > r2) continue;
-    // ν² − H P⁻ Hᵀ, a glitch's innovation clipped at clip_sigma of the configured model; weighed
-    // by the inverse of its variance, 2 (R + H P⁻ Hᵀ)², relative to the configured R's
-    const double sample = std::min(nu[i] * nu[i], c2 * (r2 + hph[i])) - hph[i];
-    const double w = 0.5 * (r2 * r2) / ((r2 + hph[i]) * (r2 + hph[i]));
-    sum_ = keep * sum_ + w * sample / (d * d);
-    weight_ = keep * weight_ + w;
+  for (const double di : {d_e_mps, d_n_mps}) {
+    // d²/2 (E[d²] = 2R for white errors), a glitch's clipped at clip_sigma of the configured model
+    const double sample = std::min(0.5 * di * di, c2 * r2);
+    // each axis half an update's weight (the prior counts in updates)
+    sum_ = keep * sum_ + 0.5 * sample / (dop * dop);
+    weight_ = keep * weight_ + 0.5;
   }
   ++updates_;
 }

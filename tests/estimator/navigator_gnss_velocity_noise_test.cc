@@ -112,15 +112,15 @@ struct Rig {
   int scored = 0;
 };
 
-TEST(GnssVelocityNoiseTest, EstimatesTheVarianceBeyondThePrediction) {
-  // GIVEN innovations of variance 0.03² + 0.02² (measurement + prediction) at HDOP 1.5
+TEST(GnssVelocityNoiseTest, EstimatesTheVelocityVarianceFromItsIncrements) {
+  // GIVEN white velocity errors of 0.03 m/s at HDOP 1 seen at HDOP 1.5: increments of variance 2R
   GnssVelocityNoise noise;
   std::mt19937 rng(7);
   std::normal_distribution<double> n01(0.0, 1.0);
-  const double s = std::sqrt(0.03 * 0.03 * 1.5 * 1.5 + 0.02 * 0.02);
+  const double s = std::sqrt(2.0) * 0.03 * 1.5;
   EXPECT_DOUBLE_EQ(noise.Std(0.1, 1.5, 0.01), 0.1);  // nothing learned yet: the configured σ
-  for (int i = 0; i < 2000; ++i) noise.Add(s * n01(rng), s * n01(rng), 4e-4, 4e-4, 0.1, 1.5);
-  // THEN the estimate at HDOP 1 is the measurement's 0.03, and it scales with the HDOP
+  for (int i = 0; i < 2000; ++i) noise.AddIncrement(s * n01(rng), s * n01(rng), 0.1, 1.5);
+  // THEN the estimate at HDOP 1 is the receiver's 0.03, and it scales with the HDOP
   EXPECT_NEAR(noise.std_at_hdop1_mps(), 0.03, 0.004);
   EXPECT_NEAR(noise.Std(0.1, 2.0, 0.01), 0.06, 0.008);
   // AND it is never above the configured σ nor below the floor
@@ -143,7 +143,7 @@ GnssVelocityNoise LearnFromIncrements(double rho, int fixes) {
       d[i] = next - e[i];
       e[i] = next;
     }
-    noise.Add(d[0] / std::sqrt(2.0), d[1] / std::sqrt(2.0), 0.0, 0.0, 0.1, 1.0);
+    noise.AddIncrement(d[0], d[1], 0.1, 1.0);
     if (k > 0) noise.AddIncrementLag(d[0], d[1], prev_d[0], prev_d[1], 0.1);
     prev_d[0] = d[0];
     prev_d[1] = d[1];
@@ -172,12 +172,12 @@ TEST(GnssVelocityNoiseTest, ACorrelatedVelocityErrorIsNotTakenForASmallOne) {
 TEST(GnssVelocityNoiseTest, AGlitchIsClipped) {
   GnssVelocityNoise clean, glitched;
   for (int i = 0; i < 60; ++i) {
-    clean.Add(0.03, -0.03, 0.0, 0.0, 0.1, 1.0);
+    clean.AddIncrement(0.03, -0.03, 0.1, 1.0);
     // one wild velocity (50 m/s off) counts as at most 3σ of the configured 0.1 m/s
     if (i == 30)
-      glitched.Add(50.0, 50.0, 0.0, 0.0, 0.1, 1.0);
+      glitched.AddIncrement(50.0, 50.0, 0.1, 1.0);
     else
-      glitched.Add(0.03, -0.03, 0.0, 0.0, 0.1, 1.0);
+      glitched.AddIncrement(0.03, -0.03, 0.1, 1.0);
   }
   EXPECT_LT(clean.std_at_hdop1_mps(), 0.05);
   EXPECT_LT(glitched.std_at_hdop1_mps(), 0.1);  // unclipped it would be metres per second

@@ -2,7 +2,6 @@
 // here, fusion in ErrorStateEkf::UpdateVelocity. See estimator.md, "GNSS velocity noise".
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "hil/estimator/navigator.h"
 
@@ -28,8 +27,8 @@ void Navigator::FuseGnssVelocity(const GnssSample& g) {
     if (last_vel_fix_t_ && g.t - *last_vel_fix_t_ <= params_.robust.gap_after) {
       const Eigen::Vector3d d =
           (g.vel_enu_mps - last_vel_fix_) - (ins_dv_N_mps_ + lever_N - last_vel_lever_N_);
-      vel_noise_.Add(d.x() / std::numbers::sqrt2, d.y() / std::numbers::sqrt2, 0.0, 0.0,
-                     std::max(g.vel_std_enu_mps.x(), g.vel_std_enu_mps.y()), g.hdop);
+      vel_noise_.AddIncrement(d.x(), d.y(), std::max(g.vel_std_enu_mps.x(), g.vel_std_enu_mps.y()),
+                              g.hdop);
       if (last_vel_d_)
         vel_noise_.AddIncrementLag(d.x(), d.y(), last_vel_d_->x(), last_vel_d_->y(),
                                    std::max(g.vel_std_enu_mps.x(), g.vel_std_enu_mps.y()));

@@ -2,12 +2,12 @@
 /// @file
 /// The GNSS velocity's noise learned for a receiver that does not report the accuracy of its
 /// velocity (NMEA RMC/VTG: speed and course, no σ; the σ a host configures is a data-sheet figure).
-/// Add() takes residuals with their predicted variance in the form of innovation-based adaptive
-/// estimation (Mohamed and Schwarz, "Adaptive Kalman filtering for INS/GPS", J. Geodesy 73, 1999,
-/// eq. 21: R̂ = Ĉ_ν − H P⁻ Hᵀ), per horizontal axis, averaged over both axes. The navigator does not
-/// feed it innovations (that estimate fell to the floor whenever P was pessimistic: estimator.md,
-/// "GNSS velocity noise") but each fix velocity's increment against the INS's own, d / √2 with a
-/// predicted variance of 0 (E[d²] = 2R for white errors), and the increments' lag-1 products to
+/// AddIncrement() takes each fix velocity's increment against the INS's own over the same
+/// interval, d = v_k − v_k−1 − Δv_INS: for white errors E[d²] = 2R, so d²/2 is a sample of R (the
+/// form of innovation-based adaptive estimation, Mohamed and Schwarz, "Adaptive Kalman filtering
+/// for INS/GPS", J. Geodesy 73, 1999, eq. 21, R̂ = Ĉ_ν − H P⁻ Hᵀ, with no prediction term: the
+/// innovations themselves fell to the floor whenever P was pessimistic, estimator.md "GNSS velocity
+/// noise"), per horizontal axis, averaged over both axes; and the increments' lag-1 products to
 /// AddIncrementLag, which corrects the estimate for errors correlated from fix to fix.
 ///
 /// Why: the fix's velocity is what carries the vehicle's motion from one fix to the next where a
@@ -45,10 +45,9 @@ class GnssVelocityNoise {
   GnssVelocityNoise() = default;
   explicit GnssVelocityNoise(const GnssVelocityNoiseParams& params) : params_(params) {}
 
-  /// One velocity update's horizontal innovations (E, N, m/s), their predicted variances
-  /// (H P⁻ Hᵀ diagonal, m²/s²), the configured σ (m/s) and the fix's HDOP (0: not reported).
-  void Add(double nu_e_mps, double nu_n_mps, double hph_e_mps2, double hph_n_mps2,
-           double configured_std_mps, double hdop);
+  /// One fix velocity's horizontal increment against the INS's (E, N, m/s), the configured σ
+  /// (m/s: the prior and the clip) and the fix's HDOP (0: not reported).
+  void AddIncrement(double d_e_mps, double d_n_mps, double configured_std_mps, double hdop);
   /// Two consecutive velocity increments d_k = v_k − v_k−1 − Δv_INS and d_k−1 (E, N, m/s) of the
   /// same receiver, for its velocity error's fix-to-fix correlation ρ. Differencing hides a
   /// correlated error: for a first-order error of variance R, E[d²] = 2R(1 − ρ) and
