@@ -1,7 +1,9 @@
 // Waits for descriptors that expire in emulated time (README.md): poll, ppoll, select, pselect,
 // epoll_wait and epoll_pwait. A zero timeout is the real call; any other looks at the
 // descriptors without blocking each time hil moves time on or another thread waits, until one is
-// ready or emulated time reaches the timeout. A signal ends the wait with EINTR.
+// ready or emulated time reaches the timeout. A signal ends the wait with EINTR. While hil writes
+// ahead (lockstep_advance.h) a link is readable when bytes have arrived by the emulated time,
+// whatever the pty holds, with a zero timeout too.
 #include <poll.h>
 #include <pthread.h>
 #include <signal.h>
@@ -43,9 +45,25 @@ struct PollArgs {
   pollfd* fds;
   nfds_t n;
 };
+// While hil writes ahead: POLLIN of the links with a feed as their arrived bytes say; returns
+// the descriptors with events again.
+int FeedPollEvents(pollfd* fds, nfds_t n, int ready) {
+  if (ready < 0) return ready;
+  int count = 0;
+  for (nfds_t i = 0; i < n; ++i) {
+    const int k = fds[i].fd < 0 ? -1 : pl::FeedOf(fds[i].fd);
+    if (k >= 0) {
+      const short in = static_cast<short>(fds[i].events & (POLLIN | POLLRDNORM));
+      fds[i].revents = static_cast<short>(fds[i].revents & ~(POLLIN | POLLRDNORM));
+      if (pl::FeedAvailable(k) > 0) fds[i].revents = static_cast<short>(fds[i].revents | in);
+    }
+    count += fds[i].revents != 0 ? 1 : 0;
+  }
+  return count;
+}
 long PollReady(void* a) {
   auto* p = static_cast<PollArgs*>(a);
-  return pl::Real().poll(p->fds, p->n, 0);
+  return FeedPollEvents(p->fds, p->n, pl::Real().poll(p->fds, p->n, 0));
 }
 std::uint64_t PollLinks(void* a) {
   auto* p = static_cast<PollArgs*>(a);
@@ -65,13 +83,38 @@ struct SelectArgs {
   fd_set *r, *w, *e;
   fd_set r0, w0, e0;  // the caller's sets, asked again at every look
 };
+// While hil writes ahead: the read set's links with a feed as their arrived bytes say; returns
+// the count again.
+int FeedSelectReady(SelectArgs* s, int ready) {
+  if (ready < 0 || !s->r) return ready;
+  for (int fd = 0; fd < s->nfds && fd < FD_SETSIZE; ++fd) {
+    if (!FD_ISSET(fd, &s->r0)) continue;
+    const int k = pl::FeedOf(fd);
+    if (k < 0) continue;
+    const bool was = FD_ISSET(fd, s->r);
+    const bool now = pl::FeedAvailable(k) > 0;
+    if (was && !now) {
+      FD_CLR(fd, s->r);
+      --ready;
+    } else if (!was && now) {
+      FD_SET(fd, s->r);
+      ++ready;
+    }
+  }
+  return ready;
+}
 long SelectReady(void* a) {
   auto* s = static_cast<SelectArgs*>(a);
   if (s->r) *s->r = s->r0;
   if (s->w) *s->w = s->w0;
   if (s->e) *s->e = s->e0;
   timeval zero{0, 0};
-  return pl::Real().select(s->nfds, s->r, s->w, s->e, &zero);
+  return FeedSelectReady(s, pl::Real().select(s->nfds, s->r, s->w, s->e, &zero));
+}
+// Whether hil writes ahead (a zero timeout then looks at the feeds too).
+bool Feeding() {
+  const auto* sh = pl::SharedState();
+  return sh && sh->lookahead.load() != 0;
 }
 std::uint64_t SelectLinks(void* a) {
   auto* s = static_cast<SelectArgs*>(a);
@@ -123,6 +166,7 @@ long WaitMasked(long (*ready)(void*), void* arg, std::int64_t deadline, const si
 extern "C" {
 
 int poll(pollfd* fds, nfds_t n, int timeout_ms) {
+  if (timeout_ms == 0 && Feeding()) return FeedPollEvents(fds, n, pl::Real().poll(fds, n, 0));
   if (timeout_ms == 0 || !pl::SharedState()) return pl::Real().poll(fds, n, timeout_ms);
   PollArgs a{fds, n};
   const long r = pl::Wait(PollReady, &a, DeadlineAfterMs(timeout_ms), PollLinks);
@@ -132,6 +176,7 @@ int poll(pollfd* fds, nfds_t n, int timeout_ms) {
 
 int ppoll(pollfd* fds, nfds_t n, const timespec* timeout, const sigset_t* mask) {
   const bool zero = timeout && timeout->tv_sec == 0 && timeout->tv_nsec == 0;
+  if (zero && Feeding()) return FeedPollEvents(fds, n, pl::Real().ppoll(fds, n, timeout, mask));
   if (zero || !pl::SharedState()) return pl::Real().ppoll(fds, n, timeout, mask);
   PollArgs a{fds, n};
   const long r = WaitMasked(PollReady, &a, DeadlineAfter(timeout), mask, PollLinks);
@@ -141,6 +186,10 @@ int ppoll(pollfd* fds, nfds_t n, const timespec* timeout, const sigset_t* mask) 
 
 int select(int nfds, fd_set* r, fd_set* w, fd_set* e, timeval* timeout) {
   const bool zero = timeout && timeout->tv_sec == 0 && timeout->tv_usec == 0;
+  if (zero && Feeding()) {
+    SelectArgs a = MakeSelectArgs(nfds, r, w, e);
+    return static_cast<int>(SelectReady(&a));
+  }
   if (zero || !pl::SharedState()) return pl::Real().select(nfds, r, w, e, timeout);
   SelectArgs a = MakeSelectArgs(nfds, r, w, e);
   const std::int64_t deadline =
@@ -156,6 +205,10 @@ int select(int nfds, fd_set* r, fd_set* w, fd_set* e, timeval* timeout) {
 int pselect(int nfds, fd_set* r, fd_set* w, fd_set* e, const timespec* timeout,
             const sigset_t* mask) {
   const bool zero = timeout && timeout->tv_sec == 0 && timeout->tv_nsec == 0;
+  if (zero && Feeding()) {
+    SelectArgs a = MakeSelectArgs(nfds, r, w, e);
+    return static_cast<int>(SelectReady(&a));
+  }
   if (zero || !pl::SharedState()) return pl::Real().pselect(nfds, r, w, e, timeout, mask);
   SelectArgs a = MakeSelectArgs(nfds, r, w, e);
   const long res = WaitMasked(SelectReady, &a, DeadlineAfter(timeout), mask, SelectLinks);
@@ -165,6 +218,7 @@ int pselect(int nfds, fd_set* r, fd_set* w, fd_set* e, const timespec* timeout,
 }
 
 int epoll_wait(int epfd, epoll_event* events, int max, int timeout_ms) {
+  pl::NoteEpoll();
   if (timeout_ms == 0 || !pl::SharedState())
     return pl::Real().epoll_wait(epfd, events, max, timeout_ms);
   EpollArgs a{epfd, events, max};
@@ -174,6 +228,7 @@ int epoll_wait(int epfd, epoll_event* events, int max, int timeout_ms) {
 }
 
 int epoll_pwait(int epfd, epoll_event* events, int max, int timeout_ms, const sigset_t* mask) {
+  pl::NoteEpoll();
   if (timeout_ms == 0 || !pl::SharedState())
     return pl::Real().epoll_pwait(epfd, events, max, timeout_ms, mask);
   EpollArgs a{epfd, events, max};
