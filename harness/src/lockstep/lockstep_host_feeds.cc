@@ -1,10 +1,11 @@
 // LockstepHost's side of the lookahead (lockstep_advance.h): the feeds hil publishes the chunks
 // it writes ahead in, the horizon, and the wait until the programs have caught up with it.
+#include <unistd.h>
+
 #include <climits>
 
 #include <linux/futex.h>
 #include <sys/syscall.h>
-#include <unistd.h>
 
 #include "hil/harness/lockstep/lockstep_advance.h"
 #include "hil/harness/lockstep/lockstep_host.h"
@@ -13,7 +14,11 @@
 namespace hil::harness::lockstep {
 
 void LockstepHost::SetLookahead(bool on) {
-  if (on) shared_->horizon_ns.store(shared_->now_ns.load());
+  if (on) {
+    // the programs are idle (after a turn), and nothing is published: they wait for hil
+    shared_->horizon_ns.store(shared_->now_ns.load());
+    shared_->stalled.store(1);
+  }
   shared_->lookahead.store(on ? 1 : 0);
 }
 
@@ -21,9 +26,10 @@ bool LockstepHost::EpollSeen() const { return shared_->epoll_seen.load() != 0; }
 
 std::uint64_t LockstepHost::FeedConsumed(int k) const { return shared_->feeds[k].consumed.load(); }
 
-bool LockstepHost::FeedFull(int k) const {
+std::size_t LockstepHost::FeedFree(int k) const {
   const LinkFeed& f = shared_->feeds[k];
-  return f.published.load() - f.arrived_entries.load() >= static_cast<std::uint64_t>(kFeedEntries);
+  const std::uint64_t waiting = f.published.load() - f.arrived_entries.load();
+  return static_cast<std::size_t>(kFeedEntries) - static_cast<std::size_t>(waiting);
 }
 
 void LockstepHost::Publish(int k, std::uint64_t end_byte, Time arrival) {

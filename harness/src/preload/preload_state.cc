@@ -1,8 +1,6 @@
 // The preload library's state: the shared file, the real functions, the threads' slots, the wait.
 #include "preload_state.h"
 
-#include "hil/harness/lockstep/lockstep_advance.h"
-
 #include <dlfcn.h>
 #include <fcntl.h>
 #include <pthread.h>
@@ -18,6 +16,8 @@
 #include <sys/mman.h>
 #include <sys/stat.h>
 #include <sys/syscall.h>
+
+#include "hil/harness/lockstep/lockstep_advance.h"
 
 namespace hil::preload {
 namespace lk = harness::lockstep;

@@ -15,14 +15,14 @@
 /// The moves depend only on the feeds and the threads' waits, so they are the per-message turns'
 /// in every run, whoever makes them.
 
+#include <sched.h>
+#include <unistd.h>
+
 #include <climits>
 #include <cstdint>
 
-#include <sched.h>
-
 #include <linux/futex.h>
 #include <sys/syscall.h>
-#include <unistd.h>
 
 #include "hil/harness/lockstep/lockstep_shared.h"
 

@@ -90,8 +90,8 @@ class LockstepHost {
   bool EpollSeen() const;
   /// Bytes of link `k`'s feed the programs have read.
   std::uint64_t FeedConsumed(int k) const;
-  /// Whether link `k`'s feed has no room for one more chunk not yet arrived.
-  bool FeedFull(int k) const;
+  /// How many more chunks not yet arrived link `k`'s feed has room for.
+  std::size_t FeedFree(int k) const;
   /// Link `k`'s chunk written ahead: its last byte is byte `end_byte` of the feed (counted from
   /// the lookahead's start), and it arrives at `arrival`. After its bytes are written.
   void Publish(int k, std::uint64_t end_byte, Time arrival);
