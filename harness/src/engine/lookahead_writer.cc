@@ -57,6 +57,16 @@ void LookaheadWriter::Publish(Time horizon, bool force) {
   host_.SetHorizon(h);
 }
 
+bool LookaheadWriter::WriteWhatFits(Time horizon) {
+  const std::uint64_t before = writes_;
+  Publish(horizon, false);
+  // nothing fits although the programs have caught up: a link they leave unread (its bytes
+  // drop at the pty, as a UART's that nobody reads)
+  if (writes_ == before) Publish(horizon, true);
+  host_.MoveClock();
+  return writes_ != before;
+}
+
 bool LookaheadWriter::Step(Time t) {
   const Time horizon = t - Duration(1);  // the events at t make chunks that end after it
   const bool stalled = host_.Stalled();
@@ -64,18 +74,20 @@ bool LookaheadWriter::Step(Time t) {
   Publish(horizon, false);
   if (stalled) host_.MoveClock();
   while (MostQueued() >= kHoldBytes) {
-    // the programs have not read what was written: they catch up with the horizon first
+    // hil is far ahead: the programs catch up with the horizon, then read what fits
     if (!host_.WaitStalled(on_wait_)) return false;
-    const std::uint64_t before = writes_;
-    Publish(horizon, true);
-    host_.MoveClock();
-    if (writes_ == before) break;  // every feed full of chunks beyond the horizon: go on
+    if (!WriteWhatFits(horizon)) break;  // every feed full of chunks beyond the horizon
   }
   return true;
 }
 
 bool LookaheadWriter::Finish(Time t) {
-  Publish(t, true);
+  Publish(t, false);
+  host_.MoveClock();
+  while (MostQueued() > 0) {
+    if (!host_.WaitStalled(on_wait_)) return false;
+    if (!WriteWhatFits(t)) break;
+  }
   host_.SetHorizon(t);
   host_.MoveClock();
   return host_.WaitStalled(on_wait_);

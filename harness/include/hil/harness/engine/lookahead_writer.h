@@ -45,8 +45,9 @@ class LookaheadWriter {
   /// (our choice: 2 KB, a few hundred ms of a 115 200 Bd link, one write instead of dozens).
   static constexpr std::size_t kBatchBytes = 2048;
   /// At most this many bytes of a link written and not yet read by the programs (our choice:
-  /// 16 KB, well inside a pty's 64 KB of buffers, so that no write is cut short).
-  static constexpr std::size_t kAheadBytes = 16384;
+  /// 6 KB; a pty holds about 12 KB, the line discipline's 4095 bytes and 8 KB of flip buffers
+  /// that the kernel counts with its allocation overhead, and a write beyond drops bytes).
+  static constexpr std::size_t kAheadBytes = 6144;
   /// hil waits for the programs when a link holds this many bytes it could not write.
   static constexpr std::size_t kHoldBytes = 65536;
 
@@ -57,6 +58,9 @@ class LookaheadWriter {
   void Publish(Time horizon, bool force);
   /// Link `k`'s part of Publish; returns the end of its first chunk left waiting, if any.
   std::optional<Time> PublishLink(std::size_t k, bool force);
+  /// After the programs caught up with the horizon: Publish, and if nothing fitted, Publish
+  /// regardless of room. Whether anything was written.
+  bool WriteWhatFits(Time horizon);
   /// The most bytes a link holds unwritten.
   std::size_t MostQueued() const;
 
