@@ -91,7 +91,15 @@ bool ClockedHostTurns::Drain(DeviceIo& io) {
   for (const auto& ports : io.devices().endpoints) {
     for (const auto& ep : ports) t = std::max(t, ep->last_queued_end());
   }
-  if (lookahead_ && !lookahead_->Finish(t)) return false;
+  if (lookahead_) {
+    if (!lookahead_->Finish(t)) return false;
+  } else {
+    // the chunks left and the programs' deadlines before t: a turn each, as during the run (the
+    // programs read the last bytes at their arrival, as with lookahead)
+    for (std::optional<Time> next = NextTurn(); next && *next < t; next = NextTurn()) {
+      if (!Turn(*next, io)) return false;
+    }
+  }
   return Turn(t, io, true);
 }
 
@@ -103,7 +111,6 @@ void ClockedHostTurns::MaybeLookAhead() {
   std::vector<int> pids;
   for (const auto& p : host_.Processes()) pids.push_back(p.pid);
   if (!LinksHeldReadOnly(pids, links)) return;
-  pacer_.set_lookahead(true);
   host_.SetLookahead(true);
   lookahead_.emplace(host_, links, on_wait_);
 }

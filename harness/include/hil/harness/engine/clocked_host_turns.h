@@ -45,8 +45,9 @@ class ClockedHostTurns final : public HostTurns {
   void AfterEvent(Time t_event, DeviceIo& io, DeviceOutput& out) override {
     (void)t_event, (void)io, (void)out;
   }
-  /// After the run (Engine::Flush wrote what was left): one last turn at the end of the last
-  /// byte written, so the programs read everything. False when the wait was given up.
+  /// After the run: the turns due before the end of the last byte (each chunk written at its
+  /// end, or the lookahead writer's), then one last turn there, so the programs read everything.
+  /// False when the wait was given up.
   bool Drain(DeviceIo& io) override;
   /// Whether hil writes ahead (decided after the first turn).
   bool lookahead() const { return lookahead_.has_value(); }

@@ -32,11 +32,9 @@ class ClockedPacer final : public Pacer {
     (void)ep, (void)bytes, (void)t_ready;
   }
   bool Send(CanEndpoint* can, bool write, std::unique_lock<std::mutex>& lock) override;
-  /// Everything still waiting is written (the run is over: the drain reads it); with lookahead
-  /// the lookahead writer does (ClockedHostTurns::Drain).
+  /// Nothing: the drain's turns write what still waits, each chunk at its end, or the lookahead
+  /// writer does (ClockedHostTurns::Drain).
   bool Flush(DeviceIo& io) override;
-  /// The links' bytes are written ahead by a LookaheadWriter, not at turns.
-  void set_lookahead(bool on) { lookahead_ = on; }
 
   /// The earliest end of a chunk still waiting, if any.
   std::optional<Time> NextChunkEnd() const;
@@ -75,7 +73,6 @@ class ClockedPacer final : public Pacer {
   std::vector<std::uint64_t> settled_;
   static constexpr std::uint64_t kUnsettled = ~std::uint64_t{0};
   bool bus_written_ = false;
-  bool lookahead_ = false;
 };
 
 }  // namespace hil::harness
