@@ -41,17 +41,37 @@ int Answer(long r) {
   return static_cast<int>(r);
 }
 
+// The feeds of up to this many descriptors of one call are looked up once (one fstat each).
+constexpr nfds_t kFeedCache = 16;
+
 struct PollArgs {
   pollfd* fds;
   nfds_t n;
+  int feeds[kFeedCache];  // per descriptor: its feed, or -1 (when `have_feeds`)
+  bool have_feeds;
 };
+
+// The feed of the i-th descriptor: from the call's cache once hil writes ahead (it never stops:
+// a descriptor's feed stays what it was for the rest of the call).
+int FeedOfPolled(PollArgs* p, nfds_t i) {
+  if (p->n > kFeedCache) return p->fds[i].fd < 0 ? -1 : pl::FeedOf(p->fds[i].fd);
+  if (!p->have_feeds) {
+    const auto* sh = pl::SharedState();
+    if (!sh || sh->lookahead.load() == 0) return -1;
+    for (nfds_t j = 0; j < p->n; ++j)
+      p->feeds[j] = p->fds[j].fd < 0 ? -1 : pl::FeedOf(p->fds[j].fd);
+    p->have_feeds = true;
+  }
+  return p->feeds[i];
+}
 // While hil writes ahead: POLLIN of the links with a feed as their arrived bytes say; returns
 // the descriptors with events again.
-int FeedPollEvents(pollfd* fds, nfds_t n, int ready) {
+int FeedPollEvents(PollArgs* p, int ready) {
   if (ready < 0) return ready;
+  pollfd* fds = p->fds;
   int count = 0;
-  for (nfds_t i = 0; i < n; ++i) {
-    const int k = fds[i].fd < 0 ? -1 : pl::FeedOf(fds[i].fd);
+  for (nfds_t i = 0; i < p->n; ++i) {
+    const int k = FeedOfPolled(p, i);
     if (k >= 0) {
       const short in = static_cast<short>(fds[i].events & (POLLIN | POLLRDNORM));
       fds[i].revents = static_cast<short>(fds[i].revents & ~(POLLIN | POLLRDNORM));
@@ -63,14 +83,15 @@ int FeedPollEvents(pollfd* fds, nfds_t n, int ready) {
 }
 long PollReady(void* a) {
   auto* p = static_cast<PollArgs*>(a);
-  return FeedPollEvents(p->fds, p->n, pl::Real().poll(p->fds, p->n, 0));
+  return FeedPollEvents(p, pl::Real().poll(p->fds, p->n, 0));
 }
 std::uint64_t PollLinks(void* a) {
   auto* p = static_cast<PollArgs*>(a);
   std::uint64_t links = 0;
   for (nfds_t i = 0; i < p->n; ++i) {
     if (p->fds[i].fd < 0) continue;
-    const std::uint64_t bit = pl::LinkBitOf(p->fds[i].fd);
+    const int k = FeedOfPolled(p, i);
+    const std::uint64_t bit = k >= 0 ? std::uint64_t{1} << k : pl::LinkBitOf(p->fds[i].fd);
     links |= bit;
     if (bit == kOtherFd && (p->fds[i].events & (POLLOUT | POLLWRNORM | POLLWRBAND)) != 0)
       links |= kEveryGrant;  // room in a pipe hil's threads read
@@ -166,9 +187,9 @@ long WaitMasked(long (*ready)(void*), void* arg, std::int64_t deadline, const si
 extern "C" {
 
 int poll(pollfd* fds, nfds_t n, int timeout_ms) {
-  if (timeout_ms == 0 && Feeding()) return FeedPollEvents(fds, n, pl::Real().poll(fds, n, 0));
+  PollArgs a{fds, n, {}, false};
+  if (timeout_ms == 0 && Feeding()) return FeedPollEvents(&a, pl::Real().poll(fds, n, 0));
   if (timeout_ms == 0 || !pl::SharedState()) return pl::Real().poll(fds, n, timeout_ms);
-  PollArgs a{fds, n};
   const long r = pl::Wait(PollReady, &a, DeadlineAfterMs(timeout_ms), PollLinks);
   if (r == pl::kUnmanaged) return pl::Real().poll(fds, n, timeout_ms);
   return Answer(r);
@@ -176,9 +197,9 @@ int poll(pollfd* fds, nfds_t n, int timeout_ms) {
 
 int ppoll(pollfd* fds, nfds_t n, const timespec* timeout, const sigset_t* mask) {
   const bool zero = timeout && timeout->tv_sec == 0 && timeout->tv_nsec == 0;
-  if (zero && Feeding()) return FeedPollEvents(fds, n, pl::Real().ppoll(fds, n, timeout, mask));
+  PollArgs a{fds, n, {}, false};
+  if (zero && Feeding()) return FeedPollEvents(&a, pl::Real().ppoll(fds, n, timeout, mask));
   if (zero || !pl::SharedState()) return pl::Real().ppoll(fds, n, timeout, mask);
-  PollArgs a{fds, n};
   const long r = WaitMasked(PollReady, &a, DeadlineAfter(timeout), mask, PollLinks);
   if (r == pl::kUnmanaged) return pl::Real().ppoll(fds, n, timeout, mask);
   return Answer(r);

@@ -107,9 +107,9 @@ bool WroteSinceLastWait() {
 
 // Lookahead: the acknowledgement that makes the programs idle moves the clock itself
 // (lockstep_advance.h); hil hears of it only when the next move lies beyond its horizon.
-void MoveClockOrNotifyHil() {
+void MoveClockOrNotifyHil(const lk::ThreadSlot* self) {
   g_shared->host_wake.fetch_add(1);
-  if (lk::MoveClock(*g_shared) != lk::MoveResult::kStalled) return;
+  if (lk::MoveClock(*g_shared, self) != lk::MoveResult::kStalled) return;
   if (g_shared->hil_waiting.load() != 0) Futex(&g_shared->host_wake, FUTEX_WAKE, INT_MAX);
 }
 
@@ -374,7 +374,8 @@ long Wait(long (*ready)(void* arg), void* arg, std::int64_t deadline_ns,
     s->acked.store(c);
     s->looks.fetch_add(1);
     if (g_shared->lookahead.load() != 0) {
-      MoveClockOrNotifyHil();
+      MoveClockOrNotifyHil(s);
+      if (s->seq.load() != c) continue;  // it moved the clock to this thread's own wake-up
     } else {
       NotifyHilIfIdle();
     }

@@ -41,9 +41,10 @@ inline bool AllSlotsIdle(const Shared& sh) {
   return true;
 }
 
-/// Asks slot `s`'s thread to look again.
-inline void GrantSlot(ThreadSlot& s) {
+/// Asks slot `s`'s thread to look again (`self`: the caller's own slot, which needs no wake-up).
+inline void GrantSlot(ThreadSlot& s, const ThreadSlot* self = nullptr) {
   s.seq.fetch_add(1);
+  if (&s == self) return;
   syscall(SYS_futex, reinterpret_cast<std::uint32_t*>(&s.seq), FUTEX_WAKE, INT_MAX, nullptr,
           nullptr, 0);
 }
@@ -108,8 +109,8 @@ inline std::uint64_t MarkArrivals(Shared& sh, std::int64_t t_ns) {
 
 /// Moves the clock while the programs are idle until a move wakes a thread (kGranted), the next
 /// move lies beyond the horizon or there is none (kStalled: `stalled` set), or a thread runs
-/// (kBusy). The caller holds `advancing`.
-inline MoveResult MoveClockLocked(Shared& sh) {
+/// (kBusy). The caller holds `advancing`; `self`: its slot, if it is a thread of the programs.
+inline MoveResult MoveClockLocked(Shared& sh, const ThreadSlot* self) {
   for (;;) {
     if (!AllSlotsIdle(sh)) return MoveResult::kBusy;
     const std::int64_t t = NextMoveNs(sh);
@@ -123,7 +124,7 @@ inline MoveResult MoveClockLocked(Shared& sh) {
     const int used = sh.slots_used.load() < kMaxThreads ? sh.slots_used.load() : kMaxThreads;
     for (int i = 0; i < used; ++i) {
       if (!MoveConcerns(sh.slots[i], t, touched)) continue;
-      GrantSlot(sh.slots[i]);
+      GrantSlot(sh.slots[i], self);
       granted = true;
     }
     if (granted) {
@@ -136,7 +137,7 @@ inline MoveResult MoveClockLocked(Shared& sh) {
 /// Takes the spin lock and moves the clock (MoveClockLocked). While another party holds the lock,
 /// this waits for it as long as the programs stay idle (the holder may have looked before this
 /// thread's acknowledgement); kBusy when they no longer are.
-inline MoveResult MoveClock(Shared& sh) {
+inline MoveResult MoveClock(Shared& sh, const ThreadSlot* self = nullptr) {
   for (;;) {
     std::uint32_t free = 0;
     if (sh.advancing.compare_exchange_strong(free, 1)) break;
@@ -144,7 +145,7 @@ inline MoveResult MoveClock(Shared& sh) {
     sched_yield();  // the holder may be a thread this one's CPU preempted
   }
   sh.stalled.store(0);
-  const MoveResult r = MoveClockLocked(sh);
+  const MoveResult r = MoveClockLocked(sh, self);
   sh.advancing.store(0);
   return r;
 }
