@@ -11,11 +11,20 @@ LookaheadWriter::LookaheadWriter(lockstep::LockstepHost& host, std::vector<Seria
                                  lockstep::LockstepHost::WaitStep on_wait)
     : host_(host), links_(std::move(links)), on_wait_(std::move(on_wait)) {
   written_.assign(links_.size(), 0);
+  queued_.assign(links_.size(), 0);
+  counted_.assign(links_.size(), 0);
 }
 
-std::size_t LookaheadWriter::MostQueued() const {
+std::size_t LookaheadWriter::MostQueued() {
   std::size_t most = 0;
-  for (const SerialEndpoint* ep : links_) most = std::max(most, ep->queued_bytes());
+  for (std::size_t k = 0; k < links_.size(); ++k) {
+    // chunks join a link's queue at its back, and leave it from the front only here (no reply
+    // goes ahead of them: the programs do not write), so the new ones are counted once
+    const SerialEndpoint& ep = *links_[k];
+    for (; counted_[k] < ep.queued_chunks(); ++counted_[k])
+      queued_[k] += ep.chunk_bytes(counted_[k]);
+    most = std::max(most, queued_[k]);
+  }
   return most;
 }
 
@@ -40,6 +49,9 @@ std::optional<Time> LookaheadWriter::PublishLink(std::size_t k, bool force) {
   }
   if (n == 0) return left;
   // the bytes first, then their arrival: a program that sees one can read them
+  MostQueued();  // every chunk counted, before n of them leave
+  queued_[k] -= static_cast<std::size_t>(end - written_[k]);
+  counted_[k] -= n;
   written_[k] += ep.WriteChunksOrDrop(n);
   ++writes_;
   // a write cut short dropped the rest (captured as such): those chunks bring nothing

@@ -61,13 +61,16 @@ class LookaheadWriter {
   /// After the programs caught up with the horizon: Publish, and if nothing fitted, Publish
   /// regardless of room. Whether anything was written.
   bool WriteWhatFits(Time horizon);
-  /// The most bytes a link holds unwritten.
-  std::size_t MostQueued() const;
+  /// The most bytes a link holds unwritten (counted as chunks join: SerialEndpoint::queued_bytes
+  /// walks the whole queue, a quarter of hil's time when the programs lag behind).
+  std::size_t MostQueued();
 
   lockstep::LockstepHost& host_;
   std::vector<SerialEndpoint*> links_;
   lockstep::LockstepHost::WaitStep on_wait_;
   std::vector<std::uint64_t> written_;  ///< per link: bytes written since the lookahead began
+  std::vector<std::size_t> queued_;     ///< per link: bytes of its first counted_ waiting chunks
+  std::vector<std::size_t> counted_;    ///< per link: waiting chunks counted in queued_
   std::vector<std::pair<std::uint64_t, Time>> batch_;  ///< one link's chunks: end byte, arrival
   std::uint64_t writes_ = 0;
 };
