@@ -113,6 +113,20 @@ void MoveClockOrNotifyHil(const lk::ThreadSlot* self) {
   if (g_shared->hil_waiting.load() != 0) Futex(&g_shared->host_wake, FUTEX_WAKE, INT_MAX);
 }
 
+// While hil writes ahead, whether `self` is the only thread on the clock: no other thread's wait
+// can concern what it wrote, and hil reads the links only at the drain's turn (which reads them
+// in any case), so the write count (/proc/self/io, which the kernel formats as text at every
+// read) is not asked. It is asked again, and taken as moved, once another thread joins.
+bool AloneAndAhead(const lk::ThreadSlot* self) {
+  if (g_shared->lookahead.load() == 0) return false;
+  const int used = std::min(g_shared->slots_used.load(), lk::kMaxThreads);
+  for (int i = 0; i < used; ++i) {
+    if (&g_shared->slots[i] != self && g_shared->slots[i].tid.load() != 0) return false;
+  }
+  t_touched = true;
+  return true;
+}
+
 // Tells hil that what it could read from the programs may have changed (lockstep_shared.h).
 void NoteHostWrite() { g_shared->host_writes.fetch_add(1); }
 
@@ -339,7 +353,7 @@ long Wait(long (*ready)(void* arg), void* arg, std::int64_t deadline_ns,
   if (const long r = ready ? ready(arg) : 0; r != 0) return r;
   if (deadline_ns != lk::kNoDeadline && g_shared->now_ns.load() >= deadline_ns) return kDeadline;
   // told to hil before this thread can count as idle
-  const bool wrote = WroteSinceLastWait();
+  const bool wrote = !AloneAndAhead(s) && WroteSinceLastWait();
   if (wrote) NoteHostWrite();
   const std::uint64_t mask = !ready ? 0 : links ? links(arg) : lk::kAnything;
   s->deadline_ns.store(deadline_ns);
