@@ -143,6 +143,59 @@ TEST(LockstepDeterminismE2E, WallClockDriverGivesTheSameBytesAndStampsTheirArriv
   EXPECT_TRUE(read == sent);
 }
 
+// A read-only driver (an open loop): hil writes ahead and the driver's library moves its clock
+// from arrival to arrival (engine/lookahead_writer.h). What it reads, when its clock says it
+// read it, and every byte hil sent are those of one host turn per message (--no-lookahead), in
+// every run, also beside a busy process.
+TEST(LockstepDeterminismE2E, ReadOnlyDriverWithLookaheadSeesWhatATurnPerMessageShows) {
+  TempDir dir("lockstep_lookahead_e2e");
+  const std::string scenario = SourceDir() + "/vectors/scenarios/default_ubx_configure.yaml";
+  const std::string driver =
+      std::string(HIL_UBX_TIMEOUT_DRIVER) + " {ttyGPS} {run_dir}/reads.log --listen";
+  std::map<std::string, std::string> first;
+  const char* runs[] = {"", " --no-lookahead", ""};
+  for (int run = 0; run < 3; ++run) {
+    const std::string out = dir / ("run" + std::to_string(run));
+    const pid_t busy = run == 2 ? StartBusyProcess() : 0;
+    const CommandResult r = RunCommand(
+        BinDir() + "/hil run " + scenario + " --lockstep --no-html --set duration_s=60" +
+        runs[run] + " --estimator '" + driver + "' --out " + out + (busy ? " --nice 0" : ""));
+    if (busy > 0) {
+      kill(busy, SIGKILL);
+      waitpid(busy, nullptr, 0);
+    }
+    ASSERT_LE(r.exit_code, 1) << r.out;
+    const auto report = nlohmann::json::parse(ReadFile(out + "/report.json"));
+    ASSERT_TRUE(report.contains("lockstep")) << r.out;
+    EXPECT_FALSE(report["lockstep"].contains("fallback")) << report["lockstep"].dump();
+    EXPECT_EQ(report["lockstep"]["lookahead"].get<bool>(), run != 1) << "run " << run;
+    for (const char* f : {"captures/ttyGPS.cap", "reads.log"}) {
+      const std::string text = ReadFile(out + "/" + f);
+      if (run == 0) {
+        first[f] = text;
+        EXPECT_FALSE(text.empty()) << f;
+      } else {
+        EXPECT_TRUE(text == first[f]) << "run " << run << ": " << f << " differs from run 0's";
+      }
+    }
+  }
+  // its stamps are the bytes' arrival: what it read up to each stamp had left the UART by then,
+  // all of it (hil wrote the bytes long before)
+  const auto chunks = TxChunks(first["captures/ttyGPS.cap"]);
+  const auto reads = Reads(first["reads.log"]);
+  ASSERT_GT(reads.size(), 100u);
+  std::string sent, read;
+  std::size_t next_chunk = 0;
+  for (std::size_t i = 0; i < reads.size(); ++i) {
+    const auto& [t, bytes] = reads[i];
+    read += bytes;
+    while (next_chunk < chunks.size() && chunks[next_chunk].first <= t)
+      sent += chunks[next_chunk++].second;
+    ASSERT_EQ(read.size(), sent.size()) << "read " << i << " stamped at t = " << t << " ns";
+  }
+  EXPECT_TRUE(read == sent);
+}
+
 // A host that does not load the library (here a shell loop: the shell is not preloaded, and it
 // starts no program) is paced by the /proc probe after 6 s, and report.json says so.
 TEST(LockstepDeterminismE2E, HostWithoutTheLibraryFallsBackToTheProbe) {

@@ -7,7 +7,10 @@
 // clock (libhil_lockstep.so) its dialogue depends on when the machine ran it; with it, on
 // emulated time only.
 //
-//   ubx_timeout_driver DEVICE READS_LOG
+//   ubx_timeout_driver DEVICE READS_LOG [--listen]
+//
+// --listen: the device opened read-only and nothing configured; it only reads and stamps (an
+// open loop hil may write ahead for, hil run --lockstep's lookahead).
 //
 // stdout: one JSON solution line per NAV-POSLLH once NAV-TIMEGPS has given the week (hil's
 // json_stdout). READS_LOG: one line per read, "t_monotonic_ns hex-bytes", and one per command,
@@ -112,8 +115,8 @@ struct Driver {
   }
 };
 
-bool OpenRaw(const char* path, int& fd) {
-  fd = open(path, O_RDWR | O_NOCTTY | O_CLOEXEC);
+bool OpenRaw(const char* path, bool read_only, int& fd) {
+  fd = open(path, (read_only ? O_RDONLY : O_RDWR) | O_NOCTTY | O_CLOEXEC);
   if (fd < 0) return false;
   termios t{};
   if (tcgetattr(fd, &t) != 0) return false;
@@ -127,12 +130,13 @@ bool OpenRaw(const char* path, int& fd) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 3) {
-    std::fprintf(stderr, "usage: ubx_timeout_driver DEVICE READS_LOG\n");
+  const bool listen = argc == 4 && std::string(argv[3]) == "--listen";
+  if (argc != 3 && !listen) {
+    std::fprintf(stderr, "usage: ubx_timeout_driver DEVICE READS_LOG [--listen]\n");
     return 2;
   }
   Driver d;
-  if (!OpenRaw(argv[1], d.fd)) {
+  if (!OpenRaw(argv[1], listen, d.fd)) {
     std::perror(argv[1]);
     return 1;
   }
@@ -146,7 +150,7 @@ int main(int argc, char** argv) {
   want.nmea_off = true;
   const std::vector<UbxCommand> commands = hil::estimator::drivers::UbxSetupCommands(want);
   for (const UbxCommand& c : commands) {
-    if (!d.Configure(c)) return 1;
+    if (!listen && !d.Configure(c)) return 1;
   }
   std::fflush(d.log);
   for (;;) {

@@ -91,7 +91,8 @@ struct RunArgs {
   double speed = 1.0, silence_timeout_s = 0;
   int nice = harness::kDefaultRunNice;
   CLI::Option *seed_opt = nullptr, *est_opt = nullptr, *speed_opt = nullptr, *silence_opt = nullptr;
-  bool no_html = false, short_form = false, free_running = false, lockstep = false;
+  bool no_html = false, short_form = false, free_running = false, lockstep = false,
+       no_lookahead = false;
   std::vector<std::string> sets;
 };
 
@@ -136,6 +137,9 @@ void Declare(CLI::App& app, RunArgs& a) {
                   "virtual mode: the estimator and controller run on the emulated clock through "
                   "libhil_lockstep.so (preloaded; their clocks, sleeps, poll/select/epoll and "
                   "blocking reads follow emulated time), not paced by probing /proc");
+  a.cmd->add_flag("--no-lookahead", a.no_lookahead,
+                  "with --lockstep: a host turn per message even where the programs hold their "
+                  "links read-only (open loop), instead of writing ahead (the same bytes, slower)");
   a.cmd->add_flag("--short", a.short_form,
                   "the scenario's quick form: its `short:` keys replace the top-level ones");
   a.cmd->add_option("--set", a.sets,
@@ -178,6 +182,7 @@ int Execute(const RunArgs& a) {
   opt.html = !a.no_html;
   opt.free_running = a.free_running;
   opt.lockstep = a.lockstep;
+  opt.lockstep_lookahead = !a.no_lookahead;
   opt.nice = a.nice;
   try {
     opt.out_dir =

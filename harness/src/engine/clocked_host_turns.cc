@@ -1,15 +1,20 @@
 #include "hil/harness/engine/clocked_host_turns.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <utility>
 
+#include "hil/harness/engine/host_link_access.h"
 #include "hil/harness/lockstep/lockstep_shared.h"
 
 namespace hil::harness {
 
 ClockedHostTurns::ClockedHostTurns(lockstep::LockstepHost& host, ClockedPacer& pacer,
-                                   lockstep::LockstepHost::WaitStep on_wait)
-    : host_(host), pacer_(pacer), on_wait_(std::move(on_wait)) {}
+                                   lockstep::LockstepHost::WaitStep on_wait, bool lookahead_allowed)
+    : host_(host),
+      pacer_(pacer),
+      on_wait_(std::move(on_wait)),
+      lookahead_allowed_(lookahead_allowed) {}
 
 std::optional<Time> ClockedHostTurns::NextTurn() const {
   std::optional<Time> t = pacer_.NextChunkEnd();
@@ -20,6 +25,7 @@ std::optional<Time> ClockedHostTurns::NextTurn() const {
 }
 
 Time ClockedHostTurns::NextAction() const {
+  if (lookahead_) return Time::max();
   Time t = NextTurn().value_or(Time::max());
   return std::min(t, arrivals_.Next());
 }
@@ -29,7 +35,20 @@ bool ClockedHostTurns::BeforeEvent(Time t_event, Time t_end, EngineMonitor& moni
   const Time limit = std::min(t_event, t_end);
   if (!started_) {
     started_ = true;  // the programs' start-up, at t = 0
-    if (!Turn(Time{}, io, true)) io.Refuse();
+    if (Turn(Time{}, io, true)) {
+      MaybeLookAhead();
+    } else {
+      io.Refuse();
+    }
+    return true;
+  }
+  if (lookahead_) {
+    if (host_.EpollSeen() && !std::exchange(epoll_noted_, true))
+      std::fprintf(stderr,
+                   "hil: --lockstep: a program waited in epoll while hil wrote ahead: what it "
+                   "saw ready there may have depended on the machine (use --no-lookahead)\n");
+    if (lookahead_->Step(limit)) return false;
+    io.Refuse();
     return true;
   }
   if (arrivals_.DeliverBytes(limit, io, out) || arrivals_.DeliverFrame(limit, io, out)) return true;
@@ -72,7 +91,28 @@ bool ClockedHostTurns::Drain(DeviceIo& io) {
   for (const auto& ports : io.devices().endpoints) {
     for (const auto& ep : ports) t = std::max(t, ep->last_queued_end());
   }
+  if (lookahead_) {
+    if (!lookahead_->Finish(t)) return false;
+  } else {
+    // the chunks left and the programs' deadlines before t: a turn each, as during the run (the
+    // programs read the last bytes at their arrival, as with lookahead)
+    for (std::optional<Time> next = NextTurn(); next && *next < t; next = NextTurn()) {
+      if (!Turn(*next, io)) return false;
+    }
+  }
   return Turn(t, io, true);
+}
+
+void ClockedHostTurns::MaybeLookAhead() {
+  const std::vector<SerialEndpoint*>& links = pacer_.endpoints();
+  if (!lookahead_allowed_ || links.empty() ||
+      links.size() > static_cast<std::size_t>(lockstep::kFeedLinks) || host_.EpollSeen())
+    return;
+  std::vector<int> pids;
+  for (const auto& p : host_.Processes()) pids.push_back(p.pid);
+  if (!LinksHeldReadOnly(pids, links)) return;
+  host_.SetLookahead(true);
+  lookahead_.emplace(host_, links, on_wait_);
 }
 
 std::uint64_t ClockedHostTurns::LinkBitOf(const SerialEndpoint* ep) const {

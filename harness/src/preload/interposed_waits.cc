@@ -1,7 +1,9 @@
 // Waits for descriptors that expire in emulated time (README.md): poll, ppoll, select, pselect,
 // epoll_wait and epoll_pwait. A zero timeout is the real call; any other looks at the
 // descriptors without blocking each time hil moves time on or another thread waits, until one is
-// ready or emulated time reaches the timeout. A signal ends the wait with EINTR.
+// ready or emulated time reaches the timeout. A signal ends the wait with EINTR. While hil writes
+// ahead (lockstep_advance.h) a link is readable when bytes have arrived by the emulated time,
+// whatever the pty holds, with a zero timeout too.
 #include <poll.h>
 #include <pthread.h>
 #include <signal.h>
@@ -39,20 +41,57 @@ int Answer(long r) {
   return static_cast<int>(r);
 }
 
+// The feeds of up to this many descriptors of one call are looked up once (one fstat each).
+constexpr nfds_t kFeedCache = 16;
+
 struct PollArgs {
   pollfd* fds;
   nfds_t n;
+  int feeds[kFeedCache];  // per descriptor: its feed, or -1 (when `have_feeds`)
+  bool have_feeds;
 };
+
+// The feed of the i-th descriptor: from the call's cache once hil writes ahead (it never stops:
+// a descriptor's feed stays what it was for the rest of the call).
+int FeedOfPolled(PollArgs* p, nfds_t i) {
+  if (p->n > kFeedCache) return p->fds[i].fd < 0 ? -1 : pl::FeedOf(p->fds[i].fd);
+  if (!p->have_feeds) {
+    const auto* sh = pl::SharedState();
+    if (!sh || sh->lookahead.load() == 0) return -1;
+    for (nfds_t j = 0; j < p->n; ++j)
+      p->feeds[j] = p->fds[j].fd < 0 ? -1 : pl::FeedOf(p->fds[j].fd);
+    p->have_feeds = true;
+  }
+  return p->feeds[i];
+}
+// While hil writes ahead: POLLIN of the links with a feed as their arrived bytes say; returns
+// the descriptors with events again.
+int FeedPollEvents(PollArgs* p, int ready) {
+  if (ready < 0) return ready;
+  pollfd* fds = p->fds;
+  int count = 0;
+  for (nfds_t i = 0; i < p->n; ++i) {
+    const int k = FeedOfPolled(p, i);
+    if (k >= 0) {
+      const short in = static_cast<short>(fds[i].events & (POLLIN | POLLRDNORM));
+      fds[i].revents = static_cast<short>(fds[i].revents & ~(POLLIN | POLLRDNORM));
+      if (pl::FeedAvailable(k) > 0) fds[i].revents = static_cast<short>(fds[i].revents | in);
+    }
+    count += fds[i].revents != 0 ? 1 : 0;
+  }
+  return count;
+}
 long PollReady(void* a) {
   auto* p = static_cast<PollArgs*>(a);
-  return pl::Real().poll(p->fds, p->n, 0);
+  return FeedPollEvents(p, pl::Real().poll(p->fds, p->n, 0));
 }
 std::uint64_t PollLinks(void* a) {
   auto* p = static_cast<PollArgs*>(a);
   std::uint64_t links = 0;
   for (nfds_t i = 0; i < p->n; ++i) {
     if (p->fds[i].fd < 0) continue;
-    const std::uint64_t bit = pl::LinkBitOf(p->fds[i].fd);
+    const int k = FeedOfPolled(p, i);
+    const std::uint64_t bit = k >= 0 ? std::uint64_t{1} << k : pl::LinkBitOf(p->fds[i].fd);
     links |= bit;
     if (bit == kOtherFd && (p->fds[i].events & (POLLOUT | POLLWRNORM | POLLWRBAND)) != 0)
       links |= kEveryGrant;  // room in a pipe hil's threads read
@@ -65,13 +104,38 @@ struct SelectArgs {
   fd_set *r, *w, *e;
   fd_set r0, w0, e0;  // the caller's sets, asked again at every look
 };
+// While hil writes ahead: the read set's links with a feed as their arrived bytes say; returns
+// the count again.
+int FeedSelectReady(SelectArgs* s, int ready) {
+  if (ready < 0 || !s->r) return ready;
+  for (int fd = 0; fd < s->nfds && fd < FD_SETSIZE; ++fd) {
+    if (!FD_ISSET(fd, &s->r0)) continue;
+    const int k = pl::FeedOf(fd);
+    if (k < 0) continue;
+    const bool was = FD_ISSET(fd, s->r);
+    const bool now = pl::FeedAvailable(k) > 0;
+    if (was && !now) {
+      FD_CLR(fd, s->r);
+      --ready;
+    } else if (!was && now) {
+      FD_SET(fd, s->r);
+      ++ready;
+    }
+  }
+  return ready;
+}
 long SelectReady(void* a) {
   auto* s = static_cast<SelectArgs*>(a);
   if (s->r) *s->r = s->r0;
   if (s->w) *s->w = s->w0;
   if (s->e) *s->e = s->e0;
   timeval zero{0, 0};
-  return pl::Real().select(s->nfds, s->r, s->w, s->e, &zero);
+  return FeedSelectReady(s, pl::Real().select(s->nfds, s->r, s->w, s->e, &zero));
+}
+// Whether hil writes ahead (a zero timeout then looks at the feeds too).
+bool Feeding() {
+  const auto* sh = pl::SharedState();
+  return sh && sh->lookahead.load() != 0;
 }
 std::uint64_t SelectLinks(void* a) {
   auto* s = static_cast<SelectArgs*>(a);
@@ -123,8 +187,9 @@ long WaitMasked(long (*ready)(void*), void* arg, std::int64_t deadline, const si
 extern "C" {
 
 int poll(pollfd* fds, nfds_t n, int timeout_ms) {
+  PollArgs a{fds, n, {}, false};
+  if (timeout_ms == 0 && Feeding()) return FeedPollEvents(&a, pl::Real().poll(fds, n, 0));
   if (timeout_ms == 0 || !pl::SharedState()) return pl::Real().poll(fds, n, timeout_ms);
-  PollArgs a{fds, n};
   const long r = pl::Wait(PollReady, &a, DeadlineAfterMs(timeout_ms), PollLinks);
   if (r == pl::kUnmanaged) return pl::Real().poll(fds, n, timeout_ms);
   return Answer(r);
@@ -132,8 +197,9 @@ int poll(pollfd* fds, nfds_t n, int timeout_ms) {
 
 int ppoll(pollfd* fds, nfds_t n, const timespec* timeout, const sigset_t* mask) {
   const bool zero = timeout && timeout->tv_sec == 0 && timeout->tv_nsec == 0;
+  PollArgs a{fds, n, {}, false};
+  if (zero && Feeding()) return FeedPollEvents(&a, pl::Real().ppoll(fds, n, timeout, mask));
   if (zero || !pl::SharedState()) return pl::Real().ppoll(fds, n, timeout, mask);
-  PollArgs a{fds, n};
   const long r = WaitMasked(PollReady, &a, DeadlineAfter(timeout), mask, PollLinks);
   if (r == pl::kUnmanaged) return pl::Real().ppoll(fds, n, timeout, mask);
   return Answer(r);
@@ -141,6 +207,10 @@ int ppoll(pollfd* fds, nfds_t n, const timespec* timeout, const sigset_t* mask) 
 
 int select(int nfds, fd_set* r, fd_set* w, fd_set* e, timeval* timeout) {
   const bool zero = timeout && timeout->tv_sec == 0 && timeout->tv_usec == 0;
+  if (zero && Feeding()) {
+    SelectArgs a = MakeSelectArgs(nfds, r, w, e);
+    return static_cast<int>(SelectReady(&a));
+  }
   if (zero || !pl::SharedState()) return pl::Real().select(nfds, r, w, e, timeout);
   SelectArgs a = MakeSelectArgs(nfds, r, w, e);
   const std::int64_t deadline =
@@ -156,6 +226,10 @@ int select(int nfds, fd_set* r, fd_set* w, fd_set* e, timeval* timeout) {
 int pselect(int nfds, fd_set* r, fd_set* w, fd_set* e, const timespec* timeout,
             const sigset_t* mask) {
   const bool zero = timeout && timeout->tv_sec == 0 && timeout->tv_nsec == 0;
+  if (zero && Feeding()) {
+    SelectArgs a = MakeSelectArgs(nfds, r, w, e);
+    return static_cast<int>(SelectReady(&a));
+  }
   if (zero || !pl::SharedState()) return pl::Real().pselect(nfds, r, w, e, timeout, mask);
   SelectArgs a = MakeSelectArgs(nfds, r, w, e);
   const long res = WaitMasked(SelectReady, &a, DeadlineAfter(timeout), mask, SelectLinks);
@@ -165,6 +239,7 @@ int pselect(int nfds, fd_set* r, fd_set* w, fd_set* e, const timespec* timeout,
 }
 
 int epoll_wait(int epfd, epoll_event* events, int max, int timeout_ms) {
+  pl::NoteEpoll();
   if (timeout_ms == 0 || !pl::SharedState())
     return pl::Real().epoll_wait(epfd, events, max, timeout_ms);
   EpollArgs a{epfd, events, max};
@@ -174,6 +249,7 @@ int epoll_wait(int epfd, epoll_event* events, int max, int timeout_ms) {
 }
 
 int epoll_pwait(int epfd, epoll_event* events, int max, int timeout_ms, const sigset_t* mask) {
+  pl::NoteEpoll();
   if (timeout_ms == 0 || !pl::SharedState())
     return pl::Real().epoll_pwait(epfd, events, max, timeout_ms, mask);
   EpollArgs a{epfd, events, max};

@@ -17,6 +17,8 @@
 #include <sys/stat.h>
 #include <sys/syscall.h>
 
+#include "hil/harness/lockstep/lockstep_advance.h"
+
 namespace hil::preload {
 namespace lk = harness::lockstep;
 namespace {
@@ -57,6 +59,7 @@ void ResolveAll() {
   Resolve(g_real.send, "send");
   Resolve(g_real.sendto, "sendto");
   Resolve(g_real.sendmsg, "sendmsg");
+  Resolve(g_real.ioctl, "ioctl");
   g_resolved = true;
 }
 
@@ -69,25 +72,13 @@ void NotifyHil() {
   if (g_shared->hil_waiting.load() != 0) Futex(&g_shared->host_wake, FUTEX_WAKE, INT_MAX);
 }
 
-// Whether every claimed slot is idle (hil's test, lockstep_host.cc): waiting, and looked at its
-// condition since it was last asked to.
-bool AllIdle() {
-  const int used = std::min(g_shared->slots_used.load(), lk::kMaxThreads);
-  for (int i = 0; i < used; ++i) {
-    const lk::ThreadSlot& s = g_shared->slots[i];
-    if (s.tid.load() != 0 && (s.state.load() != lk::kWaiting || s.acked.load() != s.seq.load()))
-      return false;
-  }
-  return true;
-}
-
 // A thread that has acknowledged wakes hil only when that made the programs idle: hil wants
 // nothing else (each wake it got before cost a context switch both ways, several a turn). Every
 // access is sequentially consistent, so of threads that acknowledge at the same time the last
 // one sees the others' acknowledgements and wakes hil; hil's wait has a timeout besides.
 void NotifyHilIfIdle() {
   g_shared->host_wake.fetch_add(1);
-  if (g_shared->hil_waiting.load() != 0 && AllIdle())
+  if (g_shared->hil_waiting.load() != 0 && lk::AllSlotsIdle(*g_shared))
     Futex(&g_shared->host_wake, FUTEX_WAKE, INT_MAX);
 }
 
@@ -112,6 +103,28 @@ bool WroteSinceLastWait() {
   t_syscw = syscw;
   t_touched = false;
   return wrote;
+}
+
+// Lookahead: the acknowledgement that makes the programs idle moves the clock itself
+// (lockstep_advance.h); hil hears of it only when the next move lies beyond its horizon.
+void MoveClockOrNotifyHil(const lk::ThreadSlot* self) {
+  g_shared->host_wake.fetch_add(1);
+  if (lk::MoveClock(*g_shared, self) != lk::MoveResult::kStalled) return;
+  if (g_shared->hil_waiting.load() != 0) Futex(&g_shared->host_wake, FUTEX_WAKE, INT_MAX);
+}
+
+// While hil writes ahead, whether `self` is the only thread on the clock: no other thread's wait
+// can concern what it wrote, and hil reads the links only at the drain's turn (which reads them
+// in any case), so the write count (/proc/self/io, which the kernel formats as text at every
+// read) is not asked. It is asked again, and taken as moved, once another thread joins.
+bool AloneAndAhead(const lk::ThreadSlot* self) {
+  if (g_shared->lookahead.load() == 0) return false;
+  const int used = std::min(g_shared->slots_used.load(), lk::kMaxThreads);
+  for (int i = 0; i < used; ++i) {
+    if (&g_shared->slots[i] != self && g_shared->slots[i].tid.load() != 0) return false;
+  }
+  t_touched = true;
+  return true;
 }
 
 // Tells hil that what it could read from the programs may have changed (lockstep_shared.h).
@@ -313,6 +326,23 @@ std::uint64_t LinkBitOf(int fd) {
   return lk::kOtherFd;
 }
 
+int FeedOf(int fd) {
+  if (!SharedState() || g_shared->lookahead.load() == 0) return -1;
+  const std::uint64_t bit = LinkBitOf(fd);
+  for (int k = 0; k < lk::kFeedLinks; ++k) {
+    if (bit == std::uint64_t{1} << k) return k;
+  }
+  return -1;
+}
+
+std::uint64_t FeedAvailable(int k) { return lk::FeedAvailable(*g_shared, k); }
+
+void FeedConsumed(int k, std::uint64_t n) { g_shared->feeds[k].consumed.fetch_add(n); }
+
+void NoteEpoll() {
+  if (g_shared && g_shared->epoll_seen.load() == 0) g_shared->epoll_seen.store(1);
+}
+
 long Wait(long (*ready)(void* arg), void* arg, std::int64_t deadline_ns,
           std::uint64_t (*links)(void* arg)) {
   lk::ThreadSlot* s = Slot();
@@ -323,7 +353,7 @@ long Wait(long (*ready)(void* arg), void* arg, std::int64_t deadline_ns,
   if (const long r = ready ? ready(arg) : 0; r != 0) return r;
   if (deadline_ns != lk::kNoDeadline && g_shared->now_ns.load() >= deadline_ns) return kDeadline;
   // told to hil before this thread can count as idle
-  const bool wrote = WroteSinceLastWait();
+  const bool wrote = !AloneAndAhead(s) && WroteSinceLastWait();
   if (wrote) NoteHostWrite();
   const std::uint64_t mask = !ready ? 0 : links ? links(arg) : lk::kAnything;
   s->deadline_ns.store(deadline_ns);
@@ -357,7 +387,12 @@ long Wait(long (*ready)(void* arg), void* arg, std::int64_t deadline_ns,
     }
     s->acked.store(c);
     s->looks.fetch_add(1);
-    NotifyHilIfIdle();
+    if (g_shared->lookahead.load() != 0) {
+      MoveClockOrNotifyHil(s);
+      if (s->seq.load() != c) continue;  // it moved the clock to this thread's own wake-up
+    } else {
+      NotifyHilIfIdle();
+    }
     if (Futex(&s->seq, FUTEX_WAIT, c) != 0 && errno == EINTR) {
       s->state.store(lk::kRunning);
       return kInterrupted;

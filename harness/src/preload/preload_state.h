@@ -37,6 +37,7 @@ struct RealFunctions {
   ssize_t (*send)(int, const void*, size_t, int);
   ssize_t (*sendto)(int, const void*, size_t, int, const sockaddr*, socklen_t);
   ssize_t (*sendmsg)(int, const msghdr*, int);
+  int (*ioctl)(int, unsigned long, ...);
 };
 
 /// The real functions (resolved at load; a call before that resolves them first).
@@ -75,6 +76,17 @@ void ForgetDescriptor(int fd);
 /// The bit of descriptor `fd` in a slot's `links` mask (lockstep_shared.h): its link's, or
 /// kOtherFd for anything that is not one of hil's links (one fstat).
 std::uint64_t LinkBitOf(int fd);
+
+/// Lookahead (hil writes ahead, lockstep_advance.h): the feed of `fd`'s link, or -1 when hil
+/// does not write ahead or `fd` is not a link with a feed (one fstat).
+int FeedOf(int fd);
+/// Bytes of feed `k` that have arrived by now and the programs have not read.
+std::uint64_t FeedAvailable(int k);
+/// The programs read `n` bytes of feed `k`.
+void FeedConsumed(int k, std::uint64_t n);
+/// A thread waits in epoll: hil stops writing ahead at its next look (the library cannot tell
+/// which descriptors an epoll set holds).
+void NoteEpoll();
 
 /// Waits in emulated time until `ready(arg)` (a non-blocking look at descriptors: > 0 met, −1
 /// failed with errno, 0 not yet; null: a sleep, never met) or until emulated time reaches

@@ -400,6 +400,7 @@ void WriteReportJson(const RunReport& r, const std::string& path) {
       procs.push_back({{"pid", p.pid}, {"name", p.name}, {"clock", p.clock}});
     j["lockstep"] = {{"processes", procs},
                      {"turns", r.lockstep->turns},
+                     {"lookahead", r.lockstep->lookahead},
                      {"thread_waits", r.lockstep->thread_waits},
                      {"wait_s", r.lockstep->wait_s}};
     if (!r.lockstep->fallback.empty()) j["lockstep"]["fallback"] = r.lockstep->fallback;

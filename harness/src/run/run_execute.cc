@@ -67,10 +67,17 @@ std::unique_ptr<HostTurns> MakeClockedTurns(RunContext& ctx, RunWatchdog& watchd
   ctx.pacer = std::move(pacer);
   if (ctx.scenario.closed_loop.enabled && ctx.set.can && ctx.set.steering)
     ctx.set.can->set_stamp_at_turns(true);
-  return std::make_unique<ClockedHostTurns>(*ctx.shared_clock, clocked,
-                                            [&watchdog](std::size_t busy, bool new_wait) {
-                                              return watchdog.OnLockstepWait(busy, new_wait);
-                                            });
+  // lookahead: nothing a program does may reach a device (lookahead_writer.h)
+  const bool lookahead =
+      ctx.options.lockstep_lookahead && !ctx.scenario.closed_loop.enabled && !ctx.set.can;
+  auto turns = std::make_unique<ClockedHostTurns>(
+      *ctx.shared_clock, clocked,
+      [&watchdog](std::size_t busy, bool new_wait) {
+        return watchdog.OnLockstepWait(busy, new_wait);
+      },
+      lookahead);
+  ctx.clocked_turns = turns.get();
+  return turns;
 }
 
 // Virtual mode (or lockstep) with an estimator: host turns, and a gate through which the host
@@ -268,6 +275,7 @@ void NoteLockstep(RunContext& ctx) {
   }
   const lockstep::LockstepHost::Stats s = ctx.shared_clock->stats();
   r.turns = s.grants;
+  r.lookahead = ctx.clocked_turns && ctx.clocked_turns->lookahead();
   r.thread_waits = s.thread_waits;
   r.wait_s = ToSeconds(s.wait);
 }

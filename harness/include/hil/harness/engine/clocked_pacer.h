@@ -32,7 +32,8 @@ class ClockedPacer final : public Pacer {
     (void)ep, (void)bytes, (void)t_ready;
   }
   bool Send(CanEndpoint* can, bool write, std::unique_lock<std::mutex>& lock) override;
-  /// Everything still waiting is written (the run is over: the drain reads it).
+  /// Nothing: the drain's turns write what still waits, each chunk at its end, or the lookahead
+  /// writer does (ClockedHostTurns::Drain).
   bool Flush(DeviceIo& io) override;
 
   /// The earliest end of a chunk still waiting, if any.

@@ -79,6 +79,13 @@ class SerialEndpoint {
   std::size_t WriteChunksOrDrop(std::size_t chunks);
   /// Bytes waiting to be written.
   std::size_t queued_bytes() const;
+  /// Lockstep lookahead (engine/lookahead_writer.h): the waiting chunks, the emulated time the
+  /// `i`-th one's last byte leaves the UART, and its bytes still to write.
+  std::size_t queued_chunks() const { return pending_.size(); }
+  Time chunk_end(std::size_t i) const { return pending_[i].first.t_end(); }
+  std::size_t chunk_bytes(std::size_t i) const {
+    return pending_[i].first.bytes.size() - (i == 0 ? pending_offset_ : 0);
+  }
   /// Writes out the capture's buffer (a failed write is noted, ReportWriteFailuresTo).
   void FlushCapture() { capture_.Flush(); }
   /// Where the capture notes a failed write (CaptureWriter::ReportFailuresTo).

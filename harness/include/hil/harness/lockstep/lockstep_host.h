@@ -81,6 +81,29 @@ class LockstepHost {
   /// load the library, the programs it starts do; an LD_PRELOAD of the caller's is kept after it;
   /// ASAN_OPTIONS gains verify_asan_link_order=0 so that sanitizer builds start with it).
   std::string ShellExports(const std::string& library) const;
+  /// Lookahead (lockstep_advance.h): hil writes the links' chunks ahead, each published in its
+  /// link's feed (the first lockstep::kFeedLinks links), and the programs move their clock
+  /// themselves up to the horizon. On only while they are idle (after a turn).
+  void SetLookahead(bool on);
+  /// Whether a thread of the programs has waited in epoll (the library cannot follow the feeds
+  /// there).
+  bool EpollSeen() const;
+  /// Bytes of link `k`'s feed the programs have read.
+  std::uint64_t FeedConsumed(int k) const;
+  /// How many more chunks not yet arrived link `k`'s feed has room for.
+  std::size_t FeedFree(int k) const;
+  /// Link `k`'s chunk written ahead: its last byte is byte `end_byte` of the feed (counted from
+  /// the lookahead's start), and it arrives at `arrival`. After its bytes are written.
+  void Publish(int k, std::uint64_t end_byte, Time arrival);
+  /// Every chunk arriving at or before `t` is published (never moves back).
+  void SetHorizon(Time t);
+  /// Whether the programs are idle with their next move beyond the horizon.
+  bool Stalled() const;
+  /// Moves the programs' clock if they are idle (lockstep_advance.h MoveClock).
+  void MoveClock();
+  /// Waits until the programs are idle and stalled, moving their clock when they are idle and
+  /// no one else does (a thread ended). False: given up.
+  bool WaitStalled(const WaitStep& on_wait);
   /// The processes that have loaded the library so far.
   std::vector<Process> Processes() const;
   Stats stats() const;

@@ -41,7 +41,7 @@ namespace hil::harness::lockstep {
 /// The environment variable that names the shared file (set by hil for the programs it starts).
 inline constexpr const char* kEnvFile = "HIL_LOCKSTEP";
 inline constexpr std::uint32_t kMagic = 0x4b434c48;  // "HLCK"
-inline constexpr std::uint32_t kVersion = 3;
+inline constexpr std::uint32_t kVersion = 4;
 /// Threads (of every program of a run together) and processes the file has room for.
 inline constexpr int kMaxThreads = 256;
 inline constexpr int kMaxProcesses = 32;
@@ -78,6 +78,28 @@ struct alignas(64) ThreadSlot {
   std::atomic<std::uint64_t> links;
 };
 
+/// Lookahead (lockstep_advance.h): hil writes a link's chunks before their arrival and says here
+/// when each arrives; the programs' threads read only what has arrived and move the clock
+/// themselves. The first kFeedLinks links have a feed; each holds kFeedEntries chunks not yet
+/// arrived (a power of two: the ring's index is the count modulo it).
+inline constexpr int kFeedLinks = 16;
+inline constexpr int kFeedEntries = 512;
+
+/// One chunk written ahead: the link's byte count after its last byte, and its emulated arrival.
+struct FeedEntry {
+  std::atomic<std::uint64_t> end_byte;
+  std::atomic<std::int64_t> arrival_ns;
+};
+
+/// A link's chunks written ahead (byte counts from the start of the lookahead).
+struct LinkFeed {
+  std::atomic<std::uint64_t> published;        ///< entries ever published (hil)
+  std::atomic<std::uint64_t> arrived_entries;  ///< of these, arrived by `now_ns`
+  std::atomic<std::uint64_t> arrived_bytes;    ///< the last arrived entry's end_byte
+  std::atomic<std::uint64_t> consumed;         ///< bytes the programs have read (the library)
+  FeedEntry ring[kFeedEntries];
+};
+
 struct ProcessEntry {
   std::atomic<std::int32_t> pid;  ///< 0: free
   char comm[16];                  ///< its name (/proc/self/comm), NUL-terminated
@@ -102,6 +124,19 @@ struct Shared {
   /// tells threads apart by them; until then every descriptor counts as kOtherFd
   std::atomic<std::int32_t> link_count;
   std::uint64_t link_rdev[kMaxLinks];
+  /// 1 while hil writes ahead (lockstep_advance.h): reads and readiness of a link with a feed
+  /// follow the feed, and the thread whose acknowledgement makes the programs idle moves `now_ns`
+  /// to the next arrival or deadline up to `horizon_ns` itself.
+  std::atomic<std::uint32_t> lookahead;
+  /// every chunk that arrives at or before this (emulated ns) is in the feeds
+  std::atomic<std::int64_t> horizon_ns;
+  std::atomic<std::uint32_t> advancing;  ///< 1 while one party moves the clock (a spin lock)
+  /// 1 when the programs were idle and their next arrival or deadline lay beyond the horizon
+  std::atomic<std::uint32_t> stalled;
+  std::atomic<std::uint64_t> advances;  ///< clock moves that woke a thread (statistics)
+  /// set by the library when a thread waits in epoll (whose descriptors it cannot tell apart)
+  std::atomic<std::uint32_t> epoll_seen;
+  LinkFeed feeds[kFeedLinks];
   ThreadSlot slots[kMaxThreads];
   ProcessEntry processes[kMaxProcesses];
 };

@@ -55,6 +55,9 @@ struct RunOptions {
   /// Virtual mode: the host processes run on hil's clock through libhil_lockstep.so (preloaded;
   /// harness/src/preload/README.md); the /proc probe paces them when one does not load it.
   bool lockstep = false;
+  /// With `lockstep`: in an open loop whose programs hold the links read-only, hil writes ahead
+  /// and the programs move their own clock (engine/lookahead_writer.h); false: a turn per message.
+  bool lockstep_lookahead = true;
 };
 
 /// "virtual", "realtime" or "scaled" (real time with a speed-up other than 1).

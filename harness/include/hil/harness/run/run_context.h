@@ -21,6 +21,7 @@
 #include "hil/harness/dut/estimate_collector.h"
 #include "hil/harness/dut/estimator_process.h"
 #include "hil/harness/dut/group_reaper.h"
+#include "hil/harness/engine/clocked_host_turns.h"
 #include "hil/harness/engine/engine.h"
 #include "hil/harness/engine/pacer.h"
 #include "hil/harness/engine/virtual_gate.h"
@@ -85,6 +86,8 @@ struct RunContext {
   std::optional<lockstep::LockstepHost> shared_clock;
   std::string preload_library;
   bool clocked = false;
+  /// the host turns of a clocked run (owned by the engine), to ask whether they wrote ahead
+  const ClockedHostTurns* clocked_turns = nullptr;
   std::optional<EstimatorProcess> estimator;
   /// Closed loop: the controller (in the estimator's process group) and the FIFO navd writes its
   /// NMEA solution into, held open by the run so that neither side waits for the other.
