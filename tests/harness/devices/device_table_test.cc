@@ -94,12 +94,14 @@ std::string IndexAsN(std::string key) {
 // "section.key" of every line of a navd.conf, receivers' indices as N (gnss_device_1 → _N).
 std::set<std::string> NavdKeysIn(const estimator::ConfigFile& f) {
   std::set<std::string> keys;
-  for (const estimator::ConfigEntry& e : f.entries()) keys.insert(e.section + "." + IndexAsN(e.key));
+  for (const estimator::ConfigEntry& e : f.entries())
+    keys.insert(e.section + "." + IndexAsN(e.key));
   return keys;
 }
 
 // The keys (without their section, indices as N) a row's writer writes for `s`, at every slot.
-std::set<std::string> KeysWrittenBy(const DeviceKind& k, const Scenario& s, const std::string& dir) {
+std::set<std::string> KeysWrittenBy(const DeviceKind& k, const Scenario& s,
+                                    const std::string& dir) {
   std::set<std::string> keys;
   if (!k.write_navd) return keys;
   std::ostringstream out;
@@ -131,10 +133,13 @@ bool EstimatorKey(const std::string& key, const Scenario& s) {
 // Scenarios of vectors/scenarios that together use every row that writes navd.conf keys: GNSS
 // only, the IMU board on serial and on CAN, three receivers, UWB with the WT901C, gyro + wheel
 // odometry, the ZED-F9P rover.
-const char* const kNavdScenarios[] = {
-    "default.yaml",           "seed000_gps_imu.yaml",       "vcan/can_imu.yaml",
-    "seed000_three_gps.yaml", "seed003_rectangle_uwb.yaml", "seed001_autonomous.yaml",
-    "rtk_f9p_corrections_cut.yaml"};
+const char* const kNavdScenarios[] = {"default.yaml",
+                                      "seed000_gps_imu.yaml",
+                                      "vcan/can_imu.yaml",
+                                      "seed000_three_gps.yaml",
+                                      "seed003_rectangle_uwb.yaml",
+                                      "seed001_autonomous.yaml",
+                                      "rtk_f9p_corrections_cut.yaml"};
 
 TEST(DeviceTableTest, EveryRowsNavdKeysAreReadByNavd) {
   const std::string dir = ::testing::TempDir() + "/device_table_test";
