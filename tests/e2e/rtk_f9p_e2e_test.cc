@@ -4,7 +4,11 @@
 // order (but the last epoch's, which arrives after the run's end); report.json's rtk_rover holds
 // the RTK timeline: float ≈ 2 s, fixed 10 s later, float 5 s after the cut (60 s), standalone at
 // the 20 s CONSTR_DGNSSTO, float and fixed again after 90 s. The same seed, the same capture.
+// navd reads the rover (navd_gnss_source.h): its navd.conf names ttyF9P, not the rig's ttyGPS,
+// and the raw-fix baseline is the rover's 5 Hz fixes (the rig's receiver gives 10 Hz).
+#include <cstddef>
 #include <sstream>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -64,6 +68,41 @@ TEST(RtkF9pE2eTest, RoverFollowsTheRadioCorrections) {
 
   ASSERT_EQ(RunCommand(BinDir() + "/hil run " + scenario + " --out " + dir / "b").exit_code, 0);
   EXPECT_EQ(ReadFile(dir / "b/captures/ttyF9P.cap"), rover_cap);
+}
+
+// The number of data lines of a CSV file (its header left out).
+std::size_t CsvRows(const std::string& text) {
+  std::size_t lines = 0;
+  for (char c : text) lines += c == '\n' ? 1 : 0;
+  return lines > 0 ? lines - 1 : 0;
+}
+
+TEST(RtkF9pE2eTest, NavdAndTheRawFixBaselineReadTheRover) {
+  TempDir dir("rtk_f9p_navd_e2e");
+  const std::string scenario = SourceDir() + "/vectors/scenarios/rtk_f9p_corrections_cut.yaml";
+  const CommandResult r =
+      RunCommand(BinDir() + "/hil run " + scenario + " --no-html --out " + dir / "a");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const std::string conf = ReadFile(dir / "a/navd.conf");
+  EXPECT_NE(conf.find("gnss_device = " + dir / "a/ttyF9P" + "\n"), std::string::npos) << conf;
+  EXPECT_NE(conf.find("gnss_baud = 115200\n"), std::string::npos) << conf;
+  EXPECT_EQ(conf.find("ttyGPS"), std::string::npos) << conf;
+  const nlohmann::json report = nlohmann::json::parse(ReadFile(dir / "a/report.json"));
+  // the baseline's fixes are the rover's: one per 5 Hz epoch with a fix over the scored 25-150 s
+  // (the rig's receiver would give 10 Hz), and gnss_fixes.csv every one of them from its first
+  // fix at 1 s
+  EXPECT_EQ(report["baselines"]["samples"].get<std::size_t>(), (150U - 25U) * 5 + 1);
+  EXPECT_EQ(CsvRows(ReadFile(dir / "a/gnss_fixes.csv")), (150U - 1U) * 5 + 1);
+  // navd's GNSS counters speak for the rover's link
+  bool rover_link = false;
+  for (const auto& l : report["link_integrity"]) {
+    if (l["links"] == nlohmann::json::array({"ttyF9P"})) {
+      rover_link = true;
+      EXPECT_EQ(l["role"], "gnss");
+      EXPECT_TRUE(l["intact"].get<bool>()) << l.dump();
+    }
+  }
+  EXPECT_TRUE(rover_link) << report["link_integrity"].dump();
 }
 
 }  // namespace

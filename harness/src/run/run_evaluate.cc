@@ -16,6 +16,7 @@
 #include "hil/harness/report/output_file.h"
 #include "hil/harness/report/run_outputs.h"
 #include "hil/harness/run/can_run.h"
+#include "hil/harness/scenario/navd_gnss_source.h"
 #include "hil/harness/scenario/path_file_reader.h"
 
 #include "run_phases.h"
@@ -97,7 +98,7 @@ Eigen::Vector3d EstimatedPoint(const Scenario& scenario, const RunOptions& opt) 
             : scenario.mcu.enabled             ? ReferencePoint::kImu
                                                : ReferencePoint::kBody;
   }
-  return point == ReferencePoint::kAntenna ? scenario.gnss.model.p_BA_B_m
+  return point == ReferencePoint::kAntenna ? NavdAntennaB(scenario)
          : point == ReferencePoint::kImu   ? scenario.mcu.config.mounting.p_BI_B_m
                                            : Eigen::Vector3d::Zero();
 }
@@ -398,7 +399,7 @@ void StartScoring(RunContext& ctx) {
   setup.t_from = ctx.t_from;
   setup.t_end = ctx.t_end;
   setup.p_est_B_m = EstimatedPoint(ctx.scenario, ctx.options);
-  setup.p_fix_B_m = ctx.scenario.gnss.model.p_BA_B_m;
+  setup.p_fix_B_m = NavdAntennaB(ctx.scenario);  // the fixes of the receiver navd reads
   setup.faults = ctx.fault_recorder.records();
   setup.speed = on_wall_clock ? ctx.options.speed : 1.0;
   if (const link::RealtimePacer* wall = ctx.pacer->wall_clock(); wall && on_wall_clock)

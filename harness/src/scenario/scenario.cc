@@ -155,6 +155,15 @@ std::map<std::string, DefaultCriterionSetting> ReadDefaultCriteria(const YamlRea
   return out;
 }
 
+// navd's multi_gnss mode reads the gnss receivers only: a rover that would feed navd is refused
+// rather than left out in silence (navd_gnss_source.h).
+void CheckRoverInput(const YamlReader& root, const Scenario& s) {
+  if (!s.zed_f9p.enabled || !s.zed_f9p.navd_input) return;
+  if (s.estimator.navd_mode != NavdMode::kMultiGnss) return;
+  root.OptionalChild("zed_f9p")->Fail(
+      "navd_input", "navd's multi_gnss mode reads the gnss receivers; set navd_input: false");
+}
+
 Scenario FromReader(const YamlReader& root, const DeviceSections& devices) {
   std::vector<std::string> keys = ScenarioOwnKeys();
   keys.insert(keys.end(), devices.keys.begin(), devices.keys.end());
@@ -179,6 +188,7 @@ Scenario FromReader(const YamlReader& root, const DeviceSections& devices) {
   ReadSuiteSections(root, keys, s);
   if (auto e = top.OptionalChild("estimator")) ReadEstimator(*e, s.estimator);
   CheckCanUse(root, s);
+  CheckRoverInput(root, s);
   if (auto c = top.OptionalChild("criteria")) s.criteria = ReadCriteria(*c);
   if (auto d = top.OptionalChild("default_criteria")) s.default_criteria = ReadDefaultCriteria(*d);
   if (auto f = top.OptionalChild("faults")) s.faults = ReadFaultTimeline(*f, s.duration_s);

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "hil/firmware_emu/gnss/neo5m_device.h"
+#include "hil/harness/scenario/navd_gnss_source.h"
 
 #include "gnss_receiver.h"
 
@@ -63,11 +64,12 @@ void BuildGnssReceivers(const Scenario& s, std::uint64_t seed, const std::string
   }
 }
 
-// [input] gnss_device and gnss_baud; multi_gnss: every receiver's antenna relative to the body
+// [input] gnss_device and gnss_baud (unless navd reads the ZED-F9P rover: its row writes them);
+// multi_gnss: every receiver's antenna relative to the body
 // origin ([filter] antenna_N_m) and link ([input] gnss_device_N), after [filter]'s keys.
 void WriteGnssReceiversNavd(NavdConfSlot slot, const Scenario& s, const std::string& gnss_device,
                             std::ostream& out) {
-  if (slot == NavdConfSlot::kInput)
+  if (slot == NavdConfSlot::kInput && !NavdReadsRover(s))
     out << "gnss_device = " << gnss_device << "\ngnss_baud = " << s.gnss.baud << "\n";
   if (slot != NavdConfSlot::kSections || s.estimator.navd_mode != NavdMode::kMultiGnss) return;
   const std::filesystem::path dir = std::filesystem::path(gnss_device).parent_path();
@@ -92,10 +94,10 @@ constexpr std::string_view kGnssReceiverNavdKeys[] = {"input.gnss_device", "inpu
                                                       "input.gnss_device_N", "filter.antenna_N_m"};
 
 // navd reads the first receiver, and every receiver in multi_gnss, except in its UWB and
-// odometry modes.
+// odometry modes and when it reads the ZED-F9P rover instead (navd_gnss_source.h).
 std::vector<std::string> GnssReceiverNavdLinks(const Scenario& s) {
   const NavdMode m = s.estimator.navd_mode;
-  if (m == NavdMode::kUwb || m == NavdMode::kGyroOdometry) return {};
+  if (m == NavdMode::kUwb || m == NavdMode::kGyroOdometry || NavdReadsRover(s)) return {};
   if (m != NavdMode::kMultiGnss) return {s.gnss.link};
   std::vector<std::string> links{s.gnss.link};
   for (const GnssReceiverSpec& r : s.gnss.receivers) links.push_back(r.link);

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "hil/firmware_emu/mcu/mcu_device.h"
+#include "hil/harness/scenario/navd_gnss_source.h"
 
 #include "mcu.h"
 
@@ -34,7 +35,7 @@ bool NavdReadsImu(const Scenario& s) {
 }
 
 // [input] imu_* (or [imu] for CAN) after gnss_baud; [filter] lever_arm_m: navd's body origin is
-// the IMU, so the antenna relative to the board.
+// the IMU, so the antenna of the receiver navd reads (navd_gnss_source.h) relative to the board.
 void WriteMcuNavd(NavdConfSlot slot, const Scenario& s, const std::string& gnss_device,
                   std::ostream& out) {
   const bool odometry = s.estimator.navd_mode == NavdMode::kGyroOdometry;  // [odometry] instead
@@ -46,7 +47,7 @@ void WriteMcuNavd(NavdConfSlot slot, const Scenario& s, const std::string& gnss_
     out << "imu_device = " << (dir / s.mcu.link).string() << "\nimu_baud = " << s.mcu.config.baud
         << "\nimu_format = mcu\n";
   } else if (slot == NavdConfSlot::kFilter && NavdReadsImu(s) && !odometry) {
-    const Eigen::Vector3d lever = s.gnss.model.p_BA_B_m - s.mcu.config.mounting.p_BI_B_m;
+    const Eigen::Vector3d lever = NavdAntennaB(s) - s.mcu.config.mounting.p_BI_B_m;
     out << "lever_arm_m = " << lever.x() << ", " << lever.y() << ", " << lever.z() << "\n";
   }
 }

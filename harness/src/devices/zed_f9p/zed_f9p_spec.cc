@@ -24,6 +24,9 @@ inline constexpr ScenarioKey kZedF9p[] = {
      "to UART1 (an NTRIP client); none; moving_base: a second F9P on the vehicle sending 4072.0 "
      "and MSM7 into UART2 (dual-antenna heading in NAV-RELPOSNED)",
      kCorrections},
+    {"navd_input", kBool, "", "true", 0, 0,
+     "navd reads this rover (its NMEA on `link`) instead of the gnss receivers, and the raw-fix "
+     "baseline is its fixes; false: navd keeps the gnss receivers"},
     {"antenna_lever_arm_m", kPoint, "m", "[0, 0, 0]", 0, 0,
      "the antenna in the body frame [forward, left, up]"},
     {"moving_base_antenna_m", kPoint, "m", "[0, 0, 0]", 0, 0,
@@ -181,6 +184,7 @@ void ReadZedF9pSpec(const YamlReader& root, Scenario& s) {
   f.enabled = true;
   f.link = ReadLinkName(r, f.link);
   f.corrections = r.Choice("corrections", F9pCorrections::kRadio);
+  f.navd_input = r.Bool("navd_input", f.navd_input);
   if (f.corrections == F9pCorrections::kRadio && !s.rtk_base.enabled)
     r.Fail("corrections", "radio needs an rtk_base section (its radio feeds UART2)");
   rtk::ZedF9pConfig& c = f.config;

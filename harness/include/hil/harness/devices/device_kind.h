@@ -81,7 +81,9 @@ struct DeviceKind {
   /// equal times) with their serial links in `run_dir`; nothing when the scenario has none.
   void (*build)(const Scenario& s, std::uint64_t seed, const std::string& run_dir,
                 DeviceBuild& set);
-  /// The navd.conf keys it writes ("section.key"; N stands for a receiver's index).
+  /// The navd.conf keys it writes ("section.key"; N stands for a receiver's index). Two rows may
+  /// list a key when a scenario has only one of them write it: [input] gnss_device and gnss_baud
+  /// are the gnss receivers' or the ZED-F9P rover's (scenario/navd_gnss_source.h).
   std::span<const std::string_view> navd_keys;
   /// Writes its navd.conf lines at `slot`; null when it writes none. `gnss_device` is the first
   /// receiver's link in the run folder (navd_conf.h), whose folder holds every link.

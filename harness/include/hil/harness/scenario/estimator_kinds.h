@@ -33,7 +33,7 @@ inline constexpr std::array<std::string_view, 7> kNavdModeNames{
 enum class ReferencePoint {
   kAuto,     ///< antenna for a GNSS-only navd, the IMU for navd fusing the board, else the body
   kBody,     ///< the body reference point
-  kAntenna,  ///< the first receiver's antenna
+  kAntenna,  ///< the antenna of the receiver navd reads (navd_gnss_source.h)
   kImu       ///< the IMU board
 };
 inline constexpr std::array<std::string_view, 4> kReferencePointNames{"auto", "body", "antenna",

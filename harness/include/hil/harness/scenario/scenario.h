@@ -147,6 +147,9 @@ struct ZedF9pDeviceSpec {
   std::string link = "ttyF9P";  ///< symlink name in the run folder
   std::size_t tx_buffer_bytes = 4096;
   F9pCorrections corrections = F9pCorrections::kRadio;
+  /// navd reads this rover instead of the `gnss` receivers (key `navd_input`; the rule:
+  /// navd_gnss_source.h)
+  bool navd_input = true;
   rtk::ZedF9pConfig config;  ///< start_utc the scenario's; the radio base from `rtk_base`
 };
 
