@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <numbers>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -81,6 +82,24 @@ TEST(ConfigFileTest, GnssVelocityNoiseKey) {
   EXPECT_FALSE(
       NavdConfig::FromFile(ConfigFile::Parse("[filter]\ngnss_velocity_noise = false\n", "n.conf"))
           .nav.gnss_vel_noise.enabled);
+}
+
+// issues 39/41: the IMU's mounting pitch and yaw are estimated (prior σ 2°) unless
+// [filter] mount_angle_estimation = false; mount_angle_std_deg sets the prior
+TEST(ConfigFileTest, MountAngleKeys) {
+  const EkfParams def = NavdConfig::FromFile(ConfigFile::Parse("[filter]\n", "n.conf")).nav.ekf;
+  EXPECT_TRUE(def.estimate_mount_angles);
+  EXPECT_NEAR(def.mount_angle_std_rad, 2.0 * std::numbers::pi / 180.0, 1e-12);
+  const EkfParams set =
+      NavdConfig::FromFile(ConfigFile::Parse("[filter]\nmount_angle_estimation = false\n"
+                                             "mount_angle_std_deg = 0.5\n",
+                                             "n.conf"))
+          .nav.ekf;
+  EXPECT_FALSE(set.estimate_mount_angles);
+  EXPECT_NEAR(set.mount_angle_std_rad, 0.5 * std::numbers::pi / 180.0, 1e-12);
+  EXPECT_THROW(
+      NavdConfig::FromFile(ConfigFile::Parse("[filter]\nmount_angle_estimation = 1\n", "n.conf")),
+      ConfigError);
 }
 
 // issue 41: the vibration-widened vehicle model is off unless [filter] vibration_tau_s > 0
