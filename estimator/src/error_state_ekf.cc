@@ -49,8 +49,8 @@ void ErrorStateEkf::Initialize(const NavState& s) {
   if (p.speed_rw_mps_rthz > 0) P_(kSpeed, kSpeed) = p.init_vel_std_mps * p.init_vel_std_mps;
   if (SpeedDevState(p)) P_(kSpeedDev, kSpeedDev) = p.speed_dev_std_mps * p.speed_dev_std_mps;
   if (MountStatesOn()) {
-    P_(kMountPitch, kMountPitch) = P_(kMountYaw, kMountYaw) =
-        p.mount_angle_std_rad * p.mount_angle_std_rad;
+    P_(kMountPitch, kMountPitch) = p.mount_pitch_std_rad * p.mount_pitch_std_rad;
+    P_(kMountYaw, kMountYaw) = p.mount_yaw_std_rad * p.mount_yaw_std_rad;
   }
 }
 

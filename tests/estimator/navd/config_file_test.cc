@@ -84,19 +84,21 @@ TEST(ConfigFileTest, GnssVelocityNoiseKey) {
           .nav.gnss_vel_noise.enabled);
 }
 
-// issues 39/41: the IMU's mounting pitch and yaw are estimated (prior σ 2°) unless
-// [filter] mount_angle_estimation = false; mount_angle_std_deg sets the prior
+// issues 39/41: the IMU's mounting pitch is estimated (prior σ 2°), its yaw held, unless
+// [filter] mount_angle_estimation = false; mount_pitch_std_deg / mount_yaw_std_deg set the priors
 TEST(ConfigFileTest, MountAngleKeys) {
   const EkfParams def = NavdConfig::FromFile(ConfigFile::Parse("[filter]\n", "n.conf")).nav.ekf;
   EXPECT_TRUE(def.estimate_mount_angles);
-  EXPECT_NEAR(def.mount_angle_std_rad, 2.0 * std::numbers::pi / 180.0, 1e-12);
+  EXPECT_NEAR(def.mount_pitch_std_rad, 2.0 * std::numbers::pi / 180.0, 1e-12);
+  EXPECT_EQ(def.mount_yaw_std_rad, 0.0);
   const EkfParams set =
       NavdConfig::FromFile(ConfigFile::Parse("[filter]\nmount_angle_estimation = false\n"
-                                             "mount_angle_std_deg = 0.5\n",
+                                             "mount_pitch_std_deg = 0.5\nmount_yaw_std_deg = 1\n",
                                              "n.conf"))
           .nav.ekf;
   EXPECT_FALSE(set.estimate_mount_angles);
-  EXPECT_NEAR(set.mount_angle_std_rad, 0.5 * std::numbers::pi / 180.0, 1e-12);
+  EXPECT_NEAR(set.mount_pitch_std_rad, 0.5 * std::numbers::pi / 180.0, 1e-12);
+  EXPECT_NEAR(set.mount_yaw_std_rad, 1.0 * std::numbers::pi / 180.0, 1e-12);
   EXPECT_THROW(
       NavdConfig::FromFile(ConfigFile::Parse("[filter]\nmount_angle_estimation = 1\n", "n.conf")),
       ConfigError);
