@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <numbers>
 #include <sstream>
 
 #include "hil/estimator/navd/serial_bauds.h"
@@ -152,7 +153,15 @@ bool ReadEkfKey(const ConfigFile& f, const ConfigEntry& e, EkfParams& ekf) {
     ekf.speed_dev_tau_s = ToDouble(f, e, 0.0, 3600.0);
   else if (k == "gate_sigma")
     ekf.gate_sigma = ToDouble(f, e, 1.0, 1000.0);
-  else
+  else if (k == "mount_pitch_std_deg")
+    ekf.mount_pitch_std_rad = ToDouble(f, e, 0.0, 10.0) * std::numbers::pi / 180.0;
+  else if (k == "mount_yaw_std_deg")
+    ekf.mount_yaw_std_rad = ToDouble(f, e, 0.0, 10.0) * std::numbers::pi / 180.0;
+  else if (k == "mount_angle_estimation") {
+    if (e.value != "true" && e.value != "false")
+      throw ConfigError(f.name(), e.line, FieldName(e), "expected true or false");
+    ekf.estimate_mount_angles = e.value == "true";
+  } else
     return false;
   return true;
 }

@@ -74,6 +74,17 @@ void AppendConsistency(std::string& s, const NavigatorStats& n) {
     std::snprintf(b, sizeof b, ",\"gnss_vel_std_mps\":%.3f", n.gnss_vel_std_mps);
     s += b;
   }
+  // present while the IMU's mounting pitch and yaw are estimated (ErrorStateEkf): degrees of the
+  // vehicle frame in the IMU frame, and their σ
+  if (n.mount_estimated) {
+    constexpr double kDeg = 180.0 / 3.14159265358979323846;
+    std::snprintf(b, sizeof b,
+                  ",\"mount_deg\":{\"pitch\":%.3f,\"yaw\":%.3f,\"pitch_std\":%.3f,"
+                  "\"yaw_std\":%.3f}",
+                  n.mount_pitch_rad * kDeg, n.mount_yaw_rad * kDeg, n.mount_pitch_std_rad * kDeg,
+                  n.mount_yaw_std_rad * kDeg);
+    s += b;
+  }
   // present once a lag was found and taken off the IMU tags (the line stays short otherwise)
   if (n.imu_tag_lag_s == 0) return;
   std::snprintf(b, sizeof b, ",\"imu_tag_lag_s\":%.4f", n.imu_tag_lag_s);

@@ -23,6 +23,8 @@ void ErrorStateEkf::Initialize(const NavState& s) {
   attitude_hold_ = false;
   set_speed_ = (s.q_NB.conjugate() * s.v_N_mps).x();
   speed_dev_ = 0.0;
+  mount_rad_.setZero();
+  C_VB_.setIdentity();
   gm_tau_s_ = params_.gnss_error_tau_s;
   gm_std_m_ = params_.gnss_error_std_m;
   gm_up_ratio_ = params_.gnss_error_vertical_std_m > 0 && params_.gnss_error_std_m > 0
@@ -46,6 +48,10 @@ void ErrorStateEkf::Initialize(const NavState& s) {
   }
   if (p.speed_rw_mps_rthz > 0) P_(kSpeed, kSpeed) = p.init_vel_std_mps * p.init_vel_std_mps;
   if (SpeedDevState(p)) P_(kSpeedDev, kSpeedDev) = p.speed_dev_std_mps * p.speed_dev_std_mps;
+  if (MountStatesOn()) {
+    P_(kMountPitch, kMountPitch) = p.mount_pitch_std_rad * p.mount_pitch_std_rad;
+    P_(kMountYaw, kMountYaw) = p.mount_yaw_std_rad * p.mount_yaw_std_rad;
+  }
 }
 
 void ErrorStateEkf::Predict(const Eigen::Vector3d& delta_angle_B_rad,
@@ -199,12 +205,28 @@ Eigen::Matrix<double, 3, kNumStates> ErrorStateEkf::VelocityJacobian() const {
   return H;
 }
 
-Eigen::Matrix<double, 2, kNumStates> ErrorStateEkf::NonHolonomicJacobian() const {
-  const Eigen::Matrix3d Ct = state_.q_NB.toRotationMatrix().transpose();
+Eigen::Vector3d ErrorStateEkf::VehicleVelocity() const {
+  return C_VB_ * (state_.q_NB.conjugate() * state_.v_N_mps);
+}
+
+Eigen::Matrix<double, 3, kNumStates> ErrorStateEkf::VehicleVelocityJacobian() const {
+  // v_V = C_VB Ĉᵀ v with C_VB = Exp(μ)ᵀ: δv and φ enter as in the body frame, rotated by C_VB;
+  // a mounting error δμ turns v_V by Exp(δμ)ᵀ ≈ I − [δμ×], so ∂v_V/∂δμ = [v_V×] (its pitch and
+  // yaw columns; the roll is not a state)
+  const Eigen::Matrix3d CVt = C_VB_ * state_.q_NB.toRotationMatrix().transpose();
   Eigen::Matrix<double, 3, kNumStates> H = Eigen::Matrix<double, 3, kNumStates>::Zero();
-  H.block<3, 3>(0, kVel) = Ct;
-  H.block<3, 3>(0, kAtt) = Ct * Skew(state_.v_N_mps);
-  return H.bottomRows<2>();
+  H.block<3, 3>(0, kVel) = CVt;
+  H.block<3, 3>(0, kAtt) = CVt * Skew(state_.v_N_mps);
+  if (MountStatesOn()) {
+    const Eigen::Matrix3d Sv = Skew(VehicleVelocity());
+    H.col(kMountPitch) = Sv.col(1);
+    H.col(kMountYaw) = Sv.col(2);
+  }
+  return H;
+}
+
+Eigen::Matrix<double, 2, kNumStates> ErrorStateEkf::NonHolonomicJacobian() const {
+  return VehicleVelocityJacobian().bottomRows<2>();
 }
 
 UpdateResult ErrorStateEkf::UpdatePosition(const Eigen::Vector3d& p_antenna_N_m,
@@ -229,8 +251,9 @@ UpdateResult ErrorStateEkf::UpdateVelocity(const Eigen::Vector3d& v_antenna_N_mp
 
 UpdateResult ErrorStateEkf::UpdateNonHolonomic() {
   if (!(params_.nhc_std_mps > 0)) return {};
-  const Eigen::Vector3d v_B = state_.q_NB.conjugate() * state_.v_N_mps;
-  const Eigen::Vector2d innovation(-v_B.y(), -v_B.z());
+  // the vehicle's lateral and vertical velocity are zero (in V, through the mounting angles)
+  const Eigen::Vector3d v_V = VehicleVelocity();
+  const Eigen::Vector2d innovation(-v_V.y(), -v_V.z());
   // the IMU's vibration velocity is not the chassis's: its variance is added (VibrationVelocity)
   const double r2 = params_.nhc_std_mps * params_.nhc_std_mps;
   const Eigen::Matrix2d R =
@@ -239,11 +262,8 @@ UpdateResult ErrorStateEkf::UpdateNonHolonomic() {
 }
 
 Eigen::Matrix<double, 1, kNumStates> ErrorStateEkf::SpeedModelJacobian() const {
-  // forward body speed x_Bᵀ Ĉᵀ v minus the set speed; attitude part as in the NHC rows
-  const Eigen::Matrix3d Ct = state_.q_NB.toRotationMatrix().transpose();
-  Eigen::Matrix<double, 1, kNumStates> H = Eigen::Matrix<double, 1, kNumStates>::Zero();
-  H.block<1, 3>(0, kVel) = Ct.row(0);
-  H.block<1, 3>(0, kAtt) = (Ct * Skew(state_.v_N_mps)).row(0);
+  // forward vehicle speed x_Vᵀ C_VB Ĉᵀ v minus the set speed; the rest as in the NHC rows
+  Eigen::Matrix<double, 1, kNumStates> H = VehicleVelocityJacobian().row(0);
   H(0, kSpeed) = -1.0;
   if (SpeedDevState(params_)) H(0, kSpeedDev) = -1.0;
   return H;
@@ -251,7 +271,7 @@ Eigen::Matrix<double, 1, kNumStates> ErrorStateEkf::SpeedModelJacobian() const {
 
 UpdateResult ErrorStateEkf::UpdateSpeedModel() {
   if (!(params_.speed_rw_mps_rthz > 0)) return {};
-  const double forward = (state_.q_NB.conjugate() * state_.v_N_mps).x();
+  const double forward = VehicleVelocity().x();
   Eigen::Matrix<double, 1, 1> innovation;
   innovation << set_speed_ + speed_dev_ - forward;
   // with a deviation state the pseudo-measurement carries what the state does not: half its σ (a
@@ -265,7 +285,7 @@ UpdateResult ErrorStateEkf::UpdateSpeedModel() {
 
 void ErrorStateEkf::ResetSetSpeed(double std_mps) {
   if (!(params_.speed_rw_mps_rthz > 0)) return;
-  set_speed_ = (state_.q_NB.conjugate() * state_.v_N_mps).x();
+  set_speed_ = VehicleVelocity().x();
   P_.row(kSpeed).setZero();
   P_.col(kSpeed).setZero();
   P_(kSpeed, kSpeed) = std_mps * std_mps;
@@ -345,6 +365,12 @@ void ErrorStateEkf::InjectError(const EkfVector& dx) {
   if (params_.gnss_error_tau_s > 0) e_gnss_ += dx.segment<3>(kGnssError);
   if (params_.speed_rw_mps_rthz > 0) set_speed_ += dx[kSpeed];
   if (SpeedDevState(params_)) speed_dev_ += dx[kSpeedDev];
+  if (MountStatesOn()) {
+    // additive on the two angles (first order: the update's H is [v_V×] at the current μ)
+    mount_rad_.y() += dx[kMountPitch];
+    mount_rad_.z() += dx[kMountYaw];
+    C_VB_ = QuatFromRotationVector(mount_rad_).toRotationMatrix().transpose();
+  }
 }
 
 Eigen::Vector3d ErrorStateEkf::GnssErrorVariance(double horizontal_std_m, double up_std_m) {

@@ -231,6 +231,7 @@ void Navigator::ProcessImu(const ImuSample& s) {
     Record(kAidNonHolonomic, ekf_.UpdateNonHolonomic());
     ekf_.UpdateSpeedModel();
     last_nhc_t_ = filter_t_;
+    RecordMountAngles();
   }
   if (filter_t_ - last_gnss_fused_t_ > params_.outage_flag_after) {
     status_ |= kStatusDeadReckoning;

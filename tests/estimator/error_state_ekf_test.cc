@@ -59,12 +59,13 @@ class ErrorStateEkfTest : public ::testing::Test {
         raw_w_ - e.gyro_bias();  // the rate the filter used, re-derived from the bias
     return e.state().v_N_mps + e.state().q_NB * w.cross(e.params().lever_arm_B_m);
   }
-  static double Speed(const ErrorStateEkf& e) {
-    return (e.state().q_NB.conjugate() * e.state().v_N_mps).x() - e.set_speed_mps();
+  // the vehicle-frame velocity: the body velocity turned by the mounting angles, C_VB = Exp(μ)ᵀ
+  static Eigen::Vector3d VehicleVelocity(const ErrorStateEkf& e) {
+    return QuatFromRotationVector(e.mount_angles_rad()).conjugate() *
+           (e.state().q_NB.conjugate() * e.state().v_N_mps);
   }
-  static Eigen::Vector2d Nhc(const ErrorStateEkf& e) {
-    return (e.state().q_NB.conjugate() * e.state().v_N_mps).tail<2>();
-  }
+  static double Speed(const ErrorStateEkf& e) { return VehicleVelocity(e).x() - e.set_speed_mps(); }
+  static Eigen::Vector2d Nhc(const ErrorStateEkf& e) { return VehicleVelocity(e).tail<2>(); }
   template <int M, typename F>
   Eigen::Matrix<double, M, kNumStates> Numeric(F h) const {
     return NumericJacobian<M>(ekf_, h);
@@ -440,6 +441,7 @@ TEST(ErrorStateEkfClassicTest, PropagationEqualsTheDenseProductAndKeepsTheTailZe
   p.lever_arm_B_m = Eigen::Vector3d(0.3, 0.1, 0.9);
   p.gyro_scale_std = 0.005;
   p.nhc_std_mps = 0.05;
+  p.estimate_mount_angles = false;  // the classic states alone (the mounting states are tails)
   EarthModel earth;
   earth.w_IE_N_radps = Eigen::Vector3d(0.0, 6.3e-5, 3.7e-5);
   ErrorStateEkf ekf(p, earth);

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <numbers>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -81,6 +82,26 @@ TEST(ConfigFileTest, GnssVelocityNoiseKey) {
   EXPECT_FALSE(
       NavdConfig::FromFile(ConfigFile::Parse("[filter]\ngnss_velocity_noise = false\n", "n.conf"))
           .nav.gnss_vel_noise.enabled);
+}
+
+// issues 39/41: the IMU's mounting pitch is estimated (prior σ 2°), its yaw held, unless
+// [filter] mount_angle_estimation = false; mount_pitch_std_deg / mount_yaw_std_deg set the priors
+TEST(ConfigFileTest, MountAngleKeys) {
+  const EkfParams def = NavdConfig::FromFile(ConfigFile::Parse("[filter]\n", "n.conf")).nav.ekf;
+  EXPECT_TRUE(def.estimate_mount_angles);
+  EXPECT_NEAR(def.mount_pitch_std_rad, 2.0 * std::numbers::pi / 180.0, 1e-12);
+  EXPECT_EQ(def.mount_yaw_std_rad, 0.0);
+  const EkfParams set =
+      NavdConfig::FromFile(ConfigFile::Parse("[filter]\nmount_angle_estimation = false\n"
+                                             "mount_pitch_std_deg = 0.5\nmount_yaw_std_deg = 1\n",
+                                             "n.conf"))
+          .nav.ekf;
+  EXPECT_FALSE(set.estimate_mount_angles);
+  EXPECT_NEAR(set.mount_pitch_std_rad, 0.5 * std::numbers::pi / 180.0, 1e-12);
+  EXPECT_NEAR(set.mount_yaw_std_rad, 1.0 * std::numbers::pi / 180.0, 1e-12);
+  EXPECT_THROW(
+      NavdConfig::FromFile(ConfigFile::Parse("[filter]\nmount_angle_estimation = 1\n", "n.conf")),
+      ConfigError);
 }
 
 // issue 41: the vibration-widened vehicle model is off unless [filter] vibration_tau_s > 0

@@ -7,11 +7,13 @@
 /// output: nominal NavState, biases, covariance, NIS of the last update, status flags
 /// @endsystem
 ///
-/// Error state (kNumStates = 20, fixed-size):
+/// Error state (kNumStates = 22, fixed-size):
 ///   δp (N, m) | δv (N, m/s) | φ (attitude error in N, rad; C_true = Exp(φ)·Ĉ) | δb_a (B, m/s²) |
 ///   δb_g (B, rad/s) | e_gnss (N, m: first-order Gauss–Markov GNSS position error, optional) |
 ///   δs (m/s: the vehicle's set speed, a slow random walk, optional) |
-///   δd (m/s: the forward speed's deviation from the set speed, Gauss–Markov, optional)
+///   δd (m/s: the forward speed's deviation from the set speed, Gauss–Markov, optional) |
+///   δμ (rad: pitch and yaw of the vehicle frame V in the IMU frame B, random constants, optional)
+///
 /// The speed state is the vehicle model of a ground vehicle that holds its speed (cruise control,
 /// constant throttle): the forward body velocity stays within `speed_dev_std_mps` of a set speed
 /// that itself wanders as a random walk of `speed_rw_mps_rthz`. It gives the along-track velocity a
@@ -23,6 +25,16 @@
 /// wander over seconds), and the pseudo-measurement is "forward speed = s + d" with a small noise
 /// (half that σ). Without it (τ = 0) the deviation is white at every update, which over-trusts
 /// the set speed when the real speed wanders over seconds.
+///
+/// The mounting angles μ = (roll, pitch, yaw) rotate B into V: a vector's V coordinates are
+/// C_VB·x_B with C_VB = Exp(μ)ᵀ (the vehicle's forward axis is Exp(μ)·x̂ in B). The
+/// non-holonomic constraint and the speed model hold in V, not in B: an IMU is always mounted a
+/// fraction of a degree off (Q. Chen et al., "Estimation of IMU Mounting Angles for Land
+/// Vehicular GNSS/INS Integrated System", of the Wuhan group of KF-GINS, estimate the same two
+/// angles from the NHC in a Kalman filter: github.com/QIJINCHEN/IMA-estimation). The roll is
+/// unobservable from the NHC and stays 0. Off (frozen, zero covariance) when both prior σ are 0,
+/// estimate_mount_angles is false or the NHC is off; an angle whose σ is 0 is held at 0.
+///
 /// The first 15 are the classic INS error states (paper 004); the three augmented states model the
 /// time-correlated error of a standalone receiver (NEO-5M class, τ of seconds) so it is not
 /// mistaken for vehicle motion. With gnss_error_tau_s = 0 they are frozen at zero (a plain 15-state
@@ -53,7 +65,9 @@ inline constexpr int kNumClassicStates = 15;  ///< δp … δb_g: the states tha
 inline constexpr int kGnssError = 15;
 inline constexpr int kSpeed = 18;
 inline constexpr int kSpeedDev = 19;
-inline constexpr int kNumStates = 20;
+inline constexpr int kMountPitch = 20;  ///< δμ_y: pitch of V in B (rad)
+inline constexpr int kMountYaw = 21;    ///< δμ_z: yaw of V in B (rad)
+inline constexpr int kNumStates = 22;
 }  // namespace ekf_index
 
 using EkfVector = Eigen::Matrix<double, ekf_index::kNumStates, 1>;
@@ -105,6 +119,21 @@ struct EkfParams {
   double speed_dev_std_mps = 0.05;  ///< forward speed's deviation from the set speed (1σ)
   double speed_dev_tau_s = 0.0;     ///< its correlation time (0: white, no state of its own)
   double gate_sigma = 5.0;          ///< per-update χ² gate: NIS ≤ gate² · dof
+  /// Prior σ of the IMU's mounting pitch and yaw against the vehicle (rad; `[filter]
+  /// mount_pitch_std_deg`, `mount_yaw_std_deg`; 0 holds that angle at zero). 2° (our choice; the
+  /// source gives none): a bracket or a console fitted by eye is within a degree or two. The pitch
+  /// is learned from the NHC's vertical row against the tilt the accelerometer and the fixes show;
+  /// the yaw only against the IMU's own heading, which the fixes show through accelerations: at
+  /// low dynamics it takes over the heading information the NHC gave (estimator.md, "The IMU's
+  /// mounting angles").
+  double mount_pitch_std_rad = 2.0 * 0.017453292519943295;
+  /// 0 by default (yaw held): measured on field_realism/tractor_engine_vibration (1 m/s, ±2 %
+  /// speed) a 2° prior let the yaw wander 1–3° under a σ of 0.15–0.7° and doubled the RMSE
+  /// (0.030 → 0.058 m, horizontal NEES 15); set it where the vehicle changes speed briskly.
+  double mount_yaw_std_rad = 0.0;
+  /// Estimate the mounting pitch and yaw (`[filter] mount_angle_estimation`, on by default):
+  /// false holds them at zero (the NHC in the IMU frame, as before).
+  bool estimate_mount_angles = true;
 };
 
 /// Health and status bit field.
@@ -235,6 +264,12 @@ class ErrorStateEkf {
   const Eigen::Vector3d& gnss_error() const { return e_gnss_; }
   double set_speed_mps() const { return set_speed_; }
   double speed_deviation_mps() const { return speed_dev_; }
+  /// The mounting angles (roll, pitch, yaw of V in B, rad; roll stays 0) and whether they are
+  /// estimated.
+  const Eigen::Vector3d& mount_angles_rad() const { return mount_rad_; }
+  bool mount_angles_estimated() const { return MountStatesOn(); }
+  /// C_VB, the rotation from the IMU frame into the vehicle frame (identity when off).
+  const Eigen::Matrix3d& vehicle_from_imu() const { return C_VB_; }
   const Eigen::Vector3d& last_gyro_rate_B() const { return w_B_; }
   const EkfParams& params() const { return params_; }
   const EarthModel& earth() const { return earth_; }
@@ -255,10 +290,20 @@ class ErrorStateEkf {
   template <int N>
   void PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, double gm_decay,
                              double dev_decay);
-  /// The correlated-GNSS-error or speed-model states are on: P's last five rows may be non-zero.
+  /// The correlated-GNSS-error, speed-model or mounting-angle states are on: P's last seven rows
+  /// may be non-zero.
   bool AugmentedStatesOn() const {
-    return params_.gnss_error_tau_s > 0 || params_.speed_rw_mps_rthz > 0;
+    return params_.gnss_error_tau_s > 0 || params_.speed_rw_mps_rthz > 0 || MountStatesOn();
   }
+  /// The mounting pitch and yaw are estimated (they need the NHC to be observable).
+  bool MountStatesOn() const {
+    return params_.estimate_mount_angles && params_.nhc_std_mps > 0 &&
+           (params_.mount_pitch_std_rad > 0 || params_.mount_yaw_std_rad > 0);
+  }
+  /// The body velocity in the vehicle frame, C_VB·Ĉᵀ·v̂.
+  Eigen::Vector3d VehicleVelocity() const;
+  /// Rows of the vehicle-frame velocity's Jacobian (δv, φ and δμ columns).
+  Eigen::Matrix<double, 3, ekf_index::kNumStates> VehicleVelocityJacobian() const;
   void Symmetrize();
   void SymmetrizeBlock(int first, int end);
   /// A negative or non-finite variance: its row and column restart (counted in repairs_).
@@ -277,8 +322,10 @@ class ErrorStateEkf {
   double gm_up_std_m_ = 0.0;                // current correlated GNSS error model's up σ
   double set_speed_ = 0.0;                  // speed model: the vehicle's set speed (m/s)
   double speed_dev_ = 0.0;                  // speed model: forward speed minus set speed (m/s)
-  Eigen::Vector3d w_B_ = Eigen::Vector3d::Zero();  // last compensated angular rate
-  Eigen::Vector3d f_N_ = Eigen::Vector3d::Zero();  // last specific force in N
+  Eigen::Vector3d mount_rad_ = Eigen::Vector3d::Zero();  // μ: V in B (roll, pitch, yaw)
+  Eigen::Matrix3d C_VB_ = Eigen::Matrix3d::Identity();   // Exp(μ)ᵀ
+  Eigen::Vector3d w_B_ = Eigen::Vector3d::Zero();        // last compensated angular rate
+  Eigen::Vector3d f_N_ = Eigen::Vector3d::Zero();        // last specific force in N
   EkfMatrix P_ = EkfMatrix::Identity();
   std::uint32_t repairs_ = 0;
   double q_scale_ = 1.0;                  // process-noise scale (SetProcessNoiseScale)

@@ -242,6 +242,10 @@ struct NavigatorStats {
   /// the horizontal σ the last fix velocity was fused with (m/s; GnssVelocityNoise), 0: none yet
   double gnss_vel_std_mps = 0;
   bool gnss_vel_std_learned = false;  ///< that σ is the learned one, below the configured σ
+  /// the IMU's mounting angles against the vehicle (ErrorStateEkf: pitch and yaw of the vehicle
+  /// frame in the IMU frame, rad) and their σ, while they are estimated
+  bool mount_estimated = false;
+  double mount_pitch_rad = 0, mount_yaw_rad = 0, mount_pitch_std_rad = 0, mount_yaw_std_rad = 0;
 };
 
 /// The solution at one time of validity.
@@ -334,6 +338,8 @@ class Navigator {
   /// The fix's velocity (when it has one and use_gnss_velocity), recorded in its monitor.
   void FuseGnssVelocity(const GnssSample& g);
   void Record(int source, const UpdateResult& r);
+  /// Copies the EKF's mounting-angle estimate into stats_ (aid_sources/mount_angle_control.cc).
+  void RecordMountAngles();
   /// Restarts the EKF's position and velocity at a fix (long rejection, or after an IMU loss).
   void ResetToFix(const GnssSample& g, const Eigen::Vector3d& p_antenna_N_m);
   bool UsesImu() const { return estimator::UsesImu(params_.mode); }
