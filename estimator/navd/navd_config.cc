@@ -123,6 +123,8 @@ bool ReadEkfKey(const ConfigFile& f, const ConfigEntry& e, EkfParams& ekf) {
     ekf.gyro_noise_radps_rthz = ToDouble(f, e, 1e-8, 1.0);
   else if (k == "gyro_scale_std")
     ekf.gyro_scale_std = ToDouble(f, e, 0.0, 0.1);
+  else if (k == "gyro_scale_z_std")
+    ekf.gyro_scale_z_std = ToDouble(f, e, 0.0, 0.1);
   else if (k == "accel_bias_rw")
     ekf.accel_bias_rw_mps3_rthz = ToDouble(f, e, 0.0, 1.0);
   else if (k == "gyro_bias_rw")

@@ -85,6 +85,12 @@ void AppendConsistency(std::string& s, const NavigatorStats& n) {
                   n.mount_yaw_std_rad * kDeg);
     s += b;
   }
+  // present while the z gyro's scale factor is estimated (ErrorStateEkf): its error and σ, ppm
+  if (n.gyro_scale_z_estimated) {
+    std::snprintf(b, sizeof b, ",\"gyro_scale_z_ppm\":%.0f,\"gyro_scale_z_std_ppm\":%.0f",
+                  n.gyro_scale_z * 1e6, n.gyro_scale_z_std * 1e6);
+    s += b;
+  }
   // present once a lag was found and taken off the IMU tags (the line stays short otherwise)
   if (n.imu_tag_lag_s == 0) return;
   std::snprintf(b, sizeof b, ",\"imu_tag_lag_s\":%.4f", n.imu_tag_lag_s);

@@ -233,6 +233,7 @@ void Navigator::ProcessImu(const ImuSample& s) {
     last_nhc_t_ = filter_t_;
     RecordMountAngles();
   }
+  RecordGyroScale();
   if (filter_t_ - last_gnss_fused_t_ > params_.outage_flag_after) {
     status_ |= kStatusDeadReckoning;
   }

@@ -55,8 +55,9 @@ class ErrorStateEkfTest : public ::testing::Test {
     return e.state().p_N_m + e.state().q_NB * e.params().lever_arm_B_m + e.gnss_error();
   }
   Eigen::Vector3d Vel(const ErrorStateEkf& e) const {
-    const Eigen::Vector3d w =
-        raw_w_ - e.gyro_bias();  // the rate the filter used, re-derived from the bias
+    // the rate the filter used, re-derived from the bias and the z gyro's scale
+    Eigen::Vector3d w = raw_w_ - e.gyro_bias();
+    w.z() /= 1.0 + e.gyro_scale_z();
     return e.state().v_N_mps + e.state().q_NB * w.cross(e.params().lever_arm_B_m);
   }
   // the vehicle-frame velocity: the body velocity turned by the mounting angles, C_VB = Exp(μ)ᵀ
@@ -436,12 +437,15 @@ TEST(ErrorStateEkfGnssModelTest, SwitchIsIgnoredWithoutCorrelatedStates) {
 // The classic filter (augmented states off) propagates and updates only P's first 15 states:
 // its other rows and columns stay exact zeros, and one interval equals the dense Φ P Φᵀ + Q
 // written out here from the error dynamics in the header.
-TEST(ErrorStateEkfClassicTest, PropagationEqualsTheDenseProductAndKeepsTheTailZero) {
+// With `gyro_scale_z_std` > 0 the z gyro's scale state is on (the 23-state path): Φ gains its
+// column in the attitude rows, −Ĉẑ·ω_z·dt.
+void CheckPropagationAgainstTheDenseProduct(double gyro_scale_z_std) {
   EkfParams p;
   p.lever_arm_B_m = Eigen::Vector3d(0.3, 0.1, 0.9);
   p.gyro_scale_std = 0.005;
   p.nhc_std_mps = 0.05;
   p.estimate_mount_angles = false;  // the classic states alone (the mounting states are tails)
+  p.gyro_scale_z_std = gyro_scale_z_std;
   EarthModel earth;
   earth.w_IE_N_radps = Eigen::Vector3d(0.0, 6.3e-5, 3.7e-5);
   ErrorStateEkf ekf(p, earth);
@@ -462,7 +466,9 @@ TEST(ErrorStateEkfClassicTest, PropagationEqualsTheDenseProductAndKeepsTheTailZe
   const EkfMatrix P0 = ekf.covariance();
   const Eigen::Matrix3d C = ekf.state().q_NB.toRotationMatrix();
   const Eigen::Vector3d f_N = C * (dv - ekf.accel_bias() * dt) / dt;
-  const double turned_rad = (dth - ekf.gyro_bias() * dt).norm();
+  Eigen::Vector3d dth_used = dth - ekf.gyro_bias() * dt;
+  dth_used.z() /= 1.0 + ekf.gyro_scale_z();
+  const double turned_rad = dth_used.norm();
   ekf.Predict(dth, dv, dt);
   EkfMatrix Phi = EkfMatrix::Identity();
   const Eigen::Matrix3d W = Skew(earth.w_IE_N_radps);
@@ -472,6 +478,7 @@ TEST(ErrorStateEkfClassicTest, PropagationEqualsTheDenseProductAndKeepsTheTailZe
   Phi.block<3, 3>(kVel, kAccelBias) = -C * dt;
   Phi.block<3, 3>(kAtt, kAtt) -= W * dt;
   Phi.block<3, 3>(kAtt, kGyroBias) = -C * dt;
+  Phi.block<3, 1>(kAtt, kGyroScaleZ) = -C.col(2) * dth_used.z();
   EkfMatrix Q = EkfMatrix::Zero();
   for (int i = 0; i < 3; ++i) {
     Q(kVel + i, kVel + i) = p.accel_noise_mps2_rthz * p.accel_noise_mps2_rthz * dt;
@@ -484,8 +491,21 @@ TEST(ErrorStateEkfClassicTest, PropagationEqualsTheDenseProductAndKeepsTheTailZe
   const EkfMatrix& P = ekf.covariance();
   EXPECT_LE((P - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff());
   EXPECT_GT(std::abs(P(kPos, kGyroBias)), 0.0);  // the test saw real cross-covariances
+  if (gyro_scale_z_std > 0) {
+    EXPECT_GT(std::abs(P(kAtt + 2, kGyroScaleZ)), 0.0);  // the scale's heading correlation
+    EXPECT_TRUE(P.middleRows<kGyroScaleZ - kNumClassicStates>(kNumClassicStates).isZero(0.0));
+    return;
+  }
   EXPECT_TRUE(P.bottomRows<kNumStates - kNumClassicStates>().isZero(0.0));
   EXPECT_TRUE(P.rightCols<kNumStates - kNumClassicStates>().isZero(0.0));
+}
+
+TEST(ErrorStateEkfClassicTest, PropagationEqualsTheDenseProductAndKeepsTheTailZero) {
+  CheckPropagationAgainstTheDenseProduct(0.0);
+}
+
+TEST(ErrorStateEkfGyroScaleTest, PropagationEqualsTheDenseProductWithTheZGyroScale) {
+  CheckPropagationAgainstTheDenseProduct(0.005);
 }
 
 }  // namespace

@@ -7,12 +7,19 @@
 /// output: nominal NavState, biases, covariance, NIS of the last update, status flags
 /// @endsystem
 ///
-/// Error state (kNumStates = 22, fixed-size):
+/// Error state (kNumStates = 23, fixed-size):
 ///   δp (N, m) | δv (N, m/s) | φ (attitude error in N, rad; C_true = Exp(φ)·Ĉ) | δb_a (B, m/s²) |
 ///   δb_g (B, rad/s) | e_gnss (N, m: first-order Gauss–Markov GNSS position error, optional) |
 ///   δs (m/s: the vehicle's set speed, a slow random walk, optional) |
 ///   δd (m/s: the forward speed's deviation from the set speed, Gauss–Markov, optional) |
 ///   δμ (rad: pitch and yaw of the vehicle frame V in the IMU frame B, random constants, optional)
+///   | δk_z (dimensionless: the z gyro's scale-factor error, a random constant, optional)
+///
+/// The z gyro's scale factor: the gyro reads ω̃_z = (1 + k_z)·ω_z + b_z, the filter compensates
+/// ω_z = (ω̃_z − b̂_z)/(1 + k̂_z), so φ̇ gains −Ĉ·ẑ·ω_z·δk_z (KF-GINS's gyro scale states, its z
+/// row). A ground vehicle's headland turns (Θ = π each) make it observable: every turn leaves a
+/// heading error k_z·Θ that the fixes show over the next row. The x and y gyros' scales are not
+/// states: a ground vehicle's roll and pitch rates are too small to show them.
 ///
 /// The speed state is the vehicle model of a ground vehicle that holds its speed (cruise control,
 /// constant throttle): the forward body velocity stays within `speed_dev_std_mps` of a set speed
@@ -67,7 +74,8 @@ inline constexpr int kSpeed = 18;
 inline constexpr int kSpeedDev = 19;
 inline constexpr int kMountPitch = 20;  ///< δμ_y: pitch of V in B (rad)
 inline constexpr int kMountYaw = 21;    ///< δμ_z: yaw of V in B (rad)
-inline constexpr int kNumStates = 22;
+inline constexpr int kGyroScaleZ = 22;  ///< δk_z: the z gyro's scale-factor error (fraction)
+inline constexpr int kNumStates = 23;
 }  // namespace ekf_index
 
 using EkfVector = Eigen::Matrix<double, ekf_index::kNumStates, 1>;
@@ -134,6 +142,13 @@ struct EkfParams {
   /// Estimate the mounting pitch and yaw (`[filter] mount_angle_estimation`, on by default):
   /// false holds them at zero (the NHC in the IMU frame, as before).
   bool estimate_mount_angles = true;
+  /// Prior σ of the z gyro's scale-factor error, estimated as a random-constant state (fraction;
+  /// `[filter] gyro_scale_z_std`; 0: not estimated, the gyro's scale taken as exact). 0.005 (our
+  /// choice from data sheets: TDK ICM-42688-P ±0.5 % sensitivity tolerance, Bosch BMI088 ±0.5 %
+  /// gyro sensitivity tolerance; estimator.md, "The z gyro's scale factor"). Unlike
+  /// gyro_scale_std, which only widens the attitude's σ by the angle turned, this state learns
+  /// the scale and corrects the turns with it.
+  double gyro_scale_z_std = 0.005;
 };
 
 /// Health and status bit field.
@@ -267,6 +282,8 @@ class ErrorStateEkf {
   /// The mounting angles (roll, pitch, yaw of V in B, rad; roll stays 0) and whether they are
   /// estimated.
   const Eigen::Vector3d& mount_angles_rad() const { return mount_rad_; }
+  /// The z gyro's estimated scale-factor error k̂_z (fraction; 0 when not estimated).
+  double gyro_scale_z() const { return gyro_scale_z_; }
   bool mount_angles_estimated() const { return MountStatesOn(); }
   /// C_VB, the rotation from the IMU frame into the vehicle frame (identity when off).
   const Eigen::Matrix3d& vehicle_from_imu() const { return C_VB_; }
@@ -290,11 +307,14 @@ class ErrorStateEkf {
   template <int N>
   void PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, double gm_decay,
                              double dev_decay);
-  /// The correlated-GNSS-error, speed-model or mounting-angle states are on: P's last seven rows
+  /// The correlated-GNSS-error, speed-model or mounting-angle states are on: P's last eight rows
   /// may be non-zero.
   bool AugmentedStatesOn() const {
-    return params_.gnss_error_tau_s > 0 || params_.speed_rw_mps_rthz > 0 || MountStatesOn();
+    return params_.gnss_error_tau_s > 0 || params_.speed_rw_mps_rthz > 0 || MountStatesOn() ||
+           GyroScaleStateOn();
   }
+  /// The z gyro's scale factor is estimated.
+  bool GyroScaleStateOn() const { return params_.gyro_scale_z_std > 0; }
   /// The mounting pitch and yaw are estimated (they need the NHC to be observable).
   bool MountStatesOn() const {
     return params_.estimate_mount_angles && params_.nhc_std_mps > 0 &&
@@ -324,6 +344,7 @@ class ErrorStateEkf {
   double speed_dev_ = 0.0;                  // speed model: forward speed minus set speed (m/s)
   Eigen::Vector3d mount_rad_ = Eigen::Vector3d::Zero();  // μ: V in B (roll, pitch, yaw)
   Eigen::Matrix3d C_VB_ = Eigen::Matrix3d::Identity();   // Exp(μ)ᵀ
+  double gyro_scale_z_ = 0.0;                            // k̂_z: the z gyro's scale error
   Eigen::Vector3d w_B_ = Eigen::Vector3d::Zero();        // last compensated angular rate
   Eigen::Vector3d f_N_ = Eigen::Vector3d::Zero();        // last specific force in N
   EkfMatrix P_ = EkfMatrix::Identity();

@@ -246,6 +246,10 @@ struct NavigatorStats {
   /// frame in the IMU frame, rad) and their σ, while they are estimated
   bool mount_estimated = false;
   double mount_pitch_rad = 0, mount_yaw_rad = 0, mount_pitch_std_rad = 0, mount_yaw_std_rad = 0;
+  /// the z gyro's scale-factor error (ErrorStateEkf, kGyroScaleZ: fraction) and its σ, while it
+  /// is estimated
+  bool gyro_scale_z_estimated = false;
+  double gyro_scale_z = 0, gyro_scale_z_std = 0;
 };
 
 /// The solution at one time of validity.
@@ -340,6 +344,8 @@ class Navigator {
   void Record(int source, const UpdateResult& r);
   /// Copies the EKF's mounting-angle estimate into stats_ (aid_sources/mount_angle_control.cc).
   void RecordMountAngles();
+  /// Copies the EKF's z-gyro scale estimate into stats_ (aid_sources/gyro_scale_record.cc).
+  void RecordGyroScale();
   /// Restarts the EKF's position and velocity at a fix (long rejection, or after an IMU loss).
   void ResetToFix(const GnssSample& g, const Eigen::Vector3d& p_antenna_N_m);
   bool UsesImu() const { return estimator::UsesImu(params_.mode); }
