@@ -62,6 +62,7 @@ std::optional<GnssSample> NavPvtToGnssSample(const UbxMessage& m, int leap_s,
   g.geoid_separation_m = m.height_m - m.h_msl_m;
   const double h = std::max(acc.scale * m.h_acc_m / std::numbers::sqrt2, acc.pos_floor_m);
   const double up = std::max(acc.scale * m.v_acc_m, acc.pos_floor_m);
+  g.receiver_h_std_m = m.h_acc_m / std::numbers::sqrt2;
   g.fix_dim = m.gps_fix == 2 ? 2 : 3;
   g.pos_std_enu_m = {h, h, g.fix_dim == 2 ? UbxEpochAssembler::kHeldHeightStd_m : up};
   g.has_velocity = true;
