@@ -156,7 +156,11 @@ bool ReadEkfKey(const ConfigFile& f, const ConfigEntry& e, EkfParams& ekf) {
     ekf.speed_dev_tau_s = ToDouble(f, e, 0.0, 3600.0);
   else if (k == "gate_sigma")
     ekf.gate_sigma = ToDouble(f, e, 1.0, 1000.0);
-  else
+  else if (k == "gnss_float_error_from_receiver") {
+    if (e.value != "true" && e.value != "false")
+      throw ConfigError(f.name(), e.line, FieldName(e), "expected true or false");
+    ekf.gnss_float_error_from_receiver = e.value == "true";
+  } else
     return false;
   return true;
 }

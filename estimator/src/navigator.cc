@@ -314,10 +314,12 @@ void Navigator::ProcessGnss(const GnssSample& g) {
         e.gnss_float_error_tau_s > 0 && e.gnss_float_error_std_m > 0 && g.fix_quality == 5;
     const double dop = g.hdop > 0 ? std::clamp(g.hdop, 0.5, 20.0) : 1.0;
     if (is_float) {
-      // a float solution's error persists over epochs: sized by the receiver's own estimate
-      // when it gives one (NAV-PVT hAcc), never below the configured one
-      ekf_.SetGnssErrorModel(e.gnss_float_error_tau_s,
-                             std::max(e.gnss_float_error_std_m, g.receiver_h_std_m), !gnss_float_);
+      // a float solution's error persists over epochs: optionally sized by the receiver's own
+      // estimate when it gives one (NAV-PVT hAcc), never below the configured one
+      const double float_std_m = e.gnss_float_error_from_receiver
+                                     ? std::max(e.gnss_float_error_std_m, g.receiver_h_std_m)
+                                     : e.gnss_float_error_std_m;
+      ekf_.SetGnssErrorModel(e.gnss_float_error_tau_s, float_std_m, !gnss_float_);
     } else {
       // the height's error scales with the VDOP (GSA), which is often 2-3 × the HDOP: scaled by
       // the HDOP, the tractor rig's fixes at HDOP 2.2 and VDOP 6.3 were modelled at 3.3 cm in

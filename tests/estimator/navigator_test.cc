@@ -290,8 +290,9 @@ TEST(NavigatorTest, HeightErrorModelFollowsTheVdopAndTheReportedSigmaHoldsTheDat
 // fixes 1 m north of it (a new float, its error persisting), each float fix as `float_fix` makes
 // it.
 double NorthErrorAfterAFloatOneMetreOff(
-    const std::function<GnssSample(GpsTime, const Lla&)>& float_fix) {
+    const std::function<GnssSample(GpsTime, const Lla&)>& float_fix, bool float_from_receiver) {
   NavigatorParams p;
+  p.ekf.gnss_float_error_from_receiver = float_from_receiver;
   p.mode = NavMode::kEkf;
   p.ekf.gnss_error_tau_s = 30.0;  // the tractor rig's navd tuning
   p.ekf.gnss_error_std_m = 0.008;
@@ -363,13 +364,16 @@ TEST(NavigatorTest, ANavPvtFloatFixWithHAccOneMetreIsWeightedByIt) {
     g.receiver_h_std_m = 0;
     return g;
   };
-  const double by_hacc_m = NorthErrorAfterAFloatOneMetreOff(pvt);
-  const double by_config_m = NorthErrorAfterAFloatOneMetreOff(gga);
+  const double by_hacc_m = NorthErrorAfterAFloatOneMetreOff(pvt, false);
+  const double by_hacc_model_m = NorthErrorAfterAFloatOneMetreOff(pvt, true);
+  const double by_config_m = NorthErrorAfterAFloatOneMetreOff(gga, false);
   // THEN at the configured σ the float pulls the estimate by decimetres in 8 s (0.14 m measured;
-  // the float error model, 0.2 m, absorbs the rest), weighted by its hAcc by about a centimetre
-  // (1.1 cm measured): its white σ 1.06 m and its float error model sized 0.71 m by hAcc
+  // the float error model, 0.2 m, absorbs the rest), weighted by its hAcc (white σ 1.06 m) by
+  // half that (6.4 cm measured), and with the float error model sized by hAcc too (0.71 m,
+  // gnss_float_error_from_receiver) by about a centimetre (1.1 cm measured)
   EXPECT_GT(by_config_m, 0.10);
-  EXPECT_LT(by_hacc_m, 0.03);
+  EXPECT_LT(by_hacc_m, 0.5 * by_config_m);
+  EXPECT_LT(by_hacc_model_m, 0.03);
 }
 
 }  // namespace
