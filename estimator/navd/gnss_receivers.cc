@@ -13,18 +13,37 @@ GnssReceivers::Receiver::Receiver(const std::string& path, int baud, int index,
         const auto m = nmea_epochs.Add(fix);
         if (!m) return;
         est::GnssSample g = est::drivers::ToGnssSample(*m, leap, acc);
+        if (PvtSupersedes(g.t)) return;  // the same receiver's NAV-PVT holds this epoch
         g.antenna = index;
         h(g);
       }),
-      ubx([this, index, h,
-           ubx_input = cfg.gnss_protocol == "ubx"](const est::drivers::UbxMessage& msg) {
+      ubx([this, index, h, ubx_input = cfg.gnss_protocol == "ubx",
+           pvt_input = cfg.gnss_protocol == "nmea" && cfg.gnss_nav_pvt, leap = cfg.leap_seconds,
+           acc = cfg.ubx_pvt_accuracy](const est::drivers::UbxMessage& msg) {
         setup.OnMessage(msg);
+        if (pvt_input && msg.cls == 0x01 && msg.id == 0x07) {
+          auto g = est::drivers::NavPvtToGnssSample(msg, leap, acc);
+          if (!g) return;
+          last_pvt_t = g->t;
+          g->antenna = index;
+          h(*g);
+        }
         if (!ubx_input) return;
         for (est::GnssSample g : ubx_epochs.Add(msg)) {
           g.antenna = index;
           h(g);
         }
-      }) {}
+      }) {
+  // NMEA and UBX share the line: the UBX decoder frames the stream and passes the rest to NMEA
+  if (cfg.gnss_protocol == "nmea")
+    ubx.SetOtherBytesSink([this](std::string_view b) { nmea.Feed(b); });
+}
+
+bool GnssReceivers::Receiver::PvtSupersedes(est::GpsTime t) const {
+  if (!last_pvt_t) return false;
+  const auto d = t - *last_pvt_t;
+  return d < kPvtHoldover && d > -kPvtHoldover;
+}
 
 GnssReceivers::GnssReceivers(const est::NavdConfig& cfg, Handler handler)
     : ubx_(cfg.gnss_protocol == "ubx") {
@@ -37,12 +56,7 @@ GnssReceivers::GnssReceivers(const est::NavdConfig& cfg, Handler handler)
 
 void GnssReceivers::Feed(std::size_t i, const std::string& bytes) {
   Receiver& r = *rx_[i];
-  if (ubx_) {
-    r.ubx.Feed(bytes);
-  } else {
-    if (r.setup.active()) r.ubx.Feed(bytes);  // the ACKs of the start-up configuration
-    r.nmea.Feed(bytes);
-  }
+  r.ubx.Feed(bytes);  // nmea: the UBX frames (ACKs, NAV-PVT), the rest to the NMEA decoder
   nmea_totals_ = nmea_stats();
   ubx_totals_ = ubx_stats();
 }

@@ -1,14 +1,17 @@
 #pragma once
 /// @file
 /// navd's GNSS input: one or several receivers ([input] gnss_device, gnss_device_1 …), each on its
-/// own serial device with its own decoder (NMEA GGA + RMC, or UBX) and epoch assembler. Every
-/// decoded fix becomes a GnssSample tagged with its receiver index (GnssSample::antenna), on the
-/// filter's GPS time base, and goes to the handler. With `[input] gnss_configure` each receiver is
-/// configured at start-up (and after its port reopens) by its own ReceiverSetup.
+/// own serial device with its own decoder (NMEA GGA + RMC, or UBX) and epoch assembler. In NMEA
+/// mode the UBX decoder frames the line (ACKs, NAV-PVT) and hands the other bytes to the NMEA
+/// decoder; a NAV-PVT fix (gnss_nav_pvt) replaces that receiver's NMEA epochs. Every decoded fix
+/// becomes a GnssSample tagged with its receiver index (GnssSample::antenna), on the filter's GPS
+/// time base, and goes to the handler. With `[input] gnss_configure` each receiver is configured at
+/// start-up (and after its port reopens) by its own ReceiverSetup.
 
 #include <cstddef>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +19,7 @@
 #include "hil/estimator/drivers/nmea_epoch.h"
 #include "hil/estimator/drivers/nmea_gnss_sample.h"
 #include "hil/estimator/drivers/ubx_decoder.h"
+#include "hil/estimator/drivers/ubx_nav_pvt_sample.h"
 #include "hil/estimator/navd/navd_config.h"
 #include "hil/estimator/samples.h"
 
@@ -61,7 +65,15 @@ class GnssReceivers {
     estimator::drivers::NmeaDecoder nmea;
     estimator::drivers::UbxEpochAssembler ubx_epochs;
     estimator::drivers::UbxDecoder ubx;
+    /// GPS time of this receiver's last NAV-PVT fix (NMEA mode with gnss_nav_pvt)
+    std::optional<estimator::GpsTime> last_pvt_t;
+    /// An NMEA epoch at `t` is dropped while a NAV-PVT came within kPvtHoldover of it: one fix
+    /// per epoch from one receiver, NAV-PVT's (it carries the receiver's accuracy, GGA none).
+    bool PvtSupersedes(estimator::GpsTime t) const;
   };
+  /// 2 s: ten epochs at 5 Hz, two at 1 Hz; a receiver whose NAV-PVT output stops is read from its
+  /// NMEA again after this.
+  static constexpr estimator::Nanoseconds kPvtHoldover{2'000'000'000};
   bool ubx_ = false;
   std::vector<std::unique_ptr<Receiver>> rx_;
   estimator::drivers::NmeaDecoderStats nmea_totals_;

@@ -93,6 +93,10 @@ bool ReadInputKey(const ConfigFile& f, const ConfigEntry& e, NavdConfig& c) {
     if (e.value != "true" && e.value != "false")
       throw ConfigError(f.name(), e.line, FieldName(e), "expected true or false");
     c.gnss_configure = e.value == "true";
+  } else if (k == "gnss_nav_pvt") {
+    if (e.value != "true" && e.value != "false")
+      throw ConfigError(f.name(), e.line, FieldName(e), "expected true or false");
+    c.gnss_nav_pvt = e.value == "true";
   } else if (k == "gnss_rate_hz")
     c.gnss_rate_hz = ToDouble(f, e, 0.0, 10.0);
   else if (k == "merge_window_s")
@@ -163,6 +167,10 @@ bool ReadEkfKey(const ConfigFile& f, const ConfigEntry& e, EkfParams& ekf) {
     if (e.value != "true" && e.value != "false")
       throw ConfigError(f.name(), e.line, FieldName(e), "expected true or false");
     ekf.estimate_mount_angles = e.value == "true";
+  } else if (k == "gnss_float_error_from_receiver") {
+    if (e.value != "true" && e.value != "false")
+      throw ConfigError(f.name(), e.line, FieldName(e), "expected true or false");
+    ekf.gnss_float_error_from_receiver = e.value == "true";
   } else
     return false;
   return true;
@@ -182,6 +190,12 @@ bool ReadFilterKey(const ConfigFile& f, const ConfigEntry& e, NavdConfig& c, int
     c.nmea_rtk_float_std_m = ToDouble(f, e, 0.001, 100.0);
   else if (k == "nmea_velocity_std_mps")
     c.nmea_velocity_std_mps = ToDouble(f, e, 0.001, 10.0);
+  else if (k == "ubx_acc_scale")
+    c.ubx_pvt_accuracy.scale = ToDouble(f, e, 0.1, 100.0);
+  else if (k == "ubx_pos_std_floor_m")
+    c.ubx_pvt_accuracy.pos_floor_m = ToDouble(f, e, 0.0, 100.0);
+  else if (k == "ubx_vel_std_floor_mps")
+    c.ubx_pvt_accuracy.vel_floor_mps = ToDouble(f, e, 0.0, 10.0);
   else if (k == "mode") {
     const auto m = NavModeFromName(e.value.c_str());
     if (!m)

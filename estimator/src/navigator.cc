@@ -285,6 +285,38 @@ void Navigator::InitializeAt(GpsTime t, const Lla& body_position, const Eigen::V
   have_imu_ = true;
 }
 
+// The correlated GNSS error model of the fix's kind (RTK float or not) and geometry.
+void Navigator::SelectGnssErrorModel(const GnssSample& g) {
+  if (!(params_.ekf.gnss_error_tau_s > 0)) return;
+  // RTK float and fixed solutions carry different correlated errors (GGA quality 5 = float);
+  // the receiver's own error scales with its HDOP when the fix reports one
+  const auto& e = params_.ekf;
+  const bool is_float =
+      e.gnss_float_error_tau_s > 0 && e.gnss_float_error_std_m > 0 && g.fix_quality == 5;
+  const double dop = g.hdop > 0 ? std::clamp(g.hdop, 0.5, 20.0) : 1.0;
+  if (is_float) {
+    // a float solution's error persists over epochs: optionally sized by the receiver's own
+    // estimate when it gives one (NAV-PVT hAcc), never below the configured one
+    const double float_std_m = e.gnss_float_error_from_receiver
+                                   ? std::max(e.gnss_float_error_std_m, g.receiver_h_std_m)
+                                   : e.gnss_float_error_std_m;
+    ekf_.SetGnssErrorModel(e.gnss_float_error_tau_s, float_std_m, !gnss_float_);
+  } else {
+    // the height's error scales with the VDOP (GSA), which is often 2-3 × the HDOP: scaled by
+    // the HDOP, the tractor rig's fixes at HDOP 2.2 and VDOP 6.3 were modelled at 3.3 cm in
+    // height where their error was 5.9 cm (mean vertical NEES 4.8)
+    const double vertical_scale = g.vdop > 0 && e.gnss_error_vdop_ref > 0
+                                      ? std::clamp(g.vdop, 0.5, 30.0) / e.gnss_error_vdop_ref
+                                      : dop;
+    const double vertical_std_m =
+        (e.gnss_error_vertical_std_m > 0 ? e.gnss_error_vertical_std_m : e.gnss_error_std_m) *
+        vertical_scale;
+    ekf_.SetGnssErrorModel(e.gnss_error_tau_s, e.gnss_error_std_m * dop, vertical_std_m,
+                           gnss_float_);
+  }
+  gnss_float_ = is_float;
+}
+
 void Navigator::ProcessGnss(const GnssSample& g) {
   if (!aligned_) {
     TryAlign(g);
@@ -308,30 +340,7 @@ void Navigator::ProcessGnss(const GnssSample& g) {
     status_ = (status_ | kStatusGnssFused) & ~kStatusDeadReckoning;
     return;
   }
-  if (params_.ekf.gnss_error_tau_s > 0) {
-    // RTK float and fixed solutions carry different correlated errors (GGA quality 5 = float);
-    // the receiver's own error scales with its HDOP when the fix reports one
-    const auto& e = params_.ekf;
-    const bool is_float =
-        e.gnss_float_error_tau_s > 0 && e.gnss_float_error_std_m > 0 && g.fix_quality == 5;
-    const double dop = g.hdop > 0 ? std::clamp(g.hdop, 0.5, 20.0) : 1.0;
-    if (is_float) {
-      ekf_.SetGnssErrorModel(e.gnss_float_error_tau_s, e.gnss_float_error_std_m, !gnss_float_);
-    } else {
-      // the height's error scales with the VDOP (GSA), which is often 2-3 × the HDOP: scaled by
-      // the HDOP, the tractor rig's fixes at HDOP 2.2 and VDOP 6.3 were modelled at 3.3 cm in
-      // height where their error was 5.9 cm (mean vertical NEES 4.8)
-      const double vertical_scale = g.vdop > 0 && e.gnss_error_vdop_ref > 0
-                                        ? std::clamp(g.vdop, 0.5, 30.0) / e.gnss_error_vdop_ref
-                                        : dop;
-      const double vertical_std_m =
-          (e.gnss_error_vertical_std_m > 0 ? e.gnss_error_vertical_std_m : e.gnss_error_std_m) *
-          vertical_scale;
-      ekf_.SetGnssErrorModel(e.gnss_error_tau_s, e.gnss_error_std_m * dop, vertical_std_m,
-                             gnss_float_);
-    }
-    gnss_float_ = is_float;
-  }
+  SelectGnssErrorModel(g);
   if (g.has_velocity) {
     last_gnss_vel_t_ = g.t;
     last_gnss_speed_mps_ = g.vel_enu_mps.head<2>().norm();

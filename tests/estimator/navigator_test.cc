@@ -2,9 +2,13 @@
 // out-of-order inputs, bad input.
 #include "hil/estimator/navigator.h"
 
+#include <chrono>
 #include <cmath>
+#include <functional>
 
 #include <gtest/gtest.h>
+
+#include "hil/estimator/drivers/ubx_nav_pvt_sample.h"
 
 namespace hil::estimator {
 namespace {
@@ -280,6 +284,96 @@ TEST(NavigatorTest, HeightErrorModelFollowsTheVdopAndTheReportedSigmaHoldsTheDat
   const double p_up_var = P(ekf_index::kPos + 2, ekf_index::kPos + 2);
   EXPECT_NEAR(o.pos_std_enu_m.z(), std::sqrt(p_up_var + datum_std_m * datum_std_m), 1e-12);
   EXPECT_NEAR(o.pos_std_enu_m.x(), std::sqrt(P(ekf_index::kPos, ekf_index::kPos)), 1e-12);
+}
+
+// The navigator's north error after 20 s of RTK fixed fixes on the truth and then 8 s of RTK float
+// fixes 1 m north of it (a new float, its error persisting), each float fix as `float_fix` makes
+// it.
+double NorthErrorAfterAFloatOneMetreOff(
+    const std::function<GnssSample(GpsTime, const Lla&)>& float_fix, bool float_from_receiver) {
+  NavigatorParams p;
+  p.ekf.gnss_float_error_from_receiver = float_from_receiver;
+  p.mode = NavMode::kEkf;
+  p.ekf.gnss_error_tau_s = 30.0;  // the tractor rig's navd tuning
+  p.ekf.gnss_error_std_m = 0.008;
+  p.ekf.gnss_float_error_tau_s = 5.0;
+  p.ekf.gnss_float_error_std_m = 0.2;
+  Navigator nav(p);
+  const Lla origin{45.75, 126.63, 150.0};
+  const LocalTangentFrame frame(origin);
+  const double g0 = NormalGravity(origin.lat_deg, origin.height_m);
+  constexpr Nanoseconds kMs = 1ms;
+  const GpsTime t_float = kT0 + 20'000 * kMs;
+  for (GpsTime t = kT0 + 10 * kMs; t <= kT0 + 28'000 * kMs; t += 10 * kMs) {
+    ImuSample s;
+    s.t = t;
+    s.dt_s = 0.01;
+    s.delta_velocity_B_mps = Eigen::Vector3d(0, 0, g0 * 0.01);
+    nav.Push(s);
+    if ((t - kT0) % (200 * kMs) == 0ns) {  // 5 Hz, driving east at 1 m/s
+      const double e_m = static_cast<double>((t - kT0).count()) * 1e-9;
+      GnssSample g;
+      if (t < t_float) {
+        g.t = t;
+        g.position = frame.ToLla(Eigen::Vector3d(e_m, 0, 0));
+        g.pos_std_enu_m = Eigen::Vector3d(0.01, 0.01, 0.02);
+        g.fix_quality = 4;
+        g.has_velocity = true;
+        g.vel_enu_mps = Eigen::Vector3d(1, 0, 0);
+        g.vel_std_enu_mps = Eigen::Vector3d::Constant(0.05);
+      } else {
+        g = float_fix(t, frame.ToLla(Eigen::Vector3d(e_m, 1.0, 0)));
+      }
+      nav.Push(g);
+    }
+    nav.Update();
+  }
+  EXPECT_TRUE(nav.aligned());
+  return frame.ToLocal(nav.Output().position).y();
+}
+
+TEST(NavigatorTest, ANavPvtFloatFixWithHAccOneMetreIsWeightedByIt) {
+  // GIVEN the float fixes as NAV-PVT gives them: carrSoln 1, hAcc 1 m, vAcc 2 m, sAcc 5 cm/s
+  const auto pvt = [](GpsTime t, const Lla& at) {
+    drivers::UbxMessage m;
+    m.cls = 0x01, m.id = 0x07;
+    m.flags = 0x01 | 0x02 | (1 << 6);
+    m.gps_fix = 3;
+    m.utc_valid = 0x07;
+    const std::int64_t unix_s = UnixNsFromGpsTime(t, 18) / kNsPerSecond;
+    const std::int64_t day_s = unix_s % 86400, days = unix_s / 86400;
+    const std::chrono::year_month_day ymd{std::chrono::sys_days{std::chrono::days{days}}};
+    m.year = static_cast<int>(ymd.year()), m.month = static_cast<int>(unsigned(ymd.month()));
+    m.day = static_cast<int>(unsigned(ymd.day()));
+    m.hour = static_cast<int>(day_s / 3600), m.minute = static_cast<int>(day_s / 60 % 60);
+    m.second = static_cast<int>(day_s % 60);
+    m.utc_nano_ns = static_cast<std::int32_t>(UnixNsFromGpsTime(t, 18) % kNsPerSecond);
+    m.itow_ms = static_cast<std::uint32_t>(ToNs(t) / 1'000'000 % (kSecondsPerGpsWeek * 1000));
+    m.lat_deg = at.lat_deg, m.lon_deg = at.lon_deg, m.height_m = at.height_m;
+    m.h_msl_m = at.height_m;
+    m.h_acc_m = 1.0, m.v_acc_m = 2.0;
+    m.vel_e_mps = 1.0, m.s_acc_mps = 0.05;
+    const auto g = drivers::NavPvtToGnssSample(m, 18, {});
+    EXPECT_TRUE(g && g->t == t && g->fix_quality == 5);
+    return g.value_or(GnssSample{});
+  };
+  // AND the same fixes as a GGA quality 5 gives them, with a configured float σ of 2 cm
+  const auto gga = [&pvt](GpsTime t, const Lla& at) {
+    GnssSample g = pvt(t, at);
+    g.pos_std_enu_m = Eigen::Vector3d(0.02, 0.02, 0.04);
+    g.receiver_h_std_m = 0;
+    return g;
+  };
+  const double by_hacc_m = NorthErrorAfterAFloatOneMetreOff(pvt, false);
+  const double by_hacc_model_m = NorthErrorAfterAFloatOneMetreOff(pvt, true);
+  const double by_config_m = NorthErrorAfterAFloatOneMetreOff(gga, false);
+  // THEN at the configured σ the float pulls the estimate by decimetres in 8 s (0.14 m measured;
+  // the float error model, 0.2 m, absorbs the rest), weighted by its hAcc (white σ 1.06 m) by
+  // half that (6.4 cm measured), and with the float error model sized by hAcc too (0.71 m,
+  // gnss_float_error_from_receiver) by about a centimetre (1.1 cm measured)
+  EXPECT_GT(by_config_m, 0.10);
+  EXPECT_LT(by_hacc_m, 0.5 * by_config_m);
+  EXPECT_LT(by_hacc_model_m, 0.03);
 }
 
 }  // namespace

@@ -83,6 +83,31 @@ constexpr Entry kTable[] = {
        m.leap_s = static_cast<std::int8_t>(U1(p + 10));
        m.flags = U1(p + 11);
      }},
+    {0x01, 0x07, 92,  // NAV-PVT (protocol 27+): offsets of the u-blox 9 interface description
+     [](const char* p, UbxMessage& m) {
+       m.itow_ms = U4(p);
+       m.year = U2(p + 4), m.month = U1(p + 6), m.day = U1(p + 7);
+       m.hour = U1(p + 8), m.minute = U1(p + 9), m.second = U1(p + 10);
+       m.utc_valid = U1(p + 11);
+       m.utc_nano_ns = I4(p + 16);
+       m.gps_fix = U1(p + 20);
+       m.flags = U1(p + 21);
+       m.num_sv = U1(p + 23);
+       m.lon_deg = I4(p + 24) * 1e-7;
+       m.lat_deg = I4(p + 28) * 1e-7;
+       m.height_m = I4(p + 32) * 1e-3;
+       m.h_msl_m = I4(p + 36) * 1e-3;
+       m.h_acc_m = U4(p + 40) * 1e-3;
+       m.v_acc_m = U4(p + 44) * 1e-3;
+       m.vel_n_mps = I4(p + 48) * 1e-3;
+       m.vel_e_mps = I4(p + 52) * 1e-3;
+       m.vel_d_mps = I4(p + 56) * 1e-3;
+       m.g_speed_mps = I4(p + 60) * 1e-3;
+       m.head_mot_deg = I4(p + 64) * 1e-5;
+       m.s_acc_mps = U4(p + 68) * 1e-3;
+       m.pdop = U2(p + 76) * 0.01;
+       m.flags3 = U2(p + 78);
+     }},
     {0x01, 0x21, 20, [](const char* p, UbxMessage& m) { m.itow_ms = U4(p); }},
     {0x05, 0x01, 2, [](const char* p, UbxMessage& m) { m.ack_cls = U1(p), m.ack_id = U1(p + 1); }},
     {0x05, 0x00, 2, [](const char* p, UbxMessage& m) { m.ack_cls = U1(p), m.ack_id = U1(p + 1); }},
@@ -109,26 +134,41 @@ std::size_t UbxDecoder::Encode(std::uint8_t cls, std::uint8_t id, std::string_vi
 }
 
 void UbxDecoder::Feed(std::string_view bytes) {
-  for (char c : bytes) {
-    buf_[len_++] = c;
+  while (!bytes.empty()) {
+    if (len_ == 0 && other_) {  // outside a frame: the run up to the next sync byte is not UBX
+      const std::size_t run = std::min(bytes.find('\xB5'), bytes.size());
+      if (run > 0) {
+        other_(bytes.substr(0, run));
+        bytes.remove_prefix(run);
+        continue;
+      }
+    }
+    buf_[len_++] = bytes.front();
+    bytes.remove_prefix(1);
     Scan();
   }
+}
+
+void UbxDecoder::Skip(std::size_t n, bool garbage) {
+  if (other_) {
+    other_(std::string_view(buf_.data(), n));
+  } else if (garbage) {
+    stats_.garbage_bytes += n;
+  }
+  std::memmove(buf_.data(), buf_.data() + n, len_ - n);
+  len_ -= n;
 }
 
 void UbxDecoder::Scan() {
   for (;;) {
     std::size_t i = 0;
     while (i < len_ && !(U1(&buf_[i]) == 0xB5 && (i + 1 == len_ || U1(&buf_[i + 1]) == 0x62))) ++i;
-    if (i > 0) {
-      stats_.garbage_bytes += i;
-      std::memmove(buf_.data(), buf_.data() + i, len_ - i);
-      len_ -= i;
-    }
+    if (i > 0) Skip(i);
     if (len_ < 6) return;
     const std::size_t n = U2(&buf_[4]);
     if (n > kMaxPayload) {
       ++stats_.overlong;
-      std::memmove(buf_.data(), buf_.data() + 1, --len_);
+      Skip(1, false);
       continue;
     }
     if (len_ < n + 8) return;
@@ -136,7 +176,7 @@ void UbxDecoder::Scan() {
     Fletcher(&buf_[2], n + 4, a, b);
     if (a != U1(&buf_[n + 6]) || b != U1(&buf_[n + 7])) {
       ++stats_.bad_checksum;
-      std::memmove(buf_.data(), buf_.data() + 1, --len_);
+      Skip(1, false);
       continue;
     }
     Dispatch(buf_.data(), n);

@@ -120,6 +120,12 @@ struct EkfParams {
   /// filter switches to this model while fixes are float (0 = same model as fixed fixes).
   double gnss_float_error_tau_s = 0.0;
   double gnss_float_error_std_m = 0.0;
+  /// Size the float model by the receiver's own horizontal σ (NAV-PVT hAcc / √2) when it is
+  /// larger than gnss_float_error_std_m ([filter] gnss_float_error_from_receiver). Off by default:
+  /// measured on the emulated F9P (vectors/scenarios/README.md "RTK rover") it halves navd's error
+  /// in a float after a fixed phase (a calibrated INS) but lets an uncalibrated INS drift during a
+  /// first float (rtk_f9p_base_20km: 0.64 m against the raw fixes' 0.47 m).
+  bool gnss_float_error_from_receiver = false;
   double gnss_pos_std_floor_m = 0.005;  ///< lower bound on the white GNSS position σ
   double gnss_vel_std_floor_mps = 0.01;
   double nhc_std_mps = 0.0;         ///< non-holonomic constraint σ (0 = off)

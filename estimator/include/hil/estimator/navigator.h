@@ -312,6 +312,7 @@ class Navigator {
  private:
   void ProcessImu(const ImuSample& s);
   void ProcessGnss(const GnssSample& g);
+  void SelectGnssErrorModel(const GnssSample& g);
   void TryAlign(const GnssSample& g);
   void EnsureFrame(const Lla& origin);
   void GnssOnlyFix(const GnssSample& g);

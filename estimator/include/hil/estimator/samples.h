@@ -49,6 +49,10 @@ struct GnssSample {
   /// adds its variance to the reported height σ.
   double height_datum_std_m = 0;
   int antenna = 0;  ///< receiver index (multi-receiver)
+  /// The receiver's own horizontal 1σ per axis when it reports one (UBX NAV-PVT hAcc / √2, before
+  /// navd's scale and floor); 0: not reported (NMEA). An RTK float solution's error is correlated
+  /// over many epochs: the navigator sizes its float error model by it.
+  double receiver_h_std_m = 0;
 };
 
 /// A magnetometer heading (already tilt-compensated and declination-corrected).

@@ -5,7 +5,11 @@
 /// class..payload. Bytes may come in any pieces, mixed with NMEA or garbage; bad checksums and
 /// overlong lengths are counted and the search restarts one byte after the B5. Never throws.
 /// Messages: NAV-POSLLH (01 02), NAV-DOP (01 04), NAV-SOL (01 06), NAV-VELNED (01 12),
-/// NAV-TIMEGPS (01 20), NAV-TIMEUTC (01 21), ACK-ACK (05 01), ACK-NAK (05 00).
+/// NAV-TIMEGPS (01 20), NAV-TIMEUTC (01 21), ACK-ACK (05 01), ACK-NAK (05 00); and the u-blox 8/9
+/// (protocol 27+) NAV-PVT (01 07, 92 bytes). Valid frames of other messages are counted as
+/// `unsupported`, never as garbage. With an other-bytes sink (SetOtherBytesSink) the decoder is the
+/// framer of a mixed UBX + NMEA stream: the bytes outside valid UBX frames go, in order, to the
+/// sink (e.g. an NmeaDecoder) instead of being counted as garbage here.
 
 #include <array>
 #include <cstdint>
@@ -36,7 +40,19 @@ struct UbxMessage {
   double pdop = 0, hdop = 0, vdop = 0;
   // ACK
   std::uint8_t ack_cls = 0, ack_id = 0;
+  // NAV-PVT (also sets itow_ms, gps_fix = fixType, flags, num_sv, lat/lon/height/h_msl, h_acc_m,
+  // v_acc_m, vel_*_mps, s_acc_mps, pdop)
+  std::uint8_t utc_valid = 0;  ///< valid: b0 validDate, b1 validTime, b2 fullyResolved
+  int year = 0, month = 0, day = 0, hour = 0, minute = 0, second = 0;
+  std::int32_t utc_nano_ns = 0;  ///< nano: fraction of the UTC second, −5e8 … 1e9
+  double g_speed_mps = 0, head_mot_deg = 0;
+  std::uint16_t flags3 = 0;  ///< b0 invalidLlh, b1–4 lastCorrectionAge
 };
+
+/// NAV-PVT flags: gnssFixOK (b0), diffSoln (b1), carrSoln (b6–7: 0 none, 1 float, 2 fixed).
+inline bool PvtGnssFixOk(const UbxMessage& m) { return (m.flags & 0x01) != 0; }
+inline bool PvtDiffSoln(const UbxMessage& m) { return (m.flags & 0x02) != 0; }
+inline int PvtCarrSoln(const UbxMessage& m) { return (m.flags >> 6) & 0x03; }
 
 struct UbxDecoderStats {
   std::uint64_t frames_ok = 0, bad_checksum = 0, overlong = 0, unsupported = 0, garbage_bytes = 0,
@@ -49,6 +65,8 @@ class UbxDecoder {
   explicit UbxDecoder(Handler h) : handler_(std::move(h)) {}
   void Feed(std::string_view bytes);
   const UbxDecoderStats& stats() const { return stats_; }
+  /// Bytes outside valid UBX frames go here, in stream order, instead of counting as garbage.
+  void SetOtherBytesSink(std::function<void(std::string_view)> sink) { other_ = std::move(sink); }
   /// Builds a frame (sync, header, payload, checksum), e.g. for CFG commands.
   static std::size_t Encode(std::uint8_t cls, std::uint8_t id, std::string_view payload, char* out,
                             std::size_t cap);
@@ -56,8 +74,12 @@ class UbxDecoder {
  private:
   void Scan();
   void Dispatch(const char* frame, std::size_t len);
+  // Drops the buffer's first n bytes: to the sink if any, else counted as garbage if `garbage`
+  // (the sync byte of a frame that failed its checksum or length is counted there instead).
+  void Skip(std::size_t n, bool garbage = true);
   static constexpr std::size_t kMaxPayload = 1024;
   Handler handler_;
+  std::function<void(std::string_view)> other_;
   UbxDecoderStats stats_;
   std::array<char, kMaxPayload + 8> buf_{};
   std::size_t len_ = 0;

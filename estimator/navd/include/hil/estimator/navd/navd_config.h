@@ -7,6 +7,7 @@
 #include <string>
 
 #include "hil/estimator/drivers/nmea_accuracy.h"
+#include "hil/estimator/drivers/ubx_nav_pvt_sample.h"
 #include "hil/estimator/navd/config_file.h"
 #include "hil/estimator/navd/navd_gnss_receivers.h"
 #include "hil/estimator/navd/navd_imu_config.h"
@@ -36,6 +37,12 @@ struct NavdConfig {
   double nmea_rtk_float_std_m =
       0.0;  ///< [filter] 1σ per horizontal axis of RTK float fixes (0: UERE)
   double nmea_velocity_std_mps = 0.2;  ///< [filter] 1σ per horizontal axis of the RMC velocity
+  /// [input] gnss_nav_pvt: on an NMEA receiver's line, fuse the UBX NAV-PVT it also sends (its own
+  /// hAcc/vAcc/sAcc and carrSoln) in place of its GGA/RMC; the NMEA epochs resume 2 s after the
+  /// last NAV-PVT. UBX frames on the line are framed out of the NMEA stream either way.
+  bool gnss_nav_pvt = true;
+  /// [filter] ubx_acc_scale, ubx_pos_std_floor_m, ubx_vel_std_floor_mps (ubx_nav_pvt_sample.h)
+  drivers::UbxPvtAccuracy ubx_pvt_accuracy;
   /// The NMEA accuracy settings together.
   NmeaAccuracy nmea_accuracy() const {
     return {nmea_uere_m, nmea_rtk_fixed_std_m, nmea_rtk_float_std_m, nmea_velocity_std_mps};
