@@ -91,6 +91,7 @@ void PrintUsage() {
       "                  nmea_uere_m, nmea_rtk_fixed_std_m, nmea_rtk_float_std_m, "
       "nmea_velocity_std_mps,\n"
       "                  ubx_acc_scale, ubx_pos_std_floor_m, ubx_vel_std_floor_mps,\n"
+      "                  ubx_float_up_std_max_m,\n"
       "                  gnss_float_error_from_receiver (true|false),\n"
       "                  gnss_float_error_tau_s, gnss_float_error_std_m, "
       "gnss_error_vertical_std_m,\n"

@@ -196,6 +196,8 @@ bool ReadFilterKey(const ConfigFile& f, const ConfigEntry& e, NavdConfig& c, int
     c.ubx_pvt_accuracy.pos_floor_m = ToDouble(f, e, 0.0, 100.0);
   else if (k == "ubx_vel_std_floor_mps")
     c.ubx_pvt_accuracy.vel_floor_mps = ToDouble(f, e, 0.0, 10.0);
+  else if (k == "ubx_float_up_std_max_m")
+    c.ubx_pvt_accuracy.float_up_max_std_m = ToDouble(f, e, 0.001, 100.0);
   else if (k == "mode") {
     const auto m = NavModeFromName(e.value.c_str());
     if (!m)

@@ -61,7 +61,9 @@ std::optional<GnssSample> NavPvtToGnssSample(const UbxMessage& m, int leap_s,
   g.position = {m.lat_deg, m.lon_deg, m.height_m};
   g.geoid_separation_m = m.height_m - m.h_msl_m;
   const double h = std::max(acc.scale * m.h_acc_m / std::numbers::sqrt2, acc.pos_floor_m);
-  const double up = std::max(acc.scale * m.v_acc_m, acc.pos_floor_m);
+  double up = std::max(acc.scale * m.v_acc_m, acc.pos_floor_m);
+  if (NavPvtFixQuality(m) == 5)
+    up = std::max(std::min(up, acc.float_up_max_std_m), acc.pos_floor_m);
   g.receiver_h_std_m = m.h_acc_m / std::numbers::sqrt2;
   g.fix_dim = m.gps_fix == 2 ? 2 : 3;
   g.pos_std_enu_m = {h, h, g.fix_dim == 2 ? UbxEpochAssembler::kHeldHeightStd_m : up};

@@ -95,9 +95,10 @@ TEST(NavdNavPvtInput, FloatFixWeightedByItsHAccNotTheConfiguredSigma) {
   for (std::size_t i = 1; i < r.samples.size(); ++i) {
     const est::GnssSample& g = r.samples[i];
     EXPECT_EQ(g.fix_quality, 5);
-    // 1.5 (ubx_acc_scale) × hAcc 1 m / √2 per axis; vertical 1.5 × vAcc 2 m
+    // 1.5 (ubx_acc_scale) × hAcc 1 m / √2 per axis; vertical 1.5 × vAcc 2 m held to the float
+    // ceiling, 0.3 m (ubx_float_up_std_max_m)
     EXPECT_NEAR(g.pos_std_enu_m.x(), 1.5 / std::numbers::sqrt2, 1e-9);
-    EXPECT_NEAR(g.pos_std_enu_m.z(), 3.0, 1e-9);
+    EXPECT_NEAR(g.pos_std_enu_m.z(), 0.3, 1e-9);
     EXPECT_NEAR(g.vel_std_enu_mps.x(), 0.075, 1e-9);  // 1.5 × sAcc 5 cm/s
     EXPECT_FALSE(g.vel_std_configured);
     EXPECT_NEAR(g.vel_enu_mps.y(), 1.0, 1e-9);
@@ -110,6 +111,18 @@ TEST(NavdNavPvtInput, FloatFixWeightedByItsHAccNotTheConfiguredSigma) {
   EXPECT_EQ(r.nmea.garbage_bytes, 0U);
   EXPECT_EQ(r.nmea.malformed, 0U);
   EXPECT_EQ(r.nmea.sentences_ok, 20U);
+}
+
+// a float fix's vAcc left unaided the height for the float's seconds and biased navd's roll for
+// the fixed RTK after it (rtk_f9p_radio_loss): its vertical σ has a ceiling, configurable
+TEST(NavdNavPvtInput, FloatFixVerticalSigmaHeldToItsConfiguredCeiling) {
+  const LineRun wide = ReadLine("[filter]\nubx_float_up_std_max_m = 5\n");
+  const LineRun tight = ReadLine("[filter]\nubx_float_up_std_max_m = 0.1\n");
+  ASSERT_EQ(wide.samples.size(), 11U);
+  ASSERT_EQ(tight.samples.size(), 11U);
+  EXPECT_NEAR(wide.samples[5].pos_std_enu_m.z(), 3.0, 1e-9);  // 1.5 × vAcc 2 m, below 5 m
+  EXPECT_NEAR(tight.samples[5].pos_std_enu_m.z(), 0.1, 1e-9);
+  EXPECT_NEAR(tight.samples[5].pos_std_enu_m.x(), 1.5 / std::numbers::sqrt2, 1e-9);  // as before
 }
 
 TEST(NavdNavPvtInput, WithoutNavPvtTheGgaIsFusedAndTheUbxIsStillNoGarbage) {

@@ -27,6 +27,14 @@ struct UbxPvtAccuracy {
   /// NAV-PVT comes at).
   double pos_floor_m = 0.01;
   double vel_floor_mps = 0.02;
+  /// Ceiling on an RTK float fix's vertical 1σ ([filter] ubx_float_up_std_max_m): 0.3 m, our
+  /// choice. The emulated F9P's float vAcc (1.0-1.5 m, × scale: 1.5-2.2 m) overstates its height
+  /// error (0.2-0.56 m measured on rtk_f9p_radio_loss, seed 44); at that σ the float's ~10 s leave
+  /// the height unaided and navd's roll drifts 0.10° -> 0.19°, a bias that no fixed fix on a
+  /// straight row corrects (2.8 m antenna height: +0.4 cm east, fused/raw 1.58 -> 2.03). GGA's
+  /// float σ is 2 × nmea_rtk_float_std_m plus the correlated float model, a few cm. 0.3 m: above
+  /// the largest measured float height error; any ceiling 0.01-0.3 m gives the same figures.
+  double float_up_max_std_m = 0.3;
 };
 
 /// GGA-style fix quality of a NAV-PVT (4 fixed, 5 float, 2 DGNSS, 1 GNSS).

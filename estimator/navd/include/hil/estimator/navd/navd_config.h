@@ -41,7 +41,8 @@ struct NavdConfig {
   /// hAcc/vAcc/sAcc and carrSoln) in place of its GGA/RMC; the NMEA epochs resume 2 s after the
   /// last NAV-PVT. UBX frames on the line are framed out of the NMEA stream either way.
   bool gnss_nav_pvt = true;
-  /// [filter] ubx_acc_scale, ubx_pos_std_floor_m, ubx_vel_std_floor_mps (ubx_nav_pvt_sample.h)
+  /// [filter] ubx_acc_scale, ubx_pos_std_floor_m, ubx_vel_std_floor_mps, ubx_float_up_std_max_m
+  /// (ubx_nav_pvt_sample.h)
   drivers::UbxPvtAccuracy ubx_pvt_accuracy;
   /// The NMEA accuracy settings together.
   NmeaAccuracy nmea_accuracy() const {
