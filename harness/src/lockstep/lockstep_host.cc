@@ -17,6 +17,7 @@
 #include <sys/mman.h>
 #include <sys/syscall.h>
 
+#include "hil/harness/lockstep/lockstep_advance.h"
 #include "hil/harness/lockstep/lockstep_shared.h"
 
 namespace hil::harness::lockstep {
@@ -131,18 +132,26 @@ bool LockstepHost::TakeHostWrites() {
 }
 
 bool LockstepHost::WaitIdle(const WaitStep& on_wait) {
-  if (Idle()) return true;
+  return WaitUntil(
+      on_wait, [this] { return Idle(); }, false);
+}
+
+bool LockstepHost::WaitUntil(const WaitStep& on_wait, const std::function<bool()>& done,
+                             bool move_clock_when_idle) {
+  if (done()) return true;
   const WallTime start = WallNow();
   WallTime next_step = start + kStep;
   bool new_wait = true;
   shared_->hil_waiting.store(1);
-  bool idle = false;
-  while (!idle) {
+  bool reached = false;
+  while (!reached) {
     const std::uint32_t seen = shared_->host_wake.load();
-    if (Idle()) {
-      idle = true;
+    if (done()) {
+      reached = true;
       break;
     }
+    // idle, and no thread moved the clock (one ended, or its move is under way): hil does
+    if (move_clock_when_idle && AllSlotsIdle(*shared_)) MoveClock();
     // sleeps until a thread waits or acknowledges (or the step's time has come)
     const timespec step{0, static_cast<long>(kStep.count())};
     ++stats_.slept;
@@ -157,7 +166,7 @@ bool LockstepHost::WaitIdle(const WaitStep& on_wait) {
   }
   shared_->hil_waiting.store(0);
   stats_.wait += WallNow() - start;
-  return idle;
+  return reached;
 }
 
 bool LockstepHost::Concerns(int i, Time t, std::uint64_t touched) const {

@@ -1,12 +1,5 @@
 // LockstepHost's side of the lookahead (lockstep_advance.h): the feeds hil publishes the chunks
 // it writes ahead in, the horizon, and the wait until the programs have caught up with it.
-#include <unistd.h>
-
-#include <climits>
-
-#include <linux/futex.h>
-#include <sys/syscall.h>
-
 #include "hil/harness/lockstep/lockstep_advance.h"
 #include "hil/harness/lockstep/lockstep_host.h"
 #include "hil/harness/lockstep/lockstep_shared.h"
@@ -50,35 +43,8 @@ bool LockstepHost::Stalled() const { return shared_->stalled.load() != 0; }
 void LockstepHost::MoveClock() { lockstep::MoveClock(*shared_); }
 
 bool LockstepHost::WaitStalled(const WaitStep& on_wait) {
-  const auto done = [this] { return Stalled() && AllSlotsIdle(*shared_); };
-  if (done()) return true;
-  const WallTime start = WallNow();
-  WallTime next_step = start + kStep;
-  bool new_wait = true;
-  shared_->hil_waiting.store(1);
-  bool stalled = false;
-  while (!stalled) {
-    const std::uint32_t seen = shared_->host_wake.load();
-    if (done()) {
-      stalled = true;
-      break;
-    }
-    // idle, and no thread moved the clock (one ended, or its move is under way): hil does
-    if (AllSlotsIdle(*shared_)) MoveClock();
-    const timespec step{0, static_cast<long>(kStep.count())};
-    ++stats_.slept;
-    syscall(SYS_futex, reinterpret_cast<std::uint32_t*>(&shared_->host_wake), FUTEX_WAIT, seen,
-            &step, nullptr, 0);
-    const WallTime now = WallNow();
-    if (now < next_step) continue;
-    next_step = now + kStep;
-    if (now - start >= kLivenessCheck) ForgetDeadThreads();
-    if (!on_wait(Busy(), new_wait)) break;
-    new_wait = false;
-  }
-  shared_->hil_waiting.store(0);
-  stats_.wait += WallNow() - start;
-  return stalled;
+  return WaitUntil(
+      on_wait, [this] { return Stalled() && AllSlotsIdle(*shared_); }, true);
 }
 
 }  // namespace hil::harness::lockstep

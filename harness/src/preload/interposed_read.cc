@@ -32,6 +32,40 @@ std::uint64_t Links(void* a) { return pl::LinkBitOf(*static_cast<int*>(a)); }
 long FeedReadable(void* a) { return pl::FeedAvailable(*static_cast<int*>(a)) > 0 ? 1 : 0; }
 std::uint64_t FeedLink(void* a) { return std::uint64_t{1} << *static_cast<int*>(a); }
 
+// The emulated instant a blocking read of `fd` gives up: VTIME tenths of a second from now on a
+// non-canonical terminal with VMIN 0, kNoDeadline otherwise. False: VMIN 0 and VTIME 0, a read
+// that never waits.
+bool ReadDeadline(int fd, std::int64_t& deadline) {
+  deadline = hil::harness::lockstep::kNoDeadline;
+  termios tio{};
+  if (tcgetattr(fd, &tio) == 0 && (tio.c_lflag & ICANON) == 0 && tio.c_cc[VMIN] == 0) {
+    if (tio.c_cc[VTIME] == 0) return false;
+    deadline = pl::EmulatedNowNs() + static_cast<std::int64_t>(tio.c_cc[VTIME]) * 100'000'000;
+  }
+  return true;
+}
+
+enum class ByteWait { kRead, kRealRead, kReturnZero, kInterrupted };
+
+// Waits in emulated time until `ready(arg)` (pl::Wait): kRead, the byte is there; kRealRead, no
+// slot (block the real way); kReturnZero, VTIME passed without a byte (errno as it was);
+// kInterrupted, a signal (errno EINTR).
+ByteWait WaitForByte(long (*ready)(void*), void* arg, std::int64_t deadline,
+                     std::uint64_t (*links)(void*)) {
+  const int saved_errno = errno;
+  const long r = pl::Wait(ready, arg, deadline, links);
+  if (r == pl::kUnmanaged) return ByteWait::kRealRead;
+  if (r == pl::kInterrupted) {
+    errno = EINTR;
+    return ByteWait::kInterrupted;
+  }
+  if (r == pl::kDeadline) {
+    errno = saved_errno;
+    return ByteWait::kReturnZero;
+  }
+  return ByteWait::kRead;
+}
+
 // Reads exactly `want` bytes that hil has written already (the kernel may still be handing
 // some of them to the host side: they are waited for). Fewer only at an end or an error.
 ssize_t ReadWritten(int fd, char* buf, size_t want) {
@@ -62,23 +96,18 @@ ssize_t FeedRead(int fd, int k, void* buf, size_t n) {
       errno = EAGAIN;
       return -1;
     }
-    std::int64_t deadline = hil::harness::lockstep::kNoDeadline;
-    termios tio{};
-    if (tcgetattr(fd, &tio) == 0 && (tio.c_lflag & ICANON) == 0 && tio.c_cc[VMIN] == 0) {
-      if (tio.c_cc[VTIME] == 0) return 0;
-      deadline = pl::EmulatedNowNs() + static_cast<std::int64_t>(tio.c_cc[VTIME]) * 100'000'000;
-    }
-    const int saved_errno = errno;
+    std::int64_t deadline = 0;
+    if (!ReadDeadline(fd, deadline)) return 0;
     int k_arg = k;
-    const long r = pl::Wait(FeedReadable, &k_arg, deadline, FeedLink);
-    if (r == pl::kUnmanaged) return pl::Real().read(fd, buf, n);
-    if (r == pl::kInterrupted) {
-      errno = EINTR;
-      return -1;
-    }
-    if (r == pl::kDeadline) {
-      errno = saved_errno;
-      return 0;
+    switch (WaitForByte(FeedReadable, &k_arg, deadline, FeedLink)) {
+      case ByteWait::kRealRead:
+        return pl::Real().read(fd, buf, n);
+      case ByteWait::kInterrupted:
+        return -1;
+      case ByteWait::kReturnZero:
+        return 0;
+      case ByteWait::kRead:
+        break;
     }
   }
   const std::uint64_t avail = pl::FeedAvailable(k);
@@ -97,23 +126,17 @@ extern "C" ssize_t read(int fd, void* buf, size_t n) {
   if (pl::Real().poll(&p, 1, 0) != 0) return pl::Real().read(fd, buf, n);  // ready, or a file
   const int flags = fcntl(fd, F_GETFL);
   if (flags < 0 || (flags & O_NONBLOCK) != 0) return pl::Real().read(fd, buf, n);
-  std::int64_t deadline = hil::harness::lockstep::kNoDeadline;
-  termios tio{};
-  if (tcgetattr(fd, &tio) == 0 && (tio.c_lflag & ICANON) == 0 && tio.c_cc[VMIN] == 0) {
-    if (tio.c_cc[VTIME] == 0) return pl::Real().read(fd, buf, n);
-    deadline = pl::EmulatedNowNs() + static_cast<std::int64_t>(tio.c_cc[VTIME]) * 100'000'000;
-  }
-  const int saved_errno = errno;
+  std::int64_t deadline = 0;
+  if (!ReadDeadline(fd, deadline)) return pl::Real().read(fd, buf, n);
   int fd_arg = fd;
-  const long r = pl::Wait(Readable, &fd_arg, deadline, Links);
-  if (r == pl::kUnmanaged) return pl::Real().read(fd, buf, n);
-  if (r == pl::kInterrupted) {
-    errno = EINTR;
-    return -1;
-  }
-  if (r == pl::kDeadline) {
-    errno = saved_errno;
-    return 0;  // VTIME passed without a byte
+  switch (WaitForByte(Readable, &fd_arg, deadline, Links)) {
+    case ByteWait::kInterrupted:
+      return -1;
+    case ByteWait::kReturnZero:
+      return 0;  // VTIME passed without a byte
+    case ByteWait::kRead:
+    case ByteWait::kRealRead:
+      break;
   }
   return pl::Real().read(fd, buf, n);
 }

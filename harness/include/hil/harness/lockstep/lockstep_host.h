@@ -117,6 +117,11 @@ class LockstepHost {
   void Grant(int i);
   /// Frees the slots of threads that no longer exist.
   void ForgetDeadThreads();
+  /// Sleeps on the host's futex until `done()` (WaitIdle, WaitStalled), moving the programs'
+  /// clock when they are all idle if `move_clock_when_idle`; `on_wait` every kStep. False: given
+  /// up.
+  bool WaitUntil(const WaitStep& on_wait, const std::function<bool()>& done,
+                 bool move_clock_when_idle);
 
   std::string path_;
   Shared* shared_ = nullptr;
