@@ -25,6 +25,13 @@ int ToInt(const ConfigFile& f, const ConfigEntry& e, int lo, int hi) {
   return v;
 }
 
+// "true" or "false"; anything else is an error naming the file, line and key.
+bool ToBool(const ConfigFile& f, const ConfigEntry& e) {
+  if (e.value != "true" && e.value != "false")
+    throw ConfigError(f.name(), e.line, FieldName(e), "expected true or false");
+  return e.value == "true";
+}
+
 double ToDouble(const ConfigFile& f, const ConfigEntry& e, double lo, double hi) {
   char* end = nullptr;
   const double v = std::strtod(e.value.c_str(), &end);
@@ -90,13 +97,9 @@ bool ReadInputKey(const ConfigFile& f, const ConfigEntry& e, NavdConfig& c) {
                         "unknown protocol '" + e.value + "' (known: nmea, ubx)");
     c.gnss_protocol = e.value;
   } else if (k == "gnss_configure") {
-    if (e.value != "true" && e.value != "false")
-      throw ConfigError(f.name(), e.line, FieldName(e), "expected true or false");
-    c.gnss_configure = e.value == "true";
+    c.gnss_configure = ToBool(f, e);
   } else if (k == "gnss_nav_pvt") {
-    if (e.value != "true" && e.value != "false")
-      throw ConfigError(f.name(), e.line, FieldName(e), "expected true or false");
-    c.gnss_nav_pvt = e.value == "true";
+    c.gnss_nav_pvt = ToBool(f, e);
   } else if (k == "gnss_rate_hz")
     c.gnss_rate_hz = ToDouble(f, e, 0.0, 10.0);
   else if (k == "merge_window_s")
@@ -164,13 +167,9 @@ bool ReadEkfKey(const ConfigFile& f, const ConfigEntry& e, EkfParams& ekf) {
   else if (k == "mount_yaw_std_deg")
     ekf.mount_yaw_std_rad = ToDouble(f, e, 0.0, 10.0) * std::numbers::pi / 180.0;
   else if (k == "mount_angle_estimation") {
-    if (e.value != "true" && e.value != "false")
-      throw ConfigError(f.name(), e.line, FieldName(e), "expected true or false");
-    ekf.estimate_mount_angles = e.value == "true";
+    ekf.estimate_mount_angles = ToBool(f, e);
   } else if (k == "gnss_float_error_from_receiver") {
-    if (e.value != "true" && e.value != "false")
-      throw ConfigError(f.name(), e.line, FieldName(e), "expected true or false");
-    ekf.gnss_float_error_from_receiver = e.value == "true";
+    ekf.gnss_float_error_from_receiver = ToBool(f, e);
   } else
     return false;
   return true;
@@ -214,8 +213,7 @@ bool ReadFilterKey(const ConfigFile& f, const ConfigEntry& e, NavdConfig& c, int
   } else if (k == "adaptive" || k == "fade_to_fixes" || k == "stationary_detection" ||
              k == "imu_lag_estimation" || k == "rtk_fix_check" || k == "imu_noise_check" ||
              k == "imu_usability_check" || k == "gnss_velocity_noise") {
-    if (e.value != "true" && e.value != "false")
-      throw ConfigError(f.name(), e.line, FieldName(e), "expected true or false");
+    const bool on = ToBool(f, e);
     (k == "adaptive"               ? c.nav.robust.adaptive
      : k == "fade_to_fixes"        ? c.nav.robust.fade_to_fixes
      : k == "stationary_detection" ? c.nav.stationary.enabled
@@ -223,7 +221,7 @@ bool ReadFilterKey(const ConfigFile& f, const ConfigEntry& e, NavdConfig& c, int
      : k == "imu_noise_check"      ? c.nav.imu_noise.enabled
      : k == "imu_usability_check"  ? c.nav.imu_usability.enabled
      : k == "gnss_velocity_noise"  ? c.nav.gnss_vel_noise.enabled
-                                   : c.nav.imu_lag.enabled) = e.value == "true";
+                                   : c.nav.imu_lag.enabled) = on;
   } else if (k == "imu_usability_window_s") {
     c.nav.imu_usability.window_s = ToDouble(f, e, 2.0, 600.0);
   } else if (k == "imu_usability_windows") {
@@ -242,9 +240,7 @@ bool ReadFilterKey(const ConfigFile& f, const ConfigEntry& e, NavdConfig& c, int
   } else if (k == "zupt_std_mps") {
     c.nav.stationary.zupt_std_mps = ToDouble(f, e, 0.001, 1.0);
   } else if (k == "use_gnss_velocity") {
-    if (e.value != "true" && e.value != "false")
-      throw ConfigError(f.name(), e.line, FieldName(e), "expected true or false");
-    c.nav.use_gnss_velocity = e.value == "true";
+    c.nav.use_gnss_velocity = ToBool(f, e);
   } else
     return false;
   return true;
