@@ -2,8 +2,8 @@
 // rows with 180° U-turns between them on 10 Hz RTK-class fixes, its z gyro reading 0.5 % high (a
 // consumer MEMS's sensitivity tolerance). Each turn then leaves 0.9° of heading error, which the
 // filter (with the correlated-GNSS-error state of navd's car configuration) carries into the next
-// row as a cross-track offset. With the scale estimated, the filter must learn it from the turns
-// and the offset must go.
+// row as a heading error and a cross-track offset. With the scale estimated, the filter must learn
+// it from the turns and the heading error must go.
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -53,7 +53,8 @@ class UTurnRun {
     ekf_.Initialize(s);
   }
   // Runs to t_end_s on the fixes (10 Hz, white σ 1 cm, 5 cm/s) and the NHC (10 Hz); adds the
-  // cross-track error (to the car's left) of every 100 ms in [after_s, t_end_s) to the mean.
+  // cross-track error (to the car's left) and the yaw error (counter-clockwise) of every 100 ms in
+  // [after_s, t_end_s) to their means.
   void RunTo(double t_end_s, double after_s) {
     while (t_ + 0.5 * kDt < t_end_s) {
       Step();
@@ -66,11 +67,18 @@ class UTurnRun {
       if (t_ < after_s) continue;
       const Eigen::Vector3d left_N = Attitude() * Eigen::Vector3d::UnitY();
       cross_sum_m_ += left_N.dot(ekf_.state().p_N_m - p_N_m_);
+      const Eigen::AngleAxisd yaw_error(ekf_.state().q_NB * Attitude().inverse());
+      yaw_error_sum_rad_ += yaw_error.angle() * yaw_error.axis().z();
       ++cross_n_;
     }
   }
   double MeanCrossTrack_m() const {
     return cross_n_ > 0 ? cross_sum_m_ / static_cast<double>(cross_n_) : 0.0;
+  }
+  double MeanYawError_deg() const {
+    return cross_n_ > 0
+               ? yaw_error_sum_rad_ / static_cast<double>(cross_n_) * 180.0 / std::numbers::pi
+               : 0.0;
   }
   const ErrorStateEkf& ekf() const { return ekf_; }
 
@@ -102,6 +110,7 @@ class UTurnRun {
   double t_ = 0.0;
   long k_ = 0;
   double cross_sum_m_ = 0.0;
+  double yaw_error_sum_rad_ = 0.0;
   long cross_n_ = 0;
   std::mt19937_64 rng_{2026};
   std::normal_distribution<double> n_{0.0, 1.0};
@@ -117,21 +126,26 @@ TEST(GyroScaleTest, UTurnsTeachTheZGyroScaleWithinAThousandth) {
   EXPECT_LT(std::sqrt(run.ekf().covariance()(kGyroScaleZ, kGyroScaleZ)), 0.001);
 }
 
-TEST(GyroScaleTest, TheTurnsNoLongerLeaveACrossTrackOffset) {
+TEST(GyroScaleTest, TheTurnsNoLongerLeaveAHeadingError) {
   // GIVEN the same car, with the scale estimated and without (the filter before the state)
   UTurnRun with(0.005), without(0.0);
-  // WHEN it drives 3 rows and turns to learn, then 3 more, measured on their rows' first 10 s
-  // (where the offset a turn leaves is largest)
-  for (int i = 3; i < 6; ++i) {
+  // WHEN it drives 3 rows and turns to learn, then 21 more, measured on their rows' first 10 s
+  // (where the error a turn leaves is largest). The 10 Hz centimetre fixes hold the offset to
+  // millimetres, so its mean needs many rows to rise above the fixes' noise: over 60 seeds the
+  // ratio of the means below reached 0.16 for the heading and 0.54 for the cross-track (stop 49's
+  // CI failed a bound of 0.2 on the cross-track over 3 rows, where the noise alone reaches it).
+  for (int i = 3; i < 24; ++i) {
     const double row_start_s = i * kPeriod_s;
     with.RunTo(row_start_s, 1e9);
     without.RunTo(row_start_s, 1e9);
     with.RunTo(row_start_s + 10.0, row_start_s);
     without.RunTo(row_start_s + 10.0, row_start_s);
   }
-  // THEN the mean cross-track offset after a turn is less than a fifth of the one without the
-  // state (white fixes average out in the mean: what is left is the turns' offset)
-  EXPECT_LT(std::abs(with.MeanCrossTrack_m()), 0.2 * std::abs(without.MeanCrossTrack_m()))
+  // THEN the mean heading error after a turn is less than a third of the one without the state
+  // (0.09°-0.13° without it over those seeds), and the cross-track offset it leaves is smaller
+  EXPECT_LT(std::abs(with.MeanYawError_deg()), std::abs(without.MeanYawError_deg()) / 3.0)
+      << "with " << with.MeanYawError_deg() << "°, without " << without.MeanYawError_deg() << "°";
+  EXPECT_LT(std::abs(with.MeanCrossTrack_m()), 0.75 * std::abs(without.MeanCrossTrack_m()))
       << "with " << with.MeanCrossTrack_m() << " m, without " << without.MeanCrossTrack_m() << " m";
 }
 
