@@ -374,8 +374,11 @@ void Navigator::ProcessGnss(const GnssSample& g) {
 
 void Navigator::ResetToFix(const GnssSample& g, const Eigen::Vector3d& p_antenna_N_m) {
   const double vel_std = g.has_velocity ? 0.5 : 2.0;
+  // the fix's white σ per axis; its height also carries the datum's (geoid model, as the updates)
+  Eigen::Vector3d pos_std_N_m = g.pos_std_enu_m;
+  pos_std_N_m.z() = std::hypot(g.pos_std_enu_m.z(), g.height_datum_std_m);
   ekf_.ResetPositionVelocity(p_antenna_N_m, g.has_velocity ? g.vel_enu_mps : ekf_.state().v_N_mps,
-                             g.pos_std_enu_m.maxCoeff(), vel_std);
+                             pos_std_N_m, vel_std);
   ekf_.ResetSetSpeed(vel_std);
   ++stats_.gnss_resets;
   first_rejected_t_.reset();

@@ -426,6 +426,28 @@ TEST_F(ErrorStateEkfTest, GnssErrorScaleChangeRescalesTheSameProcess) {
               0.01 * 4.0 * sigma * sigma);
 }
 
+// issue 39: a reset onto a fix (the IMU back from a loss, or a long rejection) takes the fix's
+// correlated error along: the position must not claim the fix's white σ alone.
+TEST_F(ErrorStateEkfTest, ResetOntoAFixCarriesTheReceiversCorrelatedError) {
+  // GIVEN a filter with correlated GNSS error states (σ 0.3 m per axis)
+  const double gm_var = ekf_.covariance()(kGnssError, kGnssError);
+  ASSERT_GT(gm_var, 0.0);
+  // WHEN it is reset onto a fix whose white σ is 5 cm horizontally and 12 cm up
+  const Eigen::Vector3d fix_std(0.05, 0.05, 0.12);
+  ekf_.ResetPositionVelocity(Eigen::Vector3d(3, 4, 5), Eigen::Vector3d(1, 0, 0), fix_std, 0.5);
+  const EkfMatrix& P = ekf_.covariance();
+  for (int i = 0; i < 3; ++i) {
+    const double var_e = P(kGnssError + i, kGnssError + i);
+    // THEN the position's variance is the white part plus the correlated error's
+    EXPECT_NEAR(P(kPos + i, kPos + i), fix_std[i] * fix_std[i] + var_e, 1e-12) << i;
+    // AND what the fix measured (position + correlated error) is known to its white σ alone
+    const double measured_var = P(kPos + i, kPos + i) + var_e + 2.0 * P(kPos + i, kGnssError + i);
+    EXPECT_NEAR(measured_var, fix_std[i] * fix_std[i], 1e-12) << i;
+  }
+  // AND the antenna is where the fix put it, its correlated error restarted at zero
+  EXPECT_TRUE(Pos(ekf_).isApprox(Eigen::Vector3d(3, 4, 5), 1e-12));
+}
+
 TEST(ErrorStateEkfGnssModelTest, SwitchIsIgnoredWithoutCorrelatedStates) {
   ErrorStateEkf ekf(EkfParams{}, EarthModel{});  // gnss_error_tau_s = 0: plain 15-state filter
   ekf.Initialize(NavState{});

@@ -260,9 +260,12 @@ class ErrorStateEkf {
   /// Starts the bias estimates at known values (a dataset's initial biases), after Initialize.
   void SetBiases(const Eigen::Vector3d& accel_bias_B_mps2,
                  const Eigen::Vector3d& gyro_bias_B_radps);
-  /// Resets position/velocity to a measurement after a long rejection (keeps attitude and biases).
+  /// Resets position/velocity to a fix of the antenna (after a long rejection, or when the IMU
+  /// returns from a loss; keeps attitude and biases). `pos_std_N_m`: the fix's white σ per axis;
+  /// with the correlated GNSS error states on, the position also takes their variance (the fix
+  /// holds that error too) with the matching negative covariance.
   void ResetPositionVelocity(const Eigen::Vector3d& p_N_m, const Eigen::Vector3d& v_N_mps,
-                             double pos_std_m, double vel_std_mps);
+                             const Eigen::Vector3d& pos_std_N_m, double vel_std_mps);
 
   /// Antenna position predicted from the nominal state.
   Eigen::Vector3d AntennaPosition() const;
