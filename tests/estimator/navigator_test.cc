@@ -140,6 +140,53 @@ TEST(NavigatorTest, WaitsForADueFixUpToTheMaximumLatency) {
   EXPECT_NEAR(static_cast<double>((kT0 + 20s - rig.nav.filter_time()).count()) * 1e-9, 0.2, 0.011);
 }
 
+// issue 39: the fallback solution is the body point, as the filter's, and its σ holds the
+// receiver's correlated error (faults/mcu_reset: the antenna 0.84 m ahead reported at σ 4 cm)
+TEST(NavigatorTest, TheFallbackWhileTheImuIsSilentIsTheBodyPointWithTheReceiversError) {
+  // GIVEN an aligned EKF, its antenna 1 m ahead of the body point and 0.5 m up, its receiver's
+  // correlated error modelled at 0.25 m, on a level vehicle driving east at 1 m/s
+  NavigatorParams p;
+  p.mode = NavMode::kEkf;
+  p.ekf.lever_arm_B_m = Eigen::Vector3d(1.0, 0.0, 0.5);
+  p.ekf.gnss_error_tau_s = 5.0;
+  p.ekf.gnss_error_std_m = 0.25;
+  Navigator nav(p);
+  const LocalTangentFrame frame({48.0, 11.0, 500.0});
+  const double g0 = NormalGravity(48.0, 500.0);
+  const auto body_x_m = [](GpsTime t) { return static_cast<double>((t - kT0).count()) * 1e-9; };
+  const auto fix = [&](GpsTime t) {
+    GnssSample g;
+    g.t = t;
+    g.position = frame.ToLla(Eigen::Vector3d(body_x_m(t), 0, 0) + p.ekf.lever_arm_B_m);
+    g.pos_std_enu_m = Eigen::Vector3d(0.04, 0.04, 0.08);
+    g.has_velocity = true;
+    g.vel_enu_mps = Eigen::Vector3d(1, 0, 0);
+    g.vel_std_enu_mps = Eigen::Vector3d::Constant(0.05);
+    nav.Push(g);
+  };
+  constexpr Nanoseconds kMs = 1ms;
+  for (GpsTime t = kT0 + 10 * kMs; t <= kT0 + 10'000 * kMs; t += 10 * kMs) {
+    ImuSample s;
+    s.t = t;
+    s.dt_s = 0.01;
+    s.delta_velocity_B_mps = Eigen::Vector3d(0, 0, g0 * 0.01);
+    nav.Push(s);
+    nav.Update();
+    if ((t - kT0) % (1000 * kMs) == 0ns) fix(t);
+  }
+  ASSERT_TRUE(nav.aligned());
+  // WHEN the IMU falls silent while the fixes keep coming
+  for (int k = 11; k <= 15; ++k) fix(kT0 + k * 1000 * kMs);
+  ASSERT_TRUE(nav.ImuLost());
+  const NavOutput lost = nav.Output();
+  // THEN the solution is the body point under the fix, not the antenna
+  EXPECT_NEAR(frame.ToLocal(lost.position).x(), 15.0, 0.05);
+  EXPECT_NEAR(frame.ToLocal(lost.position).z(), 0.0, 0.05);
+  // AND its σ is the fix's white σ with the receiver's correlated error
+  EXPECT_GT(lost.pos_std_enu_m.x(), 0.24);
+  EXPECT_GT(lost.pos_std_enu_m.y(), 0.24);
+}
+
 TEST(NavigatorTest, FallsBackToTheFixesWhileTheImuIsSilentAndRestartsAfter) {
   // GIVEN an aligned EKF on a level vehicle driving east at 1 m/s (IMU 100 Hz, GNSS 1 Hz)
   NavigatorParams p;

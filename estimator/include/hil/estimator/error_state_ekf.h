@@ -286,6 +286,12 @@ class ErrorStateEkf {
   const Eigen::Vector3d& accel_bias() const { return ba_; }
   const Eigen::Vector3d& gyro_bias() const { return bg_; }
   const Eigen::Vector3d& gnss_error() const { return e_gnss_; }
+  /// The variance of the receiver's correlated error as the model now has it (per ENU axis, at the
+  /// last fix's geometry); zero with the correlated states off.
+  Eigen::Vector3d GnssErrorModelVariance() const {
+    return params_.gnss_error_tau_s > 0 ? GnssErrorVariance(gm_std_m_, gm_up_std_m_)
+                                        : Eigen::Vector3d::Zero();
+  }
   double set_speed_mps() const { return set_speed_; }
   double speed_deviation_mps() const { return speed_dev_; }
   /// The mounting angles (roll, pitch, yaw of V in B, rad; roll stays 0) and whether they are

@@ -316,6 +316,7 @@ class Navigator {
   void TryAlign(const GnssSample& g);
   void EnsureFrame(const Lla& origin);
   void GnssOnlyFix(const GnssSample& g);
+  void FallbackFix(const GnssSample& g);  ///< the solution while the IMU is lost
   /// GNSS position aid: the update, fading to it after a gap or a run of rejections, and the
   /// adaptation to its innovation window (aid_sources/gnss_position_control.cc).
   UpdateResult ControlGnssPosition(const GnssSample& g, const Eigen::Vector3d& p_antenna_N_m);
