@@ -86,6 +86,14 @@ void ReadNavdUwbKey(const ConfigFile& f, const ConfigEntry& e, NavdUwbConfig& u)
     u.attitude_yaw_offset_deg = Number(f, e, e.value, -360, 360);
   } else if (k == "position_std_m") {
     u.position_std_m = Number(f, e, e.value, 0.001, 100);
+  } else if (k == "residual_std_m") {
+    u.residual_std_m = Number(f, e, e.value, 0, 100);
+  } else if (k == "residual_distance_m") {
+    u.residual_distance_m = Number(f, e, e.value, 0.01, 10000);
+  } else if (k == "yaw_offset_std_deg") {
+    u.yaw_offset_std_deg = Number(f, e, e.value, 0, 180);
+  } else if (k == "yaw_drift_std_dps") {
+    u.yaw_drift_std_dps = Number(f, e, e.value, 0, 10);
   } else if (k == "yaw_std_deg") {
     u.yaw_std_deg = Number(f, e, e.value, 0.001, 180);
   } else {

@@ -44,7 +44,11 @@ est::uwb::TdoaSolverConfig SolverConfig(const est::NavdUwbConfig& u) {
 est::uwb::UwbPlanarFilterParams FilterParams(const est::NavdUwbConfig& u) {
   est::uwb::UwbPlanarFilterParams p;
   p.position_std_m = u.position_std_m;
+  p.residual_std_m = u.residual_std_m;
+  p.residual_distance_m = u.residual_distance_m;
   p.yaw_std_rad = u.yaw_std_deg * kDeg;
+  p.yaw_offset_std_rad = u.yaw_offset_std_deg * kDeg;
+  p.yaw_drift_std_radps = u.yaw_drift_std_dps * kDeg;
   return p;
 }
 

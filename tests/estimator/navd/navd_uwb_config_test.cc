@@ -26,7 +26,9 @@ TEST(NavdUwbConfigTest, EveryKey) {
       "anchors_m = 0, 0, 20, 0, 20, 20, 0, 20\ncorrection = none\norigin_lat_deg = 30.25\n"
       "origin_lon_deg = 119.7\norigin_height_m = 30\ntime_zero_unix_ns = 1781078400000000000\n"
       "attitude_device = /dev/ttyWIT\nattitude_baud = 9600\nattitude_rate_hz = 20\n"
-      "attitude_yaw_offset_deg = -90\nposition_std_m = 0.1\nyaw_std_deg = 2\n");
+      "attitude_yaw_offset_deg = -90\nposition_std_m = 0.1\nyaw_std_deg = 2\n"
+      "residual_std_m = 0.04\nresidual_distance_m = 3\nyaw_offset_std_deg = 4\n"
+      "yaw_drift_std_dps = 0.02\n");
   const NavdUwbConfig& u = c.uwb;
   EXPECT_TRUE(u.enabled());
   EXPECT_EQ(u.device, "/dev/ttyUWB");
@@ -41,6 +43,10 @@ TEST(NavdUwbConfigTest, EveryKey) {
   EXPECT_DOUBLE_EQ(u.attitude_yaw_offset_deg, -90);
   EXPECT_DOUBLE_EQ(u.position_std_m, 0.1);
   EXPECT_DOUBLE_EQ(u.yaw_std_deg, 2);
+  EXPECT_DOUBLE_EQ(u.residual_std_m, 0.04);
+  EXPECT_DOUBLE_EQ(u.residual_distance_m, 3);
+  EXPECT_DOUBLE_EQ(u.yaw_offset_std_deg, 4);
+  EXPECT_DOUBLE_EQ(u.yaw_drift_std_dps, 0.02);
 }
 
 TEST(NavdUwbConfigTest, DefaultsArePaper003s) {

@@ -9,7 +9,10 @@
 ///   the ENU plane), correction (paper003 | none), origin_lat_deg, origin_lon_deg,
 ///   origin_height_m (the plane's origin), time_zero_unix_ns (UTC of the module's system_time 0),
 ///   attitude_device, attitude_baud (9600), attitude_rate_hz (10), attitude_yaw_offset_deg (ENU
-///   yaw = sensor yaw + offset), position_std_m (0.06), yaw_std_deg (1.0).
+///   yaw = sensor yaw + offset), position_std_m (0.06: the fix's white part), residual_std_m (0.05)
+///   and residual_distance_m (2.0: the residual the correction leaves and the distance over which
+///   it decorrelates), yaw_std_deg (1.0: the sensor yaw's white part), yaw_offset_std_deg (1.0)
+///   and yaw_drift_std_dps (0.01: its offset and the offset's drift; uwb_planar_filter.h).
 
 #include <array>
 #include <cstdint>
@@ -32,6 +35,10 @@ struct NavdUwbConfig {
   double attitude_rate_hz = 10;
   double attitude_yaw_offset_deg = 0;
   double position_std_m = 0.06;
+  double residual_std_m = 0.05;
+  double residual_distance_m = 2.0;
+  double yaw_offset_std_deg = 1.0;
+  double yaw_drift_std_dps = 0.01;
   double yaw_std_deg = 1.0;
   bool enabled() const { return !device.empty(); }
 };
