@@ -160,6 +160,8 @@ bool ReadEkfKey(const ConfigFile& f, const ConfigEntry& e, EkfParams& ekf) {
     ekf.speed_dev_std_mps = ToDouble(f, e, 0.001, 10.0);
   else if (k == "speed_dev_tau_s")
     ekf.speed_dev_tau_s = ToDouble(f, e, 0.0, 3600.0);
+  else if (k == "vehicle_lowpass_tau_s")
+    ekf.vehicle_lowpass_tau_s = ToDouble(f, e, 0.0, 10.0);
   else if (k == "gate_sigma")
     ekf.gate_sigma = ToDouble(f, e, 1.0, 1000.0);
   else if (k == "mount_pitch_std_deg")

@@ -26,6 +26,7 @@ void ErrorStateEkf::Initialize(const NavState& s) {
   mount_rad_.setZero();
   C_VB_.setIdentity();
   gyro_scale_z_ = 0.0;
+  ripple_.Reset();
   gm_tau_s_ = params_.gnss_error_tau_s;
   gm_std_m_ = params_.gnss_error_std_m;
   gm_up_ratio_ = params_.gnss_error_vertical_std_m > 0 && params_.gnss_error_std_m > 0
@@ -69,7 +70,9 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& delta_angle_B_rad,
   const Eigen::Vector3d dv = delta_velocity_B_mps - ba_ * dt;
   w_B_ = dth / dt;
   f_N_ = C * dv / dt;
+  const Eigen::Vector3d v_V_before = VehicleVelocity();
   Propagate(earth_, dth, dv, dt, memory_, state_);
+  ripple_.Propagate(VehicleVelocity() - v_V_before, dt);
 
   const auto& p = params_;
   double gm_decay = 1.0;
@@ -281,7 +284,10 @@ Eigen::Matrix<double, 1, kNumStates> ErrorStateEkf::SpeedModelJacobian() const {
 
 UpdateResult ErrorStateEkf::UpdateSpeedModel() {
   if (!(params_.speed_rw_mps_rthz > 0)) return {};
-  const double forward = VehicleVelocity().x();
+  // the forward speed through the low-pass of vehicle_lowpass_tau_s when on: the ride's ripple is
+  // not the chassis's set speed (the NHC keeps the instantaneous velocity: its lateral and vertical
+  // rows steer heading and tilt, whose loop a lagged velocity destabilises)
+  const double forward = VehicleVelocity().x() - ripple_.ripple_V_mps().x();
   Eigen::Matrix<double, 1, 1> innovation;
   innovation << set_speed_ + speed_dev_ - forward;
   // with a deviation state the pseudo-measurement carries what the state does not: half its σ (a

@@ -58,6 +58,7 @@
 #include <Eigen/Geometry>
 
 #include "hil/estimator/mechanization.h"
+#include "hil/estimator/vehicle_velocity_ripple.h"
 
 namespace hil::estimator {
 
@@ -132,7 +133,11 @@ struct EkfParams {
   double speed_rw_mps_rthz = 0.0;   ///< set-speed random walk, m/s/√s (0 = speed model off)
   double speed_dev_std_mps = 0.05;  ///< forward speed's deviation from the set speed (1σ)
   double speed_dev_tau_s = 0.0;     ///< its correlation time (0: white, no state of its own)
-  double gate_sigma = 5.0;          ///< per-update χ² gate: NIS ≤ gate² · dof
+  /// > 0: the NHC and the speed model see the vehicle velocity through a critically damped
+  /// low-pass of this time constant (two stages, s), the ride's ripple left out
+  /// (vehicle_velocity_ripple.h); 0 = the instantaneous velocity
+  double vehicle_lowpass_tau_s = 0.0;
+  double gate_sigma = 5.0;  ///< per-update χ² gate: NIS ≤ gate² · dof
   /// Prior σ of the IMU's mounting pitch and yaw against the vehicle (rad; `[filter]
   /// mount_pitch_std_deg`, `mount_yaw_std_deg`; 0 holds that angle at zero). 2° (our choice; the
   /// source gives none): a bracket or a console fitted by eye is within a degree or two. The pitch
@@ -187,7 +192,7 @@ class ErrorStateEkf {
  public:
   ErrorStateEkf() = default;
   explicit ErrorStateEkf(const EkfParams& params, const EarthModel& earth)
-      : params_(params), earth_(earth) {}
+      : params_(params), earth_(earth), ripple_(params.vehicle_lowpass_tau_s) {}
 
   /// Sets the nominal state and the initial covariance from the parameters.
   void Initialize(const NavState& state);
@@ -368,6 +373,7 @@ class ErrorStateEkf {
   double accel_scale_ = 1.0;              // SetAccelNoiseScale
   double accel_noise_floor_m2ps3_ = 0.0;  // SetAccelNoiseFloor
   Eigen::Vector3d vibration_var_B_mps2_ = Eigen::Vector3d::Zero();  // SetVibrationVariance
+  VehicleVelocityRipple ripple_;                                    // vehicle_lowpass_tau_s
   bool attitude_hold_ = false;                                      // SetAttitudeHold
 };
 
