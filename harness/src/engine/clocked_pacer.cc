@@ -93,13 +93,9 @@ std::uint64_t ClockedPacer::WriteDue(Time t) {
     const std::uint64_t dropped = ep->bytes_dropped_unread();
     const std::size_t sent = ep->WriteChunksOrDrop(n);
     const bool whole = unread + sent <= kHandOverBytes && ep->bytes_dropped_unread() == dropped;
-    // nothing unread and one kernel buffer: the programs see all of it or none, and their first
-    // look at the link runs the hand-over (kAtomicHandOverBytes); hil need not wait for it
-    const bool atomic = whole && unread == 0 && sent <= kAtomicHandOverBytes;
     const bool handed_over =
-        sent == 0 || (!atomic && AwaitHandOver(*ep, std::min(unread + sent, kHandOverBytes)));
-    // every byte written is on the host side now (what the programs read since, they took); after
-    // an atomic write they may still be on their way: the next write asks (PendingToHost)
+        sent == 0 || AwaitHandOver(*ep, std::min(unread + sent, kHandOverBytes));
+    // every byte written is on the host side now (what the programs read since, they took)
     settled_[k] = whole && handed_over ? ep->bytes_sent() : kUnsettled;
     written |= LinkBit(k);
   }

@@ -142,9 +142,7 @@ extern "C" ssize_t read(int fd, void* buf, size_t n) {
 }
 
 // FIONREAD (TIOCINQ) of a link while hil writes ahead: the bytes that have arrived, not what the
-// pty holds. At a host turn: what the pty holds once the kernel has handed over what hil wrote at
-// this turn (hil does not wait for that hand-over when nothing was unread, ClockedPacer::WriteDue;
-// a poll of the link runs it, as the programs' own poll and read do, but FIONREAD alone does not).
+// pty holds.
 extern "C" int ioctl(int fd, unsigned long request, ...) noexcept {
   va_list ap;
   va_start(ap, request);
@@ -155,10 +153,6 @@ extern "C" int ioctl(int fd, unsigned long request, ...) noexcept {
       const std::uint64_t avail = pl::FeedAvailable(k);
       *static_cast<int*>(arg) = avail > INT_MAX ? INT_MAX : static_cast<int>(avail);
       return 0;
-    }
-    if (pl::LinkBitOf(fd) != hil::harness::lockstep::kOtherFd) {
-      pollfd p{fd, POLLIN, 0};
-      pl::Real().poll(&p, 1, 0);
     }
   }
   return pl::Real().ioctl(fd, request, arg);

@@ -39,8 +39,7 @@ class ClockedPacer final : public Pacer {
   /// The earliest end of a chunk still waiting, if any.
   std::optional<Time> NextChunkEnd() const;
   /// Writes every waiting chunk that has ended by `t`, and waits until the kernel has handed them
-  /// to the host's side of the pty (see kHandOverBytes; not for a write kAtomicHandOverBytes
-  /// allows). Returns the links written: bit k for
+  /// to the host's side of the pty (see kHandOverBytes). Returns the links written: bit k for
   /// the k-th link of LinkDevices (lockstep_shared.h's mask; kOtherFd for those beyond kMaxLinks).
   /// What the host side held before the write is one ioctl when the last hand-over on the link
   /// was complete (settled_), else SerialEndpoint::PendingToHost (which waits for a hand-over).
@@ -60,16 +59,6 @@ class ClockedPacer final : public Pacer {
   /// bytes beyond it stay in the pty's flip buffers, so how a backlog larger than this is split
   /// among the host's reads depends on the machine.
   static constexpr std::size_t kHandOverBytes = 4095;
-  /// A write of at most this many bytes to a link whose host side held nothing unread is not
-  /// waited for (WriteDue): the pty puts a write of up to TTY_BUFFER_PAGE (1792 bytes on 4 KB
-  /// pages; our bound stays below it for any size of the kernel's buffer header) in one kernel
-  /// buffer, which its worker hands to the line discipline in one step, so the host side shows
-  /// all of it or none; and every look of the programs' at the link
-  /// (poll, select, epoll, read; FIONREAD through the library) runs a pending hand-over when it
-  /// finds nothing to read. hil saves the wait for the kernel's worker at nearly every turn (a
-  /// context switch: 17 % of its time in tractor_autosteer_slcan); the programs' look at the
-  /// bytes waits for it instead, if it has not run by then.
-  static constexpr std::size_t kAtomicHandOverBytes = 1024;
   /// How long (wall) WriteDue waits for the kernel's hand-over before it goes on.
   static constexpr Duration kHandOverLimit = std::chrono::milliseconds(100);
 
