@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -269,6 +270,84 @@ TEST(LockstepClock, AThreadThatReadWithoutWritingDoesNotWakeAPipesReader) {
   while (rounds.size() < 3 && (rounds.empty() || rounds.back() != 1))
     rounds.push_back(LooksForOneReadBesideAPipe());
   EXPECT_EQ(rounds.back(), 1u) << "looks per round: " << testing::PrintToString(rounds);
+}
+
+// The library tells a link apart from other descriptors with one fstat when the descriptor first
+// waits, not at every wait (its descriptor cache): three blocking reads of one link, one lookup.
+TEST(LockstepClock, ALinkIsLookedUpOncePerOpeningNotPerWait) {
+  LockstepHost host(TempFile("lookups"), kEpochNs);
+  Pty a = OpenRawPty();
+  host.SetLinks({a.rdev});
+  Child c = Spawn(host, {"/usr/bin/head", "-c", "3", a.slave});
+  close(c.in);
+  ASSERT_TRUE(Attached(host, c.pid));
+  for (const char* byte : {"a", "b", "c"}) {
+    ASSERT_TRUE(WaitIdle(host));
+    ASSERT_EQ(write(a.master, byte, 1), 1);
+    host.Wake(Time{}, std::uint64_t{1} | kEveryGrant);
+  }
+  EXPECT_EQ(ReadAll(c.out), "abc");
+  waitpid(c.pid, nullptr, 0);
+  EXPECT_EQ(host.stats().descriptor_lookups, 1u);
+  close(a.master);
+}
+
+// A program that read link 0 on a descriptor, then closes or replaces that descriptor (`how`:
+// dup2 of a pipe onto it, close_range, fclose of a stream on it, then a pipe at the same number)
+// and blocks reading a pipe there. Returns whether hil would wake it for another program's
+// write (kOtherFd) and for bytes on link 0, once it waits on the pipe.
+std::pair<bool, bool> WakesAfterReplacing(const std::string& how) {
+  LockstepHost host(TempFile(("reuse_" + how).c_str()), kEpochNs);
+  Pty a = OpenRawPty();
+  host.SetLinks({a.rdev});
+  Child c = Spawn(host, {"/usr/bin/python3", "-c",
+                         "import ctypes, os, sys\n"
+                         "libc = ctypes.CDLL(None)\n"
+                         "libc.fdopen.restype = ctypes.c_void_p\n"
+                         "fd = os.open('" +
+                             a.slave +
+                             "', os.O_RDONLY | os.O_NOCTTY)\n"
+                             "os.read(fd, 1)\n"
+                             "how = '" +
+                             how +
+                             "'\n"
+                             "if how == 'dup2':\n"
+                             "    r, w = os.pipe()\n"
+                             "    os.dup2(r, fd)\n"
+                             "    r = fd\n"
+                             "else:\n"
+                             "    if how == 'close_range':\n"
+                             "        os.closerange(fd, fd + 1)\n"
+                             "    else:\n"
+                             "        libc.fclose(ctypes.c_void_p(libc.fdopen(fd, b'r')))\n"
+                             "    r, w = os.pipe()\n"
+                             "    if r != fd: sys.exit(3)\n"
+                             "os.read(r, 1)\n"});
+  close(c.in);
+  EXPECT_TRUE(Attached(host, c.pid));
+  EXPECT_TRUE(WaitIdle(host));
+  EXPECT_EQ(write(a.master, "x", 1), 1);
+  host.Wake(Time{}, std::uint64_t{1} | kEveryGrant);
+  EXPECT_TRUE(WaitIdle(host));
+  EXPECT_FALSE(Exited(c.pid)) << how << ": the pipe did not get the link's number";
+  const std::pair<bool, bool> wakes{host.NeedsWake(Time{}, kOtherFd),
+                                    host.NeedsWake(Time{}, std::uint64_t{1})};
+  kill(c.pid, SIGKILL);
+  waitpid(c.pid, nullptr, 0);
+  close(c.out);
+  close(a.master);
+  return wakes;
+}
+
+// The cache forgets a descriptor closed or replaced through dup2, close_range or fclose (calls
+// that bypass close): the pipe at the link's old number is another descriptor, not link 0.
+TEST(LockstepClock, ADescriptorClosedOrReplacedIsLookedUpAgain) {
+  if (access("/usr/bin/python3", X_OK) != 0) GTEST_SKIP() << "no /usr/bin/python3";
+  for (const char* how : {"dup2", "close_range", "fclose"}) {
+    const auto [other, link] = WakesAfterReplacing(how);
+    EXPECT_TRUE(other) << how << ": a write to the pipe would not wake it";
+    EXPECT_FALSE(link) << how << ": still taken for link 0";
+  }
 }
 
 TEST(LockstepClock, HilLearnsWhetherTheProgramsWroteBeforeTheyAreIdle) {

@@ -257,5 +257,45 @@ TEST(LockstepDeterminismE2E, ClosedLoopNavdAndGuidancedOnTheClock) {
   }
 }
 
+// The library's descriptor cache (harness/src/preload/descriptor_cache.h) changes nothing the
+// programs do: the closed loop over the SLCAN adapter (guidanced writes its commands to a link,
+// navd's solutions reach it through a FIFO) gives the same bytes on every link, the same solutions
+// and the same metrics with the cache and without it (HIL_LOCKSTEP_FD_CACHE=0), with a fraction
+// of the lookups.
+TEST(LockstepDeterminismE2E, DescriptorCacheKeepsTheClosedLoopsBytes) {
+  TempDir dir("lockstep_fd_cache_e2e");
+  const std::string scenario =
+      SourceDir() + "/vectors/scenarios/closed_loop/tractor_autosteer_slcan.yaml";
+  std::map<std::string, std::string> first;
+  std::uint64_t lookups[2] = {0, 0};
+  nlohmann::json metrics[2];
+  for (int run = 0; run < 2; ++run) {
+    const std::string out = dir / ("run" + std::to_string(run));
+    const CommandResult r =
+        RunCommand(std::string(run == 1 ? "HIL_LOCKSTEP_FD_CACHE=0 " : "") + BinDir() +
+                   "/hil run " + scenario + " --short --lockstep --no-html --out " + out);
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    const auto report = nlohmann::json::parse(ReadFile(out + "/report.json"));
+    ASSERT_TRUE(report.contains("lockstep")) << r.out;
+    EXPECT_FALSE(report["lockstep"].contains("fallback")) << report["lockstep"].dump();
+    lookups[run] = report["lockstep"]["descriptor_lookups"].get<std::uint64_t>();
+    metrics[run] = {report["metrics"], report["tracking"], report["criteria"]};
+    for (const char* f :
+         {"captures/ttyCAN.cap", "captures/ttyGPS.cap", "captures/ttyIMU.cap", "estimate.jsonl"}) {
+      const std::string text = ReadFile(out + "/" + f);
+      if (run == 0) {
+        first[f] = text;
+        EXPECT_FALSE(text.empty()) << f;
+      } else {
+        EXPECT_TRUE(text == first[f]) << f << " differs without the cache";
+      }
+    }
+  }
+  EXPECT_EQ(metrics[0], metrics[1]);
+  EXPECT_GT(lookups[0], 0u);
+  EXPECT_LT(lookups[0] * 100, lookups[1])
+      << "with the cache " << lookups[0] << ", without " << lookups[1];
+}
+
 }  // namespace
 }  // namespace hil::test

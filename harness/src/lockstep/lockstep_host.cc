@@ -237,6 +237,7 @@ std::vector<LockstepHost::Process> LockstepHost::Processes() const {
 LockstepHost::Stats LockstepHost::stats() const {
   Stats s = stats_;
   s.grants += shared_->advances.load();  // the programs' own moves of the clock
+  s.descriptor_lookups = shared_->descriptor_lookups.load();
   const int used = std::min(shared_->slots_used.load(), kMaxThreads);
   for (int i = 0; i < used; ++i) {
     s.thread_waits += shared_->slots[i].waits.load();

@@ -1,7 +1,8 @@
 // Calls that can meet another program's wait without a write the kernel counts in the process's
-// /proc/self/io `syscw` (README.md): close and shutdown (the reader sees its end), send, sendto
-// and sendmsg on a socket. Each is the real call; the thread notes that it touched something, so
-// that when it next waits the other programs' threads look at their descriptors again.
+// /proc/self/io `syscw` (README.md): shutdown (the reader sees its end), send, sendto and sendmsg
+// on a socket (close and the other closes: interposed_closes.cc). Each is the real call; the thread
+// notes that it touched something, so that when it next waits the other programs' threads look at
+// their descriptors again.
 #include <sys/socket.h>
 
 #include "preload_state.h"
@@ -9,12 +10,6 @@
 namespace pl = hil::preload;
 
 extern "C" {
-
-int close(int fd) {
-  pl::NoteTouched();
-  pl::ForgetDescriptor(fd);
-  return pl::Real().close(fd);
-}
 
 int shutdown(int fd, int how) {
   pl::NoteTouched();

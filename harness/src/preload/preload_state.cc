@@ -19,6 +19,8 @@
 
 #include "hil/harness/lockstep/lockstep_advance.h"
 
+#include "descriptor_cache.h"
+
 namespace hil::preload {
 namespace lk = harness::lockstep;
 namespace {
@@ -60,6 +62,17 @@ void ResolveAll() {
   Resolve(g_real.sendto, "sendto");
   Resolve(g_real.sendmsg, "sendmsg");
   Resolve(g_real.ioctl, "ioctl");
+  Resolve(g_real.dup2, "dup2");
+  Resolve(g_real.dup3, "dup3");
+  Resolve(g_real.close_range, "close_range");
+  Resolve(g_real.closefrom, "closefrom");
+  Resolve(g_real.fclose, "fclose");
+  Resolve(g_real.freopen, "freopen");
+  Resolve(g_real.freopen64, "freopen64");
+  Resolve(g_real.pclose, "pclose");
+  Resolve(g_real.fcloseall, "fcloseall");
+  Resolve(g_real.closedir, "closedir");
+  Resolve(g_real.daemon, "daemon");
   g_resolved = true;
 }
 
@@ -264,6 +277,12 @@ void ForgetDescriptor(int fd) {
   if (fd >= 0 && fd == g_io_fd) g_io_fd = -1;
 }
 
+void ForgetDescriptors(unsigned first, unsigned last) {
+  if (g_io_fd >= 0 && static_cast<unsigned>(g_io_fd) >= first &&
+      static_cast<unsigned>(g_io_fd) <= last)
+    g_io_fd = -1;
+}
+
 const RealFunctions& Real() {
   if (!g_resolved) ResolveAll();
   return g_real;
@@ -316,14 +335,8 @@ timespec ToTimespec(std::int64_t ns) {
 }
 
 std::uint64_t LinkBitOf(int fd) {
-  const int n = std::min(g_shared->link_count.load(), lk::kMaxLinks);
-  if (n == 0) return lk::kOtherFd;
-  struct stat st {};
-  if (fstat(fd, &st) != 0 || !S_ISCHR(st.st_mode)) return lk::kOtherFd;
-  for (int k = 0; k < n; ++k) {
-    if (g_shared->link_rdev[k] == st.st_rdev) return std::uint64_t{1} << k;
-  }
-  return lk::kOtherFd;
+  const int k = LinkIndexOf(fd);
+  return k < 0 ? lk::kOtherFd : std::uint64_t{1} << k;
 }
 
 int FeedOf(int fd) {

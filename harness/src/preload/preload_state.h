@@ -4,7 +4,9 @@
 // and the one wait every interposed blocking call goes through. No allocation after load, no
 // exception, no lock: the calls may run in any thread at any time.
 
+#include <dirent.h>
 #include <poll.h>
+#include <stdio.h>
 #include <time.h>
 
 #include <cstdint>
@@ -38,6 +40,18 @@ struct RealFunctions {
   ssize_t (*sendto)(int, const void*, size_t, int, const sockaddr*, socklen_t);
   ssize_t (*sendmsg)(int, const msghdr*, int);
   int (*ioctl)(int, unsigned long, ...);
+  // closes and replacements of descriptors (interposed_closes.cc)
+  int (*dup2)(int, int);
+  int (*dup3)(int, int, int);
+  int (*close_range)(unsigned, unsigned, int);
+  void (*closefrom)(int);
+  int (*fclose)(FILE*);
+  FILE* (*freopen)(const char*, const char*, FILE*);
+  FILE* (*freopen64)(const char*, const char*, FILE*);
+  int (*pclose)(FILE*);
+  int (*fcloseall)();
+  int (*closedir)(DIR*);
+  int (*daemon)(int, int);
 };
 
 /// The real functions (resolved at load; a call before that resolves them first).
@@ -72,13 +86,16 @@ void NoteTouched();
 /// The program closes `fd`: if it is the library's own /proc/self/io, the library no longer uses
 /// it (and takes every wait for one after a write from then on).
 void ForgetDescriptor(int fd);
+/// The same for the descriptors `first` to `last` (both included).
+void ForgetDescriptors(unsigned first, unsigned last);
 
 /// The bit of descriptor `fd` in a slot's `links` mask (lockstep_shared.h): its link's, or
-/// kOtherFd for anything that is not one of hil's links (one fstat).
+/// kOtherFd for anything that is not one of hil's links (descriptor_cache.h: one fstat the first
+/// time).
 std::uint64_t LinkBitOf(int fd);
 
 /// Lookahead (hil writes ahead, lockstep_advance.h): the feed of `fd`'s link, or -1 when hil
-/// does not write ahead or `fd` is not a link with a feed (one fstat).
+/// does not write ahead or `fd` is not a link with a feed (as LinkBitOf).
 int FeedOf(int fd);
 /// Bytes of feed `k` that have arrived by now and the programs have not read.
 std::uint64_t FeedAvailable(int k);

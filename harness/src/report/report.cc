@@ -402,6 +402,7 @@ void WriteReportJson(const RunReport& r, const std::string& path) {
                      {"turns", r.lockstep->turns},
                      {"lookahead", r.lockstep->lookahead},
                      {"thread_waits", r.lockstep->thread_waits},
+                     {"descriptor_lookups", r.lockstep->descriptor_lookups},
                      {"wait_s", r.lockstep->wait_s}};
     if (!r.lockstep->fallback.empty()) j["lockstep"]["fallback"] = r.lockstep->fallback;
   }

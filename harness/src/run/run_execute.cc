@@ -277,6 +277,7 @@ void NoteLockstep(RunContext& ctx) {
   r.turns = s.grants;
   r.lookahead = ctx.clocked_turns && ctx.clocked_turns->lookahead();
   r.thread_waits = s.thread_waits;
+  r.descriptor_lookups = s.descriptor_lookups;
   r.wait_s = ToSeconds(s.wait);
 }
 

@@ -28,11 +28,12 @@ class LockstepHost {
   };
   /// Counts for the report.
   struct Stats {
-    std::uint64_t grants = 0;        ///< times hil woke the programs
-    std::uint64_t slept = 0;         ///< waits for idle that slept on the futex
-    Duration wait{};                 ///< wall time spent waiting for idle
-    std::uint64_t thread_waits = 0;  ///< waits the programs' threads blocked in (all slots)
-    std::uint64_t thread_looks = 0;  ///< times they looked at an unmet condition (all slots)
+    std::uint64_t grants = 0;              ///< times hil woke the programs
+    std::uint64_t slept = 0;               ///< waits for idle that slept on the futex
+    Duration wait{};                       ///< wall time spent waiting for idle
+    std::uint64_t thread_waits = 0;        ///< waits the programs' threads blocked in (all slots)
+    std::uint64_t thread_looks = 0;        ///< times they looked at an unmet condition (all slots)
+    std::uint64_t descriptor_lookups = 0;  ///< fstats the library made to tell descriptors apart
   };
   /// Called while a wait for idle lasts (every kStep): the threads not idle, whether this is a
   /// new wait. False gives the wait up.

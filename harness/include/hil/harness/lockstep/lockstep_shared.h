@@ -41,7 +41,7 @@ namespace hil::harness::lockstep {
 /// The environment variable that names the shared file (set by hil for the programs it starts).
 inline constexpr const char* kEnvFile = "HIL_LOCKSTEP";
 inline constexpr std::uint32_t kMagic = 0x4b434c48;  // "HLCK"
-inline constexpr std::uint32_t kVersion = 4;
+inline constexpr std::uint32_t kVersion = 5;
 /// Threads (of every program of a run together) and processes the file has room for.
 inline constexpr int kMaxThreads = 256;
 inline constexpr int kMaxProcesses = 32;
@@ -136,6 +136,9 @@ struct Shared {
   std::atomic<std::uint64_t> advances;  ///< clock moves that woke a thread (statistics)
   /// set by the library when a thread waits in epoll (whose descriptors it cannot tell apart)
   std::atomic<std::uint32_t> epoll_seen;
+  /// descriptors the library told apart with fstat (statistics: with its per-process cache, once
+  /// per descriptor and link opened, not once per wait; harness/src/preload/descriptor_cache.h)
+  std::atomic<std::uint64_t> descriptor_lookups;
   LinkFeed feeds[kFeedLinks];
   ThreadSlot slots[kMaxThreads];
   ProcessEntry processes[kMaxProcesses];

@@ -87,8 +87,9 @@ struct LockstepReport {
   std::string fallback;     ///< why the /proc probe paced the run after all (empty: it did not)
   std::uint64_t turns = 0;  ///< times hil (or, with lookahead, a program) woke the programs
   bool lookahead = false;   ///< hil wrote ahead, the programs moved their own clock
-  std::uint64_t thread_waits = 0;  ///< waits the programs' threads blocked in
-  double wait_s = 0;               ///< wall seconds hil waited for the programs (wall clock)
+  std::uint64_t thread_waits = 0;        ///< waits the programs' threads blocked in
+  std::uint64_t descriptor_lookups = 0;  ///< fstats the library made to tell descriptors apart
+  double wait_s = 0;                     ///< wall seconds hil waited for the programs (wall clock)
 };
 
 struct RunReport {
