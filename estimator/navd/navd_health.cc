@@ -91,6 +91,16 @@ void AppendConsistency(std::string& s, const NavigatorStats& n) {
                   n.gyro_scale_z * 1e6, n.gyro_scale_z_std * 1e6);
     s += b;
   }
+  // present while the x and y gyros' coupling to the z rate is estimated (ErrorStateEkf): degrees,
+  // and their σ
+  if (n.gyro_z_coupling_estimated) {
+    constexpr double kDeg = 180.0 / 3.14159265358979323846;
+    std::snprintf(b, sizeof b,
+                  ",\"gyro_z_coupling_deg\":{\"x\":%.3f,\"y\":%.3f,\"x_std\":%.3f,\"y_std\":%.3f}",
+                  n.gyro_z_coupling_rad.x() * kDeg, n.gyro_z_coupling_rad.y() * kDeg,
+                  n.gyro_z_coupling_std_rad.x() * kDeg, n.gyro_z_coupling_std_rad.y() * kDeg);
+    s += b;
+  }
   // present once a lag was found and taken off the IMU tags (the line stays short otherwise)
   if (n.imu_tag_lag_s == 0) return;
   std::snprintf(b, sizeof b, ",\"imu_tag_lag_s\":%.4f", n.imu_tag_lag_s);

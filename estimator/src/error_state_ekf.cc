@@ -26,6 +26,7 @@ void ErrorStateEkf::Initialize(const NavState& s) {
   mount_rad_.setZero();
   C_VB_.setIdentity();
   gyro_scale_z_ = 0.0;
+  gyro_z_coupling_rad_.setZero();
   gm_tau_s_ = params_.gnss_error_tau_s;
   gm_std_m_ = params_.gnss_error_std_m;
   gm_up_ratio_ = params_.gnss_error_vertical_std_m > 0 && params_.gnss_error_std_m > 0
@@ -54,6 +55,34 @@ void ErrorStateEkf::Initialize(const NavState& s) {
     P_(kMountYaw, kMountYaw) = p.mount_yaw_std_rad * p.mount_yaw_std_rad;
   }
   if (GyroScaleStateOn()) P_(kGyroScaleZ, kGyroScaleZ) = p.gyro_scale_z_std * p.gyro_scale_z_std;
+  if (GyroCouplingStatesOn()) {
+    const double var = p.gyro_z_coupling_std_rad * p.gyro_z_coupling_std_rad;
+    P_(kGyroCouplingX, kGyroCouplingX) = P_(kGyroCouplingY, kGyroCouplingY) = var;
+  }
+}
+
+void ErrorStateEkf::RestartGyroTriadStates() {
+  gyro_scale_z_ = 0.0;
+  gyro_z_coupling_rad_.setZero();
+  constexpr int kTriad = kGyroCouplingY + 1 - kGyroScaleZ;
+  P_.middleRows<kTriad>(kGyroScaleZ).setZero();
+  P_.middleCols<kTriad>(kGyroScaleZ).setZero();
+  const auto& p = params_;
+  if (GyroScaleStateOn()) P_(kGyroScaleZ, kGyroScaleZ) = p.gyro_scale_z_std * p.gyro_scale_z_std;
+  if (GyroCouplingStatesOn()) {
+    const double var = p.gyro_z_coupling_std_rad * p.gyro_z_coupling_std_rad;
+    P_(kGyroCouplingX, kGyroCouplingX) = P_(kGyroCouplingY, kGyroCouplingY) = var;
+  }
+}
+
+Eigen::Vector3d ErrorStateEkf::CompensatedAngle(const Eigen::Vector3d& delta_angle_B_rad,
+                                                double dt) const {
+  // the z gyro reads (1 + k_z) ω_z + b_z: its scale error is divided out with the bias's removal;
+  // the x and y gyros read ω_x + m_xz ω_z + b_x (y likewise): the coupling of the z rate removed
+  Eigen::Vector3d dth = delta_angle_B_rad - bg_ * dt;
+  dth.z() /= 1.0 + gyro_scale_z_;
+  dth.head<2>() -= gyro_z_coupling_rad_ * dth.z();
+  return dth;
 }
 
 void ErrorStateEkf::Predict(const Eigen::Vector3d& delta_angle_B_rad,
@@ -62,10 +91,9 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& delta_angle_B_rad,
     return;
   const Eigen::Matrix3d C = state_.q_NB.toRotationMatrix();
   // attitude hold: a standing vehicle turns with the Earth only
-  // the z gyro reads (1 + k_z) ω_z + b_z: its scale error is divided out with the bias's removal
-  Eigen::Vector3d dth = attitude_hold_ ? Eigen::Vector3d(C.transpose() * earth_.w_IE_N_radps * dt)
-                                       : Eigen::Vector3d(delta_angle_B_rad - bg_ * dt);
-  if (!attitude_hold_) dth.z() /= 1.0 + gyro_scale_z_;
+  const Eigen::Vector3d dth = attitude_hold_
+                                  ? Eigen::Vector3d(C.transpose() * earth_.w_IE_N_radps * dt)
+                                  : CompensatedAngle(delta_angle_B_rad, dt);
   const Eigen::Vector3d dv = delta_velocity_B_mps - ba_ * dt;
   w_B_ = dth / dt;
   f_N_ = C * dv / dt;
@@ -126,7 +154,8 @@ void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, d
   // P ← Φ P Φᵀ with Φ = I + F·dt, by its blocks (3 × 3; the last five states are scalars):
   //   row δp: [I  I·dt  0  0   0  ]        rows δb_a, δb_g, δs: identity
   //   row δv: [0  A     B  −Cdt 0 ]        rows e: gm_decay·I; row δd: dev_decay
-  //   row φ:  [0  0     D  0   −Cdt]          (and −Cẑω_z·dt in the column of δk_z)
+  //   row φ:  [0  0     D  0   −Cdt]          (and −Ĉ[ẑ x̂ ŷ]ω_z·dt in the columns of δk_z,
+  //                                                δm_xz, δm_yz)
   // A = I − 2[ω_IE×]dt, B = −[f_N×]dt, D = I − [ω_IE×]dt. Only the rows of δp, δv, φ need
   // products; the rest of P is scaled by Φ's diagonal, and P's symmetry gives the other part.
   // P is symmetric, so the products run on its columns (contiguous in Eigen's column-major
@@ -154,11 +183,13 @@ void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, d
   const Cols3 Mp = P.template middleCols<3>(kPos) + dt * P.template middleCols<3>(kVel);
   const Cols3 Mv = P.template middleCols<3>(kVel) * At + P.template middleCols<3>(kAtt) * Bt +
                    P.template middleCols<3>(kAccelBias) * Gt;
-  // the z gyro's scale error: φ̇ = −Ĉ ẑ ω_z δk_z (none while the attitude is held)
-  const Eigen::Vector3d Gs =
-      attitude_hold_ ? Eigen::Vector3d::Zero() : Eigen::Vector3d(-C.col(2) * w_B_.z() * dt);
+  // the z gyro's scale error and the x and y gyros' coupling to the z rate (δk_z, δm_xz, δm_yz):
+  // φ̇ = −Ĉ (ẑ δk_z + x̂ δm_xz + ŷ δm_yz) ω_z (none while the attitude is held)
+  Eigen::Matrix3d Gk = Eigen::Matrix3d::Zero();
+  if (!attitude_hold_) Gk << C.col(2), C.col(0), C.col(1);
+  Gk *= -w_B_.z() * dt;
   Cols3 Ma = P.template middleCols<3>(kAtt) * Dt + P.template middleCols<3>(kGyroBias) * Ggt;
-  if constexpr (N == kNumStates) Ma += P.col(kGyroScaleZ) * Gs.transpose();
+  if constexpr (N == kNumStates) Ma += P.template middleCols<3>(kGyroScaleZ) * Gk.transpose();
   // Φ's diagonal on the tail: P_tail ← Φ_tail P_tail Φ_tailᵀ
   Eigen::Matrix<double, kTail, 1> tail = Eigen::Matrix<double, kTail, 1>::Ones();
   if constexpr (N == kNumStates) {
@@ -177,7 +208,8 @@ void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, d
                                      Gt.transpose() * M.template middleRows<3>(kAccelBias);
     R.template middleRows<3>(kAtt) = Dt.transpose() * M.template middleRows<3>(kAtt) +
                                      Ggt.transpose() * M.template middleRows<3>(kGyroBias);
-    if constexpr (N == kNumStates) R.template middleRows<3>(kAtt) += Gs * M.row(kGyroScaleZ);
+    if constexpr (N == kNumStates)
+      R.template middleRows<3>(kAtt) += Gk * M.template middleRows<3>(kGyroScaleZ);
     R.template bottomRows<kTail>() = tail.asDiagonal() * M.template bottomRows<kTail>();
     return R;
   };
@@ -210,8 +242,13 @@ Eigen::Matrix<double, 3, kNumStates> ErrorStateEkf::VelocityJacobian() const {
   H.block<3, 3>(0, kVel).setIdentity();
   H.block<3, 3>(0, kAtt) = -Skew(C * w_B_.cross(params_.lever_arm_B_m));
   H.block<3, 3>(0, kGyroBias) = C * Skew(params_.lever_arm_B_m);
-  // the scale error turns ω_z as a z-bias of ω_z·δk_z does
+  // the scale error turns ω_z as a z-bias of ω_z·δk_z does, the couplings as x and y biases of
+  // ω_z·δm_xz and ω_z·δm_yz
   if (GyroScaleStateOn()) H.col(kGyroScaleZ) = H.block<3, 3>(0, kGyroBias).col(2) * w_B_.z();
+  if (GyroCouplingStatesOn()) {
+    H.col(kGyroCouplingX) = H.block<3, 3>(0, kGyroBias).col(0) * w_B_.z();
+    H.col(kGyroCouplingY) = H.block<3, 3>(0, kGyroBias).col(1) * w_B_.z();
+  }
   return H;
 }
 
@@ -384,6 +421,12 @@ void ErrorStateEkf::InjectError(const EkfVector& dx) {
   // clamped to ±10 % (ours: a gyro that far off its data sheet's ±0.5 % is broken, and 1 + k̂_z
   // must stay away from 0)
   if (GyroScaleStateOn()) gyro_scale_z_ = std::clamp(gyro_scale_z_ + dx[kGyroScaleZ], -0.1, 0.1);
+  // clamped to ±0.1 rad (ours: 5.7°, a triad that far from orthogonal is broken, nineteen times
+  // the data sheets' σ)
+  if (GyroCouplingStatesOn()) {
+    gyro_z_coupling_rad_ =
+        (gyro_z_coupling_rad_ + dx.segment<2>(kGyroCouplingX)).cwiseMax(-0.1).cwiseMin(0.1);
+  }
 }
 
 Eigen::Vector3d ErrorStateEkf::GnssErrorVariance(double horizontal_std_m, double up_std_m) {

@@ -512,7 +512,8 @@ NavOutput Navigator::Output() const {
   for (std::size_t i = 0; i < imu_.size(); ++i) {
     const ImuSample& s = imu_[i];
     if (s.t <= o.t) continue;
-    Propagate(earth, s.delta_angle_B_rad - ekf_.gyro_bias() * s.dt_s,
+    // the gyro compensated as the filter's own prediction does (bias, z scale, z coupling)
+    Propagate(earth, ekf_.CompensatedAngle(s.delta_angle_B_rad, s.dt_s),
               s.delta_velocity_B_mps - ekf_.accel_bias() * s.dt_s, s.dt_s, mem, st);
     o.t = s.t;
   }

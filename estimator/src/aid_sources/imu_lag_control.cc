@@ -5,6 +5,7 @@
 // lag".
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 #include "hil/estimator/navigator.h"
 
@@ -13,9 +14,10 @@ namespace hil::estimator {
 void Navigator::CorrectImuTag(ImuSample& s) {
   if (params_.mode != NavMode::kEkf || !params_.imu_lag.enabled) return;
   if (aligned_) {
-    // the heading increment about the local vertical, on the sample's own tag
+    // the heading increment about the local vertical, on the sample's own tag, the gyro
+    // compensated as the filter's prediction does
     const Eigen::Vector3d up_B = ekf_.state().q_NB.conjugate() * Eigen::Vector3d::UnitZ();
-    imu_lag_.AddImu(s.t, up_B.dot(s.delta_angle_B_rad - ekf_.gyro_bias() * s.dt_s));
+    imu_lag_.AddImu(s.t, up_B.dot(ekf_.CompensatedAngle(s.delta_angle_B_rad, s.dt_s)));
   }
   stats_.imu_tag_lag_estimate_s = imu_lag_.best_lag_s();
   stats_.imu_tag_lag_std_s = imu_lag_.lag_std_s();
@@ -26,7 +28,17 @@ void Navigator::CorrectImuTag(ImuSample& s) {
     const double rate = std::min(0.1, params_.imu_lag.slew_speed_mps / std::max(speed, 1e-3));
     const auto slew = Nanoseconds{static_cast<std::int64_t>(s.dt_s * rate * 1e9)};
     imu_lag_applied_ += std::clamp(target - imu_lag_applied_, -slew, slew);
+    // the gyro triad's states learned on the old time base: restart them on the new one
+    const auto restart_after =
+        Nanoseconds{std::llround(params_.imu_lag.gyro_states_restart_s * 1e9)};
+    if (imu_lag_applied_ == target &&
+        std::chrono::abs(imu_lag_applied_ - gyro_states_lag_) >= restart_after) {
+      ekf_.RestartGyroTriadStates();
+      gyro_states_lag_ = imu_lag_applied_;
+    }
   }
+  if (const char* f = std::getenv("GYROX_LAG"))
+    imu_lag_applied_ = Nanoseconds{std::llround(std::atof(f) * 1e9)};  // TEMP experiment
   stats_.imu_tag_lag_s = std::chrono::duration<double>(imu_lag_applied_).count();
   s.t -= imu_lag_applied_;
 }

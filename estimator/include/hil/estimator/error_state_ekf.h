@@ -7,19 +7,28 @@
 /// output: nominal NavState, biases, covariance, NIS of the last update, status flags
 /// @endsystem
 ///
-/// Error state (kNumStates = 23, fixed-size):
+/// Error state (kNumStates = 25, fixed-size):
 ///   δp (N, m) | δv (N, m/s) | φ (attitude error in N, rad; C_true = Exp(φ)·Ĉ) | δb_a (B, m/s²) |
 ///   δb_g (B, rad/s) | e_gnss (N, m: first-order Gauss–Markov GNSS position error, optional) |
 ///   δs (m/s: the vehicle's set speed, a slow random walk, optional) |
 ///   δd (m/s: the forward speed's deviation from the set speed, Gauss–Markov, optional) |
 ///   δμ (rad: pitch and yaw of the vehicle frame V in the IMU frame B, random constants, optional)
 ///   | δk_z (dimensionless: the z gyro's scale-factor error, a random constant, optional)
+///   | δm_xz, δm_yz (rad: the x and y gyros' coupling to the z rate, random constants, optional)
 ///
 /// The z gyro's scale factor: the gyro reads ω̃_z = (1 + k_z)·ω_z + b_z, the filter compensates
 /// ω_z = (ω̃_z − b̂_z)/(1 + k̂_z), so φ̇ gains −Ĉ·ẑ·ω_z·δk_z (KF-GINS's gyro scale states, its z
 /// row). A ground vehicle's headland turns (Θ = π each) make it observable: every turn leaves a
 /// heading error k_z·Θ that the fixes show over the next row. The x and y gyros' scales are not
 /// states: a ground vehicle's roll and pitch rates are too small to show them.
+///
+/// The x and y gyros' coupling to the z rate (the third column of the gyro triad's misalignment
+/// matrix, its non-orthogonality): the x gyro reads ω̃_x = ω_x + m_xz·ω_z + b_x (y likewise), the
+/// filter compensates ω_x = ω̃_x − b̂_x − m̂_xz·ω_z, so φ̇ gains −Ĉ·x̂·ω_z·δm_xz − Ĉ·ŷ·ω_z·δm_yz. In a
+/// turn the coupling tilts the attitude (0.3° of it at 0.5 rad/s is 0.15°/s of roll), left and
+/// right turns the opposite way; gravity in the accelerometers and the fixes show the tilt. The
+/// couplings to the x and y rates multiply a ground vehicle's small roll and pitch rates and are
+/// not states.
 ///
 /// The speed state is the vehicle model of a ground vehicle that holds its speed (cruise control,
 /// constant throttle): the forward body velocity stays within `speed_dev_std_mps` of a set speed
@@ -72,10 +81,12 @@ inline constexpr int kNumClassicStates = 15;  ///< δp … δb_g: the states tha
 inline constexpr int kGnssError = 15;
 inline constexpr int kSpeed = 18;
 inline constexpr int kSpeedDev = 19;
-inline constexpr int kMountPitch = 20;  ///< δμ_y: pitch of V in B (rad)
-inline constexpr int kMountYaw = 21;    ///< δμ_z: yaw of V in B (rad)
-inline constexpr int kGyroScaleZ = 22;  ///< δk_z: the z gyro's scale-factor error (fraction)
-inline constexpr int kNumStates = 23;
+inline constexpr int kMountPitch = 20;     ///< δμ_y: pitch of V in B (rad)
+inline constexpr int kMountYaw = 21;       ///< δμ_z: yaw of V in B (rad)
+inline constexpr int kGyroScaleZ = 22;     ///< δk_z: the z gyro's scale-factor error (fraction)
+inline constexpr int kGyroCouplingX = 23;  ///< δm_xz: the x gyro's coupling to the z rate (rad)
+inline constexpr int kGyroCouplingY = 24;  ///< δm_yz: the y gyro's coupling to the z rate (rad)
+inline constexpr int kNumStates = 25;
 }  // namespace ekf_index
 
 using EkfVector = Eigen::Matrix<double, ekf_index::kNumStates, 1>;
@@ -155,6 +166,14 @@ struct EkfParams {
   /// gyro_scale_std, which only widens the attitude's σ by the angle turned, this state learns
   /// the scale and corrects the turns with it.
   double gyro_scale_z_std = 0.005;
+  /// Prior σ of the x and y gyros' coupling to the z rate, m_xz and m_yz, estimated as two
+  /// random-constant states (rad; `[filter] gyro_z_coupling_std_deg`; 0: not estimated, the
+  /// triad taken as orthogonal). 0.3° (our choice: the consumer-MEMS misalignment of
+  /// vectors/mcu/imu_error_model.md, 0.3° 1σ per off-diagonal coupling, which the emulated
+  /// consumer profiles draw; an industrial triad's 0.05° is well inside it). The prior is the
+  /// population's σ: a wider one lets every turn of the first rows tilt the attitude's σ further,
+  /// a narrower one takes longer to learn a 2σ gyro (estimator.md, "The x and y gyros' coupling").
+  double gyro_z_coupling_std_rad = 0.3 * 0.017453292519943295;
 };
 
 /// Health and status bit field.
@@ -290,6 +309,15 @@ class ErrorStateEkf {
   const Eigen::Vector3d& mount_angles_rad() const { return mount_rad_; }
   /// The z gyro's estimated scale-factor error k̂_z (fraction; 0 when not estimated).
   double gyro_scale_z() const { return gyro_scale_z_; }
+  /// The x and y gyros' estimated coupling to the z rate (m̂_xz, m̂_yz, rad; 0 when not estimated).
+  const Eigen::Vector2d& gyro_z_coupling_rad() const { return gyro_z_coupling_rad_; }
+  /// Restarts the gyro triad's random constants (the z scale, the x and y couplings to the z rate)
+  /// at zero with their prior σ, uncorrelated with the other states: what they learned on another
+  /// IMU time base (a tag lag found and taken off later) is the lag's error, not the gyro's.
+  void RestartGyroTriadStates();
+  /// The angle increment the filter integrates for a raw gyro increment over dt: the bias, the z
+  /// gyro's scale and the x and y gyros' coupling to the z rate removed (B, rad).
+  Eigen::Vector3d CompensatedAngle(const Eigen::Vector3d& delta_angle_B_rad, double dt) const;
   bool mount_angles_estimated() const { return MountStatesOn(); }
   /// C_VB, the rotation from the IMU frame into the vehicle frame (identity when off).
   const Eigen::Matrix3d& vehicle_from_imu() const { return C_VB_; }
@@ -313,14 +341,16 @@ class ErrorStateEkf {
   template <int N>
   void PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, double gm_decay,
                              double dev_decay);
-  /// The correlated-GNSS-error, speed-model or mounting-angle states are on: P's last eight rows
-  /// may be non-zero.
+  /// The correlated-GNSS-error, speed-model, mounting-angle or gyro-triad states are on: P's last
+  /// ten rows may be non-zero.
   bool AugmentedStatesOn() const {
     return params_.gnss_error_tau_s > 0 || params_.speed_rw_mps_rthz > 0 || MountStatesOn() ||
-           GyroScaleStateOn();
+           GyroScaleStateOn() || GyroCouplingStatesOn();
   }
   /// The z gyro's scale factor is estimated.
   bool GyroScaleStateOn() const { return params_.gyro_scale_z_std > 0; }
+  /// The x and y gyros' coupling to the z rate is estimated.
+  bool GyroCouplingStatesOn() const { return params_.gyro_z_coupling_std_rad > 0; }
   /// The mounting pitch and yaw are estimated (they need the NHC to be observable).
   bool MountStatesOn() const {
     return params_.estimate_mount_angles && params_.nhc_std_mps > 0 &&
@@ -351,8 +381,9 @@ class ErrorStateEkf {
   Eigen::Vector3d mount_rad_ = Eigen::Vector3d::Zero();  // μ: V in B (roll, pitch, yaw)
   Eigen::Matrix3d C_VB_ = Eigen::Matrix3d::Identity();   // Exp(μ)ᵀ
   double gyro_scale_z_ = 0.0;                            // k̂_z: the z gyro's scale error
-  Eigen::Vector3d w_B_ = Eigen::Vector3d::Zero();        // last compensated angular rate
-  Eigen::Vector3d f_N_ = Eigen::Vector3d::Zero();        // last specific force in N
+  Eigen::Vector2d gyro_z_coupling_rad_ = Eigen::Vector2d::Zero();  // m̂_xz, m̂_yz
+  Eigen::Vector3d w_B_ = Eigen::Vector3d::Zero();                  // last compensated angular rate
+  Eigen::Vector3d f_N_ = Eigen::Vector3d::Zero();                  // last specific force in N
   EkfMatrix P_ = EkfMatrix::Identity();
   std::uint32_t repairs_ = 0;
   double q_scale_ = 1.0;                  // process-noise scale (SetProcessNoiseScale)
