@@ -103,7 +103,8 @@ void AppendConsistency(std::string& s, const NavigatorStats& n) {
   }
   // present once a lag was found and taken off the IMU tags (the line stays short otherwise)
   if (n.imu_tag_lag_s == 0) return;
-  std::snprintf(b, sizeof b, ",\"imu_tag_lag_s\":%.4f", n.imu_tag_lag_s);
+  std::snprintf(b, sizeof b, ",\"imu_tag_lag_s\":%.4f,\"imu_tag_lag_residual_s\":%.4f",
+                n.imu_tag_lag_s, n.imu_time_residual_s);
   s += b;
 }
 

@@ -27,6 +27,7 @@ void ErrorStateEkf::Initialize(const NavState& s) {
   C_VB_.setIdentity();
   gyro_scale_z_ = 0.0;
   gyro_z_coupling_rad_.setZero();
+  time_residual_s_ = 0.0;
   gm_tau_s_ = params_.gnss_error_tau_s;
   gm_std_m_ = params_.gnss_error_std_m;
   gm_up_ratio_ = params_.gnss_error_vertical_std_m > 0 && params_.gnss_error_std_m > 0
@@ -59,12 +60,19 @@ void ErrorStateEkf::Initialize(const NavState& s) {
     const double var = p.gyro_z_coupling_std_rad * p.gyro_z_coupling_std_rad;
     P_(kGyroCouplingX, kGyroCouplingX) = P_(kGyroCouplingY, kGyroCouplingY) = var;
   }
+  if (TimeResidualStateOn())
+    P_(kImuTimeResidual, kImuTimeResidual) = p.imu_time_residual_std_s * p.imu_time_residual_std_s;
 }
 
-void ErrorStateEkf::RestartGyroTriadStates() {
+void ErrorStateEkf::ShiftImuTags(double shift_s) {
+  if (TimeResidualStateOn() && std::isfinite(shift_s)) time_residual_s_ += shift_s;
+}
+
+void ErrorStateEkf::RestartTimeBaseStates() {
   gyro_scale_z_ = 0.0;
   gyro_z_coupling_rad_.setZero();
-  constexpr int kTriad = kGyroCouplingY + 1 - kGyroScaleZ;
+  time_residual_s_ = 0.0;
+  constexpr int kTriad = kImuTimeResidual + 1 - kGyroScaleZ;
   P_.middleRows<kTriad>(kGyroScaleZ).setZero();
   P_.middleCols<kTriad>(kGyroScaleZ).setZero();
   const auto& p = params_;
@@ -73,6 +81,8 @@ void ErrorStateEkf::RestartGyroTriadStates() {
     const double var = p.gyro_z_coupling_std_rad * p.gyro_z_coupling_std_rad;
     P_(kGyroCouplingX, kGyroCouplingX) = P_(kGyroCouplingY, kGyroCouplingY) = var;
   }
+  if (TimeResidualStateOn())
+    P_(kImuTimeResidual, kImuTimeResidual) = p.imu_time_residual_std_s * p.imu_time_residual_std_s;
 }
 
 Eigen::Vector3d ErrorStateEkf::CompensatedAngle(const Eigen::Vector3d& delta_angle_B_rad,
@@ -233,6 +243,8 @@ Eigen::Matrix<double, 3, kNumStates> ErrorStateEkf::PositionJacobian() const {
   H.block<3, 3>(0, kPos).setIdentity();
   H.block<3, 3>(0, kAtt) = -Skew(state_.q_NB * params_.lever_arm_B_m);
   if (params_.gnss_error_tau_s > 0) H.block<3, 3>(0, kGnssError).setIdentity();
+  // the fix sees the INS δt later: its antenna moved on by v·δt
+  if (TimeResidualStateOn()) H.col(kImuTimeResidual) = AntennaVelocity();
   return H;
 }
 
@@ -249,6 +261,7 @@ Eigen::Matrix<double, 3, kNumStates> ErrorStateEkf::VelocityJacobian() const {
     H.col(kGyroCouplingX) = H.block<3, 3>(0, kGyroBias).col(0) * w_B_.z();
     H.col(kGyroCouplingY) = H.block<3, 3>(0, kGyroBias).col(1) * w_B_.z();
   }
+  if (TimeResidualStateOn()) H.col(kImuTimeResidual) = AccelerationN();
   return H;
 }
 
@@ -279,8 +292,9 @@ Eigen::Matrix<double, 2, kNumStates> ErrorStateEkf::NonHolonomicJacobian() const
 UpdateResult ErrorStateEkf::UpdatePosition(const Eigen::Vector3d& p_antenna_N_m,
                                            const Eigen::Vector3d& std_m) {
   if (!AllFinite(p_antenna_N_m) || !AllFinite(std_m)) return {};
-  const Eigen::Vector3d pred =
-      AntennaPosition() + (params_.gnss_error_tau_s > 0 ? e_gnss_ : Eigen::Vector3d::Zero());
+  const Eigen::Vector3d pred = AntennaPosition() +
+                               (params_.gnss_error_tau_s > 0 ? e_gnss_ : Eigen::Vector3d::Zero()) +
+                               AntennaVelocity() * time_residual_s_;
   Eigen::Matrix3d R = Eigen::Matrix3d::Zero();
   for (int i = 0; i < 3; ++i)
     R(i, i) = std::pow(std::max(std_m[i], params_.gnss_pos_std_floor_m), 2);
@@ -293,7 +307,8 @@ UpdateResult ErrorStateEkf::UpdateVelocity(const Eigen::Vector3d& v_antenna_N_mp
   Eigen::Matrix3d R = Eigen::Matrix3d::Zero();
   for (int i = 0; i < 3; ++i)
     R(i, i) = std::pow(std::max(std_mps[i], params_.gnss_vel_std_floor_mps), 2);
-  return Update<3>(v_antenna_N_mps - AntennaVelocity(), VelocityJacobian(), R);
+  const Eigen::Vector3d pred = AntennaVelocity() + AccelerationN() * time_residual_s_;
+  return Update<3>(v_antenna_N_mps - pred, VelocityJacobian(), R);
 }
 
 UpdateResult ErrorStateEkf::UpdateNonHolonomic() {
@@ -421,6 +436,9 @@ void ErrorStateEkf::InjectError(const EkfVector& dx) {
   // clamped to ±10 % (ours: a gyro that far off its data sheet's ±0.5 % is broken, and 1 + k̂_z
   // must stay away from 0)
   if (GyroScaleStateOn()) gyro_scale_z_ = std::clamp(gyro_scale_z_ + dx[kGyroScaleZ], -0.1, 0.1);
+  // clamped to ±0.1 s (ours: ImuTimeOffset's found lag has σ below 10 ms)
+  if (TimeResidualStateOn())
+    time_residual_s_ = std::clamp(time_residual_s_ + dx[kImuTimeResidual], -0.1, 0.1);
   // clamped to ±0.1 rad (ours: 5.7°, a triad that far from orthogonal is broken, nineteen times
   // the data sheets' σ)
   if (GyroCouplingStatesOn()) {

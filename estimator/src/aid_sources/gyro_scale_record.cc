@@ -16,6 +16,7 @@ void Navigator::RecordGyroScale() {
     stats_.gyro_scale_z = ekf_.gyro_scale_z();
     stats_.gyro_scale_z_std = std_of(ekf_index::kGyroScaleZ);
   }
+  stats_.imu_time_residual_s = ekf_.imu_time_residual_s();
   stats_.gyro_z_coupling_estimated = ekf_.params().gyro_z_coupling_std_rad > 0;
   if (stats_.gyro_z_coupling_estimated) {
     stats_.gyro_z_coupling_rad = ekf_.gyro_z_coupling_rad();

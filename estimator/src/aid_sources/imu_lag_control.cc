@@ -5,7 +5,6 @@
 // lag".
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 
 #include "hil/estimator/navigator.h"
 
@@ -27,18 +26,19 @@ void Navigator::CorrectImuTag(ImuSample& s) {
     const double speed = ekf_.state().v_N_mps.head<2>().norm();
     const double rate = std::min(0.1, params_.imu_lag.slew_speed_mps / std::max(speed, 1e-3));
     const auto slew = Nanoseconds{static_cast<std::int64_t>(s.dt_s * rate * 1e9)};
-    imu_lag_applied_ += std::clamp(target - imu_lag_applied_, -slew, slew);
+    const Nanoseconds step = std::clamp(target - imu_lag_applied_, -slew, slew);
+    imu_lag_applied_ += step;
+    // the tags move earlier by the step: the EKF's residual lag shrinks by as much
+    ekf_.ShiftImuTags(-std::chrono::duration<double>(step).count());
     // the gyro triad's states learned on the old time base: restart them on the new one
     const auto restart_after =
         Nanoseconds{std::llround(params_.imu_lag.gyro_states_restart_s * 1e9)};
     if (imu_lag_applied_ == target &&
         std::chrono::abs(imu_lag_applied_ - gyro_states_lag_) >= restart_after) {
-      ekf_.RestartGyroTriadStates();
+      ekf_.RestartTimeBaseStates();
       gyro_states_lag_ = imu_lag_applied_;
     }
   }
-  if (const char* f = std::getenv("GYROX_LAG"))
-    imu_lag_applied_ = Nanoseconds{std::llround(std::atof(f) * 1e9)};  // TEMP experiment
   stats_.imu_tag_lag_s = std::chrono::duration<double>(imu_lag_applied_).count();
   s.t -= imu_lag_applied_;
 }

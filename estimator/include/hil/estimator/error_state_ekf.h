@@ -7,7 +7,7 @@
 /// output: nominal NavState, biases, covariance, NIS of the last update, status flags
 /// @endsystem
 ///
-/// Error state (kNumStates = 25, fixed-size):
+/// Error state (kNumStates = 26, fixed-size):
 ///   δp (N, m) | δv (N, m/s) | φ (attitude error in N, rad; C_true = Exp(φ)·Ĉ) | δb_a (B, m/s²) |
 ///   δb_g (B, rad/s) | e_gnss (N, m: first-order Gauss–Markov GNSS position error, optional) |
 ///   δs (m/s: the vehicle's set speed, a slow random walk, optional) |
@@ -15,6 +15,12 @@
 ///   δμ (rad: pitch and yaw of the vehicle frame V in the IMU frame B, random constants, optional)
 ///   | δk_z (dimensionless: the z gyro's scale-factor error, a random constant, optional)
 ///   | δm_xz, δm_yz (rad: the x and y gyros' coupling to the z rate, random constants, optional)
+///   | δt (s: the IMU tags' residual lag behind the fixes' time, a random constant, optional)
+///
+/// The residual lag: after the tag lag navd found and took off (ImuTimeOffset) the INS at tag time
+/// τ is the vehicle at τ − δt, so a fix at t is predicted as the INS's antenna at t plus its
+/// velocity times δt (its velocity plus its acceleration times δt): H columns v̂_ant and â_N. A few
+/// milliseconds, where this first order holds (½·a·δt² is 4 µm at 3 m/s² and 1.5 ms).
 ///
 /// The z gyro's scale factor: the gyro reads ω̃_z = (1 + k_z)·ω_z + b_z, the filter compensates
 /// ω_z = (ω̃_z − b̂_z)/(1 + k̂_z), so φ̇ gains −Ĉ·ẑ·ω_z·δk_z (KF-GINS's gyro scale states, its z
@@ -81,12 +87,13 @@ inline constexpr int kNumClassicStates = 15;  ///< δp … δb_g: the states tha
 inline constexpr int kGnssError = 15;
 inline constexpr int kSpeed = 18;
 inline constexpr int kSpeedDev = 19;
-inline constexpr int kMountPitch = 20;     ///< δμ_y: pitch of V in B (rad)
-inline constexpr int kMountYaw = 21;       ///< δμ_z: yaw of V in B (rad)
-inline constexpr int kGyroScaleZ = 22;     ///< δk_z: the z gyro's scale-factor error (fraction)
-inline constexpr int kGyroCouplingX = 23;  ///< δm_xz: the x gyro's coupling to the z rate (rad)
-inline constexpr int kGyroCouplingY = 24;  ///< δm_yz: the y gyro's coupling to the z rate (rad)
-inline constexpr int kNumStates = 25;
+inline constexpr int kMountPitch = 20;       ///< δμ_y: pitch of V in B (rad)
+inline constexpr int kMountYaw = 21;         ///< δμ_z: yaw of V in B (rad)
+inline constexpr int kGyroScaleZ = 22;       ///< δk_z: the z gyro's scale-factor error (fraction)
+inline constexpr int kGyroCouplingX = 23;    ///< δm_xz: the x gyro's coupling to the z rate (rad)
+inline constexpr int kGyroCouplingY = 24;    ///< δm_yz: the y gyro's coupling to the z rate (rad)
+inline constexpr int kImuTimeResidual = 25;  ///< δt: the IMU tags' residual lag (s)
+inline constexpr int kNumStates = 26;
 }  // namespace ekf_index
 
 using EkfVector = Eigen::Matrix<double, ekf_index::kNumStates, 1>;
@@ -168,12 +175,18 @@ struct EkfParams {
   double gyro_scale_z_std = 0.005;
   /// Prior σ of the x and y gyros' coupling to the z rate, m_xz and m_yz, estimated as two
   /// random-constant states (rad; `[filter] gyro_z_coupling_std_deg`; 0: not estimated, the
-  /// triad taken as orthogonal). 0.3° (our choice: the consumer-MEMS misalignment of
-  /// vectors/mcu/imu_error_model.md, 0.3° 1σ per off-diagonal coupling, which the emulated
-  /// consumer profiles draw; an industrial triad's 0.05° is well inside it). The prior is the
-  /// population's σ: a wider one lets every turn of the first rows tilt the attitude's σ further,
-  /// a narrower one takes longer to learn a 2σ gyro (estimator.md, "The x and y gyros' coupling").
-  double gyro_z_coupling_std_rad = 0.3 * 0.017453292519943295;
+  /// triad taken as orthogonal). Off by default: an IMU tag lag a few milliseconds off looks like
+  /// an x coupling in every turn (0.12° per ms on field_realism/imu_time_tag_lag), and the states
+  /// learned that instead and made the car worse (estimator.md, "The x and y gyros' coupling to
+  /// the z rate"). For a consumer MEMS on time, 0.3°: the consumer-MEMS misalignment of
+  /// vectors/mcu/imu_error_model.md, 0.3° 1σ per off-diagonal coupling, the population's σ, which
+  /// a random constant's prior should be (an industrial triad's 0.05° is well inside it).
+  double gyro_z_coupling_std_rad = 0.0;
+  /// Prior σ of the IMU tags' residual lag behind the fixes, estimated as a random-constant state
+  /// (s; `[filter] imu_time_residual_std_s`; 0: not estimated). 0.01 s (our choice: the lag
+  /// ImuTimeOffset reports has σ below its max_std_s, 10 ms, and wanders within ±5 ms of the
+  /// true lag on the car; estimator.md, "The residual IMU tag lag").
+  double imu_time_residual_std_s = 0.01;
 };
 
 /// Health and status bit field.
@@ -311,10 +324,18 @@ class ErrorStateEkf {
   double gyro_scale_z() const { return gyro_scale_z_; }
   /// The x and y gyros' estimated coupling to the z rate (m̂_xz, m̂_yz, rad; 0 when not estimated).
   const Eigen::Vector2d& gyro_z_coupling_rad() const { return gyro_z_coupling_rad_; }
-  /// Restarts the gyro triad's random constants (the z scale, the x and y couplings to the z rate)
-  /// at zero with their prior σ, uncorrelated with the other states: what they learned on another
-  /// IMU time base (a tag lag found and taken off later) is the lag's error, not the gyro's.
-  void RestartGyroTriadStates();
+  /// The IMU tags' estimated residual lag behind the fixes (s; 0 when not estimated).
+  double imu_time_residual_s() const { return time_residual_s_; }
+  /// The tags were moved by `shift_s` later (a lag taken off them: negative): the residual lag
+  /// moves the other way (its σ stays).
+  void ShiftImuTags(double shift_s);
+  /// The acceleration of the INS (N, m/s²: the specific force of the last interval plus gravity).
+  Eigen::Vector3d AccelerationN() const { return f_N_ + earth_.g_N_mps2; }
+  /// Restarts the random constants learned against the IMU's time base (the z gyro's scale, the x
+  /// and y gyros' couplings to the z rate, the residual tag lag) at zero with their prior σ,
+  /// uncorrelated with the other states: what they learned before a tag lag was found and taken
+  /// off is the lag's error, not the gyro's.
+  void RestartTimeBaseStates();
   /// The angle increment the filter integrates for a raw gyro increment over dt: the bias, the z
   /// gyro's scale and the x and y gyros' coupling to the z rate removed (B, rad).
   Eigen::Vector3d CompensatedAngle(const Eigen::Vector3d& delta_angle_B_rad, double dt) const;
@@ -345,8 +366,10 @@ class ErrorStateEkf {
   /// ten rows may be non-zero.
   bool AugmentedStatesOn() const {
     return params_.gnss_error_tau_s > 0 || params_.speed_rw_mps_rthz > 0 || MountStatesOn() ||
-           GyroScaleStateOn() || GyroCouplingStatesOn();
+           GyroScaleStateOn() || GyroCouplingStatesOn() || TimeResidualStateOn();
   }
+  /// The IMU tags' residual lag is estimated.
+  bool TimeResidualStateOn() const { return params_.imu_time_residual_std_s > 0; }
   /// The z gyro's scale factor is estimated.
   bool GyroScaleStateOn() const { return params_.gyro_scale_z_std > 0; }
   /// The x and y gyros' coupling to the z rate is estimated.
@@ -382,8 +405,9 @@ class ErrorStateEkf {
   Eigen::Matrix3d C_VB_ = Eigen::Matrix3d::Identity();   // Exp(μ)ᵀ
   double gyro_scale_z_ = 0.0;                            // k̂_z: the z gyro's scale error
   Eigen::Vector2d gyro_z_coupling_rad_ = Eigen::Vector2d::Zero();  // m̂_xz, m̂_yz
-  Eigen::Vector3d w_B_ = Eigen::Vector3d::Zero();                  // last compensated angular rate
-  Eigen::Vector3d f_N_ = Eigen::Vector3d::Zero();                  // last specific force in N
+  double time_residual_s_ = 0.0;  // δ̂t: the IMU tags' residual lag behind the fixes
+  Eigen::Vector3d w_B_ = Eigen::Vector3d::Zero();  // last compensated angular rate
+  Eigen::Vector3d f_N_ = Eigen::Vector3d::Zero();  // last specific force in N
   EkfMatrix P_ = EkfMatrix::Identity();
   std::uint32_t repairs_ = 0;
   double q_scale_ = 1.0;                  // process-noise scale (SetProcessNoiseScale)

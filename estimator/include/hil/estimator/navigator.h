@@ -252,6 +252,8 @@ struct NavigatorStats {
   double gyro_scale_z = 0, gyro_scale_z_std = 0;
   /// the x and y gyros' coupling to the z rate (ErrorStateEkf, kGyroCouplingX/Y: rad) and their
   /// σ, while they are estimated
+  /// the IMU tags' residual lag behind the fixes (ErrorStateEkf, kImuTimeResidual: s)
+  double imu_time_residual_s = 0;
   bool gyro_z_coupling_estimated = false;
   Eigen::Vector2d gyro_z_coupling_rad = Eigen::Vector2d::Zero();
   Eigen::Vector2d gyro_z_coupling_std_rad = Eigen::Vector2d::Zero();
