@@ -101,10 +101,14 @@ void AppendConsistency(std::string& s, const NavigatorStats& n) {
                   n.gyro_z_coupling_std_rad.x() * kDeg, n.gyro_z_coupling_std_rad.y() * kDeg);
     s += b;
   }
+  // present while the IMU tags' residual lag is estimated (ErrorStateEkf), once it is off zero
+  if (n.imu_time_residual_s != 0) {
+    std::snprintf(b, sizeof b, ",\"imu_tag_lag_residual_s\":%.4f", n.imu_time_residual_s);
+    s += b;
+  }
   // present once a lag was found and taken off the IMU tags (the line stays short otherwise)
   if (n.imu_tag_lag_s == 0) return;
-  std::snprintf(b, sizeof b, ",\"imu_tag_lag_s\":%.4f,\"imu_tag_lag_residual_s\":%.4f",
-                n.imu_tag_lag_s, n.imu_time_residual_s);
+  std::snprintf(b, sizeof b, ",\"imu_tag_lag_s\":%.4f", n.imu_tag_lag_s);
   s += b;
 }
 

@@ -28,6 +28,7 @@ void ErrorStateEkf::Initialize(const NavState& s) {
   gyro_scale_z_ = 0.0;
   gyro_z_coupling_rad_.setZero();
   time_residual_s_ = 0.0;
+  accel_lp_N_mps2_.setZero();
   gm_tau_s_ = params_.gnss_error_tau_s;
   gm_std_m_ = params_.gnss_error_std_m;
   gm_up_ratio_ = params_.gnss_error_vertical_std_m > 0 && params_.gnss_error_std_m > 0
@@ -62,6 +63,10 @@ void ErrorStateEkf::Initialize(const NavState& s) {
   }
   if (TimeResidualStateOn())
     P_(kImuTimeResidual, kImuTimeResidual) = p.imu_time_residual_std_s * p.imu_time_residual_std_s;
+}
+
+bool ErrorStateEkf::TimeResidualLearnable() const {
+  return TimeResidualStateOn() && state_.v_N_mps.head<2>().norm() >= kResidualMinSpeed_mps;
 }
 
 void ErrorStateEkf::ShiftImuTags(double shift_s) {
@@ -107,6 +112,9 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& delta_angle_B_rad,
   const Eigen::Vector3d dv = delta_velocity_B_mps - ba_ * dt;
   w_B_ = dth / dt;
   f_N_ = C * dv / dt;
+  // the acceleration over about a fix interval, for the residual tag lag's velocity term
+  const double w_lp = std::min(1.0, dt / kAccelSmoothing_s);
+  accel_lp_N_mps2_ += w_lp * (f_N_ + earth_.g_N_mps2 - accel_lp_N_mps2_);
   Propagate(earth_, dth, dv, dt, memory_, state_);
 
   const auto& p = params_;
@@ -244,7 +252,7 @@ Eigen::Matrix<double, 3, kNumStates> ErrorStateEkf::PositionJacobian() const {
   H.block<3, 3>(0, kAtt) = -Skew(state_.q_NB * params_.lever_arm_B_m);
   if (params_.gnss_error_tau_s > 0) H.block<3, 3>(0, kGnssError).setIdentity();
   // the fix sees the INS δt later: its antenna moved on by v·δt
-  if (TimeResidualStateOn()) H.col(kImuTimeResidual) = AntennaVelocity();
+  if (TimeResidualLearnable()) H.col(kImuTimeResidual) = AntennaVelocity();
   return H;
 }
 
@@ -261,7 +269,7 @@ Eigen::Matrix<double, 3, kNumStates> ErrorStateEkf::VelocityJacobian() const {
     H.col(kGyroCouplingX) = H.block<3, 3>(0, kGyroBias).col(0) * w_B_.z();
     H.col(kGyroCouplingY) = H.block<3, 3>(0, kGyroBias).col(1) * w_B_.z();
   }
-  if (TimeResidualStateOn()) H.col(kImuTimeResidual) = AccelerationN();
+  if (TimeResidualLearnable()) H.col(kImuTimeResidual) = accel_lp_N_mps2_;
   return H;
 }
 
@@ -307,7 +315,7 @@ UpdateResult ErrorStateEkf::UpdateVelocity(const Eigen::Vector3d& v_antenna_N_mp
   Eigen::Matrix3d R = Eigen::Matrix3d::Zero();
   for (int i = 0; i < 3; ++i)
     R(i, i) = std::pow(std::max(std_mps[i], params_.gnss_vel_std_floor_mps), 2);
-  const Eigen::Vector3d pred = AntennaVelocity() + AccelerationN() * time_residual_s_;
+  const Eigen::Vector3d pred = AntennaVelocity() + accel_lp_N_mps2_ * time_residual_s_;
   return Update<3>(v_antenna_N_mps - pred, VelocityJacobian(), R);
 }
 

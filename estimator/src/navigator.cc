@@ -520,7 +520,7 @@ NavOutput Navigator::Output() const {
   // the INS at its tag time is the vehicle the residual lag δ̂t earlier (ErrorStateEkf)
   const double lag_s = ekf_.imu_time_residual_s();
   o.p_N_m = st.p_N_m + st.v_N_mps * lag_s;
-  o.v_N_mps = st.v_N_mps + ekf_.AccelerationN() * lag_s;
+  o.v_N_mps = st.v_N_mps + ekf_.smoothed_acceleration_N() * lag_s;
   o.q_NB = st.q_NB;
   o.has_attitude = true;
   o.position = frame_.ToLla(o.p_N_m);
