@@ -1,7 +1,7 @@
-// The z gyro's scale-factor error and the x and y gyros' coupling to the z rate as the EKF
-// estimates them from the turns (ErrorStateEkf, kGyroScaleZ, kGyroCouplingX/Y; estimator.md, "The
-// z gyro's scale factor", "The x and y gyros' coupling to the z rate"): copied into the
-// navigator's statistics for the host's health line.
+// The z gyro's scale-factor error, the x and y gyros' coupling to the z rate and the IMU tags'
+// residual lag as the EKF estimates them (ErrorStateEkf, kGyroScaleZ, kGyroCouplingX/Y,
+// kImuTimeResidual; estimator.md, "The z gyro's scale factor", "The residual tag lag and the x and
+// y gyros' coupling"): copied into the navigator's statistics for the host's health line.
 #include <algorithm>
 #include <cmath>
 

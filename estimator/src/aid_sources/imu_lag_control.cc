@@ -30,7 +30,8 @@ void Navigator::CorrectImuTag(ImuSample& s) {
     imu_lag_applied_ += step;
     // the tags move earlier by the step: the EKF's residual lag shrinks by as much
     ekf_.ShiftImuTags(-std::chrono::duration<double>(step).count());
-    // the gyro triad's states learned on the old time base: restart them on the new one
+    // the states learned against the old time base (z scale, couplings, residual lag): restart
+    // them on the new one (ImuTimeOffsetParams::gyro_states_restart_s)
     const auto restart_after =
         Nanoseconds{std::llround(params_.imu_lag.gyro_states_restart_s * 1e9)};
     if (imu_lag_applied_ == target &&
