@@ -20,6 +20,48 @@ void Add(std::string& s, const char* key, std::uint64_t v) {
   s += b;
 }
 
+// the IMU's states the filter estimates (mounting angles, the gyro's scale and couplings, the tags'
+// lag), each present only while it is estimated (or once it is found)
+void AppendSensorStates(std::string& s, const NavigatorStats& n) {
+  char b[256];
+  // present while the IMU's mounting pitch and yaw are estimated (ErrorStateEkf): degrees of the
+  // vehicle frame in the IMU frame, and their σ
+  if (n.mount_estimated) {
+    constexpr double kDeg = 180.0 / 3.14159265358979323846;
+    std::snprintf(b, sizeof b,
+                  ",\"mount_deg\":{\"pitch\":%.3f,\"yaw\":%.3f,\"pitch_std\":%.3f,"
+                  "\"yaw_std\":%.3f}",
+                  n.mount_pitch_rad * kDeg, n.mount_yaw_rad * kDeg, n.mount_pitch_std_rad * kDeg,
+                  n.mount_yaw_std_rad * kDeg);
+    s += b;
+  }
+  // present while the z gyro's scale factor is estimated (ErrorStateEkf): its error and σ, ppm
+  if (n.gyro_scale_z_estimated) {
+    std::snprintf(b, sizeof b, ",\"gyro_scale_z_ppm\":%.0f,\"gyro_scale_z_std_ppm\":%.0f",
+                  n.gyro_scale_z * 1e6, n.gyro_scale_z_std * 1e6);
+    s += b;
+  }
+  // present while the x and y gyros' coupling to the z rate is estimated (ErrorStateEkf): degrees,
+  // and their σ
+  if (n.gyro_z_coupling_estimated) {
+    constexpr double kDeg = 180.0 / 3.14159265358979323846;
+    std::snprintf(b, sizeof b,
+                  ",\"gyro_z_coupling_deg\":{\"x\":%.3f,\"y\":%.3f,\"x_std\":%.3f,\"y_std\":%.3f}",
+                  n.gyro_z_coupling_rad.x() * kDeg, n.gyro_z_coupling_rad.y() * kDeg,
+                  n.gyro_z_coupling_std_rad.x() * kDeg, n.gyro_z_coupling_std_rad.y() * kDeg);
+    s += b;
+  }
+  // present while the IMU tags' residual lag is estimated (ErrorStateEkf), once it is off zero
+  if (n.imu_time_residual_s != 0) {
+    std::snprintf(b, sizeof b, ",\"imu_tag_lag_residual_s\":%.4f", n.imu_time_residual_s);
+    s += b;
+  }
+  // present once a lag was found and taken off the IMU tags (the line stays short otherwise)
+  if (n.imu_tag_lag_s == 0) return;
+  std::snprintf(b, sizeof b, ",\"imu_tag_lag_s\":%.4f", n.imu_tag_lag_s);
+  s += b;
+}
+
 // the filter's consistency: each aid source's innovation window against its χ² band, the
 // adapted process-noise scale, fadings, standstill
 void AppendConsistency(std::string& s, const NavigatorStats& n) {
@@ -74,27 +116,7 @@ void AppendConsistency(std::string& s, const NavigatorStats& n) {
     std::snprintf(b, sizeof b, ",\"gnss_vel_std_mps\":%.3f", n.gnss_vel_std_mps);
     s += b;
   }
-  // present while the IMU's mounting pitch and yaw are estimated (ErrorStateEkf): degrees of the
-  // vehicle frame in the IMU frame, and their σ
-  if (n.mount_estimated) {
-    constexpr double kDeg = 180.0 / 3.14159265358979323846;
-    std::snprintf(b, sizeof b,
-                  ",\"mount_deg\":{\"pitch\":%.3f,\"yaw\":%.3f,\"pitch_std\":%.3f,"
-                  "\"yaw_std\":%.3f}",
-                  n.mount_pitch_rad * kDeg, n.mount_yaw_rad * kDeg, n.mount_pitch_std_rad * kDeg,
-                  n.mount_yaw_std_rad * kDeg);
-    s += b;
-  }
-  // present while the z gyro's scale factor is estimated (ErrorStateEkf): its error and σ, ppm
-  if (n.gyro_scale_z_estimated) {
-    std::snprintf(b, sizeof b, ",\"gyro_scale_z_ppm\":%.0f,\"gyro_scale_z_std_ppm\":%.0f",
-                  n.gyro_scale_z * 1e6, n.gyro_scale_z_std * 1e6);
-    s += b;
-  }
-  // present once a lag was found and taken off the IMU tags (the line stays short otherwise)
-  if (n.imu_tag_lag_s == 0) return;
-  std::snprintf(b, sizeof b, ",\"imu_tag_lag_s\":%.4f", n.imu_tag_lag_s);
-  s += b;
+  AppendSensorStates(s, n);
 }
 
 }  // namespace

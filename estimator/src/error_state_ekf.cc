@@ -27,6 +27,9 @@ void ErrorStateEkf::Initialize(const NavState& s) {
   C_VB_.setIdentity();
   gyro_scale_z_ = 0.0;
   ripple_.Reset();
+  gyro_z_coupling_rad_.setZero();
+  time_residual_s_ = 0.0;
+  accel_lp_N_mps2_.setZero();
   gm_tau_s_ = params_.gnss_error_tau_s;
   gm_std_m_ = params_.gnss_error_std_m;
   gm_up_ratio_ = params_.gnss_error_vertical_std_m > 0 && params_.gnss_error_std_m > 0
@@ -55,6 +58,47 @@ void ErrorStateEkf::Initialize(const NavState& s) {
     P_(kMountYaw, kMountYaw) = p.mount_yaw_std_rad * p.mount_yaw_std_rad;
   }
   if (GyroScaleStateOn()) P_(kGyroScaleZ, kGyroScaleZ) = p.gyro_scale_z_std * p.gyro_scale_z_std;
+  if (GyroCouplingStatesOn()) {
+    const double var = p.gyro_z_coupling_std_rad * p.gyro_z_coupling_std_rad;
+    P_(kGyroCouplingX, kGyroCouplingX) = P_(kGyroCouplingY, kGyroCouplingY) = var;
+  }
+  if (TimeResidualStateOn())
+    P_(kImuTimeResidual, kImuTimeResidual) = p.imu_time_residual_std_s * p.imu_time_residual_std_s;
+}
+
+bool ErrorStateEkf::TimeResidualLearnable() const {
+  return TimeResidualStateOn() && state_.v_N_mps.head<2>().norm() >= kResidualMinSpeed_mps;
+}
+
+void ErrorStateEkf::ShiftImuTags(double shift_s) {
+  if (TimeResidualStateOn() && std::isfinite(shift_s)) time_residual_s_ += shift_s;
+}
+
+void ErrorStateEkf::RestartTimeBaseStates() {
+  gyro_scale_z_ = 0.0;
+  gyro_z_coupling_rad_.setZero();
+  time_residual_s_ = 0.0;
+  constexpr int kTriad = kImuTimeResidual + 1 - kGyroScaleZ;
+  P_.middleRows<kTriad>(kGyroScaleZ).setZero();
+  P_.middleCols<kTriad>(kGyroScaleZ).setZero();
+  const auto& p = params_;
+  if (GyroScaleStateOn()) P_(kGyroScaleZ, kGyroScaleZ) = p.gyro_scale_z_std * p.gyro_scale_z_std;
+  if (GyroCouplingStatesOn()) {
+    const double var = p.gyro_z_coupling_std_rad * p.gyro_z_coupling_std_rad;
+    P_(kGyroCouplingX, kGyroCouplingX) = P_(kGyroCouplingY, kGyroCouplingY) = var;
+  }
+  if (TimeResidualStateOn())
+    P_(kImuTimeResidual, kImuTimeResidual) = p.imu_time_residual_std_s * p.imu_time_residual_std_s;
+}
+
+Eigen::Vector3d ErrorStateEkf::CompensatedAngle(const Eigen::Vector3d& delta_angle_B_rad,
+                                                double dt) const {
+  // the z gyro reads (1 + k_z) ω_z + b_z: its scale error is divided out with the bias's removal;
+  // the x and y gyros read ω_x + m_xz ω_z + b_x (y likewise): the coupling of the z rate removed
+  Eigen::Vector3d dth = delta_angle_B_rad - bg_ * dt;
+  dth.z() /= 1.0 + gyro_scale_z_;
+  dth.head<2>() -= gyro_z_coupling_rad_ * dth.z();
+  return dth;
 }
 
 void ErrorStateEkf::Predict(const Eigen::Vector3d& delta_angle_B_rad,
@@ -63,13 +107,15 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& delta_angle_B_rad,
     return;
   const Eigen::Matrix3d C = state_.q_NB.toRotationMatrix();
   // attitude hold: a standing vehicle turns with the Earth only
-  // the z gyro reads (1 + k_z) ω_z + b_z: its scale error is divided out with the bias's removal
-  Eigen::Vector3d dth = attitude_hold_ ? Eigen::Vector3d(C.transpose() * earth_.w_IE_N_radps * dt)
-                                       : Eigen::Vector3d(delta_angle_B_rad - bg_ * dt);
-  if (!attitude_hold_) dth.z() /= 1.0 + gyro_scale_z_;
+  const Eigen::Vector3d dth = attitude_hold_
+                                  ? Eigen::Vector3d(C.transpose() * earth_.w_IE_N_radps * dt)
+                                  : CompensatedAngle(delta_angle_B_rad, dt);
   const Eigen::Vector3d dv = delta_velocity_B_mps - ba_ * dt;
   w_B_ = dth / dt;
   f_N_ = C * dv / dt;
+  // the acceleration over about a fix interval, for the residual tag lag's velocity term
+  const double w_lp = std::min(1.0, dt / kAccelSmoothing_s);
+  accel_lp_N_mps2_ += w_lp * (f_N_ + earth_.g_N_mps2 - accel_lp_N_mps2_);
   const Eigen::Vector3d v_V_before = VehicleVelocity();
   Propagate(earth_, dth, dv, dt, memory_, state_);
   ripple_.Propagate(VehicleVelocity() - v_V_before, dt);
@@ -129,7 +175,8 @@ void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, d
   // P ← Φ P Φᵀ with Φ = I + F·dt, by its blocks (3 × 3; the last five states are scalars):
   //   row δp: [I  I·dt  0  0   0  ]        rows δb_a, δb_g, δs: identity
   //   row δv: [0  A     B  −Cdt 0 ]        rows e: gm_decay·I; row δd: dev_decay
-  //   row φ:  [0  0     D  0   −Cdt]          (and −Cẑω_z·dt in the column of δk_z)
+  //   row φ:  [0  0     D  0   −Cdt]          (and −Ĉ[ẑ x̂ ŷ]ω_z·dt in the columns of δk_z,
+  //                                                δm_xz, δm_yz)
   // A = I − 2[ω_IE×]dt, B = −[f_N×]dt, D = I − [ω_IE×]dt. Only the rows of δp, δv, φ need
   // products; the rest of P is scaled by Φ's diagonal, and P's symmetry gives the other part.
   // P is symmetric, so the products run on its columns (contiguous in Eigen's column-major
@@ -157,11 +204,13 @@ void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, d
   const Cols3 Mp = P.template middleCols<3>(kPos) + dt * P.template middleCols<3>(kVel);
   const Cols3 Mv = P.template middleCols<3>(kVel) * At + P.template middleCols<3>(kAtt) * Bt +
                    P.template middleCols<3>(kAccelBias) * Gt;
-  // the z gyro's scale error: φ̇ = −Ĉ ẑ ω_z δk_z (none while the attitude is held)
-  const Eigen::Vector3d Gs =
-      attitude_hold_ ? Eigen::Vector3d::Zero() : Eigen::Vector3d(-C.col(2) * w_B_.z() * dt);
+  // the z gyro's scale error and the x and y gyros' coupling to the z rate (δk_z, δm_xz, δm_yz):
+  // φ̇ = −Ĉ (ẑ δk_z + x̂ δm_xz + ŷ δm_yz) ω_z (none while the attitude is held)
+  Eigen::Matrix3d Gk = Eigen::Matrix3d::Zero();
+  if (!attitude_hold_) Gk << C.col(2), C.col(0), C.col(1);
+  Gk *= -w_B_.z() * dt;
   Cols3 Ma = P.template middleCols<3>(kAtt) * Dt + P.template middleCols<3>(kGyroBias) * Ggt;
-  if constexpr (N == kNumStates) Ma += P.col(kGyroScaleZ) * Gs.transpose();
+  if constexpr (N == kNumStates) Ma += P.template middleCols<3>(kGyroScaleZ) * Gk.transpose();
   // Φ's diagonal on the tail: P_tail ← Φ_tail P_tail Φ_tailᵀ. Its only entries other than 1 are
   // the decays of e and δd, so only their rows and columns of the tail block are scaled.
   Eigen::Matrix<double, kTail, 1> tail = Eigen::Matrix<double, kTail, 1>::Ones();
@@ -185,7 +234,8 @@ void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, d
                                      Gt.transpose() * M.template middleRows<3>(kAccelBias);
     R.template middleRows<3>(kAtt) = Dt.transpose() * M.template middleRows<3>(kAtt) +
                                      Ggt.transpose() * M.template middleRows<3>(kGyroBias);
-    if constexpr (N == kNumStates) R.template middleRows<3>(kAtt) += Gs * M.row(kGyroScaleZ);
+    if constexpr (N == kNumStates)
+      R.template middleRows<3>(kAtt) += Gk * M.template middleRows<3>(kGyroScaleZ);
     R.template bottomRows<kTail>() = tail.asDiagonal() * M.template bottomRows<kTail>();
     return R;
   };
@@ -209,6 +259,8 @@ Eigen::Matrix<double, 3, kNumStates> ErrorStateEkf::PositionJacobian() const {
   H.block<3, 3>(0, kPos).setIdentity();
   H.block<3, 3>(0, kAtt) = -Skew(state_.q_NB * params_.lever_arm_B_m);
   if (params_.gnss_error_tau_s > 0) H.block<3, 3>(0, kGnssError).setIdentity();
+  // the fix sees the INS δt later: its antenna moved on by v·δt
+  if (TimeResidualLearnable()) H.col(kImuTimeResidual) = AntennaVelocity();
   return H;
 }
 
@@ -218,8 +270,14 @@ Eigen::Matrix<double, 3, kNumStates> ErrorStateEkf::VelocityJacobian() const {
   H.block<3, 3>(0, kVel).setIdentity();
   H.block<3, 3>(0, kAtt) = -Skew(C * w_B_.cross(params_.lever_arm_B_m));
   H.block<3, 3>(0, kGyroBias) = C * Skew(params_.lever_arm_B_m);
-  // the scale error turns ω_z as a z-bias of ω_z·δk_z does
+  // the scale error turns ω_z as a z-bias of ω_z·δk_z does, the couplings as x and y biases of
+  // ω_z·δm_xz and ω_z·δm_yz
   if (GyroScaleStateOn()) H.col(kGyroScaleZ) = H.block<3, 3>(0, kGyroBias).col(2) * w_B_.z();
+  if (GyroCouplingStatesOn()) {
+    H.col(kGyroCouplingX) = H.block<3, 3>(0, kGyroBias).col(0) * w_B_.z();
+    H.col(kGyroCouplingY) = H.block<3, 3>(0, kGyroBias).col(1) * w_B_.z();
+  }
+  if (TimeResidualLearnable()) H.col(kImuTimeResidual) = accel_lp_N_mps2_;
   return H;
 }
 
@@ -250,8 +308,9 @@ Eigen::Matrix<double, 2, kNumStates> ErrorStateEkf::NonHolonomicJacobian() const
 UpdateResult ErrorStateEkf::UpdatePosition(const Eigen::Vector3d& p_antenna_N_m,
                                            const Eigen::Vector3d& std_m) {
   if (!AllFinite(p_antenna_N_m) || !AllFinite(std_m)) return {};
-  const Eigen::Vector3d pred =
-      AntennaPosition() + (params_.gnss_error_tau_s > 0 ? e_gnss_ : Eigen::Vector3d::Zero());
+  const Eigen::Vector3d pred = AntennaPosition() +
+                               (params_.gnss_error_tau_s > 0 ? e_gnss_ : Eigen::Vector3d::Zero()) +
+                               AntennaVelocity() * time_residual_s_;
   Eigen::Matrix3d R = Eigen::Matrix3d::Zero();
   for (int i = 0; i < 3; ++i)
     R(i, i) = std::pow(std::max(std_m[i], params_.gnss_pos_std_floor_m), 2);
@@ -264,7 +323,8 @@ UpdateResult ErrorStateEkf::UpdateVelocity(const Eigen::Vector3d& v_antenna_N_mp
   Eigen::Matrix3d R = Eigen::Matrix3d::Zero();
   for (int i = 0; i < 3; ++i)
     R(i, i) = std::pow(std::max(std_mps[i], params_.gnss_vel_std_floor_mps), 2);
-  return Update<3>(v_antenna_N_mps - AntennaVelocity(), VelocityJacobian(), R);
+  const Eigen::Vector3d pred = AntennaVelocity() + accel_lp_N_mps2_ * time_residual_s_;
+  return Update<3>(v_antenna_N_mps - pred, VelocityJacobian(), R);
 }
 
 UpdateResult ErrorStateEkf::UpdateNonHolonomic() {
@@ -396,6 +456,15 @@ void ErrorStateEkf::InjectError(const EkfVector& dx) {
   // clamped to ±10 % (ours: a gyro that far off its data sheet's ±0.5 % is broken, and 1 + k̂_z
   // must stay away from 0)
   if (GyroScaleStateOn()) gyro_scale_z_ = std::clamp(gyro_scale_z_ + dx[kGyroScaleZ], -0.1, 0.1);
+  // clamped to ±0.1 s (ours: ImuTimeOffset's found lag has σ below 10 ms)
+  if (TimeResidualStateOn())
+    time_residual_s_ = std::clamp(time_residual_s_ + dx[kImuTimeResidual], -0.1, 0.1);
+  // clamped to ±0.1 rad (ours: 5.7°, a triad that far from orthogonal is broken, nineteen times
+  // the data sheets' σ)
+  if (GyroCouplingStatesOn()) {
+    gyro_z_coupling_rad_ =
+        (gyro_z_coupling_rad_ + dx.segment<2>(kGyroCouplingX)).cwiseMax(-0.1).cwiseMin(0.1);
+  }
 }
 
 Eigen::Vector3d ErrorStateEkf::GnssErrorVariance(double horizontal_std_m, double up_std_m) {

@@ -528,15 +528,18 @@ NavOutput Navigator::Output() const {
   for (std::size_t i = 0; i < imu_.size(); ++i) {
     const ImuSample& s = imu_[i];
     if (s.t <= o.t) continue;
-    Propagate(earth, s.delta_angle_B_rad - ekf_.gyro_bias() * s.dt_s,
+    // the gyro compensated as the filter's own prediction does (bias, z scale, z coupling)
+    Propagate(earth, ekf_.CompensatedAngle(s.delta_angle_B_rad, s.dt_s),
               s.delta_velocity_B_mps - ekf_.accel_bias() * s.dt_s, s.dt_s, mem, st);
     o.t = s.t;
   }
-  o.p_N_m = st.p_N_m;
-  o.v_N_mps = st.v_N_mps;
+  // the INS at its tag time is the vehicle the residual lag δ̂t earlier (ErrorStateEkf)
+  const double lag_s = ekf_.imu_time_residual_s();
+  o.p_N_m = st.p_N_m + st.v_N_mps * lag_s;
+  o.v_N_mps = st.v_N_mps + ekf_.smoothed_acceleration_N() * lag_s;
   o.q_NB = st.q_NB;
   o.has_attitude = true;
-  o.position = frame_.ToLla(st.p_N_m);
+  o.position = frame_.ToLla(o.p_N_m);
   const EkfMatrix& P = ekf_.covariance();
   for (int i = 0; i < 3; ++i) {
     o.pos_std_enu_m[i] = std::sqrt(P(ekf_index::kPos + i, ekf_index::kPos + i));

@@ -38,10 +38,11 @@ class ErrorStateEkfTest : public ::testing::Test {
     p.gnss_error_std_m = 0.3;
     p.nhc_std_mps = 0.05;
     p.speed_rw_mps_rthz = 0.001;
+    p.gyro_z_coupling_std_rad = 0.005;  // the x and y gyros' coupling states on (off by default)
     ekf_ = ErrorStateEkf(p, EarthModel{});
     NavState s;
     s.p_N_m = Eigen::Vector3d(10, -4, 2);
-    s.v_N_mps = Eigen::Vector3d(1.2, 0.4, -0.1);
+    s.v_N_mps = Eigen::Vector3d(2.4, 0.8, -0.1);  // above 2 m/s: the residual lag is learned
     s.q_NB = Eigen::AngleAxisd(0.6, Eigen::Vector3d::UnitZ()) *
              Eigen::AngleAxisd(0.05, Eigen::Vector3d::UnitY()) *
              Eigen::AngleAxisd(-0.03, Eigen::Vector3d::UnitX());
@@ -51,14 +52,22 @@ class ErrorStateEkfTest : public ::testing::Test {
     ekf_.Predict(raw_w_ * 0.01, Eigen::Vector3d(0.1, 0.0, 9.81) * 0.01, 0.01);
   }
   // measurement functions of the nominal state, written out independently of the filter
-  static Eigen::Vector3d Pos(const ErrorStateEkf& e) {
-    return e.state().p_N_m + e.state().q_NB * e.params().lever_arm_B_m + e.gnss_error();
+  // the fix sees the antenna the residual tag lag δt later: moved on by its velocity times δt
+  Eigen::Vector3d Pos(const ErrorStateEkf& e) const {
+    return e.state().p_N_m + e.state().q_NB * e.params().lever_arm_B_m + e.gnss_error() +
+           AntennaVel(e) * e.imu_time_residual_s();
   }
-  Eigen::Vector3d Vel(const ErrorStateEkf& e) const {
-    // the rate the filter used, re-derived from the bias and the z gyro's scale
+  Eigen::Vector3d AntennaVel(const ErrorStateEkf& e) const {
+    // the rate the filter used, re-derived from the bias, the z gyro's scale and the x and y
+    // gyros' coupling to the z rate
     Eigen::Vector3d w = raw_w_ - e.gyro_bias();
     w.z() /= 1.0 + e.gyro_scale_z();
+    w.head<2>() -= e.gyro_z_coupling_rad() * w.z();
     return e.state().v_N_mps + e.state().q_NB * w.cross(e.params().lever_arm_B_m);
+  }
+  // and its velocity changed by the (smoothed) acceleration times δt
+  Eigen::Vector3d Vel(const ErrorStateEkf& e) const {
+    return AntennaVel(e) + e.smoothed_acceleration_N() * e.imu_time_residual_s();
   }
   // the vehicle-frame velocity: the body velocity turned by the mounting angles, C_VB = Exp(μ)ᵀ
   static Eigen::Vector3d VehicleVelocity(const ErrorStateEkf& e) {
@@ -76,7 +85,7 @@ class ErrorStateEkfTest : public ::testing::Test {
 };
 
 TEST_F(ErrorStateEkfTest, PositionJacobianMatchesFiniteDifferences) {
-  const auto J = Numeric<3>([](const ErrorStateEkf& e) { return Pos(e); });
+  const auto J = Numeric<3>([this](const ErrorStateEkf& e) { return Pos(e); });
   EXPECT_LT((J - ekf_.PositionJacobian()).cwiseAbs().maxCoeff(), 1e-6) << J << "\n\n"
                                                                        << ekf_.PositionJacobian();
 }
@@ -459,8 +468,9 @@ TEST(ErrorStateEkfGnssModelTest, SwitchIsIgnoredWithoutCorrelatedStates) {
 // The classic filter (augmented states off) propagates and updates only P's first 15 states:
 // its other rows and columns stay exact zeros, and one interval equals the dense Φ P Φᵀ + Q
 // written out here from the error dynamics in the header.
-// With `gyro_scale_z_std` > 0 the z gyro's scale state is on (the 23-state path): Φ gains its
-// column in the attitude rows, −Ĉẑ·ω_z·dt.
+// With `gyro_scale_z_std` > 0 the z gyro's scale state, the x and y gyros' couplings to the z rate
+// and the residual tag lag are on (the full path): Φ gains their columns in the attitude rows,
+// −Ĉ[ẑ x̂ ŷ]·ω_z·dt (the residual lag has none: a random constant seen only by the fixes).
 void CheckPropagationAgainstTheDenseProduct(double gyro_scale_z_std) {
   EkfParams p;
   p.lever_arm_B_m = Eigen::Vector3d(0.3, 0.1, 0.9);
@@ -468,11 +478,13 @@ void CheckPropagationAgainstTheDenseProduct(double gyro_scale_z_std) {
   p.nhc_std_mps = 0.05;
   p.estimate_mount_angles = false;  // the classic states alone (the mounting states are tails)
   p.gyro_scale_z_std = gyro_scale_z_std;
+  p.gyro_z_coupling_std_rad = gyro_scale_z_std > 0 ? 0.005 : 0.0;
+  p.imu_time_residual_std_s = gyro_scale_z_std > 0 ? 0.01 : 0.0;
   EarthModel earth;
   earth.w_IE_N_radps = Eigen::Vector3d(0.0, 6.3e-5, 3.7e-5);
   ErrorStateEkf ekf(p, earth);
   NavState s;
-  s.v_N_mps = Eigen::Vector3d(1.0, 0.2, 0.0);
+  s.v_N_mps = Eigen::Vector3d(3.0, 0.6, 0.0);  // above 2 m/s: the fixes teach the residual lag
   s.q_NB = Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitZ()) * Eigen::Quaterniond::Identity();
   ekf.Initialize(s);
   const Eigen::Vector3d dth(0.001, -0.0005, 0.003), dv(0.02, 0.01, 0.0981);
@@ -490,6 +502,7 @@ void CheckPropagationAgainstTheDenseProduct(double gyro_scale_z_std) {
   const Eigen::Vector3d f_N = C * (dv - ekf.accel_bias() * dt) / dt;
   Eigen::Vector3d dth_used = dth - ekf.gyro_bias() * dt;
   dth_used.z() /= 1.0 + ekf.gyro_scale_z();
+  dth_used.head<2>() -= ekf.gyro_z_coupling_rad() * dth_used.z();
   const double turned_rad = dth_used.norm();
   ekf.Predict(dth, dv, dt);
   EkfMatrix Phi = EkfMatrix::Identity();
@@ -501,6 +514,8 @@ void CheckPropagationAgainstTheDenseProduct(double gyro_scale_z_std) {
   Phi.block<3, 3>(kAtt, kAtt) -= W * dt;
   Phi.block<3, 3>(kAtt, kGyroBias) = -C * dt;
   Phi.block<3, 1>(kAtt, kGyroScaleZ) = -C.col(2) * dth_used.z();
+  Phi.block<3, 1>(kAtt, kGyroCouplingX) = -C.col(0) * dth_used.z();
+  Phi.block<3, 1>(kAtt, kGyroCouplingY) = -C.col(1) * dth_used.z();
   EkfMatrix Q = EkfMatrix::Zero();
   for (int i = 0; i < 3; ++i) {
     Q(kVel + i, kVel + i) = p.accel_noise_mps2_rthz * p.accel_noise_mps2_rthz * dt;
@@ -515,6 +530,9 @@ void CheckPropagationAgainstTheDenseProduct(double gyro_scale_z_std) {
   EXPECT_GT(std::abs(P(kPos, kGyroBias)), 0.0);  // the test saw real cross-covariances
   if (gyro_scale_z_std > 0) {
     EXPECT_GT(std::abs(P(kAtt + 2, kGyroScaleZ)), 0.0);  // the scale's heading correlation
+    EXPECT_GT(std::abs(P(kAtt, kGyroCouplingX)), 0.0);   // the couplings' tilt correlations
+    EXPECT_GT(std::abs(P(kAtt + 1, kGyroCouplingY)), 0.0);
+    EXPECT_GT(std::abs(P(kPos, kImuTimeResidual)), 0.0);  // the fixes saw the residual lag
     EXPECT_TRUE(P.middleRows<kGyroScaleZ - kNumClassicStates>(kNumClassicStates).isZero(0.0));
     return;
   }

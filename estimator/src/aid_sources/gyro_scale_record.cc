@@ -1,6 +1,7 @@
-// The z gyro's scale-factor error as the EKF estimates it from the headland turns (ErrorStateEkf,
-// kGyroScaleZ; estimator.md, "The z gyro's scale factor"): copied into the navigator's statistics
-// for the host's health line.
+// The z gyro's scale-factor error, the x and y gyros' coupling to the z rate and the IMU tags'
+// residual lag as the EKF estimates them (ErrorStateEkf, kGyroScaleZ, kGyroCouplingX/Y,
+// kImuTimeResidual; estimator.md, "The z gyro's scale factor", "The residual tag lag and the x and
+// y gyros' coupling"): copied into the navigator's statistics for the host's health line.
 #include <algorithm>
 #include <cmath>
 
@@ -9,11 +10,19 @@
 namespace hil::estimator {
 
 void Navigator::RecordGyroScale() {
+  const auto std_of = [this](int i) { return std::sqrt(std::max(0.0, ekf_.covariance()(i, i))); };
   stats_.gyro_scale_z_estimated = ekf_.params().gyro_scale_z_std > 0;
-  if (!stats_.gyro_scale_z_estimated) return;
-  stats_.gyro_scale_z = ekf_.gyro_scale_z();
-  stats_.gyro_scale_z_std =
-      std::sqrt(std::max(0.0, ekf_.covariance()(ekf_index::kGyroScaleZ, ekf_index::kGyroScaleZ)));
+  if (stats_.gyro_scale_z_estimated) {
+    stats_.gyro_scale_z = ekf_.gyro_scale_z();
+    stats_.gyro_scale_z_std = std_of(ekf_index::kGyroScaleZ);
+  }
+  stats_.imu_time_residual_s = ekf_.imu_time_residual_s();
+  stats_.gyro_z_coupling_estimated = ekf_.params().gyro_z_coupling_std_rad > 0;
+  if (stats_.gyro_z_coupling_estimated) {
+    stats_.gyro_z_coupling_rad = ekf_.gyro_z_coupling_rad();
+    stats_.gyro_z_coupling_std_rad = {std_of(ekf_index::kGyroCouplingX),
+                                      std_of(ekf_index::kGyroCouplingY)};
+  }
 }
 
 }  // namespace hil::estimator

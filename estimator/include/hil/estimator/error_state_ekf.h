@@ -7,19 +7,37 @@
 /// output: nominal NavState, biases, covariance, NIS of the last update, status flags
 /// @endsystem
 ///
-/// Error state (kNumUsedStates = 23 in a vector of kNumStates = 24, fixed-size):
+/// Error state (kNumUsedStates = 26 in a vector of kNumStates = 26, fixed-size):
 ///   δp (N, m) | δv (N, m/s) | φ (attitude error in N, rad; C_true = Exp(φ)·Ĉ) | δb_a (B, m/s²) |
 ///   δb_g (B, rad/s) | e_gnss (N, m: first-order Gauss–Markov GNSS position error, optional) |
 ///   δs (m/s: the vehicle's set speed, a slow random walk, optional) |
 ///   δd (m/s: the forward speed's deviation from the set speed, Gauss–Markov, optional) |
 ///   δμ (rad: pitch and yaw of the vehicle frame V in the IMU frame B, random constants, optional)
 ///   | δk_z (dimensionless: the z gyro's scale-factor error, a random constant, optional)
+///   | δm_xz, δm_yz (rad: the x and y gyros' coupling to the z rate, random constants, optional)
+///   | δt (s: the IMU tags' residual lag behind the fixes' time, a random constant, optional)
+///
+/// The residual lag: after the tag lag navd found and took off (ImuTimeOffset) the INS at tag time
+/// τ is the vehicle at τ − δt, so a fix at t is predicted as the INS's antenna at t plus its
+/// velocity times δt, and the fix velocity as its velocity plus its acceleration times δt: H
+/// columns v̂_ant and ā_N. A few milliseconds, where this first order holds (½·a·δt² is 4 µm at
+/// 3 m/s² and 1.5 ms). ā_N is the INS's acceleration low-passed over 0.1 s: the last interval's
+/// specific force carries the engine's vibration (m/s² on a tractor), with which the fix
+/// velocities taught the lag noise (field_realism/parked_for_hours: RMSE 0.016 → 0.035 m).
 ///
 /// The z gyro's scale factor: the gyro reads ω̃_z = (1 + k_z)·ω_z + b_z, the filter compensates
 /// ω_z = (ω̃_z − b̂_z)/(1 + k̂_z), so φ̇ gains −Ĉ·ẑ·ω_z·δk_z (KF-GINS's gyro scale states, its z
 /// row). A ground vehicle's headland turns (Θ = π each) make it observable: every turn leaves a
 /// heading error k_z·Θ that the fixes show over the next row. The x and y gyros' scales are not
 /// states: a ground vehicle's roll and pitch rates are too small to show them.
+///
+/// The x and y gyros' coupling to the z rate (the third column of the gyro triad's misalignment
+/// matrix, its non-orthogonality): the x gyro reads ω̃_x = ω_x + m_xz·ω_z + b_x (y likewise), the
+/// filter compensates ω_x = ω̃_x − b̂_x − m̂_xz·ω_z, so φ̇ gains −Ĉ·x̂·ω_z·δm_xz − Ĉ·ŷ·ω_z·δm_yz. In a
+/// turn the coupling tilts the attitude (0.3° of it at 0.5 rad/s is 0.15°/s of roll), left and
+/// right turns the opposite way; gravity in the accelerometers and the fixes show the tilt. The
+/// couplings to the x and y rates multiply a ground vehicle's small roll and pitch rates and are
+/// not states.
 ///
 /// The speed state is the vehicle model of a ground vehicle that holds its speed (cruise control,
 /// constant throttle): the forward body velocity stays within `speed_dev_std_mps` of a set speed
@@ -73,14 +91,17 @@ inline constexpr int kNumClassicStates = 15;  ///< δp … δb_g: the states tha
 inline constexpr int kGnssError = 15;
 inline constexpr int kSpeed = 18;
 inline constexpr int kSpeedDev = 19;
-inline constexpr int kMountPitch = 20;  ///< δμ_y: pitch of V in B (rad)
-inline constexpr int kMountYaw = 21;    ///< δμ_z: yaw of V in B (rad)
-inline constexpr int kGyroScaleZ = 22;  ///< δk_z: the z gyro's scale-factor error (fraction)
+inline constexpr int kMountPitch = 20;       ///< δμ_y: pitch of V in B (rad)
+inline constexpr int kMountYaw = 21;         ///< δμ_z: yaw of V in B (rad)
+inline constexpr int kGyroScaleZ = 22;       ///< δk_z: the z gyro's scale-factor error (fraction)
+inline constexpr int kGyroCouplingX = 23;    ///< δm_xz: the x gyro's coupling to the z rate (rad)
+inline constexpr int kGyroCouplingY = 24;    ///< δm_yz: the y gyro's coupling to the z rate (rad)
+inline constexpr int kImuTimeResidual = 25;  ///< δt: the IMU tags' residual lag (s)
 /// the states in use (the last index + 1), and the size of the filter's vectors and matrices: that
-/// count made even, the last row and column unused (zero), so that Eigen's SSE packets of two
+/// count made even (an unused last row and column, zero), so that Eigen's SSE packets of two
 /// doubles tile every column (23 states left the covariance propagation unvectorised: +57 %
 /// instructions over the 20 states before them; callgrind, ekf_benchmark seed004)
-inline constexpr int kNumUsedStates = 23;
+inline constexpr int kNumUsedStates = 26;
 inline constexpr int kNumStates = kNumUsedStates + kNumUsedStates % 2;
 }  // namespace ekf_index
 
@@ -165,6 +186,20 @@ struct EkfParams {
   /// gyro_scale_std, which only widens the attitude's σ by the angle turned, this state learns
   /// the scale and corrects the turns with it.
   double gyro_scale_z_std = 0.005;
+  /// Prior σ of the x and y gyros' coupling to the z rate, m_xz and m_yz, estimated as two
+  /// random-constant states (rad; `[filter] gyro_z_coupling_std_deg`; 0: not estimated, the
+  /// triad taken as orthogonal). Off by default: an IMU tag lag a few milliseconds off looks like
+  /// an x coupling in every turn (0.12° per ms on field_realism/imu_time_tag_lag), and the states
+  /// learned that instead and made the car worse (estimator.md, "The x and y gyros' coupling to
+  /// the z rate"). For a consumer MEMS on time, 0.3°: the consumer-MEMS misalignment of
+  /// vectors/mcu/imu_error_model.md, 0.3° 1σ per off-diagonal coupling, the population's σ, which
+  /// a random constant's prior should be (an industrial triad's 0.05° is well inside it).
+  double gyro_z_coupling_std_rad = 0.0;
+  /// Prior σ of the IMU tags' residual lag behind the fixes, estimated as a random-constant state
+  /// (s; `[filter] imu_time_residual_std_s`; 0: not estimated). 0.01 s (our choice: the lag
+  /// ImuTimeOffset reports has σ below its max_std_s, 10 ms, and wanders within ±5 ms of the
+  /// true lag on the car; estimator.md, "The residual IMU tag lag").
+  double imu_time_residual_std_s = 0.01;
 };
 
 /// Health and status bit field.
@@ -309,6 +344,23 @@ class ErrorStateEkf {
   const Eigen::Vector3d& mount_angles_rad() const { return mount_rad_; }
   /// The z gyro's estimated scale-factor error k̂_z (fraction; 0 when not estimated).
   double gyro_scale_z() const { return gyro_scale_z_; }
+  /// The x and y gyros' estimated coupling to the z rate (m̂_xz, m̂_yz, rad; 0 when not estimated).
+  const Eigen::Vector2d& gyro_z_coupling_rad() const { return gyro_z_coupling_rad_; }
+  /// The INS's acceleration low-passed over kAccelSmoothing_s (N, m/s²).
+  const Eigen::Vector3d& smoothed_acceleration_N() const { return accel_lp_N_mps2_; }
+  /// The IMU tags' estimated residual lag behind the fixes (s; 0 when not estimated).
+  double imu_time_residual_s() const { return time_residual_s_; }
+  /// The tags were moved by `shift_s` later (a lag taken off them: negative): the residual lag
+  /// moves the other way (its σ stays).
+  void ShiftImuTags(double shift_s);
+  /// Restarts the random constants learned against the IMU's time base (the z gyro's scale, the x
+  /// and y gyros' couplings to the z rate, the residual tag lag) at zero with their prior σ,
+  /// uncorrelated with the other states: what they learned before a tag lag was found and taken
+  /// off is the lag's error, not the gyro's.
+  void RestartTimeBaseStates();
+  /// The angle increment the filter integrates for a raw gyro increment over dt: the bias, the z
+  /// gyro's scale and the x and y gyros' coupling to the z rate removed (B, rad).
+  Eigen::Vector3d CompensatedAngle(const Eigen::Vector3d& delta_angle_B_rad, double dt) const;
   bool mount_angles_estimated() const { return MountStatesOn(); }
   /// C_VB, the rotation from the IMU frame into the vehicle frame (identity when off).
   const Eigen::Matrix3d& vehicle_from_imu() const { return C_VB_; }
@@ -332,14 +384,23 @@ class ErrorStateEkf {
   template <int N>
   void PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, double gm_decay,
                              double dev_decay);
-  /// The correlated-GNSS-error, speed-model or mounting-angle states are on: P's last eight rows
-  /// may be non-zero.
+  /// The correlated-GNSS-error, speed-model, mounting-angle or gyro-triad states are on: P's last
+  /// ten rows may be non-zero.
   bool AugmentedStatesOn() const {
     return params_.gnss_error_tau_s > 0 || params_.speed_rw_mps_rthz > 0 || MountStatesOn() ||
-           GyroScaleStateOn();
+           GyroScaleStateOn() || GyroCouplingStatesOn() || TimeResidualStateOn();
   }
+  /// The IMU tags' residual lag is estimated.
+  bool TimeResidualStateOn() const { return params_.imu_time_residual_std_s > 0; }
+  /// The fixes teach the residual lag now: at speed. Standing or at a walk its v·δt is below the
+  /// fixes' noise and their slow wander taught it instead (field_realism/parked_for_hours: δ̂t
+  /// walked to the 0.1 s clamp over four parked hours and put 10 cm along the track once the
+  /// tractor drove off; learning in turns only left the car at fused/raw 1.54).
+  bool TimeResidualLearnable() const;
   /// The z gyro's scale factor is estimated.
   bool GyroScaleStateOn() const { return params_.gyro_scale_z_std > 0; }
+  /// The x and y gyros' coupling to the z rate is estimated.
+  bool GyroCouplingStatesOn() const { return params_.gyro_z_coupling_std_rad > 0; }
   /// The mounting pitch and yaw are estimated (they need the NHC to be observable).
   bool MountStatesOn() const {
     return params_.estimate_mount_angles && params_.nhc_std_mps > 0 &&
@@ -370,8 +431,17 @@ class ErrorStateEkf {
   Eigen::Vector3d mount_rad_ = Eigen::Vector3d::Zero();  // μ: V in B (roll, pitch, yaw)
   Eigen::Matrix3d C_VB_ = Eigen::Matrix3d::Identity();   // Exp(μ)ᵀ
   double gyro_scale_z_ = 0.0;                            // k̂_z: the z gyro's scale error
-  Eigen::Vector3d w_B_ = Eigen::Vector3d::Zero();        // last compensated angular rate
-  Eigen::Vector3d f_N_ = Eigen::Vector3d::Zero();        // last specific force in N
+  Eigen::Vector2d gyro_z_coupling_rad_ = Eigen::Vector2d::Zero();  // m̂_xz, m̂_yz
+  double time_residual_s_ = 0.0;  // δ̂t: the IMU tags' residual lag behind the fixes
+  // the acceleration's low-pass time constant: a 10 Hz fix interval, over which an engine's
+  // orders (tens of Hz) average out (chosen here)
+  static constexpr double kAccelSmoothing_s = 0.1;
+  // 2 m/s (chosen here): above a tractor's working speed, where v·δt of a few milliseconds is
+  // below an RTK fix's noise (5 mm at 1 m/s and 5 ms)
+  static constexpr double kResidualMinSpeed_mps = 2.0;
+  Eigen::Vector3d accel_lp_N_mps2_ = Eigen::Vector3d::Zero();  // ā_N (kAccelSmoothing_s)
+  Eigen::Vector3d w_B_ = Eigen::Vector3d::Zero();              // last compensated angular rate
+  Eigen::Vector3d f_N_ = Eigen::Vector3d::Zero();              // last specific force in N
   EkfMatrix P_ = EkfMatrix::Identity();
   std::uint32_t repairs_ = 0;
   double q_scale_ = 1.0;                  // process-noise scale (SetProcessNoiseScale)

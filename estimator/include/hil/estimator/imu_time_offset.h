@@ -68,6 +68,12 @@ struct ImuTimeOffsetParams {
   /// following, which its position must absorb between fixes; s = this / speed, at most 0.1.
   /// 0.05 m/s: a few millimetres per fix at 10 Hz, inside an RTK fix's σ (chosen here).
   double slew_speed_mps = 0.05;
+  /// Once the tags have moved by this much since the gyro triad's states (the z scale, the x and
+  /// y couplings to the z rate) started, and the slew has reached the lag, those states restart
+  /// at their prior: in the turns before, the lag's heading and tilt errors taught them (0.1 s on
+  /// the car: a 2.8° x coupling in the first turn, against 0.1° with the tags on time). 10 ms,
+  /// max_std_s: a change within the lag's own σ bound is not a new time base (chosen here).
+  double gyro_states_restart_s = 0.01;
 };
 
 class ImuTimeOffset {

@@ -250,6 +250,13 @@ struct NavigatorStats {
   /// is estimated
   bool gyro_scale_z_estimated = false;
   double gyro_scale_z = 0, gyro_scale_z_std = 0;
+  /// the x and y gyros' coupling to the z rate (ErrorStateEkf, kGyroCouplingX/Y: rad) and their
+  /// σ, while they are estimated
+  /// the IMU tags' residual lag behind the fixes (ErrorStateEkf, kImuTimeResidual: s)
+  double imu_time_residual_s = 0;
+  bool gyro_z_coupling_estimated = false;
+  Eigen::Vector2d gyro_z_coupling_rad = Eigen::Vector2d::Zero();
+  Eigen::Vector2d gyro_z_coupling_std_rad = Eigen::Vector2d::Zero();
 };
 
 /// The solution at one time of validity.
@@ -392,6 +399,7 @@ class Navigator {
   GnssStepCheck step_;                      // GNSS increments against the INS displacement
   ImuTimeOffset imu_lag_;                   // the IMU tags' lag behind GNSS time
   Nanoseconds imu_lag_applied_{0};          // the lag taken off the IMU tags now
+  Nanoseconds gyro_states_lag_{0};          // the lag applied when the gyro triad's states started
   std::optional<GpsTime> glitch_since_;     // the current receiver glitch's first fix
   RtkFixCheck rtk_check_;                   // wrong RTK fixes: a new episode against the INS
   Eigen::Vector3d rtk_offset_N_m_ = Eigen::Vector3d::Zero();  // a suspect episode's offset
