@@ -57,13 +57,7 @@ void ErrorStateEkf::Initialize(const NavState& s) {
     P_(kMountPitch, kMountPitch) = p.mount_pitch_std_rad * p.mount_pitch_std_rad;
     P_(kMountYaw, kMountYaw) = p.mount_yaw_std_rad * p.mount_yaw_std_rad;
   }
-  if (GyroScaleStateOn()) P_(kGyroScaleZ, kGyroScaleZ) = p.gyro_scale_z_std * p.gyro_scale_z_std;
-  if (GyroCouplingStatesOn()) {
-    const double var = p.gyro_z_coupling_std_rad * p.gyro_z_coupling_std_rad;
-    P_(kGyroCouplingX, kGyroCouplingX) = P_(kGyroCouplingY, kGyroCouplingY) = var;
-  }
-  if (TimeResidualStateOn())
-    P_(kImuTimeResidual, kImuTimeResidual) = p.imu_time_residual_std_s * p.imu_time_residual_std_s;
+  SetTimeBasePriors();
 }
 
 bool ErrorStateEkf::TimeResidualLearnable() const {
@@ -81,6 +75,10 @@ void ErrorStateEkf::RestartTimeBaseStates() {
   constexpr int kTriad = kImuTimeResidual + 1 - kGyroScaleZ;
   P_.middleRows<kTriad>(kGyroScaleZ).setZero();
   P_.middleCols<kTriad>(kGyroScaleZ).setZero();
+  SetTimeBasePriors();
+}
+
+void ErrorStateEkf::SetTimeBasePriors() {
   const auto& p = params_;
   if (GyroScaleStateOn()) P_(kGyroScaleZ, kGyroScaleZ) = p.gyro_scale_z_std * p.gyro_scale_z_std;
   if (GyroCouplingStatesOn()) {

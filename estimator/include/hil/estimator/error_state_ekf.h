@@ -370,6 +370,8 @@ class ErrorStateEkf {
   std::uint32_t repairs() const { return repairs_; }
 
  private:
+  /// the prior variances of the states RestartTimeBaseStates restarts (those that are on)
+  void SetTimeBasePriors();
   template <int M>
   UpdateResult Update(const Eigen::Matrix<double, M, 1>& innovation,
                       const Eigen::Matrix<double, M, ekf_index::kNumStates>& H,
