@@ -140,6 +140,43 @@ TEST(NavigatorTest, WaitsForADueFixUpToTheMaximumLatency) {
   EXPECT_NEAR(static_cast<double>((kT0 + 20s - rig.nav.filter_time()).count()) * 1e-9, 0.2, 0.011);
 }
 
+// A level vehicle driving east at 1 m/s with the EKF (IMU 100 Hz, GNSS 1 Hz): its antenna's fixes
+// with the given white σ, at the body point plus the configured lever arm.
+struct EastboundRig {
+  EastboundRig(const NavigatorParams& p, const Eigen::Vector3d& white_std_m)
+      : nav(p), lever_arm_B_m(p.ekf.lever_arm_B_m), fix_std_m(white_std_m) {}
+  void Fix(GpsTime t) {
+    GnssSample g;
+    g.t = t;
+    const double x_m = static_cast<double>((t - kT0).count()) * 1e-9;
+    g.position = frame.ToLla(Eigen::Vector3d(x_m, 0, 0) + lever_arm_B_m);
+    g.pos_std_enu_m = fix_std_m;
+    g.has_velocity = true;
+    g.vel_enu_mps = Eigen::Vector3d(1, 0, 0);
+    g.vel_std_enu_mps = Eigen::Vector3d::Constant(0.05);
+    nav.Push(g);
+  }
+  void Imu(GpsTime t) {
+    ImuSample s;
+    s.t = t;
+    s.dt_s = 0.01;
+    s.delta_velocity_B_mps = Eigen::Vector3d(0, 0, g0 * 0.01);
+    nav.Push(s);
+    nav.Update();
+  }
+  // IMU samples every 10 ms in (from, to], a fix every whole second
+  void Drive(GpsTime from, GpsTime to) {
+    for (GpsTime t = from + 10ms; t <= to; t += 10ms) {
+      Imu(t);
+      if ((t - kT0) % 1s == 0ns) Fix(t);
+    }
+  }
+  Navigator nav;
+  Eigen::Vector3d lever_arm_B_m, fix_std_m;
+  const LocalTangentFrame frame{{48.0, 11.0, 500.0}};
+  const double g0 = NormalGravity(48.0, 500.0);
+};
+
 // issue 39: the fallback solution is the body point, as the filter's, and its σ holds the
 // receiver's correlated error (faults/mcu_reset: the antenna 0.84 m ahead reported at σ 4 cm)
 TEST(NavigatorTest, TheFallbackWhileTheImuIsSilentIsTheBodyPointWithTheReceiversError) {
@@ -150,38 +187,16 @@ TEST(NavigatorTest, TheFallbackWhileTheImuIsSilentIsTheBodyPointWithTheReceivers
   p.ekf.lever_arm_B_m = Eigen::Vector3d(1.0, 0.0, 0.5);
   p.ekf.gnss_error_tau_s = 5.0;
   p.ekf.gnss_error_std_m = 0.25;
-  Navigator nav(p);
-  const LocalTangentFrame frame({48.0, 11.0, 500.0});
-  const double g0 = NormalGravity(48.0, 500.0);
-  const auto body_x_m = [](GpsTime t) { return static_cast<double>((t - kT0).count()) * 1e-9; };
-  const auto fix = [&](GpsTime t) {
-    GnssSample g;
-    g.t = t;
-    g.position = frame.ToLla(Eigen::Vector3d(body_x_m(t), 0, 0) + p.ekf.lever_arm_B_m);
-    g.pos_std_enu_m = Eigen::Vector3d(0.04, 0.04, 0.08);
-    g.has_velocity = true;
-    g.vel_enu_mps = Eigen::Vector3d(1, 0, 0);
-    g.vel_std_enu_mps = Eigen::Vector3d::Constant(0.05);
-    nav.Push(g);
-  };
-  constexpr Nanoseconds kMs = 1ms;
-  for (GpsTime t = kT0 + 10 * kMs; t <= kT0 + 10'000 * kMs; t += 10 * kMs) {
-    ImuSample s;
-    s.t = t;
-    s.dt_s = 0.01;
-    s.delta_velocity_B_mps = Eigen::Vector3d(0, 0, g0 * 0.01);
-    nav.Push(s);
-    nav.Update();
-    if ((t - kT0) % (1000 * kMs) == 0ns) fix(t);
-  }
-  ASSERT_TRUE(nav.aligned());
+  EastboundRig rig(p, Eigen::Vector3d(0.04, 0.04, 0.08));
+  rig.Drive(kT0, kT0 + 10s);
+  ASSERT_TRUE(rig.nav.aligned());
   // WHEN the IMU falls silent while the fixes keep coming
-  for (int k = 11; k <= 15; ++k) fix(kT0 + k * 1000 * kMs);
-  ASSERT_TRUE(nav.ImuLost());
-  const NavOutput lost = nav.Output();
+  for (int k = 11; k <= 15; ++k) rig.Fix(kT0 + k * 1s);
+  ASSERT_TRUE(rig.nav.ImuLost());
+  const NavOutput lost = rig.nav.Output();
   // THEN the solution is the body point under the fix, not the antenna
-  EXPECT_NEAR(frame.ToLocal(lost.position).x(), 15.0, 0.05);
-  EXPECT_NEAR(frame.ToLocal(lost.position).z(), 0.0, 0.05);
+  EXPECT_NEAR(rig.frame.ToLocal(lost.position).x(), 15.0, 0.05);
+  EXPECT_NEAR(rig.frame.ToLocal(lost.position).z(), 0.0, 0.05);
   // AND its σ is the fix's white σ with the receiver's correlated error
   EXPECT_GT(lost.pos_std_enu_m.x(), 0.24);
   EXPECT_GT(lost.pos_std_enu_m.y(), 0.24);
@@ -191,38 +206,16 @@ TEST(NavigatorTest, FallsBackToTheFixesWhileTheImuIsSilentAndRestartsAfter) {
   // GIVEN an aligned EKF on a level vehicle driving east at 1 m/s (IMU 100 Hz, GNSS 1 Hz)
   NavigatorParams p;
   p.mode = NavMode::kEkf;
-  Navigator nav(p);
-  const Lla origin{48.0, 11.0, 500.0};
-  const LocalTangentFrame frame(origin);
-  const double g0 = NormalGravity(origin.lat_deg, origin.height_m);
-  const auto fix = [&](GpsTime t) {
-    GnssSample g;
-    g.t = t;
-    g.position = frame.ToLla(Eigen::Vector3d(static_cast<double>((t - kT0).count()) * 1e-9, 0, 0));
-    g.pos_std_enu_m = Eigen::Vector3d(0.3, 0.3, 0.6);
-    g.has_velocity = true;
-    g.vel_enu_mps = Eigen::Vector3d(1, 0, 0);
-    g.vel_std_enu_mps = Eigen::Vector3d::Constant(0.05);
-    nav.Push(g);
-  };
-  const auto imu = [&](GpsTime t) {
-    ImuSample s;
-    s.t = t;
-    s.dt_s = 0.01;
-    s.delta_velocity_B_mps = Eigen::Vector3d(0, 0, g0 * 0.01);
-    nav.Push(s);
-    nav.Update();
-  };
+  EastboundRig rig(p, Eigen::Vector3d(0.3, 0.3, 0.6));
+  Navigator& nav = rig.nav;
+  const LocalTangentFrame& frame = rig.frame;
   constexpr Nanoseconds kMs = 1ms;
-  for (GpsTime t = kT0 + 10 * kMs; t <= kT0 + 10'000 * kMs; t += 10 * kMs) {
-    imu(t);
-    if ((t - kT0) % (1000 * kMs) == 0ns) fix(t);
-  }
+  rig.Drive(kT0, kT0 + 10s);
   ASSERT_TRUE(nav.aligned());
   EXPECT_FALSE(nav.ImuLost());
   // WHEN the IMU falls silent for 6 s while the fixes keep coming
   for (int k = 11; k <= 16; ++k) {
-    fix(kT0 + k * 1000 * kMs);
+    rig.Fix(kT0 + k * 1000 * kMs);
     // THEN from the 4th fix after the last IMU sample (the one at 10 s counts) the solution is the
     // fix, flagged
     EXPECT_EQ(nav.ImuLost(), k >= 13) << "fix at " << k << " s";
@@ -236,10 +229,7 @@ TEST(NavigatorTest, FallsBackToTheFixesWhileTheImuIsSilentAndRestartsAfter) {
   EXPECT_TRUE(nav.stats().imu_lost);
   // WHEN the IMU comes back: the filter restarts at the next fix and tracks the vehicle again
   const std::uint64_t resets = nav.stats().gnss_resets;
-  for (GpsTime t = kT0 + 16'010 * kMs; t <= kT0 + 22'000 * kMs; t += 10 * kMs) {
-    imu(t);
-    if ((t - kT0) % (1000 * kMs) == 0ns) fix(t);
-  }
+  rig.Drive(kT0 + 16s, kT0 + 22s);
   EXPECT_FALSE(nav.ImuLost());
   EXPECT_EQ(nav.stats().gnss_resets, resets + 1);
   const NavOutput back = nav.Output();
