@@ -22,10 +22,18 @@ void ImuTimeOffset::AddImu(GpsTime t, double heading_increment_rad) {
   if (!params_.enabled || n_ < 3 || !std::isfinite(heading_increment_rad)) return;
   const std::int64_t t_ns = ToNs(t);
   if (!history_.empty() && t_ns <= history_.back().t_ns) return;
+  const double psi_before = psi_rad_;
   psi_rad_ += heading_increment_rad;
-  history_.Push({t_ns, psi_rad_});
+  double area = 0.0;
+  if (!history_.empty()) {
+    const Heading& last = history_.back();
+    area =
+        last.area_rad_s + 0.5e-9 * static_cast<double>(t_ns - last.t_ns) * (psi_before + psi_rad_);
+  }
+  history_.Push({t_ns, psi_rad_, area});
   // the pending fixes whose every candidate the history now covers
-  const std::int64_t reach_ns = SecondsToNs(params_.max_lag_s + params_.rate_half_window_s);
+  const std::int64_t reach_ns = SecondsToNs(params_.max_lag_s + params_.rate_half_window_s +
+                                            0.5 * std::max(params_.heading_window_s, 0.0));
   while (!pending_.empty() && pending_.front().t_ns + reach_ns <= t_ns) {
     const Course c = pending_.front();
     pending_.PopFront();
@@ -47,7 +55,7 @@ void ImuTimeOffset::AddVelocity(GpsTime t, double v_east_mps, double v_north_mps
   pending_.Push({t_ns, std::atan2(v_north_mps, v_east_mps), sigma_chi * sigma_chi, speed});
 }
 
-std::optional<double> ImuTimeOffset::HeadingAt(std::int64_t t_ns) const {
+std::optional<ImuTimeOffset::Heading> ImuTimeOffset::HeadingAt(std::int64_t t_ns) const {
   const std::size_t n = history_.size();
   if (n < 2 || t_ns < history_.front().t_ns || t_ns > history_.back().t_ns) return std::nullopt;
   // the first entry at or after t (binary search over the ring's time-ordered entries)
@@ -60,19 +68,34 @@ std::optional<double> ImuTimeOffset::HeadingAt(std::int64_t t_ns) const {
       hi = mid;
     }
   }
-  if (lo == 0) return history_[0].psi_rad;
+  if (lo == 0) return history_[0];
   const Heading& a = history_[lo - 1];
   const Heading& b = history_[lo];
   const double w = static_cast<double>(t_ns - a.t_ns) / static_cast<double>(b.t_ns - a.t_ns);
-  return a.psi_rad + w * (b.psi_rad - a.psi_rad);
+  const double psi = a.psi_rad + w * (b.psi_rad - a.psi_rad);
+  return Heading{t_ns, psi,
+                 a.area_rad_s + 0.5e-9 * static_cast<double>(t_ns - a.t_ns) * (a.psi_rad + psi)};
+}
+
+std::optional<double> ImuTimeOffset::MeanHeadingAt(std::int64_t t_ns) const {
+  const std::int64_t half_ns = SecondsToNs(0.5 * params_.heading_window_s);
+  if (half_ns <= 0) {
+    const std::optional<Heading> h = HeadingAt(t_ns);
+    return h ? std::optional<double>(h->psi_rad) : std::nullopt;
+  }
+  const std::optional<Heading> a = HeadingAt(t_ns - half_ns);
+  const std::optional<Heading> b = HeadingAt(t_ns + half_ns);
+  if (!a || !b) return std::nullopt;
+  return (b->area_rad_s - a->area_rad_s) / (2e-9 * static_cast<double>(half_ns));
 }
 
 std::optional<double> ImuTimeOffset::PredictedCourse(std::int64_t t_ns, std::int64_t lag_ns,
                                                      double speed_mps) const {
   const std::int64_t h_ns = SecondsToNs(params_.rate_half_window_s);
-  const std::optional<double> psi = HeadingAt(t_ns + lag_ns);
-  const std::optional<double> before = HeadingAt(t_ns + lag_ns - h_ns);
-  const std::optional<double> after = HeadingAt(t_ns + lag_ns + h_ns);
+  // the heading without the ride's shaking (heading_window_s)
+  const std::optional<double> psi = MeanHeadingAt(t_ns + lag_ns);
+  const std::optional<double> before = MeanHeadingAt(t_ns + lag_ns - h_ns);
+  const std::optional<double> after = MeanHeadingAt(t_ns + lag_ns + h_ns);
   if (!psi || !before || !after || h_ns <= 0) return std::nullopt;
   const double w = (*after - *before) / (2e-9 * static_cast<double>(h_ns));
   return *psi + std::atan2(w * lever_x_m_, speed_mps - w * lever_y_m_);

@@ -59,7 +59,16 @@ struct ImuTimeOffsetParams {
   /// is white per fix, the lag's signal grows with the interval)
   double pair_interval_s = 1.0;
   double rate_half_window_s = 0.05;  ///< the heading rate for the lever arm's course
-  double memory_s = 600.0;           ///< forgetting time constant of the sums
+  /// The IMU's heading is averaged over a centred window this long (s; 0: the sample's own). A
+  /// vehicle's ride shakes the IMU about its heading (a tractor: 0.3 °/s r.m.s. in 1-15 Hz and its
+  /// 1.5-1.9 Hz roll mode, imu_error_model.md), and the lever arm's term ω l_x / v amplifies that
+  /// by 2π f l_x / v (13 at 1.8 Hz for 1.2 m at 1 m/s): milliradians of course per fix that each
+  /// candidate lag samples anew, so that the cost's differences between lags grow with the pairs
+  /// and a lag-free IMU read as 0.21-0.29 s late (field_realism/tractor_engine_vibration). A
+  /// centred mean delays nothing; 1 s nulls 1 and 2 Hz and passes at most 1/(π f · 1 s) above
+  /// 1 Hz (≤ 0.16 in 1.2-2.5 Hz), while a turn's heading ramp passes unchanged (chosen here).
+  double heading_window_s = 1.0;
+  double memory_s = 600.0;  ///< forgetting time constant of the sums
   /// zero lag must be worse than the best by this much (χ²: 5 σ) …
   double evidence = 25.0;
   double max_std_s = 0.01;  ///< … and the lag's σ below this, before the lag is reported
@@ -103,14 +112,17 @@ class ImuTimeOffset {
  private:
   struct Heading {
     std::int64_t t_ns = 0;
-    double psi_rad = 0;  ///< integrated heading at the end of the sample
+    double psi_rad = 0;     ///< integrated heading at the end of the sample
+    double area_rad_s = 0;  ///< ∫ψ dt from the first sample to this one (trapezoids)
   };
   struct Course {
     std::int64_t t_ns = 0;
     double chi_rad = 0, var_rad2 = 0, speed_mps = 0;
   };
-  /// ψ at t by linear interpolation; nullopt outside the history.
-  std::optional<double> HeadingAt(std::int64_t t_ns) const;
+  /// ψ at t by linear interpolation, with ∫ψ dt up to t; nullopt outside the history.
+  std::optional<Heading> HeadingAt(std::int64_t t_ns) const;
+  /// ψ averaged over heading_window_s centred on t (ψ at t for a zero window).
+  std::optional<double> MeanHeadingAt(std::int64_t t_ns) const;
   /// The antenna course the IMU predicts at t for a lag (nullopt outside the history).
   std::optional<double> PredictedCourse(std::int64_t t_ns, std::int64_t lag_ns,
                                         double speed_mps) const;
