@@ -37,6 +37,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 
 #include "hil/estimator/ring_buffer.h"
@@ -59,15 +60,17 @@ struct ImuTimeOffsetParams {
   /// is white per fix, the lag's signal grows with the interval)
   double pair_interval_s = 1.0;
   double rate_half_window_s = 0.05;  ///< the heading rate for the lever arm's course
-  /// The IMU's heading is averaged over a centred window this long (s; 0: the sample's own). A
-  /// vehicle's ride shakes the IMU about its heading (a tractor: 0.3 °/s r.m.s. in 1-15 Hz and its
-  /// 1.5-1.9 Hz roll mode, imu_error_model.md), and the lever arm's term ω l_x / v amplifies that
-  /// by 2π f l_x / v (13 at 1.8 Hz for 1.2 m at 1 m/s): milliradians of course per fix that each
-  /// candidate lag samples anew, so that the cost's differences between lags grow with the pairs
-  /// and a lag-free IMU read as 0.21-0.29 s late (field_realism/tractor_engine_vibration). A
-  /// centred mean delays nothing; 1 s nulls 1 and 2 Hz and passes at most 1/(π f · 1 s) above
-  /// 1 Hz (≤ 0.16 in 1.2-2.5 Hz), while a turn's heading ramp passes unchanged (chosen here).
-  double heading_window_s = 1.0;
+  /// Both records are prefiltered alike (the "generalized" of Knapp and Carter's correlation): a
+  /// fix's course and the course the IMU predicts are each averaged over the fixes within this
+  /// window centred on it (s; 0: the fix alone). A vehicle's ride shakes the IMU about its heading
+  /// (a tractor: 0.3 °/s r.m.s. in 1-15 Hz and its 1.5-1.9 Hz roll mode, imu_error_model.md) and
+  /// the lever arm's ω l_x / v amplifies that by 2π f l_x / v (13 at 1.8 Hz for 1.2 m at 1 m/s):
+  /// milliradians per fix that each candidate lag samples anew, so that the costs' differences
+  /// grew with the pairs and a lag-free IMU read as 0.21-0.29 s late
+  /// (field_realism/tractor_engine_vibration). A mean over 1 s passes at most 1/(π f · 1 s) of a
+  /// ride above 1 Hz (≤ 0.16 in 1.2-2.5 Hz); applied to both records it delays neither, where the
+  /// IMU's heading alone smoothed biased the lag at a turn's corners (chosen here).
+  double course_window_s = 1.0;
   double memory_s = 600.0;  ///< forgetting time constant of the sums
   /// zero lag must be worse than the best by this much (χ²: 5 σ) …
   double evidence = 25.0;
@@ -112,21 +115,34 @@ class ImuTimeOffset {
  private:
   struct Heading {
     std::int64_t t_ns = 0;
-    double psi_rad = 0;     ///< integrated heading at the end of the sample
-    double area_rad_s = 0;  ///< ∫ψ dt from the first sample to this one (trapezoids)
+    double psi_rad = 0;  ///< integrated heading at the end of the sample
   };
   struct Course {
     std::int64_t t_ns = 0;
     double chi_rad = 0, var_rad2 = 0, speed_mps = 0;
   };
-  /// ψ at t by linear interpolation, with ∫ψ dt up to t; nullopt outside the history.
-  std::optional<Heading> HeadingAt(std::int64_t t_ns) const;
-  /// ψ averaged over heading_window_s centred on t (ψ at t for a zero window).
-  std::optional<double> MeanHeadingAt(std::int64_t t_ns) const;
+  static constexpr std::size_t kMaxWindowFixes = 64;
+  /// A fix's course averaged over course_window_s: the mean course, its variance, the fixes' times
+  /// and speeds (the IMU's prediction is averaged over the same).
+  struct WindowedCourse {
+    std::int64_t t_ns = 0;
+    double chi_rad = 0, var_rad2 = 0;
+    std::size_t n = 0;
+    std::array<std::int64_t, kMaxWindowFixes> t_fix_ns{};
+    std::array<double, kMaxWindowFixes> speed_mps{};
+  };
+  /// ψ at t by linear interpolation; nullopt outside the history.
+  std::optional<double> HeadingAt(std::int64_t t_ns) const;
   /// The antenna course the IMU predicts at t for a lag (nullopt outside the history).
   std::optional<double> PredictedCourse(std::int64_t t_ns, std::int64_t lag_ns,
                                         double speed_mps) const;
+  /// The IMU's predicted course averaged over a windowed course's fixes.
+  std::optional<double> PredictedMeanCourse(const WindowedCourse& w, std::int64_t lag_ns) const;
+  /// A fix the IMU history covers: kept until every window that holds it is complete.
   void Use(const Course& c);
+  /// The course window_[i]'s average over its window.
+  WindowedCourse WindowAround(std::size_t i) const;
+  void UsePair(const WindowedCourse& c);
   void Estimate();
 
   ImuTimeOffsetParams params_;
@@ -134,7 +150,9 @@ class ImuTimeOffset {
   std::array<double, kMaxCandidates> cost_{};
   RingBuffer<Heading, 1024> history_;  // 10 s at 100 Hz: a fix delayed by the GNSS wait included
   RingBuffer<Course, 64> pending_;
-  std::optional<Course> prev_;
+  RingBuffer<Course, kMaxWindowFixes> window_;  // the IMU history covers them
+  std::int64_t last_centre_ns_ = INT64_MIN;     // the last fix whose window was used
+  std::optional<WindowedCourse> prev_;
   double psi_rad_ = 0;
   double lever_x_m_ = 0, lever_y_m_ = 0;
   double pairs_ = 0;  // pairs in the sums (forgotten as they are)
