@@ -18,10 +18,12 @@
 /// about `pair_interval_s` apart (k−1, k; pairs do not overlap, so their residuals are
 /// independent) adds the weighted squared residual
 ///   r² / σ² with r = wrap(χ_k − χ_{k−1}) − (χ̂_j(t_k) − χ̂_j(t_{k−1})),
-/// χ the GNSS course of the antenna, χ̂_j(t) = ψ(t + L_j) + atan2(ω l_x, v − ω l_y) the antenna's
+/// χ the GNSS course of the antenna, χ̂_j(t) = ψ(t + L_j) + asin(ω l_x / s) the antenna's
 /// course the IMU predicts for that lag (ψ its integrated heading on its own tags, ω its heading
-/// rate over ±`rate_half_window_s`, l the antenna's lever arm: an antenna ahead of the body turns
-/// its course ω l_x / v ahead of the heading, which would otherwise read as a lead of l_x / v),
+/// rate over ±`rate_half_window_s`, l the antenna's lever arm, s the fix's speed: the antenna's
+/// velocity in the body is (v − ω l_y, ω l_x), so an antenna ahead of the body turns its course
+/// ahead of the heading, which would otherwise read as a lead of l_x / v), both courses averaged
+/// alike over the fixes within `course_window_s` (the ride's shaking of the IMU's heading),
 /// σ² the two courses' variances (σ_v / speed each) plus a floor for what the course does not
 /// share with the heading (side slip). The sums forget with a time constant; their minimum over
 /// the grid (refined by a parabola through its neighbours) is the lag, its curvature gives the σ
