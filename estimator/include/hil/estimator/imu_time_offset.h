@@ -18,10 +18,12 @@
 /// about `pair_interval_s` apart (k−1, k; pairs do not overlap, so their residuals are
 /// independent) adds the weighted squared residual
 ///   r² / σ² with r = wrap(χ_k − χ_{k−1}) − (χ̂_j(t_k) − χ̂_j(t_{k−1})),
-/// χ the GNSS course of the antenna, χ̂_j(t) = ψ(t + L_j) + atan2(ω l_x, v − ω l_y) the antenna's
+/// χ the GNSS course of the antenna, χ̂_j(t) = ψ(t + L_j) + asin(ω l_x / s) the antenna's
 /// course the IMU predicts for that lag (ψ its integrated heading on its own tags, ω its heading
-/// rate over ±`rate_half_window_s`, l the antenna's lever arm: an antenna ahead of the body turns
-/// its course ω l_x / v ahead of the heading, which would otherwise read as a lead of l_x / v),
+/// rate over ±`rate_half_window_s`, l the antenna's lever arm, s the fix's speed: the antenna's
+/// velocity in the body is (v − ω l_y, ω l_x), so an antenna ahead of the body turns its course
+/// ahead of the heading, which would otherwise read as a lead of l_x / v), both courses averaged
+/// alike over the fixes within `course_window_s` (the ride's shaking of the IMU's heading),
 /// σ² the two courses' variances (σ_v / speed each) plus a floor for what the course does not
 /// share with the heading (side slip). The sums forget with a time constant; their minimum over
 /// the grid (refined by a parabola through its neighbours) is the lag, its curvature gives the σ
@@ -37,6 +39,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 
 #include "hil/estimator/ring_buffer.h"
@@ -59,7 +62,18 @@ struct ImuTimeOffsetParams {
   /// is white per fix, the lag's signal grows with the interval)
   double pair_interval_s = 1.0;
   double rate_half_window_s = 0.05;  ///< the heading rate for the lever arm's course
-  double memory_s = 600.0;           ///< forgetting time constant of the sums
+  /// Both records are prefiltered alike (the "generalized" of Knapp and Carter's correlation): a
+  /// fix's course and the course the IMU predicts are each averaged over the fixes within this
+  /// window centred on it (s; 0: the fix alone). A vehicle's ride shakes the IMU about its heading
+  /// (a tractor: 0.3 °/s r.m.s. in 1-15 Hz and its 1.5-1.9 Hz roll mode, imu_error_model.md) and
+  /// the lever arm's ω l_x / v amplifies that by 2π f l_x / v (13 at 1.8 Hz for 1.2 m at 1 m/s):
+  /// milliradians per fix that each candidate lag samples anew, so that the costs' differences
+  /// grew with the pairs and a lag-free IMU read as 0.21-0.29 s late
+  /// (field_realism/tractor_engine_vibration). A mean over 1 s passes at most 1/(π f · 1 s) of a
+  /// ride above 1 Hz (≤ 0.16 in 1.2-2.5 Hz); applied to both records it delays neither, where the
+  /// IMU's heading alone smoothed biased the lag at a turn's corners (chosen here).
+  double course_window_s = 1.0;
+  double memory_s = 600.0;  ///< forgetting time constant of the sums
   /// zero lag must be worse than the best by this much (χ²: 5 σ) …
   double evidence = 25.0;
   double max_std_s = 0.01;  ///< … and the lag's σ below this, before the lag is reported
@@ -115,12 +129,28 @@ class ImuTimeOffset {
     std::int64_t t_ns = 0;
     double chi_rad = 0, var_rad2 = 0, speed_mps = 0;
   };
+  static constexpr std::size_t kMaxWindowFixes = 64;
+  /// A fix's course averaged over course_window_s: the mean course, its variance, the fixes' times
+  /// and speeds (the IMU's prediction is averaged over the same).
+  struct WindowedCourse {
+    std::int64_t t_ns = 0;
+    double chi_rad = 0, var_rad2 = 0;
+    std::size_t n = 0;
+    std::array<std::int64_t, kMaxWindowFixes> t_fix_ns{};
+    std::array<double, kMaxWindowFixes> speed_mps{};
+  };
   /// ψ at t by linear interpolation; nullopt outside the history.
   std::optional<double> HeadingAt(std::int64_t t_ns) const;
   /// The antenna course the IMU predicts at t for a lag (nullopt outside the history).
   std::optional<double> PredictedCourse(std::int64_t t_ns, std::int64_t lag_ns,
                                         double speed_mps) const;
+  /// The IMU's predicted course averaged over a windowed course's fixes.
+  std::optional<double> PredictedMeanCourse(const WindowedCourse& w, std::int64_t lag_ns) const;
+  /// A fix the IMU history covers: kept until every window that holds it is complete.
   void Use(const Course& c);
+  /// The course window_[i]'s average over its window.
+  WindowedCourse WindowAround(std::size_t i) const;
+  void UsePair(const WindowedCourse& c);
   void Estimate();
 
   ImuTimeOffsetParams params_;
@@ -128,7 +158,9 @@ class ImuTimeOffset {
   std::array<double, kMaxCandidates> cost_{};
   RingBuffer<Heading, 1024> history_;  // 10 s at 100 Hz: a fix delayed by the GNSS wait included
   RingBuffer<Course, 64> pending_;
-  std::optional<Course> prev_;
+  RingBuffer<Course, kMaxWindowFixes> window_;  // the IMU history covers them
+  std::int64_t last_centre_ns_ = INT64_MIN;     // the last fix whose window was used
+  std::optional<WindowedCourse> prev_;
   double psi_rad_ = 0;
   double lever_x_m_ = 0, lever_y_m_ = 0;
   double pairs_ = 0;  // pairs in the sums (forgotten as they are)
