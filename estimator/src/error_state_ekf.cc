@@ -114,9 +114,12 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& delta_angle_B_rad,
   // the acceleration over about a fix interval, for the residual tag lag's velocity term
   const double w_lp = std::min(1.0, dt / kAccelSmoothing_s);
   accel_lp_N_mps2_ += w_lp * (f_N_ + earth_.g_N_mps2 - accel_lp_N_mps2_);
-  const Eigen::Vector3d v_V_before = VehicleVelocity();
+  // the vehicle-frame velocity change for the ripple's low-pass, only when it is on (a rotation
+  // each way per IMU epoch otherwise spent for nothing)
+  const Eigen::Vector3d v_V_before =
+      ripple_.enabled() ? VehicleVelocity() : Eigen::Vector3d::Zero();
   Propagate(earth_, dth, dv, dt, memory_, state_);
-  ripple_.Propagate(VehicleVelocity() - v_V_before, dt);
+  if (ripple_.enabled()) ripple_.Propagate(VehicleVelocity() - v_V_before, dt);
 
   const auto& p = params_;
   double gm_decay = 1.0;
@@ -568,7 +571,7 @@ void ErrorStateEkf::ResetPositionVelocity(const Eigen::Vector3d& p, const Eigen:
     // variance is both, and its covariance with the state's error is -Var(e). Only their sum, what
     // the fix measured, is known to the fix's white σ (a reset onto a NEO-5M fix with σ 0.1 m
     // left a vertical error of 1 m at σ 0.1 m: vertical NEES 7.4 after two MCU resets).
-    const Eigen::Vector3d var_e = GnssErrorVariance(gm_std_m_, gm_up_std_m_);
+    const Eigen::Vector3d var_e = GnssErrorModelVariance();
     P_.block<3, kNumStates>(kGnssError, 0).setZero();
     P_.block<kNumStates, 3>(0, kGnssError).setZero();
     P_.block<3, 3>(kGnssError, kGnssError).diagonal() = var_e;
