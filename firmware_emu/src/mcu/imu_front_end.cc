@@ -53,10 +53,15 @@ void ImuFrontEnd::Advance(Time t, const Eigen::Vector3d& f_I_mps2, const Eigen::
     const double h = span_s / static_cast<double>(n);
     vibration_.SetRpm(InterpolateProfile(spec_.rpm_profile, ToSeconds(t_prev_), 0), h);
     Eigen::Vector3d fv, wv;
+    const double leak = std::exp(-h / kVibrationTiltLeakTau_s);
     for (long k = 1; k <= n; ++k) {
       const double u = static_cast<double>(k) / static_cast<double>(n);
       vibration_.Step(fv, wv);
-      const Eigen::Vector3d f = f_prev_ + u * (f_I_mps2 - f_prev_) + fv;
+      // the sensor turns by the vibration's own rate: its angle tilts the rigid body's specific
+      // force (gravity included) into the sensor frame, f_S = f_I − θ × f_I (small angles)
+      vib_angle_rad_ = leak * vib_angle_rad_ + wv * h;
+      const Eigen::Vector3d f_rigid = f_prev_ + u * (f_I_mps2 - f_prev_);
+      const Eigen::Vector3d f = f_rigid - vib_angle_rad_.cross(f_rigid) + fv;
       const Eigen::Vector3d w = w_prev_ + u * (w_I_radps - w_prev_) + wv;
       f_last_ = accel_aaf_.Step(ClipToRange(f, limits_.accel_range_mps2));
       w_last_ = gyro_aaf_.Step(ClipToRange(w, limits_.gyro_range_radps));

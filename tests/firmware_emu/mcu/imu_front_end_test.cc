@@ -1,7 +1,8 @@
 // The vibration front end (issue 41): an engine order appears at order × RPM/60, aliases to
 // |f − k·f_out| after decimation when the anti-alias low-pass is wider than half the output rate
 // (and is attenuated when it is not), ride vibration has the PSD asked for, the mount resonance
-// amplifies by 1/(2ζ), clipping holds the range, and the same seed gives the same samples.
+// amplifies by 1/(2ζ), clipping holds the range, the same seed gives the same samples, and the
+// vibration's rotation tilts gravity into the accelerometer.
 #include "hil/firmware_emu/mcu/imu_front_end.h"
 
 #include <algorithm>
@@ -114,6 +115,39 @@ TEST(ImuFrontEndTest, RideVibrationHasThePsdAsked) {
   }
   const double bin_hz = 1000.0 / static_cast<double>(z.size());
   EXPECT_NEAR(p / 11.0 / bin_hz / 0.01, 1.0, 0.6);  // a single periodogram bin scatters by ~100 %
+}
+
+// A roll oscillation of the board (a ride band on the x gyro only, no translation) tilts gravity
+// into the accelerometer as a rigid board would: the y axis reads g·θ_x, with θ_x the angle the
+// x gyro's output integrates to (f_S = f − θ × f); before, the accelerometer read 0 throughout.
+TEST(ImuFrontEndTest, ARollOscillationTiltsGravityIntoTheAccelerometer) {
+  RoughImuSpec s;
+  s.internal_rate_hz = 1000;
+  RideBand b;
+  b.f_low_hz = 1.2;
+  b.f_high_hz = 2.5;
+  b.gyro_psd_radps_sq_per_hz = Eigen::Vector3d(2e-4, 0, 0);  // about 1° /s r.m.s. over the band
+  s.ride = {b};
+  ImuFrontEnd fe(s, Wide(300), 5);
+  const double g = 9.80665;
+  const double out_hz = 100;
+  double theta_x = 0, sum_sq_fy = 0, sum_sq_err = 0;
+  for (int k = 0; k < 60000; ++k) {  // 600 s
+    Eigen::Vector3d f, w;
+    fe.Advance(TimeFromSeconds(k / out_hz), Eigen::Vector3d(0, 0, g), Eigen::Vector3d::Zero(), f,
+               w);
+    theta_x += w.x() / out_hz;
+    if (k < 2000) continue;  // the angle's start-up
+    sum_sq_fy += f.y() * f.y();
+    sum_sq_err += (f.y() - g * theta_x) * (f.y() - g * theta_x);
+  }
+  const double rms_fy = std::sqrt(sum_sq_fy / 58000.0);
+  const double rms_err = std::sqrt(sum_sq_err / 58000.0);
+  // the roll band's angle: 1°/s r.m.s. at about 1.7 Hz is about 0.1° = 1.6 mrad: 0.016 m/s²
+  EXPECT_GT(rms_fy, 0.005);
+  // the y reading is the tilted gravity, up to the rectangle rule of the test's own integral and
+  // the 10 s leak of the emulator's angle (a few per cent of the band's angle)
+  EXPECT_LT(rms_err, 0.15 * rms_fy) << "y r.m.s. " << rms_fy << ", off g·θ by " << rms_err;
 }
 
 TEST(ImuFrontEndTest, TheMountResonanceAmplifiesByOneOverTwoZeta) {

@@ -12,11 +12,20 @@
 /// (VibrationSource) is added; the sum is clipped at the sensor's range (the ADC's full scale, so
 /// vibration beyond it rectifies into a bias) and filtered by a second-order Butterworth
 /// anti-alias low-pass; the output sample is the filter's value at the sample instant. When that
-/// low-pass is wider than half the output rate, vibration aliases into the output band.
+/// low-pass is wider than half the output rate, vibration aliases into the output band. The
+/// vibration's angular rate turns the sensor: the angle it integrates to (θ, small) tilts the
+/// rigid body's specific force into the sensor frame (f − θ × f), so that the accelerometer sees
+/// the gravity a roll or pitch oscillation tilts into it, as a rigid board would. Without it the
+/// gyro reported a rotation the accelerometer did not (the ride's 1.5–1.9 Hz roll mode: 2 mrad,
+/// 0.02 m/s² of gravity missing at the accelerometer). θ leaks with a 10 s time constant (chosen:
+/// far below the ride's lowest band, 0.5–1 Hz, so the oscillation is kept, and it holds any
+/// numerical drift of the integral at bay; an engine order's sine integrates to a constant
+/// offset otherwise).
 
 #include <cstdint>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include "hil/firmware_emu/mcu/biquad3.h"
 #include "hil/firmware_emu/mcu/rough_imu_spec.h"
@@ -52,6 +61,8 @@ class ImuFrontEnd {
   Time t_prev_{};
   Eigen::Vector3d f_prev_ = Eigen::Vector3d::Zero(), w_prev_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d f_last_ = Eigen::Vector3d::Zero(), w_last_ = Eigen::Vector3d::Zero();
+  static constexpr double kVibrationTiltLeakTau_s = 10.0;    ///< θ's leak (class comment)
+  Eigen::Vector3d vib_angle_rad_ = Eigen::Vector3d::Zero();  ///< the vibration's angle θ
 };
 
 }  // namespace hil::mcu
