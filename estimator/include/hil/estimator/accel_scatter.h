@@ -31,6 +31,9 @@ class AccelScatter {
   /// The largest axis's: the filter's accelerometer noise is one density for every axis, and the
   /// rotation into the navigation frame mixes them.
   double density2_m2ps3() const { return samples_ >= kWarmup ? axes_.maxCoeff() : 0.0; }
+  Eigen::Vector3d density2_B_m2ps3() const {
+    return samples_ >= kWarmup ? axes_ : Eigen::Vector3d::Zero();
+  }
   bool enabled() const { return tau_s_ > 0; }
 
  private:
