@@ -292,11 +292,13 @@ class ErrorStateEkf {
   /// from the GNSS velocity innovations (an engine's vibration shakes both sensors of a board).
   void SetAccelNoiseScale(double scale) { accel_scale_ = scale; }
   double accel_noise_scale() const { return accel_scale_; }
-  /// A floor under the accelerometer's white-noise density² (m²/s³) in Predict: the density its
-  /// own sample scatter shows (AccelScatter; 0: the configured density alone).
+  /// A floor per body axis under the accelerometer's white-noise density² (m²/s³) in Predict: the
+  /// density its own sample scatter shows (AccelScatter; 0: the configured density alone). The
+  /// velocity's process noise is then C diag(q²) Cᵀ, no longer isotropic.
   void SetAccelNoiseFloor(const Eigen::Vector3d& density2_B_m2ps3) {
     accel_noise_floor_B_m2ps3_ = density2_B_m2ps3;
   }
+  /// The largest axis's floor.
   double accel_noise_floor() const { return accel_noise_floor_B_m2ps3_.maxCoeff(); }
   /// The variance of the IMU's vibration velocity per body axis (VibrationVelocity): added to the
   /// noise of the non-holonomic (y, z) and speed-model (x) pseudo-measurements (zero: as
