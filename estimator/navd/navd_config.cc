@@ -247,6 +247,8 @@ bool ReadFilterKey(const ConfigFile& f, const ConfigEntry& e, NavdConfig& c, int
     c.nav.stationary.zupt_std_mps = ToDouble(f, e, 0.001, 1.0);
   } else if (k == "use_gnss_velocity") {
     c.nav.use_gnss_velocity = ToBool(f, e);
+  } else if (k == "fix_velocity_ripple") {
+    c.nav.fix_velocity_ripple = ToBool(f, e);
   } else
     return false;
   return true;

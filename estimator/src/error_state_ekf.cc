@@ -130,11 +130,11 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& delta_angle_B_rad,
   }
   const double dev_decay = SpeedDevState(p) ? std::exp(-dt / p.speed_dev_tau_s) : 1.0;
   PropagateCovariance(C, dt, gm_decay, dev_decay);
-  // process noise: isotropic densities are invariant under the rotation C
-  P_.block<3, 3>(kVel, kVel).diagonal().array() +=
-      std::max(q_scale_ * accel_scale_ * p.accel_noise_mps2_rthz * p.accel_noise_mps2_rthz,
-               accel_noise_floor_m2ps3_) *
-      dt;
+  // process noise: the accelerometer's density per body axis, rotated into N
+  const double q_accel =
+      q_scale_ * accel_scale_ * p.accel_noise_mps2_rthz * p.accel_noise_mps2_rthz;
+  const Eigen::Vector3d q_accel_B = accel_noise_floor_B_m2ps3_.cwiseMax(q_accel);
+  P_.block<3, 3>(kVel, kVel) += C * q_accel_B.asDiagonal() * C.transpose() * dt;
   if (!attitude_hold_) {
     // the white angle random walk, plus the scale and misalignment error of the angle turned
     // (isotropic: invariant under C)

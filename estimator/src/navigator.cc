@@ -214,11 +214,14 @@ void Navigator::ProcessImu(const ImuSample& s) {
   }
   DetectStationary(s);
   ObserveImuUsability(s);
-  if (accel_scatter_.enabled()) ekf_.SetAccelNoiseFloor(accel_scatter_.density2_m2ps3());
+  if (accel_scatter_.enabled()) ekf_.SetAccelNoiseFloor(accel_scatter_.density2_B_m2ps3());
   ekf_.Predict(s.delta_angle_B_rad, s.delta_velocity_B_mps, s.dt_s);
   // the INS's own velocity increment (no aiding) since the last fix velocity (GnssVelocityNoise)
-  ins_dv_N_mps_ += ekf_.state().q_NB * (s.delta_velocity_B_mps - ekf_.accel_bias() * s.dt_s) +
-                   ekf_.earth().g_N_mps2 * s.dt_s;
+  const Eigen::Vector3d ins_dv_N_mps =
+      ekf_.state().q_NB * (s.delta_velocity_B_mps - ekf_.accel_bias() * s.dt_s) +
+      ekf_.earth().g_N_mps2 * s.dt_s;
+  ins_dv_N_mps_ += ins_dv_N_mps;
+  fix_ripple_.Add(ins_dv_N_mps, s.dt_s);
   if (vibration_.enabled()) {
     vibration_.Add(s.delta_velocity_B_mps, s.dt_s);
     ekf_.SetVibrationVariance(vibration_.variance_B_mps2());

@@ -82,5 +82,38 @@ TEST(AccelScatterTest, NavigatorFloorsTheAccelerometerNoise) {
   EXPECT_EQ(NavigatorFloor(0.01), 0.0);
 }
 
+// the velocity covariance (ENU) after one 0.1 s step of a board rolled 90° (its z axis level,
+// pointing west) and yawed 0.5 rad, with the given floor per body axis
+Eigen::Matrix3d VelocityCovarianceAfterStep(const Eigen::Vector3d& floor_B_m2ps3) {
+  EarthModel earth;
+  earth.g_N_mps2 = Eigen::Vector3d(0, 0, -9.81);
+  EkfParams p;
+  p.accel_noise_mps2_rthz = 0.0125;
+  ErrorStateEkf ekf(p, earth);
+  NavState s;
+  s.q_NB = Eigen::AngleAxisd(0.5, Eigen::Vector3d::UnitZ()) *
+           Eigen::AngleAxisd(std::numbers::pi / 2, Eigen::Vector3d::UnitX());
+  ekf.Initialize(s);
+  ekf.SetAccelNoiseFloor(floor_B_m2ps3);
+  ekf.Predict(Eigen::Vector3d::Zero(), s.q_NB.conjugate() * Eigen::Vector3d(0, 0, 9.81) * 0.1, 0.1);
+  return ekf.covariance().block<3, 3>(ekf_index::kVel, ekf_index::kVel);
+}
+
+TEST(AccelScatterTest, FloorHoldsPerBodyAxis) {
+  // GIVEN a floor on the board's z axis only (an engine's vibration along it), 0.09 m²/s³
+  const Eigen::Matrix3d added = VelocityCovarianceAfterStep(Eigen::Vector3d(0, 0, 0.09)) -
+                                VelocityCovarianceAfterStep(Eigen::Vector3d::Zero());
+  // THEN the velocity gains it along the board's z axis as it lies in ENU, and only there (an
+  // isotropic floor gave every direction the largest axis's: the z vibration flooded the
+  // horizontal INS of paper 000's Razor, 0.3 m/s²/√Hz for its 0.1 along x)
+  const Eigen::Quaterniond q_NB = Eigen::AngleAxisd(0.5, Eigen::Vector3d::UnitZ()) *
+                                  Eigen::AngleAxisd(std::numbers::pi / 2, Eigen::Vector3d::UnitX());
+  const Eigen::Vector3d z_N = q_NB * Eigen::Vector3d::UnitZ();
+  const double expected = (0.09 - 0.0125 * 0.0125) * 0.1;
+  EXPECT_NEAR(z_N.dot(added * z_N), expected, 1e-9);
+  EXPECT_NEAR(added.trace(), expected, 1e-9);
+  EXPECT_NEAR(added(2, 2), 0.0, 1e-9);  // the vertical is the board's y axis here: no floor
+}
+
 }  // namespace
 }  // namespace hil::estimator

@@ -1,6 +1,7 @@
 // GNSS velocity aid source of the navigator's EKF: control (the σ a fix velocity is fused with)
 // here, fusion in ErrorStateEkf::UpdateVelocity. See estimator.md, "GNSS velocity noise".
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "hil/estimator/navigator.h"
@@ -41,7 +42,14 @@ void Navigator::FuseGnssVelocity(const GnssSample& g) {
     last_vel_lever_N_ = lever_N;
     ins_dv_N_mps_.setZero();
   }
-  const UpdateResult rv = ekf_.UpdateVelocity(g.vel_enu_mps, std_mps);
+  // the INS's ripple at this instant, as the previous fixes saw it too: not a velocity error
+  const Eigen::Vector3d ripple_N_mps =
+      params_.fix_velocity_ripple
+          ? fix_ripple_.Ripple_N_mps(
+                std::chrono::duration<double>(params_.robust.gap_after).count())
+          : Eigen::Vector3d::Zero();
+  fix_ripple_.Restart();
+  const UpdateResult rv = ekf_.UpdateVelocity(g.vel_enu_mps + ripple_N_mps, std_mps);
   stats_.gnss_vel_std_mps = std::max(std_mps.x(), std_mps.y());
   stats_.gnss_vel_std_learned = learn && std_mps.x() < g.vel_std_enu_mps.x();
   Record(kAidGnssVelocity, rv);

@@ -292,10 +292,14 @@ class ErrorStateEkf {
   /// from the GNSS velocity innovations (an engine's vibration shakes both sensors of a board).
   void SetAccelNoiseScale(double scale) { accel_scale_ = scale; }
   double accel_noise_scale() const { return accel_scale_; }
-  /// A floor under the accelerometer's white-noise density² (m²/s³) in Predict: the density its
-  /// own sample scatter shows (AccelScatter; 0: the configured density alone).
-  void SetAccelNoiseFloor(double density2_m2ps3) { accel_noise_floor_m2ps3_ = density2_m2ps3; }
-  double accel_noise_floor() const { return accel_noise_floor_m2ps3_; }
+  /// A floor per body axis under the accelerometer's white-noise density² (m²/s³) in Predict: the
+  /// density its own sample scatter shows (AccelScatter; 0: the configured density alone). The
+  /// velocity's process noise is then C diag(q²) Cᵀ, no longer isotropic.
+  void SetAccelNoiseFloor(const Eigen::Vector3d& density2_B_m2ps3) {
+    accel_noise_floor_B_m2ps3_ = density2_B_m2ps3;
+  }
+  /// The largest axis's floor.
+  double accel_noise_floor() const { return accel_noise_floor_B_m2ps3_.maxCoeff(); }
   /// The variance of the IMU's vibration velocity per body axis (VibrationVelocity): added to the
   /// noise of the non-holonomic (y, z) and speed-model (x) pseudo-measurements (zero: as
   /// configured).
@@ -446,12 +450,12 @@ class ErrorStateEkf {
   Eigen::Vector3d f_N_ = Eigen::Vector3d::Zero();              // last specific force in N
   EkfMatrix P_ = EkfMatrix::Identity();
   std::uint32_t repairs_ = 0;
-  double q_scale_ = 1.0;                  // process-noise scale (SetProcessNoiseScale)
-  double accel_scale_ = 1.0;              // SetAccelNoiseScale
-  double accel_noise_floor_m2ps3_ = 0.0;  // SetAccelNoiseFloor
-  Eigen::Vector3d vibration_var_B_mps2_ = Eigen::Vector3d::Zero();  // SetVibrationVariance
-  VehicleVelocityRipple ripple_;                                    // vehicle_lowpass_tau_s
-  bool attitude_hold_ = false;                                      // SetAttitudeHold
+  double q_scale_ = 1.0;      // process-noise scale (SetProcessNoiseScale)
+  double accel_scale_ = 1.0;  // SetAccelNoiseScale
+  Eigen::Vector3d accel_noise_floor_B_m2ps3_ = Eigen::Vector3d::Zero();  // SetAccelNoiseFloor
+  Eigen::Vector3d vibration_var_B_mps2_ = Eigen::Vector3d::Zero();       // SetVibrationVariance
+  VehicleVelocityRipple ripple_;                                         // vehicle_lowpass_tau_s
+  bool attitude_hold_ = false;                                           // SetAttitudeHold
 };
 
 }  // namespace hil::estimator

@@ -38,6 +38,7 @@
 
 #include "hil/estimator/accel_scatter.h"
 #include "hil/estimator/error_state_ekf.h"
+#include "hil/estimator/fix_velocity_ripple.h"
 #include "hil/estimator/geodesy.h"
 #include "hil/estimator/gnss_step_check.h"
 #include "hil/estimator/gnss_velocity_noise.h"
@@ -155,6 +156,9 @@ struct NavigatorParams {
   Nanoseconds reset_after_rejected{5'000'000'000};  ///< reset to GNSS after rejections this long
   Nanoseconds imu_timeout{1'000'000'000};  ///< IMU modes: fall back to the fixes after this
   bool use_gnss_velocity = true;
+  /// The fix velocity is compared with the INS's velocity less its ripple at the fix instants
+  /// (FixVelocityRipple; estimator.md, "The INS's ripple at the fix instants").
+  bool fix_velocity_ripple = true;
   /// EKF mode: the σ of a fix velocity whose receiver reports none (GnssSample::
   /// vel_std_configured, NMEA) is learned from its innovations, never above the configured one
   /// (GnssVelocityNoise, aid_sources/gnss_velocity_control.cc; `[filter] gnss_velocity_noise`).
@@ -414,6 +418,7 @@ class Navigator {
   Eigen::Vector3d last_vel_lever_N_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d ins_dv_N_mps_ = Eigen::Vector3d::Zero();
   std::optional<Eigen::Vector2d> last_vel_d_;  // the previous increment (its lag-1 correlation)
+  FixVelocityRipple fix_ripple_;               // the INS's ripple as the fix velocities see it
   std::optional<GpsTime> last_gnss_vel_t_;     // the newest fix with a velocity, and its speed
   double last_gnss_speed_mps_ = 0;
   // GNSS-only and multi-receiver modes: the last fix
