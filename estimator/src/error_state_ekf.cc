@@ -29,6 +29,8 @@ void ErrorStateEkf::Initialize(const NavState& s) {
   ripple_.Reset();
   gyro_z_coupling_rad_.setZero();
   time_residual_s_ = 0.0;
+  accel_y_force_.setZero();
+  f_y_B_mps2_ = 0.0;
   accel_lp_N_mps2_.setZero();
   gm_tau_s_ = params_.gnss_error_tau_s;
   gm_std_m_ = params_.gnss_error_std_m;
@@ -72,7 +74,8 @@ void ErrorStateEkf::RestartTimeBaseStates() {
   gyro_scale_z_ = 0.0;
   gyro_z_coupling_rad_.setZero();
   time_residual_s_ = 0.0;
-  constexpr int kTriad = kImuTimeResidual + 1 - kGyroScaleZ;
+  accel_y_force_.setZero();
+  constexpr int kTriad = kAccelCouplingXY + 1 - kGyroScaleZ;
   P_.middleRows<kTriad>(kGyroScaleZ).setZero();
   P_.middleCols<kTriad>(kGyroScaleZ).setZero();
   SetTimeBasePriors();
@@ -87,6 +90,9 @@ void ErrorStateEkf::SetTimeBasePriors() {
   }
   if (TimeResidualStateOn())
     P_(kImuTimeResidual, kImuTimeResidual) = p.imu_time_residual_std_s * p.imu_time_residual_std_s;
+  if (AccelForceStatesOn())
+    P_(kAccelScaleY, kAccelScaleY) = P_(kAccelCouplingXY, kAccelCouplingXY) =
+        p.accel_y_force_std * p.accel_y_force_std;
 }
 
 Eigen::Vector3d ErrorStateEkf::CompensatedAngle(const Eigen::Vector3d& delta_angle_B_rad,
@@ -99,6 +105,15 @@ Eigen::Vector3d ErrorStateEkf::CompensatedAngle(const Eigen::Vector3d& delta_ang
   return dth;
 }
 
+Eigen::Vector3d ErrorStateEkf::CompensatedVelocity(const Eigen::Vector3d& delta_velocity_B_mps,
+                                                   double dt) const {
+  // the y accelerometer reads (1 + k_ay) f_y + b_y, the x accelerometer f_x + m_xy f_y + b_x
+  Eigen::Vector3d dv = delta_velocity_B_mps - ba_ * dt;
+  dv.y() /= 1.0 + accel_y_force_.x();
+  dv.x() -= accel_y_force_.y() * dv.y();
+  return dv;
+}
+
 void ErrorStateEkf::Predict(const Eigen::Vector3d& delta_angle_B_rad,
                             const Eigen::Vector3d& delta_velocity_B_mps, double dt) {
   if (!(dt > 0) || dt > 1.0 || !AllFinite(delta_angle_B_rad) || !AllFinite(delta_velocity_B_mps))
@@ -108,8 +123,9 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& delta_angle_B_rad,
   const Eigen::Vector3d dth = attitude_hold_
                                   ? Eigen::Vector3d(C.transpose() * earth_.w_IE_N_radps * dt)
                                   : CompensatedAngle(delta_angle_B_rad, dt);
-  const Eigen::Vector3d dv = delta_velocity_B_mps - ba_ * dt;
+  const Eigen::Vector3d dv = CompensatedVelocity(delta_velocity_B_mps, dt);
   w_B_ = dth / dt;
+  f_y_B_mps2_ = dv.y() / dt;
   f_N_ = C * dv / dt;
   // the acceleration over about a fix interval, for the residual tag lag's velocity term
   const double w_lp = std::min(1.0, dt / kAccelSmoothing_s);
@@ -177,7 +193,8 @@ void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, d
   //   row δp: [I  I·dt  0  0   0  ]        rows δb_a, δb_g, δs: identity
   //   row δv: [0  A     B  −Cdt 0 ]        rows e: gm_decay·I; row δd: dev_decay
   //   row φ:  [0  0     D  0   −Cdt]          (and −Ĉ[ẑ x̂ ŷ]ω_z·dt in the columns of δk_z,
-  //                                                δm_xz, δm_yz)
+  //                                                δm_xz, δm_yz; in row δv −Ĉ[ŷ x̂]f_y·dt in
+  //                                                those of δk_ay, δm_xy)
   // A = I − 2[ω_IE×]dt, B = −[f_N×]dt, D = I − [ω_IE×]dt. Only the rows of δp, δv, φ need
   // products; the rest of P is scaled by Φ's diagonal, and P's symmetry gives the other part.
   // P is symmetric, so the products run on its columns (contiguous in Eigen's column-major
@@ -203,7 +220,7 @@ void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, d
   const Eigen::Matrix3d Ggt = attitude_hold_ ? Eigen::Matrix3d::Zero() : Gt;
   // Mᵀ = P Φᵀ, the columns of δp, δv, φ
   const Cols3 Mp = P.template middleCols<3>(kPos) + dt * P.template middleCols<3>(kVel);
-  const Cols3 Mv = P.template middleCols<3>(kVel) * At + P.template middleCols<3>(kAtt) * Bt +
+  Cols3 Mv = P.template middleCols<3>(kVel) * At + P.template middleCols<3>(kAtt) * Bt +
                    P.template middleCols<3>(kAccelBias) * Gt;
   // the z gyro's scale error and the x and y gyros' coupling to the z rate (δk_z, δm_xz, δm_yz):
   // φ̇ = −Ĉ (ẑ δk_z + x̂ δm_xz + ŷ δm_yz) ω_z (none while the attitude is held)
@@ -212,6 +229,12 @@ void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, d
   Gk *= -w_B_.z() * dt;
   Cols3 Ma = P.template middleCols<3>(kAtt) * Dt + P.template middleCols<3>(kGyroBias) * Ggt;
   if constexpr (N == kNumStates) Ma += P.template middleCols<3>(kGyroScaleZ) * Gk.transpose();
+  // the y accelerometer's scale error and the x accelerometer's coupling to f_y (δk_ay, δm_xy):
+  // δv̇ = −Ĉ (ŷ δk_ay + x̂ δm_xy) f_y
+  Eigen::Matrix<double, 3, 2> Ga;
+  Ga << C.col(1), C.col(0);
+  Ga *= -f_y_B_mps2_ * dt;
+  if constexpr (N == kNumStates) Mv += P.template middleCols<2>(kAccelScaleY) * Ga.transpose();
   // Φ's diagonal on the tail: P_tail ← Φ_tail P_tail Φ_tailᵀ. Its only entries other than 1 are
   // the decays of e and δd, so only their rows and columns of the tail block are scaled.
   Eigen::Matrix<double, kTail, 1> tail = Eigen::Matrix<double, kTail, 1>::Ones();
@@ -235,8 +258,10 @@ void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, d
                                      Gt.transpose() * M.template middleRows<3>(kAccelBias);
     R.template middleRows<3>(kAtt) = Dt.transpose() * M.template middleRows<3>(kAtt) +
                                      Ggt.transpose() * M.template middleRows<3>(kGyroBias);
-    if constexpr (N == kNumStates)
+    if constexpr (N == kNumStates) {
       R.template middleRows<3>(kAtt) += Gk * M.template middleRows<3>(kGyroScaleZ);
+      R.template middleRows<3>(kVel) += Ga * M.template middleRows<2>(kAccelScaleY);
+    }
     R.template bottomRows<kTail>() = tail.asDiagonal() * M.template bottomRows<kTail>();
     return R;
   };
@@ -466,6 +491,9 @@ void ErrorStateEkf::InjectError(const EkfVector& dx) {
     gyro_z_coupling_rad_ =
         (gyro_z_coupling_rad_ + dx.segment<2>(kGyroCouplingX)).cwiseMax(-0.1).cwiseMin(0.1);
   }
+  // clamped to ±0.1 (ours: 10 % of scale or 5.7° of misalignment, twenty times the data sheets')
+  if (AccelForceStatesOn())
+    accel_y_force_ = (accel_y_force_ + dx.segment<2>(kAccelScaleY)).cwiseMax(-0.1).cwiseMin(0.1);
 }
 
 Eigen::Vector3d ErrorStateEkf::GnssErrorVariance(double horizontal_std_m, double up_std_m) {

@@ -7,7 +7,7 @@
 /// output: nominal NavState, biases, covariance, NIS of the last update, status flags
 /// @endsystem
 ///
-/// Error state (kNumUsedStates = 26 in a vector of kNumStates = 26, fixed-size):
+/// Error state (kNumUsedStates = 28 in a vector of kNumStates = 28, fixed-size):
 ///   δp (N, m) | δv (N, m/s) | φ (attitude error in N, rad; C_true = Exp(φ)·Ĉ) | δb_a (B, m/s²) |
 ///   δb_g (B, rad/s) | e_gnss (N, m: first-order Gauss–Markov GNSS position error, optional) |
 ///   δs (m/s: the vehicle's set speed, a slow random walk, optional) |
@@ -16,6 +16,8 @@
 ///   | δk_z (dimensionless: the z gyro's scale-factor error, a random constant, optional)
 ///   | δm_xz, δm_yz (rad: the x and y gyros' coupling to the z rate, random constants, optional)
 ///   | δt (s: the IMU tags' residual lag behind the fixes' time, a random constant, optional)
+///   | δk_ay, δm_xy (the y accelerometer's scale error and the x accelerometer's coupling to the
+///   y specific force: random constants, optional)
 ///
 /// The residual lag: after the tag lag navd found and took off (ImuTimeOffset) the INS at tag time
 /// τ is the vehicle at τ − δt, so a fix at t is predicted as the INS's antenna at t plus its
@@ -38,6 +40,17 @@
 /// right turns the opposite way; gravity in the accelerometers and the fixes show the tilt. The
 /// couplings to the x and y rates multiply a ground vehicle's small roll and pitch rates and are
 /// not states.
+///
+/// The accelerometer's errors in the lateral specific force: the y accelerometer reads
+/// f̃_y = (1 + k_ay)·f_y + b_y and the x accelerometer f̃_x = f_x + m_xy·f_y + b_x, the filter
+/// compensates f_y = (f̃_y − b̂_y)/(1 + k̂_ay) and f_x = f̃_x − b̂_x − m̂_xy·f_y, so δv̇ gains
+/// −Ĉ·(ŷ·δk_ay + x̂·δm_xy)·f_y. A ground vehicle's turns make them observable (the centripetal
+/// f_y, 3 m/s² on a car at 6 m/s in a 12 m turn, left and right in turn; zero on the rows), and
+/// they must be states where the gyro's couplings to the z rate are: a turn's forward and lateral
+/// acceleration error otherwise reads as a turn's pitch and roll, i.e. as m_yz and m_xz
+/// (field_realism/imu_time_tag_lag: m̂_yz 0.28° off with the accelerometer's 0.3° misalignment).
+/// Their other errors multiply f_x (small on a vehicle at constant speed) or gravity (a constant
+/// a bias takes).
 ///
 /// The speed state is the vehicle model of a ground vehicle that holds its speed (cruise control,
 /// constant throttle): the forward body velocity stays within `speed_dev_std_mps` of a set speed
@@ -97,11 +110,13 @@ inline constexpr int kGyroScaleZ = 22;       ///< δk_z: the z gyro's scale-fact
 inline constexpr int kGyroCouplingX = 23;    ///< δm_xz: the x gyro's coupling to the z rate (rad)
 inline constexpr int kGyroCouplingY = 24;    ///< δm_yz: the y gyro's coupling to the z rate (rad)
 inline constexpr int kImuTimeResidual = 25;  ///< δt: the IMU tags' residual lag (s)
+inline constexpr int kAccelScaleY = 26;      ///< δk_ay: the y accelerometer's scale error (fraction)
+inline constexpr int kAccelCouplingXY = 27;  ///< δm_xy: the x accelerometer's coupling to f_y (rad)
 /// the states in use (the last index + 1), and the size of the filter's vectors and matrices: that
 /// count made even (an unused last row and column, zero), so that Eigen's SSE packets of two
 /// doubles tile every column (23 states left the covariance propagation unvectorised: +57 %
 /// instructions over the 20 states before them; callgrind, ekf_benchmark seed004)
-inline constexpr int kNumUsedStates = 26;
+inline constexpr int kNumUsedStates = 28;
 inline constexpr int kNumStates = kNumUsedStates + kNumUsedStates % 2;
 }  // namespace ekf_index
 
@@ -200,6 +215,13 @@ struct EkfParams {
   /// ImuTimeOffset reports has σ below its max_std_s, 10 ms, and wanders within ±5 ms of the
   /// true lag on the car; estimator.md, "The residual IMU tag lag").
   double imu_time_residual_std_s = 0.01;
+  /// Prior σ of the y accelerometer's scale error k_ay and the x accelerometer's coupling m_xy to
+  /// the y specific force, estimated as two random-constant states while the x and y gyros'
+  /// couplings to the z rate are (`[filter] accel_y_force_std`; fraction and rad; 0: not
+  /// estimated). 0.005 (our choice: the consumer-MEMS scale σ 0.5 % and misalignment σ 0.3° =
+  /// 0.0052 rad of vectors/mcu/imu_error_model.md, the ICM-42688-P's ±0.5 % sensitivity
+  /// tolerance). The gyro's couplings need them (estimator.md, "The accelerometer in the turns").
+  double accel_y_force_std = 0.005;
 };
 
 /// Health and status bit field.
@@ -346,6 +368,10 @@ class ErrorStateEkf {
   double gyro_scale_z() const { return gyro_scale_z_; }
   /// The x and y gyros' estimated coupling to the z rate (m̂_xz, m̂_yz, rad; 0 when not estimated).
   const Eigen::Vector2d& gyro_z_coupling_rad() const { return gyro_z_coupling_rad_; }
+  /// The y accelerometer's estimated scale error and the x accelerometer's coupling to the y
+  /// specific force (k̂_ay fraction, m̂_xy rad; 0 when not estimated).
+  const Eigen::Vector2d& accel_y_force_error() const { return accel_y_force_; }
+  bool accel_y_force_estimated() const { return AccelForceStatesOn(); }
   /// The INS's acceleration low-passed over kAccelSmoothing_s (N, m/s²).
   const Eigen::Vector3d& smoothed_acceleration_N() const { return accel_lp_N_mps2_; }
   /// The IMU tags' estimated residual lag behind the fixes (s; 0 when not estimated).
@@ -354,13 +380,18 @@ class ErrorStateEkf {
   /// moves the other way (its σ stays).
   void ShiftImuTags(double shift_s);
   /// Restarts the random constants learned against the IMU's time base (the z gyro's scale, the x
-  /// and y gyros' couplings to the z rate, the residual tag lag) at zero with their prior σ,
+  /// and y gyros' couplings to the z rate, the residual tag lag, the accelerometer's lateral-force
+  /// errors, which a late tag's turn teaches too) at zero with their prior σ,
   /// uncorrelated with the other states: what they learned before a tag lag was found and taken
   /// off is the lag's error, not the gyro's.
   void RestartTimeBaseStates();
   /// The angle increment the filter integrates for a raw gyro increment over dt: the bias, the z
   /// gyro's scale and the x and y gyros' coupling to the z rate removed (B, rad).
   Eigen::Vector3d CompensatedAngle(const Eigen::Vector3d& delta_angle_B_rad, double dt) const;
+  /// The velocity increment the filter integrates for a raw accelerometer increment over dt: the
+  /// bias, the y accelerometer's scale and the x accelerometer's coupling to f_y removed (B, m/s).
+  Eigen::Vector3d CompensatedVelocity(const Eigen::Vector3d& delta_velocity_B_mps,
+                                      double dt) const;
   bool mount_angles_estimated() const { return MountStatesOn(); }
   /// C_VB, the rotation from the IMU frame into the vehicle frame (identity when off).
   const Eigen::Matrix3d& vehicle_from_imu() const { return C_VB_; }
@@ -390,8 +421,11 @@ class ErrorStateEkf {
   /// ten rows may be non-zero.
   bool AugmentedStatesOn() const {
     return params_.gnss_error_tau_s > 0 || params_.speed_rw_mps_rthz > 0 || MountStatesOn() ||
-           GyroScaleStateOn() || GyroCouplingStatesOn() || TimeResidualStateOn();
+           GyroScaleStateOn() || GyroCouplingStatesOn() || TimeResidualStateOn() ||
+           AccelForceStatesOn();
   }
+  /// The accelerometer's lateral-force errors (δk_ay, δm_xy) are estimated.
+  bool AccelForceStatesOn() const { return params_.accel_y_force_std > 0; }
   /// The IMU tags' residual lag is estimated.
   bool TimeResidualStateOn() const { return params_.imu_time_residual_std_s > 0; }
   /// The fixes teach the residual lag now: at speed. Standing or at a walk its v·δt is below the
@@ -435,6 +469,7 @@ class ErrorStateEkf {
   double gyro_scale_z_ = 0.0;                            // k̂_z: the z gyro's scale error
   Eigen::Vector2d gyro_z_coupling_rad_ = Eigen::Vector2d::Zero();  // m̂_xz, m̂_yz
   double time_residual_s_ = 0.0;  // δ̂t: the IMU tags' residual lag behind the fixes
+  Eigen::Vector2d accel_y_force_ = Eigen::Vector2d::Zero();  // k̂_ay, m̂_xy
   // the acceleration's low-pass time constant: a 10 Hz fix interval, over which an engine's
   // orders (tens of Hz) average out (chosen here)
   static constexpr double kAccelSmoothing_s = 0.1;
@@ -444,6 +479,7 @@ class ErrorStateEkf {
   Eigen::Vector3d accel_lp_N_mps2_ = Eigen::Vector3d::Zero();  // ā_N (kAccelSmoothing_s)
   Eigen::Vector3d w_B_ = Eigen::Vector3d::Zero();              // last compensated angular rate
   Eigen::Vector3d f_N_ = Eigen::Vector3d::Zero();              // last specific force in N
+  double f_y_B_mps2_ = 0.0;  // last compensated specific force along the body's y axis
   EkfMatrix P_ = EkfMatrix::Identity();
   std::uint32_t repairs_ = 0;
   double q_scale_ = 1.0;                  // process-noise scale (SetProcessNoiseScale)
