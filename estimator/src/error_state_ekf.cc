@@ -75,7 +75,7 @@ void ErrorStateEkf::RestartTimeBaseStates() {
   gyro_z_coupling_rad_.setZero();
   time_residual_s_ = 0.0;
   accel_y_force_.setZero();
-  constexpr int kTriad = kAccelCouplingXY + 1 - kGyroScaleZ;
+  constexpr int kTriad = kAccelCouplingZY + 1 - kGyroScaleZ;
   P_.middleRows<kTriad>(kGyroScaleZ).setZero();
   P_.middleCols<kTriad>(kGyroScaleZ).setZero();
   SetTimeBasePriors();
@@ -85,14 +85,16 @@ void ErrorStateEkf::SetTimeBasePriors() {
   const auto& p = params_;
   if (GyroScaleStateOn()) P_(kGyroScaleZ, kGyroScaleZ) = p.gyro_scale_z_std * p.gyro_scale_z_std;
   if (GyroCouplingStatesOn()) {
-    const double var = p.gyro_z_coupling_std_rad * p.gyro_z_coupling_std_rad;
-    P_(kGyroCouplingX, kGyroCouplingX) = P_(kGyroCouplingY, kGyroCouplingY) = var;
+    // a coupling whose σ is 0 stays at 0 (its row and column of P stay zero)
+    P_(kGyroCouplingX, kGyroCouplingX) = p.gyro_z_coupling_x_std_rad * p.gyro_z_coupling_x_std_rad;
+    P_(kGyroCouplingY, kGyroCouplingY) = p.gyro_z_coupling_y_std_rad * p.gyro_z_coupling_y_std_rad;
   }
   if (TimeResidualStateOn())
     P_(kImuTimeResidual, kImuTimeResidual) = p.imu_time_residual_std_s * p.imu_time_residual_std_s;
   if (AccelForceStatesOn())
-    P_(kAccelScaleY, kAccelScaleY) = P_(kAccelCouplingXY, kAccelCouplingXY) =
-        p.accel_y_force_std * p.accel_y_force_std;
+    P_.block<3, 3>(kAccelScaleY, kAccelScaleY)
+        .diagonal()
+        .setConstant(p.accel_y_force_std * p.accel_y_force_std);
 }
 
 Eigen::Vector3d ErrorStateEkf::CompensatedAngle(const Eigen::Vector3d& delta_angle_B_rad,
@@ -111,6 +113,7 @@ Eigen::Vector3d ErrorStateEkf::CompensatedVelocity(const Eigen::Vector3d& delta_
   Eigen::Vector3d dv = delta_velocity_B_mps - ba_ * dt;
   dv.y() /= 1.0 + accel_y_force_.x();
   dv.x() -= accel_y_force_.y() * dv.y();
+  dv.z() -= accel_y_force_.z() * dv.y();
   return dv;
 }
 
@@ -221,7 +224,7 @@ void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, d
   // Mᵀ = P Φᵀ, the columns of δp, δv, φ
   const Cols3 Mp = P.template middleCols<3>(kPos) + dt * P.template middleCols<3>(kVel);
   Cols3 Mv = P.template middleCols<3>(kVel) * At + P.template middleCols<3>(kAtt) * Bt +
-                   P.template middleCols<3>(kAccelBias) * Gt;
+             P.template middleCols<3>(kAccelBias) * Gt;
   // the z gyro's scale error and the x and y gyros' coupling to the z rate (δk_z, δm_xz, δm_yz):
   // φ̇ = −Ĉ (ẑ δk_z + x̂ δm_xz + ŷ δm_yz) ω_z (none while the attitude is held)
   Eigen::Matrix3d Gk = Eigen::Matrix3d::Zero();
@@ -230,11 +233,11 @@ void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, d
   Cols3 Ma = P.template middleCols<3>(kAtt) * Dt + P.template middleCols<3>(kGyroBias) * Ggt;
   if constexpr (N == kNumStates) Ma += P.template middleCols<3>(kGyroScaleZ) * Gk.transpose();
   // the y accelerometer's scale error and the x accelerometer's coupling to f_y (δk_ay, δm_xy):
-  // δv̇ = −Ĉ (ŷ δk_ay + x̂ δm_xy) f_y
-  Eigen::Matrix<double, 3, 2> Ga;
-  Ga << C.col(1), C.col(0);
+  // and the z accelerometer's (δm_zy): δv̇ = −Ĉ (ŷ δk_ay + x̂ δm_xy + ẑ δm_zy) f_y
+  Eigen::Matrix3d Ga;
+  Ga << C.col(1), C.col(0), C.col(2);
   Ga *= -f_y_B_mps2_ * dt;
-  if constexpr (N == kNumStates) Mv += P.template middleCols<2>(kAccelScaleY) * Ga.transpose();
+  if constexpr (N == kNumStates) Mv += P.template middleCols<3>(kAccelScaleY) * Ga.transpose();
   // Φ's diagonal on the tail: P_tail ← Φ_tail P_tail Φ_tailᵀ. Its only entries other than 1 are
   // the decays of e and δd, so only their rows and columns of the tail block are scaled.
   Eigen::Matrix<double, kTail, 1> tail = Eigen::Matrix<double, kTail, 1>::Ones();
@@ -260,7 +263,7 @@ void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, d
                                      Ggt.transpose() * M.template middleRows<3>(kGyroBias);
     if constexpr (N == kNumStates) {
       R.template middleRows<3>(kAtt) += Gk * M.template middleRows<3>(kGyroScaleZ);
-      R.template middleRows<3>(kVel) += Ga * M.template middleRows<2>(kAccelScaleY);
+      R.template middleRows<3>(kVel) += Ga * M.template middleRows<3>(kAccelScaleY);
     }
     R.template bottomRows<kTail>() = tail.asDiagonal() * M.template bottomRows<kTail>();
     return R;
@@ -493,7 +496,7 @@ void ErrorStateEkf::InjectError(const EkfVector& dx) {
   }
   // clamped to ±0.1 (ours: 10 % of scale or 5.7° of misalignment, twenty times the data sheets')
   if (AccelForceStatesOn())
-    accel_y_force_ = (accel_y_force_ + dx.segment<2>(kAccelScaleY)).cwiseMax(-0.1).cwiseMin(0.1);
+    accel_y_force_ = (accel_y_force_ + dx.segment<3>(kAccelScaleY)).cwiseMax(-0.1).cwiseMin(0.1);
 }
 
 Eigen::Vector3d ErrorStateEkf::GnssErrorVariance(double horizontal_std_m, double up_std_m) {

@@ -44,7 +44,8 @@ class TurningCar {
     p.gnss_error_tau_s = 30.0;
     p.gnss_error_std_m = 0.008;
     p.gyro_scale_z_std = 0.0;
-    p.gyro_z_coupling_std_rad = 0.0;
+    p.gyro_z_coupling_x_std_rad = p.gyro_z_coupling_y_std_rad = 0.0;
+    p.accel_y_force_std = 0.0;
     p.imu_time_residual_std_s = 0.0;
     return p;
   }

@@ -19,7 +19,8 @@ void Navigator::RecordGyroScale() {
     stats_.gyro_scale_z_std = std_of(ekf_index::kGyroScaleZ);
   }
   stats_.imu_time_residual_s = ekf_.imu_time_residual_s();
-  stats_.gyro_z_coupling_estimated = ekf_.params().gyro_z_coupling_std_rad > 0;
+  stats_.gyro_z_coupling_estimated =
+      ekf_.params().gyro_z_coupling_x_std_rad > 0 || ekf_.params().gyro_z_coupling_y_std_rad > 0;
   if (stats_.gyro_z_coupling_estimated) {
     stats_.gyro_z_coupling_rad = ekf_.gyro_z_coupling_rad();
     stats_.gyro_z_coupling_std_rad = {std_of(ekf_index::kGyroCouplingX),
@@ -29,7 +30,8 @@ void Navigator::RecordGyroScale() {
   if (stats_.accel_y_force_estimated) {
     stats_.accel_y_force = ekf_.accel_y_force_error();
     stats_.accel_y_force_std = {std_of(ekf_index::kAccelScaleY),
-                                std_of(ekf_index::kAccelCouplingXY)};
+                                std_of(ekf_index::kAccelCouplingXY),
+                                std_of(ekf_index::kAccelCouplingZY)};
   }
 }
 

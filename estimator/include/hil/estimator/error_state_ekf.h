@@ -7,7 +7,7 @@
 /// output: nominal NavState, biases, covariance, NIS of the last update, status flags
 /// @endsystem
 ///
-/// Error state (kNumUsedStates = 28 in a vector of kNumStates = 28, fixed-size):
+/// Error state (kNumUsedStates = 29 in a vector of kNumStates = 30, fixed-size):
 ///   δp (N, m) | δv (N, m/s) | φ (attitude error in N, rad; C_true = Exp(φ)·Ĉ) | δb_a (B, m/s²) |
 ///   δb_g (B, rad/s) | e_gnss (N, m: first-order Gauss–Markov GNSS position error, optional) |
 ///   δs (m/s: the vehicle's set speed, a slow random walk, optional) |
@@ -16,8 +16,8 @@
 ///   | δk_z (dimensionless: the z gyro's scale-factor error, a random constant, optional)
 ///   | δm_xz, δm_yz (rad: the x and y gyros' coupling to the z rate, random constants, optional)
 ///   | δt (s: the IMU tags' residual lag behind the fixes' time, a random constant, optional)
-///   | δk_ay, δm_xy (the y accelerometer's scale error and the x accelerometer's coupling to the
-///   y specific force: random constants, optional)
+///   | δk_ay, δm_xy, δm_zy (the y accelerometer's scale error and the x and z accelerometers'
+///   coupling to the y specific force: random constants, optional)
 ///
 /// The residual lag: after the tag lag navd found and took off (ImuTimeOffset) the INS at tag time
 /// τ is the vehicle at τ − δt, so a fix at t is predicted as the INS's antenna at t plus its
@@ -110,13 +110,14 @@ inline constexpr int kGyroScaleZ = 22;       ///< δk_z: the z gyro's scale-fact
 inline constexpr int kGyroCouplingX = 23;    ///< δm_xz: the x gyro's coupling to the z rate (rad)
 inline constexpr int kGyroCouplingY = 24;    ///< δm_yz: the y gyro's coupling to the z rate (rad)
 inline constexpr int kImuTimeResidual = 25;  ///< δt: the IMU tags' residual lag (s)
-inline constexpr int kAccelScaleY = 26;      ///< δk_ay: the y accelerometer's scale error (fraction)
+inline constexpr int kAccelScaleY = 26;  ///< δk_ay: the y accelerometer's scale error (fraction)
 inline constexpr int kAccelCouplingXY = 27;  ///< δm_xy: the x accelerometer's coupling to f_y (rad)
+inline constexpr int kAccelCouplingZY = 28;  ///< δm_zy: the z accelerometer's coupling to f_y (rad)
 /// the states in use (the last index + 1), and the size of the filter's vectors and matrices: that
 /// count made even (an unused last row and column, zero), so that Eigen's SSE packets of two
 /// doubles tile every column (23 states left the covariance propagation unvectorised: +57 %
 /// instructions over the 20 states before them; callgrind, ekf_benchmark seed004)
-inline constexpr int kNumUsedStates = 28;
+inline constexpr int kNumUsedStates = 29;
 inline constexpr int kNumStates = kNumUsedStates + kNumUsedStates % 2;
 }  // namespace ekf_index
 
@@ -201,15 +202,19 @@ struct EkfParams {
   /// gyro_scale_std, which only widens the attitude's σ by the angle turned, this state learns
   /// the scale and corrects the turns with it.
   double gyro_scale_z_std = 0.005;
-  /// Prior σ of the x and y gyros' coupling to the z rate, m_xz and m_yz, estimated as two
-  /// random-constant states (rad; `[filter] gyro_z_coupling_std_deg`; 0: not estimated, the
-  /// triad taken as orthogonal). Off by default: an IMU tag lag a few milliseconds off looks like
-  /// an x coupling in every turn (0.12° per ms on field_realism/imu_time_tag_lag), and the states
-  /// learned that instead and made the car worse (estimator.md, "The x and y gyros' coupling to
-  /// the z rate"). For a consumer MEMS on time, 0.3°: the consumer-MEMS misalignment of
-  /// vectors/mcu/imu_error_model.md, 0.3° 1σ per off-diagonal coupling, the population's σ, which
-  /// a random constant's prior should be (an industrial triad's 0.05° is well inside it).
-  double gyro_z_coupling_std_rad = 0.0;
+  /// Prior σ of the x and y gyros' coupling to the z rate, m_xz and m_yz, each estimated as a
+  /// random-constant state (rad; `[filter] gyro_z_coupling_x_std_deg`, `gyro_z_coupling_y_std_deg`,
+  /// `gyro_z_coupling_std_deg` for both; 0: not estimated, that gyro taken as orthogonal to z).
+  /// 0.3° for the y gyro: the consumer-MEMS misalignment of vectors/mcu/imu_error_model.md, 0.3°
+  /// 1σ per off-diagonal coupling, the population's σ, which a random constant's prior should be
+  /// (an industrial triad's 0.05° is well inside it); its pitch in the turns is well observed
+  /// (the forward accelerometer sees g·θ), given the accelerometer's lateral-force states
+  /// (accel_y_force_std; estimator.md, "The accelerometer in the turns"). The x gyro's is off by
+  /// default: an IMU tag lag a few milliseconds off looks like an x coupling in every turn (0.12°
+  /// per ms on field_realism/imu_time_tag_lag), and the state learned that instead and made the
+  /// car worse (estimator.md, "The x and y gyros' coupling to the z rate").
+  double gyro_z_coupling_x_std_rad = 0.0;
+  double gyro_z_coupling_y_std_rad = 0.3 * 0.017453292519943295;
   /// Prior σ of the IMU tags' residual lag behind the fixes, estimated as a random-constant state
   /// (s; `[filter] imu_time_residual_std_s`; 0: not estimated). 0.01 s (our choice: the lag
   /// ImuTimeOffset reports has σ below its max_std_s, 10 ms, and wanders within ±5 ms of the
@@ -370,7 +375,7 @@ class ErrorStateEkf {
   const Eigen::Vector2d& gyro_z_coupling_rad() const { return gyro_z_coupling_rad_; }
   /// The y accelerometer's estimated scale error and the x accelerometer's coupling to the y
   /// specific force (k̂_ay fraction, m̂_xy rad; 0 when not estimated).
-  const Eigen::Vector2d& accel_y_force_error() const { return accel_y_force_; }
+  const Eigen::Vector3d& accel_y_force_error() const { return accel_y_force_; }
   bool accel_y_force_estimated() const { return AccelForceStatesOn(); }
   /// The INS's acceleration low-passed over kAccelSmoothing_s (N, m/s²).
   const Eigen::Vector3d& smoothed_acceleration_N() const { return accel_lp_N_mps2_; }
@@ -390,8 +395,7 @@ class ErrorStateEkf {
   Eigen::Vector3d CompensatedAngle(const Eigen::Vector3d& delta_angle_B_rad, double dt) const;
   /// The velocity increment the filter integrates for a raw accelerometer increment over dt: the
   /// bias, the y accelerometer's scale and the x accelerometer's coupling to f_y removed (B, m/s).
-  Eigen::Vector3d CompensatedVelocity(const Eigen::Vector3d& delta_velocity_B_mps,
-                                      double dt) const;
+  Eigen::Vector3d CompensatedVelocity(const Eigen::Vector3d& delta_velocity_B_mps, double dt) const;
   bool mount_angles_estimated() const { return MountStatesOn(); }
   /// C_VB, the rotation from the IMU frame into the vehicle frame (identity when off).
   const Eigen::Matrix3d& vehicle_from_imu() const { return C_VB_; }
@@ -436,7 +440,9 @@ class ErrorStateEkf {
   /// The z gyro's scale factor is estimated.
   bool GyroScaleStateOn() const { return params_.gyro_scale_z_std > 0; }
   /// The x and y gyros' coupling to the z rate is estimated.
-  bool GyroCouplingStatesOn() const { return params_.gyro_z_coupling_std_rad > 0; }
+  bool GyroCouplingStatesOn() const {
+    return params_.gyro_z_coupling_x_std_rad > 0 || params_.gyro_z_coupling_y_std_rad > 0;
+  }
   /// The mounting pitch and yaw are estimated (they need the NHC to be observable).
   bool MountStatesOn() const {
     return params_.estimate_mount_angles && params_.nhc_std_mps > 0 &&
@@ -469,7 +475,7 @@ class ErrorStateEkf {
   double gyro_scale_z_ = 0.0;                            // k̂_z: the z gyro's scale error
   Eigen::Vector2d gyro_z_coupling_rad_ = Eigen::Vector2d::Zero();  // m̂_xz, m̂_yz
   double time_residual_s_ = 0.0;  // δ̂t: the IMU tags' residual lag behind the fixes
-  Eigen::Vector2d accel_y_force_ = Eigen::Vector2d::Zero();  // k̂_ay, m̂_xy
+  Eigen::Vector3d accel_y_force_ = Eigen::Vector3d::Zero();  // k̂_ay, m̂_xy, m̂_zy
   // the acceleration's low-pass time constant: a 10 Hz fix interval, over which an engine's
   // orders (tens of Hz) average out (chosen here)
   static constexpr double kAccelSmoothing_s = 0.1;

@@ -260,8 +260,8 @@ struct NavigatorStats {
   /// the y accelerometer's scale error and the x accelerometer's coupling to the y specific force
   /// (ErrorStateEkf, kAccelScaleY, kAccelCouplingXY: fraction, rad) and their σ, while estimated
   bool accel_y_force_estimated = false;
-  Eigen::Vector2d accel_y_force = Eigen::Vector2d::Zero();
-  Eigen::Vector2d accel_y_force_std = Eigen::Vector2d::Zero();
+  Eigen::Vector3d accel_y_force = Eigen::Vector3d::Zero();  ///< k_ay, m_xy, m_zy
+  Eigen::Vector3d accel_y_force_std = Eigen::Vector3d::Zero();
 };
 
 /// The solution at one time of validity.
