@@ -30,7 +30,7 @@ void ErrorStateEkf::Initialize(const NavState& s) {
   gyro_z_coupling_rad_.setZero();
   time_residual_s_ = 0.0;
   accel_y_force_.setZero();
-  f_y_B_mps2_ = 0.0;
+  f_y_lp_B_mps2_.setZero();
   accel_lp_N_mps2_.setZero();
   gm_tau_s_ = params_.gnss_error_tau_s;
   gm_std_m_ = params_.gnss_error_std_m;
@@ -128,7 +128,11 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& delta_angle_B_rad,
                                   : CompensatedAngle(delta_angle_B_rad, dt);
   const Eigen::Vector3d dv = CompensatedVelocity(delta_velocity_B_mps, dt);
   w_B_ = dth / dt;
-  f_y_B_mps2_ = dv.y() / dt;
+  // the lateral force the accelerometer's lateral-force states see: low-passed (two stages), so
+  // that the ride's vibration, which the NHC sees as velocity ripple, does not teach them
+  const double w_f = std::min(1.0, dt / kLateralForceSmoothing_s);
+  f_y_lp_B_mps2_.x() += w_f * (dv.y() / dt - f_y_lp_B_mps2_.x());
+  f_y_lp_B_mps2_.y() += w_f * (f_y_lp_B_mps2_.x() - f_y_lp_B_mps2_.y());
   f_N_ = C * dv / dt;
   // the acceleration over about a fix interval, for the residual tag lag's velocity term
   const double w_lp = std::min(1.0, dt / kAccelSmoothing_s);
@@ -236,7 +240,7 @@ void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, d
   // and the z accelerometer's (δm_zy): δv̇ = −Ĉ (ŷ δk_ay + x̂ δm_xy + ẑ δm_zy) f_y
   Eigen::Matrix3d Ga;
   Ga << C.col(1), C.col(0), C.col(2);
-  Ga *= -f_y_B_mps2_ * dt;
+  Ga *= -f_y_lp_B_mps2_.y() * dt;
   if constexpr (N == kNumStates) Mv += P.template middleCols<3>(kAccelScaleY) * Ga.transpose();
   // Φ's diagonal on the tail: P_tail ← Φ_tail P_tail Φ_tailᵀ. Its only entries other than 1 are
   // the decays of e and δd, so only their rows and columns of the tail block are scaled.

@@ -473,7 +473,8 @@ TEST(ErrorStateEkfGnssModelTest, SwitchIsIgnoredWithoutCorrelatedStates) {
 // With `gyro_scale_z_std` > 0 the z gyro's scale state, the x and y gyros' couplings to the z rate,
 // the residual tag lag and the accelerometer's lateral-force states are on (the full path): Φ
 // gains their columns in the attitude rows, −Ĉ[ẑ x̂ ŷ]·ω_z·dt, and in the velocity rows,
-// −Ĉ[ŷ x̂ ẑ]·f_y·dt (the residual lag has none: a random constant seen only by the fixes).
+// −Ĉ[ŷ x̂ ẑ]·f̄_y·dt, f̄_y the lateral force low-passed (the residual lag has none: a random
+// constant seen only by the fixes).
 void CheckPropagationAgainstTheDenseProduct(double gyro_scale_z_std) {
   EkfParams p;
   p.lever_arm_B_m = Eigen::Vector3d(0.3, 0.1, 0.9);
@@ -524,9 +525,12 @@ void CheckPropagationAgainstTheDenseProduct(double gyro_scale_z_std) {
   Phi.block<3, 1>(kAtt, kGyroScaleZ) = -C.col(2) * dth_used.z();
   Phi.block<3, 1>(kAtt, kGyroCouplingX) = -C.col(0) * dth_used.z();
   Phi.block<3, 1>(kAtt, kGyroCouplingY) = -C.col(1) * dth_used.z();
-  Phi.block<3, 1>(kVel, kAccelScaleY) = -C.col(1) * dv_used.y();
-  Phi.block<3, 1>(kVel, kAccelCouplingXY) = -C.col(0) * dv_used.y();
-  Phi.block<3, 1>(kVel, kAccelCouplingZY) = -C.col(2) * dv_used.y();
+  // the lateral force low-passed (kLateralForceSmoothing_s) as the prediction took it
+  const double f_y_lp = ekf.lateral_force_lp_B_mps2();
+  EXPECT_GT(f_y_lp, 0.5 * dv_used.y() / dt);  // the low-pass has risen towards the 1 m/s² given
+  Phi.block<3, 1>(kVel, kAccelScaleY) = -C.col(1) * f_y_lp * dt;
+  Phi.block<3, 1>(kVel, kAccelCouplingXY) = -C.col(0) * f_y_lp * dt;
+  Phi.block<3, 1>(kVel, kAccelCouplingZY) = -C.col(2) * f_y_lp * dt;
   EkfMatrix Q = EkfMatrix::Zero();
   for (int i = 0; i < 3; ++i) {
     Q(kVel + i, kVel + i) = p.accel_noise_mps2_rthz * p.accel_noise_mps2_rthz * dt;

@@ -42,15 +42,17 @@
 /// not states.
 ///
 /// The accelerometer's errors in the lateral specific force: the y accelerometer reads
-/// f̃_y = (1 + k_ay)·f_y + b_y and the x accelerometer f̃_x = f_x + m_xy·f_y + b_x, the filter
-/// compensates f_y = (f̃_y − b̂_y)/(1 + k̂_ay) and f_x = f̃_x − b̂_x − m̂_xy·f_y, so δv̇ gains
-/// −Ĉ·(ŷ·δk_ay + x̂·δm_xy)·f_y. A ground vehicle's turns make them observable (the centripetal
-/// f_y, 3 m/s² on a car at 6 m/s in a 12 m turn, left and right in turn; zero on the rows), and
-/// they must be states where the gyro's couplings to the z rate are: a turn's forward and lateral
-/// acceleration error otherwise reads as a turn's pitch and roll, i.e. as m_yz and m_xz
-/// (field_realism/imu_time_tag_lag: m̂_yz 0.28° off with the accelerometer's 0.3° misalignment).
-/// Their other errors multiply f_x (small on a vehicle at constant speed) or gravity (a constant
-/// a bias takes).
+/// f̃_y = (1 + k_ay)·f_y + b_y, the x and z accelerometers f̃_x = f_x + m_xy·f_y + b_x and
+/// f̃_z = f_z + m_zy·f_y + b_z; the filter compensates f_y = (f̃_y − b̂_y)/(1 + k̂_ay),
+/// f_x = f̃_x − b̂_x − m̂_xy·f_y, f_z likewise, so δv̇ gains −Ĉ·(ŷ·δk_ay + x̂·δm_xy + ẑ·δm_zy)·f̄_y,
+/// f̄_y the lateral force low-passed (two stages of 0.25 s: the ride's vibration, whose velocity
+/// ripple the NHC sees, must not teach them). A ground vehicle's turns make them observable (the
+/// centripetal f_y, 3 m/s² on a car at 6 m/s in a 12 m turn, left and right in turn; zero on the
+/// rows), and they must be states where the y gyro's coupling to the z rate is: a turn's forward
+/// and vertical force error otherwise reads as a pitch in the turn, i.e. as m_yz
+/// (field_realism/imu_time_tag_lag seed 41: m̂_yz −0.50° against the emulated −0.22°, −0.28° with
+/// them). Their other errors multiply f_x (small on a vehicle at constant speed) or gravity (a
+/// constant the biases take).
 ///
 /// The speed state is the vehicle model of a ground vehicle that holds its speed (cruise control,
 /// constant throttle): the forward body velocity stays within `speed_dev_std_mps` of a set speed
@@ -377,6 +379,9 @@ class ErrorStateEkf {
   /// specific force (k̂_ay fraction, m̂_xy rad; 0 when not estimated).
   const Eigen::Vector3d& accel_y_force_error() const { return accel_y_force_; }
   bool accel_y_force_estimated() const { return AccelForceStatesOn(); }
+  /// The low-passed lateral specific force the last prediction gave Φ's columns of those states
+  /// (B, m/s²; kLateralForceSmoothing_s).
+  double lateral_force_lp_B_mps2() const { return f_y_lp_B_mps2_.y(); }
   /// The INS's acceleration low-passed over kAccelSmoothing_s (N, m/s²).
   const Eigen::Vector3d& smoothed_acceleration_N() const { return accel_lp_N_mps2_; }
   /// The IMU tags' estimated residual lag behind the fixes (s; 0 when not estimated).
@@ -485,7 +490,16 @@ class ErrorStateEkf {
   Eigen::Vector3d accel_lp_N_mps2_ = Eigen::Vector3d::Zero();  // ā_N (kAccelSmoothing_s)
   Eigen::Vector3d w_B_ = Eigen::Vector3d::Zero();              // last compensated angular rate
   Eigen::Vector3d f_N_ = Eigen::Vector3d::Zero();              // last specific force in N
-  double f_y_B_mps2_ = 0.0;  // last compensated specific force along the body's y axis
+  // the compensated specific force along the body's y axis through two first-order low-passes of
+  // kLateralForceSmoothing_s each (the first stage, the second: what Φ's columns of the
+  // accelerometer's lateral-force states take)
+  Eigen::Vector2d f_y_lp_B_mps2_ = Eigen::Vector2d::Zero();
+  // 0.25 s (chosen here): a ride at 1.5 Hz passes at 0.15 (the tractor's 1.2-2.5 Hz roll mode, the
+  // car's ride from 0.8 Hz), a turn's centripetal force (seconds) with about 0.5 s of delay. With
+  // the instantaneous force the states took the ride's velocity ripple, which the NHC sees, for a
+  // scale error: k̂_ay walked to its 10 % clamp on field_realism/tractor_engine_vibration (outage
+  // max 0.106 → 0.127 m on seed 5); 0.1 s left seed 5 at 0.112 m, 0.25 and 0.5 s at 0.105 m.
+  static constexpr double kLateralForceSmoothing_s = 0.25;
   EkfMatrix P_ = EkfMatrix::Identity();
   std::uint32_t repairs_ = 0;
   double q_scale_ = 1.0;                  // process-noise scale (SetProcessNoiseScale)
