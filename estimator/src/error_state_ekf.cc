@@ -31,6 +31,7 @@ void ErrorStateEkf::Initialize(const NavState& s) {
   time_residual_s_ = 0.0;
   accel_y_force_.setZero();
   f_y_lp_B_mps2_.setZero();
+  since_position_fix_s_ = kNoFix_s;
   accel_lp_N_mps2_.setZero();
   gm_tau_s_ = params_.gnss_error_tau_s;
   gm_std_m_ = params_.gnss_error_std_m;
@@ -60,6 +61,11 @@ void ErrorStateEkf::Initialize(const NavState& s) {
     P_(kMountYaw, kMountYaw) = p.mount_yaw_std_rad * p.mount_yaw_std_rad;
   }
   SetTimeBasePriors();
+}
+
+bool ErrorStateEkf::TurnStatesLearnable() const {
+  return state_.v_N_mps.head<2>().norm() >= kTurnStatesMinSpeed_mps &&
+         since_position_fix_s_ <= kTurnStatesMaxFixAge_s;
 }
 
 bool ErrorStateEkf::TimeResidualLearnable() const {
@@ -128,6 +134,7 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& delta_angle_B_rad,
                                   : CompensatedAngle(delta_angle_B_rad, dt);
   const Eigen::Vector3d dv = CompensatedVelocity(delta_velocity_B_mps, dt);
   w_B_ = dth / dt;
+  since_position_fix_s_ = std::min(since_position_fix_s_ + dt, kNoFix_s);
   // the lateral force the accelerometer's lateral-force states see: low-passed (two stages), so
   // that the ride's vibration, which the NHC sees as velocity ripple, does not teach them
   const double w_f = std::min(1.0, dt / kLateralForceSmoothing_s);
@@ -234,13 +241,17 @@ void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, d
   Eigen::Matrix3d Gk = Eigen::Matrix3d::Zero();
   if (!attitude_hold_) Gk << C.col(2), C.col(0), C.col(1);
   Gk *= -w_B_.z() * dt;
+  // the couplings and the accelerometer's lateral-force states learn in a vehicle's turns at
+  // speed only (TurnStatesLearnable)
+  const bool turn_states = TurnStatesLearnable();
+  if (!turn_states) Gk.rightCols<2>().setZero();
   Cols3 Ma = P.template middleCols<3>(kAtt) * Dt + P.template middleCols<3>(kGyroBias) * Ggt;
   if constexpr (N == kNumStates) Ma += P.template middleCols<3>(kGyroScaleZ) * Gk.transpose();
   // the y accelerometer's scale error and the x accelerometer's coupling to f_y (δk_ay, δm_xy):
   // and the z accelerometer's (δm_zy): δv̇ = −Ĉ (ŷ δk_ay + x̂ δm_xy + ẑ δm_zy) f_y
   Eigen::Matrix3d Ga;
   Ga << C.col(1), C.col(0), C.col(2);
-  Ga *= -f_y_lp_B_mps2_.y() * dt;
+  Ga *= turn_states ? -f_y_lp_B_mps2_.y() * dt : 0.0;
   if constexpr (N == kNumStates) Mv += P.template middleCols<3>(kAccelScaleY) * Ga.transpose();
   // Φ's diagonal on the tail: P_tail ← Φ_tail P_tail Φ_tailᵀ. Its only entries other than 1 are
   // the decays of e and δd, so only their rows and columns of the tail block are scaled.
@@ -306,7 +317,7 @@ Eigen::Matrix<double, 3, kNumStates> ErrorStateEkf::VelocityJacobian() const {
   // the scale error turns ω_z as a z-bias of ω_z·δk_z does, the couplings as x and y biases of
   // ω_z·δm_xz and ω_z·δm_yz
   if (GyroScaleStateOn()) H.col(kGyroScaleZ) = H.block<3, 3>(0, kGyroBias).col(2) * w_B_.z();
-  if (GyroCouplingStatesOn()) {
+  if (GyroCouplingStatesOn() && TurnStatesLearnable()) {
     H.col(kGyroCouplingX) = H.block<3, 3>(0, kGyroBias).col(0) * w_B_.z();
     H.col(kGyroCouplingY) = H.block<3, 3>(0, kGyroBias).col(1) * w_B_.z();
   }
@@ -347,7 +358,9 @@ UpdateResult ErrorStateEkf::UpdatePosition(const Eigen::Vector3d& p_antenna_N_m,
   Eigen::Matrix3d R = Eigen::Matrix3d::Zero();
   for (int i = 0; i < 3; ++i)
     R(i, i) = std::pow(std::max(std_m[i], params_.gnss_pos_std_floor_m), 2);
-  return Update<3>(p_antenna_N_m - pred, PositionJacobian(), R);
+  const UpdateResult r = Update<3>(p_antenna_N_m - pred, PositionJacobian(), R);
+  if (r.accepted) since_position_fix_s_ = 0.0;
+  return r;
 }
 
 UpdateResult ErrorStateEkf::UpdateVelocity(const Eigen::Vector3d& v_antenna_N_mps,
