@@ -11,6 +11,30 @@ using namespace ekf_index;
 namespace {
 bool AllFinite(const Eigen::Vector3d& v) { return v.allFinite(); }
 bool SpeedDevState(const EkfParams& p) { return p.speed_rw_mps_rthz > 0 && p.speed_dev_tau_s > 0; }
+
+// Φ's columns of the gyro-triad states in the attitude rows (Gk: δk_z, δm_xz, δm_yz) and of the
+// accelerometer's lateral-force states in the velocity rows (Ga: δk_ay, δm_xy, δm_zy) for one
+// interval:
+//   φ̇ = −Ĉ (ẑ δk_z + x̂ δm_xz + ŷ δm_yz) ω_z (none while the attitude is held),
+//   δv̇ = −Ĉ (ŷ δk_ay + x̂ δm_xy + ẑ δm_zy) f̄_y (f̄_y the low-passed lateral force);
+// the couplings' and the lateral-force columns only while the turns teach them
+// (ErrorStateEkf::TurnStatesLearnable).
+struct TurnColumns {
+  Eigen::Matrix3d Gk = Eigen::Matrix3d::Zero(), Ga = Eigen::Matrix3d::Zero();
+};
+TurnColumns TurnStateColumns(const Eigen::Matrix3d& C, double w_z_radps, double f_y_mps2,
+                             bool attitude_hold, bool learnable, double dt) {
+  TurnColumns t;
+  if (!attitude_hold) t.Gk << C.col(2), C.col(0), C.col(1);
+  t.Gk *= -w_z_radps * dt;
+  if (!learnable) {
+    t.Gk.rightCols<2>().setZero();
+    return t;
+  }
+  t.Ga << C.col(1), C.col(0), C.col(2);
+  t.Ga *= -f_y_mps2 * dt;
+  return t;
+}
 }  // namespace
 
 void ErrorStateEkf::Initialize(const NavState& s) {
@@ -31,7 +55,7 @@ void ErrorStateEkf::Initialize(const NavState& s) {
   time_residual_s_ = 0.0;
   accel_y_force_.setZero();
   f_y_lp_B_mps2_.setZero();
-  since_position_fix_s_ = kNoFix_s;
+  speed_at_fix_mps_ = 0.0;
   accel_lp_N_mps2_.setZero();
   gm_tau_s_ = params_.gnss_error_tau_s;
   gm_std_m_ = params_.gnss_error_std_m;
@@ -64,8 +88,7 @@ void ErrorStateEkf::Initialize(const NavState& s) {
 }
 
 bool ErrorStateEkf::TurnStatesLearnable() const {
-  return state_.v_N_mps.head<2>().norm() >= kTurnStatesMinSpeed_mps &&
-         since_position_fix_s_ <= kTurnStatesMaxFixAge_s;
+  return std::min(state_.v_N_mps.head<2>().norm(), speed_at_fix_mps_) >= kTurnStatesMinSpeed_mps;
 }
 
 bool ErrorStateEkf::TimeResidualLearnable() const {
@@ -134,7 +157,6 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& delta_angle_B_rad,
                                   : CompensatedAngle(delta_angle_B_rad, dt);
   const Eigen::Vector3d dv = CompensatedVelocity(delta_velocity_B_mps, dt);
   w_B_ = dth / dt;
-  since_position_fix_s_ = std::min(since_position_fix_s_ + dt, kNoFix_s);
   // the lateral force the accelerometer's lateral-force states see: low-passed (two stages), so
   // that the ride's vibration, which the NHC sees as velocity ripple, does not teach them
   const double w_f = std::min(1.0, dt / kLateralForceSmoothing_s);
@@ -236,23 +258,15 @@ void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, d
   const Cols3 Mp = P.template middleCols<3>(kPos) + dt * P.template middleCols<3>(kVel);
   Cols3 Mv = P.template middleCols<3>(kVel) * At + P.template middleCols<3>(kAtt) * Bt +
              P.template middleCols<3>(kAccelBias) * Gt;
-  // the z gyro's scale error and the x and y gyros' coupling to the z rate (δk_z, δm_xz, δm_yz):
-  // φ̇ = −Ĉ (ẑ δk_z + x̂ δm_xz + ŷ δm_yz) ω_z (none while the attitude is held)
-  Eigen::Matrix3d Gk = Eigen::Matrix3d::Zero();
-  if (!attitude_hold_) Gk << C.col(2), C.col(0), C.col(1);
-  Gk *= -w_B_.z() * dt;
-  // the couplings and the accelerometer's lateral-force states learn in a vehicle's turns at
-  // speed only (TurnStatesLearnable)
-  const bool turn_states = TurnStatesLearnable();
-  if (!turn_states) Gk.rightCols<2>().setZero();
+  const TurnColumns turn =
+      TurnStateColumns(C, w_B_.z(), f_y_lp_B_mps2_.y(), attitude_hold_, TurnStatesLearnable(), dt);
+  const Eigen::Matrix3d& Gk = turn.Gk;
+  const Eigen::Matrix3d& Ga = turn.Ga;
   Cols3 Ma = P.template middleCols<3>(kAtt) * Dt + P.template middleCols<3>(kGyroBias) * Ggt;
-  if constexpr (N == kNumStates) Ma += P.template middleCols<3>(kGyroScaleZ) * Gk.transpose();
-  // the y accelerometer's scale error and the x accelerometer's coupling to f_y (δk_ay, δm_xy):
-  // and the z accelerometer's (δm_zy): δv̇ = −Ĉ (ŷ δk_ay + x̂ δm_xy + ẑ δm_zy) f_y
-  Eigen::Matrix3d Ga;
-  Ga << C.col(1), C.col(0), C.col(2);
-  Ga *= turn_states ? -f_y_lp_B_mps2_.y() * dt : 0.0;
-  if constexpr (N == kNumStates) Mv += P.template middleCols<3>(kAccelScaleY) * Ga.transpose();
+  if constexpr (N == kNumStates) {
+    Ma += P.template middleCols<3>(kGyroScaleZ) * Gk.transpose();
+    Mv += P.template middleCols<3>(kAccelScaleY) * Ga.transpose();
+  }
   // Φ's diagonal on the tail: P_tail ← Φ_tail P_tail Φ_tailᵀ. Its only entries other than 1 are
   // the decays of e and δd, so only their rows and columns of the tail block are scaled.
   Eigen::Matrix<double, kTail, 1> tail = Eigen::Matrix<double, kTail, 1>::Ones();
@@ -359,7 +373,7 @@ UpdateResult ErrorStateEkf::UpdatePosition(const Eigen::Vector3d& p_antenna_N_m,
   for (int i = 0; i < 3; ++i)
     R(i, i) = std::pow(std::max(std_m[i], params_.gnss_pos_std_floor_m), 2);
   const UpdateResult r = Update<3>(p_antenna_N_m - pred, PositionJacobian(), R);
-  if (r.accepted) since_position_fix_s_ = 0.0;
+  if (r.accepted) speed_at_fix_mps_ = state_.v_N_mps.head<2>().norm();
   return r;
 }
 

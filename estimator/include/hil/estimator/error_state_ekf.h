@@ -443,9 +443,9 @@ class ErrorStateEkf {
   /// tractor drove off; learning in turns only left the car at fused/raw 1.54).
   bool TimeResidualLearnable() const;
   /// The turns teach the x and y gyros' couplings to the z rate and the accelerometer's
-  /// lateral-force states now: at speed (kTurnStatesMinSpeed_mps) with position fixes
-  /// (kTurnStatesMaxFixAge_s). Otherwise Φ and H leave their columns out: the states keep what
-  /// they learned and compensate with it.
+  /// lateral-force states now: at speed (kTurnStatesMinSpeed_mps), now and at the last accepted
+  /// position fix. Otherwise Φ and H leave their columns out: the states keep what they learned
+  /// and compensate with it.
   bool TurnStatesLearnable() const;
   /// The z gyro's scale factor is estimated.
   bool GyroScaleStateOn() const { return params_.gyro_scale_z_std > 0; }
@@ -498,12 +498,10 @@ class ErrorStateEkf {
   // instead: ci/real_walk_0827's navd + NHC, RTK present, 0.101 → 0.209 m with them learned at
   // any speed
   static constexpr double kTurnStatesMinSpeed_mps = 2.0;
-  // 1.5 s (chosen here: a 1 Hz receiver's fix interval and a half): in an outage the INS's own
-  // speed error put a walker above 2 m/s, and the free INS taught the states (real_walk_0827's
-  // navd + NHC, 30 s outages: worst 33.8 → 54.0 m)
-  static constexpr double kTurnStatesMaxFixAge_s = 1.5;
-  static constexpr double kNoFix_s = 1e6;
-  double since_position_fix_s_ = kNoFix_s;  // IMU time since the last accepted position fix
+  // the speed at the last accepted position fix too: in an outage the INS's own speed error put a
+  // walker above 2 m/s, and the free INS taught the states (real_walk_0827's navd + NHC, 30 s
+  // outages: worst window 33.8 → 54.0 m)
+  double speed_at_fix_mps_ = 0.0;  // horizontal speed after the last accepted position fix
   Eigen::Vector3d accel_lp_N_mps2_ = Eigen::Vector3d::Zero();  // ā_N (kAccelSmoothing_s)
   Eigen::Vector3d w_B_ = Eigen::Vector3d::Zero();              // last compensated angular rate
   Eigen::Vector3d f_N_ = Eigen::Vector3d::Zero();              // last specific force in N
