@@ -493,10 +493,9 @@ class ErrorStateEkf {
   // below an RTK fix's noise (5 mm at 1 m/s and 5 ms)
   static constexpr double kResidualMinSpeed_mps = 2.0;
   // 2 m/s (chosen here): a car's turns at speed; below it the motion's own lateral force and yaw
-  // swing (a walker's gait: ±2 m/s² and tens of °/s at 1 Hz; a tractor's ride, 0.6 m/s², against
-  // its 0.3 m/s² of centripetal force at 1 m/s) taught the couplings and the lateral-force states
-  // instead: ci/real_walk_0827's navd + NHC, RTK present, 0.101 → 0.209 m with them learned at
-  // any speed
+  // swing (a walker's gait; a tractor's ride, 0.6 m/s² lateral, against its 0.3 m/s² of
+  // centripetal force at 1 m/s) taught the couplings and the lateral-force states instead:
+  // ci/real_walk_0827's navd + NHC, RTK present, 0.101 → 0.209 m with them learned at any speed
   static constexpr double kTurnStatesMinSpeed_mps = 2.0;
   // the speed at the last accepted position fix too: in an outage the INS's own speed error put a
   // walker above 2 m/s, and the free INS taught the states (real_walk_0827's navd + NHC, 30 s
