@@ -331,7 +331,7 @@ Eigen::Matrix<double, 3, kNumStates> ErrorStateEkf::VelocityJacobian() const {
   // the scale error turns ω_z as a z-bias of ω_z·δk_z does, the couplings as x and y biases of
   // ω_z·δm_xz and ω_z·δm_yz
   if (GyroScaleStateOn()) H.col(kGyroScaleZ) = H.block<3, 3>(0, kGyroBias).col(2) * w_B_.z();
-  if (GyroCouplingStatesOn()) {
+  if (GyroCouplingStatesOn() && TurnStatesLearnable()) {
     H.col(kGyroCouplingX) = H.block<3, 3>(0, kGyroBias).col(0) * w_B_.z();
     H.col(kGyroCouplingY) = H.block<3, 3>(0, kGyroBias).col(1) * w_B_.z();
   }

@@ -444,8 +444,8 @@ class ErrorStateEkf {
   bool TimeResidualLearnable() const;
   /// The turns teach the x and y gyros' couplings to the z rate and the accelerometer's
   /// lateral-force states now: at speed (kTurnStatesMinSpeed_mps), now and at the last accepted
-  /// position fix. Otherwise Φ leaves their columns out (H keeps the lever arm's exact terms): the
-  /// states keep what they learned and compensate with it.
+  /// position fix. Otherwise Φ and H leave their columns out: the states keep what they learned
+  /// and compensate with it.
   bool TurnStatesLearnable() const;
   /// The z gyro's scale factor is estimated.
   bool GyroScaleStateOn() const { return params_.gyro_scale_z_std > 0; }
