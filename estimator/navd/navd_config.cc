@@ -134,8 +134,15 @@ bool ReadEkfKey(const ConfigFile& f, const ConfigEntry& e, EkfParams& ekf) {
     ekf.gyro_scale_z_std = ToDouble(f, e, 0.0, 0.1);
   else if (k == "imu_time_residual_std_s")
     ekf.imu_time_residual_std_s = ToDouble(f, e, 0.0, 0.1);
+  else if (k == "accel_y_force_std")
+    ekf.accel_y_force_std = ToDouble(f, e, 0.0, 0.1);
   else if (k == "gyro_z_coupling_std_deg")
-    ekf.gyro_z_coupling_std_rad = ToDouble(f, e, 0.0, 5.0) * std::numbers::pi / 180.0;
+    ekf.gyro_z_coupling_x_std_rad = ekf.gyro_z_coupling_y_std_rad =
+        ToDouble(f, e, 0.0, 5.0) * std::numbers::pi / 180.0;
+  else if (k == "gyro_z_coupling_x_std_deg")
+    ekf.gyro_z_coupling_x_std_rad = ToDouble(f, e, 0.0, 5.0) * std::numbers::pi / 180.0;
+  else if (k == "gyro_z_coupling_y_std_deg")
+    ekf.gyro_z_coupling_y_std_rad = ToDouble(f, e, 0.0, 5.0) * std::numbers::pi / 180.0;
   else if (k == "accel_bias_rw")
     ekf.accel_bias_rw_mps3_rthz = ToDouble(f, e, 0.0, 1.0);
   else if (k == "gyro_bias_rw")

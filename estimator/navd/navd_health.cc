@@ -51,6 +51,19 @@ void AppendSensorStates(std::string& s, const NavigatorStats& n) {
                   n.gyro_z_coupling_std_rad.x() * kDeg, n.gyro_z_coupling_std_rad.y() * kDeg);
     s += b;
   }
+  // present while the accelerometer's lateral-force errors are estimated (ErrorStateEkf): the y
+  // scale in ppm, the x accelerometer's coupling to f_y in degrees, and their σ
+  if (n.accel_y_force_estimated) {
+    constexpr double kDeg = 180.0 / 3.14159265358979323846;
+    std::snprintf(b, sizeof b,
+                  ",\"accel_y_force\":{\"scale_y_ppm\":%.0f,\"coupling_x_deg\":%.3f,"
+                  "\"coupling_z_deg\":%.3f,\"scale_y_std_ppm\":%.0f,\"coupling_x_std_deg\":%.3f,"
+                  "\"coupling_z_std_deg\":%.3f}",
+                  n.accel_y_force.x() * 1e6, n.accel_y_force.y() * kDeg, n.accel_y_force.z() * kDeg,
+                  n.accel_y_force_std.x() * 1e6, n.accel_y_force_std.y() * kDeg,
+                  n.accel_y_force_std.z() * kDeg);
+    s += b;
+  }
   // present while the IMU tags' residual lag is estimated (ErrorStateEkf), once it is off zero
   if (n.imu_time_residual_s != 0) {
     std::snprintf(b, sizeof b, ",\"imu_tag_lag_residual_s\":%.4f", n.imu_time_residual_s);
@@ -58,7 +71,11 @@ void AppendSensorStates(std::string& s, const NavigatorStats& n) {
   }
   // present once a lag was found and taken off the IMU tags (the line stays short otherwise)
   if (n.imu_tag_lag_s == 0) return;
-  std::snprintf(b, sizeof b, ",\"imu_tag_lag_s\":%.4f", n.imu_tag_lag_s);
+  // with the estimate on the evidence so far and its σ (ImuTimeOffset), which the lag follows
+  std::snprintf(
+      b, sizeof b,
+      ",\"imu_tag_lag_s\":%.4f,\"imu_tag_lag_estimate_s\":%.4f,\"imu_tag_lag_std_s\":%.4f",
+      n.imu_tag_lag_s, n.imu_tag_lag_estimate_s, n.imu_tag_lag_std_s);
   s += b;
 }
 

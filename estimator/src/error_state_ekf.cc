@@ -11,6 +11,30 @@ using namespace ekf_index;
 namespace {
 bool AllFinite(const Eigen::Vector3d& v) { return v.allFinite(); }
 bool SpeedDevState(const EkfParams& p) { return p.speed_rw_mps_rthz > 0 && p.speed_dev_tau_s > 0; }
+
+// Φ's columns of the gyro-triad states in the attitude rows (Gk: δk_z, δm_xz, δm_yz) and of the
+// accelerometer's lateral-force states in the velocity rows (Ga: δk_ay, δm_xy, δm_zy) for one
+// interval:
+//   φ̇ = −Ĉ (ẑ δk_z + x̂ δm_xz + ŷ δm_yz) ω_z (none while the attitude is held),
+//   δv̇ = −Ĉ (ŷ δk_ay + x̂ δm_xy + ẑ δm_zy) f̄_y (f̄_y the low-passed lateral force);
+// the couplings' and the lateral-force columns only while the turns teach them
+// (ErrorStateEkf::TurnStatesLearnable).
+struct TurnColumns {
+  Eigen::Matrix3d Gk = Eigen::Matrix3d::Zero(), Ga = Eigen::Matrix3d::Zero();
+};
+TurnColumns TurnStateColumns(const Eigen::Matrix3d& C, double w_z_radps, double f_y_mps2,
+                             bool attitude_hold, bool learnable, double dt) {
+  TurnColumns t;
+  if (!attitude_hold) t.Gk << C.col(2), C.col(0), C.col(1);
+  t.Gk *= -w_z_radps * dt;
+  if (!learnable) {
+    t.Gk.rightCols<2>().setZero();
+    return t;
+  }
+  t.Ga << C.col(1), C.col(0), C.col(2);
+  t.Ga *= -f_y_mps2 * dt;
+  return t;
+}
 }  // namespace
 
 void ErrorStateEkf::Initialize(const NavState& s) {
@@ -29,6 +53,9 @@ void ErrorStateEkf::Initialize(const NavState& s) {
   ripple_.Reset();
   gyro_z_coupling_rad_.setZero();
   time_residual_s_ = 0.0;
+  accel_y_force_.setZero();
+  f_y_lp_B_mps2_.setZero();
+  speed_at_fix_mps_ = 0.0;
   accel_lp_N_mps2_.setZero();
   gm_tau_s_ = params_.gnss_error_tau_s;
   gm_std_m_ = params_.gnss_error_std_m;
@@ -60,6 +87,10 @@ void ErrorStateEkf::Initialize(const NavState& s) {
   SetTimeBasePriors();
 }
 
+bool ErrorStateEkf::TurnStatesLearnable() const {
+  return std::min(state_.v_N_mps.head<2>().norm(), speed_at_fix_mps_) >= kTurnStatesMinSpeed_mps;
+}
+
 bool ErrorStateEkf::TimeResidualLearnable() const {
   return TimeResidualStateOn() && state_.v_N_mps.head<2>().norm() >= kResidualMinSpeed_mps;
 }
@@ -72,7 +103,8 @@ void ErrorStateEkf::RestartTimeBaseStates() {
   gyro_scale_z_ = 0.0;
   gyro_z_coupling_rad_.setZero();
   time_residual_s_ = 0.0;
-  constexpr int kTriad = kImuTimeResidual + 1 - kGyroScaleZ;
+  accel_y_force_.setZero();
+  constexpr int kTriad = kAccelCouplingZY + 1 - kGyroScaleZ;
   P_.middleRows<kTriad>(kGyroScaleZ).setZero();
   P_.middleCols<kTriad>(kGyroScaleZ).setZero();
   SetTimeBasePriors();
@@ -82,11 +114,16 @@ void ErrorStateEkf::SetTimeBasePriors() {
   const auto& p = params_;
   if (GyroScaleStateOn()) P_(kGyroScaleZ, kGyroScaleZ) = p.gyro_scale_z_std * p.gyro_scale_z_std;
   if (GyroCouplingStatesOn()) {
-    const double var = p.gyro_z_coupling_std_rad * p.gyro_z_coupling_std_rad;
-    P_(kGyroCouplingX, kGyroCouplingX) = P_(kGyroCouplingY, kGyroCouplingY) = var;
+    // a coupling whose σ is 0 stays at 0 (its row and column of P stay zero)
+    P_(kGyroCouplingX, kGyroCouplingX) = p.gyro_z_coupling_x_std_rad * p.gyro_z_coupling_x_std_rad;
+    P_(kGyroCouplingY, kGyroCouplingY) = p.gyro_z_coupling_y_std_rad * p.gyro_z_coupling_y_std_rad;
   }
   if (TimeResidualStateOn())
     P_(kImuTimeResidual, kImuTimeResidual) = p.imu_time_residual_std_s * p.imu_time_residual_std_s;
+  if (AccelForceStatesOn())
+    P_.block<3, 3>(kAccelScaleY, kAccelScaleY)
+        .diagonal()
+        .setConstant(p.accel_y_force_std * p.accel_y_force_std);
 }
 
 Eigen::Vector3d ErrorStateEkf::CompensatedAngle(const Eigen::Vector3d& delta_angle_B_rad,
@@ -99,6 +136,16 @@ Eigen::Vector3d ErrorStateEkf::CompensatedAngle(const Eigen::Vector3d& delta_ang
   return dth;
 }
 
+Eigen::Vector3d ErrorStateEkf::CompensatedVelocity(const Eigen::Vector3d& delta_velocity_B_mps,
+                                                   double dt) const {
+  // the y accelerometer reads (1 + k_ay) f_y + b_y, the x accelerometer f_x + m_xy f_y + b_x
+  Eigen::Vector3d dv = delta_velocity_B_mps - ba_ * dt;
+  dv.y() /= 1.0 + accel_y_force_.x();
+  dv.x() -= accel_y_force_.y() * dv.y();
+  dv.z() -= accel_y_force_.z() * dv.y();
+  return dv;
+}
+
 void ErrorStateEkf::Predict(const Eigen::Vector3d& delta_angle_B_rad,
                             const Eigen::Vector3d& delta_velocity_B_mps, double dt) {
   if (!(dt > 0) || dt > 1.0 || !AllFinite(delta_angle_B_rad) || !AllFinite(delta_velocity_B_mps))
@@ -108,8 +155,13 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& delta_angle_B_rad,
   const Eigen::Vector3d dth = attitude_hold_
                                   ? Eigen::Vector3d(C.transpose() * earth_.w_IE_N_radps * dt)
                                   : CompensatedAngle(delta_angle_B_rad, dt);
-  const Eigen::Vector3d dv = delta_velocity_B_mps - ba_ * dt;
+  const Eigen::Vector3d dv = CompensatedVelocity(delta_velocity_B_mps, dt);
   w_B_ = dth / dt;
+  // the lateral force the accelerometer's lateral-force states see: low-passed (two stages), so
+  // that the ride's vibration, which the NHC sees as velocity ripple, does not teach them
+  const double w_f = std::min(1.0, dt / kLateralForceSmoothing_s);
+  f_y_lp_B_mps2_.x() += w_f * (dv.y() / dt - f_y_lp_B_mps2_.x());
+  f_y_lp_B_mps2_.y() += w_f * (f_y_lp_B_mps2_.x() - f_y_lp_B_mps2_.y());
   f_N_ = C * dv / dt;
   // the acceleration over about a fix interval, for the residual tag lag's velocity term
   const double w_lp = std::min(1.0, dt / kAccelSmoothing_s);
@@ -177,7 +229,8 @@ void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, d
   //   row δp: [I  I·dt  0  0   0  ]        rows δb_a, δb_g, δs: identity
   //   row δv: [0  A     B  −Cdt 0 ]        rows e: gm_decay·I; row δd: dev_decay
   //   row φ:  [0  0     D  0   −Cdt]          (and −Ĉ[ẑ x̂ ŷ]ω_z·dt in the columns of δk_z,
-  //                                                δm_xz, δm_yz)
+  //                                                δm_xz, δm_yz; in row δv −Ĉ[ŷ x̂]f_y·dt in
+  //                                                those of δk_ay, δm_xy)
   // A = I − 2[ω_IE×]dt, B = −[f_N×]dt, D = I − [ω_IE×]dt. Only the rows of δp, δv, φ need
   // products; the rest of P is scaled by Φ's diagonal, and P's symmetry gives the other part.
   // P is symmetric, so the products run on its columns (contiguous in Eigen's column-major
@@ -203,15 +256,17 @@ void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, d
   const Eigen::Matrix3d Ggt = attitude_hold_ ? Eigen::Matrix3d::Zero() : Gt;
   // Mᵀ = P Φᵀ, the columns of δp, δv, φ
   const Cols3 Mp = P.template middleCols<3>(kPos) + dt * P.template middleCols<3>(kVel);
-  const Cols3 Mv = P.template middleCols<3>(kVel) * At + P.template middleCols<3>(kAtt) * Bt +
-                   P.template middleCols<3>(kAccelBias) * Gt;
-  // the z gyro's scale error and the x and y gyros' coupling to the z rate (δk_z, δm_xz, δm_yz):
-  // φ̇ = −Ĉ (ẑ δk_z + x̂ δm_xz + ŷ δm_yz) ω_z (none while the attitude is held)
-  Eigen::Matrix3d Gk = Eigen::Matrix3d::Zero();
-  if (!attitude_hold_) Gk << C.col(2), C.col(0), C.col(1);
-  Gk *= -w_B_.z() * dt;
+  Cols3 Mv = P.template middleCols<3>(kVel) * At + P.template middleCols<3>(kAtt) * Bt +
+             P.template middleCols<3>(kAccelBias) * Gt;
+  const TurnColumns turn =
+      TurnStateColumns(C, w_B_.z(), f_y_lp_B_mps2_.y(), attitude_hold_, TurnStatesLearnable(), dt);
+  const Eigen::Matrix3d& Gk = turn.Gk;
+  const Eigen::Matrix3d& Ga = turn.Ga;
   Cols3 Ma = P.template middleCols<3>(kAtt) * Dt + P.template middleCols<3>(kGyroBias) * Ggt;
-  if constexpr (N == kNumStates) Ma += P.template middleCols<3>(kGyroScaleZ) * Gk.transpose();
+  if constexpr (N == kNumStates) {
+    Ma += P.template middleCols<3>(kGyroScaleZ) * Gk.transpose();
+    Mv += P.template middleCols<3>(kAccelScaleY) * Ga.transpose();
+  }
   // Φ's diagonal on the tail: P_tail ← Φ_tail P_tail Φ_tailᵀ. Its only entries other than 1 are
   // the decays of e and δd, so only their rows and columns of the tail block are scaled.
   Eigen::Matrix<double, kTail, 1> tail = Eigen::Matrix<double, kTail, 1>::Ones();
@@ -235,8 +290,10 @@ void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, d
                                      Gt.transpose() * M.template middleRows<3>(kAccelBias);
     R.template middleRows<3>(kAtt) = Dt.transpose() * M.template middleRows<3>(kAtt) +
                                      Ggt.transpose() * M.template middleRows<3>(kGyroBias);
-    if constexpr (N == kNumStates)
+    if constexpr (N == kNumStates) {
       R.template middleRows<3>(kAtt) += Gk * M.template middleRows<3>(kGyroScaleZ);
+      R.template middleRows<3>(kVel) += Ga * M.template middleRows<3>(kAccelScaleY);
+    }
     R.template bottomRows<kTail>() = tail.asDiagonal() * M.template bottomRows<kTail>();
     return R;
   };
@@ -274,7 +331,7 @@ Eigen::Matrix<double, 3, kNumStates> ErrorStateEkf::VelocityJacobian() const {
   // the scale error turns ω_z as a z-bias of ω_z·δk_z does, the couplings as x and y biases of
   // ω_z·δm_xz and ω_z·δm_yz
   if (GyroScaleStateOn()) H.col(kGyroScaleZ) = H.block<3, 3>(0, kGyroBias).col(2) * w_B_.z();
-  if (GyroCouplingStatesOn()) {
+  if (GyroCouplingStatesOn() && TurnStatesLearnable()) {
     H.col(kGyroCouplingX) = H.block<3, 3>(0, kGyroBias).col(0) * w_B_.z();
     H.col(kGyroCouplingY) = H.block<3, 3>(0, kGyroBias).col(1) * w_B_.z();
   }
@@ -315,7 +372,9 @@ UpdateResult ErrorStateEkf::UpdatePosition(const Eigen::Vector3d& p_antenna_N_m,
   Eigen::Matrix3d R = Eigen::Matrix3d::Zero();
   for (int i = 0; i < 3; ++i)
     R(i, i) = std::pow(std::max(std_m[i], params_.gnss_pos_std_floor_m), 2);
-  return Update<3>(p_antenna_N_m - pred, PositionJacobian(), R);
+  const UpdateResult r = Update<3>(p_antenna_N_m - pred, PositionJacobian(), R);
+  if (r.accepted) speed_at_fix_mps_ = state_.v_N_mps.head<2>().norm();
+  return r;
 }
 
 UpdateResult ErrorStateEkf::UpdateVelocity(const Eigen::Vector3d& v_antenna_N_mps,
@@ -466,6 +525,9 @@ void ErrorStateEkf::InjectError(const EkfVector& dx) {
     gyro_z_coupling_rad_ =
         (gyro_z_coupling_rad_ + dx.segment<2>(kGyroCouplingX)).cwiseMax(-0.1).cwiseMin(0.1);
   }
+  // clamped to ±0.1 (ours: 10 % of scale or 5.7° of misalignment, twenty times the data sheets')
+  if (AccelForceStatesOn())
+    accel_y_force_ = (accel_y_force_ + dx.segment<3>(kAccelScaleY)).cwiseMax(-0.1).cwiseMin(0.1);
 }
 
 Eigen::Vector3d ErrorStateEkf::GnssErrorVariance(double horizontal_std_m, double up_std_m) {

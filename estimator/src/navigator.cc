@@ -218,7 +218,7 @@ void Navigator::ProcessImu(const ImuSample& s) {
   ekf_.Predict(s.delta_angle_B_rad, s.delta_velocity_B_mps, s.dt_s);
   // the INS's own velocity increment (no aiding) since the last fix velocity (GnssVelocityNoise)
   const Eigen::Vector3d ins_dv_N_mps =
-      ekf_.state().q_NB * (s.delta_velocity_B_mps - ekf_.accel_bias() * s.dt_s) +
+      ekf_.state().q_NB * ekf_.CompensatedVelocity(s.delta_velocity_B_mps, s.dt_s) +
       ekf_.earth().g_N_mps2 * s.dt_s;
   ins_dv_N_mps_ += ins_dv_N_mps;
   fix_ripple_.Add(ins_dv_N_mps, s.dt_s);
@@ -531,9 +531,10 @@ NavOutput Navigator::Output() const {
   for (std::size_t i = 0; i < imu_.size(); ++i) {
     const ImuSample& s = imu_[i];
     if (s.t <= o.t) continue;
-    // the gyro compensated as the filter's own prediction does (bias, z scale, z coupling)
+    // the IMU compensated as the filter's own prediction does (biases, z scale, z coupling, the
+    // accelerometer's y scale and x coupling to f_y)
     Propagate(earth, ekf_.CompensatedAngle(s.delta_angle_B_rad, s.dt_s),
-              s.delta_velocity_B_mps - ekf_.accel_bias() * s.dt_s, s.dt_s, mem, st);
+              ekf_.CompensatedVelocity(s.delta_velocity_B_mps, s.dt_s), s.dt_s, mem, st);
     o.t = s.t;
   }
   // the INS at its tag time is the vehicle the residual lag δ̂t earlier (ErrorStateEkf)

@@ -38,7 +38,9 @@ class ErrorStateEkfTest : public ::testing::Test {
     p.gnss_error_std_m = 0.3;
     p.nhc_std_mps = 0.05;
     p.speed_rw_mps_rthz = 0.001;
-    p.gyro_z_coupling_std_rad = 0.005;  // the x and y gyros' coupling states on (off by default)
+    p.gyro_z_coupling_x_std_rad =
+        0.005;  // the x and y gyros' coupling states on (x off by default)
+    p.gyro_z_coupling_y_std_rad = 0.005;
     ekf_ = ErrorStateEkf(p, EarthModel{});
     NavState s;
     s.p_N_m = Eigen::Vector3d(10, -4, 2);
@@ -94,6 +96,9 @@ TEST_F(ErrorStateEkfTest, VelocityJacobianMatchesFiniteDifferences) {
   // the gyro rate seen by the lever arm is held at the sample's (bias-corrected) value
   const Eigen::Vector3d expected_rate = raw_w_ - ekf_.gyro_bias();
   ASSERT_LT((ekf_.last_gyro_rate_B() - expected_rate).norm(), 1e-9);
+  // the couplings' columns are the turns' only at speed after a fix (TurnStatesLearnable): a fix
+  // where the filter predicts it (no correction, the state unchanged)
+  ekf_.UpdatePosition(Pos(ekf_), Eigen::Vector3d::Constant(0.05));
   const auto J = Numeric<3>([this](const ErrorStateEkf& e) { return Vel(e); });
   EXPECT_LT((J - ekf_.VelocityJacobian()).cwiseAbs().maxCoeff(), 1e-6) << J << "\n\n"
                                                                        << ekf_.VelocityJacobian();
@@ -468,9 +473,11 @@ TEST(ErrorStateEkfGnssModelTest, SwitchIsIgnoredWithoutCorrelatedStates) {
 // The classic filter (augmented states off) propagates and updates only P's first 15 states:
 // its other rows and columns stay exact zeros, and one interval equals the dense Φ P Φᵀ + Q
 // written out here from the error dynamics in the header.
-// With `gyro_scale_z_std` > 0 the z gyro's scale state, the x and y gyros' couplings to the z rate
-// and the residual tag lag are on (the full path): Φ gains their columns in the attitude rows,
-// −Ĉ[ẑ x̂ ŷ]·ω_z·dt (the residual lag has none: a random constant seen only by the fixes).
+// With `gyro_scale_z_std` > 0 the z gyro's scale state, the x and y gyros' couplings to the z rate,
+// the residual tag lag and the accelerometer's lateral-force states are on (the full path): Φ
+// gains their columns in the attitude rows, −Ĉ[ẑ x̂ ŷ]·ω_z·dt, and in the velocity rows,
+// −Ĉ[ŷ x̂ ẑ]·f̄_y·dt, f̄_y the lateral force low-passed (the residual lag has none: a random
+// constant seen only by the fixes).
 void CheckPropagationAgainstTheDenseProduct(double gyro_scale_z_std) {
   EkfParams p;
   p.lever_arm_B_m = Eigen::Vector3d(0.3, 0.1, 0.9);
@@ -478,7 +485,8 @@ void CheckPropagationAgainstTheDenseProduct(double gyro_scale_z_std) {
   p.nhc_std_mps = 0.05;
   p.estimate_mount_angles = false;  // the classic states alone (the mounting states are tails)
   p.gyro_scale_z_std = gyro_scale_z_std;
-  p.gyro_z_coupling_std_rad = gyro_scale_z_std > 0 ? 0.005 : 0.0;
+  p.gyro_z_coupling_x_std_rad = p.gyro_z_coupling_y_std_rad = gyro_scale_z_std > 0 ? 0.005 : 0.0;
+  p.accel_y_force_std = gyro_scale_z_std > 0 ? 0.005 : 0.0;
   p.imu_time_residual_std_s = gyro_scale_z_std > 0 ? 0.01 : 0.0;
   EarthModel earth;
   earth.w_IE_N_radps = Eigen::Vector3d(0.0, 6.3e-5, 3.7e-5);
@@ -499,7 +507,11 @@ void CheckPropagationAgainstTheDenseProduct(double gyro_scale_z_std) {
   const double dt = 0.01;
   const EkfMatrix P0 = ekf.covariance();
   const Eigen::Matrix3d C = ekf.state().q_NB.toRotationMatrix();
-  const Eigen::Vector3d f_N = C * (dv - ekf.accel_bias() * dt) / dt;
+  Eigen::Vector3d dv_used = dv - ekf.accel_bias() * dt;
+  dv_used.y() /= 1.0 + ekf.accel_y_force_error().x();
+  dv_used.x() -= ekf.accel_y_force_error().y() * dv_used.y();
+  dv_used.z() -= ekf.accel_y_force_error().z() * dv_used.y();
+  const Eigen::Vector3d f_N = C * dv_used / dt;
   Eigen::Vector3d dth_used = dth - ekf.gyro_bias() * dt;
   dth_used.z() /= 1.0 + ekf.gyro_scale_z();
   dth_used.head<2>() -= ekf.gyro_z_coupling_rad() * dth_used.z();
@@ -516,6 +528,12 @@ void CheckPropagationAgainstTheDenseProduct(double gyro_scale_z_std) {
   Phi.block<3, 1>(kAtt, kGyroScaleZ) = -C.col(2) * dth_used.z();
   Phi.block<3, 1>(kAtt, kGyroCouplingX) = -C.col(0) * dth_used.z();
   Phi.block<3, 1>(kAtt, kGyroCouplingY) = -C.col(1) * dth_used.z();
+  // the lateral force low-passed (kLateralForceSmoothing_s) as the prediction took it
+  const double f_y_lp = ekf.lateral_force_lp_B_mps2();
+  EXPECT_GT(f_y_lp, 0.5 * dv_used.y() / dt);  // the low-pass has risen towards the 1 m/s² given
+  Phi.block<3, 1>(kVel, kAccelScaleY) = -C.col(1) * f_y_lp * dt;
+  Phi.block<3, 1>(kVel, kAccelCouplingXY) = -C.col(0) * f_y_lp * dt;
+  Phi.block<3, 1>(kVel, kAccelCouplingZY) = -C.col(2) * f_y_lp * dt;
   EkfMatrix Q = EkfMatrix::Zero();
   for (int i = 0; i < 3; ++i) {
     Q(kVel + i, kVel + i) = p.accel_noise_mps2_rthz * p.accel_noise_mps2_rthz * dt;
@@ -533,6 +551,9 @@ void CheckPropagationAgainstTheDenseProduct(double gyro_scale_z_std) {
     EXPECT_GT(std::abs(P(kAtt, kGyroCouplingX)), 0.0);   // the couplings' tilt correlations
     EXPECT_GT(std::abs(P(kAtt + 1, kGyroCouplingY)), 0.0);
     EXPECT_GT(std::abs(P(kPos, kImuTimeResidual)), 0.0);  // the fixes saw the residual lag
+    EXPECT_GT(std::abs(P(kVel + 1, kAccelScaleY)), 0.0);  // the lateral force's velocity terms
+    EXPECT_GT(std::abs(P(kVel, kAccelCouplingXY)), 0.0);
+    EXPECT_GT(std::abs(P(kVel + 2, kAccelCouplingZY)), 0.0);
     EXPECT_TRUE(P.middleRows<kGyroScaleZ - kNumClassicStates>(kNumClassicStates).isZero(0.0));
     return;
   }

@@ -30,7 +30,7 @@ TurningCarSpec CoupledGyro(std::uint64_t seed) {
 
 EkfParams Filter(double coupling_std_rad) {
   EkfParams p = TurningCar::CarFilter();
-  p.gyro_z_coupling_std_rad = coupling_std_rad;
+  p.gyro_z_coupling_x_std_rad = p.gyro_z_coupling_y_std_rad = coupling_std_rad;
   return p;
 }
 

@@ -7,7 +7,7 @@
 /// output: nominal NavState, biases, covariance, NIS of the last update, status flags
 /// @endsystem
 ///
-/// Error state (kNumUsedStates = 26 in a vector of kNumStates = 26, fixed-size):
+/// Error state (kNumUsedStates = 29 in a vector of kNumStates = 30, fixed-size):
 ///   δp (N, m) | δv (N, m/s) | φ (attitude error in N, rad; C_true = Exp(φ)·Ĉ) | δb_a (B, m/s²) |
 ///   δb_g (B, rad/s) | e_gnss (N, m: first-order Gauss–Markov GNSS position error, optional) |
 ///   δs (m/s: the vehicle's set speed, a slow random walk, optional) |
@@ -16,6 +16,8 @@
 ///   | δk_z (dimensionless: the z gyro's scale-factor error, a random constant, optional)
 ///   | δm_xz, δm_yz (rad: the x and y gyros' coupling to the z rate, random constants, optional)
 ///   | δt (s: the IMU tags' residual lag behind the fixes' time, a random constant, optional)
+///   | δk_ay, δm_xy, δm_zy (the y accelerometer's scale error and the x and z accelerometers'
+///   coupling to the y specific force: random constants, optional)
 ///
 /// The residual lag: after the tag lag navd found and took off (ImuTimeOffset) the INS at tag time
 /// τ is the vehicle at τ − δt, so a fix at t is predicted as the INS's antenna at t plus its
@@ -38,6 +40,19 @@
 /// right turns the opposite way; gravity in the accelerometers and the fixes show the tilt. The
 /// couplings to the x and y rates multiply a ground vehicle's small roll and pitch rates and are
 /// not states.
+///
+/// The accelerometer's errors in the lateral specific force: the y accelerometer reads
+/// f̃_y = (1 + k_ay)·f_y + b_y, the x and z accelerometers f̃_x = f_x + m_xy·f_y + b_x and
+/// f̃_z = f_z + m_zy·f_y + b_z; the filter compensates f_y = (f̃_y − b̂_y)/(1 + k̂_ay),
+/// f_x = f̃_x − b̂_x − m̂_xy·f_y, f_z likewise, so δv̇ gains −Ĉ·(ŷ·δk_ay + x̂·δm_xy + ẑ·δm_zy)·f̄_y,
+/// f̄_y the lateral force low-passed (two stages of 0.25 s: the ride's vibration, whose velocity
+/// ripple the NHC sees, must not teach them). A ground vehicle's turns make them observable (the
+/// centripetal f_y, 3 m/s² on a car at 6 m/s in a 12 m turn, left and right in turn; zero on the
+/// rows), and they must be states where the y gyro's coupling to the z rate is: a turn's forward
+/// and vertical force error otherwise reads as a pitch in the turn, i.e. as m_yz
+/// (field_realism/imu_time_tag_lag seed 41: m̂_yz −0.50° against the emulated −0.22°, −0.28° with
+/// them). Their other errors multiply f_x (small on a vehicle at constant speed) or gravity (a
+/// constant the biases take).
 ///
 /// The speed state is the vehicle model of a ground vehicle that holds its speed (cruise control,
 /// constant throttle): the forward body velocity stays within `speed_dev_std_mps` of a set speed
@@ -97,11 +112,14 @@ inline constexpr int kGyroScaleZ = 22;       ///< δk_z: the z gyro's scale-fact
 inline constexpr int kGyroCouplingX = 23;    ///< δm_xz: the x gyro's coupling to the z rate (rad)
 inline constexpr int kGyroCouplingY = 24;    ///< δm_yz: the y gyro's coupling to the z rate (rad)
 inline constexpr int kImuTimeResidual = 25;  ///< δt: the IMU tags' residual lag (s)
+inline constexpr int kAccelScaleY = 26;  ///< δk_ay: the y accelerometer's scale error (fraction)
+inline constexpr int kAccelCouplingXY = 27;  ///< δm_xy: the x accelerometer's coupling to f_y (rad)
+inline constexpr int kAccelCouplingZY = 28;  ///< δm_zy: the z accelerometer's coupling to f_y (rad)
 /// the states in use (the last index + 1), and the size of the filter's vectors and matrices: that
 /// count made even (an unused last row and column, zero), so that Eigen's SSE packets of two
 /// doubles tile every column (23 states left the covariance propagation unvectorised: +57 %
 /// instructions over the 20 states before them; callgrind, ekf_benchmark seed004)
-inline constexpr int kNumUsedStates = 26;
+inline constexpr int kNumUsedStates = 29;
 inline constexpr int kNumStates = kNumUsedStates + kNumUsedStates % 2;
 }  // namespace ekf_index
 
@@ -186,20 +204,31 @@ struct EkfParams {
   /// gyro_scale_std, which only widens the attitude's σ by the angle turned, this state learns
   /// the scale and corrects the turns with it.
   double gyro_scale_z_std = 0.005;
-  /// Prior σ of the x and y gyros' coupling to the z rate, m_xz and m_yz, estimated as two
-  /// random-constant states (rad; `[filter] gyro_z_coupling_std_deg`; 0: not estimated, the
-  /// triad taken as orthogonal). Off by default: an IMU tag lag a few milliseconds off looks like
-  /// an x coupling in every turn (0.12° per ms on field_realism/imu_time_tag_lag), and the states
-  /// learned that instead and made the car worse (estimator.md, "The x and y gyros' coupling to
-  /// the z rate"). For a consumer MEMS on time, 0.3°: the consumer-MEMS misalignment of
-  /// vectors/mcu/imu_error_model.md, 0.3° 1σ per off-diagonal coupling, the population's σ, which
-  /// a random constant's prior should be (an industrial triad's 0.05° is well inside it).
-  double gyro_z_coupling_std_rad = 0.0;
+  /// Prior σ of the x and y gyros' coupling to the z rate, m_xz and m_yz, each estimated as a
+  /// random-constant state (rad; `[filter] gyro_z_coupling_x_std_deg`, `gyro_z_coupling_y_std_deg`,
+  /// `gyro_z_coupling_std_deg` for both; 0: not estimated, that gyro taken as orthogonal to z).
+  /// 0.3° for the y gyro: the consumer-MEMS misalignment of vectors/mcu/imu_error_model.md, 0.3°
+  /// 1σ per off-diagonal coupling, the population's σ, which a random constant's prior should be
+  /// (an industrial triad's 0.05° is well inside it); its pitch in the turns is well observed
+  /// (the forward accelerometer sees g·θ), given the accelerometer's lateral-force states
+  /// (accel_y_force_std; estimator.md, "The accelerometer in the turns"). The x gyro's is off by
+  /// default: an IMU tag lag a few milliseconds off looks like an x coupling in every turn (0.12°
+  /// per ms on field_realism/imu_time_tag_lag), and the state learned that instead and made the
+  /// car worse (estimator.md, "The x and y gyros' coupling to the z rate").
+  double gyro_z_coupling_x_std_rad = 0.0;
+  double gyro_z_coupling_y_std_rad = 0.3 * 0.017453292519943295;
   /// Prior σ of the IMU tags' residual lag behind the fixes, estimated as a random-constant state
   /// (s; `[filter] imu_time_residual_std_s`; 0: not estimated). 0.01 s (our choice: the lag
   /// ImuTimeOffset reports has σ below its max_std_s, 10 ms, and wanders within ±5 ms of the
   /// true lag on the car; estimator.md, "The residual IMU tag lag").
   double imu_time_residual_std_s = 0.01;
+  /// Prior σ of the y accelerometer's scale error k_ay and the x accelerometer's coupling m_xy to
+  /// the y specific force, estimated as two random-constant states while the x and y gyros'
+  /// couplings to the z rate are (`[filter] accel_y_force_std`; fraction and rad; 0: not
+  /// estimated). 0.005 (our choice: the consumer-MEMS scale σ 0.5 % and misalignment σ 0.3° =
+  /// 0.0052 rad of vectors/mcu/imu_error_model.md, the ICM-42688-P's ±0.5 % sensitivity
+  /// tolerance). The gyro's couplings need them (estimator.md, "The accelerometer in the turns").
+  double accel_y_force_std = 0.005;
 };
 
 /// Health and status bit field.
@@ -350,6 +379,13 @@ class ErrorStateEkf {
   double gyro_scale_z() const { return gyro_scale_z_; }
   /// The x and y gyros' estimated coupling to the z rate (m̂_xz, m̂_yz, rad; 0 when not estimated).
   const Eigen::Vector2d& gyro_z_coupling_rad() const { return gyro_z_coupling_rad_; }
+  /// The y accelerometer's estimated scale error and the x accelerometer's coupling to the y
+  /// specific force (k̂_ay fraction, m̂_xy rad; 0 when not estimated).
+  const Eigen::Vector3d& accel_y_force_error() const { return accel_y_force_; }
+  bool accel_y_force_estimated() const { return AccelForceStatesOn(); }
+  /// The low-passed lateral specific force the last prediction gave Φ's columns of those states
+  /// (B, m/s²; kLateralForceSmoothing_s).
+  double lateral_force_lp_B_mps2() const { return f_y_lp_B_mps2_.y(); }
   /// The INS's acceleration low-passed over kAccelSmoothing_s (N, m/s²).
   const Eigen::Vector3d& smoothed_acceleration_N() const { return accel_lp_N_mps2_; }
   /// The IMU tags' estimated residual lag behind the fixes (s; 0 when not estimated).
@@ -358,13 +394,17 @@ class ErrorStateEkf {
   /// moves the other way (its σ stays).
   void ShiftImuTags(double shift_s);
   /// Restarts the random constants learned against the IMU's time base (the z gyro's scale, the x
-  /// and y gyros' couplings to the z rate, the residual tag lag) at zero with their prior σ,
+  /// and y gyros' couplings to the z rate, the residual tag lag, the accelerometer's lateral-force
+  /// errors, which a late tag's turn teaches too) at zero with their prior σ,
   /// uncorrelated with the other states: what they learned before a tag lag was found and taken
   /// off is the lag's error, not the gyro's.
   void RestartTimeBaseStates();
   /// The angle increment the filter integrates for a raw gyro increment over dt: the bias, the z
   /// gyro's scale and the x and y gyros' coupling to the z rate removed (B, rad).
   Eigen::Vector3d CompensatedAngle(const Eigen::Vector3d& delta_angle_B_rad, double dt) const;
+  /// The velocity increment the filter integrates for a raw accelerometer increment over dt: the
+  /// bias, the y accelerometer's scale and the x accelerometer's coupling to f_y removed (B, m/s).
+  Eigen::Vector3d CompensatedVelocity(const Eigen::Vector3d& delta_velocity_B_mps, double dt) const;
   bool mount_angles_estimated() const { return MountStatesOn(); }
   /// C_VB, the rotation from the IMU frame into the vehicle frame (identity when off).
   const Eigen::Matrix3d& vehicle_from_imu() const { return C_VB_; }
@@ -394,8 +434,11 @@ class ErrorStateEkf {
   /// ten rows may be non-zero.
   bool AugmentedStatesOn() const {
     return params_.gnss_error_tau_s > 0 || params_.speed_rw_mps_rthz > 0 || MountStatesOn() ||
-           GyroScaleStateOn() || GyroCouplingStatesOn() || TimeResidualStateOn();
+           GyroScaleStateOn() || GyroCouplingStatesOn() || TimeResidualStateOn() ||
+           AccelForceStatesOn();
   }
+  /// The accelerometer's lateral-force errors (δk_ay, δm_xy) are estimated.
+  bool AccelForceStatesOn() const { return params_.accel_y_force_std > 0; }
   /// The IMU tags' residual lag is estimated.
   bool TimeResidualStateOn() const { return params_.imu_time_residual_std_s > 0; }
   /// The fixes teach the residual lag now: at speed. Standing or at a walk its v·δt is below the
@@ -403,10 +446,17 @@ class ErrorStateEkf {
   /// walked to the 0.1 s clamp over four parked hours and put 10 cm along the track once the
   /// tractor drove off; learning in turns only left the car at fused/raw 1.54).
   bool TimeResidualLearnable() const;
+  /// The turns teach the x and y gyros' couplings to the z rate and the accelerometer's
+  /// lateral-force states now: at speed (kTurnStatesMinSpeed_mps), now and at the last accepted
+  /// position fix. Otherwise Φ and H leave their columns out: the states keep what they learned
+  /// and compensate with it.
+  bool TurnStatesLearnable() const;
   /// The z gyro's scale factor is estimated.
   bool GyroScaleStateOn() const { return params_.gyro_scale_z_std > 0; }
   /// The x and y gyros' coupling to the z rate is estimated.
-  bool GyroCouplingStatesOn() const { return params_.gyro_z_coupling_std_rad > 0; }
+  bool GyroCouplingStatesOn() const {
+    return params_.gyro_z_coupling_x_std_rad > 0 || params_.gyro_z_coupling_y_std_rad > 0;
+  }
   /// The mounting pitch and yaw are estimated (they need the NHC to be observable).
   bool MountStatesOn() const {
     return params_.estimate_mount_angles && params_.nhc_std_mps > 0 &&
@@ -439,15 +489,35 @@ class ErrorStateEkf {
   double gyro_scale_z_ = 0.0;                            // k̂_z: the z gyro's scale error
   Eigen::Vector2d gyro_z_coupling_rad_ = Eigen::Vector2d::Zero();  // m̂_xz, m̂_yz
   double time_residual_s_ = 0.0;  // δ̂t: the IMU tags' residual lag behind the fixes
+  Eigen::Vector3d accel_y_force_ = Eigen::Vector3d::Zero();  // k̂_ay, m̂_xy, m̂_zy
   // the acceleration's low-pass time constant: a 10 Hz fix interval, over which an engine's
   // orders (tens of Hz) average out (chosen here)
   static constexpr double kAccelSmoothing_s = 0.1;
   // 2 m/s (chosen here): above a tractor's working speed, where v·δt of a few milliseconds is
   // below an RTK fix's noise (5 mm at 1 m/s and 5 ms)
   static constexpr double kResidualMinSpeed_mps = 2.0;
+  // 2 m/s (chosen here): a car's turns at speed; below it the motion's own lateral force and yaw
+  // swing (a walker's gait; a tractor's ride, 0.6 m/s² lateral, against its 0.3 m/s² of
+  // centripetal force at 1 m/s) taught the couplings and the lateral-force states instead:
+  // ci/real_walk_0827's navd + NHC, RTK present, 0.101 → 0.209 m with them learned at any speed
+  static constexpr double kTurnStatesMinSpeed_mps = 2.0;
+  // the speed at the last accepted position fix too: in an outage the INS's own speed error put a
+  // walker above 2 m/s, and the free INS taught the states (real_walk_0827's navd + NHC, 30 s
+  // outages: worst window 33.8 → 54.0 m)
+  double speed_at_fix_mps_ = 0.0;  // horizontal speed after the last accepted position fix
   Eigen::Vector3d accel_lp_N_mps2_ = Eigen::Vector3d::Zero();  // ā_N (kAccelSmoothing_s)
   Eigen::Vector3d w_B_ = Eigen::Vector3d::Zero();              // last compensated angular rate
   Eigen::Vector3d f_N_ = Eigen::Vector3d::Zero();              // last specific force in N
+  // the compensated specific force along the body's y axis through two first-order low-passes of
+  // kLateralForceSmoothing_s each (the first stage, the second: what Φ's columns of the
+  // accelerometer's lateral-force states take)
+  Eigen::Vector2d f_y_lp_B_mps2_ = Eigen::Vector2d::Zero();
+  // 0.25 s (chosen here): a ride at 1.5 Hz passes at 0.15 (the tractor's 1.2-2.5 Hz roll mode, the
+  // car's ride from 0.8 Hz), a turn's centripetal force (seconds) with about 0.5 s of delay. With
+  // the instantaneous force the states took the ride's velocity ripple, which the NHC sees, for a
+  // scale error: k̂_ay walked to its 10 % clamp on field_realism/tractor_engine_vibration (outage
+  // max 0.106 → 0.127 m on seed 5); 0.1 s left seed 5 at 0.112 m, 0.25 and 0.5 s at 0.105 m.
+  static constexpr double kLateralForceSmoothing_s = 0.25;
   EkfMatrix P_ = EkfMatrix::Identity();
   std::uint32_t repairs_ = 0;
   double q_scale_ = 1.0;      // process-noise scale (SetProcessNoiseScale)
