@@ -11,6 +11,8 @@
 #include "hil/estimator/gnss_velocity_noise.h"
 #include "hil/estimator/navigator.h"
 
+#include "paper000_robot_params.h"
+
 namespace hil::estimator {
 namespace {
 
@@ -22,19 +24,7 @@ constexpr double kSpeed_mps = 0.45, kYaw_rad = 0.5;
 constexpr double kGnssStd_m = 0.25, kGnssTau_s = 4.5;  // the receiver's correlated error
 
 NavigatorParams Params(bool learn) {
-  NavigatorParams p;
-  p.mode = NavMode::kEkf;
-  p.fusion_horizon = 0ns;
-  p.ekf.accel_noise_mps2_rthz = 0.0125;
-  p.ekf.gyro_noise_radps_rthz = 0.002;
-  p.ekf.init_pos_std_m = 0.3;
-  p.ekf.init_vel_std_mps = 0.05;
-  p.ekf.init_roll_pitch_std_rad = 0.01;
-  p.ekf.init_yaw_std_rad = 0.05;
-  p.ekf.gnss_error_tau_s = kGnssTau_s;
-  p.ekf.gnss_error_std_m = kGnssStd_m;
-  p.ekf.gnss_error_vertical_std_m = 0.5;
-  p.ekf.nhc_std_mps = 0.05;
+  NavigatorParams p = test::Paper000RobotParams();
   p.gnss_vel_noise.enabled = learn;
   return p;
 }
