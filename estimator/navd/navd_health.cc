@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <numbers>
 
 namespace hil::estimator {
 namespace {
@@ -22,12 +23,13 @@ void Add(std::string& s, const char* key, std::uint64_t v) {
 
 // the IMU's states the filter estimates (mounting angles, the gyro's scale and couplings, the tags'
 // lag), each present only while it is estimated (or once it is found)
+constexpr double kDeg = 180.0 / std::numbers::pi;  // rad → degrees
+
 void AppendSensorStates(std::string& s, const NavigatorStats& n) {
   char b[256];
   // present while the IMU's mounting pitch and yaw are estimated (ErrorStateEkf): degrees of the
   // vehicle frame in the IMU frame, and their σ
   if (n.mount_estimated) {
-    constexpr double kDeg = 180.0 / 3.14159265358979323846;
     std::snprintf(b, sizeof b,
                   ",\"mount_deg\":{\"pitch\":%.3f,\"yaw\":%.3f,\"pitch_std\":%.3f,"
                   "\"yaw_std\":%.3f}",
@@ -44,7 +46,6 @@ void AppendSensorStates(std::string& s, const NavigatorStats& n) {
   // present while the x and y gyros' coupling to the z rate is estimated (ErrorStateEkf): degrees,
   // and their σ
   if (n.gyro_z_coupling_estimated) {
-    constexpr double kDeg = 180.0 / 3.14159265358979323846;
     std::snprintf(b, sizeof b,
                   ",\"gyro_z_coupling_deg\":{\"x\":%.3f,\"y\":%.3f,\"x_std\":%.3f,\"y_std\":%.3f}",
                   n.gyro_z_coupling_rad.x() * kDeg, n.gyro_z_coupling_rad.y() * kDeg,
@@ -54,7 +55,6 @@ void AppendSensorStates(std::string& s, const NavigatorStats& n) {
   // present while the accelerometer's lateral-force errors are estimated (ErrorStateEkf): the y
   // scale in ppm, the x accelerometer's coupling to f_y in degrees, and their σ
   if (n.accel_y_force_estimated) {
-    constexpr double kDeg = 180.0 / 3.14159265358979323846;
     std::snprintf(b, sizeof b,
                   ",\"accel_y_force\":{\"scale_y_ppm\":%.0f,\"coupling_x_deg\":%.3f,"
                   "\"coupling_z_deg\":%.3f,\"scale_y_std_ppm\":%.0f,\"coupling_x_std_deg\":%.3f,"

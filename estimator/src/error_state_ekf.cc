@@ -138,7 +138,7 @@ Eigen::Vector3d ErrorStateEkf::CompensatedAngle(const Eigen::Vector3d& delta_ang
 
 Eigen::Vector3d ErrorStateEkf::CompensatedVelocity(const Eigen::Vector3d& delta_velocity_B_mps,
                                                    double dt) const {
-  // the y accelerometer reads (1 + k_ay) f_y + b_y, the x accelerometer f_x + m_xy f_y + b_x
+  // the y accelerometer reads (1 + k_ay) f_y + b_y, the x and z f_x + m_xy f_y + b_x and likewise
   Eigen::Vector3d dv = delta_velocity_B_mps - ba_ * dt;
   dv.y() /= 1.0 + accel_y_force_.x();
   dv.x() -= accel_y_force_.y() * dv.y();
@@ -229,8 +229,8 @@ void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, d
   //   row δp: [I  I·dt  0  0   0  ]        rows δb_a, δb_g, δs: identity
   //   row δv: [0  A     B  −Cdt 0 ]        rows e: gm_decay·I; row δd: dev_decay
   //   row φ:  [0  0     D  0   −Cdt]          (and −Ĉ[ẑ x̂ ŷ]ω_z·dt in the columns of δk_z,
-  //                                                δm_xz, δm_yz; in row δv −Ĉ[ŷ x̂]f_y·dt in
-  //                                                those of δk_ay, δm_xy)
+  //                                                δm_xz, δm_yz; in row δv −Ĉ[ŷ x̂ ẑ]f_y·dt in
+  //                                                those of δk_ay, δm_xy, δm_zy)
   // A = I − 2[ω_IE×]dt, B = −[f_N×]dt, D = I − [ω_IE×]dt. Only the rows of δp, δv, φ need
   // products; the rest of P is scaled by Φ's diagonal, and P's symmetry gives the other part.
   // P is symmetric, so the products run on its columns (contiguous in Eigen's column-major

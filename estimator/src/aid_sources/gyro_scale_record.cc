@@ -1,9 +1,9 @@
 // The z gyro's scale-factor error, the x and y gyros' coupling to the z rate, the IMU tags'
 // residual lag and the accelerometer's lateral-force errors as the EKF estimates them
-// (ErrorStateEkf, kGyroScaleZ, kGyroCouplingX/Y, kImuTimeResidual, kAccelScaleY/CouplingXY;
-// estimator.md, "The z gyro's scale factor", "The residual tag lag and the x and y gyros'
-// coupling", "The accelerometer in the turns"): copied into the navigator's statistics for the
-// host's health line.
+// (ErrorStateEkf, kGyroScaleZ, kGyroCouplingX/Y, kImuTimeResidual,
+// kAccelScaleY/CouplingXY/CouplingZY; estimator.md, "The z gyro's scale factor", "The residual tag
+// lag and the x and y gyros' coupling", "The accelerometer in the turns"): copied into the
+// navigator's statistics for the host's health line.
 #include <algorithm>
 #include <cmath>
 
@@ -19,8 +19,7 @@ void Navigator::RecordGyroScale() {
     stats_.gyro_scale_z_std = std_of(ekf_index::kGyroScaleZ);
   }
   stats_.imu_time_residual_s = ekf_.imu_time_residual_s();
-  stats_.gyro_z_coupling_estimated =
-      ekf_.params().gyro_z_coupling_x_std_rad > 0 || ekf_.params().gyro_z_coupling_y_std_rad > 0;
+  stats_.gyro_z_coupling_estimated = ekf_.gyro_z_coupling_estimated();
   if (stats_.gyro_z_coupling_estimated) {
     stats_.gyro_z_coupling_rad = ekf_.gyro_z_coupling_rad();
     stats_.gyro_z_coupling_std_rad = {std_of(ekf_index::kGyroCouplingX),

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <Eigen/Geometry>
+
 namespace hil::mcu {
 namespace {
 

@@ -222,9 +222,9 @@ struct EkfParams {
   /// ImuTimeOffset reports has σ below its max_std_s, 10 ms, and wanders within ±5 ms of the
   /// true lag on the car; estimator.md, "The residual IMU tag lag").
   double imu_time_residual_std_s = 0.01;
-  /// Prior σ of the y accelerometer's scale error k_ay and the x accelerometer's coupling m_xy to
-  /// the y specific force, estimated as two random-constant states while the x and y gyros'
-  /// couplings to the z rate are (`[filter] accel_y_force_std`; fraction and rad; 0: not
+  /// Prior σ of the y accelerometer's scale error k_ay and the x and z accelerometers' couplings
+  /// m_xy, m_zy to the y specific force, estimated as three random-constant states while the x and
+  /// y gyros' couplings to the z rate are (`[filter] accel_y_force_std`; fraction and rad; 0: not
   /// estimated). 0.005 (our choice: the consumer-MEMS scale σ 0.5 % and misalignment σ 0.3° =
   /// 0.0052 rad of vectors/mcu/imu_error_model.md, the ICM-42688-P's ±0.5 % sensitivity
   /// tolerance). The gyro's couplings need them (estimator.md, "The accelerometer in the turns").
@@ -379,10 +379,11 @@ class ErrorStateEkf {
   double gyro_scale_z() const { return gyro_scale_z_; }
   /// The x and y gyros' estimated coupling to the z rate (m̂_xz, m̂_yz, rad; 0 when not estimated).
   const Eigen::Vector2d& gyro_z_coupling_rad() const { return gyro_z_coupling_rad_; }
-  /// The y accelerometer's estimated scale error and the x accelerometer's coupling to the y
-  /// specific force (k̂_ay fraction, m̂_xy rad; 0 when not estimated).
+  /// The y accelerometer's estimated scale error and the x and z accelerometers' coupling to the
+  /// y specific force (k̂_ay fraction, m̂_xy, m̂_zy rad; 0 when not estimated).
   const Eigen::Vector3d& accel_y_force_error() const { return accel_y_force_; }
   bool accel_y_force_estimated() const { return AccelForceStatesOn(); }
+  bool gyro_z_coupling_estimated() const { return GyroCouplingStatesOn(); }
   /// The low-passed lateral specific force the last prediction gave Φ's columns of those states
   /// (B, m/s²; kLateralForceSmoothing_s).
   double lateral_force_lp_B_mps2() const { return f_y_lp_B_mps2_.y(); }
@@ -403,7 +404,8 @@ class ErrorStateEkf {
   /// gyro's scale and the x and y gyros' coupling to the z rate removed (B, rad).
   Eigen::Vector3d CompensatedAngle(const Eigen::Vector3d& delta_angle_B_rad, double dt) const;
   /// The velocity increment the filter integrates for a raw accelerometer increment over dt: the
-  /// bias, the y accelerometer's scale and the x accelerometer's coupling to f_y removed (B, m/s).
+  /// bias, the y accelerometer's scale and the x and z accelerometers' coupling to f_y removed
+  /// (B, m/s).
   Eigen::Vector3d CompensatedVelocity(const Eigen::Vector3d& delta_velocity_B_mps, double dt) const;
   bool mount_angles_estimated() const { return MountStatesOn(); }
   /// C_VB, the rotation from the IMU frame into the vehicle frame (identity when off).
@@ -437,7 +439,7 @@ class ErrorStateEkf {
            GyroScaleStateOn() || GyroCouplingStatesOn() || TimeResidualStateOn() ||
            AccelForceStatesOn();
   }
-  /// The accelerometer's lateral-force errors (δk_ay, δm_xy) are estimated.
+  /// The accelerometer's lateral-force errors (δk_ay, δm_xy, δm_zy) are estimated.
   bool AccelForceStatesOn() const { return params_.accel_y_force_std > 0; }
   /// The IMU tags' residual lag is estimated.
   bool TimeResidualStateOn() const { return params_.imu_time_residual_std_s > 0; }

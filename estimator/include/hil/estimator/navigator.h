@@ -261,8 +261,9 @@ struct NavigatorStats {
   bool gyro_z_coupling_estimated = false;
   Eigen::Vector2d gyro_z_coupling_rad = Eigen::Vector2d::Zero();
   Eigen::Vector2d gyro_z_coupling_std_rad = Eigen::Vector2d::Zero();
-  /// the y accelerometer's scale error and the x accelerometer's coupling to the y specific force
-  /// (ErrorStateEkf, kAccelScaleY, kAccelCouplingXY: fraction, rad) and their σ, while estimated
+  /// the y accelerometer's scale error and the x and z accelerometers' coupling to the y specific
+  /// force (ErrorStateEkf, kAccelScaleY, kAccelCouplingXY/ZY: fraction, rad) and their σ, while
+  /// estimated
   bool accel_y_force_estimated = false;
   Eigen::Vector3d accel_y_force = Eigen::Vector3d::Zero();  ///< k_ay, m_xy, m_zy
   Eigen::Vector3d accel_y_force_std = Eigen::Vector3d::Zero();

@@ -25,7 +25,6 @@
 #include <cstdint>
 
 #include <Eigen/Core>
-#include <Eigen/Geometry>
 
 #include "hil/firmware_emu/mcu/biquad3.h"
 #include "hil/firmware_emu/mcu/rough_imu_spec.h"
