@@ -65,7 +65,8 @@ FieldProfile RazorSmallEngineRobot() {
   // ride over rough ground, 1–20 Hz (scenario choice: 0.5 m/s² vertical, the EU action value
   // 0.5 m/s² that whole-body vibration studies compare against)
   r.ride = {Band(1, 20, V(0.3, 0.3, 0.5), V(1.0, 1.0, 0.5) * kDeg)};
-  r.mount = {80, 0.15};  // scenario choice: board on rubber grommets
+  r.ride_reference_speed_mps = 1.6 / 3.6;  // scenario choice: the levels at paper 000's 1.6 km/h
+  r.mount = {80, 0.15};                    // scenario choice: board on rubber grommets
   return p;
 }
 
@@ -121,7 +122,8 @@ FieldProfile ConsumerMemsCar() {
   // scenario choice: a board on the centre console
   r.engine_orders = FourCylinderOrders(V(0.6, 0.4, 1.2), V(0.3, 0.3, 0.2));
   r.ride = {Band(0.8, 20, V(0.3, 0.3, 0.6), V(0.8, 0.8, 0.4) * kDeg)};
-  r.mount = {120, 0.1};  // scenario choice: a plastic bracket
+  r.ride_reference_speed_mps = 6;  // scenario choice: the levels at 6 m/s on a farm road
+  r.mount = {120, 0.1};            // scenario choice: a plastic bracket
   return p;
 }
 
@@ -138,7 +140,8 @@ FieldProfile ConsumerMemsTractorCab() {
   // mode of farm tractors (Sjöflot & Suggs 1972, J. agric. Engng Res. 17:22–32)
   r.ride = {Band(1, 15, V(0.6, 0.6, 1.0), V(0.5, 0.5, 0.3) * kDeg),
             Band(1.2, 2.5, Eigen::Vector3d::Zero(), V(1.5, 0.8, 0.3) * kDeg)};
-  r.mount = {90, 0.1};  // scenario choice
+  r.ride_reference_speed_mps = 1.0;  // scenario choice: the levels at paper 004's 1 m/s
+  r.mount = {90, 0.1};               // scenario choice
   return p;
 }
 
@@ -158,7 +161,8 @@ FieldProfile IndustrialMemsTractor() {
   r.engine_orders = FourCylinderOrders(V(1.5, 1.0, 3.0), V(0.6, 0.6, 0.4));
   r.ride = {Band(1, 15, V(0.6, 0.6, 1.0), V(0.5, 0.5, 0.3) * kDeg),
             Band(1.2, 2.5, Eigen::Vector3d::Zero(), V(1.5, 0.8, 0.3) * kDeg)};
-  r.mount = {0, 0.1};  // bolted to the frame: rigid
+  r.ride_reference_speed_mps = 1.0;  // scenario choice: the levels at paper 004's 1 m/s
+  r.mount = {0, 0.1};                // bolted to the frame: rigid
   return p;
 }
 

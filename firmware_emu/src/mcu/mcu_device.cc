@@ -252,6 +252,7 @@ void McuDevice::OnImuSample(const TruthSample& truth, DeviceOutput& out) {
   TriadCounts a, g;
   if (front_end_) {
     Eigen::Vector3d f_bl, w_bl;
+    front_end_->SetGroundSpeed(truth.speed_mps);
     front_end_->Advance(t, ideal.f_I_mps2, ideal.w_I_radps, f_bl, w_bl);
     a = accel_.Quantise(accel_.MeasureBandLimited(f_bl, Eigen::Vector3d::Zero(), temp));
     g = gyro_.Quantise(gyro_.MeasureBandLimited(w_bl, g_sens * f_bl, temp));

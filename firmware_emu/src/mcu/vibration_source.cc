@@ -10,7 +10,10 @@ namespace {
 constexpr double kCrankTwoPi = 2.0 * std::numbers::pi;
 }
 
-VibrationSource::VibrationSource(const RoughImuSpec& spec, std::uint64_t seed) : rng_(seed) {
+VibrationSource::VibrationSource(const RoughImuSpec& spec, std::uint64_t seed)
+    : rng_(seed), ride_reference_speed_mps_(spec.ride_reference_speed_mps) {
+  if (ride_reference_speed_mps_ < 0)
+    throw std::invalid_argument("vibration: ride_reference_speed_mps must be >= 0");
   const double fs = spec.internal_rate_hz;
   if (!(fs > 0)) throw std::invalid_argument("vibration: internal_rate_hz must be > 0");
   for (const EngineOrder& e : spec.engine_orders) {
@@ -58,6 +61,11 @@ void VibrationSource::SetRpm(double rpm, double dt_s) {
   }
 }
 
+void VibrationSource::SetGroundSpeed(double speed_mps) {
+  if (ride_reference_speed_mps_ > 0)
+    ride_drive_scale_ = std::sqrt(std::abs(speed_mps) / ride_reference_speed_mps_);
+}
+
 double VibrationSource::UniformUnitVariance() {
   // uniform on [−√3, √3): unit variance; the band filters sum many draws, so their output is
   // Gaussian to a good approximation (central limit) at a fraction of a normal draw's cost
@@ -71,8 +79,10 @@ void VibrationSource::NextRideSample() {
   ride_w_next_.setZero();
   for (Band& b : bands_) {
     Eigen::Vector3d na, ng;
-    for (int i = 0; i < 3; ++i) na[i] = UniformUnitVariance();
-    for (int i = 0; i < 3; ++i) ng[i] = UniformUnitVariance();
+    // the drive, not the output, is scaled: the band filters carry the ride smoothly through a
+    // change of speed (their state is the terrain already driven over)
+    for (int i = 0; i < 3; ++i) na[i] = ride_drive_scale_ * UniformUnitVariance();
+    for (int i = 0; i < 3; ++i) ng[i] = ride_drive_scale_ * UniformUnitVariance();
     ride_f_next_ += b.accel_lp.Step(b.accel_hp.Step(b.accel_sigma.cwiseProduct(na)));
     ride_w_next_ += b.gyro_lp.Step(b.gyro_hp.Step(b.gyro_sigma.cwiseProduct(ng)));
   }

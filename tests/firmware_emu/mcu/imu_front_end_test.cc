@@ -1,8 +1,9 @@
 // The vibration front end (issue 41): an engine order appears at order × RPM/60, aliases to
 // |f − k·f_out| after decimation when the anti-alias low-pass is wider than half the output rate
 // (and is attenuated when it is not), ride vibration has the PSD asked for, the mount resonance
-// amplifies by 1/(2ζ), clipping holds the range, the same seed gives the same samples, and the
-// vibration's rotation tilts gravity into the accelerometer.
+// amplifies by 1/(2ζ), clipping holds the range, the same seed gives the same samples, the
+// vibration's rotation tilts gravity into the accelerometer, and the ride scales with the ground
+// speed.
 #include "hil/firmware_emu/mcu/imu_front_end.h"
 
 #include <algorithm>
@@ -115,6 +116,55 @@ TEST(ImuFrontEndTest, RideVibrationHasThePsdAsked) {
   }
   const double bin_hz = 1000.0 / static_cast<double>(z.size());
   EXPECT_NEAR(p / 11.0 / bin_hz / 0.01, 1.0, 0.6);  // a single periodogram bin scatters by ~100 %
+}
+
+// z specific force minus 1 g of `n` samples at 1 kHz output, the vehicle at speed_mps(k).
+template <typename Speed>
+std::vector<double> RecordZAtSpeed(const RoughImuSpec& s, std::size_t n, Speed speed_mps) {
+  ImuFrontEnd fe(s, Wide(450), 5);
+  std::vector<double> z;
+  const Eigen::Vector3d g(0, 0, 9.80665);
+  for (std::size_t k = 0; k < n; ++k) {
+    Eigen::Vector3d f, w;
+    fe.SetGroundSpeed(speed_mps(k));
+    fe.Advance(TimeFromSeconds(static_cast<double>(k) / 1000.0), g, Eigen::Vector3d::Zero(), f, w);
+    z.push_back(f[2] - 9.80665);
+  }
+  return z;
+}
+
+double SumOfSquares(const std::vector<double>& x, std::size_t from = 0) {
+  double ss = 0;
+  for (std::size_t k = from; k < x.size(); ++k) ss += x[k] * x[k];
+  return ss;
+}
+
+// The ride comes from the ground (ISO 8608 terrain: acceleration PSD ∝ speed): twice the
+// reference speed doubles its power, a standing vehicle has none, and a vehicle that stops
+// rings down to nothing. Without a reference speed the ride ignores the speed.
+TEST(ImuFrontEndTest, TheRideGrowsWithTheGroundSpeedAndStopsWithTheVehicle) {
+  RoughImuSpec s;
+  s.internal_rate_hz = 1000;
+  RideBand b;
+  b.f_low_hz = 2;
+  b.f_high_hz = 40;
+  b.accel_psd_mps2_sq_per_hz = Eigen::Vector3d(0, 0, 0.01);
+  s.ride = {b};
+  s.ride_reference_speed_mps = 1.0;
+  const std::size_t n = 20000;
+  const auto at_ref = RecordZAtSpeed(s, n, [](std::size_t) { return 1.0; });
+  const auto at_twice = RecordZAtSpeed(s, n, [](std::size_t) { return 2.0; });
+  const auto reversing = RecordZAtSpeed(s, n, [](std::size_t) { return -1.0; });
+  const auto standing = RecordZAtSpeed(s, n, [](std::size_t) { return 0.0; });
+  const auto stopping = RecordZAtSpeed(s, n, [](std::size_t k) { return k < 5000 ? 1.0 : 0.0; });
+  ASSERT_GT(SumOfSquares(at_ref), 100.0);  // 0.62 m/s² r.m.s. over 20 000 samples
+  EXPECT_NEAR(SumOfSquares(at_twice) / SumOfSquares(at_ref), 2.0, 1e-9);
+  EXPECT_EQ(reversing, at_ref);
+  EXPECT_EQ(SumOfSquares(standing), 0.0);
+  EXPECT_GT(SumOfSquares(stopping), 1.0);
+  EXPECT_LT(SumOfSquares(stopping, 7000), 1e-6);  // 2 s after the stop: rung down
+  s.ride_reference_speed_mps = 0;
+  EXPECT_EQ(RecordZAtSpeed(s, n, [](std::size_t) { return 0.0; }), at_ref);
 }
 
 // A roll oscillation of the board (a ride band on the x gyro only, no translation) tilts gravity

@@ -144,6 +144,11 @@ inline constexpr ScenarioKey kRough[] = {
      "sinusoids at order × RPM / 60 (mcu.rough.engine_orders[]); a list replaces the profile's"},
     {"ride", kList, "", "none (the field profile's)", 0, 0,
      "bands of broadband ride vibration (mcu.rough.ride[])"},
+    {"ride_reference_speed_mps", kNumber, "m/s", "0 (the field profile's)", 0, 100,
+     "forward speed at which the ride bands' PSDs hold; each PSD scales with |speed| / this "
+     "(ISO 8608 terrain, waviness 2: the acceleration PSD grows with speed), so a standing "
+     "vehicle has no ride; 0: the PSDs at any speed",
+     kNoChoices, kAnyRange, kProfileSource},
     {"mount", kMapping, "", "rigid (the field profile's)", 0, 0,
      "the board mount's resonance (mcu.rough.mount)"},
     {"temperature_profile", kList, "", "none: mcu.temperature", 0, 0,

@@ -207,6 +207,7 @@ void ReadMcuRough(const YamlReader& y, mcu::McuConfig& c) {
   if (auto p = r.OptionalChild("rpm")) s.rpm_profile = ReadProfile<kRpmPoint>(*p);
   if (auto o = r.OptionalChild("engine_orders")) ReadOrders(*o, s.engine_orders);
   if (auto b = r.OptionalChild("ride")) ReadRide(*b, s.ride);
+  s.ride_reference_speed_mps = r.Number("ride_reference_speed_mps", s.ride_reference_speed_mps);
   if (auto m = r.OptionalChild("mount")) ReadMount(*m, s.mount);
   if (auto p = r.OptionalChild("temperature_profile"))
     s.temperature_profile = ReadProfile<kTemperaturePoint>(*p);

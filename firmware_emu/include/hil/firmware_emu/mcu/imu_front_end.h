@@ -50,6 +50,9 @@ class ImuFrontEnd {
   /// at `t`. The first call settles the filters on its input (no start-up transient).
   void Advance(Time t, const Eigen::Vector3d& f_I_mps2, const Eigen::Vector3d& w_I_radps,
                Eigen::Vector3d& f_out, Eigen::Vector3d& w_out);
+  /// The vehicle's forward speed for the next Advance (the ride scales with it; see
+  /// RoughImuSpec::ride_reference_speed_mps).
+  void SetGroundSpeed(double speed_mps) { vibration_.SetGroundSpeed(speed_mps); }
 
  private:
   RoughImuSpec spec_;

@@ -71,6 +71,12 @@ struct RoughImuSpec {
   std::vector<ProfilePoint> rpm_profile;  ///< crank speed, RPM
   std::vector<EngineOrder> engine_orders;
   std::vector<RideBand> ride;
+  /// Forward speed at which the ride bands' PSDs hold, m/s. The ride comes from the ground: a
+  /// terrain whose elevation PSD falls as the spatial frequency n^-2 (ISO 8608's road/terrain
+  /// classes, waviness w = 2) excites a vehicle at speed v with a temporal acceleration PSD
+  /// ∝ v at every frequency, so each band's PSD is scaled by |v| / this speed (its r.m.s. by the
+  /// square root) and a standing vehicle has no ride. 0: the PSDs hold at any speed.
+  double ride_reference_speed_mps = 0;
   MountResonance mount;
   std::vector<ProfilePoint> temperature_profile;  ///< board temperature, °C (replaces the ramp)
   TimeTagSpec time_tag;

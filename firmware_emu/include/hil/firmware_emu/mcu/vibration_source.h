@@ -33,6 +33,9 @@ class VibrationSource {
   /// Sets the crank speed and the step for the following steps (held until the next call); the
   /// order phasors are recomputed exactly from the crank angle here, and rotated per step.
   void SetRpm(double rpm, double dt_s);
+  /// Sets the vehicle's forward speed for the following steps: the ride's PSD scales with
+  /// |speed| / RoughImuSpec::ride_reference_speed_mps (when that is > 0).
+  void SetGroundSpeed(double speed_mps);
   /// Advances by one step and returns the vibration at its end.
   void Step(Eigen::Vector3d& f_I_mps2, Eigen::Vector3d& w_I_radps);
   /// Crank angle travelled so far, rad.
@@ -58,6 +61,8 @@ class VibrationSource {
   std::vector<Order> orders_;
   std::vector<Band> bands_;
   int ride_decimation_ = 1;  ///< internal steps per ride sample
+  double ride_reference_speed_mps_ = 0;
+  double ride_drive_scale_ = 1;  ///< √(|v| / v_ref): the white drive's factor at this speed
   int ride_phase_ = 0;
   Eigen::Vector3d ride_f_prev_ = Eigen::Vector3d::Zero(), ride_f_next_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d ride_w_prev_ = Eigen::Vector3d::Zero(), ride_w_next_ = Eigen::Vector3d::Zero();
