@@ -19,6 +19,15 @@ double Nis(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Matr
   return d.dot(llt.solve(d));
 }
 
+// the log-likelihood of a zero-mean Gaussian with covariance C at x, less its constant;
+// −infinity when C is not positive definite
+double LogLikelihood(const Eigen::Vector3d& x, const Eigen::Matrix3d& C) {
+  const Eigen::LLT<Eigen::Matrix3d> llt(C);
+  if (llt.info() != Eigen::Success) return -std::numeric_limits<double>::infinity();
+  const Eigen::Matrix3d L = llt.matrixL();
+  return -0.5 * x.dot(llt.solve(x)) - L.diagonal().array().log().sum();
+}
+
 }  // namespace
 
 int RtkFixFrames::Match(const PositionInnovation& first_fix) const {
@@ -53,8 +62,13 @@ int RtkFixFrames::FreeSlot() const {
 RtkFixFrames::Decision RtkFixFrames::Judge(const PositionInnovation& first_fix) {
   ++episodes_;
   current_ = -1;
+  const bool first = filter_episodes_ == 0;
+  // the filter follows no frame yet: its estimate is the float solution's
+  if (first)
+    anchor_ = PositionInnovation{Eigen::Vector3d::Zero(), Eigen::Matrix3d::Zero(), 0, true};
   if (!first_fix.valid || first_fix.nis <= same_frame_nis_) {
     ++filter_episodes_;
+    if (first) anchor_ = first_fix;  // the filter goes over to the episode's frame
     return {};
   }
   int k = Match(first_fix);
@@ -70,8 +84,17 @@ RtkFixFrames::Decision RtkFixFrames::Judge(const PositionInnovation& first_fix) 
     ++f.episodes;
     f.last_episode = episodes_;
   }
-  if (others_[k].episodes > filter_episodes_) return SwitchTo(k);
+  const int seen = others_[k].episodes;
+  if (seen > filter_episodes_ || (seen == filter_episodes_ && FloatFavours(k))) return SwitchTo(k);
   return OtherFrame(k);
+}
+
+bool RtkFixFrames::FloatFavours(int k) const {
+  if (!anchor_.valid) return false;
+  // each frame's offset from the float solution the filter held before its first episode, as
+  // log-likelihoods under each frame's covariance
+  return LogLikelihood(anchor_.nu_m + others_[k].offset_N_m, anchor_.S_m2 + others_[k].cov_m2) >
+         LogLikelihood(anchor_.nu_m, anchor_.S_m2);
 }
 
 RtkFixFrames::Decision RtkFixFrames::OtherFrame(int k) {
@@ -93,6 +116,8 @@ RtkFixFrames::Decision RtkFixFrames::SwitchTo(int k) {
     others_[j].cov_m2 += to.cov_m2;
   }
   filter_episodes_ = to.episodes;
+  anchor_.nu_m += to.offset_N_m;
+  anchor_.S_m2 += to.cov_m2;
   current_ = -1;
   ++switches_;
   Decision d;
@@ -107,8 +132,9 @@ RtkFixFrames::Decision RtkFixFrames::AdoptCurrent() {
   return SwitchTo(current_);
 }
 
-void RtkFixFrames::Restart() {
+void RtkFixFrames::Restart(const PositionInnovation& first_fix) {
   others_.fill(Frame{});
+  anchor_ = first_fix;
   filter_episodes_ = 1;
   current_ = -1;
   ++episodes_;

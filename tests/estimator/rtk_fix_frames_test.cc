@@ -65,6 +65,22 @@ TEST(RtkFixFrames, WrongEpisodesOfTheirOwnNeverOutvoteARightFilter) {
   EXPECT_EQ(f.switches(), 0U);
 }
 
+TEST(RtkFixFrames, ATieGoesToTheFrameNearerTheFloatSolution) {
+  RtkFixFrames f;
+  // the first episode, 0.25 m from the float solution the filter held (σ 0.1 m): followed
+  PositionInnovation first = FirstFix(-0.25, 0, 0);
+  first.S_m2 = Eigen::Matrix3d::Identity() * 0.1 * 0.1;
+  first.nis = 0.25 * 0.25 / (0.1 * 0.1);
+  EXPECT_EQ(f.Judge(first).verdict, Verdict::kFilterFrame);
+  // one episode against one: the second lies where the float solution was, the filter moves
+  const RtkFixFrames::Decision d = f.Judge(FirstFix(0.25, 0, 0));
+  EXPECT_EQ(d.verdict, Verdict::kSwitch);
+  // one the float solution does not favour keeps the filter's frame
+  RtkFixFrames g;
+  g.Judge(first);
+  EXPECT_EQ(g.Judge(FirstFix(-0.25, 0, 0)).verdict, Verdict::kOtherFrame);
+}
+
 TEST(RtkFixFrames, AFirstEpisodeAgainstAFilterThatSawNoneIsFollowed) {
   RtkFixFrames f;
   const RtkFixFrames::Decision d = f.Judge(FirstFix(0.4, 0, 0));

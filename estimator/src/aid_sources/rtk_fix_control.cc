@@ -38,7 +38,7 @@ std::optional<UpdateResult> Navigator::ControlRtkFix(const GnssSample& g,
   if (rtk_check_.BeginsEpisode(g.t, g.fix_quality)) {
     if (!rtk_check_.FilterAided(g.t, last_gnss_fused_t_)) {
       // a filter that coasted is no reference: the episode is taken as it comes
-      rtk_frames_.Restart();
+      rtk_frames_.Restart(ekf_.PositionInnovationOf(p_antenna_N_m, g.pos_std_enu_m));
       RecordRtkFrames();
       return std::nullopt;
     }

@@ -17,7 +17,9 @@
 /// first fix disagrees with it is kept as a hypothesis, a frame with its offset from the filter's
 /// and the number of episodes that lay in it. The filter moves to another frame when that frame
 /// has been seen in more episodes than the filter's own: the filter had followed a wrong episode.
-/// Ties keep the filter's frame. Fixed size, no allocation.
+/// A tie is decided by the estimate the filter held before it followed any frame (the float
+/// solution's, decimetres): the frame nearer to it in its covariance's likelihood. Fixed size, no
+/// allocation.
 #include <array>
 #include <cstdint>
 
@@ -46,9 +48,10 @@ class RtkFixFrames {
 
   /// An episode's first fix: its innovation against the filter aided until just before.
   Decision Judge(const PositionInnovation& first_fix);
-  /// The filter coasted or was reset onto a fix: its frame is that of the episode beginning now,
-  /// and the other frames, measured from a filter that has moved since, are forgotten.
-  void Restart();
+  /// The filter coasted (`first_fix`: the episode's first fix against it) or was reset onto a fix
+  /// (an invalid one): its frame is that of the episode beginning now, and the other frames,
+  /// measured from a filter that has moved since, are forgotten.
+  void Restart(const PositionInnovation& first_fix = {});
   /// The current episode, in another frame, has been held long enough to be believed: the filter
   /// moves to its frame (kSwitch; kFilterFrame when the current episode is in the filter's).
   Decision AdoptCurrent();
@@ -71,11 +74,15 @@ class RtkFixFrames {
   int Match(const PositionInnovation& first_fix) const;
   int FreeSlot() const;
   Decision SwitchTo(int k);
+  bool FloatFavours(int k) const;
   Decision OtherFrame(int k);
 
   double same_frame_nis_ = 16.27;
   std::array<Frame, kMaxOtherFrames> others_{};
   int filter_episodes_ = 0;
+  // the filter's frame less the estimate it held before following any frame (the float
+  // solution's, or the INS's after coasting), and its covariance: a tie's evidence
+  PositionInnovation anchor_{};
   int current_ = -1;  // the other frame the current episode lies in, −1: the filter's
   std::uint64_t episodes_ = 0, switches_ = 0;
 };
