@@ -108,6 +108,9 @@ void AppendConsistency(std::string& s, const NavigatorStats& n) {
   Add(s, "stationary_periods", n.stationary_periods);
   Add(s, "rtk_suspect_episodes", n.rtk_suspect_episodes);
   Add(s, "rtk_suspect_fixes", n.rtk_suspect_fixes);
+  Add(s, "rtk_frame_switches", n.rtk_frame_switches);
+  Add(s, "rtk_frame_episodes", n.rtk_frame_episodes);
+  Add(s, "rtk_other_frames", n.rtk_other_frames);
   s += n.stationary ? ",\"stationary\":true" : ",\"stationary\":false";
   // present once the accelerometer was found far outside its noise model (the filter then
   // leans on the GNSS; the line stays short otherwise)

@@ -377,6 +377,32 @@ UpdateResult ErrorStateEkf::UpdatePosition(const Eigen::Vector3d& p_antenna_N_m,
   return r;
 }
 
+PositionInnovation ErrorStateEkf::PositionInnovationOf(const Eigen::Vector3d& p_antenna_N_m,
+                                                       const Eigen::Vector3d& std_m) const {
+  PositionInnovation r;
+  if (!AllFinite(p_antenna_N_m) || !AllFinite(std_m)) return r;
+  const Eigen::Vector3d pred = AntennaPosition() +
+                               (params_.gnss_error_tau_s > 0 ? e_gnss_ : Eigen::Vector3d::Zero()) +
+                               AntennaVelocity() * time_residual_s_;
+  const Eigen::Matrix<double, 3, kNumStates> H = PositionJacobian();
+  const Eigen::Matrix<double, kNumStates, 3> PHt = P_.lazyProduct(H.transpose());
+  r.S_m2 = H * PHt;
+  for (int i = 0; i < 3; ++i)
+    r.S_m2(i, i) += std::pow(std::max(std_m[i], params_.gnss_pos_std_floor_m), 2);
+  r.nu_m = p_antenna_N_m - pred;
+  const Eigen::LDLT<Eigen::Matrix3d> ldlt(r.S_m2);
+  if (ldlt.info() != Eigen::Success) return r;
+  r.nis = r.nu_m.dot(ldlt.solve(r.nu_m));
+  r.valid = std::isfinite(r.nis);
+  return r;
+}
+
+void ErrorStateEkf::ShiftPosition(const Eigen::Vector3d& dp_N_m, const Eigen::Vector3d& var_m2) {
+  if (!AllFinite(dp_N_m) || !AllFinite(var_m2)) return;
+  state_.p_N_m += dp_N_m;
+  P_.block<3, 3>(kPos, kPos).diagonal() += var_m2.cwiseMax(0.0);
+}
+
 UpdateResult ErrorStateEkf::UpdateVelocity(const Eigen::Vector3d& v_antenna_N_mps,
                                            const Eigen::Vector3d& std_mps) {
   if (!AllFinite(v_antenna_N_mps) || !AllFinite(std_mps)) return {};

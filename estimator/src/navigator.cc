@@ -57,6 +57,7 @@ Navigator::Navigator(const NavigatorParams& params)
       step_(params.robust.step),
       imu_lag_(params.imu_lag),
       rtk_check_(params.rtk_fix),
+      rtk_frames_(params.rtk_fix.same_frame_nis),
       imu_check_(params.imu_usability, params.ekf.accel_noise_mps2_rthz,
                  params.ekf.accel_bias_rw_mps3_rthz),
       fallback_(FallbackVehicleParams(params)),
@@ -384,6 +385,9 @@ void Navigator::ResetToFix(const GnssSample& g, const Eigen::Vector3d& p_antenna
                              pos_std_N_m, vel_std);
   ekf_.ResetSetSpeed(vel_std);
   ++stats_.gnss_resets;
+  rtk_frames_.Restart();  // the filter is on this fix's frame now
+  rtk_check_.EndSuspicion();
+  RecordRtkFrames();
   first_rejected_t_.reset();
   glitch_since_.reset();
   step_.Remember(g.t, p_antenna_N_m, g.pos_std_enu_m, ekf_.AntennaPosition());

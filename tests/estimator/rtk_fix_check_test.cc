@@ -1,4 +1,4 @@
-// RtkFixCheck (rtk_fix_check.h): which fixes of a new RTK fixed episode are suspect.
+// RtkFixCheck (rtk_fix_check.h): RTK fix episodes, and the suspect one's hold.
 #include "hil/estimator/rtk_fix_check.h"
 
 #include <gtest/gtest.h>
@@ -10,64 +10,55 @@ constexpr int kFloat = 5, kFixed = 4;
 constexpr GpsTime kT0 = GpsTimeFromNs(1'400'000'000LL * 1'000'000'000LL);
 GpsTime At(double t_s) { return kT0 + Nanoseconds(static_cast<long long>(t_s * 1e9)); }
 
-// float fixes at 10 Hz until 10 s, all accepted; returns the time of the last one
-GpsTime FloatPeriod(RtkFixCheck& c) {
-  for (int i = 0; i <= 100; ++i) EXPECT_FALSE(c.Observe(At(i * 0.1), kFloat, true, At(i * 0.1)));
-  return At(10.0);
+// float fixes at 10 Hz until 10 s
+void FloatPeriod(RtkFixCheck& c) {
+  for (int i = 0; i <= 100; ++i) EXPECT_FALSE(c.BeginsEpisode(At(i * 0.1), kFloat));
 }
 
-TEST(RtkFixCheck, NewFixRejectedByAnAidedFilterIsSuspectUntilAFixPasses) {
-  RtkFixCheck c;
-  const GpsTime last = FloatPeriod(c);
-  EXPECT_TRUE(c.Observe(At(10.1), kFixed, false, last));
-  EXPECT_TRUE(c.suspect_began());
-  for (int i = 2; i < 300; ++i) EXPECT_TRUE(c.Observe(At(10.0 + i * 0.1), kFixed, false, last));
-  EXPECT_FALSE(c.suspect_began());
-  // the receiver re-fixes right: the raw fix passes the gate, the episode is over
-  EXPECT_FALSE(c.Observe(At(40.0), kFixed, true, last));
-  EXPECT_FALSE(c.suspect());
-  EXPECT_FALSE(c.Observe(At(40.1), kFixed, false, At(40.0)));
-  EXPECT_EQ(c.suspect_episodes(), 1U);
-  EXPECT_EQ(c.suspect_fixes(), 299U);
-}
-
-TEST(RtkFixCheck, AFilterThatCoastedIsNotTrustedOverANewFix) {
+TEST(RtkFixCheck, AnEpisodeBeginsWithAFixedSolutionAfterAnythingElseOrAGap) {
   RtkFixCheck c;
   FloatPeriod(c);
-  // the float fixes were rejected for 2 s: the filter is the one in doubt
-  EXPECT_FALSE(c.Observe(At(10.1), kFixed, false, At(8.0)));
-  EXPECT_FALSE(c.Observe(At(10.2), kFixed, false, At(8.0)));
-  EXPECT_EQ(c.suspect_episodes(), 0U);
+  EXPECT_TRUE(c.BeginsEpisode(At(10.1), kFixed));
+  for (int i = 2; i < 30; ++i) EXPECT_FALSE(c.BeginsEpisode(At(10.0 + i * 0.1), kFixed));
+  // 2 s without fixes (longer than trusted_within): a new episode
+  EXPECT_TRUE(c.BeginsEpisode(At(15.0), kFixed));
+  EXPECT_FALSE(c.BeginsEpisode(At(15.1), kFloat));
+  EXPECT_TRUE(c.BeginsEpisode(At(15.2), kFixed));
 }
 
-TEST(RtkFixCheck, AnEpisodeWhoseFirstFixPassedIsNeverSuspect) {
-  RtkFixCheck c;
-  FloatPeriod(c);
-  EXPECT_FALSE(c.Observe(At(10.1), kFixed, true, At(10.0)));
-  EXPECT_FALSE(c.Observe(At(10.2), kFixed, false, At(10.1)));
-  // a float period and a new episode are judged afresh
-  EXPECT_FALSE(c.Observe(At(10.3), kFloat, true, At(10.1)));
-  EXPECT_TRUE(c.Observe(At(10.4), kFixed, false, At(10.3)));
-}
-
-TEST(RtkFixCheck, HeldLongerThanTheHoldItIsBelieved) {
+TEST(RtkFixCheck, ASuspectEpisodeEndsWithTheQualityOrItsHold) {
   RtkFixCheckParams p;
   p.hold = Nanoseconds(5'000'000'000);
   RtkFixCheck c(p);
-  const GpsTime last = FloatPeriod(c);
-  EXPECT_TRUE(c.Observe(At(10.1), kFixed, false, last));
-  for (int i = 2; i < 50; ++i) EXPECT_TRUE(c.Observe(At(10.0 + i * 0.1), kFixed, false, last));
-  EXPECT_FALSE(c.Observe(At(15.1), kFixed, false, last));
-  EXPECT_FALSE(c.Observe(At(15.2), kFixed, false, last));
+  FloatPeriod(c);
+  ASSERT_TRUE(c.BeginsEpisode(At(10.1), kFixed));
+  c.BeginSuspect(At(10.1));
+  EXPECT_TRUE(c.suspect());
+  EXPECT_FALSE(c.BeginsEpisode(At(10.2), kFixed));
+  c.CountSuspectFix();
+  EXPECT_FALSE(c.HoldOver(At(15.0)));
+  EXPECT_TRUE(c.HoldOver(At(15.1)));
+  EXPECT_TRUE(c.suspect());
+  // the receiver drops to float: the suspicion is over
+  EXPECT_FALSE(c.BeginsEpisode(At(15.2), kFloat));
+  EXPECT_FALSE(c.suspect());
+  EXPECT_EQ(c.suspect_episodes(), 1U);
+  EXPECT_EQ(c.suspect_fixes(), 2U);
 }
 
-TEST(RtkFixCheck, DisabledJudgesNothing) {
+TEST(RtkFixCheck, TheFilterIsAidedWhenItAcceptedAFixJustBefore) {
+  RtkFixCheck c;
+  EXPECT_TRUE(c.FilterAided(At(10.1), At(10.0)));
+  EXPECT_FALSE(c.FilterAided(At(10.1), At(8.0)));
+  EXPECT_FALSE(c.FilterAided(At(10.1), std::nullopt));
+}
+
+TEST(RtkFixCheck, DisabledBeginsNoEpisode) {
   RtkFixCheckParams p;
   p.enabled = false;
   RtkFixCheck c(p);
-  const GpsTime last = FloatPeriod(c);
-  EXPECT_FALSE(c.Observe(At(10.1), kFixed, false, last));
-  EXPECT_EQ(c.suspect_episodes(), 0U);
+  FloatPeriod(c);
+  EXPECT_FALSE(c.BeginsEpisode(At(10.1), kFixed));
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // and robustness".
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "hil/estimator/navigator.h"
 
@@ -57,8 +58,9 @@ UpdateResult Navigator::ControlGnssPosition(const GnssSample& g, const Eigen::Ve
   last_fix_seen_t_ = g.t;
   const bool fades = rp.FadesToFixes();
   const bool step = fades && CheckGnssStep(g, p);
+  // an RTK fix episode's first fix is judged before it can move the filter (RtkFixFrames)
+  if (const std::optional<UpdateResult> suspect = ControlRtkFix(g, p)) return *suspect;
   UpdateResult r = ekf_.UpdatePosition(p, g.pos_std_enu_m);
-  if (RejectSuspectRtkFix(g, r, p)) return r;
   if (fades && r.dof > 0) {
     // the GNSS consistency check: a rejected step is the receiver's, not the model's
     if (glitch_since_ && (r.accepted || !InGnssGlitch(g.t))) {

@@ -256,6 +256,14 @@ struct UpdateResult {
   double excess = 0;
 };
 
+/// A position fix's innovation ν and its covariance S = H P Hᵀ + R; nis = νᵀ S⁻¹ ν.
+struct PositionInnovation {
+  Eigen::Vector3d nu_m = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d S_m2 = Eigen::Matrix3d::Zero();
+  double nis = 0;
+  bool valid = false;
+};
+
 /// The error-state EKF. No allocation after construction.
 class ErrorStateEkf {
  public:
@@ -270,6 +278,13 @@ class ErrorStateEkf {
                const Eigen::Vector3d& delta_velocity_B_mps, double dt_s);
   /// GNSS antenna position in N with per-axis σ.
   UpdateResult UpdatePosition(const Eigen::Vector3d& p_antenna_N_m, const Eigen::Vector3d& std_m);
+  /// A GNSS antenna position's innovation against the prediction (as UpdatePosition forms it) and
+  /// its covariance H P Hᵀ + R, without an update.
+  PositionInnovation PositionInnovationOf(const Eigen::Vector3d& p_antenna_N_m,
+                                          const Eigen::Vector3d& std_m) const;
+  /// Moves the nominal position by `dp_N_m` and adds `var_m2` per axis to its variance (the
+  /// filter had followed a wrong RTK fix episode: RtkFixFrames).
+  void ShiftPosition(const Eigen::Vector3d& dp_N_m, const Eigen::Vector3d& var_m2);
   /// GNSS antenna velocity in N with per-axis σ.
   UpdateResult UpdateVelocity(const Eigen::Vector3d& v_antenna_N_mps,
                               const Eigen::Vector3d& std_mps);

@@ -48,6 +48,7 @@
 #include "hil/estimator/planar_filter.h"
 #include "hil/estimator/ring_buffer.h"
 #include "hil/estimator/rtk_fix_check.h"
+#include "hil/estimator/rtk_fix_frames.h"
 #include "hil/estimator/samples.h"
 #include "hil/estimator/stationary_detector.h"
 #include "hil/estimator/vehicle_model_filter.h"
@@ -237,7 +238,10 @@ struct NavigatorStats {
   double accel_noise_scale = 1.0;
   std::uint64_t accel_noise_raises = 0;    ///< windows that raised it
   std::uint64_t rtk_suspect_episodes = 0;  ///< RTK fix episodes judged a probable wrong fix
-  std::uint64_t rtk_suspect_fixes = 0;     ///< fixes of those episodes, not fused (RtkFixCheck)
+  std::uint64_t rtk_suspect_fixes = 0;     ///< fixes of those episodes, fused less their offset
+  std::uint64_t rtk_frame_switches = 0;    ///< the filter moved to another frame (RtkFixFrames)
+  std::uint64_t rtk_frame_episodes = 0;    ///< episodes seen in the filter's frame
+  std::uint64_t rtk_other_frames = 0;      ///< other frames held as hypotheses now
   /// the IMU judged unusable (ImuUsabilityCheck): the solution is the vehicle-model fallback
   bool imu_unusable = false;
   double imu_consistency_stat = 0;       ///< Λ of the last test, χ²(dof) for a usable IMU
@@ -354,10 +358,23 @@ class Navigator {
   void CorrectImuTag(ImuSample& s);
   void ObserveGnssCourse(const GnssSample& g);
   void ControlZeroMotion();
-  /// A fix of a suspect RTK fix episode (RtkFixCheck): true when its position is not to be used;
-  /// its velocity is fused by FuseGnssVelocity all the same (aid_sources/rtk_fix_control.cc).
-  bool RejectSuspectRtkFix(const GnssSample& g, const UpdateResult& r,
-                           const Eigen::Vector3d& p_antenna_N_m);
+  /// Wrong RTK fixes before a fix's update (aid_sources/rtk_fix_control.cc): an episode's first
+  /// fix judged against the filter's and the other frames (RtkFixFrames; the filter moved when
+  /// another frame wins); a fix of a suspect episode fused less its frame's offset, returned as
+  /// rejected (its velocity is fused by FuseGnssVelocity all the same). nullopt: fuse it as usual.
+  std::optional<UpdateResult> ControlRtkFix(const GnssSample& g,
+                                            const Eigen::Vector3d& p_antenna_N_m);
+  UpdateResult FuseSuspectRtkFix(const GnssSample& g, const Eigen::Vector3d& p_antenna_N_m);
+  /// An episode's first fix (or a suspect episode's fix after its offset changed) into
+  /// RtkFixFrames: the filter moved, or the episode suspect, as it decides.
+  void JudgeRtkEpisode(const GnssSample& g, const PositionInnovation& first_fix);
+  /// A fix's NIS against the frame of the current episode (its offset from the filter's).
+  double NisFromRtkFrame(const PositionInnovation& raw) const;
+  static UpdateResult RejectedFix();
+  /// fixes of a suspect episode in a row out of its frame that make it a new episode
+  static constexpr int kRtkOffFrameFixes = 3;
+  void MoveToRtkFrame(const RtkFixFrames::Decision& d);
+  void RecordRtkFrames();
   /// The fix's velocity (when it has one and use_gnss_velocity), recorded in its monitor.
   void FuseGnssVelocity(const GnssSample& g);
   void Record(int source, const UpdateResult& r);
@@ -411,12 +428,12 @@ class Navigator {
   Nanoseconds imu_lag_applied_{0};          // the lag taken off the IMU tags now
   Nanoseconds gyro_states_lag_{0};          // the lag applied when the gyro triad's states started
   std::optional<GpsTime> glitch_since_;     // the current receiver glitch's first fix
-  RtkFixCheck rtk_check_;                   // wrong RTK fixes: a new episode against the INS
-  Eigen::Vector3d rtk_offset_N_m_ = Eigen::Vector3d::Zero();  // a suspect episode's offset
-  Eigen::Vector3d rtk_offset_std_m_ = Eigen::Vector3d::Zero();
-  ImuUsabilityCheck imu_check_;  // is the IMU usable at all?
-  VehicleModelFilter fallback_;  // GNSS + vehicle model, the solution when it is not
-  GnssVelocityNoise vel_noise_;  // the fix velocity's σ from its increments
+  RtkFixCheck rtk_check_;                   // wrong RTK fixes: fix episodes, the suspect one
+  RtkFixFrames rtk_frames_;                 // the filter's frame of episodes and the others
+  int rtk_off_frame_fixes_ = 0;             // the suspect episode's fixes in a row out of its frame
+  ImuUsabilityCheck imu_check_;             // is the IMU usable at all?
+  VehicleModelFilter fallback_;             // GNSS + vehicle model, the solution when it is not
+  GnssVelocityNoise vel_noise_;             // the fix velocity's σ from its increments
   // the last fix velocity (GnssVelocityNoise): its time, value and lever-arm term, and the INS's
   // own velocity increment since
   std::optional<GpsTime> last_vel_fix_t_;
