@@ -19,8 +19,11 @@ bool SpeedDevState(const EkfParams& p) { return p.speed_rw_mps_rthz > 0 && p.spe
 //   δv̇ = −Ĉ (ŷ δk_ay + x̂ δm_xy + ẑ δm_zy) f̄_y (f̄_y the low-passed lateral force);
 // the couplings' and the lateral-force columns only while the turns teach them
 // (ErrorStateEkf::TurnStatesLearnable).
+// `learnable` false: only Gk's first column (δk_z) may be non-zero, so the products take it alone
+// (the zero columns added exact zeros)
 struct TurnColumns {
   Eigen::Matrix3d Gk = Eigen::Matrix3d::Zero(), Ga = Eigen::Matrix3d::Zero();
+  bool learnable = false;
 };
 TurnColumns TurnStateColumns(const Eigen::Matrix3d& C, double w_z_radps, double f_y_mps2,
                              bool attitude_hold, bool learnable, double dt) {
@@ -31,6 +34,7 @@ TurnColumns TurnStateColumns(const Eigen::Matrix3d& C, double w_z_radps, double 
     t.Gk.rightCols<2>().setZero();
     return t;
   }
+  t.learnable = true;
   t.Ga << C.col(1), C.col(0), C.col(2);
   t.Ga *= -f_y_mps2 * dt;
   return t;
@@ -206,10 +210,12 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& delta_angle_B_rad,
         p.speed_dev_std_mps * p.speed_dev_std_mps * (1.0 - dev_decay * dev_decay);
   e_gnss_ *= gm_decay;
   speed_dev_ *= dev_decay;
-  // PropagateCovariance made the off-diagonal blocks exact transposes: only the two diagonal
-  // blocks need ½ (P + Pᵀ) (the same values a full Symmetrize gives)
+  // PropagateCovariance made the off-diagonal blocks exact transposes, and the block of δb_a …
+  // stays exactly symmetric (P is on entry, every operation on P keeps it so: ErrorStateEkfTest,
+  // CovarianceStaysExactlySymmetric): a decay scales an entry (i, j) and its mirror by the same
+  // factors in the same order, the noise goes on the diagonal. Only the block of δp, δv, φ (their
+  // products) needs ½ (P + Pᵀ): the same values a full Symmetrize gives.
   SymmetrizeBlock(0, kAccelBias);
-  SymmetrizeBlock(kAccelBias, AugmentedStatesOn() ? kNumStates : kNumClassicStates);
   RepairDiagonal();
 }
 
@@ -262,10 +268,15 @@ void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, d
       TurnStateColumns(C, w_B_.z(), f_y_lp_B_mps2_.y(), attitude_hold_, TurnStatesLearnable(), dt);
   const Eigen::Matrix3d& Gk = turn.Gk;
   const Eigen::Matrix3d& Ga = turn.Ga;
+  const bool learnable = turn.learnable;
   Cols3 Ma = P.template middleCols<3>(kAtt) * Dt + P.template middleCols<3>(kGyroBias) * Ggt;
   if constexpr (N == kNumStates) {
-    Ma += P.template middleCols<3>(kGyroScaleZ) * Gk.transpose();
-    Mv += P.template middleCols<3>(kAccelScaleY) * Ga.transpose();
+    if (learnable) {
+      Ma += P.template middleCols<3>(kGyroScaleZ) * Gk.transpose();
+      Mv += P.template middleCols<3>(kAccelScaleY) * Ga.transpose();
+    } else {
+      Ma += P.col(kGyroScaleZ) * Gk.col(0).transpose();
+    }
   }
   // Φ's diagonal on the tail: P_tail ← Φ_tail P_tail Φ_tailᵀ. Its only entries other than 1 are
   // the decays of e and δd, so only their rows and columns of the tail block are scaled.
@@ -291,8 +302,12 @@ void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, d
     R.template middleRows<3>(kAtt) = Dt.transpose() * M.template middleRows<3>(kAtt) +
                                      Ggt.transpose() * M.template middleRows<3>(kGyroBias);
     if constexpr (N == kNumStates) {
-      R.template middleRows<3>(kAtt) += Gk * M.template middleRows<3>(kGyroScaleZ);
-      R.template middleRows<3>(kVel) += Ga * M.template middleRows<3>(kAccelScaleY);
+      if (learnable) {
+        R.template middleRows<3>(kAtt) += Gk * M.template middleRows<3>(kGyroScaleZ);
+        R.template middleRows<3>(kVel) += Ga * M.template middleRows<3>(kAccelScaleY);
+      } else {
+        R.template middleRows<3>(kAtt) += Gk.col(0) * M.row(kGyroScaleZ);
+      }
     }
     R.template bottomRows<kTail>() = tail.asDiagonal() * M.template bottomRows<kTail>();
     return R;
