@@ -39,6 +39,71 @@ TurnColumns TurnStateColumns(const Eigen::Matrix3d& C, double w_z_radps, double 
   t.Ga *= -f_y_mps2 * dt;
   return t;
 }
+
+// A column of an N × M product's rows [first, first + len): Σ_k X(i, k)·y(k), k ascending
+// (((x₀y₀ + x₁y₁) + x₂y₂) …), the order of Eigen's vectorised coefficient-wise product.
+template <int N>
+using Segment = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, N, 1>;
+template <int N, int M, typename Row>
+Segment<N> SequentialSum(const Eigen::Matrix<double, N, M>& X, const Row& y, int first,
+                            int len) {
+  Segment<N> s = X.col(0).segment(first, len) * y(0);
+  for (int k = 1; k < M; ++k) s += X.col(k).segment(first, len) * y(k);
+  return s;
+}
+// The same in the order of Eigen's scalar reduction of a coefficient (halves: x₀y₀ + (x₁y₁ + x₂y₂)
+// for three terms), which the dense update's coefficient-wise (KS)Kᵀ took.
+template <int N, int M, typename Row>
+Segment<N> HalvingSum(const Eigen::Matrix<double, N, M>& X, const Row& y, int first, int len) {
+  static_assert(M >= 1 && M <= 3, "the measurement updates have one to three rows");
+  const auto term = [&](int k) { return X.col(k).segment(first, len) * y(k); };
+  if constexpr (M == 1) {
+    return term(0);
+  } else if constexpr (M == 2) {
+    return term(0) + term(1);
+  } else {
+    return term(0) + (term(1) + term(2));
+  }
+}
+
+// P Hᵀ over H's non-zero columns alone (a position fix's H has 10 of 30, the NHC's 8), each sum
+// k ascending as Eigen's vectorised lazy product sums it: a zero column added exact zeros.
+template <int N, int M, typename Block>
+Eigen::Matrix<double, N, M> ProductWithTransposed(const Block& P,
+                                                  const Eigen::Matrix<double, M, N>& H) {
+  Eigen::Matrix<double, N, M> PHt = Eigen::Matrix<double, N, M>::Zero();
+  bool first = true;
+  for (int k = 0; k < N; ++k) {
+    if (H.col(k).isZero(0.0)) continue;
+    if (first) {
+      PHt = P.col(k) * H.col(k).transpose();
+    } else {
+      PHt += P.col(k) * H.col(k).transpose();
+    }
+    first = false;
+  }
+  return PHt;
+}
+
+// The Joseph update P ← P − A − Aᵀ + L, A = K (PHᵀ)ᵀ, L = (KS) Kᵀ, followed by ½ (P + Pᵀ), on
+// the lower triangle alone (mirrored), each entry the value of the dense expression and the
+// symmetrisation after it: every sum in Eigen's order, and P exactly symmetric on entry (it is:
+// ErrorStateEkfTest, CovarianceStaysExactlySymmetric), so that the dense result's entry (j, i) is
+// ((P(i, j) − A(j, i)) − A(i, j)) + L(j, i).
+template <int N, int M, typename Block>
+void JosephUpdate(Block P, const Eigen::Matrix<double, N, M>& K,
+                  const Eigen::Matrix<double, N, M>& PHt, const Eigen::Matrix<double, N, M>& KS) {
+  for (int j = 0; j < N; ++j) {
+    const int len = N - j;
+    const Segment<N> a = SequentialSum(K, PHt.row(j), j, len);   // A(i, j), i ≥ j
+    const Segment<N> at = SequentialSum(PHt, K.row(j), j, len);  // A(j, i)
+    const Segment<N> l = HalvingSum(KS, K.row(j), j, len);       // L(i, j)
+    const Segment<N> lt = HalvingSum(K, KS.row(j), j, len);      // L(j, i)
+    auto p = P.col(j).segment(j, len);
+    p = 0.5 * ((((p - a) - at) + l) + (((p - at) - a) + lt));
+    P.row(j).segment(j, len) = p.transpose();
+  }
+}
 }  // namespace
 
 void ErrorStateEkf::Initialize(const NavState& s) {
@@ -486,7 +551,7 @@ UpdateResult ErrorStateEkf::UpdateOf(const Eigen::Matrix<double, M, 1>& innovati
   auto P = P_.template topLeftCorner<N, N>();
   // lazyProduct: coefficient by coefficient; Eigen's blocked GEMM, which it picks for these
   // sizes, cost 14 k instructions per update in its set-up (callgrind)
-  const Eigen::Matrix<double, N, M> PHt = P.lazyProduct(H.transpose());
+  const Eigen::Matrix<double, N, M> PHt = ProductWithTransposed(P, H);
   const Eigen::Matrix<double, M, M> S = H * PHt + R;
   const Eigen::LDLT<Eigen::Matrix<double, M, M>> ldlt(S);
   if (ldlt.info() != Eigen::Success || !innovation.allFinite()) return r;
@@ -502,11 +567,9 @@ UpdateResult ErrorStateEkf::UpdateOf(const Eigen::Matrix<double, M, 1>& innovati
   // it is P − K(HP) − (PHᵀ)Kᵀ + K S Kᵀ for any K (S = HPHᵀ + R), taken through the rank-M factors
   // with HP = (PHᵀ)ᵀ (P is symmetric): two N × N × M products where the factored form
   // X = (I − KH)P, X − (XHᵀ)Kᵀ + (KR)Kᵀ took four (a quarter of navd's time per IMU epoch on
-  // seed 004 with 23 states went to them)
-  const Eigen::Matrix<double, N, N> KHP = K.lazyProduct(PHt.transpose());
+  // seed 004 with 23 states went to them); on the lower triangle, mirrored (JosephUpdate)
   const Eigen::Matrix<double, N, M> KS = K * S;
-  P = P - KHP - KHP.transpose() + KS.lazyProduct(K.transpose());
-  SymmetrizeBlock(0, N);
+  JosephUpdate<N, M>(P, K, PHt, KS);
   RepairDiagonal();
   InjectError(dx);
   r.accepted = true;
