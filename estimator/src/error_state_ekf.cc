@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace hil::estimator {
 
@@ -40,32 +41,6 @@ TurnColumns TurnStateColumns(const Eigen::Matrix3d& C, double w_z_radps, double 
   return t;
 }
 
-// A column of an N × M product's rows [first, first + len): Σ_k X(i, k)·y(k), k ascending
-// (((x₀y₀ + x₁y₁) + x₂y₂) …), the order of Eigen's vectorised coefficient-wise product.
-template <int N>
-using Segment = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, N, 1>;
-template <int N, int M, typename Row>
-Segment<N> SequentialSum(const Eigen::Matrix<double, N, M>& X, const Row& y, int first,
-                            int len) {
-  Segment<N> s = X.col(0).segment(first, len) * y(0);
-  for (int k = 1; k < M; ++k) s += X.col(k).segment(first, len) * y(k);
-  return s;
-}
-// The same in the order of Eigen's scalar reduction of a coefficient (halves: x₀y₀ + (x₁y₁ + x₂y₂)
-// for three terms), which the dense update's coefficient-wise (KS)Kᵀ took.
-template <int N, int M, typename Row>
-Segment<N> HalvingSum(const Eigen::Matrix<double, N, M>& X, const Row& y, int first, int len) {
-  static_assert(M >= 1 && M <= 3, "the measurement updates have one to three rows");
-  const auto term = [&](int k) { return X.col(k).segment(first, len) * y(k); };
-  if constexpr (M == 1) {
-    return term(0);
-  } else if constexpr (M == 2) {
-    return term(0) + term(1);
-  } else {
-    return term(0) + (term(1) + term(2));
-  }
-}
-
 // P Hᵀ over H's non-zero columns alone (a position fix's H has 10 of 30, the NHC's 8), each sum
 // k ascending as Eigen's vectorised lazy product sums it: a zero column added exact zeros.
 template <int N, int M, typename Block>
@@ -89,20 +64,42 @@ Eigen::Matrix<double, N, M> ProductWithTransposed(const Block& P,
 // the lower triangle alone (mirrored), each entry the value of the dense expression and the
 // symmetrisation after it: every sum in Eigen's order, and P exactly symmetric on entry (it is:
 // ErrorStateEkfTest, CovarianceStaysExactlySymmetric), so that the dense result's entry (j, i) is
-// ((P(i, j) − A(j, i)) − A(i, j)) + L(j, i).
-template <int N, int M, typename Block>
-void JosephUpdate(Block P, const Eigen::Matrix<double, N, M>& K,
+// ((P(i, j) − A(j, i)) − A(i, j)) + L(j, i). Column J's rows J … N − 1, a fixed-size segment:
+template <int N, int M, int J, typename Block>
+void JosephColumn(Block& P, const Eigen::Matrix<double, N, M>& K,
                   const Eigen::Matrix<double, N, M>& PHt, const Eigen::Matrix<double, N, M>& KS) {
-  for (int j = 0; j < N; ++j) {
-    const int len = N - j;
-    const Segment<N> a = SequentialSum(K, PHt.row(j), j, len);   // A(i, j), i ≥ j
-    const Segment<N> at = SequentialSum(PHt, K.row(j), j, len);  // A(j, i)
-    const Segment<N> l = HalvingSum(KS, K.row(j), j, len);       // L(i, j)
-    const Segment<N> lt = HalvingSum(K, KS.row(j), j, len);      // L(j, i)
-    auto p = P.col(j).segment(j, len);
-    p = 0.5 * ((((p - a) - at) + l) + (((p - at) - a) + lt));
-    P.row(j).segment(j, len) = p.transpose();
+  static_assert(M >= 1 && M <= 3, "the measurement updates have one to three rows");
+  constexpr int kLen = N - J;
+  const auto rows = [](const Eigen::Matrix<double, N, M>& X, int k) {
+    return X.col(k).template segment<kLen>(J);
+  };
+  // A(i, j) and A(j, i) as Eigen's vectorised lazy product sums them, k ascending
+  Eigen::Matrix<double, kLen, 1> a = rows(K, 0) * PHt(J, 0);
+  Eigen::Matrix<double, kLen, 1> at = rows(PHt, 0) * K(J, 0);
+  for (int k = 1; k < M; ++k) {
+    a += rows(K, k) * PHt(J, k);
+    at += rows(PHt, k) * K(J, k);
   }
+  // L(i, j) and L(j, i) as Eigen's scalar reduction of a coefficient sums them (halves:
+  // x₀ + (x₁ + x₂) for three terms), which the dense expression's coefficient-wise (KS)Kᵀ took
+  Eigen::Matrix<double, kLen, 1> l = rows(KS, 0) * K(J, 0);
+  Eigen::Matrix<double, kLen, 1> lt = rows(K, 0) * KS(J, 0);
+  if constexpr (M == 2) {
+    l += rows(KS, 1) * K(J, 1);
+    lt += rows(K, 1) * KS(J, 1);
+  } else if constexpr (M == 3) {
+    l += rows(KS, 1) * K(J, 1) + rows(KS, 2) * K(J, 2);
+    lt += rows(K, 1) * KS(J, 1) + rows(K, 2) * KS(J, 2);
+  }
+  auto p = P.col(J).template segment<kLen>(J);
+  p = 0.5 * ((((p - a) - at) + l) + (((p - at) - a) + lt));
+  P.row(J).template segment<kLen>(J) = p.transpose();
+}
+template <int N, int M, typename Block, int... J>
+void JosephUpdate(Block P, const Eigen::Matrix<double, N, M>& K,
+                  const Eigen::Matrix<double, N, M>& PHt, const Eigen::Matrix<double, N, M>& KS,
+                  std::integer_sequence<int, J...>) {
+  (JosephColumn<N, M, J>(P, K, PHt, KS), ...);
 }
 }  // namespace
 
@@ -569,7 +566,7 @@ UpdateResult ErrorStateEkf::UpdateOf(const Eigen::Matrix<double, M, 1>& innovati
   // X = (I − KH)P, X − (XHᵀ)Kᵀ + (KR)Kᵀ took four (a quarter of navd's time per IMU epoch on
   // seed 004 with 23 states went to them); on the lower triangle, mirrored (JosephUpdate)
   const Eigen::Matrix<double, N, M> KS = K * S;
-  JosephUpdate<N, M>(P, K, PHt, KS);
+  JosephUpdate<N, M>(P, K, PHt, KS, std::make_integer_sequence<int, N>{});
   RepairDiagonal();
   InjectError(dx);
   r.accepted = true;
