@@ -76,9 +76,8 @@ std::optional<double> ImuTimeOffset::HeadingAt(std::int64_t t_ns, std::size_t& f
 }
 
 std::optional<double> ImuTimeOffset::PredictedCourse(std::int64_t t_ns, std::int64_t lag_ns,
-                                                     double speed_mps,
+                                                     std::int64_t h_ns, double speed_mps,
                                                      std::array<std::size_t, 3>& from) const {
-  const std::int64_t h_ns = SecondsToNs(params_.rate_half_window_s);
   const std::optional<double> psi = HeadingAt(t_ns + lag_ns, from[1]);
   const std::optional<double> before = HeadingAt(t_ns + lag_ns - h_ns, from[0]);
   const std::optional<double> after = HeadingAt(t_ns + lag_ns + h_ns, from[2]);
@@ -97,11 +96,14 @@ bool ImuTimeOffset::PredictedMeanCourses(const WindowedCourse& w, Courses& out) 
   // by fix, then by candidate (ascending times: each HeadingAt walks on from the last); each
   // candidate's sum still adds the fixes in their order
   std::fill(out.begin(), out.begin() + n_, 0.0);
+  std::array<std::int64_t, kMaxCandidates> lag_ns{};
+  for (int j = 0; j < n_; ++j) lag_ns[j] = SecondsToNs(params_.min_lag_s + j * params_.step_s);
+  const std::int64_t h_ns = SecondsToNs(params_.rate_half_window_s);
   for (std::size_t i = 0; i < w.n; ++i) {
     std::array<std::size_t, 3> from = {SIZE_MAX, SIZE_MAX, SIZE_MAX};
     for (int j = 0; j < n_; ++j) {
-      const std::int64_t lag_ns = SecondsToNs(params_.min_lag_s + j * params_.step_s);
-      const std::optional<double> p = PredictedCourse(w.t_fix_ns[i], lag_ns, w.speed_mps[i], from);
+      const std::optional<double> p =
+          PredictedCourse(w.t_fix_ns[i], lag_ns[j], h_ns, w.speed_mps[i], from);
       if (!p) return false;
       out[j] += *p;
     }

@@ -145,10 +145,11 @@ class ImuTimeOffset {
   /// at or before the first entry at or after t (a later t's search starts there: the candidates'
   /// times ascend), or SIZE_MAX for a binary search; it is moved to that entry.
   std::optional<double> HeadingAt(std::int64_t t_ns, std::size_t& from) const;
-  /// The antenna course the IMU predicts at t for a lag (nullopt outside the history); `from`: a
-  /// search start per time read (ψ at t − h, t, t + h), as in HeadingAt.
-  std::optional<double> PredictedCourse(std::int64_t t_ns, std::int64_t lag_ns, double speed_mps,
-                                        std::array<std::size_t, 3>& from) const;
+  /// The antenna course the IMU predicts at t for a lag (nullopt outside the history), the
+  /// heading rate over ± h (rate_half_window_s); `from`: a search start per time read (ψ at t − h,
+  /// t, t + h), as in HeadingAt.
+  std::optional<double> PredictedCourse(std::int64_t t_ns, std::int64_t lag_ns, std::int64_t h_ns,
+                                        double speed_mps, std::array<std::size_t, 3>& from) const;
   /// The IMU's predicted course averaged over a windowed course's fixes, for every candidate lag
   /// (`out`); false when the history does not cover them all.
   bool PredictedMeanCourses(const WindowedCourse& w, Courses& out) const;
