@@ -46,7 +46,7 @@ TurnColumns TurnStateColumns(const Eigen::Matrix3d& C, double w_z_radps, double 
 // Column c of X·B (X: three columns of P, B: 3 × 3) in the order of Eigen's vectorised
 // coefficient-wise product, which the propagation's products took: (x₀b₀c + x₁b₁c) + x₂b₂c.
 template <typename Cols>
-auto ProductColumn(const Cols& X, const Eigen::Matrix3d& B, int c) {
+[[gnu::always_inline]] inline auto ProductColumn(const Cols& X, const Eigen::Matrix3d& B, int c) {
   return (X.col(0) * B(0, c) + X.col(1) * B(1, c)) + X.col(2) * B(2, c);
 }
 
@@ -351,9 +351,9 @@ void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, d
       T.col(kDecaying[d] - kAccelBias) *= decay[d];
     }
   }
-  // P' columns of δp, δv, φ = Φ Mᵀ: products in the rows of δp, δv, φ (into an N × 3 block, as
-  // before: the same evaluation), the tail's rows M's, the decaying ones scaled
-  const auto pre = [&](int first, const Cols3& M) {
+  // P' columns of δp, δv, φ = Φ Mᵀ: products in the rows of δp, δv, φ, the tail's rows M's, the
+  // decaying ones scaled
+  const auto pre = [&](const Cols3& M) {
     Cols3 R;
     R.template middleRows<3>(kPos) =
         M.template middleRows<3>(kPos) + dt * M.template middleRows<3>(kVel);
@@ -370,15 +370,15 @@ void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, d
         R.template middleRows<3>(kAtt) += phi.turn.Gk.col(0) * M.row(kGyroScaleZ);
       }
     }
-    P.template block<kAccelBias, 3>(0, first) = R.template topRows<kAccelBias>();
-    P.template block<kTail, 3>(kAccelBias, first) = M.template bottomRows<kTail>();
+    R.template bottomRows<kTail>() = M.template bottomRows<kTail>();
     if constexpr (N == kNumStates) {
-      for (int d = 0; d < 4; ++d) P.template block<1, 3>(kDecaying[d], first) *= decay[d];
+      for (int d = 0; d < 4; ++d) R.row(kDecaying[d]) *= decay[d];
     }
+    return R;
   };
-  pre(kPos, Mp);
-  pre(kVel, Mv);
-  pre(kAtt, Ma);
+  P.template middleCols<3>(kPos) = pre(Mp);
+  P.template middleCols<3>(kVel) = pre(Mv);
+  P.template middleCols<3>(kAtt) = pre(Ma);
   P.template topRightCorner<kAccelBias, kTail>() =
       P.template bottomLeftCorner<kTail, kAccelBias>().transpose();
 }
