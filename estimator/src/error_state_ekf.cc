@@ -299,22 +299,22 @@ void ErrorStateEkf::PropagateCovariance(const Eigen::Matrix3d& C, double dt, dou
   }
 }
 
+// P ← Φ P Φᵀ with Φ = I + F·dt, by its blocks (3 × 3; the last five states are scalars):
+//   row δp: [I  I·dt  0  0   0  ]        rows δb_a, δb_g, δs: identity
+//   row δv: [0  A     B  −Cdt 0 ]        rows e: gm_decay·I; row δd: dev_decay
+//   row φ:  [0  0     D  0   −Cdt]          (and −Ĉ[ẑ x̂ ŷ]ω_z·dt in the columns of δk_z,
+//                                                δm_xz, δm_yz; in row δv −Ĉ[ŷ x̂ ẑ]f_y·dt in
+//                                                those of δk_ay, δm_xy, δm_zy)
+// A = I − 2[ω_IE×]dt, B = −[f_N×]dt, D = I − [ω_IE×]dt. Only the rows of δp, δv, φ need
+// products; the rest of P is scaled by Φ's diagonal, and P's symmetry gives the other part.
+// P is symmetric, so the products run on its columns (contiguous in Eigen's column-major
+// storage; a profile found the strided row blocks' products the costliest part):
+// (Φ P)ᵀ's columns = P Φᵀ's, then P' = Φ (P Φᵀ) by rows of that N × 3 block.
+// N = 15 when the augmented states are off: their rows and columns of P are exact zeros, which
+// Φ keeps, so only the classic block is propagated (the same bits as the whole matrix).
 template <int N>
 void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, double gm_decay,
                                           double dev_decay) {
-  // P ← Φ P Φᵀ with Φ = I + F·dt, by its blocks (3 × 3; the last five states are scalars):
-  //   row δp: [I  I·dt  0  0   0  ]        rows δb_a, δb_g, δs: identity
-  //   row δv: [0  A     B  −Cdt 0 ]        rows e: gm_decay·I; row δd: dev_decay
-  //   row φ:  [0  0     D  0   −Cdt]          (and −Ĉ[ẑ x̂ ŷ]ω_z·dt in the columns of δk_z,
-  //                                                δm_xz, δm_yz; in row δv −Ĉ[ŷ x̂ ẑ]f_y·dt in
-  //                                                those of δk_ay, δm_xy, δm_zy)
-  // A = I − 2[ω_IE×]dt, B = −[f_N×]dt, D = I − [ω_IE×]dt. Only the rows of δp, δv, φ need
-  // products; the rest of P is scaled by Φ's diagonal, and P's symmetry gives the other part.
-  // P is symmetric, so the products run on its columns (contiguous in Eigen's column-major
-  // storage; a profile found the strided row blocks' products the costliest part):
-  // (Φ P)ᵀ's columns = P Φᵀ's, then P' = Φ (P Φᵀ) by rows of that N × 3 block.
-  // N = 15 when the augmented states are off: their rows and columns of P are exact zeros, which
-  // Φ keeps, so only the classic block is propagated (the same bits as the whole matrix).
   constexpr int kTail = N - kAccelBias;  // δb_a … (δd)
   using Cols3 = Eigen::Matrix<double, N, 3>;
   auto P = P_.template topLeftCorner<N, N>();

@@ -179,8 +179,8 @@ void ImuTimeOffset::UsePair(const WindowedCourse& c) {
   prev_courses_earliest_ns_ = INT64_MAX;
   const std::int64_t h_ns = SecondsToNs(params_.rate_half_window_s);
   for (std::size_t i = 0; i < c.n; ++i) {
-    prev_courses_earliest_ns_ = std::min(
-        prev_courses_earliest_ns_, c.t_fix_ns[i] + SecondsToNs(params_.min_lag_s) - h_ns);
+    prev_courses_earliest_ns_ =
+        std::min(prev_courses_earliest_ns_, c.t_fix_ns[i] + SecondsToNs(params_.min_lag_s) - h_ns);
   }
   std::array<double, kMaxCandidates> r2{};
   for (int j = 0; j < n_; ++j) {
