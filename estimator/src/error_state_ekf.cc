@@ -73,42 +73,58 @@ Eigen::Matrix<double, N, M> ProductWithTransposed(const Block& P,
 // the lower triangle alone (mirrored), each entry the value of the dense expression and the
 // symmetrisation after it: every sum in Eigen's order, and P exactly symmetric on entry (it is:
 // ErrorStateEkfTest, CovarianceStaysExactlySymmetric), so that the dense result's entry (j, i) is
-// ((P(i, j) − A(j, i)) − A(i, j)) + L(j, i). Column J's rows J … N − 1, a fixed-size segment:
-template <int N, int M, int J, typename Block>
-void JosephColumn(Block& P, const Eigen::Matrix<double, N, M>& K,
-                  const Eigen::Matrix<double, N, M>& PHt, const Eigen::Matrix<double, N, M>& KS) {
+// ((P(i, j) − A(j, i)) − A(i, j)) + L(j, i). Column j's rows S … N − 1 (S = j or j − 1), a
+// fixed-size segment:
+template <int N, int M, int S, typename Block>
+Eigen::Matrix<double, N - S, 1> JosephSegment(const Block& P, const Eigen::Matrix<double, N, M>& K,
+                                              const Eigen::Matrix<double, N, M>& PHt,
+                                              const Eigen::Matrix<double, N, M>& KS, int j) {
   static_assert(M >= 1 && M <= 3, "the measurement updates have one to three rows");
-  constexpr int kLen = N - J;
+  constexpr int kLen = N - S;
   const auto rows = [](const Eigen::Matrix<double, N, M>& X, int k) {
-    return X.col(k).template segment<kLen>(J);
+    return X.col(k).template segment<kLen>(S);
   };
   // A(i, j) and A(j, i) as Eigen's vectorised lazy product sums them, k ascending
-  Eigen::Matrix<double, kLen, 1> a = rows(K, 0) * PHt(J, 0);
-  Eigen::Matrix<double, kLen, 1> at = rows(PHt, 0) * K(J, 0);
+  Eigen::Matrix<double, kLen, 1> a = rows(K, 0) * PHt(j, 0);
+  Eigen::Matrix<double, kLen, 1> at = rows(PHt, 0) * K(j, 0);
   for (int k = 1; k < M; ++k) {
-    a += rows(K, k) * PHt(J, k);
-    at += rows(PHt, k) * K(J, k);
+    a += rows(K, k) * PHt(j, k);
+    at += rows(PHt, k) * K(j, k);
   }
   // L(i, j) and L(j, i) as Eigen's scalar reduction of a coefficient sums them (halves:
   // x₀ + (x₁ + x₂) for three terms), which the dense expression's coefficient-wise (KS)Kᵀ took
-  Eigen::Matrix<double, kLen, 1> l = rows(KS, 0) * K(J, 0);
-  Eigen::Matrix<double, kLen, 1> lt = rows(K, 0) * KS(J, 0);
+  Eigen::Matrix<double, kLen, 1> l = rows(KS, 0) * K(j, 0);
+  Eigen::Matrix<double, kLen, 1> lt = rows(K, 0) * KS(j, 0);
   if constexpr (M == 2) {
-    l += rows(KS, 1) * K(J, 1);
-    lt += rows(K, 1) * KS(J, 1);
+    l += rows(KS, 1) * K(j, 1);
+    lt += rows(K, 1) * KS(j, 1);
   } else if constexpr (M == 3) {
-    l += rows(KS, 1) * K(J, 1) + rows(KS, 2) * K(J, 2);
-    lt += rows(K, 1) * KS(J, 1) + rows(K, 2) * KS(J, 2);
+    l += rows(KS, 1) * K(j, 1) + rows(KS, 2) * K(j, 2);
+    lt += rows(K, 1) * KS(j, 1) + rows(K, 2) * KS(j, 2);
   }
-  auto p = P.col(J).template segment<kLen>(J);
-  p = 0.5 * ((((p - a) - at) + l) + (((p - at) - a) + lt));
-  P.row(J).template segment<kLen>(J) = p.transpose();
+  const auto p = P.col(j).template segment<kLen>(S);
+  return 0.5 * ((((p - a) - at) + l) + (((p - at) - a) + lt));
 }
-template <int N, int M, typename Block, int... J>
+// Columns S and S + 1 from row S (even: aligned packets, no scalar tail); the entry (S, S + 1)
+// above the diagonal comes out as its mirror (its X and Y are the mirror's Y and X).
+template <int N, int M, int S, typename Block>
+void JosephColumnPair(Block& P, const Eigen::Matrix<double, N, M>& K,
+                      const Eigen::Matrix<double, N, M>& PHt,
+                      const Eigen::Matrix<double, N, M>& KS) {
+  constexpr int kLen = N - S;
+  const Eigen::Matrix<double, kLen, 1> first = JosephSegment<N, M, S>(P, K, PHt, KS, S);
+  const Eigen::Matrix<double, kLen, 1> second = JosephSegment<N, M, S>(P, K, PHt, KS, S + 1);
+  P.col(S).template segment<kLen>(S) = first;
+  P.col(S + 1).template segment<kLen>(S) = second;
+  P.row(S).template segment<kLen>(S) = first.transpose();
+  P.row(S + 1).template segment<kLen>(S) = second.transpose();
+}
+template <int N, int M, typename Block, int... Pair>
 void JosephUpdate(Block P, const Eigen::Matrix<double, N, M>& K,
                   const Eigen::Matrix<double, N, M>& PHt, const Eigen::Matrix<double, N, M>& KS,
-                  std::integer_sequence<int, J...>) {
-  (JosephColumn<N, M, J>(P, K, PHt, KS), ...);
+                  std::integer_sequence<int, Pair...>) {
+  static_assert(N % 2 == 0, "columns in pairs");
+  (JosephColumnPair<N, M, 2 * Pair>(P, K, PHt, KS), ...);
 }
 }  // namespace
 
@@ -590,7 +606,7 @@ UpdateResult ErrorStateEkf::UpdateOf(const Eigen::Matrix<double, M, 1>& innovati
   // seed 004 with 23 states went to them); on the lower triangle, mirrored (JosephUpdate)
   const Eigen::Matrix<double, N, M> KS = K * S;
   if constexpr (N == kNumStates && M > 1) {
-    JosephUpdate<N, M>(P, K, PHt, KS, std::make_integer_sequence<int, N>{});
+    JosephUpdate<N, M>(P, K, PHt, KS, std::make_integer_sequence<int, N / 2>{});
   } else {
     // the rarer updates (the classic filter's, the one-row ones) in the dense form, which
     // JosephUpdate's fixed-size columns reproduce: fewer instantiations of them, whose code cost
