@@ -48,19 +48,26 @@ void ImuTimeOffset::AddVelocity(GpsTime t, double v_east_mps, double v_north_mps
   pending_.Push({t_ns, std::atan2(v_north_mps, v_east_mps), sigma_chi * sigma_chi, speed});
 }
 
-std::optional<double> ImuTimeOffset::HeadingAt(std::int64_t t_ns) const {
+std::optional<double> ImuTimeOffset::HeadingAt(std::int64_t t_ns, std::size_t& from) const {
   const std::size_t n = history_.size();
   if (n < 2 || t_ns < history_.front().t_ns || t_ns > history_.back().t_ns) return std::nullopt;
-  // the first entry at or after t (binary search over the ring's time-ordered entries)
-  std::size_t lo = 0, hi = n - 1;
-  while (lo < hi) {
-    const std::size_t mid = (lo + hi) / 2;
-    if (history_[mid].t_ns < t_ns) {
-      lo = mid + 1;
-    } else {
-      hi = mid;
+  // the first entry at or after t: a binary search over the ring's time-ordered entries, or a walk
+  // on from an earlier time's entry (the candidates' times are 5 ms apart, the samples 10 ms)
+  std::size_t lo = from;
+  if (lo >= n) {
+    std::size_t hi = n - 1;
+    lo = 0;
+    while (lo < hi) {
+      const std::size_t mid = (lo + hi) / 2;
+      if (history_[mid].t_ns < t_ns) {
+        lo = mid + 1;
+      } else {
+        hi = mid;
+      }
     }
   }
+  while (history_[lo].t_ns < t_ns) ++lo;
+  from = lo;
   if (lo == 0) return history_[0].psi_rad;
   const Heading& a = history_[lo - 1];
   const Heading& b = history_[lo];
@@ -69,11 +76,11 @@ std::optional<double> ImuTimeOffset::HeadingAt(std::int64_t t_ns) const {
 }
 
 std::optional<double> ImuTimeOffset::PredictedCourse(std::int64_t t_ns, std::int64_t lag_ns,
-                                                     double speed_mps) const {
-  const std::int64_t h_ns = SecondsToNs(params_.rate_half_window_s);
-  const std::optional<double> psi = HeadingAt(t_ns + lag_ns);
-  const std::optional<double> before = HeadingAt(t_ns + lag_ns - h_ns);
-  const std::optional<double> after = HeadingAt(t_ns + lag_ns + h_ns);
+                                                     std::int64_t h_ns, double speed_mps,
+                                                     std::array<std::size_t, 3>& from) const {
+  const std::optional<double> psi = HeadingAt(t_ns + lag_ns, from[1]);
+  const std::optional<double> before = HeadingAt(t_ns + lag_ns - h_ns, from[0]);
+  const std::optional<double> after = HeadingAt(t_ns + lag_ns + h_ns, from[2]);
   if (!psi || !before || !after || h_ns <= 0) return std::nullopt;
   const double w = (*after - *before) / (2e-9 * static_cast<double>(h_ns));
   // the antenna's velocity in the body is (v − ω l_y, ω l_x) and its speed the fix's: the course
@@ -84,15 +91,36 @@ std::optional<double> ImuTimeOffset::PredictedCourse(std::int64_t t_ns, std::int
          std::atan2(across, std::sqrt(std::max(speed_mps * speed_mps - across * across, 0.0)));
 }
 
-std::optional<double> ImuTimeOffset::PredictedMeanCourse(const WindowedCourse& w,
-                                                         std::int64_t lag_ns) const {
-  double sum = 0.0;
+bool ImuTimeOffset::PredictedMeanCourses(const WindowedCourse& w, Courses& out) const {
+  if (w.n == 0) return false;
+  // by fix, then by candidate (ascending times: each HeadingAt walks on from the last); each
+  // candidate's sum still adds the fixes in their order
+  std::fill(out.begin(), out.begin() + n_, 0.0);
+  std::array<std::int64_t, kMaxCandidates> lag_ns{};
+  for (int j = 0; j < n_; ++j) lag_ns[j] = SecondsToNs(params_.min_lag_s + j * params_.step_s);
+  const std::int64_t h_ns = SecondsToNs(params_.rate_half_window_s);
   for (std::size_t i = 0; i < w.n; ++i) {
-    const std::optional<double> p = PredictedCourse(w.t_fix_ns[i], lag_ns, w.speed_mps[i]);
-    if (!p) return std::nullopt;
-    sum += *p;
+    std::array<std::size_t, 3> from = {SIZE_MAX, SIZE_MAX, SIZE_MAX};
+    for (int j = 0; j < n_; ++j) {
+      const std::optional<double> p =
+          PredictedCourse(w.t_fix_ns[i], lag_ns[j], h_ns, w.speed_mps[i], from);
+      if (!p) return false;
+      out[j] += *p;
+    }
   }
-  return w.n > 0 ? std::optional<double>(sum / static_cast<double>(w.n)) : std::nullopt;
+  for (int j = 0; j < n_; ++j) out[j] = out[j] / static_cast<double>(w.n);
+  return true;
+}
+
+bool ImuTimeOffset::PredictedMeanCoursesOfPrevious(const WindowedCourse& w, Courses& out) const {
+  // the history keeps a suffix of the samples: while its first is before the earliest time read
+  // (strictly: at it HeadingAt takes the entry itself), every read has the same two entries
+  if (w.t_ns == prev_courses_t_ns_ && lever_x_m_ == prev_courses_lever_x_m_ &&
+      history_.size() >= 2 && history_.front().t_ns < prev_courses_earliest_ns_) {
+    out = prev_courses_;
+    return true;
+  }
+  return PredictedMeanCourses(w, out);
 }
 
 void ImuTimeOffset::Use(const Course& c) {
@@ -142,13 +170,21 @@ void ImuTimeOffset::UsePair(const WindowedCourse& c) {
   const double d_chi = std::remainder(c.chi_rad - prev->chi_rad, 2.0 * M_PI);
   const double var =
       prev->var_rad2 + c.var_rad2 + params_.course_floor_rad * params_.course_floor_rad;
+  // the history does not cover every candidate: not used
+  Courses a{}, b{};
+  if (!PredictedMeanCoursesOfPrevious(*prev, a) || !PredictedMeanCourses(c, b)) return;
+  prev_courses_ = b;  // the next pair's first
+  prev_courses_t_ns_ = c.t_ns;
+  prev_courses_lever_x_m_ = lever_x_m_;
+  prev_courses_earliest_ns_ = INT64_MAX;
+  const std::int64_t h_ns = SecondsToNs(params_.rate_half_window_s);
+  for (std::size_t i = 0; i < c.n; ++i) {
+    prev_courses_earliest_ns_ =
+        std::min(prev_courses_earliest_ns_, c.t_fix_ns[i] + SecondsToNs(params_.min_lag_s) - h_ns);
+  }
   std::array<double, kMaxCandidates> r2{};
   for (int j = 0; j < n_; ++j) {
-    const std::int64_t lag_ns = SecondsToNs(params_.min_lag_s + j * params_.step_s);
-    const std::optional<double> a = PredictedMeanCourse(*prev, lag_ns);
-    const std::optional<double> b = PredictedMeanCourse(c, lag_ns);
-    if (!a || !b) return;  // the history does not cover every candidate: not used
-    const double r = d_chi - (*b - *a);
+    const double r = d_chi - (b[j] - a[j]);
     r2[j] = r * r / var;
   }
   const double decay =

@@ -470,6 +470,79 @@ TEST(ErrorStateEkfGnssModelTest, SwitchIsIgnoredWithoutCorrelatedStates) {
   EXPECT_EQ(ekf.covariance(), before);
 }
 
+// Predict symmetrises only the block of δp, δv, φ, and the updates compute the Joseph form's lower
+// triangle alone: both take P as exactly symmetric on entry. Every operation keeps it so, bit for
+// bit, with every state on and the turn states learnable (at speed, turning, a lateral force).
+TEST_F(ErrorStateEkfTest, CovarianceStaysExactlySymmetric) {
+  EkfParams p = ekf_.params();
+  p.speed_dev_tau_s = 3.0;     // the speed deviation's decay
+  p.mount_yaw_std_rad = 0.02;  // both mounting angles
+  ErrorStateEkf e(p, EarthModel{});
+  e.Initialize(ekf_.state());
+  const auto symmetric = [&e] { return e.covariance() == e.covariance().transpose(); };
+  const Eigen::Vector3d dth(0.001, -0.0005, 0.004), dv(0.0, 0.03, 0.0981);
+  for (int k = 0; k < 400; ++k) {
+    e.Predict(dth, dv, 0.01);
+    ASSERT_TRUE(symmetric()) << "Predict " << k;
+    if (k % 10 != 9) continue;
+    e.UpdatePosition(e.AntennaPosition() + Eigen::Vector3d(0.02, -0.01, 0.03),
+                     Eigen::Vector3d(0.05, 0.05, 0.1));
+    ASSERT_TRUE(symmetric()) << "UpdatePosition " << k;
+    e.UpdateVelocity(e.AntennaVelocity() + Eigen::Vector3d(0.01, 0.0, -0.01),
+                     Eigen::Vector3d::Constant(0.05));
+    e.UpdateNonHolonomic();
+    e.UpdateSpeedModel();
+    e.UpdateYaw(0.6, 0.05);
+    ASSERT_TRUE(symmetric()) << "updates " << k;
+    if (k % 100 == 99) {
+      e.InflateCovariance(1.5);
+      e.SetGnssErrorModel(5.0, 0.3 + 0.001 * k, false);
+      ASSERT_TRUE(symmetric()) << "fading, rescaled GNSS error " << k;
+    }
+  }
+  EXPECT_GT(std::abs(e.covariance()(kVel + 1, kAccelScaleY)), 0.0);  // the turn states learned
+  EXPECT_GT(std::abs(e.covariance()(kAtt, kGyroCouplingX)), 0.0);
+  EXPECT_GT(std::abs(e.covariance()(kGnssError, kSpeedDev)), 0.0);  // the decaying states
+  e.ResetSetSpeed(0.1);
+  e.ResetPositionVelocity(e.AntennaPosition(), e.state().v_N_mps, Eigen::Vector3d::Constant(0.1),
+                          0.1);
+  e.RestartTimeBaseStates();
+  e.UpdateZeroVelocity(0.05);
+  e.Predict(dth, dv, 0.01);
+  EXPECT_TRUE(symmetric());
+}
+
+// The update takes the Joseph form on P's lower triangle (JosephUpdate, and the dense form for the
+// classic and one-row updates): one position fix (three rows), one NHC (two) and one heading (one)
+// each give the textbook (I − KH) P (I − KH)ᵀ + K R Kᵀ.
+TEST_F(ErrorStateEkfTest, UpdatesEqualTheJosephForm) {
+  for (int k = 0; k < 50; ++k) {
+    ekf_.Predict(raw_w_ * 0.01, Eigen::Vector3d(0.1, 0.3, 9.81) * 0.01, 0.01);
+    if (k % 10 == 9) ekf_.UpdateVelocity(ekf_.AntennaVelocity(), Eigen::Vector3d::Constant(0.05));
+  }
+  const auto check = [this](auto update, const auto& H, const auto& R) {
+    const EkfMatrix P0 = ekf_.covariance();
+    ASSERT_TRUE(update().accepted);
+    const auto S = (H * P0 * H.transpose() + R).eval();
+    const auto K = (P0 * H.transpose() * S.inverse()).eval();
+    const EkfMatrix I_KH = EkfMatrix::Identity() - K * H;
+    const EkfMatrix expected = I_KH * P0 * I_KH.transpose() + K * R * K.transpose();
+    EXPECT_LE((ekf_.covariance() - expected).cwiseAbs().maxCoeff(),
+              1e-12 * expected.cwiseAbs().maxCoeff());
+  };
+  const Eigen::Vector3d pos_std(0.05, 0.05, 0.1);
+  const Eigen::Matrix3d R_pos = pos_std.cwiseAbs2().asDiagonal();
+  check([&] { return ekf_.UpdatePosition(Pos(ekf_) + Eigen::Vector3d(0.02, -0.01, 0.0), pos_std); },
+        ekf_.PositionJacobian(), R_pos);
+  const Eigen::Matrix2d R_nhc = Eigen::Matrix2d::Identity() * 0.05 * 0.05;
+  check([&] { return ekf_.UpdateNonHolonomic(); }, ekf_.NonHolonomicJacobian(), R_nhc);
+  Eigen::Matrix<double, 1, kNumStates> H_yaw = Eigen::Matrix<double, 1, kNumStates>::Zero();
+  H_yaw(0, kAtt + 2) = 1.0;
+  const Eigen::Matrix<double, 1, 1> R_yaw = Eigen::Matrix<double, 1, 1>::Constant(0.1 * 0.1);
+  const Eigen::Vector3d x_N = ekf_.state().q_NB * Eigen::Vector3d::UnitX();
+  check([&] { return ekf_.UpdateYaw(std::atan2(x_N.y(), x_N.x()) + 0.01, 0.1); }, H_yaw, R_yaw);
+}
+
 // The classic filter (augmented states off) propagates and updates only P's first 15 states:
 // its other rows and columns stay exact zeros, and one interval equals the dense Φ P Φᵀ + Q
 // written out here from the error dynamics in the header.

@@ -443,6 +443,18 @@ class ErrorStateEkf {
                         const Eigen::Matrix<double, M, N>& H, const Eigen::Matrix<double, M, M>& R);
   /// P ← Φ P Φᵀ for one IMU interval, by Φ's blocks (no dense 20 × 20 product).
   void PropagateCovariance(const Eigen::Matrix3d& C, double dt, double gm_decay, double dev_decay);
+  /// Φ's 3 × 3 blocks for one interval, transposed (the propagation's products run on P's
+  /// columns): A = I − 2[ω_IE×]dt, B = −[f_N×]dt, D = I − [ω_IE×]dt, G = −Ĉdt (Gg: in the
+  /// attitude rows, zero while the attitude is held); and Φ's columns of the turn states (Gk in
+  /// the attitude rows, Ga in the velocity rows; only Gk's first while they are not learnable).
+  struct PhiBlocks {
+    Eigen::Matrix3d At, Bt, Dt, Gt, Ggt;
+    struct {
+      Eigen::Matrix3d Gk, Ga;
+      bool learnable;
+    } turn;
+  };
+  PhiBlocks TransposedPhiBlocks(const Eigen::Matrix3d& C, double dt) const;
   /// The same over P's first N states (N = 15 when the augmented states are off).
   template <int N>
   void PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, double gm_decay,

@@ -139,13 +139,23 @@ class ImuTimeOffset {
     std::array<std::int64_t, kMaxWindowFixes> t_fix_ns{};
     std::array<double, kMaxWindowFixes> speed_mps{};
   };
-  /// ψ at t by linear interpolation; nullopt outside the history.
-  std::optional<double> HeadingAt(std::int64_t t_ns) const;
-  /// The antenna course the IMU predicts at t for a lag (nullopt outside the history).
-  std::optional<double> PredictedCourse(std::int64_t t_ns, std::int64_t lag_ns,
-                                        double speed_mps) const;
-  /// The IMU's predicted course averaged over a windowed course's fixes.
-  std::optional<double> PredictedMeanCourse(const WindowedCourse& w, std::int64_t lag_ns) const;
+  /// The IMU's predicted course for every candidate lag (j < n_), a windowed course's mean.
+  using Courses = std::array<double, kMaxCandidates>;
+  /// ψ at t by linear interpolation; nullopt outside the history. `from`: an index of history_
+  /// at or before the first entry at or after t (a later t's search starts there: the candidates'
+  /// times ascend), or SIZE_MAX for a binary search; it is moved to that entry.
+  std::optional<double> HeadingAt(std::int64_t t_ns, std::size_t& from) const;
+  /// The antenna course the IMU predicts at t for a lag (nullopt outside the history), the
+  /// heading rate over ± h (rate_half_window_s); `from`: a search start per time read (ψ at t − h,
+  /// t, t + h), as in HeadingAt.
+  std::optional<double> PredictedCourse(std::int64_t t_ns, std::int64_t lag_ns, std::int64_t h_ns,
+                                        double speed_mps, std::array<std::size_t, 3>& from) const;
+  /// The IMU's predicted course averaged over a windowed course's fixes, for every candidate lag
+  /// (`out`); false when the history does not cover them all.
+  bool PredictedMeanCourses(const WindowedCourse& w, Courses& out) const;
+  /// The same, taken from the last pair's second course when `w` is it and the history still holds
+  /// every IMU sample it read (the same values: the history's entries do not change).
+  bool PredictedMeanCoursesOfPrevious(const WindowedCourse& w, Courses& out) const;
   /// A fix the IMU history covers: kept until every window that holds it is complete.
   void Use(const Course& c);
   /// The course window_[i]'s average over its window.
@@ -161,6 +171,11 @@ class ImuTimeOffset {
   RingBuffer<Course, kMaxWindowFixes> window_;  // the IMU history covers them
   std::int64_t last_centre_ns_ = INT64_MIN;     // the last fix whose window was used
   std::optional<WindowedCourse> prev_;
+  // prev_'s predicted mean courses (PredictedMeanCourses, when it was the pair's second course),
+  // the earliest IMU time they read and the lever arm they took; the next pair reuses them
+  Courses prev_courses_{};
+  std::int64_t prev_courses_t_ns_ = INT64_MIN, prev_courses_earliest_ns_ = INT64_MIN;
+  double prev_courses_lever_x_m_ = 0;
   double psi_rad_ = 0;
   double lever_x_m_ = 0, lever_y_m_ = 0;
   double pairs_ = 0;  // pairs in the sums (forgotten as they are)
