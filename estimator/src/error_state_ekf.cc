@@ -620,7 +620,8 @@ UpdateResult ErrorStateEkf::UpdateOf(const Eigen::Matrix<double, M, 1>& innovati
   r.nis = innovation.dot(ldlt.solve(innovation));
   const double tr_hph = (S - R).trace();
   r.excess = tr_hph > 0 ? std::max(0.0, (innovation.squaredNorm() - R.trace()) / tr_hph) : 0.0;
-  if (!std::isfinite(r.nis) || r.nis > params_.gate_sigma * params_.gate_sigma * M) return r;
+  if (!std::isfinite(r.nis) || r.nis > params_.gate_sigma * params_.gate_sigma * M * gate_scale_)
+    return r;
   const Eigen::Matrix<double, M, M> S_inv = ldlt.solve(Eigen::Matrix<double, M, M>::Identity());
   const Eigen::Matrix<double, N, M> K = PHt * S_inv;
   EkfVector dx = EkfVector::Zero();

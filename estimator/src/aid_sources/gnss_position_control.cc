@@ -51,6 +51,14 @@ bool Navigator::CheckGnssStep(const GnssSample& g, const Eigen::Vector3d& p) {
   return step;
 }
 
+double Navigator::PositionGateScale() const {
+  const RobustnessParams& rp = params_.robust;
+  const InnovationMonitor& m = monitors_[kAidGnssPosition];
+  if (!rp.gate_follows_median_nis || m.window_count() < rp.gate_median_min_count) return 1.0;
+  constexpr double kChi2Dof3MedianPerDof = 2.365974 / 3.0;  // χ²(3)'s median over 3
+  return std::max(1.0, m.window_median_nis_per_dof() / kChi2Dof3MedianPerDof);
+}
+
 UpdateResult Navigator::ControlGnssPosition(const GnssSample& g, const Eigen::Vector3d& p) {
   const RobustnessParams& rp = params_.robust;
   // a fix after a gap meets a covariance the configured noise may have grown too little
@@ -60,7 +68,9 @@ UpdateResult Navigator::ControlGnssPosition(const GnssSample& g, const Eigen::Ve
   const bool step = fades && CheckGnssStep(g, p);
   // an RTK fix episode's first fix is judged before it can move the filter (RtkFixFrames)
   if (const std::optional<UpdateResult> suspect = ControlRtkFix(g, p)) return *suspect;
+  ekf_.SetGateScale(PositionGateScale());
   UpdateResult r = ekf_.UpdatePosition(p, g.pos_std_enu_m);
+  ekf_.SetGateScale(1.0);
   if (fades && r.dof > 0) {
     // the GNSS consistency check: a rejected step is the receiver's, not the model's
     if (glitch_since_ && (r.accepted || !InGnssGlitch(g.t))) {

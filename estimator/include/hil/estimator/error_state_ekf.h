@@ -84,6 +84,7 @@
 /// Φ = I + F·dt per IMU interval; Joseph-form updates; every update is χ²-gated on its NIS.
 /// The filter never throws or aborts on input; non-finite inputs are counted and rejected.
 
+#include <algorithm>
 #include <cstdint>
 
 #include <Eigen/Cholesky>
@@ -330,6 +331,9 @@ class ErrorStateEkf {
   /// Multiplies the IMU's white-noise densities' variances (accelerometer, gyro) in Predict (≥ 1;
   /// adapted by the navigator from its innovation statistics).
   void SetProcessNoiseScale(double scale) { q_scale_ = scale; }
+  /// Multiplies the χ² gate's bound (gate_sigma² · dof) of the following updates (≥ 1; the
+  /// navigator's median-NIS gate, RobustnessParams::gate_follows_median_nis).
+  void SetGateScale(double scale) { gate_scale_ = std::max(1.0, scale); }
   double process_noise_scale() const { return q_scale_; }
   /// Further scales the accelerometer's white-noise and bias random-walk variances and the gyro's
   /// white-noise variance (≥ 1): the navigator's measure of how far the IMU is outside its model,
@@ -550,6 +554,7 @@ class ErrorStateEkf {
   EkfMatrix P_ = EkfMatrix::Identity();
   std::uint32_t repairs_ = 0;
   double q_scale_ = 1.0;      // process-noise scale (SetProcessNoiseScale)
+  double gate_scale_ = 1.0;   // the gate bound's factor (SetGateScale)
   double accel_scale_ = 1.0;  // SetAccelNoiseScale
   Eigen::Vector3d accel_noise_floor_B_m2ps3_ = Eigen::Vector3d::Zero();  // SetAccelNoiseFloor
   Eigen::Vector3d vibration_var_B_mps2_ = Eigen::Vector3d::Zero();       // SetVibrationVariance
