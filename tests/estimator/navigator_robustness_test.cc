@@ -154,6 +154,17 @@ TEST(InnovationMonitorTest, BandAndWindowMean) {
 
 // A filter fed an IMU ten times noisier than its model (engine vibration) keeps taking the fixes
 // and stays near the truth; without the adaptation it rejects most of them and wanders.
+// Runs the rig `seconds` more with a fix a second; the horizontal RMSE of its last `scored`
+// seconds.
+double RunScoredRmse(Rig& rig, int seconds, int scored) {
+  double sum2 = 0;
+  for (int i = 0; i < seconds; ++i) {
+    rig.Run(rig.t_s + 1.0, 1.0);
+    if (i >= seconds - scored) sum2 += std::pow(rig.HorizontalError(), 2);
+  }
+  return std::sqrt(sum2 / scored);
+}
+
 TEST(NavigatorRobustnessTest, ModelWrongImuKeepsAcceptingFixes) {
   const Truth truth{5.0, 0.1};
   for (const bool robust : {false, true}) {
@@ -221,12 +232,7 @@ TEST(NavigatorRobustnessTest, DefaultSettingsFadeToRejectedFixes) {
     if (defaults) p.robust = RobustnessParams{};
     p.robust.gate_follows_median_nis = false;  // the fading's test (the median gate: below)
     Rig rig(p, truth, 0.3, 3e-3, Eigen::Vector3d::Zero());
-    double sum2 = 0;
-    for (int i = 0; i < 600; ++i) {
-      rig.Run(rig.t_s + 1.0, 1.0);
-      if (i >= 300) sum2 += std::pow(rig.HorizontalError(), 2);
-    }
-    rmse[defaults] = std::sqrt(sum2 / 300);
+    rmse[defaults] = RunScoredRmse(rig, 600, 300);
     const NavigatorStats& st = rig.nav.stats();
     if (defaults) {
       EXPECT_EQ(st.gnss_resets, 0u);
@@ -264,12 +270,7 @@ TEST(NavigatorRobustnessTest, TheGateFollowsTheSpreadTheFilterHasShown) {
     p.robust = RobustnessParams{};
     p.robust.gate_follows_median_nis = median;
     Rig rig(p, truth, 0.3, 3e-3, Eigen::Vector3d::Zero());
-    double sum2 = 0;
-    for (int i = 0; i < 600; ++i) {
-      rig.Run(rig.t_s + 1.0, 1.0);
-      if (i >= 300) sum2 += std::pow(rig.HorizontalError(), 2);
-    }
-    rmse[median] = std::sqrt(sum2 / 300);
+    rmse[median] = RunScoredRmse(rig, 600, 300);
     rejected[median] = rig.nav.stats().gnss_rejected;
     fadings[median] = rig.nav.stats().reject_fadings;
   }
@@ -305,12 +306,7 @@ TEST(NavigatorRobustnessTest, ImuFarOutsideItsModelIsNoticed) {
     p.robust = RobustnessParams{};
     p.imu_noise.enabled = notice;
     Rig rig(p, truth, 0.5, 5e-3, Eigen::Vector3d::Zero());
-    double sum2 = 0;
-    for (int i = 0; i < 400; ++i) {
-      rig.Run(rig.t_s + 1.0, 1.0);
-      if (i >= 200) sum2 += std::pow(rig.HorizontalError(), 2);
-    }
-    rmse[notice] = std::sqrt(sum2 / 200);
+    rmse[notice] = RunScoredRmse(rig, 400, 200);
     const NavigatorStats& st = rig.nav.stats();
     resets[notice] = st.gnss_resets;
     if (notice) {
