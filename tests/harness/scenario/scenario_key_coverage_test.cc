@@ -334,6 +334,8 @@ std::vector<DefaultProbe> McuProbes() {
        [](const Scenario& s) { return s.mcu.config.rough.accel_aaf_hz; }},
       {"mcu.rough", "gyro_aaf_hz", "mcu: {rough: {}}\n",
        [](const Scenario& s) { return s.mcu.config.rough.gyro_aaf_hz; }},
+      {"mcu.rough", "ride_reference_speed_mps", "mcu: {rough: {}}\n",
+       [](const Scenario& s) { return s.mcu.config.rough.ride_reference_speed_mps; }},
       {"mcu.rough.engine_orders[]", "order",
        "mcu: {rough: {internal_rate_hz: 1000, engine_orders: [{}]}}\n",
        [](const Scenario& s) { return s.mcu.config.rough.engine_orders[0].order; }},
