@@ -118,7 +118,7 @@ struct RobustnessParams {
   /// NEES 99; over 101 single 10 s outages navd's windows above 2 × KF-GINS 23 → 1, mean of
   /// the maxima 1.98 → 1.46 m; estimator.md, "The gate and the spread the filter has shown").
   bool gate_follows_median_nis = true;
-  int gate_median_min_count = 5;
+  int gate_median_min_count = kInnovationWindow;
 };
 
 /// The accelerometer against its noise model, as the GNSS velocity sees it (estimator.md, "An IMU
