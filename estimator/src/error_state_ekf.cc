@@ -482,30 +482,32 @@ Eigen::Matrix<double, 2, kNumStates> ErrorStateEkf::NonHolonomicJacobian() const
 UpdateResult ErrorStateEkf::UpdatePosition(const Eigen::Vector3d& p_antenna_N_m,
                                            const Eigen::Vector3d& std_m) {
   if (!AllFinite(p_antenna_N_m) || !AllFinite(std_m)) return {};
-  const Eigen::Vector3d pred = AntennaPosition() +
-                               (params_.gnss_error_tau_s > 0 ? e_gnss_ : Eigen::Vector3d::Zero()) +
-                               AntennaVelocity() * time_residual_s_;
+  const UpdateResult r = Update<3>(p_antenna_N_m - PredictedFixPosition(), PositionJacobian(),
+                                   FixPositionNoise(std_m));
+  if (r.accepted) speed_at_fix_mps_ = state_.v_N_mps.head<2>().norm();
+  return r;
+}
+
+Eigen::Vector3d ErrorStateEkf::PredictedFixPosition() const {
+  return AntennaPosition() + (params_.gnss_error_tau_s > 0 ? e_gnss_ : Eigen::Vector3d::Zero()) +
+         AntennaVelocity() * time_residual_s_;
+}
+
+Eigen::Matrix3d ErrorStateEkf::FixPositionNoise(const Eigen::Vector3d& std_m) const {
   Eigen::Matrix3d R = Eigen::Matrix3d::Zero();
   for (int i = 0; i < 3; ++i)
     R(i, i) = std::pow(std::max(std_m[i], params_.gnss_pos_std_floor_m), 2);
-  const UpdateResult r = Update<3>(p_antenna_N_m - pred, PositionJacobian(), R);
-  if (r.accepted) speed_at_fix_mps_ = state_.v_N_mps.head<2>().norm();
-  return r;
+  return R;
 }
 
 PositionInnovation ErrorStateEkf::PositionInnovationOf(const Eigen::Vector3d& p_antenna_N_m,
                                                        const Eigen::Vector3d& std_m) const {
   PositionInnovation r;
   if (!AllFinite(p_antenna_N_m) || !AllFinite(std_m)) return r;
-  const Eigen::Vector3d pred = AntennaPosition() +
-                               (params_.gnss_error_tau_s > 0 ? e_gnss_ : Eigen::Vector3d::Zero()) +
-                               AntennaVelocity() * time_residual_s_;
   const Eigen::Matrix<double, 3, kNumStates> H = PositionJacobian();
   const Eigen::Matrix<double, kNumStates, 3> PHt = P_.lazyProduct(H.transpose());
-  r.S_m2 = H * PHt;
-  for (int i = 0; i < 3; ++i)
-    r.S_m2(i, i) += std::pow(std::max(std_m[i], params_.gnss_pos_std_floor_m), 2);
-  r.nu_m = p_antenna_N_m - pred;
+  r.S_m2 = H * PHt + FixPositionNoise(std_m);
+  r.nu_m = p_antenna_N_m - PredictedFixPosition();
   const Eigen::LDLT<Eigen::Matrix3d> ldlt(r.S_m2);
   if (ldlt.info() != Eigen::Success) return r;
   r.nis = r.nu_m.dot(ldlt.solve(r.nu_m));

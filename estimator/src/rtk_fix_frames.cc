@@ -140,6 +140,11 @@ void RtkFixFrames::Restart(const PositionInnovation& first_fix) {
   ++episodes_;
 }
 
+double RtkFixFrames::NisFromCurrentFrame(const PositionInnovation& fix) const {
+  if (!fix.valid) return 0.0;
+  return Nis(fix.nu_m, current_offset_N_m(), fix.S_m2 + current_cov_m2());
+}
+
 const Eigen::Vector3d& RtkFixFrames::current_offset_N_m() const {
   return current_ < 0 ? kZero3 : others_[current_].offset_N_m;
 }

@@ -55,7 +55,7 @@ std::optional<UpdateResult> Navigator::ControlRtkFix(const GnssSample& g,
     return std::nullopt;
   }
   const PositionInnovation raw = ekf_.PositionInnovationOf(p_antenna_N_m, g.pos_std_enu_m);
-  const double nis_from_frame = NisFromRtkFrame(raw);
+  const double nis_from_frame = rtk_frames_.NisFromCurrentFrame(raw);
   if (raw.valid && raw.nis <= rtk_frames_.same_frame_nis() &&
       nis_from_frame > rtk_frames_.same_frame_nis()) {
     // the receiver's fixes left the episode's frame for the filter's: it re-fixed right
@@ -76,13 +76,6 @@ std::optional<UpdateResult> Navigator::ControlRtkFix(const GnssSample& g,
   JudgeRtkEpisode(g, raw);
   if (!rtk_check_.suspect()) return std::nullopt;
   return FuseSuspectRtkFix(g, p_antenna_N_m);
-}
-
-double Navigator::NisFromRtkFrame(const PositionInnovation& raw) const {
-  if (!raw.valid) return 0.0;
-  const Eigen::Vector3d d = raw.nu_m - rtk_frames_.current_offset_N_m();
-  const Eigen::Matrix3d C = raw.S_m2 + rtk_frames_.current_cov_m2();
-  return d.dot(C.ldlt().solve(d));
 }
 
 UpdateResult Navigator::RejectedFix() {

@@ -368,6 +368,11 @@ class ErrorStateEkf {
   Eigen::Vector3d AntennaPosition() const;
   /// Antenna velocity predicted from the nominal state (lever-arm rotation included).
   Eigen::Vector3d AntennaVelocity() const;
+  /// What a fix measures: the antenna position, the receiver's correlated error (when modelled)
+  /// and the tag residual's displacement.
+  Eigen::Vector3d PredictedFixPosition() const;
+  /// A fix's noise covariance: its σ per axis, floored at gnss_pos_std_floor_m.
+  Eigen::Matrix3d FixPositionNoise(const Eigen::Vector3d& std_m) const;
 
   /// Measurement Jacobians (public so tests can check them against finite differences).
   Eigen::Matrix<double, 3, ekf_index::kNumStates> PositionJacobian() const;

@@ -380,8 +380,6 @@ class Navigator {
   /// An episode's first fix (or a suspect episode's fix after its offset changed) into
   /// RtkFixFrames: the filter moved, or the episode suspect, as it decides.
   void JudgeRtkEpisode(const GnssSample& g, const PositionInnovation& first_fix);
-  /// A fix's NIS against the frame of the current episode (its offset from the filter's).
-  double NisFromRtkFrame(const PositionInnovation& raw) const;
   static UpdateResult RejectedFix();
   /// fixes of a suspect episode in a row out of its frame that make it a new episode
   static constexpr int kRtkOffFrameFixes = 3;

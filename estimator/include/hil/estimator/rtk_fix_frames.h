@@ -57,6 +57,9 @@ class RtkFixFrames {
   Decision AdoptCurrent();
   /// The NIS at which a fix is in a frame (RtkFixCheckParams::same_frame_nis).
   double same_frame_nis() const { return same_frame_nis_; }
+  /// A fix's NIS against the frame of the current episode (its offset from the filter's, the
+  /// offset's covariance added); 0 for an invalid innovation.
+  double NisFromCurrentFrame(const PositionInnovation& fix) const;
   /// The offset and covariance of the frame the current episode lies in (zero: the filter's).
   const Eigen::Vector3d& current_offset_N_m() const;
   const Eigen::Matrix3d& current_cov_m2() const;
