@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <vector>
 
@@ -44,14 +45,17 @@ RoughImuSpec OneOrder(double order, double rpm, double amp_z_mps2, double intern
   return s;
 }
 
-// z specific force of `n` output samples at `out_hz` of a board at rest (1 g up) with vibration.
+// Specific force on `axis` (less 1 g on z) of `n` output samples at `out_hz` of a level board
+// with vibration, the vehicle at speed_mps(k) (the ride's speed; nullptr: never set).
 std::vector<double> RecordZ(const RoughImuSpec& s, const FrontEndLimits& l, double out_hz,
-                            std::size_t n, std::uint64_t seed, std::size_t axis = 2) {
+                            std::size_t n, std::uint64_t seed, std::size_t axis = 2,
+                            const std::function<double(std::size_t)>& speed_mps = nullptr) {
   ImuFrontEnd fe(s, l, seed);
   std::vector<double> z;
   const Eigen::Vector3d g(0, 0, 9.80665);
   for (std::size_t k = 0; k < n; ++k) {
     Eigen::Vector3d f, w;
+    if (speed_mps) fe.SetGroundSpeed(speed_mps(k));
     fe.Advance(TimeFromSeconds(static_cast<double>(k) / out_hz), g, Eigen::Vector3d::Zero(), f, w);
     z.push_back(f[static_cast<Eigen::Index>(axis)] - (axis == 2 ? 9.80665 : 0.0));
   }
@@ -118,19 +122,10 @@ TEST(ImuFrontEndTest, RideVibrationHasThePsdAsked) {
   EXPECT_NEAR(p / 11.0 / bin_hz / 0.01, 1.0, 0.6);  // a single periodogram bin scatters by ~100 %
 }
 
-// z specific force minus 1 g of `n` samples at 1 kHz output, the vehicle at speed_mps(k).
-template <typename Speed>
-std::vector<double> RecordZAtSpeed(const RoughImuSpec& s, std::size_t n, Speed speed_mps) {
-  ImuFrontEnd fe(s, Wide(450), 5);
-  std::vector<double> z;
-  const Eigen::Vector3d g(0, 0, 9.80665);
-  for (std::size_t k = 0; k < n; ++k) {
-    Eigen::Vector3d f, w;
-    fe.SetGroundSpeed(speed_mps(k));
-    fe.Advance(TimeFromSeconds(static_cast<double>(k) / 1000.0), g, Eigen::Vector3d::Zero(), f, w);
-    z.push_back(f[2] - 9.80665);
-  }
-  return z;
+// z specific force less 1 g of `n` samples at 1 kHz output, the vehicle at speed_mps(k).
+std::vector<double> RecordZAtSpeed(const RoughImuSpec& s, std::size_t n,
+                                   const std::function<double(std::size_t)>& speed_mps) {
+  return RecordZ(s, Wide(450), 1000, n, 5, 2, speed_mps);
 }
 
 double SumOfSquares(const std::vector<double>& x, std::size_t from = 0) {
