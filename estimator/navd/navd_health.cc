@@ -119,6 +119,12 @@ void AppendConsistency(std::string& s, const NavigatorStats& n) {
                   n.accel_noise_scale, static_cast<unsigned long long>(n.accel_noise_raises));
     s += b;
   }
+  // present once the vehicle was found outside the non-holonomic constraint (NhcNoiseParams)
+  if (n.nhc_noise_raises > 0) {
+    std::snprintf(b, sizeof b, ",\"nhc_noise_scale\":%.4g,\"nhc_noise_raises\":%llu",
+                  n.nhc_noise_scale, static_cast<unsigned long long>(n.nhc_noise_raises));
+    s += b;
+  }
   // present once the IMU was found unusable (ImuUsabilityCheck; the solution is then GNSS + the
   // vehicle model): the test's statistic against its threshold
   if (n.imu_unusable_periods > 0) {

@@ -537,9 +537,11 @@ UpdateResult ErrorStateEkf::UpdateNonHolonomic() {
   const Eigen::Vector3d v_V = VehicleVelocity();
   const Eigen::Vector2d innovation(-v_V.y(), -v_V.z());
   // the IMU's vibration velocity is not the chassis's: its variance is added (VibrationVelocity)
+  // (the navigator scales it when the constraint's innovations show the vehicle outside it)
   const double r2 = params_.nhc_std_mps * params_.nhc_std_mps;
   const Eigen::Matrix2d R =
-      Eigen::Vector2d(r2 + vibration_var_B_mps2_.y(), r2 + vibration_var_B_mps2_.z()).asDiagonal();
+      (nhc_scale_ * Eigen::Vector2d(r2 + vibration_var_B_mps2_.y(), r2 + vibration_var_B_mps2_.z()))
+          .asDiagonal();
   return Update<2>(innovation, NonHolonomicJacobian(), R);
 }
 

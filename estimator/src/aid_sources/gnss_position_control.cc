@@ -42,6 +42,7 @@ void Navigator::Record(int source, const UpdateResult& r) {
   a.band_low = band.low;
   a.band_high = band.high;
   if (source == kAidGnssVelocity) AdaptAccelNoise();
+  if (source == kAidNonHolonomic) AdaptNhcNoise();
 }
 
 bool Navigator::CheckGnssStep(const GnssSample& g, const Eigen::Vector3d& p) {

@@ -340,6 +340,10 @@ class ErrorStateEkf {
   /// from the GNSS velocity innovations (an engine's vibration shakes both sensors of a board).
   void SetAccelNoiseScale(double scale) { accel_scale_ = scale; }
   double accel_noise_scale() const { return accel_scale_; }
+  /// Multiplies the non-holonomic constraint's noise variances (≥ 1; the navigator's measure of
+  /// how far the vehicle is outside the constraint, from its innovations: NhcNoiseParams).
+  void SetNhcNoiseScale(double scale) { nhc_scale_ = std::max(1.0, scale); }
+  double nhc_noise_scale() const { return nhc_scale_; }
   /// A floor per body axis under the accelerometer's white-noise density² (m²/s³) in Predict: the
   /// density its own sample scatter shows (AccelScatter; 0: the configured density alone). The
   /// velocity's process noise is then C diag(q²) Cᵀ, no longer isotropic.
@@ -561,6 +565,7 @@ class ErrorStateEkf {
   double q_scale_ = 1.0;      // process-noise scale (SetProcessNoiseScale)
   double gate_scale_ = 1.0;   // the gate bound's factor (SetGateScale)
   double accel_scale_ = 1.0;  // SetAccelNoiseScale
+  double nhc_scale_ = 1.0;    // SetNhcNoiseScale
   Eigen::Vector3d accel_noise_floor_B_m2ps3_ = Eigen::Vector3d::Zero();  // SetAccelNoiseFloor
   Eigen::Vector3d vibration_var_B_mps2_ = Eigen::Vector3d::Zero();       // SetVibrationVariance
   VehicleVelocityRipple ripple_;                                         // vehicle_lowpass_tau_s

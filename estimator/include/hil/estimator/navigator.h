@@ -141,6 +141,41 @@ struct ImuNoiseParams {
   double max_scale = 1e4;          ///< largest variance scale (σ ×100)
 };
 
+/// The non-holonomic constraint against its own innovations (estimator.md, "When the NHC's premise
+/// fails"). The constraint (the vehicle's lateral and vertical velocity zero) is a model of the
+/// vehicle, not a sensor: a walker's sway and crab, a skidding vehicle break it. While the GNSS is
+/// present (a fix fused within RobustnessParams::gap_after: the fixes hold the velocity, so a miss
+/// is the constraint's), NHC updates whose window (20 updates, 2 s at 10 Hz) has its mean and
+/// median NIS per degree of freedom both above `raise_nis_per_dof`, `persist_updates` updates in a
+/// row, show the vehicle outside it: the constraint's noise variances are scaled by the window's
+/// mean NIS per degree of freedom (at most ×`max_step` per window, ×`max_scale` in all) and the
+/// window restarts. Once raised, a window above its 95 % χ² band with median above 1 raises it
+/// further and a window below its band lowers it, by at most ÷`max_lower_step` (never below 1):
+/// the scale follows the innovations, the innovation-based adaptive estimation of the noise
+/// (Mohamed and Schwarz, J. Geodesy 73, 1999), bounded. During an outage the scale is held:
+/// without fixes the constraint's misses cannot be told from the INS's drift.
+struct NhcNoiseParams {
+  bool enabled = true;
+  /// window mean and median above this: outside the constraint (5, chosen: 3.4 × the band's top,
+  /// 1.48 for 20 two-row updates; most updates missing by more than 2σ per row)
+  double raise_nis_per_dof = 5.0;
+  /// … for this many updates in a row (one window length, 2 s at 10 Hz; chosen): the emulated
+  /// vehicles the constraint holds for get there for 10 updates in a row at most
+  /// (field_realism/tractor_engine_vibration: an engine's vibration against a 2 cm/s constraint;
+  /// the others stay below 0.6), the walk_0827 walker for up to 209 (its crab and sway against
+  /// 10 cm/s)
+  int persist_updates = 20;
+  double max_step = 10.0;  ///< largest raise of the scale per window
+  /// largest lowering per window: 1.1 (chosen), ÷10 from the scale's top in about 50 s. A vehicle
+  /// that pauses or goes straight for a few seconds has not come back into the constraint, and a
+  /// scale too small going into an outage costs more than one too large (walk_0827 sweep, single
+  /// 10 s outages, mean of the maxima and the worst window against navd without the constraint:
+  /// lowered by up to ÷2 1.49 m, 4.9 ×; ÷1.1 1.48 m, 2.8 ×; never 1.51 m, 2.8 ×; measured with the
+  /// first raise at 6 at once).
+  double max_lower_step = 1.1;
+  double max_scale = 1e4;  ///< largest variance scale (σ ×100)
+};
+
 /// The aid sources whose innovations are monitored.
 enum AidSource : int {
   kAidGnssPosition = 0,
@@ -179,6 +214,9 @@ struct NavigatorParams {
   /// EKF mode: the accelerometer's noise follows the GNSS velocity innovations when they show it
   /// far outside its model (aid_sources/imu_noise_control.cc).
   ImuNoiseParams imu_noise;
+  /// EKF mode: the non-holonomic constraint's noise follows its innovations when they show the
+  /// vehicle outside it (aid_sources/nhc_noise_control.cc).
+  NhcNoiseParams nhc_noise;
   /// EKF mode: the IMU's vibration velocity (VibrationVelocity: above the corner of this time
   /// constant) widens the non-holonomic and speed-model pseudo-measurements by its variance,
   /// averaged over vibration_mean_tau_s; 0: off.
@@ -246,7 +284,10 @@ struct NavigatorStats {
   /// the accelerometer's noise variances in use over the configured ones (1: as configured;
   /// above: the GNSS velocity shows the accelerometer that much noisier, ImuNoiseParams)
   double accel_noise_scale = 1.0;
-  std::uint64_t accel_noise_raises = 0;    ///< windows that raised it
+  std::uint64_t accel_noise_raises = 0;  ///< windows that raised it
+  /// the non-holonomic constraint's noise variances over the configured ones (NhcNoiseParams)
+  double nhc_noise_scale = 1.0;
+  std::uint64_t nhc_noise_raises = 0;      ///< windows that raised it
   std::uint64_t rtk_suspect_episodes = 0;  ///< RTK fix episodes judged a probable wrong fix
   std::uint64_t rtk_suspect_fixes = 0;     ///< fixes of those episodes, fused less their offset
   std::uint64_t rtk_frame_switches = 0;    ///< the filter moved to another frame (RtkFixFrames)
@@ -365,6 +406,8 @@ class Navigator {
   void DetectStationary(const ImuSample& s);
   /// The accelerometer's noise to the GNSS velocity innovation window (ImuNoiseParams).
   void AdaptAccelNoise();
+  /// The non-holonomic constraint's noise to its innovation window (NhcNoiseParams).
+  void AdaptNhcNoise();
   /// The IMU tag lag: a sample's heading increment into the estimate, and its tag corrected by
   /// the lag found so far; a fix's course into the estimate (aid_sources/imu_lag_control.cc).
   void CorrectImuTag(ImuSample& s);
@@ -427,6 +470,7 @@ class Navigator {
   std::uint32_t status_ = 0;
   NavigatorStats stats_;
   InnovationMonitor monitors_[kNumAidSources];
+  int nhc_far_updates_ = 0;  // NHC updates in a row with their window far above its band
   StationaryDetector stationary_;
   VibrationVelocity vibration_;  // the IMU's vibration velocity (vibration_tau_s)
   AccelScatter accel_scatter_;   // the accelerometer's noise from its own scatter
