@@ -74,6 +74,18 @@ TEST(ConfigFileTest, ImuNoiseCheckKey) {
                ConfigError);
 }
 
+// issue 39 (the walker): the NHC's premise is checked from its innovations unless
+// [filter] nhc_noise_check = false
+TEST(ConfigFileTest, NhcNoiseCheckKey) {
+  EXPECT_TRUE(
+      NavdConfig::FromFile(ConfigFile::Parse("[filter]\n", "n.conf")).nav.nhc_noise.enabled);
+  EXPECT_FALSE(
+      NavdConfig::FromFile(ConfigFile::Parse("[filter]\nnhc_noise_check = false\n", "n.conf"))
+          .nav.nhc_noise.enabled);
+  EXPECT_THROW(NavdConfig::FromFile(ConfigFile::Parse("[filter]\nnhc_noise_check = 1\n", "n.conf")),
+               ConfigError);
+}
+
 // issue 39: the NMEA velocity's σ is learned from its innovations unless
 // [filter] gnss_velocity_noise = false
 TEST(ConfigFileTest, GnssVelocityNoiseKey) {
