@@ -155,7 +155,7 @@ void ErrorStateEkf::Initialize(const NavState& s) {
                      : 1.0;
   gm_up_std_m_ = gm_std_m_ * gm_up_ratio_;
   P_.setZero();
-  gap_noise_.setZero();
+  RestartGapNoise();
   const auto& p = params_;
   P_.block<3, 3>(kPos, kPos).diagonal().setConstant(p.init_pos_std_m * p.init_pos_std_m);
   P_.block<3, 3>(kVel, kVel).diagonal().setConstant(p.init_vel_std_mps * p.init_vel_std_mps);
@@ -274,11 +274,8 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& delta_angle_B_rad,
   }
   const double dev_decay = SpeedDevState(p) ? std::exp(-dt / p.speed_dev_tau_s) : 1.0;
   PropagateCovariance(C, dt, gm_decay, dev_decay);
-  AddImuNoise(P_.topLeftCorner<kNumClassicStates, kNumClassicStates>(), C, dth, dt, true);
-  // the gap's noise: the white noise only, the part a sensor outside its model (vibration, a
-  // walker's gait) exceeds; the biases' random walks are the sensor's own, and scaling them
-  // would forget what the biases were known to be
-  AddImuNoise(gap_noise_.topLeftCorner<kNumClassicStates, kNumClassicStates>(), C, dth, dt, false);
+  AddImuNoise(P_.topLeftCorner<kNumClassicStates, kNumClassicStates>(), C, dth.norm(), dt, true);
+  AccumulateGapNoise(C, dth.norm(), dt);
   if (p.gnss_error_tau_s > 0) P_.block<3, 3>(kGnssError, kGnssError).diagonal() += gm_q;
   if (p.speed_rw_mps_rthz > 0) P_(kSpeed, kSpeed) += p.speed_rw_mps_rthz * p.speed_rw_mps_rthz * dt;
   if (SpeedDevState(p))
@@ -297,8 +294,8 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& delta_angle_B_rad,
 
 // The IMU's process noise over one interval on the classic block of P (or of the gap noise)
 template <typename Block>
-void ErrorStateEkf::AddImuNoise(Block P, const Eigen::Matrix3d& C, const Eigen::Vector3d& dth,
-                                double dt, bool bias_walks) const {
+void ErrorStateEkf::AddImuNoise(Block P, const Eigen::Matrix3d& C, double turned_rad, double dt,
+                                bool bias_walks) const {
   const auto& p = params_;
   // process noise: the accelerometer's density per body axis, rotated into N
   const double q_accel =
@@ -308,7 +305,6 @@ void ErrorStateEkf::AddImuNoise(Block P, const Eigen::Matrix3d& C, const Eigen::
   if (!attitude_hold_) {
     // the white angle random walk, plus the scale and misalignment error of the angle turned
     // (isotropic: invariant under C)
-    const double turned_rad = dth.norm();
     P.template block<3, 3>(kAtt, kAtt).diagonal().array() +=
         q_scale_ * accel_scale_ * p.gyro_noise_radps_rthz * p.gyro_noise_radps_rthz * dt +
         p.gyro_scale_std * p.gyro_scale_std * std::numbers::pi * turned_rad;
@@ -330,10 +326,36 @@ void ErrorStateEkf::PropagateCovariance(const Eigen::Matrix3d& C, double dt, dou
     PropagateCovarianceOf<kNumClassicStates>(
         P_.topLeftCorner<kNumClassicStates, kNumClassicStates>(), phi, dt, gm_decay, dev_decay);
   }
-  // the noise since the last position fix: the augmented states take none (random constants) or
-  // none that Φ carries into the classic rows, so their columns of it stay zero
-  PropagateCovarianceOf<kNumClassicStates>(
-      gap_noise_.topLeftCorner<kNumClassicStates, kNumClassicStates>(), phi, dt, 1.0, 1.0);
+  // the noise of a gap: the augmented states take none (random constants) or none that Φ carries
+  // into the classic rows, so their columns of it stay zero
+  if (gap_noise_on_)
+    PropagateCovarianceOf<kNumClassicStates>(
+        gap_noise_.topLeftCorner<kNumClassicStates, kNumClassicStates>(), phi, dt, 1.0, 1.0);
+}
+
+void ErrorStateEkf::AccumulateGapNoise(const Eigen::Matrix3d& C, double turned_rad, double dt) {
+  // the gap's noise: the white noise only, the part a sensor outside its model (vibration, a
+  // walker's gait) exceeds; the biases' random walks are the sensor's own, and scaling them
+  // would forget what the biases were known to be. Carried (a second propagation) only once no
+  // fix has come for gap_noise_after_s_, started with the white noise of that time unpropagated
+  // (its coupling into velocity and position over the first seconds left out), so that an
+  // epoch between fixes costs nothing more
+  since_fix_s_ += dt;
+  turned_since_fix_rad_ += turned_rad;
+  auto G = gap_noise_.topLeftCorner<kNumClassicStates, kNumClassicStates>();
+  if (gap_noise_on_) {
+    AddImuNoise(G, C, turned_rad, dt, false);
+  } else if (since_fix_s_ >= gap_noise_after_s_) {
+    G.setZero();
+    AddImuNoise(G, C, turned_since_fix_rad_, since_fix_s_, false);
+    gap_noise_on_ = true;
+  }
+}
+
+void ErrorStateEkf::RestartGapNoise() {
+  gap_noise_on_ = false;
+  since_fix_s_ = turned_since_fix_rad_ = 0.0;
+  gap_noise_.setZero();
 }
 
 // P ← Φ P Φᵀ with Φ = I + F·dt, by its blocks (3 × 3; the last five states are scalars):
@@ -505,7 +527,7 @@ UpdateResult ErrorStateEkf::UpdatePosition(const Eigen::Vector3d& p_antenna_N_m,
                                    FixPositionNoise(std_m));
   if (r.accepted) {
     speed_at_fix_mps_ = state_.v_N_mps.head<2>().norm();
-    gap_noise_.setZero();
+    RestartGapNoise();
   }
   return r;
 }
@@ -789,7 +811,7 @@ bool ErrorStateEkf::FadeGapNoiseTo(const Eigen::Vector3d& p_antenna_N_m,
   // the innovation's variance the covariance lacks, νᵀν − tr S: what λ P would add, (λ − 1) tr HPHᵀ
   const double missing =
       std::min(in.nu_m.squaredNorm() - in.S_m2.trace(), (max_factor - 1.0) * tr_hph);
-  if (!(tr_hgh > 0) || !(missing > 0) || !std::isfinite(missing)) return false;
+  if (!gap_noise_on_ || !(tr_hgh > 0) || !(missing > 0) || !std::isfinite(missing)) return false;
   const double g = missing / tr_hgh;
   P_.topLeftCorner<kNumClassicStates, kNumClassicStates>() += g * G;
   gap_noise_ = (1.0 + g) * G;
@@ -822,7 +844,7 @@ void ErrorStateEkf::ResetPositionVelocity(const Eigen::Vector3d& p, const Eigen:
   state_.p_N_m = p - state_.q_NB * params_.lever_arm_B_m;
   state_.v_N_mps = v;
   e_gnss_.setZero();
-  gap_noise_.setZero();
+  RestartGapNoise();
   P_.block<6, kNumStates>(kPos, 0).setZero();
   P_.block<kNumStates, 6>(0, kPos).setZero();
   P_.block<3, 3>(kPos, kPos).diagonal() = pos_std_N_m.cwiseAbs2();

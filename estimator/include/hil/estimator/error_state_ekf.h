@@ -336,6 +336,9 @@ class ErrorStateEkf {
   /// outage"). False (nothing changed) when there is no such noise or nothing is missing.
   bool FadeGapNoiseTo(const Eigen::Vector3d& p_antenna_N_m, const Eigen::Vector3d& std_m,
                       double max_factor);
+  /// The gap's noise is carried from this long without an accepted position fix (the navigator's
+  /// gap_after: no fix after a shorter gap is faded by FadeGapNoiseTo).
+  void SetGapNoiseAfter(double seconds) { gap_noise_after_s_ = seconds; }
   /// Multiplies the IMU's white-noise densities' variances (accelerometer, gyro) in Predict (≥ 1;
   /// adapted by the navigator from its innovation statistics).
   void SetProcessNoiseScale(double scale) { q_scale_ = scale; }
@@ -481,8 +484,12 @@ class ErrorStateEkf {
   /// The IMU's white noise (and the biases' random walks) of one interval added to P's classic
   /// block.
   template <typename Block>
-  void AddImuNoise(Block P, const Eigen::Matrix3d& C, const Eigen::Vector3d& dth, double dt,
+  void AddImuNoise(Block P, const Eigen::Matrix3d& C, double turned_rad, double dt,
                    bool bias_walks) const;
+  /// The gap's white noise (gap_noise_) over one interval: counted from the last accepted
+  /// position fix, carried once gap_noise_after_s_ has passed without one.
+  void AccumulateGapNoise(const Eigen::Matrix3d& C, double turned_rad, double dt);
+  void RestartGapNoise();
   /// The correlated-GNSS-error, speed-model, mounting-angle or gyro-triad states are on: P's last
   /// ten rows may be non-zero.
   bool AugmentedStatesOn() const {
@@ -576,6 +583,10 @@ class ErrorStateEkf {
   /// classic states'; FadeGapNoiseTo)
   Eigen::Matrix<double, ekf_index::kNumClassicStates, ekf_index::kNumClassicStates> gap_noise_ =
       Eigen::Matrix<double, ekf_index::kNumClassicStates, ekf_index::kNumClassicStates>::Zero();
+  bool gap_noise_on_ = false;          // gap_noise_ is being carried
+  double since_fix_s_ = 0.0;           // time since the last accepted position fix
+  double turned_since_fix_rad_ = 0.0;  // the angle turned since then
+  double gap_noise_after_s_ = 1.5;     // SetGapNoiseAfter
   std::uint32_t repairs_ = 0;
   double q_scale_ = 1.0;      // process-noise scale (SetProcessNoiseScale)
   double gate_scale_ = 1.0;   // the gate bound's factor (SetGateScale)
