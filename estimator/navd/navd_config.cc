@@ -226,7 +226,7 @@ bool ReadFilterKey(const ConfigFile& f, const ConfigEntry& e, NavdConfig& c, int
   } else if (k == "adaptive" || k == "fade_to_fixes" || k == "stationary_detection" ||
              k == "imu_lag_estimation" || k == "rtk_fix_check" || k == "imu_noise_check" ||
              k == "imu_usability_check" || k == "gnss_velocity_noise" || k == "gate_median_nis" ||
-             k == "nhc_noise_check") {
+             k == "nhc_noise_check" || k == "fade_gap_noise") {
     const bool on = ToBool(f, e);
     (k == "adaptive"               ? c.nav.robust.adaptive
      : k == "fade_to_fixes"        ? c.nav.robust.fade_to_fixes
@@ -237,6 +237,7 @@ bool ReadFilterKey(const ConfigFile& f, const ConfigEntry& e, NavdConfig& c, int
      : k == "gnss_velocity_noise"  ? c.nav.gnss_vel_noise.enabled
      : k == "gate_median_nis"      ? c.nav.robust.gate_follows_median_nis
      : k == "nhc_noise_check"      ? c.nav.nhc_noise.enabled
+     : k == "fade_gap_noise"       ? c.nav.robust.fade_gap_noise
                                    : c.nav.imu_lag.enabled) = on;
   } else if (k == "imu_usability_window_s") {
     c.nav.imu_usability.window_s = ToDouble(f, e, 2.0, 600.0);

@@ -155,6 +155,7 @@ void ErrorStateEkf::Initialize(const NavState& s) {
                      : 1.0;
   gm_up_std_m_ = gm_std_m_ * gm_up_ratio_;
   P_.setZero();
+  RestartGapNoise();
   const auto& p = params_;
   P_.block<3, 3>(kPos, kPos).diagonal().setConstant(p.init_pos_std_m * p.init_pos_std_m);
   P_.block<3, 3>(kVel, kVel).diagonal().setConstant(p.init_vel_std_mps * p.init_vel_std_mps);
@@ -273,23 +274,8 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& delta_angle_B_rad,
   }
   const double dev_decay = SpeedDevState(p) ? std::exp(-dt / p.speed_dev_tau_s) : 1.0;
   PropagateCovariance(C, dt, gm_decay, dev_decay);
-  // process noise: the accelerometer's density per body axis, rotated into N
-  const double q_accel =
-      q_scale_ * accel_scale_ * p.accel_noise_mps2_rthz * p.accel_noise_mps2_rthz;
-  const Eigen::Vector3d q_accel_B = accel_noise_floor_B_m2ps3_.cwiseMax(q_accel);
-  P_.block<3, 3>(kVel, kVel) += C * q_accel_B.asDiagonal() * C.transpose() * dt;
-  if (!attitude_hold_) {
-    // the white angle random walk, plus the scale and misalignment error of the angle turned
-    // (isotropic: invariant under C)
-    const double turned_rad = dth.norm();
-    P_.block<3, 3>(kAtt, kAtt).diagonal().array() +=
-        q_scale_ * accel_scale_ * p.gyro_noise_radps_rthz * p.gyro_noise_radps_rthz * dt +
-        p.gyro_scale_std * p.gyro_scale_std * std::numbers::pi * turned_rad;
-  }
-  P_.block<3, 3>(kAccelBias, kAccelBias).diagonal().array() +=
-      accel_scale_ * p.accel_bias_rw_mps3_rthz * p.accel_bias_rw_mps3_rthz * dt;
-  P_.block<3, 3>(kGyroBias, kGyroBias).diagonal().array() +=
-      p.gyro_bias_rw_radps2_rthz * p.gyro_bias_rw_radps2_rthz * dt;
+  AddImuNoise(P_.topLeftCorner<kNumClassicStates, kNumClassicStates>(), C, dth.norm(), dt, true);
+  AccumulateGapNoise(C, dth.norm(), dt);
   if (p.gnss_error_tau_s > 0) P_.block<3, 3>(kGnssError, kGnssError).diagonal() += gm_q;
   if (p.speed_rw_mps_rthz > 0) P_(kSpeed, kSpeed) += p.speed_rw_mps_rthz * p.speed_rw_mps_rthz * dt;
   if (SpeedDevState(p))
@@ -306,13 +292,70 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& delta_angle_B_rad,
   RepairDiagonal();
 }
 
+// The IMU's process noise over one interval on the classic block of P (or of the gap noise)
+template <typename Block>
+void ErrorStateEkf::AddImuNoise(Block P, const Eigen::Matrix3d& C, double turned_rad, double dt,
+                                bool bias_walks) const {
+  const auto& p = params_;
+  // process noise: the accelerometer's density per body axis, rotated into N
+  const double q_accel =
+      q_scale_ * accel_scale_ * p.accel_noise_mps2_rthz * p.accel_noise_mps2_rthz;
+  const Eigen::Vector3d q_accel_B = accel_noise_floor_B_m2ps3_.cwiseMax(q_accel);
+  P.template block<3, 3>(kVel, kVel) += C * q_accel_B.asDiagonal() * C.transpose() * dt;
+  if (!attitude_hold_) {
+    // the white angle random walk, plus the scale and misalignment error of the angle turned
+    // (isotropic: invariant under C)
+    P.template block<3, 3>(kAtt, kAtt).diagonal().array() +=
+        q_scale_ * accel_scale_ * p.gyro_noise_radps_rthz * p.gyro_noise_radps_rthz * dt +
+        p.gyro_scale_std * p.gyro_scale_std * std::numbers::pi * turned_rad;
+  }
+  if (!bias_walks) return;
+  P.template block<3, 3>(kAccelBias, kAccelBias).diagonal().array() +=
+      accel_scale_ * p.accel_bias_rw_mps3_rthz * p.accel_bias_rw_mps3_rthz * dt;
+  P.template block<3, 3>(kGyroBias, kGyroBias).diagonal().array() +=
+      p.gyro_bias_rw_radps2_rthz * p.gyro_bias_rw_radps2_rthz * dt;
+}
+
 void ErrorStateEkf::PropagateCovariance(const Eigen::Matrix3d& C, double dt, double gm_decay,
                                         double dev_decay) {
+  const PhiBlocks phi = TransposedPhiBlocks(C, dt);
   if (AugmentedStatesOn()) {
-    PropagateCovarianceOf<kNumStates>(C, dt, gm_decay, dev_decay);
+    PropagateCovarianceOf<kNumStates>(P_.topLeftCorner<kNumStates, kNumStates>(), phi, dt, gm_decay,
+                                      dev_decay);
   } else {
-    PropagateCovarianceOf<kNumClassicStates>(C, dt, gm_decay, dev_decay);
+    PropagateCovarianceOf<kNumClassicStates>(
+        P_.topLeftCorner<kNumClassicStates, kNumClassicStates>(), phi, dt, gm_decay, dev_decay);
   }
+  // the noise of a gap: the augmented states take none (random constants) or none that Φ carries
+  // into the classic rows, so their columns of it stay zero
+  if (gap_noise_on_)
+    PropagateCovarianceOf<kNumClassicStates>(
+        gap_noise_.topLeftCorner<kNumClassicStates, kNumClassicStates>(), phi, dt, 1.0, 1.0);
+}
+
+void ErrorStateEkf::AccumulateGapNoise(const Eigen::Matrix3d& C, double turned_rad, double dt) {
+  // the gap's noise: the white noise only, the part a sensor outside its model (vibration, a
+  // walker's gait) exceeds; the biases' random walks are the sensor's own, and scaling them
+  // would forget what the biases were known to be. Carried (a second propagation) only once no
+  // fix has come for gap_noise_after_s_, started with the white noise of that time unpropagated
+  // (its coupling into velocity and position over the first seconds left out), so that an
+  // epoch between fixes costs nothing more
+  since_fix_s_ += dt;
+  turned_since_fix_rad_ += turned_rad;
+  auto G = gap_noise_.topLeftCorner<kNumClassicStates, kNumClassicStates>();
+  if (gap_noise_on_) {
+    AddImuNoise(G, C, turned_rad, dt, false);
+  } else if (since_fix_s_ >= gap_noise_after_s_) {
+    G.setZero();
+    AddImuNoise(G, C, turned_since_fix_rad_, since_fix_s_, false);
+    gap_noise_on_ = true;
+  }
+}
+
+void ErrorStateEkf::RestartGapNoise() {
+  gap_noise_on_ = false;
+  since_fix_s_ = turned_since_fix_rad_ = 0.0;
+  gap_noise_.setZero();
 }
 
 // P ← Φ P Φᵀ with Φ = I + F·dt, by its blocks (3 × 3; the last five states are scalars):
@@ -328,13 +371,11 @@ void ErrorStateEkf::PropagateCovariance(const Eigen::Matrix3d& C, double dt, dou
 // (Φ P)ᵀ's columns = P Φᵀ's, then P' = Φ (P Φᵀ) by rows of that N × 3 block.
 // N = 15 when the augmented states are off: their rows and columns of P are exact zeros, which
 // Φ keeps, so only the classic block is propagated (the same bits as the whole matrix).
-template <int N>
-void ErrorStateEkf::PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, double gm_decay,
-                                          double dev_decay) {
+template <int N, typename Block>
+void ErrorStateEkf::PropagateCovarianceOf(Block P, const PhiBlocks& phi, double dt, double gm_decay,
+                                          double dev_decay) const {
   constexpr int kTail = N - kAccelBias;  // δb_a … (δd)
   using Cols3 = Eigen::Matrix<double, N, 3>;
-  auto P = P_.template topLeftCorner<N, N>();
-  const PhiBlocks phi = TransposedPhiBlocks(C, dt);
   const auto cols = [&](int first) { return P.template middleCols<3>(first); };
   // Mᵀ = P Φᵀ, the columns of δp, δv, φ, a column at a time (one pass, no product temporaries)
   const Cols3 Mp = cols(kPos) + dt * cols(kVel);
@@ -484,7 +525,10 @@ UpdateResult ErrorStateEkf::UpdatePosition(const Eigen::Vector3d& p_antenna_N_m,
   if (!AllFinite(p_antenna_N_m) || !AllFinite(std_m)) return {};
   const UpdateResult r = Update<3>(p_antenna_N_m - PredictedFixPosition(), PositionJacobian(),
                                    FixPositionNoise(std_m));
-  if (r.accepted) speed_at_fix_mps_ = state_.v_N_mps.head<2>().norm();
+  if (r.accepted) {
+    speed_at_fix_mps_ = state_.v_N_mps.head<2>().norm();
+    RestartGapNoise();
+  }
   return r;
 }
 
@@ -753,6 +797,31 @@ void ErrorStateEkf::InflateCovariance(double factor) {
     P_.topRightCorner<kNumClassicStates, kNumStates - kNumClassicStates>() *= s;
     P_.bottomLeftCorner<kNumStates - kNumClassicStates, kNumClassicStates>() *= s;
   }
+  ClampBiasVariances();
+}
+
+bool ErrorStateEkf::FadeGapNoiseTo(const Eigen::Vector3d& p_antenna_N_m,
+                                   const Eigen::Vector3d& std_m, double max_factor) {
+  const PositionInnovation in = PositionInnovationOf(p_antenna_N_m, std_m);
+  if (!in.valid) return false;
+  const Eigen::Matrix<double, 3, kNumClassicStates> H =
+      PositionJacobian().leftCols<kNumClassicStates>();
+  const Eigen::Matrix<double, kNumClassicStates, kNumClassicStates> G =
+      0.5 * (gap_noise_ + gap_noise_.transpose());
+  const double tr_hgh = (H * G * H.transpose()).trace();
+  const double tr_hph = (in.S_m2 - FixPositionNoise(std_m)).trace();
+  // the innovation's variance the covariance lacks, νᵀν − tr S: what λ P would add, (λ − 1) tr HPHᵀ
+  const double missing =
+      std::min(in.nu_m.squaredNorm() - in.S_m2.trace(), (max_factor - 1.0) * tr_hph);
+  if (!gap_noise_on_ || !(tr_hgh > 0) || !(missing > 0) || !std::isfinite(missing)) return false;
+  const double g = missing / tr_hgh;
+  P_.topLeftCorner<kNumClassicStates, kNumClassicStates>() += g * G;
+  gap_noise_ = (1.0 + g) * G;
+  ClampBiasVariances();
+  return true;
+}
+
+void ErrorStateEkf::ClampBiasVariances() {
   // a bias is never less known than before its first measurement: a bias variance above its
   // initial one is scaled back to it, with its row and column (P <- D P D, D diagonal)
   for (int i = kAccelBias; i < kGyroBias + 3; ++i) {
@@ -777,6 +846,7 @@ void ErrorStateEkf::ResetPositionVelocity(const Eigen::Vector3d& p, const Eigen:
   state_.p_N_m = p - state_.q_NB * params_.lever_arm_B_m;
   state_.v_N_mps = v;
   e_gnss_.setZero();
+  RestartGapNoise();
   P_.block<6, kNumStates>(kPos, 0).setZero();
   P_.block<kNumStates, 6>(0, kPos).setZero();
   P_.block<3, 3>(kPos, kPos).diagonal() = pos_std_N_m.cwiseAbs2();

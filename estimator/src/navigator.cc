@@ -73,6 +73,7 @@ void Navigator::EnsureFrame(const Lla& origin) {
   earth.g_N_mps2 = Eigen::Vector3d(0, 0, -NormalGravity(origin.lat_deg, origin.height_m));
   earth.w_IE_N_radps = frame_.w_IE_N();
   ekf_ = ErrorStateEkf(params_.ekf, earth);
+  ekf_.SetGapNoiseAfter(1e-9 * static_cast<double>(params_.robust.gap_after.count()));
 }
 
 void Navigator::Push(const ImuSample& tagged) {

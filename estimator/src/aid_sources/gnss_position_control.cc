@@ -63,7 +63,8 @@ double Navigator::PositionGateScale() const {
 UpdateResult Navigator::ControlGnssPosition(const GnssSample& g, const Eigen::Vector3d& p) {
   const RobustnessParams& rp = params_.robust;
   // a fix after a gap meets a covariance the configured noise may have grown too little
-  bool after_gap = last_fix_seen_t_ && g.t - *last_fix_seen_t_ > rp.gap_after;
+  const bool time_gap = last_fix_seen_t_ && g.t - *last_fix_seen_t_ > rp.gap_after;
+  bool after_gap = time_gap;
   last_fix_seen_t_ = g.t;
   const bool fades = rp.FadesToFixes();
   const bool step = fades && CheckGnssStep(g, p);
@@ -96,7 +97,11 @@ UpdateResult Navigator::ControlGnssPosition(const GnssSample& g, const Eigen::Ve
     // fading memory to this fix: P ← λ P with λ the factor that makes its innovation consistent
     const double lambda = std::min(r.excess, rp.max_fading_factor);
     if ((after_gap || persistent) && lambda > 1.0) {
-      ekf_.InflateCovariance(lambda);
+      // after a gap in time what the filter knew at its start stays known: only the gap's white
+      // noise is scaled to the fix (a glitch's step back keeps the whole covariance's fading)
+      if (!(time_gap && rp.fade_gap_noise &&
+            ekf_.FadeGapNoiseTo(p, g.pos_std_enu_m, rp.max_fading_factor)))
+        ekf_.InflateCovariance(lambda);
       ++stats_.fadings;
       ++(after_gap ? stats_.gap_fadings : stats_.reject_fadings);
       const UpdateResult retry = ekf_.UpdatePosition(p, g.pos_std_enu_m);

@@ -328,6 +328,17 @@ class ErrorStateEkf {
   /// its row and column (again D P D): fading explains a wrong model, not a bias beyond its
   /// turn-on range (an unbounded gyro-bias σ let a standing vehicle's heading drift by 1°/s).
   void InflateCovariance(double factor);
+  /// Fading after a gap in the fixes: the covariance the position fix's innovation shows missing,
+  /// νᵀν − tr S (what InflateCovariance(λ) would add, (λ − 1) tr HPHᵀ, at most max_factor − 1 of
+  /// it), is added in the shape of the process noise accumulated since the last accepted
+  /// position fix (P ← P + g·G, g = missing / tr HGHᵀ): what was known at the gap's start stays
+  /// known, the gap's growth is scaled to the evidence (estimator.md, "Recovering after an
+  /// outage"). False (nothing changed) when there is no such noise or nothing is missing.
+  bool FadeGapNoiseTo(const Eigen::Vector3d& p_antenna_N_m, const Eigen::Vector3d& std_m,
+                      double max_factor);
+  /// The gap's noise is carried from this long without an accepted position fix (the navigator's
+  /// gap_after: no fix after a shorter gap is faded by FadeGapNoiseTo).
+  void SetGapNoiseAfter(double seconds) { gap_noise_after_s_ = seconds; }
   /// Multiplies the IMU's white-noise densities' variances (accelerometer, gyro) in Predict (≥ 1;
   /// adapted by the navigator from its innovation statistics).
   void SetProcessNoiseScale(double scale) { q_scale_ = scale; }
@@ -469,9 +480,20 @@ class ErrorStateEkf {
   };
   PhiBlocks TransposedPhiBlocks(const Eigen::Matrix3d& C, double dt) const;
   /// The same over P's first N states (N = 15 when the augmented states are off).
-  template <int N>
-  void PropagateCovarianceOf(const Eigen::Matrix3d& C, double dt, double gm_decay,
-                             double dev_decay);
+  /// Bias variances above their initial ones scaled back to them, with their rows and columns.
+  void ClampBiasVariances();
+  template <int N, typename Block>
+  void PropagateCovarianceOf(Block P, const PhiBlocks& phi, double dt, double gm_decay,
+                             double dev_decay) const;
+  /// The IMU's white noise (and the biases' random walks) of one interval added to P's classic
+  /// block.
+  template <typename Block>
+  void AddImuNoise(Block P, const Eigen::Matrix3d& C, double turned_rad, double dt,
+                   bool bias_walks) const;
+  /// The gap's white noise (gap_noise_) over one interval: counted from the last accepted
+  /// position fix, carried once gap_noise_after_s_ has passed without one.
+  void AccumulateGapNoise(const Eigen::Matrix3d& C, double turned_rad, double dt);
+  void RestartGapNoise();
   /// The correlated-GNSS-error, speed-model, mounting-angle or gyro-triad states are on: P's last
   /// ten rows may be non-zero.
   bool AugmentedStatesOn() const {
@@ -561,6 +583,14 @@ class ErrorStateEkf {
   // max 0.106 → 0.127 m on seed 5); 0.1 s left seed 5 at 0.112 m, 0.25 and 0.5 s at 0.105 m.
   static constexpr double kLateralForceSmoothing_s = 0.25;
   EkfMatrix P_ = EkfMatrix::Identity();
+  /// The process noise P took since the last accepted position fix, carried by the same Φ (the
+  /// classic states'; FadeGapNoiseTo)
+  Eigen::Matrix<double, ekf_index::kNumClassicStates, ekf_index::kNumClassicStates> gap_noise_ =
+      Eigen::Matrix<double, ekf_index::kNumClassicStates, ekf_index::kNumClassicStates>::Zero();
+  bool gap_noise_on_ = false;          // gap_noise_ is being carried
+  double since_fix_s_ = 0.0;           // time since the last accepted position fix
+  double turned_since_fix_rad_ = 0.0;  // the angle turned since then
+  double gap_noise_after_s_ = 1.5;     // SetGapNoiseAfter
   std::uint32_t repairs_ = 0;
   double q_scale_ = 1.0;      // process-noise scale (SetProcessNoiseScale)
   double gate_scale_ = 1.0;   // the gate bound's factor (SetGateScale)
