@@ -80,7 +80,7 @@ pid_t StartBusyProcess() {
 // (at hil's default nice -10 the busy process would hardly disturb it).
 CommandResult RunDriver(const std::string& out, bool loaded) {
   const std::string scenario = SourceDir() + "/vectors/scenarios/default_ubx_configure.yaml";
-  const std::string driver = std::string(HIL_UBX_TIMEOUT_DRIVER) + " {ttyGPS} {run_dir}/reads.log";
+  const std::string driver = HIL_UBX_TIMEOUT_DRIVER " {ttyGPS} {run_dir}/reads.log";
   const pid_t busy = loaded ? StartBusyProcess() : 0;
   const CommandResult r =
       RunCommand(BinDir() + "/hil run " + scenario + " --lockstep --no-html --set duration_s=40" +
@@ -150,8 +150,7 @@ TEST(LockstepDeterminismE2E, WallClockDriverGivesTheSameBytesAndStampsTheirArriv
 TEST(LockstepDeterminismE2E, ReadOnlyDriverWithLookaheadSeesWhatATurnPerMessageShows) {
   TempDir dir("lockstep_lookahead_e2e");
   const std::string scenario = SourceDir() + "/vectors/scenarios/default_ubx_configure.yaml";
-  const std::string driver =
-      std::string(HIL_UBX_TIMEOUT_DRIVER) + " {ttyGPS} {run_dir}/reads.log --listen";
+  const std::string driver = HIL_UBX_TIMEOUT_DRIVER " {ttyGPS} {run_dir}/reads.log --listen";
   std::map<std::string, std::string> first;
   const char* runs[] = {"", " --no-lookahead", ""};
   for (int run = 0; run < 3; ++run) {

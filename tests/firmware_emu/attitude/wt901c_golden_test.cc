@@ -107,7 +107,7 @@ TEST(Wt901cGoldenTest, SessionVectorIsReproducedByteForByte) {
   }
   EXPECT_EQ(dev.stats().read_replies, 2u);
   EXPECT_EQ(dev.stats().saves, 1u);
-  const std::string dir = std::string(HIL_TEST_SOURCE_DIR) + "/vectors/wt901c/";
+  const std::string dir = HIL_TEST_SOURCE_DIR "/vectors/wt901c/";
   if (const char* regen = std::getenv("HIL_REGEN_VECTORS"); regen && std::string(regen) == "1") {
     std::ofstream(dir + "wt901c_session.bin", std::ios::binary) << bin;
     std::ofstream(dir + "wt901c_session.expected.csv") << csv.str();

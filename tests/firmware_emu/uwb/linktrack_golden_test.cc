@@ -103,7 +103,7 @@ TEST(LinkTrackTagFrame0Test, GoldenFrames) {
     csv << "," << G(f.angle_deg.z()) << "," << G(f.gyro_radps.z()) << "," << G(f.acc_mps2.z())
         << "," << G(f.eop_m.x()) << "," << G(f.voltage_v) << "\n";
   }
-  const std::string dir = std::string(HIL_TEST_SOURCE_DIR) + "/vectors/uwb/";
+  const std::string dir = HIL_TEST_SOURCE_DIR "/vectors/uwb/";
   if (const char* r = std::getenv("HIL_REGEN_VECTORS"); r && std::string(r) == "1") {
     std::ofstream(dir + "linktrack_tag_frame0.bin", std::ios::binary) << bin;
     std::ofstream(dir + "linktrack_tag_frame0.expected.csv") << csv.str();

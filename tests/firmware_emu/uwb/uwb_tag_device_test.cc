@@ -186,7 +186,7 @@ TEST(UwbTagDeviceTest, GoldenSession) {
   const std::string bin = Session(csv);
   EXPECT_EQ(Session(csv2), bin);  // same seed, same bytes
   EXPECT_EQ(bin.size(), 10u * (128 + 24));
-  const std::string dir = std::string(HIL_TEST_SOURCE_DIR) + "/vectors/uwb/";
+  const std::string dir = HIL_TEST_SOURCE_DIR "/vectors/uwb/";
   if (const char* r = std::getenv("HIL_REGEN_VECTORS"); r && std::string(r) == "1") {
     std::ofstream(dir + "uwb_tag_session.bin", std::ios::binary) << bin;
     std::ofstream(dir + "uwb_tag_session.expected.csv") << csv;
