@@ -63,37 +63,28 @@ TEST(ConfigFileTest, ReferenceExampleIsValidAndComplete) {
   EXPECT_TRUE(c.nmea_device.empty());
 }
 
-// issue 41: the IMU noise check is on unless [filter] imu_noise_check = false
-TEST(ConfigFileTest, ImuNoiseCheckKey) {
-  EXPECT_TRUE(
-      NavdConfig::FromFile(ConfigFile::Parse("[filter]\n", "n.conf")).nav.imu_noise.enabled);
-  EXPECT_FALSE(
-      NavdConfig::FromFile(ConfigFile::Parse("[filter]\nimu_noise_check = false\n", "n.conf"))
-          .nav.imu_noise.enabled);
-  EXPECT_THROW(NavdConfig::FromFile(ConfigFile::Parse("[filter]\nimu_noise_check = 1\n", "n.conf")),
+// A [filter] switch that is on by default: the empty section leaves it on, "KEY = false" turns it
+// off, and a value that is not a boolean is a ConfigError naming it.
+template <typename Switch>
+void ExpectOnByDefaultSwitch(const std::string& key, Switch on_in) {
+  SCOPED_TRACE(key);
+  EXPECT_TRUE(on_in(NavdConfig::FromFile(ConfigFile::Parse("[filter]\n", "n.conf")).nav));
+  EXPECT_FALSE(on_in(
+      NavdConfig::FromFile(ConfigFile::Parse("[filter]\n" + key + " = false\n", "n.conf")).nav));
+  EXPECT_THROW(NavdConfig::FromFile(ConfigFile::Parse("[filter]\n" + key + " = 1\n", "n.conf")),
                ConfigError);
 }
 
-// issue 39 (the walker): the NHC's premise is checked from its innovations unless
-// [filter] nhc_noise_check = false
-TEST(ConfigFileTest, NhcNoiseCheckKey) {
-  EXPECT_TRUE(
-      NavdConfig::FromFile(ConfigFile::Parse("[filter]\n", "n.conf")).nav.nhc_noise.enabled);
-  EXPECT_FALSE(
-      NavdConfig::FromFile(ConfigFile::Parse("[filter]\nnhc_noise_check = false\n", "n.conf"))
-          .nav.nhc_noise.enabled);
-  EXPECT_THROW(NavdConfig::FromFile(ConfigFile::Parse("[filter]\nnhc_noise_check = 1\n", "n.conf")),
-               ConfigError);
-}
-
-// issue 39: the NMEA velocity's σ is learned from its innovations unless
-// [filter] gnss_velocity_noise = false
-TEST(ConfigFileTest, GnssVelocityNoiseKey) {
-  EXPECT_TRUE(
-      NavdConfig::FromFile(ConfigFile::Parse("[filter]\n", "n.conf")).nav.gnss_vel_noise.enabled);
-  EXPECT_FALSE(
-      NavdConfig::FromFile(ConfigFile::Parse("[filter]\ngnss_velocity_noise = false\n", "n.conf"))
-          .nav.gnss_vel_noise.enabled);
+// issue 41: the IMU noise check; issue 39: the NHC's premise checked from its innovations (the
+// walker), the NMEA velocity's σ learned from its innovations, the fading after a gap in the
+// gap's noise
+TEST(ConfigFileTest, RobustnessSwitchesAreOnByDefault) {
+  ExpectOnByDefaultSwitch("imu_noise_check", [](const auto& nav) { return nav.imu_noise.enabled; });
+  ExpectOnByDefaultSwitch("nhc_noise_check", [](const auto& nav) { return nav.nhc_noise.enabled; });
+  ExpectOnByDefaultSwitch("gnss_velocity_noise",
+                          [](const auto& nav) { return nav.gnss_vel_noise.enabled; });
+  ExpectOnByDefaultSwitch("fade_gap_noise",
+                          [](const auto& nav) { return nav.robust.fade_gap_noise; });
 }
 
 // issues 39/41: the IMU's mounting pitch is estimated (prior σ 2°), its yaw held, unless
