@@ -12,6 +12,8 @@
 
 #include "hil/estimator/navigator.h"
 
+#include "fixtures/imu_sample_from_truth.h"
+
 namespace hil::estimator {
 namespace {
 
@@ -64,15 +66,10 @@ struct Rig {
       const Eigen::Vector3d a = truth.w_radps * Eigen::Vector3d(-v.y(), v.x(), 0);
       const Eigen::Vector3d f_N = a + 2.0 * w_ie.cross(v) - g_N;
       const Eigen::Vector3d w_B = Eigen::Vector3d(0, 0, truth.w_radps) + C.transpose() * w_ie;
-      ImuSample s;
       t_s += dt;
-      s.t = kT0 + Nanoseconds{std::llround(t_s * 1e9)};
-      s.dt_s = dt;
-      for (int i = 0; i < 3; ++i) {
-        s.delta_velocity_B_mps[i] =
-            (C.transpose() * f_N)[i] * dt + accel_noise * std::sqrt(dt) * n01(rng);
-        s.delta_angle_B_rad[i] = (w_B + bias_B)[i] * dt + gyro_noise * std::sqrt(dt) * n01(rng);
-      }
+      const testing::ImuNoise imu{accel_noise, gyro_noise, Eigen::Vector3d::Zero(), bias_B};
+      const ImuSample s = testing::ImuSampleFromTruth(kT0 + Nanoseconds{std::llround(t_s * 1e9)},
+                                                      dt, C, f_N, w_B, imu, rng, n01);
       const bool in_gap = t_s >= gap_from_s && t_s < gap_to_s;
       if ((k + 1) % fix_every == 0 && !in_gap) Fix(s.t, t_s);
       nav.Push(s);

@@ -13,6 +13,8 @@
 
 #include "hil/estimator/navigator.h"
 
+#include "fixtures/imu_sample_from_truth.h"
+
 namespace hil::estimator {
 namespace {
 
@@ -24,6 +26,8 @@ constexpr double kPi = 3.14159265358979323846;
 // the IMU's biases, unknown to the filter (m/s², rad/s: 0.1 °/s about z)
 const Eigen::Vector3d kAccelBias_B(0.03, -0.03, 0.02);
 const Eigen::Vector3d kGyroBias_B(0.0, 0.0, 0.1 * kPi / 180.0);
+// the IMU: white noise 0.005 m/s/√s and 5e-5 rad/√s, the biases above
+const testing::ImuNoise kImu{0.005, 5e-5, kAccelBias_B, kGyroBias_B};
 
 // A level vehicle whose course turns on a circle (yaw rate w_radps) at speed_mps; a walker adds a
 // crab, its body's x axis crab(t) = crab_rad + crab_swing_rad sin(2π t / 40 s) right of its course
@@ -96,15 +100,9 @@ DriveResult Drive(const Truth& truth, bool check, double gap_from_s, double gap_
     const Eigen::Matrix3d C = truth.Attitude(tm).toRotationMatrix();
     const Eigen::Vector3d w_B = Eigen::Vector3d(0, 0, truth.YawRate(tm)) + C.transpose() * w_ie;
     const Eigen::Vector3d f_N = truth.Acceleration(tm) + 2.0 * w_ie.cross(truth.Velocity(tm)) - g_N;
-    ImuSample s;
     t_s += dt;
-    s.t = kT0 + Nanoseconds{std::llround(t_s * 1e9)};
-    s.dt_s = dt;
-    for (int i = 0; i < 3; ++i) {
-      s.delta_velocity_B_mps[i] =
-          ((C.transpose() * f_N)[i] + kAccelBias_B[i]) * dt + 0.005 * std::sqrt(dt) * n01(rng);
-      s.delta_angle_B_rad[i] = (w_B[i] + kGyroBias_B[i]) * dt + 5e-5 * std::sqrt(dt) * n01(rng);
-    }
+    const ImuSample s = testing::ImuSampleFromTruth(kT0 + Nanoseconds{std::llround(t_s * 1e9)}, dt,
+                                                    C, f_N, w_B, kImu, rng, n01);
     if ((k + 1) % 25 == 0 && (t_s < gap_from_s || t_s >= gap_to_s)) {
       GnssSample g;
       g.t = s.t;
