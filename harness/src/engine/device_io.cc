@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 
 namespace hil::harness {
 
@@ -37,7 +38,14 @@ void DeviceIo::Dispatch(std::size_t d, DeviceOutput& out) {
   }
   if (devices_.can) {
     if (faults_) faults_->ProcessCan(out.can);
-    for (const CanFrame& f : out.can) devices_.can->Queue(f);
+    const bool hold = hold_actuators_ && Actuator(d);  // to the controller at a turn, as bytes are
+    for (const CanFrame& f : out.can) {
+      if (hold) {
+        held_frames_.push_back(f);
+      } else {
+        devices_.can->Queue(f);
+      }
+    }
   }
   out.clear();
   if (!pacer_.Send(devices_.can, !refused_, lock)) refused_ = true;
@@ -136,9 +144,21 @@ bool DeviceIo::Actuator(std::size_t d) const {
 }
 
 bool DeviceIo::ReleaseHeld() {
-  if (held_.empty()) return false;
+  if (held_.empty() && held_frames_.empty()) return false;
   for (const Held& h : held_) pacer_.Queued(*h.ep, h.bytes, h.t);
   held_.clear();
+  if (held_frames_.empty()) return true;
+  std::unique_lock<std::mutex> lock = pacer_.LinksLock();
+  for (const CanFrame& f : held_frames_) devices_.can->Queue(f);  // in time order: Queue merges
+  held_frames_.clear();
+  frames_released_ = true;
+  if (!pacer_.Send(devices_.can, false, lock)) refused_ = true;  // the frames only: see SendAll
+  return true;
+}
+
+bool DeviceIo::AwaitReleasedFrames() {
+  if (!std::exchange(frames_released_, false)) return false;
+  devices_.can->AwaitEchoes(t_last_event_, CanEndpoint::kSentFramesWait);
   return true;
 }
 

@@ -64,6 +64,12 @@ bool VirtualHostTurns::HostTurn(Time t, DeviceIo& io) {
   // meanwhile; guidanced's reset request after an ECU exit then went out one command early or
   // late in some runs).
   if (io.ReleaseHeld() && !io.SendAll()) return false;
+  // A bus is no link of the gate (a socket's unread frames cannot be counted from here): the
+  // host has taken the frames once its socket has them and it sleeps again. (Written when made,
+  // the steering ECU's frames on vcan0 were read before or after a solution as the machine ran
+  // guidanced: a stale reset request read after its re-engaging command disengaged the ECU once
+  // more, tractor_autosteer_command_loss_socketcan engagements 3, not 2, beside a busy loop.)
+  if (io.AwaitReleasedFrames() && !gate_.WaitHostIdle()) return false;
   const Time t_rx = ArrivalTime(t, io);
   arrivals_.ReadHosts(t_rx, io);
   if (io.devices().steering) arrivals_.ReadBus(t_rx, io);  // open-loop runs read the bus as before

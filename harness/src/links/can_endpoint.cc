@@ -191,6 +191,13 @@ void CanEndpoint::AwaitSentFrames(Time t_now, Duration limit) {
   }
 }
 
+void CanEndpoint::AwaitEchoes(Time t_now, Duration limit) {
+  ReadBus(t_now, nullptr, limit);
+  if (awaiting_echo_.empty()) return;
+  ++sent_frames_wait_timeouts_;
+  while (!awaiting_echo_.empty()) CaptureUnechoed();  // a lost echo is not waited for again
+}
+
 std::vector<CanFrame> CanEndpoint::TakeArrivals(Time t_arrival) {
   AwaitSentFrames(t_arrival, kSentFramesWait);
   ReadBus(t_arrival, nullptr, Duration::zero());

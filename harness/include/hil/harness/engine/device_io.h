@@ -20,7 +20,8 @@ namespace hil::harness {
 
 class DeviceIo {
  public:
-  /// `hold_actuators`: the actuators' bytes wait for the next host turn (ReleaseHeld).
+  /// `hold_actuators`: the actuators' bytes and CAN frames wait for the next host turn
+  /// (ReleaseHeld).
   DeviceIo(EngineDevices devices, Pacer& pacer, bool hold_actuators);
 
   EngineDevices& devices() { return devices_; }
@@ -58,8 +59,13 @@ class DeviceIo {
   std::vector<CanFrame> TakeUncollected();
   /// A frame from the bus reaches every device at `t`.
   void DeliverBusFrame(Time t, const CanFrame& frame, DeviceOutput& out);
-  /// Queues the actuators' held bytes for writing; false when none were held.
+  /// Queues the actuators' held bytes for writing (SendAll writes them) and puts their held CAN
+  /// frames on the bus; false when none were held.
   bool ReleaseHeld();
+  /// After ReleaseHeld put frames on the bus: waits until the kernel has handed them to every
+  /// socket on it (CanEndpoint::AwaitEchoes), so that a host reading the bus is awake with them
+  /// or has read them. False (no wait) when no frames were released since the last call.
+  bool AwaitReleasedFrames();
   /// Writes everything queued now unless the gate gave up already; false once it has.
   bool SendAll();
   /// The gate gave up a wait (or a host turn did): the run stops, the bytes not written stay.
@@ -94,6 +100,8 @@ class DeviceIo {
     Time t;
   };
   std::vector<Held> held_;
+  std::vector<CanFrame> held_frames_;   // the actuators' frames made since the last host turn
+  bool frames_released_ = false;        // ReleaseHeld put frames on the bus, not yet awaited
   std::vector<SerialMessage> carried_;  // Dispatch's scratch: a message after the byte faults
 };
 

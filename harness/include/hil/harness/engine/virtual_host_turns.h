@@ -21,7 +21,11 @@
 /// ends the epoch's last byte, before the tick) makes no turn of its own, unless another turn
 /// falls on it or the monitor acts at it; what the host writes meanwhile is read at the next
 /// turn. Every tick's turn is taken or skipped the same way in every run. The actuators' replies
-/// and status are held until the next turn.
+/// and status (serial bytes, and CAN frames: the steering ECU's on SocketCAN) are held until the
+/// next turn, which writes them with the host asleep; frames on a bus, which the gate cannot see
+/// read, are then waited for as well: their echoes back (the host's socket has them too) and the
+/// host asleep again. So which status the controller has read when a solution comes is the same
+/// in every run.
 
 #include <vector>
 

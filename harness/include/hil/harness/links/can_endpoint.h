@@ -68,8 +68,16 @@ class CanEndpoint {
   /// be stamped at this turn or the next depending on the machine's load.
   std::vector<CanFrame> TakeArrivals(Time t_arrival);
   static constexpr Duration kSentFramesWait = std::chrono::seconds(1);
+  /// Virtual mode: reads the bus until the echoes of every frame sent have come back, at most
+  /// `limit` (then counted in sent_frames_wait_timeouts() and not awaited again). The kernel hands
+  /// a frame to every socket on the interface in one pass (the echo to ours among them): a host's
+  /// socket then has it, and the host, woken, is no longer asleep until it has read it. Others'
+  /// frames read meanwhile wait for TakeArrivals (with set_stamp_at_turns; else `t_now` stamps
+  /// them).
+  void AwaitEchoes(Time t_now, Duration limit);
   /// Turns at which the frames sent on the interface were not all read within kSentFramesWait
-  /// (a receive queue that dropped frames, or a sender on another machine's end).
+  /// (a receive queue that dropped frames, or a sender on another machine's end), or the echoes
+  /// of ours did not all come back (AwaitEchoes).
   std::uint64_t sent_frames_wait_timeouts() const { return sent_frames_wait_timeouts_; }
   /// Real time: waits up to `timeout` for the echoes of the frames sent, reading the bus meanwhile
   /// (PollBus returns what others sent), then captures any frame still without an echo at its
