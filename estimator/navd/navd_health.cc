@@ -102,6 +102,8 @@ void AppendConsistency(std::string& s, const NavigatorStats& n) {
   Add(s, "fadings", n.fadings);
   Add(s, "gap_fadings", n.gap_fadings);
   Add(s, "reject_fadings", n.reject_fadings);
+  Add(s, "gap_recoveries", n.gap_recoveries);
+  Add(s, "recovery_fixes", n.recovery_fixes);
   Add(s, "gnss_steps", n.gnss_steps);
   Add(s, "gnss_glitches", n.gnss_glitches);
   Add(s, "gnss_glitch_rejected", n.gnss_glitch_rejected);

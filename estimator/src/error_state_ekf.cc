@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <numbers>
 #include <utility>
@@ -797,7 +798,7 @@ void ErrorStateEkf::InflateCovariance(double factor) {
     P_.topRightCorner<kNumClassicStates, kNumStates - kNumClassicStates>() *= s;
     P_.bottomLeftCorner<kNumStates - kNumClassicStates, kNumClassicStates>() *= s;
   }
-  ClampBiasVariances();
+  ClampFadedVariances();
 }
 
 bool ErrorStateEkf::FadeGapNoiseTo(const Eigen::Vector3d& p_antenna_N_m,
@@ -817,16 +818,21 @@ bool ErrorStateEkf::FadeGapNoiseTo(const Eigen::Vector3d& p_antenna_N_m,
   const double g = missing / tr_hgh;
   P_.topLeftCorner<kNumClassicStates, kNumClassicStates>() += g * G;
   gap_noise_ = (1.0 + g) * G;
-  ClampBiasVariances();
+  ClampFadedVariances();
   return true;
 }
 
-void ErrorStateEkf::ClampBiasVariances() {
-  // a bias is never less known than before its first measurement: a bias variance above its
-  // initial one is scaled back to it, with its row and column (P <- D P D, D diagonal)
-  for (int i = kAccelBias; i < kGyroBias + 3; ++i) {
-    const double init_std =
-        i < kGyroBias ? params_.init_accel_bias_std_mps2 : params_.init_gyro_bias_std_radps;
+void ErrorStateEkf::ClampFadedVariances() {
+  // a bias, or the attitude, is never less known than before its first measurement: a variance
+  // above its initial one is scaled back to it, with its row and column (P <- D P D, D diagonal).
+  // The attitude's too: a fading by a factor of hundreds made an attitude σ of 2° one of 120°,
+  // past every small-angle model, and the filter diverged (the real car drive_0708, 15 s outages)
+  const auto& p = params_;
+  for (int i = kAtt; i < kGyroBias + 3; ++i) {
+    const double init_std = i < kAtt + 2     ? p.init_roll_pitch_std_rad
+                            : i < kAccelBias ? p.init_yaw_std_rad
+                            : i < kGyroBias  ? p.init_accel_bias_std_mps2
+                                             : p.init_gyro_bias_std_radps;
     const double var_max = init_std * init_std;
     if (!(P_(i, i) > var_max) || !(var_max > 0)) continue;
     const double c = std::sqrt(var_max / P_(i, i));

@@ -67,7 +67,7 @@ struct Rig {
       const Eigen::Vector3d f_N = a + 2.0 * w_ie.cross(v) - g_N;
       const Eigen::Vector3d w_B = Eigen::Vector3d(0, 0, truth.w_radps) + C.transpose() * w_ie;
       t_s += dt;
-      const testing::ImuNoise imu{accel_noise, gyro_noise, Eigen::Vector3d::Zero(), bias_B};
+      const testing::ImuNoise imu{accel_noise, gyro_noise, accel_bias_B, bias_B};
       const ImuSample s = testing::ImuSampleFromTruth(kT0 + Nanoseconds{std::llround(t_s * 1e9)},
                                                       dt, C, f_N, w_B, imu, rng, n01);
       const bool in_gap = t_s >= gap_from_s && t_s < gap_to_s;
@@ -83,7 +83,7 @@ struct Rig {
     for (int i = 0; i < 3; ++i) p[i] += fix_std_m * n01(rng);
     g.position = frame.ToLla(p);
     g.pos_std_enu_m.setConstant(fix_std_m);
-    g.has_velocity = true;
+    g.has_velocity = fix_velocity;
     g.vel_enu_mps = truth.Velocity(at_s);
     for (int i = 0; i < 3; ++i) g.vel_enu_mps[i] += 0.02 * n01(rng);
     g.vel_std_enu_mps.setConstant(0.02);
@@ -103,7 +103,9 @@ struct Rig {
   Truth truth;
   double accel_noise, gyro_noise;
   Eigen::Vector3d bias_B;
+  Eigen::Vector3d accel_bias_B = Eigen::Vector3d::Zero();
   double fix_std_m = 0.02;
+  bool fix_velocity = true;  // the fixes carry a velocity (false: position only, as KF-GINS files)
   Eigen::Vector3d glitch_N_m = Eigen::Vector3d::Zero();  // the receiver's jump, added to its fixes
   LocalTangentFrame frame{kOrigin};
   std::mt19937 rng{39};
@@ -255,7 +257,7 @@ TEST(NavigatorRobustnessTest, DefaultSettingsFadeToRejectedFixes) {
 
 // issue 39 (walk_0827): a covariance too small for every fix (an IMU ten times noisier than its
 // model, the process-noise adaptation off as by default). The plain 5σ gate rejects good fixes in
-// runs and the fading that ends each run throws away what the attitude and biases had learned;
+// runs and the fading that ends a run throws away what the attitude and biases had learned;
 // the gate against the window's median NIS takes them. A receiver's glitch is still rejected: a
 // few wild fixes do not move the median.
 TEST(NavigatorRobustnessTest, TheGateFollowsTheSpreadTheFilterHasShown) {
@@ -272,7 +274,10 @@ TEST(NavigatorRobustnessTest, TheGateFollowsTheSpreadTheFilterHasShown) {
     fadings[median] = rig.nav.stats().reject_fadings;
   }
   EXPECT_LT(rejected[1] * 5, rejected[0]) << rejected[1] << " against " << rejected[0];
-  EXPECT_LT(fadings[1] * 5, fadings[0]) << fadings[1] << " against " << fadings[0];
+  // fewer fadings, or as few: since a fading no longer makes the attitude less known than at the
+  // start (ErrorStateEkf::ClampFadedVariances) the plain gate's runs of rejections stopped
+  // repeating (5 fadings → 1 here)
+  EXPECT_LE(fadings[1], fadings[0]) << fadings[1] << " against " << fadings[0];
   EXPECT_LT(rmse[1], rmse[0]) << "median gate " << rmse[1] << " m, plain gate " << rmse[0] << " m";
   RecordProperty("rejected_plain_median",
                  std::to_string(rejected[0]) + " " + std::to_string(rejected[1]));
@@ -502,6 +507,56 @@ TEST(NavigatorRobustnessTest, RecoveryAfterAGapKeepsTheBiasKnowledge) {
     RecordProperty(gap_noise ? "bias_std_growth_gap_noise" : "bias_std_growth_whole",
                    std::to_string(growth.maxCoeff()));
   }
+}
+
+}  // namespace
+}  // namespace hil::estimator
+
+namespace hil::estimator {
+namespace {
+
+// issue 39 (the real car drive_0708, position-only RTK fixes, 15 and 30 s outages at up to 15 m/s):
+// the fixes after a gap's first one are taken without the gate until three in a row pass it. On
+// the car the gap's drift was systematic (a bias or a tilt: position ≈ velocity · t / 2); the gap's
+// first fix, faded to in the white noise's shape, left the velocity metres per second wrong, the
+// fixes after it were rejected, their rejections faded the whole covariance by hundreds (an
+// attitude σ of 120°) and navd diverged to kilometres (ci/real_drive_0708). The rig's synthetic
+// IMU does not drift that way, so the fixes after the gap are made to disagree with the filter
+// instead: 0.6 m off for a second (more than the gate allows the covariance after the first
+// fix). With the recovery they are taken; without it rejected. After the recovery the gate is
+// back: a 3 m receiver jump is rejected.
+TEST(NavigatorRobustnessTest, RecoveryAfterAGapTakesTheFixesAfterIt) {
+  const Truth truth{10.0, 0.05};
+  std::uint64_t rejected[2] = {0, 0};
+  for (const bool recovery : {false, true}) {
+    NavigatorParams p = Params(false);
+    p.robust = RobustnessParams{};
+    if (!recovery) p.robust.gap_recovery_max = Nanoseconds{0};
+    Rig rig(p, truth, 0.005, 5e-5, Eigen::Vector3d::Zero());
+    rig.fix_velocity = false;
+    rig.Run(120.0, 0.25);
+    rig.Run(135.1, 0.25, 120.0, 135.1);  // 15 s without fixes; the next at 135.25 s
+    const std::uint64_t before = rig.nav.stats().gnss_rejected;
+    rig.Run(135.3, 0.25);  // the gap's first fix
+    rig.glitch_N_m = Eigen::Vector3d(0.6, 0.0, 0.0);
+    rig.Run(136.3, 0.25);
+    rig.glitch_N_m.setZero();
+    rig.Run(141.0, 0.25);
+    rejected[recovery] = rig.nav.stats().gnss_rejected - before;
+    if (!recovery) continue;
+    const NavigatorStats& st = rig.nav.stats();
+    EXPECT_EQ(st.gap_recoveries, 1u);
+    EXPECT_GE(st.recovery_fixes, 4u);
+    EXPECT_LT(rig.HorizontalError(), 0.10);
+    rig.glitch_N_m = Eigen::Vector3d(3.0, 0.0, 0.0);
+    const std::uint64_t taken = st.gnss_rejected;
+    rig.Run(141.6, 0.25);
+    EXPECT_EQ(st.gnss_rejected - taken, 2u) << "the gate is not back after the recovery";
+  }
+  RecordProperty("rejected_without_with",
+                 std::to_string(rejected[0]) + " " + std::to_string(rejected[1]));
+  EXPECT_EQ(rejected[1], 0u);
+  EXPECT_GT(rejected[0], 0u) << "the fixes after the gap pass the gate without the recovery";
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // and robustness".
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "hil/estimator/navigator.h"
@@ -60,6 +61,17 @@ double Navigator::PositionGateScale() const {
   return std::max(1.0, m.window_median_nis_per_dof() / kChi2Dof3MedianPerDof);
 }
 
+bool Navigator::InGapRecovery(GpsTime t, bool time_gap) {
+  const Nanoseconds max = params_.robust.gap_recovery_max;
+  if (time_gap && max > Nanoseconds{0}) {
+    recovery_until_ = t + max;
+    recovery_passes_ = 0;
+    ++stats_.gap_recoveries;
+  }
+  if (recovery_until_ && t > *recovery_until_) recovery_until_.reset();
+  return recovery_until_.has_value();
+}
+
 UpdateResult Navigator::ControlGnssPosition(const GnssSample& g, const Eigen::Vector3d& p) {
   const RobustnessParams& rp = params_.robust;
   // a fix after a gap meets a covariance the configured noise may have grown too little
@@ -70,9 +82,22 @@ UpdateResult Navigator::ControlGnssPosition(const GnssSample& g, const Eigen::Ve
   const bool step = fades && CheckGnssStep(g, p);
   // an RTK fix episode's first fix is judged before it can move the filter (RtkFixFrames)
   if (const std::optional<UpdateResult> suspect = ControlRtkFix(g, p)) return *suspect;
-  ekf_.SetGateScale(PositionGateScale());
+  const bool recovering = fades && InGapRecovery(g.t, time_gap);
+  const double gate_scale = PositionGateScale();
+  // the gap's first fix: gated, and faded to if the gap outgrew the covariance (below)
+  const bool ungated = recovering && !time_gap;
+  ekf_.SetGateScale(ungated ? std::numeric_limits<double>::infinity() : gate_scale);
   UpdateResult r = ekf_.UpdatePosition(p, g.pos_std_enu_m);
   ekf_.SetGateScale(1.0);
+  if (ungated && r.accepted) {
+    ++stats_.recovery_fixes;
+    // back at its fixes: gap_recovery_passes fixes in a row after the gap's first that the gate
+    // would have taken
+    const double gate_sigma = params_.ekf.gate_sigma;
+    const bool passes = r.nis <= gate_sigma * gate_sigma * r.dof * gate_scale;
+    recovery_passes_ = passes ? recovery_passes_ + 1 : 0;
+    if (recovery_passes_ >= rp.gap_recovery_passes) recovery_until_.reset();
+  }
   if (fades && r.dof > 0) {
     // the GNSS consistency check: a rejected step is the receiver's, not the model's
     if (glitch_since_ && (r.accepted || !InGnssGlitch(g.t))) {

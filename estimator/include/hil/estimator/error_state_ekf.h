@@ -480,8 +480,9 @@ class ErrorStateEkf {
   };
   PhiBlocks TransposedPhiBlocks(const Eigen::Matrix3d& C, double dt) const;
   /// The same over P's first N states (N = 15 when the augmented states are off).
-  /// Bias variances above their initial ones scaled back to them, with their rows and columns.
-  void ClampBiasVariances();
+  /// After a fading: attitude and bias variances above their initial ones scaled back to them,
+  /// with their rows and columns.
+  void ClampFadedVariances();
   template <int N, typename Block>
   void PropagateCovarianceOf(Block P, const PhiBlocks& phi, double dt, double gm_decay,
                              double dev_decay) const;

@@ -104,6 +104,18 @@ struct RobustnessParams {
   /// biases) was wrong. On by default (issue 39: walk_0827's 10 s outages 20 s after another,
   /// 3 of 36 windows above 2 × KF-GINS → 0; estimator.md, "Recovering after an outage").
   bool fade_gap_noise = true;
+  /// Recovery after a gap: the first fix after gap_after without fixes, and the fixes after it,
+  /// are fused against the filter's own covariance without the gate until one passes the gate
+  /// (the filter has come back to its fixes) or gap_recovery_max has passed; no fading then. The
+  /// covariance the INS propagated over the gap holds the gap's drift in the shape the INS
+  /// errors give it (position ≈ velocity·t/2 for a bias or tilt error): the first fix corrects
+  /// the velocity with it, where a fading in any other shape (the white noise's, or λ P) left
+  /// the velocity metres per second wrong, the next fixes rejected, and the faded attitude to
+  /// diverge (the real car drive_0708, 15 and 30 s outages: km, 26 resets; estimator.md,
+  /// "Recovering after an outage"). A receiver glitch or a suspect RTK fix is still held off
+  /// (GnssStepCheck, RtkFixCheck). Zero: off (a gap's fix is faded, fade_gap_noise).
+  Nanoseconds gap_recovery_max{5'000'000'000};
+  int gap_recovery_passes = 3;           ///< fixes in a row within the gate that end a recovery
   double max_fading_factor = 1e6;        ///< largest covariance factor of one fading step
   double max_process_noise_scale = 1e4;  ///< largest process-noise scale (σ ×100)
   double max_scale_step = 10.0;          ///< largest change of that scale per window
@@ -280,6 +292,8 @@ struct NavigatorStats {
   std::uint64_t fadings = 0;         ///< covariance fadings (all causes)
   std::uint64_t gap_fadings = 0;     ///< of which for a fix after a gap
   std::uint64_t reject_fadings = 0;  ///< of which for fixes rejected in a row
+  std::uint64_t gap_recoveries = 0;  ///< gaps recovered from without the gate (gap_recovery_max)
+  std::uint64_t recovery_fixes = 0;  ///< fixes fused without the gate in those recoveries
   std::uint64_t gnss_steps = 0;      ///< fixes that stepped where the INS did not (GnssStepCheck)
   std::uint64_t gnss_glitches = 0;   ///< receiver glitches (a rejected step) begun
   std::uint64_t gnss_glitch_rejected = 0;  ///< fixes rejected as part of a glitch
@@ -401,6 +415,8 @@ class Navigator {
   UpdateResult ControlGnssPosition(const GnssSample& g, const Eigen::Vector3d& p_antenna_N_m);
   /// The GNSS position gate's factor (RobustnessParams::gate_follows_median_nis), ≥ 1.
   double PositionGateScale() const;
+  /// Starts a gap's recovery at a fix after a gap; whether `t` is in one (gap_recovery_max).
+  bool InGapRecovery(GpsTime t, bool time_gap);
   void AdaptToInnovations();
   /// The GNSS consistency check before a fix's update: is this fix a step the INS did not make?
   bool CheckGnssStep(const GnssSample& g, const Eigen::Vector3d& p_antenna_N_m);
@@ -484,6 +500,8 @@ class Navigator {
   bool stationary_now_ = false;
   GpsTime last_zupt_t_{};
   std::optional<GpsTime> last_fix_seen_t_;  // the newest fix the filter processed
+  std::optional<GpsTime> recovery_until_;   // recovering from a gap until then (gap_recovery_max)
+  int recovery_passes_ = 0;                 // fixes in a row in it that the gate would have taken
   GnssStepCheck step_;                      // GNSS increments against the INS displacement
   ImuTimeOffset imu_lag_;                   // the IMU tags' lag behind GNSS time
   Nanoseconds imu_lag_applied_{0};          // the lag taken off the IMU tags now
