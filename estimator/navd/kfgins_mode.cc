@@ -25,7 +25,7 @@ int Usage(const char* problem) {
   std::fprintf(
       stderr,
       "navd: %s\nusage: navd --kfgins CONFIG.yaml [--navd-conf FILE] [--nhc-std-mps S] [--align]\n"
-      "       [--adaptive]\n"
+      "       [--mount-yaw-std-deg S] [--adaptive]\n"
       "  runs navd's filter on a KF-GINS dataset (the configuration's imupath, gnsspath)\n"
       "  and writes KF_GINS_Navresult.nav, KF_GINS_IMU_ERR.txt, KF_GINS_STD.txt to its\n"
       "  outputpath. --navd-conf takes the [filter] section of a navd.conf instead of\n"
@@ -33,6 +33,8 @@ int Usage(const char* problem) {
       "  navd's non-holonomic constraint (a ground vehicle: no lateral or vertical body\n"
       "  velocity, this sigma in m/s, every 0.1 s) to them; --align lets the filter\n"
       "  align itself as navd does online instead of starting from initpos/initatt;\n"
+      "  --mount-yaw-std-deg estimates the IMU's mounting yaw against the vehicle with\n"
+      "  this prior sigma (with the NHC; 0 by default: held; a car: a few degrees);\n"
       "  --adaptive turns on the filter's adaptation to its innovations (estimator.md).\n",
       problem);
   return 2;
@@ -42,7 +44,7 @@ int Usage(const char* problem) {
 int KfginsMain(int argc, char** argv) {
   std::string config_path, navd_conf;
   bool self_align = false, adaptive = false;
-  double nhc_std_mps = 0.0;
+  double nhc_std_mps = 0.0, mount_yaw_std_deg = -1.0;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--kfgins" && i + 1 < argc) {
@@ -54,6 +56,12 @@ int KfginsMain(int argc, char** argv) {
       nhc_std_mps = std::strtod(argv[++i], &end);
       if (end == argv[i] || *end != '\0' || !(nhc_std_mps > 0) || !std::isfinite(nhc_std_mps))
         return Usage("--nhc-std-mps: not a positive number of m/s");
+    } else if (a == "--mount-yaw-std-deg" && i + 1 < argc) {
+      char* end = nullptr;
+      mount_yaw_std_deg = std::strtod(argv[++i], &end);
+      if (end == argv[i] || *end != '\0' || !(mount_yaw_std_deg >= 0) ||
+          !std::isfinite(mount_yaw_std_deg))
+        return Usage("--mount-yaw-std-deg: not a non-negative number of degrees");
     } else if (a == "--adaptive") {
       adaptive = true;
     } else if (a == "--align") {
@@ -72,6 +80,7 @@ int KfginsMain(int argc, char** argv) {
     }
     if (nhc_std_mps > 0) params.ekf.nhc_std_mps = nhc_std_mps;
     if (adaptive) params.robust.adaptive = true;
+    if (mount_yaw_std_deg >= 0) params.ekf.mount_yaw_std_rad = mount_yaw_std_deg * M_PI / 180.0;
     const ds::KfginsRunResult r = ds::RunKfgins(cfg, params, self_align);
     std::fprintf(
         stderr,

@@ -156,6 +156,19 @@ TEST(KfginsNhc, NonHolonomicConstraintNarrowsTheErrors) {
       << plain.out << nhc.out;
   EXPECT_EQ(
       RunCommand(BinDir() + "/navd --kfgins " + d + "/kf-gins.yaml --nhc-std-mps -1").exit_code, 2);
+  // the mounting yaw estimated with the NHC (a car's roof mount): the generator's IMU is mounted
+  // straight, so the yaw stays near 0 and the constraint keeps narrowing the vertical error
+  const CommandResult yaw = RunCommand(BinDir() + "/navd --kfgins " + d +
+                                       "/kf-gins.yaml --nhc-std-mps 0.02 --mount-yaw-std-deg 5");
+  ASSERT_EQ(yaw.exit_code, 0) << yaw.out;
+  const CommandResult with_yaw = RunCommand(score);
+  ASSERT_EQ(with_yaw.exit_code, 0) << with_yaw.out;
+  EXPECT_LT(ScoreField(with_yaw.out, "vertical RMSE "),
+            0.5 * ScoreField(plain.out, "vertical RMSE "))
+      << with_yaw.out;
+  EXPECT_EQ(RunCommand(BinDir() + "/navd --kfgins " + d + "/kf-gins.yaml --mount-yaw-std-deg x")
+                .exit_code,
+            2);
 }
 
 TEST(KfginsReplay, RealUbloxLogGivesAConsistencyReport) {
