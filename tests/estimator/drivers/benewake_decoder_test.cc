@@ -13,8 +13,12 @@
 
 #include <gtest/gtest.h>
 
+#include "joined_text.h"
+
 namespace hil::estimator::drivers {
 namespace {
+
+using hil::test::Joined;
 
 std::string SourcePath(const std::string& rel) {
   const char* src = std::getenv("HIL_SOURCE_DIR");
@@ -118,7 +122,7 @@ TEST(BenewakeDecoder, SurvivesCorruptionAndKnowsTfminiCodes) {
   std::string bad = ok;
   bad[3] = 0x01;  // checksum no longer matches
   const std::string minus_one("\x59\x59\xFF\xFF\x20\x00\x40\x09\x19", 9);  // −1, Amp 32
-  dec.Feed("\x13" + bad + ok + minus_one);
+  dec.Feed(Joined("\x13", bad, ok, minus_one));
   ASSERT_EQ(got.size(), 2u);
   EXPECT_TRUE(got[0].valid);
   EXPECT_DOUBLE_EQ(got[0].distance_m, 0.5);
@@ -139,7 +143,7 @@ TEST(BenewakeDecoder, KnowsWhereEachFrameEnds) {
   const std::string ok("\x59\x59\x32\x00\xE8\x03\x40\x09\x18", 9);
   std::string bad = ok;
   bad[3] = 0x01;
-  const std::string stream = ok + "\x13" + bad + ok + ok;
+  const std::string stream = Joined(ok, "\x13", bad, ok, ok);
   dec.Feed(stream.substr(0, 4));
   dec.Feed(stream.substr(4, 17));
   dec.Feed(stream.substr(21));

@@ -7,8 +7,12 @@
 
 #include "hil/estimator/drivers/nmea_epoch.h"
 
+#include "joined_text.h"
+
 namespace hil::estimator::drivers {
 namespace {
+
+using hil::test::Joined;
 
 std::vector<NmeaFix> Decode(const std::vector<std::string>& pieces,
                             NmeaDecoderStats* stats = nullptr) {
@@ -40,7 +44,7 @@ TEST(NmeaDecoderTest, DecodesCapturedGga) {
 TEST(NmeaDecoderTest, SurvivesSplitReadsGarbageAndBadChecksums) {
   std::string bad = kGga;
   bad[20] = '9';  // corrupt a digit: checksum no longer matches
-  const std::string stream = std::string("\xB5\x62\x01\x02junk") + kRmc + bad + "noise" + kGga;
+  const std::string stream = Joined("\xB5\x62\x01\x02junk", kRmc, bad, "noise", kGga);
   std::vector<std::string> pieces;
   for (std::size_t i = 0; i < stream.size(); i += 7) pieces.push_back(stream.substr(i, 7));
   NmeaDecoderStats st;

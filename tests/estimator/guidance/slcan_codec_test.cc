@@ -5,10 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include "joined_text.h"
 #include "slcan_golden.h"
 
 namespace hil::estimator::guidance {
 namespace {
+
+using hil::test::Joined;
 
 SlcanReply ReadAll(SlcanReader& r, const std::string& bytes) {
   SlcanReply last = SlcanReply::kNone;
@@ -74,7 +77,7 @@ TEST(SlcanCodecTest, SkipsTheAdaptersTimeStampAndCountsMalformedRecords) {
   EXPECT_EQ(r.frame().id, 0x0CACFF1Cu);
   EXPECT_EQ(r.frame().data[0], 0xAB);
   EXPECT_EQ(ReadAll(r, "T0CACFF1C1ABX\r"), SlcanReply::kMalformed);
-  EXPECT_EQ(ReadAll(r, std::string(60, 'T') + "\r"), SlcanReply::kMalformed);
+  EXPECT_EQ(ReadAll(r, Joined(std::string(60, 'T'), "\r")), SlcanReply::kMalformed);
   EXPECT_EQ(r.malformed(), 2u);
 }
 

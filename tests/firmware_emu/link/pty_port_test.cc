@@ -6,11 +6,16 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 #include <gtest/gtest.h>
 
+#include "joined_text.h"
+
 namespace hil::link {
 namespace {
+
+using hil::test::Joined;
 
 std::string ReadSome(int fd, std::size_t want) {
   std::string out;
@@ -33,7 +38,7 @@ TEST(PtyPortTest, BytesCrossBothWaysThroughTheSymlink) {
   const int host = open(link.c_str(), O_RDWR | O_NOCTTY);
   ASSERT_GE(host, 0);
   // raw mode: CR/LF and binary bytes arrive untouched, nothing is echoed back
-  const std::string msg = std::string("$GPGGA,1*00\r\n") + std::string("\xB5\x62\x00\xFF", 4);
+  const std::string msg = Joined("$GPGGA,1*00\r\n", std::string_view("\xB5\x62\x00\xFF", 4));
   ASSERT_EQ(port.Write(msg), static_cast<long>(msg.size()));
   EXPECT_EQ(ReadSome(host, msg.size()), msg);
   EXPECT_EQ(port.ReadAvailable(), "");

@@ -13,8 +13,12 @@
 #include "hil/harness/scenario/scenario.h"
 #include "hil/harness/scenario/yaml_reader.h"
 
+#include "joined_text.h"
+
 namespace hil::harness {
 namespace {
+
+using hil::test::Joined;
 
 constexpr const char* kMinimal = "name: t\norigin: {lat_deg: 35.0, lon_deg: 50.0}\n";
 
@@ -29,10 +33,9 @@ TEST(ScenarioGnssTest, DefaultIsOneNeo5mOnTtyGps) {
 
 TEST(ScenarioGnssTest, ThreeReceiversOnACircleFiveMetresApart) {
   // seed 000: three receivers on a 3 m circle, 5.2 m apart
-  const Scenario s =
-      ParseScenario(std::string(kMinimal) +
-                        "gnss: {count: 3, array_radius_m: 3.0, antenna_lever_arm_m: [0, 0, 1.2]}\n",
-                    "s.yaml");
+  const Scenario s = ParseScenario(
+      Joined(kMinimal, "gnss: {count: 3, array_radius_m: 3.0, antenna_lever_arm_m: [0, 0, 1.2]}\n"),
+      "s.yaml");
   ASSERT_EQ(s.gnss.receivers.size(), 3u);
   EXPECT_EQ(s.gnss.receivers[0].link, "ttyGPS");
   EXPECT_EQ(s.gnss.receivers[1].link, "ttyGPS1");
@@ -48,15 +51,15 @@ TEST(ScenarioGnssTest, ThreeReceiversOnACircleFiveMetresApart) {
 
 TEST(ScenarioGnssTest, ExplicitReceiversFaultsAndStart) {
   const Scenario s =
-      ParseScenario(std::string(kMinimal) +
-                        "gnss:\n"
-                        "  start: cold\n"
-                        "  receivers:\n"
-                        "    - {link: gpsA, antenna_lever_arm_m: [1, 0, 1]}\n"
-                        "    - {link: gpsB, antenna_lever_arm_m: [-1, 0, 1]}\n"
-                        "  faults:\n"
-                        "    - {kind: outage, start_s: 10, end_s: 20}\n"
-                        "    - {kind: step, start_s: 30, end_s: 31, offset_m: [2, 0, 0]}\n",
+      ParseScenario(Joined(kMinimal,
+                           "gnss:\n"
+                           "  start: cold\n"
+                           "  receivers:\n"
+                           "    - {link: gpsA, antenna_lever_arm_m: [1, 0, 1]}\n"
+                           "    - {link: gpsB, antenna_lever_arm_m: [-1, 0, 1]}\n"
+                           "  faults:\n"
+                           "    - {kind: outage, start_s: 10, end_s: 20}\n"
+                           "    - {kind: step, start_s: 30, end_s: 31, offset_m: [2, 0, 0]}\n"),
                     "s.yaml");
   ASSERT_EQ(s.gnss.receivers.size(), 2u);
   EXPECT_EQ(s.gnss.link, "gpsA");
@@ -67,7 +70,7 @@ TEST(ScenarioGnssTest, ExplicitReceiversFaultsAndStart) {
 }
 
 TEST(ScenarioGnssTest, RtkProfileDefaults) {
-  const Scenario s = ParseScenario(std::string(kMinimal) + "gnss: {profile: rtk}\n", "s.yaml");
+  const Scenario s = ParseScenario(Joined(kMinimal, "gnss: {profile: rtk}\n"), "s.yaml");
   EXPECT_EQ(s.gnss.baud, 115200);
   EXPECT_EQ(s.gnss.rate_hz, 10.0);
   EXPECT_LT(s.gnss.model.horizontal_sigma_m, 0.02);
@@ -77,7 +80,7 @@ TEST(ScenarioGnssTest, RefusesRatesAboveTheReceiverAndBadFaults) {
   for (const std::string bad :
        {"gnss: {rate_hz: 10}\n", "gnss: {faults: [{kind: outage, start_s: 5, end_s: 2}]}\n",
         "gnss: {faults: [{kind: jam}]}\n", "gnss: {receivers: [{link: a}, {link: a}]}\n"}) {
-    EXPECT_THROW(ParseScenario(std::string(kMinimal) + bad, "s.yaml"), ScenarioError) << bad;
+    EXPECT_THROW(ParseScenario(Joined(kMinimal, bad), "s.yaml"), ScenarioError) << bad;
   }
 }
 
@@ -118,9 +121,9 @@ std::vector<std::string> GgaAt(const Scenario& s, double lat, double lon, double
 TEST(ScenarioGnssTest, ReceiversPrintTheUblox5GeoidAtTheirFix) {
   for (const auto& [lat, lon, n] :
        {std::tuple{52.0028467, 6.0362388, "46.1"}, std::tuple{35.4796096, 50.5979765, "-17.2"}}) {
-    const Scenario s = ParseScenario(std::string(kMinimal) +
-                                         "gnss: {errors: {horizontal_sigma_m: "
-                                         "0, vertical_sigma_m: 0}}\n",
+    const Scenario s = ParseScenario(Joined(kMinimal,
+                                            "gnss: {errors: {horizontal_sigma_m: "
+                                            "0, vertical_sigma_m: 0}}\n"),
                                      "s.yaml");
     const auto f = GgaAt(s, lat, lon, 100.0);
     EXPECT_EQ(f[11], n) << lat;
@@ -133,11 +136,11 @@ TEST(ScenarioGnssTest, GeoidKeysChooseTheModelOrFixTheHeight) {
   const Scenario table = ParseScenario(kMinimal, "s.yaml");
   ASSERT_TRUE(table.gnss.model.geoid);
   EXPECT_EQ(table.gnss.model.geoid->lat_step_deg(), 10.0);
-  const Scenario fine = ParseScenario(std::string(kMinimal) + "gnss: {geoid: egm96}\n", "s.yaml");
+  const Scenario fine = ParseScenario(Joined(kMinimal, "gnss: {geoid: egm96}\n"), "s.yaml");
   ASSERT_TRUE(fine.gnss.model.geoid);
   EXPECT_EQ(fine.gnss.model.geoid->lat_step_deg(), 0.25);
   const Scenario fixed =
-      ParseScenario(std::string(kMinimal) + "gnss: {geoid_separation_m: -20.0}\n", "s.yaml");
+      ParseScenario(Joined(kMinimal, "gnss: {geoid_separation_m: -20.0}\n"), "s.yaml");
   EXPECT_FALSE(fixed.gnss.model.geoid);
   EXPECT_EQ(fixed.gnss.model.geoid_separation_m, -20.0);
   const auto f = GgaAt(fixed, 35.4796096, 50.5979765, 100.0);
@@ -145,7 +148,7 @@ TEST(ScenarioGnssTest, GeoidKeysChooseTheModelOrFixTheHeight) {
   for (const char* bad :
        {"gnss: {geoid: egm2008}\n", "gnss: {geoid: egm96, geoid_separation_m: 1}\n",
         "gnss: {geoid_separation_m: 500}\n"}) {
-    EXPECT_THROW(ParseScenario(std::string(kMinimal) + bad, "s.yaml"), ScenarioError) << bad;
+    EXPECT_THROW(ParseScenario(Joined(kMinimal, bad), "s.yaml"), ScenarioError) << bad;
   }
 }
 

@@ -10,29 +10,33 @@
 #include "hil/harness/scenario/scenario.h"
 #include "hil/harness/scenario/yaml_reader.h"
 
+#include "joined_text.h"
+
 namespace hil::harness {
 namespace {
+
+using hil::test::Joined;
 
 constexpr const char* kBase = "name: t\norigin: {lat_deg: 45.75, lon_deg: 126.63}\n";
 
 TEST(ScenarioGnssRoughTest, WithoutTheKeysNothingChanges) {
-  const Scenario s = ParseScenario(std::string(kBase) + "gnss: {profile: rtk}\n", "s.yaml");
+  const Scenario s = ParseScenario(Joined(kBase, "gnss: {profile: rtk}\n"), "s.yaml");
   EXPECT_FALSE(s.gnss.shading.active());
   EXPECT_FALSE(s.gnss.rtk_rough);
 }
 
 TEST(ScenarioGnssRoughTest, ObstructionsMultipathAndRtkAreRead) {
   const Scenario s = ParseScenario(
-      std::string(kBase) +
-          "obstructions:\n"
-          "  - {kind: tree_line, from_m: [0, 10], to_m: [300, 10], width_m: 6, height_m: 15,\n"
-          "     loss_db_per_m: 1.5}\n"
-          "  - {kind: building, centre_m: [50, -30], size_m: [20, 12], heading_deg: 90,"
-          " height_m: 8}\n"
-          "gnss:\n"
-          "  profile: rtk\n"
-          "  multipath: {nav_min_dbhz: 25, correlator_spacing_chip: 0.1}\n"
-          "  rtk: {time_to_fix_s: 30, wrong_fix_probability: 0.2, min_sats_fixed: 7}\n",
+      Joined(kBase,
+             "obstructions:\n"
+             "  - {kind: tree_line, from_m: [0, 10], to_m: [300, 10], width_m: 6, height_m: 15,\n"
+             "     loss_db_per_m: 1.5}\n"
+             "  - {kind: building, centre_m: [50, -30], size_m: [20, 12], heading_deg: 90,"
+             " height_m: 8}\n"
+             "gnss:\n"
+             "  profile: rtk\n"
+             "  multipath: {nav_min_dbhz: 25, correlator_spacing_chip: 0.1}\n"
+             "  rtk: {time_to_fix_s: 30, wrong_fix_probability: 0.2, min_sats_fixed: 7}\n"),
       "s.yaml");
   ASSERT_TRUE(s.gnss.shading.active());
   const auto& obs = s.gnss.shading.obstructions->obstacles();
@@ -54,9 +58,9 @@ TEST(ScenarioGnssRoughTest, ObstructionsMultipathAndRtkAreRead) {
 }
 
 TEST(ScenarioGnssRoughTest, AGreenhouseTakesTheGreenhouseSectionsWalls) {
-  const Scenario s = ParseScenario(std::string(kBase) +
-                                       "greenhouse: {ridges: {count: 4, length_m: 30}}\n"
-                                       "obstructions: [{kind: greenhouse}]\n",
+  const Scenario s = ParseScenario(Joined(kBase,
+                                          "greenhouse: {ridges: {count: 4, length_m: 30}}\n"
+                                          "obstructions: [{kind: greenhouse}]\n"),
                                    "s.yaml");
   const auto& o = s.gnss.shading.obstructions->obstacles().at(0);
   EXPECT_EQ(o.height_m, s.greenhouse->wall_height_m);
@@ -67,7 +71,7 @@ TEST(ScenarioGnssRoughTest, AGreenhouseTakesTheGreenhouseSectionsWalls) {
 
 void ExpectError(const std::string& text, int line, const std::string& field) {
   try {
-    ParseScenario(std::string(kBase) + text, "s.yaml");
+    ParseScenario(Joined(kBase, text), "s.yaml");
     FAIL() << "expected a ScenarioError for\n" << text;
   } catch (const ScenarioError& e) {
     EXPECT_EQ(e.field(), field) << e.what();

@@ -21,8 +21,12 @@
 #include "hil/harness/run/device_set.h"
 #include "hil/harness/scenario/yaml_reader.h"
 
+#include "joined_text.h"
+
 namespace hil::harness {
 namespace {
+
+using hil::test::Joined;
 
 // A GNSS + IMU navd (ekf) with the rig's receiver on ttyGPS and a rover on ttyF9P at 115200 Bd,
 // its antenna 0.5 m left of the rig's.
@@ -90,7 +94,7 @@ TEST_F(NavdGnssSourceTest, TheRawFixBaselineReadsTheRover) {
 }
 
 TEST_F(NavdGnssSourceTest, NavdInputFalseKeepsTheGnssReceiver) {
-  const Scenario s = ParseScenario(std::string(kScenario) + "  navd_input: false\n", "s.yaml");
+  const Scenario s = ParseScenario(Joined(kScenario, "  navd_input: false\n"), "s.yaml");
   EXPECT_FALSE(NavdReadsRover(s));
   const std::string conf = NavdConf(s, dir_);
   EXPECT_NE(conf.find("gnss_device = " + dir_ + "/ttyGPS\n"), std::string::npos) << conf;

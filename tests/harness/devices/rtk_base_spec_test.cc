@@ -15,8 +15,12 @@
 #include "hil/harness/scenario/scenario.h"
 #include "hil/harness/scenario/yaml_reader.h"
 
+#include "joined_text.h"
+
 namespace hil::harness {
 namespace {
+
+using hil::test::Joined;
 
 constexpr const char* kBase =
     "name: t\n"
@@ -28,7 +32,7 @@ TEST(ScenarioRtkBaseTest, NoSectionNoBase) {
 }
 
 TEST(ScenarioRtkBaseTest, DefaultsPutTheBaseAtTheOrigin) {
-  const Scenario s = ParseScenario(std::string(kBase) + "rtk_base: {}\n", "s.yaml");
+  const Scenario s = ParseScenario(Joined(kBase, "rtk_base: {}\n"), "s.yaml");
   ASSERT_TRUE(s.rtk_base.enabled);
   const rtk::RtkBaseConfig& c = s.rtk_base.config;
   EXPECT_EQ(s.rtk_base.link, "ttyRTCM");
@@ -43,23 +47,23 @@ TEST(ScenarioRtkBaseTest, DefaultsPutTheBaseAtTheOrigin) {
 
 TEST(ScenarioRtkBaseTest, EveryKey) {
   const Scenario s = ParseScenario(
-      std::string(kBase) +
-          "rtk_base:\n"
-          "  link: ttyCORR\n"
-          "  station_id: 4095\n"
-          "  offset_enu_m: [1200, 1600, 3]\n"
-          "  antenna_height_m: 1.5\n"
-          "  msm: 4\n"
-          "  station_message: 1005\n"
-          "  obs_rate_hz: 2\n"
-          "  station_interval_s: 30\n"
-          "  output_lag_s: 0.1\n"
-          "  baud: 19200\n"
-          "  tx_buffer_bytes: 1024\n"
-          "  radio: {bytes_per_s: 2000, latency_s: 0.2, loss_probability: 0.1,\n"
-          "          outages: [{start_s: 60, end_s: 90}]}\n"
-          "  observables: {elevation_mask_deg: 15, zenith_tropo_m: 2.0, vertical_iono_l1_m: 4,\n"
-          "                phase_noise_m: 0.003}\n",
+      Joined(kBase,
+             "rtk_base:\n"
+             "  link: ttyCORR\n"
+             "  station_id: 4095\n"
+             "  offset_enu_m: [1200, 1600, 3]\n"
+             "  antenna_height_m: 1.5\n"
+             "  msm: 4\n"
+             "  station_message: 1005\n"
+             "  obs_rate_hz: 2\n"
+             "  station_interval_s: 30\n"
+             "  output_lag_s: 0.1\n"
+             "  baud: 19200\n"
+             "  tx_buffer_bytes: 1024\n"
+             "  radio: {bytes_per_s: 2000, latency_s: 0.2, loss_probability: 0.1,\n"
+             "          outages: [{start_s: 60, end_s: 90}]}\n"
+             "  observables: {elevation_mask_deg: 15, zenith_tropo_m: 2.0, vertical_iono_l1_m: 4,\n"
+             "                phase_noise_m: 0.003}\n"),
       "s.yaml");
   const rtk::RtkBaseConfig& c = s.rtk_base.config;
   EXPECT_EQ(s.rtk_base.link, "ttyCORR");
@@ -86,7 +90,7 @@ TEST(ScenarioRtkBaseTest, EveryKey) {
 
 void ExpectError(const std::string& text, const std::string& field, const std::string& fragment) {
   try {
-    ParseScenario(std::string(kBase) + text, "s.yaml");
+    ParseScenario(Joined(kBase, text), "s.yaml");
     FAIL() << "expected a ScenarioError";
   } catch (const ScenarioError& e) {
     EXPECT_EQ(e.field(), field) << e.what();
@@ -107,7 +111,7 @@ TEST(ScenarioRtkBaseTest, BadValuesNameTheirField) {
 }
 
 TEST(ScenarioRtkBaseTest, TheRunHasTheBaseOnItsPty) {
-  const Scenario s = ParseScenario(std::string(kBase) + "rtk_base: {station_id: 7}\n", "s.yaml");
+  const Scenario s = ParseScenario(Joined(kBase, "rtk_base: {station_id: 7}\n"), "s.yaml");
   const std::string dir =
       (std::filesystem::temp_directory_path() / ("hil_rtk_base_" + std::to_string(::getpid())))
           .string();

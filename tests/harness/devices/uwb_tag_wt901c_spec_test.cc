@@ -14,8 +14,12 @@
 #include "hil/harness/scenario/scenario.h"
 #include "hil/harness/scenario/yaml_reader.h"
 
+#include "joined_text.h"
+
 namespace hil::harness {
 namespace {
+
+using hil::test::Joined;
 
 constexpr const char* kBase =
     "name: t\n"
@@ -29,11 +33,11 @@ TEST(ScenarioPaper003Test, NoSectionsNoDevices) {
 
 TEST(ScenarioPaper003Test, SectionsAndDefaults) {
   const Scenario s = ParseScenario(
-      std::string(kBase) +
-          "uwb: {rate_hz: 10, output: both, anchors_m: [0, 0, 20, 0, 20, 20, 0, 20],\n"
-          "      nlos_zones: [{centre_m: [3, 4], radius_m: 2, bias_m: 0.5}]}\n"
-          "wt901c: {baud: 115200, rate_hz: 50}\n"
-          "estimator: {navd_mode: uwb}\n",
+      Joined(kBase,
+             "uwb: {rate_hz: 10, output: both, anchors_m: [0, 0, 20, 0, 20, 20, 0, 20],\n"
+             "      nlos_zones: [{centre_m: [3, 4], radius_m: 2, bias_m: 0.5}]}\n"
+             "wt901c: {baud: 115200, rate_hz: 50}\n"
+             "estimator: {navd_mode: uwb}\n"),
       "s.yaml");
   ASSERT_TRUE(s.uwb.enabled);
   EXPECT_EQ(s.uwb.link, "ttyUWB");
@@ -52,7 +56,7 @@ TEST(ScenarioPaper003Test, SectionsAndDefaults) {
 
 void ExpectError(const std::string& text, const std::string& field, const std::string& fragment) {
   try {
-    ParseScenario(std::string(kBase) + text, "s.yaml");
+    ParseScenario(Joined(kBase, text), "s.yaml");
     FAIL() << "expected a ScenarioError";
   } catch (const ScenarioError& e) {
     EXPECT_EQ(e.field(), field) << e.what();
@@ -72,9 +76,9 @@ TEST(ScenarioPaper003Test, BadValuesNameTheirField) {
 }
 
 TEST(ScenarioPaper003Test, DevicesLinksAndNavdConf) {
-  const Scenario s = ParseScenario(std::string(kBase) +
-                                       "uwb: {output: tdoa}\nwt901c: {}\n"
-                                       "estimator: {navd_mode: uwb}\n",
+  const Scenario s = ParseScenario(Joined(kBase,
+                                          "uwb: {output: tdoa}\nwt901c: {}\n"
+                                          "estimator: {navd_mode: uwb}\n"),
                                    "s.yaml");
   const std::string dir =
       (std::filesystem::temp_directory_path() / "hil_uwb_tag_wt901c_spec_test").string();

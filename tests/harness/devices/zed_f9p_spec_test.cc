@@ -14,8 +14,12 @@
 #include "hil/harness/scenario/scenario.h"
 #include "hil/harness/scenario/yaml_reader.h"
 
+#include "joined_text.h"
+
 namespace hil::harness {
 namespace {
+
+using hil::test::Joined;
 
 namespace key = gnss::ubx::f9key;
 
@@ -30,7 +34,7 @@ TEST(ScenarioZedF9pTest, NoSectionNoRover) {
 }
 
 TEST(ScenarioZedF9pTest, Defaults) {
-  const Scenario s = ParseScenario(std::string(kBase) + "zed_f9p: {}\n", "s.yaml");
+  const Scenario s = ParseScenario(Joined(kBase, "zed_f9p: {}\n"), "s.yaml");
   ASSERT_TRUE(s.zed_f9p.enabled);
   EXPECT_EQ(s.zed_f9p.link, "ttyF9P");
   EXPECT_EQ(s.zed_f9p.corrections, F9pCorrections::kRadio);
@@ -41,16 +45,16 @@ TEST(ScenarioZedF9pTest, Defaults) {
 }
 
 TEST(ScenarioZedF9pTest, RtkKeysAndSavedConfiguration) {
-  const Scenario s = ParseScenario(std::string(kBase) +
-                                       "zed_f9p:\n"
-                                       "  corrections: host\n"
-                                       "  antenna_lever_arm_m: [1.2, 0, 2.8]\n"
-                                       "  time_to_fix_s: 30\n"
-                                       "  fixed_max_age_s: 2\n"
-                                       "  fixed_ppm: 2\n"
-                                       "  config:\n"
-                                       "    CFG-RATE-MEAS: 100\n"
-                                       "    CFG-MSGOUT-UBX_NAV_PVT_UART1: 1\n",
+  const Scenario s = ParseScenario(Joined(kBase,
+                                          "zed_f9p:\n"
+                                          "  corrections: host\n"
+                                          "  antenna_lever_arm_m: [1.2, 0, 2.8]\n"
+                                          "  time_to_fix_s: 30\n"
+                                          "  fixed_max_age_s: 2\n"
+                                          "  fixed_ppm: 2\n"
+                                          "  config:\n"
+                                          "    CFG-RATE-MEAS: 100\n"
+                                          "    CFG-MSGOUT-UBX_NAV_PVT_UART1: 1\n"),
                                    "s.yaml");
   const ZedF9pDeviceSpec& f = s.zed_f9p;
   EXPECT_EQ(f.corrections, F9pCorrections::kHost);
@@ -78,11 +82,10 @@ TEST(ScenarioZedF9pTest, BadValuesNameTheirField) {
   ExpectError(
       "name: t\nduration_s: 10\norigin: {lat_deg: 35, lon_deg: 50, height_m: 0}\nzed_f9p: {}\n",
       "zed_f9p.corrections", "needs an rtk_base");
-  ExpectError(std::string(kBase) + "zed_f9p: {config: {CFG-RATE-MEAS: 10}}\n",
+  ExpectError(Joined(kBase, "zed_f9p: {config: {CFG-RATE-MEAS: 10}}\n"),
               "zed_f9p.config.CFG-RATE-MEAS", "");
-  ExpectError(std::string(kBase) + "zed_f9p: {config: {CFG-FOO: 1}}\n", "zed_f9p.config.CFG-FOO",
-              "");
-  ExpectError(std::string(kBase) + "zed_f9p: {corrections: ntrip}\n", "zed_f9p.corrections", "");
+  ExpectError(Joined(kBase, "zed_f9p: {config: {CFG-FOO: 1}}\n"), "zed_f9p.config.CFG-FOO", "");
+  ExpectError(Joined(kBase, "zed_f9p: {corrections: ntrip}\n"), "zed_f9p.corrections", "");
 }
 
 TEST(ScenarioZedF9pTest, MovingBaseKeys) {
@@ -110,7 +113,7 @@ TEST(ScenarioZedF9pTest, MovingBaseKeys) {
 }
 
 TEST(ScenarioZedF9pTest, TheRunHasTheRoverOnItsPty) {
-  const Scenario s = ParseScenario(std::string(kBase) + "zed_f9p: {}\n", "s.yaml");
+  const Scenario s = ParseScenario(Joined(kBase, "zed_f9p: {}\n"), "s.yaml");
   const std::string dir =
       (std::filesystem::temp_directory_path() / ("hil_zed_f9p_" + std::to_string(::getpid())))
           .string();

@@ -9,14 +9,16 @@
 #include "hil/harness/scenario/scenario.h"
 #include "hil/harness/scenario/yaml_reader.h"
 
+#include "joined_text.h"
+
 namespace hil::harness {
 namespace {
 
+using hil::test::Joined;
+
 constexpr const char* kBase = "name: t\nduration_s: 100\norigin: {lat_deg: 35.0, lon_deg: 50.0}\n";
 
-Scenario Parse(const std::string& faults) {
-  return ParseScenario(std::string(kBase) + faults, "s.yaml");
-}
+Scenario Parse(const std::string& faults) { return ParseScenario(Joined(kBase, faults), "s.yaml"); }
 
 void ExpectError(const std::string& faults, int line, const std::string& field,
                  const std::string& fragment) {
@@ -78,9 +80,9 @@ TEST(FaultTimelineTest, ErrorsNameLineAndField) {
 // A closed-loop scenario around `faults` (its faults list starts on line 9).
 std::string ClosedLoop(const std::string& faults) {
   const char* src = std::getenv("HIL_SOURCE_DIR");
-  return std::string(kBase) +
-         "vehicle: {model: diff_drive}\nclosed_loop:\n  path_file: " + (src ? src : "..") +
-         "/vectors/paths/ab_line_east_300m.path\n  controller: x\n" + faults;
+  return Joined(kBase,
+                "vehicle: {model: diff_drive}\nclosed_loop:\n  path_file: ", src ? src : "..",
+                "/vectors/paths/ab_line_east_300m.path\n  controller: x\n", faults);
 }
 
 void ExpectClosedLoopError(const std::string& faults, const std::string& field,

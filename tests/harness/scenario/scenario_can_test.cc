@@ -14,8 +14,12 @@
 #include "hil/harness/scenario/scenario.h"
 #include "hil/harness/scenario/yaml_reader.h"
 
+#include "joined_text.h"
+
 namespace hil::harness {
 namespace {
+
+using hil::test::Joined;
 
 constexpr const char* kBase = "name: t\norigin: {lat_deg: 35.4796096, lon_deg: 50.5979765}\n";
 
@@ -26,8 +30,7 @@ TEST(ScenarioCanTest, NoSectionMeansNoCanLink) {
 }
 
 TEST(ScenarioCanTest, ReadsInterfaceAndFd) {
-  const Scenario s =
-      ParseScenario(std::string(kBase) + "can: {interface: vcan0, fd: true}\n", "t.yaml");
+  const Scenario s = ParseScenario(Joined(kBase, "can: {interface: vcan0, fd: true}\n"), "t.yaml");
   EXPECT_EQ(s.can.interface, "vcan0");
   EXPECT_TRUE(s.can.fd);
 }
@@ -37,7 +40,7 @@ TEST(ScenarioCanTest, BadValuesNameFileLineAndField) {
                           "can: {fd: true}\n", "can: {interface: averyveryverylongname0}\n"}) {
     SCOPED_TRACE(bad);
     try {
-      ParseScenario(std::string(kBase) + bad, "t.yaml");
+      ParseScenario(Joined(kBase, bad), "t.yaml");
       FAIL() << "expected a ScenarioError";
     } catch (const ScenarioError& e) {
       EXPECT_NE(std::string(e.what()).find("t.yaml:3"), std::string::npos) << e.what();
@@ -51,7 +54,7 @@ constexpr const char* kCanImu =
     "estimator: {navd_mode: ekf, output: n2k_socketcan}\n";
 
 TEST(ScenarioCanTest, ImuToEstimatorAndBusOutput) {
-  const Scenario s = ParseScenario(std::string(kBase) + kCanImu, "t.yaml");
+  const Scenario s = ParseScenario(Joined(kBase, kCanImu), "t.yaml");
   EXPECT_TRUE(s.can.imu_to_estimator);
   EXPECT_EQ(s.estimator.output, EstimatorOutput::kN2kSocketcan);
 }
@@ -65,7 +68,7 @@ TEST(ScenarioCanTest, WhatNeedsTheBusIsChecked) {
   for (const auto& [text, where] : bad) {
     SCOPED_TRACE(text);
     try {
-      ParseScenario(std::string(kBase) + text, "t.yaml");
+      ParseScenario(Joined(kBase, text), "t.yaml");
       FAIL() << "expected a ScenarioError";
     } catch (const ScenarioError& e) {
       EXPECT_NE(std::string(e.what()).find(where), std::string::npos) << e.what();
@@ -75,7 +78,7 @@ TEST(ScenarioCanTest, WhatNeedsTheBusIsChecked) {
 
 // the navd.conf the harness writes for the CAN chain is one navd accepts, reading the IMU from CAN
 TEST(ScenarioCanTest, GeneratedNavdConfigReadsTheImuFromCan) {
-  const Scenario s = ParseScenario(std::string(kBase) + kCanImu, "t.yaml");
+  const Scenario s = ParseScenario(Joined(kBase, kCanImu), "t.yaml");
   const std::string dir = ::testing::TempDir() + "/scenario_can_test";
   std::filesystem::create_directories(dir);
   WriteNavdConfig(dir + "/navd.conf", s, dir + "/ttyGPS");
@@ -91,7 +94,7 @@ TEST(ScenarioCanTest, GeneratedNavdConfigReadsTheImuFromCan) {
 }
 
 TEST(ScenarioCanTest, VirtualModeIsRefusedForAnImuOnCan) {
-  const Scenario s = ParseScenario(std::string(kBase) + kCanImu, "t.yaml");
+  const Scenario s = ParseScenario(Joined(kBase, kCanImu), "t.yaml");
   RunOptions opt;
   opt.mode = RunMode::kVirtual;
   try {

@@ -6,8 +6,12 @@
 #include "hil/harness/scenario/scenario.h"
 #include "hil/harness/scenario/yaml_reader.h"
 
+#include "joined_text.h"
+
 namespace hil::harness {
 namespace {
+
+using hil::test::Joined;
 
 constexpr const char* kMinimal =
     "name: t\n"
@@ -27,16 +31,17 @@ void ExpectError(const std::string& text, int line, const std::string& field,
 }
 
 TEST(ScenarioGreenhouse, ReadsEveryField) {
-  const Scenario s = ParseScenario(std::string(kMinimal) +
-                                       "greenhouse:\n"
-                                       "  ridges: {count: 5, width_m: 0.7, height_m: 0.25, "
-                                       "spacing_m: 1.7, length_m: 40, first_start_enu_m: [2, 3], "
-                                       "direction_deg: 0}\n"
-                                       "  headland_m: 4\n"
-                                       "  side_margin_m: 1.2\n"
-                                       "  wall_height_m: 2.8\n"
-                                       "  posts: {spacing_m: 5, size_m: 0.12, height_m: 2.5}\n",
-                                   "g.yaml");
+  const Scenario s =
+      ParseScenario(Joined(kMinimal,
+                           "greenhouse:\n"
+                           "  ridges: {count: 5, width_m: 0.7, height_m: 0.25, "
+                           "spacing_m: 1.7, length_m: 40, first_start_enu_m: [2, 3], "
+                           "direction_deg: 0}\n"
+                           "  headland_m: 4\n"
+                           "  side_margin_m: 1.2\n"
+                           "  wall_height_m: 2.8\n"
+                           "  posts: {spacing_m: 5, size_m: 0.12, height_m: 2.5}\n"),
+                    "g.yaml");
   ASSERT_TRUE(s.greenhouse);
   const world::GreenhouseConfig& c = *s.greenhouse;
   EXPECT_EQ(c.ridge_count, 5);
@@ -56,29 +61,29 @@ TEST(ScenarioGreenhouse, ReadsEveryField) {
 }
 
 TEST(ScenarioGreenhouse, OverlappingRidgesNameTheSpacing) {
-  ExpectError(std::string(kMinimal) +
-                  "greenhouse:\n"
-                  "  ridges:\n"
-                  "    width_m: 1.0\n"
-                  "    spacing_m: 0.9\n",
+  ExpectError(Joined(kMinimal,
+                     "greenhouse:\n"
+                     "  ridges:\n"
+                     "    width_m: 1.0\n"
+                     "    spacing_m: 0.9\n"),
               6, "greenhouse.ridges.spacing_m", "must exceed ridge_width_m");
   // the spacing is the default (1.8 m): the width is the key that is there, but the spacing is
   // the field at fault
-  ExpectError(std::string(kMinimal) + "greenhouse:\n  ridges: {width_m: 2.0}\n", 4,
-              "greenhouse.ridges", "spacing_m (default)");
+  ExpectError(Joined(kMinimal, "greenhouse:\n  ridges: {width_m: 2.0}\n"), 4, "greenhouse.ridges",
+              "spacing_m (default)");
 }
 
 TEST(ScenarioGreenhouse, PostsWiderThanTheMarginAndUnknownKeys) {
-  ExpectError(std::string(kMinimal) +
-                  "greenhouse:\n"
-                  "  side_margin_m: 0.2\n"
-                  "  posts:\n"
-                  "    size_m: 0.3\n",
+  ExpectError(Joined(kMinimal,
+                     "greenhouse:\n"
+                     "  side_margin_m: 0.2\n"
+                     "  posts:\n"
+                     "    size_m: 0.3\n"),
               6, "greenhouse.posts.size_m", "side margin");
-  ExpectError(std::string(kMinimal) + "greenhouse:\n  ridges: {widht_m: 1}\n", 4,
+  ExpectError(Joined(kMinimal, "greenhouse:\n  ridges: {widht_m: 1}\n"), 4,
               "greenhouse.ridges.widht_m", "did you mean 'width_m'");
-  ExpectError(std::string(kMinimal) + "greenhouse:\n  ridges: {count: 0}\n", 4,
-              "greenhouse.ridges.count", "out of range");
+  ExpectError(Joined(kMinimal, "greenhouse:\n  ridges: {count: 0}\n"), 4, "greenhouse.ridges.count",
+              "out of range");
 }
 
 }  // namespace
@@ -88,10 +93,10 @@ namespace hil::harness {
 namespace {
 
 TEST(ScenarioRangeSensors, DefaultsAndTheLibraryLayout) {
-  const Scenario s = ParseScenario(std::string(kMinimal) +
-                                       "greenhouse: {}\n"
-                                       "rangefinders: {rate_hz: 50, format: mm}\n"
-                                       "lidar: {rotation_hz: 10, mount_m: [0, 0, 0.5]}\n",
+  const Scenario s = ParseScenario(Joined(kMinimal,
+                                          "greenhouse: {}\n"
+                                          "rangefinders: {rate_hz: 50, format: mm}\n"
+                                          "lidar: {rotation_hz: 10, mount_m: [0, 0, 0.5]}\n"),
                                    "g.yaml");
   ASSERT_TRUE(s.rangefinders.enabled);
   ASSERT_EQ(s.rangefinders.units.size(), 4u);
@@ -103,8 +108,8 @@ TEST(ScenarioRangeSensors, DefaultsAndTheLibraryLayout) {
   ASSERT_TRUE(s.lidar.enabled);
   EXPECT_DOUBLE_EQ(s.lidar.config.rotation_hz, 10);
   EXPECT_DOUBLE_EQ(s.lidar.config.mount.z_m, 0.5);
-  const Scenario lib = ParseScenario(
-      std::string(kMinimal) + "include: [greenhouse/seed001_greenhouse.yaml]\n", "g.yaml");
+  const Scenario lib =
+      ParseScenario(Joined(kMinimal, "include: [greenhouse/seed001_greenhouse.yaml]\n"), "g.yaml");
   ASSERT_TRUE(lib.greenhouse);
   EXPECT_EQ(lib.greenhouse->ridge_count, 4);
   EXPECT_EQ(lib.rangefinders.units.size(), 4u);
@@ -112,18 +117,17 @@ TEST(ScenarioRangeSensors, DefaultsAndTheLibraryLayout) {
 }
 
 TEST(ScenarioRangeSensors, BadSensorSections) {
-  ExpectError(std::string(kMinimal) + "rangefinders: {}\n", 3, "rangefinders",
-              "needs a greenhouse");
-  ExpectError(std::string(kMinimal) + "greenhouse: {}\nrangefinders: {baud: 12345}\n", 4,
+  ExpectError(Joined(kMinimal, "rangefinders: {}\n"), 3, "rangefinders", "needs a greenhouse");
+  ExpectError(Joined(kMinimal, "greenhouse: {}\nrangefinders: {baud: 12345}\n"), 4,
               "rangefinders.baud", "TF-Luna manual");
-  ExpectError(std::string(kMinimal) +
-                  "greenhouse: {}\n"
-                  "rangefinders:\n"
-                  "  units:\n"
-                  "    - {name: a, link: ttyA}\n"
-                  "    - {name: b, link: ttyA}\n",
+  ExpectError(Joined(kMinimal,
+                     "greenhouse: {}\n"
+                     "rangefinders:\n"
+                     "  units:\n"
+                     "    - {name: a, link: ttyA}\n"
+                     "    - {name: b, link: ttyA}\n"),
               7, "rangefinders.units[1].link", "two units");
-  ExpectError(std::string(kMinimal) + "greenhouse: {}\nlidar: {rotation_hz: 30}\n", 4,
+  ExpectError(Joined(kMinimal, "greenhouse: {}\nlidar: {rotation_hz: 30}\n"), 4,
               "lidar.rotation_hz", "out of range");
 }
 

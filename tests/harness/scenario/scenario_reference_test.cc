@@ -14,8 +14,12 @@
 #include "hil/harness/devices/scenario_file.h"
 #include "hil/harness/scenario/scenario_keys.h"
 
+#include "joined_text.h"
+
 namespace hil::harness {
 namespace {
+
+using hil::test::Joined;
 
 std::string SourceDir() {
   const char* src = std::getenv("HIL_SOURCE_DIR");
@@ -71,7 +75,7 @@ TEST(ScenarioReferenceTest, EveryFigureOfTheSourcedSectionsNamesItsSource) {
   EXPECT_EQ(checked, 11U + 8U);  // vehicle's 11 figures, the base's 8 (its slip is a point)
 }
 
-std::string Base() { return "name: t\norigin: {lat_deg: 35.4796096, lon_deg: 50.5979765}\n"; }
+constexpr const char* kBase = "name: t\norigin: {lat_deg: 35.4796096, lon_deg: 50.5979765}\n";
 
 // The message of the error loading `text` ("" when it loads).
 std::string ErrorOf(const std::string& text) {
@@ -84,26 +88,26 @@ std::string ErrorOf(const std::string& text) {
 }
 
 TEST(ScenarioReferenceTest, TheReaderTakesItsTablesRangesAndChoices) {
-  EXPECT_EQ(ErrorOf(Base() + "vehicle: {model: skid_steer, icr_expansion: 0.9}\n"),
+  EXPECT_EQ(ErrorOf(Joined(kBase, "vehicle: {model: skid_steer, icr_expansion: 0.9}\n")),
             "t.yaml:3: vehicle.icr_expansion: value 0.9 out of range [1, 4]");
-  EXPECT_EQ(ErrorOf(Base() + "vehicle: {model: diff_drive, icr_offset_m: 0.1}\n"),
+  EXPECT_EQ(ErrorOf(Joined(kBase, "vehicle: {model: diff_drive, icr_offset_m: 0.1}\n")),
             "t.yaml:3: vehicle.icr_offset_m: only a parameter of the skid_steer model");
-  EXPECT_EQ(ErrorOf(Base() + "vehicle: {model: skid_steer, wheelbase_m: 1}\n"),
+  EXPECT_EQ(ErrorOf(Joined(kBase, "vehicle: {model: skid_steer, wheelbase_m: 1}\n")),
             "t.yaml:3: vehicle.wheelbase_m: not a parameter of the skid_steer model");
-  EXPECT_EQ(ErrorOf(Base() + "vehicle: {model: skidsteer}\n"),
+  EXPECT_EQ(ErrorOf(Joined(kBase, "vehicle: {model: skidsteer}\n")),
             "t.yaml:3: vehicle.model: unknown value 'skidsteer' (one of: bicycle tractor "
             "diff_drive skid_steer)");
-  EXPECT_EQ(ErrorOf(Base() + "vehicle: {icr_expansoin: 2}\n"),
+  EXPECT_EQ(ErrorOf(Joined(kBase, "vehicle: {icr_expansoin: 2}\n")),
             "t.yaml:3: vehicle.icr_expansoin: unknown key (did you mean 'icr_expansion'?)");
   EXPECT_EQ(ErrorOf("name: t\norigin: {lat_deg: 35, lon_deg: 50, height_m: 9001}\n"),
             "t.yaml:2: origin.height_m: value 9001 out of range [-500, 9000]");
-  EXPECT_EQ(ErrorOf(Base() + "closed_loop: {actuator: {}}\n"),
+  EXPECT_EQ(ErrorOf(Joined(kBase, "closed_loop: {actuator: {}}\n")),
             "t.yaml:3: closed_loop.channel: the serial base protocol drives a vehicle of model "
             "diff_drive "
             "or skid_steer");
-  EXPECT_EQ(ErrorOf(Base() + "vehicle: {model: skid_steer, icr_expansion: 2}\n"), "");
+  EXPECT_EQ(ErrorOf(Joined(kBase, "vehicle: {model: skid_steer, icr_expansion: 2}\n")), "");
   const Scenario s =
-      ParseScenario(Base() + "vehicle: {model: skid_steer, icr_expansion: 2}\n", "t.yaml");
+      ParseScenario(Joined(kBase, "vehicle: {model: skid_steer, icr_expansion: 2}\n"), "t.yaml");
   EXPECT_EQ(s.truth.vehicle.model, truth::VehicleParams::Model::kSkidSteer);
   EXPECT_EQ(s.truth.vehicle.icr_expansion, 2.0);
   EXPECT_EQ(s.truth.vehicle.icr_offset_m, 0.05);  // the preset's

@@ -5,8 +5,12 @@
 #include "hil/harness/devices/scenario_file.h"
 #include "hil/harness/scenario/yaml_reader.h"
 
+#include "joined_text.h"
+
 namespace hil::harness {
 namespace {
+
+using hil::test::Joined;
 
 constexpr const char* kMinimal =
     "name: t\n"
@@ -34,35 +38,34 @@ TEST(ScenarioTest, DefaultScenarioLoads) {
 }
 
 TEST(ScenarioTest, UnknownKeyNamesLineAndField) {
-  ExpectError(std::string(kMinimal) + "duration_s: 10\nbogus: 1\n", 4, "bogus", "unknown key");
+  ExpectError(Joined(kMinimal, "duration_s: 10\nbogus: 1\n"), 4, "bogus", "unknown key");
 }
 
 TEST(ScenarioTest, MisspeltKeySuggestsTheRightOne) {
-  ExpectError(std::string(kMinimal) + "gnss:\n  baud: 9600\n  rate_hx: 1\n", 5, "gnss.rate_hx",
+  ExpectError(Joined(kMinimal, "gnss:\n  baud: 9600\n  rate_hx: 1\n"), 5, "gnss.rate_hx",
               "did you mean 'rate_hz'");
 }
 
 TEST(ScenarioTest, WrongTypeNamesLineAndField) {
-  ExpectError(std::string(kMinimal) + "gnss:\n  baud: fast\n", 4, "gnss.baud",
-              "expected an integer");
-  ExpectError(std::string(kMinimal) + "duration_s: [1, 2]\n", 3, "duration_s", "expected a number");
+  ExpectError(Joined(kMinimal, "gnss:\n  baud: fast\n"), 4, "gnss.baud", "expected an integer");
+  ExpectError(Joined(kMinimal, "duration_s: [1, 2]\n"), 3, "duration_s", "expected a number");
 }
 
 TEST(ScenarioTest, OutOfRangeAndMissingValues) {
-  ExpectError(std::string(kMinimal) + "duration_s: -5\n", 3, "duration_s", "out of range");
+  ExpectError(Joined(kMinimal, "duration_s: -5\n"), 3, "duration_s", "out of range");
   ExpectError("name: t\n", 1, "", "missing required key 'origin'");
-  ExpectError(std::string(kMinimal) + "criteria:\n  - {metric: horizontal_rmse_m}\n", 4,
-              "criteria[0]", "needs 'max'");
-  ExpectError(std::string(kMinimal) + "start_utc: yesterday\n", 3, "start_utc", "ISO 8601");
+  ExpectError(Joined(kMinimal, "criteria:\n  - {metric: horizontal_rmse_m}\n"), 4, "criteria[0]",
+              "needs 'max'");
+  ExpectError(Joined(kMinimal, "start_utc: yesterday\n"), 3, "start_utc", "ISO 8601");
 }
 
 TEST(ScenarioTest, CriterionMetricsByNameOrFamily) {
   const Scenario s =
-      ParseScenario(std::string(kMinimal) +
-                        "criteria:\n"
-                        "  - {metric: rtk_rover.heading_rms_error_deg, max: 1}\n"
-                        "  - {metric: rtk_rover.time_to_first_fixed_s, max: 60}\n"
-                        "  - {metric: pass_to_pass.interpolated.p95_abs_m, max: 1}\n",
+      ParseScenario(Joined(kMinimal,
+                           "criteria:\n"
+                           "  - {metric: rtk_rover.heading_rms_error_deg, max: 1}\n"
+                           "  - {metric: rtk_rover.time_to_first_fixed_s, max: 60}\n"
+                           "  - {metric: pass_to_pass.interpolated.p95_abs_m, max: 1}\n"),
                     "s.yaml");
   ASSERT_EQ(s.criteria.size(), 3U);
   EXPECT_EQ(s.criteria[0].metric, "rtk_rover.heading_rms_error_deg");
@@ -71,7 +74,7 @@ TEST(ScenarioTest, CriterionMetricsByNameOrFamily) {
   EXPECT_FALSE(IsCriterionMetric("rtk_rovers.epochs"));
   EXPECT_FALSE(IsCriterionMetric("heading"));
   // the message lists the families too
-  ExpectError(std::string(kMinimal) + "criteria:\n  - {metric: rtk.heading, max: 1}\n", 4,
+  ExpectError(Joined(kMinimal, "criteria:\n  - {metric: rtk.heading, max: 1}\n"), 4,
               "criteria[0].metric", "rtk_rover.*");
 }
 

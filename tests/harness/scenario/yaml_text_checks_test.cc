@@ -14,8 +14,12 @@
 #include "hil/harness/scenario/scenario.h"
 #include "hil/harness/scenario/yaml_reader.h"
 
+#include "joined_text.h"
+
 namespace hil::harness {
 namespace {
+
+using hil::test::Joined;
 
 namespace fs = std::filesystem;
 
@@ -34,7 +38,7 @@ ScenarioError ErrorOf(const std::string& text) {
 }
 
 TEST(YamlTextChecksTest, ADuplicateTopLevelKeyIsAnError) {
-  const ScenarioError e = ErrorOf(std::string(kMinimal) + "seed: 1\nseed: 7\n");
+  const ScenarioError e = ErrorOf(Joined(kMinimal, "seed: 1\nseed: 7\n"));
   EXPECT_EQ(e.line(), 4) << e.what();
   EXPECT_EQ(e.field(), "seed");
   EXPECT_NE(std::string(e.what()).find("duplicate key: already given on line 3"), std::string::npos)
@@ -42,11 +46,11 @@ TEST(YamlTextChecksTest, ADuplicateTopLevelKeyIsAnError) {
 }
 
 TEST(YamlTextChecksTest, ADuplicateNestedKeyIsAnError) {
-  const ScenarioError e = ErrorOf(std::string(kMinimal) + "gnss:\n  baud: 9600\n  baud: 38400\n");
+  const ScenarioError e = ErrorOf(Joined(kMinimal, "gnss:\n  baud: 9600\n  baud: 38400\n"));
   EXPECT_EQ(e.line(), 5) << e.what();
   EXPECT_EQ(e.field(), "gnss.baud");
   const ScenarioError f =
-      ErrorOf(std::string(kMinimal) + "criteria:\n  - {metric: cep95_m, max: 1, max: 2}\n");
+      ErrorOf(Joined(kMinimal, "criteria:\n  - {metric: cep95_m, max: 1, max: 2}\n"));
   EXPECT_EQ(f.line(), 4) << f.what();
   EXPECT_EQ(f.field(), "criteria[0].max");
 }
@@ -68,23 +72,23 @@ TEST(YamlTextChecksTest, ADuplicateKeyInAnIncludedFileNamesThatFile) {
 }
 
 TEST(YamlTextChecksTest, ATabInTheIndentationIsNamed) {
-  const ScenarioError e = ErrorOf(std::string(kMinimal) + "gnss:\n\tbaud: 9600\n");
+  const ScenarioError e = ErrorOf(Joined(kMinimal, "gnss:\n\tbaud: 9600\n"));
   EXPECT_EQ(e.line(), 4) << e.what();
   EXPECT_NE(std::string(e.what()).find("a tab in the indentation"), std::string::npos) << e.what();
   // a tab inside a block scalar's text is content, not indentation
-  EXPECT_NO_THROW(ParseScenario(std::string(kMinimal) + "description: |\n  a\tb\n  \tc\n", "s"));
+  EXPECT_NO_THROW(ParseScenario(Joined(kMinimal, "description: |\n  a\tb\n  \tc\n"), "s"));
 }
 
 TEST(YamlTextChecksTest, AnEmptyKeyIsNamed) {
   for (const char* line : {": 5\n", "\"\": 5\n"}) {
-    const ScenarioError e = ErrorOf(std::string(kMinimal) + line);
+    const ScenarioError e = ErrorOf(Joined(kMinimal, line));
     EXPECT_EQ(e.line(), 3) << e.what();
     EXPECT_NE(std::string(e.what()).find("an empty key"), std::string::npos) << e.what();
   }
 }
 
 TEST(YamlTextChecksTest, AKeyThatIsNotANameIsNotEchoed) {
-  const ScenarioError e = ErrorOf(std::string(kMinimal) + "root:$y$secret:19000:0:7:::\n");
+  const ScenarioError e = ErrorOf(Joined(kMinimal, "root:$y$secret:19000:0:7:::\n"));
   EXPECT_EQ(std::string(e.what()).find("secret"), std::string::npos) << e.what();
   EXPECT_NE(std::string(e.what()).find("not a scenario key name"), std::string::npos) << e.what();
   EXPECT_TRUE(IsPlainKey("rate_hz"));
@@ -94,13 +98,12 @@ TEST(YamlTextChecksTest, AKeyThatIsNotANameIsNotEchoed) {
 
 TEST(YamlTextChecksTest, ANonFiniteWaypointNamesTheField) {
   for (const char* bad : {".nan", ".inf", "-.inf"}) {
-    const ScenarioError e = ErrorOf(
-        std::string(kMinimal) + "path:\n  type: waypoints\n  points: [[0, 0], [" + bad + ", 5]]\n");
+    const ScenarioError e =
+        ErrorOf(Joined(kMinimal, "path:\n  type: waypoints\n  points: [[0, 0], [", bad, ", 5]]\n"));
     EXPECT_EQ(e.field(), "path.points[1]") << e.what();
     EXPECT_NE(std::string(e.what()).find("finite"), std::string::npos) << e.what();
-    const ScenarioError f =
-        ErrorOf(std::string(kMinimal) +
-                "path:\n  type: waypoints\n  points: [[0, 0], {enu_m: [5, " + bad + "]}]\n");
+    const ScenarioError f = ErrorOf(Joined(
+        kMinimal, "path:\n  type: waypoints\n  points: [[0, 0], {enu_m: [5, ", bad, "]}]\n"));
     EXPECT_EQ(f.field(), "path.points[1].enu_m") << f.what();
     EXPECT_NE(std::string(f.what()).find("finite"), std::string::npos) << f.what();
   }
