@@ -39,6 +39,13 @@ int Usage(const char* problem) {
       problem);
   return 2;
 }
+
+// an option's whole text as a finite number, else NaN (which fails every bound)
+double FiniteNumber(const char* text) {
+  char* end = nullptr;
+  const double x = std::strtod(text, &end);
+  return end != text && *end == '\0' && std::isfinite(x) ? x : std::nan("");
+}
 }  // namespace
 
 int KfginsMain(int argc, char** argv) {
@@ -52,15 +59,11 @@ int KfginsMain(int argc, char** argv) {
     } else if (a == "--navd-conf" && i + 1 < argc) {
       navd_conf = argv[++i];
     } else if (a == "--nhc-std-mps" && i + 1 < argc) {
-      char* end = nullptr;
-      nhc_std_mps = std::strtod(argv[++i], &end);
-      if (end == argv[i] || *end != '\0' || !(nhc_std_mps > 0) || !std::isfinite(nhc_std_mps))
-        return Usage("--nhc-std-mps: not a positive number of m/s");
+      nhc_std_mps = FiniteNumber(argv[++i]);
+      if (!(nhc_std_mps > 0)) return Usage("--nhc-std-mps: not a positive number of m/s");
     } else if (a == "--mount-yaw-std-deg" && i + 1 < argc) {
-      char* end = nullptr;
-      mount_yaw_std_deg = std::strtod(argv[++i], &end);
-      if (end == argv[i] || *end != '\0' || !(mount_yaw_std_deg >= 0) ||
-          !std::isfinite(mount_yaw_std_deg))
+      mount_yaw_std_deg = FiniteNumber(argv[++i]);
+      if (!(mount_yaw_std_deg >= 0))
         return Usage("--mount-yaw-std-deg: not a non-negative number of degrees");
     } else if (a == "--adaptive") {
       adaptive = true;

@@ -67,7 +67,7 @@ struct Rig {
       const Eigen::Vector3d f_N = a + 2.0 * w_ie.cross(v) - g_N;
       const Eigen::Vector3d w_B = Eigen::Vector3d(0, 0, truth.w_radps) + C.transpose() * w_ie;
       t_s += dt;
-      const testing::ImuNoise imu{accel_noise, gyro_noise, accel_bias_B, bias_B};
+      const testing::ImuNoise imu{accel_noise, gyro_noise, Eigen::Vector3d::Zero(), bias_B};
       const ImuSample s = testing::ImuSampleFromTruth(kT0 + Nanoseconds{std::llround(t_s * 1e9)},
                                                       dt, C, f_N, w_B, imu, rng, n01);
       const bool in_gap = t_s >= gap_from_s && t_s < gap_to_s;
@@ -103,7 +103,6 @@ struct Rig {
   Truth truth;
   double accel_noise, gyro_noise;
   Eigen::Vector3d bias_B;
-  Eigen::Vector3d accel_bias_B = Eigen::Vector3d::Zero();
   double fix_std_m = 0.02;
   bool fix_velocity = true;  // the fixes carry a velocity (false: position only, as KF-GINS files)
   Eigen::Vector3d glitch_N_m = Eigen::Vector3d::Zero();  // the receiver's jump, added to its fixes

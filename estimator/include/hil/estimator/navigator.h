@@ -104,16 +104,16 @@ struct RobustnessParams {
   /// biases) was wrong. On by default (issue 39: walk_0827's 10 s outages 20 s after another,
   /// 3 of 36 windows above 2 × KF-GINS → 0; estimator.md, "Recovering after an outage").
   bool fade_gap_noise = true;
-  /// Recovery after a gap: the first fix after gap_after without fixes, and the fixes after it,
-  /// are fused against the filter's own covariance without the gate until one passes the gate
-  /// (the filter has come back to its fixes) or gap_recovery_max has passed; no fading then. The
-  /// covariance the INS propagated over the gap holds the gap's drift in the shape the INS
-  /// errors give it (position ≈ velocity·t/2 for a bias or tilt error): the first fix corrects
-  /// the velocity with it, where a fading in any other shape (the white noise's, or λ P) left
-  /// the velocity metres per second wrong, the next fixes rejected, and the faded attitude to
-  /// diverge (the real car drive_0708, 15 and 30 s outages: km, 26 resets; estimator.md,
-  /// "Recovering after an outage"). A receiver glitch or a suspect RTK fix is still held off
-  /// (GnssStepCheck, RtkFixCheck). Zero: off (a gap's fix is faded, fade_gap_noise).
+  /// Recovery after a gap: after the first fix after gap_after without fixes (gated, and faded
+  /// to as above), the fixes are fused against the filter's own covariance without the gate
+  /// until gap_recovery_passes in a row would have passed it, or gap_recovery_max has passed.
+  /// The covariance the INS propagated over the gap holds the gap's drift in the shape the INS
+  /// errors give it (position ≈ velocity·t/2 for a bias or tilt error); the gap's fading, in the
+  /// white noise's shape, left the velocity metres per second wrong, the next fixes were rejected
+  /// and their λ P fading made the attitude diverge (the real car drive_0708, 15 and 30 s
+  /// outages: km, 26 resets; estimator.md, "The fixes after a gap's first"). A suspect RTK fix
+  /// is still held off (RtkFixCheck); a receiver that jumps within a recovery is believed.
+  /// Zero: off.
   Nanoseconds gap_recovery_max{5'000'000'000};
   int gap_recovery_passes = 3;           ///< fixes in a row within the gate that end a recovery
   double max_fading_factor = 1e6;        ///< largest covariance factor of one fading step
