@@ -198,10 +198,14 @@ TEST_F(RunScoringTest, AClosedLoopHoldsNoMoreThanAnOpenOneWhateverItsLength) {
   }
   const TruthTable rest = scoring.Finish(TimeFromSeconds(6000));
   // THEN it holds what the open loop holds (WhatItHoldsIsBoundedWhateverTheRunsLength), scored as
-  // it went: no solution, fix or truth sample kept to the end
+  // it went: no solution, fix or truth sample kept to the end; what the lagging truth thread can
+  // leave pending is one series more than the open loop's, the commands (10 Hz, waiting for the
+  // thread as the truth times do; stop 53's CI saw 136 beyond four series' allowance)
   const std::size_t lag_allowance =
       2 * 4 * 10 * static_cast<std::size_t>(RunScoring::kLateHorizon / std::chrono::seconds(1));
-  EXPECT_LE(second_half, first_half + lag_allowance);
+  const std::size_t command_lag_allowance =
+      2 * 10 * static_cast<std::size_t>(RunScoring::kLateHorizon / std::chrono::seconds(1));
+  EXPECT_LE(second_half, first_half + lag_allowance + command_lag_allowance);
   EXPECT_LE(second_half, 3 * 3 * RunScoring::kPlotBuckets + 8 * 1000 + 12 * 1200);
   EXPECT_LE(rest.times().size(), lag_allowance);  // the last horizon, sampled at the end
   EXPECT_EQ(scoring.metrics().samples, 59999u);
