@@ -100,6 +100,7 @@ void PrintUsage() {
       "                  speed_rw, speed_dev_std_mps, speed_dev_tau_s, vehicle_lowpass_tau_s,\n"
       "                  mount_angle_estimation\n"
       "                  (true|false), mount_pitch_std_deg, mount_yaw_std_deg, gyro_scale_z_std,\n"
+      "                  gyro_scale_xy_std, gyro_scale_xy_rw_rthz,\n"
       "                  gyro_z_coupling_std_deg, gyro_z_coupling_x_std_deg,\n"
       "                  gyro_z_coupling_y_std_deg, imu_time_residual_std_s, accel_y_force_std,\n"
       "                  antenna_0_m … (multi_gnss)\n"

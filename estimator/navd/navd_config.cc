@@ -132,6 +132,10 @@ bool ReadEkfKey(const ConfigFile& f, const ConfigEntry& e, EkfParams& ekf) {
     ekf.gyro_scale_std = ToDouble(f, e, 0.0, 0.1);
   else if (k == "gyro_scale_z_std")
     ekf.gyro_scale_z_std = ToDouble(f, e, 0.0, 0.1);
+  else if (k == "gyro_scale_xy_std")
+    ekf.gyro_scale_xy_std = ToDouble(f, e, 0.0, 0.1);
+  else if (k == "gyro_scale_xy_rw_rthz")
+    ekf.gyro_scale_xy_rw_rthz = ToDouble(f, e, 0.0, 0.01);
   else if (k == "imu_time_residual_std_s")
     ekf.imu_time_residual_std_s = ToDouble(f, e, 0.0, 0.1);
   else if (k == "accel_y_force_std")

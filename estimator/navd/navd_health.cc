@@ -43,6 +43,14 @@ void AppendSensorStates(std::string& s, const NavigatorStats& n) {
                   n.gyro_scale_z * 1e6, n.gyro_scale_z_std * 1e6);
     s += b;
   }
+  // present while the x and y gyros' scale factors are estimated (ErrorStateEkf): ppm, and σ
+  if (n.gyro_scale_xy_estimated) {
+    std::snprintf(b, sizeof b,
+                  ",\"gyro_scale_xy_ppm\":{\"x\":%.0f,\"y\":%.0f,\"x_std\":%.0f,\"y_std\":%.0f}",
+                  n.gyro_scale_xy.x() * 1e6, n.gyro_scale_xy.y() * 1e6,
+                  n.gyro_scale_xy_std.x() * 1e6, n.gyro_scale_xy_std.y() * 1e6);
+    s += b;
+  }
   // present while the x and y gyros' coupling to the z rate is estimated (ErrorStateEkf): degrees,
   // and their σ
   if (n.gyro_z_coupling_estimated) {

@@ -26,18 +26,23 @@ bool SpeedDevState(const EkfParams& p) { return p.speed_rw_mps_rthz > 0 && p.spe
 // (the zero columns added exact zeros)
 struct TurnColumns {
   Eigen::Matrix3d Gk = Eigen::Matrix3d::Zero(), Ga = Eigen::Matrix3d::Zero();
+  Eigen::Matrix<double, 3, 2> Gs = Eigen::Matrix<double, 3, 2>::Zero();
   bool learnable = false;
 };
-TurnColumns TurnStateColumns(const Eigen::Matrix3d& C, double w_z_radps, double f_y_mps2,
-                             bool attitude_hold, bool learnable, double dt) {
+TurnColumns TurnStateColumns(const Eigen::Matrix3d& C, const Eigen::Vector3d& w_B_radps,
+                             double f_y_mps2, bool attitude_hold, bool learnable, double dt) {
   TurnColumns t;
   if (!attitude_hold) t.Gk << C.col(2), C.col(0), C.col(1);
-  t.Gk *= -w_z_radps * dt;
+  t.Gk *= -w_B_radps.z() * dt;
   if (!learnable) {
     t.Gk.rightCols<2>().setZero();
     return t;
   }
   t.learnable = true;
+  if (!attitude_hold) {
+    t.Gs.col(0) = -C.col(0) * (w_B_radps.x() * dt);
+    t.Gs.col(1) = -C.col(1) * (w_B_radps.y() * dt);
+  }
   t.Ga << C.col(1), C.col(0), C.col(2);
   t.Ga *= -f_y_mps2 * dt;
   return t;
@@ -141,6 +146,7 @@ void ErrorStateEkf::Initialize(const NavState& s) {
   mount_rad_.setZero();
   C_VB_.setIdentity();
   gyro_scale_z_ = 0.0;
+  gyro_scale_xy_.setZero();
   ripple_.Reset();
   gyro_z_coupling_rad_.setZero();
   time_residual_s_ = 0.0;
@@ -196,7 +202,8 @@ void ErrorStateEkf::RestartTimeBaseStates() {
   gyro_z_coupling_rad_.setZero();
   time_residual_s_ = 0.0;
   accel_y_force_.setZero();
-  constexpr int kTriad = kAccelCouplingZY + 1 - kGyroScaleZ;
+  gyro_scale_xy_.setZero();
+  constexpr int kTriad = kGyroScaleY + 1 - kGyroScaleZ;
   P_.middleRows<kTriad>(kGyroScaleZ).setZero();
   P_.middleCols<kTriad>(kGyroScaleZ).setZero();
   SetTimeBasePriors();
@@ -216,15 +223,27 @@ void ErrorStateEkf::SetTimeBasePriors() {
     P_.block<3, 3>(kAccelScaleY, kAccelScaleY)
         .diagonal()
         .setConstant(p.accel_y_force_std * p.accel_y_force_std);
+  if (GyroScaleXyStatesOn())
+    P_.block<2, 2>(kGyroScaleX, kGyroScaleX)
+        .diagonal()
+        .setConstant(p.gyro_scale_xy_std * p.gyro_scale_xy_std);
+}
+
+void ErrorStateEkf::SetGyroScale(const Eigen::Vector3d& k) {
+  // within the injection's clamps (below)
+  if (GyroScaleStateOn()) gyro_scale_z_ = std::clamp(k.z(), -0.1, 0.1);
+  if (GyroScaleXyStatesOn()) gyro_scale_xy_ = k.head<2>().cwiseMax(-0.2).cwiseMin(0.2);
 }
 
 Eigen::Vector3d ErrorStateEkf::CompensatedAngle(const Eigen::Vector3d& delta_angle_B_rad,
                                                 double dt) const {
   // the z gyro reads (1 + k_z) ω_z + b_z: its scale error is divided out with the bias's removal;
-  // the x and y gyros read ω_x + m_xz ω_z + b_x (y likewise): the coupling of the z rate removed
+  // the x and y gyros read (1 + k_x) ω_x + m_xz ω_z + b_x (y likewise): the coupling of the z
+  // rate removed, then the scale divided out
   Eigen::Vector3d dth = delta_angle_B_rad - bg_ * dt;
   dth.z() /= 1.0 + gyro_scale_z_;
   dth.head<2>() -= gyro_z_coupling_rad_ * dth.z();
+  if (GyroScaleXyStatesOn()) dth.head<2>().array() /= 1.0 + gyro_scale_xy_.array();
   return dth;
 }
 
@@ -277,6 +296,9 @@ void ErrorStateEkf::Predict(const Eigen::Vector3d& delta_angle_B_rad,
   AddImuNoise(P_.topLeftCorner<kNumClassicStates, kNumClassicStates>(), C, dth.norm(), dt, true);
   AccumulateGapNoise(C, dth.norm(), dt);
   if (p.gnss_error_tau_s > 0) P_.block<3, 3>(kGnssError, kGnssError).diagonal() += gm_q;
+  if (GyroScaleXyStatesOn())
+    P_.block<2, 2>(kGyroScaleX, kGyroScaleX).diagonal().array() +=
+        p.gyro_scale_xy_rw_rthz * p.gyro_scale_xy_rw_rthz * dt;
   if (p.speed_rw_mps_rthz > 0) P_(kSpeed, kSpeed) += p.speed_rw_mps_rthz * p.speed_rw_mps_rthz * dt;
   if (SpeedDevState(p))
     P_(kSpeedDev, kSpeedDev) +=
@@ -386,12 +408,16 @@ void ErrorStateEkf::PropagateCovarianceOf(Block P, const PhiBlocks& phi, double 
     Ma.col(c) = ProductColumn(cols(kAtt), phi.Dt, c) + ProductColumn(cols(kGyroBias), phi.Ggt, c);
   }
   const bool learnable = phi.turn.learnable;
+  const bool scale_xy = GyroScaleXyStatesOn();
   if constexpr (N == kNumStates) {
     const Eigen::Matrix3d GkT = phi.turn.Gk.transpose(), GaT = phi.turn.Ga.transpose();
     for (int c = 0; c < 3; ++c) {
       if (learnable) {
         Ma.col(c) += ProductColumn(cols(kGyroScaleZ), GkT, c);
         Mv.col(c) += ProductColumn(cols(kAccelScaleY), GaT, c);
+        if (scale_xy)
+          Ma.col(c) +=
+              P.col(kGyroScaleX) * phi.turn.Gs(c, 0) + P.col(kGyroScaleY) * phi.turn.Gs(c, 1);
       } else {
         Ma.col(c) += P.col(kGyroScaleZ) * phi.turn.Gk(c, 0);
       }
@@ -423,6 +449,8 @@ void ErrorStateEkf::PropagateCovarianceOf(Block P, const PhiBlocks& phi, double 
       if (learnable) {
         R.template middleRows<3>(kAtt) += phi.turn.Gk * M.template middleRows<3>(kGyroScaleZ);
         R.template middleRows<3>(kVel) += phi.turn.Ga * M.template middleRows<3>(kAccelScaleY);
+        if (scale_xy)
+          R.template middleRows<3>(kAtt) += phi.turn.Gs * M.template middleRows<2>(kGyroScaleX);
       } else {
         R.template middleRows<3>(kAtt) += phi.turn.Gk.col(0) * M.row(kGyroScaleZ);
       }
@@ -456,8 +484,8 @@ ErrorStateEkf::PhiBlocks ErrorStateEkf::TransposedPhiBlocks(const Eigen::Matrix3
   // attitude hold: the attitude does not integrate the gyro, so its error owes nothing to δb_g
   b.Ggt = attitude_hold_ ? Eigen::Matrix3d::Zero() : b.Gt;
   const TurnColumns t =
-      TurnStateColumns(C, w_B_.z(), f_y_lp_B_mps2_.y(), attitude_hold_, TurnStatesLearnable(), dt);
-  b.turn = {t.Gk, t.Ga, t.learnable};
+      TurnStateColumns(C, w_B_, f_y_lp_B_mps2_.y(), attitude_hold_, TurnStatesLearnable(), dt);
+  b.turn = {t.Gk, t.Ga, t.Gs, t.learnable};
   return b;
 }
 
@@ -491,6 +519,10 @@ Eigen::Matrix<double, 3, kNumStates> ErrorStateEkf::VelocityJacobian() const {
   if (GyroCouplingStatesOn() && TurnStatesLearnable()) {
     H.col(kGyroCouplingX) = H.block<3, 3>(0, kGyroBias).col(0) * w_B_.z();
     H.col(kGyroCouplingY) = H.block<3, 3>(0, kGyroBias).col(1) * w_B_.z();
+  }
+  if (GyroScaleXyStatesOn() && TurnStatesLearnable()) {
+    H.col(kGyroScaleX) = H.block<3, 3>(0, kGyroBias).col(0) * w_B_.x();
+    H.col(kGyroScaleY) = H.block<3, 3>(0, kGyroBias).col(1) * w_B_.y();
   }
   if (TimeResidualLearnable()) H.col(kImuTimeResidual) = accel_lp_N_mps2_;
   return H;
@@ -726,6 +758,10 @@ void ErrorStateEkf::InjectError(const EkfVector& dx) {
   // clamped to ±0.1 (ours: 10 % of scale or 5.7° of misalignment, twenty times the data sheets')
   if (AccelForceStatesOn())
     accel_y_force_ = (accel_y_force_ + dx.segment<3>(kAccelScaleY)).cwiseMax(-0.1).cwiseMin(0.1);
+  // clamped to ±0.2 (ours: 1 + k̂ stays away from 0; KF-GINS's own estimates reach 0.13 on the
+  // real car drive_0708, where they take up more than a scale error)
+  if (GyroScaleXyStatesOn())
+    gyro_scale_xy_ = (gyro_scale_xy_ + dx.segment<2>(kGyroScaleX)).cwiseMax(-0.2).cwiseMin(0.2);
 }
 
 Eigen::Vector3d ErrorStateEkf::GnssErrorVariance(double horizontal_std_m, double up_std_m) {

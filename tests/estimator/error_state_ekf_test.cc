@@ -41,6 +41,7 @@ class ErrorStateEkfTest : public ::testing::Test {
     p.gyro_z_coupling_x_std_rad =
         0.005;  // the x and y gyros' coupling states on (x off by default)
     p.gyro_z_coupling_y_std_rad = 0.005;
+    p.gyro_scale_xy_std = 0.005;  // the x and y gyros' scale states on (off by default)
     ekf_ = ErrorStateEkf(p, EarthModel{});
     NavState s;
     s.p_N_m = Eigen::Vector3d(10, -4, 2);
@@ -60,11 +61,12 @@ class ErrorStateEkfTest : public ::testing::Test {
            AntennaVel(e) * e.imu_time_residual_s();
   }
   Eigen::Vector3d AntennaVel(const ErrorStateEkf& e) const {
-    // the rate the filter used, re-derived from the bias, the z gyro's scale and the x and y
-    // gyros' coupling to the z rate
+    // the rate the filter used, re-derived from the bias, the z gyro's scale, the x and y
+    // gyros' coupling to the z rate and their scales
     Eigen::Vector3d w = raw_w_ - e.gyro_bias();
     w.z() /= 1.0 + e.gyro_scale_z();
     w.head<2>() -= e.gyro_z_coupling_rad() * w.z();
+    w.head<2>().array() /= 1.0 + e.gyro_scale_xy().array();
     return e.state().v_N_mps + e.state().q_NB * w.cross(e.params().lever_arm_B_m);
   }
   // and its velocity changed by the (smoothed) acceleration times δt
@@ -550,7 +552,8 @@ TEST_F(ErrorStateEkfTest, UpdatesEqualTheJosephForm) {
 // the residual tag lag and the accelerometer's lateral-force states are on (the full path): Φ
 // gains their columns in the attitude rows, −Ĉ[ẑ x̂ ŷ]·ω_z·dt, and in the velocity rows,
 // −Ĉ[ŷ x̂ ẑ]·f̄_y·dt, f̄_y the lateral force low-passed (the residual lag has none: a random
-// constant seen only by the fixes).
+// constant seen only by the fixes); so are the x and y gyros' scales, −Ĉ[x̂·ω_x ŷ·ω_y]·dt in
+// the attitude rows and their random walk on the diagonal.
 void CheckPropagationAgainstTheDenseProduct(double gyro_scale_z_std) {
   EkfParams p;
   p.lever_arm_B_m = Eigen::Vector3d(0.3, 0.1, 0.9);
@@ -561,6 +564,8 @@ void CheckPropagationAgainstTheDenseProduct(double gyro_scale_z_std) {
   p.gyro_z_coupling_x_std_rad = p.gyro_z_coupling_y_std_rad = gyro_scale_z_std > 0 ? 0.005 : 0.0;
   p.accel_y_force_std = gyro_scale_z_std > 0 ? 0.005 : 0.0;
   p.imu_time_residual_std_s = gyro_scale_z_std > 0 ? 0.01 : 0.0;
+  p.gyro_scale_xy_std = gyro_scale_z_std > 0 ? 0.005 : 0.0;
+  p.gyro_scale_xy_rw_rthz = 1e-4;
   EarthModel earth;
   earth.w_IE_N_radps = Eigen::Vector3d(0.0, 6.3e-5, 3.7e-5);
   ErrorStateEkf ekf(p, earth);
@@ -588,6 +593,7 @@ void CheckPropagationAgainstTheDenseProduct(double gyro_scale_z_std) {
   Eigen::Vector3d dth_used = dth - ekf.gyro_bias() * dt;
   dth_used.z() /= 1.0 + ekf.gyro_scale_z();
   dth_used.head<2>() -= ekf.gyro_z_coupling_rad() * dth_used.z();
+  dth_used.head<2>().array() /= 1.0 + ekf.gyro_scale_xy().array();
   const double turned_rad = dth_used.norm();
   ekf.Predict(dth, dv, dt);
   EkfMatrix Phi = EkfMatrix::Identity();
@@ -601,6 +607,10 @@ void CheckPropagationAgainstTheDenseProduct(double gyro_scale_z_std) {
   Phi.block<3, 1>(kAtt, kGyroScaleZ) = -C.col(2) * dth_used.z();
   Phi.block<3, 1>(kAtt, kGyroCouplingX) = -C.col(0) * dth_used.z();
   Phi.block<3, 1>(kAtt, kGyroCouplingY) = -C.col(1) * dth_used.z();
+  if (gyro_scale_z_std > 0) {
+    Phi.block<3, 1>(kAtt, kGyroScaleX) = -C.col(0) * dth_used.x();
+    Phi.block<3, 1>(kAtt, kGyroScaleY) = -C.col(1) * dth_used.y();
+  }
   // the lateral force low-passed (kLateralForceSmoothing_s) as the prediction took it
   const double f_y_lp = ekf.lateral_force_lp_B_mps2();
   EXPECT_GT(f_y_lp, 0.5 * dv_used.y() / dt);  // the low-pass has risen towards the 1 m/s² given
@@ -615,6 +625,10 @@ void CheckPropagationAgainstTheDenseProduct(double gyro_scale_z_std) {
     Q(kAccelBias + i, kAccelBias + i) = p.accel_bias_rw_mps3_rthz * p.accel_bias_rw_mps3_rthz * dt;
     Q(kGyroBias + i, kGyroBias + i) = p.gyro_bias_rw_radps2_rthz * p.gyro_bias_rw_radps2_rthz * dt;
   }
+  if (gyro_scale_z_std > 0) {
+    Q(kGyroScaleX, kGyroScaleX) = Q(kGyroScaleY, kGyroScaleY) =
+        p.gyro_scale_xy_rw_rthz * p.gyro_scale_xy_rw_rthz * dt;
+  }
   const EkfMatrix expected = Phi * P0 * Phi.transpose() + Q;
   const EkfMatrix& P = ekf.covariance();
   EXPECT_LE((P - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff());
@@ -627,6 +641,8 @@ void CheckPropagationAgainstTheDenseProduct(double gyro_scale_z_std) {
     EXPECT_GT(std::abs(P(kVel + 1, kAccelScaleY)), 0.0);  // the lateral force's velocity terms
     EXPECT_GT(std::abs(P(kVel, kAccelCouplingXY)), 0.0);
     EXPECT_GT(std::abs(P(kVel + 2, kAccelCouplingZY)), 0.0);
+    EXPECT_GT(std::abs(P(kAtt + 1, kGyroScaleX)), 0.0);  // the x and y scales' tilt correlations
+    EXPECT_GT(std::abs(P(kAtt, kGyroScaleY)), 0.0);
     EXPECT_TRUE(P.middleRows<kGyroScaleZ - kNumClassicStates>(kNumClassicStates).isZero(0.0));
     return;
   }

@@ -1,4 +1,4 @@
-// The z gyro's scale-factor error, the x and y gyros' coupling to the z rate, the IMU tags'
+// The gyros' scale-factor errors, the x and y gyros' coupling to the z rate, the IMU tags'
 // residual lag and the accelerometer's lateral-force errors as the EKF estimates them
 // (ErrorStateEkf, kGyroScaleZ, kGyroCouplingX/Y, kImuTimeResidual,
 // kAccelScaleY/CouplingXY/CouplingZY; estimator.md, "The z gyro's scale factor", "The residual tag
@@ -17,6 +17,11 @@ void Navigator::RecordGyroScale() {
   if (stats_.gyro_scale_z_estimated) {
     stats_.gyro_scale_z = ekf_.gyro_scale_z();
     stats_.gyro_scale_z_std = std_of(ekf_index::kGyroScaleZ);
+  }
+  stats_.gyro_scale_xy_estimated = ekf_.gyro_scale_xy_estimated();
+  if (stats_.gyro_scale_xy_estimated) {
+    stats_.gyro_scale_xy = ekf_.gyro_scale_xy();
+    stats_.gyro_scale_xy_std = {std_of(ekf_index::kGyroScaleX), std_of(ekf_index::kGyroScaleY)};
   }
   stats_.imu_time_residual_s = ekf_.imu_time_residual_s();
   stats_.gyro_z_coupling_estimated = ekf_.gyro_z_coupling_estimated();

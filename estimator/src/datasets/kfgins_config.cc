@@ -182,6 +182,8 @@ KfginsConfig LoadKfginsConfig(const std::string& path) {
   c.initaccbias_mgal = k.OptionalVector("initaccbias");
   c.initbgstd_deg_hr = k.OptionalVector("initbgstd");
   c.initbastd_mgal = k.OptionalVector("initbastd");
+  c.initgyrscale_ppm = k.OptionalVector("initgyrscale");
+  c.initsgstd_ppm = k.OptionalVector("initsgstd");
   c.imunoise.arw_deg_rthr = k.AxesNumber("imunoise.arw");
   c.imunoise.vrw_mps_rthr = k.AxesNumber("imunoise.vrw");
   c.imunoise.gbstd_deg_hr = k.AxesNumber("imunoise.gbstd");

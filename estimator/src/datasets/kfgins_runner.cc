@@ -76,6 +76,8 @@ void StartAt(const KfginsConfig& c, double sow, Navigator& nav) {
   const Eigen::Vector3d bg = c.initgyrbias_deg_hr.value_or(Eigen::Vector3d::Zero()) * kDegPerHr;
   const Eigen::Vector3d ba = c.initaccbias_mgal.value_or(Eigen::Vector3d::Zero()) * kMgal;
   nav.SetImuBiases(FlipBody(ba), FlipBody(bg));
+  // a scale factor is the same in FRD and navd's FLU body (an axis's sign cancels in it)
+  if (c.initgyrscale_ppm) nav.SetGyroScale(*c.initgyrscale_ppm * 1e-6);
 }
 
 void EnsureDirectory(const std::string& dir) {
@@ -113,6 +115,15 @@ NavigatorParams NavigatorParamsFromKfgins(const KfginsConfig& c) {
   e.init_accel_bias_std_mps2 =
       (c.initbastd_mgal ? c.initbastd_mgal->maxCoeff() : n.abstd_mgal) * kMgal;
   e.lever_arm_B_m = FlipBody(c.antlever_frd_m);
+  // KF-GINS's gyro scale factors: a first-order Gauss–Markov of σ gsstd and correlation time
+  // corrtime, started at σ initsgstd (gsstd without it); navd's are the z scale (a random
+  // constant) and the x and y scales (random walks of σ·√(2/τ), as the biases' above). The
+  // accelerometers' scales (asstd) are not states: see kfgins.md.
+  if (n.gsstd_ppm > 0) {
+    const double init_ppm = c.initsgstd_ppm ? c.initsgstd_ppm->maxCoeff() : n.gsstd_ppm;
+    e.gyro_scale_z_std = e.gyro_scale_xy_std = init_ppm * 1e-6;
+    e.gyro_scale_xy_rw_rthz = n.gsstd_ppm * 1e-6 * std::sqrt(2.0 / tau_s);
+  }
   return p;
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <memory>
 #include <numbers>
 #include <sstream>
 #include <vector>
@@ -113,6 +114,46 @@ TEST(KfginsRunner, ParametersFollowTheConfigurationsUnits) {
   EXPECT_DOUBLE_EQ(p.ekf.init_pos_std_m, 0.3);
   EXPECT_EQ(p.ekf.lever_arm_B_m, Eigen::Vector3d(1, -2, -3));
   EXPECT_EQ(p.fusion_horizon.count(), 0);
+  // gsstd 0: no gyro scale of the configuration; navd's own z scale prior, no x and y scales
+  EXPECT_DOUBLE_EQ(p.ekf.gyro_scale_z_std, EkfParams{}.gyro_scale_z_std);
+  EXPECT_EQ(p.ekf.gyro_scale_xy_std, 0.0);
+}
+
+TEST(KfginsRunner, TheGyroScaleFactorsAreKfginsOnes) {
+  // GIVEN KF-GINS's gyro scale factors: a Gauss–Markov of σ 5000 ppm over 2 h, started at 3000
+  KfginsConfig c;
+  c.imunoise = {0.6, 0.12, 36, 1000, 5000, 5000, 2};
+  const NavigatorParams gm = NavigatorParamsFromKfgins(c);
+  c.initsgstd_ppm = Eigen::Vector3d(3000, 2000, 1000);
+  const NavigatorParams p = NavigatorParamsFromKfgins(c);
+  // THEN the three scales are states: σ gsstd (initsgstd's largest when given), walking as σ·√(2/τ)
+  EXPECT_DOUBLE_EQ(gm.ekf.gyro_scale_xy_std, 0.005);
+  EXPECT_DOUBLE_EQ(gm.ekf.gyro_scale_z_std, 0.005);
+  EXPECT_DOUBLE_EQ(p.ekf.gyro_scale_xy_std, 0.003);
+  EXPECT_DOUBLE_EQ(p.ekf.gyro_scale_z_std, 0.003);
+  EXPECT_NEAR(p.ekf.gyro_scale_xy_rw_rthz, 0.005 * std::sqrt(2.0 / 7200), 1e-18);
+}
+
+TEST(KfginsRunner, TheConfigurationsInitialGyroScalesStartTheEstimates) {
+  // GIVEN a configuration with initial gyro scale errors (ppm) and KF-GINS's scale states
+  const testing::ScopedTempDir dir;
+  KfginsConfig c =
+      LoadKfginsConfig(WriteStationaryDataset(dir.path, "initgyrscale: [1000, -2000, 3000]\n"));
+  ASSERT_TRUE(c.initgyrscale_ppm.has_value());
+  c.imunoise.gsstd_ppm = 5000;
+  // WHEN a filter starts there, its estimates are those values
+  const auto nav = std::make_unique<Navigator>(NavigatorParamsFromKfgins(c));
+  nav->InitializeAt(GpsTime{}, {kLat, kLon, kH}, Eigen::Vector3d::Zero(),
+                    Eigen::Quaterniond::Identity());
+  nav->SetGyroScale(*c.initgyrscale_ppm * 1e-6);
+  EXPECT_NEAR(nav->ekf().gyro_scale_xy().x(), 0.001, 1e-15);
+  EXPECT_NEAR(nav->ekf().gyro_scale_xy().y(), -0.002, 1e-15);
+  EXPECT_NEAR(nav->ekf().gyro_scale_z(), 0.003, 1e-15);
+  // AND a filter without the x and y scale states (navd's default) keeps them at 0
+  const auto plain = std::make_unique<Navigator>(NavigatorParams{});
+  plain->SetGyroScale(*c.initgyrscale_ppm * 1e-6);
+  EXPECT_EQ(plain->ekf().gyro_scale_xy(), Eigen::Vector2d::Zero());
+  EXPECT_NEAR(plain->ekf().gyro_scale_z(), 0.003, 1e-15);
 }
 
 }  // namespace

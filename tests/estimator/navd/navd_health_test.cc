@@ -210,6 +210,22 @@ TEST(NavdHealthTest, ReportsTheAccelerometerNoiseScaleOnceRaised) {
   EXPECT_NE(f.find("\"accel_noise_scale\":250,\"accel_noise_raises\":3"), std::string::npos) << f;
 }
 
+// issue 39: the x and y gyros' scale factors, while estimated, are in the health line (ppm)
+TEST(NavdHealthTest, ReportsTheXAndYGyroScalesWhileEstimated) {
+  NavigatorStats nav;
+  NavdHealth quiet(HealthSources{nullptr, nullptr, nullptr, nullptr, &nav});
+  EXPECT_EQ(quiet.Field(Ns(1)).find("gyro_scale_xy"), std::string::npos);
+  nav.gyro_scale_xy_estimated = true;
+  nav.gyro_scale_xy = {0.0123, -0.004};
+  nav.gyro_scale_xy_std = {0.002, 0.0031};
+  NavdHealth h(HealthSources{nullptr, nullptr, nullptr, nullptr, &nav});
+  const std::string f = h.Field(Ns(1));
+  EXPECT_NE(f.find("\"gyro_scale_xy_ppm\":{\"x\":12300,\"y\":-4000,\"x_std\":2000,"
+                   "\"y_std\":3100}"),
+            std::string::npos)
+      << f;
+}
+
 // issues 41/39: an IMU found unusable (ImuUsabilityCheck) is a flag while it lasts, and the test's
 // statistic is reported once it has fired (the line stays short before)
 TEST(NavdHealthTest, ReportsAnUnusableImuAndItsTestStatistic) {

@@ -7,7 +7,7 @@
 /// output: nominal NavState, biases, covariance, NIS of the last update, status flags
 /// @endsystem
 ///
-/// Error state (kNumUsedStates = 29 in a vector of kNumStates = 30, fixed-size):
+/// Error state (kNumUsedStates = 31 in a vector of kNumStates = 32, fixed-size):
 ///   δp (N, m) | δv (N, m/s) | φ (attitude error in N, rad; C_true = Exp(φ)·Ĉ) | δb_a (B, m/s²) |
 ///   δb_g (B, rad/s) | e_gnss (N, m: first-order Gauss–Markov GNSS position error, optional) |
 ///   δs (m/s: the vehicle's set speed, a slow random walk, optional) |
@@ -18,6 +18,7 @@
 ///   | δt (s: the IMU tags' residual lag behind the fixes' time, a random constant, optional)
 ///   | δk_ay, δm_xy, δm_zy (the y accelerometer's scale error and the x and z accelerometers'
 ///   coupling to the y specific force: random constants, optional)
+///   | δk_x, δk_y (the x and y gyros' scale-factor errors: random walks, optional)
 ///
 /// The residual lag: after the tag lag navd found and took off (ImuTimeOffset) the INS at tag time
 /// τ is the vehicle at τ − δt, so a fix at t is predicted as the INS's antenna at t plus its
@@ -30,8 +31,17 @@
 /// The z gyro's scale factor: the gyro reads ω̃_z = (1 + k_z)·ω_z + b_z, the filter compensates
 /// ω_z = (ω̃_z − b̂_z)/(1 + k̂_z), so φ̇ gains −Ĉ·ẑ·ω_z·δk_z (KF-GINS's gyro scale states, its z
 /// row). A ground vehicle's headland turns (Θ = π each) make it observable: every turn leaves a
-/// heading error k_z·Θ that the fixes show over the next row. The x and y gyros' scales are not
-/// states: a ground vehicle's roll and pitch rates are too small to show them.
+/// heading error k_z·Θ that the fixes show over the next row.
+///
+/// The x and y gyros' scale factors (off by default; `gyro_scale_xy_std`, and in `navd --kfgins`
+/// from the configuration's gsstd, as KF-GINS estimates them): the x gyro reads
+/// ω̃_x = (1 + k_x)·ω_x + m_xz·ω_z + b_x, the filter compensates
+/// ω_x = (ω̃_x − b̂_x − m̂_xz·ω_z)/(1 + k̂_x), so φ̇ gains −Ĉ·x̂·ω_x·δk_x (y likewise). A car's roll
+/// and pitch (its body in the turns and over the road, an IMU mounted pitched) make them show in
+/// the tilt: on the real car drive_0708 KF-GINS without them had 30 s outages' maxima of 38.3 m
+/// mean, with them 32.4 m (estimator.md, "The x and y gyros' scale factors"). A walker's gait
+/// swings them both ways and taught them wrong (KF-GINS on walk_0827: 14.8 → 21.8 m): like the
+/// couplings they are learnt only at speed (TurnStatesLearnable).
 ///
 /// The x and y gyros' coupling to the z rate (the third column of the gyro triad's misalignment
 /// matrix, its non-orthogonality): the x gyro reads ω̃_x = ω_x + m_xz·ω_z + b_x (y likewise), the
@@ -116,11 +126,13 @@ inline constexpr int kImuTimeResidual = 25;  ///< δt: the IMU tags' residual la
 inline constexpr int kAccelScaleY = 26;  ///< δk_ay: the y accelerometer's scale error (fraction)
 inline constexpr int kAccelCouplingXY = 27;  ///< δm_xy: the x accelerometer's coupling to f_y (rad)
 inline constexpr int kAccelCouplingZY = 28;  ///< δm_zy: the z accelerometer's coupling to f_y (rad)
+inline constexpr int kGyroScaleX = 29;       ///< δk_x: the x gyro's scale-factor error (fraction)
+inline constexpr int kGyroScaleY = 30;       ///< δk_y: the y gyro's scale-factor error (fraction)
 /// the states in use (the last index + 1), and the size of the filter's vectors and matrices: that
 /// count made even (an unused last row and column, zero), so that Eigen's SSE packets of two
 /// doubles tile every column (23 states left the covariance propagation unvectorised: +57 %
 /// instructions over the 20 states before them; callgrind, ekf_benchmark seed004)
-inline constexpr int kNumUsedStates = 29;
+inline constexpr int kNumUsedStates = 31;
 inline constexpr int kNumStates = kNumUsedStates + kNumUsedStates % 2;
 }  // namespace ekf_index
 
@@ -205,6 +217,13 @@ struct EkfParams {
   /// gyro_scale_std, which only widens the attitude's σ by the angle turned, this state learns
   /// the scale and corrects the turns with it.
   double gyro_scale_z_std = 0.005;
+  /// Prior σ of the x and y gyros' scale-factor errors k_x, k_y (fraction; `[filter]
+  /// gyro_scale_xy_std`; 0: not estimated, the default: navd's emulated IMUs and its walk showed
+  /// no need of them) and their random walk (1/√s; `gyro_scale_xy_rw_rthz`): `navd --kfgins`
+  /// takes KF-GINS's first-order Gauss–Markov σ (gsstd) as the prior and σ·√(2/τ) as the walk,
+  /// as it does for the biases.
+  double gyro_scale_xy_std = 0.0;
+  double gyro_scale_xy_rw_rthz = 0.0;
   /// Prior σ of the x and y gyros' coupling to the z rate, m_xz and m_yz, each estimated as a
   /// random-constant state (rad; `[filter] gyro_z_coupling_x_std_deg`, `gyro_z_coupling_y_std_deg`,
   /// `gyro_z_coupling_std_deg` for both; 0: not estimated, that gyro taken as orthogonal to z).
@@ -416,6 +435,12 @@ class ErrorStateEkf {
   const Eigen::Vector3d& mount_angles_rad() const { return mount_rad_; }
   /// The z gyro's estimated scale-factor error k̂_z (fraction; 0 when not estimated).
   double gyro_scale_z() const { return gyro_scale_z_; }
+  /// The x and y gyros' estimated scale-factor errors (k̂_x, k̂_y; 0 when not estimated).
+  const Eigen::Vector2d& gyro_scale_xy() const { return gyro_scale_xy_; }
+  bool gyro_scale_xy_estimated() const { return GyroScaleXyStatesOn(); }
+  /// Start the gyros' scale-factor errors at these values (x, y, z; fraction; a KF-GINS
+  /// configuration's initgyrscale): those not estimated are left at 0.
+  void SetGyroScale(const Eigen::Vector3d& k);
   /// The x and y gyros' estimated coupling to the z rate (m̂_xz, m̂_yz, rad; 0 when not estimated).
   const Eigen::Vector2d& gyro_z_coupling_rad() const { return gyro_z_coupling_rad_; }
   /// The y accelerometer's estimated scale error and the x and z accelerometers' coupling to the
@@ -475,6 +500,7 @@ class ErrorStateEkf {
     Eigen::Matrix3d At, Bt, Dt, Gt, Ggt;
     struct {
       Eigen::Matrix3d Gk, Ga;
+      Eigen::Matrix<double, 3, 2> Gs;  // the x and y scales' columns of φ
       bool learnable;
     } turn;
   };
@@ -495,13 +521,15 @@ class ErrorStateEkf {
   /// position fix, carried once gap_noise_after_s_ has passed without one.
   void AccumulateGapNoise(const Eigen::Matrix3d& C, double turned_rad, double dt);
   void RestartGapNoise();
-  /// The correlated-GNSS-error, speed-model, mounting-angle or gyro-triad states are on: P's last
-  /// ten rows may be non-zero.
+  /// The correlated-GNSS-error, speed-model, mounting-angle or gyro-triad states are on: P's rows
+  /// after the classic ones may be non-zero.
   bool AugmentedStatesOn() const {
     return params_.gnss_error_tau_s > 0 || params_.speed_rw_mps_rthz > 0 || MountStatesOn() ||
            GyroScaleStateOn() || GyroCouplingStatesOn() || TimeResidualStateOn() ||
-           AccelForceStatesOn();
+           AccelForceStatesOn() || GyroScaleXyStatesOn();
   }
+  /// The x and y gyros' scale factors are estimated.
+  bool GyroScaleXyStatesOn() const { return params_.gyro_scale_xy_std > 0; }
   /// The accelerometer's lateral-force errors (δk_ay, δm_xy, δm_zy) are estimated.
   bool AccelForceStatesOn() const { return params_.accel_y_force_std > 0; }
   /// The IMU tags' residual lag is estimated.
@@ -553,6 +581,7 @@ class ErrorStateEkf {
   Eigen::Matrix3d C_VB_ = Eigen::Matrix3d::Identity();   // Exp(μ)ᵀ
   double gyro_scale_z_ = 0.0;                            // k̂_z: the z gyro's scale error
   Eigen::Vector2d gyro_z_coupling_rad_ = Eigen::Vector2d::Zero();  // m̂_xz, m̂_yz
+  Eigen::Vector2d gyro_scale_xy_ = Eigen::Vector2d::Zero();        // k̂_x, k̂_y
   double time_residual_s_ = 0.0;  // δ̂t: the IMU tags' residual lag behind the fixes
   Eigen::Vector3d accel_y_force_ = Eigen::Vector3d::Zero();  // k̂_ay, m̂_xy, m̂_zy
   // the acceleration's low-pass time constant: a 10 Hz fix interval, over which an engine's

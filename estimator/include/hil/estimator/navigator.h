@@ -330,6 +330,10 @@ struct NavigatorStats {
   /// is estimated
   bool gyro_scale_z_estimated = false;
   double gyro_scale_z = 0, gyro_scale_z_std = 0;
+  /// the x and y gyros' scale-factor errors (kGyroScaleX/Y: fraction) and their σ, while estimated
+  bool gyro_scale_xy_estimated = false;
+  Eigen::Vector2d gyro_scale_xy = Eigen::Vector2d::Zero();
+  Eigen::Vector2d gyro_scale_xy_std = Eigen::Vector2d::Zero();
   /// the x and y gyros' coupling to the z rate (ErrorStateEkf, kGyroCouplingX/Y: rad) and their
   /// σ, while they are estimated
   /// the IMU tags' residual lag behind the fixes (ErrorStateEkf, kImuTimeResidual: s)
@@ -384,6 +388,9 @@ class Navigator {
                     const Eigen::Vector3d& gyro_bias_B_radps) {
     ekf_.SetBiases(accel_bias_B_mps2, gyro_bias_B_radps);
   }
+  /// Starts the gyros' scale-factor estimates at known values (x, y, z, fraction; after
+  /// InitializeAt); those not estimated stay 0.
+  void SetGyroScale(const Eigen::Vector3d& k) { ekf_.SetGyroScale(k); }
   /// The solution at the newest input time (IMU modes: output predictor).
   NavOutput Output() const;
 

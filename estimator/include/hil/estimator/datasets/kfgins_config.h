@@ -24,8 +24,8 @@ struct KfginsImuNoise {
   double vrw_mps_rthr = 0;  ///< accelerometer velocity random walk, m/s/√h
   double gbstd_deg_hr = 0;  ///< gyro bias σ (first-order Gauss–Markov), °/h
   double abstd_mgal = 0;    ///< accelerometer bias σ, mGal
-  double gsstd_ppm = 0;     ///< gyro scale-factor σ, ppm (navd has no scale-factor states)
-  double asstd_ppm = 0;     ///< accelerometer scale-factor σ, ppm
+  double gsstd_ppm = 0;     ///< gyro scale-factor σ, ppm (navd's gyro scale states)
+  double asstd_ppm = 0;     ///< accelerometer scale-factor σ, ppm (not used: see kfgins.md)
   double corrtime_hr = 1;   ///< correlation time of every bias and scale state, hours
 };
 
@@ -46,6 +46,8 @@ struct KfginsConfig {
   std::optional<Eigen::Vector3d> initgyrbias_deg_hr, initaccbias_mgal;
   /// optional initial bias σ (default: imunoise gbstd / abstd)
   std::optional<Eigen::Vector3d> initbgstd_deg_hr, initbastd_mgal;
+  /// optional initial gyro scale-factor errors and their σ (ppm; default 0 and imunoise gsstd)
+  std::optional<Eigen::Vector3d> initgyrscale_ppm, initsgstd_ppm;
   KfginsImuNoise imunoise;
   Eigen::Vector3d antlever_frd_m = Eigen::Vector3d::Zero();  ///< GNSS antenna in the IMU frame
 
