@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -35,14 +36,16 @@ struct Child {
   int in = -1;   // its stdin (write end)
 };
 
-// Runs `argv` with the library preloaded on `host`'s clock, stdin and stdout piped.
-Child Spawn(const LockstepHost& host, const std::vector<std::string>& argv) {
+// Runs `argv` with the library preloaded on `host`'s clock, stdin and stdout piped; `also`: a
+// library preloaded after it.
+Child Spawn(const LockstepHost& host, const std::vector<std::string>& argv,
+            const std::string& also = "") {
   int in[2], out[2];
   EXPECT_EQ(pipe(in), 0);
   EXPECT_EQ(pipe(out), 0);
-  std::vector<std::string> env_text{std::string("LD_PRELOAD=") + HIL_PRELOAD_LIBRARY,
-                                    std::string("HIL_LOCKSTEP=") + host.path(),
-                                    "PATH=/usr/bin:/bin", "LC_ALL=C", "TZ=UTC"};
+  std::vector<std::string> env_text{
+      std::string("LD_PRELOAD=") + HIL_PRELOAD_LIBRARY + (also.empty() ? "" : ":" + also),
+      std::string("HIL_LOCKSTEP=") + host.path(), "PATH=/usr/bin:/bin", "LC_ALL=C", "TZ=UTC"};
   std::vector<char*> env, args;
   for (auto& e : env_text) env.push_back(e.data());
   env.push_back(nullptr);
@@ -126,6 +129,27 @@ TEST(LockstepClock, SleepEndsOnlyWhenHilMovesTimeToItsDeadline) {
   waitpid(c.pid, nullptr, 0);
   EXPECT_FALSE(host.EarliestDeadline());
   EXPECT_EQ(host.stats().grants, 1u);
+}
+
+// A program descheduled during its start-up (here: held back 300 ms of wall time where the
+// library claims its main thread's slot, start_delay_shim.cc) is waited for once hil sees it: hil
+// never finds it idle before its first wait, so its start-up happens at the emulated time of the
+// first turn in every run, however long the machine keeps it from running.
+TEST(LockstepClock, AProgramSeenIsWaitedForEvenWhenDescheduledAtItsStart) {
+  LockstepHost host(TempFile("start"), kEpochNs);
+  Child c = Spawn(host, {"/bin/sleep", "0.25"}, HIL_START_DELAY_SHIM);
+  close(c.in);
+  close(c.out);
+  // a sleep begun later than t = 0 would outlast the test: it ends with it
+  const std::unique_ptr<Child, void (*)(Child*)> end(&c, [](Child* child) {
+    kill(child->pid, SIGKILL);
+    waitpid(child->pid, nullptr, 0);
+  });
+  ASSERT_TRUE(Attached(host, c.pid));
+  host.Wake();  // the first turn
+  ASSERT_TRUE(WaitIdle(host));
+  // idle means it waits in its sleep, which began at emulated t = 0
+  EXPECT_EQ(host.EarliestDeadline(), Time{} + std::chrono::milliseconds(250));
 }
 
 TEST(LockstepClock, BlockingReadWaitsForBytesHilWrites) {

@@ -5,11 +5,13 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <stdexcept>
 #include <string_view>
 
 #include <nlohmann/json.hpp>
+#include <sys/ioctl.h>
 #include <sys/wait.h>
 
 #include "hil/firmware_emu/wall_time.h"
@@ -19,8 +21,28 @@
 namespace hil::harness {
 namespace {
 
-// longest wait for the stdout pipe's end after Stop
+// After Stop, the stdout pipe's end is waited for until the reader thread has slept this long
+// (wall) in its read of the empty pipe: a process that left the group holds it open. The time the
+// reader runs or waits for a CPU, or the pipe holds bytes, does not count: on a loaded machine the
+// reader is late, not done, and the lines it has yet to take are part of the run's output.
 constexpr Duration kStdoutEndWait = std::chrono::milliseconds(200);
+// ... and at most this long (wall) in all: a process outside the group that keeps writing.
+constexpr Duration kStdoutEndLimit = std::chrono::seconds(10);
+
+// The state letter of thread `tid` of this process (/proc/self/task/TID/stat), '?' if unknown.
+char TaskState(int tid) {
+  char path[64];
+  std::snprintf(path, sizeof path, "/proc/self/task/%d/stat", tid);
+  const int fd = open(path, O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return '?';
+  char buf[512];
+  const ssize_t n = read(fd, buf, sizeof buf - 1);
+  close(fd);
+  if (n <= 0) return '?';
+  const std::string_view stat(buf, static_cast<std::size_t>(n));
+  const std::size_t paren = stat.rfind(')');
+  return paren != std::string_view::npos && paren + 2 < stat.size() ? stat[paren + 2] : '?';
+}
 
 }  // namespace
 
@@ -80,8 +102,11 @@ void EstimatorProcess::ReadLoop() {
   char buf[4096];
   std::vector<OutputLine> got;
   bool skip_to_newline = false;  // the rest of an overlong line
+  reader_tid_ = static_cast<int>(gettid());
   for (;;) {
+    in_read_ = true;
     const ssize_t n = read(stdout_fd_, buf, sizeof buf);
+    in_read_ = false;
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) {
       stdout_closed_ = true;
@@ -208,10 +233,28 @@ ExitInfo EstimatorProcess::Stop(double grace_s) {
     exit_->killed_by_us = true;
   }
   if (was_running) exit_->exited = false;  // it ended because we asked
-  // its last lines: the reader thread reads the pipe to its end once no process holds it
-  const WallTime eof_deadline = WallNow() + kStdoutEndWait;
-  while (!stdout_closed_ && WallNow() < eof_deadline) usleep(200);
+  AwaitStdoutEnd();
   return *exit_;
+}
+
+bool EstimatorProcess::ReaderWaitsOnEmptyPipe() const {
+  int unread = 0;
+  if (ioctl(stdout_fd_, FIONREAD, &unread) != 0 || unread > 0) return false;
+  // in its read and asleep there: everything written before has been taken (a reader that has
+  // just returned from the read runs, or waits for a CPU: state R)
+  return in_read_ && reader_tid_ > 0 && TaskState(reader_tid_) == 'S';
+}
+
+void EstimatorProcess::AwaitStdoutEnd() {
+  // its last lines: the reader thread reads the pipe to its end once no process holds it
+  const WallTime start = WallNow();
+  WallTime waiting_since = start;
+  while (!stdout_closed_) {
+    const WallTime now = WallNow();
+    if (!ReaderWaitsOnEmptyPipe()) waiting_since = now;
+    if (now - waiting_since >= kStdoutEndWait || now - start >= kStdoutEndLimit) return;
+    usleep(200);
+  }
 }
 
 }  // namespace hil::harness

@@ -252,8 +252,12 @@ __attribute__((constructor)) void Load() {
   pthread_atfork(nullptr, nullptr, AfterForkInChild);
   g_shared = s;
   OpenIo();
-  RegisterProcess();
+  // The main thread's slot (running) before the process is listed: hil starts its first turn
+  // once the hosts are listed and waits for every claimed slot, so a process listed without a
+  // slot would count as idle until the claim. Descheduled in between on a loaded machine, it
+  // ran its start-up at a later emulated time than in another run.
   Slot();  // the main thread runs from now on: hil waits until it first waits
+  RegisterProcess();
   NotifyHil();
 }
 

@@ -79,8 +79,9 @@ class EstimatorProcess {
   WallTime last_output_wall() const { return last_output_wall_.load(); }
   /// Stops the process and every process of its group (also when the estimator itself has already
   /// ended): SIGTERM, then SIGKILL after `grace_s`. Idempotent. Returns once the lines it wrote
-  /// before it ended have been read from its stdout (or, with the pipe held open by a process
-  /// that left the group, after a short wait).
+  /// before it ended have been read from its stdout, however late the machine runs the reader
+  /// thread (with the pipe held open by a process that left the group: once the reader has slept
+  /// 200 ms on the empty pipe, or after 10 s of its flood).
   ExitInfo Stop(double grace_s = 2.0);
   int pid() const { return pid_; }
   /// Parse JSON lines on the reader thread (see OutputLine::json): the output of a fast
@@ -97,6 +98,10 @@ class EstimatorProcess {
 
  private:
   void ReadLoop();
+  /// Stop's wait for the reader thread to reach the end of the stdout pipe.
+  void AwaitStdoutEnd();
+  /// Whether the reader thread sleeps in its read of the empty stdout pipe.
+  bool ReaderWaitsOnEmptyPipe() const;
   OutputLine MakeLine(std::string text, WallTime now);
   void Queue(std::vector<OutputLine>& got, WallTime now);
   bool GroupAlive() const;
@@ -111,6 +116,8 @@ class EstimatorProcess {
   std::atomic<std::uint64_t> output_bytes_{0}, dropped_bytes_{0}, overlong_lines_{0};
   std::atomic<WallTime> last_output_wall_{WallTime{}};
   std::atomic<bool> stdout_closed_{false};  // the reader saw end of file
+  std::atomic<bool> in_read_{false};        // the reader is in (or about to enter) its read()
+  std::atomic<int> reader_tid_{0};
   std::atomic<bool> parse_json_{false};
   std::atomic<bool> scan_solutions_{false};
   JsonSolutionScanner scanner_;  // the reader thread's

@@ -26,6 +26,9 @@
 ///    looked at its condition since the last change that concerns it and found it unmet. Only
 ///    then does hil read what they wrote (at the emulated time `now_ns`) or move time on, to the
 ///    earliest of its own next event and the slots' deadlines.
+/// A process that loads the library claims its main thread's slot (running) before it lists itself
+/// in `processes`: hil, which starts its first turn once the hosts are listed, never finds a
+/// program that is still starting idle, however long the machine keeps it from running.
 /// When `passthrough` is set every call is the real one (waits in progress go on the real way).
 /// A thread that goes to wait after it wrote (as above) bumps `host_writes` first; so does a
 /// thread or process that ends: hil reads the links at a turn only when `host_writes` moved.
