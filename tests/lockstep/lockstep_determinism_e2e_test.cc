@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <fstream>
+#include <initializer_list>
 #include <map>
 #include <sstream>
 #include <string>
@@ -76,6 +77,21 @@ pid_t StartBusyProcess() {
   return pid;
 }
 
+// Run 0's copy of each file of `files` in run folder `out` is kept in `first` (and must not be
+// empty); a later run's must equal it (`what`: how that run differs, for the message).
+void KeepOrCompare(const std::string& out, int run, std::initializer_list<const char*> files,
+                   std::map<std::string, std::string>& first, const std::string& what) {
+  for (const char* f : files) {
+    const std::string text = ReadFile(out + "/" + f);
+    if (run == 0) {
+      first[f] = text;
+      EXPECT_FALSE(text.empty()) << f;
+    } else {
+      EXPECT_TRUE(text == first[f]) << "run " << run << ": " << f << " differs " << what;
+    }
+  }
+}
+
 // Runs the driver as the estimator into `out`; `loaded`: beside a busy process, at its priority
 // (at hil's default nice -10 the busy process would hardly disturb it); `preload_also`: a library
 // the driver preloads after hil's.
@@ -109,15 +125,8 @@ TEST(LockstepDeterminismE2E, WallClockDriverGivesTheSameBytesAndStampsTheirArriv
     EXPECT_EQ(report["lockstep"]["processes"][0]["clock"], "emulated");
     EXPECT_EQ(report["lockstep"]["processes"][0]["name"], "ubx_timeout_dri");
     EXPECT_TRUE(report["complete"].get<bool>()) << r.out;
-    for (const char* f : {"captures/ttyGPS.cap", "reads.log", "estimate.jsonl"}) {
-      const std::string text = ReadFile(out + "/" + f);
-      if (run == 0) {
-        first[f] = text;
-        EXPECT_FALSE(text.empty()) << f;
-      } else {
-        EXPECT_TRUE(text == first[f]) << "run " << run << ": " << f << " differs from run 0's";
-      }
-    }
+    KeepOrCompare(out, run, {"captures/ttyGPS.cap", "reads.log", "estimate.jsonl"}, first,
+                  "from run 0's");
   }
   // the driver configured the receiver: every command acknowledged, UBX solutions came
   const std::string log = first["reads.log"];
@@ -159,15 +168,8 @@ TEST(LockstepDeterminismE2E, DriverDescheduledAtItsStartGivesTheSameBytes) {
     const auto report = nlohmann::json::parse(ReadFile(out + "/report.json"));
     ASSERT_TRUE(report.contains("lockstep")) << r.out;
     EXPECT_FALSE(report["lockstep"].contains("fallback")) << report["lockstep"].dump();
-    for (const char* f : {"captures/ttyGPS.cap", "reads.log", "estimate.jsonl"}) {
-      const std::string text = ReadFile(out + "/" + f);
-      if (run == 0) {
-        first[f] = text;
-        EXPECT_FALSE(text.empty()) << f;
-      } else {
-        EXPECT_TRUE(text == first[f]) << f << " differs when the driver starts late";
-      }
-    }
+    KeepOrCompare(out, run, {"captures/ttyGPS.cap", "reads.log", "estimate.jsonl"}, first,
+                  "when the driver starts late");
     EXPECT_NE(ReadFile(out + "/captures/ttyGPS.cap").find("\nrx 0 0 0 host "), std::string::npos)
         << "run " << run << ": its first command was not taken at t = 0";
   }
@@ -198,15 +200,7 @@ TEST(LockstepDeterminismE2E, ReadOnlyDriverWithLookaheadSeesWhatATurnPerMessageS
     ASSERT_TRUE(report.contains("lockstep")) << r.out;
     EXPECT_FALSE(report["lockstep"].contains("fallback")) << report["lockstep"].dump();
     EXPECT_EQ(report["lockstep"]["lookahead"].get<bool>(), run != 1) << "run " << run;
-    for (const char* f : {"captures/ttyGPS.cap", "reads.log"}) {
-      const std::string text = ReadFile(out + "/" + f);
-      if (run == 0) {
-        first[f] = text;
-        EXPECT_FALSE(text.empty()) << f;
-      } else {
-        EXPECT_TRUE(text == first[f]) << "run " << run << ": " << f << " differs from run 0's";
-      }
-    }
+    KeepOrCompare(out, run, {"captures/ttyGPS.cap", "reads.log"}, first, "from run 0's");
   }
   // its stamps are the bytes' arrival: what it read up to each stamp had left the UART by then,
   // all of it (hil wrote the bytes long before)
@@ -273,16 +267,10 @@ TEST(LockstepDeterminismE2E, ClosedLoopNavdAndGuidancedOnTheClock) {
     }
     EXPECT_NE(names.find("navd"), std::string::npos) << names;
     EXPECT_NE(names.find("guidanced"), std::string::npos) << names;
-    for (const char* f :
-         {"captures/ttyGPS.cap", "captures/ttyIMU.cap", "captures/ttyBASE.cap", "estimate.jsonl"}) {
-      const std::string text = ReadFile(out + "/" + f);
-      if (run == 0) {
-        first[f] = text;
-        EXPECT_FALSE(text.empty()) << f;
-      } else {
-        EXPECT_TRUE(text == first[f]) << f << " differs from run 0's";
-      }
-    }
+    KeepOrCompare(
+        out, run,
+        {"captures/ttyGPS.cap", "captures/ttyIMU.cap", "captures/ttyBASE.cap", "estimate.jsonl"},
+        first, "from run 0's");
   }
 }
 
@@ -309,16 +297,10 @@ TEST(LockstepDeterminismE2E, DescriptorCacheKeepsTheClosedLoopsBytes) {
     EXPECT_FALSE(report["lockstep"].contains("fallback")) << report["lockstep"].dump();
     lookups[run] = report["lockstep"]["descriptor_lookups"].get<std::uint64_t>();
     metrics[run] = {report["metrics"], report["tracking"], report["criteria"]};
-    for (const char* f :
-         {"captures/ttyCAN.cap", "captures/ttyGPS.cap", "captures/ttyIMU.cap", "estimate.jsonl"}) {
-      const std::string text = ReadFile(out + "/" + f);
-      if (run == 0) {
-        first[f] = text;
-        EXPECT_FALSE(text.empty()) << f;
-      } else {
-        EXPECT_TRUE(text == first[f]) << f << " differs without the cache";
-      }
-    }
+    KeepOrCompare(
+        out, run,
+        {"captures/ttyCAN.cap", "captures/ttyGPS.cap", "captures/ttyIMU.cap", "estimate.jsonl"},
+        first, "without the cache");
   }
   EXPECT_EQ(metrics[0], metrics[1]);
   EXPECT_GT(lookups[0], 0u);
