@@ -93,9 +93,7 @@ UpdateResult Navigator::ControlGnssPosition(const GnssSample& g, const Eigen::Ve
     ++stats_.recovery_fixes;
     // back at its fixes: gap_recovery_passes fixes in a row after the gap's first that the gate
     // would have taken
-    const double gate_sigma = params_.ekf.gate_sigma;
-    const bool passes = r.nis <= gate_sigma * gate_sigma * r.dof * gate_scale;
-    recovery_passes_ = passes ? recovery_passes_ + 1 : 0;
+    recovery_passes_ = ekf_.WithinGate(r.nis, r.dof, gate_scale) ? recovery_passes_ + 1 : 0;
     if (recovery_passes_ >= rp.gap_recovery_passes) recovery_until_.reset();
   }
   if (fades && r.dof > 0) {

@@ -5,7 +5,6 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
 #include <stdexcept>
 #include <string_view>
@@ -28,21 +27,6 @@ namespace {
 constexpr Duration kStdoutEndWait = std::chrono::milliseconds(200);
 // ... and at most this long (wall) in all: a process outside the group that keeps writing.
 constexpr Duration kStdoutEndLimit = std::chrono::seconds(10);
-
-// The state letter of thread `tid` of this process (/proc/self/task/TID/stat), '?' if unknown.
-char TaskState(int tid) {
-  char path[64];
-  std::snprintf(path, sizeof path, "/proc/self/task/%d/stat", tid);
-  const int fd = open(path, O_RDONLY | O_CLOEXEC);
-  if (fd < 0) return '?';
-  char buf[512];
-  const ssize_t n = read(fd, buf, sizeof buf - 1);
-  close(fd);
-  if (n <= 0) return '?';
-  const std::string_view stat(buf, static_cast<std::size_t>(n));
-  const std::size_t paren = stat.rfind(')');
-  return paren != std::string_view::npos && paren + 2 < stat.size() ? stat[paren + 2] : '?';
-}
 
 }  // namespace
 
@@ -242,7 +226,7 @@ bool EstimatorProcess::ReaderWaitsOnEmptyPipe() const {
   if (ioctl(stdout_fd_, FIONREAD, &unread) != 0 || unread > 0) return false;
   // in its read and asleep there: everything written before has been taken (a reader that has
   // just returned from the read runs, or waits for a CPU: state R)
-  return in_read_ && reader_tid_ > 0 && TaskState(reader_tid_) == 'S';
+  return in_read_ && reader_tid_ > 0 && ThreadState(getpid(), reader_tid_) == 'S';
 }
 
 void EstimatorProcess::AwaitStdoutEnd() {

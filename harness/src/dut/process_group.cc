@@ -77,6 +77,10 @@ std::vector<int> LiveGroupMembers(int pgid) {
   return pids;
 }
 
+char ThreadState(int pid, int tid) {
+  return ReadStat("/proc/" + std::to_string(pid) + "/task/" + std::to_string(tid) + "/stat").state;
+}
+
 GroupActivity ReadGroupActivity(int pgid) {
   GroupActivity a;
   const std::vector<int> pids = LiveGroupMembers(pgid);

@@ -95,6 +95,7 @@
 /// The filter never throws or aborts on input; non-finite inputs are counted and rejected.
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 #include <Eigen/Cholesky>
@@ -364,6 +365,12 @@ class ErrorStateEkf {
   /// Multiplies the χ² gate's bound (gate_sigma² · dof) of the following updates (≥ 1; the
   /// navigator's median-NIS gate, RobustnessParams::gate_follows_median_nis).
   void SetGateScale(double scale) { gate_scale_ = std::max(1.0, scale); }
+  /// Whether an update's NIS over `dof` is within the χ² gate (gate_sigma² · dof) times `scale`
+  /// (at least 1): the test every update takes with SetGateScale's factor.
+  bool WithinGate(double nis, int dof, double scale) const {
+    return std::isfinite(nis) &&
+           nis <= params_.gate_sigma * params_.gate_sigma * dof * std::max(1.0, scale);
+  }
   double process_noise_scale() const { return q_scale_; }
   /// Further scales the accelerometer's white-noise and bias random-walk variances and the gyro's
   /// white-noise variance (≥ 1): the navigator's measure of how far the IMU is outside its model,
@@ -496,13 +503,19 @@ class ErrorStateEkf {
   /// columns): A = I − 2[ω_IE×]dt, B = −[f_N×]dt, D = I − [ω_IE×]dt, G = −Ĉdt (Gg: in the
   /// attitude rows, zero while the attitude is held); and Φ's columns of the turn states (Gk in
   /// the attitude rows, Ga in the velocity rows; only Gk's first while they are not learnable).
+  /// Φ's columns of the turn states for one interval (error_state_ekf.cc, TurnStateColumns).
+  struct TurnColumns {
+    Eigen::Matrix3d Gk = Eigen::Matrix3d::Zero();  ///< φ rows: δk_z, δm_xz, δm_yz
+    Eigen::Matrix3d Ga = Eigen::Matrix3d::Zero();  ///< δv rows: δk_ay, δm_xy, δm_zy
+    Eigen::Matrix<double, 3, 2> Gs = Eigen::Matrix<double, 3, 2>::Zero();  ///< φ rows: δk_x, δk_y
+    bool learnable = false;
+  };
+  static TurnColumns TurnStateColumns(const Eigen::Matrix3d& C, const Eigen::Vector3d& w_B_radps,
+                                      double f_y_mps2, bool attitude_hold, bool learnable,
+                                      double dt);
   struct PhiBlocks {
     Eigen::Matrix3d At, Bt, Dt, Gt, Ggt;
-    struct {
-      Eigen::Matrix3d Gk, Ga;
-      Eigen::Matrix<double, 3, 2> Gs;  // the x and y scales' columns of φ
-      bool learnable;
-    } turn;
+    TurnColumns turn;
   };
   PhiBlocks TransposedPhiBlocks(const Eigen::Matrix3d& C, double dt) const;
   /// The same over P's first N states (N = 15 when the augmented states are off).

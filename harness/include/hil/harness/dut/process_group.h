@@ -14,6 +14,10 @@ namespace hil::harness {
 /// Pids of the processes of process group `pgid` that are not zombies.
 std::vector<int> LiveGroupMembers(int pgid);
 
+/// The state letter of thread `tid` of process `pid` (/proc/PID/task/TID/stat: R, S, D, Z, …;
+/// ' ' when it cannot be read).
+char ThreadState(int pid, int tid);
+
 /// A snapshot of the threads of a process group.
 struct GroupActivity {
   bool readable = false;    ///< /proc could be read and the group has at least one live process
