@@ -3,7 +3,6 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <memory>
 #include <numbers>
 #include <sstream>
 #include <vector>
@@ -20,8 +19,10 @@ namespace {
 constexpr double kLat = 30.5, kLon = 114.3, kH = 20.0;
 
 // 20 s at rest, level, facing north: the IMU measures −g on its down axis and the Earth rate;
-// 1 Hz fixes of an antenna 0.5 m above the IMU
-std::string WriteStationaryDataset(const std::string& dir, const std::string& extra_yaml = "") {
+// 1 Hz fixes of an antenna 0.5 m above the IMU. `yaw_rate_radps`: turning in place about the down
+// axis at that rate as well (the z gyro reads it; the antenna, above the IMU, stays put)
+std::string WriteStationaryDataset(const std::string& dir, const std::string& extra_yaml = "",
+                                   double yaw_rate_radps = 0.0) {
   const double g = NormalGravity(kLat, kH), w = kEarthRate_radps,
                lat = kLat * std::numbers::pi / 180;
   std::string imu, gnss;
@@ -29,7 +30,7 @@ std::string WriteStationaryDataset(const std::string& dir, const std::string& ex
   for (int k = 1; k <= 4000; ++k) {
     const double dt = 0.005;
     std::snprintf(line, sizeof line, "%.3f %.12e 0 %.12e 0 0 %.12e\n", 1000 + k * dt,
-                  w * std::cos(lat) * dt, -w * std::sin(lat) * dt, -g * dt);
+                  w * std::cos(lat) * dt, (yaw_rate_radps - w * std::sin(lat)) * dt, -g * dt);
     imu += line;
   }
   LocalTangentFrame f({kLat, kLon, kH});
@@ -134,26 +135,22 @@ TEST(KfginsRunner, TheGyroScaleFactorsAreKfginsOnes) {
   EXPECT_NEAR(p.ekf.gyro_scale_xy_rw_rthz, 0.005 * std::sqrt(2.0 / 7200), 1e-18);
 }
 
-TEST(KfginsRunner, TheConfigurationsInitialGyroScalesStartTheEstimates) {
-  // GIVEN a configuration with initial gyro scale errors (ppm) and KF-GINS's scale states
-  const testing::ScopedTempDir dir;
-  KfginsConfig c =
-      LoadKfginsConfig(WriteStationaryDataset(dir.path, "initgyrscale: [1000, -2000, 3000]\n"));
-  ASSERT_TRUE(c.initgyrscale_ppm.has_value());
-  c.imunoise.gsstd_ppm = 5000;
-  // WHEN a filter starts there, its estimates are those values
-  const auto nav = std::make_unique<Navigator>(NavigatorParamsFromKfgins(c));
-  nav->InitializeAt(GpsTime{}, {kLat, kLon, kH}, Eigen::Vector3d::Zero(),
-                    Eigen::Quaterniond::Identity());
-  nav->SetGyroScale(*c.initgyrscale_ppm * 1e-6);
-  EXPECT_NEAR(nav->ekf().gyro_scale_xy().x(), 0.001, 1e-15);
-  EXPECT_NEAR(nav->ekf().gyro_scale_xy().y(), -0.002, 1e-15);
-  EXPECT_NEAR(nav->ekf().gyro_scale_z(), 0.003, 1e-15);
-  // AND a filter without the x and y scale states (navd's default) keeps them at 0
-  const auto plain = std::make_unique<Navigator>(NavigatorParams{});
-  plain->SetGyroScale(*c.initgyrscale_ppm * 1e-6);
-  EXPECT_EQ(plain->ekf().gyro_scale_xy(), Eigen::Vector2d::Zero());
-  EXPECT_NEAR(plain->ekf().gyro_scale_z(), 0.003, 1e-15);
+TEST(KfginsRunner, TheConfigurationsInitialGyroScaleIsWhereTheEstimateStarts) {
+  // GIVEN a vehicle turning in place at 0.1 rad/s for 20 s (2 rad, heading unobservable from the
+  // fixes: the antenna is above the IMU), its z gyro's scale 1 % high, once with the
+  // configuration saying so (initgyrscale, ppm) and once without
+  const auto final_yaw_deg = [](const std::string& extra) {
+    const testing::ScopedTempDir tmp;
+    const KfginsConfig c = LoadKfginsConfig(WriteStationaryDataset(tmp.path, extra, 0.1 * 1.01));
+    RunKfgins(c, NavigatorParamsFromKfgins(c));
+    return ReadRows(tmp.path + "/out/KF_GINS_Navresult.nav").back()[10];
+  };
+  const double told = final_yaw_deg("initgyrscale: [0, 0, 10000]\n");
+  const double untold = final_yaw_deg("");
+  // THEN told, navd turns the 2 rad the vehicle turned (the 1 % divided out); untold, 1 % more
+  const double turned_deg = 2.0 * 180.0 / std::numbers::pi;
+  EXPECT_NEAR(told, turned_deg - 360.0 * std::round(turned_deg / 360.0), 0.1);
+  EXPECT_NEAR(untold - told, 0.01 * turned_deg, 0.15);
 }
 
 }  // namespace
